@@ -1,0 +1,35 @@
+#include "translations.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QTranslator>
+
+namespace finbook::app {
+
+QString installTranslations(QCoreApplication &app, const QString &language)
+{
+    const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
+    if (!language.isEmpty())
+        QLocale::setDefault(locale);
+    const QString appDir = QCoreApplication::applicationDirPath();
+    const QStringList folders{appDir + QStringLiteral("/translations"),
+                              appDir + QStringLiteral("/../share/finbook/translations"),
+                              QStringLiteral(":/translations")};
+    auto *finbook = new QTranslator(&app);
+    for (const QString &folder : folders) {
+        if (finbook->load(locale, QStringLiteral("finbook"), QStringLiteral("_"), folder)) {
+            QCoreApplication::installTranslator(finbook);
+            auto *qt = new QTranslator(&app);
+            if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                         QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+                QCoreApplication::installTranslator(qt);
+            return finbook->language();
+        }
+    }
+    delete finbook;
+    return {};
+}
+
+} // namespace finbook::app

@@ -1,0 +1,109 @@
+// Document: frames → objects → strokes, canvas settings and the one undo stack.
+//
+// The UI changes a document only by pushing commands (commands.h) onto undoStack(). The
+// low-level mutators below exist for those commands and for the file loader; each one emits a
+// past-tense signal so views, thumbnails and caches can follow.
+#pragma once
+
+#include <finbook/model/types.h>
+
+#include <QObject>
+#include <QUndoStack>
+
+#include <vector>
+
+namespace finbook::model {
+
+struct GroupLocation {
+    int frame = -1;
+    int group = -1;
+    bool isValid() const { return frame >= 0 && group >= 0; }
+};
+
+struct StrokeLocation {
+    int frame = -1;
+    int group = -1;
+    int stroke = -1;
+    bool isValid() const { return frame >= 0 && group >= 0 && stroke >= 0; }
+};
+
+class Document : public QObject {
+    Q_OBJECT
+public:
+    explicit Document(QObject *parent = nullptr);
+    ~Document() override;
+
+    QUndoStack *undoStack() { return &m_undoStack; }
+    const QUndoStack *undoStack() const { return &m_undoStack; }
+
+    // --- reading
+    const DocumentSettings &settings() const { return m_settings; }
+    const std::vector<Frame> &frames() const { return m_frames; }
+    int frameCount() const { return int(m_frames.size()); }
+    const Frame &frameAt(int index) const { return m_frames.at(std::size_t(index)); }
+    int frameIndex(Id frameId) const; // -1 if there is none
+    const Frame *frame(Id frameId) const;
+    GroupLocation locateGroup(Id groupId) const;
+    const StrokeGroup *group(Id groupId) const;
+    StrokeLocation locateStroke(Id strokeId) const;
+    // First and last frame index that playback covers, clamped to the frames there are.
+    int playFirst() const;
+    int playLast() const;
+    // Total number of stroke points stored in rest strokes (deformed caches not counted).
+    qint64 pointCount() const;
+
+    // --- ids: stable, never reused within a document; saved with the file.
+    Id allocateId() { return m_nextId++; }
+    Id nextId() const { return m_nextId; }
+
+    // --- low-level mutators (commands and loader only)
+    void reset(std::vector<Frame> frames, const DocumentSettings &settings, Id nextId);
+    void insertFrame(int index, Frame frame);
+    Frame takeFrame(int index);
+    void moveFrame(int from, int to);
+    void setFrameHold(Id frameId, int hold);
+
+    void insertGroup(Id frameId, int index, StrokeGroup group);
+    StrokeGroup takeGroup(Id groupId);
+    void moveGroup(Id groupId, int toIndex);
+    void setGroupName(Id groupId, const QString &name);
+    void setGroupVisible(Id groupId, bool visible);
+    void setGroupLocked(Id groupId, bool locked);
+    void setGroupMeshDensity(Id groupId, double density);
+
+    void insertStroke(Id groupId, int index, Stroke stroke);
+    Stroke takeStroke(Id strokeId);
+    // Replaces all rest strokes of an object (transform, bake). Drops the deformed cache.
+    void setStrokes(Id groupId, std::vector<Stroke> strokes);
+
+    void setPins(Id groupId, std::vector<Pin> pins);
+    // Stores a solved pose. Not undo state: a cache that any rest or pin edit invalidates.
+    void setDeformed(Id groupId, DeformedStrokesPtr deformed);
+
+    void setSettings(const DocumentSettings &settings);
+
+signals:
+    void documentReset();
+    void framesInserted(int first, int count);
+    void framesRemoved(int first, int count);
+    void frameMoved(int from, int to);
+    // Anything drawn in the frame changed (hold, objects, strokes, pins, pose).
+    void frameChanged(Id frameId);
+    // Objects of a frame were inserted, removed, reordered or had properties changed.
+    void groupsChanged(Id frameId);
+    void strokesChanged(Id groupId);
+    void constraintsChanged(Id groupId);
+    void deformedChanged(Id groupId);
+    void settingsChanged();
+
+private:
+    StrokeGroup &mutableGroup(Id groupId);
+    void groupEdited(Id groupId, bool structural);
+
+    std::vector<Frame> m_frames;
+    DocumentSettings m_settings;
+    Id m_nextId = 1;
+    QUndoStack m_undoStack;
+};
+
+} // namespace finbook::model

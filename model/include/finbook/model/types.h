@@ -1,0 +1,103 @@
+// The document's value types: frames hold objects (stroke groups), objects hold strokes.
+//
+// Rest strokes are immutable and shared (std::shared_ptr<const StrokeData>): duplicating a
+// frame or an object copies pointers, never points. Every entity carries a stable integer id
+// allocated by its Document; commands refer to entities by id only.
+#pragma once
+
+#include <QColor>
+#include <QPointF>
+#include <QSize>
+#include <QString>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace finbook::model {
+
+using Id = std::uint64_t;
+constexpr Id kNoId = 0;
+
+// One pen sample in canvas pixels (y down). Stored as float: 1e-4 px precision on any
+// realistic canvas, and it keeps a stored point at 10 bytes on disk.
+struct StrokePoint {
+    float x = 0.0f;
+    float y = 0.0f;
+    float pressure = 1.0f; // 0..1; quantised to 1/65535 by the file format
+    friend bool operator==(const StrokePoint &, const StrokePoint &) = default;
+};
+
+struct StrokeData {
+    std::vector<StrokePoint> points;
+    QRgb color = 0xff000000; // ARGB
+    float width = 3.0f;      // nominal width in canvas pixels at pressure 1
+    friend bool operator==(const StrokeData &, const StrokeData &) = default;
+};
+
+using StrokeDataPtr = std::shared_ptr<const StrokeData>;
+
+struct Stroke {
+    Id id = kNoId;
+    StrokeDataPtr data;
+    // Value equality (ids and contents), used by tests and commands' sanity checks.
+    friend bool operator==(const Stroke &a, const Stroke &b)
+    {
+        return a.id == b.id && (a.data == b.data || (a.data && b.data && *a.data == *b.data));
+    }
+};
+
+// An ARAP pin: where it was put on the rest drawing and where it is dragged to now.
+struct Pin {
+    Id id = kNoId;
+    QPointF rest;
+    QPointF target;
+    friend bool operator==(const Pin &, const Pin &) = default;
+};
+
+// Points of one deformed object, stroke by stroke (same order and sizes as its rest strokes).
+struct DeformedStrokes {
+    std::vector<std::vector<StrokePoint>> strokes;
+    friend bool operator==(const DeformedStrokes &, const DeformedStrokes &) = default;
+};
+using DeformedStrokesPtr = std::shared_ptr<const DeformedStrokes>;
+
+constexpr double kDefaultMeshDensity = 1.0; // 1 = default edge length; 2 = twice as fine
+
+struct StrokeGroup {
+    Id id = kNoId;
+    QString name;
+    bool visible = true;
+    bool locked = false;
+    double meshDensity = kDefaultMeshDensity;
+    std::vector<Stroke> strokes; // rest strokes, drawing order (last on top)
+    std::vector<Pin> pins;
+    // The pose the pins produced, as last solved. Saved with the file so a reopened document
+    // shows (and exports) the deformed drawing without re-solving; cleared by any rest edit.
+    DeformedStrokesPtr deformed;
+
+    bool isDeformed() const { return !pins.empty() && deformed != nullptr; }
+};
+
+struct Frame {
+    Id id = kNoId;
+    int hold = 1; // exposure: how many playback ticks this drawing stays on screen (1..)
+    std::vector<StrokeGroup> groups; // back to front
+};
+
+struct DocumentSettings {
+    QSize canvasSize{1280, 720};
+    QRgb background = 0xffffffff;
+    int fps = 12;             // 1..60
+    bool loop = true;
+    int playStart = 0;        // first frame index of the play range
+    int playEnd = -1;         // last frame index, -1 = the last frame
+    friend bool operator==(const DocumentSettings &, const DocumentSettings &) = default;
+};
+
+constexpr int kMinFps = 1;
+constexpr int kMaxFps = 60;
+constexpr int kMaxCanvasSide = 16384;
+constexpr int kMaxHold = 1000;
+
+} // namespace finbook::model

@@ -1,0 +1,66 @@
+// What the editor is looking at and working on, shared by the canvas, timeline, objects
+// panel, playback and main window. Not document state: nothing here is saved or undone.
+#pragma once
+
+#include <finbook/model/document.h>
+
+#include <QObject>
+
+namespace finbook::ui {
+
+struct OnionSkin {
+    bool enabled = false;
+    int before = 1; // 0..5 frames
+    int after = 1;  // 0..5 frames
+    qreal opacity = 0.4;   // of the nearest neighbour; falls off with distance
+    QColor beforeTint{220, 40, 40};
+    QColor afterTint{40, 90, 220};
+    friend bool operator==(const OnionSkin &, const OnionSkin &) = default;
+};
+
+class EditorState : public QObject {
+    Q_OBJECT
+public:
+    explicit EditorState(model::Document *document, QObject *parent = nullptr);
+
+    model::Document *document() const { return m_doc; }
+
+    int currentFrameIndex() const { return m_frameIndex; }
+    model::Id currentFrameId() const;
+    const model::Frame *currentFrame() const;
+    // The object new strokes go into. Falls back to the top object of the current frame.
+    model::Id currentGroupId() const;
+    const model::StrokeGroup *currentGroup() const;
+
+    const OnionSkin &onionSkin() const { return m_onion; }
+    bool isPlaying() const { return m_playing; }
+    bool showMesh() const { return m_showMesh; }
+
+public slots:
+    void setCurrentFrameIndex(int index);
+    void setCurrentGroupId(model::Id groupId);
+    void setOnionSkin(const OnionSkin &onion);
+    void setPlaying(bool playing);
+    void setShowMesh(bool show);
+    void nextFrame();
+    void previousFrame();
+
+signals:
+    void currentFrameChanged(int index);
+    void currentGroupChanged(model::Id groupId);
+    void onionSkinChanged();
+    void playingChanged(bool playing);
+    void showMeshChanged(bool show);
+
+private:
+    void clampToDocument();
+
+    model::Document *m_doc;
+    int m_frameIndex = 0;
+    model::Id m_groupId = model::kNoId;
+    OnionSkin m_onion;
+    bool m_playing = false;
+    bool m_showMesh = false;
+};
+
+} // namespace finbook::ui
