@@ -35,6 +35,21 @@ EditorState::EditorState(model::Document *document, QObject *parent)
             ++m_frameIndex;
         emit currentFrameChanged(m_frameIndex);
     });
+    // A selection never outlives its strokes (erased, undone, moved to another frame).
+    connect(m_doc, &model::Document::frameChanged, this, [this] {
+        std::vector<model::Id> kept;
+        for (model::Id id : m_selection) {
+            const model::StrokeLocation at = m_doc->locateStroke(id);
+            if (at.isValid() && at.frame == m_frameIndex)
+                kept.push_back(id);
+        }
+        if (kept != m_selection)
+            setSelectedStrokes(std::move(kept));
+    });
+    connect(this, &EditorState::currentFrameChanged, this, [this] {
+        if (!m_selection.empty())
+            setSelectedStrokes({});
+    });
     clampToDocument();
 }
 
@@ -100,6 +115,14 @@ void EditorState::setCurrentGroupId(model::Id groupId)
         return;
     m_groupId = groupId;
     emit currentGroupChanged(groupId);
+}
+
+void EditorState::setSelectedStrokes(std::vector<model::Id> strokeIds)
+{
+    if (strokeIds == m_selection)
+        return;
+    m_selection = std::move(strokeIds);
+    emit selectionChanged();
 }
 
 void EditorState::setOnionSkin(const OnionSkin &onion)

@@ -6,6 +6,8 @@
 
 #include <QObject>
 
+#include <vector>
+
 namespace finbook::ui {
 
 struct OnionSkin {
@@ -32,6 +34,9 @@ public:
     model::Id currentGroupId() const;
     const model::StrokeGroup *currentGroup() const;
 
+    // Selected strokes (lasso), all in the current frame. Cleared when the frame changes.
+    const std::vector<model::Id> &selectedStrokes() const { return m_selection; }
+
     const OnionSkin &onionSkin() const { return m_onion; }
     bool isPlaying() const { return m_playing; }
     bool showMesh() const { return m_showMesh; }
@@ -39,6 +44,7 @@ public:
 public slots:
     void setCurrentFrameIndex(int index);
     void setCurrentGroupId(model::Id groupId);
+    void setSelectedStrokes(std::vector<model::Id> strokeIds);
     void setOnionSkin(const OnionSkin &onion);
     void setPlaying(bool playing);
     void setShowMesh(bool show);
@@ -48,6 +54,7 @@ public slots:
 signals:
     void currentFrameChanged(int index);
     void currentGroupChanged(model::Id groupId);
+    void selectionChanged();
     void onionSkinChanged();
     void playingChanged(bool playing);
     void showMeshChanged(bool show);
@@ -58,6 +65,7 @@ private:
     model::Document *m_doc;
     int m_frameIndex = 0;
     model::Id m_groupId = model::kNoId;
+    std::vector<model::Id> m_selection;
     OnionSkin m_onion;
     bool m_playing = false;
     bool m_showMesh = false;
