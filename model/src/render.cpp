@@ -1,6 +1,7 @@
 #include <finbook/model/render.h>
 
 #include <QPainterPath>
+#include <QVarLengthArray>
 
 #include <cmath>
 
