@@ -1,0 +1,109 @@
+// Random edits through real commands, for undo/redo property tests.
+#pragma once
+
+#include <finbook/model/commands.h>
+
+#include <QRandomGenerator>
+
+#include <memory>
+
+namespace finbook::testing {
+
+inline model::StrokeDataPtr randomStrokeData(QRandomGenerator &rng)
+{
+    auto data = std::make_shared<model::StrokeData>();
+    const int n = 1 + int(rng.bounded(12));
+    float x = float(rng.bounded(1000.0)), y = float(rng.bounded(700.0));
+    for (int i = 0; i < n; ++i) {
+        x += float(rng.bounded(20.0) - 10.0);
+        y += float(rng.bounded(20.0) - 10.0);
+        data->points.push_back({x, y, float(rng.bounded(65536)) / 65535.0f});
+    }
+    data->color = 0xff000000u | rng.bounded(0x1000000u);
+    data->width = 1.0f + float(rng.bounded(8));
+    return data;
+}
+
+// Picks a random id of a live entity (0 when there is none).
+struct Picks {
+    model::Id frame = model::kNoId;
+    model::Id group = model::kNoId;
+    model::Id stroke = model::kNoId;
+};
+
+inline Picks randomPicks(const model::Document &doc, QRandomGenerator &rng)
+{
+    Picks p;
+    if (doc.frameCount() == 0)
+        return p;
+    const model::Frame &f = doc.frameAt(int(rng.bounded(doc.frameCount())));
+    p.frame = f.id;
+    if (f.groups.empty())
+        return p;
+    const model::StrokeGroup &g = f.groups[rng.bounded(quint32(f.groups.size()))];
+    p.group = g.id;
+    if (!g.strokes.empty())
+        p.stroke = g.strokes[rng.bounded(quint32(g.strokes.size()))].id;
+    return p;
+}
+
+// Builds one random command against the document's current state (never null).
+inline std::unique_ptr<QUndoCommand> randomCommand(model::Document &doc, QRandomGenerator &rng)
+{
+    using namespace model;
+    const Picks p = randomPicks(doc, rng);
+    const int n = doc.frameCount();
+    switch (rng.bounded(14)) {
+    case 0:
+    case 1:
+        return std::make_unique<AddStrokeCommand>(&doc, p.group, randomStrokeData(rng),
+                                                  int(rng.bounded(4)) - 1);
+    case 2:
+        return std::make_unique<RemoveStrokeCommand>(&doc, p.stroke);
+    case 3:
+        return std::make_unique<AddObjectCommand>(&doc, p.frame, int(rng.bounded(4)) - 1,
+                                                  QStringLiteral("obj%1").arg(rng.bounded(100)));
+    case 4:
+        return std::make_unique<RemoveObjectCommand>(&doc, p.group);
+    case 5:
+        return std::make_unique<RenameObjectCommand>(&doc, p.group,
+                                                     QStringLiteral("n%1").arg(rng.bounded(100)));
+    case 6:
+        return std::make_unique<ReorderObjectCommand>(&doc, p.group, int(rng.bounded(4)));
+    case 7: {
+        const Picks q = randomPicks(doc, rng);
+        return std::make_unique<MoveStrokesCommand>(&doc, std::vector<Id>{p.stroke, q.stroke},
+                                                    q.group);
+    }
+    case 8:
+        return std::make_unique<InsertFrameCommand>(&doc, int(rng.bounded(n + 1)));
+    case 9:
+        return std::make_unique<DuplicateFrameCommand>(&doc, p.frame, int(rng.bounded(n + 1)));
+    case 10:
+        return std::make_unique<DeleteFrameCommand>(&doc, p.frame);
+    case 11:
+        return std::make_unique<MoveFrameCommand>(&doc, int(rng.bounded(std::max(n, 1))),
+                                                  int(rng.bounded(std::max(n, 1))));
+    case 12: {
+        DocumentSettings s = doc.settings();
+        s.fps = 1 + int(rng.bounded(60));
+        s.loop = rng.bounded(2) == 0;
+        s.canvasSize = QSize(100 + int(rng.bounded(2000)), 100 + int(rng.bounded(2000)));
+        s.playStart = int(rng.bounded(4));
+        s.playEnd = int(rng.bounded(6)) - 1;
+        return std::make_unique<ChangeSettingsCommand>(&doc, s);
+    }
+    default:
+        if (rng.bounded(2))
+            return std::make_unique<SetFrameHoldCommand>(&doc, p.frame, 1 + int(rng.bounded(4)));
+        if (p.stroke != kNoId)
+            return std::make_unique<ReplaceStrokeDataCommand>(
+                &doc, std::vector<Id>{p.stroke}, std::vector<StrokeDataPtr>{randomStrokeData(rng)},
+                QStringLiteral("Transform"));
+        return std::make_unique<SetObjectFlagCommand>(
+            &doc, p.group, rng.bounded(2) ? ObjectFlag::Visible : ObjectFlag::Locked,
+            rng.bounded(2) == 0);
+    }
+}
+
+} // namespace finbook::testing
