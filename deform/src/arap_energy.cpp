@@ -1,0 +1,33 @@
+#include "arap_internal.h"
+
+#include <finbook/deform/arap.h>
+
+namespace finbook::deform {
+
+double arapEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Eigen::MatrixX2d &U)
+{
+    using detail::Complex;
+    double energy = 0.0;
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        Complex r[3], p[3];
+        for (int k = 0; k < 3; ++k) {
+            r[k] = Complex(V(F(t, k), 0), V(F(t, k), 1));
+            p[k] = Complex(U(F(t, k), 0), U(F(t, k), 1));
+        }
+        const Complex restCentroid = (r[0] + r[1] + r[2]) / 3.0;
+        const Complex centroid = (p[0] + p[1] + p[2]) / 3.0;
+        for (int k = 0; k < 3; ++k) {
+            r[k] -= restCentroid;
+            p[k] -= centroid;
+        }
+        // Any rotation is optimal for a fully collapsed triangle; 0 keeps identity then.
+        const Complex rotation = detail::bestRotation(r, p, 0.0);
+        for (int k = 0; k < 3; ++k) {
+            const int j = (k + 1) % 3;
+            energy += std::norm((p[j] - p[k]) - rotation * (r[j] - r[k]));
+        }
+    }
+    return energy;
+}
+
+} // namespace finbook::deform

@@ -1,0 +1,152 @@
+#include "arap_internal.h"
+
+#include <finbook/deform/arap.h>
+
+#include <Eigen/OrderingMethods>
+
+#include <exception>
+#include <thread>
+#include <vector>
+
+namespace finbook::deform {
+namespace {
+
+using detail::Complex;
+using detail::makeError;
+
+// Which vertices are solved for, which are pinned handles and which just follow their
+// component (see the header for the internal numbering these lists become).
+struct Classification {
+    std::vector<int> freeVertices, handleVertices, handleEntries, rigidVertices, rigidEntries;
+    std::vector<int> pinnedVertices;
+    std::vector<Eigen::Index> solvedTriangles;
+};
+
+Classification classify(Eigen::Index n, const Eigen::MatrixX3i &F, const Eigen::VectorXi &b)
+{
+    int componentCount = 0;
+    const Eigen::VectorXi label = detail::componentLabels(n, F, componentCount);
+    std::vector<int> lastEntry(static_cast<std::size_t>(n), -1);
+    for (Eigen::Index e = 0; e < b.size(); ++e)
+        lastEntry[b(e)] = static_cast<int>(e);
+    std::vector<int> pinCount(componentCount, 0), componentEntry(componentCount, -1);
+    Classification c;
+    for (int v = 0; v < n; ++v) {
+        if (lastEntry[v] < 0)
+            continue;
+        c.pinnedVertices.push_back(v);
+        ++pinCount[label(v)];
+        componentEntry[label(v)] = lastEntry[v];
+    }
+    for (int v = 0; v < n; ++v) {
+        const int component = label(v);
+        if (pinCount[component] < 2) {
+            c.rigidVertices.push_back(v);
+            c.rigidEntries.push_back(pinCount[component] == 1 ? componentEntry[component] : -1);
+        } else if (lastEntry[v] >= 0) {
+            c.handleVertices.push_back(v);
+            c.handleEntries.push_back(lastEntry[v]);
+        } else {
+            c.freeVertices.push_back(v);
+        }
+    }
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        if (pinCount[label(F(t, 0))] >= 2)
+            c.solvedTriangles.push_back(t);
+    }
+    return c;
+}
+
+// AMD on the free-vertex adjacency, shared by G00 and H00 (same pattern). Returns the free
+// vertices (original indices) in elimination order.
+std::vector<int> fillReducingOrder(const Eigen::MatrixX3i &F, const Classification &c,
+                                   const std::vector<int> &freeLocal)
+{
+    const auto nf = static_cast<int>(c.freeVertices.size());
+    std::vector<Eigen::Triplet<double>> pattern;
+    pattern.reserve(c.solvedTriangles.size() * 6);
+    for (const Eigen::Index t : c.solvedTriangles) {
+        for (int r = 0; r < 3; ++r) {
+            for (int s = r; s < 3; ++s) {
+                const int i = freeLocal[F(t, r)], j = freeLocal[F(t, s)];
+                if (i >= 0 && j >= 0)
+                    pattern.emplace_back(std::min(i, j), std::max(i, j), 1.0);
+            }
+        }
+    }
+    Eigen::SparseMatrix<double> upper(nf, nf);
+    upper.setFromTriplets(pattern.begin(), pattern.end());
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+    Eigen::AMDOrdering<int>()(upper.selfadjointView<Eigen::Upper>(), inverse);
+    std::vector<int> ordered(static_cast<std::size_t>(nf));
+    for (int k = 0; k < nf; ++k)
+        ordered[k] = c.freeVertices[inverse.indices()(k)];
+    return ordered;
+}
+
+// Fills order, handle/rigid bookkeeping and rest positions; returns original → internal.
+std::vector<int> numberVertices(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                const Eigen::VectorXi &b, const Classification &c,
+                                ArapPrecompute &d)
+{
+    const Eigen::Index n = V.rows();
+    std::vector<int> freeLocal(static_cast<std::size_t>(n), -1);
+    for (std::size_t k = 0; k < c.freeVertices.size(); ++k)
+        freeLocal[c.freeVertices[k]] = static_cast<int>(k);
+    const std::vector<int> ordered = fillReducingOrder(F, c, freeLocal);
+
+    d.freeCount = static_cast<Eigen::Index>(ordered.size());
+    d.order.resize(n);
+    int next = 0;
+    for (const auto *list : {&ordered, &c.handleVertices, &c.rigidVertices}) {
+        for (const int v : *list)
+            d.order(next++) = v;
+    }
+    std::vector<int> internal(static_cast<std::size_t>(n));
+    d.rest.resize(n);
+    for (int k = 0; k < n; ++k) {
+        internal[d.order(k)] = k;
+        d.rest(k) = Complex(V(d.order(k), 0), V(d.order(k), 1));
+    }
+    d.handleEntry = Eigen::Map<const Eigen::VectorXi>(c.handleEntries.data(),
+                                                      Eigen::Index(c.handleEntries.size()));
+    d.rigidEntry = Eigen::Map<const Eigen::VectorXi>(c.rigidEntries.data(),
+                                                     Eigen::Index(c.rigidEntries.size()));
+    d.pinnedVertices = Eigen::Map<const Eigen::VectorXi>(c.pinnedVertices.data(),
+                                                         Eigen::Index(c.pinnedVertices.size()));
+    d.pinEntryCount = b.size();
+    d.entryRest.resize(b.size());
+    for (Eigen::Index e = 0; e < b.size(); ++e)
+        d.entryRest(e) = Complex(V(b(e), 0), V(b(e), 1));
+    return internal;
+}
+
+} // namespace
+
+ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                    const Eigen::VectorXi &b, const ArapOptions &options,
+                                    std::function<bool()> cancelled)
+{
+    const auto stop = [&cancelled] { return cancelled && cancelled(); };
+    const auto cancelledError = [] {
+        return unexpected(makeError(DeformErrorCode::Cancelled, "precompute was cancelled"));
+    };
+    if (auto error = detail::validateArapInput(V, F, b))
+        return unexpected(std::move(*error));
+    if (stop())
+        return cancelledError();
+    auto d = std::make_shared<ArapPrecompute>();
+    d->options = options;
+    const Classification c = classify(V.rows(), F, b);
+    if (stop())
+        return cancelledError();
+    const std::vector<int> internal = numberVertices(V, F, b, c, *d);
+    if (stop())
+        return cancelledError();
+    detail::assembleArapSystems(V, F, c.solvedTriangles, internal, *d);
+    if (auto error = detail::factorArapSystems(*d, cancelled))
+        return unexpected(std::move(*error));
+    return std::shared_ptr<const ArapPrecompute>(std::move(d));
+}
+
+} // namespace finbook::deform
