@@ -1,0 +1,63 @@
+// Quality triangle mesh of an object: from its strokes (via silhouette()) or from a Region.
+//
+// Constrained Delaunay triangulation of the region refined by CGAL's Delaunay mesher with the
+// domain marked by nesting depth (holes and the space between lobes stay empty), shape bound
+// 0.125 (minimum angle ≈ 20.7°) and a size bound from the target vertex count.
+#pragma once
+
+#include <finbook/geometry/expected.h>
+#include <finbook/geometry/geometry_error.h>
+#include <finbook/geometry/polygon_repair.h>
+#include <finbook/geometry/region.h>
+#include <finbook/geometry/silhouette.h>
+#include <finbook/geometry/stroke_input.h>
+#include <finbook/geometry/tri_mesh.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace finbook::geometry {
+
+struct MeshOptions {
+    // Edge length scales with 1/density: 2 halves the edges (about 4× the vertices).
+    double density = 1.0; // in (0, 100]
+    // Vertices aimed for at density 1, whatever the object's size: ARAP cost stays
+    // predictable, and a full-canvas character gets edges of roughly 10–20 px.
+    int targetVertices = 1500;
+    // Hard ceiling: the edge length is raised until the estimate fits (absurd densities,
+    // huge regions). Dense boundaries can still overshoot it by their own vertices.
+    int maxVertices = 30000;
+    double minEdge = 1.0; // px: small objects are not refined below this
+    SilhouetteOptions silhouette;
+    RepairOptions repair; // for the Region overload
+};
+
+// V: n×2 vertex positions (canvas px). F: m×3 vertex indices, every triangle with positive
+// shoelace area (counter-clockwise in y-up math axes, see region.h), no zero-area triangles,
+// every vertex referenced. Row i of V is vertex i of `mesh`, row j of F is face j of `mesh`.
+// Several connected components (lobes) are normal. `region` is the outline that was meshed.
+struct ObjectMesh {
+    TriMesh mesh;
+    Eigen::MatrixX2d V;
+    Eigen::MatrixX3i F;
+    Region region;
+};
+
+// silhouette(strokes, options.silhouette), then meshRegion. Errors: those of silhouette().
+Expected<ObjectMesh, GeometryError> buildObjectMesh(const std::vector<StrokeInput> &strokes,
+                                                    const MeshOptions &options = {});
+
+// repairRegion(region, options.repair), then meshRegion. Errors: those of repairRegion().
+Expected<ObjectMesh, GeometryError> buildObjectMesh(const Region &region,
+                                                    const MeshOptions &options = {});
+
+// Meshes a region that is already simple (silhouette() and repairRegion() promise that).
+// Errors: NotSimple, DegenerateRegion (no area), InvalidOptions, TriangulationFailed.
+Expected<ObjectMesh, GeometryError> meshRegion(const Region &region,
+                                               const MeshOptions &options = {});
+
+// The CGAL size bound (longest edge, px) meshRegion uses for this area and perimeter.
+double meshEdgeLength(double area, double perimeter, const MeshOptions &options);
+
+} // namespace finbook::geometry
