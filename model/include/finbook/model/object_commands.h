@@ -1,0 +1,33 @@
+// Object edits built from more than one low-level mutation.
+#pragma once
+
+#include <finbook/model/commands.h>
+
+#include <optional>
+#include <vector>
+
+namespace finbook::model {
+
+// Moves every stroke of object `sourceId` into object `targetId` (both in one frame) and
+// removes the source, as one undo step. The drawing looks the same afterwards: the source's
+// strokes go on top of the target's when the source was above it, underneath otherwise, and a
+// posed (deformed) source is baked into its strokes. Stroke ids are kept. The target keeps its
+// pins; its solved pose is dropped (its rest drawing changed) and restored by undo, which puts
+// back both objects exactly as they were.
+class MergeObjectsCommand : public DocumentCommand {
+public:
+    MergeObjectsCommand(Document *doc, Id sourceId, Id targetId, QUndoCommand *parent = nullptr);
+    void redo() override;
+    void undo() override;
+
+private:
+    Id m_sourceId;
+    Id m_targetId;
+    Id m_frameId = kNoId;
+    int m_sourceIndex = -1;
+    std::optional<StrokeGroup> m_source;
+    std::vector<Stroke> m_targetStrokes;
+    DeformedStrokesPtr m_targetDeformed;
+};
+
+} // namespace finbook::model

@@ -1,0 +1,82 @@
+#include <finbook/model/object_commands.h>
+#include <finbook/model/render.h>
+
+#include <QCoreApplication>
+
+namespace finbook::model {
+
+namespace {
+QString trCommand(const char *text)
+{
+    return QCoreApplication::translate("Command", text);
+}
+
+// The source's strokes as they show now: a posed object contributes its deformed points.
+std::vector<Stroke> bakedStrokes(const StrokeGroup &group)
+{
+    std::vector<Stroke> strokes = group.strokes;
+    if (!group.isDeformed())
+        return strokes;
+    for (std::size_t i = 0; i < strokes.size(); ++i) {
+        if (!strokes[i].data)
+            continue;
+        auto data = std::make_shared<StrokeData>(*strokes[i].data);
+        data->points = displayedPoints(group, i);
+        strokes[i].data = std::move(data);
+    }
+    return strokes;
+}
+} // namespace
+
+MergeObjectsCommand::MergeObjectsCommand(Document *doc, Id sourceId, Id targetId,
+                                         QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+    , m_sourceId(sourceId)
+    , m_targetId(targetId)
+{
+    setText(trCommand("Merge Objects"));
+    const GroupLocation source = doc->locateGroup(sourceId);
+    const GroupLocation target = doc->locateGroup(targetId);
+    if (!source.isValid() || !target.isValid() || source.frame != target.frame ||
+        sourceId == targetId)
+        setObsolete(true);
+}
+
+void MergeObjectsCommand::redo()
+{
+    const GroupLocation source = m_doc->locateGroup(m_sourceId);
+    const GroupLocation target = m_doc->locateGroup(m_targetId);
+    if (isObsolete() || !source.isValid() || !target.isValid() || source.frame != target.frame) {
+        setObsolete(true);
+        return;
+    }
+    m_frameId = m_doc->frameAt(source.frame).id;
+    m_sourceIndex = source.group;
+    const StrokeGroup &targetGroup = *m_doc->group(m_targetId);
+    m_targetStrokes = targetGroup.strokes;
+    m_targetDeformed = targetGroup.deformed;
+
+    // Take the source out first so no stroke id is ever in two objects at once.
+    m_source = m_doc->takeGroup(m_sourceId);
+    std::vector<Stroke> moved = bakedStrokes(*m_source);
+    std::vector<Stroke> merged;
+    merged.reserve(m_targetStrokes.size() + moved.size());
+    const bool sourceAbove = source.group > target.group;
+    const std::vector<Stroke> &below = sourceAbove ? m_targetStrokes : moved;
+    const std::vector<Stroke> &above = sourceAbove ? moved : m_targetStrokes;
+    merged.insert(merged.end(), below.begin(), below.end());
+    merged.insert(merged.end(), above.begin(), above.end());
+    m_doc->setStrokes(m_targetId, std::move(merged));
+}
+
+void MergeObjectsCommand::undo()
+{
+    if (isObsolete() || !m_source)
+        return;
+    m_doc->setStrokes(m_targetId, m_targetStrokes);
+    if (m_targetDeformed)
+        m_doc->setDeformed(m_targetId, m_targetDeformed);
+    m_doc->insertGroup(m_frameId, m_sourceIndex, *m_source);
+}
+
+} // namespace finbook::model
