@@ -8,14 +8,19 @@
 namespace finbook::model {
 
 namespace {
-QString trCommand(const char *text) { return QCoreApplication::translate("Command", text); }
+QString trCommand(const char *text)
+{
+    return QCoreApplication::translate("Command", text);
+}
 } // namespace
 
 // --- strokes -----------------------------------------------------------------------------
 
 AddStrokeCommand::AddStrokeCommand(Document *doc, Id groupId, StrokeDataPtr data, int index,
                                    QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_groupId(groupId), m_stroke{doc->allocateId(), std::move(data)}
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+    , m_stroke{doc->allocateId(), std::move(data)}
     , m_index(index)
 {
     setText(trCommand("Draw Stroke"));
@@ -39,7 +44,8 @@ void AddStrokeCommand::undo()
 }
 
 RemoveStrokeCommand::RemoveStrokeCommand(Document *doc, Id strokeId, QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_strokeId(strokeId)
+    : DocumentCommand(doc, parent)
+    , m_strokeId(strokeId)
 {
     setText(trCommand("Erase Stroke"));
     if (!doc->locateStroke(strokeId).isValid())
@@ -66,7 +72,9 @@ void RemoveStrokeCommand::undo()
 
 MoveStrokesCommand::MoveStrokesCommand(Document *doc, std::vector<Id> strokeIds, Id targetGroupId,
                                        QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_strokeIds(std::move(strokeIds)), m_targetGroupId(targetGroupId)
+    : DocumentCommand(doc, parent)
+    , m_strokeIds(std::move(strokeIds))
+    , m_targetGroupId(targetGroupId)
 {
     setText(trCommand("Move Strokes to Object"));
     if (!doc->group(targetGroupId) || m_strokeIds.empty())
@@ -103,7 +111,9 @@ void MoveStrokesCommand::undo()
 ReplaceStrokeDataCommand::ReplaceStrokeDataCommand(Document *doc, std::vector<Id> strokeIds,
                                                    std::vector<StrokeDataPtr> newData,
                                                    const QString &text, QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_strokeIds(std::move(strokeIds)), m_new(std::move(newData))
+    : DocumentCommand(doc, parent)
+    , m_strokeIds(std::move(strokeIds))
+    , m_new(std::move(newData))
 {
     setText(text);
     if (m_strokeIds.size() != m_new.size())
@@ -144,14 +154,23 @@ void ReplaceStrokeDataCommand::apply(const std::vector<StrokeDataPtr> &data)
     }
 }
 
-void ReplaceStrokeDataCommand::redo() { apply(m_new); }
-void ReplaceStrokeDataCommand::undo() { apply(m_old); }
+void ReplaceStrokeDataCommand::redo()
+{
+    apply(m_new);
+}
+void ReplaceStrokeDataCommand::undo()
+{
+    apply(m_old);
+}
 
 // --- objects -----------------------------------------------------------------------------
 
 AddObjectCommand::AddObjectCommand(Document *doc, Id frameId, int index, const QString &name,
                                    QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_frameId(frameId), m_index(index), m_name(name)
+    : DocumentCommand(doc, parent)
+    , m_frameId(frameId)
+    , m_index(index)
+    , m_name(name)
     , m_groupId(doc->allocateId())
 {
     setText(trCommand("New Object"));
@@ -179,7 +198,8 @@ void AddObjectCommand::undo()
 }
 
 RemoveObjectCommand::RemoveObjectCommand(Document *doc, Id groupId, QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_groupId(groupId)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
 {
     setText(trCommand("Delete Object"));
     if (!doc->group(groupId))
@@ -206,7 +226,9 @@ void RemoveObjectCommand::undo()
 
 RenameObjectCommand::RenameObjectCommand(Document *doc, Id groupId, const QString &name,
                                          QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_groupId(groupId), m_new(name)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+    , m_new(name)
 {
     setText(trCommand("Rename Object"));
     if (const StrokeGroup *g = doc->group(groupId))
@@ -229,7 +251,9 @@ void RenameObjectCommand::undo()
 
 ReorderObjectCommand::ReorderObjectCommand(Document *doc, Id groupId, int toIndex,
                                            QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_groupId(groupId), m_to(toIndex)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+    , m_to(toIndex)
 {
     setText(trCommand("Reorder Object"));
     const GroupLocation at = doc->locateGroup(groupId);
@@ -256,7 +280,10 @@ void ReorderObjectCommand::undo()
 
 SetObjectFlagCommand::SetObjectFlagCommand(Document *doc, Id groupId, ObjectFlag flag, bool value,
                                            QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_groupId(groupId), m_flag(flag), m_new(value)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+    , m_flag(flag)
+    , m_new(value)
 {
     if (flag == ObjectFlag::Visible)
         setText(value ? trCommand("Show Object") : trCommand("Hide Object"));
@@ -279,13 +306,20 @@ void SetObjectFlagCommand::apply(bool value)
         m_doc->setGroupLocked(m_groupId, value);
 }
 
-void SetObjectFlagCommand::redo() { apply(m_new); }
-void SetObjectFlagCommand::undo() { apply(m_old); }
+void SetObjectFlagCommand::redo()
+{
+    apply(m_new);
+}
+void SetObjectFlagCommand::undo()
+{
+    apply(m_old);
+}
 
 // --- frames ------------------------------------------------------------------------------
 
 InsertFrameCommand::InsertFrameCommand(Document *doc, int index, QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_index(std::clamp(index, 0, doc->frameCount()))
+    : DocumentCommand(doc, parent)
+    , m_index(std::clamp(index, 0, doc->frameCount()))
 {
     setText(trCommand("Insert Frame"));
     m_frame.id = doc->allocateId();
@@ -295,12 +329,20 @@ InsertFrameCommand::InsertFrameCommand(Document *doc, int index, QUndoCommand *p
     m_frame.groups.push_back(std::move(g));
 }
 
-void InsertFrameCommand::redo() { m_doc->insertFrame(m_index, m_frame); }
-void InsertFrameCommand::undo() { m_doc->takeFrame(m_index); }
+void InsertFrameCommand::redo()
+{
+    m_doc->insertFrame(m_index, m_frame);
+}
+void InsertFrameCommand::undo()
+{
+    m_doc->takeFrame(m_index);
+}
 
 DuplicateFrameCommand::DuplicateFrameCommand(Document *doc, Id sourceFrameId, int index,
                                              QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_sourceId(sourceFrameId), m_index(index)
+    : DocumentCommand(doc, parent)
+    , m_sourceId(sourceFrameId)
+    , m_index(index)
 {
     setText(trCommand("Duplicate Frame"));
     const Frame *source = doc->frame(sourceFrameId);
@@ -344,7 +386,8 @@ void DuplicateFrameCommand::undo()
 }
 
 DeleteFrameCommand::DeleteFrameCommand(Document *doc, Id frameId, QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_frameId(frameId)
+    : DocumentCommand(doc, parent)
+    , m_frameId(frameId)
 {
     setText(trCommand("Delete Frame"));
     if (doc->frameIndex(frameId) < 0)
@@ -368,7 +411,9 @@ void DeleteFrameCommand::undo()
 }
 
 MoveFrameCommand::MoveFrameCommand(Document *doc, int from, int to, QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_from(from), m_to(to)
+    : DocumentCommand(doc, parent)
+    , m_from(from)
+    , m_to(to)
 {
     setText(trCommand("Move Frame"));
     const int n = doc->frameCount();
@@ -389,7 +434,9 @@ void MoveFrameCommand::undo()
 }
 
 SetFrameHoldCommand::SetFrameHoldCommand(Document *doc, Id frameId, int hold, QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_frameId(frameId), m_new(std::clamp(hold, 1, kMaxHold))
+    : DocumentCommand(doc, parent)
+    , m_frameId(frameId)
+    , m_new(std::clamp(hold, 1, kMaxHold))
 {
     setText(trCommand("Change Frame Exposure"));
     if (const Frame *f = doc->frame(frameId))
@@ -425,14 +472,22 @@ DocumentSettings sanitizedSettings(DocumentSettings s)
 
 ChangeSettingsCommand::ChangeSettingsCommand(Document *doc, const DocumentSettings &settings,
                                              QUndoCommand *parent)
-    : DocumentCommand(doc, parent), m_new(sanitizedSettings(settings)), m_old(doc->settings())
+    : DocumentCommand(doc, parent)
+    , m_new(sanitizedSettings(settings))
+    , m_old(doc->settings())
 {
     setText(trCommand("Change Document Settings"));
     if (m_new == m_old)
         setObsolete(true);
 }
 
-void ChangeSettingsCommand::redo() { m_doc->setSettings(m_new); }
-void ChangeSettingsCommand::undo() { m_doc->setSettings(m_old); }
+void ChangeSettingsCommand::redo()
+{
+    m_doc->setSettings(m_new);
+}
+void ChangeSettingsCommand::undo()
+{
+    m_doc->setSettings(m_old);
+}
 
 } // namespace finbook::model

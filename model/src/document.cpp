@@ -5,7 +5,9 @@
 
 namespace finbook::model {
 
-Document::Document(QObject *parent) : QObject(parent) {}
+Document::Document(QObject *parent)
+    : QObject(parent)
+{}
 
 Document::~Document()
 {

@@ -9,7 +9,10 @@ namespace finbook::model {
 
 namespace {
 // Width buckets of a quarter pixel: invisible steps, but long runs for the polyline fast path.
-int widthBucket(float width, float pressure) { return int(std::lround(width * pressure * 4.0f)); }
+int widthBucket(float width, float pressure)
+{
+    return int(std::lround(width * pressure * 4.0f));
+}
 
 void paintDot(QPainter &painter, const StrokePoint &p, qreal width)
 {
@@ -18,8 +21,7 @@ void paintDot(QPainter &painter, const StrokePoint &p, qreal width)
 }
 } // namespace
 
-void paintStroke(QPainter &painter, const std::vector<StrokePoint> &points, QRgb color,
-                 float width)
+void paintStroke(QPainter &painter, const std::vector<StrokePoint> &points, QRgb color, float width)
 {
     if (points.empty())
         return;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <finbook/model/commands.h>
+#include <finbook/model/pin_commands.h>
 
 #include <QRandomGenerator>
 
@@ -29,6 +30,7 @@ struct Picks {
     model::Id frame = model::kNoId;
     model::Id group = model::kNoId;
     model::Id stroke = model::kNoId;
+    model::Id pin = model::kNoId;
 };
 
 inline Picks randomPicks(const model::Document &doc, QRandomGenerator &rng)
@@ -44,6 +46,8 @@ inline Picks randomPicks(const model::Document &doc, QRandomGenerator &rng)
     p.group = g.id;
     if (!g.strokes.empty())
         p.stroke = g.strokes[rng.bounded(quint32(g.strokes.size()))].id;
+    if (!g.pins.empty())
+        p.pin = g.pins[rng.bounded(quint32(g.pins.size()))].id;
     return p;
 }
 
@@ -53,7 +57,22 @@ inline std::unique_ptr<QUndoCommand> randomCommand(model::Document &doc, QRandom
     using namespace model;
     const Picks p = randomPicks(doc, rng);
     const int n = doc.frameCount();
-    switch (rng.bounded(14)) {
+    const QPointF somewhere(rng.bounded(1000.0), rng.bounded(700.0));
+    switch (rng.bounded(19)) {
+    case 14:
+    case 15:
+        return std::make_unique<AddPinCommand>(&doc, p.group, somewhere,
+                                               somewhere + QPointF(rng.bounded(9.0), 0.0));
+    case 16:
+        return std::make_unique<RemovePinCommand>(&doc, p.group, p.pin);
+    case 17:
+        return std::make_unique<MovePinCommand>(&doc, p.group, p.pin, somewhere,
+                                                int(rng.bounded(3)));
+    case 18:
+        if (rng.bounded(2))
+            return std::make_unique<ResetDeformationCommand>(&doc, p.group);
+        return std::make_unique<SetMeshDensityCommand>(&doc, p.group, rng.bounded(4.0),
+                                                       int(rng.bounded(3)));
     case 0:
     case 1:
         return std::make_unique<AddStrokeCommand>(&doc, p.group, randomStrokeData(rng),

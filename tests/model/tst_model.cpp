@@ -146,10 +146,10 @@ void TestModel::signalsArePastTenseFacts()
 void TestModel::eachCommandUndoesExactly_data()
 {
     QTest::addColumn<int>("kind");
-    const char *names[] = {"add stroke",  "remove stroke", "add object",    "remove object",
-                           "rename",      "reorder",       "move strokes",  "insert frame",
-                           "duplicate",   "delete frame",  "move frame",    "settings",
-                           "hold",        "replace data",  "flag visible",  "flag locked"};
+    const char *names[] = {"add stroke", "remove stroke", "add object",   "remove object",
+                           "rename",     "reorder",       "move strokes", "insert frame",
+                           "duplicate",  "delete frame",  "move frame",   "settings",
+                           "hold",       "replace data",  "flag visible", "flag locked"};
     for (int i = 0; i < 16; ++i)
         QTest::newRow(names[i]) << i;
 }
@@ -167,24 +167,54 @@ void TestModel::eachCommandUndoesExactly()
     DocumentSettings s = doc.settings();
     s.fps = 24;
     switch (kind) {
-    case 0: cmd = new AddStrokeCommand(&doc, g0, line(3, 3, 4, 4), 0); break;
-    case 1: cmd = new RemoveStrokeCommand(&doc, s1); break;
-    case 2: cmd = new AddObjectCommand(&doc, f0.id, 0, QStringLiteral("new")); break;
-    case 3: cmd = new RemoveObjectCommand(&doc, g1); break;
-    case 4: cmd = new RenameObjectCommand(&doc, g1, QStringLiteral("leg")); break;
-    case 5: cmd = new ReorderObjectCommand(&doc, g1, 0); break;
-    case 6: cmd = new MoveStrokesCommand(&doc, {s1}, g0); break;
-    case 7: cmd = new InsertFrameCommand(&doc, 1); break;
-    case 8: cmd = new DuplicateFrameCommand(&doc, f0.id, 0); break;
-    case 9: cmd = new DeleteFrameCommand(&doc, f0.id); break;
-    case 10: cmd = new MoveFrameCommand(&doc, 0, 1); break;
-    case 11: cmd = new ChangeSettingsCommand(&doc, s); break;
-    case 12: cmd = new SetFrameHoldCommand(&doc, f0.id, 3); break;
+    case 0:
+        cmd = new AddStrokeCommand(&doc, g0, line(3, 3, 4, 4), 0);
+        break;
+    case 1:
+        cmd = new RemoveStrokeCommand(&doc, s1);
+        break;
+    case 2:
+        cmd = new AddObjectCommand(&doc, f0.id, 0, QStringLiteral("new"));
+        break;
+    case 3:
+        cmd = new RemoveObjectCommand(&doc, g1);
+        break;
+    case 4:
+        cmd = new RenameObjectCommand(&doc, g1, QStringLiteral("leg"));
+        break;
+    case 5:
+        cmd = new ReorderObjectCommand(&doc, g1, 0);
+        break;
+    case 6:
+        cmd = new MoveStrokesCommand(&doc, {s1}, g0);
+        break;
+    case 7:
+        cmd = new InsertFrameCommand(&doc, 1);
+        break;
+    case 8:
+        cmd = new DuplicateFrameCommand(&doc, f0.id, 0);
+        break;
+    case 9:
+        cmd = new DeleteFrameCommand(&doc, f0.id);
+        break;
+    case 10:
+        cmd = new MoveFrameCommand(&doc, 0, 1);
+        break;
+    case 11:
+        cmd = new ChangeSettingsCommand(&doc, s);
+        break;
+    case 12:
+        cmd = new SetFrameHoldCommand(&doc, f0.id, 3);
+        break;
     case 13:
         cmd = new ReplaceStrokeDataCommand(&doc, {s1}, {line(7, 7, 8, 9)}, QStringLiteral("t"));
         break;
-    case 14: cmd = new SetObjectFlagCommand(&doc, g1, ObjectFlag::Visible, false); break;
-    default: cmd = new SetObjectFlagCommand(&doc, g1, ObjectFlag::Locked, true); break;
+    case 14:
+        cmd = new SetObjectFlagCommand(&doc, g1, ObjectFlag::Visible, false);
+        break;
+    default:
+        cmd = new SetObjectFlagCommand(&doc, g1, ObjectFlag::Locked, true);
+        break;
     }
     doc.undoStack()->push(cmd);
     const QByteArray after = serializeFinbook(doc);
@@ -263,11 +293,13 @@ void TestModel::randomizedUndoRedo()
         while (doc.undoStack()->canUndo())
             doc.undoStack()->undo();
         if (serializeFinbook(doc) != start)
-            QFAIL(qPrintable(QStringLiteral("undo-all differs: seed %1 sequence %2").arg(seed).arg(seq)));
+            QFAIL(qPrintable(
+                QStringLiteral("undo-all differs: seed %1 sequence %2").arg(seed).arg(seq)));
         while (doc.undoStack()->canRedo())
             doc.undoStack()->redo();
         if (serializeFinbook(doc) != end)
-            QFAIL(qPrintable(QStringLiteral("redo-all differs: seed %1 sequence %2").arg(seed).arg(seq)));
+            QFAIL(qPrintable(
+                QStringLiteral("redo-all differs: seed %1 sequence %2").arg(seed).arg(seq)));
     }
     // Most random commands must have done something, or the test proves little.
     QVERIFY2(applied > kSequences * 4, qPrintable(QString::number(applied)));

@@ -5,7 +5,8 @@
 namespace finbook::ui {
 
 EditorState::EditorState(model::Document *document, QObject *parent)
-    : QObject(parent), m_doc(document)
+    : QObject(parent)
+    , m_doc(document)
 {
     // Keep the current frame on the same drawing when frames move around it, and valid
     // when frames go away.
@@ -97,8 +98,8 @@ void EditorState::setCurrentFrameIndex(int index)
             if (before->groups[std::size_t(i)].id == currentGroupId())
                 slot = i;
     m_frameIndex = index;
-    if (const model::Frame *after = currentFrame(); after && slot >= 0 &&
-                                                    slot < int(after->groups.size()))
+    if (const model::Frame *after = currentFrame();
+        after && slot >= 0 && slot < int(after->groups.size()))
         m_groupId = after->groups[std::size_t(slot)].id;
     emit currentFrameChanged(m_frameIndex);
     emit currentGroupChanged(currentGroupId());
@@ -153,8 +154,14 @@ void EditorState::setShowMesh(bool show)
     emit showMeshChanged(show);
 }
 
-void EditorState::nextFrame() { setCurrentFrameIndex(m_frameIndex + 1); }
-void EditorState::previousFrame() { setCurrentFrameIndex(m_frameIndex - 1); }
+void EditorState::nextFrame()
+{
+    setCurrentFrameIndex(m_frameIndex + 1);
+}
+void EditorState::previousFrame()
+{
+    setCurrentFrameIndex(m_frameIndex - 1);
+}
 
 void EditorState::clampToDocument()
 {

@@ -22,7 +22,8 @@ enum class CommandId : int {
 class DocumentCommand : public QUndoCommand {
 public:
     explicit DocumentCommand(Document *document, QUndoCommand *parent = nullptr)
-        : QUndoCommand(parent), m_doc(document)
+        : QUndoCommand(parent)
+        , m_doc(document)
     {}
 
 protected:

@@ -88,10 +88,10 @@ struct Frame {
 struct DocumentSettings {
     QSize canvasSize{1280, 720};
     QRgb background = 0xffffffff;
-    int fps = 12;             // 1..60
+    int fps = 12; // 1..60
     bool loop = true;
-    int playStart = 0;        // first frame index of the play range
-    int playEnd = -1;         // last frame index, -1 = the last frame
+    int playStart = 0; // first frame index of the play range
+    int playEnd = -1;  // last frame index, -1 = the last frame
     friend bool operator==(const DocumentSettings &, const DocumentSettings &) = default;
 };
 

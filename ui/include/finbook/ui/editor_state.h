@@ -12,9 +12,9 @@ namespace finbook::ui {
 
 struct OnionSkin {
     bool enabled = false;
-    int before = 1; // 0..5 frames
-    int after = 1;  // 0..5 frames
-    qreal opacity = 0.4;   // of the nearest neighbour; falls off with distance
+    int before = 1;      // 0..5 frames
+    int after = 1;       // 0..5 frames
+    qreal opacity = 0.4; // of the nearest neighbour; falls off with distance
     QColor beforeTint{220, 40, 40};
     QColor afterTint{40, 90, 220};
     friend bool operator==(const OnionSkin &, const OnionSkin &) = default;

@@ -1,0 +1,70 @@
+// Keeps every pinned object's pose solved while the document changes.
+//
+// When an object's pins or rest strokes change, the controller looks for a DeformSetup that
+// still fits (the object's own, or one of a recently used few: a duplicated frame shares its
+// source's drawing and pins, so it shares the factorization too). With one it solves on the
+// spot — one back-substitution pair, well under a millisecond for typical objects — and stores
+// the pose in the document; without one it asks the PrecomputeService and solves when the
+// setup arrives, with whatever the pins' targets are by then.
+#pragma once
+
+#include <finbook/model/document.h>
+#include <finbook/model/precompute_service.h>
+
+#include <QObject>
+
+#include <deque>
+#include <map>
+
+namespace finbook::model {
+
+class DeformController : public QObject {
+    Q_OBJECT
+public:
+    explicit DeformController(Document *document, QObject *parent = nullptr);
+
+    PrecomputeService *service() { return &m_service; }
+    bool isBusy() const { return m_service.isBusy(); }
+    bool isWaiting(Id groupId) const;
+
+    // Starts whatever an object needs before its pins can be dragged (no-op when ready).
+    void prepare(Id groupId);
+    // Asks for an object's mesh without pins (View → Show Mesh).
+    void requestMesh(Id groupId);
+
+    // The setup an object is solved with now, or null; its current deformed vertices.
+    const DeformSetup *setup(Id groupId) const;
+    const Eigen::MatrixX2d *poseVertices(Id groupId) const;
+    QString lastError(Id groupId) const;
+
+    // Where on the rest drawing a pin put at `shown` (canvas px, as displayed) belongs.
+    QPointF restPointFor(Id groupId, QPointF shown) const;
+
+signals:
+    void busyChanged(bool busy);
+    void meshChanged(finbook::model::Id groupId);
+    void poseSolved(finbook::model::Id groupId);
+    void errorOccurred(finbook::model::Id groupId, const QString &message);
+
+private:
+    struct State {
+        std::shared_ptr<const DeformSetup> setup;
+        Eigen::MatrixX2d vertices; // deformed mesh vertices for `setup`
+        QString error;
+        bool waiting = false;
+    };
+    void refresh(Id groupId, bool wantMesh = false);
+    void solve(Id groupId, std::shared_ptr<const DeformSetup> setup);
+    std::shared_ptr<const DeformSetup> cachedSetup(const StrokeGroup &group) const;
+    std::shared_ptr<const MeshedObject> cachedMesh(const MeshKey &key) const;
+    void remember(std::shared_ptr<const DeformSetup> setup);
+    void setupReady(Id groupId, std::shared_ptr<const DeformSetup> setup);
+    void setupFailed(Id groupId, const QString &message);
+
+    Document *m_doc;
+    PrecomputeService m_service;
+    std::map<Id, State> m_states;
+    std::deque<std::shared_ptr<const DeformSetup>> m_recent; // most recent first
+};
+
+} // namespace finbook::model
