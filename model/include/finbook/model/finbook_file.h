@@ -46,6 +46,11 @@ Expected<LoadedDocument, FileError> loadFinbook(const QString &path);
 std::optional<FileError> openFinbook(Document &document, const QString &path);
 
 QByteArray serializeFinbook(const Document &document);
+// Refuses to replace a file with bytes that would not open again (a document holding NaN or
+// duplicate ids after a bug elsewhere): the old file stays as it was.
 std::optional<FileError> saveFinbook(const Document &document, const QString &path);
+
+// Where saveFinbook keeps the previous version of `path`.
+QString finbookBackupPath(const QString &path);
 
 } // namespace finbook::model

@@ -1,0 +1,116 @@
+// The .finbook byte layout, shared by the writer and the reader (private to the model).
+//
+//   file    := magic[8] u32 version section* "FEND" u64 0
+//   section := tag[4] u64 length payload[length]
+//   "DOCU"  := u32 canvasWidth u32 canvasHeight u32 background u32 fps u8 loop
+//              i32 playStart i32 playEnd u64 nextId
+//   "STRK"  := u32 count strokeData*       (the stroke-data table, first appearance order)
+//   strokeData := u32 color f32 width u32 n point[n]
+//   point   := f32 x f32 y u16 pressure     (pressure = q / 65535; 10 bytes)
+//   "POSE"  := u32 count pose*             (deformed-pose table, first appearance order)
+//   pose    := u32 strokes (u32 n point[n])[strokes]
+//   "FRAM"  := u32 count frame*
+//   frame   := u32 length { u64 id u32 hold u32 objects object[objects] chunk* }
+//   object  := u32 length { u64 id u8 flags f64 meshDensity u32 nameBytes utf8[nameBytes]
+//                           u32 strokes (u64 strokeId u32 strokeDataIndex)[strokes] chunk* }
+//   chunk   := tag[4] u32 length payload[length]
+//   "PINS"  := u32 count (u64 id f64 restX f64 restY f64 targetX f64 targetY)[count]
+//   "DEFM"  := u32 poseIndex
+//
+// Everything is little-endian. Sections come in the order above, each exactly once. Records
+// and chunks are length-prefixed so later formats can add state (a cage, a skeleton pose) as
+// new chunks. A tag whose first letter is lower case is ancillary: readers that do not know it
+// skip it; an unknown upper-case tag is critical and the file is refused as too new.
+#pragma once
+
+#include <finbook/model/finbook_file.h>
+
+#include <QtEndian>
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
+namespace finbook::model::file_format {
+
+static_assert(std::endian::native == std::endian::little ||
+              std::endian::native == std::endian::big);
+
+// PNG-style: the high bit catches 7-bit transfers, CR LF and LF catch newline conversion,
+// ^Z stops `type` on DOS.
+constexpr char kMagic[8] = {'\x89', 'F', 'B', 'K', '\r', '\n', '\x1a', '\n'};
+constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4;
+constexpr quint32 kOldestVersion = 1;
+
+constexpr quint32 tag(const char (&name)[5])
+{
+    return quint32(quint8(name[0])) | quint32(quint8(name[1])) << 8 |
+           quint32(quint8(name[2])) << 16 | quint32(quint8(name[3])) << 24;
+}
+constexpr quint32 kTagDocument = tag("DOCU");
+constexpr quint32 kTagStrokes = tag("STRK");
+constexpr quint32 kTagPoses = tag("POSE");
+constexpr quint32 kTagFrames = tag("FRAM");
+constexpr quint32 kTagEnd = tag("FEND");
+constexpr quint32 kTagPins = tag("PINS");
+constexpr quint32 kTagDeformed = tag("DEFM");
+
+inline bool isAncillary(quint32 t)
+{
+    const char first = char(t & 0xff);
+    return first >= 'a' && first <= 'z';
+}
+
+constexpr std::size_t kSectionHeaderBytes = 4 + 8;
+constexpr std::size_t kChunkHeaderBytes = 4 + 4;
+constexpr std::size_t kDocumentBytes = 4 * 4 + 1 + 4 + 4 + 8;
+constexpr std::size_t kPointBytes = 4 + 4 + 2;
+constexpr std::size_t kStrokeDataHeaderBytes = 4 + 4 + 4;
+constexpr std::size_t kStrokeRefBytes = 8 + 4;
+constexpr std::size_t kPinBytes = 8 + 4 * 8;
+constexpr std::size_t kFrameFixedBytes = 8 + 4 + 4;
+constexpr std::size_t kObjectFixedBytes = 8 + 1 + 8 + 4 + 4;
+constexpr std::size_t kMaxNameBytes = 4096;
+
+constexpr quint8 kFlagVisible = 0x01;
+constexpr quint8 kFlagLocked = 0x02;
+constexpr quint8 kKnownFlags = kFlagVisible | kFlagLocked;
+
+// Pressure lives on a 1/65535 grid in the file. Loading yields q / 65535.0f exactly, and
+// quantising that value gives q back, so save → open → save is byte-identical.
+inline quint16 quantisePressure(float pressure)
+{
+    if (!(pressure > 0.0f)) // also NaN
+        return 0;
+    if (pressure >= 1.0f)
+        return 65535;
+    return quint16(pressure * 65535.0f + 0.5f);
+}
+inline float dequantisePressure(quint16 q)
+{
+    return float(q) / 65535.0f;
+}
+
+// A float's exponent bits all set means infinity or NaN; cheaper than std::isfinite per point.
+inline bool isFiniteBits(quint32 bits)
+{
+    return (bits & 0x7f800000u) != 0x7f800000u;
+}
+
+// What went wrong reading a file, before it is dressed as a sentence for the user.
+struct ReadFailure {
+    FileErrorCode code;
+    QString what; // e.g. "frame 3, object "arm", stroke 7: point 12 has a non-finite coordinate"
+};
+
+// readFinbook without the sentence: saveFinbook uses it to check its own output.
+Expected<LoadedDocument, ReadFailure> parseFinbook(const QByteArray &bytes);
+
+// "What. What to do.": the message of a FileError for a file that failed to parse.
+QString failureSentence(FileErrorCode code, const QString &what);
+
+// Migration hook: a loaded document of an older format version is upgraded one version at a
+// time until it matches kFinbookFormatVersion. Version 1 is the first, so there is no step yet.
+void migrateLoadedDocument(LoadedDocument &document, quint32 fromVersion);
+
+} // namespace finbook::model::file_format

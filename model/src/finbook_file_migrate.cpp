@@ -1,0 +1,27 @@
+// Upgrading documents read from older .finbook versions.
+//
+// The reader parses each version's byte layout (it knows the file's version while parsing);
+// what changed in meaning is fixed here, one version step at a time, so a version-1 file
+// read by Finbook with format 4 runs the steps 1→2, 2→3 and 3→4 in order.
+#include "finbook_file_format.h"
+
+#include <array>
+
+namespace finbook::model::file_format {
+
+namespace {
+using MigrationStep = void (*)(LoadedDocument &);
+
+// kSteps[i] upgrades a document from version kOldestVersion + i to the next one. Version 1
+// is the first format, so there are no steps yet; the first one goes here, e.g.
+// `[](LoadedDocument &doc) { ... }` for 1 → 2.
+constexpr std::array<MigrationStep, kFinbookFormatVersion - kOldestVersion> kSteps{};
+} // namespace
+
+void migrateLoadedDocument(LoadedDocument &document, quint32 fromVersion)
+{
+    for (quint32 v = std::max(fromVersion, kOldestVersion); v < kFinbookFormatVersion; ++v)
+        kSteps[v - kOldestVersion](document);
+}
+
+} // namespace finbook::model::file_format
