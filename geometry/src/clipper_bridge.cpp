@@ -98,7 +98,7 @@ Region simplifyRegion(const Region &region, double tolerance)
         for (Eigen::MatrixX2d &hole : polygon.holes)
             hole = douglasPeucker(hole, tolerance, true);
     }
-    return isSimple(simplified) ? simplified : region;
+    return isSimple(simplified, Touching::AllowedAtPoints) ? simplified : region;
 }
 
 Expected<long, GeometryError> checkPoints(const Eigen::MatrixX2d &points, const std::string &what,

@@ -68,7 +68,7 @@ Expected<ObjectMesh, GeometryError> meshRegion(const Region &region, const MeshO
         return unexpected(GeometryError{GeometryErrorCode::InvalidOptions,
                                         "Mesh density must be in (0, 100], target vertices at "
                                         "least 3 and not above the maximum, minimum edge ≥ 0."});
-    if (!isSimple(region))
+    if (!isSimple(region, Touching::AllowedAtPoints))
         return unexpected(GeometryError{GeometryErrorCode::NotSimple,
                                         "The outline crosses or touches itself; repair it "
                                         "(repairRegion) before meshing."});

@@ -1,6 +1,7 @@
 #include "clipper_bridge.h"
 
 #include <finbook/geometry/polygon_repair.h>
+#include <finbook/geometry/polyline.h>
 
 #include <cmath>
 #include <limits>
@@ -11,8 +12,8 @@ namespace {
 
 using detail::error;
 
-Expected<ClipperLib::Paths, GeometryError> toPaths(const std::vector<Eigen::MatrixX2d> &rings,
-                                                   detail::ClipperFrame &frame)
+// Checks every ring and returns the clipping frame for them.
+Expected<detail::ClipperFrame, GeometryError> checkRings(const std::vector<Eigen::MatrixX2d> &rings)
 {
     Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(std::numeric_limits<double>::max());
     Eigen::RowVector2d hi = -lo;
@@ -31,14 +32,15 @@ Expected<ClipperLib::Paths, GeometryError> toPaths(const std::vector<Eigen::Matr
                                 "The shape outline has " + std::to_string(total) +
                                     " points, more than the supported " +
                                     std::to_string(kMaxInputPoints) + "; simplify it first."));
-    frame = detail::frameFor(lo);
-    ClipperLib::Paths paths;
-    for (const Eigen::MatrixX2d &ring : rings) {
-        ClipperLib::Path path = frame.toPath(ring);
-        if (path.size() >= 3)
-            paths.push_back(std::move(path));
-    }
-    return paths;
+    return detail::frameFor(lo);
+}
+
+// Pixel outlines carry many collinear points; dropping them first makes the opening several
+// times faster. Crossings this may create are resolved by the fill rule like any others.
+ClipperLib::Path toSimplifiedPath(const Eigen::MatrixX2d &ring, double tolerance,
+                                  const detail::ClipperFrame &frame)
+{
+    return frame.toPath(douglasPeucker(cleanPolyline(ring, 0.0, true), tolerance, true));
 }
 
 bool validOptions(const RepairOptions &options)
@@ -87,12 +89,18 @@ Expected<Region, GeometryError> repairRings(const std::vector<Eigen::MatrixX2d> 
         return unexpected(error(GeometryErrorCode::InvalidOptions,
                                 "Repair options need a finite corner radius in [0, 1e4] px and "
                                 "a finite, non-negative simplification tolerance."));
-    detail::ClipperFrame frame;
-    auto paths = toPaths(rings, frame);
-    if (!paths)
-        return unexpected(paths.error());
+    const auto checked = checkRings(rings);
+    if (!checked)
+        return unexpected(checked.error());
+    const detail::ClipperFrame &frame = *checked;
+    ClipperLib::Paths paths;
+    for (const Eigen::MatrixX2d &ring : rings) {
+        ClipperLib::Path path = toSimplifiedPath(ring, options.simplifyTolerance, frame);
+        if (path.size() >= 3)
+            paths.push_back(std::move(path));
+    }
     ClipperLib::Paths combined;
-    ClipperLib::SimplifyPolygons(*paths, combined, clipperFill(options.fillRule));
+    ClipperLib::SimplifyPolygons(paths, combined, clipperFill(options.fillRule));
     return finish(combined, options, frame);
 }
 
@@ -100,19 +108,17 @@ Expected<Region, GeometryError> repairRegion(const Region &region, const RepairO
 {
     if (!validOptions(options))
         return repairRings({}, options);
-    const std::vector<Eigen::MatrixX2d> all = regionRings(region);
-    detail::ClipperFrame frame;
-    auto paths = toPaths(all, frame);
-    if (!paths)
-        return unexpected(paths.error());
+    const auto checked = checkRings(regionRings(region));
+    if (!checked)
+        return unexpected(checked.error());
+    const detail::ClipperFrame &frame = *checked;
     // Combine each polygon's rings by the fill rule on its own, so that overlapping polygons
     // add up instead of cancelling, then union everything (outer rings positive after that).
     ClipperLib::Paths combined;
     for (const Polygon &polygon : region) {
         ClipperLib::Paths own;
-        Polygon single = polygon;
-        for (const Eigen::MatrixX2d &ring : regionRings(Region{single})) {
-            ClipperLib::Path path = frame.toPath(ring);
+        for (const Eigen::MatrixX2d &ring : regionRings(Region{polygon})) {
+            ClipperLib::Path path = toSimplifiedPath(ring, options.simplifyTolerance, frame);
             if (path.size() >= 3)
                 own.push_back(std::move(path));
         }

@@ -55,14 +55,34 @@ bool neighboursOverlap(const Edge &e, const Edge &f)
     return (first.a - first.b).dot(second.b - second.a) > 0.0;
 }
 
-bool edgesConflict(const Edge &e, const Edge &f)
+// Touching at a point where one segment ends (a pinch, or a T) is allowed; properly crossing
+// or overlapping along a stretch is not.
+bool touchesOnly(const Edge &e, const Edge &f)
+{
+    const int o1 = sign(orient(e.a, e.b, f.a));
+    const int o2 = sign(orient(e.a, e.b, f.b));
+    const int o3 = sign(orient(f.a, f.b, e.a));
+    const int o4 = sign(orient(f.a, f.b, e.b));
+    if (o1 == 0 && o2 == 0) { // collinear: a shared end point only
+        const Eigen::Vector2d d = e.b - e.a;
+        const double s0 = 0.0, s1 = d.squaredNorm();
+        const double t0 = d.dot(f.a - e.a), t1 = d.dot(f.b - e.a);
+        const double lo = std::max(s0, std::min(t0, t1)), hi = std::min(s1, std::max(t0, t1));
+        return hi <= lo;
+    }
+    return o1 == 0 || o2 == 0 || o3 == 0 || o4 == 0;
+}
+
+bool edgesConflict(const Edge &e, const Edge &f, Touching touching)
 {
     if (e.ring == f.ring && e.index == f.index)
         return false;
     if (e.ring == f.ring && e.ringSize > 2 &&
         ((e.index + 1) % e.ringSize == f.index || (f.index + 1) % f.ringSize == e.index))
         return neighboursOverlap(e, f);
-    return segmentsIntersect(e, f);
+    if (!segmentsIntersect(e, f))
+        return false;
+    return touching == Touching::Forbidden || !touchesOnly(e, f);
 }
 
 struct EdgeGrid {
@@ -105,7 +125,7 @@ struct EdgeGrid {
 
 } // namespace
 
-bool isSimple(const std::vector<Eigen::MatrixX2d> &rings)
+bool isSimple(const std::vector<Eigen::MatrixX2d> &rings, Touching touching)
 {
     std::vector<Edge> edges;
     for (std::size_t r = 0; r < rings.size(); ++r) {
@@ -126,20 +146,21 @@ bool isSimple(const std::vector<Eigen::MatrixX2d> &rings)
     for (const std::vector<int> &bucket : grid.cells) {
         for (std::size_t i = 0; i < bucket.size(); ++i)
             for (std::size_t j = i + 1; j < bucket.size(); ++j)
-                if (edgesConflict(edges[std::size_t(bucket[i])], edges[std::size_t(bucket[j])]))
+                if (edgesConflict(edges[std::size_t(bucket[i])], edges[std::size_t(bucket[j])],
+                                  touching))
                     return false;
     }
     return true;
 }
 
-bool isSimple(const Eigen::MatrixX2d &ring)
+bool isSimple(const Eigen::MatrixX2d &ring, Touching touching)
 {
-    return isSimple(std::vector<Eigen::MatrixX2d>{ring});
+    return isSimple(std::vector<Eigen::MatrixX2d>{ring}, touching);
 }
 
-bool isSimple(const Region &region)
+bool isSimple(const Region &region, Touching touching)
 {
-    return isSimple(regionRings(region));
+    return isSimple(regionRings(region), touching);
 }
 
 } // namespace finbook::geometry

@@ -1,7 +1,5 @@
 #include <finbook/geometry/triangle_locator.h>
 
-#include <Eigen/LU>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -58,21 +56,15 @@ TriangleLocator::TriangleLocator(const Eigen::MatrixX2d &V, const Eigen::MatrixX
     , m_F(F)
 {
     const Eigen::Index m = F.rows();
-    if (m == 0)
+    // A mesh the grid cannot index (NaN positions, bad indices) locates nothing.
+    if (m == 0 || !V.allFinite() || F.minCoeff() < 0 || F.maxCoeff() >= V.rows()) {
+        m_F.resize(0, 3);
         return;
-    m_affine.resize(std::size_t(m));
-    Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::max()), hi = -lo;
-    for (Eigen::Index t = 0; t < m; ++t) {
-        const Eigen::Vector2d a = V.row(F(t, 0)), b = V.row(F(t, 1)), c = V.row(F(t, 2));
-        Eigen::Matrix2d edges;
-        edges << b - a, c - a;
-        const double det = edges.determinant();
-        const bool valid = std::abs(det) > 0 && std::isfinite(det);
-        const Eigen::Matrix2d inverse =
-            valid ? Eigen::Matrix2d(edges.inverse()) : Eigen::Matrix2d::Zero();
-        m_affine[std::size_t(t)] = Affine{a, inverse, valid};
-        lo = lo.cwiseMin(a).cwiseMin(b).cwiseMin(c);
-        hi = hi.cwiseMax(a).cwiseMax(b).cwiseMax(c);
+    }
+    Eigen::Vector2d lo = V.row(F(0, 0)).transpose(), hi = lo;
+    for (Eigen::Index i = 0; i < F.size(); ++i) {
+        lo = lo.cwiseMin(V.row(F.data()[i]).transpose());
+        hi = hi.cwiseMax(V.row(F.data()[i]).transpose());
     }
     const Eigen::Vector2d extent = (hi - lo).cwiseMax(1e-9);
     m_origin = lo;
@@ -114,11 +106,17 @@ TriangleLocator::TriangleLocator(const Eigen::MatrixX2d &V, const Eigen::MatrixX
     }
 }
 
-Eigen::Vector3d TriangleLocator::weightsIn(int t, const Eigen::Vector2d &p) const
+bool TriangleLocator::weightsIn(int t, const Eigen::Vector2d &p, Eigen::Vector3d &w) const
 {
-    const Affine &affine = m_affine[std::size_t(t)];
-    const Eigen::Vector2d w = affine.inverse * (p - affine.origin);
-    return {1.0 - w.x() - w.y(), w.x(), w.y()};
+    const Eigen::Vector2d a = m_V.row(m_F(t, 0)), u = m_V.row(m_F(t, 1)).transpose() - a,
+                          v = m_V.row(m_F(t, 2)).transpose() - a, q = p - a;
+    const double det = u.x() * v.y() - u.y() * v.x();
+    if (!(std::abs(det) > 0.0))
+        return false; // degenerate: never reported as containing
+    const double w1 = (q.x() * v.y() - q.y() * v.x()) / det;
+    const double w2 = (u.x() * q.y() - u.y() * q.x()) / det;
+    w = {1.0 - w1 - w2, w1, w2};
+    return true;
 }
 
 template <class Fn> void TriangleLocator::forCell(int x, int y, Fn &&fn) const
@@ -139,9 +137,9 @@ Location TriangleLocator::locate(const Eigen::Vector2d &p) const
         Location best;
         double bestMin = -std::numeric_limits<double>::infinity();
         forCell(int(q.x()), int(q.y()), [&](int t) {
-            if (!m_affine[std::size_t(t)].valid || bestMin >= 0)
+            Eigen::Vector3d w;
+            if (bestMin >= 0 || !weightsIn(t, p, w))
                 return;
-            const Eigen::Vector3d w = weightsIn(t, p);
             if (w.minCoeff() > bestMin) {
                 bestMin = w.minCoeff();
                 best = {t, w, true};

@@ -52,7 +52,8 @@ Expected<ObjectMesh, GeometryError> buildObjectMesh(const std::vector<StrokeInpu
 Expected<ObjectMesh, GeometryError> buildObjectMesh(const Region &region,
                                                     const MeshOptions &options = {});
 
-// Meshes a region that is already simple (silhouette() and repairRegion() promise that).
+// Meshes a region whose rings do not cross: isSimple(region, Touching::AllowedAtPoints),
+// as silhouette() and repairRegion() promise.
 // Errors: NotSimple, DegenerateRegion (no area), InvalidOptions, TriangulationFailed.
 Expected<ObjectMesh, GeometryError> meshRegion(const Region &region,
                                                const MeshOptions &options = {});

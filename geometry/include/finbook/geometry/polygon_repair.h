@@ -31,7 +31,8 @@ struct RepairOptions {
 // Rings are m×2 (any orientation, implicitly closed); non-finite rows are dropped.
 // Errors: EmptyInput (nothing finite), CoordinateOutOfRange, TooManyPoints, InvalidOptions,
 // DegenerateRegion (no area left).
-// Promise: result is simple (isSimple), outer rings positive, holes negative (region.h).
+// Promise: isSimple(result, Touching::AllowedAtPoints), outer rings positive, holes negative
+// (region.h).
 Expected<Region, GeometryError> repairRings(const std::vector<Eigen::MatrixX2d> &rings,
                                             const RepairOptions &options = {});
 

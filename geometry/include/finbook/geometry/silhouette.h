@@ -37,7 +37,8 @@ struct SilhouetteOptions {
 
 // Errors: EmptyInput (no strokes, no finite point), InvalidWidth, InvalidOptions,
 // CoordinateOutOfRange, TooManyPoints, DegenerateRegion (zero width and zero margin).
-// Promise: isSimple(result), outer rings positive and holes negative (region.h), no NaN.
+// Promise: isSimple(result, Touching::AllowedAtPoints), outer rings positive and holes negative
+// (region.h), no NaN.
 Expected<Region, GeometryError> silhouette(const std::vector<StrokeInput> &strokes,
                                            const SilhouetteOptions &options = {});
 

@@ -17,6 +17,7 @@ struct Location {
 class TriangleLocator {
 public:
     // V: n×2, F: m×3 (any orientation; degenerate triangles are never returned as containing).
+    // Non-finite V or indices outside V make an empty locator (every query: triangle −1).
     TriangleLocator(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F);
 
     // Containing triangle, or the nearest one for points outside the mesh. A non-finite
@@ -24,18 +25,12 @@ public:
     Location locate(const Eigen::Vector2d &p) const;
 
 private:
-    struct Affine {
-        Eigen::Vector2d origin;
-        Eigen::Matrix2d inverse; // maps p − origin to weights (w1, w2)
-        bool valid;
-    };
-    Eigen::Vector3d weightsIn(int t, const Eigen::Vector2d &p) const;
+    bool weightsIn(int t, const Eigen::Vector2d &p, Eigen::Vector3d &w) const;
     Location nearest(const Eigen::Vector2d &p) const;
     template <class Fn> void forCell(int x, int y, Fn &&fn) const;
 
     Eigen::MatrixX2d m_V;
     Eigen::MatrixX3i m_F;
-    std::vector<Affine> m_affine;
     Eigen::Vector2d m_origin = Eigen::Vector2d::Zero();
     double m_cell = 1.0;
     int m_nx = 0, m_ny = 0;
