@@ -130,7 +130,6 @@ void DeformController::refresh(Id groupId, bool wantMesh)
     job.meshed = cachedMesh(job.key);
     job.pinRest.resize(Eigen::Index(g->pins.size()), 2);
     for (std::size_t i = 0; i < g->pins.size(); ++i) {
-        job.pinIds.push_back(g->pins[i].id);
         job.pinRest.row(Eigen::Index(i)) << g->pins[i].rest.x(), g->pins[i].rest.y();
     }
     m_states[groupId].waiting = true;

@@ -54,12 +54,13 @@ MeshKey MeshKey::of(const StrokeGroup &group)
 
 bool DeformSetup::matches(const StrokeGroup &group) const
 {
-    if (group.pins.size() != pinIds.size() || !(key == MeshKey::of(group)))
+    // Pins are compared by where they sit, not by id: a duplicated frame's pins have new ids
+    // but the same rest positions, and may share this factorization.
+    if (Eigen::Index(group.pins.size()) != pinRest.rows() || !(key == MeshKey::of(group)))
         return false;
-    for (std::size_t i = 0; i < pinIds.size(); ++i) {
+    for (std::size_t i = 0; i < group.pins.size(); ++i) {
         const Pin &p = group.pins[i];
-        if (p.id != pinIds[i] || p.rest.x() != pinRest(Eigen::Index(i), 0) ||
-            p.rest.y() != pinRest(Eigen::Index(i), 1))
+        if (p.rest.x() != pinRest(Eigen::Index(i), 0) || p.rest.y() != pinRest(Eigen::Index(i), 1))
             return false;
     }
     return true;
@@ -87,7 +88,6 @@ buildDeformSetup(const DeformJob &job, const std::function<bool()> &cancelled)
 {
     auto setup = std::make_shared<DeformSetup>();
     setup->key = job.key;
-    setup->pinIds = job.pinIds;
     setup->pinRest = job.pinRest;
     setup->meshed = job.meshed;
     if (!setup->meshed) {
@@ -117,7 +117,7 @@ Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &g
 {
     const geometry::ObjectMesh &mesh = setup.meshed->mesh;
     Pose pose;
-    if (!setup.arap || group.pins.size() != setup.pinIds.size()) {
+    if (!setup.arap || Eigen::Index(group.pins.size()) != setup.pinRest.rows()) {
         pose.vertices = mesh.V;
     } else {
         // A pin drags its vertex by the pin's own displacement, so a pin that did not land

@@ -36,20 +36,19 @@ struct DeformJob {
     Id groupId = kNoId;
     MeshKey key;
     std::shared_ptr<const MeshedObject> meshed; // reused when the key is unchanged
-    std::vector<Id> pinIds;
-    Eigen::MatrixX2d pinRest; // k×2, rest positions of the pins (canvas px)
+    Eigen::MatrixX2d pinRest;                   // k×2, rest positions of the pins (canvas px)
     deform::ArapOptions options;
 };
 
 struct DeformSetup {
     MeshKey key;
     std::shared_ptr<const MeshedObject> meshed;
-    std::vector<Id> pinIds;
     Eigen::MatrixX2d pinRest;
     Eigen::VectorXi pinVertex;                          // per pin: the mesh vertex it drives
     std::shared_ptr<const deform::ArapPrecompute> arap; // null without pins
 
-    // Whether this setup serves `group` as it is now (same drawing, same pins at rest).
+    // Whether this setup serves `group` as it is now: same drawing, pins at the same rest
+    // positions in the same order (pin ids may differ).
     bool matches(const StrokeGroup &group) const;
 };
 
