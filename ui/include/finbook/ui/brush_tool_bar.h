@@ -1,0 +1,29 @@
+// The pen's toolbar: colour swatches, a colour picker, width and smoothing.
+#pragma once
+
+#include <QToolBar>
+
+class QDoubleSpinBox;
+class QSpinBox;
+
+namespace finbook::ui {
+
+class ColorButton;
+class PenTool;
+
+class BrushToolBar : public QToolBar {
+    Q_OBJECT
+public:
+    explicit BrushToolBar(PenTool *pen, QWidget *parent = nullptr);
+
+private:
+    void addSwatch(const QColor &color);
+    void showSettings();
+
+    PenTool *m_pen;
+    ColorButton *m_color;
+    QDoubleSpinBox *m_width;
+    QSpinBox *m_smoothing;
+};
+
+} // namespace finbook::ui

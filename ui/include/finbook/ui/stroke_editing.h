@@ -1,0 +1,54 @@
+// Edits on strokes shared by tools and menu actions: adding strokes to the current object
+// (creating one if the frame has none), deleting, selecting all, and the clipboard.
+// Every edit is one undo step (a macro when it takes several commands).
+#pragma once
+
+#include <finbook/model/types.h>
+
+#include <QCoreApplication>
+#include <QMimeData>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace finbook::ui {
+
+class EditorState;
+
+// MIME type of strokes on the clipboard: a versioned QDataStream of points, colour, width.
+inline constexpr char kStrokesMimeType[] = "application/x-finbook-strokes";
+
+QByteArray encodeStrokes(const std::vector<model::StrokeDataPtr> &strokes);
+// Refuses (nullopt) anything malformed: wrong magic, absurd counts, non-finite values.
+std::optional<std::vector<model::StrokeDataPtr>> decodeStrokes(const QByteArray &bytes);
+
+class StrokeEditing {
+    Q_DECLARE_TR_FUNCTIONS(StrokeEditing)
+public:
+    // Why new strokes cannot go into the current frame now (no frame, locked or hidden
+    // object), as a sentence for the status bar; empty when they can.
+    static QString targetProblem(const EditorState &state);
+
+    // Adds strokes on top of the current object as one undo step named `text`, creating an
+    // object when the frame has none. Returns the new stroke ids, or nullopt with `problem`
+    // set when refused.
+    static std::optional<std::vector<model::Id>>
+    addStrokes(EditorState &state, const std::vector<model::StrokeDataPtr> &strokes,
+               const QString &text, QString *problem = nullptr);
+
+    // Removes the selected strokes (one undo step). False when nothing was selected.
+    static bool deleteSelection(EditorState &state);
+    // Selects every stroke of the visible, unlocked objects of the current frame.
+    static void selectAll(EditorState &state);
+
+    static std::vector<model::StrokeDataPtr> selectedData(const EditorState &state);
+    static bool copySelection(const EditorState &state);
+    static bool cutSelection(EditorState &state);
+    // Pastes clipboard strokes at their original positions into the current object and
+    // selects them. Returns false (with `problem` set if refused) when nothing was pasted.
+    static bool paste(EditorState &state, QString *problem = nullptr);
+    static bool clipboardHasStrokes();
+};
+
+} // namespace finbook::ui

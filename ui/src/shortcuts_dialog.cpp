@@ -1,0 +1,55 @@
+#include <finbook/ui/shortcut_registry.h>
+#include <finbook/ui/shortcuts_dialog.h>
+
+#include <QDialogButtonBox>
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace finbook::ui {
+
+ShortcutsDialog::ShortcutsDialog(const ShortcutRegistry *registry, QWidget *parent)
+    : QDialog(parent)
+{
+    setWindowTitle(tr("Keyboard Shortcuts"));
+    setObjectName(QStringLiteral("shortcutsDialog"));
+    QList<QPair<QString, QString>> rows;
+    for (const QAction *a : registry->actions())
+        rows.append(
+            {a->text().remove(QLatin1Char('&')), a->shortcut().toString(QKeySequence::NativeText)});
+    rows.append({tr("Pan the view"), tr("Space + drag, or middle button drag")});
+    rows.append({tr("Zoom about the cursor"), tr("Mouse wheel")});
+
+    auto *table = new QTableWidget(int(rows.size()), 2, this);
+    table->setObjectName(QStringLiteral("shortcutsTable"));
+    table->setHorizontalHeaderLabels({tr("Action"), tr("Shortcut")});
+    table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    table->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    table->verticalHeader()->hide();
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    for (int r = 0; r < int(rows.size()); ++r) {
+        table->setItem(r, 0, new QTableWidgetItem(rows[r].first));
+        table->setItem(r, 1, new QTableWidgetItem(rows[r].second));
+    }
+    m_rows = int(rows.size());
+
+    auto *filter = new QLineEdit(this);
+    filter->setPlaceholderText(tr("Filter"));
+    filter->setClearButtonEnabled(true);
+    connect(filter, &QLineEdit::textChanged, this, [table](const QString &text) {
+        for (int r = 0; r < table->rowCount(); ++r)
+            table->setRowHidden(r,
+                                !table->item(r, 0)->text().contains(text, Qt::CaseInsensitive) &&
+                                    !table->item(r, 1)->text().contains(text, Qt::CaseInsensitive));
+    });
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(filter);
+    layout->addWidget(table);
+    layout->addWidget(buttons);
+    resize(520, 600);
+}
+
+} // namespace finbook::ui
