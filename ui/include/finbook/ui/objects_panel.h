@@ -1,0 +1,54 @@
+// ObjectsPanel: the objects of the current frame, top object first like a layers panel.
+//
+// A tool bar over the list holds the ObjectActions (new, delete, raise, lower, merge, move
+// selection to…). In the list: click picks the current object (two-way with
+// EditorState::currentGroupId), Ctrl/Shift-click selects several for merging, double-click
+// renames, the eye and lock at the right of a row toggle visibility and lock, and dragging a
+// row reorders (z-order). Every edit is a command on the document's undo stack.
+#pragma once
+
+#include <finbook/model/types.h>
+
+#include <QWidget>
+
+class QListView;
+class QToolBar;
+
+namespace finbook::model {
+class ObjectListModel;
+}
+
+namespace finbook::ui {
+
+class EditorState;
+class ObjectActions;
+
+class ObjectsPanel : public QWidget {
+    Q_OBJECT
+public:
+    ObjectsPanel(EditorState *state, ObjectActions *actions, QWidget *parent = nullptr);
+
+    QListView *view() const { return m_view; }
+    QToolBar *toolBar() const { return m_toolBar; }
+    model::ObjectListModel *objectModel() const { return m_model; }
+    // Viewport rectangles of a row's visibility and lock toggles.
+    QRect visibilityToggleRect(int row) const;
+    QRect lockToggleRect(int row) const;
+
+    QSize sizeHint() const override { return {220, 260}; }
+
+private:
+    void followFrame();
+    void selectCurrentGroup();
+    void viewCurrentChanged();
+    void viewSelectionChanged();
+
+    EditorState *m_state;
+    ObjectActions *m_actions;
+    model::ObjectListModel *m_model;
+    QToolBar *m_toolBar;
+    QListView *m_view;
+    bool m_syncing = false;
+};
+
+} // namespace finbook::ui

@@ -1,0 +1,106 @@
+#include "objects_panel_delegate.h"
+
+#include <finbook/model/object_list_model.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/object_actions.h>
+#include <finbook/ui/objects_panel.h>
+
+#include <QListView>
+#include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace finbook::ui {
+
+ObjectsPanel::ObjectsPanel(EditorState *state, ObjectActions *actions, QWidget *parent)
+    : QWidget(parent)
+    , m_state(state)
+    , m_actions(actions)
+    , m_model(new model::ObjectListModel(state->document(), this))
+    , m_toolBar(new QToolBar(this))
+    , m_view(new QListView(this))
+{
+    setObjectName(QStringLiteral("objects"));
+    m_view->setObjectName(QStringLiteral("objects.view"));
+    m_toolBar->setIconSize(QSize(16, 16));
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    for (QAction *action : {actions->newObject(), actions->remove(), actions->raise(),
+                            actions->lower(), actions->merge(), actions->moveSelection()})
+        m_toolBar->addAction(action);
+    if (auto *button =
+            qobject_cast<QToolButton *>(m_toolBar->widgetForAction(actions->moveSelection())))
+        button->setPopupMode(QToolButton::InstantPopup);
+
+    m_view->setModel(m_model);
+    m_view->setItemDelegate(new ObjectsPanelDelegate(m_view));
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    m_view->setDragDropMode(QAbstractItemView::InternalMove);
+    m_view->setDefaultDropAction(Qt::MoveAction);
+    m_view->setDropIndicatorShown(true);
+    m_view->setUniformItemSizes(true);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(m_toolBar);
+    layout->addWidget(m_view, 1);
+
+    connect(m_state, &EditorState::currentFrameChanged, this, &ObjectsPanel::followFrame);
+    connect(m_state, &EditorState::currentGroupChanged, this, &ObjectsPanel::selectCurrentGroup);
+    for (auto signal : {&QAbstractItemModel::rowsInserted, &QAbstractItemModel::rowsRemoved})
+        connect(m_model, signal, this, &ObjectsPanel::selectCurrentGroup);
+    connect(m_model, &QAbstractItemModel::rowsMoved, this, &ObjectsPanel::selectCurrentGroup);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &ObjectsPanel::selectCurrentGroup);
+    connect(m_view->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            &ObjectsPanel::viewCurrentChanged);
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &ObjectsPanel::viewSelectionChanged);
+    followFrame();
+}
+
+QRect ObjectsPanel::visibilityToggleRect(int row) const
+{
+    return ObjectsPanelDelegate::visibilityRect(m_view->visualRect(m_model->index(row)));
+}
+
+QRect ObjectsPanel::lockToggleRect(int row) const
+{
+    return ObjectsPanelDelegate::lockRect(m_view->visualRect(m_model->index(row)));
+}
+
+void ObjectsPanel::followFrame()
+{
+    m_model->setFrameId(m_state->currentFrameId());
+    selectCurrentGroup();
+}
+
+void ObjectsPanel::selectCurrentGroup()
+{
+    const int row = m_model->rowOfGroup(m_state->currentGroupId());
+    if (row < 0 || m_view->currentIndex().row() == row)
+        return;
+    m_syncing = true;
+    m_view->selectionModel()->setCurrentIndex(m_model->index(row),
+                                              QItemSelectionModel::ClearAndSelect);
+    m_syncing = false;
+}
+
+void ObjectsPanel::viewCurrentChanged()
+{
+    if (m_syncing)
+        return;
+    const model::Id id = m_model->groupId(m_view->currentIndex().row());
+    if (id != model::kNoId)
+        m_state->setCurrentGroupId(id);
+}
+
+void ObjectsPanel::viewSelectionChanged()
+{
+    std::vector<model::Id> ids;
+    for (const QModelIndex &index : m_view->selectionModel()->selectedRows())
+        ids.push_back(m_model->groupId(index.row()));
+    m_actions->setObjectSelection(std::move(ids));
+}
+
+} // namespace finbook::ui
