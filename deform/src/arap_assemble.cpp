@@ -17,7 +17,9 @@ Eigen::Matrix3cd similarityForm(const Complex z[3])
     Eigen::Matrix3cd form = Eigen::Matrix3cd::Zero();
     for (int a = 0; a < 3; ++a) {
         const int b = (a + 1) % 3, c = (a + 2) % 3;
-        const Complex mu = (z[c] - z[a]) / (z[b] - z[a]);
+        const Complex edge = z[b] - z[a];
+        // Written out: std::complex division goes through the slow, overflow-careful __divdc3.
+        const Complex mu = (z[c] - z[a]) * std::conj(edge) / std::norm(edge);
         Eigen::Vector3cd w;
         w(a) = mu - 1.0;
         w(b) = -mu;
@@ -27,44 +29,54 @@ Eigen::Matrix3cd similarityForm(const Complex z[3])
     return form;
 }
 
-struct Triplets {
-    std::vector<Eigen::Triplet<Complex>> g00, g01;
-    std::vector<Eigen::Triplet<double>> h00, h01;
-};
-
-// Splits one triangle's local forms into the free-free (upper triangle only, which is all
-// SimplicialLLT<Upper> reads) and free-handle blocks. Step 2's form is the graph Laplacian of
-// the triangle's three edges: 2 on the diagonal, −1 off it.
-void scatter(const int I[3], Eigen::Index nf, const Eigen::Matrix3cd &form, Triplets &out)
+// Position of entry (row, col) in the value array of a compressed matrix; columns of these
+// vertex-adjacency matrices hold a handful of entries, so a linear scan is fastest.
+Eigen::Index entryIndex(const Eigen::SparseMatrix<Complex> &m, int row, int col)
 {
+    Eigen::Index k = m.outerIndexPtr()[col];
+    while (m.innerIndexPtr()[k] != row)
+        ++k;
+    return k;
+}
+
+// Adds one triangle's step-1 form to G00 (upper triangle, H00's pattern) and the free-handle
+// couplings of both steps. Step 2's form is the triangle's graph Laplacian: 2 on the
+// diagonal, −1 off it.
+void scatter(const int I[3], const Eigen::Matrix3cd &form, ArapPrecompute &d,
+             std::vector<Eigen::Triplet<Complex>> &g01, std::vector<Eigen::Triplet<double>> &h01)
+{
+    const Eigen::Index nf = d.freeCount;
     for (int r = 0; r < 3; ++r) {
         if (I[r] >= nf)
             continue;
         for (int s = 0; s < 3; ++s) {
-            const double laplacian = r == s ? 2.0 : -1.0;
             if (I[s] >= nf) {
-                out.g01.emplace_back(I[r], I[s] - nf, form(r, s));
-                out.h01.emplace_back(I[r], I[s] - nf, laplacian);
+                g01.emplace_back(I[r], I[s] - nf, form(r, s));
+                h01.emplace_back(I[r], I[s] - nf, r == s ? 2.0 : -1.0);
             } else if (I[r] <= I[s]) {
-                out.g00.emplace_back(I[r], I[s], form(r, s));
-                out.h00.emplace_back(I[r], I[s], laplacian);
+                d.stepOneMatrix.valuePtr()[entryIndex(d.stepOneMatrix, I[r], I[s])] += form(r, s);
             }
         }
     }
 }
 
-// ‖A‖∞ of the full self-adjoint matrix whose upper triangle is stored.
-template <class Scalar> double selfAdjointNorm(const Eigen::SparseMatrix<Scalar> &upper)
+// Triangles bucketed by their lowest internal vertex index, so that the per-event loop walks
+// the solution vector roughly in order instead of jumping across it.
+std::vector<Eigen::Index> localityOrder(const std::vector<Eigen::Index> &triangles,
+                                        const Eigen::MatrixX3i &F, const std::vector<int> &internal)
 {
-    Eigen::VectorXd rowSum = Eigen::VectorXd::Zero(upper.rows());
-    for (Eigen::Index col = 0; col < upper.outerSize(); ++col) {
-        for (typename Eigen::SparseMatrix<Scalar>::InnerIterator it(upper, col); it; ++it) {
-            rowSum(it.row()) += std::abs(it.value());
-            if (it.row() != it.col())
-                rowSum(it.col()) += std::abs(it.value());
-        }
-    }
-    return rowSum.size() > 0 ? rowSum.maxCoeff() : 0.0;
+    const std::size_t n = internal.size();
+    std::vector<Eigen::Index> start(n + 1, 0), sorted(triangles.size());
+    auto lowest = [&](Eigen::Index t) {
+        return std::size_t(std::min({internal[F(t, 0)], internal[F(t, 1)], internal[F(t, 2)]}));
+    };
+    for (const Eigen::Index t : triangles)
+        ++start[lowest(t) + 1];
+    for (std::size_t v = 0; v < n; ++v)
+        start[v + 1] += start[v];
+    for (const Eigen::Index t : triangles)
+        sorted[std::size_t(start[lowest(t)]++)] = t;
+    return sorted;
 }
 
 } // namespace
@@ -74,20 +86,19 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                          const std::vector<int> &internal, ArapPrecompute &d)
 {
     const auto m = static_cast<Eigen::Index>(triangles.size());
-    const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
     d.triangles.resize(m, 3);
     d.restCentered.resize(m, 3);
     d.collapseThreshold.resize(m);
-    Triplets tr;
-    for (auto *list : {&tr.g00, &tr.g01})
-        list->reserve(std::size_t(m) * 6);
-    tr.h00.reserve(std::size_t(m) * 6);
-    tr.h01.reserve(std::size_t(m) * 6);
+    d.stepOneMatrix = d.stepTwoMatrix.cast<Complex>();
+    d.stepOneMatrix.coeffs().setZero();
+    std::vector<Eigen::Triplet<Complex>> g01;
+    std::vector<Eigen::Triplet<double>> h01;
+    const std::vector<Eigen::Index> sorted = localityOrder(triangles, F, internal);
     for (Eigen::Index k = 0; k < m; ++k) {
         int I[3];
         Complex z[3];
         for (int r = 0; r < 3; ++r) {
-            const int v = F(triangles[std::size_t(k)], r);
+            const int v = F(sorted[std::size_t(k)], r);
             I[r] = internal[std::size_t(v)];
             z[r] = Complex(V(v, 0), V(v, 1));
             d.triangles(k, r) = I[r];
@@ -96,18 +107,14 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
         for (int r = 0; r < 3; ++r)
             d.restCentered(k, r) = z[r] - centroid;
         d.collapseThreshold(k) = kCollapseFraction * d.restCentered.row(k).squaredNorm();
-        scatter(I, nf, similarityForm(z), tr);
+        scatter(I, similarityForm(z), d, g01, h01);
     }
-    d.stepOneMatrix.resize(nf, nf);
-    d.stepOneMatrix.setFromTriplets(tr.g00.begin(), tr.g00.end());
+    const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
     d.stepOneCoupling.resize(nf, handles);
-    d.stepOneCoupling.setFromTriplets(tr.g01.begin(), tr.g01.end());
-    d.stepTwoMatrix.resize(nf, nf);
-    d.stepTwoMatrix.setFromTriplets(tr.h00.begin(), tr.h00.end());
+    d.stepOneCoupling.setFromTriplets(g01.begin(), g01.end());
     d.stepTwoCoupling.resize(nf, handles);
-    d.stepTwoCoupling.setFromTriplets(tr.h01.begin(), tr.h01.end());
+    d.stepTwoCoupling.setFromTriplets(h01.begin(), h01.end());
     d.stepOneNorm = selfAdjointNorm(d.stepOneMatrix);
-    d.stepTwoNorm = selfAdjointNorm(d.stepTwoMatrix);
 }
 
 } // namespace finbook::deform::detail

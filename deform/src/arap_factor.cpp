@@ -1,6 +1,8 @@
 #include "arap_internal.h"
 
+#include <atomic>
 #include <exception>
+#include <latch>
 #include <thread>
 
 namespace finbook::deform::detail {
@@ -16,90 +18,130 @@ DeformError cancelledError()
     return makeError(DeformErrorCode::Cancelled, "precompute was cancelled");
 }
 
-// G00 (complex) and H00 (real) are independent and similar in cost: factor them side by side.
-std::optional<DeformError> factorBoth(ArapPrecompute &d)
+DeformError singularError()
 {
-    std::exception_ptr failure;
-    std::thread helper([&d, &failure] {
-        try {
-            d.stepTwoFactor.compute(d.stepTwoMatrix);
-        } catch (...) {
-            failure = std::current_exception();
-        }
-    });
-    try {
-        d.stepOneFactor.compute(d.stepOneMatrix);
-    } catch (...) {
-        helper.join();
-        throw;
-    }
-    helper.join();
-    if (failure)
-        std::rethrow_exception(failure);
-    if (d.stepOneFactor.info() != Eigen::Success || d.stepTwoFactor.info() != Eigen::Success)
-        return makeError(DeformErrorCode::FactorizationFailed,
-                         "the deformation system could not be factored");
-    return std::nullopt;
+    return makeError(DeformErrorCode::FactorizationFailed,
+                     "the deformation system is numerically singular");
 }
 
 // Simplicial Cholesky reports Success for NaN and for numerically singular matrices, so
 // solve for a known vector and check the answer is finite with a small residual.
 template <class Factor, class Matrix>
-std::optional<DeformError> probe(const Factor &factor, const Matrix &upper, double norm)
+bool probe(const Factor &factor, const Matrix &upper, double norm)
 {
     using Vector = Eigen::Matrix<typename Matrix::Scalar, Eigen::Dynamic, 1>;
     const Vector known = Vector::LinSpaced(upper.rows(), 1.0, 2.0);
     const Vector rhs = upper.template selfadjointView<Eigen::Upper>() * known;
     const Vector x = factor.solve(rhs);
     const Vector residual = upper.template selfadjointView<Eigen::Upper>() * x - rhs;
-    if (!x.allFinite() || relativeResidual(residual, norm, x, rhs) > kResidualTolerance)
-        return makeError(DeformErrorCode::FactorizationFailed,
-                         "the deformation system is numerically singular");
-    return std::nullopt;
-}
-
-// M = −G00⁻¹G01, one complex solve per handle, so step 1 per event is a k-column product.
-std::optional<DeformError> buildBasis(ArapPrecompute &d, const std::function<bool()> &stop)
-{
-    const Eigen::Index handles = d.handleEntry.size();
-    if (handles > kMaxBasisHandles)
-        return std::nullopt;
-    d.stepOneBasis.resize(d.freeCount, handles);
-    for (Eigen::Index c = 0; c < handles; ++c) {
-        if (stop())
-            return cancelledError();
-        const Eigen::VectorXcd rhs = -Eigen::VectorXcd(d.stepOneCoupling.col(c));
-        d.stepOneBasis.col(c) = d.stepOneFactor.solve(rhs);
-        const Eigen::VectorXcd residual =
-            d.stepOneMatrix.selfadjointView<Eigen::Upper>() * d.stepOneBasis.col(c) - rhs;
-        if (!d.stepOneBasis.col(c).allFinite() ||
-            relativeResidual(residual, d.stepOneNorm, d.stepOneBasis.col(c), rhs) >
-                kResidualTolerance)
-            return makeError(DeformErrorCode::SolveFailed,
-                             "the similarity basis could not be computed accurately");
-    }
-    return std::nullopt;
+    return x.allFinite() && relativeResidual(residual, norm, x, rhs) <= kResidualTolerance;
 }
 
 } // namespace
 
-std::optional<DeformError> factorArapSystems(ArapPrecompute &d,
-                                             const std::function<bool()> &cancelled)
+// Work shared by the two threads. The caller's cancellation callback is only ever polled on
+// the calling thread; the helper watches `abort`.
+struct ArapFactorization::Shared {
+    explicit Shared(ArapPrecompute &data)
+        : d(data)
+    {}
+    ArapPrecompute &d;
+    std::latch stepOneFactored{1};
+    bool released = false; // stepOneFactored was counted down (calling thread only)
+    std::atomic<bool> stepOneOk{false};
+    std::atomic<bool> abort{false};
+    std::atomic<bool> inaccurate{false};
+
+    void release(bool ok)
+    {
+        stepOneOk = ok;
+        released = true;
+        stepOneFactored.count_down();
+    }
+
+    // Basis columns first, first + 2, …: M(:, c) = −G00⁻¹ G01(:, c), each residual-checked
+    // (which also verifies the G00 factor, so it needs no separate probe then).
+    void basisColumns(Eigen::Index first, const std::function<bool()> &stop)
+    {
+        for (Eigen::Index c = first; c < d.stepOneBasis.cols(); c += 2) {
+            if (abort || inaccurate || stop()) {
+                abort = true;
+                return;
+            }
+            const Eigen::VectorXcd rhs = -Eigen::VectorXcd(d.stepOneCoupling.col(c));
+            auto column = d.stepOneBasis.col(c);
+            column = d.stepOneFactor.solve(rhs);
+            const Eigen::VectorXcd residual =
+                d.stepOneMatrix.selfadjointView<Eigen::Upper>() * column - rhs;
+            if (!column.allFinite() ||
+                relativeResidual(residual, d.stepOneNorm, column, rhs) > kResidualTolerance)
+                inaccurate = true;
+        }
+    }
+};
+
+ArapFactorization::ArapFactorization(ArapPrecompute &d)
+    : m_shared(std::make_unique<Shared>(d))
+{
+    if (d.freeCount == 0) // every vertex of every solved component is pinned
+        return;
+    m_helper = std::thread([this] {
+        Shared &s = *m_shared;
+        try {
+            s.d.stepTwoFactor.compute(s.d.stepTwoMatrix);
+            m_stepTwoOk = s.d.stepTwoFactor.info() == Eigen::Success &&
+                          probe(s.d.stepTwoFactor, s.d.stepTwoMatrix, s.d.stepTwoNorm);
+            s.stepOneFactored.wait();
+            if (m_stepTwoOk && s.stepOneOk && !s.abort)
+                s.basisColumns(1, [] { return false; });
+        } catch (...) {
+            s.abort = true;
+            m_helperFailure = std::current_exception();
+        }
+    });
+}
+
+ArapFactorization::~ArapFactorization()
+{
+    if (!m_helper.joinable())
+        return;
+    m_shared->abort = true;
+    if (!m_shared->released)
+        m_shared->release(false);
+    m_helper.join();
+}
+
+std::optional<DeformError> ArapFactorization::finish(const std::function<bool()> &cancelled)
 {
     const std::function<bool()> stop = [&cancelled] { return cancelled && cancelled(); };
-    if (d.freeCount == 0) // every vertex of every solved component is pinned
+    Shared &s = *m_shared;
+    if (s.d.freeCount == 0)
         return std::nullopt;
-    if (stop())
+    const Eigen::Index handles = s.d.handleEntry.size();
+    s.d.stepOneBasis.resize(s.d.freeCount, handles <= kMaxBasisHandles ? handles : 0);
+    if (stop()) {
+        s.abort = true;
+        s.release(false);
+    } else {
+        s.d.stepOneFactor.compute(s.d.stepOneMatrix);
+        bool ok = s.d.stepOneFactor.info() == Eigen::Success;
+        if (ok && s.d.stepOneBasis.cols() == 0) // no basis solves to verify the factor with
+            ok = probe(s.d.stepOneFactor, s.d.stepOneMatrix, s.d.stepOneNorm);
+        s.release(ok);
+        if (ok)
+            s.basisColumns(0, stop);
+    }
+    m_helper.join();
+    if (m_helperFailure)
+        std::rethrow_exception(m_helperFailure);
+    if (s.abort || stop())
         return cancelledError();
-    if (auto error = factorBoth(d))
-        return error;
-    if (stop())
-        return cancelledError();
-    if (auto error = probe(d.stepOneFactor, d.stepOneMatrix, d.stepOneNorm))
-        return error;
-    if (auto error = probe(d.stepTwoFactor, d.stepTwoMatrix, d.stepTwoNorm))
-        return error;
-    return buildBasis(d, stop);
+    if (!s.stepOneOk || !m_stepTwoOk)
+        return singularError();
+    if (s.inaccurate)
+        return makeError(DeformErrorCode::SolveFailed,
+                         "the similarity basis could not be computed accurately");
+    return std::nullopt;
 }
 
 } // namespace finbook::deform::detail

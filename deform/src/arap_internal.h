@@ -7,9 +7,12 @@
 #include <Eigen/Core>
 
 #include <complex>
+#include <exception>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace finbook::deform::detail {
@@ -29,26 +32,58 @@ std::optional<DeformError> validateArapInput(const Eigen::MatrixX2d &V, const Ei
 // by no triangle is a component of its own. F must hold valid indices.
 Eigen::VectorXi componentLabels(Eigen::Index vertexCount, const Eigen::MatrixX3i &F, int &count);
 
-// Fills the step-1 (G00, G01) and step-2 (H00, H01) systems and the per-triangle rest data of
-// d for the given triangles; `internal` maps original to internal vertex indices.
+// Fills the step-1 systems (G00 on H00's pattern, G01), the step-2 coupling H01 and the
+// per-triangle rest data of d; `internal` maps original to internal vertex indices. Only reads
+// d.stepTwoMatrix, so it may run while ArapFactorization factors H00.
 void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                          const std::vector<Eigen::Index> &triangles,
                          const std::vector<int> &internal, ArapPrecompute &d);
 
-// Factors G00 and H00 (concurrently), verifies both with a probe solve and builds the step-1
-// basis, polling `cancelled` between phases and between basis columns.
-std::optional<DeformError> factorArapSystems(ArapPrecompute &d,
-                                             const std::function<bool()> &cancelled);
+// The two factorizations are independent, so they run side by side: constructing this starts
+// factoring and probing H00 on a helper thread (H00 and its norm must be ready) while the
+// caller assembles G00; finish() factors G00 and computes the step-1 basis on both threads.
+class ArapFactorization {
+public:
+    explicit ArapFactorization(ArapPrecompute &d);
+    ~ArapFactorization(); // releases and joins the helper when finish() was never reached
+    ArapFactorization(const ArapFactorization &) = delete;
+    ArapFactorization &operator=(const ArapFactorization &) = delete;
+
+    // Polls `cancelled` (on this thread only) before factoring and between basis columns.
+    std::optional<DeformError> finish(const std::function<bool()> &cancelled);
+
+private:
+    struct Shared;
+    std::unique_ptr<Shared> m_shared;
+    std::thread m_helper;
+    std::exception_ptr m_helperFailure;
+    bool m_stepTwoOk = false;
+};
+
+// ‖A‖∞ of the full self-adjoint matrix whose upper triangle is stored.
+template <class Scalar> double selfAdjointNorm(const Eigen::SparseMatrix<Scalar> &upper)
+{
+    Eigen::VectorXd rowSum = Eigen::VectorXd::Zero(upper.rows());
+    for (Eigen::Index col = 0; col < upper.outerSize(); ++col) {
+        for (typename Eigen::SparseMatrix<Scalar>::InnerIterator it(upper, col); it; ++it) {
+            rowSum(it.row()) += std::abs(it.value());
+            if (it.row() != it.col())
+                rowSum(it.col()) += std::abs(it.value());
+        }
+    }
+    return rowSum.size() > 0 ? rowSum.maxCoeff() : 0.0;
+}
 
 // Best rotation (unit complex number) taking the centred rest corners r onto the centred
-// corners p: the 2D Procrustes solution arg(Σ conj(r_k)·p_k). When the sum is below
-// `threshold` the target triangle has collapsed (two pins dragged onto one point) and any
-// rotation fits equally badly: return the identity instead of dividing by ~0.
+// corners p: the 2D Procrustes solution arg(Σ conj(r_k)·p_k). When |Σ| is below `threshold`
+// the target triangle has collapsed (two pins dragged onto one point) and any rotation fits
+// equally badly: return the identity instead of dividing by ~0. Squared norms avoid hypot(),
+// which dominated the per-event profile.
 inline Complex bestRotation(const Complex r[3], const Complex p[3], double threshold)
 {
     const Complex s = std::conj(r[0]) * p[0] + std::conj(r[1]) * p[1] + std::conj(r[2]) * p[2];
-    const double length = std::abs(s);
-    return length > threshold ? s / length : Complex(1.0, 0.0);
+    const double squared = std::norm(s);
+    return squared > threshold * threshold ? s / std::sqrt(squared) : Complex(1.0, 0.0);
 }
 
 // ‖r‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞), 0 when everything is zero: a backward-error style measure that
@@ -56,8 +91,12 @@ inline Complex bestRotation(const Complex r[3], const Complex p[3], double thres
 template <class R, class X, class B>
 double relativeResidual(const R &residual, double normA, const X &x, const B &rhs)
 {
-    const double scale = normA * x.cwiseAbs().maxCoeff() + rhs.cwiseAbs().maxCoeff();
-    const double r = residual.cwiseAbs().maxCoeff();
+    // Squared magnitudes first: cwiseAbs() on complex vectors calls hypot() per entry.
+    const auto maxAbs = [](const auto &v) {
+        return v.size() > 0 ? std::sqrt(v.cwiseAbs2().maxCoeff()) : 0.0;
+    };
+    const double scale = normA * maxAbs(x) + maxAbs(rhs);
+    const double r = maxAbs(residual);
     return scale > 0.0 ? r / scale : r;
 }
 

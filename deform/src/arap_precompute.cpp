@@ -4,8 +4,6 @@
 
 #include <Eigen/OrderingMethods>
 
-#include <exception>
-#include <thread>
 #include <vector>
 
 namespace finbook::deform {
@@ -57,30 +55,47 @@ Classification classify(Eigen::Index n, const Eigen::MatrixX3i &F, const Eigen::
     return c;
 }
 
-// AMD on the free-vertex adjacency, shared by G00 and H00 (same pattern). Returns the free
-// vertices (original indices) in elimination order.
-std::vector<int> fillReducingOrder(const Eigen::MatrixX3i &F, const Classification &c,
-                                   const std::vector<int> &freeLocal)
+// Step 2's matrix H00 over the free vertices (upper triangle, free-local numbering): the
+// uniform graph Laplacian summed per triangle, 2 on the diagonal and −1 per edge.
+Eigen::SparseMatrix<double> freeLaplacian(const Eigen::MatrixX3i &F, const Classification &c,
+                                          const std::vector<int> &freeLocal)
 {
     const auto nf = static_cast<int>(c.freeVertices.size());
-    std::vector<Eigen::Triplet<double>> pattern;
-    pattern.reserve(c.solvedTriangles.size() * 6);
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(c.solvedTriangles.size() * 6);
     for (const Eigen::Index t : c.solvedTriangles) {
         for (int r = 0; r < 3; ++r) {
             for (int s = r; s < 3; ++s) {
                 const int i = freeLocal[F(t, r)], j = freeLocal[F(t, s)];
                 if (i >= 0 && j >= 0)
-                    pattern.emplace_back(std::min(i, j), std::max(i, j), 1.0);
+                    entries.emplace_back(std::min(i, j), std::max(i, j), r == s ? 2.0 : -1.0);
             }
         }
     }
     Eigen::SparseMatrix<double> upper(nf, nf);
-    upper.setFromTriplets(pattern.begin(), pattern.end());
+    upper.setFromTriplets(entries.begin(), entries.end());
+    return upper;
+}
+
+// AMD on the free-vertex adjacency, computed once and shared by G00 and H00 (same pattern).
+// Stores H00 pre-permuted in d and returns the free vertices in elimination order.
+std::vector<int> fillReducingOrder(const Eigen::MatrixX3i &F, const Classification &c,
+                                   const std::vector<int> &freeLocal, ArapPrecompute &d)
+{
+    const Eigen::SparseMatrix<double> laplacian = freeLaplacian(F, c, freeLocal);
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
-    Eigen::AMDOrdering<int>()(upper.selfadjointView<Eigen::Upper>(), inverse);
+    Eigen::AMDOrdering<int>()(laplacian.selfadjointView<Eigen::Upper>(), inverse);
+    const auto nf = static_cast<int>(c.freeVertices.size());
     std::vector<int> ordered(static_cast<std::size_t>(nf));
     for (int k = 0; k < nf; ++k)
         ordered[k] = c.freeVertices[inverse.indices()(k)];
+    Eigen::SparseMatrix<double> permuted(nf, nf);
+    permuted.selfadjointView<Eigen::Upper>() =
+        laplacian.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
+    // The permuted columns come out unsorted; G00 is built on the same pattern through a
+    // sparse assignment, which requires sorted inner indices. A double transpose sorts.
+    d.stepTwoMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>(permuted);
+    d.stepTwoNorm = detail::selfAdjointNorm(d.stepTwoMatrix);
     return ordered;
 }
 
@@ -93,7 +108,7 @@ std::vector<int> numberVertices(const Eigen::MatrixX2d &V, const Eigen::MatrixX3
     std::vector<int> freeLocal(static_cast<std::size_t>(n), -1);
     for (std::size_t k = 0; k < c.freeVertices.size(); ++k)
         freeLocal[c.freeVertices[k]] = static_cast<int>(k);
-    const std::vector<int> ordered = fillReducingOrder(F, c, freeLocal);
+    const std::vector<int> ordered = fillReducingOrder(F, c, freeLocal, d);
 
     d.freeCount = static_cast<Eigen::Index>(ordered.size());
     d.order.resize(n);
@@ -143,8 +158,9 @@ ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::Matr
     const std::vector<int> internal = numberVertices(V, F, b, c, *d);
     if (stop())
         return cancelledError();
+    detail::ArapFactorization factorization(*d); // H00 is factored while G00 is assembled
     detail::assembleArapSystems(V, F, c.solvedTriangles, internal, *d);
-    if (auto error = detail::factorArapSystems(*d, cancelled))
+    if (auto error = factorization.finish(cancelled))
         return unexpected(std::move(*error));
     return std::shared_ptr<const ArapPrecompute>(std::move(d));
 }

@@ -288,7 +288,8 @@ void TestArap::cancellationReturnsCancelled()
         QCOMPARE(result.error().code, DeformErrorCode::Cancelled);
         ++cancelledRuns;
     }
-    QVERIFY(cancelledRuns > b.size()); // phases plus one poll per basis column
+    // Four phases poll before the factorization; more polls mean the basis loop polls too.
+    QVERIFY(cancelledRuns > 4);
 }
 
 void TestArap::solveRejectsBadTargets()

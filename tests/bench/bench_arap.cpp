@@ -1,0 +1,152 @@
+// finbook-bench arap: precompute and per-drag-event cost of the ARAP deformer on grid meshes,
+// against the floor of one step-2 back-substitution, plus pin-to-strokes latency.
+#include "../deform/grid_mesh.h"
+#include "bench.h"
+
+#include <finbook/deform/arap.h>
+
+#include <chrono>
+#include <cstdio>
+#include <random>
+
+namespace {
+
+using finbook::deform::ArapPrecompute;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+template <class Fn> double medianMs(int repeats, Fn &&fn)
+{
+    std::vector<double> samples;
+    for (int k = 0; k < repeats; ++k) {
+        const auto start = Clock::now();
+        fn();
+        samples.push_back(msSince(start));
+    }
+    return finbook::bench::median(samples);
+}
+
+// Stroke points embedded barycentrically: a face and three weights per point, as the
+// geometry layer's embedding provides them in the app.
+struct Embedding {
+    Eigen::VectorXi face;
+    Eigen::MatrixX3d weights;
+};
+
+Embedding randomEmbedding(Eigen::Index faces, int points)
+{
+    std::mt19937 random(7);
+    std::uniform_int_distribution<int> pick(0, int(faces) - 1);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Embedding e{Eigen::VectorXi(points), Eigen::MatrixX3d(points, 3)};
+    for (int p = 0; p < points; ++p) {
+        double a = unit(random), b = unit(random);
+        if (a + b > 1.0) {
+            a = 1.0 - a;
+            b = 1.0 - b;
+        }
+        e.face(p) = pick(random);
+        e.weights.row(p) << 1.0 - a - b, a, b;
+    }
+    return e;
+}
+
+void mapPoints(const Embedding &e, const Eigen::MatrixX3i &F, const Eigen::MatrixX2d &U,
+               Eigen::MatrixX2d &out)
+{
+    out.resize(e.face.size(), 2);
+    for (Eigen::Index p = 0; p < e.face.size(); ++p) {
+        const auto f = F.row(e.face(p));
+        out.row(p) = e.weights(p, 0) * U.row(f(0)) + e.weights(p, 1) * U.row(f(1)) +
+                     e.weights(p, 2) * U.row(f(2));
+    }
+}
+
+// One drag event: pin 0 moves along a circle, the other pins stay.
+Eigen::MatrixX2d dragTargets(const Eigen::MatrixX2d &rest, int event, double radius)
+{
+    Eigen::MatrixX2d bc = rest;
+    const double angle = 0.05 * event;
+    bc.row(0) += radius * Eigen::RowVector2d(std::cos(angle) - 1.0, std::sin(angle));
+    return bc;
+}
+
+struct Floors {
+    double complexMs, realPairMs;
+};
+
+// The lower bound of an update: streaming the step-2 factor once for x and y, measured both
+// as one complex x+iy right-hand side (what arapSolve does) and as an n×2 real right-hand side.
+Floors measureFloor(const ArapPrecompute &d, int repeats)
+{
+    const Eigen::VectorXcd complexRhs = Eigen::VectorXcd::Random(d.freeCount);
+    const Eigen::MatrixX2d realRhs = Eigen::MatrixX2d::Random(d.freeCount, 2);
+    Eigen::VectorXcd x;
+    Eigen::MatrixX2d y;
+    Floors f{};
+    f.complexMs = medianMs(repeats, [&] { x = d.stepTwoFactor.solve(complexRhs); });
+    f.realPairMs = medianMs(repeats, [&] { y = d.stepTwoFactor.solve(realRhs); });
+    return f;
+}
+
+int runSize(int vertices)
+{
+    const auto g = finbook::test::gridMeshWithVertices(vertices, 1000.0, 0.1);
+    Eigen::VectorXi b(4);
+    const int c = g.columns, r = g.rows;
+    b << g.vertex(c / 4, r / 4), g.vertex(3 * c / 4, r / 4), g.vertex(c / 4, 3 * r / 4),
+        g.vertex(3 * c / 4, 3 * r / 4);
+    const int repeats = vertices > 50000 ? 3 : 7;
+    std::shared_ptr<const ArapPrecompute> data;
+    const double precomputeMs =
+        medianMs(repeats, [&] { data = *finbook::deform::arapPrecompute(g.V, g.F, b); });
+    const Eigen::MatrixX2d rest = finbook::test::rowsOf(g.V, b);
+    Eigen::MatrixX2d U, points;
+    std::vector<double> updates, endToEnd;
+    const Embedding embedding = randomEmbedding(g.F.rows(), 5000);
+    for (int event = 0; event < 200; ++event) {
+        const Eigen::MatrixX2d bc = dragTargets(rest, event, 150.0);
+        auto start = Clock::now();
+        if (!finbook::deform::arapSolve(*data, bc, U))
+            return 1;
+        updates.push_back(msSince(start));
+        mapPoints(embedding, g.F, U, points);
+        endToEnd.push_back(msSince(start));
+    }
+    const Floors floor = measureFloor(*data, vertices > 50000 ? 30 : 200);
+    const double update = finbook::bench::median(updates);
+    std::printf("{\"bench\":\"arap\",\"vertices\":%lld,\"triangles\":%lld,\"pins\":4,"
+                "\"precompute_ms\":%.3f,\"update_ms\":%.4f,\"floor_ms\":%.4f,"
+                "\"floor_real_n2_ms\":%.4f,\"ratio\":%.2f,\"stroke_points\":5000,"
+                "\"end_to_end_ms\":%.4f}\n",
+                (long long)g.V.rows(), (long long)g.F.rows(), precomputeMs, update, floor.complexMs,
+                floor.realPairMs, update / floor.complexMs, finbook::bench::median(endToEnd));
+    std::fflush(stdout);
+    return 0;
+}
+
+int benchArap(const QStringList &args)
+{
+    QList<int> sizes{2000, 20000, 100000};
+    const int at = int(args.indexOf(QStringLiteral("--sizes")));
+    if (at >= 0 && at + 1 < args.size()) {
+        sizes.clear();
+        for (const QString &s : args[at + 1].split(QLatin1Char(',')))
+            sizes.append(s.toInt());
+    }
+    for (const int n : sizes) {
+        if (n < 9 || runSize(n) != 0) {
+            std::fprintf(stderr, "arap: size %d failed\n", n);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+} // namespace
+
+FINBOOK_BENCH("arap", "[--sizes 2000,20000,100000]", benchArap);
