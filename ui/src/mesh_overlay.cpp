@@ -1,0 +1,70 @@
+#include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/mesh_overlay.h>
+
+#include <QPainter>
+
+namespace finbook::ui {
+
+MeshOverlay::MeshOverlay(EditorState *state, model::DeformController *controller,
+                         CanvasWidget *canvas)
+    : QObject(canvas), m_state(state), m_controller(controller), m_canvas(canvas)
+{
+    auto repaint = [this] {
+        if (m_state->showMesh())
+            m_canvas->update();
+    };
+    connect(m_controller, &model::DeformController::meshChanged, this, repaint);
+    connect(m_controller, &model::DeformController::poseSolved, this, repaint);
+    connect(m_state, &EditorState::showMeshChanged, this, [this] {
+        requestMissing();
+        m_canvas->update();
+    });
+    connect(m_state, &EditorState::currentFrameChanged, this, [this] { requestMissing(); });
+    connect(m_state->document(), &model::Document::strokesChanged, this,
+            [this] { requestMissing(); });
+}
+
+void MeshOverlay::requestMissing()
+{
+    const model::Frame *f = m_state->currentFrame();
+    if (!m_state->showMesh() || !f)
+        return;
+    for (const model::StrokeGroup &g : f->groups) {
+        const model::DeformSetup *setup = m_controller->setup(g.id);
+        const bool current = setup && setup->key == model::MeshKey::of(g);
+        if (g.visible && !g.strokes.empty() && !current && !m_controller->isWaiting(g.id))
+            m_controller->requestMesh(g.id);
+    }
+}
+
+void MeshOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
+{
+    const model::Frame *f = m_state->currentFrame();
+    if (!m_state->showMesh() || !f)
+        return;
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    const model::Id current = m_state->currentGroupId();
+    for (const model::StrokeGroup &g : f->groups) {
+        const model::DeformSetup *setup = m_controller->setup(g.id);
+        if (!g.visible || !setup)
+            continue;
+        const Eigen::MatrixX2d &U = *m_controller->poseVertices(g.id);
+        const Eigen::MatrixX3i &F = setup->meshed->mesh.F;
+        QColor colour = g.id == current ? QColor(20, 140, 200, 150) : QColor(120, 120, 120, 110);
+        painter.setPen(QPen(colour, 0.8));
+        QVector<QLineF> lines;
+        lines.reserve(int(F.rows()) * 3);
+        // Interior edges are drawn twice; cheaper than finding each edge once.
+        for (Eigen::Index t = 0; t < F.rows(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const int a = F(t, k), b = F(t, (k + 1) % 3);
+                lines.append(canvasToWidget.map(QLineF(U(a, 0), U(a, 1), U(b, 0), U(b, 1))));
+            }
+        painter.drawLines(lines);
+    }
+    painter.restore();
+}
+
+} // namespace finbook::ui
