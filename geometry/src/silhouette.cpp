@@ -103,7 +103,7 @@ Expected<Region, GeometryError> silhouette(const std::vector<StrokeInput> &strok
     const detail::ClipperFrame &frame = input->frame;
     // Chords of the round caps cut into the band by at most the arc tolerance; keeping it and
     // the simplification under the thinnest radius keeps every stroke point strictly inside.
-    const double arcTolerance = std::min(0.2, 0.2 * input->minRadius);
+    const double arcTolerance = std::min(0.1, 0.05 * input->minRadius);
     const double closeRadius = 0.5 * options.gap;
 
     ClipperLib::PolyTree united;
@@ -119,7 +119,7 @@ Expected<Region, GeometryError> silhouette(const std::vector<StrokeInput> &strok
 
     ClipperLib::PolyTree tree;
     detail::unionStrictlySimple(closed, ClipperLib::pftNonZero, tree);
-    const double tolerance = std::min(options.simplifyTolerance, 0.25 * input->minRadius);
+    const double tolerance = std::min(options.simplifyTolerance, 0.2 * input->minRadius);
     Region region = detail::simplifyRegion(detail::treeToRegion(tree, frame), tolerance);
     if (region.empty() || !(regionArea(region) > 0.0))
         return unexpected(error(GeometryErrorCode::DegenerateRegion, "The strokes cover no area."));

@@ -4,8 +4,9 @@
 // one-point stroke becomes a disk), the bands are united, gaps up to `gap` px wide are bridged
 // by a morphological closing (dilate by gap/2, unite, erode by gap/2), and areas enclosed by
 // the strokes are filled. Parts drawn further apart than `gap` stay separate polygons (lobes).
-// Every finite stroke point lies inside the result, at least width/2 + margin − 0.5 px from
-// its boundary.
+// Every finite stroke point lies inside the result, more than width/2 + margin − (0.1 px +
+// simplifyTolerance) from its boundary (chords of the round caps plus simplification), and
+// in any case more than 0.75 × (width/2 + margin).
 #pragma once
 
 #include <finbook/geometry/expected.h>
@@ -30,9 +31,9 @@ struct SilhouetteOptions {
     double margin = 2.0; // px added around the pen's edge; ≥ 0
     double gap = 8.0;    // px: gaps up to this wide between strokes are bridged; ≥ 0
     HoleMode holes = HoleMode::FillEnclosed;
-    // Douglas–Peucker tolerance (px) on the outline; capped at a quarter of the thinnest
-    // stroke's radius so stroke points stay inside.
-    double simplifyTolerance = 0.5;
+    // Douglas–Peucker tolerance (px) on the outline; capped at a fifth of the thinnest
+    // stroke's radius (width/2 + margin) so stroke points stay well inside.
+    double simplifyTolerance = 0.4;
 };
 
 // Errors: EmptyInput (no strokes, no finite point), InvalidWidth, InvalidOptions,
