@@ -21,6 +21,8 @@ std::optional<DeformError> checkTargets(const ArapPrecompute &d, const Eigen::Ma
                              std::to_string(bc.rows()));
     if (!bc.allFinite())
         return makeError(DeformErrorCode::NonFiniteInput, "a pin target is not a finite number");
+    if (bc.size() > 0 && bc.cwiseAbs().maxCoeff() > kMaxDeformCoordinate)
+        return makeError(DeformErrorCode::CoordinateOutOfRange, "a pin target is too large");
     return std::nullopt;
 }
 

@@ -33,6 +33,8 @@ std::optional<DeformError> validateArapInput(const Eigen::MatrixX2d &V, const Ei
         return makeError(DeformErrorCode::EmptyMesh, "the mesh has no triangles");
     if (!V.allFinite())
         return makeError(DeformErrorCode::NonFiniteInput, "a rest position is not a finite number");
+    if (V.size() > 0 && V.cwiseAbs().maxCoeff() > kMaxDeformCoordinate)
+        return makeError(DeformErrorCode::CoordinateOutOfRange, "a rest position is too large");
     const auto n = static_cast<int>(V.rows());
     if (V.rows() != n)
         return makeError(DeformErrorCode::InvalidIndex, "too many vertices");

@@ -9,15 +9,20 @@
 namespace finbook::deform {
 
 enum class DeformErrorCode {
-    EmptyMesh,           // no vertices or no triangles
-    InvalidIndex,        // a triangle or pin refers to a vertex that does not exist
-    NonFiniteInput,      // NaN or infinity in rest positions or pin targets
-    DegenerateTriangle,  // zero-area triangle or a triangle repeating a vertex
-    SizeMismatch,        // targets do not match the pins the precompute was made for
-    FactorizationFailed, // sparse Cholesky refused a matrix that should be SPD
-    SolveFailed,         // a solve produced non-finite values or a large residual
-    Cancelled,           // the caller's cancellation callback returned true
+    EmptyMesh,            // no vertices or no triangles
+    InvalidIndex,         // a triangle or pin refers to a vertex that does not exist
+    NonFiniteInput,       // NaN or infinity in rest positions or pin targets
+    CoordinateOutOfRange, // |coordinate| beyond kMaxDeformCoordinate (squares would overflow)
+    DegenerateTriangle,   // zero-area triangle or a triangle repeating a vertex
+    SizeMismatch,         // targets do not match the pins the precompute was made for
+    FactorizationFailed,  // sparse Cholesky refused a matrix that should be SPD
+    SolveFailed,          // a solve produced non-finite values or a large residual
+    Cancelled,            // the caller's cancellation callback returned true
 };
+
+// Far beyond any canvas, far below the square root of the largest double: the deformers
+// square coordinate differences, so larger input could overflow to infinity.
+inline constexpr double kMaxDeformCoordinate = 1e100;
 
 struct DeformError {
     DeformErrorCode code;
