@@ -27,7 +27,7 @@ const QHash<QString, QKeySequence> &ShortcutRegistry::defaultMap()
         {QStringLiteral("file.open"), QKeySequence(QKeySequence::Open)},
         {QStringLiteral("file.save"), QKeySequence(QKeySequence::Save)},
         {QStringLiteral("file.saveAs"), QKeySequence(QKeySequence::SaveAs)},
-        {QStringLiteral("file.export"), keys(QStringLiteral("Ctrl+E"))},
+        {QStringLiteral("file.export"), keys(QStringLiteral("Ctrl+Shift+E"))},
         {QStringLiteral("file.quit"), QKeySequence(QKeySequence::Quit)},
         {QStringLiteral("edit.undo"), QKeySequence(QKeySequence::Undo)},
         {QStringLiteral("edit.redo"), QKeySequence(QKeySequence::Redo)},
@@ -59,8 +59,12 @@ const QHash<QString, QKeySequence> &ShortcutRegistry::defaultMap()
         {QStringLiteral("frame.holdLess"), keys(QStringLiteral("Alt+-"))},
         {QStringLiteral("frame.previous"), keys(QStringLiteral(","))},
         {QStringLiteral("frame.next"), keys(QStringLiteral("."))},
-        {QStringLiteral("playback.playPause"), keys(QStringLiteral("Return"))},
-        {QStringLiteral("playback.loop"), keys(QStringLiteral("L"))},
+        {QStringLiteral("playback.toggle"), keys(QStringLiteral("Return"))},
+        {QStringLiteral("playback.loop"), keys(QStringLiteral("Ctrl+L"))},
+        {QStringLiteral("object.new"), keys(QStringLiteral("Ctrl+Shift+N"))},
+        {QStringLiteral("object.merge"), keys(QStringLiteral("Ctrl+E"))},
+        {QStringLiteral("object.raise"), keys(QStringLiteral("Ctrl+]"))},
+        {QStringLiteral("object.lower"), keys(QStringLiteral("Ctrl+["))},
         {QStringLiteral("help.shortcuts"), keys(QStringLiteral("Ctrl+/"))},
     };
     return map;
