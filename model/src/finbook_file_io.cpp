@@ -117,7 +117,7 @@ std::optional<FileError> saveFinbook(const Document &document, const QString &pa
 {
     const QByteArray bytes = serializeFinbook(document);
     // Never replace a file with one that would not open again.
-    if (auto check = file_format::parseFinbook(bytes); !check)
+    if (auto check = file_format::parseFinbook(bytes, file_format::ParseMode::Check); !check)
         return writeFailed(path, tr("the drawing holds invalid data (%1)").arg(check.error().what));
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))

@@ -226,6 +226,7 @@ StrokeGroup Reader::readObject(Cursor &c)
 
     const quint32 n = c.count(kStrokeRefBytes, QT_TRANSLATE_NOOP("FinbookFile", "the stroke list"));
     g.strokes.reserve(n);
+    m_strokeRefs.clear();
     for (quint32 i = 0; i < n; ++i) {
         m_where.stroke = int(i + 1);
         Stroke s;
@@ -239,6 +240,7 @@ StrokeGroup Reader::readObject(Cursor &c)
         if (index == m_badStrokeData.index)
             c.fail(FileErrorCode::BadValue, m_badStrokeData.what);
         s.data = m_strokeData[index];
+        m_strokeRefs.push_back(index);
         g.strokes.push_back(std::move(s));
     }
     m_where.stroke = 0;
@@ -294,17 +296,20 @@ DeformedStrokesPtr Reader::readPoseRef(Cursor &c, const StrokeGroup &g)
                tr("its pose refers to pose %1 of %2").arg(quint64(index) + 1).arg(m_poses.size()));
     if (index == m_badPose.index)
         c.fail(FileErrorCode::BadValue, tr("its pose: %1").arg(m_badPose.what));
-    const DeformedStrokesPtr &pose = m_poses[index];
-    if (pose->strokes.size() != g.strokes.size())
+    const std::vector<quint32> &sizes = m_poseSizes[index];
+    if (sizes.size() != g.strokes.size())
         c.fail(FileErrorCode::BadValue, tr("its pose has %1 strokes but the object has %2")
-                                            .arg(pose->strokes.size())
+                                            .arg(sizes.size())
                                             .arg(g.strokes.size()));
-    for (std::size_t i = 0; i < g.strokes.size(); ++i)
-        if (pose->strokes[i].size() != g.strokes[i].data->points.size())
+    for (std::size_t i = 0; i < g.strokes.size(); ++i) {
+        const quint32 rest = m_strokeDataSizes[m_strokeRefs[i]];
+        if (sizes[i] != rest)
             c.fail(FileErrorCode::BadValue, tr("stroke %1 has %2 points but its pose has %3")
                                                 .arg(i + 1)
-                                                .arg(g.strokes[i].data->points.size())
-                                                .arg(pose->strokes[i].size()));
+                                                .arg(rest)
+                                                .arg(sizes[i]));
+    }
+    const DeformedStrokesPtr &pose = m_poses[index];
     return pose;
 }
 
@@ -337,10 +342,10 @@ void Reader::finish(Cursor &c)
                                             .arg(m_maxId));
 }
 
-Expected<LoadedDocument, ReadFailure> parseFinbook(const QByteArray &bytes)
+Expected<LoadedDocument, ReadFailure> parseFinbook(const QByteArray &bytes, ParseMode mode)
 {
     try {
-        return Reader().read(bytes);
+        return Reader(mode).read(bytes);
     } catch (const ReadFailure &failure) {
         return unexpected(failure);
     } catch (const std::bad_alloc &) {

@@ -11,6 +11,9 @@ namespace finbook::model::file_format {
 
 class Reader {
 public:
+    explicit Reader(ParseMode mode)
+        : m_mode(mode)
+    {}
     // Parses a whole file; throws ReadFailure.
     LoadedDocument read(const QByteArray &bytes);
 
@@ -35,7 +38,9 @@ private:
     void readDocument(Cursor &c);
     void readStrokeTable(Cursor &c);
     void readPoseTable(Cursor &c);
-    void readPoints(Cursor &c, std::vector<StrokePoint> &points, Deferred &deferred, quint32 entry);
+    // Returns the number of points, which Check mode does not store.
+    quint32 readPoints(Cursor &c, std::vector<StrokePoint> &points, Deferred &deferred,
+                       quint32 entry);
     void readFrames(Cursor &c);
     Frame readFrame(Cursor &c);
     StrokeGroup readObject(Cursor &c);
@@ -46,11 +51,15 @@ private:
     void claimId(Cursor &c, Id id, const QString &owner);
     void finish(Cursor &c);
 
+    ParseMode m_mode;
     Where m_where;
     quint32 m_version = 0;
     LoadedDocument m_doc;
     std::vector<StrokeDataPtr> m_strokeData;
     std::vector<DeformedStrokesPtr> m_poses;
+    std::vector<quint32> m_strokeDataSizes;        // points per stroke-data entry
+    std::vector<std::vector<quint32>> m_poseSizes; // points per stroke of each pose
+    std::vector<quint32> m_strokeRefs; // stroke-data index of each stroke of the current object
     Deferred m_badStrokeData;
     Deferred m_badPose;
     std::unordered_set<Id> m_ids;
