@@ -148,7 +148,7 @@ void PlaybackController::rebase(qint64 tick)
     m_startTick = tick;
     m_fps = m_state->document()->settings().fps;
     m_clock.start();
-    scheduleNext();
+    scheduleTick(1);
 }
 
 void PlaybackController::settingsChanged()
@@ -168,25 +168,27 @@ void PlaybackController::tick()
         return;
     const model::Document &doc = *m_state->document();
     const bool loop = doc.settings().loop;
-    const qint64 now = m_startTick + m_clock.nsecsElapsed() * m_fps / kNsPerSecond;
+    // One clock reading decides both the frame and the next boundary: reading it twice could
+    // straddle a boundary and sleep through a whole tick.
+    const qint64 ticks = m_clock.nsecsElapsed() * m_fps / kNsPerSecond;
+    const qint64 now = m_startTick + ticks;
     if (!loop && now >= playRangeTicks(doc)) {
         show(doc.playLast());
         pause();
         return;
     }
     show(frameAtTick(doc, now, loop));
-    scheduleNext();
+    scheduleTick(ticks + 1);
 }
 
-void PlaybackController::scheduleNext()
+void PlaybackController::scheduleTick(qint64 ticksSinceStart)
 {
-    // Aim at the next tick boundary, rounded up to the timer's millisecond resolution so the
-    // timeout never lands just before it.
-    const qint64 elapsed = m_clock.nsecsElapsed();
-    const qint64 nextTick = elapsed * m_fps / kNsPerSecond + 1;
-    const qint64 nextNs = (nextTick * kNsPerSecond + m_fps - 1) / m_fps;
-    const qint64 waitMs = (nextNs - elapsed + kNsPerMs - 1) / kNsPerMs;
-    m_timer.start(int(std::max<qint64>(0, waitMs)));
+    // Aim at the boundary, rounded down to the timer's millisecond resolution: an early
+    // timeout finds the same frame and re-arms for the sub-millisecond rest, so changes land
+    // within a fraction of a millisecond instead of up to one late.
+    const qint64 dueNs = (ticksSinceStart * kNsPerSecond + m_fps - 1) / m_fps;
+    const qint64 waitMs = (dueNs - m_clock.nsecsElapsed()) / kNsPerMs;
+    m_timer.start(int(std::clamp<qint64>(waitMs, 0, 1000)));
 }
 
 void PlaybackController::show(int frameIndex)

@@ -59,7 +59,7 @@ signals:
 
 private:
     void tick();
-    void scheduleNext();
+    void scheduleTick(qint64 ticksSinceStart);
     void show(int frameIndex);
     void rebase(qint64 tick);
     void settingsChanged();
