@@ -12,6 +12,17 @@
 
 namespace finbook::ui {
 
+namespace {
+void dropRepeats(std::vector<model::StrokePoint> &points)
+{
+    points.erase(std::unique(points.begin(), points.end(),
+                             [](const model::StrokePoint &a, const model::StrokePoint &b) {
+                                 return a.x == b.x && a.y == b.y;
+                             }),
+                 points.end());
+}
+} // namespace
+
 PenTool::PenTool(QObject *parent)
     : CanvasTool(parent)
 {}
@@ -135,6 +146,9 @@ std::vector<model::StrokePoint> PenTool::finishedPoints(std::vector<model::Strok
     std::erase_if(points, [](const model::StrokePoint &p) {
         return !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.pressure);
     });
+    // Repeats go before smoothing (they would weigh a spot twice) and after (smoothing can
+    // pull neighbours onto one spot).
+    dropRepeats(points);
     // A 1-2-1 filter per pass; the ends stay where the pen touched down and lifted.
     for (int pass = 0; pass < smoothing && points.size() > 2; ++pass) {
         std::vector<model::StrokePoint> next = points;
@@ -146,11 +160,7 @@ std::vector<model::StrokePoint> PenTool::finishedPoints(std::vector<model::Strok
         }
         points = std::move(next);
     }
-    points.erase(std::unique(points.begin(), points.end(),
-                             [](const model::StrokePoint &a, const model::StrokePoint &b) {
-                                 return a.x == b.x && a.y == b.y;
-                             }),
-                 points.end());
+    dropRepeats(points);
     return points;
 }
 

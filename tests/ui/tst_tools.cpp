@@ -1,0 +1,377 @@
+// Pen, eraser and select tools driven with real mouse events on a real canvas.
+#include "tst_tools_support.h"
+
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/stroke_editing.h>
+#include <finbook/ui/tool_eraser.h>
+#include <finbook/ui/tool_hand.h>
+#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/tool_select.h>
+
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace finbook;
+using namespace finbook::test;
+
+class TestTools : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+
+    void penDrawsOneStrokeUndoRedo();
+    void penUsesPressureFromTablet();
+    void penRefusesLockedAndHiddenObjects();
+    void penCreatesObjectInEmptyFrame();
+    void penSmoothingKeepsEnds();
+    void eraserErasesTouchedStrokeOnly();
+    void eraserLeavesHiddenAndLockedAlone();
+    void eraserDragWithoutHitsLeavesNoUndoStep();
+    void lassoSelectsMostlyInsideStrokes();
+    void clickSelectsStrokeUnderCursor();
+    void dragMovesSelectionAndUndoRestoresExactly();
+    void cornerHandleScalesSelection();
+    void rotateHandleRotatesSelection();
+    void deleteSelection();
+    void copyPasteIntoAnotherFrame();
+    void selectAllSkipsLockedObjects();
+    void clipboardRefusesMalformedData();
+    void handToolPans();
+
+private:
+    model::Id group(int frame, int index = 0) const
+    {
+        return m_doc->frameAt(frame).groups[std::size_t(index)].id;
+    }
+    int strokeCount(int frame) const
+    {
+        int n = 0;
+        for (const model::StrokeGroup &g : m_doc->frameAt(frame).groups)
+            n += int(g.strokes.size());
+        return n;
+    }
+
+    std::unique_ptr<model::Document> m_doc;
+    std::unique_ptr<ui::EditorState> m_state;
+    std::unique_ptr<ui::CanvasWidget> m_canvas;
+};
+
+void TestTools::init()
+{
+    m_doc = std::make_unique<model::Document>();
+    resetDocument(*m_doc, 2);
+    m_state = std::make_unique<ui::EditorState>(m_doc.get());
+    m_canvas = std::make_unique<ui::CanvasWidget>(m_state.get());
+    m_canvas->addTool(std::make_unique<ui::PenTool>());
+    m_canvas->addTool(std::make_unique<ui::StrokeEraserTool>());
+    m_canvas->addTool(std::make_unique<ui::SelectTool>());
+    m_canvas->addTool(std::make_unique<ui::HandTool>());
+    m_canvas->resize(600, 500);
+    m_canvas->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_canvas.get()));
+    m_canvas->actualSize();
+    QCOMPARE(m_canvas->zoom(), 1.0);
+}
+
+void TestTools::cleanup()
+{
+    m_canvas.reset();
+    m_state.reset();
+    m_doc.reset();
+}
+
+void TestTools::penDrawsOneStrokeUndoRedo()
+{
+    m_canvas->setCurrentTool(QStringLiteral("tool.pen"));
+    dragCanvas(m_canvas.get(), {50, 50}, {250, 120});
+    QCOMPARE(strokeCount(0), 1);
+    const model::Stroke &s = m_doc->frameAt(0).groups[0].strokes[0];
+    QVERIFY(s.data->points.size() >= 10);
+    QVERIFY(std::abs(s.data->points.front().x - 50) < 0.01);
+    QVERIFY(std::abs(s.data->points.back().y - 120) < 0.01);
+    for (const model::StrokePoint &p : s.data->points)
+        QCOMPARE(p.pressure, 1.0f); // mouse: full pressure
+    QCOMPARE(m_doc->undoStack()->count(), 1);
+    m_doc->undoStack()->undo();
+    QCOMPARE(strokeCount(0), 0);
+    m_doc->undoStack()->redo();
+    QCOMPARE(strokeCount(0), 1);
+}
+
+void TestTools::penUsesPressureFromTablet()
+{
+    m_canvas->setCurrentTool(QStringLiteral("tool.pen"));
+    const auto tablet = [&](QEvent::Type type, QPointF canvasPos, qreal pressure,
+                            Qt::MouseButtons buttons) {
+        const QPointF w = m_canvas->mapFromCanvas(canvasPos);
+        QTabletEvent e(type, QPointingDevice::primaryPointingDevice(), w, m_canvas->mapToGlobal(w),
+                       pressure, 0, 0, 0, 0, 0, Qt::NoModifier, Qt::LeftButton, buttons);
+        QApplication::sendEvent(m_canvas.get(), &e);
+    };
+    tablet(QEvent::TabletPress, {20, 20}, 0.2, Qt::LeftButton);
+    for (int i = 1; i <= 10; ++i)
+        tablet(QEvent::TabletMove, {20.0 + 10 * i, 20}, 0.2 + 0.07 * i, Qt::LeftButton);
+    tablet(QEvent::TabletRelease, {120, 20}, 0.9, Qt::NoButton);
+    QCOMPARE(strokeCount(0), 1);
+    const auto &points = m_doc->frameAt(0).groups[0].strokes[0].data->points;
+    QVERIFY(points.front().pressure < 0.3f);
+    QVERIFY(points.back().pressure > 0.8f);
+}
+
+void TestTools::penRefusesLockedAndHiddenObjects()
+{
+    m_canvas->setCurrentTool(QStringLiteral("tool.pen"));
+    QSignalSpy messages(m_canvas.get(), &ui::CanvasWidget::messagePosted);
+    m_doc->undoStack()->push(
+        new model::SetObjectFlagCommand(m_doc.get(), group(0), model::ObjectFlag::Locked, true));
+    dragCanvas(m_canvas.get(), {50, 50}, {150, 50});
+    QCOMPARE(strokeCount(0), 0);
+    QCOMPARE(messages.count(), 1);
+    QVERIFY(messages.first().first().toString().contains(QStringLiteral("locked")));
+    m_doc->undoStack()->undo();
+    m_doc->undoStack()->push(
+        new model::SetObjectFlagCommand(m_doc.get(), group(0), model::ObjectFlag::Visible, false));
+    dragCanvas(m_canvas.get(), {50, 50}, {150, 50});
+    QCOMPARE(strokeCount(0), 0);
+    QCOMPARE(messages.count(), 2);
+}
+
+void TestTools::penCreatesObjectInEmptyFrame()
+{
+    m_doc->undoStack()->push(new model::RemoveObjectCommand(m_doc.get(), group(0)));
+    m_doc->undoStack()->setClean();
+    const int steps = m_doc->undoStack()->count();
+    QVERIFY(m_doc->frameAt(0).groups.empty());
+    m_canvas->setCurrentTool(QStringLiteral("tool.pen"));
+    dragCanvas(m_canvas.get(), {50, 50}, {150, 80});
+    QCOMPARE(m_doc->frameAt(0).groups.size(), std::size_t(1));
+    QCOMPARE(strokeCount(0), 1);
+    QCOMPARE(m_doc->undoStack()->count(), steps + 1); // object + stroke: one undo step
+    m_doc->undoStack()->undo();
+    QVERIFY(m_doc->frameAt(0).groups.empty());
+}
+
+void TestTools::penSmoothingKeepsEnds()
+{
+    std::vector<model::StrokePoint> zigzag;
+    for (int i = 0; i < 30; ++i)
+        zigzag.push_back({float(i * 4), float(i % 2 ? 10 : 0), 1.0f});
+    zigzag.push_back(zigzag.back()); // a repeat
+    zigzag.push_back({std::numeric_limits<float>::quiet_NaN(), 0, 1});
+    const auto smooth = ui::PenTool::finishedPoints(zigzag, 4);
+    QCOMPARE(smooth.size(), std::size_t(30));
+    QCOMPARE(smooth.front(), zigzag.front());
+    QCOMPARE(smooth.back(), zigzag[29]);
+    float spread = 0;
+    for (std::size_t i = 5; i + 5 < smooth.size(); ++i)
+        spread = std::max(spread, std::abs(smooth[i].y - 5.0f));
+    QVERIFY(spread < 2.0f); // the zigzag has flattened
+    for (const model::StrokePoint &p : smooth)
+        QVERIFY(std::isfinite(p.x) && std::isfinite(p.y));
+}
+
+void TestTools::eraserErasesTouchedStrokeOnly()
+{
+    const model::Id top = addStroke(*m_doc, group(0), line({50, 100}, {350, 100}));
+    const model::Id bottom = addStroke(*m_doc, group(0), line({50, 200}, {350, 200}));
+    const int steps = m_doc->undoStack()->count();
+    m_canvas->setCurrentTool(QStringLiteral("tool.eraser"));
+    dragCanvas(m_canvas.get(), {200, 60}, {200, 140});
+    QVERIFY(!findStroke(*m_doc, top));
+    QVERIFY(findStroke(*m_doc, bottom));
+    QCOMPARE(m_doc->undoStack()->count(), steps + 1);
+    QCOMPARE(m_doc->undoStack()->text(steps), QStringLiteral("Erase"));
+    m_doc->undoStack()->undo();
+    QVERIFY(findStroke(*m_doc, top));
+    QVERIFY(findStroke(*m_doc, bottom));
+    QCOMPARE(strokeCount(0), 2);
+}
+
+void TestTools::eraserLeavesHiddenAndLockedAlone()
+{
+    resetDocument(*m_doc, 1, 3);
+    const model::Id hidden = addStroke(*m_doc, group(0, 0), line({50, 100}, {350, 100}));
+    const model::Id locked = addStroke(*m_doc, group(0, 1), line({50, 110}, {350, 110}));
+    const model::Id free = addStroke(*m_doc, group(0, 2), line({50, 120}, {350, 120}));
+    QUndoStack *stack = m_doc->undoStack();
+    stack->push(new model::SetObjectFlagCommand(m_doc.get(), group(0, 0),
+                                                model::ObjectFlag::Visible, false));
+    stack->push(
+        new model::SetObjectFlagCommand(m_doc.get(), group(0, 1), model::ObjectFlag::Locked, true));
+    m_canvas->setCurrentTool(QStringLiteral("tool.eraser"));
+    dragCanvas(m_canvas.get(), {200, 60}, {200, 160});
+    QVERIFY(findStroke(*m_doc, hidden));
+    QVERIFY(findStroke(*m_doc, locked));
+    QVERIFY(!findStroke(*m_doc, free));
+}
+
+void TestTools::eraserDragWithoutHitsLeavesNoUndoStep()
+{
+    addStroke(*m_doc, group(0), line({50, 100}, {350, 100}));
+    const int steps = m_doc->undoStack()->count();
+    m_canvas->setCurrentTool(QStringLiteral("tool.eraser"));
+    dragCanvas(m_canvas.get(), {50, 250}, {350, 250});
+    QCOMPARE(m_doc->undoStack()->count(), steps);
+    QCOMPARE(strokeCount(0), 1);
+}
+
+void TestTools::lassoSelectsMostlyInsideStrokes()
+{
+    const model::Id inside = addStroke(*m_doc, group(0), line({60, 60}, {140, 60}));
+    const model::Id half = addStroke(*m_doc, group(0), line({100, 120}, {300, 120}));
+    const model::Id outside = addStroke(*m_doc, group(0), line({250, 250}, {350, 250}));
+    m_canvas->setCurrentTool(QStringLiteral("tool.select"));
+    // A lasso around (40..160, 40..150): all of `inside`, a quarter of `half`.
+    std::vector<QPointF> lasso;
+    for (QPointF p :
+         {QPointF(40, 40), QPointF(160, 40), QPointF(160, 150), QPointF(40, 150), QPointF(40, 41)})
+        lasso.push_back(m_canvas->mapFromCanvas(p));
+    drag(m_canvas.get(), lasso);
+    QCOMPARE(m_state->selectedStrokes(), std::vector<model::Id>{inside});
+    Q_UNUSED(half)
+    Q_UNUSED(outside)
+}
+
+void TestTools::clickSelectsStrokeUnderCursor()
+{
+    addStroke(*m_doc, group(0), line({60, 60}, {140, 60}));
+    const model::Id b = addStroke(*m_doc, group(0), line({60, 200}, {140, 200}));
+    m_canvas->setCurrentTool(QStringLiteral("tool.select"));
+    drag(m_canvas.get(), {m_canvas->mapFromCanvas({100, 201})});
+    QCOMPARE(m_state->selectedStrokes(), std::vector<model::Id>{b});
+    drag(m_canvas.get(), {m_canvas->mapFromCanvas({300, 280})});
+    QVERIFY(m_state->selectedStrokes().empty());
+}
+
+void TestTools::dragMovesSelectionAndUndoRestoresExactly()
+{
+    const model::Id a = addStroke(*m_doc, group(0), line({60, 60}, {140, 90}));
+    const model::Id b = addStroke(*m_doc, group(0), line({250, 250}, {350, 250}));
+    const model::StrokeData before = *findStroke(*m_doc, a)->data;
+    const model::StrokeData other = *findStroke(*m_doc, b)->data;
+    m_canvas->setCurrentTool(QStringLiteral("tool.select"));
+    m_state->setSelectedStrokes({a});
+    dragCanvas(m_canvas.get(), {100, 75}, {130, 95}, 5);
+    const model::StrokeData &after = *findStroke(*m_doc, a)->data;
+    QCOMPARE(after.points.size(), before.points.size());
+    for (std::size_t i = 0; i < after.points.size(); ++i) {
+        QVERIFY(std::abs(after.points[i].x - before.points[i].x - 30) < 1e-3);
+        QVERIFY(std::abs(after.points[i].y - before.points[i].y - 20) < 1e-3);
+    }
+    QCOMPARE(*findStroke(*m_doc, b)->data, other);
+    QCOMPARE(m_state->selectedStrokes(), std::vector<model::Id>{a}); // still selected
+    m_doc->undoStack()->undo();
+    QCOMPARE(*findStroke(*m_doc, a)->data, before);
+}
+
+void TestTools::cornerHandleScalesSelection()
+{
+    const model::Id a = addStroke(*m_doc, group(0), line({100, 100}, {200, 150}));
+    m_canvas->setCurrentTool(QStringLiteral("tool.select"));
+    m_state->setSelectedStrokes({a});
+    auto *select = static_cast<ui::SelectTool *>(m_canvas->tool(QStringLiteral("tool.select")));
+    const QRectF box = select->selectionBounds();
+    // Drag the bottom-right corner so the box doubles about its top-left corner.
+    const QPointF to = box.topLeft() + (box.bottomRight() - box.topLeft()) * 2;
+    dragCanvas(m_canvas.get(), box.bottomRight(), to, 5);
+    const QRectF scaled = select->selectionBounds();
+    QVERIFY2(std::abs(scaled.width() - 2 * box.width()) < 2.0,
+             qPrintable(QString::number(scaled.width())));
+    QVERIFY(std::abs(scaled.left() - box.left()) < 2.0);
+    m_doc->undoStack()->undo();
+    QCOMPARE(select->selectionBounds(), box);
+}
+
+void TestTools::rotateHandleRotatesSelection()
+{
+    const model::Id a = addStroke(*m_doc, group(0), line({150, 150}, {250, 150}, 11));
+    m_canvas->setCurrentTool(QStringLiteral("tool.select"));
+    m_state->setSelectedStrokes({a});
+    auto *select = static_cast<ui::SelectTool *>(m_canvas->tool(QStringLiteral("tool.select")));
+    const QRectF box = select->selectionBounds();
+    const QPointF handle(box.center().x(), box.top() - ui::SelectTool::kRotateOffset);
+    // Swing the handle from straight above the centre to straight right of it: +90°.
+    const QPointF c = box.center();
+    const qreal r = c.y() - handle.y();
+    std::vector<QPointF> path;
+    for (int i = 0; i <= 9; ++i) {
+        const qreal t = qDegreesToRadians(90.0 * i / 9);
+        path.push_back(m_canvas->mapFromCanvas(c + QPointF(r * std::sin(t), -r * std::cos(t))));
+    }
+    drag(m_canvas.get(), path, Qt::LeftButton, Qt::ShiftModifier);
+    const auto &pts = findStroke(*m_doc, a)->data->points;
+    // The horizontal line is now vertical through the centre.
+    QVERIFY(std::abs(pts.front().x - 200) < 0.01);
+    QVERIFY(std::abs(pts.back().x - 200) < 0.01);
+    QVERIFY(std::abs(std::abs(pts.back().y - pts.front().y) - 100) < 0.01);
+}
+
+void TestTools::deleteSelection()
+{
+    const model::Id a = addStroke(*m_doc, group(0), line({60, 60}, {140, 90}));
+    const model::Id b = addStroke(*m_doc, group(0), line({60, 160}, {140, 190}));
+    addStroke(*m_doc, group(0), line({260, 160}, {340, 190}));
+    m_state->setSelectedStrokes({a, b});
+    const int steps = m_doc->undoStack()->count();
+    QVERIFY(ui::StrokeEditing::deleteSelection(*m_state));
+    QCOMPARE(strokeCount(0), 1);
+    QVERIFY(m_state->selectedStrokes().empty());
+    QCOMPARE(m_doc->undoStack()->count(), steps + 1);
+    m_doc->undoStack()->undo();
+    QCOMPARE(strokeCount(0), 3);
+    QVERIFY(!ui::StrokeEditing::deleteSelection(*m_state)); // nothing selected
+}
+
+void TestTools::copyPasteIntoAnotherFrame()
+{
+    const model::Id a = addStroke(*m_doc, group(0), line({60, 60}, {140, 90}, 20, 0xffd03030));
+    m_state->setSelectedStrokes({a});
+    QVERIFY(ui::StrokeEditing::copySelection(*m_state));
+    QVERIFY(ui::StrokeEditing::clipboardHasStrokes());
+    m_state->setCurrentFrameIndex(1);
+    QVERIFY(ui::StrokeEditing::paste(*m_state));
+    QCOMPARE(strokeCount(1), 1);
+    const model::Stroke &pasted = m_doc->frameAt(1).groups[0].strokes[0];
+    QVERIFY(pasted.id != a);
+    QCOMPARE(*pasted.data, *findStroke(*m_doc, a)->data);
+    QCOMPARE(m_state->selectedStrokes(), std::vector<model::Id>{pasted.id});
+    m_doc->undoStack()->undo();
+    QCOMPARE(strokeCount(1), 0);
+    QCOMPARE(strokeCount(0), 1);
+}
+
+void TestTools::selectAllSkipsLockedObjects()
+{
+    resetDocument(*m_doc, 1, 2);
+    const model::Id a = addStroke(*m_doc, group(0, 0), line({60, 60}, {140, 90}));
+    addStroke(*m_doc, group(0, 1), line({60, 160}, {140, 190}));
+    m_doc->undoStack()->push(
+        new model::SetObjectFlagCommand(m_doc.get(), group(0, 1), model::ObjectFlag::Locked, true));
+    ui::StrokeEditing::selectAll(*m_state);
+    QCOMPARE(m_state->selectedStrokes(), std::vector<model::Id>{a});
+}
+
+void TestTools::clipboardRefusesMalformedData()
+{
+    const QByteArray good = ui::encodeStrokes({line({0, 0}, {10, 10})});
+    QVERIFY(ui::decodeStrokes(good).has_value());
+    QVERIFY(!ui::decodeStrokes(good.left(good.size() - 3)).has_value());
+    QVERIFY(!ui::decodeStrokes(QByteArray("garbage")).has_value());
+    QByteArray huge = good;
+    huge[8] = char(0x7f); // stroke count far beyond the bytes
+    QVERIFY(!ui::decodeStrokes(huge).has_value());
+}
+
+void TestTools::handToolPans()
+{
+    m_canvas->setCurrentTool(QStringLiteral("tool.hand"));
+    const QPointF before = m_canvas->mapFromCanvas({0, 0});
+    drag(m_canvas.get(), {QPointF(300, 300), QPointF(320, 310), QPointF(340, 330)});
+    QCOMPARE(m_canvas->mapFromCanvas({0, 0}), before + QPointF(40, 30));
+    QCOMPARE(strokeCount(0), 0);
+}
+
+QTEST_MAIN(TestTools)
+#include "tst_tools.moc"
