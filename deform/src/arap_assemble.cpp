@@ -89,7 +89,8 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
     d.triangles.resize(m, 3);
     d.restCentered.resize(m, 3);
     d.collapseThreshold.resize(m);
-    d.stepOneMatrix = d.stepTwoMatrix.cast<Complex>();
+    const Eigen::SparseMatrix<double> upper = d.stepTwoMatrix.triangularView<Eigen::Upper>();
+    d.stepOneMatrix = upper.cast<Complex>();
     d.stepOneMatrix.coeffs().setZero();
     std::vector<Eigen::Triplet<Complex>> g01;
     std::vector<Eigen::Triplet<double>> h01;

@@ -89,8 +89,14 @@ ArapFactorization::ArapFactorization(ArapPrecompute &d)
         Shared &s = *m_shared;
         try {
             s.d.stepTwoFactor.compute(s.d.stepTwoMatrix);
-            m_stepTwoOk = s.d.stepTwoFactor.info() == Eigen::Success &&
-                          probe(s.d.stepTwoFactor, s.d.stepTwoMatrix, s.d.stepTwoNorm);
+            m_stepTwoOk = s.d.stepTwoFactor.info() == Eigen::Success;
+            if (m_stepTwoOk) {
+                const auto &L = s.d.stepTwoFactor.matrixL().nestedExpression();
+                s.d.stepTwoPivotInverse.resize(L.cols());
+                for (Eigen::Index j = 0; j < L.cols(); ++j) // the diagonal leads each column
+                    s.d.stepTwoPivotInverse(j) = 1.0 / L.valuePtr()[L.outerIndexPtr()[j]];
+                m_stepTwoOk = probe(s.d.stepTwoFactor, s.d.stepTwoMatrix, s.d.stepTwoNorm);
+            }
             s.stepOneFactored.wait();
             if (m_stepTwoOk && s.stepOneOk && !s.abort)
                 s.basisColumns(1, [] { return false; });
@@ -124,7 +130,9 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
         s.release(false);
     } else {
         s.d.stepOneFactor.compute(s.d.stepOneMatrix);
-        bool ok = s.d.stepOneFactor.info() == Eigen::Success;
+        // LDLᴴ only reports exactly zero pivots; a Hermitian positive definite G00 has D > 0.
+        bool ok = s.d.stepOneFactor.info() == Eigen::Success &&
+                  (s.d.freeCount == 0 || s.d.stepOneFactor.vectorD().real().minCoeff() > 0.0);
         if (ok && s.d.stepOneBasis.cols() == 0) // no basis solves to verify the factor with
             ok = probe(s.d.stepOneFactor, s.d.stepOneMatrix, s.d.stepOneNorm);
         s.release(ok);

@@ -60,12 +60,15 @@ private:
     bool m_stepTwoOk = false;
 };
 
-// ‖A‖∞ of the full self-adjoint matrix whose upper triangle is stored.
+// ‖A‖∞ of the self-adjoint matrix defined by the upper triangle of `upper` (entries below
+// the diagonal, if stored, are ignored like the Upper factors ignore them).
 template <class Scalar> double selfAdjointNorm(const Eigen::SparseMatrix<Scalar> &upper)
 {
     Eigen::VectorXd rowSum = Eigen::VectorXd::Zero(upper.rows());
     for (Eigen::Index col = 0; col < upper.outerSize(); ++col) {
         for (typename Eigen::SparseMatrix<Scalar>::InnerIterator it(upper, col); it; ++it) {
+            if (it.row() > it.col())
+                continue;
             rowSum(it.row()) += std::abs(it.value());
             if (it.row() != it.col())
                 rowSum(it.col()) += std::abs(it.value());

@@ -90,10 +90,10 @@ std::vector<int> fillReducingOrder(const Eigen::MatrixX3i &F, const Classificati
     for (int k = 0; k < nf; ++k)
         ordered[k] = c.freeVertices[inverse.indices()(k)];
     Eigen::SparseMatrix<double> permuted(nf, nf);
-    permuted.selfadjointView<Eigen::Upper>() =
-        laplacian.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
-    // The permuted columns come out unsorted; G00 is built on the same pattern through a
-    // sparse assignment, which requires sorted inner indices. A double transpose sorts.
+    permuted = laplacian.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
+    // Both halves are kept: the Upper factor reads the upper one, the per-event residual check
+    // reads whole rows (= columns). Permuted columns come out unsorted, and G00 is built on
+    // this pattern through an assignment that needs sorted indices: a double transpose sorts.
     d.stepTwoMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>(permuted);
     d.stepTwoNorm = detail::selfAdjointNorm(d.stepTwoMatrix);
     return ordered;
