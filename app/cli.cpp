@@ -9,27 +9,38 @@
 #include <QJsonObject>
 #include <QTextStream>
 
+#include <unordered_set>
+
 namespace finbook::app {
 
 namespace {
-QString tr(const char *text) { return QCoreApplication::translate("CommandLine", text); }
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("CommandLine", text);
+}
 
-int fail(QTextStream &err, const QString &message)
+// Messages may carry newlines (or come from Qt); the contract is one line on stderr.
+int fail(QTextStream &err, const QString &message, ExitCode code = ExitCode::BadInput)
 {
     err << message.simplified() << Qt::endl;
-    return int(ExitCode::BadInput);
+    return int(code);
 }
 
 QJsonObject summary(const model::LoadedDocument &doc)
 {
     qint64 objects = 0, strokes = 0, points = 0, pins = 0;
+    std::unordered_set<const model::StrokeData *> distinct;
     for (const model::Frame &f : doc.frames) {
         objects += qint64(f.groups.size());
         for (const model::StrokeGroup &g : f.groups) {
             strokes += qint64(g.strokes.size());
             pins += qint64(g.pins.size());
-            for (const model::Stroke &s : g.strokes)
+            for (const model::Stroke &s : g.strokes) {
+                if (!s.data)
+                    continue;
                 points += qint64(s.data->points.size());
+                distinct.insert(s.data.get());
+            }
         }
     }
     QJsonObject o;
@@ -38,6 +49,7 @@ QJsonObject summary(const model::LoadedDocument &doc)
     o[QStringLiteral("objects")] = objects;
     o[QStringLiteral("strokes")] = strokes;
     o[QStringLiteral("points")] = points;
+    o[QStringLiteral("stroke_data")] = qint64(distinct.size());
     o[QStringLiteral("pins")] = pins;
     o[QStringLiteral("fps")] = doc.settings.fps;
     o[QStringLiteral("canvas_width")] = doc.settings.canvasSize.width();
@@ -52,19 +64,25 @@ int exportFrames(const QString &path, const QString &outDir, QTextStream &out, Q
         return fail(err, loaded.error().message);
     QDir dir(outDir);
     if (!dir.exists() && !QDir().mkpath(outDir))
-        return fail(err, tr("Cannot create the output folder %1.").arg(outDir));
+        return fail(err, tr("Cannot create the output folder %1.").arg(outDir), ExitCode::Failure);
     const model::DocumentSettings &settings = loaded->settings;
     for (std::size_t i = 0; i < loaded->frames.size(); ++i) {
         const QImage image = model::renderFrame(loaded->frames[i], settings, settings.canvasSize);
         const QString name = QStringLiteral("frame_%1.png").arg(i + 1, 4, 10, QLatin1Char('0'));
         const QString file = dir.filePath(name);
         if (!image.save(file, "PNG"))
-            return fail(err, tr("Cannot write %1 (is the disk full or read-only?).").arg(file));
+            return fail(err, tr("Cannot write %1 (is the disk full or read-only?).").arg(file),
+                        ExitCode::Failure);
         out << file << Qt::endl;
     }
     return int(ExitCode::Ok);
 }
 } // namespace
+
+QString finbookVersion()
+{
+    return QStringLiteral(FINBOOK_VERSION);
+}
 
 bool isHeadlessCommand(const QStringList &arguments)
 {
@@ -89,12 +107,9 @@ QByteArray documentInfoJson(const QString &path, QString *error)
 
 int runHeadlessCommand(const QStringList &arguments, QTextStream &out, QTextStream &err)
 {
-    QStringList positional;
-    for (const QString &a : arguments)
-        if (!a.startsWith(QLatin1Char('-')))
-            positional << a;
+    QStringList positional = arguments;
     if (positional.isEmpty())
-        return fail(err, tr("No command given."));
+        return fail(err, tr("No command given; see finbook --help."));
     const QString command = positional.takeFirst();
     if (command == QLatin1String("info")) {
         if (positional.size() != 1)
@@ -111,7 +126,7 @@ int runHeadlessCommand(const QStringList &arguments, QTextStream &out, QTextStre
             return fail(err, tr("Usage: finbook export FILE OUTDIR"));
         return exportFrames(positional[0], positional[1], out, err);
     }
-    return fail(err, tr("Unknown command \"%1\".").arg(command));
+    return fail(err, tr("Unknown command \"%1\"; see finbook --help.").arg(command));
 }
 
 } // namespace finbook::app

@@ -14,11 +14,17 @@ enum class ExitCode { Ok = 0, Failure = 1, BadInput = 2 };
 // True when the arguments ask for a headless subcommand (so no window system is needed).
 bool isHeadlessCommand(const QStringList &arguments);
 
-// Runs `info` or `export`. `arguments` excludes the program name. Messages go to `err` as
-// one line; results (JSON, file list) go to `out`.
+// Runs `info` or `export`. `arguments` are the positional arguments (options already parsed
+// away), starting with the command. A failure is one line on `err` and exit code 2 for bad
+// input (missing or damaged file, wrong arguments) or 1 when the output cannot be written;
+// results (JSON, the exported file names) go to `out`.
 int runHeadlessCommand(const QStringList &arguments, QTextStream &out, QTextStream &err);
 
-// `finbook info` as a JSON object: format version, frames, objects, strokes, points.
+// `finbook info` as a one-line JSON object: format_version, frames, objects, strokes,
+// points, stroke_data (distinct stored strokes), pins, fps, canvas_width, canvas_height.
 QByteArray documentInfoJson(const QString &path, QString *error);
+
+// The version printed by `finbook --version` (the project version CMake was given).
+QString finbookVersion();
 
 } // namespace finbook::app

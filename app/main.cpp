@@ -23,38 +23,49 @@ int parseCommandLine(const QStringList &arguments, Options &options)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
-        "CommandLine", "Finbook, a flipbook animation editor.\n\n"
-                       "  finbook [FILE]               open FILE in the editor\n"
-                       "  finbook info FILE            print a JSON summary of FILE\n"
-                       "  finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ..."));
+        "CommandLine",
+        "Finbook, a flipbook animation editor.\n\n"
+        "  finbook [FILE]               open FILE in the editor\n"
+        "  finbook info FILE            print a JSON summary of FILE\n"
+        "  finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ..."));
     const QCommandLineOption help = parser.addHelpOption();
     const QCommandLineOption version = parser.addVersionOption();
     const QCommandLineOption lang(
         QStringLiteral("lang"),
-        QCoreApplication::translate("CommandLine", "Use LANGUAGE (e.g. de, en) instead of the system's."),
+        QCoreApplication::translate("CommandLine",
+                                    "Use LANGUAGE (e.g. de, en) instead of the system's."),
         QStringLiteral("LANGUAGE"));
     parser.addOption(lang);
     parser.addPositionalArgument(QStringLiteral("args"),
                                  QCoreApplication::translate("CommandLine", "FILE, or a command."),
                                  QStringLiteral("[FILE | info FILE | export FILE OUTDIR]"));
     QTextStream out(stdout), err(stderr);
+    const QString seeHelp =
+        QCoreApplication::translate("CommandLine", "see finbook --help", "after an error");
     if (!parser.parse(arguments)) {
-        err << parser.errorText() << Qt::endl;
+        QString error = parser.errorText().simplified();
+        if (error.endsWith(QLatin1Char('.')))
+            error.chop(1);
+        err << error << QStringLiteral("; ") << seeHelp << QLatin1Char('.') << Qt::endl;
         return int(finbook::app::ExitCode::BadInput);
     }
-    if (parser.isSet(help)) {
-        out << parser.helpText();
-        return 0;
+    if (parser.isSet(help) || parser.isSet(QStringLiteral("help-all"))) {
+        // No application object exists yet to tell the parser the program's name.
+        out << parser.helpText().replace(QLatin1String("<executable_name>"),
+                                         QLatin1String("finbook"));
+        return int(finbook::app::ExitCode::Ok);
     }
     if (parser.isSet(version)) {
-        out << "finbook " << FINBOOK_VERSION << Qt::endl;
-        return 0;
+        out << "finbook " << finbook::app::finbookVersion() << Qt::endl;
+        return int(finbook::app::ExitCode::Ok);
     }
     options.language = parser.value(lang);
     options.positional = parser.positionalArguments();
     const bool headless = finbook::app::isHeadlessCommand(options.positional);
+    // More than one word that is not info/export is a mistyped command, not a file list.
     if (!headless && options.positional.size() > 1) {
-        err << QCoreApplication::translate("CommandLine", "Too many arguments; see finbook --help.")
+        err << QCoreApplication::translate("CommandLine", "Unknown command \"%1\"; %2.")
+                   .arg(options.positional.first(), seeHelp)
             << Qt::endl;
         return int(finbook::app::ExitCode::BadInput);
     }
@@ -67,7 +78,7 @@ int main(int argc, char **argv)
 {
     QCoreApplication::setApplicationName(QStringLiteral("Finbook"));
     QCoreApplication::setOrganizationName(QStringLiteral("Finbook"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(FINBOOK_VERSION));
+    QCoreApplication::setApplicationVersion(finbook::app::finbookVersion());
 
     QStringList arguments;
     for (int i = 0; i < argc; ++i)
@@ -80,9 +91,9 @@ int main(int argc, char **argv)
         return code;
 
     if (finbook::app::isHeadlessCommand(options.positional)) {
-        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-            qputenv("QT_QPA_PLATFORM", "offscreen");
-        QGuiApplication app(argc, argv);
+        // Rendering strokes into a QImage needs no platform plugin; a QGuiApplication would
+        // load one and could print its own warnings, breaking the one-line-on-stderr promise.
+        QCoreApplication app(argc, argv);
         finbook::app::installTranslations(app, options.language);
         QTextStream out(stdout), err(stderr);
         return finbook::app::runHeadlessCommand(options.positional, out, err);
