@@ -40,7 +40,7 @@ void skipUnknown(Cursor &c, quint32 t, const char *kind)
 LoadedDocument Reader::read(const QByteArray &bytes)
 {
     Cursor c(bytes.constData(), bytes.constData() + bytes.size(), &m_where);
-    m_where.section = tr("the file header");
+    // Header problems need no location: they are about the file as a whole.
     m_version = readHeader(c);
     readSections(c);
     m_doc.formatVersion = m_version;
