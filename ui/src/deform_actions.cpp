@@ -7,15 +7,16 @@
 namespace finbook::ui {
 
 DeformActions::DeformActions(EditorState *state, QObject *parent)
-    : QObject(parent), m_state(state), m_controller(state->document())
+    : QObject(parent)
+    , m_state(state)
+    , m_controller(state->document())
 {
     m_reset = new QAction(tr("&Reset Pose"), this);
     m_reset->setObjectName(QStringLiteral("deform.reset"));
     m_reset->setStatusTip(tr("Move every pin of the current object back to where it was put"));
     m_bake = new QAction(tr("&Apply Pose to Drawing"), this);
     m_bake->setObjectName(QStringLiteral("deform.apply"));
-    m_bake->setStatusTip(
-        tr("Make the bent drawing the object's new strokes and remove its pins"));
+    m_bake->setStatusTip(tr("Make the bent drawing the object's new strokes and remove its pins"));
     m_removePins = new QAction(tr("Remove All &Pins"), this);
     m_removePins->setObjectName(QStringLiteral("deform.removePins"));
 

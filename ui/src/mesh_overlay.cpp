@@ -8,7 +8,10 @@ namespace finbook::ui {
 
 MeshOverlay::MeshOverlay(EditorState *state, model::DeformController *controller,
                          CanvasWidget *canvas)
-    : QObject(canvas), m_state(state), m_controller(controller), m_canvas(canvas)
+    : QObject(canvas)
+    , m_state(state)
+    , m_controller(controller)
+    , m_canvas(canvas)
 {
     auto repaint = [this] {
         if (m_state->showMesh())

@@ -12,15 +12,19 @@
 namespace finbook::ui {
 
 namespace {
-constexpr qreal kPinRadius = 6.0;     // widget px
-constexpr qreal kPinGrab = 10.0;      // widget px
-constexpr qreal kObjectGrab = 12.0;   // widget px around a stroke
+constexpr qreal kPinRadius = 6.0;   // widget px
+constexpr qreal kPinGrab = 10.0;    // widget px
+constexpr qreal kObjectGrab = 12.0; // widget px around a stroke
 
-bool editable(const model::StrokeGroup &g) { return g.visible && !g.locked; }
+bool editable(const model::StrokeGroup &g)
+{
+    return g.visible && !g.locked;
+}
 } // namespace
 
 PinTool::PinTool(model::DeformController *controller, QObject *parent)
-    : CanvasTool(parent), m_controller(controller)
+    : CanvasTool(parent)
+    , m_controller(controller)
 {
     connect(m_controller, &model::DeformController::busyChanged, this, [this] {
         if (canvas())
@@ -28,7 +32,10 @@ PinTool::PinTool(model::DeformController *controller, QObject *parent)
     });
 }
 
-QIcon PinTool::icon() const { return QIcon(QStringLiteral(":/icons/tool_pin.svg")); }
+QIcon PinTool::icon() const
+{
+    return QIcon(QStringLiteral(":/icons/tool_pin.svg"));
+}
 
 void PinTool::activate()
 {
@@ -130,7 +137,9 @@ void PinTool::startDrag(const PinRef &pin)
 
 void PinTool::press(const ToolEvent &event)
 {
-    const bool removing = event.button == Qt::RightButton || (event.modifiers & Qt::ControlModifier);
+    m_pressPos = event.pos;
+    const bool removing =
+        event.button == Qt::RightButton || (event.modifiers & Qt::ControlModifier);
     if (const PinRef hit = pinAt(event); hit.isValid()) {
         if (removing)
             removePin(hit);
@@ -157,7 +166,8 @@ void PinTool::press(const ToolEvent &event)
 
 void PinTool::move(const ToolEvent &event)
 {
-    if (!m_drag.isValid())
+    // A click without movement must not leave a "Move Pin" step behind.
+    if (!m_drag.isValid() || event.pos == m_pressPos)
         return;
     model::Document *doc = state()->document();
     doc->undoStack()->push(

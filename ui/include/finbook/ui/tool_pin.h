@@ -45,6 +45,7 @@ private:
     model::DeformController *m_controller;
     PinRef m_drag;
     PinRef m_hover;
+    QPointF m_pressPos;
     int m_dragSerial = 0;
 };
 

@@ -1,0 +1,159 @@
+// The Pin tool driven by real mouse events on the real canvas: add, drag, remove, undo.
+#include <finbook/model/pin_commands.h>
+#include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/deform_actions.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/mesh_overlay.h>
+#include <finbook/ui/tool_pin.h>
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <cmath>
+
+using namespace finbook;
+using namespace finbook::model;
+using namespace finbook::ui;
+
+namespace {
+
+StrokeDataPtr bar(float y)
+{
+    auto data = std::make_shared<StrokeData>();
+    for (int i = 0; i <= 100; ++i)
+        data->points.push_back(
+            {200.0f + 4.0f * float(i), y + 3.0f * std::sin(float(i) * 0.3f), 1.0f});
+    data->width = 6.0f;
+    return data;
+}
+
+struct Fixture {
+    Document doc;
+    EditorState state{&doc};
+    DeformActions actions{&state};
+    CanvasWidget canvas{&state};
+    PinTool *tool = nullptr;
+    Id group = kNoId;
+
+    Fixture()
+    {
+        Frame f;
+        f.id = doc.allocateId();
+        StrokeGroup g;
+        g.id = doc.allocateId();
+        g.name = QStringLiteral("arm");
+        g.strokes.push_back({doc.allocateId(), bar(300)});
+        g.strokes.push_back({doc.allocateId(), bar(306)});
+        f.groups.push_back(g);
+        group = g.id;
+        DocumentSettings s;
+        s.canvasSize = QSize(800, 600);
+        doc.reset({f}, s, doc.nextId());
+        tool =
+            static_cast<PinTool *>(canvas.addTool(std::make_unique<PinTool>(actions.controller())));
+        canvas.addOverlay(std::make_unique<MeshOverlay>(&state, actions.controller(), &canvas));
+        canvas.setCurrentTool(tool->id());
+        canvas.resize(800, 600);
+        canvas.show();
+        canvas.fitToView();
+    }
+
+    QPoint at(QPointF canvasPos) const { return canvas.mapFromCanvas(canvasPos).toPoint(); }
+    const StrokeGroup &object() const { return *doc.group(group); }
+
+    void drag(QPointF from, QPointF to, Qt::KeyboardModifiers mods = Qt::NoModifier)
+    {
+        QTest::mousePress(&canvas, Qt::LeftButton, mods, at(from));
+        for (int i = 1; i <= 10; ++i) {
+            const QPointF p = from + (to - from) * (i / 10.0);
+            QMouseEvent move(QEvent::MouseMove, at(p), canvas.mapToGlobal(at(p)), Qt::NoButton,
+                             Qt::LeftButton, mods);
+            QApplication::sendEvent(&canvas, &move);
+        }
+        QTest::mouseRelease(&canvas, Qt::LeftButton, mods, at(to));
+    }
+
+    bool waitReady()
+    {
+        QElapsedTimer t;
+        t.start();
+        while (actions.controller()->isWaiting(group) && t.elapsed() < 10000)
+            QTest::qWait(10);
+        return !actions.controller()->isWaiting(group);
+    }
+};
+
+} // namespace
+
+class TestPinTool : public QObject {
+    Q_OBJECT
+private slots:
+    void addDragRemoveWithUndo();
+    void clickOffTheDrawingAddsNothing();
+    void lockedObjectsAreNotPinned();
+};
+
+void TestPinTool::addDragRemoveWithUndo()
+{
+    Fixture fx;
+    QUndoStack *stack = fx.doc.undoStack();
+    // Two clicks on the drawing: two pins, two undo steps.
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({210, 300}));
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({590, 300}));
+    QCOMPARE(fx.object().pins.size(), std::size_t(2));
+    QCOMPARE(stack->count(), 2);
+    QVERIFY(fx.waitReady());
+    const std::vector<StrokePoint> rest = fx.object().strokes[0].data->points;
+
+    // Drag the right pin down: the arm bends live, and the whole drag is one undo step.
+    fx.drag({590, 300}, {560, 420});
+    QCOMPARE(stack->count(), 3);
+    const Pin &tip = fx.object().pins[1];
+    QVERIFY(QLineF(tip.target, QPointF(560, 420)).length() < 2.0);
+    QVERIFY(fx.object().isDeformed());
+    const auto &bent = fx.object().deformed->strokes[0];
+    QVERIFY(bent.back().y > 380);                 // the end followed the pin
+    QVERIFY(std::abs(bent[2].y - rest[2].y) < 3); // the point under the left pin stayed
+    const QImage shown = fx.canvas.grab().toImage();
+    QVERIFY(!shown.isNull());
+
+    // Undo the drag: back to the rest pose. Redo: bent again.
+    stack->undo();
+    QVERIFY(QLineF(fx.object().pins[1].target, fx.object().pins[1].rest).length() < 1e-9);
+    QVERIFY(std::abs(fx.object().deformed->strokes[0].back().y - rest.back().y) < 1e-2);
+    stack->redo();
+    QVERIFY(fx.object().deformed->strokes[0].back().y > 380);
+
+    // Ctrl-click removes the pin under the cursor; undo brings it back where it was.
+    const Pin removed = fx.object().pins[1];
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, Qt::ControlModifier, fx.at(removed.target));
+    QCOMPARE(fx.object().pins.size(), std::size_t(1));
+    stack->undo();
+    QCOMPARE(fx.object().pins.size(), std::size_t(2));
+    QCOMPARE(fx.object().pins[1], removed);
+
+    // Undo everything: no pins, no pose.
+    while (stack->canUndo())
+        stack->undo();
+    QVERIFY(fx.object().pins.empty());
+    QVERIFY(!fx.object().isDeformed());
+}
+
+void TestPinTool::clickOffTheDrawingAddsNothing()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({100, 100}));
+    QVERIFY(fx.object().pins.empty());
+    QCOMPARE(fx.doc.undoStack()->count(), 0);
+}
+
+void TestPinTool::lockedObjectsAreNotPinned()
+{
+    Fixture fx;
+    fx.doc.undoStack()->push(new SetObjectFlagCommand(&fx.doc, fx.group, ObjectFlag::Locked, true));
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({210, 300}));
+    QVERIFY(fx.object().pins.empty());
+}
+
+QTEST_MAIN(TestPinTool)
+#include "tst_pin_tool.moc"
