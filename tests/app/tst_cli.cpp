@@ -1,0 +1,253 @@
+// The `finbook` command line, run as a real process: info and export on the bundled example,
+// and every bad file or argument ends in exit code 2 with exactly one line on stderr.
+#include "cli.h"
+
+#include <finbook/model/finbook_file.h>
+
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTextStream>
+#include <QtEndian>
+#include <QtTest>
+
+#include <unordered_set>
+
+using namespace finbook;
+
+namespace {
+
+const QString kExample = QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook");
+
+struct Run {
+    int code = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Run runFinbook(const QStringList &arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(FINBOOK_BINARY_DIR "/bin/finbook"), arguments);
+    Run run;
+    if (!process.waitForFinished(120000) || process.exitStatus() != QProcess::NormalExit)
+        return run; // a crash or a hang: code -1 fails every check below
+    run.code = process.exitCode();
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
+}
+
+bool isOneLine(const QByteArray &text)
+{
+    return text.size() > 1 && text.endsWith('\n') && text.count('\n') == 1;
+}
+
+QByteArray exampleBytes()
+{
+    QFile f(kExample);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+QString writeFile(const QTemporaryDir &dir, const QString &name, const QByteArray &bytes)
+{
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    if (f.open(QIODevice::WriteOnly))
+        f.write(bytes);
+    return path;
+}
+
+} // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void versionAndHelp();
+    void infoMatchesTheFile();
+    void infoInProcessMatchesBinary();
+    void exportWritesEveryFrame();
+    void badFilesExitTwo_data();
+    void badFilesExitTwo();
+    void badArgumentsExitTwo_data();
+    void badArgumentsExitTwo();
+    void unwritableOutputFails();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestCli::initTestCase()
+{
+    QVERIFY(QFile::exists(QStringLiteral(FINBOOK_BINARY_DIR "/bin/finbook")));
+    QVERIFY2(QFile::exists(kExample), qPrintable(kExample));
+    QVERIFY(m_dir.isValid());
+}
+
+void TestCli::versionAndHelp()
+{
+    const Run version = runFinbook({QStringLiteral("--version")});
+    QCOMPARE(version.code, 0);
+    QCOMPARE(version.out.trimmed(), QByteArray("finbook ") + app::finbookVersion().toUtf8());
+    const Run help = runFinbook({QStringLiteral("--help")});
+    QCOMPARE(help.code, 0);
+    QVERIFY(help.out.contains("finbook info FILE"));
+    QVERIFY(help.out.contains("Usage: finbook"));
+    QVERIFY(help.err.isEmpty());
+}
+
+void TestCli::infoMatchesTheFile()
+{
+    const Run run = runFinbook({QStringLiteral("info"), kExample});
+    QCOMPARE(run.code, 0);
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+    QVERIFY(isOneLine(run.out));
+    QJsonParseError error;
+    const QJsonObject info = QJsonDocument::fromJson(run.out, &error).object();
+    QCOMPARE(error.error, QJsonParseError::NoError);
+
+    auto loaded = model::loadFinbook(kExample);
+    QVERIFY(loaded);
+    qint64 objects = 0, strokes = 0, points = 0;
+    std::unordered_set<const model::StrokeData *> distinct;
+    for (const model::Frame &f : loaded->frames) {
+        objects += qint64(f.groups.size());
+        for (const model::StrokeGroup &g : f.groups) {
+            strokes += qint64(g.strokes.size());
+            for (const model::Stroke &s : g.strokes) {
+                points += qint64(s.data->points.size());
+                distinct.insert(s.data.get());
+            }
+        }
+    }
+    QCOMPARE(info[QStringLiteral("format_version")].toInteger(), model::kFinbookFormatVersion);
+    QCOMPARE(info[QStringLiteral("frames")].toInteger(), qint64(loaded->frames.size()));
+    QCOMPARE(info[QStringLiteral("objects")].toInteger(), objects);
+    QCOMPARE(info[QStringLiteral("strokes")].toInteger(), strokes);
+    QCOMPARE(info[QStringLiteral("points")].toInteger(), points);
+    QCOMPARE(info[QStringLiteral("stroke_data")].toInteger(), qint64(distinct.size()));
+    QCOMPARE(info[QStringLiteral("fps")].toInt(), loaded->settings.fps);
+    QCOMPARE(info[QStringLiteral("canvas_width")].toInt(), loaded->settings.canvasSize.width());
+    QCOMPARE(info[QStringLiteral("canvas_height")].toInt(), loaded->settings.canvasSize.height());
+    // The example as promised: a walk cycle of at least 12 frames with several objects each,
+    // its ground line shared by every frame.
+    QVERIFY(loaded->frames.size() >= 12);
+    QVERIFY(objects >= 7 * qint64(loaded->frames.size()));
+    QVERIFY(qint64(distinct.size()) < strokes);
+}
+
+void TestCli::infoInProcessMatchesBinary()
+{
+    QString error;
+    const QByteArray json = app::documentInfoJson(kExample, &error);
+    QVERIFY2(!json.isEmpty(), qPrintable(error));
+    QCOMPARE(json, runFinbook({QStringLiteral("info"), kExample}).out.trimmed());
+
+    QString out, err;
+    QTextStream outStream(&out), errStream(&err);
+    QCOMPARE(app::runHeadlessCommand({QStringLiteral("info")}, outStream, errStream), 2);
+    QVERIFY(out.isEmpty());
+    QCOMPARE(err.count(QLatin1Char('\n')), 1);
+}
+
+void TestCli::exportWritesEveryFrame()
+{
+    auto loaded = model::loadFinbook(kExample);
+    QVERIFY(loaded);
+    const QString outDir = m_dir.filePath(QStringLiteral("export/nested"));
+    const Run run = runFinbook({QStringLiteral("export"), kExample, outDir});
+    QCOMPARE(run.code, 0);
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+    const QStringList pngs =
+        QDir(outDir).entryList({QStringLiteral("*.png")}, QDir::Files, QDir::Name);
+    QCOMPARE(pngs.size(), qsizetype(loaded->frames.size()));
+    QCOMPARE(pngs.first(), QStringLiteral("frame_0001.png"));
+    QCOMPARE(run.out.count('\n'), qsizetype(loaded->frames.size()));
+    const QRgb background = loaded->settings.background;
+    for (const QString &name : pngs) {
+        const QImage image(QDir(outDir).filePath(name));
+        QCOMPARE(image.size(), loaded->settings.canvasSize);
+        qint64 inked = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                inked += image.pixel(x, y) != background;
+        QVERIFY2(inked > 2000,
+                 qPrintable(QStringLiteral("%1: %2 inked pixels").arg(name).arg(inked)));
+        QCOMPARE(image.pixel(0, 0), background);
+    }
+}
+
+void TestCli::badFilesExitTwo_data()
+{
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QString>("expected");
+    const QByteArray valid = exampleBytes();
+    QByteArray newer = valid;
+    qToLittleEndian<quint32>(model::kFinbookFormatVersion + 1, newer.data() + 8);
+    QByteArray noise(3000, '\0');
+    for (qsizetype i = 0; i < noise.size(); ++i)
+        noise[i] = char((i * 7919 + 13) % 251);
+    QTest::newRow("missing") << m_dir.filePath(QStringLiteral("missing.finbook")) << "exists";
+    QTest::newRow("garbage") << writeFile(m_dir, QStringLiteral("garbage.finbook"), noise)
+                             << "not a Finbook";
+    QTest::newRow("empty") << writeFile(m_dir, QStringLiteral("empty.finbook"), {}) << "empty";
+    QTest::newRow("truncated") << writeFile(m_dir, QStringLiteral("cut.finbook"), valid.left(5000))
+                               << "incomplete";
+    QTest::newRow("newer") << writeFile(m_dir, QStringLiteral("newer.finbook"), newer)
+                           << "newer version of Finbook";
+    QTest::newRow("folder") << m_dir.path() << "folder";
+}
+
+void TestCli::badFilesExitTwo()
+{
+    QFETCH(QString, path);
+    QFETCH(QString, expected);
+    for (const QStringList &args :
+         {QStringList{QStringLiteral("info"), path},
+          QStringList{QStringLiteral("export"), path, m_dir.filePath(QStringLiteral("never"))}}) {
+        const Run run = runFinbook(args);
+        QCOMPARE(run.code, 2);
+        QVERIFY2(isOneLine(run.err), run.err.constData());
+        QVERIFY2(QString::fromUtf8(run.err).contains(expected), run.err.constData());
+        QVERIFY(run.out.isEmpty());
+    }
+    QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("never/frame_0001.png"))));
+}
+
+void TestCli::badArgumentsExitTwo_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::newRow("unknown option") << QStringList{QStringLiteral("--frobnicate")};
+    QTest::newRow("option without value") << QStringList{QStringLiteral("--lang")};
+    QTest::newRow("info without file") << QStringList{QStringLiteral("info")};
+    QTest::newRow("info with two files") << QStringList{QStringLiteral("info"), kExample, kExample};
+    QTest::newRow("export without folder") << QStringList{QStringLiteral("export"), kExample};
+    QTest::newRow("unknown command")
+        << QStringList{QStringLiteral("frobnicate"), QStringLiteral("a"), QStringLiteral("b")};
+}
+
+void TestCli::badArgumentsExitTwo()
+{
+    QFETCH(QStringList, arguments);
+    const Run run = runFinbook(arguments);
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err), run.err.constData());
+    QVERIFY(run.out.isEmpty());
+}
+
+void TestCli::unwritableOutputFails()
+{
+    const QString plain = writeFile(m_dir, QStringLiteral("plain.txt"), "x");
+    const Run run =
+        runFinbook({QStringLiteral("export"), kExample, plain + QStringLiteral("/out")});
+    QCOMPARE(run.code, 1);
+    QVERIFY2(isOneLine(run.err), run.err.constData());
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"
