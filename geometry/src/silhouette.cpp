@@ -1,10 +1,10 @@
 #include "clipper_bridge.h"
 
+#include <finbook/geometry/polyline.h>
 #include <finbook/geometry/silhouette.h>
 
 #include <cmath>
 #include <limits>
-#include <map>
 
 namespace finbook::geometry {
 namespace {
@@ -51,27 +51,66 @@ Expected<CheckedInput, GeometryError> checkStrokes(const std::vector<StrokeInput
     return input;
 }
 
-// Bands of all strokes grown by `extra` px, united (NonZero). Strokes of one width share a
-// ClipperOffset, which unites its own output.
+// Points per offset piece. A band with round joins and caps is the union of its segments'
+// capsules, so cutting strokes into pieces that share their end points changes nothing, and
+// keeps one scribbled-over stroke from meeting itself thousands of times in a single sweep.
+constexpr std::size_t kPiecePoints = 48;
+
+// Unites the pieces pairwise, level by level: inner edges of heavily overlapping strokes
+// vanish early instead of all crossing each other in one sweep (thousands of overlapping
+// strokes would otherwise take minutes).
+// With fillHoles, holes are dropped after every union: filling commutes with union (the
+// filled union of filled parts is the filled union), and a scribble's thousands of little
+// holes would otherwise dominate the cost.
+ClipperLib::Paths uniteBalanced(std::vector<ClipperLib::Paths> pieces, bool fillHoles)
+{
+    while (pieces.size() > 1) {
+        std::vector<ClipperLib::Paths> next;
+        for (std::size_t i = 0; i < pieces.size(); i += 2) {
+            if (i + 1 == pieces.size()) {
+                next.push_back(std::move(pieces[i]));
+                continue;
+            }
+            ClipperLib::Clipper clipper;
+            clipper.AddPaths(pieces[i], ClipperLib::ptSubject, true);
+            clipper.AddPaths(pieces[i + 1], ClipperLib::ptSubject, true);
+            ClipperLib::Paths united;
+            clipper.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero,
+                            ClipperLib::pftNonZero);
+            if (fillHoles) // outer rings come out positive, holes negative
+                std::erase_if(
+                    united, [](const ClipperLib::Path &p) { return !ClipperLib::Orientation(p); });
+            next.push_back(std::move(united));
+        }
+        pieces = std::move(next);
+    }
+    return pieces.empty() ? ClipperLib::Paths{} : std::move(pieces.front());
+}
+
+// Bands of all strokes grown by `extra` px, united.
 ClipperLib::Paths dilatedBands(const std::vector<StrokeInput> &strokes,
                                const SilhouetteOptions &options, double extra, double arcTolerance,
                                const detail::ClipperFrame &frame)
 {
-    std::map<double, ClipperLib::Paths> byWidth;
+    std::vector<ClipperLib::Paths> pieces;
     for (const StrokeInput &stroke : strokes) {
-        ClipperLib::Path path = frame.toPath(stroke.points);
-        if (!path.empty())
-            byWidth[stroke.width].push_back(std::move(path));
+        // Dense pen samples cost offset time but hardly change the band: thin them by the
+        // arc tolerance (the clearance promised in silhouette.h accounts for it).
+        const ClipperLib::Path path =
+            frame.toPath(douglasPeucker(cleanPolyline(stroke.points), arcTolerance));
+        const double delta = double(frame.units(0.5 * stroke.width + options.margin + extra));
+        for (std::size_t first = 0; first < path.size(); first += kPiecePoints - 1) {
+            const std::size_t last = std::min(path.size(), first + kPiecePoints);
+            ClipperLib::ClipperOffset offset(2.0, arcTolerance * detail::kUnitsPerPixel);
+            offset.AddPath(ClipperLib::Path(path.begin() + long(first), path.begin() + long(last)),
+                           ClipperLib::jtRound, ClipperLib::etOpenRound);
+            pieces.emplace_back();
+            offset.Execute(pieces.back(), delta);
+            if (last == path.size())
+                break;
+        }
     }
-    ClipperLib::Paths all;
-    for (const auto &[width, paths] : byWidth) {
-        ClipperLib::ClipperOffset offset(2.0, arcTolerance * detail::kUnitsPerPixel);
-        offset.AddPaths(paths, ClipperLib::jtRound, ClipperLib::etOpenRound);
-        ClipperLib::Paths out;
-        offset.Execute(out, double(frame.units(0.5 * width + options.margin + extra)));
-        all.insert(all.end(), out.begin(), out.end());
-    }
-    return all;
+    return uniteBalanced(std::move(pieces), options.holes == HoleMode::FillEnclosed);
 }
 
 ClipperLib::Paths outerRingsOnly(const ClipperLib::PolyTree &tree)

@@ -4,9 +4,10 @@
 // one-point stroke becomes a disk), the bands are united, gaps up to `gap` px wide are bridged
 // by a morphological closing (dilate by gap/2, unite, erode by gap/2), and areas enclosed by
 // the strokes are filled. Parts drawn further apart than `gap` stay separate polygons (lobes).
-// Every finite stroke point lies inside the result, more than width/2 + margin − (0.1 px +
-// simplifyTolerance) from its boundary (chords of the round caps plus simplification), and
-// in any case more than 0.75 × (width/2 + margin).
+// Every finite stroke point lies inside the result, more than width/2 + margin − (0.2 px +
+// simplifyTolerance) from its boundary (chords of the round caps, thinning of dense strokes
+// and simplification of the outline each cut in a little), and in any case more than
+// 0.7 × (width/2 + margin).
 #pragma once
 
 #include <finbook/geometry/expected.h>
