@@ -153,8 +153,10 @@ void writeDocumentSection(ByteWriter &w, const Document &doc, Id maxId)
     w.u8(s.loop ? 1 : 0);
     w.i32(s.playStart);
     w.i32(s.playEnd);
-    // Ids are never reused: keep the counter past every id even if it fell behind in memory.
-    w.u64(std::max<Id>(doc.nextId(), maxId + 1));
+    // The next id is derived from the content, not the in-memory counter: commands allocate
+    // ids when they are created, and undo does not give them back, so the counter depends on
+    // history. Past every stored id is all a reopened document needs (its undo stack is new).
+    w.u64(maxId + 1);
 }
 
 void writeStrokeTable(ByteWriter &w, const Tables &tables)
