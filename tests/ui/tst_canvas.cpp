@@ -1,0 +1,204 @@
+// The canvas view: zoom about the cursor, panning, fit, onion skin and the frame cache.
+#include "tst_tools_support.h"
+
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/tool_pen.h>
+
+#include <QtTest>
+
+using namespace finbook;
+using namespace finbook::test;
+
+class TestCanvas : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+
+    void wheelZoomKeepsPointUnderCursor();
+    void zoomIsClamped();
+    void fitShowsWholePage();
+    void middleButtonAndSpaceDragPan();
+    void onionSkinShowsTintedNeighbours_data();
+    void onionSkinShowsTintedNeighbours();
+    void onionSkinHiddenWhilePlaying();
+    void cacheFollowsUndo();
+    void hiddenObjectsAreNotDrawn();
+
+private:
+    QColor pixelAt(const QPointF &canvasPos)
+    {
+        const QImage image = m_canvas->grab().toImage();
+        const QPointF w = m_canvas->mapFromCanvas(canvasPos) * image.devicePixelRatio();
+        return image.pixelColor(w.toPoint());
+    }
+
+    std::unique_ptr<model::Document> m_doc;
+    std::unique_ptr<ui::EditorState> m_state;
+    std::unique_ptr<ui::CanvasWidget> m_canvas;
+};
+
+void TestCanvas::init()
+{
+    m_doc = std::make_unique<model::Document>();
+    resetDocument(*m_doc, 3);
+    m_state = std::make_unique<ui::EditorState>(m_doc.get());
+    m_canvas = std::make_unique<ui::CanvasWidget>(m_state.get());
+    m_canvas->addTool(std::make_unique<ui::PenTool>());
+    m_canvas->resize(600, 500);
+    m_canvas->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_canvas.get()));
+}
+
+void TestCanvas::cleanup()
+{
+    m_canvas.reset();
+    m_state.reset();
+    m_doc.reset();
+}
+
+void TestCanvas::wheelZoomKeepsPointUnderCursor()
+{
+    const QPointF cursor(170, 130);
+    const QPointF under = m_canvas->mapToCanvas(cursor);
+    const qreal zoom = m_canvas->zoom();
+    wheel(m_canvas.get(), cursor, 120);
+    QVERIFY(m_canvas->zoom() > zoom * 1.2);
+    QVERIFY(QLineF(m_canvas->mapToCanvas(cursor), under).length() < 1e-9);
+    wheel(m_canvas.get(), QPointF(420, 333), -240);
+    wheel(m_canvas.get(), cursor, 120, Qt::ControlModifier);
+    const QPointF again = m_canvas->mapToCanvas(cursor);
+    wheel(m_canvas.get(), cursor, 360);
+    QVERIFY(QLineF(m_canvas->mapToCanvas(cursor), again).length() < 1e-9);
+}
+
+void TestCanvas::zoomIsClamped()
+{
+    for (int i = 0; i < 60; ++i)
+        m_canvas->zoomIn();
+    QCOMPARE(m_canvas->zoom(), ui::CanvasWidget::kMaxZoom);
+    for (int i = 0; i < 80; ++i)
+        m_canvas->zoomOut();
+    QCOMPARE(m_canvas->zoom(), ui::CanvasWidget::kMinZoom);
+    m_canvas->setZoom(std::numeric_limits<qreal>::quiet_NaN(), {10, 10});
+    QCOMPARE(m_canvas->zoom(), ui::CanvasWidget::kMinZoom);
+}
+
+void TestCanvas::fitShowsWholePage()
+{
+    m_canvas->actualSize();
+    m_canvas->zoomIn();
+    m_canvas->fitToView();
+    const QRectF page = m_canvas->canvasToWidget().mapRect(QRectF(0, 0, 400, 300));
+    QVERIFY(QRectF(m_canvas->rect()).contains(page));
+    QVERIFY(page.width() > 500 || page.height() > 400); // and it fills the widget
+    m_canvas->resize(300, 300);
+    const QRectF smaller = m_canvas->canvasToWidget().mapRect(QRectF(0, 0, 400, 300));
+    QVERIFY(QRectF(m_canvas->rect()).contains(smaller)); // kept fitted on resize
+}
+
+void TestCanvas::middleButtonAndSpaceDragPan()
+{
+    m_canvas->actualSize();
+    QPointF origin = m_canvas->mapFromCanvas({0, 0});
+    drag(m_canvas.get(), {QPointF(300, 300), QPointF(310, 305), QPointF(325, 290)},
+         Qt::MiddleButton);
+    QCOMPARE(m_canvas->mapFromCanvas({0, 0}), origin + QPointF(25, -10));
+    origin = m_canvas->mapFromCanvas({0, 0});
+    m_canvas->setFocus();
+    QTest::keyPress(m_canvas.get(), Qt::Key_Space);
+    drag(m_canvas.get(), {QPointF(100, 100), QPointF(80, 90)});
+    QTest::keyRelease(m_canvas.get(), Qt::Key_Space);
+    QCOMPARE(m_canvas->mapFromCanvas({0, 0}), origin + QPointF(-20, -10));
+    int strokes = 0;
+    for (const model::Frame &f : m_doc->frames())
+        strokes += int(f.groups[0].strokes.size());
+    QCOMPARE(strokes, 0); // panning never draws
+}
+
+void TestCanvas::onionSkinShowsTintedNeighbours_data()
+{
+    QTest::addColumn<int>("neighbour");
+    QTest::newRow("previous") << 0;
+    QTest::newRow("next") << 2;
+}
+
+void TestCanvas::onionSkinShowsTintedNeighbours()
+{
+    QFETCH(int, neighbour);
+    auto thick = line({100, 150}, {300, 150});
+    auto data = std::make_shared<model::StrokeData>(*thick);
+    data->width = 12;
+    addStroke(*m_doc, m_doc->frameAt(neighbour).groups[0].id, data);
+    m_state->setCurrentFrameIndex(1);
+    const QPointF probe(200, 150);
+    QCOMPARE(pixelAt(probe), QColor(Qt::white)); // onion skin off: nothing there
+
+    ui::OnionSkin onion = m_state->onionSkin();
+    onion.enabled = true;
+    onion.before = 1;
+    onion.after = 1;
+    onion.opacity = 0.5;
+    m_state->setOnionSkin(onion);
+    const QColor c = pixelAt(probe);
+    const QColor tint = neighbour == 0 ? onion.beforeTint : onion.afterTint;
+    // Half the tint over white: tinted, lighter than the tint itself, not black.
+    QVERIFY2(c != QColor(Qt::white), qPrintable(c.name()));
+    if (neighbour == 0)
+        QVERIFY2(c.red() > c.blue() + 40 && c.red() > c.green() + 40, qPrintable(c.name()));
+    else
+        QVERIFY2(c.blue() > c.red() + 40, qPrintable(c.name()));
+    QVERIFY(std::abs(c.red() - (255 + tint.red()) / 2) <= 8);
+
+    onion.before = 0;
+    onion.after = 0;
+    m_state->setOnionSkin(onion);
+    QCOMPARE(pixelAt(probe), QColor(Qt::white)); // no neighbours asked for
+    onion.before = onion.after = 2;
+    onion.enabled = false;
+    m_state->setOnionSkin(onion);
+    QCOMPARE(pixelAt(probe), QColor(Qt::white));
+}
+
+void TestCanvas::onionSkinHiddenWhilePlaying()
+{
+    addStroke(*m_doc, m_doc->frameAt(0).groups[0].id, line({100, 150}, {300, 150}));
+    m_state->setCurrentFrameIndex(1);
+    ui::OnionSkin onion = m_state->onionSkin();
+    onion.enabled = true;
+    m_state->setOnionSkin(onion);
+    QVERIFY(pixelAt({200, 150}) != QColor(Qt::white));
+    m_state->setPlaying(true);
+    QCOMPARE(pixelAt({200, 150}), QColor(Qt::white));
+    m_state->setPlaying(false);
+    QVERIFY(pixelAt({200, 150}) != QColor(Qt::white));
+}
+
+void TestCanvas::cacheFollowsUndo()
+{
+    const model::Id g = m_doc->frameAt(0).groups[0].id;
+    QCOMPARE(pixelAt({200, 150}), QColor(Qt::white));
+    addStroke(*m_doc, g, line({100, 150}, {300, 150}, 20, 0xff000000));
+    QCOMPARE(pixelAt({200, 150}), QColor(Qt::black));
+    m_doc->undoStack()->undo();
+    QCOMPARE(pixelAt({200, 150}), QColor(Qt::white));
+    m_doc->undoStack()->redo();
+    m_state->setCurrentFrameIndex(1);
+    QCOMPARE(pixelAt({200, 150}), QColor(Qt::white));
+    m_state->setCurrentFrameIndex(0);
+    QCOMPARE(pixelAt({200, 150}), QColor(Qt::black));
+}
+
+void TestCanvas::hiddenObjectsAreNotDrawn()
+{
+    const model::Id g = m_doc->frameAt(0).groups[0].id;
+    addStroke(*m_doc, g, line({100, 150}, {300, 150}));
+    QCOMPARE(pixelAt({200, 150}), QColor(Qt::black));
+    m_doc->undoStack()->push(
+        new model::SetObjectFlagCommand(m_doc.get(), g, model::ObjectFlag::Visible, false));
+    QCOMPARE(pixelAt({200, 150}), QColor(Qt::white));
+}
+
+QTEST_MAIN(TestCanvas)
+#include "tst_canvas.moc"
