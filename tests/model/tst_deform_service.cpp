@@ -5,6 +5,7 @@
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
@@ -109,6 +110,7 @@ private slots:
     void dragSolvesSynchronouslyAndMergesPerDrag();
     void bakeMakesPoseTheRestAndUndoes();
     void duplicatedFrameSharesSetupButNotPins();
+    void reopenedFileContinuesWhereItStopped();
     void serviceDeliversOnlyLatestGeneration();
     void guiStaysResponsiveDuringBigPrecompute();
 };
@@ -221,6 +223,35 @@ void TestDeformService::duplicatedFrameSharesSetupButNotPins()
     // The original keeps its own pins and pose.
     QCOMPARE(doc.group(g)->pins[1].target, QPointF(400, 100));
     QVERIFY(doc.group(g)->deformed->strokes[0].back().y < 120);
+}
+
+void TestDeformService::reopenedFileContinuesWhereItStopped()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bent.finbook"));
+    Document doc;
+    const Id g = makeArm(doc);
+    {
+        DeformController controller(&doc);
+        doc.undoStack()->push(new AddPinCommand(&doc, g, {100, 100}, {100, 100}));
+        doc.undoStack()->push(new AddPinCommand(&doc, g, {400, 100}, {400, 100}));
+        QVERIFY(waitSolved(controller, g));
+        doc.undoStack()->push(new MovePinCommand(&doc, g, doc.group(g)->pins[1].id, {380, 200}, 1));
+        QVERIFY(!saveFinbook(doc, path));
+    }
+    Document reopened;
+    QVERIFY(!openFinbook(reopened, path));
+    const StrokeGroup *r = reopened.group(g);
+    QVERIFY(r && r->isDeformed());
+    QCOMPARE(r->pins, doc.group(g)->pins);
+    QCOMPARE(*r->deformed, *doc.group(g)->deformed); // shown at once, without solving
+    // Dragging on: the same solver gives the same pose for the same targets, then follows.
+    DeformController controller(&reopened);
+    controller.prepare(g);
+    QVERIFY(waitSolved(controller, g));
+    QCOMPARE(*reopened.group(g)->deformed, *doc.group(g)->deformed);
+    reopened.undoStack()->push(new MovePinCommand(&reopened, g, r->pins[1].id, {380, 260}, 1));
+    QVERIFY(reopened.group(g)->deformed->strokes[0].back().y > 230);
 }
 
 void TestDeformService::serviceDeliversOnlyLatestGeneration()
