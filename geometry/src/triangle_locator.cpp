@@ -1,5 +1,7 @@
 #include <finbook/geometry/triangle_locator.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -61,34 +63,33 @@ TriangleLocator::TriangleLocator(const Eigen::MatrixX2d &V, const Eigen::MatrixX
         m_F.resize(0, 3);
         return;
     }
-    Eigen::Vector2d lo = V.row(F(0, 0)).transpose(), hi = lo;
-    for (Eigen::Index i = 0; i < F.size(); ++i) {
-        lo = lo.cwiseMin(V.row(F.data()[i]).transpose());
-        hi = hi.cwiseMax(V.row(F.data()[i]).transpose());
+    // Cells about the size of a triangle: a query then tests two or three triangles.
+    std::vector<Eigen::AlignedBox2d> boxes(static_cast<std::size_t>(m));
+    Eigen::AlignedBox2d all;
+    double sizeSum = 0.0;
+    for (Eigen::Index t = 0; t < m; ++t) {
+        Eigen::AlignedBox2d &box = boxes[std::size_t(t)];
+        for (int k = 0; k < 3; ++k)
+            box.extend(V.row(F(t, k)).transpose());
+        all.extend(box);
+        sizeSum += box.sizes().maxCoeff();
     }
-    const Eigen::Vector2d extent = (hi - lo).cwiseMax(1e-9);
-    m_origin = lo;
-    m_cell = std::max(std::sqrt(extent.x() * extent.y() / double(m)),
-                      std::max(extent.x(), extent.y()) / 4096.0);
+    const Eigen::Vector2d extent = all.sizes().cwiseMax(1e-9);
+    m_origin = all.min();
+    // At most ~4 cells per triangle, whatever the spread of the lobes.
+    m_cell = std::max({sizeSum / double(m), std::sqrt(extent.prod() / (4.0 * double(m))),
+                       extent.maxCoeff() / 4096.0});
     m_nx = std::max(1, int(std::ceil(extent.x() / m_cell)));
     m_ny = std::max(1, int(std::ceil(extent.y() / m_cell)));
-    const auto cellRange = [&](Eigen::Index t, int &x0, int &x1, int &y0, int &y1) {
-        Eigen::Vector2d tlo = V.row(F(t, 0)), thi = tlo;
-        for (int k = 1; k < 3; ++k) {
-            tlo = tlo.cwiseMin(V.row(F(t, k)).transpose());
-            thi = thi.cwiseMax(V.row(F(t, k)).transpose());
-        }
-        x0 = std::clamp(int((tlo.x() - lo.x()) / m_cell), 0, m_nx - 1);
-        x1 = std::clamp(int((thi.x() - lo.x()) / m_cell), 0, m_nx - 1);
-        y0 = std::clamp(int((tlo.y() - lo.y()) / m_cell), 0, m_ny - 1);
-        y1 = std::clamp(int((thi.y() - lo.y()) / m_cell), 0, m_ny - 1);
-    };
     m_cellStart.assign(std::size_t(m_nx) * std::size_t(m_ny) + 1, 0);
     for (int pass = 0; pass < 2; ++pass) {
         std::vector<int> fill(m_cellStart.begin(), m_cellStart.end() - 1);
         for (Eigen::Index t = 0; t < m; ++t) {
-            int x0, x1, y0, y1;
-            cellRange(t, x0, x1, y0, y1);
+            const Eigen::AlignedBox2d &box = boxes[std::size_t(t)];
+            const int x0 = std::min(int((box.min().x() - m_origin.x()) / m_cell), m_nx - 1);
+            const int x1 = std::min(int((box.max().x() - m_origin.x()) / m_cell), m_nx - 1);
+            const int y0 = std::min(int((box.min().y() - m_origin.y()) / m_cell), m_ny - 1);
+            const int y1 = std::min(int((box.max().y() - m_origin.y()) / m_cell), m_ny - 1);
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x) {
                     const std::size_t c = std::size_t(y) * std::size_t(m_nx) + std::size_t(x);

@@ -8,6 +8,7 @@
 #include <finbook/geometry/object_mesh.h>
 #include <finbook/geometry/polygon_repair.h>
 #include <finbook/geometry/silhouette.h>
+#include <finbook/geometry/triangle_locator.h>
 
 #include <QFile>
 #include <QFileInfo>
@@ -118,6 +119,18 @@ QJsonObject measure(const QString &path, const Input &input)
         mesh = std::move(*meshed);
     }
     const Embedding embedding = embed(*mesh, input.points);
+    // The same split as precompute + solve: building the grid once, then per-point queries.
+    std::vector<double> buildUs, locateUs;
+    for (int run = 0; run < kRuns; ++run) {
+        auto start = Clock::now();
+        const TriangleLocator locator(mesh->V, mesh->F);
+        buildUs.push_back(1000.0 * msSince(start));
+        start = Clock::now();
+        int found = 0;
+        for (Eigen::Index i = 0; i < input.points.rows(); ++i)
+            found += locator.locate(input.points.row(i).transpose()).triangle >= 0 ? 1 : 0;
+        locateUs.push_back(1000.0 * msSince(start) / double(std::max(1, found)));
+    }
     using finbook::bench::median;
     row.insert(QStringLiteral("vertices"), qint64(mesh->V.rows()));
     row.insert(QStringLiteral("triangles"), qint64(mesh->F.rows()));
@@ -127,6 +140,8 @@ QJsonObject measure(const QString &path, const Input &input)
     row.insert(QStringLiteral("mesh_ms"), median(meshMs));
     row.insert(QStringLiteral("embed_us_per_point"), median(embedUs));
     row.insert(QStringLiteral("embed_points"), qint64(input.points.rows()));
+    row.insert(QStringLiteral("locator_build_us"), median(buildUs));
+    row.insert(QStringLiteral("locate_us_per_point"), median(locateUs));
     row.insert(QStringLiteral("snapped_points"), embedding.snapped);
     return row;
 }
