@@ -69,11 +69,10 @@ Region treeToRegion(const ClipperLib::PolyTree &tree, const ClipperFrame &frame)
     return region;
 }
 
-void unionStrictlySimple(const ClipperLib::Paths &paths, ClipperLib::PolyFillType fill,
-                         ClipperLib::PolyTree &tree)
+void uniteToTree(const ClipperLib::Paths &paths, ClipperLib::PolyFillType fill,
+                 ClipperLib::PolyTree &tree)
 {
     ClipperLib::Clipper clipper;
-    clipper.StrictlySimple(true);
     clipper.AddPaths(paths, ClipperLib::ptSubject, true);
     clipper.Execute(ClipperLib::ctUnion, tree, fill, fill);
 }

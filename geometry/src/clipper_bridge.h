@@ -32,10 +32,11 @@ ClipperFrame frameFor(const Eigen::RowVector2d &lo);
 // outer rings positive, holes negative.
 Region treeToRegion(const ClipperLib::PolyTree &tree, const ClipperFrame &frame);
 
-// Union of closed paths into a strictly simple tree (no touching vertices, which CGAL and
-// OpenMesh would turn into non-manifold vertices).
-void unionStrictlySimple(const ClipperLib::Paths &paths, ClipperLib::PolyFillType fill,
-                         ClipperLib::PolyTree &tree);
+// Union of closed paths into a tree of outer rings and holes. Not Clipper's StrictlySimple
+// mode: it is quadratic (half the time on a 5,000-point outline), and the pinches it would
+// remove are fine for the mesher (isSimple with Touching::AllowedAtPoints).
+void uniteToTree(const ClipperLib::Paths &paths, ClipperLib::PolyFillType fill,
+                 ClipperLib::PolyTree &tree);
 
 // Round-joined offset of closed paths (delta < 0 erodes).
 ClipperLib::Paths offsetClosed(const ClipperLib::Paths &paths, double deltaPx,

@@ -65,7 +65,7 @@ Expected<Region, GeometryError> finish(const ClipperLib::Paths &paths, const Rep
                                        const detail::ClipperFrame &frame)
 {
     ClipperLib::PolyTree tree;
-    detail::unionStrictlySimple(roundCorners(paths, options, frame), ClipperLib::pftNonZero, tree);
+    detail::uniteToTree(roundCorners(paths, options, frame), ClipperLib::pftNonZero, tree);
     Region region =
         detail::simplifyRegion(detail::treeToRegion(tree, frame), options.simplifyTolerance);
     if (region.empty() || !(regionArea(region) > 0.0))

@@ -146,8 +146,8 @@ Expected<Region, GeometryError> silhouette(const std::vector<StrokeInput> &strok
     const double closeRadius = 0.5 * options.gap;
 
     ClipperLib::PolyTree united;
-    detail::unionStrictlySimple(dilatedBands(strokes, options, closeRadius, arcTolerance, frame),
-                                ClipperLib::pftNonZero, united);
+    detail::uniteToTree(dilatedBands(strokes, options, closeRadius, arcTolerance, frame),
+                        ClipperLib::pftNonZero, united);
     ClipperLib::Paths closed;
     if (options.holes == HoleMode::FillEnclosed)
         closed = outerRingsOnly(united);
@@ -157,7 +157,7 @@ Expected<Region, GeometryError> silhouette(const std::vector<StrokeInput> &strok
         closed = detail::offsetClosed(closed, -closeRadius, arcTolerance, frame);
 
     ClipperLib::PolyTree tree;
-    detail::unionStrictlySimple(closed, ClipperLib::pftNonZero, tree);
+    detail::uniteToTree(closed, ClipperLib::pftNonZero, tree);
     const double tolerance = std::min(options.simplifyTolerance, 0.2 * input->minRadius);
     Region region = detail::simplifyRegion(detail::treeToRegion(tree, frame), tolerance);
     if (region.empty() || !(regionArea(region) > 0.0))
