@@ -8,6 +8,8 @@
 #include <QFileInfo>
 #include <QSaveFile>
 
+#include <new>
+
 #ifdef Q_OS_UNIX
 #include <fcntl.h>
 #include <unistd.h>
@@ -75,6 +77,15 @@ std::optional<QString> keepBackup(const QString &path)
     return tr("the backup \"%1\" cannot be written (%2)")
         .arg(backupInfo.fileName(), original.errorString());
 }
+// Reads a whole file only when it starts like a .finbook: "finbook info" on a 10 GB video or
+// on /dev/zero is refused after 8 bytes instead of filling memory.
+QByteArray readAllOfFinbook(QFile &file)
+{
+    const QByteArray head = file.peek(sizeof(file_format::kMagic));
+    if (std::memcmp(head.constData(), file_format::kMagic, std::size_t(head.size())) != 0)
+        return head;
+    return file.readAll();
+}
 } // namespace
 
 QString finbookBackupPath(const QString &path)
@@ -91,7 +102,15 @@ Expected<LoadedDocument, FileError> loadFinbook(const QString &path)
             tr("Cannot open \"%1\": %2. Check that the file exists and that you may read it.")
                 .arg(displayName(path),
                      QFileInfo(path).isDir() ? tr("it is a folder") : file.errorString())});
-    const QByteArray bytes = file.readAll();
+    QByteArray bytes;
+    try {
+        bytes = readAllOfFinbook(file);
+    } catch (const std::bad_alloc &) {
+        return unexpected(
+            FileError{FileErrorCode::TooLarge,
+                      tr("Cannot open \"%1\": it is too large for the memory available.")
+                          .arg(displayName(path))});
+    }
     if (file.error() != QFileDevice::NoError)
         return unexpected(
             FileError{FileErrorCode::OpenFailed,

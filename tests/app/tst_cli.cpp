@@ -201,6 +201,8 @@ void TestCli::badFilesExitTwo_data()
     QTest::newRow("newer") << writeFile(m_dir, QStringLiteral("newer.finbook"), newer)
                            << "newer version of Finbook";
     QTest::newRow("folder") << m_dir.path() << "folder";
+    if (QFile::exists(QStringLiteral("/dev/zero"))) // endless: must be refused, not read
+        QTest::newRow("endless device") << QStringLiteral("/dev/zero") << "not a Finbook";
 }
 
 void TestCli::badFilesExitTwo()
