@@ -19,7 +19,7 @@ Eigen::Matrix3cd similarityForm(const Complex z[3])
         const int b = (a + 1) % 3, c = (a + 2) % 3;
         const Complex edge = z[b] - z[a];
         // Written out: std::complex division goes through the slow, overflow-careful __divdc3.
-        const Complex mu = (z[c] - z[a]) * std::conj(edge) / std::norm(edge);
+        const Complex mu = (z[c] - z[a]) * std::conj(edge) / squaredMagnitude(edge);
         Eigen::Vector3cd w;
         w(a) = mu - 1.0;
         w(b) = -mu;
@@ -79,6 +79,35 @@ std::vector<Eigen::Index> localityOrder(const std::vector<Eigen::Index> &triangl
     return sorted;
 }
 
+// Inverts the triangle → corner relation for the free vertices (counting sort), so that step
+// 2 can gather each right-hand-side row instead of scattering into shared rows.
+void buildCorners(ArapPrecompute &d)
+{
+    const auto nf = static_cast<int>(d.freeCount);
+    const auto m = static_cast<int>(d.triangles.rows());
+    d.cornerStart = Eigen::VectorXi::Zero(nf + 1);
+    for (int t = 0; t < m; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            if (d.triangles(t, k) < nf)
+                ++d.cornerStart(d.triangles(t, k) + 1);
+        }
+    }
+    for (int v = 0; v < nf; ++v)
+        d.cornerStart(v + 1) += d.cornerStart(v);
+    d.cornerTriangle.resize(d.cornerStart(nf));
+    d.cornerRest.resize(d.cornerStart(nf));
+    Eigen::VectorXi next = d.cornerStart.head(nf);
+    for (int t = 0; t < m; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const int v = d.triangles(t, k);
+            if (v < nf) {
+                d.cornerTriangle(next(v)) = t;
+                d.cornerRest(next(v)++) = d.restCentered(t, k);
+            }
+        }
+    }
+}
+
 } // namespace
 
 void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
@@ -116,6 +145,7 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
     d.stepTwoCoupling.resize(nf, handles);
     d.stepTwoCoupling.setFromTriplets(h01.begin(), h01.end());
     d.stepOneNorm = selfAdjointNorm(d.stepOneMatrix);
+    buildCorners(d);
 }
 
 } // namespace finbook::deform::detail

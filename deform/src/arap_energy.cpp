@@ -24,7 +24,7 @@ double arapEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Ei
         const Complex rotation = detail::bestRotation(r, p, 0.0);
         for (int k = 0; k < 3; ++k) {
             const int j = (k + 1) % 3;
-            energy += std::norm((p[j] - p[k]) - rotation * (r[j] - r[k]));
+            energy += detail::squaredMagnitude((p[j] - p[k]) - rotation * (r[j] - r[k]));
         }
     }
     return energy;

@@ -12,6 +12,9 @@ namespace {
 // about as much as streaming 1/40 of the step-1 factor; past this many handles a per-event
 // back-substitution is cheaper in both memory and time.
 constexpr Eigen::Index kMaxBasisHandles = 32;
+// Below this many free vertices the whole factorization takes a few milliseconds and a second
+// thread costs more in start-up and scheduling (especially on a busy machine) than it saves.
+constexpr Eigen::Index kParallelFreeVertices = 8000;
 
 DeformError cancelledError()
 {
@@ -48,6 +51,7 @@ struct ArapFactorization::Shared {
     ArapPrecompute &d;
     std::latch stepOneFactored{1};
     bool released = false; // stepOneFactored was counted down (calling thread only)
+    bool stepTwoOk = false;
     std::atomic<bool> stepOneOk{false};
     std::atomic<bool> abort{false};
     std::atomic<bool> inaccurate{false};
@@ -59,23 +63,37 @@ struct ArapFactorization::Shared {
         stepOneFactored.count_down();
     }
 
-    // Basis columns first, first + 2, …: M(:, c) = −G00⁻¹ G01(:, c), each residual-checked
-    // (which also verifies the G00 factor, so it needs no separate probe then).
-    void basisColumns(Eigen::Index first, const std::function<bool()> &stop)
+    // LLᵀ of H00, the reciprocal pivots of the back-substitution kernel, and a probe.
+    void factorStepTwo()
     {
-        for (Eigen::Index c = first; c < d.stepOneBasis.cols(); c += 2) {
+        d.stepTwoFactor.compute(d.stepTwoMatrix);
+        stepTwoOk = d.stepTwoFactor.info() == Eigen::Success;
+        if (!stepTwoOk)
+            return;
+        const auto &L = d.stepTwoFactor.matrixL().nestedExpression();
+        d.stepTwoPivotInverse.resize(L.cols());
+        for (Eigen::Index j = 0; j < L.cols(); ++j) // the diagonal leads each column
+            d.stepTwoPivotInverse(j) = 1.0 / L.valuePtr()[L.outerIndexPtr()[j]];
+        stepTwoOk = probe(d.stepTwoFactor, d.stepTwoMatrix, d.stepTwoNorm);
+    }
+
+    // Basis columns first, first + stride, …: M(:, c) = −G00⁻¹ G01(:, c), each
+    // residual-checked (which also verifies the G00 factor, so it needs no probe then).
+    void basisColumns(Eigen::Index first, Eigen::Index stride, const std::function<bool()> &stop)
+    {
+        for (Eigen::Index c = first; c < d.stepOneBasis.cols(); c += stride) {
             if (abort || inaccurate || stop()) {
                 abort = true;
                 return;
             }
             const Eigen::VectorXcd rhs = -Eigen::VectorXcd(d.stepOneCoupling.col(c));
-            auto column = d.stepOneBasis.col(c);
-            column = d.stepOneFactor.solve(rhs);
+            const Eigen::VectorXcd column = d.stepOneFactor.solve(rhs);
             const Eigen::VectorXcd residual =
                 d.stepOneMatrix.selfadjointView<Eigen::Upper>() * column - rhs;
             if (!column.allFinite() ||
                 relativeResidual(residual, d.stepOneNorm, column, rhs) > kResidualTolerance)
                 inaccurate = true;
+            d.stepOneBasis.col(c) = column;
         }
     }
 };
@@ -83,23 +101,15 @@ struct ArapFactorization::Shared {
 ArapFactorization::ArapFactorization(ArapPrecompute &d)
     : m_shared(std::make_unique<Shared>(d))
 {
-    if (d.freeCount == 0) // every vertex of every solved component is pinned
-        return;
+    if (d.freeCount < kParallelFreeVertices)
+        return; // finish() does everything on the calling thread
     m_helper = std::thread([this] {
         Shared &s = *m_shared;
         try {
-            s.d.stepTwoFactor.compute(s.d.stepTwoMatrix);
-            m_stepTwoOk = s.d.stepTwoFactor.info() == Eigen::Success;
-            if (m_stepTwoOk) {
-                const auto &L = s.d.stepTwoFactor.matrixL().nestedExpression();
-                s.d.stepTwoPivotInverse.resize(L.cols());
-                for (Eigen::Index j = 0; j < L.cols(); ++j) // the diagonal leads each column
-                    s.d.stepTwoPivotInverse(j) = 1.0 / L.valuePtr()[L.outerIndexPtr()[j]];
-                m_stepTwoOk = probe(s.d.stepTwoFactor, s.d.stepTwoMatrix, s.d.stepTwoNorm);
-            }
+            s.factorStepTwo();
             s.stepOneFactored.wait();
-            if (m_stepTwoOk && s.stepOneOk && !s.abort)
-                s.basisColumns(1, [] { return false; });
+            if (s.stepTwoOk && s.stepOneOk && !s.abort)
+                s.basisColumns(1, 2, [] { return false; });
         } catch (...) {
             s.abort = true;
             m_helperFailure = std::current_exception();
@@ -121,8 +131,11 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
 {
     const std::function<bool()> stop = [&cancelled] { return cancelled && cancelled(); };
     Shared &s = *m_shared;
-    if (s.d.freeCount == 0)
+    if (s.d.freeCount == 0) // every vertex of every solved component is pinned
         return std::nullopt;
+    const bool parallel = m_helper.joinable();
+    if (!parallel)
+        s.factorStepTwo();
     const Eigen::Index handles = s.d.handleEntry.size();
     s.d.stepOneBasis.resize(s.d.freeCount, handles <= kMaxBasisHandles ? handles : 0);
     if (stop()) {
@@ -132,19 +145,20 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
         s.d.stepOneFactor.compute(s.d.stepOneMatrix);
         // LDLᴴ only reports exactly zero pivots; a Hermitian positive definite G00 has D > 0.
         bool ok = s.d.stepOneFactor.info() == Eigen::Success &&
-                  (s.d.freeCount == 0 || s.d.stepOneFactor.vectorD().real().minCoeff() > 0.0);
+                  s.d.stepOneFactor.vectorD().real().minCoeff() > 0.0;
         if (ok && s.d.stepOneBasis.cols() == 0) // no basis solves to verify the factor with
             ok = probe(s.d.stepOneFactor, s.d.stepOneMatrix, s.d.stepOneNorm);
         s.release(ok);
-        if (ok)
-            s.basisColumns(0, stop);
+        if (ok && (s.stepTwoOk || parallel))
+            s.basisColumns(0, parallel ? 2 : 1, stop);
     }
-    m_helper.join();
+    if (parallel)
+        m_helper.join();
     if (m_helperFailure)
         std::rethrow_exception(m_helperFailure);
     if (s.abort || stop())
         return cancelledError();
-    if (!s.stepOneOk || !m_stepTwoOk)
+    if (!s.stepOneOk || !s.stepTwoOk)
         return singularError();
     if (s.inaccurate)
         return makeError(DeformErrorCode::SolveFailed,

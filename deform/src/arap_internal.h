@@ -39,9 +39,10 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                          const std::vector<Eigen::Index> &triangles,
                          const std::vector<int> &internal, ArapPrecompute &d);
 
-// The two factorizations are independent, so they run side by side: constructing this starts
-// factoring and probing H00 on a helper thread (H00 and its norm must be ready) while the
-// caller assembles G00; finish() factors G00 and computes the step-1 basis on both threads.
+// The two factorizations are independent, so for large systems they run side by side:
+// constructing this starts factoring and probing H00 on a helper thread (H00 and its norm
+// must be ready) while the caller assembles G00; finish() factors G00 and computes the
+// step-1 basis on both threads. Small systems do all of it in finish(), on the caller.
 class ArapFactorization {
 public:
     explicit ArapFactorization(ArapPrecompute &d);
@@ -57,7 +58,6 @@ private:
     std::unique_ptr<Shared> m_shared;
     std::thread m_helper;
     std::exception_ptr m_helperFailure;
-    bool m_stepTwoOk = false;
 };
 
 // ‖A‖∞ of the self-adjoint matrix defined by the upper triangle of `upper` (entries below
@@ -77,6 +77,13 @@ template <class Scalar> double selfAdjointNorm(const Eigen::SparseMatrix<Scalar>
     return rowSum.size() > 0 ? rowSum.maxCoeff() : 0.0;
 }
 
+// |z|². libstdc++'s std::norm computes abs(z)² through hypot() unless -ffast-math, which
+// made it the most expensive operation of the per-event loops.
+inline double squaredMagnitude(Complex z)
+{
+    return z.real() * z.real() + z.imag() * z.imag();
+}
+
 // Best rotation (unit complex number) taking the centred rest corners r onto the centred
 // corners p: the 2D Procrustes solution arg(Σ conj(r_k)·p_k). When |Σ| is below `threshold`
 // the target triangle has collapsed (two pins dragged onto one point) and any rotation fits
@@ -85,7 +92,7 @@ template <class Scalar> double selfAdjointNorm(const Eigen::SparseMatrix<Scalar>
 inline Complex bestRotation(const Complex r[3], const Complex p[3], double threshold)
 {
     const Complex s = std::conj(r[0]) * p[0] + std::conj(r[1]) * p[1] + std::conj(r[2]) * p[2];
-    const double squared = std::norm(s);
+    const double squared = squaredMagnitude(s);
     return squared > threshold * threshold ? s / std::sqrt(squared) : Complex(1.0, 0.0);
 }
 

@@ -12,7 +12,7 @@ using detail::makeError;
 // vectors cost more page faults than the whole back-substitution).
 struct Workspace {
     Eigen::VectorXcd positions; // n, internal order: v′, then v″
-    Eigen::VectorXcd rhs;       // n; rows past freeCount collect unused contributions
+    Eigen::VectorXcd rhs;       // freeCount
     Eigen::VectorXcd residual;  // freeCount, only for the step-1 fallback without basis
     Eigen::VectorXcd rotations; // per solved triangle, 3·R
 };
@@ -86,11 +86,17 @@ std::optional<DeformError> similarityStep(const ArapPrecompute &d, Workspace &w,
         return std::nullopt;
     auto u = w.positions.head(nf);
     const auto q = w.positions.segment(nf, handles);
-    if (d.stepOneBasis.cols() == handles) {
-        u.noalias() = d.stepOneBasis * q;
+    if (d.stepOneBasis.cols() == handles) { // u = M q, one pass over the row-major basis
+        const Complex *m = d.stepOneBasis.data();
+        for (Eigen::Index i = 0; i < nf; ++i, m += handles) {
+            Complex sum;
+            for (Eigen::Index c = 0; c < handles; ++c)
+                sum += mul(m[c], q(c));
+            u(i) = sum;
+        }
         return std::nullopt;
     }
-    auto rhs = w.rhs.head(nf);
+    auto &rhs = w.rhs;
     rhs.noalias() = -(d.stepOneCoupling * q);
     u = d.stepOneFactor.solve(rhs);
     w.residual.noalias() = d.stepOneMatrix.selfadjointView<Eigen::Upper>() * u;
@@ -112,24 +118,25 @@ void fitRotations(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::Vec
         const Complex s = mulConj(d.restCentered(t, 0), W(i0[t])) +
                           mulConj(d.restCentered(t, 1), W(i1[t])) +
                           mulConj(d.restCentered(t, 2), W(i2[t]));
-        const double squared = std::norm(s), threshold = d.collapseThreshold(t);
+        const double squared = detail::squaredMagnitude(s), threshold = d.collapseThreshold(t);
         rotations(t) =
             squared > threshold * threshold ? s * (3.0 / std::sqrt(squared)) : Complex(3.0, 0.0);
     }
 }
 
-// Right-hand side of step 2b: each triangle's rigid copy R·r contributes
-// Σ_edges ±R(r_j − r_i) = 3·R·r_k to corner k (the rest corners r are centred). Rows of
-// constrained vertices are accumulated too and simply ignored: cheaper than branching.
+// Right-hand side of step 2b for the free vertices: each triangle's rigid copy R·r
+// contributes Σ_edges ±R(r_j − r_i) = 3·R·r_k to its corner k (the rest corners r are
+// centred; the 3 is in `rotations`). Gathered per vertex: sequential writes, no dependency
+// between consecutive rows.
 void rigidFitRhs(const ArapPrecompute &d, const Eigen::VectorXcd &rotations, Eigen::VectorXcd &rhs)
 {
-    rhs.setZero();
-    const int *i0 = d.triangles.col(0).data(), *i1 = d.triangles.col(1).data(),
-              *i2 = d.triangles.col(2).data();
-    for (Eigen::Index t = 0; t < d.triangles.rows(); ++t) {
-        rhs(i0[t]) += mul(rotations(t), d.restCentered(t, 0));
-        rhs(i1[t]) += mul(rotations(t), d.restCentered(t, 1));
-        rhs(i2[t]) += mul(rotations(t), d.restCentered(t, 2));
+    const int *start = d.cornerStart.data(), *triangle = d.cornerTriangle.data();
+    const Complex *rest = d.cornerRest.data();
+    for (Eigen::Index v = 0; v < d.freeCount; ++v) {
+        Complex sum;
+        for (int c = start[v]; c < start[v + 1]; ++c)
+            sum += mul(rotations(triangle[c]), rest[c]);
+        rhs(v) = sum;
     }
 }
 
@@ -139,14 +146,16 @@ double stepTwoResidual(const ArapPrecompute &d, const Eigen::Ref<const Eigen::Ve
                        const Eigen::Ref<const Eigen::VectorXcd> &f)
 {
     const ArapPrecompute::RealMatrix &H = d.stepTwoMatrix;
+    const int *start = H.outerIndexPtr(), *index = H.innerIndexPtr();
+    const double *value = H.valuePtr();
     double residual = 0.0, xMax = 0.0, fMax = 0.0;
     for (Eigen::Index j = 0; j < H.outerSize(); ++j) {
         Complex row = -f(j);
-        for (ArapPrecompute::RealMatrix::InnerIterator it(H, j); it; ++it)
-            row += it.value() * x(it.index());
-        residual = std::max(residual, std::norm(row));
-        xMax = std::max(xMax, std::norm(x(j)));
-        fMax = std::max(fMax, std::norm(f(j)));
+        for (int p = start[j]; p < start[j + 1]; ++p)
+            row += value[p] * x(index[p]);
+        residual = std::max(residual, detail::squaredMagnitude(row));
+        xMax = std::max(xMax, detail::squaredMagnitude(x(j)));
+        fMax = std::max(fMax, detail::squaredMagnitude(f(j)));
     }
     const double scale = d.stepTwoNorm * std::sqrt(xMax) + std::sqrt(fMax);
     return scale > 0.0 ? std::sqrt(residual) / scale : std::sqrt(residual);
@@ -160,7 +169,7 @@ std::optional<DeformError> scaleStep(const ArapPrecompute &d, Workspace &w, Arap
         return std::nullopt;
     fitRotations(d, w.positions, w.rotations);
     rigidFitRhs(d, w.rotations, w.rhs);
-    auto f = w.rhs.head(nf);
+    auto &f = w.rhs;
     f.noalias() -= d.stepTwoCoupling * w.positions.segment(nf, handles);
     auto x = w.positions.head(nf);
     x = f;
@@ -185,7 +194,7 @@ ArapSolveResult solve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc, Eigen
     ArapSolveReport report;
     Workspace &w = workspace();
     w.positions.resize(d.rest.size());
-    w.rhs.resize(d.rest.size());
+    w.rhs.resize(d.freeCount);
     w.residual.resize(d.freeCount);
     w.rotations.resize(d.triangles.rows());
     placeConstrained(d, bc, w.positions);

@@ -59,16 +59,23 @@ struct ArapPrecompute {
     Eigen::MatrixX3i triangles;        // triangles of solved components, internal indices
     Eigen::MatrixX3cd restCentered;    // their rest corners minus the rest centroid
     Eigen::VectorXd collapseThreshold; // below this |Σ conj(r)·p| the step-1 triangle collapsed
+    // Corners around each free vertex, for gathering step 2's right-hand side per vertex:
+    // those of free vertex i are cornerStart(i) … cornerStart(i + 1) − 1.
+    Eigen::VectorXi cornerStart;    // freeCount + 1
+    Eigen::VectorXi cornerTriangle; // row of `triangles` the corner belongs to
+    Eigen::VectorXcd cornerRest;    // the corner's centred rest position
 
     ComplexMatrix stepOneMatrix;   // G00, upper triangle
     ComplexMatrix stepOneCoupling; // G01, freeCount × handles
     ComplexFactor stepOneFactor;   // LDLᴴ of G00
     double stepOneNorm = 0.0;      // ‖G00‖∞, scales the residual test
-    Eigen::MatrixXcd stepOneBasis; // M = −G00⁻¹G01; empty when there are too many handles
-                                   // (then step 1 back-substitutes per event instead)
-    RealMatrix stepTwoMatrix;      // H00 (uniform-weight graph Laplacian), both halves
-    RealMatrix stepTwoCoupling;    // H01, freeCount × handles
-    RealFactor stepTwoFactor;      // LLᵀ of H00
+    // M = −G00⁻¹G01, row-major so that u = M q is one pass; empty with too many handles.
+    Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
+        stepOneBasis;
+    // (then step 1 back-substitutes per event instead)
+    RealMatrix stepTwoMatrix;            // H00 (uniform-weight graph Laplacian), both halves
+    RealMatrix stepTwoCoupling;          // H01, freeCount × handles
+    RealFactor stepTwoFactor;            // LLᵀ of H00
     Eigen::VectorXd stepTwoPivotInverse; // 1 / diag(L) of that factor, for the back-substitution
     double stepTwoNorm = 0.0;            // ‖H00‖∞, scales the residual test
 };
