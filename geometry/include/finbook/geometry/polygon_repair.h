@@ -1,5 +1,5 @@
 // Repair arbitrary rings (self-crossing, touching, wrongly oriented, duplicated points) into a
-// simple Region that meshRegion() accepts.
+// Region whose rings do not cross, which meshRegion() accepts.
 #pragma once
 
 #include <finbook/geometry/expected.h>
@@ -24,11 +24,13 @@ struct RepairOptions {
     // input angle below ~60° keeps the quality mesher from reaching its 20° minimum angle
     // near that corner. Parts thinner than 2 × cornerRadius disappear. 0 disables.
     double cornerRadius = 1.0;
-    // Douglas–Peucker tolerance (px) on the result; dropped when it would break simplicity.
+    // Douglas–Peucker tolerance (px), applied to the input rings (pixel outlines carry many
+    // redundant points) and to the result, unless that would make rings cross.
     double simplifyTolerance = 0.25;
 };
 
-// Rings are m×2 (any orientation, implicitly closed); non-finite rows are dropped.
+// All rings together form one polygon, combined by options.fillRule. Rings are m×2 (any
+// orientation, implicitly closed); non-finite rows are dropped.
 // Errors: EmptyInput (nothing finite), CoordinateOutOfRange, TooManyPoints, InvalidOptions,
 // DegenerateRegion (no area left).
 // Promise: isSimple(result, Touching::AllowedAtPoints), outer rings positive, holes negative
