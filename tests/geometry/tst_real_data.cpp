@@ -79,6 +79,8 @@ private slots:
     void sketches();
     void silhouettes_data();
     void silhouettes();
+    void silhouettesAsStrokes_data() { silhouettes_data(); }
+    void silhouettesAsStrokes();
 };
 
 void TestRealData::sketches_data()
@@ -155,6 +157,28 @@ void TestRealData::silhouettes()
     const double meshArea = triangleSignedAreas(mesh->V, mesh->F).sum();
     QVERIFY2(std::abs(meshArea - inputArea) <= 0.03 * inputArea,
              qPrintable(QStringLiteral("%1 vs %2").arg(meshArea).arg(inputArea)));
+}
+
+void TestRealData::silhouettesAsStrokes()
+{
+    // The same outlines traced as closed pen strokes: the silhouette fills them, so the mesh
+    // covers the shape (holes included) and every traced point is embedded without snapping.
+    QFETCH(QString, path);
+    const QJsonArray contours = readJson(path).value(QStringLiteral("contours")).toArray();
+    std::vector<StrokeInput> strokes;
+    for (const QJsonValue &contour : contours) {
+        Eigen::MatrixX2d ring = toMatrix(contour.toArray());
+        ring.conservativeResize(ring.rows() + 1, 2);
+        ring.row(ring.rows() - 1) = ring.row(0);
+        strokes.push_back({ring, 3.0});
+    }
+    const auto mesh = buildObjectMesh(strokes);
+    QVERIFY2(mesh.hasValue(), mesh.hasValue() ? "" : mesh.error().message.c_str());
+    checkMesh(*mesh, 20.0);
+    const double meshArea = triangleSignedAreas(mesh->V, mesh->F).sum();
+    QVERIFY(meshArea >= std::abs(signedArea(strokes[0].points)));
+    const Embedding e = embed(*mesh, strokes[0].points);
+    QCOMPARE(e.snapped, 0);
 }
 
 QTEST_APPLESS_MAIN(TestRealData)
