@@ -25,8 +25,9 @@ struct MeshOptions {
     // Vertices aimed for at density 1, whatever the object's size: ARAP cost stays
     // predictable, and a full-canvas character gets edges of roughly 10–20 px.
     int targetVertices = 1500;
-    // Hard ceiling: the edge length is raised until the estimate fits (absurd densities,
-    // huge regions). Dense boundaries can still overshoot it by their own vertices.
+    // Ceiling: the edge length is raised until the estimate fits (absurd densities, huge
+    // regions). Refinement itself stops at 2 × maxVertices + the outline's vertices; a mesh
+    // stopped there is valid but may keep a few triangles below the 20° minimum angle.
     int maxVertices = 30000;
     double minEdge = 1.0; // px: small objects are not refined below this
     SilhouetteOptions silhouette;
