@@ -14,10 +14,10 @@
 namespace finbook::app {
 
 namespace {
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("CommandLine", text);
-}
+// A class so lupdate files these strings under the context main.cpp uses too.
+class CommandLine {
+    Q_DECLARE_TR_FUNCTIONS(CommandLine)
+};
 
 // Messages may carry newlines (or come from Qt); the contract is one line on stderr.
 int fail(QTextStream &err, const QString &message, ExitCode code = ExitCode::BadInput)
@@ -64,15 +64,17 @@ int exportFrames(const QString &path, const QString &outDir, QTextStream &out, Q
         return fail(err, loaded.error().message);
     QDir dir(outDir);
     if (!dir.exists() && !QDir().mkpath(outDir))
-        return fail(err, tr("Cannot create the output folder %1.").arg(outDir), ExitCode::Failure);
+        return fail(err, CommandLine::tr("Cannot create the output folder %1.").arg(outDir),
+                    ExitCode::Failure);
     const model::DocumentSettings &settings = loaded->settings;
     for (std::size_t i = 0; i < loaded->frames.size(); ++i) {
         const QImage image = model::renderFrame(loaded->frames[i], settings, settings.canvasSize);
         const QString name = QStringLiteral("frame_%1.png").arg(i + 1, 4, 10, QLatin1Char('0'));
         const QString file = dir.filePath(name);
         if (!image.save(file, "PNG"))
-            return fail(err, tr("Cannot write %1 (is the disk full or read-only?).").arg(file),
-                        ExitCode::Failure);
+            return fail(
+                err, CommandLine::tr("Cannot write %1 (is the disk full or read-only?).").arg(file),
+                ExitCode::Failure);
         out << file << Qt::endl;
     }
     return int(ExitCode::Ok);
@@ -109,11 +111,11 @@ int runHeadlessCommand(const QStringList &arguments, QTextStream &out, QTextStre
 {
     QStringList positional = arguments;
     if (positional.isEmpty())
-        return fail(err, tr("No command given; see finbook --help."));
+        return fail(err, CommandLine::tr("No command given; see finbook --help."));
     const QString command = positional.takeFirst();
     if (command == QLatin1String("info")) {
         if (positional.size() != 1)
-            return fail(err, tr("Usage: finbook info FILE"));
+            return fail(err, CommandLine::tr("Usage: finbook info FILE"));
         QString error;
         const QByteArray json = documentInfoJson(positional.first(), &error);
         if (json.isEmpty())
@@ -123,10 +125,10 @@ int runHeadlessCommand(const QStringList &arguments, QTextStream &out, QTextStre
     }
     if (command == QLatin1String("export")) {
         if (positional.size() != 2)
-            return fail(err, tr("Usage: finbook export FILE OUTDIR"));
+            return fail(err, CommandLine::tr("Usage: finbook export FILE OUTDIR"));
         return exportFrames(positional[0], positional[1], out, err);
     }
-    return fail(err, tr("Unknown command \"%1\"; see finbook --help.").arg(command));
+    return fail(err, CommandLine::tr("Unknown command \"%1\"; see finbook --help.").arg(command));
 }
 
 } // namespace finbook::app

@@ -11,10 +11,11 @@
 
 namespace finbook::model::file_format {
 
-inline QString tr(const char *text)
-{
-    return QCoreApplication::translate("FinbookFile", text);
-}
+// The translation context of every .finbook message; a class so lupdate files the strings
+// under "FinbookFile" too.
+class FinbookFile {
+    Q_DECLARE_TR_FUNCTIONS(FinbookFile)
+};
 
 // Where the reader is, for messages. Numbers are 1-based, as a user counts.
 struct Where {
@@ -30,18 +31,18 @@ struct Where {
     QString describe() const
     {
         if (frame > 0) {
-            QString s = tr("frame %1").arg(frame);
+            QString s = FinbookFile::tr("frame %1").arg(frame);
             if (object > 0)
-                s += hasObjectName ? tr(", object \"%1\"").arg(objectName)
-                                   : tr(", object %1").arg(object);
+                s += hasObjectName ? FinbookFile::tr(", object \"%1\"").arg(objectName)
+                                   : FinbookFile::tr(", object %1").arg(object);
             if (stroke > 0)
-                s += tr(", stroke %1").arg(stroke);
+                s += FinbookFile::tr(", stroke %1").arg(stroke);
             return s;
         }
         if (strokeData > 0)
-            return tr("stroke data %1").arg(strokeData);
+            return FinbookFile::tr("stroke data %1").arg(strokeData);
         if (pose > 0)
-            return tr("pose %1").arg(pose);
+            return FinbookFile::tr("pose %1").arg(pose);
         return section;
     }
     void enterObject(int index)
@@ -67,17 +68,19 @@ public:
     [[noreturn]] void fail(FileErrorCode code, const QString &what) const
     {
         const QString where = m_where ? m_where->describe() : QString();
-        throw ReadFailure{code, where.isEmpty() ? what : tr("%1: %2").arg(where, what)};
+        throw ReadFailure{code,
+                          where.isEmpty() ? what : FinbookFile::tr("%1: %2").arg(where, what)};
     }
 
     // The next `n` bytes, or a Truncated failure naming `what` was cut off.
     const char *take(std::size_t n, const char *what)
     {
         if (n > remaining())
-            fail(FileErrorCode::Truncated, tr("the file ends inside %1 (%2 bytes needed, %3 left)")
-                                               .arg(tr(what))
-                                               .arg(n)
-                                               .arg(remaining()));
+            fail(FileErrorCode::Truncated,
+                 FinbookFile::tr("the file ends inside %1 (%2 bytes needed, %3 left)")
+                     .arg(FinbookFile::tr(what))
+                     .arg(n)
+                     .arg(remaining()));
         const char *p = m_p;
         m_p += n;
         return p;
@@ -89,10 +92,11 @@ public:
     {
         const quint32 n = u32(what);
         if (quint64(n) * recordBytes > remaining())
-            fail(FileErrorCode::TooLarge, tr("%1 claims %2 entries but only %3 bytes remain")
-                                              .arg(tr(what))
-                                              .arg(n)
-                                              .arg(remaining()));
+            fail(FileErrorCode::TooLarge,
+                 FinbookFile::tr("%1 claims %2 entries but only %3 bytes remain")
+                     .arg(FinbookFile::tr(what))
+                     .arg(n)
+                     .arg(remaining()));
         return n;
     }
 
@@ -115,8 +119,9 @@ public:
     void expectEnd(const char *what) const
     {
         if (!atEnd())
-            fail(FileErrorCode::BadValue,
-                 tr("%1 has %2 unexpected bytes at its end").arg(tr(what)).arg(remaining()));
+            fail(FileErrorCode::BadValue, FinbookFile::tr("%1 has %2 unexpected bytes at its end")
+                                              .arg(FinbookFile::tr(what))
+                                              .arg(remaining()));
     }
 
 private:

@@ -26,13 +26,15 @@ QString failureSentence(FileErrorCode code, const QString &what)
     sentence += QLatin1Char('.');
     switch (code) {
     case FileErrorCode::Truncated:
-        return tr("%1 The file is incomplete (perhaps an interrupted copy or save); if there is "
-                  "a backup with the same name ending in ~, open that instead.")
+        return FinbookFile::tr(
+                   "%1 The file is incomplete (perhaps an interrupted copy or save); if there is "
+                   "a backup with the same name ending in ~, open that instead.")
             .arg(sentence);
     case FileErrorCode::BadValue:
     case FileErrorCode::TooLarge:
-        return tr("%1 The file is damaged; if there is a backup with the same name ending in ~, "
-                  "open that instead.")
+        return FinbookFile::tr(
+                   "%1 The file is damaged; if there is a backup with the same name ending in ~, "
+                   "open that instead.")
             .arg(sentence);
     default:
         return sentence;
@@ -41,7 +43,7 @@ QString failureSentence(FileErrorCode code, const QString &what)
 } // namespace file_format
 
 namespace {
-using file_format::tr;
+using file_format::FinbookFile;
 
 QString displayName(const QString &path)
 {
@@ -50,10 +52,11 @@ QString displayName(const QString &path)
 
 FileError writeFailed(const QString &path, const QString &reason)
 {
-    return FileError{FileErrorCode::WriteFailed,
-                     tr("Could not save \"%1\": %2. The previous file is unchanged; free some "
+    return FileError{
+        FileErrorCode::WriteFailed,
+        FinbookFile::tr("Could not save \"%1\": %2. The previous file is unchanged; free some "
                         "disk space or choose another folder, then save again.")
-                         .arg(displayName(path), reason)};
+            .arg(displayName(path), reason)};
 }
 
 // Keeps the file about to be replaced as "<path>~". A hard link costs nothing even for a
@@ -65,7 +68,8 @@ std::optional<QString> keepBackup(const QString &path)
     const QString backup = finbookBackupPath(path);
     const QFileInfo backupInfo(backup);
     if ((backupInfo.exists() || backupInfo.isSymLink()) && !QFile::remove(backup))
-        return tr("the old backup \"%1\" cannot be replaced").arg(backupInfo.fileName());
+        return FinbookFile::tr("the old backup \"%1\" cannot be replaced")
+            .arg(backupInfo.fileName());
 #ifdef Q_OS_UNIX
     if (::linkat(AT_FDCWD, QFile::encodeName(path).constData(), AT_FDCWD,
                  QFile::encodeName(backup).constData(), AT_SYMLINK_FOLLOW) == 0)
@@ -74,7 +78,7 @@ std::optional<QString> keepBackup(const QString &path)
     QFile original(path);
     if (original.copy(backup))
         return std::nullopt;
-    return tr("the backup \"%1\" cannot be written (%2)")
+    return FinbookFile::tr("the backup \"%1\" cannot be written (%2)")
         .arg(backupInfo.fileName(), original.errorString());
 }
 // Reads a whole file only when it starts like a .finbook: "finbook info" on a 10 GB video or
@@ -99,27 +103,28 @@ Expected<LoadedDocument, FileError> loadFinbook(const QString &path)
     if (!file.open(QIODevice::ReadOnly) || QFileInfo(path).isDir())
         return unexpected(FileError{
             FileErrorCode::OpenFailed,
-            tr("Cannot open \"%1\": %2. Check that the file exists and that you may read it.")
-                .arg(displayName(path),
-                     QFileInfo(path).isDir() ? tr("it is a folder") : file.errorString())});
+            FinbookFile::tr(
+                "Cannot open \"%1\": %2. Check that the file exists and that you may read it.")
+                .arg(displayName(path), QFileInfo(path).isDir() ? FinbookFile::tr("it is a folder")
+                                                                : file.errorString())});
     QByteArray bytes;
     try {
         bytes = readAllOfFinbook(file);
     } catch (const std::bad_alloc &) {
-        return unexpected(
-            FileError{FileErrorCode::TooLarge,
-                      tr("Cannot open \"%1\": it is too large for the memory available.")
-                          .arg(displayName(path))});
+        return unexpected(FileError{
+            FileErrorCode::TooLarge,
+            FinbookFile::tr("Cannot open \"%1\": it is too large for the memory available.")
+                .arg(displayName(path))});
     }
     if (file.error() != QFileDevice::NoError)
-        return unexpected(
-            FileError{FileErrorCode::OpenFailed,
-                      tr("Cannot read \"%1\": %2.").arg(displayName(path), file.errorString())});
+        return unexpected(FileError{
+            FileErrorCode::OpenFailed,
+            FinbookFile::tr("Cannot read \"%1\": %2.").arg(displayName(path), file.errorString())});
     auto loaded = readFinbook(bytes);
     if (!loaded)
         return unexpected(
-            FileError{loaded.error().code,
-                      tr("Cannot open \"%1\". %2").arg(displayName(path), loaded.error().message)});
+            FileError{loaded.error().code, FinbookFile::tr("Cannot open \"%1\". %2")
+                                               .arg(displayName(path), loaded.error().message)});
     return loaded;
 }
 
@@ -137,7 +142,8 @@ std::optional<FileError> saveFinbook(const Document &document, const QString &pa
     const QByteArray bytes = serializeFinbook(document);
     // Never replace a file with one that would not open again.
     if (auto check = file_format::parseFinbook(bytes, file_format::ParseMode::Check); !check)
-        return writeFailed(path, tr("the drawing holds invalid data (%1)").arg(check.error().what));
+        return writeFailed(
+            path, FinbookFile::tr("the drawing holds invalid data (%1)").arg(check.error().what));
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return writeFailed(path, file.errorString());

@@ -29,11 +29,13 @@ void skipUnknown(Cursor &c, quint32 t, const char *kind)
 {
     const QString name = tagName(t);
     if (name.startsWith(QLatin1String("0x")))
-        c.fail(FileErrorCode::BadValue, tr("unknown %1 %2").arg(tr(kind), name));
+        c.fail(FileErrorCode::BadValue,
+               FinbookFile::tr("unknown %1 %2").arg(FinbookFile::tr(kind), name));
     if (!isAncillary(t))
         c.fail(FileErrorCode::NewerVersion,
-               tr("it holds data (\"%1\") that this version of Finbook does not know, so it was "
-                  "probably made by a newer Finbook; please update Finbook to open it")
+               FinbookFile::tr(
+                   "it holds data (\"%1\") that this version of Finbook does not know, so it was "
+                   "probably made by a newer Finbook; please update Finbook to open it")
                    .arg(name));
 }
 
@@ -52,22 +54,24 @@ LoadedDocument Reader::read(const QByteArray &bytes)
 quint32 Reader::readHeader(Cursor &c)
 {
     if (c.atEnd())
-        c.fail(FileErrorCode::NotFinbook, tr("the file is empty"));
+        c.fail(FileErrorCode::NotFinbook, FinbookFile::tr("the file is empty"));
     const std::size_t n = std::min(c.remaining(), sizeof(kMagic));
     const char *magic = c.take(n, QT_TRANSLATE_NOOP("FinbookFile", "the file header"));
     if (std::memcmp(magic, kMagic, n) != 0)
-        c.fail(FileErrorCode::NotFinbook, tr("it is not a Finbook animation"));
+        c.fail(FileErrorCode::NotFinbook, FinbookFile::tr("it is not a Finbook animation"));
     if (n < sizeof(kMagic))
-        c.fail(FileErrorCode::Truncated, tr("the file ends inside its header"));
+        c.fail(FileErrorCode::Truncated, FinbookFile::tr("the file ends inside its header"));
     const quint32 version = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "the format version"));
     if (version > kFinbookFormatVersion)
         c.fail(FileErrorCode::NewerVersion,
-               tr("it was made by a newer version of Finbook (file format %1; this version "
-                  "reads up to %2); please update Finbook to open it")
+               FinbookFile::tr(
+                   "it was made by a newer version of Finbook (file format %1; this version "
+                   "reads up to %2); please update Finbook to open it")
                    .arg(version)
                    .arg(kFinbookFormatVersion));
     if (version < kOldestVersion)
-        c.fail(FileErrorCode::BadValue, tr("the format version %1 does not exist").arg(version));
+        c.fail(FileErrorCode::BadValue,
+               FinbookFile::tr("the format version %1 does not exist").arg(version));
     return version;
 }
 
@@ -77,20 +81,21 @@ void Reader::readSections(Cursor &c)
     std::size_t next = 0;
     for (;;) {
         m_where = Where();
-        m_where.section = tr("the file's section list");
+        m_where.section = FinbookFile::tr("the file's section list");
         const quint32 t = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "a section header"));
         const quint64 length = c.u64(QT_TRANSLATE_NOOP("FinbookFile", "a section header"));
-        m_where.section = tr("section %1").arg(tagName(t));
+        m_where.section = FinbookFile::tr("section %1").arg(tagName(t));
         if (length > c.remaining())
-            c.fail(FileErrorCode::Truncated,
-                   tr("the file ends inside this section (%1 bytes announced, %2 left)")
-                       .arg(length)
-                       .arg(c.remaining()));
+            c.fail(
+                FileErrorCode::Truncated,
+                FinbookFile::tr("the file ends inside this section (%1 bytes announced, %2 left)")
+                    .arg(length)
+                    .arg(c.remaining()));
         Cursor body = c.record(std::size_t(length), QT_TRANSLATE_NOOP("FinbookFile", "a section"));
         if (t == kTagEnd) {
             if (next < std::size(kOrder))
                 c.fail(FileErrorCode::BadValue,
-                       tr("section %1 is missing").arg(tagName(kOrder[next])));
+                       FinbookFile::tr("section %1 is missing").arg(tagName(kOrder[next])));
             body.expectEnd(QT_TRANSLATE_NOOP("FinbookFile", "the end marker"));
             c.expectEnd(QT_TRANSLATE_NOOP("FinbookFile", "the file"));
             return finish(c);
@@ -101,7 +106,8 @@ void Reader::readSections(Cursor &c)
             continue;
         }
         if (std::size_t(known - std::begin(kOrder)) != next)
-            c.fail(FileErrorCode::BadValue, tr("the section is repeated or out of order"));
+            c.fail(FileErrorCode::BadValue,
+                   FinbookFile::tr("the section is repeated or out of order"));
         switch (next++) {
         case 0:
             readDocument(body);
@@ -122,37 +128,42 @@ void Reader::readSections(Cursor &c)
 
 void Reader::readDocument(Cursor &c)
 {
-    m_where.section = tr("the document settings");
+    m_where.section = FinbookFile::tr("the document settings");
     DocumentSettings &s = m_doc.settings;
     const quint32 w = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "the canvas size"));
     const quint32 h = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "the canvas size"));
     if (w < 1 || h < 1 || w > quint32(kMaxCanvasSide) || h > quint32(kMaxCanvasSide))
-        c.fail(FileErrorCode::BadValue, tr("the canvas size %1×%2 is outside 1 to %3 pixels")
-                                            .arg(w)
-                                            .arg(h)
-                                            .arg(kMaxCanvasSide));
+        c.fail(FileErrorCode::BadValue,
+               FinbookFile::tr("the canvas size %1×%2 is outside 1 to %3 pixels")
+                   .arg(w)
+                   .arg(h)
+                   .arg(kMaxCanvasSide));
     s.canvasSize = QSize(int(w), int(h));
     s.background = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "the background colour"));
     const quint32 fps = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "the frame rate"));
     if (fps < quint32(kMinFps) || fps > quint32(kMaxFps))
-        c.fail(FileErrorCode::BadValue,
-               tr("the frame rate %1 is outside %2 to %3").arg(fps).arg(kMinFps).arg(kMaxFps));
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("the frame rate %1 is outside %2 to %3")
+                                            .arg(fps)
+                                            .arg(kMinFps)
+                                            .arg(kMaxFps));
     s.fps = int(fps);
     const quint8 loop = c.u8(QT_TRANSLATE_NOOP("FinbookFile", "the loop flag"));
     if (loop > 1)
-        c.fail(FileErrorCode::BadValue, tr("the loop flag %1 is neither 0 nor 1").arg(loop));
+        c.fail(FileErrorCode::BadValue,
+               FinbookFile::tr("the loop flag %1 is neither 0 nor 1").arg(loop));
     s.loop = loop == 1;
     s.playStart = c.i32(QT_TRANSLATE_NOOP("FinbookFile", "the play range"));
     s.playEnd = c.i32(QT_TRANSLATE_NOOP("FinbookFile", "the play range"));
     if (s.playStart < 0 || s.playEnd < -1)
-        c.fail(FileErrorCode::BadValue,
-               tr("the play range %1 to %2 is invalid").arg(s.playStart).arg(s.playEnd));
+        c.fail(
+            FileErrorCode::BadValue,
+            FinbookFile::tr("the play range %1 to %2 is invalid").arg(s.playStart).arg(s.playEnd));
     m_doc.nextId = c.u64(QT_TRANSLATE_NOOP("FinbookFile", "the next id"));
 }
 
 void Reader::readFrames(Cursor &c)
 {
-    m_where.section = tr("the frame list");
+    m_where.section = FinbookFile::tr("the frame list");
     const quint32 n =
         c.count(4 + kFrameFixedBytes, QT_TRANSLATE_NOOP("FinbookFile", "the frame list"));
     m_doc.frames.reserve(n);
@@ -170,11 +181,11 @@ Frame Reader::readFrame(Cursor &c)
 {
     Frame frame;
     frame.id = c.u64(QT_TRANSLATE_NOOP("FinbookFile", "a frame id"));
-    claimId(c, frame.id, tr("the frame"));
+    claimId(c, frame.id, FinbookFile::tr("the frame"));
     const quint32 hold = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "a frame hold"));
     if (hold < 1 || hold > quint32(kMaxHold))
         c.fail(FileErrorCode::BadValue,
-               tr("the hold %1 is outside 1 to %2").arg(hold).arg(kMaxHold));
+               FinbookFile::tr("the hold %1 is outside 1 to %2").arg(hold).arg(kMaxHold));
     frame.hold = int(hold);
     const quint32 n =
         c.count(4 + kObjectFixedBytes, QT_TRANSLATE_NOOP("FinbookFile", "the object list"));
@@ -199,28 +210,31 @@ StrokeGroup Reader::readObject(Cursor &c)
 {
     StrokeGroup g;
     g.id = c.u64(QT_TRANSLATE_NOOP("FinbookFile", "an object id"));
-    claimId(c, g.id, tr("the object"));
+    claimId(c, g.id, FinbookFile::tr("the object"));
     const quint8 flags = c.u8(QT_TRANSLATE_NOOP("FinbookFile", "the object flags"));
     if (flags & ~kKnownFlags)
-        c.fail(FileErrorCode::BadValue, tr("the object flags 0x%1 are unknown").arg(flags, 0, 16));
+        c.fail(FileErrorCode::BadValue,
+               FinbookFile::tr("the object flags 0x%1 are unknown").arg(flags, 0, 16));
     g.visible = flags & kFlagVisible;
     g.locked = flags & kFlagLocked;
     g.meshDensity = c.f64(QT_TRANSLATE_NOOP("FinbookFile", "the mesh density"));
     if (!(std::isfinite(g.meshDensity) && g.meshDensity > 0.0 && g.meshDensity <= 1000.0))
         c.fail(FileErrorCode::BadValue,
-               tr("the mesh density %1 is not a number from 0 to 1000").arg(g.meshDensity));
+               FinbookFile::tr("the mesh density %1 is not a number from 0 to 1000")
+                   .arg(g.meshDensity));
     const quint32 nameBytes = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "the object name"));
     if (nameBytes > kMaxNameBytes)
-        c.fail(
-            FileErrorCode::TooLarge,
-            tr("the object name is %1 bytes long (at most %2)").arg(nameBytes).arg(kMaxNameBytes));
+        c.fail(FileErrorCode::TooLarge,
+               FinbookFile::tr("the object name is %1 bytes long (at most %2)")
+                   .arg(nameBytes)
+                   .arg(kMaxNameBytes));
     const char *name = c.take(nameBytes, QT_TRANSLATE_NOOP("FinbookFile", "the object name"));
     // Strict UTF-8, a leading BOM kept: a name must survive open → save byte for byte.
     QStringDecoder utf8(QStringConverter::Utf8, QStringConverter::Flag::ConvertInitialBom |
                                                     QStringConverter::Flag::Stateless);
     g.name = utf8(QByteArrayView(name, nameBytes));
     if (utf8.hasError())
-        c.fail(FileErrorCode::BadValue, tr("the object name is not valid UTF-8 text"));
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("the object name is not valid UTF-8 text"));
     m_where.objectName = g.name;
     m_where.hasObjectName = true;
 
@@ -231,10 +245,10 @@ StrokeGroup Reader::readObject(Cursor &c)
         m_where.stroke = int(i + 1);
         Stroke s;
         s.id = c.u64(QT_TRANSLATE_NOOP("FinbookFile", "a stroke id"));
-        claimId(c, s.id, tr("the stroke"));
+        claimId(c, s.id, FinbookFile::tr("the stroke"));
         const quint32 index = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "a stroke reference"));
         if (index >= m_strokeData.size())
-            c.fail(FileErrorCode::BadValue, tr("it refers to stroke data %1 of %2")
+            c.fail(FileErrorCode::BadValue, FinbookFile::tr("it refers to stroke data %1 of %2")
                                                 .arg(quint64(index) + 1)
                                                 .arg(m_strokeData.size()));
         if (index == m_badStrokeData.index)
@@ -256,7 +270,8 @@ void Reader::readObjectChunks(Cursor &c, StrokeGroup &g)
         Cursor body = c.record(c.u32(QT_TRANSLATE_NOOP("FinbookFile", "a chunk header")),
                                QT_TRANSLATE_NOOP("FinbookFile", "a chunk"));
         if ((t == kTagPins && seenPins) || (t == kTagDeformed && g.deformed))
-            c.fail(FileErrorCode::BadValue, tr("chunk %1 appears twice").arg(tagName(t)));
+            c.fail(FileErrorCode::BadValue,
+                   FinbookFile::tr("chunk %1 appears twice").arg(tagName(t)));
         if (t == kTagPins) {
             g.pins = readPins(body);
             seenPins = true;
@@ -276,12 +291,13 @@ std::vector<Pin> Reader::readPins(Cursor &c)
     for (std::size_t i = 0; i < pins.size(); ++i) {
         Pin &p = pins[i];
         p.id = c.u64(QT_TRANSLATE_NOOP("FinbookFile", "a pin id"));
-        claimId(c, p.id, tr("pin %1").arg(i + 1));
+        claimId(c, p.id, FinbookFile::tr("pin %1").arg(i + 1));
         double v[4];
         for (double &x : v)
             x = c.f64(QT_TRANSLATE_NOOP("FinbookFile", "a pin position"));
         if (!std::all_of(std::begin(v), std::end(v), [](double x) { return std::isfinite(x); }))
-            c.fail(FileErrorCode::BadValue, tr("pin %1 has a non-finite position").arg(i + 1));
+            c.fail(FileErrorCode::BadValue,
+                   FinbookFile::tr("pin %1 has a non-finite position").arg(i + 1));
         p.rest = QPointF(v[0], v[1]);
         p.target = QPointF(v[2], v[3]);
     }
@@ -292,22 +308,25 @@ DeformedStrokesPtr Reader::readPoseRef(Cursor &c, const StrokeGroup &g)
 {
     const quint32 index = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "a pose reference"));
     if (index >= m_poses.size())
-        c.fail(FileErrorCode::BadValue,
-               tr("its pose refers to pose %1 of %2").arg(quint64(index) + 1).arg(m_poses.size()));
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("its pose refers to pose %1 of %2")
+                                            .arg(quint64(index) + 1)
+                                            .arg(m_poses.size()));
     if (index == m_badPose.index)
-        c.fail(FileErrorCode::BadValue, tr("its pose: %1").arg(m_badPose.what));
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("its pose: %1").arg(m_badPose.what));
     const std::vector<quint32> &sizes = m_poseSizes[index];
     if (sizes.size() != g.strokes.size())
-        c.fail(FileErrorCode::BadValue, tr("its pose has %1 strokes but the object has %2")
-                                            .arg(sizes.size())
-                                            .arg(g.strokes.size()));
+        c.fail(FileErrorCode::BadValue,
+               FinbookFile::tr("its pose has %1 strokes but the object has %2")
+                   .arg(sizes.size())
+                   .arg(g.strokes.size()));
     for (std::size_t i = 0; i < g.strokes.size(); ++i) {
         const quint32 rest = m_strokeDataSizes[m_strokeRefs[i]];
         if (sizes[i] != rest)
-            c.fail(FileErrorCode::BadValue, tr("stroke %1 has %2 points but its pose has %3")
-                                                .arg(i + 1)
-                                                .arg(rest)
-                                                .arg(sizes[i]));
+            c.fail(FileErrorCode::BadValue,
+                   FinbookFile::tr("stroke %1 has %2 points but its pose has %3")
+                       .arg(i + 1)
+                       .arg(rest)
+                       .arg(sizes[i]));
     }
     const DeformedStrokesPtr &pose = m_poses[index];
     return pose;
@@ -316,10 +335,10 @@ DeformedStrokesPtr Reader::readPoseRef(Cursor &c, const StrokeGroup &g)
 void Reader::claimId(Cursor &c, Id id, const QString &owner)
 {
     if (id == kNoId)
-        c.fail(FileErrorCode::BadValue, tr("%1 has no id").arg(owner));
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("%1 has no id").arg(owner));
     if (!m_ids.insert(id).second)
         c.fail(FileErrorCode::BadValue,
-               tr("%1 has the id %2, which is already used").arg(owner).arg(id));
+               FinbookFile::tr("%1 has the id %2, which is already used").arg(owner).arg(id));
     m_maxId = std::max(m_maxId, id);
 }
 
@@ -327,7 +346,7 @@ void Reader::claimId(Cursor &c, Id id, const QString &owner)
 void Reader::finish(Cursor &c)
 {
     m_where = Where();
-    m_where.section = tr("the document settings");
+    m_where.section = FinbookFile::tr("the document settings");
     if (m_badStrokeData.index != Deferred::kNone) {
         m_where.strokeData = int(m_badStrokeData.index + 1);
         c.fail(FileErrorCode::BadValue, m_badStrokeData.what);
@@ -337,9 +356,10 @@ void Reader::finish(Cursor &c)
         c.fail(FileErrorCode::BadValue, m_badPose.what);
     }
     if (m_doc.nextId <= m_maxId)
-        c.fail(FileErrorCode::BadValue, tr("the next free id %1 is not above the largest id %2")
-                                            .arg(m_doc.nextId)
-                                            .arg(m_maxId));
+        c.fail(FileErrorCode::BadValue,
+               FinbookFile::tr("the next free id %1 is not above the largest id %2")
+                   .arg(m_doc.nextId)
+                   .arg(m_maxId));
 }
 
 Expected<LoadedDocument, ReadFailure> parseFinbook(const QByteArray &bytes, ParseMode mode)
@@ -349,8 +369,9 @@ Expected<LoadedDocument, ReadFailure> parseFinbook(const QByteArray &bytes, Pars
     } catch (const ReadFailure &failure) {
         return unexpected(failure);
     } catch (const std::bad_alloc &) {
-        return unexpected(ReadFailure{FileErrorCode::TooLarge,
-                                      tr("there is not enough memory to open this file")});
+        return unexpected(
+            ReadFailure{FileErrorCode::TooLarge,
+                        FinbookFile::tr("there is not enough memory to open this file")});
     }
 }
 

@@ -23,7 +23,7 @@ quint32 Reader::readPoints(Cursor &c, std::vector<StrokePoint> &points, Deferred
     const char *in =
         c.take(std::size_t(n) * kPointBytes, QT_TRANSLATE_NOOP("FinbookFile", "a stroke"));
     if (const qint64 bad = firstNonFinite(in, n); bad >= 0)
-        deferred.note(entry, tr("point %1 has a non-finite coordinate").arg(bad + 1));
+        deferred.note(entry, FinbookFile::tr("point %1 has a non-finite coordinate").arg(bad + 1));
     if (m_mode == ParseMode::Check)
         return n;
     points.resize(n);
@@ -47,7 +47,8 @@ void Reader::readStrokeTable(Cursor &c)
         data->color = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "a stroke colour"));
         data->width = c.f32(QT_TRANSLATE_NOOP("FinbookFile", "a stroke width"));
         if (!(std::isfinite(data->width) && data->width > 0.0f))
-            m_badStrokeData.note(i, tr("the width %1 is not a positive number").arg(data->width));
+            m_badStrokeData.note(
+                i, FinbookFile::tr("the width %1 is not a positive number").arg(data->width));
         m_strokeDataSizes.push_back(readPoints(c, data->points, m_badStrokeData, i));
         m_strokeData.push_back(std::move(data));
     }
