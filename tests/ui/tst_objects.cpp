@@ -7,12 +7,13 @@
 #include <finbook/ui/object_actions.h>
 #include <finbook/ui/objects_panel.h>
 
+#include <QDir>
 #include <QLineEdit>
 #include <QListView>
 #include <QMenu>
 #include <QMimeData>
 #include <QTest>
-#include <QToolBar>
+#include <QToolButton>
 
 #include <memory>
 
@@ -77,7 +78,7 @@ struct Fixture {
         state = std::make_unique<ui::EditorState>(&doc);
         actions = std::make_unique<ui::ObjectActions>(state.get());
         panel = std::make_unique<ui::ObjectsPanel>(state.get(), actions.get());
-        panel->resize(260, 300);
+        panel->resize(280, 300);
         panel->show();
         QVERIFY(QTest::qWaitForWindowExposed(panel.get()));
     }
@@ -110,6 +111,7 @@ private slots:
     void mergeSelectedIsOneUndoStep();
     void moveSelectedStrokesToAnotherObject();
     void deleteKeepsOneObject();
+    void grabScreenshot();
 };
 
 void TestObjects::listsTheCurrentFrameTopFirst()
@@ -145,7 +147,7 @@ void TestObjects::createAboveCurrentAndUndo()
     const model::Frame before = f.doc.frameAt(0);
     f.state->setCurrentGroupId(f.groups[0]);
     QCOMPARE(f.actions->newObject()->objectName(), QStringLiteral("object.new"));
-    QWidget *button = f.panel->toolBar()->widgetForAction(f.actions->newObject());
+    QWidget *button = f.panel->button(f.actions->newObject());
     QVERIFY(button);
     QTest::mouseClick(button, Qt::LeftButton);
     const model::Frame &after = f.doc.frameAt(0);
@@ -305,6 +307,20 @@ void TestObjects::deleteKeepsOneObject()
     QVERIFY(sameFrame(f.doc.frameAt(0), before));
     f.state->setCurrentFrameIndex(1);
     QVERIFY(!f.actions->remove()->isEnabled());
+}
+
+void TestObjects::grabScreenshot()
+{
+    Fixture f;
+    f.doc.undoStack()->push(
+        new model::SetObjectFlagCommand(&f.doc, f.groups[1], model::ObjectFlag::Visible, false));
+    f.doc.undoStack()->push(
+        new model::SetObjectFlagCommand(&f.doc, f.groups[0], model::ObjectFlag::Locked, true));
+    f.state->setCurrentGroupId(f.groups[1]);
+    QCoreApplication::processEvents();
+    const QPixmap shot = f.panel->grab();
+    QVERIFY(!shot.isNull());
+    shot.save(QDir::temp().filePath(QStringLiteral("finbook_objects.png")));
 }
 
 QTEST_MAIN(TestObjects)

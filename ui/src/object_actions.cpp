@@ -42,6 +42,13 @@ ObjectActions::ObjectActions(EditorState *state, QObject *parent)
     m_new->setToolTip(tr("New object above the current one"));
     m_merge->setToolTip(tr("Merge the selected objects, or the current one into the one below"));
     m_moveSelection->setToolTip(tr("Move the selected strokes to another object"));
+    // Short labels for the panel's tool bar.
+    m_new->setIconText(tr("New"));
+    m_remove->setIconText(tr("Delete"));
+    m_merge->setIconText(tr("Merge"));
+    m_moveSelection->setIconText(tr("Move To"));
+    m_raise->setIconText(QStringLiteral("\u2191"));
+    m_lower->setIconText(QStringLiteral("\u2193"));
     m_targets->setTitle(m_moveSelection->text());
     m_moveSelection->setMenu(m_targets);
 

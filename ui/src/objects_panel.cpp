@@ -5,8 +5,8 @@
 #include <finbook/ui/object_actions.h>
 #include <finbook/ui/objects_panel.h>
 
+#include <QHBoxLayout>
 #include <QListView>
-#include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -17,19 +17,25 @@ ObjectsPanel::ObjectsPanel(EditorState *state, ObjectActions *actions, QWidget *
     , m_state(state)
     , m_actions(actions)
     , m_model(new model::ObjectListModel(state->document(), this))
-    , m_toolBar(new QToolBar(this))
+
     , m_view(new QListView(this))
 {
     setObjectName(QStringLiteral("objects"));
     m_view->setObjectName(QStringLiteral("objects.view"));
-    m_toolBar->setIconSize(QSize(16, 16));
-    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    // Plain buttons rather than a QToolBar: they never fold into an overflow menu.
+    auto *buttons = new QHBoxLayout;
+    buttons->setContentsMargins(2, 2, 2, 2);
+    buttons->setSpacing(0);
     for (QAction *action : {actions->newObject(), actions->remove(), actions->raise(),
-                            actions->lower(), actions->merge(), actions->moveSelection()})
-        m_toolBar->addAction(action);
-    if (auto *button =
-            qobject_cast<QToolButton *>(m_toolBar->widgetForAction(actions->moveSelection())))
-        button->setPopupMode(QToolButton::InstantPopup);
+                            actions->lower(), actions->merge(), actions->moveSelection()}) {
+        auto *button = new QToolButton(this);
+        button->setObjectName(action->objectName() + QStringLiteral(".button"));
+        button->setDefaultAction(action);
+        button->setAutoRaise(true);
+        buttons->addWidget(button);
+    }
+    buttons->addStretch(1);
+    button(actions->moveSelection())->setPopupMode(QToolButton::InstantPopup);
 
     m_view->setModel(m_model);
     m_view->setItemDelegate(new ObjectsPanelDelegate(m_view));
@@ -43,7 +49,7 @@ ObjectsPanel::ObjectsPanel(EditorState *state, ObjectActions *actions, QWidget *
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
-    layout->addWidget(m_toolBar);
+    layout->addLayout(buttons);
     layout->addWidget(m_view, 1);
 
     connect(m_state, &EditorState::currentFrameChanged, this, &ObjectsPanel::followFrame);
@@ -57,6 +63,12 @@ ObjectsPanel::ObjectsPanel(EditorState *state, ObjectActions *actions, QWidget *
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &ObjectsPanel::viewSelectionChanged);
     followFrame();
+}
+
+QToolButton *ObjectsPanel::button(const QAction *action) const
+{
+    return findChild<QToolButton *>(action->objectName() + QStringLiteral(".button"),
+                                    Qt::FindDirectChildrenOnly);
 }
 
 QRect ObjectsPanel::visibilityToggleRect(int row) const

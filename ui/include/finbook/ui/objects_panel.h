@@ -1,6 +1,6 @@
 // ObjectsPanel: the objects of the current frame, top object first like a layers panel.
 //
-// A tool bar over the list holds the ObjectActions (new, delete, raise, lower, merge, move
+// A row of buttons over the list holds the ObjectActions (new, delete, raise, lower, merge, move
 // selection to…). In the list: click picks the current object (two-way with
 // EditorState::currentGroupId), Ctrl/Shift-click selects several for merging, double-click
 // renames, the eye and lock at the right of a row toggle visibility and lock, and dragging a
@@ -11,8 +11,9 @@
 
 #include <QWidget>
 
+class QAction;
 class QListView;
-class QToolBar;
+class QToolButton;
 
 namespace finbook::model {
 class ObjectListModel;
@@ -29,13 +30,14 @@ public:
     ObjectsPanel(EditorState *state, ObjectActions *actions, QWidget *parent = nullptr);
 
     QListView *view() const { return m_view; }
-    QToolBar *toolBar() const { return m_toolBar; }
+    // The tool-bar button of one of the ObjectActions (null if it has none).
+    QToolButton *button(const QAction *action) const;
     model::ObjectListModel *objectModel() const { return m_model; }
     // Viewport rectangles of a row's visibility and lock toggles.
     QRect visibilityToggleRect(int row) const;
     QRect lockToggleRect(int row) const;
 
-    QSize sizeHint() const override { return {220, 260}; }
+    QSize sizeHint() const override { return {280, 260}; }
 
 private:
     void followFrame();
@@ -46,7 +48,6 @@ private:
     EditorState *m_state;
     ObjectActions *m_actions;
     model::ObjectListModel *m_model;
-    QToolBar *m_toolBar;
     QListView *m_view;
     bool m_syncing = false;
 };
