@@ -24,6 +24,38 @@ std::optional<DeformError> validateTriangle(const Eigen::MatrixX2d &V, const Eig
     return std::nullopt;
 }
 
+// A vertex where two fans of triangles touch only at that point: its k open fans have
+// k more distinct neighbours than triangles. Step 1 could rotate and scale one fan about the
+// vertex at no cost, so such meshes are refused (geometry's meshes split these vertices).
+int pinchedVertex(Eigen::Index n, const Eigen::MatrixX3i &F)
+{
+    std::vector<int> start(static_cast<std::size_t>(n) + 1, 0), triangle(3 * F.rows());
+    for (Eigen::Index t = 0; t < F.rows(); ++t)
+        for (int k = 0; k < 3; ++k)
+            ++start[F(t, k) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<int> next(start.begin(), start.end() - 1);
+    for (Eigen::Index t = 0; t < F.rows(); ++t)
+        for (int k = 0; k < 3; ++k)
+            triangle[next[F(t, k)]++] = static_cast<int>(t);
+    std::vector<int> seenBy(static_cast<std::size_t>(n), -1);
+    for (int v = 0; v < n; ++v) {
+        int neighbours = 0;
+        for (int c = start[v]; c < start[v + 1]; ++c) {
+            for (int k = 0; k < 3; ++k) {
+                const int w = F(triangle[c], k);
+                if (w != v && seenBy[w] != v) {
+                    seenBy[w] = v;
+                    ++neighbours;
+                }
+            }
+        }
+        if (neighbours - (start[v + 1] - start[v]) >= 2)
+            return v;
+    }
+    return -1;
+}
+
 } // namespace
 
 std::optional<DeformError> validateArapInput(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
@@ -48,6 +80,10 @@ std::optional<DeformError> validateArapInput(const Eigen::MatrixX2d &V, const Ei
         if (auto error = validateTriangle(V, F, t))
             return error;
     }
+    if (const int v = pinchedVertex(n, F); v >= 0)
+        return makeError(DeformErrorCode::NonManifoldVertex,
+                         "the mesh is pinched at vertex " + std::to_string(v) +
+                             ": two fans of triangles meet only there");
     for (Eigen::Index e = 0; e < b.size(); ++e) {
         if (b(e) < 0 || b(e) >= n)
             return makeError(DeformErrorCode::InvalidIndex, "pin " + std::to_string(e) +

@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <thread>
 
 using namespace finbook::deform;
 using finbook::test::GridMesh;
@@ -82,6 +83,7 @@ private slots:
     void pinsDraggedOntoOnePointStayFinite();
     void componentsFollowTheirOwnPins();
     void cancellationReturnsCancelled();
+    void concurrentSolvesAgree();
     void solveRejectsBadTargets();
     void nearestVertexSnaps();
 };
@@ -290,6 +292,31 @@ void TestArap::cancellationReturnsCancelled()
     }
     // Four phases poll before the factorization; more polls mean the basis loop polls too.
     QVERIFY(cancelledRuns > 4);
+}
+
+// The precompute is shared between the GUI thread and workers; solves keep their scratch per
+// thread, so concurrent solves must give exactly what sequential ones give.
+void TestArap::concurrentSolvesAgree()
+{
+    const GridMesh g = finbook::test::gridMesh(90, 90, 1.0, 1.0, 0.2); // parallel precompute
+    const Eigen::VectorXi b = spreadPins(g, 2);
+    const auto data = precompute(g.V, g.F, b, ArapOptions{1});
+    QVERIFY(data);
+    std::vector<Eigen::MatrixX2d> targets, expected, results(8);
+    for (int k = 0; k < 8; ++k) {
+        targets.push_back(finbook::test::rowsOf(g.V, b));
+        targets.back().row(k % b.size()) += Eigen::RowVector2d(0.05 * k, -0.03 * k);
+        expected.push_back(solved(*data, targets.back()));
+    }
+    std::thread other([&] {
+        for (int k = 0; k < 8; k += 2)
+            results[k] = solved(*data, targets[k]);
+    });
+    for (int k = 1; k < 8; k += 2)
+        results[k] = solved(*data, targets[k]);
+    other.join();
+    for (int k = 0; k < 8; ++k)
+        QCOMPARE(results[k], expected[k]);
 }
 
 void TestArap::solveRejectsBadTargets()

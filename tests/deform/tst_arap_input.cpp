@@ -67,6 +67,15 @@ void TestArapInput::rejectsDegenerateInput_data()
     Eigen::MatrixX3i repeated = g.F;
     repeated(2, 1) = repeated(2, 0);
     QTest::newRow("repeated corner") << g.V << repeated << pins << Code::DegenerateTriangle;
+
+    // Two squares touching at one corner: the second could spin about it at no step-1 cost.
+    const auto other = finbook::test::gridMesh(3, 3, 1.0, 1.0, 0.0, {1.0, 1.0});
+    Eigen::MatrixX2d pinchedV = g.V;
+    Eigen::MatrixX3i pinchedF = g.F;
+    finbook::test::appendMesh(pinchedV, pinchedF, other.V, other.F);
+    const int corner = g.vertex(3, 3), duplicate = int(g.V.rows()) + other.vertex(0, 0);
+    pinchedF = pinchedF.unaryExpr([&](int v) { return v == duplicate ? corner : v; });
+    QTest::newRow("pinched vertex") << pinchedV << pinchedF << pins << Code::NonManifoldVertex;
 }
 
 void TestArapInput::rejectsDegenerateInput()

@@ -40,7 +40,7 @@ struct ArapOptions {
 struct ArapPrecompute {
     using ComplexMatrix = Eigen::SparseMatrix<std::complex<double>>;
     using RealMatrix = Eigen::SparseMatrix<double>;
-    // LDLᴴ rather than LLᴴ for the complex system: no square roots, measured 20% faster.
+    // LDLᴴ rather than LLᴴ for the complex system: no square roots, up to 20% faster measured.
     using ComplexFactor =
         Eigen::SimplicialLDLT<ComplexMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>>;
     using RealFactor = Eigen::SimplicialLLT<RealMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>>;
@@ -69,10 +69,10 @@ struct ArapPrecompute {
     ComplexMatrix stepOneCoupling; // G01, freeCount × handles
     ComplexFactor stepOneFactor;   // LDLᴴ of G00
     double stepOneNorm = 0.0;      // ‖G00‖∞, scales the residual test
-    // M = −G00⁻¹G01, row-major so that u = M q is one pass; empty with too many handles.
+    // M = −G00⁻¹G01, row-major so that u = M q is one pass. Empty when there are more than
+    // 32 handles: then applying it would cost more than step 1 back-substituting per event.
     Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
         stepOneBasis;
-    // (then step 1 back-substitutes per event instead)
     RealMatrix stepTwoMatrix;            // H00 (uniform-weight graph Laplacian), both halves
     RealMatrix stepTwoCoupling;          // H01, freeCount × handles
     RealFactor stepTwoFactor;            // LLᵀ of H00
@@ -88,18 +88,22 @@ struct ArapSolveReport {
 using ArapPrecomputeResult = Expected<std::shared_ptr<const ArapPrecompute>, DeformError>;
 using ArapSolveResult = Expected<ArapSolveReport, DeformError>;
 
-// V  n×2 rest positions (finite), F  m×3 triangles (any orientation, positive area), b  k pinned
+// V  n×2 rest positions (finite), F  m×3 triangles (any orientation, non-zero area, no vertex
+// where fans of triangles touch only at a point; unreferenced vertices allowed), b  k pinned
 // vertex indices (may repeat: the LAST entry for a vertex wins). `cancelled` is polled between
 // phases and between basis solves; when it returns true the result is DeformErrorCode::Cancelled.
-// Errors: EmptyMesh, InvalidIndex, NonFiniteInput, DegenerateTriangle, FactorizationFailed,
-// SolveFailed, Cancelled.
+// Errors: EmptyMesh, InvalidIndex, NonFiniteInput, CoordinateOutOfRange, DegenerateTriangle,
+// NonManifoldVertex, FactorizationFailed, SolveFailed, Cancelled. Runs a helper thread for large
+// meshes.
 ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                     const Eigen::VectorXi &b, const ArapOptions &options = {},
                                     std::function<bool()> cancelled = {});
 
 // bc  k×2 targets, one row per entry of b as passed to arapPrecompute. U  out n×2 deformed
 // positions (resized). Steps 1, 2a, 2b, then options.extraPasses × (2a, 2b).
-// Errors: SizeMismatch, NonFiniteInput, SolveFailed; U is left unspecified on error.
+// Allocation-free after the first call on a thread (per-thread scratch buffers).
+// Errors: SizeMismatch, NonFiniteInput, CoordinateOutOfRange, SolveFailed; U is left
+// unspecified on error.
 ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
                           Eigen::MatrixX2d &U);
 

@@ -14,6 +14,7 @@ enum class DeformErrorCode {
     NonFiniteInput,       // NaN or infinity in rest positions or pin targets
     CoordinateOutOfRange, // |coordinate| beyond kMaxDeformCoordinate (squares would overflow)
     DegenerateTriangle,   // zero-area triangle or a triangle repeating a vertex
+    NonManifoldVertex,    // two fans of triangles meet only at a vertex (split it first)
     SizeMismatch,         // targets do not match the pins the precompute was made for
     FactorizationFailed,  // sparse Cholesky refused a matrix that should be SPD
     SolveFailed,          // a solve produced non-finite values or a large residual
