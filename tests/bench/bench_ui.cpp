@@ -1,6 +1,8 @@
 // finbook-bench repaint: paint time of the real canvas widget (offscreen, shown) on a frame of
 // 50,000 stroke points. Cold = the frame cache dropped before every repaint (what a stroke
 // edit, zoom or pan costs); warm = the cache kept (what an overlay update or cursor move costs).
+// cpu_ms_* is CPU time per repaint summed over threads: on a busy machine the wall-clock
+// figures include waiting for the neighbours, so load_avg is printed alongside.
 #include "bench.h"
 
 #include <finbook/model/document.h>
@@ -10,10 +12,12 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QThread>
 
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <sys/resource.h>
 
 using namespace finbook;
 
@@ -54,6 +58,16 @@ model::Frame makeFrame(int points, QSize canvas)
     return frame;
 }
 
+// CPU time of this process (all threads) in ms: on a loaded machine wall time measures the
+// neighbours too, CPU time only our work.
+double cpuMs()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return (double(usage.ru_utime.tv_sec) + double(usage.ru_stime.tv_sec)) * 1e3 +
+           (double(usage.ru_utime.tv_usec) + double(usage.ru_stime.tv_usec)) / 1e3;
+}
+
 int benchRepaint(const QStringList &args)
 {
     const int points = intArgument(args, QStringLiteral("--points"), 50000);
@@ -76,23 +90,32 @@ int benchRepaint(const QStringList &args)
 
     std::vector<double> cold, warm;
     QElapsedTimer timer;
+    double cpu = cpuMs();
     for (int i = 0; i < runs; ++i) {
         canvas.invalidateCache();
         timer.start();
         canvas.repaint();
         cold.push_back(double(timer.nsecsElapsed()) / 1e6);
     }
+    const double cpuCold = (cpuMs() - cpu) / runs;
+    cpu = cpuMs();
     for (int i = 0; i < runs; ++i) {
         timer.start();
         canvas.repaint();
         warm.push_back(double(timer.nsecsElapsed()) / 1e6);
     }
+    const double cpuWarm = (cpuMs() - cpu) / runs;
+    const double load = [] {
+        double avg[1] = {0};
+        return getloadavg(avg, 1) == 1 ? avg[0] : -1.0;
+    }();
     std::printf("{\"bench\":\"repaint\",\"points\":%lld,\"runs\":%d,\"widget\":\"%dx%d\","
                 "\"zoom\":%.3f,\"median_ms_cold\":%.3f,\"p99_ms_cold\":%.3f,"
-                "\"median_ms_warm\":%.3f,\"p99_ms_warm\":%.3f}\n",
+                "\"median_ms_warm\":%.3f,\"p99_ms_warm\":%.3f,\"cpu_ms_cold\":%.3f,"
+                "\"cpu_ms_warm\":%.3f,\"cores\":%d,\"load_avg\":%.2f}\n",
                 doc.pointCount(), runs, canvas.width(), canvas.height(), canvas.zoom(),
                 bench::median(cold), bench::percentile(cold, 0.99), bench::median(warm),
-                bench::percentile(warm, 0.99));
+                bench::percentile(warm, 0.99), cpuCold, cpuWarm, QThread::idealThreadCount(), load);
     return 0;
 }
 

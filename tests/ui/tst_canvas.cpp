@@ -1,10 +1,13 @@
 // The canvas view: zoom about the cursor, panning, fit, onion skin and the frame cache.
 #include "tst_tools_support.h"
 
+#include <finbook/model/render.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/tool_pen.h>
 
 #include <QtTest>
+
+#include <random>
 
 using namespace finbook;
 using namespace finbook::test;
@@ -25,6 +28,7 @@ private slots:
     void onionSkinHiddenWhilePlaying();
     void cacheFollowsUndo();
     void hiddenObjectsAreNotDrawn();
+    void rasterMatchesQPainter();
 
 private:
     QColor pixelAt(const QPointF &canvasPos)
@@ -198,6 +202,67 @@ void TestCanvas::hiddenObjectsAreNotDrawn()
     m_doc->undoStack()->push(
         new model::SetObjectFlagCommand(m_doc.get(), g, model::ObjectFlag::Visible, false));
     QCOMPARE(pixelAt({200, 150}), QColor(Qt::white));
+}
+
+// The canvas's own rasterizer must draw what model::paintFrame draws (thumbnails, export).
+void TestCanvas::rasterMatchesQPainter()
+{
+    const model::Id g = m_doc->frameAt(0).groups[0].id;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int s = 0; s < 30; ++s) {
+        auto data = std::make_shared<model::StrokeData>();
+        float x = 20 + u(rng) * 360, y = 20 + u(rng) * 260, heading = u(rng) * 6.28f;
+        const float phase = u(rng) * 6.28f; // pressure varies smoothly, as a tablet's does
+        for (int i = 0; i < 60; ++i) {
+            heading += (u(rng) - 0.5f) * 0.5f;
+            x += 3 * std::cos(heading);
+            y += 3 * std::sin(heading);
+            data->points.push_back({x, y, 0.65f + 0.35f * std::sin(phase + 0.15f * float(i))});
+        }
+        data->width = 1.0f + 8.0f * u(rng);
+        // Opaque: paintStroke double-blends translucent colours where its width runs meet
+        // (dark beads); the rasterizer does not, so only opaque strokes compare like for like.
+        data->color = qRgb(int(u(rng) * 255), int(u(rng) * 255), int(u(rng) * 255));
+        addStroke(*m_doc, g, data);
+    }
+    m_canvas->actualSize();
+    const QImage ours = m_canvas->grab().toImage().convertToFormat(QImage::Format_ARGB32);
+    QImage ref(ours.size(), QImage::Format_ARGB32);
+    ref.setDevicePixelRatio(ours.devicePixelRatio());
+    ref.fill(Qt::white);
+    {
+        QPainter painter(&ref);
+        painter.setTransform(m_canvas->canvasToWidget());
+        model::RenderOptions options;
+        options.paintBackground = false;
+        model::paintFrame(painter, m_doc->frameAt(0), m_doc->settings(), options);
+    }
+    const QRect page = m_canvas->canvasToWidget()
+                           .mapRect(QRectF(0, 0, 400, 300))
+                           .toAlignedRect()
+                           .adjusted(2, 2, -2, -2);
+    qint64 ink = 0, inkRef = 0, far = 0, pixels = 0;
+    for (int y = page.top(); y <= page.bottom(); ++y)
+        for (int x = page.left(); x <= page.right(); ++x) {
+            const QColor a = ours.pixelColor(x, y), b = ref.pixelColor(x, y);
+            ink += 765 - a.red() - a.green() - a.blue();
+            inkRef += 765 - b.red() - b.green() - b.blue();
+            const int d = std::max({std::abs(a.red() - b.red()), std::abs(a.green() - b.green()),
+                                    std::abs(a.blue() - b.blue())});
+            far += d > 96;
+            pixels += b != QColor(Qt::white);
+        }
+    QVERIFY(inkRef > 0);
+    if (qEnvironmentVariableIsSet("FINBOOK_DUMP")) {
+        ours.save(QStringLiteral("/tmp/raster_ours.png"));
+        ref.save(QStringLiteral("/tmp/raster_ref.png"));
+    }
+    // Same amount of ink within 6 %, and only stray edge pixels differ much.
+    QVERIFY2(std::abs(double(ink - inkRef)) / double(inkRef) < 0.06,
+             qPrintable(QStringLiteral("ink %1 vs %2").arg(ink).arg(inkRef)));
+    QVERIFY2(double(far) / double(pixels) < 0.03,
+             qPrintable(QStringLiteral("%1 of %2 pixels differ").arg(far).arg(pixels)));
 }
 
 QTEST_MAIN(TestCanvas)

@@ -1,4 +1,6 @@
 // CanvasWidget painting: the page, the cached frame and onion-skin layers, overlays.
+#include "stroke_raster.h"
+
 #include <finbook/model/render.h>
 #include <finbook/ui/canvas_tool.h>
 #include <finbook/ui/canvas_widget.h>
@@ -8,6 +10,7 @@
 #include <QPainter>
 
 #include <algorithm>
+#include <cmath>
 
 namespace finbook::ui {
 
@@ -134,22 +137,29 @@ QImage CanvasWidget::newLayerImage() const
     return image;
 }
 
+void CanvasWidget::rasterize(QImage &image, const std::function<void(StrokeRaster &)> &draw) const
+{
+    // The view is scale + translate only, so the rasterizer takes it as two numbers.
+    const qreal dpr = image.devicePixelRatio();
+    const QRectF page = pageRect();
+    const QRect clip(
+        QPoint(int(std::floor(page.left() * dpr)), int(std::floor(page.top() * dpr))),
+        QPoint(int(std::ceil(page.right() * dpr)) - 1, int(std::ceil(page.bottom() * dpr)) - 1));
+    StrokeRaster::drawParallel(&image, clip, m_zoom * dpr, m_offset * dpr, draw);
+}
+
 QImage CanvasWidget::renderFrameLayer() const
 {
     QImage image = newLayerImage();
     const model::Frame *frame = m_state->currentFrame();
     if (!frame)
         return image;
-    QPainter painter(&image);
-    painter.setClipRect(pageRect());
-    painter.setTransform(canvasToWidget());
     model::RenderOptions options;
     options.paintBackground = false;
-    if (m_suppressed.empty())
-        model::paintFrame(painter, *frame, document()->settings(), options);
-    else
-        model::paintFrame(painter, withoutStrokes(*frame, m_suppressed), document()->settings(),
-                          options);
+    const model::Frame shown =
+        m_suppressed.empty() ? model::Frame{} : withoutStrokes(*frame, m_suppressed);
+    const model::Frame &drawn = m_suppressed.empty() ? *frame : shown;
+    rasterize(image, [&](StrokeRaster &raster) { raster.drawFrame(drawn, options); });
     return image;
 }
 
@@ -159,11 +169,9 @@ QImage CanvasWidget::renderOnionLayer() const
     const OnionSkin &onion = m_state->onionSkin();
     const int current = m_state->currentFrameIndex();
     const model::Document *doc = document();
-    QPainter painter(&image);
-    painter.setClipRect(pageRect());
-    painter.setTransform(canvasToWidget());
     // Farthest first so nearer neighbours lie on top; opacity falls off linearly with distance.
-    const auto paintSide = [&](int count, int direction, const QColor &tint) {
+    std::vector<std::pair<int, model::RenderOptions>> layers;
+    const auto addSide = [&](int count, int direction, const QColor &tint) {
         for (int k = count; k >= 1; --k) {
             const int index = current + direction * k;
             if (index < 0 || index >= doc->frameCount())
@@ -172,11 +180,16 @@ QImage CanvasWidget::renderOnionLayer() const
             options.paintBackground = false;
             options.tint = tint;
             options.opacity = onion.opacity * qreal(count - k + 1) / qreal(count);
-            model::paintFrame(painter, doc->frameAt(index), doc->settings(), options);
+            layers.emplace_back(index, options);
         }
     };
-    paintSide(onion.before, -1, onion.beforeTint);
-    paintSide(onion.after, +1, onion.afterTint);
+    addSide(onion.before, -1, onion.beforeTint);
+    addSide(onion.after, +1, onion.afterTint);
+    if (!layers.empty())
+        rasterize(image, [&](StrokeRaster &raster) {
+            for (const auto &[index, options] : layers)
+                raster.drawFrame(doc->frameAt(index), options);
+        });
     return image;
 }
 

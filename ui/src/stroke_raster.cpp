@@ -1,0 +1,236 @@
+#include "stroke_raster.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <thread>
+
+namespace finbook::ui {
+
+namespace {
+constexpr int kTile = 8;
+
+// Thinnest radius drawn at full strength, in device pixels; thinner strokes fade instead.
+constexpr float kMinRadius = 0.5f;
+// Coverage (0..255) of the pixel centred at (px, py), relative to the segment start, by a
+// capsule from (0, 0) radius ar to (dx, dy) radius ar + dr; inv = 1 / |d|² (0 for a dot).
+inline std::uint8_t coverage(float px, float py, float dx, float dy, float inv, float ar, float dr)
+{
+    const float t = std::clamp((px * dx + py * dy) * inv, 0.0f, 1.0f);
+    const float ex = px - t * dx, ey = py - t * dy;
+    const float r = ar + t * dr;
+    const float d = std::sqrt(ex * ex + ey * ey);
+    // A pixel-wide box filter across the edge; hairlines fade with their width.
+    const float c = std::clamp(std::max(r, kMinRadius) + 0.5f - d, 0.0f, 1.0f);
+    const float fade = std::min(1.0f, r / kMinRadius);
+    return std::uint8_t(c * fade * 255.0f + 0.5f);
+}
+
+// Every channel of a premultiplied ARGB pixel times a/255, rounded (the classic two-lane trick).
+inline QRgb byteMul(QRgb x, std::uint32_t a)
+{
+    std::uint32_t t = (x & 0xff00ffu) * a;
+    t = ((t + ((t >> 8) & 0xff00ffu) + 0x800080u) >> 8) & 0xff00ffu;
+    std::uint32_t u = ((x >> 8) & 0xff00ffu) * a;
+    u = (u + ((u >> 8) & 0xff00ffu) + 0x800080u) & 0xff00ff00u;
+    return u | t;
+}
+
+#if defined(__SSE2__)
+// coverage() four pixels at a time, max-combined into row[0..n); returns how many it did.
+int coverSse(std::uint8_t *row, int n, float px0, float py, float dx, float dy, float inv, float ar,
+             float dr)
+{
+    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+    const __m128 vdx = _mm_set1_ps(dx), vdy = _mm_set1_ps(dy), vinv = _mm_set1_ps(inv);
+    const __m128 var = _mm_set1_ps(ar), vdr = _mm_set1_ps(dr), vpy = _mm_set1_ps(py);
+    const __m128 minR = _mm_set1_ps(kMinRadius), invMinR = _mm_set1_ps(1.0f / kMinRadius);
+    const __m128 half = _mm_set1_ps(0.5f), scale = _mm_set1_ps(255.0f);
+    const __m128 pyDy = _mm_mul_ps(vpy, vdy);
+    __m128 px = _mm_add_ps(_mm_set1_ps(px0), _mm_set_ps(3, 2, 1, 0));
+    int i = 0;
+    for (; i + 4 <= n; i += 4, px = _mm_add_ps(px, _mm_set1_ps(4.0f))) {
+        __m128 t = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(px, vdx), pyDy), vinv);
+        t = _mm_min_ps(_mm_max_ps(t, zero), one);
+        const __m128 ex = _mm_sub_ps(px, _mm_mul_ps(t, vdx));
+        const __m128 ey = _mm_sub_ps(vpy, _mm_mul_ps(t, vdy));
+        const __m128 r = _mm_add_ps(var, _mm_mul_ps(t, vdr));
+        const __m128 d = _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(ex, ex), _mm_mul_ps(ey, ey)));
+        __m128 c = _mm_sub_ps(_mm_add_ps(_mm_max_ps(r, minR), half), d);
+        c = _mm_min_ps(_mm_max_ps(c, zero), one);
+        const __m128 fade = _mm_min_ps(one, _mm_mul_ps(r, invMinR));
+        const __m128i v =
+            _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm_mul_ps(c, fade), scale), half));
+        const __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(v, v), _mm_setzero_si128());
+        std::uint32_t old;
+        std::memcpy(&old, row + i, 4);
+        const auto packed =
+            std::uint32_t(_mm_cvtsi128_si32(_mm_max_epu8(bytes, _mm_cvtsi32_si128(int(old)))));
+        std::memcpy(row + i, &packed, 4);
+    }
+    return i;
+}
+#endif
+
+} // namespace
+
+StrokeRaster::StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale,
+                           const QPointF &offset)
+    : m_bits(image->bits())
+    , m_stride(image->bytesPerLine())
+    , m_clip(deviceClip.intersected(image->rect()))
+    , m_scale(float(scale))
+    , m_ox(float(offset.x()))
+    , m_oy(float(offset.y()))
+    , m_width(std::max(0, m_clip.width()))
+    , m_height(std::max(0, m_clip.height()))
+    , m_tilesX((m_width + kTile - 1) / kTile)
+{
+    const int tilesY = (m_height + kTile - 1) / kTile;
+    m_mask.assign(std::size_t(m_width) * std::size_t(m_height), 0);
+    m_touched.assign(std::size_t(m_tilesX) * std::size_t(tilesY), 0);
+}
+
+void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal scale,
+                                const QPointF &offset,
+                                const std::function<void(StrokeRaster &)> &draw)
+{
+    const QRect clip = deviceClip.intersected(image->rect());
+    if (clip.isEmpty())
+        return;
+    image->bits(); // detach here, never in the workers
+    // Horizontal bands share no pixel, so each keeps the strokes' order exactly.
+    const int bands = std::clamp(int(std::thread::hardware_concurrency()), 1, 4);
+    const int step = (clip.height() + bands - 1) / bands;
+    std::vector<std::thread> workers;
+    for (int b = 1; b < bands; ++b) {
+        const QRect band(clip.left(), clip.top() + b * step, clip.width(),
+                         std::min(step, clip.bottom() + 1 - (clip.top() + b * step)));
+        if (band.height() > 0)
+            workers.emplace_back([=, &draw] {
+                StrokeRaster raster(image, band, scale, offset);
+                draw(raster);
+            });
+    }
+    StrokeRaster first(image,
+                       QRect(clip.left(), clip.top(), clip.width(), std::min(step, clip.height())),
+                       scale, offset);
+    draw(first);
+    for (std::thread &w : workers)
+        w.join();
+}
+
+void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptions &options)
+{
+    for (const model::StrokeGroup &g : frame.groups) {
+        if (!g.visible && !options.showHidden)
+            continue;
+        for (std::size_t i = 0; i < g.strokes.size(); ++i) {
+            const model::Stroke &s = g.strokes[i];
+            if (!s.data)
+                continue;
+            const QRgb color = options.tint ? options.tint->rgba() : s.data->color;
+            drawStroke(model::displayedPoints(g, i), color, s.data->width, options.opacity);
+        }
+    }
+}
+
+void StrokeRaster::drawStroke(const std::vector<model::StrokePoint> &points, QRgb color,
+                              float width, qreal opacity)
+{
+    if (points.empty() || m_clip.isEmpty() || opacity <= 0 || qAlpha(color) == 0)
+        return;
+    // paintStroke's widths: a pen never thinner than a quarter canvas pixel.
+    const auto radius = [&](const model::StrokePoint &p) {
+        return std::max(0.125f, width * p.pressure / 2) * m_scale;
+    };
+    const model::StrokePoint &first = points.front();
+    float ax = first.x * m_scale + m_ox, ay = first.y * m_scale + m_oy, ar = radius(first);
+    if (points.size() == 1)
+        capsule(ax, ay, ar, ax, ay, ar);
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const model::StrokePoint &p = points[i];
+        const float bx = p.x * m_scale + m_ox, by = p.y * m_scale + m_oy, br = radius(p);
+        capsule(ax, ay, ar, bx, by, br);
+        ax = bx;
+        ay = by;
+        ar = br;
+    }
+    composite(color, opacity);
+}
+
+void StrokeRaster::touch(int x0, int y0, int x1, int y1)
+{
+    for (int ty = y0 / kTile; ty <= y1 / kTile; ++ty)
+        for (int tx = x0 / kTile; tx <= x1 / kTile; ++tx) {
+            const int t = ty * m_tilesX + tx;
+            if (!m_touched[std::size_t(t)]) {
+                m_touched[std::size_t(t)] = 1;
+                m_tiles.push_back(t);
+            }
+        }
+}
+
+void StrokeRaster::capsule(float ax, float ay, float ar, float bx, float by, float br)
+{
+    if (!std::isfinite(ax) || !std::isfinite(ay) || !std::isfinite(bx) || !std::isfinite(by))
+        return;
+    // Coverage ends half a pixel outside the radius.
+    const float reach = std::max({ar, br, kMinRadius}) + 0.5f;
+    const int x0 = std::max(m_clip.left(), int(std::floor(std::min(ax, bx) - reach)));
+    const int x1 = std::min(m_clip.right(), int(std::ceil(std::max(ax, bx) + reach)));
+    const int y0 = std::max(m_clip.top(), int(std::floor(std::min(ay, by) - reach)));
+    const int y1 = std::min(m_clip.bottom(), int(std::ceil(std::max(ay, by) + reach)));
+    if (x0 > x1 || y0 > y1)
+        return;
+    touch(x0 - m_clip.left(), y0 - m_clip.top(), x1 - m_clip.left(), y1 - m_clip.top());
+    const float dx = bx - ax, dy = by - ay, dr = br - ar;
+    const float len2 = dx * dx + dy * dy;
+    const float inv = len2 > 1e-12f ? 1.0f / len2 : 0.0f;
+    const int n = x1 - x0 + 1;
+    for (int y = y0; y <= y1; ++y) {
+        std::uint8_t *row = m_mask.data() + std::size_t(y - m_clip.top()) * std::size_t(m_width) +
+                            std::size_t(x0 - m_clip.left());
+        const float py = float(y) + 0.5f - ay;
+        const float px0 = float(x0) + 0.5f - ax;
+        int i = 0;
+#if defined(__SSE2__)
+        i = coverSse(row, n, px0, py, dx, dy, inv, ar, dr);
+#endif
+        for (; i < n; ++i)
+            row[i] = std::max(row[i], coverage(px0 + float(i), py, dx, dy, inv, ar, dr));
+    }
+}
+
+void StrokeRaster::composite(QRgb color, qreal opacity)
+{
+    // The source at full coverage: premultiplied, opacity folded into alpha.
+    const int alpha = int(std::lround(qAlpha(color) * std::clamp(opacity, 0.0, 1.0)));
+    const QRgb src = byteMul(qPremultiply(qRgba(qRed(color), qGreen(color), qBlue(color), 255)),
+                             std::uint32_t(alpha));
+    for (int t : m_tiles) {
+        m_touched[std::size_t(t)] = 0;
+        const int tx = (t % m_tilesX) * kTile, ty = (t / m_tilesX) * kTile;
+        const int xEnd = std::min(tx + kTile, m_width), yEnd = std::min(ty + kTile, m_height);
+        for (int y = ty; y < yEnd; ++y) {
+            std::uint8_t *mask = m_mask.data() + std::size_t(y) * std::size_t(m_width);
+            auto *dst = reinterpret_cast<QRgb *>(m_bits + qsizetype(y + m_clip.top()) * m_stride) +
+                        m_clip.left();
+            for (int x = tx; x < xEnd; ++x) {
+                const std::uint32_t m = mask[x];
+                if (!m)
+                    continue;
+                mask[x] = 0;
+                const QRgb s = m == 255 ? src : byteMul(src, m);
+                dst[x] = s + byteMul(dst[x], 255 - qAlpha(s)); // source-over, premultiplied
+            }
+        }
+    }
+    m_tiles.clear();
+}
+
+} // namespace finbook::ui

@@ -1,0 +1,62 @@
+// A software rasterizer for the canvas's cached layers: each stroke is the union of
+// round-capped segments ("capsules") whose radius follows the pressure, which is exactly the
+// shape QPainter draws for a round-cap, round-join polyline. QPainter's stroker spends a few
+// microseconds per point building that outline; here a segment costs a few dozen pixel
+// evaluations, so a 50,000-point frame renders in milliseconds instead of ~150 ms.
+//
+// Coverage is antialiased from the distance to the segment; a stroke's capsules combine by
+// maximum coverage in a mask before the stroke is composited once (source-over), so joints
+// never double-blend and translucent colours look as QPainter draws them.
+#pragma once
+
+#include <finbook/model/render.h>
+
+#include <QImage>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace finbook::ui {
+
+class StrokeRaster {
+public:
+    // Draws into `image` (Format_ARGB32_Premultiplied), never outside `deviceClip`. A canvas
+    // point p lands at p * scale + offset in device pixels.
+    StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale, const QPointF &offset);
+
+    void drawStroke(const std::vector<model::StrokePoint> &points, QRgb color, float width,
+                    qreal opacity);
+    // paintFrame()'s rules: hidden objects skipped unless options.showHidden, the tint
+    // replaces every colour, options.opacity applies per stroke. No background.
+    void drawFrame(const model::Frame &frame, const model::RenderOptions &options);
+
+    // Runs `draw` once per horizontal band of the clip, one band per core (up to 4), each on
+    // its own rasterizer: bands share no pixel, so the result equals one rasterizer's. Blocks
+    // until done; `draw` must only read what does not change meanwhile.
+    static void drawParallel(QImage *image, const QRect &deviceClip, qreal scale,
+                             const QPointF &offset,
+                             const std::function<void(StrokeRaster &)> &draw);
+
+private:
+    void capsule(float ax, float ay, float ar, float bx, float by, float br);
+    void touch(int x0, int y0, int x1, int y1);
+    void composite(QRgb color, qreal opacity);
+
+    uchar *m_bits;
+    qsizetype m_stride;
+    QRect m_clip;
+    float m_scale;
+    float m_ox;
+    float m_oy;
+    int m_width;
+    int m_height;
+    int m_tilesX;
+    // Coverage of the stroke being drawn, 0..255, over the clip rect (mask and tiles are in
+    // clip-relative coordinates).
+    std::vector<std::uint8_t> m_mask;
+    std::vector<std::uint8_t> m_touched; // per 8×8 tile: has coverage
+    std::vector<int> m_tiles;            // touched tile indices
+};
+
+} // namespace finbook::ui
