@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <polyclipping/clipper.hpp>
 
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -51,5 +52,17 @@ Expected<long, GeometryError> checkPoints(const Eigen::MatrixX2d &points, const 
                                           Eigen::RowVector2d &lo, Eigen::RowVector2d &hi);
 
 GeometryError error(GeometryErrorCode code, std::string message);
+
+// Clipper reports impossible input by throwing, and absurd input can exhaust memory; the
+// geometry layer reports both as values. fn returns an Expected<…, GeometryError>.
+template <class Fn> auto catchExceptions(Fn &&fn) -> decltype(fn())
+{
+    try {
+        return fn();
+    } catch (const std::exception &e) {
+        return unexpected(error(GeometryErrorCode::ClippingFailed,
+                                std::string("Combining the outlines failed: ") + e.what()));
+    }
+}
 
 } // namespace finbook::geometry::detail

@@ -80,10 +80,8 @@ ClipperLib::PolyFillType clipperFill(FillRule rule)
     return rule == FillRule::EvenOdd ? ClipperLib::pftEvenOdd : ClipperLib::pftNonZero;
 }
 
-} // namespace
-
-Expected<Region, GeometryError> repairRings(const std::vector<Eigen::MatrixX2d> &rings,
-                                            const RepairOptions &options)
+Expected<Region, GeometryError> repairRingsUnguarded(const std::vector<Eigen::MatrixX2d> &rings,
+                                                     const RepairOptions &options)
 {
     if (!validOptions(options))
         return unexpected(error(GeometryErrorCode::InvalidOptions,
@@ -104,10 +102,11 @@ Expected<Region, GeometryError> repairRings(const std::vector<Eigen::MatrixX2d> 
     return finish(combined, options, frame);
 }
 
-Expected<Region, GeometryError> repairRegion(const Region &region, const RepairOptions &options)
+Expected<Region, GeometryError> repairRegionUnguarded(const Region &region,
+                                                      const RepairOptions &options)
 {
     if (!validOptions(options))
-        return repairRings({}, options);
+        return repairRingsUnguarded({}, options);
     const auto checked = checkRings(regionRings(region));
     if (!checked)
         return unexpected(checked.error());
@@ -127,6 +126,19 @@ Expected<Region, GeometryError> repairRegion(const Region &region, const RepairO
         combined.insert(combined.end(), simple.begin(), simple.end());
     }
     return finish(combined, options, frame);
+}
+
+} // namespace
+
+Expected<Region, GeometryError> repairRings(const std::vector<Eigen::MatrixX2d> &rings,
+                                            const RepairOptions &options)
+{
+    return detail::catchExceptions([&] { return repairRingsUnguarded(rings, options); });
+}
+
+Expected<Region, GeometryError> repairRegion(const Region &region, const RepairOptions &options)
+{
+    return detail::catchExceptions([&] { return repairRegionUnguarded(region, options); });
 }
 
 } // namespace finbook::geometry

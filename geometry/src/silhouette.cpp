@@ -121,10 +121,8 @@ ClipperLib::Paths outerRingsOnly(const ClipperLib::PolyTree &tree)
     return outer;
 }
 
-} // namespace
-
-Expected<Region, GeometryError> silhouette(const std::vector<StrokeInput> &strokes,
-                                           const SilhouetteOptions &options)
+Expected<Region, GeometryError> computeSilhouette(const std::vector<StrokeInput> &strokes,
+                                                  const SilhouetteOptions &options)
 {
     const auto finiteIn = [](double v, double hi) { return std::isfinite(v) && v >= 0 && v <= hi; };
     if (!finiteIn(options.margin, kMaxPenWidth) || !finiteIn(options.gap, kMaxPenWidth) ||
@@ -163,6 +161,14 @@ Expected<Region, GeometryError> silhouette(const std::vector<StrokeInput> &strok
     if (region.empty() || !(regionArea(region) > 0.0))
         return unexpected(error(GeometryErrorCode::DegenerateRegion, "The strokes cover no area."));
     return region;
+}
+
+} // namespace
+
+Expected<Region, GeometryError> silhouette(const std::vector<StrokeInput> &strokes,
+                                           const SilhouetteOptions &options)
+{
+    return detail::catchExceptions([&] { return computeSilhouette(strokes, options); });
 }
 
 } // namespace finbook::geometry

@@ -15,6 +15,7 @@ enum class GeometryErrorCode {
     DegenerateRegion,     // the input covers no area (e.g. zero width and zero margin)
     NotSimple,            // a ring self-intersects or rings cross (meshRegion precondition)
     TriangulationFailed,  // CGAL or OpenMesh refused the region (reported, never thrown)
+    ClippingFailed,       // Clipper refused the outlines or memory ran out (reported, not thrown)
 };
 
 struct GeometryError {

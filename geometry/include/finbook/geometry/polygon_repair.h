@@ -32,7 +32,7 @@ struct RepairOptions {
 // All rings together form one polygon, combined by options.fillRule. Rings are m×2 (any
 // orientation, implicitly closed); non-finite rows are dropped.
 // Errors: EmptyInput (nothing finite), CoordinateOutOfRange, TooManyPoints, InvalidOptions,
-// DegenerateRegion (no area left).
+// DegenerateRegion (no area left), ClippingFailed (should never happen; reported, not thrown).
 // Promise: isSimple(result, Touching::AllowedAtPoints), outer rings positive, holes negative
 // (region.h).
 Expected<Region, GeometryError> repairRings(const std::vector<Eigen::MatrixX2d> &rings,

@@ -38,7 +38,8 @@ struct SilhouetteOptions {
 };
 
 // Errors: EmptyInput (no strokes, no finite point), InvalidWidth, InvalidOptions,
-// CoordinateOutOfRange, TooManyPoints, DegenerateRegion (zero width and zero margin).
+// CoordinateOutOfRange, TooManyPoints, DegenerateRegion (zero width and zero margin),
+// ClippingFailed (should never happen; reported instead of thrown).
 // Promise: isSimple(result, Touching::AllowedAtPoints), outer rings positive and holes negative
 // (region.h), no NaN.
 Expected<Region, GeometryError> silhouette(const std::vector<StrokeInput> &strokes,
