@@ -9,6 +9,7 @@
 #include <finbook/ui/shortcuts_dialog.h>
 #include <finbook/ui/tool_pen.h>
 
+#include <QDir>
 #include <QFile>
 #include <QSignalSpy>
 #include <QtTest>
@@ -24,6 +25,7 @@ public:
     int prompts = 0;
     QMessageBox::StandardButton answer = QMessageBox::Cancel;
     QString savePath;
+    QString exportFolder;
 
 protected:
     void reportError(const QString &, const QString &message) override
@@ -38,7 +40,7 @@ protected:
     }
     QString askSavePath() override { return savePath; }
     QString askOpenPath() override { return {}; }
-    QString askExportFolder() override { return {}; }
+    QString askExportFolder() override { return exportFolder; }
 };
 
 } // namespace
@@ -281,9 +283,22 @@ void TestMainWindow::editActionsFollowSelection()
 
 void TestMainWindow::exportFramesWritesPngs()
 {
-    // The export folder comes from askExportFolder(); an empty answer writes nothing.
+    m_window->action(QStringLiteral("file.export"))->trigger(); // no folder chosen: nothing
+    QVERIFY(m_window->errors.isEmpty());
+    drawStroke();
+    m_window->action(QStringLiteral("frame.duplicate"))->trigger();
+    QCOMPARE(m_window->document()->frameCount(), 2);
+    m_window->exportFolder = m_dir.filePath(QStringLiteral("png"));
+    QVERIFY(QDir().mkpath(m_window->exportFolder));
     m_window->action(QStringLiteral("file.export"))->trigger();
     QVERIFY(m_window->errors.isEmpty());
+    const QImage first(QDir(m_window->exportFolder).filePath(QStringLiteral("frame_0001.png")));
+    const QImage second(QDir(m_window->exportFolder).filePath(QStringLiteral("frame_0002.png")));
+    QCOMPARE(first.size(), m_window->document()->settings().canvasSize);
+    QCOMPARE(second.size(), first.size());
+    m_window->exportFolder = m_dir.filePath(QStringLiteral("no/such/folder"));
+    m_window->action(QStringLiteral("file.export"))->trigger();
+    QCOMPARE(m_window->errors.size(), 1); // a sentence, not a crash
 }
 
 QTEST_MAIN(TestMainWindow)

@@ -74,7 +74,10 @@ void MainWindow::createCanvasAndTools()
     addTool(std::make_unique<StrokeEraserTool>());
     addTool(std::make_unique<SelectTool>());
     addTool(std::make_unique<HandTool>());
-    addToolBar(Qt::TopToolBarArea, new BrushToolBar(m_pen, this));
+    auto *brush = new BrushToolBar(m_pen, this);
+    addToolBar(Qt::TopToolBarArea, brush);
+    m_docksMenu->addAction(m_toolsBar->toggleViewAction());
+    m_docksMenu->addAction(brush->toggleViewAction());
 }
 
 QAction *MainWindow::addTool(std::unique_ptr<CanvasTool> tool)
@@ -138,8 +141,12 @@ void MainWindow::createStatusBar()
     m_zoomLabel = new QLabel(this);
     m_cursorLabel = new QLabel(this);
     m_cursorLabel->setMinimumWidth(110);
-    for (QLabel *label : {m_toolLabel, m_frameLabel, m_zoomLabel, m_cursorLabel})
+    for (QLabel *label : {m_toolLabel, m_frameLabel, m_zoomLabel, m_cursorLabel}) {
+        label->setContentsMargins(8, 0, 8, 0);
+        label->setAlignment(Qt::AlignCenter);
         statusBar()->addPermanentWidget(label);
+    }
+    m_zoomLabel->setMinimumWidth(60);
     connectStatus();
     updateStatus();
 }

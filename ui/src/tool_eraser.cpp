@@ -16,7 +16,8 @@ StrokeEraserTool::StrokeEraserTool(QObject *parent)
 
 QIcon StrokeEraserTool::icon() const
 {
-    return QIcon::fromTheme(QStringLiteral("draw-eraser"));
+    return QIcon::fromTheme(QStringLiteral("draw-eraser"),
+                            QIcon(QStringLiteral(":/icons/tool_eraser.svg")));
 }
 
 void StrokeEraserTool::press(const ToolEvent &event)

@@ -29,7 +29,8 @@ PenTool::PenTool(QObject *parent)
 
 QIcon PenTool::icon() const
 {
-    return QIcon::fromTheme(QStringLiteral("draw-freehand"));
+    return QIcon::fromTheme(QStringLiteral("draw-freehand"),
+                            QIcon(QStringLiteral(":/icons/tool_pen.svg")));
 }
 
 void PenTool::setSettings(const PenSettings &settings)

@@ -42,7 +42,8 @@ SelectTool::SelectTool(QObject *parent)
 
 QIcon SelectTool::icon() const
 {
-    return QIcon::fromTheme(QStringLiteral("edit-select-lasso"));
+    return QIcon::fromTheme(QStringLiteral("edit-select-lasso"),
+                            QIcon(QStringLiteral(":/icons/tool_select.svg")));
 }
 
 QRectF SelectTool::selectionBounds() const

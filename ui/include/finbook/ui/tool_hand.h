@@ -14,7 +14,11 @@ public:
 
     QString id() const override { return QStringLiteral("tool.hand"); }
     QString name() const override { return tr("Hand"); }
-    QIcon icon() const override { return QIcon::fromTheme(QStringLiteral("transform-browse")); }
+    QIcon icon() const override
+    {
+        return QIcon::fromTheme(QStringLiteral("transform-browse"),
+                                QIcon(QStringLiteral(":/icons/tool_hand.svg")));
+    }
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_H); }
     QCursor cursor() const override
     {
