@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <thread>
 
 namespace finbook::ui {
@@ -102,24 +103,19 @@ void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal sc
     const QRect clip = deviceClip.intersected(image->rect());
     if (clip.isEmpty())
         return;
-    image->bits(); // detach here, never in the workers
-    // Horizontal bands share no pixel, so each keeps the strokes' order exactly.
+    // Horizontal bands share no pixel, so each keeps the strokes' order exactly. The
+    // rasterizers are built here: QImage::bits() detaches and must not run in the workers.
     const int bands = std::clamp(int(std::thread::hardware_concurrency()), 1, 4);
     const int step = (clip.height() + bands - 1) / bands;
-    std::vector<std::thread> workers;
-    for (int b = 1; b < bands; ++b) {
-        const QRect band(clip.left(), clip.top() + b * step, clip.width(),
-                         std::min(step, clip.bottom() + 1 - (clip.top() + b * step)));
-        if (band.height() > 0)
-            workers.emplace_back([=, &draw] {
-                StrokeRaster raster(image, band, scale, offset);
-                draw(raster);
-            });
+    std::vector<std::unique_ptr<StrokeRaster>> rasters;
+    for (int top = clip.top(); top <= clip.bottom(); top += step) {
+        const QRect band(clip.left(), top, clip.width(), std::min(step, clip.bottom() + 1 - top));
+        rasters.push_back(std::make_unique<StrokeRaster>(image, band, scale, offset));
     }
-    StrokeRaster first(image,
-                       QRect(clip.left(), clip.top(), clip.width(), std::min(step, clip.height())),
-                       scale, offset);
-    draw(first);
+    std::vector<std::thread> workers;
+    for (std::size_t b = 1; b < rasters.size(); ++b)
+        workers.emplace_back([&draw, raster = rasters[b].get()] { draw(*raster); });
+    draw(*rasters.front());
     for (std::thread &w : workers)
         w.join();
 }
