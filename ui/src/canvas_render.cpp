@@ -101,8 +101,6 @@ void CanvasWidget::invalidateCache()
 {
     m_frameLayerValid = false;
     m_onionLayerValid = false;
-    m_frameLayer = QImage();
-    m_onionLayer = QImage();
 }
 
 void CanvasWidget::setSuppressedStrokes(std::vector<model::Id> strokeIds)
@@ -128,10 +126,14 @@ QRectF CanvasWidget::pageRect() const
         QRectF(QPointF(0, 0), QSizeF(document()->settings().canvasSize)));
 }
 
-QImage CanvasWidget::newLayerImage() const
+QImage CanvasWidget::newLayerImage(QImage recycled) const
 {
+    // Reusing the old layer's buffer spares a 4 MB allocation and its page faults per render.
     const qreal dpr = devicePixelRatioF();
-    QImage image((QSizeF(size()) * dpr).toSize(), QImage::Format_ARGB32_Premultiplied);
+    const QSize size = (QSizeF(this->size()) * dpr).toSize();
+    QImage image = recycled.size() == size && recycled.isDetached()
+                       ? std::move(recycled)
+                       : QImage(size, QImage::Format_ARGB32_Premultiplied);
     image.setDevicePixelRatio(dpr);
     image.fill(Qt::transparent);
     return image;
@@ -148,9 +150,9 @@ void CanvasWidget::rasterize(QImage &image, const std::function<void(StrokeRaste
     StrokeRaster::drawParallel(&image, clip, m_zoom * dpr, m_offset * dpr, draw);
 }
 
-QImage CanvasWidget::renderFrameLayer() const
+QImage CanvasWidget::renderFrameLayer(QImage recycled) const
 {
-    QImage image = newLayerImage();
+    QImage image = newLayerImage(std::move(recycled));
     const model::Frame *frame = m_state->currentFrame();
     if (!frame)
         return image;
@@ -163,9 +165,9 @@ QImage CanvasWidget::renderFrameLayer() const
     return image;
 }
 
-QImage CanvasWidget::renderOnionLayer() const
+QImage CanvasWidget::renderOnionLayer(QImage recycled) const
 {
-    QImage image = newLayerImage();
+    QImage image = newLayerImage(std::move(recycled));
     const OnionSkin &onion = m_state->onionSkin();
     const int current = m_state->currentFrameIndex();
     const model::Document *doc = document();
@@ -204,12 +206,12 @@ void CanvasWidget::ensureLayers()
         m_onionLayerValid = false;
     }
     if (!m_frameLayerValid) {
-        m_frameLayer = renderFrameLayer();
+        m_frameLayer = renderFrameLayer(std::move(m_frameLayer));
         m_frameLayerValid = true;
     }
     const bool onionShown = m_state->onionSkin().enabled && !m_state->isPlaying();
     if (onionShown && !m_onionLayerValid) {
-        m_onionLayer = renderOnionLayer();
+        m_onionLayer = renderOnionLayer(std::move(m_onionLayer));
         m_onionLayerValid = true;
     }
 }

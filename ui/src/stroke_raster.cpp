@@ -80,7 +80,7 @@ int coverSse(std::uint8_t *row, int n, float px0, float py, float dx, float dy, 
 } // namespace
 
 StrokeRaster::StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale,
-                           const QPointF &offset)
+                           const QPointF &offset, std::vector<std::uint8_t> recycledMask)
     : m_bits(image->bits())
     , m_stride(image->bytesPerLine())
     , m_clip(deviceClip.intersected(image->rect()))
@@ -92,7 +92,9 @@ StrokeRaster::StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale,
     , m_tilesX((m_width + kTile - 1) / kTile)
 {
     const int tilesY = (m_height + kTile - 1) / kTile;
-    m_mask.assign(std::size_t(m_width) * std::size_t(m_height), 0);
+    m_mask = std::move(recycledMask);
+    if (m_mask.size() < std::size_t(m_width) * std::size_t(m_height))
+        m_mask.assign(std::size_t(m_width) * std::size_t(m_height), 0);
     m_touched.assign(std::size_t(m_tilesX) * std::size_t(tilesY), 0);
 }
 
@@ -107,10 +109,17 @@ void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal sc
     // rasterizers are built here: QImage::bits() detaches and must not run in the workers.
     const int bands = std::clamp(int(std::thread::hardware_concurrency()), 1, 4);
     const int step = (clip.height() + bands - 1) / bands;
+    // Masks are kept between calls (a fresh megabyte costs page faults on every repaint);
+    // they come back all zero because composite() clears every pixel a stroke touched.
+    static std::vector<std::vector<std::uint8_t>> pool;
     std::vector<std::unique_ptr<StrokeRaster>> rasters;
     for (int top = clip.top(); top <= clip.bottom(); top += step) {
         const QRect band(clip.left(), top, clip.width(), std::min(step, clip.bottom() + 1 - top));
-        rasters.push_back(std::make_unique<StrokeRaster>(image, band, scale, offset));
+        std::vector<std::uint8_t> mask;
+        if (rasters.size() < pool.size())
+            mask = std::move(pool[rasters.size()]);
+        rasters.push_back(
+            std::make_unique<StrokeRaster>(image, band, scale, offset, std::move(mask)));
     }
     std::vector<std::thread> workers;
     for (std::size_t b = 1; b < rasters.size(); ++b)
@@ -118,6 +127,9 @@ void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal sc
     draw(*rasters.front());
     for (std::thread &w : workers)
         w.join();
+    pool.resize(std::max(pool.size(), rasters.size()));
+    for (std::size_t b = 0; b < rasters.size(); ++b)
+        pool[b] = std::move(rasters[b]->m_mask);
 }
 
 void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptions &options)
@@ -187,11 +199,15 @@ void StrokeRaster::capsule(float ax, float ay, float ar, float bx, float by, flo
     const float dx = bx - ax, dy = by - ay, dr = br - ar;
     const float len2 = dx * dx + dy * dy;
     const float inv = len2 > 1e-12f ? 1.0f / len2 : 0.0f;
-    const int n = x1 - x0 + 1;
+    // Whole groups of four for the vector loop: pixels past x1 lie beyond the reach, so they
+    // get zero coverage and leave the mask (and the untouched tiles) as they were.
+    int n = (x1 - x0 + 4) & ~3;
+    if (x0 + n - 1 > m_clip.right())
+        n = x1 - x0 + 1;
     for (int y = y0; y <= y1; ++y) {
+        const float py = float(y) + 0.5f - ay;
         std::uint8_t *row = m_mask.data() + std::size_t(y - m_clip.top()) * std::size_t(m_width) +
                             std::size_t(x0 - m_clip.left());
-        const float py = float(y) + 0.5f - ay;
         const float px0 = float(x0) + 0.5f - ax;
         int i = 0;
 #if defined(__SSE2__)
@@ -214,6 +230,12 @@ void StrokeRaster::composite(QRgb color, qreal opacity)
         const int xEnd = std::min(tx + kTile, m_width), yEnd = std::min(ty + kTile, m_height);
         for (int y = ty; y < yEnd; ++y) {
             std::uint8_t *mask = m_mask.data() + std::size_t(y) * std::size_t(m_width);
+            if (xEnd - tx == kTile) { // most tile rows of a thin stroke are empty
+                std::uint64_t word;
+                std::memcpy(&word, mask + tx, sizeof word);
+                if (!word)
+                    continue;
+            }
             auto *dst = reinterpret_cast<QRgb *>(m_bits + qsizetype(y + m_clip.top()) * m_stride) +
                         m_clip.left();
             for (int x = tx; x < xEnd; ++x) {

@@ -23,7 +23,9 @@ class StrokeRaster {
 public:
     // Draws into `image` (Format_ARGB32_Premultiplied), never outside `deviceClip`. A canvas
     // point p lands at p * scale + offset in device pixels.
-    StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale, const QPointF &offset);
+    // `recycledMask` may hand over an all-zero mask from an earlier rasterizer to reuse.
+    StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale, const QPointF &offset,
+                 std::vector<std::uint8_t> recycledMask = {});
 
     void drawStroke(const std::vector<model::StrokePoint> &points, QRgb color, float width,
                     qreal opacity);
@@ -33,7 +35,8 @@ public:
 
     // Runs `draw` once per horizontal band of the clip, one band per core (up to 4), each on
     // its own rasterizer: bands share no pixel, so the result equals one rasterizer's. Blocks
-    // until done; `draw` must only read what does not change meanwhile.
+    // until done; `draw` must only read what does not change meanwhile. GUI thread only (it
+    // keeps its masks for the next call).
     static void drawParallel(QImage *image, const QRect &deviceClip, qreal scale,
                              const QPointF &offset,
                              const std::function<void(StrokeRaster &)> &draw);

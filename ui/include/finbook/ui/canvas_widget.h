@@ -72,7 +72,7 @@ public:
     // Repaints the widget area covering `canvasRect` (an empty rect repaints everything).
     void updateCanvasRect(const QRectF &canvasRect = {});
     void postMessage(const QString &message);
-    // Drops the cached frame and onion images (the repaint benchmark's cold case).
+    // Marks the cached frame and onion images stale (the repaint benchmark's cold case).
     void invalidateCache();
 
 signals:
@@ -103,9 +103,9 @@ private:
     void invalidateFrameLayer();
     void invalidateOnionLayer();
     void ensureLayers();
-    QImage renderFrameLayer() const;
-    QImage renderOnionLayer() const;
-    QImage newLayerImage() const;
+    QImage renderFrameLayer(QImage recycled) const;
+    QImage renderOnionLayer(QImage recycled) const;
+    QImage newLayerImage(QImage recycled) const;
     void rasterize(QImage &image, const std::function<void(StrokeRaster &)> &draw) const;
     QRectF pageRect() const; // the page in widget coordinates
     void paintPage(QPainter &painter) const;
