@@ -49,6 +49,7 @@ MainWindow::MainWindow(QWidget *parent)
     setCentralWidget(m_canvas);
     createActions();
     createCanvasAndTools();
+    createDeformation();
     createDocks();
     createStatusBar();
     readSettings();

@@ -32,6 +32,7 @@ namespace finbook::ui {
 
 class CanvasTool;
 class CanvasWidget;
+class DeformActions;
 class EditorState;
 class FrameActions;
 class ObjectActions;
@@ -87,6 +88,7 @@ protected:
 private:
     // main_window.cpp
     void createCanvasAndTools();
+    void createDeformation();
     void createDocks();
     void createStatusBar();
     void connectStatus();
@@ -127,6 +129,7 @@ private:
     FrameActions *m_frameActions = nullptr;
     ObjectActions *m_objectActions = nullptr;
     PlaybackController *m_playback = nullptr;
+    DeformActions *m_deform = nullptr;
     Preferences m_prefs;
     QString m_path;
 

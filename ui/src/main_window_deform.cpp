@@ -1,0 +1,59 @@
+// The main window's deformation parts: the Pin tool, Show Mesh, the Deform menu and toolbar,
+// and a busy indicator while a precompute runs on the worker thread.
+#include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/deform_actions.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/main_window.h>
+#include <finbook/ui/mesh_overlay.h>
+#include <finbook/ui/shortcut_registry.h>
+#include <finbook/ui/tool_pin.h>
+
+#include <QDoubleSpinBox>
+#include <QMenu>
+#include <QMenuBar>
+#include <QProgressBar>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace finbook::ui {
+
+void MainWindow::createDeformation()
+{
+    m_deform = new DeformActions(m_state, this);
+    model::DeformController *controller = m_deform->controller();
+    addTool(std::make_unique<PinTool>(controller));
+    m_canvas->addOverlay(std::make_unique<MeshOverlay>(m_state, controller, m_canvas));
+
+    auto *menu = new QMenu(tr("&Deform"), this);
+    menuBar()->insertMenu(m_toolsMenu->menuAction(), menu);
+    for (QAction *a : m_deform->actions()) {
+        menu->addAction(a);
+        m_shortcuts->registerAction(a);
+    }
+
+    auto *bar = new QToolBar(tr("Deform"), this);
+    bar->setObjectName(QStringLiteral("deformToolBar"));
+    bar->addWidget(m_deform->createDensitySpinBox(bar));
+    bar->addActions(m_deform->actions());
+    addToolBar(Qt::TopToolBarArea, bar);
+    m_docksMenu->addAction(bar->toggleViewAction());
+
+    // Busy: an indeterminate bar while the worker prepares meshes and factorizations. The
+    // window stays usable; pins can be dragged and the drawing catches up when it is ready.
+    auto *busy = new QProgressBar(this);
+    busy->setObjectName(QStringLiteral("deformBusy"));
+    busy->setRange(0, 0);
+    busy->setMaximumWidth(90);
+    busy->setToolTip(tr("Preparing the deformation…"));
+    busy->hide();
+    statusBar()->addWidget(busy);
+    connect(controller, &model::DeformController::busyChanged, busy, &QWidget::setVisible);
+    connect(m_deform, &DeformActions::messagePosted, this, [this](const QString &message) {
+        if (message.isEmpty())
+            statusBar()->clearMessage();
+        else
+            statusBar()->showMessage(message, 6000);
+    });
+}
+
+} // namespace finbook::ui
