@@ -132,6 +132,12 @@ void TestPinTool::addDragRemoveWithUndo()
     QCOMPARE(fx.object().pins.size(), std::size_t(2));
     QCOMPARE(fx.object().pins[1], removed);
 
+    // A right-click does the same.
+    QTest::mouseClick(&fx.canvas, Qt::RightButton, {}, fx.at(removed.target));
+    QCOMPARE(fx.object().pins.size(), std::size_t(1));
+    stack->undo();
+    QCOMPARE(fx.object().pins.size(), std::size_t(2));
+
     // Undo everything: no pins, no pose.
     while (stack->canUndo())
         stack->undo();

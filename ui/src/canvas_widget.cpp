@@ -235,6 +235,8 @@ void CanvasWidget::mousePressEvent(QMouseEvent *event)
         beginDrag(e, true);
     else if (event->button() == Qt::LeftButton)
         beginDrag(e, false);
+    else if (event->button() == Qt::RightButton && m_tool)
+        m_tool->secondaryClick(e);
 }
 
 void CanvasWidget::mouseMoveEvent(QMouseEvent *event)

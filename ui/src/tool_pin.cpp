@@ -164,6 +164,12 @@ void PinTool::press(const ToolEvent &event)
     startDrag(added);
 }
 
+void PinTool::secondaryClick(const ToolEvent &event)
+{
+    if (const PinRef hit = pinAt(event); hit.isValid())
+        removePin(hit);
+}
+
 void PinTool::move(const ToolEvent &event)
 {
     // A click without movement must not leave a "Move Pin" step behind.

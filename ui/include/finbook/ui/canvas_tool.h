@@ -65,6 +65,9 @@ public:
     virtual void move(const ToolEvent &) {}
     virtual void release(const ToolEvent &) {}
     virtual void hover(const ToolEvent &) {}
+    // A right-button press outside any drag: the tool's context action (the Pin tool removes
+    // the pin under the cursor). Not part of a drag; no move or release follows.
+    virtual void secondaryClick(const ToolEvent &) {}
     // Keys while the canvas has focus; return true when consumed (e.g. Escape cancels).
     virtual bool keyPress(QKeyEvent *) { return false; }
 

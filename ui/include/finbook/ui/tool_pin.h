@@ -25,6 +25,7 @@ public:
     void move(const ToolEvent &event) override;
     void release(const ToolEvent &event) override;
     void hover(const ToolEvent &event) override;
+    void secondaryClick(const ToolEvent &event) override;
     void paintOverlay(QPainter &painter, const QTransform &canvasToWidget) override;
 
     struct PinRef {
