@@ -1,3 +1,5 @@
+#include "id_mime.h"
+
 #include <finbook/model/commands.h>
 #include <finbook/model/frame_list_model.h>
 
@@ -181,34 +183,12 @@ QStringList FrameListModel::mimeTypes() const
 
 QMimeData *FrameListModel::mimeData(const QModelIndexList &indexes) const
 {
-    QByteArray bytes;
-    QDataStream out(&bytes, QIODevice::WriteOnly);
+    std::vector<Id> ids;
     for (const QModelIndex &i : indexes)
         if (i.isValid())
-            out << quint64(frameId(i.row()));
-    auto *mime = new QMimeData;
-    mime->setData(QString::fromLatin1(kMimeType), bytes);
-    return mime;
+            ids.push_back(frameId(i.row()));
+    return idsToMime(kMimeType, ids);
 }
-
-namespace {
-std::vector<Id> decodeIds(const QMimeData *data)
-{
-    std::vector<Id> ids;
-    if (!data)
-        return ids;
-    const QByteArray bytes = data->data(QString::fromLatin1(FrameListModel::kMimeType));
-    QDataStream in(bytes);
-    while (!in.atEnd()) {
-        quint64 id = 0;
-        in >> id;
-        if (in.status() != QDataStream::Ok)
-            break;
-        ids.push_back(Id(id));
-    }
-    return ids;
-}
-} // namespace
 
 int FrameListModel::dropTarget(int row, const QModelIndex &parent) const
 {
@@ -222,7 +202,7 @@ bool FrameListModel::canDropMimeData(const QMimeData *data, Qt::DropAction actio
 {
     if (action != Qt::MoveAction || !data || !data->hasFormat(QString::fromLatin1(kMimeType)))
         return false;
-    const std::vector<Id> ids = decodeIds(data);
+    const std::vector<Id> ids = idsFromMime(data, kMimeType);
     return ids.size() == 1 && rowOfFrame(ids.front()) >= 0;
 }
 
@@ -231,7 +211,7 @@ bool FrameListModel::dropMimeData(const QMimeData *data, Qt::DropAction action, 
 {
     if (!canDropMimeData(data, action, row, column, parent))
         return false;
-    const int from = rowOfFrame(decodeIds(data).front());
+    const int from = rowOfFrame(idsFromMime(data, kMimeType).front());
     int slot = dropTarget(row, parent);
     if (parent.isValid() && slot > from)
         ++slot; // onto a frame to the right: land after it, where it was

@@ -1,3 +1,5 @@
+#include "id_mime.h"
+
 #include <finbook/model/commands.h>
 #include <finbook/model/object_list_model.h>
 
@@ -235,40 +237,19 @@ QStringList ObjectListModel::mimeTypes() const
 
 QMimeData *ObjectListModel::mimeData(const QModelIndexList &indexes) const
 {
-    QByteArray bytes;
-    QDataStream out(&bytes, QIODevice::WriteOnly);
+    std::vector<Id> ids;
     for (const QModelIndex &i : indexes)
         if (i.isValid())
-            out << quint64(groupId(i.row()));
-    auto *mime = new QMimeData;
-    mime->setData(QString::fromLatin1(kMimeType), bytes);
-    return mime;
+            ids.push_back(groupId(i.row()));
+    return idsToMime(kMimeType, ids);
 }
-
-namespace {
-std::vector<Id> decodeObjectIds(const QMimeData *data)
-{
-    std::vector<Id> ids;
-    if (!data)
-        return ids;
-    QDataStream in(data->data(QString::fromLatin1(ObjectListModel::kMimeType)));
-    while (!in.atEnd()) {
-        quint64 id = 0;
-        in >> id;
-        if (in.status() != QDataStream::Ok)
-            break;
-        ids.push_back(Id(id));
-    }
-    return ids;
-}
-} // namespace
 
 bool ObjectListModel::canDropMimeData(const QMimeData *data, Qt::DropAction action, int, int,
                                       const QModelIndex &) const
 {
     if (action != Qt::MoveAction || !data || !data->hasFormat(QString::fromLatin1(kMimeType)))
         return false;
-    const std::vector<Id> ids = decodeObjectIds(data);
+    const std::vector<Id> ids = idsFromMime(data, kMimeType);
     return ids.size() == 1 && rowOfGroup(ids.front()) >= 0;
 }
 
@@ -277,7 +258,7 @@ bool ObjectListModel::dropMimeData(const QMimeData *data, Qt::DropAction action,
 {
     if (!canDropMimeData(data, action, row, column, parent))
         return false;
-    const int from = rowOfGroup(decodeObjectIds(data).front());
+    const int from = rowOfGroup(idsFromMime(data, kMimeType).front());
     int slot = parent.isValid() ? parent.row() : (row < 0 ? rowCount() : row);
     if (parent.isValid() && slot > from)
         ++slot; // onto an object below: take its place
