@@ -77,6 +77,13 @@ Id makeArm(Document &doc)
     return g.id;
 }
 
+// Pins at both ends of the arm, at rest.
+void pinBothEnds(Document &doc, Id g)
+{
+    doc.undoStack()->push(new AddPinCommand(&doc, g, {100, 100}, {100, 100}));
+    doc.undoStack()->push(new AddPinCommand(&doc, g, {400, 100}, {400, 100}));
+}
+
 bool waitSolved(DeformController &controller, Id groupId)
 {
     QSignalSpy solved(&controller, &DeformController::poseSolved);
@@ -192,8 +199,7 @@ void TestDeformService::bakeMakesPoseTheRestAndUndoes()
     Document doc;
     const Id g = makeArm(doc);
     DeformController controller(&doc);
-    doc.undoStack()->push(new AddPinCommand(&doc, g, {100, 100}, {100, 100}));
-    doc.undoStack()->push(new AddPinCommand(&doc, g, {400, 100}, {400, 100}));
+    pinBothEnds(doc, g);
     QVERIFY(waitSolved(controller, g));
     doc.undoStack()->push(new MovePinCommand(&doc, g, doc.group(g)->pins[1].id, {380, 220}, 1));
     const QByteArray before = serializeFinbook(doc);
@@ -210,8 +216,7 @@ void TestDeformService::duplicatedFrameSharesSetupButNotPins()
     Document doc;
     const Id g = makeArm(doc);
     DeformController controller(&doc);
-    doc.undoStack()->push(new AddPinCommand(&doc, g, {100, 100}, {100, 100}));
-    doc.undoStack()->push(new AddPinCommand(&doc, g, {400, 100}, {400, 100}));
+    pinBothEnds(doc, g);
     QVERIFY(waitSolved(controller, g));
     doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frameAt(0).id, 1));
     const Id copy = doc.frameAt(1).groups[0].id;
@@ -233,8 +238,7 @@ void TestDeformService::reopenedFileContinuesWhereItStopped()
     const Id g = makeArm(doc);
     {
         DeformController controller(&doc);
-        doc.undoStack()->push(new AddPinCommand(&doc, g, {100, 100}, {100, 100}));
-        doc.undoStack()->push(new AddPinCommand(&doc, g, {400, 100}, {400, 100}));
+        pinBothEnds(doc, g);
         QVERIFY(waitSolved(controller, g));
         doc.undoStack()->push(new MovePinCommand(&doc, g, doc.group(g)->pins[1].id, {380, 200}, 1));
         QVERIFY(!saveFinbook(doc, path));
