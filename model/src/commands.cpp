@@ -8,10 +8,11 @@
 namespace finbook::model {
 
 namespace {
-QString trCommand(const char *text)
-{
-    return QCoreApplication::translate("Command", text);
-}
+// The translation context of these texts; a class so lupdate files the strings under
+// "Command" too.
+struct Command {
+    Q_DECLARE_TR_FUNCTIONS(Command)
+};
 } // namespace
 
 // --- strokes -----------------------------------------------------------------------------
@@ -23,7 +24,7 @@ AddStrokeCommand::AddStrokeCommand(Document *doc, Id groupId, StrokeDataPtr data
     , m_stroke{doc->allocateId(), std::move(data)}
     , m_index(index)
 {
-    setText(trCommand("Draw Stroke"));
+    setText(Command::tr("Draw Stroke"));
     const StrokeGroup *g = doc->group(groupId);
     if (!g || !m_stroke.data)
         setObsolete(true);
@@ -47,7 +48,7 @@ RemoveStrokeCommand::RemoveStrokeCommand(Document *doc, Id strokeId, QUndoComman
     : DocumentCommand(doc, parent)
     , m_strokeId(strokeId)
 {
-    setText(trCommand("Erase Stroke"));
+    setText(Command::tr("Erase Stroke"));
     if (!doc->locateStroke(strokeId).isValid())
         setObsolete(true);
 }
@@ -76,7 +77,7 @@ MoveStrokesCommand::MoveStrokesCommand(Document *doc, std::vector<Id> strokeIds,
     , m_strokeIds(std::move(strokeIds))
     , m_targetGroupId(targetGroupId)
 {
-    setText(trCommand("Move Strokes to Object"));
+    setText(Command::tr("Move Strokes to Object"));
     if (!doc->group(targetGroupId) || m_strokeIds.empty())
         setObsolete(true);
 }
@@ -173,7 +174,7 @@ AddObjectCommand::AddObjectCommand(Document *doc, Id frameId, int index, const Q
     , m_name(name)
     , m_groupId(doc->allocateId())
 {
-    setText(trCommand("New Object"));
+    setText(Command::tr("New Object"));
     const Frame *f = doc->frame(frameId);
     if (!f)
         setObsolete(true);
@@ -201,7 +202,7 @@ RemoveObjectCommand::RemoveObjectCommand(Document *doc, Id groupId, QUndoCommand
     : DocumentCommand(doc, parent)
     , m_groupId(groupId)
 {
-    setText(trCommand("Delete Object"));
+    setText(Command::tr("Delete Object"));
     if (!doc->group(groupId))
         setObsolete(true);
 }
@@ -230,7 +231,7 @@ RenameObjectCommand::RenameObjectCommand(Document *doc, Id groupId, const QStrin
     , m_groupId(groupId)
     , m_new(name)
 {
-    setText(trCommand("Rename Object"));
+    setText(Command::tr("Rename Object"));
     if (const StrokeGroup *g = doc->group(groupId))
         m_old = g->name;
     else
@@ -255,7 +256,7 @@ ReorderObjectCommand::ReorderObjectCommand(Document *doc, Id groupId, int toInde
     , m_groupId(groupId)
     , m_to(toIndex)
 {
-    setText(trCommand("Reorder Object"));
+    setText(Command::tr("Reorder Object"));
     const GroupLocation at = doc->locateGroup(groupId);
     if (!at.isValid()) {
         setObsolete(true);
@@ -286,9 +287,9 @@ SetObjectFlagCommand::SetObjectFlagCommand(Document *doc, Id groupId, ObjectFlag
     , m_new(value)
 {
     if (flag == ObjectFlag::Visible)
-        setText(value ? trCommand("Show Object") : trCommand("Hide Object"));
+        setText(value ? Command::tr("Show Object") : Command::tr("Hide Object"));
     else
-        setText(value ? trCommand("Lock Object") : trCommand("Unlock Object"));
+        setText(value ? Command::tr("Lock Object") : Command::tr("Unlock Object"));
     const StrokeGroup *g = doc->group(groupId);
     if (!g)
         setObsolete(true);
@@ -321,11 +322,11 @@ InsertFrameCommand::InsertFrameCommand(Document *doc, int index, QUndoCommand *p
     : DocumentCommand(doc, parent)
     , m_index(std::clamp(index, 0, doc->frameCount()))
 {
-    setText(trCommand("Insert Frame"));
+    setText(Command::tr("Insert Frame"));
     m_frame.id = doc->allocateId();
     StrokeGroup g;
     g.id = doc->allocateId();
-    g.name = trCommand("Object");
+    g.name = Command::tr("Object");
     m_frame.groups.push_back(std::move(g));
 }
 
@@ -344,7 +345,7 @@ DuplicateFrameCommand::DuplicateFrameCommand(Document *doc, Id sourceFrameId, in
     , m_sourceId(sourceFrameId)
     , m_index(index)
 {
-    setText(trCommand("Duplicate Frame"));
+    setText(Command::tr("Duplicate Frame"));
     const Frame *source = doc->frame(sourceFrameId);
     if (!source) {
         setObsolete(true);
@@ -389,7 +390,7 @@ DeleteFrameCommand::DeleteFrameCommand(Document *doc, Id frameId, QUndoCommand *
     : DocumentCommand(doc, parent)
     , m_frameId(frameId)
 {
-    setText(trCommand("Delete Frame"));
+    setText(Command::tr("Delete Frame"));
     if (doc->frameIndex(frameId) < 0)
         setObsolete(true);
 }
@@ -415,7 +416,7 @@ MoveFrameCommand::MoveFrameCommand(Document *doc, int from, int to, QUndoCommand
     , m_from(from)
     , m_to(to)
 {
-    setText(trCommand("Move Frame"));
+    setText(Command::tr("Move Frame"));
     const int n = doc->frameCount();
     if (from < 0 || from >= n || to < 0 || to >= n || from == to)
         setObsolete(true);
@@ -438,7 +439,7 @@ SetFrameHoldCommand::SetFrameHoldCommand(Document *doc, Id frameId, int hold, QU
     , m_frameId(frameId)
     , m_new(std::clamp(hold, 1, kMaxHold))
 {
-    setText(trCommand("Change Frame Exposure"));
+    setText(Command::tr("Change Frame Exposure"));
     if (const Frame *f = doc->frame(frameId))
         m_old = f->hold;
     else
@@ -476,7 +477,7 @@ ChangeSettingsCommand::ChangeSettingsCommand(Document *doc, const DocumentSettin
     , m_new(sanitizedSettings(settings))
     , m_old(doc->settings())
 {
-    setText(trCommand("Change Document Settings"));
+    setText(Command::tr("Change Document Settings"));
     if (m_new == m_old)
         setObsolete(true);
 }

@@ -8,10 +8,11 @@
 namespace finbook::model {
 
 namespace {
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Deformation", text);
-}
+// The translation context of these texts; a class so lupdate files the strings under
+// "Deformation" too.
+struct Deformation {
+    Q_DECLARE_TR_FUNCTIONS(Deformation)
+};
 
 std::vector<geometry::StrokeInput> strokeInputs(const MeshKey &key)
 {
@@ -69,12 +70,12 @@ bool DeformSetup::matches(const StrokeGroup &group) const
 Expected<std::shared_ptr<const MeshedObject>, QString> meshObject(const MeshKey &key)
 {
     if (key.strokes.empty())
-        return unexpected(tr("The object has no strokes to deform."));
+        return unexpected(Deformation::tr("The object has no strokes to deform."));
     geometry::MeshOptions options;
     options.density = key.density;
     auto mesh = geometry::buildObjectMesh(strokeInputs(key), options);
     if (!mesh)
-        return unexpected(tr("This drawing cannot be meshed for deformation: %1")
+        return unexpected(Deformation::tr("This drawing cannot be meshed for deformation: %1")
                               .arg(QString::fromStdString(mesh.error().message)));
     auto meshed = std::make_shared<MeshedObject>();
     meshed->mesh = std::move(*mesh);
@@ -97,7 +98,7 @@ buildDeformSetup(const DeformJob &job, const std::function<bool()> &cancelled)
         setup->meshed = *meshed;
     }
     if (cancelled && cancelled())
-        return unexpected(tr("Cancelled."));
+        return unexpected(Deformation::tr("Cancelled."));
     const Eigen::MatrixX2d &V = setup->meshed->mesh.V;
     setup->pinVertex.resize(job.pinRest.rows());
     for (Eigen::Index i = 0; i < job.pinRest.rows(); ++i)
@@ -106,7 +107,7 @@ buildDeformSetup(const DeformJob &job, const std::function<bool()> &cancelled)
         auto arap = deform::arapPrecompute(V, setup->meshed->mesh.F, setup->pinVertex, job.options,
                                            cancelled);
         if (!arap)
-            return unexpected(tr("The pins cannot be solved on this drawing: %1")
+            return unexpected(Deformation::tr("The pins cannot be solved on this drawing: %1")
                                   .arg(QString::fromStdString(arap.error().message)));
         setup->arap = *arap;
     }
@@ -132,13 +133,14 @@ Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &g
         }
         auto solved = deform::arapSolve(*setup.arap, bc, pose.vertices);
         if (!solved)
-            return unexpected(tr("The pins could not be solved: %1")
+            return unexpected(Deformation::tr("The pins could not be solved: %1")
                                   .arg(QString::fromStdString(solved.error().message)));
     }
     const Eigen::MatrixX2d points =
         geometry::applyEmbedding(setup.meshed->embedding, pose.vertices, mesh.F);
     if (!points.allFinite())
-        return unexpected(tr("The deformation produced invalid points; it was not applied."));
+        return unexpected(
+            Deformation::tr("The deformation produced invalid points; it was not applied."));
     auto strokes = std::make_shared<DeformedStrokes>();
     strokes->strokes.resize(group.strokes.size());
     const auto &offsets = setup.meshed->strokeOffsets;

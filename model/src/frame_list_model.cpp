@@ -13,10 +13,6 @@
 namespace finbook::model {
 
 namespace {
-QString trModel(const char *text)
-{
-    return QCoreApplication::translate("FrameListModel", text);
-}
 
 const QList<int> kPositionRoles{FrameListModel::FrameNumberRole, FrameListModel::InPlayRangeRole,
                                 Qt::ToolTipRole, Qt::AccessibleTextRole};
@@ -133,8 +129,8 @@ QVariant FrameListModel::data(const QModelIndex &index, int role) const
         return row >= m_doc->playFirst() && row <= m_doc->playLast();
     case Qt::ToolTipRole:
     case Qt::AccessibleTextRole:
-        return f->hold > 1 ? trModel("Frame %1, held for %2 frames").arg(row + 1).arg(f->hold)
-                           : trModel("Frame %1").arg(row + 1);
+        return f->hold > 1 ? tr("Frame %1, held for %2 frames").arg(row + 1).arg(f->hold)
+                           : tr("Frame %1").arg(row + 1);
     default:
         return {};
     }

@@ -6,10 +6,11 @@
 namespace finbook::model {
 
 namespace {
-QString trCommand(const char *text)
-{
-    return QCoreApplication::translate("Command", text);
-}
+// The translation context of these texts; a class so lupdate files the strings under
+// "Command" too.
+struct Command {
+    Q_DECLARE_TR_FUNCTIONS(Command)
+};
 
 // The source's strokes as they show now: a posed object contributes its deformed points.
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group)
@@ -34,7 +35,7 @@ MergeObjectsCommand::MergeObjectsCommand(Document *doc, Id sourceId, Id targetId
     , m_sourceId(sourceId)
     , m_targetId(targetId)
 {
-    setText(trCommand("Merge Objects"));
+    setText(Command::tr("Merge Objects"));
     const GroupLocation source = doc->locateGroup(sourceId);
     const GroupLocation target = doc->locateGroup(targetId);
     if (!source.isValid() || !target.isValid() || source.frame != target.frame ||

@@ -8,10 +8,11 @@
 namespace finbook::model {
 
 namespace {
-QString trCommand(const char *text)
-{
-    return QCoreApplication::translate("Command", text);
-}
+// The translation context of these texts; a class so lupdate files the strings under
+// "Command" too.
+struct Command {
+    Q_DECLARE_TR_FUNCTIONS(Command)
+};
 
 bool finitePoint(QPointF p)
 {
@@ -25,7 +26,7 @@ AddPinCommand::AddPinCommand(Document *doc, Id groupId, QPointF rest, QPointF ta
     , m_groupId(groupId)
     , m_pin{doc->allocateId(), rest, target}
 {
-    setText(trCommand("Add Pin"));
+    setText(Command::tr("Add Pin"));
     if (!doc->group(groupId) || !finitePoint(rest) || !finitePoint(target))
         setObsolete(true);
 }
@@ -53,7 +54,7 @@ RemovePinCommand::RemovePinCommand(Document *doc, Id groupId, Id pinId, QUndoCom
     , m_groupId(groupId)
     , m_pinId(pinId)
 {
-    setText(trCommand("Remove Pin"));
+    setText(Command::tr("Remove Pin"));
     const StrokeGroup *g = doc->group(groupId);
     if (!g || std::none_of(g->pins.begin(), g->pins.end(),
                            [pinId](const Pin &p) { return p.id == pinId; }))
@@ -84,7 +85,7 @@ MovePinCommand::MovePinCommand(Document *doc, Id groupId, Id pinId, QPointF targ
     , m_serial(dragSerial)
     , m_new(target)
 {
-    setText(trCommand("Move Pin"));
+    setText(Command::tr("Move Pin"));
     const StrokeGroup *g = doc->group(groupId);
     const auto it = g ? std::find_if(g->pins.begin(), g->pins.end(),
                                      [pinId](const Pin &p) { return p.id == pinId; })
@@ -129,7 +130,7 @@ ResetDeformationCommand::ResetDeformationCommand(Document *doc, Id groupId, QUnd
     : DocumentCommand(doc, parent)
     , m_groupId(groupId)
 {
-    setText(trCommand("Reset Deformation"));
+    setText(Command::tr("Reset Deformation"));
     const StrokeGroup *g = doc->group(groupId);
     if (!g || std::all_of(g->pins.begin(), g->pins.end(),
                           [](const Pin &p) { return p.rest == p.target; }))
@@ -158,7 +159,7 @@ BakeDeformationCommand::BakeDeformationCommand(Document *doc, Id groupId, QUndoC
     : DocumentCommand(doc, parent)
     , m_groupId(groupId)
 {
-    setText(trCommand("Apply Deformation"));
+    setText(Command::tr("Apply Deformation"));
     const StrokeGroup *g = doc->group(groupId);
     if (!g || !g->isDeformed() || g->deformed->strokes.size() != g->strokes.size()) {
         setObsolete(true);
@@ -200,7 +201,7 @@ SetMeshDensityCommand::SetMeshDensityCommand(Document *doc, Id groupId, double d
     , m_new(std::isfinite(density) ? std::clamp(density, kMinMeshDensity, kMaxMeshDensity)
                                    : kDefaultMeshDensity)
 {
-    setText(trCommand("Change Mesh Density"));
+    setText(Command::tr("Change Mesh Density"));
     if (const StrokeGroup *g = doc->group(groupId); g && g->meshDensity != m_new)
         m_old = g->meshDensity;
     else
