@@ -1,6 +1,7 @@
 // finbook-bench mesh FILE...: silhouette and meshing time, mesh size and quality, and the
 // cost of embedding points, for drawings (Quick, Draw! "strokes") and shapes ("contours") in
 // the formats of shared/data/README.md. One JSON object per file per line.
+#include "../geometry/geometry_test_support.h"
 #include "bench.h"
 
 #include <finbook/geometry/embedding.h>
@@ -22,6 +23,8 @@
 
 namespace {
 
+using namespace finbook::test;
+
 using namespace finbook::geometry;
 using Clock = std::chrono::steady_clock;
 
@@ -31,17 +34,6 @@ constexpr double kPenWidth = 3.0; // Quick, Draw! strokes carry no width
 double msSince(Clock::time_point start)
 {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-Eigen::MatrixX2d toMatrix(const QJsonArray &points)
-{
-    Eigen::MatrixX2d m(points.size(), 2);
-    for (qsizetype i = 0; i < points.size(); ++i) {
-        const QJsonArray p = points[i].toArray();
-        m(i, 0) = p[0].toDouble();
-        m(i, 1) = p[1].toDouble();
-    }
-    return m;
 }
 
 // A file is either strokes (meshed via silhouette) or contours (outer + holes, via repair).

@@ -1,5 +1,7 @@
 // Degenerate and hostile input: every case gives a typed error with a message, or the
 // documented fallback — never a crash, never NaN.
+#include "geometry_test_support.h"
+
 #include <finbook/geometry/embedding.h>
 #include <finbook/geometry/mesh_quality.h>
 #include <finbook/geometry/object_mesh.h>
@@ -15,18 +17,11 @@ using namespace finbook::geometry;
 
 namespace {
 
+using namespace finbook::test;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 using MeshResult = finbook::Expected<ObjectMesh, GeometryError>;
-
-Eigen::MatrixX2d rows(std::initializer_list<std::pair<double, double>> points)
-{
-    Eigen::MatrixX2d m(Eigen::Index(points.size()), 2);
-    Eigen::Index i = 0;
-    for (const auto &[x, y] : points)
-        m.row(i++) << x, y;
-    return m;
-}
 
 void expectError(const MeshResult &result, GeometryErrorCode code)
 {

@@ -1,5 +1,7 @@
 // Object meshes: the ObjectMesh promises, domain (notches and holes stay empty), lobes,
 // density, and agreement between V/F and the OpenMesh mesh.
+#include "geometry_test_support.h"
+
 #include <finbook/geometry/mesh_quality.h>
 #include <finbook/geometry/object_mesh.h>
 #include <finbook/geometry/polyline.h>
@@ -12,35 +14,7 @@ using namespace finbook::geometry;
 
 namespace {
 
-Eigen::MatrixX2d ellipse(int n, double rx, double ry, Eigen::RowVector2d c = {0, 0})
-{
-    Eigen::MatrixX2d ring(n, 2);
-    for (int i = 0; i < n; ++i)
-        ring.row(i) = c + Eigen::RowVector2d(rx * std::cos(2 * M_PI * i / n),
-                                             ry * std::sin(2 * M_PI * i / n));
-    return ring;
-}
-
-Eigen::MatrixX2d rows(std::initializer_list<std::pair<double, double>> points)
-{
-    Eigen::MatrixX2d m(Eigen::Index(points.size()), 2);
-    Eigen::Index i = 0;
-    for (const auto &[x, y] : points)
-        m.row(i++) << x, y;
-    return m;
-}
-
-bool insideRing(const Eigen::MatrixX2d &ring, const Eigen::RowVector2d &p)
-{
-    bool in = false;
-    for (Eigen::Index i = 0, j = ring.rows() - 1; i < ring.rows(); j = i++) {
-        const Eigen::RowVector2d a = ring.row(i), b = ring.row(j);
-        if ((a.y() > p.y()) != (b.y() > p.y()) &&
-            p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-            in = !in;
-    }
-    return in;
-}
+using namespace finbook::test;
 
 void checkMesh(const ObjectMesh &m)
 {

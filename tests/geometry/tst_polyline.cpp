@@ -1,4 +1,6 @@
 // Polyline and ring utilities: resampling, Douglas–Peucker, orientation, simplicity, repair.
+#include "geometry_test_support.h"
+
 #include <finbook/geometry/polygon_repair.h>
 #include <finbook/geometry/polyline.h>
 #include <finbook/geometry/simplicity.h>
@@ -12,23 +14,7 @@ using namespace finbook::geometry;
 
 namespace {
 
-Eigen::MatrixX2d circle(int n, double r, Eigen::RowVector2d c = {0, 0})
-{
-    Eigen::MatrixX2d ring(n, 2);
-    for (int i = 0; i < n; ++i)
-        ring.row(i) =
-            c + r * Eigen::RowVector2d(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n));
-    return ring;
-}
-
-Eigen::MatrixX2d rows(std::initializer_list<std::pair<double, double>> points)
-{
-    Eigen::MatrixX2d m(Eigen::Index(points.size()), 2);
-    Eigen::Index i = 0;
-    for (const auto &[x, y] : points)
-        m.row(i++) << x, y;
-    return m;
-}
+using namespace finbook::test;
 
 double distanceToPolyline(const Eigen::RowVector2d &p, const Eigen::MatrixX2d &line)
 {

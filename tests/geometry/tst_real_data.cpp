@@ -1,5 +1,7 @@
 // Every real drawing and shape in shared/data must mesh: no crash, no NaN, the mesh promises
 // hold and every stroke point is embedded inside.
+#include "geometry_test_support.h"
+
 #include <finbook/geometry/embedding.h>
 #include <finbook/geometry/mesh_quality.h>
 #include <finbook/geometry/object_mesh.h>
@@ -16,21 +18,12 @@ using namespace finbook::geometry;
 
 namespace {
 
+using namespace finbook::test;
+
 QString dataDir()
 {
     const QByteArray env = qgetenv("FINBOOK_DATA_DIR");
     return env.isEmpty() ? QStringLiteral(FINBOOK_DATA_DIR) : QString::fromLocal8Bit(env);
-}
-
-Eigen::MatrixX2d toMatrix(const QJsonArray &points)
-{
-    Eigen::MatrixX2d m(points.size(), 2);
-    for (qsizetype i = 0; i < points.size(); ++i) {
-        const QJsonArray p = points[i].toArray();
-        m(i, 0) = p[0].toDouble();
-        m(i, 1) = p[1].toDouble();
-    }
-    return m;
 }
 
 QJsonObject readJson(const QString &path)
