@@ -1,9 +1,11 @@
 // The Pin tool driven by real mouse events on the real canvas: add, drag, remove, undo.
+#include <finbook/model/finbook_file.h>
 #include <finbook/model/pin_commands.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/deform_actions.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/mesh_overlay.h>
+#include <finbook/ui/stroke_editing.h>
 #include <finbook/ui/tool_pin.h>
 
 #include <QSignalSpy>
@@ -89,6 +91,7 @@ class TestPinTool : public QObject {
     Q_OBJECT
 private slots:
     void addDragRemoveWithUndo();
+    void drawingOnPosedObjectKeepsWhatIsShown();
     void clickOffTheDrawingAddsNothing();
     void lockedObjectsAreNotPinned();
 };
@@ -143,6 +146,30 @@ void TestPinTool::addDragRemoveWithUndo()
         stack->undo();
     QVERIFY(fx.object().pins.empty());
     QVERIFY(!fx.object().isDeformed());
+}
+
+void TestPinTool::drawingOnPosedObjectKeepsWhatIsShown()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({210, 300}));
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({590, 300}));
+    QVERIFY(fx.waitReady());
+    fx.drag({590, 300}, {560, 420});
+    const QByteArray posed = serializeFinbook(fx.doc);
+    const auto shown = fx.object().deformed;
+    const int steps = fx.doc.undoStack()->count();
+
+    auto drawn = std::make_shared<StrokeData>();
+    drawn->points = {{500, 200, 1}, {520, 210, 1}, {540, 230, 1}};
+    QVERIFY(StrokeEditing::addStrokes(fx.state, {drawn}, QStringLiteral("Draw Stroke")));
+    // One undo step; the new stroke is stored where it was drawn, and the bent strokes are
+    // now the drawing (no pins left to bend them a second time).
+    QCOMPARE(fx.doc.undoStack()->count(), steps + 1);
+    QVERIFY(fx.object().pins.empty());
+    QCOMPARE(fx.object().strokes.back().data->points, drawn->points);
+    QCOMPARE(fx.object().strokes[0].data->points, shown->strokes[0]);
+    fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), posed);
 }
 
 void TestPinTool::clickOffTheDrawingAddsNothing()

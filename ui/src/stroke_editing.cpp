@@ -1,6 +1,7 @@
 #include "stroke_hit.h"
 
 #include <finbook/model/commands.h>
+#include <finbook/model/pin_commands.h>
 #include <finbook/model/render.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/stroke_editing.h>
@@ -110,6 +111,9 @@ StrokeEditing::addStrokes(EditorState &state, const std::vector<model::StrokeDat
         stack->push(add);
         state.setCurrentGroupId(groupId);
     }
+    // New strokes are drawn on the posed object as shown; as rest strokes they would be bent
+    // again by the pins and land elsewhere.
+    applyPoses(doc, {groupId});
     std::vector<model::Id> ids;
     for (const model::StrokeDataPtr &data : strokes) {
         auto *cmd = new model::AddStrokeCommand(doc, groupId, data);
@@ -118,6 +122,13 @@ StrokeEditing::addStrokes(EditorState &state, const std::vector<model::StrokeDat
     }
     stack->endMacro();
     return ids;
+}
+
+void StrokeEditing::applyPoses(model::Document *doc, const std::vector<model::Id> &groupIds)
+{
+    for (model::Id id : groupIds)
+        if (const model::StrokeGroup *g = doc->group(id); g && g->isDeformed())
+            doc->undoStack()->push(new model::BakeDeformationCommand(doc, id));
 }
 
 bool StrokeEditing::deleteSelection(EditorState &state)

@@ -4,6 +4,7 @@
 #include <finbook/model/render.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/editor_state.h>
+#include <finbook/ui/stroke_editing.h>
 #include <finbook/ui/tool_select.h>
 
 #include <QKeyEvent>
@@ -244,14 +245,17 @@ void SelectTool::commitTransform()
     model::Document *doc = state()->document();
     const qreal widthScale = std::sqrt(std::abs(m_transform.determinant()));
     std::vector<model::Id> ids;
+    std::vector<model::Id> groups;
     std::vector<model::StrokeDataPtr> data;
+    // The transform was made on the strokes as shown, so it applies to the shown points (the
+    // pose of a posed object), and such an object's pose becomes its drawing first.
     for (model::Id id : m_dragged) {
         const model::StrokeLocation at = doc->locateStroke(id);
         if (!at.isValid())
             continue;
-        const model::Stroke &s =
-            doc->frameAt(at.frame).groups[std::size_t(at.group)].strokes[std::size_t(at.stroke)];
-        auto moved = std::make_shared<model::StrokeData>(*s.data);
+        const model::StrokeGroup &g = doc->frameAt(at.frame).groups[std::size_t(at.group)];
+        auto moved = std::make_shared<model::StrokeData>(*g.strokes[std::size_t(at.stroke)].data);
+        moved->points = model::displayedPoints(g, std::size_t(at.stroke));
         for (model::StrokePoint &p : moved->points) {
             const QPointF q = m_transform.map(QPointF(p.x, p.y));
             p.x = float(q.x());
@@ -263,12 +267,16 @@ void SelectTool::commitTransform()
         }
         moved->width = float(std::max(0.1, moved->width * widthScale));
         ids.push_back(id);
+        groups.push_back(g.id);
         data.push_back(std::move(moved));
     }
     const QString text = m_mode == Mode::Move     ? tr("Move Strokes")
                          : m_mode == Mode::Rotate ? tr("Rotate Strokes")
                                                   : tr("Scale Strokes");
+    doc->undoStack()->beginMacro(text);
+    StrokeEditing::applyPoses(doc, groups);
     doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, ids, data, text));
+    doc->undoStack()->endMacro();
 }
 
 void SelectTool::cancelDrag()

@@ -39,6 +39,10 @@ public:
 
     // Removes the selected strokes (one undo step). False when nothing was selected.
     static bool deleteSelection(EditorState &state);
+    // Makes the pose of every posed object among `groupIds` its drawing (one Apply Pose
+    // command each), so an edit that works on rest strokes acts on what is on screen. Call
+    // inside the edit's macro.
+    static void applyPoses(model::Document *doc, const std::vector<model::Id> &groupIds);
     // Selects every stroke of the visible, unlocked objects of the current frame.
     static void selectAll(EditorState &state);
 
