@@ -1,0 +1,86 @@
+// finbook-bench pose: the app's own drag path on a meshed drawing — pin targets in, deformed
+// stroke points out (model::solvePose: ARAP solve, embedding applied, strokes rebuilt) — for
+// an object of about 2,000 mesh vertices carrying 5,000 stroke points.
+#include "bench.h"
+
+#include <finbook/model/deform_setup.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+using namespace finbook::model;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// 25 wavy strokes of 200 points crossing a 700×420 area: one connected, character-sized object.
+StrokeGroup drawing()
+{
+    StrokeGroup g;
+    g.id = 1;
+    for (int s = 0; s < 25; ++s) {
+        auto data = std::make_shared<StrokeData>();
+        data->width = 4.0f;
+        const bool across = s % 2 == 0;
+        for (int i = 0; i < 200; ++i) {
+            const float t = float(i) / 199.0f;
+            const float wave = 12.0f * std::sin(t * 12.0f + float(s));
+            data->points.push_back(across ? StrokePoint{300 + 700 * t, 150 + 17.0f * s + wave, 1}
+                                          : StrokePoint{300 + 28.0f * s + wave, 150 + 420 * t, 1});
+        }
+        g.strokes.push_back({Id(100 + s), std::move(data)});
+    }
+    g.pins = {{2, {300, 150}, {300, 150}},
+              {3, {1000, 150}, {1000, 150}},
+              {4, {300, 570}, {300, 570}},
+              {5, {1000, 570}, {1000, 570}}};
+    return g;
+}
+
+int benchPose(const QStringList &args)
+{
+    StrokeGroup g = drawing();
+    g.meshDensity =
+        args.size() >= 2 && args[0] == QLatin1String("--density") ? args[1].toDouble() : 1.0;
+    DeformJob job;
+    job.key = MeshKey::of(g);
+    job.pinRest.resize(4, 2);
+    for (int i = 0; i < 4; ++i)
+        job.pinRest.row(i) << g.pins[std::size_t(i)].rest.x(), g.pins[std::size_t(i)].rest.y();
+    const auto start = Clock::now();
+    auto setup = buildDeformSetup(job);
+    const double setupMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    if (!setup) {
+        std::fprintf(stderr, "pose: %s\n", qPrintable(setup.error()));
+        return 1;
+    }
+    std::vector<double> samples;
+    std::size_t points = 0;
+    for (int event = 0; event < 300; ++event) {
+        const double a = 0.01 * event;
+        g.pins[1].target = QPointF(1000 - 120 * std::sin(a), 150 + 200 * std::sin(a));
+        const auto t0 = Clock::now();
+        auto pose = solvePose(**setup, g);
+        samples.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+        if (!pose) {
+            std::fprintf(stderr, "pose: %s\n", qPrintable(pose.error()));
+            return 1;
+        }
+        points = 0;
+        for (const auto &s : pose->strokes->strokes)
+            points += s.size();
+    }
+    std::printf(
+        "{\"bench\":\"pose\",\"vertices\":%lld,\"triangles\":%lld,\"stroke_points\":%zu,"
+        "\"setup_ms\":%.2f,\"pin_to_strokes_ms_median\":%.4f,\"pin_to_strokes_ms_p99\":%.4f}\n",
+        (long long)(*setup)->meshed->mesh.V.rows(), (long long)(*setup)->meshed->mesh.F.rows(),
+        points, setupMs, finbook::bench::median(samples),
+        finbook::bench::percentile(samples, 0.99));
+    return 0;
+}
+
+} // namespace
+
+FINBOOK_BENCH("pose", "[--density D]", benchPose);
