@@ -2,36 +2,164 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>Command</name>
+    <message>
+        <location filename="../model/src/commands.cpp" line="27"/>
+        <source>Draw Stroke</source>
+        <translation>Strich zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="51"/>
+        <source>Erase Stroke</source>
+        <translation>Strich radieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="80"/>
+        <source>Move Strokes to Object</source>
+        <translation>Striche in Objekt verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="177"/>
+        <source>New Object</source>
+        <translation>Neues Objekt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="205"/>
+        <source>Delete Object</source>
+        <translation>Objekt löschen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="234"/>
+        <source>Rename Object</source>
+        <translation>Objekt umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="259"/>
+        <source>Reorder Object</source>
+        <translation>Objekt umsortieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="290"/>
+        <source>Show Object</source>
+        <translation>Objekt einblenden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="290"/>
+        <source>Hide Object</source>
+        <translation>Objekt ausblenden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="292"/>
+        <source>Lock Object</source>
+        <translation>Objekt sperren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="292"/>
+        <source>Unlock Object</source>
+        <translation>Objekt entsperren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="325"/>
+        <source>Insert Frame</source>
+        <translation>Einzelbild einfügen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="329"/>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="348"/>
+        <source>Duplicate Frame</source>
+        <translation>Einzelbild duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="393"/>
+        <source>Delete Frame</source>
+        <translation>Einzelbild löschen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="419"/>
+        <source>Move Frame</source>
+        <translation>Einzelbild verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="442"/>
+        <source>Change Frame Exposure</source>
+        <translation>Haltedauer des Einzelbilds ändern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="480"/>
+        <source>Change Document Settings</source>
+        <translation>Dokumenteinstellungen ändern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/object_commands.cpp" line="38"/>
+        <source>Merge Objects</source>
+        <translation>Objekte zusammenführen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pin_commands.cpp" line="29"/>
+        <source>Add Pin</source>
+        <translation>Pin setzen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pin_commands.cpp" line="57"/>
+        <source>Remove Pin</source>
+        <translation>Pin entfernen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pin_commands.cpp" line="88"/>
+        <source>Move Pin</source>
+        <translation>Pin verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pin_commands.cpp" line="133"/>
+        <source>Reset Deformation</source>
+        <translation>Verformung zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pin_commands.cpp" line="162"/>
+        <source>Apply Deformation</source>
+        <translation>Verformung anwenden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pin_commands.cpp" line="204"/>
+        <source>Change Mesh Density</source>
+        <translation>Netzdichte ändern</translation>
+    </message>
+</context>
+<context>
     <name>CommandLine</name>
     <message>
         <location filename="../app/cli.cpp" line="67"/>
         <source>Cannot create the output folder %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Ausgabeordner %1 kann nicht angelegt werden.</translation>
     </message>
     <message>
         <location filename="../app/cli.cpp" line="76"/>
         <source>Cannot write %1 (is the disk full or read-only?).</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht geschrieben werden (ist der Datenträger voll oder schreibgeschützt?).</translation>
     </message>
     <message>
         <location filename="../app/cli.cpp" line="114"/>
         <source>No command given; see finbook --help.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
         <location filename="../app/cli.cpp" line="118"/>
         <source>Usage: finbook info FILE</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
         <location filename="../app/cli.cpp" line="128"/>
         <source>Usage: finbook export FILE OUTDIR</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufruf: finbook export FILE OUTDIR</translation>
     </message>
     <message>
         <location filename="../app/cli.cpp" line="131"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
-        <translation type="unfinished"></translation>
+        <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
     <message>
         <location filename="../app/main.cpp" line="25"/>
@@ -40,28 +168,65 @@
   finbook [FILE]               open FILE in the editor
   finbook info FILE            print a JSON summary of FILE
   finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...</source>
-        <translation type="unfinished"></translation>
+        <translation>Finbook, ein Daumenkino-Animationseditor.
+
+  finbook [FILE]               FILE im Editor öffnen
+  finbook info FILE            eine JSON-Zusammenfassung von FILE ausgeben
+  finbook export FILE OUTDIR   alle Einzelbilder rendern nach OUTDIR/frame_0001.png ...</translation>
     </message>
     <message>
         <location filename="../app/main.cpp" line="35"/>
         <source>Use LANGUAGE (e.g. de, en) instead of the system&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>LANGUAGE (z. B. de, en) statt der Systemsprache verwenden.</translation>
     </message>
     <message>
         <location filename="../app/main.cpp" line="40"/>
         <source>FILE, or a command.</source>
-        <translation type="unfinished"></translation>
+        <translation>FILE oder ein Befehl.</translation>
     </message>
     <message>
         <location filename="../app/main.cpp" line="44"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
-        <translation type="unfinished"></translation>
+        <translation>siehe finbook --help</translation>
     </message>
     <message>
         <location filename="../app/main.cpp" line="67"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Unbekannter Befehl „%1“; %2.</translation>
+    </message>
+</context>
+<context>
+    <name>Deformation</name>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="73"/>
+        <source>The object has no strokes to deform.</source>
+        <translation>Das Objekt hat keine Striche, die sich verformen ließen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="78"/>
+        <source>This drawing cannot be meshed for deformation: %1</source>
+        <translation>Für diese Zeichnung lässt sich kein Verformungsnetz erstellen: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="101"/>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="110"/>
+        <source>The pins cannot be solved on this drawing: %1</source>
+        <translation>Die Pins lassen sich auf dieser Zeichnung nicht berechnen: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="136"/>
+        <source>The pins could not be solved: %1</source>
+        <translation>Die Pins konnten nicht berechnet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="143"/>
+        <source>The deformation produced invalid points; it was not applied.</source>
+        <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
     </message>
 </context>
 <context>
@@ -69,309 +234,309 @@
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="34"/>
         <source>frame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelbild %1</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="36"/>
         <source>, object &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>, Objekt „%1“</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="37"/>
         <source>, object %1</source>
-        <translation type="unfinished"></translation>
+        <translation>, Objekt %1</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="39"/>
         <source>, stroke %1</source>
-        <translation type="unfinished"></translation>
+        <translation>, Strich %1</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="43"/>
         <source>stroke data %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Strichdaten %1</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="45"/>
         <source>pose %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Pose %1</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="72"/>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="80"/>
         <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist unvollständig, die Datei endet vorzeitig (%2 Bytes benötigt, %3 übrig)</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="96"/>
         <source>%1 claims %2 entries but only %3 bytes remain</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 gibt %2 Einträge an, es sind aber nur noch %3 Bytes übrig</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="122"/>
         <source>%1 has %2 unexpected bytes at its end</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hat am Ende %2 unerwartete Bytes</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="29"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Die Datei ist unvollständig (vielleicht wurde ein Kopier- oder Speichervorgang unterbrochen); falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="35"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Die Datei ist beschädigt; falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="57"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="71"/>
         <source>the old backup &quot;%1&quot; cannot be replaced</source>
-        <translation type="unfinished"></translation>
+        <translation>die alte Sicherungskopie „%1“ kann nicht ersetzt werden</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="81"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Sicherungskopie „%1“ kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="106"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ kann nicht geöffnet werden: %2. Prüfen Sie, ob die Datei existiert und ob Sie sie lesen dürfen.</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="108"/>
         <source>it is a folder</source>
-        <translation type="unfinished"></translation>
+        <translation>es ist ein Ordner</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="116"/>
         <source>Cannot open &quot;%1&quot;: it is too large for the memory available.</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ kann nicht geöffnet werden: die Datei ist zu groß für den verfügbaren Arbeitsspeicher.</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="122"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ kann nicht gelesen werden: %2.</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="126"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ kann nicht geöffnet werden. %2</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_io.cpp" line="146"/>
         <source>the drawing holds invalid data (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Zeichnung enthält ungültige Daten (%1)</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="33"/>
         <source>unknown %1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter %1 %2</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="36"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei enthält Daten („%1“), die diese Finbook-Version nicht kennt, und wurde daher wohl mit einer neueren Finbook-Version erstellt; bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="57"/>
         <source>the file is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei ist leer</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="59"/>
         <source>the file header</source>
-        <translation type="unfinished"></translation>
+        <translation>der Dateikopf</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="61"/>
         <source>it is not a Finbook animation</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei ist keine Finbook-Animation</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
         <source>the file ends inside its header</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei endet mitten im Dateikopf</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
         <source>the format version</source>
-        <translation type="unfinished"></translation>
+        <translation>die Formatversion</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="67"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei wurde mit einer neueren Finbook-Version erstellt (Dateiformat %1; diese Version liest bis %2); bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="74"/>
         <source>the format version %1 does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>die Formatversion %1 gibt es nicht</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="84"/>
         <source>the file&apos;s section list</source>
-        <translation type="unfinished"></translation>
+        <translation>die Abschnittsliste der Datei</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="85"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="86"/>
         <source>a section header</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Abschnittskopf</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="87"/>
         <source>section %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Abschnitt %1</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="91"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
         <source>a section</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Abschnitt</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
         <source>section %1 is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>Abschnitt %1 fehlt</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="99"/>
         <source>the end marker</source>
-        <translation type="unfinished"></translation>
+        <translation>die Endmarke</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="100"/>
         <source>the file</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="105"/>
         <source>section</source>
-        <translation type="unfinished"></translation>
+        <translation>Abschnitt</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="110"/>
         <source>the section is repeated or out of order</source>
-        <translation type="unfinished"></translation>
+        <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="125"/>
         <source>the section</source>
-        <translation type="unfinished"></translation>
+        <translation>der Abschnitt</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="131"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="349"/>
         <source>the document settings</source>
-        <translation type="unfinished"></translation>
+        <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="133"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
         <source>the canvas size</source>
-        <translation type="unfinished"></translation>
+        <translation>die Leinwandgröße</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="142"/>
         <source>the background colour</source>
-        <translation type="unfinished"></translation>
+        <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="143"/>
         <source>the frame rate</source>
-        <translation type="unfinished"></translation>
+        <translation>die Bildrate</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
         <source>the frame rate %1 is outside %2 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
         <source>the loop flag</source>
-        <translation type="unfinished"></translation>
+        <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
-        <translation type="unfinished"></translation>
+        <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="156"/>
         <source>the play range</source>
-        <translation type="unfinished"></translation>
+        <translation>der Wiedergabebereich</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="160"/>
         <source>the play range %1 to %2 is invalid</source>
-        <translation type="unfinished"></translation>
+        <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>the next id</source>
-        <translation type="unfinished"></translation>
+        <translation>die nächste ID</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>the frame list</source>
-        <translation type="unfinished"></translation>
+        <translation>die Einzelbildliste</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
         <source>a frame</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Einzelbild</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
         <source>a frame id</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="184"/>
         <source>the frame</source>
-        <translation type="unfinished"></translation>
+        <translation>das Einzelbild</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="185"/>
         <source>a frame hold</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Haltedauer</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="188"/>
         <source>the hold %1 is outside 1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="191"/>
         <source>the object list</source>
-        <translation type="unfinished"></translation>
+        <translation>die Objektliste</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="195"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="196"/>
         <source>an object</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Objekt</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="201"/>
@@ -379,294 +544,274 @@
         <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>a chunk header</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Blockkopf</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
         <source>a chunk</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Block</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="204"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
         <source>chunk</source>
-        <translation type="unfinished"></translation>
+        <translation>Block</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="212"/>
         <source>an object id</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Objekt-ID</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="213"/>
         <source>the object</source>
-        <translation type="unfinished"></translation>
+        <translation>das Objekt</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
         <source>the object flags</source>
-        <translation type="unfinished"></translation>
+        <translation>die Objektattribute</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
         <source>the object flags 0x%1 are unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
         <source>the mesh density</source>
-        <translation type="unfinished"></translation>
+        <translation>die Netzdichte</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
-        <translation type="unfinished"></translation>
+        <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
         <source>the object name</source>
-        <translation type="unfinished"></translation>
+        <translation>der Objektname</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="228"/>
         <source>the object name is %1 bytes long (at most %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
         <source>the object name is not valid UTF-8 text</source>
-        <translation type="unfinished"></translation>
+        <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
         <source>the stroke list</source>
-        <translation type="unfinished"></translation>
+        <translation>die Strichliste</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
         <source>a stroke id</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Strich-ID</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the stroke</source>
-        <translation type="unfinished"></translation>
+        <translation>der Strich</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
         <source>a stroke reference</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Strichverweis</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="251"/>
         <source>it refers to stroke data %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>chunk %1 appears twice</source>
-        <translation type="unfinished"></translation>
+        <translation>Block %1 kommt doppelt vor</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
         <source>the pin list</source>
-        <translation type="unfinished"></translation>
+        <translation>die Pin-Liste</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
         <source>a pin id</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Pin-ID</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="294"/>
         <source>pin %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Pin %1</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>a pin position</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Pin-Position</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
         <source>pin %1 has a non-finite position</source>
-        <translation type="unfinished"></translation>
+        <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
         <source>a pose reference</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Posenverweis</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
         <source>its pose refers to pose %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
         <source>its pose: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>seine Pose: %1</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>its pose has %1 strokes but the object has %2</source>
-        <translation type="unfinished"></translation>
+        <translation>seine Pose hat %1 Striche, das Objekt aber %2</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="326"/>
         <source>stroke %1 has %2 points but its pose has %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Strich %1 hat %2 Punkte, seine Pose aber %3</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
         <source>%1 has no id</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hat keine ID</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
         <source>%1 has the id %2, which is already used</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>the next free id %1 is not above the largest id %2</source>
-        <translation type="unfinished"></translation>
+        <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="374"/>
         <source>there is not enough memory to open this file</source>
-        <translation type="unfinished"></translation>
+        <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_tables.cpp" line="22"/>
         <location filename="../model/src/finbook_file_reader_tables.cpp" line="24"/>
         <source>a stroke</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Strich</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_tables.cpp" line="26"/>
         <source>point %1 has a non-finite coordinate</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt %1 hat eine nicht endliche Koordinate</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_tables.cpp" line="42"/>
         <source>the stroke table</source>
-        <translation type="unfinished"></translation>
+        <translation>die Strichtabelle</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_tables.cpp" line="47"/>
         <source>a stroke colour</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Strichfarbe</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_tables.cpp" line="48"/>
         <source>a stroke width</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Strichbreite</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_tables.cpp" line="51"/>
         <source>the width %1 is not a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>die Breite %1 ist keine positive Zahl</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_tables.cpp" line="60"/>
         <source>the pose table</source>
-        <translation type="unfinished"></translation>
+        <translation>die Posentabelle</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_tables.cpp" line="66"/>
         <source>a pose</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Pose</translation>
     </message>
 </context>
 <context>
     <name>ObjectListModel</name>
     <message numerus="yes">
-        <location filename="../model/src/object_list_model.cpp" line="158"/>
+        <location filename="../model/src/object_list_model.cpp" line="160"/>
         <source>%1: %n stroke(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1: %n Strich</numerusform>
+            <numerusform>%1: %n Striche</numerusform>
         </translation>
     </message>
 </context>
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="83"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="84"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
-        <translation>Es gibt kein Bild zum Zeichnen. Fügen Sie zuerst ein Bild ein.</translation>
+        <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="86"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="87"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="89"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="90"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="108"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="109"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="129"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="140"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="177"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="188"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="197"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="208"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="200"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="211"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
 </context>
 <context>
-    <name>finbook::model</name>
+    <name>finbook::model::FrameListModel</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="72"/>
-        <source>The object has no strokes to deform.</source>
-        <translation type="unfinished"></translation>
+        <location filename="../model/src/frame_list_model.cpp" line="132"/>
+        <source>Frame %1, held for %2 frames</source>
+        <translation>Einzelbild %1, %2 Einzelbilder lang gehalten</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="77"/>
-        <source>This drawing cannot be meshed for deformation: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../model/src/deform_setup.cpp" line="100"/>
-        <source>Cancelled.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../model/src/deform_setup.cpp" line="109"/>
-        <source>The pins cannot be solved on this drawing: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../model/src/deform_setup.cpp" line="135"/>
-        <source>The pins could not be solved: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../model/src/deform_setup.cpp" line="141"/>
-        <source>The deformation produced invalid points; it was not applied.</source>
-        <translation type="unfinished"></translation>
+        <location filename="../model/src/frame_list_model.cpp" line="133"/>
+        <source>Frame %1</source>
+        <translation>Einzelbild %1</translation>
     </message>
 </context>
 <context>
@@ -720,47 +865,47 @@
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="14"/>
         <source>&amp;Reset Pose</source>
-        <translation type="unfinished"></translation>
+        <translation>Pose &amp;zurücksetzen</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="16"/>
         <source>Move every pin of the current object back to where it was put</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Pins des aktuellen Objekts an die Stelle zurücksetzen, an der sie gesetzt wurden</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="17"/>
         <source>&amp;Apply Pose to Drawing</source>
-        <translation type="unfinished"></translation>
+        <translation>Pose auf Zeichnung &amp;anwenden</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="19"/>
         <source>Make the bent drawing the object&apos;s new strokes and remove its pins</source>
-        <translation type="unfinished"></translation>
+        <translation>Die verformte Zeichnung zu den neuen Strichen des Objekts machen und seine Pins entfernen</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="20"/>
         <source>Remove All &amp;Pins</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle &amp;Pins entfernen</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="34"/>
         <source>Remove All Pins</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Pins entfernen</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="42"/>
         <source>Preparing the deformation…</source>
-        <translation type="unfinished"></translation>
+        <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="66"/>
         <source>Mesh density </source>
-        <translation type="unfinished"></translation>
+        <translation>Netzdichte </translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="67"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie fein das Verformungsnetz des aktuellen Objekts ist (1 = Standard)</translation>
     </message>
 </context>
 <context>
@@ -768,62 +913,62 @@
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="26"/>
         <source>Start again after the last frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach dem letzten Einzelbild wieder von vorn beginnen</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="30"/>
         <source>Document Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Dokumenteinstellungen</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="32"/>
         <source> fps</source>
-        <translation type="unfinished"> fps</translation>
+        <translation> fps</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="35"/>
         <source> px</source>
-        <translation type="unfinished"> px</translation>
+        <translation> px</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="40"/>
         <source>Last</source>
-        <translation type="unfinished"></translation>
+        <translation>Letztes</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="50"/>
         <source>to</source>
-        <translation type="unfinished"></translation>
+        <translation>bis</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="54"/>
         <source>&amp;Frame rate:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bildrate:</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="55"/>
         <source>Canvas size:</source>
-        <translation type="unfinished"></translation>
+        <translation>Leinwandgröße:</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="56"/>
         <source>&amp;Background:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hintergrund:</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="57"/>
         <source>Loop:</source>
-        <translation type="unfinished"></translation>
+        <translation>Endlosschleife:</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="58"/>
         <source>Play frames:</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelbilder abspielen:</translation>
     </message>
     <message>
         <location filename="../ui/src/document_settings_dialog.cpp" line="125"/>
         <source>Background Colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Hintergrundfarbe</translation>
     </message>
 </context>
 <context>
@@ -831,52 +976,52 @@
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="13"/>
         <source>Insert Frame &amp;Before</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelbild &amp;davor einfügen</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="15"/>
         <source>&amp;Insert Frame After</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelbild da&amp;nach einfügen</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="17"/>
         <source>&amp;Duplicate Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelbild d&amp;uplizieren</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="19"/>
         <source>De&amp;lete Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelbild &amp;löschen</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="22"/>
         <source>Move Frame &amp;Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelbild nach l&amp;inks verschieben</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="24"/>
         <source>Move Frame &amp;Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelbild nach &amp;rechts verschieben</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="27"/>
         <source>Hold &amp;Longer</source>
-        <translation type="unfinished"></translation>
+        <translation>Län&amp;ger halten</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="29"/>
         <source>Hold &amp;Shorter</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kürzer halten</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="32"/>
         <source>&amp;Previous Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Vorheriges Einzelbild</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="35"/>
         <source>&amp;Next Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Nä&amp;chstes Einzelbild</translation>
     </message>
 </context>
 <context>
@@ -890,53 +1035,53 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="105"/>
+        <location filename="../ui/src/main_window.cpp" line="106"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="129"/>
+        <location filename="../ui/src/main_window.cpp" line="130"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="130"/>
+        <location filename="../ui/src/main_window.cpp" line="131"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="133"/>
+        <location filename="../ui/src/main_window.cpp" line="134"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="134"/>
+        <location filename="../ui/src/main_window.cpp" line="135"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="164"/>
+        <location filename="../ui/src/main_window.cpp" line="165"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="175"/>
+        <location filename="../ui/src/main_window.cpp" line="176"/>
         <source>Frame %1 / %2</source>
-        <translation>Bild %1 / %2</translation>
+        <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="176"/>
+        <location filename="../ui/src/main_window.cpp" line="177"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="181"/>
+        <location filename="../ui/src/main_window.cpp" line="182"/>
         <location filename="../ui/src/main_window_files.cpp" line="200"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="182"/>
+        <location filename="../ui/src/main_window.cpp" line="183"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -968,7 +1113,7 @@
     <message>
         <location filename="../ui/src/main_window_files.cpp" line="123"/>
         <source>Exporting frames...</source>
-        <translation>Bilder werden exportiert …</translation>
+        <translation>Einzelbilder werden exportiert...</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_files.cpp" line="123"/>
@@ -978,7 +1123,7 @@
     <message>
         <location filename="../ui/src/main_window_files.cpp" line="132"/>
         <source>Cannot Export Frames</source>
-        <translation>Export der Bilder nicht möglich</translation>
+        <translation>Einzelbilder können nicht exportiert werden</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_files.cpp" line="133"/>
@@ -989,8 +1134,8 @@
         <location filename="../ui/src/main_window_files.cpp" line="140"/>
         <source>Exported %n frame(s) to %1</source>
         <translation>
-            <numerusform>%n Bild nach %1 exportiert</numerusform>
-            <numerusform>%n Bilder nach %1 exportiert</numerusform>
+            <numerusform>%n Einzelbild nach %1 exportiert</numerusform>
+            <numerusform>%n Einzelbilder nach %1 exportiert</numerusform>
         </translation>
     </message>
     <message>
@@ -1031,7 +1176,7 @@
     <message>
         <location filename="../ui/src/main_window_files.cpp" line="222"/>
         <source>Export Frames to Folder</source>
-        <translation>Bilder in Ordner exportieren</translation>
+        <translation>Einzelbilder in Ordner exportieren</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="40"/>
@@ -1051,7 +1196,7 @@
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="55"/>
         <source>&amp;Open...</source>
-        <translation>Ö&amp;ffnen …</translation>
+        <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="59"/>
@@ -1066,12 +1211,12 @@
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="65"/>
         <source>Save &amp;As...</source>
-        <translation>Speichern &amp;unter …</translation>
+        <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="67"/>
         <source>&amp;Export Frames...</source>
-        <translation>Bilder &amp;exportieren …</translation>
+        <translation>Einzelbilder &amp;exportieren...</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="69"/>
@@ -1121,7 +1266,7 @@
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="112"/>
         <source>Select &amp;All</source>
-        <translation>&amp;Alles auswählen</translation>
+        <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="118"/>
@@ -1131,12 +1276,12 @@
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="125"/>
         <source>D&amp;ocument Settings...</source>
-        <translation>D&amp;okumenteinstellungen …</translation>
+        <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="128"/>
         <source>Pre&amp;ferences...</source>
-        <translation>Ein&amp;stellungen …</translation>
+        <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="151"/>
@@ -1166,12 +1311,12 @@
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="163"/>
         <source>&amp;Onion Skin</source>
-        <translation>&amp;Zwiebelschicht</translation>
+        <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="174"/>
         <source>Onion Skin &amp;Settings...</source>
-        <translation>Zwiebelschicht-&amp;Einstellungen …</translation>
+        <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="176"/>
@@ -1186,7 +1331,7 @@
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="189"/>
         <source>F&amp;rame</source>
-        <translation>&amp;Bild</translation>
+        <translation>&amp;Einzelbild</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="200"/>
@@ -1221,7 +1366,7 @@
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="244"/>
         <source>Onion Skin</source>
-        <translation>Zwiebelschicht</translation>
+        <translation>Zwiebelhaut</translation>
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="268"/>
@@ -1231,7 +1376,22 @@
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="269"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Bild für Bild zeichnen und Zeichnungen mit Pins biegen.&lt;/p&gt;</translation>
+        <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_deform.cpp" line="27"/>
+        <source>&amp;Deform</source>
+        <translation>&amp;Verformen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_deform.cpp" line="34"/>
+        <source>Deform</source>
+        <translation>Verformen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_deform.cpp" line="47"/>
+        <source>Preparing the deformation…</source>
+        <translation>Verformung wird vorbereitet…</translation>
     </message>
 </context>
 <context>
@@ -1239,87 +1399,87 @@
     <message>
         <location filename="../ui/src/object_actions.cpp" line="27"/>
         <source>&amp;New Object</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Neues Objekt</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="29"/>
         <source>&amp;Delete Object</source>
-        <translation type="unfinished"></translation>
+        <translation>Objekt &amp;löschen</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="30"/>
         <source>&amp;Merge Objects</source>
-        <translation type="unfinished"></translation>
+        <translation>Objekte &amp;zusammenführen</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="33"/>
         <source>Move &amp;Selection to Object</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Auswahl in Objekt verschieben</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="34"/>
         <source>Bring &amp;Forward</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach &amp;vorne bringen</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="36"/>
         <source>Send &amp;Backward</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach &amp;hinten stellen</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="38"/>
         <source>&amp;Visible</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Sichtbar</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="39"/>
         <source>&amp;Locked</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Gesperrt</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="42"/>
         <source>New object above the current one</source>
-        <translation type="unfinished"></translation>
+        <translation>Neues Objekt über dem aktuellen</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="43"/>
         <source>Merge the selected objects, or the current one into the one below</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählten Objekte zusammenführen oder das aktuelle mit dem darunterliegenden</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="44"/>
         <source>Move the selected strokes to another object</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählten Striche in ein anderes Objekt verschieben</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="46"/>
         <source>New</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="47"/>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Löschen</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="48"/>
         <source>Merge</source>
-        <translation type="unfinished"></translation>
+        <translation>Zusammenführen</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="49"/>
         <source>Move To</source>
-        <translation type="unfinished"></translation>
+        <translation>Verschieben</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="118"/>
         <source>Object %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Objekt %1</translation>
     </message>
     <message>
         <location filename="../ui/src/object_actions.cpp" line="170"/>
         <source>Merge Objects</source>
-        <translation type="unfinished"></translation>
+        <translation>Objekte zusammenführen</translation>
     </message>
 </context>
 <context>
@@ -1327,7 +1487,7 @@
     <message>
         <location filename="../ui/src/onion_skin_editor.cpp" line="14"/>
         <source>Show onion skin</source>
-        <translation>Zwiebelschicht anzeigen</translation>
+        <translation>Zwiebelhaut anzeigen</translation>
     </message>
     <message>
         <location filename="../ui/src/onion_skin_editor.cpp" line="24"/>
@@ -1337,17 +1497,17 @@
     <message>
         <location filename="../ui/src/onion_skin_editor.cpp" line="27"/>
         <source>Frames before:</source>
-        <translation>Bilder davor:</translation>
+        <translation>Einzelbilder davor:</translation>
     </message>
     <message>
         <location filename="../ui/src/onion_skin_editor.cpp" line="28"/>
         <source>Frames after:</source>
-        <translation>Bilder danach:</translation>
+        <translation>Einzelbilder danach:</translation>
     </message>
     <message>
         <location filename="../ui/src/onion_skin_editor.cpp" line="29"/>
         <source>Opacity of the nearest frame:</source>
-        <translation>Deckkraft des nächsten Bildes:</translation>
+        <translation>Deckkraft des nächsten Einzelbilds:</translation>
     </message>
     <message>
         <location filename="../ui/src/onion_skin_editor.cpp" line="30"/>
@@ -1378,12 +1538,12 @@
     <message>
         <location filename="../ui/include/finbook/ui/tool_pin.h" line="17"/>
         <source>Pin</source>
-        <translation type="unfinished"></translation>
+        <translation>Pin</translation>
     </message>
     <message>
         <location filename="../ui/src/tool_pin.cpp" line="154"/>
         <source>Click on a visible, unlocked drawing to pin it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um einen Pin zu setzen.</translation>
     </message>
 </context>
 <context>
@@ -1392,27 +1552,27 @@
         <location filename="../ui/src/playback_controller.cpp" line="64"/>
         <location filename="../ui/src/playback_controller.cpp" line="206"/>
         <source>&amp;Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Abs&amp;pielen</translation>
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="68"/>
         <source>Play or pause the animation</source>
-        <translation type="unfinished"></translation>
+        <translation>Animation abspielen oder anhalten</translation>
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="76"/>
         <source>&amp;Loop</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Endlosschleife</translation>
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="80"/>
         <source>Start again at the end of the play range</source>
-        <translation type="unfinished"></translation>
+        <translation>Am Ende des Wiedergabebereichs wieder von vorn beginnen</translation>
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="206"/>
         <source>&amp;Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pause</translation>
     </message>
 </context>
 <context>
@@ -1430,7 +1590,7 @@
     <message>
         <location filename="../ui/src/preferences_dialog.cpp" line="26"/>
         <source>Onion Skin</source>
-        <translation>Zwiebelschicht</translation>
+        <translation>Zwiebelhaut</translation>
     </message>
     <message>
         <location filename="../ui/src/preferences_dialog.cpp" line="27"/>
@@ -1481,22 +1641,22 @@
         <translation>Auswahl</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="260"/>
+        <location filename="../ui/src/tool_select.cpp" line="264"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>So weit lassen sich die Striche nicht umformen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="268"/>
+        <location filename="../ui/src/tool_select.cpp" line="273"/>
         <source>Move Strokes</source>
         <translation>Striche verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="269"/>
+        <location filename="../ui/src/tool_select.cpp" line="274"/>
         <source>Rotate Strokes</source>
         <translation>Striche drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="270"/>
+        <location filename="../ui/src/tool_select.cpp" line="275"/>
         <source>Scale Strokes</source>
         <translation>Striche skalieren</translation>
     </message>
@@ -1590,37 +1750,37 @@
     <message>
         <location filename="../ui/src/timeline_widget.cpp" line="68"/>
         <source>Onion Skin</source>
-        <translation type="unfinished">Zwiebelschicht</translation>
+        <translation>Zwiebelhaut</translation>
     </message>
     <message>
         <location filename="../ui/src/timeline_widget.cpp" line="69"/>
         <source>Show neighbouring frames faintly while drawing</source>
-        <translation type="unfinished"></translation>
+        <translation>Benachbarte Einzelbilder beim Zeichnen blass anzeigen</translation>
     </message>
     <message>
         <location filename="../ui/src/timeline_widget.cpp" line="85"/>
         <source>Before:</source>
-        <translation type="unfinished"></translation>
+        <translation>Davor:</translation>
     </message>
     <message>
         <location filename="../ui/src/timeline_widget.cpp" line="86"/>
         <source>How many earlier frames the onion skin shows</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viele vorherige Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
         <location filename="../ui/src/timeline_widget.cpp" line="87"/>
         <source>After:</source>
-        <translation type="unfinished"></translation>
+        <translation>Danach:</translation>
     </message>
     <message>
         <location filename="../ui/src/timeline_widget.cpp" line="88"/>
         <source>How many later frames the onion skin shows</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viele folgende Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
         <location filename="../ui/src/timeline_widget.cpp" line="116"/>
         <source>Frame %1 of %2 · %3 fps</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelbild %1 von %2 · %3 fps</translation>
     </message>
 </context>
 </TS>
