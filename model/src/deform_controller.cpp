@@ -1,5 +1,7 @@
 #include <finbook/model/deform_controller.h>
 
+#include <algorithm>
+
 namespace finbook::model {
 
 namespace {
@@ -76,13 +78,28 @@ QPointF DeformController::restPointFor(Id groupId, QPointF shown) const
 
 std::shared_ptr<const DeformSetup> DeformController::cachedSetup(const StrokeGroup &group) const
 {
-    if (const auto it = m_states.find(group.id);
-        it != m_states.end() && it->second.setup && it->second.setup->matches(group))
+    const auto fits = [&](const std::shared_ptr<const DeformSetup> &s) {
+        return s && s->extraPasses == m_options.extraPasses && s->matches(group);
+    };
+    if (const auto it = m_states.find(group.id); it != m_states.end() && fits(it->second.setup))
         return it->second.setup;
     for (const auto &s : m_recent)
-        if (s->matches(group))
+        if (fits(s))
             return s;
     return nullptr;
+}
+
+void DeformController::setExtraPasses(int passes)
+{
+    passes = std::clamp(passes, 0, 10);
+    if (passes == m_options.extraPasses)
+        return;
+    m_options.extraPasses = passes;
+    // Meshes stay valid; every pinned object needs a new precompute with the new options.
+    for (const Frame &f : m_doc->frames())
+        for (const StrokeGroup &g : f.groups)
+            if (!g.pins.empty() && m_states.count(g.id))
+                refresh(g.id);
 }
 
 std::shared_ptr<const MeshedObject> DeformController::cachedMesh(const MeshKey &key) const
@@ -128,6 +145,7 @@ void DeformController::refresh(Id groupId, bool wantMesh)
     job.groupId = groupId;
     job.key = MeshKey::of(*g);
     job.meshed = cachedMesh(job.key);
+    job.options = m_options;
     job.pinRest.resize(Eigen::Index(g->pins.size()), 2);
     for (std::size_t i = 0; i < g->pins.size(); ++i) {
         job.pinRest.row(Eigen::Index(i)) << g->pins[i].rest.x(), g->pins[i].rest.y();

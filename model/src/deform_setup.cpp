@@ -90,6 +90,7 @@ buildDeformSetup(const DeformJob &job, const std::function<bool()> &cancelled)
     auto setup = std::make_shared<DeformSetup>();
     setup->key = job.key;
     setup->pinRest = job.pinRest;
+    setup->extraPasses = job.options.extraPasses;
     setup->meshed = job.meshed;
     if (!setup->meshed) {
         auto meshed = meshObject(job.key);

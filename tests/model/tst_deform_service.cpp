@@ -117,6 +117,7 @@ private slots:
     void dragSolvesSynchronouslyAndMergesPerDrag();
     void bakeMakesPoseTheRestAndUndoes();
     void duplicatedFrameSharesSetupButNotPins();
+    void extraPassesReprepareAndStayStateless();
     void reopenedFileContinuesWhereItStopped();
     void serviceDeliversOnlyLatestGeneration();
     void guiStaysResponsiveDuringBigPrecompute();
@@ -228,6 +229,30 @@ void TestDeformService::duplicatedFrameSharesSetupButNotPins()
     // The original keeps its own pins and pose.
     QCOMPARE(doc.group(g)->pins[1].target, QPointF(400, 100));
     QVERIFY(doc.group(g)->deformed->strokes[0].back().y < 120);
+}
+
+void TestDeformService::extraPassesReprepareAndStayStateless()
+{
+    Document doc;
+    const Id g = makeArm(doc);
+    DeformController controller(&doc);
+    pinBothEnds(doc, g);
+    QVERIFY(waitSolved(controller, g));
+    const Id tip = doc.group(g)->pins[1].id;
+    doc.undoStack()->push(new MovePinCommand(&doc, g, tip, {330, 260}, 1));
+    const auto paper = doc.group(g)->deformed;
+    controller.setExtraPasses(3);
+    QVERIFY(controller.isWaiting(g));
+    QVERIFY(waitSolved(controller, g));
+    const auto stiffer = doc.group(g)->deformed;
+    QVERIFY(!(*stiffer == *paper)); // the passes change the pose...
+    // ...and the pose stays a function of the targets: away and back gives the same points.
+    doc.undoStack()->push(new MovePinCommand(&doc, g, tip, {200, 300}, 2));
+    doc.undoStack()->push(new MovePinCommand(&doc, g, tip, {330, 260}, 3));
+    QCOMPARE(*doc.group(g)->deformed, *stiffer);
+    controller.setExtraPasses(0);
+    QVERIFY(waitSolved(controller, g));
+    QCOMPARE(*doc.group(g)->deformed, *paper);
 }
 
 void TestDeformService::reopenedFileContinuesWhereItStopped()

@@ -2,7 +2,10 @@
 #include <finbook/ui/deform_actions.h>
 #include <finbook/ui/editor_state.h>
 
+#include <QActionGroup>
 #include <QDoubleSpinBox>
+#include <QMenu>
+#include <QSettings>
 
 namespace finbook::ui {
 
@@ -45,6 +48,32 @@ DeformActions::DeformActions(EditorState *state, QObject *parent)
     connect(state, &EditorState::currentFrameChanged, this, &DeformActions::updateEnabled);
     connect(doc, &model::Document::frameChanged, this, &DeformActions::updateEnabled);
     updateEnabled();
+}
+
+QMenu *DeformActions::createRigidityMenu(QWidget *parent)
+{
+    auto *menu = new QMenu(tr("R&igidity"), parent);
+    auto *group = new QActionGroup(menu);
+    const int saved = QSettings().value(QStringLiteral("deform/extraPasses"), 0).toInt();
+    m_controller.setExtraPasses(saved);
+    const struct {
+        int passes;
+        QString text;
+    } choices[] = {{0, tr("As in the Paper (Two Steps)")},
+                   {1, tr("Stiffer (+1 Pass)")},
+                   {3, tr("Stiffest (+3 Passes)")}};
+    for (const auto &choice : choices) {
+        QAction *a = menu->addAction(choice.text);
+        a->setCheckable(true);
+        a->setChecked(choice.passes == m_controller.extraPasses());
+        group->addAction(a);
+        const int passes = choice.passes;
+        connect(a, &QAction::triggered, this, [this, passes] {
+            m_controller.setExtraPasses(passes);
+            QSettings().setValue(QStringLiteral("deform/extraPasses"), passes);
+        });
+    }
+    return menu;
 }
 
 void DeformActions::updateEnabled()

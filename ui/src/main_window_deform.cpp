@@ -30,6 +30,8 @@ void MainWindow::createDeformation()
         menu->addAction(a);
         m_shortcuts->registerAction(a);
     }
+    menu->addSeparator();
+    menu->addMenu(m_deform->createRigidityMenu(menu));
 
     auto *bar = new QToolBar(tr("Deform"), this);
     bar->setObjectName(QStringLiteral("deformToolBar"));

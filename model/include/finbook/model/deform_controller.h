@@ -37,6 +37,11 @@ public:
     const Eigen::MatrixX2d *poseVertices(Id groupId) const;
     QString lastError(Id groupId) const;
 
+    // Extra local/global rigidity passes after Igarashi's two steps (0 = the paper's method).
+    // Changing it re-prepares every pinned object of the document.
+    int extraPasses() const { return m_options.extraPasses; }
+    void setExtraPasses(int passes);
+
     // Where on the rest drawing a pin put at `shown` (canvas px, as displayed) belongs.
     QPointF restPointFor(Id groupId, QPointF shown) const;
 
@@ -65,6 +70,7 @@ private:
     PrecomputeService m_service;
     std::map<Id, State> m_states;
     std::deque<std::shared_ptr<const DeformSetup>> m_recent; // most recent first
+    deform::ArapOptions m_options;
 };
 
 } // namespace finbook::model

@@ -44,7 +44,8 @@ struct DeformSetup {
     MeshKey key;
     std::shared_ptr<const MeshedObject> meshed;
     Eigen::MatrixX2d pinRest;
-    Eigen::VectorXi pinVertex;                          // per pin: the mesh vertex it drives
+    Eigen::VectorXi pinVertex; // per pin: the mesh vertex it drives
+    int extraPasses = 0;       // the ArapOptions::extraPasses it was prepared with
     std::shared_ptr<const deform::ArapPrecompute> arap; // null without pins
 
     // Whether this setup serves `group` as it is now: same drawing, pins at the same rest

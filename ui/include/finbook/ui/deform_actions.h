@@ -8,6 +8,7 @@
 #include <QObject>
 
 class QDoubleSpinBox;
+class QMenu;
 class QWidget;
 
 namespace finbook::ui {
@@ -26,6 +27,8 @@ public:
     QList<QAction *> actions() const { return {m_reset, m_bake, m_removePins}; }
     // A spin box bound to the current object's mesh density (one undo step per edit).
     QDoubleSpinBox *createDensitySpinBox(QWidget *parent);
+    // Extra rigidity passes after the paper's two steps; remembered across sessions.
+    QMenu *createRigidityMenu(QWidget *parent);
 
 signals:
     // Sentences for the status bar (deformation errors, busy state).
