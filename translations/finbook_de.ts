@@ -209,22 +209,22 @@
         <translation>Für diese Zeichnung lässt sich kein Verformungsnetz erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="101"/>
+        <location filename="../model/src/deform_setup.cpp" line="102"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="110"/>
+        <location filename="../model/src/deform_setup.cpp" line="111"/>
         <source>The pins cannot be solved on this drawing: %1</source>
         <translation>Die Pins lassen sich auf dieser Zeichnung nicht berechnen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="136"/>
+        <location filename="../model/src/deform_setup.cpp" line="137"/>
         <source>The pins could not be solved: %1</source>
         <translation>Die Pins konnten nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="143"/>
+        <location filename="../model/src/deform_setup.cpp" line="144"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
     </message>
@@ -863,47 +863,67 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="14"/>
+        <location filename="../ui/src/deform_actions.cpp" line="17"/>
         <source>&amp;Reset Pose</source>
         <translation>Pose &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="16"/>
+        <location filename="../ui/src/deform_actions.cpp" line="19"/>
         <source>Move every pin of the current object back to where it was put</source>
         <translation>Alle Pins des aktuellen Objekts an die Stelle zurücksetzen, an der sie gesetzt wurden</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="17"/>
+        <location filename="../ui/src/deform_actions.cpp" line="20"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung &amp;anwenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="19"/>
+        <location filename="../ui/src/deform_actions.cpp" line="22"/>
         <source>Make the bent drawing the object&apos;s new strokes and remove its pins</source>
         <translation>Die verformte Zeichnung zu den neuen Strichen des Objekts machen und seine Pins entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="20"/>
+        <location filename="../ui/src/deform_actions.cpp" line="23"/>
         <source>Remove All &amp;Pins</source>
         <translation>Alle &amp;Pins entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="34"/>
+        <location filename="../ui/src/deform_actions.cpp" line="37"/>
         <source>Remove All Pins</source>
         <translation>Alle Pins entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="42"/>
+        <location filename="../ui/src/deform_actions.cpp" line="45"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="66"/>
+        <location filename="../ui/src/deform_actions.cpp" line="55"/>
+        <source>R&amp;igidity</source>
+        <translation>&amp;Steifigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="62"/>
+        <source>As in the Paper (Two Steps)</source>
+        <translation>Wie in der Veröffentlichung (zwei Schritte)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="63"/>
+        <source>Stiffer (+1 Pass)</source>
+        <translation>Steifer (+1 Durchgang)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="64"/>
+        <source>Stiffest (+3 Passes)</source>
+        <translation>Am steifsten (+3 Durchgänge)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="95"/>
         <source>Mesh density </source>
         <translation>Netzdichte </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="67"/>
+        <location filename="../ui/src/deform_actions.cpp" line="96"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Wie fein das Verformungsnetz des aktuellen Objekts ist (1 = Standard)</translation>
     </message>
@@ -1384,12 +1404,12 @@
         <translation>&amp;Verformen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="34"/>
+        <location filename="../ui/src/main_window_deform.cpp" line="36"/>
         <source>Deform</source>
         <translation>Verformen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="47"/>
+        <location filename="../ui/src/main_window_deform.cpp" line="49"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
