@@ -18,8 +18,9 @@ struct Options {
 };
 
 // Parses before any QApplication exists so `info`/`export` never need a display.
-// Returns an exit code to stop with, or -1 to continue.
-int parseCommandLine(const QStringList &arguments, Options &options)
+// Returns an exit code to stop with, or -1 to continue. Prints help, the version or the
+// error only when `print` is set (main() first installs the translator for that).
+int parseCommandLine(const QStringList &arguments, Options &options, bool print = true)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
@@ -39,7 +40,15 @@ int parseCommandLine(const QStringList &arguments, Options &options)
     parser.addPositionalArgument(QStringLiteral("args"),
                                  QCoreApplication::translate("CommandLine", "FILE, or a command."),
                                  QStringLiteral("[FILE | info FILE | export FILE OUTDIR]"));
-    QTextStream out(stdout), err(stderr);
+    QString outText, errText;
+    QTextStream out(&outText), err(&errText);
+    const auto finish = [&](finbook::app::ExitCode code) {
+        if (print) {
+            QTextStream(stdout) << outText;
+            QTextStream(stderr) << errText;
+        }
+        return int(code);
+    };
     const QString seeHelp =
         QCoreApplication::translate("CommandLine", "see finbook --help", "after an error");
     if (!parser.parse(arguments)) {
@@ -47,17 +56,22 @@ int parseCommandLine(const QStringList &arguments, Options &options)
         if (error.endsWith(QLatin1Char('.')))
             error.chop(1);
         err << error << QStringLiteral("; ") << seeHelp << QLatin1Char('.') << Qt::endl;
-        return int(finbook::app::ExitCode::BadInput);
+        return finish(finbook::app::ExitCode::BadInput);
     }
     if (parser.isSet(help) || parser.isSet(QStringLiteral("help-all"))) {
-        // No application object exists yet to tell the parser the program's name.
-        out << parser.helpText().replace(QLatin1String("<executable_name>"),
-                                         QLatin1String("finbook"));
-        return int(finbook::app::ExitCode::Ok);
+        // The usage line names the program as it was typed (a path); say "finbook".
+        QString text =
+            parser.helpText().replace(QLatin1String("<executable_name>"), QLatin1String("finbook"));
+        if (QCoreApplication::instance())
+            text.replace(QStringLiteral(": ") + QCoreApplication::arguments().value(0) +
+                             QLatin1Char(' '),
+                         QStringLiteral(": finbook "));
+        out << text;
+        return finish(finbook::app::ExitCode::Ok);
     }
     if (parser.isSet(version)) {
         out << "finbook " << finbook::app::finbookVersion() << Qt::endl;
-        return int(finbook::app::ExitCode::Ok);
+        return finish(finbook::app::ExitCode::Ok);
     }
     options.language = parser.value(lang);
     options.positional = parser.positionalArguments();
@@ -67,9 +81,21 @@ int parseCommandLine(const QStringList &arguments, Options &options)
         err << QCoreApplication::translate("CommandLine", "Unknown command \"%1\"; %2.")
                    .arg(options.positional.first(), seeHelp)
             << Qt::endl;
-        return int(finbook::app::ExitCode::BadInput);
+        return finish(finbook::app::ExitCode::BadInput);
     }
     return -1;
+}
+
+// The value of --lang, found without the parser (which may be refusing other arguments).
+QString languageArgument(const QStringList &arguments)
+{
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        if (arguments[i] == QLatin1String("--lang") && i + 1 < arguments.size())
+            return arguments[i + 1];
+        if (arguments[i].startsWith(QLatin1String("--lang=")))
+            return arguments[i].mid(7);
+    }
+    return {};
 }
 
 } // namespace
@@ -87,8 +113,12 @@ int main(int argc, char **argv)
     // Parse before any application object exists: --help, --version, bad arguments, `info`
     // and `export` must all work without a display.
     Options options;
-    if (const int code = parseCommandLine(arguments, options); code >= 0)
-        return code;
+    if (parseCommandLine(arguments, options, false) >= 0) {
+        // Help, version and argument errors are for people: say them in their language.
+        QCoreApplication app(argc, argv);
+        finbook::app::installTranslations(app, languageArgument(arguments));
+        return parseCommandLine(arguments, options);
+    }
 
     if (finbook::app::isHeadlessCommand(options.positional)) {
         // Rendering strokes into a QImage needs no platform plugin; a QGuiApplication would

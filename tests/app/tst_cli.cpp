@@ -99,6 +99,14 @@ void TestCli::versionAndHelp()
     QVERIFY(help.out.contains("finbook info FILE"));
     QVERIFY(help.out.contains("Usage: finbook"));
     QVERIFY(help.err.isEmpty());
+    // Help and argument errors speak the chosen language too.
+    const Run german =
+        runFinbook({QStringLiteral("--lang"), QStringLiteral("de"), QStringLiteral("--help")});
+    QCOMPARE(german.code, 0);
+    QVERIFY2(german.out.contains("Aufruf: finbook"), german.out.constData());
+    const Run bad = runFinbook({QStringLiteral("--lang=de"), QStringLiteral("--bogus")});
+    QCOMPARE(bad.code, 2);
+    QVERIFY2(bad.err.contains("Unbekannte Option"), bad.err.constData());
 }
 
 void TestCli::infoMatchesTheFile()
