@@ -1,5 +1,7 @@
 // Silhouettes of stroke groups: coverage with margin, gap closing, filled outlines, lobes,
 // holes, orientation.
+#include "geometry_test_support.h"
+
 #include <finbook/geometry/polyline.h>
 #include <finbook/geometry/silhouette.h>
 #include <finbook/geometry/simplicity.h>
@@ -36,12 +38,7 @@ bool inside(const Region &region, const Eigen::RowVector2d &p)
 {
     bool in = false;
     for (const Eigen::MatrixX2d &ring : regionRings(region))
-        for (Eigen::Index i = 0, j = ring.rows() - 1; i < ring.rows(); j = i++) {
-            const Eigen::RowVector2d a = ring.row(i), b = ring.row(j);
-            if ((a.y() > p.y()) != (b.y() > p.y()) &&
-                p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-                in = !in;
-        }
+        in ^= finbook::test::insideRing(ring, p);
     return in;
 }
 
