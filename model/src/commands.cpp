@@ -1,3 +1,5 @@
+#include "command_text.h"
+
 #include <finbook/model/commands.h>
 
 #include <QCoreApplication>
@@ -6,14 +8,6 @@
 #include <climits>
 
 namespace finbook::model {
-
-namespace {
-// The translation context of these texts; a class so lupdate files the strings under
-// "Command" too.
-struct Command {
-    Q_DECLARE_TR_FUNCTIONS(Command)
-};
-} // namespace
 
 // --- strokes -----------------------------------------------------------------------------
 

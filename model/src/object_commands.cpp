@@ -1,33 +1,11 @@
+#include "command_text.h"
+
 #include <finbook/model/object_commands.h>
 #include <finbook/model/render.h>
 
 #include <QCoreApplication>
 
 namespace finbook::model {
-
-namespace {
-// The translation context of these texts; a class so lupdate files the strings under
-// "Command" too.
-struct Command {
-    Q_DECLARE_TR_FUNCTIONS(Command)
-};
-
-// The source's strokes as they show now: a posed object contributes its deformed points.
-std::vector<Stroke> bakedStrokes(const StrokeGroup &group)
-{
-    std::vector<Stroke> strokes = group.strokes;
-    if (!group.isDeformed())
-        return strokes;
-    for (std::size_t i = 0; i < strokes.size(); ++i) {
-        if (!strokes[i].data)
-            continue;
-        auto data = std::make_shared<StrokeData>(*strokes[i].data);
-        data->points = displayedPoints(group, i);
-        strokes[i].data = std::move(data);
-    }
-    return strokes;
-}
-} // namespace
 
 MergeObjectsCommand::MergeObjectsCommand(Document *doc, Id sourceId, Id targetId,
                                          QUndoCommand *parent)
@@ -59,7 +37,7 @@ void MergeObjectsCommand::redo()
 
     // Take the source out first so no stroke id is ever in two objects at once.
     m_source = m_doc->takeGroup(m_sourceId);
-    std::vector<Stroke> moved = bakedStrokes(*m_source);
+    std::vector<Stroke> moved = posedStrokes(*m_source);
     std::vector<Stroke> merged;
     merged.reserve(m_targetStrokes.size() + moved.size());
     const bool sourceAbove = source.group > target.group;

@@ -1,4 +1,7 @@
+#include "command_text.h"
+
 #include <finbook/model/pin_commands.h>
+#include <finbook/model/render.h>
 
 #include <QCoreApplication>
 
@@ -8,12 +11,6 @@
 namespace finbook::model {
 
 namespace {
-// The translation context of these texts; a class so lupdate files the strings under
-// "Command" too.
-struct Command {
-    Q_DECLARE_TR_FUNCTIONS(Command)
-};
-
 bool finitePoint(QPointF p)
 {
     return std::isfinite(p.x()) && std::isfinite(p.y());
@@ -169,11 +166,7 @@ BakeDeformationCommand::BakeDeformationCommand(Document *doc, Id groupId, QUndoC
     m_oldPins = g->pins;
     m_oldDeformed = g->deformed;
     // The baked strokes keep their ids: they are the same strokes, redrawn.
-    for (std::size_t i = 0; i < g->strokes.size(); ++i) {
-        auto data = std::make_shared<StrokeData>(*g->strokes[i].data);
-        data->points = g->deformed->strokes[i];
-        m_newStrokes.push_back(Stroke{g->strokes[i].id, std::move(data)});
-    }
+    m_newStrokes = posedStrokes(*g);
 }
 
 void BakeDeformationCommand::redo()

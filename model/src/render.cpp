@@ -57,6 +57,21 @@ const std::vector<StrokePoint> &displayedPoints(const StrokeGroup &group, std::s
     return group.strokes[stroke].data->points;
 }
 
+std::vector<Stroke> posedStrokes(const StrokeGroup &group)
+{
+    std::vector<Stroke> strokes = group.strokes;
+    if (!group.isDeformed())
+        return strokes;
+    for (std::size_t i = 0; i < strokes.size(); ++i) {
+        if (!strokes[i].data)
+            continue;
+        auto data = std::make_shared<StrokeData>(*strokes[i].data);
+        data->points = displayedPoints(group, i);
+        strokes[i].data = std::move(data);
+    }
+    return strokes;
+}
+
 void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
                 const RenderOptions &options)
 {

@@ -31,6 +31,10 @@ void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &s
 // The points an object shows now: its solved pose if it has pins, else its rest strokes.
 const std::vector<StrokePoint> &displayedPoints(const StrokeGroup &group, std::size_t stroke);
 
+// The object's strokes as they show now, ids kept: a posed object's strokes get new data
+// holding their posed points; an unposed object's strokes are returned as they are (shared).
+std::vector<Stroke> posedStrokes(const StrokeGroup &group);
+
 // Renders a frame antialiased at `size` (the canvas scaled to fit, aspect kept).
 QImage renderFrame(const Frame &frame, const DocumentSettings &settings, QSize size,
                    const RenderOptions &options = {});
