@@ -92,6 +92,7 @@ class TestPinTool : public QObject {
 private slots:
     void addDragRemoveWithUndo();
     void drawingOnPosedObjectKeepsWhatIsShown();
+    void showMeshDrawsTheObjectsMesh();
     void clickOffTheDrawingAddsNothing();
     void lockedObjectsAreNotPinned();
 };
@@ -170,6 +171,33 @@ void TestPinTool::drawingOnPosedObjectKeepsWhatIsShown()
     QCOMPARE(fx.object().strokes[0].data->points, shown->strokes[0]);
     fx.doc.undoStack()->undo();
     QCOMPARE(serializeFinbook(fx.doc), posed);
+}
+
+namespace {
+// Pixels in the Show Mesh colour (blue, blended over white page and black strokes).
+int meshPixels(const QImage &image)
+{
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (c.blue() > c.red() + 40 && c.blue() > 120)
+                ++count;
+        }
+    return count;
+}
+} // namespace
+
+void TestPinTool::showMeshDrawsTheObjectsMesh()
+{
+    Fixture fx;
+    const int before = meshPixels(fx.canvas.grab().toImage());
+    fx.state.setShowMesh(true);
+    QTRY_VERIFY_WITH_TIMEOUT(fx.actions.controller()->setup(fx.group) != nullptr, 10000);
+    const int shown = meshPixels(fx.canvas.grab().toImage());
+    QVERIFY2(shown > before + 200, qPrintable(QStringLiteral("%1 -> %2").arg(before).arg(shown)));
+    fx.state.setShowMesh(false);
+    QCOMPARE(meshPixels(fx.canvas.grab().toImage()), before);
 }
 
 void TestPinTool::clickOffTheDrawingAddsNothing()
