@@ -59,8 +59,10 @@ void PrecomputeService::cancel(Id groupId)
 {
     m_pending.erase(groupId);
     m_latest[groupId] = ++m_generation; // anything still running for it is dropped
-    if (auto it = m_cancelFlags.find(groupId); it != m_cancelFlags.end())
-        it->second->store(true);
+    if (auto it = m_cancelFlags.find(groupId); it != m_cancelFlags.end()) {
+        it->second->store(true); // the running job keeps its own reference to the flag
+        m_cancelFlags.erase(it);
+    }
     updateBusy();
 }
 
