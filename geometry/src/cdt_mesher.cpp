@@ -1,15 +1,6 @@
 #include "cdt_mesher.h"
 
-#include <queue>
-
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Delaunay_mesh_face_base_2.h>
-#include <CGAL/Delaunay_mesh_size_criteria_2.h>
-#include <CGAL/Delaunay_mesh_vertex_base_2.h>
-#include <CGAL/Delaunay_mesher_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include "cgal_cdt.h"
 
 #include <exception>
 #include <vector>
@@ -17,20 +8,11 @@
 namespace finbook::geometry::detail {
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VbInfo = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
-using Vb = CGAL::Delaunay_mesh_vertex_base_2<K, VbInfo>;
-// Face info holds the nesting depth: odd = inside the region.
-using FbInfo = CGAL::Triangulation_face_base_with_info_2<int, K>;
-using FbCt = CGAL::Constrained_triangulation_face_base_2<K, FbInfo>;
-using FbC = CGAL::Constrained_Delaunay_triangulation_face_base_2<K, FbCt>;
-using Fb = CGAL::Delaunay_mesh_face_base_2<K, FbC>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-// Exact_predicates_tag: should two constraints still cross, CGAL inserts the crossing
-// instead of failing.
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
-using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
-using Mesher = CGAL::Delaunay_mesher_2<Cdt, Criteria>;
+using cgal::Cdt;
+using cgal::Criteria;
+using cgal::K;
+using cgal::markDomain;
+using cgal::Mesher;
 
 void insertRings(Cdt &cdt, const Region &region)
 {
@@ -41,35 +23,6 @@ void insertRings(Cdt &cdt, const Region &region)
             points.emplace_back(ring(i, 0), ring(i, 1));
         cdt.insert_constraint(points.begin(), points.end(), true);
     }
-}
-
-// Flood fill over unconstrained edges; every constrained edge crossed adds one nesting level.
-// Faces at odd depth are inside (outer rings open depth 1, holes depth 2, islands depth 3).
-void markDomain(Cdt &cdt)
-{
-    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
-        f->info() = -1;
-    std::queue<Cdt::Face_handle> border;
-    border.push(cdt.infinite_face());
-    cdt.infinite_face()->info() = 0;
-    while (!border.empty()) {
-        std::queue<Cdt::Face_handle> level;
-        level.push(border.front());
-        border.pop();
-        while (!level.empty()) {
-            const Cdt::Face_handle f = level.front();
-            level.pop();
-            for (int i = 0; i < 3; ++i) {
-                const Cdt::Face_handle n = f->neighbor(i);
-                if (n->info() != -1)
-                    continue;
-                n->info() = f->info() + (cdt.is_constrained({f, i}) ? 1 : 0);
-                (cdt.is_constrained({f, i}) ? border : level).push(n);
-            }
-        }
-    }
-    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
-        f->set_in_domain(!cdt.is_infinite(f) && f->info() % 2 == 1);
 }
 
 RawMesh extract(Cdt &cdt)

@@ -16,6 +16,13 @@ enum class GeometryErrorCode {
     NotSimple,            // a ring self-intersects or rings cross (meshRegion precondition)
     TriangulationFailed,  // CGAL or OpenMesh refused the region (reported, never thrown)
     ClippingFailed,       // Clipper refused the outlines or memory ran out (reported, not thrown)
+    SkeletonFailed,       // CGAL's straight skeleton gave up on the outline (reported, not thrown)
+    Cancelled,            // the caller's cancel callback asked to stop
+    InvalidIndex,         // a joint, bone or part index that the skeleton does not have
+    NonFiniteInput,       // NaN or infinity where every value is needed (cage corners)
+    TooFewCorners,        // a cage with fewer than three distinct corners
+    PointsOutsideCage,    // points that must lie inside a cage do not
+    MalformedFile,        // a mesh file that does not follow its format (OFF)
 };
 
 struct GeometryError {

@@ -1,0 +1,207 @@
+#include "bone_graph.h"
+#include "dense_graph.h"
+#include "skeleton_contour.h"
+#include "skeleton_tree.h"
+
+#include <finbook/geometry/skeleton/skeleton_refine.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <optional>
+
+namespace finbook::geometry {
+namespace {
+
+using namespace detail;
+
+DenseGraph fromRaw(const RawSkeleton &raw)
+{
+    DenseGraph graph;
+    for (Eigen::Index v = 0; v < raw.nodes.rows(); ++v)
+        graph.addNode(raw.nodes.row(v).transpose(), raw.radius(v), raw.clearance(v),
+                      raw.polygon(v));
+    for (Eigen::Index e = 0; e < raw.edges.rows(); ++e)
+        graph.addEdge(raw.edges(e, 0), raw.edges(e, 1));
+    return graph;
+}
+
+bool validRaw(const RawSkeleton &raw)
+{
+    const Eigen::Index n = raw.nodes.rows();
+    if (raw.radius.size() != n || raw.clearance.size() != n || raw.polygon.size() != n)
+        return false;
+    if (!raw.nodes.allFinite() || !raw.radius.allFinite() || !raw.clearance.allFinite())
+        return false;
+    return raw.edges.size() == 0 || (raw.edges.minCoeff() >= 0 && raw.edges.maxCoeff() < n);
+}
+
+// Merges the two junctions of one junction–junction branch into the one with the larger
+// clearance, unless a straight connection from there to the other's neighbours would leave
+// the shape. False if it would.
+bool mergeBranch(DenseGraph &g, const Branch &branch, const Contours &contours)
+{
+    const int a = branch.nodes.front(), z = branch.nodes.back();
+    const int centre = g.clearance[std::size_t(a)] >= g.clearance[std::size_t(z)] ? a : z;
+    const int other = centre == a ? z : a;
+    const int inward =
+        branch.nodes.size() > 2 ? branch.nodes[other == a ? 1 : branch.nodes.size() - 2] : centre;
+    std::vector<int> outside;
+    for (int n : g.adj[std::size_t(other)]) {
+        if (n != inward)
+            outside.push_back(n);
+    }
+    const int polygon = g.polygon[std::size_t(centre)];
+    for (int n : outside) {
+        if (!contours.boneFits(polygon, g.pos[std::size_t(centre)],
+                               g.clearance[std::size_t(centre)], g.pos[std::size_t(n)],
+                               g.clearance[std::size_t(n)]))
+            return false;
+    }
+    for (int v : branch.nodes) {
+        if (v != centre)
+            g.removeNode(v);
+    }
+    for (int n : outside)
+        g.addEdge(centre, n);
+    return true;
+}
+
+// Junctions joined by a branch shorter than `distance` merge, shortest branch first, so
+// clusters of junctions shrink to their widest one step by step; a merge that would take a
+// bone outside is skipped.
+void mergeJunctions(DenseGraph &g, double distance, const Contours &contours)
+{
+    if (!(distance > 0.0))
+        return;
+    std::vector<std::pair<int, int>> blocked;
+    for (;;) {
+        std::optional<Branch> shortest;
+        for (Branch &b : extractBranches(g)) {
+            const std::pair ends{std::min(b.nodes.front(), b.nodes.back()),
+                                 std::max(b.nodes.front(), b.nodes.back())};
+            if (b.nodes.size() < 2 || !isJunction(g, b.nodes.front()) ||
+                !isJunction(g, b.nodes.back()) || b.length >= distance ||
+                std::find(blocked.begin(), blocked.end(), ends) != blocked.end())
+                continue;
+            if (!shortest || b.length < shortest->length)
+                shortest = std::move(b);
+        }
+        if (!shortest)
+            return;
+        if (!mergeBranch(g, *shortest, contours))
+            blocked.emplace_back(std::min(shortest->nodes.front(), shortest->nodes.back()),
+                                 std::max(shortest->nodes.front(), shortest->nodes.back()));
+    }
+}
+
+void prune(DenseGraph &g, double length)
+{
+    if (!(length > 0.0))
+        return;
+    removeTerminalBranches(g, [&](const std::vector<int> &, int, double l) { return l < length; });
+}
+
+int nearestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, int polygon,
+                 const Eigen::Vector2d &target)
+{
+    int best = -1;
+    for (int j = 0; j < graph.size(); ++j) {
+        if ((polygon < 0 || polygonOf[std::size_t(j)] == polygon) &&
+            (best < 0 || (graph.pos[std::size_t(j)] - target).squaredNorm() <
+                             (graph.pos[std::size_t(best)] - target).squaredNorm()))
+            best = j;
+    }
+    return best;
+}
+
+Skeleton rooted(const DenseGraph &bones, const RawSkeleton &raw, const RefineOptions &options)
+{
+    JointGraph graph;
+    std::vector<int> polygonOf, index(std::size_t(bones.size()), -1);
+    for (int v = 0; v < bones.size(); ++v) {
+        if (bones.alive[std::size_t(v)]) {
+            index[std::size_t(v)] =
+                graph.add(bones.pos[std::size_t(v)], bones.radius[std::size_t(v)], 0);
+            polygonOf.push_back(bones.polygon[std::size_t(v)]);
+        }
+    }
+    for (int v = 0; v < bones.size(); ++v) {
+        for (int n : bones.adj[std::size_t(v)])
+            graph.connect(index[std::size_t(v)], index[std::size_t(n)]);
+    }
+    const Eigen::Vector2d target =
+        options.rootNear ? *options.rootNear : Eigen::Vector2d(raw.centroid.transpose());
+    std::vector<int> roots;
+    for (std::size_t p = 0; p < raw.contour.size(); ++p) {
+        const Eigen::Vector2d c = regionCentroid(Region{raw.contour[p]}).transpose();
+        roots.push_back(nearestJoint(graph, polygonOf, int(p), c));
+    }
+    return orderedSkeleton(graph, roots, nearestJoint(graph, polygonOf, -1, target));
+}
+
+bool validLength(double value)
+{
+    return value >= 0.0;
+} // false for NaN
+
+} // namespace
+
+Expected<Skeleton, GeometryError> refineSkeleton(const RawSkeleton &raw,
+                                                 const RefineOptions &options)
+{
+    if (!validLength(options.boneTolerance) || !validLength(options.mergeDistance) ||
+        !validLength(options.pruneLength) || !validLength(options.collapseLength) ||
+        (options.rootNear && !options.rootNear->allFinite()))
+        return unexpected(GeometryError{GeometryErrorCode::InvalidOptions,
+                                        "The skeleton refinement settings are out of range."});
+    if (!validRaw(raw))
+        return unexpected(GeometryError{GeometryErrorCode::InvalidIndex,
+                                        "The stored skeleton is inconsistent; rebuild it."});
+    const Contours contours(raw.contour);
+    DenseGraph graph = fromRaw(raw);
+    prune(graph, options.pruneLength);
+    mergeJunctions(graph, options.mergeDistance, contours);
+    DenseGraph bones = bonesFromBranches(graph, options.boneTolerance, contours);
+    collapseShortBones(bones, options.collapseLength, contours);
+    return rooted(bones, raw, options);
+}
+
+RefineRanges refineRanges(const RawSkeleton &raw)
+{
+    RefineRanges ranges;
+    if (!validRaw(raw))
+        return ranges;
+    const DenseGraph graph = fromRaw(raw);
+    double clearance = 0.0, jj = 0.0, terminal = 0.0, longest = 0.0;
+    for (double c : graph.clearance)
+        clearance = std::max(clearance, c);
+    for (const Branch &b : extractBranches(graph)) {
+        const bool ja = isJunction(graph, b.nodes.front()), jz = isJunction(graph, b.nodes.back());
+        if (ja && jz)
+            jj = std::max(jj, b.length);
+        else if (ja || jz)
+            terminal = std::max(terminal, b.length);
+        longest = std::max(longest, b.length);
+    }
+    auto positive = [](double v) { return v > 0.0 ? v : 1.0; };
+    ranges.boneTolerance = positive(clearance);
+    ranges.mergeDistance = positive(jj);
+    ranges.pruneLength = positive(terminal);
+    ranges.collapseLength = positive(longest);
+    return ranges;
+}
+
+Expected<Skeleton, GeometryError> skeletonize(const Region &region,
+                                              const SkeletonOptions &skeletonOptions,
+                                              const RefineOptions &refineOptions)
+{
+    const auto raw = rawSkeleton(region, skeletonOptions);
+    if (!raw)
+        return unexpected(raw.error());
+    return refineSkeleton(*raw, refineOptions);
+}
+
+} // namespace finbook::geometry
