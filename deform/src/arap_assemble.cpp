@@ -108,6 +108,24 @@ void buildCorners(ArapPrecompute &d)
     }
 }
 
+// Triangles around every solved vertex (free and handles), by counting sort.
+void buildVertexTriangles(ArapPrecompute &d)
+{
+    const auto solved = static_cast<int>(d.freeCount + d.handleEntry.size());
+    const auto m = static_cast<int>(d.triangles.rows());
+    d.vertexStart = Eigen::VectorXi::Zero(solved + 1);
+    for (int t = 0; t < m; ++t)
+        for (int k = 0; k < 3; ++k)
+            ++d.vertexStart(d.triangles(t, k) + 1);
+    for (int v = 0; v < solved; ++v)
+        d.vertexStart(v + 1) += d.vertexStart(v);
+    d.vertexTriangle.resize(d.vertexStart(solved));
+    Eigen::VectorXi next = d.vertexStart.head(solved);
+    for (int t = 0; t < m; ++t)
+        for (int k = 0; k < 3; ++k)
+            d.vertexTriangle(next(d.triangles(t, k))++) = t;
+}
+
 } // namespace
 
 void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
@@ -118,6 +136,8 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
     d.triangles.resize(m, 3);
     d.restCentered.resize(m, 3);
     d.collapseThreshold.resize(m);
+    d.restSquaredNorm.resize(m);
+    d.restDoubleArea.resize(m);
     const Eigen::SparseMatrix<double> upper = d.stepTwoMatrix.triangularView<Eigen::Upper>();
     d.stepOneMatrix = upper.cast<Complex>();
     d.stepOneMatrix.coeffs().setZero();
@@ -136,7 +156,10 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
         const Complex centroid = (z[0] + z[1] + z[2]) / 3.0;
         for (int r = 0; r < 3; ++r)
             d.restCentered(k, r) = z[r] - centroid;
-        d.collapseThreshold(k) = kCollapseFraction * d.restCentered.row(k).squaredNorm();
+        d.restSquaredNorm(k) = d.restCentered.row(k).squaredNorm();
+        d.collapseThreshold(k) = kCollapseFraction * d.restSquaredNorm(k);
+        const Complex e1 = z[1] - z[0], e2 = z[2] - z[0];
+        d.restDoubleArea(k) = e1.real() * e2.imag() - e1.imag() * e2.real();
         scatter(I, similarityForm(z), d, g01, h01);
     }
     const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
@@ -146,6 +169,7 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
     d.stepTwoCoupling.setFromTriplets(h01.begin(), h01.end());
     d.stepOneNorm = selfAdjointNorm(d.stepOneMatrix);
     buildCorners(d);
+    buildVertexTriangles(d);
 }
 
 } // namespace finbook::deform::detail

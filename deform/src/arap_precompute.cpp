@@ -1,4 +1,4 @@
-#include "arap_internal.h"
+#include "arap_solver.h"
 
 #include <finbook/deform/arap.h>
 
@@ -18,17 +18,20 @@ struct Classification {
     std::vector<int> freeVertices, handleVertices, handleEntries, rigidVertices, rigidEntries;
     std::vector<int> pinnedVertices;
     std::vector<Eigen::Index> solvedTriangles;
+    Eigen::VectorXi label;    // component per (original) vertex
+    std::vector<bool> pinned; // per component: has at least one pinned vertex
 };
 
 Classification classify(Eigen::Index n, const Eigen::MatrixX3i &F, const Eigen::VectorXi &b)
 {
     int componentCount = 0;
-    const Eigen::VectorXi label = detail::componentLabels(n, F, componentCount);
+    Classification c;
+    c.label = detail::componentLabels(n, F, componentCount);
+    const Eigen::VectorXi &label = c.label;
     std::vector<int> lastEntry(static_cast<std::size_t>(n), -1);
     for (Eigen::Index e = 0; e < b.size(); ++e)
         lastEntry[b(e)] = static_cast<int>(e);
     std::vector<int> pinCount(componentCount, 0), componentEntry(componentCount, -1);
-    Classification c;
     for (int v = 0; v < n; ++v) {
         if (lastEntry[v] < 0)
             continue;
@@ -52,6 +55,9 @@ Classification classify(Eigen::Index n, const Eigen::MatrixX3i &F, const Eigen::
         if (pinCount[label(F(t, 0))] >= 2)
             c.solvedTriangles.push_back(t);
     }
+    c.pinned.resize(std::size_t(componentCount));
+    for (int k = 0; k < componentCount; ++k)
+        c.pinned[std::size_t(k)] = pinCount[k] > 0;
     return c;
 }
 
@@ -83,9 +89,9 @@ std::vector<int> fillReducingOrder(const Eigen::MatrixX3i &F, const Classificati
                                    const std::vector<int> &freeLocal, ArapPrecompute &d)
 {
     const Eigen::SparseMatrix<double> laplacian = freeLaplacian(F, c, freeLocal);
+    const auto nf = static_cast<int>(c.freeVertices.size());
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
     Eigen::AMDOrdering<int>()(laplacian.selfadjointView<Eigen::Upper>(), inverse);
-    const auto nf = static_cast<int>(c.freeVertices.size());
     std::vector<int> ordered(static_cast<std::size_t>(nf));
     for (int k = 0; k < nf; ++k)
         ordered[k] = c.freeVertices[inverse.indices()(k)];
@@ -133,6 +139,15 @@ std::vector<int> numberVertices(const Eigen::MatrixX2d &V, const Eigen::MatrixX3
     d.entryRest.resize(b.size());
     for (Eigen::Index e = 0; e < b.size(); ++e)
         d.entryRest(e) = Complex(V(b(e), 0), V(b(e), 1));
+    const Eigen::Index solved = d.freeCount + d.handleEntry.size();
+    if (solved > 0) {
+        const Eigen::VectorXd x = d.rest.head(solved).real(), y = d.rest.head(solved).imag();
+        d.objectSize = std::hypot(x.maxCoeff() - x.minCoeff(), y.maxCoeff() - y.minCoeff());
+    }
+    Eigen::VectorXi internalLabel(n);
+    for (Eigen::Index k = 0; k < n; ++k)
+        internalLabel(k) = c.label(d.order(k));
+    detail::buildFollowers(internalLabel, c.pinned, d);
     return internal;
 }
 
@@ -162,6 +177,7 @@ ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::Matr
     detail::assembleArapSystems(V, F, c.solvedTriangles, internal, *d);
     if (auto error = factorization.finish(cancelled))
         return unexpected(std::move(*error));
+    detail::chooseDragPasses(*d);
     return std::shared_ptr<const ArapPrecompute>(std::move(d));
 }
 

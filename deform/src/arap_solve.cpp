@@ -1,21 +1,9 @@
-#include "arap_internal.h"
+#include "arap_solver.h"
 
 #include <finbook/deform/arap.h>
 
 namespace finbook::deform {
-namespace {
-
-using detail::Complex;
-using detail::makeError;
-
-// Per-thread buffers: a drag event must not allocate (at 100k vertices fresh megabyte-sized
-// vectors cost more page faults than the whole back-substitution).
-struct Workspace {
-    Eigen::VectorXcd positions; // n, internal order: v′, then v″
-    Eigen::VectorXcd rhs;       // freeCount
-    Eigen::VectorXcd residual;  // freeCount, only for the step-1 fallback without basis
-    Eigen::VectorXcd rotations; // per solved triangle, 3·R
-};
+namespace detail {
 
 Workspace &workspace()
 {
@@ -23,17 +11,7 @@ Workspace &workspace()
     return w;
 }
 
-// Plain complex products: std::complex's operator* adds NaN-recovery branches (Annex G) to
-// the hottest loop, and inputs here are finite by construction.
-inline Complex mul(Complex a, Complex b)
-{
-    return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
-}
-
-inline Complex mulConj(Complex a, Complex b) // conj(a)·b
-{
-    return {a.real() * b.real() + a.imag() * b.imag(), a.real() * b.imag() - a.imag() * b.real()};
-}
+namespace {
 
 Complex target(const Eigen::MatrixX2d &bc, int entry)
 {
@@ -54,7 +32,8 @@ std::optional<DeformError> checkTargets(const ArapPrecompute &d, const Eigen::Ma
 }
 
 // Handles take their targets; components with fewer than two pinned vertices translate with
-// their pin (or stay at rest), which is their zero-energy answer and keeps G00, H00 SPD.
+// their pin (or stay at rest until placeFollowers moves them), which is their zero-energy
+// answer and keeps G00, H00 SPD.
 void placeConstrained(const ArapPrecompute &d, const Eigen::MatrixX2d &bc, Eigen::VectorXcd &W)
 {
     const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
@@ -70,66 +49,11 @@ void placeConstrained(const ArapPrecompute &d, const Eigen::MatrixX2d &bc, Eigen
 std::optional<DeformError> checkSolve(bool finite, double relative, ArapSolveReport &report)
 {
     report.relativeResidual = std::max(report.relativeResidual, relative);
-    if (!finite || !(relative <= detail::kResidualTolerance))
+    if (!finite || !(relative <= kResidualTolerance))
         return makeError(DeformErrorCode::SolveFailed,
                          "the deformation solve was inaccurate (relative residual " +
                              std::to_string(relative) + ")");
     return std::nullopt;
-}
-
-// Step 1: the free vertices' best similarity-preserving positions given the handles.
-std::optional<DeformError> similarityStep(const ArapPrecompute &d, Workspace &w,
-                                          ArapSolveReport &report)
-{
-    const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
-    if (nf == 0)
-        return std::nullopt;
-    auto u = w.positions.head(nf);
-    const auto q = w.positions.segment(nf, handles);
-    if (d.stepOneBasis.cols() == handles) { // u = M q, one pass over the row-major basis
-        const Complex *m = d.stepOneBasis.data();
-        for (Eigen::Index i = 0; i < nf; ++i, m += handles) {
-            Complex sum;
-            for (Eigen::Index c = 0; c < handles; ++c)
-                sum += mul(m[c], q(c));
-            u(i) = sum;
-        }
-        return std::nullopt;
-    }
-    auto &rhs = w.rhs;
-    rhs.noalias() = -(d.stepOneCoupling * q);
-    u = d.stepOneFactor.solve(rhs);
-    w.residual.noalias() = d.stepOneMatrix.selfadjointView<Eigen::Upper>() * u;
-    w.residual -= rhs;
-    return checkSolve(u.allFinite(), detail::relativeResidual(w.residual, d.stepOneNorm, u, rhs),
-                      report);
-}
-
-// Step 2a: the best rotation of every triangle's rest shape onto the current positions
-// (Procrustes, see detail::bestRotation), scaled by 3 for rigidFitRhs. Kept apart from the
-// scatter below so the square roots and divisions of consecutive triangles overlap instead of
-// waiting on each other's stores to shared vertices (2.5× faster measured at 2k vertices).
-void fitRotations(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::VectorXcd &rotations)
-{
-    // Raw pointers: through Eigen accessors the compiler must assume each store may move
-    // the matrices' data and reloads them, which halved the speed of this loop.
-    const Eigen::Index m = d.triangles.rows();
-    const int *i0 = d.triangles.col(0).data(), *i1 = d.triangles.col(1).data(),
-              *i2 = d.triangles.col(2).data();
-    const Complex *r1 = d.restCentered.col(1).data(), *r2 = d.restCentered.col(2).data();
-    const double *threshold = d.collapseThreshold.data();
-    const Complex *p = W.data();
-    Complex *out = rotations.data();
-    for (Eigen::Index t = 0; t < m; ++t) {
-        // Σ conj(r_k)·p_k is unchanged by shifting p (Σ r_k = 0), so measuring p from one
-        // corner replaces the centroid; it keeps far-from-origin coordinates from amplifying
-        // the rounding left in Σ r_k.
-        const Complex p0 = p[i0[t]];
-        const Complex s = mulConj(r1[t], p[i1[t]] - p0) + mulConj(r2[t], p[i2[t]] - p0);
-        const double squared = detail::squaredMagnitude(s);
-        out[t] = squared > threshold[t] * threshold[t] ? s * (3.0 / std::sqrt(squared))
-                                                       : Complex(3.0, 0.0);
-    }
 }
 
 // Right-hand side of step 2b for the free vertices: each triangle's rigid copy R·r
@@ -163,31 +87,114 @@ double stepTwoResidual(const ArapPrecompute &d, const Eigen::Ref<const Eigen::Ve
         Complex row = -fs[j];
         for (int p = start[j]; p < start[j + 1]; ++p)
             row += value[p] * xs[index[p]];
-        residual = std::max(residual, detail::squaredMagnitude(row));
-        xMax = std::max(xMax, detail::squaredMagnitude(xs[j]));
-        fMax = std::max(fMax, detail::squaredMagnitude(fs[j]));
+        residual = std::max(residual, squaredMagnitude(row));
+        xMax = std::max(xMax, squaredMagnitude(xs[j]));
+        fMax = std::max(fMax, squaredMagnitude(fs[j]));
     }
     const double scale = d.stepTwoNorm * std::sqrt(xMax) + std::sqrt(fMax);
     return scale > 0.0 ? std::sqrt(residual) / scale : std::sqrt(residual);
 }
 
-// Steps 2a + 2b: rigid fit per triangle, then the Laplacian solve for x + iy at once.
-std::optional<DeformError> scaleStep(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report)
+} // namespace
+
+std::optional<DeformError> beginSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc,
+                                      Workspace &w)
+{
+    if (auto error = checkTargets(d, bc))
+        return error;
+    w.positions.resize(d.rest.size());
+    w.rhs.resize(d.freeCount);
+    w.residual.resize(d.freeCount);
+    w.rotations.resize(d.triangles.rows());
+    placeConstrained(d, bc, w.positions);
+    return std::nullopt;
+}
+
+// Step 1: the free vertices' best similarity-preserving positions given the handles.
+std::optional<DeformError> similarityStep(const ArapPrecompute &d, Workspace &w,
+                                          ArapSolveReport &report, bool check)
 {
     const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
     if (nf == 0)
         return std::nullopt;
-    fitRotations(d, w.positions, w.rotations);
-    rigidFitRhs(d, w.rotations, w.rhs);
-    auto &f = w.rhs;
-    f.noalias() -= d.stepTwoCoupling * w.positions.segment(nf, handles);
-    auto x = w.positions.head(nf);
-    x = f;
-    arapStepTwoBacksubstitute(d, x);
-    return checkSolve(x.allFinite(), stepTwoResidual(d, x, f), report);
+    auto u = w.positions.head(nf);
+    const auto q = w.positions.segment(nf, handles);
+    if (d.stepOneBasis.cols() == handles) { // u = M q, one pass over the row-major basis
+        const Complex *m = d.stepOneBasis.data();
+        for (Eigen::Index i = 0; i < nf; ++i, m += handles) {
+            Complex sum;
+            for (Eigen::Index c = 0; c < handles; ++c)
+                sum += mul(m[c], q(c));
+            u(i) = sum;
+        }
+        return std::nullopt;
+    }
+    auto &rhs = w.rhs;
+    rhs.noalias() = -(d.stepOneCoupling * q);
+    u = d.stepOneFactor.solve(rhs);
+    if (!check) // an initial guess for refinement, which checks the solve it ends with
+        return u.allFinite() ? std::nullopt
+                             : std::optional(makeError(DeformErrorCode::SolveFailed,
+                                                       "the similarity solve failed"));
+    w.residual.noalias() = d.stepOneMatrix.selfadjointView<Eigen::Upper>() * u;
+    w.residual -= rhs;
+    return checkSolve(u.allFinite(), relativeResidual(w.residual, d.stepOneNorm, u, rhs), report);
 }
 
-void scatter(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::MatrixX2d &U)
+// Step 2a: the best rotation of every triangle's rest shape onto the current positions
+// (Procrustes, see bestRotation), scaled by 3 for rigidFitRhs. Kept apart from the scatter
+// so the square roots and divisions of consecutive triangles overlap instead of waiting on
+// each other's stores to shared vertices (2.5× faster measured at 2k vertices).
+double fitRotations(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::VectorXcd &rotations,
+                    bool energy)
+{
+    // Raw pointers: through Eigen accessors the compiler must assume each store may move
+    // the matrices' data and reloads them, which halved the speed of this loop.
+    const Eigen::Index m = d.triangles.rows();
+    const int *i0 = d.triangles.col(0).data(), *i1 = d.triangles.col(1).data(),
+              *i2 = d.triangles.col(2).data();
+    const Complex *r1 = d.restCentered.col(1).data(), *r2 = d.restCentered.col(2).data();
+    const double *threshold = d.collapseThreshold.data(), *restNorm = d.restSquaredNorm.data();
+    const Complex *p = W.data();
+    Complex *out = rotations.data();
+    double total = 0.0;
+    for (Eigen::Index t = 0; t < m; ++t) {
+        // Σ conj(r_k)·p_k is unchanged by shifting p (Σ r_k = 0), so measuring p from one
+        // corner replaces the centroid; it keeps far-from-origin coordinates from amplifying
+        // the rounding left in Σ r_k.
+        const Complex p0 = p[i0[t]], q1 = p[i1[t]] - p0, q2 = p[i2[t]] - p0;
+        const Complex s = mulConj(r1[t], q1) + mulConj(r2[t], q2);
+        const double squared = squaredMagnitude(s);
+        const bool fits = squared > threshold[t] * threshold[t];
+        const double length = std::sqrt(squared);
+        out[t] = fits ? s * (3.0 / length) : Complex(3.0, 0.0);
+        if (energy) { // 3·Σ_k |p̃_k − R r_k|², the edge sum for centred corners
+            const double spread =
+                squaredMagnitude(q1) + squaredMagnitude(q2) - squaredMagnitude(q1 + q2) / 3.0;
+            total += 3.0 * (spread + restNorm[t] - 2.0 * (fits ? length : s.real()));
+        }
+    }
+    return total;
+}
+
+void globalStep(const ArapPrecompute &d, Workspace &w)
+{
+    const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
+    rigidFitRhs(d, w.rotations, w.rhs);
+    w.rhs.noalias() -= d.stepTwoCoupling * w.positions.segment(nf, handles);
+    auto x = w.positions.head(nf);
+    x = w.rhs;
+    arapStepTwoBacksubstitute(d, x);
+}
+
+std::optional<DeformError> checkGlobalStep(const ArapPrecompute &d, const Workspace &w,
+                                           ArapSolveReport &report)
+{
+    const auto x = w.positions.head(d.freeCount);
+    return checkSolve(x.allFinite(), stepTwoResidual(d, x, w.rhs), report);
+}
+
+void scatterPositions(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::MatrixX2d &U)
 {
     U.resize(W.size(), 2);
     const int *order = d.order.data();
@@ -199,25 +206,62 @@ void scatter(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::MatrixX2
     }
 }
 
-ArapSolveResult solve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc, Eigen::MatrixX2d &U,
-                      int scalePasses)
+} // namespace detail
+
+namespace {
+
+using detail::Workspace;
+
+// Steps 1, then `scalePasses` × (2a + 2b): the paper's method (and its extra passes).
+ArapSolveResult twoStepSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc,
+                             Eigen::MatrixX2d &U, int scalePasses)
 {
-    if (auto error = checkTargets(d, bc))
+    Workspace &w = detail::workspace();
+    if (auto error = detail::beginSolve(d, bc, w))
         return unexpected(std::move(*error));
     ArapSolveReport report;
-    Workspace &w = workspace();
-    w.positions.resize(d.rest.size());
-    w.rhs.resize(d.freeCount);
-    w.residual.resize(d.freeCount);
-    w.rotations.resize(d.triangles.rows());
-    placeConstrained(d, bc, w.positions);
-    if (auto error = similarityStep(d, w, report))
+    if (auto error = detail::similarityStep(d, w, report, true))
         return unexpected(std::move(*error));
-    for (int pass = 0; pass < scalePasses; ++pass) {
-        if (auto error = scaleStep(d, w, report))
+    for (int pass = 0; pass < scalePasses && d.freeCount > 0; ++pass) {
+        detail::fitRotations(d, w.positions, w.rotations, false);
+        detail::globalStep(d, w);
+        if (auto error = detail::checkGlobalStep(d, w, report))
             return unexpected(std::move(*error));
+        ++report.passes;
     }
-    scatter(d, w.positions, U);
+    report.flippedTriangles = detail::countFlips(d, w.positions);
+    detail::placeFollowers(d, w.positions);
+    detail::scatterPositions(d, w.positions, U);
+    return report;
+}
+
+ArapSolveResult refinedSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc,
+                             Eigen::MatrixX2d &U, ArapStage stage,
+                             const std::function<bool()> &cancelled)
+{
+    Workspace &w = detail::workspace();
+    if (auto error = detail::beginSolve(d, bc, w))
+        return unexpected(std::move(*error));
+    ArapSolveReport report;
+    if (auto error = detail::similarityStep(d, w, report, false))
+        return unexpected(std::move(*error));
+    const bool final = stage == ArapStage::Final;
+    const int passes = final ? std::max(1, d.options.finalPassCap) : d.dragPasses;
+    const double tolerance = final ? d.options.finalTolerance * d.objectSize : 0.0;
+    // Drag: the flip repair may add an eighth of the passes (only for poses with flipped
+    // triangles, and only while their count falls); none at the minimum of two passes (large
+    // meshes), where the budget has no room and local relaxation alone repairs.
+    const int flipPasses =
+        d.options.fixFlips && !final && d.dragPasses >= 3 ? std::max(1, d.dragPasses / 8) : 0;
+    if (auto error = detail::refine(d, w, passes, flipPasses, tolerance,
+                                    final ? cancelled : nullptr, report))
+        return unexpected(std::move(*error));
+    if (d.options.fixFlips)
+        detail::repairFlips(d, w, report);
+    else
+        report.flippedTriangles = detail::countFlips(d, w.positions);
+    detail::placeFollowers(d, w.positions);
+    detail::scatterPositions(d, w.positions, U);
     return report;
 }
 
@@ -226,13 +270,22 @@ ArapSolveResult solve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc, Eigen
 ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
                           Eigen::MatrixX2d &U)
 {
-    return solve(data, bc, U, 1 + std::max(0, data.options.extraPasses));
+    return twoStepSolve(data, bc, U, 1 + std::max(0, data.options.extraPasses));
+}
+
+ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
+                          Eigen::MatrixX2d &U, ArapStage stage,
+                          const std::function<bool()> &cancelled)
+{
+    if (data.options.method == ArapMethod::TwoStep)
+        return arapSolve(data, bc, U);
+    return refinedSolve(data, bc, U, stage, cancelled);
 }
 
 ArapSolveResult arapSimilarity(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
                                Eigen::MatrixX2d &U)
 {
-    return solve(data, bc, U, 0);
+    return twoStepSolve(data, bc, U, 0);
 }
 
 } // namespace finbook::deform

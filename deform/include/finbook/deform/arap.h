@@ -8,9 +8,16 @@
 //   step 2b  scale adjustment: graph-Laplacian solve H00 u = f, x+iy as one complex
 //            right-hand side against the real factor
 //
-// Pins are resolved per connected component of the mesh: a component with no pin stays at
-// rest, one with one pinned vertex translates with it, one with ≥ 2 distinct pinned vertices
-// gets the full solve. Vertices referenced by no triangle are components of their own.
+// Refinement (ArapMethod::Refined, the default): more 2a/2b passes from step 1, which is one
+// local/global iteration of uniform-weight ARAP, accelerated (over-relaxation, then Anderson
+// acceleration with an energy safeguard): a budgeted number per drag event, to convergence
+// for a stored pose; then flipped triangles are repaired by local relaxation.
+//
+// Pins are resolved per connected component of the mesh: one with ≥ 2 distinct pinned
+// vertices gets the full solve, one with one pinned vertex translates with it, one with no
+// pin follows the nearest pinned component rigidly (options.followNearestComponent; else,
+// or when nothing is pinned, it stays at rest). Vertices referenced by no triangle are
+// components of their own.
 #pragma once
 
 #include <finbook/deform/deform_error.h>
@@ -25,11 +32,54 @@
 
 namespace finbook::deform {
 
+// What a pose is solved with (the Deform → Rigidity setting).
+enum class ArapMethod {
+    // Igarashi 2005 exactly: steps 1, 2a, 2b, then ArapOptions::extraPasses more 2a/2b
+    // passes, the same while dragging and when stored. No flip fix.
+    TwoStep,
+    // Step 1, then accelerated local/global passes toward the uniform-weight ARAP optimum:
+    // dragPasses of them per drag event, to convergence for a final (stored) pose; flipped
+    // triangles that the optimum does not force are repaired.
+    Refined,
+};
+
+// Which pose a solve is for. The model asks for Drag while a pin moves and for Final when
+// the drag ends and whenever a pose is stored, saved, exported or baked; the method decides
+// what each costs (see arapSolve below).
+enum class ArapStage {
+    Drag,
+    Final,
+};
+
 struct ArapOptions {
     // Further local/global passes (2a + 2b again, started from the previous result). Each
     // costs about one more step-2 back-substitution; 0 is the paper's method exactly. The
     // result stays a pure function of the pin targets (no warm start across drag events).
+    // Used by ArapMethod::TwoStep and by the three-argument arapSolve.
     int extraPasses = 0;
+    ArapMethod method = ArapMethod::Refined;
+    // Refined, Drag: per-event time budget in milliseconds. arapPrecompute turns it into a
+    // pass count from the mesh size (a cost model, never a clock), so a drag pose is a
+    // deterministic function of the pins; see ArapPrecompute::dragPasses.
+    double dragBudgetMs = 4.0;
+    // Refined, Drag: at least / at most this many passes, whatever the budget allows. Below
+    // 2 a drag pose is barely better than the paper's; about 30 fit 4 ms at 2k vertices.
+    int minDragPasses = 2;
+    int maxDragPasses = 32;
+    // Refined, Final: stop when no vertex moved more than this fraction of the object size
+    // (diagonal of the solved components' bounding box) in a pass, or after finalPassCap.
+    double finalTolerance = 1e-6;
+    int finalPassCap = 400;
+    // Refined: look for flipped triangles after a solve and repair those that the ARAP
+    // optimum does not force: a drag pose gets up to dragPasses / 8 more passes (from 3
+    // drag passes on) while the count of flips still falls, then every pose a bounded local
+    // relaxation around what is left (which never raises the energy). Off only to measure
+    // or test it.
+    bool fixFlips = true;
+    // A connected component without any pin follows the nearest pinned component rigidly
+    // (rotation and translation of the pinned mesh where it is closest) instead of staying
+    // at rest: a leg drawn apart from the body moves with the body.
+    bool followNearestComponent = true;
 };
 
 // Immutable once arapPrecompute returns it; safe to share between threads for solving.
@@ -46,19 +96,28 @@ struct ArapPrecompute {
     using RealFactor = Eigen::SimplicialLLT<RealMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>>;
 
     ArapOptions options;
+    // Refined, Drag: local/global passes after step 1 per drag event, from options and the
+    // cost model below; estimatedPassMs is that model's cost of one pass on the reference
+    // machine (the 2-core development machine): Final costs about that per pass it runs.
+    int dragPasses = 0;
+    double estimatedPassMs = 0.0;
+    double objectSize = 0.0;        // bounding-box diagonal of the solved components (rest)
     Eigen::Index pinEntryCount = 0; // rows of b as passed; bc must have as many rows
     Eigen::VectorXi pinnedVertices; // distinct pinned vertices, ascending (original indices)
 
     Eigen::VectorXi order;       // n: internal index → original vertex
     Eigen::Index freeCount = 0;  // free vertices (first block)
     Eigen::VectorXi handleEntry; // per handle: entry of b whose target it takes (the last one)
-    Eigen::VectorXi rigidEntry; // per rigid vertex: entry of b translating it, −1 = stays at rest
-    Eigen::VectorXcd entryRest; // per entry of b: rest position of its vertex, x+iy
-    Eigen::VectorXcd rest;      // n rest positions x+iy, internal order
+    Eigen::VectorXi rigidEntry;  // per rigid vertex: entry of b translating it, else −1 (rest
+                                 // or following, see rigidFollowGroup)
+    Eigen::VectorXcd entryRest;  // per entry of b: rest position of its vertex, x+iy
+    Eigen::VectorXcd rest;       // n rest positions x+iy, internal order
 
     Eigen::MatrixX3i triangles;        // triangles of solved components, internal indices
     Eigen::MatrixX3cd restCentered;    // their rest corners minus the rest centroid
     Eigen::VectorXd collapseThreshold; // below this |Σ conj(r)·p| the step-1 triangle collapsed
+    Eigen::VectorXd restSquaredNorm;   // Σ_k |r_k|² per triangle, for the energy
+    Eigen::VectorXd restDoubleArea;    // signed, in the triangle's own corner order
     // Corners around each free vertex, for gathering step 2's right-hand side per vertex:
     // those of free vertex i are cornerStart(i) … cornerStart(i + 1) − 1.
     Eigen::VectorXi cornerStart;    // freeCount + 1
@@ -78,11 +137,27 @@ struct ArapPrecompute {
     RealFactor stepTwoFactor;            // LLᵀ of H00
     Eigen::VectorXd stepTwoPivotInverse; // 1 / diag(L) of that factor, for the back-substitution
     double stepTwoNorm = 0.0;            // ‖H00‖∞, scales the residual test
+
+    // Triangles around each solved vertex (free and handles, internal index < freeCount +
+    // handles): those of vertex v are vertexTriangle(vertexStart(v)) … (vertexStart(v+1) − 1).
+    // Used by the flip repair and to find the rotation a following component takes.
+    Eigen::VectorXi vertexStart;
+    Eigen::VectorXi vertexTriangle;
+    // Components without pins that follow another (options.followNearestComponent): per
+    // rigid vertex, the follower group it belongs to or −1; per group, the internal index of
+    // the anchor vertex (the pinned component's vertex nearest to the group at rest).
+    Eigen::VectorXi rigidFollowGroup;
+    Eigen::VectorXi followAnchor;
 };
 
-// Largest relative residual ‖Ax − b‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞) over the linear solves of one call.
+// relativeResidual: largest ‖Ax − b‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞) over the linear solves of one
+// call (Refined checks the solve each result comes from, not every intermediate pass).
 struct ArapSolveReport {
     double relativeResidual = 0.0;
+    int passes = 0;            // 2a/2b passes (global solves) after step 1
+    bool converged = false;    // Final: the tolerance was met before options.finalPassCap
+    int flippedTriangles = 0;  // flipped triangles in the returned pose
+    int repairedTriangles = 0; // flipped triangles the repair turned back (fixFlips)
 };
 
 using ArapPrecomputeResult = Expected<std::shared_ptr<const ArapPrecompute>, DeformError>;
@@ -100,12 +175,28 @@ ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::Matr
                                     std::function<bool()> cancelled = {});
 
 // bc  k×2 targets, one row per entry of b as passed to arapPrecompute. U  out n×2 deformed
-// positions (resized). Steps 1, 2a, 2b, then options.extraPasses × (2a, 2b).
+// positions (resized). Steps 1, 2a, 2b, then options.extraPasses × (2a, 2b), whatever
+// options.method says (the paper's method, as before ArapMethod existed).
 // Allocation-free after the first call on a thread (per-thread scratch buffers).
 // Errors: SizeMismatch, NonFiniteInput, CoordinateOutOfRange, SolveFailed; U is left
 // unspecified on error.
 ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
                           Eigen::MatrixX2d &U);
+
+// The pose for `stage` with data.options.method (pure function of data and bc: the same
+// bits for the same pins and precompute, on any thread, whatever was solved before):
+//   TwoStep            steps 1, 2a, 2b + options.extraPasses, for both stages;
+//   Refined, Drag      step 1 + data.dragPasses accelerated passes, flip repair;
+//   Refined, Final     step 1 + accelerated passes until no vertex moves more than
+//                      options.finalTolerance × objectSize (or finalPassCap), flip repair.
+// Final costs about estimatedPassMs per pass; drawings of ~2k vertices took 17–400 passes
+// (median 80, 2–90 ms on a busy 2-core machine) in `finbook-bench arap --quality`, so run it
+// on a worker when estimatedPassMs × finalPassCap exceeds a frame. `cancelled` is polled
+// between passes (Final only); then the result is DeformErrorCode::Cancelled.
+// Errors as the three-argument form, plus Cancelled.
+ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
+                          Eigen::MatrixX2d &U, ArapStage stage,
+                          const std::function<bool()> &cancelled = {});
 
 // Step 1 only (the similarity result v′ the paper starts step 2 from); same contract as
 // arapSolve. Exposed for tests and for showing what step 2 corrects.
@@ -121,5 +212,10 @@ void arapStepTwoBacksubstitute(const ArapPrecompute &data, Eigen::Ref<Eigen::Vec
 // rotation R_t per triangle: the energy step 2 and every extra pass cannot increase.
 // V  n×2 rest, F  m×3, U  n×2 deformed; indices must be valid.
 double arapEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Eigen::MatrixX2d &U);
+
+// Triangles of F whose signed area in U has the strictly opposite sign to the one in V:
+// turned inside out (collapsed ones do not count). Same requirements as arapEnergy.
+int arapFlippedTriangles(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                         const Eigen::MatrixX2d &U);
 
 } // namespace finbook::deform

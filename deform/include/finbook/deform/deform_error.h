@@ -5,6 +5,7 @@
 #include <finbook/geometry/expected.h>
 
 #include <string>
+#include <vector>
 
 namespace finbook::deform {
 
@@ -19,6 +20,11 @@ enum class DeformErrorCode {
     FactorizationFailed,  // sparse Cholesky refused a matrix that should be SPD
     SolveFailed,          // a solve produced non-finite values or a large residual
     Cancelled,            // the caller's cancellation callback returned true
+    InvalidSkeleton,      // no joints, a parent out of range, or a cycle in the joint tree
+    InvalidCage,          // fewer than 3 corners, self-crossing, zero area (geometry's message)
+    MeshingFailed,        // the cage's interior could not be meshed
+    PointsOutsideCage,    // points to bind lie outside the cage (DeformError::items lists them)
+    TooLarge,             // the mesh and coordinates asked for would not fit in memory
 };
 
 // Far beyond any canvas, far below the square root of the largest double: the deformers
@@ -28,6 +34,9 @@ inline constexpr double kMaxDeformCoordinate = 1e100;
 struct DeformError {
     DeformErrorCode code;
     std::string message;
+    // The rows of the input the error is about, ascending, when it concerns some of them
+    // (points outside the cage, non-finite points); empty otherwise.
+    std::vector<int> items = {};
 };
 
 } // namespace finbook::deform

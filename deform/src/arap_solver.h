@@ -1,0 +1,93 @@
+// The per-solve pieces shared by the two-step solve (arap_solve.cpp), the refinement passes
+// (arap_refine.cpp), the flip repair (arap_flips.cpp) and following components
+// (arap_follow.cpp). All positions are x + iy in the internal vertex order of ArapPrecompute.
+#pragma once
+
+#include "arap_internal.h"
+
+#include <finbook/deform/arap.h>
+
+#include <Eigen/SparseCore>
+
+#include <vector>
+
+namespace finbook::deform::detail {
+
+// Per-thread buffers: a drag event must not allocate (at 100k vertices fresh megabyte-sized
+// vectors cost more page faults than the whole back-substitution).
+struct Workspace {
+    Eigen::VectorXcd positions;      // n, internal order: v′, then v″
+    Eigen::VectorXcd rhs;            // freeCount
+    Eigen::VectorXcd residual;       // freeCount, only for the step-1 fallback without basis
+    Eigen::VectorXcd rotations;      // per solved triangle, 3·R
+    Eigen::VectorXcd trialRotations; // the same for an extrapolated candidate
+    // Refinement (Anderson acceleration) state, freeCount rows each.
+    Eigen::VectorXcd iterate, mapped, mappedBefore, residualBefore;
+    Eigen::MatrixXcd mappedSteps, residualSteps; // freeCount × history
+    std::vector<int> region, mark;               // flip repair
+};
+
+Workspace &workspace();
+
+// Plain complex products: std::complex's operator* adds NaN-recovery branches (Annex G) to
+// the hottest loops, and inputs here are finite by construction.
+inline Complex mul(Complex a, Complex b)
+{
+    return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
+}
+
+inline Complex mulConj(Complex a, Complex b) // conj(a)·b
+{
+    return {a.real() * b.real() + a.imag() * b.imag(), a.real() * b.imag() - a.imag() * b.real()};
+}
+
+// Sizes the workspace for d, checks bc and places handles and pinned components (step 0).
+std::optional<DeformError> beginSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc,
+                                      Workspace &w);
+
+// Step 1 into w.positions.head(freeCount); `check` adds the residual test of the solve (when
+// there is no basis).
+std::optional<DeformError> similarityStep(const ArapPrecompute &d, Workspace &w,
+                                          ArapSolveReport &report, bool check);
+
+// Step 2a at w.positions: 3·(best rotation) per triangle into w.rotations. With `energy`
+// it also returns the uniform ARAP energy of w.positions (the solved components' part).
+double fitRotations(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::VectorXcd &rotations,
+                    bool energy);
+
+// Step 2b from w.rotations: w.positions.head(freeCount) ← H00⁻¹ f, f kept in w.rhs.
+void globalStep(const ArapPrecompute &d, Workspace &w);
+
+// Relative residual check of the last globalStep (into report), SolveFailed when too large.
+std::optional<DeformError> checkGlobalStep(const ArapPrecompute &d, const Workspace &w,
+                                           ArapSolveReport &report);
+
+// Accelerated local/global passes from the step-1 result in w.positions (Refined). Runs
+// `passes` passes, or with tolerance > 0 until no free vertex moves more than `tolerance` in a
+// pass (at most `passes`); then up to `flipPasses` more while a triangle is flipped. Leaves
+// the result of the last global step in w.positions.
+std::optional<DeformError> refine(const ArapPrecompute &d, Workspace &w, int passes, int flipPasses,
+                                  double tolerance, const std::function<bool()> &cancelled,
+                                  ArapSolveReport &report);
+
+// Flipped triangles at W (signed area ≤ 0 relative to the rest orientation).
+int countFlips(const ArapPrecompute &d, const Eigen::VectorXcd &W);
+
+// Local ARAP relaxation of the free vertices around flipped triangles until none is left or a
+// sweep cap is reached; never increases the energy. Fills report.flipped/repairedTriangles.
+void repairFlips(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report);
+
+// Moves the vertices of follower components with their anchors (after the solve).
+void placeFollowers(const ArapPrecompute &d, Eigen::VectorXcd &W);
+
+// Precompute side of following: fills d.rigidFollowGroup and d.followAnchor.
+void buildFollowers(const Eigen::VectorXi &componentLabel, const std::vector<bool> &pinned,
+                    ArapPrecompute &d);
+
+// Precompute side of the cost model: d.estimatedPassMs and d.dragPasses.
+void chooseDragPasses(ArapPrecompute &d);
+
+// Writes internal-order positions into U (n×2, original order).
+void scatterPositions(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::MatrixX2d &U);
+
+} // namespace finbook::deform::detail

@@ -1,0 +1,141 @@
+// Boundary conditions of the harmonic skinning weights: which vertices each bone holds.
+#include "skeleton_internal.h"
+
+#include <finbook/deform/skeleton/skinning_weights.h>
+
+#include <limits>
+#include <vector>
+
+namespace finbook::deform {
+namespace {
+
+struct Segment {
+    Eigen::Vector2d a, b;
+};
+
+std::vector<Segment> handleSegments(const Skeleton &skeleton, const Eigen::VectorXi &handles)
+{
+    std::vector<Segment> segments;
+    segments.reserve(static_cast<std::size_t>(handles.size()));
+    for (const int j : handles) {
+        const int p = skeleton.parent(j);
+        const Eigen::Vector2d tip = skeleton.joints.row(j).transpose();
+        segments.push_back(
+            {p < 0 ? tip : Eigen::Vector2d(skeleton.joints.row(p).transpose()), tip});
+    }
+    return segments;
+}
+
+double meanEdgeLength(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
+{
+    double sum = 0.0;
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        for (int k = 0; k < 3; ++k)
+            sum += (V.row(F(t, (k + 1) % 3)) - V.row(F(t, k))).norm();
+    }
+    return F.rows() > 0 ? sum / double(3 * F.rows()) : 0.0;
+}
+
+// A handle that holds no vertex (a bone shorter than the mesh's edges, or one outside the mesh)
+// takes the vertex nearest to it that is not another handle's only vertex, so every bone moves
+// something and skinning sees it.
+void giveEveryHandleAVertex(const Eigen::MatrixX2d &V, const std::vector<Segment> &segments,
+                            Eigen::VectorXi &owner)
+{
+    std::vector<int> count(segments.size(), 0);
+    for (const int o : owner) {
+        if (o >= 0)
+            ++count[static_cast<std::size_t>(o)];
+    }
+    for (std::size_t h = 0; h < segments.size(); ++h) {
+        if (count[h] > 0)
+            continue;
+        int best = -1;
+        double bestDistance = std::numeric_limits<double>::infinity();
+        for (Eigen::Index v = 0; v < V.rows(); ++v) {
+            const int o = owner(v);
+            if (o >= 0 && count[static_cast<std::size_t>(o)] <= 1)
+                continue;
+            const double d =
+                detail::squaredSegmentDistance(V.row(v).transpose(), segments[h].a, segments[h].b);
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = static_cast<int>(v);
+            }
+        }
+        if (best < 0)
+            continue;
+        if (owner(best) >= 0)
+            --count[static_cast<std::size_t>(owner(best))];
+        owner(best) = static_cast<int>(h);
+        count[h] = 1;
+    }
+}
+
+} // namespace
+
+Eigen::VectorXi skinningHandles(const Skeleton &skeleton)
+{
+    std::vector<bool> hasChild(static_cast<std::size_t>(skeleton.jointCount()), false);
+    for (const int p : skeleton.parent) {
+        if (p >= 0)
+            hasChild[static_cast<std::size_t>(p)] = true;
+    }
+    std::vector<int> handles;
+    for (Eigen::Index j = 0; j < skeleton.jointCount(); ++j) {
+        if (!skeleton.isRoot(j) || !hasChild[static_cast<std::size_t>(j)])
+            handles.push_back(static_cast<int>(j));
+    }
+    return Eigen::Map<const Eigen::VectorXi>(handles.data(), Eigen::Index(handles.size()));
+}
+
+// Works in handle positions 0 … H−1 internally and returns joint indices.
+Eigen::VectorXi detail::skinningBoundary(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                         const Skeleton &skeleton, const Eigen::VectorXi &handles,
+                                         double reachEdges)
+{
+    const std::vector<Segment> segments = handleSegments(skeleton, handles);
+    const double reach = reachEdges * meanEdgeLength(V, F);
+    const double reach2 = reach * reach;
+    Eigen::VectorXi owner = Eigen::VectorXi::Constant(V.rows(), -1);
+    Eigen::VectorXi nearest(V.rows());
+    Eigen::VectorXd nearestDistance(V.rows());
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        const Eigen::Vector2d p = V.row(v).transpose();
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t h = 0; h < segments.size(); ++h) {
+            const double d = detail::squaredSegmentDistance(p, segments[h].a, segments[h].b);
+            if (d < best) {
+                best = d;
+                nearest(v) = static_cast<int>(h);
+            }
+        }
+        nearestDistance(v) = best;
+        if (best <= reach2)
+            owner(v) = nearest(v);
+    }
+    giveEveryHandleAVertex(V, segments, owner);
+    // A component no bone reaches would make the Laplacian singular: its vertex nearest to a
+    // bone is fixed to that bone, so the whole component follows it.
+    int componentCount = 0;
+    const Eigen::VectorXi component = detail::componentLabels(V.rows(), F, componentCount);
+    std::vector<int> closest(static_cast<std::size_t>(componentCount), -1);
+    std::vector<bool> held(static_cast<std::size_t>(componentCount), false);
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        const auto c = static_cast<std::size_t>(component(v));
+        held[c] = held[c] || owner(v) >= 0;
+        if (closest[c] < 0 || nearestDistance(v) < nearestDistance(closest[c]))
+            closest[c] = static_cast<int>(v);
+    }
+    for (std::size_t c = 0; c < held.size(); ++c) {
+        if (!held[c])
+            owner(closest[c]) = nearest(closest[c]);
+    }
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        if (owner(v) >= 0)
+            owner(v) = handles(owner(v));
+    }
+    return owner;
+}
+
+} // namespace finbook::deform
