@@ -6,16 +6,11 @@
 #pragma once
 
 #include "finbook_file_format.h"
+#include "finbook_file_tr.h"
 
-#include <QCoreApplication>
+#include <finbook/model/io/printable_text.h>
 
 namespace finbook::model::file_format {
-
-// The translation context of every .finbook message; a class so lupdate files the strings
-// under "FinbookFile" too.
-class FinbookFile {
-    Q_DECLARE_TR_FUNCTIONS(FinbookFile)
-};
 
 // Where the reader is, for messages. Numbers are 1-based, as a user counts.
 struct Where {
@@ -33,8 +28,9 @@ struct Where {
         if (frame > 0) {
             QString s = FinbookFile::tr("frame %1").arg(frame);
             if (object > 0)
-                s += hasObjectName ? FinbookFile::tr(", object \"%1\"").arg(objectName)
-                                   : FinbookFile::tr(", object %1").arg(object);
+                s += hasObjectName
+                         ? FinbookFile::tr(", object \"%1\"").arg(printableText(objectName))
+                         : FinbookFile::tr(", object %1").arg(object);
             if (stroke > 0)
                 s += FinbookFile::tr(", stroke %1").arg(stroke);
             return s;
@@ -63,6 +59,15 @@ public:
     {}
 
     std::size_t remaining() const { return std::size_t(m_end - m_p); }
+    const char *position() const { return m_p; }
+    const char *end() const { return m_end; }
+    // Moves to `p`, which must lie between the current position and the end (recovery skips
+    // forward to the next section it can read).
+    void skipTo(const char *p)
+    {
+        if (p >= m_p && p <= m_end)
+            m_p = p;
+    }
     bool atEnd() const { return m_p == m_end; }
 
     [[noreturn]] void fail(FileErrorCode code, const QString &what) const

@@ -1,7 +1,9 @@
 // The .finbook byte layout, shared by the writer and the reader (private to the model).
 //
-//   file    := magic[8] u32 version section* "FEND" u64 0
-//   section := tag[4] u64 length payload[length]
+//   file    := magic[8] u32 version section* "FEND" u64 0 crc
+//   section := tag[4] u64 length payload[length] crc
+//   crc     := u32 CRC-32C of the section's tag, length and payload (format 2 on; version-1
+//              files have none)
 //   "DOCU"  := u32 canvasWidth u32 canvasHeight u32 background u32 fps u8 loop
 //              i32 playStart i32 playEnd u64 nextId
 //   "STRK"  := u32 count strokeData*       (the stroke-data table, first appearance order)
@@ -15,12 +17,20 @@
 //                           u32 strokes (u64 strokeId u32 strokeDataIndex)[strokes] chunk* }
 //   chunk   := tag[4] u32 length payload[length]
 //   "PINS"  := u32 count (u64 id f64 restX f64 restY f64 targetX f64 targetY)[count]
+//   "CAGE"  := u32 count (f64 restX f64 restY f64 posedX f64 posedY)[count]
 //   "DEFM"  := u32 poseIndex
+//   "SKEL"  := u32 joints (f64 x f64 y f64 radius i32 parent f64 angle)[joints] i32 root
+//              f64 rootOffsetX f64 rootOffsetY f64 complexity f64 merge f64 prune
+//              f64 collapse u8 skinningMode        (skeleton/skeleton_rig.h)
 //
-// Everything is little-endian. Sections come in the order above, each exactly once. Records
-// and chunks are length-prefixed so later formats can add state (a cage, a skeleton pose) as
-// new chunks. A tag whose first letter is lower case is ancillary: readers that do not know it
-// skip it; an unknown upper-case tag is critical and the file is refused as too new.
+// An object carries at most one rig chunk (PINS or CAGE).
+//
+// Everything is little-endian. Sections come in the order above, each exactly once; ancillary
+// sections may come between FRAM and FEND. Records and chunks are length-prefixed so later
+// formats can add state as new chunks: an object chunk is one row in the reader's and the
+// writer's chunk tables (kObjectChunks, kObjectChunkWriters). A tag whose first letter is lower
+// case is ancillary: readers that do not know it skip it; an unknown upper-case tag is
+// critical and the file is refused as too new.
 #pragma once
 
 #include <finbook/model/finbook_file.h>
@@ -54,6 +64,8 @@ constexpr quint32 kTagFrames = tag("FRAM");
 constexpr quint32 kTagEnd = tag("FEND");
 constexpr quint32 kTagPins = tag("PINS");
 constexpr quint32 kTagDeformed = tag("DEFM");
+constexpr quint32 kTagCage = tag("CAGE");
+constexpr quint32 kTagSkeleton = tag("SKEL");
 
 inline bool isAncillary(quint32 t)
 {
@@ -62,12 +74,17 @@ inline bool isAncillary(quint32 t)
 }
 
 constexpr std::size_t kSectionHeaderBytes = 4 + 8;
+constexpr std::size_t kSectionCrcBytes = 4;
+constexpr quint32 kFirstVersionWithCrc = 2;
 constexpr std::size_t kChunkHeaderBytes = 4 + 4;
 constexpr std::size_t kDocumentBytes = 4 * 4 + 1 + 4 + 4 + 8;
 constexpr std::size_t kPointBytes = 4 + 4 + 2;
 constexpr std::size_t kStrokeDataHeaderBytes = 4 + 4 + 4;
 constexpr std::size_t kStrokeRefBytes = 8 + 4;
 constexpr std::size_t kPinBytes = 8 + 4 * 8;
+constexpr std::size_t kCageCornerBytes = 4 * 8;
+constexpr std::size_t kJointBytes = 3 * 8 + 4 + 8;
+constexpr std::size_t kSkeletonTailBytes = 4 + 6 * 8 + 1;
 constexpr std::size_t kFrameFixedBytes = 8 + 4 + 4;
 constexpr std::size_t kObjectFixedBytes = 8 + 1 + 8 + 4 + 4;
 constexpr std::size_t kMaxNameBytes = 4096;
@@ -104,18 +121,25 @@ struct ReadFailure {
 };
 
 // Check runs every validation but stores no points: saveFinbook checks its own output
-// with it at a fraction of the time and memory of a full load.
-enum class ParseMode { Load, Check };
+// with it at a fraction of the time and memory of a full load. Recover reads what it can of a
+// damaged file and notes each problem instead of failing (recoverFinbook).
+enum class ParseMode { Load, Check, Recover };
 
-// readFinbook without the sentence.
+// readFinbook without the sentence. In Recover mode `problems` gets what was left out.
 Expected<LoadedDocument, ReadFailure> parseFinbook(const QByteArray &bytes,
-                                                   ParseMode mode = ParseMode::Load);
+                                                   ParseMode mode = ParseMode::Load,
+                                                   QStringList *problems = nullptr);
+
+// The first bytes of a file (at least kHeaderBytes when the file has them): whether they
+// start a .finbook of a version this Finbook reads. Lets loadFinbook refuse a wrong file before
+// reading the rest of it.
+std::optional<ReadFailure> checkHeader(QByteArrayView head);
 
 // "What. What to do.": the message of a FileError for a file that failed to parse.
 QString failureSentence(FileErrorCode code, const QString &what);
 
 // Migration hook: a loaded document of an older format version is upgraded one version at a
-// time until it matches kFinbookFormatVersion. Version 1 is the first, so there is no step yet.
+// time until it matches kFinbookFormatVersion.
 void migrateLoadedDocument(LoadedDocument &document, quint32 fromVersion);
 
 } // namespace finbook::model::file_format

@@ -1,19 +1,22 @@
 // Loading and saving .finbook files on disk, and the sentences users see when that fails.
 //
-// Saving never leaves a half-written file: the bytes go to a QSaveFile (a temporary file
-// renamed over the target on commit), and the previous file is kept as "<path>~" first.
+// Saving never leaves a half-written file: the bytes go through writeFileAtomically (a
+// temporary file, written and synced with every error checked, then renamed over the
+// target), and the previous file is kept as "<path>~" just before the rename.
 #include "finbook_file_cursor.h"
+
+#include <finbook/model/io/atomic_file.h>
 
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 
-#include <new>
-
-#ifdef Q_OS_UNIX
+#include <cerrno>
+#include <cstring>
 #include <fcntl.h>
+#include <memory>
+#include <new>
+#include <sys/stat.h>
 #include <unistd.h>
-#endif
 
 namespace finbook::model {
 
@@ -36,6 +39,13 @@ QString failureSentence(FileErrorCode code, const QString &what)
                    "%1 The file is damaged; if there is a backup with the same name ending in ~, "
                    "open that instead.")
             .arg(sentence);
+    case FileErrorCode::Damaged:
+        return FinbookFile::tr(
+                   "%1 The file is damaged; Finbook can open what is still readable of it, or "
+                   "open the backup with the same name ending in ~ if there is one.")
+            .arg(sentence);
+    case FileErrorCode::OutOfMemory:
+        return FinbookFile::tr("%1 Close other programs or documents and try again.").arg(sentence);
     default:
         return sentence;
     }
@@ -50,45 +60,116 @@ QString displayName(const QString &path)
     return QFileInfo(path).fileName();
 }
 
-FileError writeFailed(const QString &path, const QString &reason)
+// The sentence for a save that failed; the previous file is always unchanged (atomic_file.h).
+FileError writeFailed(const QString &path, const WriteFailure &failure)
+{
+    const QString name = displayName(path);
+    const QString reason = describeWriteFailure(failure, QFileInfo(path).absolutePath());
+    switch (failure.problem) {
+    case WriteProblem::DiskFull:
+        return FileError{FileErrorCode::DiskFull,
+                         FinbookFile::tr("Could not save \"%1\": %2. The previous file is "
+                                         "unchanged; free some disk space or choose another "
+                                         "folder, then save again.")
+                             .arg(name, reason)};
+    default:
+        return FileError{FileErrorCode::WriteFailed,
+                         FinbookFile::tr("Could not save \"%1\": %2. The previous file is "
+                                         "unchanged; choose another folder, then save again.")
+                             .arg(name, reason)};
+    }
+}
+
+FileError cannotOpen(const QString &path, const QString &reason)
 {
     return FileError{
-        FileErrorCode::WriteFailed,
-        FinbookFile::tr("Could not save \"%1\": %2. The previous file is unchanged; free some "
-                        "disk space or choose another folder, then save again.")
+        FileErrorCode::OpenFailed,
+        FinbookFile::tr(
+            "Cannot open \"%1\": %2. Check that the file exists and that you may read it.")
             .arg(displayName(path), reason)};
 }
 
-// Keeps the file about to be replaced as "<path>~". A hard link costs nothing even for a
-// huge file; file systems without links get a copy.
-std::optional<QString> keepBackup(const QString &path)
+// Reads until `size` bytes or the end of the file; -1 on a read error (errno set).
+qint64 readFully(int fd, char *into, qint64 size)
 {
-    if (!QFileInfo::exists(path))
-        return std::nullopt;
-    const QString backup = finbookBackupPath(path);
-    const QFileInfo backupInfo(backup);
-    if ((backupInfo.exists() || backupInfo.isSymLink()) && !QFile::remove(backup))
-        return FinbookFile::tr("the old backup \"%1\" cannot be replaced")
-            .arg(backupInfo.fileName());
-#ifdef Q_OS_UNIX
-    if (::linkat(AT_FDCWD, QFile::encodeName(path).constData(), AT_FDCWD,
-                 QFile::encodeName(backup).constData(), AT_SYMLINK_FOLLOW) == 0)
-        return std::nullopt;
-#endif
-    QFile original(path);
-    if (original.copy(backup))
-        return std::nullopt;
-    return FinbookFile::tr("the backup \"%1\" cannot be written (%2)")
-        .arg(backupInfo.fileName(), original.errorString());
+    qint64 done = 0;
+    while (done < size) {
+        const ssize_t n = ::read(fd, into + done, std::size_t(size - done));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0)
+            return -1;
+        if (n == 0)
+            break;
+        done += n;
+    }
+    return done;
 }
-// Reads a whole file only when it starts like a .finbook: "finbook info" on a 10 GB video or
-// on /dev/zero is refused after 8 bytes instead of filling memory.
-QByteArray readAllOfFinbook(QFile &file)
+
+// The bytes of the .finbook at `path`. Only a regular file is read (a pipe or a device could
+// block or never end), and only after its first bytes proved it a .finbook of a version this
+// Finbook reads: a 10 GB video or a newer file is refused after 12 bytes.
+Expected<QByteArray, FileError> readFinbookBytes(const QString &path)
 {
-    const QByteArray head = file.peek(sizeof(file_format::kMagic));
-    if (std::memcmp(head.constData(), file_format::kMagic, std::size_t(head.size())) != 0)
-        return head;
-    return file.readAll();
+    // O_NONBLOCK: opening a pipe nobody writes to would otherwise wait for ever.
+    const int fd =
+        ::open(QFile::encodeName(path).constData(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+    if (fd < 0)
+        return unexpected(cannotOpen(path, QString::fromLocal8Bit(std::strerror(errno))));
+    const std::unique_ptr<int, void (*)(int *)> closer(new int(fd), [](int *p) {
+        ::close(*p);
+        delete p;
+    });
+    struct stat st;
+    if (::fstat(fd, &st) != 0)
+        return unexpected(cannotOpen(path, QString::fromLocal8Bit(std::strerror(errno))));
+    if (S_ISDIR(st.st_mode))
+        return unexpected(cannotOpen(path, FinbookFile::tr("it is a folder")));
+    if (!S_ISREG(st.st_mode))
+        return unexpected(FileError{
+            FileErrorCode::OpenFailed,
+            FinbookFile::tr("Cannot open \"%1\": it is a device, a pipe or a socket, not a "
+                            "file. Choose a .finbook file.")
+                .arg(displayName(path))});
+    char head[file_format::kHeaderBytes];
+    const qint64 headBytes = readFully(fd, head, qint64(sizeof(head)));
+    if (headBytes < 0)
+        return unexpected(cannotOpen(path, QString::fromLocal8Bit(std::strerror(errno))));
+    if (auto failure = file_format::checkHeader(QByteArrayView(head, headBytes)))
+        return unexpected(FileError{
+            failure->code, FinbookFile::tr("Cannot open \"%1\". %2")
+                               .arg(displayName(path),
+                                    file_format::failureSentence(failure->code, failure->what))});
+    QByteArray bytes;
+    try {
+        bytes.resize(std::max<qint64>(st.st_size, headBytes));
+    } catch (const std::bad_alloc &) {
+        return unexpected(FileError{
+            FileErrorCode::OutOfMemory,
+            FinbookFile::tr("Cannot open \"%1\": there is not enough memory for its %2 MB. Close "
+                            "other programs or documents and try again.")
+                .arg(displayName(path))
+                .arg(st.st_size >> 20)});
+    }
+    std::memcpy(bytes.data(), head, std::size_t(headBytes));
+    const qint64 rest = readFully(fd, bytes.data() + headBytes, bytes.size() - headBytes);
+    if (rest < 0)
+        return unexpected(
+            FileError{FileErrorCode::OpenFailed,
+                      FinbookFile::tr("Cannot read \"%1\": %2.")
+                          .arg(displayName(path), QString::fromLocal8Bit(std::strerror(errno)))});
+    bytes.truncate(headBytes + rest); // it may have shrunk meanwhile
+    return bytes;
+}
+
+Expected<LoadedDocument, FileError> withPath(const QString &path,
+                                             Expected<LoadedDocument, FileError> loaded)
+{
+    if (!loaded)
+        return unexpected(
+            FileError{loaded.error().code, FinbookFile::tr("Cannot open \"%1\". %2")
+                                               .arg(displayName(path), loaded.error().message)});
+    return loaded;
 }
 } // namespace
 
@@ -99,33 +180,19 @@ QString finbookBackupPath(const QString &path)
 
 Expected<LoadedDocument, FileError> loadFinbook(const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly) || QFileInfo(path).isDir())
-        return unexpected(FileError{
-            FileErrorCode::OpenFailed,
-            FinbookFile::tr(
-                "Cannot open \"%1\": %2. Check that the file exists and that you may read it.")
-                .arg(displayName(path), QFileInfo(path).isDir() ? FinbookFile::tr("it is a folder")
-                                                                : file.errorString())});
-    QByteArray bytes;
-    try {
-        bytes = readAllOfFinbook(file);
-    } catch (const std::bad_alloc &) {
-        return unexpected(FileError{
-            FileErrorCode::TooLarge,
-            FinbookFile::tr("Cannot open \"%1\": it is too large for the memory available.")
-                .arg(displayName(path))});
-    }
-    if (file.error() != QFileDevice::NoError)
-        return unexpected(FileError{
-            FileErrorCode::OpenFailed,
-            FinbookFile::tr("Cannot read \"%1\": %2.").arg(displayName(path), file.errorString())});
-    auto loaded = readFinbook(bytes);
-    if (!loaded)
-        return unexpected(
-            FileError{loaded.error().code, FinbookFile::tr("Cannot open \"%1\". %2")
-                                               .arg(displayName(path), loaded.error().message)});
-    return loaded;
+    auto bytes = readFinbookBytes(path);
+    if (!bytes)
+        return unexpected(bytes.error());
+    return withPath(path, readFinbook(*bytes));
+}
+
+Expected<LoadedDocument, FileError> loadFinbookRecovering(const QString &path,
+                                                          QStringList *problems)
+{
+    auto bytes = readFinbookBytes(path);
+    if (!bytes)
+        return unexpected(bytes.error());
+    return withPath(path, recoverFinbook(*bytes, problems));
 }
 
 std::optional<FileError> openFinbook(Document &document, const QString &path)
@@ -137,27 +204,21 @@ std::optional<FileError> openFinbook(Document &document, const QString &path)
     return std::nullopt;
 }
 
-std::optional<FileError> saveFinbook(const Document &document, const QString &path)
+std::optional<FileError> saveFinbook(const Document &document, const QString &path,
+                                     const WriteFunction &write)
 {
     const QByteArray bytes = serializeFinbook(document);
     // Never replace a file with one that would not open again.
     if (auto check = file_format::parseFinbook(bytes, file_format::ParseMode::Check); !check)
-        return writeFailed(
-            path, FinbookFile::tr("the drawing holds invalid data (%1)").arg(check.error().what));
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return writeFailed(path, file.errorString());
-    if (file.write(bytes) != bytes.size()) {
-        const QString reason = file.errorString();
-        file.cancelWriting();
-        return writeFailed(path, reason);
-    }
-    if (const auto reason = keepBackup(path)) {
-        file.cancelWriting();
-        return writeFailed(path, *reason);
-    }
-    if (!file.commit())
-        return writeFailed(path, file.errorString());
+        return FileError{FileErrorCode::WriteFailed,
+                         FinbookFile::tr("Could not save \"%1\": the drawing holds invalid data "
+                                         "(%2). The previous file is unchanged.")
+                             .arg(displayName(path), check.error().what)};
+    AtomicWriteOptions options;
+    options.backupPath = finbookBackupPath(path);
+    options.write = write;
+    if (auto failure = writeFileAtomically(path, bytes, options))
+        return writeFailed(path, *failure);
     return std::nullopt;
 }
 

@@ -12,10 +12,12 @@ namespace finbook::model::file_format {
 namespace {
 using MigrationStep = void (*)(LoadedDocument &);
 
-// kSteps[i] upgrades a document from version kOldestVersion + i to the next one. Version 1
-// is the first format, so there are no steps yet; the first one goes here, e.g.
-// `[](LoadedDocument &doc) { ... }` for 1 → 2.
-constexpr std::array<MigrationStep, kFinbookFormatVersion - kOldestVersion> kSteps{};
+// kSteps[i] upgrades a document from version kOldestVersion + i to the next one.
+constexpr std::array<MigrationStep, kFinbookFormatVersion - kOldestVersion> kSteps{
+    // 1 → 2 added a checksum after each section (the reader's business); what a document
+    // holds did not change.
+    [](LoadedDocument &) {},
+};
 } // namespace
 
 void migrateLoadedDocument(LoadedDocument &document, quint32 fromVersion)

@@ -1,21 +1,39 @@
-// The .finbook parser behind readFinbook (private to the model). The tables (shared stroke
-// data and poses) are parsed in finbook_file_reader_tables.cpp, the rest in
-// finbook_file_reader.cpp.
+// The .finbook parser behind readFinbook and recoverFinbook (private to the model). The
+// sections are read in finbook_file_reader.cpp, frames, objects and their chunks in
+// finbook_file_reader_frames.cpp, the shared tables in finbook_file_reader_tables.cpp, and
+// what only recovery does (finding sections again, new ids) in finbook_file_recover.cpp.
 #pragma once
 
 #include "finbook_file_cursor.h"
 
-#include <unordered_set>
+#include <vector>
 
 namespace finbook::model::file_format {
 
 class Reader {
 public:
-    explicit Reader(ParseMode mode)
-        : m_mode(mode)
-    {}
+    // `fileBytes` sizes the memory budget (kLoadMemoryFactor). `huntedId`: an id known to be
+    // used twice, reported where it is used the second time.
+    Reader(ParseMode mode, qint64 fileBytes, Id huntedId = kNoId);
+    // Thrown by finish() when an id is used twice, for parseFinbook to read again and say where.
+    struct DuplicateId {
+        Id id;
+    };
     // Parses a whole file; throws ReadFailure.
     LoadedDocument read(const QByteArray &bytes);
+    // Recover mode: what was left out or repaired, one sentence each.
+    const QStringList &problems() const { return m_problems; }
+    // Magic and version; throws ReadFailure for a file this Finbook cannot read at all.
+    static quint32 readHeader(Cursor &c);
+
+    // One kind of object chunk: its tag, whether it is a rig (an object carries one rig at
+    // most), and how to read it into the object.
+    struct ObjectChunk {
+        quint32 tag;
+        bool isRig;
+        void (Reader::*read)(Cursor &, StrokeGroup &);
+    };
+    static const ObjectChunk kObjectChunks[];
 
 private:
     // A bad value inside a table entry is reported where a frame first uses the entry, so
@@ -33,25 +51,51 @@ private:
         }
     };
 
-    quint32 readHeader(Cursor &c);
+    bool recovering() const { return m_mode == ParseMode::Recover; }
+    // A problem the reader can get past: fails in Load and Check mode, is noted (with where it
+    // is) in Recover mode, where the caller then uses a default or leaves the thing out.
+    void problem(Cursor &c, FileErrorCode code, const QString &what);
+    // Counts `bytes` against the memory budget before they are allocated.
+    void charge(Cursor &c, qint64 bytes);
+    // Cursor::count, except that recovering, a count larger than what fits is cut to that.
+    quint32 count(Cursor &c, std::size_t recordBytes, const char *what);
+
+    // finbook_file_reader.cpp
     void readSections(Cursor &c);
+    bool readSection(Cursor &c, std::size_t &next);
+    void readSectionBody(Cursor &body, std::size_t index);
     void readDocument(Cursor &c);
+    void finish(Cursor &c);
+    // finbook_file_reader_tables.cpp
     void readStrokeTable(Cursor &c);
+    void readStrokeEntry(Cursor &c, quint32 index);
     void readPoseTable(Cursor &c);
     // Returns the number of points, which Check mode does not store.
     quint32 readPoints(Cursor &c, std::vector<StrokePoint> &points, Deferred &deferred,
                        quint32 entry);
+    // finbook_file_reader_frames.cpp
     void readFrames(Cursor &c);
     Frame readFrame(Cursor &c);
     StrokeGroup readObject(Cursor &c);
+    QString readName(Cursor &c);
+    void readStrokeRefs(Cursor &c, StrokeGroup &g);
     void readObjectChunks(Cursor &c, StrokeGroup &group);
+    void readPinsChunk(Cursor &c, StrokeGroup &g);
+    void readCageChunk(Cursor &c, StrokeGroup &g);
+    void readSkeletonChunk(Cursor &c, StrokeGroup &g);
+    void readPoseChunk(Cursor &c, StrokeGroup &g);
     std::vector<Pin> readPins(Cursor &c);
+    CageRig readCage(Cursor &c);
+    SkeletonRig readSkeleton(Cursor &c); // skeleton/skeleton_chunk.cpp
     DeformedStrokesPtr readPoseRef(Cursor &c, const StrokeGroup &group);
-    void skipUnknownChunk(Cursor &c, quint32 chunkTag);
     void claimId(Cursor &c, Id id, const QString &owner);
-    void finish(Cursor &c);
+    // finbook_file_recover.cpp
+    bool findNextSection(Cursor &c, std::size_t next);
+    void renumberClashingIds();
 
     ParseMode m_mode;
+    qint64 m_budget;
+    qint64 m_charged = 0;
     Where m_where;
     quint32 m_version = 0;
     LoadedDocument m_doc;
@@ -62,8 +106,14 @@ private:
     std::vector<quint32> m_strokeRefs; // stroke-data index of each stroke of the current object
     Deferred m_badStrokeData;
     Deferred m_badPose;
-    std::unordered_set<Id> m_ids;
+    // Every id in file order; duplicates are found by sorting at the end (8 bytes an id where
+    // a hash set costs 48), and then located by reading the file again with m_huntedId set.
+    std::vector<Id> m_ids;
+    Id m_huntedId = kNoId;
+    bool m_huntedSeen = false;
     Id m_maxId = kNoId;
+    bool m_idsClash = false; // Recover mode: some ids must be given anew
+    QStringList m_problems;
 };
 
 // "STRK", or 0x00ff1234 for tags that are not text.

@@ -2,7 +2,7 @@
 //
 // Speed matters here (10M points in well under a second): the output is sized up front and
 // filled through a raw pointer, points stroke by stroke in one tight loop.
-#include "finbook_file_format.h"
+#include "finbook_file_byte_writer.h"
 
 #include <algorithm>
 #include <unordered_map>
@@ -11,69 +11,6 @@ namespace finbook::model {
 
 namespace {
 using namespace file_format;
-
-class ByteWriter {
-public:
-    explicit ByteWriter(qsizetype expectedBytes) { m_bytes.resize(expectedBytes); }
-
-    void u8(quint8 v) { *claim(1) = char(v); }
-    void u16(quint16 v) { qToLittleEndian<quint16>(v, claim(2)); }
-    void u32(quint32 v) { qToLittleEndian<quint32>(v, claim(4)); }
-    void i32(qint32 v) { qToLittleEndian<qint32>(v, claim(4)); }
-    void u64(quint64 v) { qToLittleEndian<quint64>(v, claim(8)); }
-    void f32(float v) { u32(std::bit_cast<quint32>(v)); }
-    void f64(double v) { u64(std::bit_cast<quint64>(v)); }
-    void raw(const char *data, std::size_t size)
-    {
-        if (size > 0)
-            std::memcpy(claim(size), data, size);
-    }
-
-    void points(const std::vector<StrokePoint> &points)
-    {
-        u32(quint32(points.size()));
-        char *out = claim(points.size() * kPointBytes);
-        for (const StrokePoint &p : points) {
-            qToLittleEndian<quint32>(std::bit_cast<quint32>(p.x), out);
-            qToLittleEndian<quint32>(std::bit_cast<quint32>(p.y), out + 4);
-            qToLittleEndian<quint16>(quantisePressure(p.pressure), out + 8);
-            out += kPointBytes;
-        }
-    }
-
-    // Length prefixes are patched in once the payload is written.
-    qsizetype beginLength(std::size_t width)
-    {
-        const qsizetype at = m_size;
-        claim(width);
-        return at;
-    }
-    void endLength32(qsizetype at) { patch<quint32>(at, quint32(m_size - at - 4)); }
-    void endLength64(qsizetype at) { patch<quint64>(at, quint64(m_size - at - 8)); }
-
-    QByteArray take()
-    {
-        m_bytes.truncate(m_size);
-        return std::move(m_bytes);
-    }
-
-private:
-    char *claim(std::size_t n)
-    {
-        if (m_size + qsizetype(n) > m_bytes.size()) // the estimate was short: grow geometrically
-            m_bytes.resize(std::max(m_size + qsizetype(n), m_bytes.size() * 2));
-        char *p = m_bytes.data() + m_size;
-        m_size += qsizetype(n);
-        return p;
-    }
-    template <class T> void patch(qsizetype at, T value)
-    {
-        qToLittleEndian<T>(value, m_bytes.data() + at);
-    }
-
-    QByteArray m_bytes;
-    qsizetype m_size = 0;
-};
 
 // A pose is only worth saving while it still matches its object's strokes; a stale one is a
 // cache the renderer ignores anyway, and the reader would rightly refuse it.
@@ -120,10 +57,10 @@ struct Tables {
     void addGroup(const StrokeGroup &g)
     {
         noteId(g.id);
-        for (const Pin &p : g.pins)
+        for (const Pin &p : g.rig.pins)
             noteId(p.id);
         expectedBytes += 4 + qsizetype(kObjectFixedBytes) + 3 * qsizetype(kChunkHeaderBytes) +
-                         g.name.size() * 3 + qsizetype(g.pins.size() * kPinBytes + 4) +
+                         g.name.size() * 3 + qsizetype(g.rig.pins.size() * kPinBytes + 4) +
                          qsizetype(g.strokes.size() * kStrokeRefBytes);
         for (const Stroke &s : g.strokes) {
             noteId(s.id);
@@ -143,9 +80,8 @@ struct Tables {
     }
 };
 
-void writeDocumentSection(ByteWriter &w, const Document &doc, Id maxId)
+void writeDocumentSection(ByteWriter &w, const DocumentSettings &s, Id maxId)
 {
-    const DocumentSettings &s = doc.settings();
     w.u32(quint32(s.canvasSize.width()));
     w.u32(quint32(s.canvasSize.height()));
     w.u32(s.background);
@@ -181,8 +117,6 @@ void writePoseTable(ByteWriter &w, const Tables &tables)
 
 void writePins(ByteWriter &w, const std::vector<Pin> &pins)
 {
-    w.u32(kTagPins);
-    const qsizetype length = w.beginLength(4);
     w.u32(quint32(pins.size()));
     for (const Pin &p : pins) {
         w.u64(p.id);
@@ -191,8 +125,57 @@ void writePins(ByteWriter &w, const std::vector<Pin> &pins)
         w.f64(p.target.x());
         w.f64(p.target.y());
     }
-    w.endLength32(length);
 }
+
+void writeCage(ByteWriter &w, const CageRig &cage)
+{
+    w.u32(quint32(cage.rest.size()));
+    for (std::size_t i = 0; i < cage.rest.size(); ++i) {
+        w.f64(cage.rest[i].x());
+        w.f64(cage.rest[i].y());
+        w.f64(cage.posed[i].x());
+        w.f64(cage.posed[i].y());
+    }
+}
+
+void writeSkeleton(ByteWriter &w, const SkeletonRig &s)
+{
+    w.u32(quint32(s.joints.size()));
+    for (std::size_t j = 0; j < s.joints.size(); ++j) {
+        w.f64(s.joints[j].x());
+        w.f64(s.joints[j].y());
+        w.f64(j < s.radius.size() ? s.radius[j] : 0.0);
+        w.i32(j < s.parent.size() ? s.parent[j] : -1);
+        w.f64(j < s.angles.size() ? s.angles[j] : 0.0);
+    }
+    w.i32(s.root);
+    w.f64(s.rootOffset.x());
+    w.f64(s.rootOffset.y());
+    for (double v :
+         {s.settings.complexity, s.settings.merge, s.settings.prune, s.settings.collapse})
+        w.f64(v);
+    w.u8(quint8(s.mode));
+}
+
+// The chunks an object may carry, in the order they are written. A new kind of object state
+// (a bone chunk, say) is one more row here and one in the reader's table.
+struct ObjectChunkWriter {
+    quint32 tag;
+    bool (*present)(const StrokeGroup &);
+    void (*write)(ByteWriter &, const StrokeGroup &, const Tables &);
+};
+const ObjectChunkWriter kObjectChunkWriters[] = {
+    {kTagPins, [](const StrokeGroup &g) { return !g.rig.pins.empty(); },
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &) { writePins(w, g.rig.pins); }},
+    {kTagCage, [](const StrokeGroup &g) { return !g.rig.cage.empty(); },
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &) { writeCage(w, g.rig.cage); }},
+    {kTagSkeleton, [](const StrokeGroup &g) { return !g.rig.skeleton.empty(); },
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &) { writeSkeleton(w, g.rig.skeleton); }},
+    {kTagDeformed, poseMatches,
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &tables) {
+         w.u32(tables.poseIndex.at(g.deformed.get()));
+     }},
+};
 
 void writeObject(ByteWriter &w, const StrokeGroup &g, const Tables &tables)
 {
@@ -208,12 +191,13 @@ void writeObject(ByteWriter &w, const StrokeGroup &g, const Tables &tables)
         w.u64(s.id);
         w.u32(tables.strokeIndex.at(s.data ? s.data.get() : &emptyStrokeData()));
     }
-    if (!g.pins.empty())
-        writePins(w, g.pins);
-    if (poseMatches(g)) {
-        w.u32(kTagDeformed);
-        w.u32(4);
-        w.u32(tables.poseIndex.at(g.deformed.get()));
+    for (const ObjectChunkWriter &chunk : kObjectChunkWriters) {
+        if (!chunk.present(g))
+            continue;
+        w.u32(chunk.tag);
+        const qsizetype chunkLength = w.beginLength(4);
+        chunk.write(w, g, tables);
+        w.endLength32(chunkLength);
     }
     w.endLength32(length);
 }
@@ -232,25 +216,40 @@ void writeFrames(ByteWriter &w, const std::vector<Frame> &frames, const Tables &
     }
 }
 
+// A section and, from format 2 on, the CRC-32C of its tag, length and payload.
 template <class WriteBody> void writeSection(ByteWriter &w, quint32 sectionTag, WriteBody body)
 {
+    const qsizetype start = w.size();
     w.u32(sectionTag);
     const qsizetype length = w.beginLength(8);
     body();
     w.endLength64(length);
+    w.u32(w.crcSince(start));
 }
 } // namespace
 
 QByteArray serializeFinbook(const Document &document)
 {
-    const Tables tables(document.frames());
-    ByteWriter w(tables.expectedBytes);
+    return serializeFinbook(document.frames(), document.settings());
+}
+
+QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSettings &settings,
+                            const std::vector<AncillarySection> &ancillary)
+{
+    const Tables tables(frames);
+    qsizetype extra = 0;
+    for (const AncillarySection &a : ancillary)
+        extra += qsizetype(kSectionHeaderBytes + kSectionCrcBytes) + a.payload.size();
+    ByteWriter w(tables.expectedBytes + extra);
     w.raw(kMagic, sizeof(kMagic));
     w.u32(kFinbookFormatVersion);
-    writeSection(w, kTagDocument, [&] { writeDocumentSection(w, document, tables.maxId); });
+    writeSection(w, kTagDocument, [&] { writeDocumentSection(w, settings, tables.maxId); });
     writeSection(w, kTagStrokes, [&] { writeStrokeTable(w, tables); });
     writeSection(w, kTagPoses, [&] { writePoseTable(w, tables); });
-    writeSection(w, kTagFrames, [&] { writeFrames(w, document.frames(), tables); });
+    writeSection(w, kTagFrames, [&] { writeFrames(w, frames, tables); });
+    for (const AncillarySection &a : ancillary)
+        writeSection(w, tag(a.tag),
+                     [&] { w.raw(a.payload.constData(), std::size_t(a.payload.size())); });
     writeSection(w, kTagEnd, [] {});
     return w.take();
 }
