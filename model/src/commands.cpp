@@ -349,7 +349,7 @@ DuplicateFrameCommand::DuplicateFrameCommand(Document *doc, Id sourceFrameId, in
     m_copyId = doc->allocateId();
     for (const StrokeGroup &g : source->groups) {
         m_ids.push_back(doc->allocateId());
-        for (std::size_t i = 0; i < g.strokes.size() + g.pins.size(); ++i)
+        for (std::size_t i = 0; i < g.strokes.size() + g.rig.pins.size(); ++i)
             m_ids.push_back(doc->allocateId());
     }
 }
@@ -368,7 +368,7 @@ void DuplicateFrameCommand::redo()
         g.id = m_ids.at(next++);
         for (Stroke &s : g.strokes)
             s.id = m_ids.at(next++);
-        for (Pin &p : g.pins)
+        for (Pin &p : g.rig.pins)
             p.id = m_ids.at(next++);
     }
     m_doc->insertFrame(m_index, std::move(copy));

@@ -1,4 +1,7 @@
 #include <finbook/model/deform_controller.h>
+#include <finbook/model/rig/rig_commands.h>
+
+#include <QMetaObject>
 
 #include <algorithm>
 
@@ -17,11 +20,23 @@ DeformController::DeformController(Document *document, QObject *parent)
         const auto it = m_states.find(id);
         refresh(id, it != m_states.end() && it->second.setup);
     });
+    // Frames that arrive without a pose (generated in-betweens) get one like any edited object;
+    // they usually share a key's drawing and rest definition, hence its factorization.
+    connect(m_doc, &Document::framesInserted, this, [this](int first, int count) {
+        // Many new poses at once (in-betweens): the paper's two steps now, converged soon.
+        m_previewOnly = true;
+        for (int i = first; i < first + count && i < m_doc->frameCount(); ++i)
+            for (const StrokeGroup &g : m_doc->frameAt(i).groups)
+                if (!g.rig.empty() && !g.deformed)
+                    refresh(g.id);
+        m_previewOnly = false;
+    });
     connect(m_doc, &Document::documentReset, this, [this] {
         for (const auto &[id, state] : m_states)
             m_service.cancel(id);
         m_states.clear();
         m_recent.clear();
+        m_unsettled.clear();
     });
     connect(&m_service, &PrecomputeService::busyChanged, this, &DeformController::busyChanged);
     connect(&m_service, &PrecomputeService::setupReady, this,
@@ -30,6 +45,16 @@ DeformController::DeformController(Document *document, QObject *parent)
             });
     connect(&m_service, &PrecomputeService::setupFailed, this,
             [this](Id id, quint64, const QString &message) { setupFailed(id, message); });
+    m_settleTimer.setSingleShot(true);
+    m_settleTimer.setInterval(60);
+    connect(&m_settleTimer, &QTimer::timeout, this, &DeformController::startConvergedSolves);
+    m_pool.setMaxThreadCount(1);
+}
+
+DeformController::~DeformController()
+{
+    m_cancelConverged->store(true);
+    m_pool.waitForDone();
 }
 
 bool DeformController::isWaiting(Id groupId) const
@@ -58,7 +83,7 @@ const Eigen::MatrixX2d *DeformController::poseVertices(Id groupId) const
     const auto it = m_states.find(groupId);
     if (it == m_states.end() || !it->second.setup)
         return nullptr;
-    return it->second.vertices.rows() ? &it->second.vertices : &it->second.setup->meshed->mesh.V;
+    return it->second.vertices.rows() ? &it->second.vertices : &it->second.setup->meshVertices();
 }
 
 QString DeformController::lastError(Id groupId) const
@@ -79,36 +104,50 @@ QPointF DeformController::restPointFor(Id groupId, QPointF shown) const
 std::shared_ptr<const DeformSetup> DeformController::cachedSetup(const StrokeGroup &group) const
 {
     const auto fits = [&](const std::shared_ptr<const DeformSetup> &s) {
-        return s && s->extraPasses == m_options.extraPasses && s->matches(group);
+        return s && sameSolverOptions(s->options, m_options) && s->matches(group);
     };
     if (const auto it = m_states.find(group.id); it != m_states.end() && fits(it->second.setup))
         return it->second.setup;
     for (const auto &s : m_recent)
         if (fits(s))
             return s;
+    for (const auto &[id, state] : m_states)
+        if (fits(state.setup))
+            return state.setup;
     return nullptr;
+}
+
+void DeformController::setConverged()
+{
+    setSolverOptions(deform::ArapMethod::Refined, 0);
 }
 
 void DeformController::setExtraPasses(int passes)
 {
-    passes = std::clamp(passes, 0, 10);
-    if (passes == m_options.extraPasses)
+    setSolverOptions(deform::ArapMethod::TwoStep, std::clamp(passes, 0, 10));
+}
+
+void DeformController::setSolverOptions(deform::ArapMethod method, int passes)
+{
+    if (m_options.method == method && m_options.extraPasses == passes)
         return;
+    m_options.method = method;
     m_options.extraPasses = passes;
     // Meshes stay valid; every pinned object needs a new precompute with the new options.
     for (const Frame &f : m_doc->frames())
         for (const StrokeGroup &g : f.groups)
-            if (!g.pins.empty() && m_states.count(g.id))
+            if ((g.rig.kind() == RigKind::Pins || g.rig.kind() == RigKind::Skeleton) &&
+                m_states.count(g.id))
                 refresh(g.id);
 }
 
 std::shared_ptr<const MeshedObject> DeformController::cachedMesh(const MeshKey &key) const
 {
     for (const auto &s : m_recent)
-        if (s->key == key)
+        if (s->meshed && s->key == key)
             return s->meshed;
     for (const auto &[id, state] : m_states)
-        if (state.setup && state.setup->key == key)
+        if (state.setup && state.setup->meshed && state.setup->key == key)
             return state.setup->meshed;
     return nullptr;
 }
@@ -127,9 +166,10 @@ void DeformController::refresh(Id groupId, bool wantMesh)
     if (!g) {
         m_service.cancel(groupId);
         m_states.erase(groupId);
+        m_unsettled.erase(groupId);
         return;
     }
-    if (g->pins.empty() && !wantMesh) {
+    if (g->rig.empty() && !wantMesh) {
         m_service.cancel(groupId);
         if (auto it = m_states.find(groupId); it != m_states.end())
             it->second.waiting = false;
@@ -141,42 +181,154 @@ void DeformController::refresh(Id groupId, bool wantMesh)
     }
     if (g->strokes.empty())
         return;
-    DeformJob job;
-    job.groupId = groupId;
-    job.key = MeshKey::of(*g);
-    job.meshed = cachedMesh(job.key);
-    job.options = m_options;
-    job.pinRest.resize(Eigen::Index(g->pins.size()), 2);
-    for (std::size_t i = 0; i < g->pins.size(); ++i) {
-        job.pinRest.row(Eigen::Index(i)) << g->pins[i].rest.x(), g->pins[i].rest.y();
+    State &state = m_states[groupId];
+    const MeshKey key = MeshKey::of(*g);
+    // Targets moving while the precompute runs need no new one: it solves them on arrival.
+    if (!(state.waiting && state.pendingKey == key &&
+          sameRestDefinition(state.pendingRest, g->rig))) {
+        DeformJob job;
+        job.groupId = groupId;
+        job.key = key;
+        job.meshed = cachedMesh(job.key);
+        job.options = m_options;
+        job.rig = g->rig.atRest();
+        state.waiting = true;
+        state.pendingKey = key;
+        state.pendingRest = job.rig;
+        m_service.request(std::move(job));
     }
-    m_states[groupId].waiting = true;
-    m_service.request(std::move(job));
+    showPreview(*g);
+}
+
+void DeformController::showPreview(const StrokeGroup &group)
+{
+    // A cage whose coordinates are still on their way moves the drawing rigidly: the
+    // similarity that best maps the rest corners onto the posed ones (least squares).
+    const CageRig &cage = group.rig.cage;
+    if (group.rig.kind() != RigKind::Cage || cage.posed.size() != cage.rest.size())
+        return;
+    const double n = double(cage.rest.size());
+    QPointF restCentre, posedCentre;
+    for (std::size_t i = 0; i < cage.rest.size(); ++i) {
+        restCentre += cage.rest[i] / n;
+        posedCentre += cage.posed[i] / n;
+    }
+    double dot = 0, cross = 0, norm = 0;
+    for (std::size_t i = 0; i < cage.rest.size(); ++i) {
+        const QPointF a = cage.rest[i] - restCentre, b = cage.posed[i] - posedCentre;
+        dot += a.x() * b.x() + a.y() * b.y();
+        cross += a.x() * b.y() - a.y() * b.x();
+        norm += a.x() * a.x() + a.y() * a.y();
+    }
+    const double c = norm > 0 ? dot / norm : 1.0, s = norm > 0 ? cross / norm : 0.0;
+    std::vector<std::size_t> offsets;
+    Eigen::MatrixX2d points = restPoints(MeshKey::of(group), offsets);
+    for (Eigen::Index i = 0; i < points.rows(); ++i) {
+        const double x = points(i, 0) - restCentre.x(), y = points(i, 1) - restCentre.y();
+        points.row(i) << posedCentre.x() + c * x - s * y, posedCentre.y() + s * x + c * y;
+    }
+    if (points.allFinite())
+        m_doc->setDeformed(group.id, strokesFromPoints(group, points));
 }
 
 void DeformController::solve(Id groupId, std::shared_ptr<const DeformSetup> setup)
 {
     State &state = m_states[groupId];
-    const bool newMesh = !state.setup || state.setup->meshed != setup->meshed;
+    const bool newMesh = !state.setup || &state.setup->meshVertices() != &setup->meshVertices();
     state.waiting = false;
     state.setup = setup;
     const StrokeGroup *g = m_doc->group(groupId);
-    if (g->pins.empty()) {
-        state.vertices = setup->meshed->mesh.V;
+    if (g->rig.empty()) {
+        state.vertices = setup->meshVertices();
     } else {
-        auto pose = solvePose(*setup, *g);
+        // Pins that refine show the drag pose now and the converged one once they rest.
+        const bool refines = setup->pins && setup->options.method == deform::ArapMethod::Refined;
+        const PoseStage stage = !refines        ? PoseStage::Final
+                                : m_previewOnly ? PoseStage::Preview
+                                                : PoseStage::Drag;
+        auto pose = solvePose(*setup, *g, stage);
         if (!pose) {
             state.error = pose.error();
             emit errorOccurred(groupId, state.error);
             return;
         }
         state.error.clear();
-        state.vertices = std::move(pose->vertices);
-        m_doc->setDeformed(groupId, std::move(pose->strokes));
+        ++m_settleGeneration[groupId]; // a converged solve of older targets is stale now
+        if (refines) {
+            m_unsettled.insert(groupId);
+            m_settleTimer.start();
+        } else {
+            m_unsettled.erase(groupId);
+        }
+        storePose(groupId, std::move(*pose));
     }
     if (newMesh)
         emit meshChanged(groupId);
     emit poseSolved(groupId);
+}
+
+void DeformController::storePose(Id groupId, Pose pose)
+{
+    State &state = m_states[groupId];
+    state.vertices = std::move(pose.vertices);
+    m_doc->setDeformed(groupId, std::move(pose.strokes));
+}
+
+void DeformController::startConvergedSolves()
+{
+    for (Id id : m_unsettled) {
+        const StrokeGroup *g = m_doc->group(id);
+        const auto it = m_states.find(id);
+        if (!g || it == m_states.end() || !it->second.setup)
+            continue;
+        // An immutable snapshot: the setup is shared and const, the group is a copy of
+        // pointers and pins. The result is taken only if nothing changed meanwhile.
+        auto setup = it->second.setup;
+        StrokeGroup snapshot = *g;
+        const quint64 generation = ++m_generation;
+        m_settleGeneration[id] = generation;
+        auto cancel = m_cancelConverged;
+        m_pool.start([this, id, generation, setup, snapshot, cancel] {
+            auto pose =
+                solvePose(*setup, snapshot, PoseStage::Final, [cancel] { return cancel->load(); });
+            if (!pose)
+                return;
+            QMetaObject::invokeMethod(
+                this,
+                [this, id, generation, p = std::move(*pose)]() mutable {
+                    convergedSolved(id, generation, std::move(p));
+                },
+                Qt::QueuedConnection);
+        });
+    }
+}
+
+void DeformController::convergedSolved(Id groupId, quint64 generation, Pose pose)
+{
+    const auto it = m_settleGeneration.find(groupId);
+    if (it == m_settleGeneration.end() || it->second != generation || !m_doc->group(groupId))
+        return; // the targets moved on (or the object went) while it solved
+    m_unsettled.erase(groupId);
+    storePose(groupId, std::move(pose));
+    emit poseSolved(groupId);
+}
+
+void DeformController::settle()
+{
+    m_settleTimer.stop();
+    const std::set<Id> pending = std::exchange(m_unsettled, {});
+    for (Id id : pending) {
+        const StrokeGroup *g = m_doc->group(id);
+        const auto it = m_states.find(id);
+        if (!g || it == m_states.end() || !it->second.setup || !it->second.setup->matches(*g))
+            continue;
+        ++m_settleGeneration[id]; // drops a converged solve still under way
+        auto pose = solvePose(*it->second.setup, *g, PoseStage::Final);
+        if (pose) {
+            storePose(id, std::move(*pose));
+            emit poseSolved(id);
+        }
+    }
 }
 
 void DeformController::setupReady(Id groupId, std::shared_ptr<const DeformSetup> setup)
@@ -187,7 +339,7 @@ void DeformController::setupReady(Id groupId, std::shared_ptr<const DeformSetup>
         return;
     // The pins may have changed while the worker ran: use the setup only if it still fits
     // (else the newer request is already on its way).
-    if (setup->matches(*g) || (g->pins.empty() && setup->key == MeshKey::of(*g)))
+    if (setup->matches(*g))
         solve(groupId, std::move(setup));
 }
 

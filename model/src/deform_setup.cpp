@@ -1,18 +1,16 @@
-#include <finbook/deform/nearest_vertex.h>
-#include <finbook/model/deform_setup.h>
+// The part of every deformer that is the same for all kinds: the content key, meshing, the
+// job → setup dispatch, turning solved points into strokes, and mapping clicks back to rest.
+#include "deformation_text.h"
 
-#include <QCoreApplication>
+#include <finbook/model/cage/cage_setup.h>
+#include <finbook/model/deform_setup.h>
+#include <finbook/model/pins/pin_setup.h>
+#include <finbook/model/rig/rig_commands.h>
+#include <finbook/model/skeleton/skeleton_setup.h>
 
 #include <cmath>
 
 namespace finbook::model {
-
-namespace {
-// The translation context of these texts; a class so lupdate files the strings under
-// "Deformation" too.
-struct Deformation {
-    Q_DECLARE_TR_FUNCTIONS(Deformation)
-};
 
 std::vector<geometry::StrokeInput> strokeInputs(const MeshKey &key)
 {
@@ -29,7 +27,7 @@ std::vector<geometry::StrokeInput> strokeInputs(const MeshKey &key)
     return inputs;
 }
 
-Eigen::MatrixX2d allRestPoints(const MeshKey &key, std::vector<std::size_t> &offsets)
+Eigen::MatrixX2d restPoints(const MeshKey &key, std::vector<std::size_t> &offsets)
 {
     offsets.assign(1, 0);
     for (const StrokeDataPtr &data : key.strokes)
@@ -41,7 +39,6 @@ Eigen::MatrixX2d allRestPoints(const MeshKey &key, std::vector<std::size_t> &off
             points.row(row++) << p.x, p.y;
     return points;
 }
-} // namespace
 
 MeshKey MeshKey::of(const StrokeGroup &group)
 {
@@ -53,18 +50,21 @@ MeshKey MeshKey::of(const StrokeGroup &group)
     return key;
 }
 
+const Eigen::MatrixX2d &DeformSetup::meshVertices() const
+{
+    return cage ? cage->meshVertices() : meshed->mesh.V;
+}
+
+const Eigen::MatrixX3i &DeformSetup::meshTriangles() const
+{
+    return cage ? cage->meshTriangles() : meshed->mesh.F;
+}
+
 bool DeformSetup::matches(const StrokeGroup &group) const
 {
     // Pins are compared by where they sit, not by id: a duplicated frame's pins have new ids
     // but the same rest positions, and may share this factorization.
-    if (Eigen::Index(group.pins.size()) != pinRest.rows() || !(key == MeshKey::of(group)))
-        return false;
-    for (std::size_t i = 0; i < group.pins.size(); ++i) {
-        const Pin &p = group.pins[i];
-        if (p.rest.x() != pinRest(Eigen::Index(i), 0) || p.rest.y() != pinRest(Eigen::Index(i), 1))
-            return false;
-    }
-    return true;
+    return sameRestDefinition(rest, group.rig) && key == MeshKey::of(group);
 }
 
 Expected<std::shared_ptr<const MeshedObject>, QString> meshObject(const MeshKey &key)
@@ -79,7 +79,7 @@ Expected<std::shared_ptr<const MeshedObject>, QString> meshObject(const MeshKey 
                               .arg(QString::fromStdString(mesh.error().message)));
     auto meshed = std::make_shared<MeshedObject>();
     meshed->mesh = std::move(*mesh);
-    const Eigen::MatrixX2d points = allRestPoints(key, meshed->strokeOffsets);
+    const Eigen::MatrixX2d points = restPoints(key, meshed->strokeOffsets);
     meshed->embedding = geometry::embed(meshed->mesh.V, meshed->mesh.F, points);
     return std::shared_ptr<const MeshedObject>(std::move(meshed));
 }
@@ -89,8 +89,16 @@ buildDeformSetup(const DeformJob &job, const std::function<bool()> &cancelled)
 {
     auto setup = std::make_shared<DeformSetup>();
     setup->key = job.key;
-    setup->pinRest = job.pinRest;
-    setup->extraPasses = job.options.extraPasses;
+    setup->rest = job.rig.atRest();
+    setup->options = job.options;
+    if (job.rig.kind() == RigKind::Cage) {
+        // The cage carries its own interior mesh; the object's mesh is not needed.
+        auto cage = buildCageSetup(job.key, job.rig.cage.rest, cancelled);
+        if (!cage)
+            return unexpected(cage.error());
+        setup->cage = *cage;
+        return std::shared_ptr<const DeformSetup>(std::move(setup));
+    }
     setup->meshed = job.meshed;
     if (!setup->meshed) {
         auto meshed = meshObject(job.key);
@@ -100,74 +108,92 @@ buildDeformSetup(const DeformJob &job, const std::function<bool()> &cancelled)
     }
     if (cancelled && cancelled())
         return unexpected(Deformation::tr("Cancelled."));
-    const Eigen::MatrixX2d &V = setup->meshed->mesh.V;
-    setup->pinVertex.resize(job.pinRest.rows());
-    for (Eigen::Index i = 0; i < job.pinRest.rows(); ++i)
-        setup->pinVertex(i) = deform::nearestVertex(V, job.pinRest.row(i).transpose());
-    if (job.pinRest.rows() > 0) {
-        auto arap = deform::arapPrecompute(V, setup->meshed->mesh.F, setup->pinVertex, job.options,
-                                           cancelled);
-        if (!arap)
-            return unexpected(Deformation::tr("The pins cannot be solved on this drawing: %1")
-                                  .arg(QString::fromStdString(arap.error().message)));
-        setup->arap = *arap;
+    if (job.rig.kind() == RigKind::Pins) {
+        auto pins = buildPinSetup(*setup->meshed, job.rig.pins, job.options, cancelled);
+        if (!pins)
+            return unexpected(pins.error());
+        setup->pins = *pins;
+    }
+    if (job.rig.kind() == RigKind::Skeleton) {
+        auto skeleton =
+            buildSkeletonSetup(*setup->meshed, job.rig.skeleton, job.options, cancelled);
+        if (!skeleton)
+            return unexpected(skeleton.error());
+        setup->skeleton = *skeleton;
     }
     return std::shared_ptr<const DeformSetup>(std::move(setup));
 }
 
-Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &group)
+DeformedStrokesPtr strokesFromPoints(const StrokeGroup &group, const Eigen::MatrixX2d &points)
 {
-    const geometry::ObjectMesh &mesh = setup.meshed->mesh;
-    Pose pose;
-    if (!setup.arap || Eigen::Index(group.pins.size()) != setup.pinRest.rows()) {
-        pose.vertices = mesh.V;
-    } else {
-        // A pin drags its vertex by the pin's own displacement, so a pin that did not land
-        // exactly on a vertex still moves the drawing under it by what the user dragged.
-        Eigen::MatrixX2d bc(Eigen::Index(group.pins.size()), 2);
-        for (std::size_t i = 0; i < group.pins.size(); ++i) {
-            const Pin &p = group.pins[i];
-            const QPointF delta = p.target - p.rest;
-            const Eigen::Index row = Eigen::Index(i);
-            bc.row(row) =
-                mesh.V.row(setup.pinVertex(row)) + Eigen::RowVector2d(delta.x(), delta.y());
-        }
-        auto solved = deform::arapSolve(*setup.arap, bc, pose.vertices);
-        if (!solved)
-            return unexpected(Deformation::tr("The pins could not be solved: %1")
-                                  .arg(QString::fromStdString(solved.error().message)));
-    }
-    const Eigen::MatrixX2d points =
-        geometry::applyEmbedding(setup.meshed->embedding, pose.vertices, mesh.F);
-    if (!points.allFinite())
-        return unexpected(
-            Deformation::tr("The deformation produced invalid points; it was not applied."));
     auto strokes = std::make_shared<DeformedStrokes>();
     strokes->strokes.resize(group.strokes.size());
-    const auto &offsets = setup.meshed->strokeOffsets;
-    for (std::size_t s = 0; s < group.strokes.size() && s + 1 < offsets.size(); ++s) {
+    Eigen::Index row = 0;
+    for (std::size_t s = 0; s < group.strokes.size(); ++s) {
         const auto &rest = group.strokes[s].data->points;
         auto &out = strokes->strokes[s];
         out.resize(rest.size());
-        for (std::size_t i = 0; i < rest.size(); ++i) {
-            const Eigen::Index row = Eigen::Index(offsets[s] + i);
+        for (std::size_t i = 0; i < rest.size() && row < points.rows(); ++i, ++row)
             out[i] = {float(points(row, 0)), float(points(row, 1)), rest[i].pressure};
-        }
     }
-    pose.strokes = std::move(strokes);
+    return strokes;
+}
+
+bool sameSolverOptions(const deform::ArapOptions &a, const deform::ArapOptions &b)
+{
+    return a.method == b.method && a.extraPasses == b.extraPasses;
+}
+
+Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &group,
+                                  PoseStage stage, const std::function<bool()> &cancelled)
+{
+    Pose pose;
+    Eigen::MatrixX2d points;
+    if (setup.cage) {
+        if (group.rig.cage.posed.size() != setup.rest.cage.rest.size())
+            return unexpected(Deformation::tr("The cage changed while it was being prepared."));
+        auto solved = solveCage(*setup.cage, group.rig.cage.posed);
+        if (!solved)
+            return unexpected(solved.error());
+        pose.vertices = std::move(solved->meshVertices);
+        points = std::move(solved->points);
+    } else {
+        if (!setup.meshed)
+            return unexpected(Deformation::tr("The object has no mesh to deform."));
+        const geometry::ObjectMesh &mesh = setup.meshed->mesh;
+        if (setup.pins && group.rig.pins.size() == setup.rest.pins.size()) {
+            auto solved = solvePins(*setup.meshed, *setup.pins, group.rig.pins, stage, cancelled);
+            if (!solved)
+                return unexpected(solved.error());
+            pose.vertices = std::move(*solved);
+        } else if (setup.skeleton && group.rig.kind() == RigKind::Skeleton &&
+                   setup.rest.skeleton.sameRest(group.rig.skeleton)) {
+            auto solved = solveSkeleton(*setup.meshed, *setup.skeleton, group.rig.skeleton);
+            if (!solved)
+                return unexpected(solved.error());
+            pose.vertices = std::move(*solved);
+        } else {
+            pose.vertices = mesh.V;
+        }
+        points = geometry::applyEmbedding(setup.meshed->embedding, pose.vertices, mesh.F);
+    }
+    if (!points.allFinite() || !pose.vertices.allFinite())
+        return unexpected(
+            Deformation::tr("The deformation produced invalid points; it was not applied."));
+    pose.strokes = strokesFromPoints(group, points);
     return pose;
 }
 
 QPointF restPointFor(const DeformSetup &setup, const Eigen::MatrixX2d &U, QPointF shown)
 {
-    const geometry::ObjectMesh &mesh = setup.meshed->mesh;
+    const Eigen::MatrixX2d &V = setup.meshVertices();
+    const Eigen::MatrixX3i &F = setup.meshTriangles();
     const Eigen::Vector2d p(shown.x(), shown.y());
     double bestDistance = std::numeric_limits<double>::infinity();
     Eigen::Vector3d bestWeights(1, 0, 0);
     Eigen::Index bestFace = -1;
-    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-        const Eigen::Vector2d a = U.row(mesh.F(f, 0)), b = U.row(mesh.F(f, 1)),
-                              c = U.row(mesh.F(f, 2));
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+        const Eigen::Vector2d a = U.row(F(f, 0)), b = U.row(F(f, 1)), c = U.row(F(f, 2));
         const double area = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
         if (std::abs(area) < 1e-12)
             continue;
@@ -190,7 +216,7 @@ QPointF restPointFor(const DeformSetup &setup, const Eigen::MatrixX2d &U, QPoint
         return shown;
     Eigen::Vector2d rest = Eigen::Vector2d::Zero();
     for (int k = 0; k < 3; ++k)
-        rest += bestWeights(k) * mesh.V.row(mesh.F(bestFace, k)).transpose();
+        rest += bestWeights(k) * V.row(F(bestFace, k)).transpose();
     return {rest.x(), rest.y()};
 }
 

@@ -252,11 +252,17 @@ void Document::setStrokes(Id groupId, std::vector<Stroke> strokes)
     groupEdited(groupId, false);
 }
 
-void Document::setPins(Id groupId, std::vector<Pin> pins)
+void Document::setRig(Id groupId, Rig rig)
 {
     StrokeGroup &g = mutableGroup(groupId);
-    g.pins = std::move(pins);
-    if (g.pins.empty())
+    if (rig.kind() == RigKind::Pins)
+        rig.cage = {};
+    if (rig.cage.posed.size() != rig.cage.rest.size())
+        rig.cage.posed = rig.cage.rest;
+    if (rig.kind() != RigKind::Skeleton)
+        rig.skeleton = {};
+    g.rig = std::move(rig);
+    if (g.rig.empty())
         g.deformed.reset();
     emit constraintsChanged(groupId);
     groupEdited(groupId, false);

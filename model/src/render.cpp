@@ -1,9 +1,18 @@
+// Painting strokes and frames with QPainter, at a cost bounded by what is on the canvas.
+//
+// Two kinds of tiny files used to cost minutes: a point millions of pixels off the canvas
+// (QPainter's stroker builds the whole outline of a segment whatever the clip), and one
+// stroke referenced thousands of times (each reference painted again). So segments are
+// clipped to what the painter can show before QPainter sees them, and references to the
+// same points in one frame are painted once (paintList).
 #include <finbook/model/render.h>
 
 #include <QPainterPath>
 #include <QVarLengthArray>
 
+#include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace finbook::model {
 
@@ -11,41 +20,164 @@ namespace {
 // Width buckets of a quarter pixel: invisible steps, but long runs for the polyline fast path.
 int widthBucket(float width, float pressure)
 {
-    return int(std::lround(width * pressure * 4.0f));
+    const float w = width * pressure * 4.0f;
+    // QPen refuses widths of 32768 and more (and draws 1 pixel instead): stay below.
+    return std::isfinite(w) ? int(std::lround(std::clamp(w, 0.0f, 4.0f * kMaxStrokeWidth))) : 0;
 }
 
-void paintDot(QPainter &painter, const StrokePoint &p, qreal width)
+void paintDot(QPainter &painter, const QPointF &p, qreal width)
 {
     painter.setPen(Qt::NoPen);
-    painter.drawEllipse(QPointF(p.x, p.y), width / 2, width / 2);
+    painter.drawEllipse(p, width / 2, width / 2);
+}
+
+bool isFinite(const StrokePoint &p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+// Polylines of equal width, handed to QPainter as they fill up.
+class RunPainter {
+public:
+    RunPainter(QPainter &painter, QPen pen)
+        : m_painter(painter)
+        , m_pen(std::move(pen))
+    {}
+    ~RunPainter() { flush(); }
+
+    void segment(const QPointF &a, const QPointF &b, int bucket)
+    {
+        if (!m_run.isEmpty() && (bucket != m_bucket || m_run.back() != a))
+            flush();
+        if (m_run.isEmpty()) {
+            m_run.append(a);
+            m_bucket = bucket;
+        }
+        m_run.append(b);
+    }
+    void flush()
+    {
+        if (m_run.size() >= 2) {
+            m_pen.setWidthF(std::max(0.25, m_bucket / 4.0));
+            m_painter.setPen(m_pen);
+            m_painter.drawPolyline(m_run.constData(), int(m_run.size()));
+        }
+        m_run.clear();
+    }
+
+private:
+    QPainter &m_painter;
+    QPen m_pen;
+    QVarLengthArray<QPointF, 256> m_run;
+    int m_bucket = 0;
+};
+
+// The largest width a stroke can have, for the clip margin.
+float widestPen(const std::vector<StrokePoint> &points, float width)
+{
+    float widest = 0.25f;
+    for (const StrokePoint &p : points)
+        if (std::isfinite(p.pressure))
+            widest = std::max(widest, width * std::clamp(p.pressure, 0.0f, 1.0f));
+    return std::isfinite(widest) ? widest : 0.25f;
+}
+
+// Where the painter can draw, in its logical coordinates: the device (and the clip, if any)
+// mapped back. Empty when there is no device or the transform cannot be inverted.
+QRectF paintableRect(const QPainter &painter)
+{
+    const QPaintDevice *device = painter.device();
+    if (!device)
+        return {};
+    bool invertible = false;
+    const QTransform toLogical = painter.combinedTransform().inverted(&invertible);
+    if (!invertible)
+        return {};
+    QRectF rect = toLogical.mapRect(QRectF(0, 0, device->width(), device->height()));
+    if (painter.hasClipping())
+        rect = rect.intersected(painter.clipBoundingRect());
+    return rect;
+}
+
+// The alpha that `coats` layers of `alpha` (0..1) give when painted over each other.
+qreal coatedAlpha(qreal alpha, int coats)
+{
+    return 1.0 - std::pow(1.0 - std::clamp(alpha, 0.0, 1.0), coats);
 }
 } // namespace
 
+bool clipSegment(QPointF &a, QPointF &b, const QRectF &r, double *t0Out, double *t1Out)
+{
+    double t0 = 0.0, t1 = 1.0;
+    const double dx = b.x() - a.x(), dy = b.y() - a.y();
+    if (!std::isfinite(dx) || !std::isfinite(dy))
+        return false;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {a.x() - r.left(), r.right() - a.x(), a.y() - r.top(), r.bottom() - a.y()};
+    for (int i = 0; i < 4; ++i) {
+        if (p[i] == 0.0) {
+            if (q[i] < 0.0)
+                return false;
+            continue;
+        }
+        const double t = q[i] / p[i];
+        if (p[i] < 0.0)
+            t0 = std::max(t0, t);
+        else
+            t1 = std::min(t1, t);
+        if (t0 > t1)
+            return false;
+    }
+    const QPointF from = a;
+    if (t0 > 0.0)
+        a = QPointF(from.x() + t0 * dx, from.y() + t0 * dy);
+    if (t1 < 1.0)
+        b = QPointF(from.x() + t1 * dx, from.y() + t1 * dy);
+    if (t0Out)
+        *t0Out = t0;
+    if (t1Out)
+        *t1Out = t1;
+    return true;
+}
+
 void paintStroke(QPainter &painter, const std::vector<StrokePoint> &points, QRgb color, float width)
 {
-    if (points.empty())
+    if (points.empty() || !(width > 0.0f) || !std::isfinite(width))
         return;
+    width = std::min(width, kMaxStrokeWidth); // what a file may hold; wider strains QPainter
+    const QRectF paintable = paintableRect(painter);
+    if (paintable.isEmpty())
+        return;
+    // Caps and antialiasing reach half a pen plus a device pixel or two past a segment.
+    const qreal scale =
+        std::max(1e-9, std::sqrt(std::abs(painter.combinedTransform().determinant())));
+    const qreal margin = widestPen(points, width) / 2 + 2.0 / scale;
+    const QRectF clip = paintable.adjusted(-margin, -margin, margin, margin);
     const QColor c = QColor::fromRgba(color);
     painter.setBrush(c);
     if (points.size() == 1) {
-        paintDot(painter, points.front(), std::max(0.5f, width * points.front().pressure));
+        const StrokePoint &p = points.front();
+        const QPointF at(p.x, p.y);
+        if (isFinite(p) && clip.contains(at))
+            paintDot(painter, at, std::max(0.5f, width * std::clamp(p.pressure, 0.0f, 1.0f)));
         return;
     }
-    QPen pen(c, 1.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
-    QVarLengthArray<QPointF, 256> run;
-    std::size_t start = 0;
-    while (start + 1 < points.size()) {
-        const int bucket = widthBucket(width, points[start + 1].pressure);
-        std::size_t end = start + 1;
-        while (end + 1 < points.size() && widthBucket(width, points[end + 1].pressure) == bucket)
-            ++end;
-        run.clear();
-        for (std::size_t i = start; i <= end; ++i)
-            run.append(QPointF(points[i].x, points[i].y));
-        pen.setWidthF(std::max(0.25, bucket / 4.0));
-        painter.setPen(pen);
-        painter.drawPolyline(run.constData(), int(run.size()));
-        start = end;
+    RunPainter runs(painter, QPen(c, 1.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const StrokePoint &from = points[i - 1], &to = points[i];
+        if (!isFinite(from) || !isFinite(to)) {
+            runs.flush();
+            continue;
+        }
+        QPointF a(from.x, from.y), b(to.x, to.y);
+        const QPointF end = b;
+        if (!clipSegment(a, b, clip)) {
+            runs.flush();
+            continue;
+        }
+        runs.segment(a, b, widthBucket(width, to.pressure));
+        if (b != end) // left the clip: the next piece starts a new run
+            runs.flush();
     }
 }
 
@@ -72,6 +204,62 @@ std::vector<Stroke> posedStrokes(const StrokeGroup &group)
     return strokes;
 }
 
+std::vector<PaintItem> paintList(const Frame &frame, const RenderOptions &options)
+{
+    std::vector<PaintItem> items;
+    for (const StrokeGroup &g : frame.groups) {
+        if (!g.visible && !options.showHidden)
+            continue;
+        for (std::size_t i = 0; i < g.strokes.size(); ++i) {
+            const Stroke &s = g.strokes[i];
+            if (!s.data)
+                continue;
+            const QRgb color = options.tint ? options.tint->rgba() : s.data->color;
+            items.push_back(PaintItem{&displayedPoints(g, i), color, s.data->width, 1});
+        }
+    }
+    // Repeats of the same points, colour and width: one item at the last place, with the
+    // opacity its coats add up to.
+    struct Key {
+        const std::vector<StrokePoint> *points;
+        QRgb color;
+        float width;
+        bool operator==(const Key &) const = default;
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key &k) const
+        {
+            return std::hash<const void *>()(k.points) ^
+                   (std::size_t(k.color) * 0x9e3779b97f4a7c15u) ^ std::hash<float>()(k.width);
+        }
+    };
+    std::unordered_map<Key, std::pair<int, int>, KeyHash> counts; // total, still to come
+    for (const PaintItem &item : items) {
+        auto &[total, left] = counts[Key{item.points, item.color, item.width}];
+        ++total;
+        ++left;
+    }
+    if (counts.size() == items.size())
+        return items;
+    std::vector<PaintItem> merged;
+    merged.reserve(counts.size());
+    const qreal opacity = std::clamp(options.opacity, 0.0, 1.0);
+    for (const PaintItem &item : items) {
+        auto &[total, left] = counts[Key{item.points, item.color, item.width}];
+        if (--left > 0)
+            continue;
+        PaintItem kept = item;
+        kept.coats = total;
+        if (total > 1 && opacity > 0.0) {
+            const qreal alpha = coatedAlpha(qAlpha(item.color) / 255.0 * opacity, total);
+            const int stored = int(std::lround(std::min(1.0, alpha / opacity) * 255.0));
+            kept.color = qRgba(qRed(item.color), qGreen(item.color), qBlue(item.color), stored);
+        }
+        merged.push_back(kept);
+    }
+    return merged;
+}
+
 void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
                 const RenderOptions &options)
 {
@@ -81,24 +269,23 @@ void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &s
         painter.fillRect(QRectF(QPointF(0, 0), QSizeF(settings.canvasSize)),
                          QColor::fromRgba(settings.background));
     painter.setOpacity(options.opacity);
-    for (const StrokeGroup &g : frame.groups) {
-        if (!g.visible && !options.showHidden)
-            continue;
-        for (std::size_t i = 0; i < g.strokes.size(); ++i) {
-            const Stroke &s = g.strokes[i];
-            if (!s.data)
-                continue;
-            const QRgb color = options.tint ? options.tint->rgba() : s.data->color;
-            paintStroke(painter, displayedPoints(g, i), color, s.data->width);
-        }
-    }
+    for (const PaintItem &item : paintList(frame, options))
+        paintStroke(painter, *item.points, item.color, item.width);
     painter.restore();
 }
 
 QImage renderFrame(const Frame &frame, const DocumentSettings &settings, QSize size,
                    const RenderOptions &options)
 {
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    return renderFrameBand(frame, settings, size, 0, size.height(), options);
+}
+
+QImage renderFrameBand(const Frame &frame, const DocumentSettings &settings, QSize size, int top,
+                       int rows, const RenderOptions &options)
+{
+    QImage image(QSize(size.width(), std::max(0, rows)), QImage::Format_ARGB32_Premultiplied);
+    if (image.isNull())
+        return image;
     image.fill(Qt::transparent);
     const QSizeF canvas(settings.canvasSize);
     if (size.isEmpty() || canvas.isEmpty())
@@ -106,7 +293,7 @@ QImage renderFrame(const Frame &frame, const DocumentSettings &settings, QSize s
     QPainter painter(&image);
     const qreal scale = std::min(size.width() / canvas.width(), size.height() / canvas.height());
     painter.translate((size.width() - canvas.width() * scale) / 2,
-                      (size.height() - canvas.height() * scale) / 2);
+                      (size.height() - canvas.height() * scale) / 2 - top);
     painter.scale(scale, scale);
     paintFrame(painter, frame, settings, options);
     return image;

@@ -15,8 +15,9 @@ namespace finbook::model {
 // Merge ids for QUndoCommand::id(); one enum so they never collide.
 enum class CommandId : int {
     None = -1,
-    MovePin = 1,
+    PoseRig = 1,
     SetMeshDensity,
+    SetSkeletonSettings,
 };
 
 class DocumentCommand : public QUndoCommand {

@@ -1,6 +1,8 @@
-// What an object needs before its pins can be dragged: its mesh, its strokes embedded in the
-// mesh, and the ARAP precompute for its set of pinned vertices. Built off the GUI thread from
-// an immutable DeformJob; solving with it (solvePose) is cheap enough for every mouse move.
+// What an object needs before its rig can be dragged, for every rig kind: the precompute for
+// its drawing and its rig's rest definition (pins: mesh, embedding and ARAP factorization;
+// cage: harmonic coordinates of the stroke points). Built off the GUI thread from an immutable
+// DeformJob; solving with it (solvePose) is cheap enough for every mouse move. The kinds'
+// own halves live in pins/ and cage/.
 #pragma once
 
 #include <finbook/deform/arap.h>
@@ -32,40 +34,80 @@ struct MeshedObject {
     std::vector<std::size_t> strokeOffsets; // first point of each stroke; size strokes+1
 };
 
+// What a precompute needs, as an immutable snapshot: the drawing, the rig's rest definition
+// (its targets are ignored: they only re-solve) and the solver options.
 struct DeformJob {
     Id groupId = kNoId;
     MeshKey key;
     std::shared_ptr<const MeshedObject> meshed; // reused when the key is unchanged
-    Eigen::MatrixX2d pinRest;                   // k×2, rest positions of the pins (canvas px)
+    Rig rig;                                    // rest definition; RigKind::None = mesh only
     deform::ArapOptions options;
 };
 
+struct PinSetup;      // pins/pin_setup.h
+struct CageSetup;     // cage/cage_setup.h
+struct SkeletonSetup; // skeleton/skeleton_setup.h
+
+// An object's deformer, ready to solve: the precompute of its rig kind for one drawing and
+// one rest definition. Immutable and shared (a duplicated frame shares its source's setup).
 struct DeformSetup {
     MeshKey key;
-    std::shared_ptr<const MeshedObject> meshed;
-    Eigen::MatrixX2d pinRest;
-    Eigen::VectorXi pinVertex; // per pin: the mesh vertex it drives
-    int extraPasses = 0;       // the ArapOptions::extraPasses it was prepared with
-    std::shared_ptr<const deform::ArapPrecompute> arap; // null without pins
+    Rig rest;                    // the rest definition it was built for (targets at rest)
+    deform::ArapOptions options; // the solver options it was built with
+    std::shared_ptr<const MeshedObject> meshed;    // the object's mesh (pins, mesh only)
+    std::shared_ptr<const PinSetup> pins;          // RigKind::Pins
+    std::shared_ptr<const CageSetup> cage;         // RigKind::Cage
+    std::shared_ptr<const SkeletonSetup> skeleton; // RigKind::Skeleton
 
-    // Whether this setup serves `group` as it is now: same drawing, pins at the same rest
-    // positions in the same order (pin ids may differ).
+    RigKind kind() const { return rest.kind(); }
+    // The mesh the deformer moves, for Show Mesh and for mapping clicks back to rest: the
+    // object's own mesh, or the interior mesh of the cage. V n×2 at rest, F m×3.
+    const Eigen::MatrixX2d &meshVertices() const;
+    const Eigen::MatrixX3i &meshTriangles() const;
+
+    // Whether this setup serves `group` as it is now: same drawing, same rest definition
+    // (pin ids may differ).
     bool matches(const StrokeGroup &group) const;
 };
 
 // Meshes and embeds the rest strokes. Errors are sentences for the user.
 Expected<std::shared_ptr<const MeshedObject>, QString> meshObject(const MeshKey &key);
 
-// Runs a whole job (mesh when needed, snap pins, precompute). `cancelled` is polled.
+// Runs a whole job (mesh when the kind needs one, then the kind's precompute). `cancelled` is
+// polled between stages.
 Expected<std::shared_ptr<const DeformSetup>, QString>
 buildDeformSetup(const DeformJob &job, const std::function<bool()> &cancelled = {});
 
-// Solves the pose for the pins' current targets: deformed mesh vertices (n×2) and points.
+// Whether two ARAP option sets give the same poses (method and extra passes).
+bool sameSolverOptions(const deform::ArapOptions &a, const deform::ArapOptions &b);
+
+// How good a pose must be. Preview: the paper's two steps only, for many poses at once (frames
+// just inserted) until their converged poses arrive. Drag: what fits a mouse move (a fixed
+// number of refinement passes, chosen at precompute time). Final: converged, for every pose
+// that is kept, saved, exported or baked. Only pins refine; cages are exact either way.
+enum class PoseStage { Preview, Drag, Final };
+
+// Solves the pose for the rig's current targets: the deformed mesh vertices (n×2, rows of
+// meshVertices()) and the deformed strokes. A pure function of the setup, the targets and the
+// stage. `cancelled` is polled between refinement passes.
 struct Pose {
     Eigen::MatrixX2d vertices;
     DeformedStrokesPtr strokes;
 };
-Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &group);
+Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &group,
+                                  PoseStage stage = PoseStage::Final,
+                                  const std::function<bool()> &cancelled = {});
+
+// Deformed strokes from one deformed position per rest point (rows in stroke order, as
+// MeshedObject::strokeOffsets counts them); pressures are the rest ones.
+DeformedStrokesPtr strokesFromPoints(const StrokeGroup &group, const Eigen::MatrixX2d &points);
+
+// The rest strokes as the geometry layer takes them (points and widths).
+std::vector<geometry::StrokeInput> strokeInputs(const MeshKey &key);
+
+// All rest points of an object, stroke after stroke; offsets gets each stroke's first row
+// (size strokes + 1).
+Eigen::MatrixX2d restPoints(const MeshKey &key, std::vector<std::size_t> &offsets);
 
 // Maps a point shown on a deformed object back to the rest drawing (for placing a pin on a
 // posed object): the deformed triangle containing it, or the nearest, then its barycentrics.

@@ -76,7 +76,9 @@ public:
     // Replaces all rest strokes of an object (transform, bake). Drops the deformed cache.
     void setStrokes(Id groupId, std::vector<Stroke> strokes);
 
-    void setPins(Id groupId, std::vector<Pin> pins);
+    // Replaces an object's rig (pins or cage, rest definition and targets). A rig with more
+    // than one kind keeps only its first (pins, then cage). An empty rig drops the pose.
+    void setRig(Id groupId, Rig rig);
     // Stores a solved pose. Not undo state: a cache that any rest or pin edit invalidates.
     void setDeformed(Id groupId, DeformedStrokesPtr deformed);
 

@@ -5,6 +5,8 @@
 // allocated by its Document; commands refer to entities by id only.
 #pragma once
 
+#include <finbook/model/skeleton/skeleton_rig.h>
+
 #include <QColor>
 #include <QPointF>
 #include <QSize>
@@ -55,6 +57,47 @@ struct Pin {
     friend bool operator==(const Pin &, const Pin &) = default;
 };
 
+// A harmonic cage (Joshi et al. 2007): a simple polygon drawn around the object on its rest
+// drawing, and where each corner is dragged to now (same count, same order).
+struct CageRig {
+    std::vector<QPointF> rest;
+    std::vector<QPointF> posed;
+    bool empty() const { return rest.empty(); }
+    friend bool operator==(const CageRig &, const CageRig &) = default;
+};
+
+enum class RigKind { None, Pins, Cage, Skeleton };
+
+// The one deformer an object carries in a frame: pins, a cage, or a skeleton. At most one kind is
+// non-empty (Document::setRig enforces it). Its rest definition (pin rest positions, rest
+// corners) decides the precompute; its targets (pin targets, posed corners) only re-solve, and
+// the pose is a pure function of both.
+struct Rig {
+    std::vector<Pin> pins;
+    CageRig cage;
+    SkeletonRig skeleton; // skeleton/skeleton_rig.h
+
+    RigKind kind() const
+    {
+        if (!pins.empty())
+            return RigKind::Pins;
+        if (!cage.empty())
+            return RigKind::Cage;
+        if (!skeleton.empty())
+            return RigKind::Skeleton;
+        return RigKind::None;
+    }
+    bool empty() const { return kind() == RigKind::None; }
+    // Whether any target differs from its rest position.
+    bool isPosed() const;
+    // The same rig with every target at its rest position.
+    Rig atRest() const;
+    // The same rig with the rest definition moved to where the targets are: what stays after
+    // the pose has become the drawing.
+    Rig rebased() const;
+    friend bool operator==(const Rig &, const Rig &) = default;
+};
+
 // Points of one deformed object, stroke by stroke (same order and sizes as its rest strokes).
 struct DeformedStrokes {
     std::vector<std::vector<StrokePoint>> strokes;
@@ -71,12 +114,12 @@ struct StrokeGroup {
     bool locked = false;
     double meshDensity = kDefaultMeshDensity;
     std::vector<Stroke> strokes; // rest strokes, drawing order (last on top)
-    std::vector<Pin> pins;
-    // The pose the pins produced, as last solved. Saved with the file so a reopened document
+    Rig rig;
+    // The pose the rig produced, as last solved. Saved with the file so a reopened document
     // shows (and exports) the deformed drawing without re-solving; cleared by any rest edit.
     DeformedStrokesPtr deformed;
 
-    bool isDeformed() const { return !pins.empty() && deformed != nullptr; }
+    bool isDeformed() const { return !rig.empty() && deformed != nullptr; }
 };
 
 struct Frame {
@@ -99,5 +142,8 @@ constexpr int kMinFps = 1;
 constexpr int kMaxFps = 60;
 constexpr int kMaxCanvasSide = 16384;
 constexpr int kMaxHold = 1000;
+// The widest stroke a file may hold: the largest canvas side. Wider says nothing more (it
+// covers any canvas), and QPen refuses widths of 32768 and more (it silently draws 1 pixel).
+constexpr float kMaxStrokeWidth = 16384.0f;
 
 } // namespace finbook::model

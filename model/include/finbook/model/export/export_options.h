@@ -1,0 +1,95 @@
+// What an export makes and where: the format, the frames, size, background, rate and target.
+//
+// Every format goes through exportAnimation() (exporter.h) with these options; the window's
+// Export dialog and `finbook export` only fill them in.
+#pragma once
+
+#include <finbook/model/types.h>
+
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace finbook::model {
+
+class Document;
+
+enum class ExportFormat {
+    PngSequence, // one PNG per playback tick (or per drawing + an exposure sheet) in a folder
+    SvgSequence, // the same as vector files: strokes as filled outlines
+    Gif,         // ffmpeg palettegen/paletteuse; holds become longer frame delays
+    Mp4,         // ffmpeg H.264, yuv420p, even dimensions
+    WebM,        // ffmpeg VP9, with alpha when transparent
+    Apng,        // ffmpeg animated PNG
+    Html,        // one self-contained page that plays the animation
+};
+
+struct ExportOptions {
+    ExportFormat format = ExportFormat::PngSequence;
+    QString target; // the file, or the folder of a PNG/SVG sequence (created when missing)
+    // Document frame indices, inclusive. Both -1: the document's play range.
+    int firstFrame = -1;
+    int lastFrame = -1;
+    double scale = 1.0;             // output pixels = canvas size × scale, at least 1×1
+    bool transparent = false;       // no background (refused for MP4, which has no alpha)
+    std::optional<QRgb> background; // replaces the document's background colour (opaque)
+    int fps = 0;                    // 0 = the document's frame rate
+    std::optional<bool> loop;       // GIF, APNG and HTML: empty = the document's setting
+    bool onePerDrawing = false;     // PNG/SVG: one file per drawing plus an exposure sheet
+    bool overwrite = false;         // replace files already at the target
+    QString baseName = QStringLiteral("frame"); // sequences: <baseName>_0001.png, ...
+    QString title;                              // HTML: the page title
+};
+
+// The frames and settings an export reads: a value snapshot (strokes are shared, immutable),
+// so a worker thread can export while the user keeps editing the document.
+struct ExportSource {
+    std::vector<Frame> frames;
+    DocumentSettings settings;
+};
+ExportSource exportSource(const Document &document);
+
+struct ExportResult {
+    QStringList files; // what is at the target now, in order
+    qint64 images = 0; // frames rendered and encoded
+    qint64 ticks = 0;  // playback ticks covered (holds included)
+    QSize size;        // pixel size of the output
+};
+
+enum class ExportErrorCode {
+    BadOptions,     // a range, scale, rate or format that cannot be exported
+    TargetExists,   // a file is in the way and overwrite was not allowed
+    WriteFailed,    // the disk is full or read-only, a folder cannot be made
+    EncoderMissing, // the ffmpeg program cannot be started
+    EncoderFailed,  // ffmpeg stopped with an error
+    Cancelled,      // the progress callback asked to stop
+};
+
+struct ExportError {
+    ExportErrorCode code;
+    QString message; // one translated sentence: what happened and what to do
+    QString detail;  // the last lines ffmpeg printed, when ffmpeg was involved
+};
+
+// Called after each rendered frame with (frames done, frames in all), on the exporting thread.
+// Returning false cancels: the export stops and leaves nothing at the target.
+using ExportProgress = std::function<bool(qint64 done, qint64 total)>;
+
+// "png", "svg", "gif", "mp4", "webm", "apng", "html" (also "htm"), case-insensitive.
+std::optional<ExportFormat> exportFormatFromName(const QString &name);
+// The format a path's suffix names (".png" names the PNG sequence); empty for no or an
+// unknown suffix.
+std::optional<ExportFormat> exportFormatForPath(const QString &path);
+QString exportFormatName(ExportFormat format);
+// The file suffix of the output (of each file, for sequences).
+QString exportFormatSuffix(ExportFormat format);
+bool exportsSequence(ExportFormat format);
+bool exportNeedsFfmpeg(ExportFormat format);
+bool exportSupportsTransparency(ExportFormat format);
+// GIF, APNG and HTML repeat or stop at the end; the videos just end.
+bool exportSupportsLoop(ExportFormat format);
+
+} // namespace finbook::model

@@ -1,0 +1,32 @@
+// Inserting planned in-betweens into the document as one undo step.
+#pragma once
+
+#include <finbook/model/commands.h>
+#include <finbook/model/inbetween/inbetween_plan.h>
+
+namespace finbook::model {
+
+// Plans `count` (1..kMaxInbetweens) in-betweens between two key frames (given in either
+// order: the earlier one in the document is the first key) and inserts them right after the
+// first key, under new ids for frames, objects, strokes and pins (stroke points are shared with
+// the keys). Their poses are solved by whoever follows the document (the DeformController);
+// undo takes exactly these frames out again. Obsolete when a key is missing, the keys are the
+// same frame, or count is out of range.
+class InsertInbetweensCommand : public DocumentCommand {
+public:
+    static constexpr int kMaxInbetweens = 60;
+
+    InsertInbetweensCommand(Document *doc, Id firstKey, Id secondKey, int count,
+                            const InbetweenOptions &options, QUndoCommand *parent = nullptr);
+    const InbetweenPlan &plan() const { return m_plan; }
+    // Ids of the inserted frames, in order.
+    std::vector<Id> frameIds() const;
+    void redo() override;
+    void undo() override;
+
+private:
+    Id m_firstKey = kNoId;
+    InbetweenPlan m_plan; // frames carry their new ids; undo stores them back with their poses
+};
+
+} // namespace finbook::model

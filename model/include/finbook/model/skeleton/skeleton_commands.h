@@ -1,0 +1,58 @@
+// Building, refining and posing an object's skeleton. Each is a rig command
+// (rig/rig_commands.h) with the rig computed beforehand, so undo restores exactly what was
+// there (another rig kind, a pose, older settings). Reset Pose and Apply Pose are the generic
+// ResetPoseCommand and ApplyPoseCommand.
+#pragma once
+
+#include <finbook/geometry/expected.h>
+#include <finbook/model/rig/rig_commands.h>
+
+#include <optional>
+
+namespace finbook::model {
+
+// The automatic skeleton of an object's rest drawing (silhouette → straight skeleton →
+// refinement with `settings`), at rest. The root is the joint nearest `rootNear`, or the one
+// nearest the drawing's centre of mass. A few milliseconds for a typical object, so it runs
+// on the GUI thread. Errors: sentences for the user (no strokes, nothing to skeletonise).
+Expected<SkeletonRig, QString> buildSkeletonRig(const StrokeGroup &group,
+                                                const SkeletonSettings &settings = {},
+                                                std::optional<QPointF> rootNear = {});
+
+// Gives an object `built` (from buildSkeletonRig), replacing any other rig and pose.
+class BuildSkeletonCommand : public SetRigCommand {
+public:
+    BuildSkeletonCommand(Document *doc, Id groupId, SkeletonRig built,
+                         QUndoCommand *parent = nullptr);
+};
+
+// Re-refines an object's skeleton with other slider settings: `rebuilt` is buildSkeletonRig
+// of the object with the new settings (and its old root). The pose goes back to rest (the
+// bones are new). Consecutive commands with the same edit serial merge: one slider drag is
+// one undo step.
+class SetSkeletonSettingsCommand : public SetRigCommand {
+public:
+    SetSkeletonSettingsCommand(Document *doc, Id groupId, SkeletonRig rebuilt, int editSerial,
+                               QUndoCommand *parent = nullptr);
+    int id() const override { return int(CommandId::SetSkeletonSettings); }
+    bool mergeWith(const QUndoCommand *other) override;
+
+private:
+    int m_serial;
+};
+
+// Sets the pose (angles, root offset) of an object's skeleton; a drag merges into one step.
+class PoseBonesCommand : public PoseRigCommand {
+public:
+    PoseBonesCommand(Document *doc, Id groupId, std::vector<double> angles, QPointF rootOffset,
+                     int dragSerial, QUndoCommand *parent = nullptr);
+};
+
+// Switches how the bones move the drawing (it only re-solves).
+class SetSkinningModeCommand : public SetRigCommand {
+public:
+    SetSkinningModeCommand(Document *doc, Id groupId, SkinningMode mode,
+                           QUndoCommand *parent = nullptr);
+};
+
+} // namespace finbook::model

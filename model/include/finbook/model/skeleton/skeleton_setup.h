@@ -1,0 +1,35 @@
+// The skeleton's half of a DeformSetup: the rest skeleton as the skinning engine takes it,
+// harmonic skinning weights of the object's mesh, and the rigid (ARAP-pinned) precompute.
+// Built on the worker; solving it is the per-drag step.
+#pragma once
+
+#include <finbook/deform/skeleton/linear_blend_skinning.h>
+#include <finbook/deform/skeleton/rigid_skinning.h>
+#include <finbook/model/deform_setup.h>
+
+namespace finbook::model {
+
+struct SkeletonSetup {
+    deform::Skeleton skeleton;
+    std::shared_ptr<const deform::SkinningWeights> weights;
+    deform::SkinBinding vertices; // the mesh vertices bound for linear blend skinning
+    std::shared_ptr<const deform::RigidSkinning> rigid;
+};
+
+// The rest skeleton for deform/ (joints and parents). Errors: sentences for the user.
+Expected<deform::Skeleton, QString> deformSkeleton(const SkeletonRig &rig);
+
+// The stored pose for deform/: J angles (missing entries are 0) and the root offset.
+deform::SkeletonPose skeletonPose(const SkeletonRig &rig);
+
+// Weights, binding and rigid precompute of `meshed` for the rig's rest skeleton.
+Expected<std::shared_ptr<const SkeletonSetup>, QString>
+buildSkeletonSetup(const MeshedObject &meshed, const SkeletonRig &rig,
+                   const deform::ArapOptions &options, const std::function<bool()> &cancelled);
+
+// Deformed mesh vertices (n×2) for the rig's pose in its skinning mode. `rig` must have the
+// setup's rest joints.
+Expected<Eigen::MatrixX2d, QString>
+solveSkeleton(const MeshedObject &meshed, const SkeletonSetup &setup, const SkeletonRig &rig);
+
+} // namespace finbook::model

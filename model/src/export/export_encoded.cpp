@@ -1,0 +1,101 @@
+// GIF, MP4, WebM and APNG through ffmpeg: rendered frames are piped raw to its standard input
+// and it writes a temporary file beside the target, renamed over the target on success.
+#include "export_formats.h"
+#include "export_text.h"
+#include "ffmpeg_arguments.h"
+#include "ffmpeg_encoder.h"
+#include "pending_output.h"
+
+#include <QFileInfo>
+
+namespace finbook::model {
+
+namespace {
+// Renders each drawing once and pipes it once, or once per tick of its hold. A picture larger
+// than one band is rendered and piped band by band (ffmpeg reads raw rows, so the stream is
+// the same), again for each tick: memory stays at one band whatever the size.
+std::optional<ExportError> pipeFrames(const ExportContext &context, FfmpegEncoder &encoder,
+                                      bool perTick, qint64 &done,
+                                      const FfmpegEncoder::Cancelled &cancelled)
+{
+    const ExportPlan &plan = context.plan;
+    const int rows = exportBandRows(plan);
+    const int height = plan.size.height();
+    for (std::size_t i = 0; i < plan.frames.size(); ++i) {
+        const QImage whole = rows >= height ? context.render(i) : QImage();
+        const int repeats = perTick ? plan.holds[i] : 1;
+        for (int r = 0; r < repeats; ++r) {
+            for (int top = 0; top < height; top += rows) {
+                const QImage band = rows >= height
+                                        ? whole
+                                        : context.renderBand(i, top, std::min(rows, height - top));
+                if (band.isNull())
+                    return writeFailed(context.options.target,
+                                       Export::tr("there is not enough memory to render it"));
+                if (auto error = encoder.write(band, cancelled))
+                    return error;
+            }
+            ++done;
+            if (cancelled()) {
+                encoder.abort();
+                return cancelledError();
+            }
+        }
+    }
+    return encoder.finish(cancelled);
+}
+} // namespace
+
+ExportOutcome exportEncoded(const ExportContext &context)
+{
+    const QString target = context.options.target;
+    if (auto error = checkFileTarget(context.options))
+        return unexpected(*error);
+    FolderGuard guard(QFileInfo(target).path());
+    if (!guard.ok())
+        return unexpected(writeFailed(target, Export::tr("its folder cannot be created")));
+    PendingFile pending(target);
+    QString openFailure;
+    if (!pending.open(&openFailure))
+        return unexpected(writeFailed(target, openFailure));
+    pending.file().close(); // ffmpeg writes it; the name stays reserved until commit or cleanup
+
+    const ExportPlan &plan = context.plan;
+    // "file:" keeps ffmpeg from reading a colon in the folder name as a protocol.
+    const FfmpegJob job =
+        ffmpegJob(context.options.format, plan, QStringLiteral("file:") + pending.path());
+    const qint64 total = job.perTick ? plan.ticks : qint64(plan.frames.size());
+    qint64 done = 0;
+    const auto cancelled = [&] { return context.cancelled(done, total); };
+
+    // ffmpeg names the temporary file in its errors; the user knows the target.
+    const auto failed = [&](ExportError error) {
+        for (QString *text : {&error.message, &error.detail})
+            text->replace(QStringLiteral("file:") + pending.path(), target)
+                .replace(pending.path(), target);
+        return unexpected(error);
+    };
+    FfmpegEncoder encoder(job.what);
+    if (auto error = encoder.start(job.arguments))
+        return failed(*error);
+    if (auto error = pipeFrames(context, encoder, job.perTick, done, cancelled))
+        return failed(*error);
+    if (QFileInfo(pending.path()).size() <= 0)
+        return unexpected(exportError(ExportErrorCode::EncoderFailed,
+                                      Export::tr("ffmpeg finished without writing the %1; "
+                                                 "nothing was exported.")
+                                          .arg(job.what),
+                                      encoder.errorTail()));
+    if (auto reason = pending.commit())
+        return unexpected(writeFailed(target, *reason));
+    guard.keep();
+
+    ExportResult result;
+    result.files << target;
+    result.images = done;
+    result.ticks = plan.ticks;
+    result.size = plan.size;
+    return result;
+}
+
+} // namespace finbook::model

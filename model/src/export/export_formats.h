@@ -1,0 +1,63 @@
+// Internal: the writer of each kind of output, and what they share.
+#pragma once
+
+#include <finbook/model/export/export_plan.h>
+
+#include <QByteArray>
+#include <QImage>
+
+namespace finbook::model {
+
+struct ExportContext {
+    const ExportSource &source;
+    const ExportOptions &options;
+    const ExportPlan &plan;
+    const ExportProgress &progress;
+
+    // Reports progress; true when the caller asked to stop.
+    bool cancelled(qint64 done, qint64 total) const { return progress && !progress(done, total); }
+    const Frame &frame(std::size_t planIndex) const
+    {
+        return source.frames[std::size_t(plan.frames[planIndex])];
+    }
+    QImage render(std::size_t planIndex) const
+    {
+        return renderExportFrame(frame(planIndex), source.settings, plan);
+    }
+    QImage renderBand(std::size_t planIndex, int top, int rows) const
+    {
+        return renderExportBand(frame(planIndex), source.settings, plan, top, rows);
+    }
+    // The frame as PNG bytes, rendered and compressed band by band: memory stays at one band
+    // plus the compressed bytes whatever the picture's size. Empty when out of memory.
+    QByteArray png(std::size_t planIndex) const;
+};
+
+using ExportOutcome = Expected<ExportResult, ExportError>;
+
+ExportOutcome exportSequence(const ExportContext &context);
+ExportOutcome exportEncoded(const ExportContext &context);
+ExportOutcome exportFlipbook(const ExportContext &context);
+
+// Sequence file names in writing order: one per tick, or one per drawing plus the sheet.
+struct SequenceEntry {
+    QString name;
+    std::size_t planIndex = 0;
+};
+std::vector<SequenceEntry> sequenceEntries(const ExportPlan &plan, const ExportOptions &options);
+QString exposureSheetName(const ExportOptions &options);
+
+// Refuses a target that is a folder, or an existing file without options.overwrite.
+std::optional<ExportError> checkFileTarget(const ExportOptions &options);
+ExportError targetExists(const QString &path);
+ExportError writeFailed(const QString &path, const QString &reason);
+ExportError cancelledError();
+
+// One frame as an SVG document: plan.size pixels, a viewBox in canvas units, each stroke one
+// filled path (the union of tapered capsules between its samples).
+QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const ExportPlan &plan);
+// The self-contained HTML page for the drawings' PNG images (in plan order).
+QByteArray flipbookHtml(const std::vector<QByteArray> &pngs, const ExportPlan &plan,
+                        const QString &title);
+
+} // namespace finbook::model

@@ -1,0 +1,91 @@
+#include <finbook/model/document.h>
+#include <finbook/model/export/export_options.h>
+
+#include <QFileInfo>
+
+#include <array>
+
+namespace finbook::model {
+
+namespace {
+struct FormatInfo {
+    ExportFormat format;
+    const char *name;
+    const char *suffix;
+};
+constexpr std::array kFormats{
+    FormatInfo{ExportFormat::PngSequence, "png", "png"},
+    FormatInfo{ExportFormat::SvgSequence, "svg", "svg"},
+    FormatInfo{ExportFormat::Gif, "gif", "gif"},
+    FormatInfo{ExportFormat::Mp4, "mp4", "mp4"},
+    FormatInfo{ExportFormat::WebM, "webm", "webm"},
+    FormatInfo{ExportFormat::Apng, "apng", "apng"},
+    FormatInfo{ExportFormat::Html, "html", "html"},
+};
+
+const FormatInfo &info(ExportFormat format)
+{
+    for (const FormatInfo &f : kFormats)
+        if (f.format == format)
+            return f;
+    return kFormats.front();
+}
+} // namespace
+
+ExportSource exportSource(const Document &document)
+{
+    return ExportSource{document.frames(), document.settings()};
+}
+
+std::optional<ExportFormat> exportFormatFromName(const QString &name)
+{
+    const QString n = name.trimmed().toLower();
+    if (n == QLatin1String("htm"))
+        return ExportFormat::Html;
+    for (const FormatInfo &f : kFormats)
+        if (n == QLatin1String(f.name))
+            return f.format;
+    return std::nullopt;
+}
+
+std::optional<ExportFormat> exportFormatForPath(const QString &path)
+{
+    const QString suffix = QFileInfo(path).suffix();
+    if (suffix.isEmpty())
+        return std::nullopt;
+    return exportFormatFromName(suffix);
+}
+
+QString exportFormatName(ExportFormat format)
+{
+    return QString::fromLatin1(info(format).name);
+}
+
+QString exportFormatSuffix(ExportFormat format)
+{
+    return QString::fromLatin1(info(format).suffix);
+}
+
+bool exportsSequence(ExportFormat format)
+{
+    return format == ExportFormat::PngSequence || format == ExportFormat::SvgSequence;
+}
+
+bool exportNeedsFfmpeg(ExportFormat format)
+{
+    return format == ExportFormat::Gif || format == ExportFormat::Mp4 ||
+           format == ExportFormat::WebM || format == ExportFormat::Apng;
+}
+
+bool exportSupportsTransparency(ExportFormat format)
+{
+    return format != ExportFormat::Mp4;
+}
+
+bool exportSupportsLoop(ExportFormat format)
+{
+    return format == ExportFormat::Gif || format == ExportFormat::Apng ||
+           format == ExportFormat::Html;
+}
+
+} // namespace finbook::model

@@ -1,0 +1,24 @@
+// The ffmpeg command line of each encoded format, reading raw BGRA frames from stdin.
+#pragma once
+
+#include <finbook/model/export/export_plan.h>
+
+#include <QStringList>
+
+namespace finbook::model {
+
+struct FfmpegJob {
+    QStringList arguments;
+    // True: every playback tick is piped (held drawings repeated), for constant-rate video.
+    // False: each drawing is piped once and ffmpeg stretches it over its hold (GIF delays).
+    bool perTick = true;
+    QString what; // names the output in messages
+};
+
+FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &output);
+
+// setpts expression that starts drawing N at its first tick: N plus the extra ticks of the
+// drawings held before it. Empty when it would be too long for one command-line argument.
+QString holdTimestamps(const std::vector<int> &holds);
+
+} // namespace finbook::model

@@ -1,0 +1,206 @@
+#include "pending_output.h"
+
+#include <finbook/model/io/atomic_file.h>
+
+#include <QDir>
+#include <QFileInfo>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#ifdef Q_OS_UNIX
+#include <fcntl.h>
+#include <unistd.h>
+#endif
+
+namespace finbook::model {
+
+namespace {
+// "the disk is full" and "the disk is read-only" in the user's words (io/atomic_file.h);
+// anything else as the system says it.
+QString systemError()
+{
+    const WriteFailure failure = writeFailureFromErrno(errno);
+    if (failure.problem == WriteProblem::DiskFull || failure.problem == WriteProblem::ReadOnly)
+        return describeWriteFailure(failure, QString());
+    return failure.detail;
+}
+
+bool syncDescriptor(int fd)
+{
+#ifdef Q_OS_UNIX
+    return fd >= 0 && ::fsync(fd) == 0;
+#else
+    Q_UNUSED(fd);
+    return true;
+#endif
+}
+
+// A renamed file survives a crash only once its directory entry is on disk too.
+void syncFolder(const QString &folder)
+{
+#ifdef Q_OS_UNIX
+    const int fd = ::open(QFile::encodeName(folder).constData(), O_RDONLY | O_DIRECTORY);
+    if (fd >= 0) {
+        ::fsync(fd);
+        ::close(fd);
+    }
+#else
+    Q_UNUSED(folder);
+#endif
+}
+
+// Temporary files are private (0600); the export gets what a new file gets (0666 less the
+// umask), or the permissions of the file it replaces. The umask is read from /proc rather
+// than with umask(), which would change it for every thread for a moment.
+QFileDevice::Permissions outputPermissions(const QString &target)
+{
+    if (QFileInfo::exists(target))
+        return QFile::permissions(target);
+    uint mask = 022;
+    QFile status(QStringLiteral("/proc/self/status"));
+    if (status.open(QIODevice::ReadOnly)) {
+        for (const QByteArray &line : status.readAll().split('\n')) {
+            bool ok = false;
+            const uint value = line.startsWith("Umask:") ? line.mid(6).trimmed().toUInt(&ok, 8) : 0;
+            if (ok)
+                mask = value;
+        }
+    }
+    const uint mode = 0666u & ~mask;
+    QFileDevice::Permissions permissions;
+    const std::pair<uint, QFileDevice::Permission> bits[] = {
+        {0400, QFileDevice::ReadOwner}, {0200, QFileDevice::WriteOwner},
+        {0040, QFileDevice::ReadGroup}, {0020, QFileDevice::WriteGroup},
+        {0004, QFileDevice::ReadOther}, {0002, QFileDevice::WriteOther}};
+    for (const auto &[bit, permission] : bits)
+        if (mode & bit)
+            permissions |= permission;
+    // Qt's "user" bits follow the owner's on Unix; set them too so they do not mask it.
+    if (mode & 0400)
+        permissions |= QFileDevice::ReadUser;
+    if (mode & 0200)
+        permissions |= QFileDevice::WriteUser;
+    return permissions;
+}
+
+std::optional<QString> renameOver(const QString &from, const QString &to)
+{
+    // std::rename replaces an existing target atomically on POSIX (QFile::rename refuses to).
+    if (std::rename(QFile::encodeName(from).constData(), QFile::encodeName(to).constData()) != 0)
+        return systemError();
+    return std::nullopt;
+}
+} // namespace
+
+std::optional<QString> writeSynced(QFile &file, const QByteArray &bytes)
+{
+#ifdef Q_OS_UNIX
+    // Straight to the descriptor: QFile's buffer would turn ENOSPC into "Unknown error".
+    if (!file.flush())
+        return file.errorString();
+    const char *data = bytes.constData();
+    qint64 left = bytes.size();
+    while (left > 0) {
+        const ssize_t written = ::write(file.handle(), data, std::size_t(left));
+        if (written < 0 && errno == EINTR)
+            continue;
+        if (written <= 0)
+            return systemError();
+        data += written;
+        left -= written;
+    }
+#else
+    if (file.write(bytes) != bytes.size() || !file.flush())
+        return file.errorString();
+#endif
+    if (!syncDescriptor(file.handle()))
+        return systemError();
+    return std::nullopt;
+}
+
+std::optional<QString> writeFileSynced(const QString &path, const QByteArray &bytes)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        return file.errorString();
+    if (auto reason = writeSynced(file, bytes))
+        return reason;
+    file.close();
+    if (file.error() != QFileDevice::NoError)
+        return file.errorString();
+    return std::nullopt;
+}
+
+FolderGuard::FolderGuard(const QString &folder)
+{
+    QString path = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
+    while (!path.isEmpty() && !QFileInfo(path).exists()) {
+        m_created << path;
+        const QString parent = QFileInfo(path).path();
+        if (parent == path)
+            break;
+        path = parent;
+    }
+    m_ok = QDir().mkpath(folder) && QFileInfo(folder).isDir();
+}
+
+FolderGuard::~FolderGuard()
+{
+    for (const QString &path : m_created)
+        if (!QDir().rmdir(path)) // only empty folders go
+            break;
+}
+
+PendingFile::PendingFile(const QString &target)
+    : m_target(target)
+{}
+
+bool PendingFile::open(QString *reason)
+{
+    const QFileInfo info(m_target);
+    m_file = std::make_unique<QTemporaryFile>(
+        info.dir().filePath(QStringLiteral(".%1.XXXXXX.part").arg(info.fileName())));
+    if (m_file->open())
+        return true;
+    if (reason)
+        *reason = m_file->errorString();
+    return false;
+}
+
+std::optional<QString> PendingFile::commit()
+{
+    if (!m_file)
+        return QStringLiteral("no file");
+    m_file->close();
+    QFile written(m_file->fileName());
+    if (!written.open(QIODevice::ReadOnly))
+        return written.errorString();
+    if (!syncDescriptor(written.handle()))
+        return systemError();
+    written.close();
+    QFile::setPermissions(m_file->fileName(), outputPermissions(m_target));
+    if (auto reason = renameOver(m_file->fileName(), m_target))
+        return reason;
+    m_file->setAutoRemove(false);
+    syncFolder(QFileInfo(m_target).path());
+    return std::nullopt;
+}
+
+PendingFolder::PendingFolder(const QString &folder)
+    : m_folder(folder)
+    , m_staging(QDir(folder).filePath(QStringLiteral(".finbook-export-XXXXXX")))
+{}
+
+std::optional<QString> PendingFolder::commit(const QStringList &names)
+{
+    syncFolder(m_staging.path());
+    for (const QString &name : names)
+        if (auto reason = renameOver(m_staging.filePath(name), QDir(m_folder).filePath(name)))
+            return reason;
+    syncFolder(m_folder);
+    return std::nullopt;
+}
+
+} // namespace finbook::model

@@ -1,0 +1,69 @@
+// Output that reaches its target only when complete: a file written beside the target and
+// renamed over it, or a hidden folder of files moved into the target folder. Every write is
+// checked and synced to disk before the rename, so a full disk shows up as an error here and
+// never as a short file at the target.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <QTemporaryDir>
+#include <QTemporaryFile>
+
+#include <memory>
+#include <optional>
+
+namespace finbook::model {
+
+// Writes `bytes` to `file` (open for writing), flushes and syncs it. The reason on failure.
+std::optional<QString> writeSynced(QFile &file, const QByteArray &bytes);
+// Creates or truncates `path` and writes `bytes` to it with writeSynced.
+std::optional<QString> writeFileSynced(const QString &path, const QByteArray &bytes);
+
+// Makes `folder` (and its parents) if missing; removes it again on destruction unless kept,
+// when it was made here and is empty, so a failed export leaves no new empty folder behind.
+class FolderGuard {
+public:
+    explicit FolderGuard(const QString &folder);
+    ~FolderGuard();
+    FolderGuard(const FolderGuard &) = delete;
+    FolderGuard &operator=(const FolderGuard &) = delete;
+    bool ok() const { return m_ok; }
+    void keep() { m_created.clear(); }
+
+private:
+    QStringList m_created; // deepest first
+    bool m_ok = false;
+};
+
+// A hidden temporary file beside `target`; commit() syncs it and renames it over the target.
+// Until then, and after a failure, the temporary is removed on destruction.
+class PendingFile {
+public:
+    explicit PendingFile(const QString &target);
+    bool open(QString *reason); // creates the temporary (open for writing)
+    QString path() const { return m_file ? m_file->fileName() : QString(); }
+    QFile &file() { return *m_file; }
+    // Syncs what is in the temporary (written here or by another program) and renames it.
+    std::optional<QString> commit();
+
+private:
+    QString m_target;
+    std::unique_ptr<QTemporaryFile> m_file;
+};
+
+// A hidden folder inside `folder` collecting the files of a sequence; commit() moves them all
+// into `folder`. Removed with whatever is left in it on destruction.
+class PendingFolder {
+public:
+    explicit PendingFolder(const QString &folder);
+    bool isValid() const { return m_staging.isValid(); }
+    QString errorString() const { return m_staging.errorString(); }
+    QString filePath(const QString &name) const { return m_staging.filePath(name); }
+    std::optional<QString> commit(const QStringList &names);
+
+private:
+    QString m_folder;
+    QTemporaryDir m_staging;
+};
+
+} // namespace finbook::model

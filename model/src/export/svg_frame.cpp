@@ -1,0 +1,154 @@
+// SVG frames. A stroke's width follows its pressure, which SVG strokes cannot do, so each
+// stroke is written as a filled outline: the union (non-zero fill of one path) of a tapered
+// capsule per segment, the convex hull of the circles at its two samples. It scales without
+// pixels and renders like the canvas, which paints the same widths.
+#include "export_formats.h"
+
+#include <finbook/model/render.h>
+
+#include <QLineF>
+
+#include <cmath>
+
+namespace finbook::model {
+
+namespace {
+// Canvas units to 1/100 px, trailing zeros dropped: "12.5", "3", "-0.25".
+void appendNumber(QByteArray &out, double value)
+{
+    const long long hundredths = std::llround(value * 100.0);
+    if (hundredths < 0)
+        out += '-';
+    const long long magnitude = std::llabs(hundredths);
+    out += QByteArray::number(magnitude / 100);
+    const int fraction = int(magnitude % 100);
+    if (fraction != 0) {
+        out += '.';
+        out += char('0' + fraction / 10);
+        if (fraction % 10 != 0)
+            out += char('0' + fraction % 10);
+    }
+}
+
+void appendPoint(QByteArray &out, char command, QPointF p)
+{
+    out += command;
+    appendNumber(out, p.x());
+    out += ' ';
+    appendNumber(out, p.y());
+}
+
+// An arc of radius r to `to`, turning the way every outline here turns (negative angles).
+void appendArc(QByteArray &out, double r, bool large, QPointF to)
+{
+    out += 'A';
+    appendNumber(out, r);
+    out += ' ';
+    appendNumber(out, r);
+    out += large ? " 0 1 0 " : " 0 0 0 ";
+    appendNumber(out, to.x());
+    out += ' ';
+    appendNumber(out, to.y());
+}
+
+void appendCircle(QByteArray &out, QPointF c, double r)
+{
+    appendPoint(out, 'M', c + QPointF(r, 0));
+    appendArc(out, r, false, c - QPointF(r, 0));
+    appendArc(out, r, false, c + QPointF(r, 0));
+    out += 'Z';
+}
+
+// The hull of circle (p0, r0) and circle (p1, r1): two tangent lines and two arcs.
+void appendCapsule(QByteArray &out, QPointF p0, double r0, QPointF p1, double r1)
+{
+    const QPointF d = p1 - p0;
+    const double length = std::hypot(d.x(), d.y());
+    if (length <= std::abs(r1 - r0) + 1e-6) { // one circle holds the other
+        appendCircle(out, r0 >= r1 ? p0 : p1, std::max(r0, r1));
+        return;
+    }
+    const QPointF u = d / length;
+    const QPointF n(-u.y(), u.x());
+    const double a = (r0 - r1) / length; // cosine of the tangent points' angle from u
+    const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
+    const QPointF plus = a * u + b * n, minus = a * u - b * n;
+    appendPoint(out, 'M', p0 + r0 * plus);
+    appendPoint(out, 'L', p1 + r1 * plus);
+    appendArc(out, r1, a < 0, p1 + r1 * minus);
+    appendPoint(out, 'L', p0 + r0 * minus);
+    appendArc(out, r0, a > 0, p0 + r0 * plus);
+    out += 'Z';
+}
+
+bool finite(const StrokePoint &p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.pressure);
+}
+
+// The same widths paintStroke draws: width × pressure, at least a quarter pixel (a lone
+// sample: a dot of at least half a pixel).
+QByteArray outline(const std::vector<StrokePoint> &points, float width)
+{
+    QByteArray d;
+    const auto radius = [&](const StrokePoint &p, double least) {
+        return std::max(least, double(width) * double(p.pressure)) / 2;
+    };
+    if (points.size() == 1 && finite(points.front())) {
+        const StrokePoint &p = points.front();
+        appendCircle(d, QPointF(p.x, p.y), radius(p, 0.5));
+        return d;
+    }
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const StrokePoint &a = points[i - 1], &b = points[i];
+        if (finite(a) && finite(b))
+            appendCapsule(d, QPointF(a.x, a.y), radius(a, 0.25), QPointF(b.x, b.y),
+                          radius(b, 0.25));
+    }
+    return d;
+}
+
+QByteArray colour(QRgb rgb)
+{
+    return QColor::fromRgb(rgb).name(QColor::HexRgb).toLatin1();
+}
+} // namespace
+
+QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const ExportPlan &plan)
+{
+    const QSize canvas = settings.canvasSize;
+    QByteArray svg;
+    svg += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
+           QByteArray::number(plan.size.width()) + "\" height=\"" +
+           QByteArray::number(plan.size.height()) + "\" viewBox=\"0 0 " +
+           QByteArray::number(canvas.width()) + ' ' + QByteArray::number(canvas.height()) + "\">\n";
+    if (!plan.transparent)
+        svg += "<rect width=\"" + QByteArray::number(canvas.width()) + "\" height=\"" +
+               QByteArray::number(canvas.height()) + "\" fill=\"" + colour(plan.background) +
+               "\"/>\n";
+    for (const StrokeGroup &group : frame.groups) {
+        if (!group.visible)
+            continue;
+        svg += "<g id=\"object-" + QByteArray::number(group.id) + "\">\n";
+        for (std::size_t i = 0; i < group.strokes.size(); ++i) {
+            const Stroke &stroke = group.strokes[i];
+            if (!stroke.data)
+                continue;
+            const QByteArray d = outline(displayedPoints(group, i), stroke.data->width);
+            if (d.isEmpty())
+                continue;
+            svg += "<path id=\"stroke-" + QByteArray::number(stroke.id) + "\" fill=\"" +
+                   colour(stroke.data->color) + '"';
+            const int alpha = qAlpha(stroke.data->color);
+            if (alpha < 255)
+                svg += " fill-opacity=\"" + QByteArray::number(alpha / 255.0, 'g', 3) + '"';
+            svg += " d=\"" + d + "\"/>\n";
+        }
+        svg += "</g>\n";
+    }
+    svg += "</svg>\n";
+    return svg;
+}
+
+} // namespace finbook::model

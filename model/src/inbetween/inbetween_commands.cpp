@@ -1,0 +1,77 @@
+#include "../command_text.h"
+
+#include <finbook/model/inbetween/inbetween_commands.h>
+
+#include <algorithm>
+
+namespace finbook::model {
+
+namespace {
+
+// New ids for a planned frame and everything in it. Stroke data stays shared with the keys.
+void renumber(Frame &frame, Document *doc)
+{
+    frame.id = doc->allocateId();
+    for (StrokeGroup &g : frame.groups) {
+        g.id = doc->allocateId();
+        for (Stroke &s : g.strokes)
+            s.id = doc->allocateId();
+        for (Pin &p : g.rig.pins)
+            p.id = doc->allocateId();
+    }
+}
+
+} // namespace
+
+InsertInbetweensCommand::InsertInbetweensCommand(Document *doc, Id firstKey, Id secondKey,
+                                                 int count, const InbetweenOptions &options,
+                                                 QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+{
+    setText(Command::tr("Generate In-betweens"));
+    int a = doc->frameIndex(firstKey), b = doc->frameIndex(secondKey);
+    if (a < 0 || b < 0 || a == b || count < 1 || count > kMaxInbetweens) {
+        setObsolete(true);
+        return;
+    }
+    if (a > b)
+        std::swap(a, b);
+    m_firstKey = doc->frameAt(a).id;
+    m_plan = planInbetweens(doc->frameAt(a), doc->frameAt(b),
+                            inbetweenTimes(count, options.spacing), options.path);
+    for (Frame &f : m_plan.frames)
+        renumber(f, doc);
+}
+
+std::vector<Id> InsertInbetweensCommand::frameIds() const
+{
+    std::vector<Id> ids;
+    for (const Frame &f : m_plan.frames)
+        ids.push_back(f.id);
+    return ids;
+}
+
+void InsertInbetweensCommand::redo()
+{
+    const int key = m_doc->frameIndex(m_firstKey);
+    if (isObsolete() || key < 0) {
+        setObsolete(true);
+        return;
+    }
+    for (std::size_t i = 0; i < m_plan.frames.size(); ++i)
+        m_doc->insertFrame(key + 1 + int(i), m_plan.frames[i]);
+}
+
+void InsertInbetweensCommand::undo()
+{
+    if (isObsolete())
+        return;
+    // Taken back with whatever poses were solved meanwhile, so a redo shows them at once.
+    for (auto it = m_plan.frames.rbegin(); it != m_plan.frames.rend(); ++it) {
+        const int index = m_doc->frameIndex(it->id);
+        if (index >= 0)
+            *it = m_doc->takeFrame(index);
+    }
+}
+
+} // namespace finbook::model

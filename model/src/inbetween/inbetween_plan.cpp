@@ -1,0 +1,103 @@
+#include <finbook/model/deform_setup.h>
+#include <finbook/model/inbetween/inbetween_plan.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace finbook::model {
+
+namespace {
+
+constexpr double kSwitchOver = 0.5; // objects of one key only: first key's before, second's from
+
+bool sameDrawing(const StrokeGroup &a, const StrokeGroup &b)
+{
+    return !a.strokes.empty() && MeshKey::of(a) == MeshKey::of(b);
+}
+
+ObjectFate pairFate(const StrokeGroup &a, const StrokeGroup &b)
+{
+    if (canInterpolateRigs(a.rig, b.rig))
+        return ObjectFate::Interpolated;
+    return a.rig.empty() && b.rig.empty() ? ObjectFate::HeldNoRig : ObjectFate::HeldRigDiffers;
+}
+
+// The fate of the object at `index` of each key, and the report, in one pass.
+struct Matching {
+    std::vector<std::optional<ObjectFate>> pairs; // per index < min(sizes); empty = not one object
+    std::vector<InbetweenObjectReport> report;
+};
+
+Matching matchObjects(const Frame &first, const Frame &second)
+{
+    Matching m;
+    const std::size_t common = std::min(first.groups.size(), second.groups.size());
+    m.pairs.resize(common);
+    std::vector<InbetweenObjectReport> secondOnly;
+    for (std::size_t i = 0; i < first.groups.size(); ++i) {
+        const StrokeGroup &a = first.groups[i];
+        InbetweenObjectReport r{a.name, int(i), -1, ObjectFate::FirstKeyOnly, a.rig.kind()};
+        if (i < common && sameDrawing(a, second.groups[i])) {
+            m.pairs[i] = pairFate(a, second.groups[i]);
+            r.secondIndex = int(i);
+            r.fate = *m.pairs[i];
+        }
+        m.report.push_back(r);
+    }
+    for (std::size_t i = 0; i < second.groups.size(); ++i)
+        if (i >= common || !m.pairs[i]) {
+            const StrokeGroup &b = second.groups[i];
+            secondOnly.push_back({b.name, -1, int(i), ObjectFate::SecondKeyOnly, b.rig.kind()});
+        }
+    m.report.insert(m.report.end(), secondOnly.begin(), secondOnly.end());
+    return m;
+}
+
+Frame inbetweenFrame(const Frame &first, const Frame &second, const Matching &m, double t,
+                     TargetPath path)
+{
+    const bool early = t < kSwitchOver;
+    Frame out;
+    out.id = first.id;
+    out.hold = first.hold;
+    const Frame &base = early ? first : second;
+    out.groups.reserve(base.groups.size());
+    for (std::size_t i = 0; i < base.groups.size(); ++i) {
+        if (i >= m.pairs.size() || !m.pairs[i]) {
+            out.groups.push_back(base.groups[i]); // one key only: held as it is there
+            continue;
+        }
+        StrokeGroup g = first.groups[i]; // one object in both keys: the first key's
+        if (*m.pairs[i] == ObjectFate::Interpolated) {
+            g.rig = interpolateRig(first.groups[i].rig, second.groups[i].rig, t, path);
+            g.deformed = nullptr; // to be solved for the new targets
+        }
+        out.groups.push_back(std::move(g));
+    }
+    return out;
+}
+
+} // namespace
+
+int InbetweenPlan::interpolatedCount() const
+{
+    return int(std::count_if(objects.begin(), objects.end(), [](const InbetweenObjectReport &r) {
+        return r.fate == ObjectFate::Interpolated;
+    }));
+}
+
+InbetweenPlan planInbetweens(const Frame &first, const Frame &second,
+                             const std::vector<double> &times, TargetPath path)
+{
+    InbetweenPlan plan;
+    const Matching m = matchObjects(first, second);
+    plan.objects = m.report;
+    plan.times = times;
+    plan.frames.reserve(times.size());
+    for (double t : times)
+        plan.frames.push_back(inbetweenFrame(first, second, m, std::isfinite(t) ? t : 0.0, path));
+    return plan;
+}
+
+} // namespace finbook::model

@@ -1,0 +1,152 @@
+#include <finbook/model/inbetween/rig_interpolation.h>
+#include <finbook/model/rig/rig_commands.h>
+
+#include <cmath>
+
+namespace finbook::model {
+
+namespace {
+
+// Below this turn (radians) the motion is treated as a translation: the fixed point of an
+// almost-pure translation lies far away and would only cost precision.
+constexpr double kMinTurn = 1e-6;
+
+QPointF lerp(QPointF a, QPointF b, double t)
+{
+    // (1 - t) a + t b, not a + t (b - a): the ends are then exact.
+    return a * (1.0 - t) + b * t;
+}
+
+QPointF centroid(const std::vector<QPointF> &points)
+{
+    QPointF sum;
+    for (const QPointF p : points)
+        sum += p;
+    return sum / double(points.size());
+}
+
+QPointF rotated(QPointF p, double angle)
+{
+    const double c = std::cos(angle), s = std::sin(angle);
+    return {c * p.x() - s * p.y(), s * p.x() + c * p.y()};
+}
+
+// The angle of the rotation that best maps `a` onto `b` about their centroids (2D Procrustes);
+// atan2 keeps it in (-π, π], i.e. along the shorter arc. 0 when it is undefined.
+double bestTurn(const std::vector<QPointF> &a, const std::vector<QPointF> &b)
+{
+    const QPointF ca = centroid(a), cb = centroid(b);
+    double dot = 0.0, cross = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const QPointF p = a[i] - ca, q = b[i] - cb;
+        dot += p.x() * q.x() + p.y() * q.y();
+        cross += p.x() * q.y() - p.y() * q.x();
+    }
+    const double turn = std::atan2(cross, dot);
+    return std::isfinite(turn) ? turn : 0.0;
+}
+
+std::vector<QPointF> straight(const std::vector<QPointF> &a, const std::vector<QPointF> &b,
+                              double t)
+{
+    std::vector<QPointF> out(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i)
+        out[i] = lerp(a[i], b[i], t);
+    return out;
+}
+
+std::vector<QPointF> alongArc(const std::vector<QPointF> &a, const std::vector<QPointF> &b,
+                              double t)
+{
+    const double turn = a.size() >= 2 ? bestTurn(a, b) : 0.0;
+    if (std::abs(turn) < kMinTurn)
+        return straight(a, b, t);
+    // The rigid map p ↦ R(p − ca) + cb turns about its fixed point c, (I − R) c = cb − R ca;
+    // following it part way is a turn by t·turn about c (the screw motion of SE(2)).
+    const QPointF ca = centroid(a), cb = centroid(b);
+    const QPointF rhs = cb - rotated(ca, turn);
+    const double cr = std::cos(turn), sr = std::sin(turn);
+    // I − R = [[1 − cr, sr], [−sr, 1 − cr]], determinant 2 (1 − cr) > 0 for turn ≠ 0.
+    const double det = 2.0 * (1.0 - cr);
+    const QPointF c(((1.0 - cr) * rhs.x() - sr * rhs.y()) / det,
+                    (sr * rhs.x() + (1.0 - cr) * rhs.y()) / det);
+    std::vector<QPointF> out(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const QPointF rigidEnd = c + rotated(a[i] - c, turn);
+        const QPointF residual = b[i] - rigidEnd; // the non-rigid part, blended linearly
+        out[i] = c + rotated(a[i] - c, t * turn) + residual * t;
+    }
+    return out;
+}
+
+std::vector<QPointF> targetsOf(const std::vector<Pin> &pins)
+{
+    std::vector<QPointF> out;
+    out.reserve(pins.size());
+    for (const Pin &p : pins)
+        out.push_back(p.target);
+    return out;
+}
+
+} // namespace
+
+bool canInterpolateRigs(const Rig &first, const Rig &second)
+{
+    return !first.empty() && sameRestDefinition(first, second) &&
+           first.cage.posed.size() == second.cage.posed.size() &&
+           first.skeleton.angles.size() == second.skeleton.angles.size() &&
+           first.skeleton.mode == second.skeleton.mode;
+}
+
+std::vector<QPointF> interpolateTargets(const std::vector<QPointF> &first,
+                                        const std::vector<QPointF> &second, double t,
+                                        TargetPath path)
+{
+    if (!std::isfinite(t) || t <= 0.0 || first.size() != second.size() || first.empty())
+        return first;
+    if (t >= 1.0)
+        return second;
+    return path == TargetPath::Arc ? alongArc(first, second, t) : straight(first, second, t);
+}
+
+Rig interpolateRig(const Rig &first, const Rig &second, double t, TargetPath path)
+{
+    if (!canInterpolateRigs(first, second))
+        return first;
+    Rig out = first;
+    switch (first.kind()) {
+    case RigKind::Pins: {
+        const auto targets =
+            interpolateTargets(targetsOf(first.pins), targetsOf(second.pins), t, path);
+        for (std::size_t i = 0; i < out.pins.size(); ++i)
+            out.pins[i].target = targets[i];
+        break;
+    }
+    case RigKind::Cage:
+        out.cage.posed = interpolateTargets(first.cage.posed, second.cage.posed, t, path);
+        break;
+    case RigKind::Skeleton: {
+        // Each bone angle along the shorter arc, the root's offset along a straight line;
+        // the ends are the keys exactly.
+        if (!std::isfinite(t) || t <= 0.0)
+            break;
+        if (t >= 1.0) {
+            out.skeleton = second.skeleton;
+            break;
+        }
+        for (std::size_t j = 0; j < out.skeleton.angles.size(); ++j) {
+            const double a = first.skeleton.angles[j], b = second.skeleton.angles[j];
+            const double turn = std::remainder(b - a, 2.0 * M_PI);
+            out.skeleton.angles[j] = a + t * turn;
+        }
+        out.skeleton.rootOffset = first.skeleton.rootOffset +
+                                  t * (second.skeleton.rootOffset - first.skeleton.rootOffset);
+        break;
+    }
+    case RigKind::None:
+        break;
+    }
+    return out;
+}
+
+} // namespace finbook::model

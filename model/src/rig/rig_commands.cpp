@@ -1,0 +1,143 @@
+#include "../command_text.h"
+
+#include <finbook/model/render.h>
+#include <finbook/model/rig/rig_commands.h>
+
+#include <algorithm>
+
+namespace finbook::model {
+
+bool sameRestDefinition(const Rig &a, const Rig &b)
+{
+    if (a.kind() != b.kind() || a.pins.size() != b.pins.size() || a.cage.rest != b.cage.rest ||
+        !a.skeleton.sameRest(b.skeleton))
+        return false;
+    return std::equal(a.pins.begin(), a.pins.end(), b.pins.begin(),
+                      [](const Pin &p, const Pin &q) { return p.rest == q.rest; });
+}
+
+SetRigCommand::SetRigCommand(Document *doc, Id groupId, Rig rig, const QString &text,
+                             QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+    , m_new(std::move(rig))
+{
+    setText(text);
+    const StrokeGroup *g = doc->group(groupId);
+    if (!g || g->rig == m_new)
+        setObsolete(true);
+}
+
+void SetRigCommand::redo()
+{
+    const StrokeGroup *g = m_doc->group(m_groupId);
+    if (isObsolete() || !g)
+        return;
+    m_old = g->rig;
+    m_oldDeformed = g->deformed;
+    m_doc->setRig(m_groupId, m_new);
+}
+
+void SetRigCommand::undo()
+{
+    if (isObsolete() || !m_doc->group(m_groupId))
+        return;
+    m_doc->setRig(m_groupId, m_old);
+    m_doc->setDeformed(m_groupId, m_oldDeformed);
+}
+
+PoseRigCommand::PoseRigCommand(Document *doc, Id groupId, Rig posed, int dragSerial,
+                               const QString &text, QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+    , m_serial(dragSerial)
+    , m_new(std::move(posed))
+{
+    setText(text);
+    const StrokeGroup *g = doc->group(groupId);
+    if (!g || !sameRestDefinition(g->rig, m_new) || g->rig.empty())
+        setObsolete(true);
+    else
+        m_old = g->rig;
+}
+
+bool PoseRigCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *o = static_cast<const PoseRigCommand *>(other);
+    if (o->m_groupId != m_groupId || o->m_serial != m_serial || o->isObsolete())
+        return false;
+    m_new = o->m_new;
+    return true;
+}
+
+void PoseRigCommand::redo()
+{
+    if (!isObsolete() && m_doc->group(m_groupId))
+        m_doc->setRig(m_groupId, m_new);
+}
+
+void PoseRigCommand::undo()
+{
+    if (!isObsolete() && m_doc->group(m_groupId))
+        m_doc->setRig(m_groupId, m_old);
+}
+
+ResetPoseCommand::ResetPoseCommand(Document *doc, Id groupId, QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+{
+    setText(Command::tr("Reset Pose"));
+    const StrokeGroup *g = doc->group(groupId);
+    if (!g || !g->rig.isPosed())
+        setObsolete(true);
+    else
+        m_before = g->rig;
+}
+
+void ResetPoseCommand::redo()
+{
+    if (!isObsolete())
+        m_doc->setRig(m_groupId, m_before.atRest());
+}
+
+void ResetPoseCommand::undo()
+{
+    if (!isObsolete())
+        m_doc->setRig(m_groupId, m_before);
+}
+
+ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+{
+    setText(Command::tr("Apply Pose to Drawing"));
+    const StrokeGroup *g = doc->group(groupId);
+    if (!g || !g->isDeformed() || g->deformed->strokes.size() != g->strokes.size()) {
+        setObsolete(true);
+        return;
+    }
+    m_oldStrokes = g->strokes;
+    m_oldRig = g->rig;
+    m_oldDeformed = g->deformed;
+    // The baked strokes keep their ids: they are the same strokes, redrawn.
+    m_newStrokes = posedStrokes(*g);
+}
+
+void ApplyPoseCommand::redo()
+{
+    if (isObsolete())
+        return;
+    m_doc->setStrokes(m_groupId, m_newStrokes);
+    m_doc->setRig(m_groupId, m_oldRig.rebased());
+}
+
+void ApplyPoseCommand::undo()
+{
+    if (isObsolete())
+        return;
+    m_doc->setStrokes(m_groupId, m_oldStrokes);
+    m_doc->setRig(m_groupId, m_oldRig);
+    m_doc->setDeformed(m_groupId, m_oldDeformed);
+}
+
+} // namespace finbook::model

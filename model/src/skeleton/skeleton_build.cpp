@@ -1,0 +1,94 @@
+// An object's automatic skeleton (issue 9's pipeline) as a rig: silhouette of the rest
+// strokes, raw straight skeleton, refinement under the panel's four sliders.
+#include "../deformation_text.h"
+
+#include <finbook/geometry/silhouette.h>
+#include <finbook/geometry/skeleton/skeleton_refine.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
+
+#include <cmath>
+#include <limits>
+
+namespace finbook::model {
+
+namespace {
+
+std::vector<geometry::StrokeInput> strokeInputs(const StrokeGroup &group)
+{
+    std::vector<geometry::StrokeInput> inputs;
+    for (const Stroke &s : group.strokes) {
+        if (!s.data || s.data->points.empty())
+            continue;
+        geometry::StrokeInput in;
+        in.points.resize(Eigen::Index(s.data->points.size()), 2);
+        for (std::size_t i = 0; i < s.data->points.size(); ++i)
+            in.points.row(Eigen::Index(i)) << s.data->points[i].x, s.data->points[i].y;
+        in.width = std::isfinite(s.data->width) && s.data->width > 0 ? s.data->width : 1.0;
+        inputs.push_back(std::move(in));
+    }
+    return inputs;
+}
+
+double clampUnit(double v)
+{
+    return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0;
+}
+
+geometry::RefineOptions refineOptions(const geometry::RawSkeleton &raw, const SkeletonSettings &s,
+                                      std::optional<QPointF> rootNear)
+{
+    const geometry::RefineRanges ranges = geometry::refineRanges(raw);
+    geometry::RefineOptions o;
+    // 0 keeps the engine's default (the fewest bones that stay inside the shape).
+    o.boneTolerance = s.complexity > 0.0 ? (1.0 - s.complexity) * ranges.boneTolerance
+                                         : std::numeric_limits<double>::infinity();
+    o.mergeDistance = s.merge * ranges.mergeDistance;
+    o.pruneLength = s.prune * ranges.pruneLength;
+    o.collapseLength = s.collapse * ranges.collapseLength;
+    if (rootNear && std::isfinite(rootNear->x()) && std::isfinite(rootNear->y()))
+        o.rootNear = Eigen::Vector2d(rootNear->x(), rootNear->y());
+    return o;
+}
+
+QString sentence(const geometry::GeometryError &e)
+{
+    return Deformation::tr("No skeleton can be built for this drawing: %1")
+        .arg(QString::fromStdString(e.message));
+}
+
+} // namespace
+
+Expected<SkeletonRig, QString> buildSkeletonRig(const StrokeGroup &group,
+                                                const SkeletonSettings &settings,
+                                                std::optional<QPointF> rootNear)
+{
+    const auto inputs = strokeInputs(group);
+    if (inputs.empty())
+        return unexpected(Deformation::tr("The object has no strokes to build a skeleton in."));
+    auto region = geometry::silhouette(inputs);
+    if (!region)
+        return unexpected(sentence(region.error()));
+    auto raw = geometry::rawSkeleton(*region);
+    if (!raw)
+        return unexpected(sentence(raw.error()));
+    SkeletonRig rig;
+    rig.settings = {clampUnit(settings.complexity), clampUnit(settings.merge),
+                    clampUnit(settings.prune), clampUnit(settings.collapse)};
+    auto skeleton = geometry::refineSkeleton(*raw, refineOptions(*raw, rig.settings, rootNear));
+    if (!skeleton)
+        return unexpected(sentence(skeleton.error()));
+    if (skeleton->jointCount() == 0)
+        return unexpected(Deformation::tr("No skeleton can be built for this drawing."));
+    for (int j = 0; j < skeleton->jointCount(); ++j) {
+        rig.joints.emplace_back(skeleton->joints(j, 0), skeleton->joints(j, 1));
+        rig.parent.push_back(skeleton->parent(j));
+        rig.radius.push_back(skeleton->radius(j));
+    }
+    rig.root = skeleton->root;
+    rig = rig.atRest();
+    if (!rig.isValid())
+        return unexpected(Deformation::tr("No skeleton can be built for this drawing."));
+    return rig;
+}
+
+} // namespace finbook::model

@@ -1,0 +1,67 @@
+// Reading an object's "SKEL" chunk (the layout is in finbook_file_format.h). Everything is
+// checked before the skeleton reaches the document: counts against the bytes left, finite
+// numbers, parents before children, a root that is a root, settings in [0, 1], a known mode.
+#include "../finbook_file_reader.h"
+
+#include <cmath>
+
+namespace finbook::model::file_format {
+
+namespace {
+double finiteF64(Cursor &c, const char *what, const QString &problem)
+{
+    const double v = c.f64(what);
+    if (!std::isfinite(v))
+        c.fail(FileErrorCode::BadValue, problem);
+    return v;
+}
+} // namespace
+
+SkeletonRig Reader::readSkeleton(Cursor &c)
+{
+    const char *what = QT_TRANSLATE_NOOP("FinbookFile", "the skeleton");
+    const quint32 n = c.count(kJointBytes, what);
+    if (n == 0)
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("its skeleton has no joints"));
+    SkeletonRig s;
+    s.joints.resize(n);
+    s.radius.resize(n);
+    s.parent.resize(n);
+    s.angles.resize(n);
+    for (quint32 j = 0; j < n; ++j) {
+        const QString bad = FinbookFile::tr("skeleton joint %1 has a non-finite value").arg(j + 1);
+        const double x = finiteF64(c, what, bad);
+        const double y = finiteF64(c, what, bad);
+        s.joints[j] = QPointF(x, y);
+        s.radius[j] = finiteF64(c, what, bad);
+        if (s.radius[j] < 0.0)
+            c.fail(FileErrorCode::BadValue,
+                   FinbookFile::tr("skeleton joint %1 has a negative radius").arg(j + 1));
+        s.parent[j] = c.i32(what);
+        if (s.parent[j] < -1 || s.parent[j] >= qint64(j))
+            c.fail(FileErrorCode::BadValue,
+                   FinbookFile::tr("skeleton joint %1 has an invalid parent").arg(j + 1));
+        s.angles[j] = finiteF64(c, what, bad);
+    }
+    s.root = c.i32(what);
+    if (s.root < 0 || quint32(s.root) >= n || s.parent[std::size_t(s.root)] != -1)
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("the skeleton's root is not a root joint"));
+    const QString badPose = FinbookFile::tr("the skeleton's pose has a non-finite value");
+    const double ox = finiteF64(c, what, badPose);
+    s.rootOffset = QPointF(ox, finiteF64(c, what, badPose));
+    const QString badSettings = FinbookFile::tr("a skeleton setting is outside 0 to 1");
+    for (double *v :
+         {&s.settings.complexity, &s.settings.merge, &s.settings.prune, &s.settings.collapse}) {
+        *v = finiteF64(c, what, badSettings);
+        if (*v < 0.0 || *v > 1.0)
+            c.fail(FileErrorCode::BadValue, badSettings);
+    }
+    const quint8 mode = c.u8(what);
+    if (mode > quint8(SkinningMode::LinearBlend))
+        c.fail(FileErrorCode::BadValue,
+               FinbookFile::tr("the skeleton has an unknown skinning mode"));
+    s.mode = SkinningMode(mode);
+    return s;
+}
+
+} // namespace finbook::model::file_format
