@@ -3,9 +3,11 @@
 #include <finbook/ui/tool_pen.h>
 
 #include <QDoubleSpinBox>
+#include <QGridLayout>
 #include <QLabel>
 #include <QPainter>
 #include <QSpinBox>
+#include <QToolButton>
 
 namespace finbook::ui {
 
@@ -17,11 +19,10 @@ BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
     , m_smoothing(new QSpinBox(this))
 {
     setObjectName(QStringLiteral("brushToolBar"));
-    for (const QColor &c :
-         {QColor(Qt::black), QColor(0x80, 0x80, 0x80), QColor(0xd0, 0x30, 0x30),
-          QColor(0xf0, 0x90, 0x20), QColor(0xe8, 0xd0, 0x20), QColor(0x30, 0xa0, 0x40),
-          QColor(0x30, 0x60, 0xd0), QColor(0x90, 0x40, 0xb0), QColor(Qt::white)})
-        addSwatch(c);
+    addWidget(createSwatches(
+        {QColor(Qt::black), QColor(0x80, 0x80, 0x80), QColor(Qt::white), QColor(0x90, 0x40, 0xb0),
+         QColor(0x30, 0x60, 0xd0), QColor(0xd0, 0x30, 0x30), QColor(0xf0, 0x90, 0x20),
+         QColor(0xe8, 0xd0, 0x20), QColor(0x30, 0xa0, 0x40), QColor(0x8a, 0x5a, 0x30)}));
     m_color->setObjectName(QStringLiteral("penColor"));
     addWidget(m_color);
     addSeparator();
@@ -57,14 +58,35 @@ BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
     connect(m_pen, &PenTool::settingsChanged, this, &BrushToolBar::showSettings);
 }
 
-void BrushToolBar::addSwatch(const QColor &color)
+QWidget *BrushToolBar::createSwatches(const QList<QColor> &colors)
 {
-    QPixmap pixmap(16, 16);
-    pixmap.fill(color);
-    QPainter(&pixmap).drawRect(0, 0, 15, 15);
-    QAction *swatch = addAction(QIcon(pixmap), color.name());
-    swatch->setToolTip(tr("Pen colour %1").arg(color.name()));
-    connect(swatch, &QAction::triggered, m_color, [this, color] { m_color->setColor(color); });
+    // Two rows of small swatches: a one-row strip took a fifth of a 1280 px window, and the
+    // top row must leave room for the deformation tools.
+    constexpr int kColumns = 5;
+    constexpr int kCell = 14;
+    auto *grid = new QWidget(this);
+    grid->setObjectName(QStringLiteral("penSwatches"));
+    auto *layout = new QGridLayout(grid);
+    layout->setContentsMargins(2, 0, 2, 0);
+    layout->setSpacing(1);
+    for (int i = 0; i < int(colors.size()); ++i) {
+        const QColor color = colors[i];
+        QPixmap pixmap(kCell - 2, kCell - 2);
+        pixmap.fill(color);
+        QPainter(&pixmap).drawRect(pixmap.rect().adjusted(0, 0, -1, -1));
+        auto *swatch = new QToolButton(grid);
+        swatch->setObjectName(QStringLiteral("swatch") + color.name());
+        swatch->setAutoRaise(true);
+        swatch->setFocusPolicy(Qt::NoFocus);
+        swatch->setIcon(QIcon(pixmap));
+        swatch->setIconSize(pixmap.size());
+        swatch->setFixedSize(kCell, kCell);
+        swatch->setToolTip(tr("Pen colour %1").arg(color.name()));
+        connect(swatch, &QToolButton::clicked, m_color,
+                [this, color] { m_color->setColor(color); });
+        layout->addWidget(swatch, i / kColumns, i % kColumns);
+    }
+    return grid;
 }
 
 void BrushToolBar::showSettings()
@@ -72,8 +94,12 @@ void BrushToolBar::showSettings()
     const PenSettings &s = m_pen->settings();
     const QSignalBlocker b1(m_color), b2(m_width), b3(m_smoothing);
     m_color->setColor(s.color);
-    m_width->setValue(s.width);
-    m_smoothing->setValue(s.smoothing);
+    // Only when different: setValue() rewrites the text, and while the user types "2.5" the
+    // pen already follows "2" (keyboard tracking), so "2" would become "2.0 px" mid-typing.
+    if (m_width->value() != s.width)
+        m_width->setValue(s.width);
+    if (m_smoothing->value() != s.smoothing)
+        m_smoothing->setValue(s.smoothing);
 }
 
 } // namespace finbook::ui

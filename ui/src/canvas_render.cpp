@@ -111,6 +111,12 @@ void CanvasWidget::setSuppressedStrokes(std::vector<model::Id> strokeIds)
     invalidateFrameLayer();
 }
 
+void CanvasWidget::setPreviewFrame(std::optional<model::Frame> frame)
+{
+    m_preview = std::move(frame);
+    invalidateFrameLayer();
+}
+
 void CanvasWidget::updateCanvasRect(const QRectF &canvasRect)
 {
     if (canvasRect.isNull()) {
@@ -153,7 +159,7 @@ void CanvasWidget::rasterize(QImage &image, const std::function<void(StrokeRaste
 QImage CanvasWidget::renderFrameLayer(QImage recycled) const
 {
     QImage image = newLayerImage(std::move(recycled));
-    const model::Frame *frame = m_state->currentFrame();
+    const model::Frame *frame = m_preview ? &*m_preview : m_state->currentFrame();
     if (!frame)
         return image;
     model::RenderOptions options;

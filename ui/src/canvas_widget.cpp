@@ -154,6 +154,13 @@ void CanvasWidget::actualSize()
     emit zoomChanged(m_zoom);
 }
 
+std::optional<QPointF> CanvasWidget::cursorPos() const
+{
+    if (!m_hover)
+        return std::nullopt;
+    return mapToCanvas(*m_hover); // through the view as it is now, zoomed or panned since
+}
+
 void CanvasWidget::panBy(const QPointF &widgetDelta)
 {
     if (widgetDelta.isNull())
@@ -197,6 +204,7 @@ void CanvasWidget::beginDrag(const ToolEvent &event, bool pan)
 
 void CanvasWidget::continueDrag(const ToolEvent &event)
 {
+    m_hover = event.widgetPos;
     emit cursorMoved(event.pos);
     switch (m_drag) {
     case Drag::Pan:
@@ -268,6 +276,10 @@ void CanvasWidget::tabletEvent(QTabletEvent *event)
 {
     // Accepting keeps Qt from synthesising mouse events for the same motion.
     event->accept();
+    // A tablet driver can report a position that is not a number: such an event is dropped
+    // before it can move the view or a tool (a NaN pan offset would blank the canvas).
+    if (!std::isfinite(event->position().x()) || !std::isfinite(event->position().y()))
+        return;
     ToolEvent e = toolEvent(event->position(), event->pressure());
     e.button = event->button();
     e.buttons = event->buttons();
@@ -338,6 +350,7 @@ void CanvasWidget::focusOutEvent(QFocusEvent *event)
 
 void CanvasWidget::leaveEvent(QEvent *event)
 {
+    m_hover.reset();
     if (m_tool && m_drag == Drag::None)
         update();
     QWidget::leaveEvent(event);

@@ -1,8 +1,12 @@
-#include <finbook/model/pin_commands.h>
+#include "rig/rig_prompt.h"
+
+#include <finbook/model/cage/cage_commands.h>
+#include <finbook/model/pins/pin_commands.h>
 #include <finbook/ui/deform_actions.h>
 #include <finbook/ui/editor_state.h>
 
 #include <QActionGroup>
+#include <QApplication>
 #include <QDoubleSpinBox>
 #include <QMenu>
 #include <QSettings>
@@ -16,28 +20,28 @@ DeformActions::DeformActions(EditorState *state, QObject *parent)
 {
     m_reset = new QAction(tr("&Reset Pose"), this);
     m_reset->setObjectName(QStringLiteral("deform.reset"));
-    m_reset->setStatusTip(tr("Move every pin of the current object back to where it was put"));
+    m_reset->setStatusTip(
+        tr("Move the current object's pins or cage corners back to their rest positions"));
     m_bake = new QAction(tr("&Apply Pose to Drawing"), this);
     m_bake->setObjectName(QStringLiteral("deform.apply"));
-    m_bake->setStatusTip(tr("Make the bent drawing the object's new strokes and remove its pins"));
-    m_removePins = new QAction(tr("Remove All &Pins"), this);
+    m_bake->setStatusTip(tr(
+        "Make the posed drawing the object's new strokes; the pins or cage stay where they are"));
+    m_removePins = new QAction(tr("&Remove Pins or Cage"), this);
     m_removePins->setObjectName(QStringLiteral("deform.removePins"));
+    m_removePins->setStatusTip(tr("Take the pins or the cage off the current object"));
 
     model::Document *doc = state->document();
     connect(m_reset, &QAction::triggered, this, [this, doc] {
-        doc->undoStack()->push(new model::ResetDeformationCommand(doc, m_state->currentGroupId()));
+        doc->undoStack()->push(new model::ResetPoseCommand(doc, m_state->currentGroupId()));
     });
     connect(m_bake, &QAction::triggered, this, [this, doc] {
-        doc->undoStack()->push(new model::BakeDeformationCommand(doc, m_state->currentGroupId()));
+        m_controller.settle(); // what becomes the drawing is the converged pose
+        doc->undoStack()->push(new model::ApplyPoseCommand(doc, m_state->currentGroupId()));
     });
     connect(m_removePins, &QAction::triggered, this, [this, doc] {
         const model::StrokeGroup *g = m_state->currentGroup();
-        if (!g || g->pins.empty())
-            return;
-        doc->undoStack()->beginMacro(tr("Remove All Pins"));
-        for (const model::Pin &p : std::vector<model::Pin>(g->pins))
-            doc->undoStack()->push(new model::RemovePinCommand(doc, g->id, p.id));
-        doc->undoStack()->endMacro();
+        if (g && !g->rig.empty() && confirmDiscardingPose(QApplication::activeWindow(), *g))
+            doc->undoStack()->push(new model::RemoveRigCommand(doc, g->id));
     });
     connect(&m_controller, &model::DeformController::errorOccurred, this,
             [this](model::Id, const QString &message) { emit messagePosted(message); });
@@ -54,23 +58,31 @@ QMenu *DeformActions::createRigidityMenu(QWidget *parent)
 {
     auto *menu = new QMenu(tr("R&igidity"), parent);
     auto *group = new QActionGroup(menu);
-    const int saved = QSettings().value(QStringLiteral("deform/extraPasses"), 0).toInt();
-    m_controller.setExtraPasses(saved);
+    // -1: converged (the default); 0, 1, 3: the paper's two steps plus that many passes.
+    const int saved = QSettings().value(QStringLiteral("deform/rigidity"), -1).toInt();
+    const auto apply = [this](int choice) {
+        if (choice < 0)
+            m_controller.setConverged();
+        else
+            m_controller.setExtraPasses(choice);
+    };
+    apply(saved);
     const struct {
-        int passes;
+        int choice;
         QString text;
-    } choices[] = {{0, tr("As in the Paper (Two Steps)")},
+    } choices[] = {{-1, tr("Converged (Most Rigid)")},
+                   {0, tr("As in the Paper (Two Steps)")},
                    {1, tr("Stiffer (+1 Pass)")},
                    {3, tr("Stiffest (+3 Passes)")}};
     for (const auto &choice : choices) {
         QAction *a = menu->addAction(choice.text);
         a->setCheckable(true);
-        a->setChecked(choice.passes == m_controller.extraPasses());
+        a->setChecked(choice.choice == saved);
         group->addAction(a);
-        const int passes = choice.passes;
-        connect(a, &QAction::triggered, this, [this, passes] {
-            m_controller.setExtraPasses(passes);
-            QSettings().setValue(QStringLiteral("deform/extraPasses"), passes);
+        const int value = choice.choice;
+        connect(a, &QAction::triggered, this, [apply, value] {
+            apply(value);
+            QSettings().setValue(QStringLiteral("deform/rigidity"), value);
         });
     }
     return menu;
@@ -79,9 +91,10 @@ QMenu *DeformActions::createRigidityMenu(QWidget *parent)
 void DeformActions::updateEnabled()
 {
     const model::StrokeGroup *g = m_state->currentGroup();
-    const bool pinned = g && !g->pins.empty() && !g->locked;
-    m_reset->setEnabled(pinned);
-    m_bake->setEnabled(pinned && g->isDeformed());
+    const bool pinned = g && !g->rig.pins.empty() && !g->locked;
+    const bool rigged = g && !g->rig.empty() && !g->locked;
+    m_reset->setEnabled(rigged);
+    m_bake->setEnabled(rigged && g->isDeformed());
     m_removePins->setEnabled(pinned);
 }
 

@@ -50,8 +50,35 @@ EditorState::EditorState(model::Document *document, QObject *parent)
     connect(this, &EditorState::currentFrameChanged, this, [this] {
         if (!m_selection.empty())
             setSelectedStrokes({});
+        const model::Id current = currentFrameId();
+        if (!m_frameSelection.empty() && std::find(m_frameSelection.begin(), m_frameSelection.end(),
+                                                   current) == m_frameSelection.end())
+            setSelectedFrames({});
     });
+    connect(m_doc, &model::Document::framesRemoved, this, &EditorState::frameSelectionChanged);
+    connect(m_doc, &model::Document::documentReset, this, [this] { setSelectedFrames({}); });
     clampToDocument();
+}
+
+std::vector<int> EditorState::selectedFrames() const
+{
+    std::vector<int> rows;
+    for (model::Id id : m_frameSelection)
+        if (const int row = m_doc->frameIndex(id); row >= 0)
+            rows.push_back(row);
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    if (rows.empty() && currentFrame())
+        rows.push_back(m_frameIndex);
+    return rows;
+}
+
+void EditorState::setSelectedFrames(std::vector<model::Id> frameIds)
+{
+    if (frameIds == m_frameSelection)
+        return;
+    m_frameSelection = std::move(frameIds);
+    emit frameSelectionChanged();
 }
 
 model::Id EditorState::currentFrameId() const

@@ -16,6 +16,8 @@ FrameActions::FrameActions(EditorState *state, QObject *parent)
                                QKeySequence(Qt::Key_F5));
     m_duplicate = makeAction(QStringLiteral("frame.duplicate"), tr("&Duplicate Frame"),
                              QKeySequence(Qt::Key_F6));
+    m_inbetweens = makeAction(QStringLiteral("frame.inbetweens"), tr("Generate &In-betweens…"),
+                              QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F6));
     m_remove = makeAction(QStringLiteral("frame.delete"), tr("De&lete Frame"),
                           QKeySequence(Qt::SHIFT | Qt::Key_F5));
     addSeparator();
@@ -39,6 +41,7 @@ FrameActions::FrameActions(EditorState *state, QObject *parent)
     connect(m_insertAfter, &QAction::triggered, this,
             [this] { insertFrame(m_state->currentFrameIndex() + 1); });
     connect(m_duplicate, &QAction::triggered, this, &FrameActions::duplicateFrame);
+    connect(m_inbetweens, &QAction::triggered, this, &FrameActions::requestInbetweens);
     connect(m_remove, &QAction::triggered, this, &FrameActions::removeFrame);
     connect(m_moveLeft, &QAction::triggered, this, [this] { moveFrame(-1); });
     connect(m_moveRight, &QAction::triggered, this, [this] { moveFrame(+1); });
@@ -54,6 +57,7 @@ FrameActions::FrameActions(EditorState *state, QObject *parent)
     connect(doc, &model::Document::frameChanged, this, &FrameActions::updateEnabled);
     connect(doc, &model::Document::documentReset, this, &FrameActions::updateEnabled);
     connect(m_state, &EditorState::currentFrameChanged, this, &FrameActions::updateEnabled);
+    connect(m_state, &EditorState::frameSelectionChanged, this, &FrameActions::updateEnabled);
     updateEnabled();
 }
 
@@ -90,6 +94,15 @@ void FrameActions::duplicateFrame()
     const int at = m_state->currentFrameIndex() + 1;
     doc->undoStack()->push(new model::DuplicateFrameCommand(doc, source, at));
     m_state->setCurrentFrameIndex(at);
+}
+
+void FrameActions::requestInbetweens()
+{
+    const std::vector<int> picked = m_state->selectedFrames();
+    if (picked.size() < 2)
+        return;
+    const model::Document *doc = m_state->document();
+    emit inbetweensRequested(doc->frameAt(picked.front()).id, doc->frameAt(picked.back()).id);
 }
 
 void FrameActions::removeFrame()
@@ -129,6 +142,7 @@ void FrameActions::updateEnabled()
     const int current = m_state->currentFrameIndex();
     const model::Frame *frame = m_state->currentFrame();
     m_duplicate->setEnabled(frame != nullptr);
+    m_inbetweens->setEnabled(m_state->selectedFrames().size() >= 2);
     m_remove->setEnabled(count > 1);
     m_moveLeft->setEnabled(current > 0);
     m_moveRight->setEnabled(current + 1 < count);

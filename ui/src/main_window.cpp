@@ -1,11 +1,15 @@
 // MainWindow: construction, docks, status bar, title and settings. Menus are in
 // main_window_menus.cpp, file handling in main_window_files.cpp.
 #include <finbook/model/document.h>
+#include <finbook/model/recovery/autosaver.h>
 #include <finbook/ui/brush_tool_bar.h>
 #include <finbook/ui/canvas_tool.h>
 #include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/editor_memory.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/frame_actions.h>
+#include <finbook/ui/i18n/action_text.h>
+#include <finbook/ui/keys/canvas_focus.h>
 #include <finbook/ui/main_window.h>
 #include <finbook/ui/object_actions.h>
 #include <finbook/ui/objects_panel.h>
@@ -47,19 +51,32 @@ MainWindow::MainWindow(QWidget *parent)
     newDocument();
     m_canvas = new CanvasWidget(m_state, this);
     setCentralWidget(m_canvas);
+    new CanvasFocus(this, m_canvas);
     createActions();
     createCanvasAndTools();
     createDeformation();
     createDocks();
     createStatusBar();
+    arrangeToolBars();
     readSettings();
+    rememberEditor();
     connect(m_doc->undoStack(), &QUndoStack::cleanChanged, this,
             [this](bool clean) { setWindowModified(!clean); });
+    createRecovery();
     updateTitle();
+    // Toolbar buttons and tooltips show texts Qt derives from the actions' texts, which keep a
+    // Japanese "(&S)" as "(S)".
+    keepIconTextsPlain(this);
     m_canvas->setFocus();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // Before the document (a child, deleted later by QObject) clears its undo stack, which
+    // says "clean" and would discard the copy that quitting with unsaved changes must keep.
+    delete m_autosaver;
+    m_autosaver = nullptr;
+}
 
 void MainWindow::createCanvasAndTools()
 {
@@ -162,7 +179,13 @@ void MainWindow::connectStatus()
     connect(m_canvas, &CanvasWidget::messagePosted, this,
             [this](const QString &message) { statusBar()->showMessage(message, 6000); });
     connect(m_canvas, &CanvasWidget::cursorMoved, this, [this](const QPointF &p) {
-        m_cursorLabel->setText(tr("%1, %2 px").arg(std::lround(p.x())).arg(std::lround(p.y())));
+        // lround is undefined past what a long holds: a position a tablet reports far away
+        // (or not at all) shows as nothing rather than as a garbage number.
+        const auto shown = [](qreal v) { return std::isfinite(v) && std::abs(v) < 1e9; };
+        if (!shown(p.x()) || !shown(p.y()))
+            m_cursorLabel->clear();
+        else
+            m_cursorLabel->setText(tr("%1, %2 px").arg(std::lround(p.x())).arg(std::lround(p.y())));
     });
 }
 
@@ -182,13 +205,15 @@ void MainWindow::updateTitle()
     const QString name = m_path.isEmpty() ? tr("Untitled") : QFileInfo(m_path).fileName();
     setWindowTitle(tr("%1[*] - Finbook").arg(name));
     setWindowModified(!m_doc->undoStack()->isClean());
+    if (m_autosaver)
+        m_autosaver->setDocumentInfo(name, m_path);
 }
 
 void MainWindow::readSettings()
 {
     QSettings settings;
     if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
-        resize(1280, 840);
+        resize(defaultSize());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     m_shortcuts->load(settings);
 }
@@ -207,6 +232,34 @@ void MainWindow::setPreferences(const Preferences &preferences)
     m_prefs = preferences;
     QSettings settings;
     m_prefs.save(settings);
+    m_state->setOnionSkin(m_prefs.onionSkin); // the Onion Skin page edits the current one
+    applyAutosaveInterval();
+}
+
+void MainWindow::rememberEditor()
+{
+    {
+        QSettings settings;
+        const EditorMemory memory = EditorMemory::load(settings);
+        m_pen->setSettings(memory.pen);
+        if (!memory.tool.isEmpty())
+            m_canvas->setCurrentTool(memory.tool); // an unknown id keeps the first tool
+    }
+    // Saved as they change, so a crash or a kill loses nothing either.
+    const auto savePenAndTool = [this] {
+        EditorMemory memory{m_pen->settings(), {}};
+        if (const CanvasTool *tool = m_canvas->currentTool())
+            memory.tool = tool->id();
+        QSettings settings;
+        memory.save(settings);
+    };
+    connect(m_pen, &PenTool::settingsChanged, this, savePenAndTool);
+    connect(m_canvas, &CanvasWidget::currentToolChanged, this, savePenAndTool);
+    connect(m_state, &EditorState::onionSkinChanged, this, [this] {
+        m_prefs.onionSkin = m_state->onionSkin();
+        QSettings settings;
+        m_prefs.save(settings);
+    });
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)
@@ -216,6 +269,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
         return;
     }
     writeSettings();
+    m_autosaver->discard(); // closed on purpose: nothing to recover
     event->accept();
 }
 

@@ -1,17 +1,22 @@
 // MainWindow: new, open, save, export and the recent-files list.
 #include <finbook/model/commands.h>
 #include <finbook/model/document.h>
+#include <finbook/model/export/exporter.h>
 #include <finbook/model/finbook_file.h>
-#include <finbook/model/render.h>
+#include <finbook/model/import/mesh_import.h>
 #include <finbook/ui/editor_state.h>
+#include <finbook/ui/export/export_job.h>
+#include <finbook/ui/file_messages.h>
 #include <finbook/ui/main_window.h>
 
 #include <QDir>
+#include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QMenu>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 
@@ -61,15 +66,44 @@ void MainWindow::open()
 
 bool MainWindow::openFile(const QString &path)
 {
-    if (const auto error = model::openFinbook(*m_doc, path)) {
-        reportError(tr("Cannot Open File"), error->message);
-        return false;
+    auto loaded = model::loadFinbook(path);
+    if (!loaded) {
+        const FileProblem problem = FileMessages::openProblem(path, loaded.error());
+        m_errorDetails = problem.details;
+        const bool anyway =
+            model::isRecoverable(loaded.error().code) && askOpenAnyway(problem.text);
+        if (!model::isRecoverable(loaded.error().code))
+            reportError(tr("Cannot Open File"), problem.text);
+        m_errorDetails.clear();
+        return anyway && openRecovering(path);
     }
+    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
     setFilePath(QFileInfo(path).absoluteFilePath());
     addRecentFile(m_path);
     return true;
 }
 
+// "Open anyway": what is readable of a damaged file, as a new unsaved document, so saving it
+// can never replace the damaged file (or its backup) without the user choosing where.
+bool MainWindow::openRecovering(const QString &path)
+{
+    QStringList problems;
+    auto loaded = model::loadFinbookRecovering(path, &problems);
+    if (!loaded) {
+        reportError(tr("Cannot Open File"), loaded.error().message);
+        return false;
+    }
+    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    setFilePath(QString());
+    m_doc->undoStack()->resetClean(); // unsaved until the user saves it somewhere
+    statusBar()->showMessage(
+        tr("Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.",
+           nullptr, int(problems.size()))
+            .arg(QFileInfo(path).fileName()),
+        10000);
+    emit recoveredProblems(problems);
+    return true;
+}
 bool MainWindow::save()
 {
     if (m_path.isEmpty())
@@ -89,6 +123,7 @@ bool MainWindow::saveAs()
 
 bool MainWindow::saveFile(const QString &path)
 {
+    settlePoses(); // a saved pose is the converged one
     if (const auto error = model::saveFinbook(*m_doc, path)) {
         reportError(tr("Cannot Save File"), error->message);
         return false;
@@ -114,30 +149,64 @@ bool MainWindow::maybeSave()
     }
 }
 
+// Every frame, held ones repeated, as PNGs in the chosen folder; on a worker thread, with
+// nothing left behind when it fails or is cancelled (see model/export/exporter.h).
 void MainWindow::exportFrames()
 {
     const QString folder = askExportFolder();
     if (folder.isEmpty())
         return;
-    const model::DocumentSettings &settings = m_doc->settings();
-    QProgressDialog progress(tr("Exporting frames..."), tr("Cancel"), 0, m_doc->frameCount(), this);
+    if (!QFileInfo(folder).isDir()) {
+        reportError(tr("Cannot Export Frames"),
+                    tr("The folder %1 does not exist; choose an existing folder and export again.")
+                        .arg(QDir::toNativeSeparators(folder)));
+        return;
+    }
+    model::ExportOptions options;
+    options.target = folder;
+    options.firstFrame = 0;
+    options.lastFrame = m_doc->frameCount() - 1;
+    settlePoses();
+    model::ExportSource source = model::exportSource(*m_doc);
+    const QStringList names = model::exportTargetFiles(source, options);
+    const bool replacing = std::any_of(names.begin(), names.end(), [&](const QString &name) {
+        return QFileInfo::exists(QDir(folder).filePath(name));
+    });
+    if (replacing && QMessageBox::question(this, tr("Replace Files?"),
+                                           tr("%1 already holds exported frames. Replace them?")
+                                               .arg(QDir::toNativeSeparators(folder)),
+                                           QMessageBox::Yes | QMessageBox::No,
+                                           QMessageBox::No) != QMessageBox::Yes)
+        return;
+    options.overwrite = replacing;
+
+    ExportJob job(std::move(source), options);
+    QProgressDialog progress(tr("Exporting frames..."), tr("Cancel"), 0, 0, this);
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(500);
-    for (int i = 0; i < m_doc->frameCount() && !progress.wasCanceled(); ++i) {
-        progress.setValue(i);
-        const QImage image = model::renderFrame(m_doc->frameAt(i), settings, settings.canvasSize);
-        const QString file = QDir(folder).filePath(
-            QStringLiteral("frame_%1.png").arg(i + 1, 4, 10, QLatin1Char('0')));
-        if (!image.save(file, "PNG")) {
-            reportError(tr("Cannot Export Frames"),
-                        tr("Cannot write %1. Check that the folder is writable and the disk is "
-                           "not full, then export again.")
-                            .arg(QDir::toNativeSeparators(file)));
-            return;
-        }
+    connect(&job, &ExportJob::progressed, &progress, [&progress](qint64 done, qint64 total) {
+        progress.setMaximum(int(std::min<qint64>(total, INT_MAX)));
+        progress.setValue(int(std::min<qint64>(done, INT_MAX)));
+    });
+    connect(&progress, &QProgressDialog::canceled, &job, &ExportJob::cancel);
+    QEventLoop loop;
+    model::ExportError error{};
+    qsizetype written = -1;
+    connect(&job, &ExportJob::finished, &loop,
+            [&](bool ok, const model::ExportError &e, const QStringList &files) {
+                written = ok ? files.size() : -1;
+                error = e;
+                loop.quit();
+            });
+    job.start();
+    loop.exec();
+    progress.reset();
+    if (written < 0) {
+        if (error.code != model::ExportErrorCode::Cancelled)
+            reportError(tr("Cannot Export Frames"), error.message);
+        return;
     }
-    progress.setValue(m_doc->frameCount());
-    statusBar()->showMessage(tr("Exported %n frame(s) to %1", nullptr, m_doc->frameCount())
+    statusBar()->showMessage(tr("Exported %n frame(s) to %1", nullptr, int(written))
                                  .arg(QDir::toNativeSeparators(folder)),
                              5000);
 }
@@ -189,10 +258,44 @@ void MainWindow::rebuildRecentMenu()
 
 // --- the interactive parts tests override ---------------------------------------------------
 
+bool MainWindow::importMesh(const QString &path)
+{
+    auto strokes = model::importMeshStrokes(path, m_doc->settings().canvasSize);
+    if (!strokes) {
+        reportError(tr("Cannot Import Mesh"), strokes.error());
+        return false;
+    }
+    QUndoStack *stack = m_doc->undoStack();
+    stack->beginMacro(tr("Import Mesh"));
+    auto *add = new model::AddObjectCommand(m_doc, m_state->currentFrameId(), -1,
+                                            QFileInfo(path).completeBaseName());
+    const model::Id groupId = add->groupId();
+    stack->push(add);
+    for (const model::StrokeDataPtr &stroke : *strokes)
+        stack->push(new model::AddStrokeCommand(m_doc, groupId, stroke));
+    stack->endMacro();
+    m_state->setCurrentGroupId(groupId);
+    return true;
+}
+
 void MainWindow::reportError(const QString &title, const QString &message)
 {
     emit errorReported(message);
-    QMessageBox::warning(this, title, message);
+    QMessageBox box(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+    box.setDetailedText(m_errorDetails); // empty: no "Show Details..." button
+    box.exec();
+}
+
+bool MainWindow::askOpenAnyway(const QString &message)
+{
+    QMessageBox box(QMessageBox::Warning, tr("Damaged File"), message, QMessageBox::Cancel, this);
+    box.setInformativeText(tr("Open anyway shows what is still readable as a new, unsaved "
+                              "animation; the damaged file is not changed."));
+    box.setDetailedText(m_errorDetails);
+    QPushButton *open = box.addButton(tr("Open Anyway"), QMessageBox::AcceptRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    return box.clickedButton() == open;
 }
 
 QMessageBox::StandardButton MainWindow::askToSave()

@@ -3,6 +3,7 @@
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/document_settings_dialog.h>
 #include <finbook/ui/editor_state.h>
+#include <finbook/ui/export/export_dialog.h>
 #include <finbook/ui/frame_actions.h>
 #include <finbook/ui/main_window.h>
 #include <finbook/ui/object_actions.h>
@@ -17,8 +18,11 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QMenuBar>
 #include <QSettings>
+#include <QStatusBar>
 #include <QToolBar>
 #include <QVBoxLayout>
 
@@ -64,6 +68,20 @@ void MainWindow::createFileMenu()
     connect(saveAction, &QAction::triggered, this, &MainWindow::save);
     QAction *saveAsAction = makeAction(QStringLiteral("file.saveAs"), tr("Save &As..."));
     connect(saveAsAction, &QAction::triggered, this, &MainWindow::saveAs);
+    QAction *exportAnimation = makeAction(QStringLiteral("file.exportAnimation"), tr("E&xport..."));
+    connect(exportAnimation, &QAction::triggered, this, [this] {
+        settlePoses();
+        ExportDialog dialog(*m_doc, m_path, this);
+        if (dialog.exec() == QDialog::Accepted)
+            statusBar()->showMessage(dialog.summary(), 5000);
+    });
+    QAction *importAction = makeAction(QStringLiteral("file.importMesh"), tr("&Import Mesh..."));
+    connect(importAction, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Import Mesh"), QFileInfo(m_path).path(), tr("OFF meshes (*.off)"));
+        if (!path.isEmpty())
+            importMesh(path);
+    });
     QAction *exportAction = makeAction(QStringLiteral("file.export"), tr("&Export Frames..."));
     connect(exportAction, &QAction::triggered, this, &MainWindow::exportFrames);
     QAction *quitAction = makeAction(QStringLiteral("file.quit"), tr("&Quit"));
@@ -72,6 +90,8 @@ void MainWindow::createFileMenu()
     m_fileMenu->addAction(saveAction);
     m_fileMenu->addAction(saveAsAction);
     m_fileMenu->addSeparator();
+    m_fileMenu->addAction(importAction);
+    m_fileMenu->addAction(exportAnimation);
     m_fileMenu->addAction(exportAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(quitAction);
@@ -103,7 +123,9 @@ void MainWindow::createEditMenu()
     QAction *paste = makeAction(QStringLiteral("edit.paste"), tr("&Paste"));
     connect(paste, &QAction::triggered, this, [this, report] {
         QString problem;
-        StrokeEditing::paste(*m_state, &problem);
+        // At the mouse when it is over the canvas; selected, with the select tool's box shown.
+        if (StrokeEditing::paste(*m_state, &problem, m_canvas->cursorPos()))
+            m_canvas->setCurrentTool(QStringLiteral("tool.select"));
         report(problem);
     });
     QAction *remove = makeAction(QStringLiteral("edit.delete"), tr("&Delete"));
@@ -187,6 +209,8 @@ void MainWindow::createViewMenu()
 void MainWindow::createFrameAndObjectMenus()
 {
     QMenu *frameMenu = menuBar()->addMenu(tr("F&rame"));
+    connect(m_frameActions, &FrameActions::inbetweensRequested, this,
+            &MainWindow::generateInbetweens);
     for (QAction *a : m_frameActions->menuActions()) {
         frameMenu->addAction(a);
         if (!a->isSeparator())

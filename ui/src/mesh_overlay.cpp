@@ -54,9 +54,21 @@ void MeshOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
         if (!g.visible || !setup)
             continue;
         const Eigen::MatrixX2d &U = *m_controller->poseVertices(g.id);
-        const geometry::TriMesh &mesh = setup->meshed->mesh.mesh;
         QColor colour = g.id == current ? QColor(20, 140, 200, 150) : QColor(120, 120, 120, 110);
         painter.setPen(QPen(colour, 0.8));
+        if (!setup->meshed) { // a cage's interior mesh: triangles only
+            const Eigen::MatrixX3i &F = setup->meshTriangles();
+            QVector<QLineF> lines;
+            lines.reserve(int(F.rows() * 3));
+            for (Eigen::Index t = 0; t < F.rows(); ++t)
+                for (int k = 0; k < 3; ++k) {
+                    const int a = F(t, k), b = F(t, (k + 1) % 3);
+                    lines.append(canvasToWidget.map(QLineF(U(a, 0), U(a, 1), U(b, 0), U(b, 1))));
+                }
+            painter.drawLines(lines);
+            continue;
+        }
+        const geometry::TriMesh &mesh = setup->meshed->mesh.mesh;
         // Each edge once (the OpenMesh mesh's vertex i is row i of V), so shared edges are not
         // drawn twice — half the work on every repaint while a pin is dragged.
         QVector<QLineF> lines;

@@ -28,6 +28,8 @@ Preferences Preferences::load(QSettings &settings)
     const QSize size = settings.value(QStringLiteral("canvasSize"), p.canvasSize).toSize();
     p.canvasSize = QSize(std::clamp(size.width(), 1, model::kMaxCanvasSide),
                          std::clamp(size.height(), 1, model::kMaxCanvasSide));
+    p.autosaveMinutes = std::clamp(
+        settings.value(QStringLiteral("autosaveMinutes"), p.autosaveMinutes).toInt(), 0, 60);
     settings.endGroup();
     return p;
 }
@@ -43,6 +45,7 @@ void Preferences::save(QSettings &settings) const
     settings.setValue(QStringLiteral("onion/afterTint"), onionSkin.afterTint.name());
     settings.setValue(QStringLiteral("frameRate"), frameRate);
     settings.setValue(QStringLiteral("canvasSize"), canvasSize);
+    settings.setValue(QStringLiteral("autosaveMinutes"), autosaveMinutes);
     settings.endGroup();
 }
 

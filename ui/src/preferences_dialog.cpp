@@ -31,7 +31,7 @@ PreferencesDialog::PreferencesDialog(const Preferences &preferences,
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(tabs);
     layout->addWidget(buttons);
-    resize(560, 520);
+    resize(720, 560);
 }
 
 QWidget *PreferencesDialog::createGeneralPage(const Preferences &preferences)
@@ -49,10 +49,19 @@ QWidget *PreferencesDialog::createGeneralPage(const Preferences &preferences)
     }
     m_width->setValue(preferences.canvasSize.width());
     m_height->setValue(preferences.canvasSize.height());
+    m_autosave = new QSpinBox(page);
+    m_autosave->setObjectName(QStringLiteral("autosaveMinutes"));
+    m_autosave->setRange(0, 60);
+    m_autosave->setSuffix(tr(" min"));
+    m_autosave->setSpecialValueText(tr("Never"));
+    m_autosave->setToolTip(tr("How often Finbook keeps a recovery copy of unsaved changes, "
+                              "offered at the next start if Finbook did not close normally."));
+    m_autosave->setValue(preferences.autosaveMinutes);
     auto *form = new QFormLayout(page);
     form->addRow(tr("Frame rate:"), m_fps);
     form->addRow(tr("Canvas width:"), m_width);
     form->addRow(tr("Canvas height:"), m_height);
+    form->addRow(tr("Autosave every:"), m_autosave);
     return page;
 }
 
@@ -62,10 +71,11 @@ Preferences PreferencesDialog::preferences() const
     p.onionSkin = m_onion->onionSkin();
     p.frameRate = m_fps->value();
     p.canvasSize = QSize(m_width->value(), m_height->value());
+    p.autosaveMinutes = m_autosave->value();
     return p;
 }
 
-QMap<QString, QKeySequence> PreferencesDialog::shortcuts() const
+QMap<QString, QList<QKeySequence>> PreferencesDialog::shortcuts() const
 {
     return m_shortcuts->shortcuts();
 }

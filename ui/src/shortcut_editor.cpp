@@ -1,3 +1,4 @@
+#include <finbook/ui/i18n/action_text.h>
 #include <finbook/ui/shortcut_editor.h>
 #include <finbook/ui/shortcut_registry.h>
 
@@ -5,6 +6,7 @@
 #include <QKeySequenceEdit>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -13,7 +15,7 @@ namespace finbook::ui {
 namespace {
 QString plainText(const QAction *action)
 {
-    return action->text().remove(QLatin1Char('&'));
+    return withoutMnemonic(action->text());
 }
 } // namespace
 
@@ -24,11 +26,13 @@ ShortcutEditor::ShortcutEditor(const ShortcutRegistry *registry, QWidget *parent
     , m_conflicts(new QLabel(this))
 {
     const QList<QAction *> actions = registry->actions();
-    m_table->setColumnCount(2);
+    m_table->setColumnCount(1 + kShortcutsPerAction);
     m_table->setRowCount(int(actions.size()));
-    m_table->setHorizontalHeaderLabels({tr("Action"), tr("Shortcut")});
-    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
-    m_table->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
+    m_table->setHorizontalHeaderLabels({tr("Action"), tr("Shortcut"), tr("Alternative")});
+    // The action names are never cut off ("Dokumenteinstellungen..."); the edits share the rest.
+    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    for (int column = 1; column <= kShortcutsPerAction; ++column)
+        m_table->horizontalHeader()->setSectionResizeMode(column, QHeaderView::Stretch);
     m_table->verticalHeader()->hide();
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
     for (int row = 0; row < int(actions.size()); ++row) {
@@ -37,12 +41,33 @@ ShortcutEditor::ShortcutEditor(const ShortcutRegistry *registry, QWidget *parent
         item->setFlags(Qt::ItemIsEnabled);
         item->setToolTip(a->objectName());
         m_table->setItem(row, 0, item);
-        auto *edit = new QKeySequenceEdit(a->shortcut(), m_table);
-        edit->setObjectName(a->objectName());
-        m_table->setCellWidget(row, 1, edit);
-        m_edits.insert(a->objectName(), edit);
-        connect(edit, &QKeySequenceEdit::keySequenceChanged, this, &ShortcutEditor::markConflicts);
+        Edits edits{};
+        const QList<QKeySequence> keys = a->shortcuts();
+        for (int slot = 0; slot < kShortcutsPerAction; ++slot) {
+            auto *edit = new QKeySequenceEdit(keys.value(slot), m_table);
+            edit->setObjectName(slot == 0 ? a->objectName()
+                                          : a->objectName() + QStringLiteral(".alternative"));
+            edit->setClearButtonEnabled(true);
+            m_table->setCellWidget(row, 1 + slot, edit);
+            connect(edit, &QKeySequenceEdit::keySequenceChanged, this,
+                    &ShortcutEditor::markConflicts);
+            edits[std::size_t(slot)] = edit;
+        }
+        m_edits.insert(a->objectName(), edits);
     }
+    // The action names as wide as the longest one (translations run longer than English);
+    // the key column takes the rest, at least enough for a long shortcut.
+    QHeaderView *header = m_table->horizontalHeader();
+    header->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(1, QHeaderView::Stretch);
+    m_table->setWordWrap(false);
+    m_table->resizeColumnToContents(0);
+    const int keysWidth = fontMetrics().horizontalAdvance(
+                              QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::ALT | Qt::Key_Backspace)
+                                  .toString(QKeySequence::NativeText)) +
+                          4 * fontMetrics().averageCharWidth();
+    m_table->setMinimumWidth(header->sectionSize(0) + keysWidth + 2 * m_table->frameWidth() +
+                             m_table->verticalScrollBar()->sizeHint().width());
     m_conflicts->setWordWrap(true);
     auto *defaults = new QPushButton(tr("Restore Defaults"), this);
     connect(defaults, &QPushButton::clicked, this, &ShortcutEditor::restoreDefaults);
@@ -53,18 +78,33 @@ ShortcutEditor::ShortcutEditor(const ShortcutRegistry *registry, QWidget *parent
     markConflicts();
 }
 
-QMap<QString, QKeySequence> ShortcutEditor::shortcuts() const
+QMap<QString, QList<QKeySequence>> ShortcutEditor::shortcuts() const
 {
-    QMap<QString, QKeySequence> map;
-    for (auto it = m_edits.begin(); it != m_edits.end(); ++it)
-        map.insert(it.key(), it.value()->keySequence());
+    QMap<QString, QList<QKeySequence>> map;
+    for (auto it = m_edits.begin(); it != m_edits.end(); ++it) {
+        QList<QKeySequence> keys;
+        for (const QKeySequenceEdit *edit : it.value())
+            keys << edit->keySequence();
+        map.insert(it.key(), ShortcutRegistry::cleaned(keys));
+    }
     return map;
 }
 
-void ShortcutEditor::setShortcut(const QString &name, const QKeySequence &keys)
+void ShortcutEditor::setShortcuts(const QString &name, const QList<QKeySequence> &keys)
 {
-    if (QKeySequenceEdit *edit = m_edits.value(name))
-        edit->setKeySequence(keys);
+    const auto found = m_edits.constFind(name);
+    if (found == m_edits.constEnd())
+        return;
+    for (int slot = 0; slot < kShortcutsPerAction; ++slot)
+        (*found)[std::size_t(slot)]->setKeySequence(keys.value(slot));
+}
+
+QKeySequenceEdit *ShortcutEditor::edit(const QString &name, int slot) const
+{
+    const auto found = m_edits.constFind(name);
+    if (found == m_edits.constEnd() || slot < 0 || slot >= kShortcutsPerAction)
+        return nullptr;
+    return (*found)[std::size_t(slot)];
 }
 
 bool ShortcutEditor::hasConflicts() const
@@ -75,15 +115,16 @@ bool ShortcutEditor::hasConflicts() const
 void ShortcutEditor::restoreDefaults()
 {
     for (auto it = m_edits.begin(); it != m_edits.end(); ++it)
-        it.value()->setKeySequence(m_registry->defaultShortcut(it.key()));
+        setShortcuts(it.key(), m_registry->defaultShortcuts(it.key()));
 }
 
 void ShortcutEditor::markConflicts()
 {
     const auto conflicts = ShortcutRegistry::conflicts(shortcuts());
-    QStringList clashing, lines;
+    QList<QKeySequence> clashing;
+    QStringList lines;
     for (const ShortcutRegistry::Conflict &c : conflicts) {
-        clashing << c.names;
+        clashing << c.keys;
         QStringList texts;
         for (const QString &name : c.names)
             if (const QAction *a = m_registry->action(name))
@@ -92,9 +133,12 @@ void ShortcutEditor::markConflicts()
                      .arg(c.keys.toString(QKeySequence::NativeText),
                           texts.join(QStringLiteral(", ")));
     }
-    for (auto it = m_edits.begin(); it != m_edits.end(); ++it)
-        it.value()->setStyleSheet(
-            clashing.contains(it.key()) ? QStringLiteral("background: #f4c0c0;") : QString());
+    for (const Edits &edits : m_edits)
+        for (QKeySequenceEdit *edit : edits)
+            edit->setStyleSheet(!edit->keySequence().isEmpty() &&
+                                        clashing.contains(edit->keySequence())
+                                    ? QStringLiteral("background: #f4c0c0;")
+                                    : QString());
     m_conflicts->setText(lines.isEmpty() ? QString()
                                          : tr("Conflicting shortcuts:") + QLatin1Char('\n') +
                                                lines.join(QLatin1Char('\n')));

@@ -1,11 +1,16 @@
+#include <finbook/ui/i18n/action_text.h>
 #include <finbook/ui/shortcut_registry.h>
 #include <finbook/ui/shortcuts_dialog.h>
 
 #include <QDialogButtonBox>
 #include <QHeaderView>
 #include <QLineEdit>
+#include <QScreen>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace finbook::ui {
 
@@ -16,23 +21,33 @@ ShortcutsDialog::ShortcutsDialog(const ShortcutRegistry *registry, QWidget *pare
     setObjectName(QStringLiteral("shortcutsDialog"));
     QList<QPair<QString, QString>> rows;
     for (const QAction *a : registry->actions())
-        rows.append(
-            {a->text().remove(QLatin1Char('&')), a->shortcut().toString(QKeySequence::NativeText)});
+        rows.append({withoutMnemonic(a->text()),
+                     QKeySequence::listToString(a->shortcuts(), QKeySequence::NativeText)});
     rows.append({tr("Pan the view"), tr("Space + drag, or middle button drag")});
     rows.append({tr("Zoom about the cursor"), tr("Mouse wheel")});
 
     auto *table = new QTableWidget(int(rows.size()), 2, this);
     table->setObjectName(QStringLiteral("shortcutsTable"));
     table->setHorizontalHeaderLabels({tr("Action"), tr("Shortcut")});
-    table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
-    table->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     table->verticalHeader()->hide();
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table->setWordWrap(false);
     for (int r = 0; r < int(rows.size()); ++r) {
         table->setItem(r, 0, new QTableWidgetItem(rows[r].first));
         table->setItem(r, 1, new QTableWidgetItem(rows[r].second));
     }
     m_rows = int(rows.size());
+    // Both columns as wide as their longest text (translations run longer than English), and
+    // the table at least that wide, so nothing is elided unless the screen is too narrow.
+    QHeaderView *header = table->horizontalHeader();
+    header->setSectionResizeMode(QHeaderView::ResizeToContents);
+    header->setStretchLastSection(true);
+    table->resizeColumnsToContents();
+    const int contentWidth =
+        header->length() + 2 * table->frameWidth() + table->verticalScrollBar()->sizeHint().width();
+    const QScreen *screen = parent ? parent->screen() : this->screen();
+    const int maxWidth = screen ? screen->availableGeometry().width() * 9 / 10 : contentWidth;
+    table->setMinimumWidth(std::min(contentWidth, maxWidth));
 
     auto *filter = new QLineEdit(this);
     filter->setPlaceholderText(tr("Filter"));
@@ -49,7 +64,7 @@ ShortcutsDialog::ShortcutsDialog(const ShortcutRegistry *registry, QWidget *pare
     layout->addWidget(filter);
     layout->addWidget(table);
     layout->addWidget(buttons);
-    resize(520, 600);
+    resize(std::max(520, sizeHint().width()), 600);
 }
 
 } // namespace finbook::ui

@@ -1,7 +1,7 @@
 #include "stroke_hit.h"
 
 #include <finbook/model/commands.h>
-#include <finbook/model/pin_commands.h>
+#include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/stroke_editing.h>
@@ -103,17 +103,16 @@ StrokeEditing::addStrokes(EditorState &state, const std::vector<model::StrokeDat
     }
     model::Document *doc = state.document();
     QUndoStack *stack = doc->undoStack();
-    stack->beginMacro(text);
     model::Id groupId = state.currentGroupId();
+    // New strokes are drawn on the posed object as shown; as rest strokes they would be bent
+    // again by the rig and land elsewhere.
+    beginRestEdit(doc, text, {groupId});
     if (groupId == model::kNoId) {
         auto *add = new model::AddObjectCommand(doc, state.currentFrameId(), -1, tr("Object"));
         groupId = add->groupId();
         stack->push(add);
         state.setCurrentGroupId(groupId);
     }
-    // New strokes are drawn on the posed object as shown; as rest strokes they would be bent
-    // again by the pins and land elsewhere.
-    applyPoses(doc, {groupId});
     std::vector<model::Id> ids;
     for (const model::StrokeDataPtr &data : strokes) {
         auto *cmd = new model::AddStrokeCommand(doc, groupId, data);
@@ -124,11 +123,32 @@ StrokeEditing::addStrokes(EditorState &state, const std::vector<model::StrokeDat
     return ids;
 }
 
-void StrokeEditing::applyPoses(model::Document *doc, const std::vector<model::Id> &groupIds)
+namespace {
+bool isPosed(const model::Document *doc, model::Id id)
 {
+    const model::StrokeGroup *g = doc->group(id);
+    return g && g->isDeformed() && g->rig.isPosed();
+}
+} // namespace
+
+bool StrokeEditing::applyPoses(model::Document *doc, const std::vector<model::Id> &groupIds)
+{
+    bool applied = false;
     for (model::Id id : groupIds)
-        if (const model::StrokeGroup *g = doc->group(id); g && g->isDeformed())
-            doc->undoStack()->push(new model::BakeDeformationCommand(doc, id));
+        if (isPosed(doc, id)) {
+            doc->undoStack()->push(new model::ApplyPoseCommand(doc, id));
+            applied = true;
+        }
+    return applied;
+}
+
+void StrokeEditing::beginRestEdit(model::Document *doc, const QString &text,
+                                  const std::vector<model::Id> &groupIds)
+{
+    const bool posed = std::any_of(groupIds.begin(), groupIds.end(),
+                                   [doc](model::Id id) { return isPosed(doc, id); });
+    doc->undoStack()->beginMacro(posed ? tr("%1 (pose applied)").arg(text) : text);
+    applyPoses(doc, groupIds);
 }
 
 bool StrokeEditing::deleteSelection(EditorState &state)
@@ -137,7 +157,11 @@ bool StrokeEditing::deleteSelection(EditorState &state)
     if (ids.empty())
         return false;
     model::Document *doc = state.document();
-    doc->undoStack()->beginMacro(tr("Delete Strokes"));
+    std::vector<model::Id> groups;
+    for (model::Id id : ids)
+        if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
+            groups.push_back(doc->frameAt(at.frame).groups[std::size_t(at.group)].id);
+    beginRestEdit(doc, tr("Delete Strokes"), groups);
     for (model::Id id : ids)
         doc->undoStack()->push(new model::RemoveStrokeCommand(doc, id));
     doc->undoStack()->endMacro();
@@ -197,7 +221,63 @@ bool StrokeEditing::clipboardHasStrokes()
     return mime && mime->hasFormat(QString::fromLatin1(kStrokesMimeType));
 }
 
-bool StrokeEditing::paste(EditorState &state, QString *problem)
+namespace {
+QRectF bounds(const std::vector<model::StrokeDataPtr> &strokes)
+{
+    qreal left = 0, top = 0, right = 0, bottom = 0;
+    bool first = true;
+    for (const model::StrokeDataPtr &s : strokes)
+        for (const model::StrokePoint &p : s->points) {
+            left = first ? p.x : std::min<qreal>(left, p.x);
+            right = first ? p.x : std::max<qreal>(right, p.x);
+            top = first ? p.y : std::min<qreal>(top, p.y);
+            bottom = first ? p.y : std::max<qreal>(bottom, p.y);
+            first = false;
+        }
+    return QRectF(QPointF(left, top), QPointF(right, bottom));
+}
+
+model::StrokeDataPtr shifted(const model::StrokeData &data, QPointF by)
+{
+    auto moved = std::make_shared<model::StrokeData>(data);
+    for (model::StrokePoint &p : moved->points) {
+        p.x += float(by.x());
+        p.y += float(by.y());
+    }
+    return moved;
+}
+
+bool frameHas(const model::Frame &frame, const model::StrokeData &data)
+{
+    for (const model::StrokeGroup &g : frame.groups)
+        for (const model::Stroke &s : g.strokes)
+            if (s.data->points == data.points)
+                return true;
+    return false;
+}
+} // namespace
+
+QPointF StrokeEditing::pasteShift(const model::Frame *frame,
+                                  const std::vector<model::StrokeDataPtr> &strokes,
+                                  std::optional<QPointF> at)
+{
+    if (strokes.empty())
+        return {};
+    if (at && std::isfinite(at->x()) && std::isfinite(at->y()))
+        return *at - bounds(strokes).center();
+    // In place when the original is not in this frame (pasting into another frame keeps the
+    // drawing in register); else one step past the original and the copies already pasted
+    // (the first stroke tells where each one is).
+    constexpr int kMaxSteps = 100;
+    for (int step = 0; frame && step < kMaxSteps; ++step) {
+        const QPointF by(kPasteStep * step, kPasteStep * step);
+        if (!frameHas(*frame, *shifted(*strokes.front(), by)))
+            return by;
+    }
+    return {kPasteStep, kPasteStep};
+}
+
+bool StrokeEditing::paste(EditorState &state, QString *problem, std::optional<QPointF> at)
 {
     const QMimeData *mime = QApplication::clipboard()->mimeData();
     if (!mime || !mime->hasFormat(QString::fromLatin1(kStrokesMimeType)))
@@ -208,7 +288,11 @@ bool StrokeEditing::paste(EditorState &state, QString *problem)
             *problem = tr("The clipboard holds strokes this version of Finbook cannot read.");
         return false;
     }
-    const auto ids = addStrokes(state, *strokes, tr("Paste"), problem);
+    const QPointF by = pasteShift(state.currentFrame(), *strokes, at);
+    std::vector<model::StrokeDataPtr> placed;
+    for (const model::StrokeDataPtr &data : *strokes)
+        placed.push_back(shifted(*data, by));
+    const auto ids = addStrokes(state, placed, tr("Paste"), problem);
     if (!ids)
         return false;
     state.setSelectedStrokes(*ids);

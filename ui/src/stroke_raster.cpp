@@ -134,17 +134,9 @@ void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal sc
 
 void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptions &options)
 {
-    for (const model::StrokeGroup &g : frame.groups) {
-        if (!g.visible && !options.showHidden)
-            continue;
-        for (std::size_t i = 0; i < g.strokes.size(); ++i) {
-            const model::Stroke &s = g.strokes[i];
-            if (!s.data)
-                continue;
-            const QRgb color = options.tint ? options.tint->rgba() : s.data->color;
-            drawStroke(model::displayedPoints(g, i), color, s.data->width, options.opacity);
-        }
-    }
+    // paintList folds repeated references of one stroke into one item, as paintFrame does.
+    for (const model::PaintItem &item : model::paintList(frame, options))
+        drawStroke(*item.points, item.color, item.width, options.opacity);
 }
 
 void StrokeRaster::drawStroke(const std::vector<model::StrokePoint> &points, QRgb color,
@@ -152,21 +144,38 @@ void StrokeRaster::drawStroke(const std::vector<model::StrokePoint> &points, QRg
 {
     if (points.empty() || m_clip.isEmpty() || opacity <= 0 || qAlpha(color) == 0)
         return;
-    // paintStroke's widths: a pen never thinner than a quarter canvas pixel.
+    // paintStroke's widths, kept finite and sane whatever the file or the tablet says.
     const auto radius = [&](const model::StrokePoint &p) {
-        return std::max(0.125f, width * p.pressure / 2) * m_scale;
+        float r = width * p.pressure / 2;
+        if (!(r > 0.125f)) // also NaN
+            r = 0.125f;
+        return std::min(r, model::kMaxStrokeWidth / 2) * m_scale;
     };
-    const model::StrokePoint &first = points.front();
-    float ax = first.x * m_scale + m_ox, ay = first.y * m_scale + m_oy, ar = radius(first);
-    if (points.size() == 1)
-        capsule(ax, ay, ar, ax, ay, ar);
+    // Segments are cut to the clip plus the widest pen first: a point millions of pixels away
+    // (or at 1e30, past what an int holds) costs no more than one on the canvas.
+    float widest = 0.0f;
+    for (const model::StrokePoint &p : points)
+        widest = std::max(widest, radius(p));
+    const double reach = double(std::max(widest, kMinRadius)) + 2.0;
+    const QRectF clip = QRectF(m_clip).adjusted(-reach, -reach, reach, reach);
+    const auto device = [&](const model::StrokePoint &p) {
+        return QPointF(double(p.x * m_scale + m_ox), double(p.y * m_scale + m_oy));
+    };
+    if (points.size() == 1) {
+        const QPointF at = device(points.front());
+        if (clip.contains(at)) {
+            const float r = radius(points.front());
+            capsule(float(at.x()), float(at.y()), r, float(at.x()), float(at.y()), r);
+        }
+    }
     for (std::size_t i = 1; i < points.size(); ++i) {
-        const model::StrokePoint &p = points[i];
-        const float bx = p.x * m_scale + m_ox, by = p.y * m_scale + m_oy, br = radius(p);
-        capsule(ax, ay, ar, bx, by, br);
-        ax = bx;
-        ay = by;
-        ar = br;
+        QPointF a = device(points[i - 1]), b = device(points[i]);
+        double t0 = 0, t1 = 1;
+        if (!model::clipSegment(a, b, clip, &t0, &t1))
+            continue;
+        const float ar = radius(points[i - 1]), br = radius(points[i]);
+        capsule(float(a.x()), float(a.y()), ar + float(t0) * (br - ar), float(b.x()), float(b.y()),
+                ar + float(t1) * (br - ar));
     }
     composite(color, opacity);
 }
@@ -195,20 +204,41 @@ void StrokeRaster::capsule(float ax, float ay, float ar, float bx, float by, flo
     const int y1 = std::min(m_clip.bottom(), int(std::ceil(std::max(ay, by) + reach)));
     if (x0 > x1 || y0 > y1)
         return;
-    touch(x0 - m_clip.left(), y0 - m_clip.top(), x1 - m_clip.left(), y1 - m_clip.top());
     const float dx = bx - ax, dy = by - ay, dr = br - ar;
     const float len2 = dx * dx + dy * dy;
     const float inv = len2 > 1e-12f ? 1.0f / len2 : 0.0f;
-    // Whole groups of four for the vector loop: pixels past x1 lie beyond the reach, so they
-    // get zero coverage and leave the mask (and the untouched tiles) as they were.
-    int n = (x1 - x0 + 4) & ~3;
-    if (x0 + n - 1 > m_clip.right())
-        n = x1 - x0 + 1;
     for (int y = y0; y <= y1; ++y) {
-        const float py = float(y) + 0.5f - ay;
+        // Only the columns the capsule can reach in this row: the part of the segment within
+        // `reach` of the row, widened by `reach`. A long diagonal then costs its length times
+        // its width, not its bounding box (a zigzag across the canvas cost the canvas per
+        // segment).
+        const float cy = float(y) + 0.5f;
+        float lo = std::min(ax, bx), hi = std::max(ax, bx);
+        if (std::abs(dy) > 1e-6f) {
+            float t0 = (cy - reach - ay) / dy, t1 = (cy + reach - ay) / dy;
+            if (t0 > t1)
+                std::swap(t0, t1);
+            t0 = std::max(t0, 0.0f);
+            t1 = std::min(t1, 1.0f);
+            if (t0 > t1)
+                continue;
+            lo = std::min(ax + t0 * dx, ax + t1 * dx);
+            hi = std::max(ax + t0 * dx, ax + t1 * dx);
+        }
+        const int rx0 = std::max(x0, int(std::floor(lo - reach)));
+        const int rx1 = std::min(x1, int(std::ceil(hi + reach)));
+        if (rx0 > rx1)
+            continue;
+        touch(rx0 - m_clip.left(), y - m_clip.top(), rx1 - m_clip.left(), y - m_clip.top());
+        // Whole groups of four for the vector loop: pixels past rx1 lie beyond the reach, so
+        // they get zero coverage and leave the mask (and the untouched tiles) as they were.
+        int n = (rx1 - rx0 + 4) & ~3;
+        if (rx0 + n - 1 > m_clip.right())
+            n = rx1 - rx0 + 1;
+        const float py = cy - ay;
         std::uint8_t *row = m_mask.data() + std::size_t(y - m_clip.top()) * std::size_t(m_width) +
-                            std::size_t(x0 - m_clip.left());
-        const float px0 = float(x0) + 0.5f - ax;
+                            std::size_t(rx0 - m_clip.left());
+        const float px0 = float(rx0) + 0.5f - ax;
         int i = 0;
 #if defined(__SSE2__)
         i = coverSse(row, n, px0, py, dx, dy, inv, ar, dr);

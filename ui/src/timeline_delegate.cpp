@@ -6,6 +6,8 @@
 
 #include <QPainter>
 
+#include <algorithm>
+
 namespace finbook::ui {
 
 using model::FrameListModel;
@@ -25,11 +27,16 @@ void TimelineDelegate::paint(QPainter *painter, const QStyleOptionViewItem &opti
 {
     painter->save();
     const bool current = index.row() == m_view->editorState()->currentFrameIndex();
+    // Frames picked together (Ctrl/Shift-click) show their number band highlighted too.
+    const std::vector<int> picked = m_view->editorState()->selectedFrames();
+    const bool selected =
+        current ||
+        (picked.size() > 1 && std::binary_search(picked.begin(), picked.end(), index.row()));
     const QRect cell = option.rect;
     const QPalette &palette = option.palette;
     painter->fillRect(cell, palette.color(QPalette::Button));
     const QRect band(cell.left(), cell.top(), cell.width(), TimelineView::kBandHeight);
-    paintBand(painter, band, index, current);
+    paintBand(painter, band, index, selected);
     const QRect area =
         cell.adjusted(TimelineView::kPadding, TimelineView::kBandHeight + TimelineView::kPadding,
                       -TimelineView::kPadding, -TimelineView::kPadding);
@@ -37,8 +44,8 @@ void TimelineDelegate::paint(QPainter *painter, const QStyleOptionViewItem &opti
     if (!index.data(FrameListModel::InPlayRangeRole).toBool())
         painter->fillRect(area, QColor(0, 0, 0, 90)); // outside the play range
     paintHold(painter, area, index.data(FrameListModel::HoldRole).toInt());
-    if (current) {
-        QPen pen(palette.color(QPalette::Highlight), 2);
+    if (selected) {
+        QPen pen(palette.color(QPalette::Highlight), current ? 2 : 1);
         pen.setJoinStyle(Qt::MiterJoin);
         painter->setPen(pen);
         painter->setBrush(Qt::NoBrush);

@@ -46,6 +46,8 @@ TimelineView::TimelineView(EditorState *state, model::FrameListModel *model,
     connect(m_thumbnails, &ThumbnailCache::thumbnailsInvalidated, viewport(),
             qOverload<>(&QWidget::update));
     connect(m_state, &EditorState::currentFrameChanged, this, &TimelineView::followCurrentFrame);
+    connect(m_state, &EditorState::frameSelectionChanged, viewport(),
+            qOverload<>(&QWidget::update));
     connect(m_model->document(), &model::Document::settingsChanged, this,
             &TimelineView::updateCellSize);
     m_shownCurrent = m_state->currentFrameIndex();
@@ -181,6 +183,12 @@ void TimelineView::mousePressEvent(QMouseEvent *event)
         event->ignore();
         return;
     }
+    if (at.isValid() && pickFrame(at.row(), event->modifiers())) {
+        m_mode = Mode::None;
+        event->accept();
+        return;
+    }
+    m_state->setSelectedFrames({});
     if (!at.isValid() || pos.y() < visualRect(at).top() + kBandHeight) {
         m_mode = Mode::Scrub;
         m_state->setCurrentFrameIndex(rowAtX(pos.x()));
@@ -191,6 +199,42 @@ void TimelineView::mousePressEvent(QMouseEvent *event)
         m_state->setCurrentFrameIndex(at.row());
     }
     event->accept();
+}
+
+bool TimelineView::pickFrame(int row, Qt::KeyboardModifiers modifiers)
+{
+    const model::Document *doc = m_model->document();
+    const auto idsOf = [doc](const std::vector<int> &rows) {
+        std::vector<model::Id> ids;
+        for (int r : rows)
+            ids.push_back(doc->frameAt(r).id);
+        return ids;
+    };
+    if (modifiers & Qt::ShiftModifier) {
+        // A range from the current frame (the anchor) to the clicked one.
+        const int anchor = std::max(0, m_state->currentFrameIndex());
+        std::vector<int> rows;
+        for (int r = std::min(anchor, row); r <= std::max(anchor, row); ++r)
+            rows.push_back(r);
+        m_state->setSelectedFrames(idsOf(rows));
+        m_state->setCurrentFrameIndex(row);
+        return true;
+    }
+    if (!(modifiers & Qt::ControlModifier))
+        return false;
+    std::vector<int> rows = m_state->selectedFrames();
+    const auto it = std::find(rows.begin(), rows.end(), row);
+    if (it == rows.end()) {
+        rows.push_back(row);
+        m_state->setSelectedFrames(idsOf(rows));
+        m_state->setCurrentFrameIndex(row);
+    } else if (rows.size() > 1) {
+        rows.erase(it); // Ctrl-click on a picked frame drops it; the current frame stays picked
+        m_state->setSelectedFrames(idsOf(rows));
+        if (row == m_state->currentFrameIndex())
+            m_state->setCurrentFrameIndex(rows.back());
+    }
+    return true;
 }
 
 void TimelineView::mouseDoubleClickEvent(QMouseEvent *event)

@@ -97,8 +97,11 @@ void TimelineWidget::showOnionSkin()
     const QSignalBlocker blockBefore(m_before);
     const QSignalBlocker blockAfter(m_after);
     m_onion->setChecked(onion.enabled);
-    m_before->setValue(onion.before);
-    m_after->setValue(onion.after);
+    // Only when different: setValue() rewrites the text the user may be typing.
+    if (m_before->value() != onion.before)
+        m_before->setValue(onion.before);
+    if (m_after->value() != onion.after)
+        m_after->setValue(onion.after);
 }
 
 void TimelineWidget::editOnionSkin()

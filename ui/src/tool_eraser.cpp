@@ -4,6 +4,7 @@
 #include <finbook/model/render.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/editor_state.h>
+#include <finbook/ui/stroke_editing.h>
 #include <finbook/ui/tool_eraser.h>
 
 #include <QPainter>
@@ -92,6 +93,13 @@ void StrokeEraserTool::eraseAlong(const QPointF &from, const QPointF &to)
         doc->undoStack()->beginMacro(tr("Erase"));
         m_macroOpen = true;
     }
+    // Erasing from a posed object makes its pose the drawing first, so the strokes left
+    // stay where they are shown (re-meshing without them would shift the pose).
+    std::vector<model::Id> groups;
+    for (model::Id id : hits)
+        if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
+            groups.push_back(doc->frameAt(at.frame).groups[std::size_t(at.group)].id);
+    StrokeEditing::applyPoses(doc, groups);
     for (model::Id id : hits)
         doc->undoStack()->push(new model::RemoveStrokeCommand(doc, id));
 }

@@ -273,8 +273,7 @@ void SelectTool::commitTransform()
     const QString text = m_mode == Mode::Move     ? tr("Move Strokes")
                          : m_mode == Mode::Rotate ? tr("Rotate Strokes")
                                                   : tr("Scale Strokes");
-    doc->undoStack()->beginMacro(text);
-    StrokeEditing::applyPoses(doc, groups);
+    StrokeEditing::beginRestEdit(doc, text, groups);
     doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, ids, data, text));
     doc->undoStack()->endMacro();
 }

@@ -1,4 +1,5 @@
-// The pen's toolbar: colour swatches, a colour picker, width and smoothing.
+// The pen's toolbar: colour swatches (two rows, named "swatch#rrggbb"), a colour picker,
+// width and smoothing.
 #pragma once
 
 #include <QToolBar>
@@ -17,7 +18,7 @@ public:
     explicit BrushToolBar(PenTool *pen, QWidget *parent = nullptr);
 
 private:
-    void addSwatch(const QColor &color);
+    QWidget *createSwatches(const QList<QColor> &colors);
     void showSettings();
 
     PenTool *m_pen;

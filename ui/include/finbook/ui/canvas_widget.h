@@ -19,6 +19,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace finbook::model {
@@ -65,6 +66,8 @@ public:
     void fitToView();  // whole page visible, centred; kept fitted on resize
     void actualSize(); // 100 %, centred
     void panBy(const QPointF &widgetDelta);
+    // The canvas point under the mouse while the mouse is over the canvas (paste lands there).
+    std::optional<QPointF> cursorPos() const;
 
     // --- for tools
     // Strokes left out of the cached frame while a tool draws them itself (transform preview).
@@ -72,6 +75,10 @@ public:
     // Repaints the widget area covering `canvasRect` (an empty rect repaints everything).
     void updateCanvasRect(const QRectF &canvasRect = {});
     void postMessage(const QString &message);
+    // A frame shown instead of the current one (a dialog's live preview); std::nullopt shows
+    // the document again. The document is never touched.
+    void setPreviewFrame(std::optional<model::Frame> frame);
+    bool hasPreviewFrame() const { return m_preview.has_value(); }
     // Marks the cached frame and onion images stale (the repaint benchmark's cold case).
     void invalidateCache();
 
@@ -129,10 +136,12 @@ private:
 
     Drag m_drag = Drag::None;
     QPointF m_lastPanPos;
+    std::optional<QPointF> m_hover; // widget position of the mouse, while over the canvas
     bool m_spaceHeld = false;
     bool m_tabletDown = false;
 
     std::vector<model::Id> m_suppressed;
+    std::optional<model::Frame> m_preview;
     QImage m_frameLayer; // current frame, strokes only, transparent elsewhere
     QImage m_onionLayer; // tinted neighbours
     bool m_frameLayerValid = false;

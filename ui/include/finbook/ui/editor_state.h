@@ -37,6 +37,10 @@ public:
     // Selected strokes (lasso), all in the current frame. Cleared when the frame changes.
     const std::vector<model::Id> &selectedStrokes() const { return m_selection; }
 
+    // Frames picked together in the timeline (Ctrl/Shift-click), as indices in document order;
+    // just the current frame when no other is picked. A current frame outside the picked
+    // ones clears them.
+    std::vector<int> selectedFrames() const;
     const OnionSkin &onionSkin() const { return m_onion; }
     bool isPlaying() const { return m_playing; }
     bool showMesh() const { return m_showMesh; }
@@ -45,6 +49,7 @@ public slots:
     void setCurrentFrameIndex(int index);
     void setCurrentGroupId(model::Id groupId);
     void setSelectedStrokes(std::vector<model::Id> strokeIds);
+    void setSelectedFrames(std::vector<model::Id> frameIds);
     void setOnionSkin(const OnionSkin &onion);
     void setPlaying(bool playing);
     void setShowMesh(bool show);
@@ -55,6 +60,7 @@ signals:
     void currentFrameChanged(int index);
     void currentGroupChanged(model::Id groupId);
     void selectionChanged();
+    void frameSelectionChanged();
     void onionSkinChanged();
     void playingChanged(bool playing);
     void showMeshChanged(bool show);
@@ -66,6 +72,7 @@ private:
     int m_frameIndex = 0;
     model::Id m_groupId = model::kNoId;
     std::vector<model::Id> m_selection;
+    std::vector<model::Id> m_frameSelection;
     OnionSkin m_onion;
     bool m_playing = false;
     bool m_showMesh = false;

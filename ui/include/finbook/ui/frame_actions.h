@@ -6,6 +6,8 @@
 // frame.insertBefore  Ctrl+F5            new empty frame before the current one, made current
 // frame.insertAfter   F5                 new empty frame after the current one, made current
 // frame.duplicate     F6                 copy of the current frame right after it, made current
+// frame.inbetweens    Ctrl+Shift+F6      in-betweens between the first and last picked frames
+//                                        (Ctrl/Shift-click in the timeline); asks for them
 // frame.delete        Shift+F5           deletes the current frame (disabled on the last one)
 // frame.moveLeft      Alt+Left           swaps the current frame with the one before
 // frame.moveRight     Alt+Right          swaps the current frame with the one after
@@ -15,6 +17,8 @@
 // frame.next          .                  next frame
 // F5 / F6 / Shift+F5 follow Flash and Pencil2D; ',' and '.' follow Pencil2D and Krita.
 #pragma once
+
+#include <finbook/model/types.h>
 
 #include <QAction>
 #include <QObject>
@@ -31,6 +35,7 @@ public:
     QAction *insertBefore() const { return m_insertBefore; }
     QAction *insertAfter() const { return m_insertAfter; }
     QAction *duplicate() const { return m_duplicate; }
+    QAction *inbetweens() const { return m_inbetweens; }
     QAction *remove() const { return m_remove; }
     QAction *moveLeft() const { return m_moveLeft; }
     QAction *moveRight() const { return m_moveRight; }
@@ -41,11 +46,17 @@ public:
     // Everything above in menu order, with separator actions between the groups.
     QList<QAction *> menuActions() const { return m_menu; }
 
+signals:
+    // frame.inbetweens was triggered for these keys (first before second in the document);
+    // whoever owns a window opens the dialog.
+    void inbetweensRequested(finbook::model::Id firstKey, finbook::model::Id secondKey);
+
 private:
     QAction *makeAction(const QString &name, const QString &text, const QKeySequence &shortcut);
     void addSeparator();
     void insertFrame(int index);
     void duplicateFrame();
+    void requestInbetweens();
     void removeFrame();
     void moveFrame(int delta);
     void changeHold(int delta);
@@ -56,6 +67,7 @@ private:
     QAction *m_insertBefore;
     QAction *m_insertAfter;
     QAction *m_duplicate;
+    QAction *m_inbetweens;
     QAction *m_remove;
     QAction *m_moveLeft;
     QAction *m_moveRight;

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <finbook/ui/preferences.h>
+#include <finbook/ui/recovery/recovery_dialog.h>
 
 #include <QMainWindow>
 #include <QMessageBox>
@@ -25,14 +26,17 @@ class QLabel;
 class QToolBar;
 
 namespace finbook::model {
+class Autosaver;
 class Document;
-}
+class RecoverySession;
+} // namespace finbook::model
 
 namespace finbook::ui {
 
 class CanvasTool;
 class CanvasWidget;
 class DeformActions;
+class CageActions;
 class EditorState;
 class FrameActions;
 class ObjectActions;
@@ -50,6 +54,9 @@ public:
 
     // Opens `path`; on failure tells the user why and keeps the current document.
     bool openFile(const QString &path);
+    // Adds a 2D OFF mesh to the current frame as a new object (its outline as strokes), as
+    // one undo step. False, with a message, when the file cannot be read.
+    bool importMesh(const QString &path);
     // Saves to `path` and makes it the document's file; false (reported) on failure.
     bool saveFile(const QString &path);
     // Replaces the document with a new one (1 frame, 1 empty object) without asking.
@@ -73,22 +80,46 @@ public:
     // Asks to save unsaved changes; true when it is fine to go on (saved or discarded).
     bool maybeSave();
 
+    // Offers the recovery copies that Finbooks which did not close normally left (at start).
+    void offerRecovery();
+    // Opens a recovery copy as this window's unsaved document. False if the user kept the
+    // current document or the copy cannot be read (said to the user).
+    bool restoreRecovery(const model::RecoveryCopy &copy);
+    model::Autosaver *autosaver() const { return m_autosaver; }
+    const model::RecoverySession *recoverySession() const { return m_recovery.get(); }
+
 signals:
     void errorReported(const QString &message);
+    // After "Open anyway": what the reader left out or repaired, one sentence each.
+    void recoveredProblems(const QStringList &problems);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
-    // Shows one sentence to the user. Tests override these to avoid modal dialogs.
+    // Shows one sentence to the user (with technical details under "Show Details" when a
+    // file would not open). Tests override these to avoid modal dialogs.
     virtual void reportError(const QString &title, const QString &message);
     virtual QMessageBox::StandardButton askToSave();
+    // A file that is damaged but partly readable: true to open what is readable of it.
+    virtual bool askOpenAnyway(const QString &message);
+    struct RecoveryChoice {
+        RecoveryDialog::Action action;
+        int index; // into the copies offered
+    };
+    virtual RecoveryChoice askRecovery(const std::vector<model::RecoveryCopy> &copies);
     virtual QString askOpenPath();
     virtual QString askSavePath();
     virtual QString askExportFolder();
 
 private:
+    // recovery/main_window_recovery.cpp
+    void createRecovery();
+    void applyAutosaveInterval();
     // main_window.cpp
     void createCanvasAndTools();
     void createDeformation();
+    // Every pending converged pose solved now, before the document is saved or exported.
+    void settlePoses();
+    void createSkeleton(QMenu *deformMenu); // skeleton/main_window_skeleton.cpp
     void createDocks();
     void createStatusBar();
     void connectStatus();
@@ -96,7 +127,12 @@ private:
     void updateStatus();
     void readSettings();
     void writeSettings() const;
+    // Restores the pen, the tool and the onion skin of the last run and saves them on change.
+    void rememberEditor();
     void toolAdded(CanvasTool *tool);
+    // main_window_toolbars.cpp
+    void arrangeToolBars();
+    QSize defaultSize() const;
     // main_window_menus.cpp
     void createActions();
     void createFileMenu();
@@ -111,11 +147,14 @@ private:
     void showOnionSkinSettings();
     void showShortcuts();
     void showAbout();
+    // inbetween/main_window_inbetween.cpp
+    void generateInbetweens(model::Id firstKey, model::Id secondKey);
     // main_window_files.cpp
     void newFile();
     void open();
     bool save();
     bool saveAs();
+    bool openRecovering(const QString &path);
     void exportFrames();
     void addRecentFile(const QString &path);
     void rebuildRecentMenu();
@@ -130,8 +169,12 @@ private:
     ObjectActions *m_objectActions = nullptr;
     PlaybackController *m_playback = nullptr;
     DeformActions *m_deform = nullptr;
+    CageActions *m_cage = nullptr;
     Preferences m_prefs;
     QString m_path;
+    std::unique_ptr<model::RecoverySession> m_recovery;
+    model::Autosaver *m_autosaver = nullptr;
+    QString m_errorDetails; // for the reportError() call in progress only
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;

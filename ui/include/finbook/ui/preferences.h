@@ -1,4 +1,5 @@
-// The editor's preferences: what new documents start with and the onion-skin defaults.
+// The editor's preferences: what new documents start with, and the onion skin (the current
+// one: the main window saves it whenever it changes, so it comes back at the next start).
 // Stored in QSettings under "preferences/".
 #pragma once
 
@@ -14,6 +15,7 @@ struct Preferences {
     OnionSkin onionSkin;
     int frameRate = 12;          // frames per second of new documents
     QSize canvasSize{1280, 720}; // page size of new documents
+    int autosaveMinutes = 2;     // a recovery copy of unsaved changes this often; 0 = never
 
     static Preferences load(QSettings &settings);
     void save(QSettings &settings) const;

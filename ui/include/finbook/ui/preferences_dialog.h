@@ -1,4 +1,5 @@
-// Edit → Preferences: new-document defaults, onion-skin defaults and keyboard shortcuts.
+// Edit → Preferences: new-document defaults, the onion skin and keyboard shortcuts (two per
+// command: a shortcut and an alternative).
 // The dialog refuses to close with OK while two actions share a shortcut.
 #pragma once
 
@@ -23,7 +24,7 @@ public:
                       QWidget *parent = nullptr);
 
     Preferences preferences() const;
-    QMap<QString, QKeySequence> shortcuts() const;
+    QMap<QString, QList<QKeySequence>> shortcuts() const;
     ShortcutEditor *shortcutEditor() const { return m_shortcuts; }
 
     void accept() override;
@@ -34,6 +35,7 @@ private:
     QSpinBox *m_fps = nullptr;
     QSpinBox *m_width = nullptr;
     QSpinBox *m_height = nullptr;
+    QSpinBox *m_autosave = nullptr;
     OnionSkinEditor *m_onion;
     ShortcutEditor *m_shortcuts;
 };

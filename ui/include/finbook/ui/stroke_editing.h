@@ -7,6 +7,7 @@
 
 #include <QCoreApplication>
 #include <QMimeData>
+#include <QPointF>
 
 #include <memory>
 #include <optional>
@@ -40,18 +41,33 @@ public:
     // Removes the selected strokes (one undo step). False when nothing was selected.
     static bool deleteSelection(EditorState &state);
     // Makes the pose of every posed object among `groupIds` its drawing (one Apply Pose
-    // command each), so an edit that works on rest strokes acts on what is on screen. Call
+    // command each; the rig stays, rebased onto the new drawing), so an edit that works on
+    // rest strokes acts on what is on screen. Returns whether any pose was applied. Call
     // inside the edit's macro.
-    static void applyPoses(model::Document *doc, const std::vector<model::Id> &groupIds);
+    static bool applyPoses(model::Document *doc, const std::vector<model::Id> &groupIds);
+    // Opens the undo macro of a rest edit on `groupIds` and applies their poses first; the
+    // macro's text says "(pose applied)" when it did. Close it with endMacro().
+    static void beginRestEdit(model::Document *doc, const QString &text,
+                              const std::vector<model::Id> &groupIds);
     // Selects every stroke of the visible, unlocked objects of the current frame.
     static void selectAll(EditorState &state);
 
     static std::vector<model::StrokeDataPtr> selectedData(const EditorState &state);
     static bool copySelection(const EditorState &state);
     static bool cutSelection(EditorState &state);
-    // Pastes clipboard strokes at their original positions into the current object and
-    // selects them. Returns false (with `problem` set if refused) when nothing was pasted.
-    static bool paste(EditorState &state, QString *problem = nullptr);
+    // Pastes clipboard strokes into the current object and selects them. They land centred
+    // on `at` (canvas pixels, the mouse over the canvas) when given; else where they were
+    // copied if the original is not in this frame (another frame: the drawing stays in
+    // register), or offset down and right from it, one more step for each copy already
+    // there, so a paste never hides under its original. Returns false (with `problem` set if
+    // refused) when nothing was pasted.
+    static bool paste(EditorState &state, QString *problem = nullptr,
+                      std::optional<QPointF> at = std::nullopt);
+    // The move paste() applies to `strokes` in `frame` (see paste()).
+    static QPointF pasteShift(const model::Frame *frame,
+                              const std::vector<model::StrokeDataPtr> &strokes,
+                              std::optional<QPointF> at);
+    static constexpr qreal kPasteStep = 20.0; // canvas pixels per repeated paste
     static bool clipboardHasStrokes();
 };
 

@@ -5,6 +5,8 @@
 //    follows the pointer;
 //  - press on a thumbnail makes that frame current; dragging it past a neighbour shows an
 //    insertion marker and the release pushes one MoveFrameCommand (Escape cancels);
+//  - Ctrl-click picks frames together (toggles one), Shift-click picks the range from the
+//    current frame (e.g. two keys for Frame → Generate In-betweens…);
 //  - right click makes the frame current and opens the frame menu.
 // Reordering is an internal drag rather than QDrag: it needs no nested event loop, works the
 // same on every platform plugin and is what the GUI tests drive.
@@ -58,6 +60,9 @@ protected:
 
 private:
     enum class Mode { None, Scrub, Press, Reorder };
+    // Ctrl-click toggles a frame in the picked set, Shift-click picks the range from the
+    // current frame; returns false for a plain click.
+    bool pickFrame(int row, Qt::KeyboardModifiers modifiers);
     int rowAtX(int x) const;
     int slotAtX(int x) const;
     void updateCellSize();

@@ -1,8 +1,10 @@
-#include <finbook/model/pin_commands.h>
+#include "../rig/rig_prompt.h"
+
+#include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/editor_state.h>
-#include <finbook/ui/tool_pin.h>
+#include <finbook/ui/pins/tool_pin.h>
 
 #include <QPainter>
 #include <QPainterPath>
@@ -42,7 +44,7 @@ void PinTool::activate()
     // Prepare every pinned object of the frame, so the first drag does not wait.
     if (const model::Frame *f = state()->currentFrame())
         for (const model::StrokeGroup &g : f->groups)
-            if (!g.pins.empty())
+            if (!g.rig.pins.empty())
                 m_controller->prepare(g.id);
 }
 
@@ -64,7 +66,7 @@ PinTool::PinRef PinTool::pinAt(const ToolEvent &event) const
     for (const model::StrokeGroup &g : f->groups) {
         if (!editable(g))
             continue;
-        for (const model::Pin &p : g.pins) {
+        for (const model::Pin &p : g.rig.pins) {
             qreal d = QLineF(p.target, event.pos).length();
             if (g.id == current)
                 d *= 0.5; // ties go to the object being worked on
@@ -91,7 +93,7 @@ bool PinTool::objectHit(const model::StrokeGroup &group, const ToolEvent &event)
     // Inside the object's (posed) mesh counts too: a pin in the middle of a filled shape.
     if (const model::DeformSetup *setup = m_controller->setup(group.id)) {
         const Eigen::MatrixX2d &U = *m_controller->poseVertices(group.id);
-        const Eigen::MatrixX3i &F = setup->meshed->mesh.F;
+        const Eigen::MatrixX3i &F = setup->meshTriangles();
         const QPointF p = event.pos;
         for (Eigen::Index t = 0; t < F.rows(); ++t) {
             const QPointF a(U(F(t, 0), 0), U(F(t, 0), 1)), b(U(F(t, 1), 0), U(F(t, 1), 1)),
@@ -155,6 +157,10 @@ void PinTool::press(const ToolEvent &event)
         return;
     }
     model::Document *doc = state()->document();
+    // Pins replace a cage: ask before its pose is lost.
+    if (const model::StrokeGroup *g = doc->group(groupId);
+        g->rig.kind() == model::RigKind::Cage && !confirmDiscardingPose(canvas()->window(), *g))
+        return;
     // On a posed object the click is on the posed drawing; the pin belongs where that point
     // is on the rest drawing.
     const QPointF rest = m_controller->restPointFor(groupId, event.pos);
@@ -208,7 +214,7 @@ void PinTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidget)
         if (!g.visible)
             continue;
         const bool waiting = m_controller->isWaiting(g.id);
-        for (const model::Pin &p : g.pins) {
+        for (const model::Pin &p : g.rig.pins) {
             const QPointF at = canvasToWidget.map(p.target);
             const bool active = p.id == m_drag.pinId || p.id == m_hover.pinId;
             QColor fill = g.id == current ? QColor(230, 60, 40) : QColor(150, 150, 150);

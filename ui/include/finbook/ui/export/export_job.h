@@ -1,0 +1,48 @@
+// ExportJob: one model::exportAnimation run on its own thread, so the window stays responsive.
+//
+// The job works on a snapshot (model::ExportSource), never on the live document, so editing
+// during an export is safe. progressed() is emitted on the worker thread (connections to
+// GUI objects are queued); finished() once, when the worker is done. cancel() is safe from
+// any thread; the export then stops at the next frame and leaves nothing at the target.
+#pragma once
+
+#include <finbook/model/export/exporter.h>
+
+#include <QObject>
+#include <QStringList>
+
+#include <atomic>
+
+class QThread;
+
+namespace finbook::ui {
+
+class ExportJob : public QObject {
+    Q_OBJECT
+public:
+    ExportJob(model::ExportSource source, model::ExportOptions options, QObject *parent = nullptr);
+    ~ExportJob() override; // cancels a running export and waits for it
+
+    void start();
+    void cancel() { m_cancel = true; }
+    bool isRunning() const { return m_running; }
+    const model::ExportOptions &options() const { return m_options; }
+
+signals:
+    void progressed(qint64 done, qint64 total);
+    // ok false: `error` says why (cancelled, disk full, ffmpeg ...); `files` what was written.
+    void finished(bool ok, const model::ExportError &error, const QStringList &files);
+
+private:
+    void run();
+
+    model::ExportSource m_source;
+    model::ExportOptions m_options;
+    std::atomic<bool> m_cancel{false};
+    bool m_running = false;
+    QThread *m_thread = nullptr;
+};
+
+} // namespace finbook::ui
+
+Q_DECLARE_METATYPE(finbook::model::ExportError)

@@ -1,0 +1,70 @@
+// Frame → Generate In-betweens…: how many frames go between two keys and how they are spaced,
+// what will be interpolated and what held, with the middle in-between previewed live.
+//
+// The dialog never changes the document. Its preview is a planned frame posed synchronously
+// (solveInbetweenPoses, one factorization per object for the dialog's lifetime) and handed to
+// the preview sink (the canvas); the sink gets std::nullopt when the dialog closes. The caller
+// pushes InsertInbetweensCommand with count() and options() on Accepted.
+#pragma once
+
+#include <finbook/deform/arap.h>
+#include <finbook/model/document.h>
+#include <finbook/model/inbetween/inbetween_plan.h>
+#include <finbook/model/inbetween/inbetween_solve.h>
+
+#include <QDialog>
+
+#include <functional>
+#include <optional>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QSlider;
+class QSpinBox;
+
+namespace finbook::ui {
+
+class InbetweenDialog : public QDialog {
+    Q_OBJECT
+public:
+    using PreviewSink = std::function<void(std::optional<model::Frame>)>;
+
+    // `firstKey` and `secondKey` in either order (the earlier frame is the first key).
+    InbetweenDialog(model::Document *document, model::Id firstKey, model::Id secondKey,
+                    const deform::ArapOptions &options, PreviewSink preview,
+                    QWidget *parent = nullptr);
+    ~InbetweenDialog() override;
+
+    model::Id firstKey() const { return m_first; }
+    model::Id secondKey() const { return m_second; }
+    int count() const;
+    model::InbetweenOptions options() const;
+    // The middle in-between as previewed now (nullopt if its pose could not be solved).
+    const std::optional<model::Frame> &previewFrame() const { return m_preview; }
+
+    void done(int result) override;
+
+private:
+    QWidget *buildControls();
+    void updatePlan();
+    QString describe(const model::InbetweenObjectReport &object) const;
+
+    model::Document *m_doc;
+    model::Id m_first;
+    model::Id m_second;
+    deform::ArapOptions m_arap;
+    PreviewSink m_sink;
+    model::DeformSetupCache m_setups;
+    std::optional<model::Frame> m_preview;
+
+    QSpinBox *m_count = nullptr;
+    QComboBox *m_spacing = nullptr;
+    QSlider *m_favour = nullptr;
+    QCheckBox *m_arcs = nullptr;
+    QListWidget *m_objects = nullptr;
+    QLabel *m_status = nullptr;
+};
+
+} // namespace finbook::ui

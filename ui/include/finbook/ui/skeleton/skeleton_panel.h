@@ -1,0 +1,39 @@
+// The Skeleton panel: the four refinement sliders of the current object's skeleton (bone
+// complexity, merge junctions, prune, collapse). Moving a slider re-refines the skeleton at
+// once (a preview of every position); one slider drag is one undo step.
+#pragma once
+
+#include <finbook/model/skeleton/skeleton_rig.h>
+
+#include <QWidget>
+
+#include <array>
+
+class QLabel;
+class QSlider;
+
+namespace finbook::ui {
+
+class EditorState;
+
+class SkeletonPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit SkeletonPanel(EditorState *state, QWidget *parent = nullptr);
+    // complexity, merge, prune, collapse
+    QSlider *slider(int index) const { return m_sliders[std::size_t(index)]; }
+
+signals:
+    void messagePosted(const QString &message);
+
+private:
+    void sync();
+    void changed();
+
+    EditorState *m_state;
+    std::array<QSlider *, 4> m_sliders{};
+    QLabel *m_hint = nullptr;
+    int m_serial = 0;
+};
+
+} // namespace finbook::ui

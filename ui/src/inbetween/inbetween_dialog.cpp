@@ -1,0 +1,166 @@
+#include <finbook/model/inbetween/inbetween_commands.h>
+#include <finbook/ui/inbetween/inbetween_dialog.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QSlider>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace finbook::ui {
+
+namespace {
+constexpr int kDefaultCount = 3;
+constexpr int kFavourSteps = 100; // the slider's -100..100 is favour -1..1
+} // namespace
+
+InbetweenDialog::InbetweenDialog(model::Document *document, model::Id firstKey, model::Id secondKey,
+                                 const deform::ArapOptions &options, PreviewSink preview,
+                                 QWidget *parent)
+    : QDialog(parent)
+    , m_doc(document)
+    , m_first(firstKey)
+    , m_second(secondKey)
+    , m_arap(options)
+    , m_sink(std::move(preview))
+{
+    if (m_doc->frameIndex(m_first) > m_doc->frameIndex(m_second))
+        std::swap(m_first, m_second);
+    setWindowTitle(tr("Generate In-betweens"));
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(buildControls());
+    m_objects = new QListWidget(this);
+    m_objects->setObjectName(QStringLiteral("inbetweenObjects"));
+    m_objects->setSelectionMode(QAbstractItemView::NoSelection);
+    layout->addWidget(new QLabel(tr("Objects:"), this));
+    layout->addWidget(m_objects);
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("inbetweenStatus"));
+    m_status->setWordWrap(true);
+    layout->addWidget(m_status);
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    layout->addWidget(buttons);
+    updatePlan();
+}
+
+InbetweenDialog::~InbetweenDialog() = default;
+
+QWidget *InbetweenDialog::buildControls()
+{
+    auto *box = new QWidget(this);
+    auto *form = new QFormLayout(box);
+    form->setContentsMargins(0, 0, 0, 0);
+    m_count = new QSpinBox(box);
+    m_count->setObjectName(QStringLiteral("inbetweenCount"));
+    m_count->setRange(1, model::InsertInbetweensCommand::kMaxInbetweens);
+    m_count->setValue(kDefaultCount);
+    form->addRow(tr("&Frames between the keys:"), m_count);
+    m_spacing = new QComboBox(box);
+    m_spacing->setObjectName(QStringLiteral("inbetweenSpacing"));
+    m_spacing->addItem(tr("Linear"), int(model::SpacingKind::Linear));
+    m_spacing->addItem(tr("Ease in (slow from the first key)"), int(model::SpacingKind::EaseIn));
+    m_spacing->addItem(tr("Ease out (slow into the second key)"), int(model::SpacingKind::EaseOut));
+    m_spacing->addItem(tr("Ease in and out"), int(model::SpacingKind::EaseInOut));
+    m_spacing->addItem(tr("Favour…"), int(model::SpacingKind::Favour));
+    form->addRow(tr("&Spacing:"), m_spacing);
+    m_favour = new QSlider(Qt::Horizontal, box);
+    m_favour->setObjectName(QStringLiteral("inbetweenFavour"));
+    m_favour->setRange(-kFavourSteps, kFavourSteps);
+    m_favour->setToolTip(tr("Left favours the first key, right the second."));
+    m_favour->setEnabled(false);
+    form->addRow(tr("F&avour:"), m_favour);
+    m_arcs = new QCheckBox(tr("Move pins and cage corners along &arcs"), box);
+    m_arcs->setObjectName(QStringLiteral("inbetweenArcs"));
+    m_arcs->setChecked(true);
+    m_arcs->setToolTip(tr("A limb swung between the keys keeps its length. Unchecked, every "
+                          "target moves in a straight line."));
+    form->addRow(m_arcs);
+    connect(m_count, &QSpinBox::valueChanged, this, &InbetweenDialog::updatePlan);
+    connect(m_spacing, &QComboBox::currentIndexChanged, this, [this] {
+        m_favour->setEnabled(options().spacing.kind == model::SpacingKind::Favour);
+        updatePlan();
+    });
+    connect(m_favour, &QSlider::valueChanged, this, &InbetweenDialog::updatePlan);
+    connect(m_arcs, &QCheckBox::toggled, this, &InbetweenDialog::updatePlan);
+    return box;
+}
+
+int InbetweenDialog::count() const
+{
+    return m_count->value();
+}
+
+model::InbetweenOptions InbetweenDialog::options() const
+{
+    model::InbetweenOptions o;
+    o.spacing.kind = model::SpacingKind(m_spacing->currentData().toInt());
+    o.spacing.favour = double(m_favour->value()) / kFavourSteps;
+    o.path = m_arcs->isChecked() ? model::TargetPath::Arc : model::TargetPath::Straight;
+    return o;
+}
+
+QString InbetweenDialog::describe(const model::InbetweenObjectReport &object) const
+{
+    const QString name = object.name.isEmpty() ? tr("(unnamed)") : object.name;
+    switch (object.fate) {
+    case model::ObjectFate::Interpolated:
+        return tr("%1: interpolated").arg(name);
+    case model::ObjectFate::HeldNoRig:
+        return tr("%1: held from the first key (no pins or cage)").arg(name);
+    case model::ObjectFate::HeldRigDiffers:
+        return tr("%1: held from the first key (its pins or cage differ between the keys)")
+            .arg(name);
+    case model::ObjectFate::FirstKeyOnly:
+        return tr("%1: only in the first key, held in the first half").arg(name);
+    case model::ObjectFate::SecondKeyOnly:
+        return tr("%1: only in the second key, held in the second half").arg(name);
+    }
+    return name;
+}
+
+void InbetweenDialog::updatePlan()
+{
+    const model::Frame *first = m_doc->frame(m_first);
+    const model::Frame *second = m_doc->frame(m_second);
+    if (!first || !second || m_first == m_second) {
+        m_status->setText(tr("Select two different frames as keys."));
+        return;
+    }
+    const model::InbetweenOptions o = options();
+    const std::vector<double> times = model::inbetweenTimes(count(), o.spacing);
+    const double middle = times[(times.size() - 1) / 2];
+    model::InbetweenPlan plan = model::planInbetweens(*first, *second, {middle}, o.path);
+    m_objects->clear();
+    for (const model::InbetweenObjectReport &object : plan.objects)
+        m_objects->addItem(describe(object));
+    const auto solved = model::solveInbetweenPoses(plan.frames, m_arap, &m_setups);
+    if (!solved) {
+        m_preview.reset();
+        m_status->setText(tr("The preview could not be posed: %1").arg(solved.error()));
+    } else {
+        m_preview = plan.frames.front();
+        m_status->setText(plan.interpolatedCount() == 0
+                              ? tr("No object has matching pins or a matching cage in both "
+                                   "keys: the in-betweens will only hold drawings.")
+                              : tr("The canvas shows the middle in-between."));
+    }
+    if (m_sink)
+        m_sink(m_preview);
+}
+
+void InbetweenDialog::done(int result)
+{
+    if (m_sink)
+        m_sink(std::nullopt); // the preview never outlives the dialog
+    QDialog::done(result);
+}
+
+} // namespace finbook::ui

@@ -1,0 +1,78 @@
+// The main window's skeleton parts: the Bone tool, View → Show Skeleton, the Skeleton panel
+// and Deform → Skinning (rigid or linear blend for the current object).
+#include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/deform_actions.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/main_window.h>
+#include <finbook/ui/shortcut_registry.h>
+#include <finbook/ui/skeleton/skeleton_overlay.h>
+#include <finbook/ui/skeleton/skeleton_panel.h>
+#include <finbook/ui/skeleton/tool_bone.h>
+
+#include <QActionGroup>
+#include <QDockWidget>
+#include <QMenu>
+#include <QStatusBar>
+
+namespace finbook::ui {
+
+void MainWindow::createSkeleton(QMenu *deformMenu)
+{
+    addTool(std::make_unique<BoneTool>(m_deform->controller()));
+
+    auto overlay = std::make_unique<SkeletonOverlay>(m_state, m_canvas);
+    SkeletonOverlay *skeletons = overlay.get();
+    m_canvas->addOverlay(std::move(overlay));
+    QAction *show = makeAction(QStringLiteral("view.showSkeleton"), tr("Show S&keleton"));
+    show->setCheckable(true);
+    connect(show, &QAction::toggled, skeletons, &SkeletonOverlay::setShown);
+    m_viewMenu->insertAction(action(QStringLiteral("view.showMesh")), show);
+
+    auto *panel = new SkeletonPanel(m_state);
+    auto *dock = new QDockWidget(tr("Skeleton"), this);
+    dock->setObjectName(QStringLiteral("skeletonDock"));
+    dock->setWidget(panel);
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    m_docksMenu->addAction(dock->toggleViewAction());
+    connect(panel, &SkeletonPanel::messagePosted, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 6000); });
+
+    QMenu *skinning = deformMenu->addMenu(tr("&Skinning"));
+    auto *group = new QActionGroup(skinning);
+    const struct {
+        model::SkinningMode mode;
+        QString name;
+        QString text;
+    } modes[] = {{model::SkinningMode::Rigid, QStringLiteral("deform.skinningRigid"),
+                  tr("&Rigid (Bones Pin the Mesh)")},
+                 {model::SkinningMode::LinearBlend, QStringLiteral("deform.skinningLinear"),
+                  tr("&Linear Blend")}};
+    std::vector<std::pair<QAction *, model::SkinningMode>> choices;
+    for (const auto &m : modes) {
+        QAction *a = makeAction(m.name, m.text);
+        a->setCheckable(true);
+        group->addAction(a);
+        skinning->addAction(a);
+        const model::SkinningMode mode = m.mode;
+        connect(a, &QAction::triggered, this, [this, mode] {
+            const model::StrokeGroup *g = m_state->currentGroup();
+            if (g && !g->rig.skeleton.empty())
+                m_doc->undoStack()->push(new model::SetSkinningModeCommand(m_doc, g->id, mode));
+        });
+        choices.emplace_back(a, mode);
+    }
+    auto sync = [this, skinning, choices] {
+        const model::StrokeGroup *g = m_state->currentGroup();
+        const bool has = g && !g->rig.skeleton.empty();
+        skinning->setEnabled(has);
+        for (const auto &[a, mode] : choices)
+            a->setChecked(has && g->rig.skeleton.mode == mode);
+    };
+    connect(m_state, &EditorState::currentGroupChanged, skinning, sync);
+    connect(m_state, &EditorState::currentFrameChanged, skinning, sync);
+    connect(m_doc, &model::Document::constraintsChanged, skinning, sync);
+    sync();
+}
+
+} // namespace finbook::ui

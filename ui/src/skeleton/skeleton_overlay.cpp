@@ -1,0 +1,82 @@
+#include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/skeleton/skeleton_overlay.h>
+
+#include <QPainter>
+
+namespace finbook::ui {
+
+void paintSkeleton(QPainter &painter, const QTransform &canvasToWidget,
+                   const model::SkeletonRig &skeleton, const SkeletonLook &look)
+{
+    if (skeleton.empty() || !skeleton.isValid())
+        return;
+    const std::vector<QPointF> joints = skeleton.posedJoints();
+    const qreal scale = std::sqrt(std::abs(canvasToWidget.determinant()));
+    const QColor bone = look.current ? QColor(240, 140, 20) : QColor(130, 130, 130);
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+        const int p = skeleton.parent[j];
+        if (p < 0)
+            continue;
+        const QLineF line(canvasToWidget.map(joints[std::size_t(p)]),
+                          canvasToWidget.map(joints[j]));
+        const bool hot = int(j) == look.highlightJoint;
+        painter.setPen(QPen(QColor(255, 255, 255, 200), hot ? 7 : 5, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(line);
+        painter.setPen(
+            QPen(hot ? bone.darker(130) : bone, hot ? 4 : 2.5, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(line);
+    }
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+        const QPointF at = canvasToWidget.map(joints[j]);
+        const qreal r = std::max(3.0, skeleton.radius[j] * scale);
+        QColor ring = bone;
+        ring.setAlpha(look.current ? 170 : 110);
+        painter.setPen(QPen(ring, int(j) == look.highlightJoint ? 2.5 : 1.2));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(at, r, r);
+        const bool locked = j < look.locked.size() && look.locked[j];
+        painter.setPen(QPen(Qt::white, 1.5));
+        painter.setBrush(locked ? QColor(200, 30, 30) : bone.darker(120));
+        if (int(j) == skeleton.root) // the root: a square
+            painter.drawRect(QRectF(at - QPointF(5, 5), QSizeF(10, 10)));
+        else
+            painter.drawEllipse(at, 4, 4);
+    }
+    painter.restore();
+}
+
+SkeletonOverlay::SkeletonOverlay(EditorState *state, CanvasWidget *canvas)
+    : QObject(canvas)
+    , m_state(state)
+    , m_canvas(canvas)
+{
+    connect(m_state->document(), &model::Document::constraintsChanged, this, [this] {
+        if (m_shown)
+            m_canvas->update();
+    });
+}
+
+void SkeletonOverlay::setShown(bool shown)
+{
+    if (shown == m_shown)
+        return;
+    m_shown = shown;
+    m_canvas->update();
+    emit shownChanged(shown);
+}
+
+void SkeletonOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
+{
+    const model::Frame *f = m_state->currentFrame();
+    if (!m_shown || !f)
+        return;
+    for (const model::StrokeGroup &g : f->groups)
+        if (g.visible && !g.rig.skeleton.empty())
+            paintSkeleton(painter, canvasToWidget, g.rig.skeleton,
+                          {g.id == m_state->currentGroupId(), -1, {}});
+}
+
+} // namespace finbook::ui

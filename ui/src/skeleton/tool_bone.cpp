@@ -1,0 +1,297 @@
+#include <finbook/deform/skeleton/inverse_kinematics.h>
+#include <finbook/model/render.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/model/skeleton/skeleton_setup.h>
+#include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/skeleton/skeleton_overlay.h>
+#include <finbook/ui/skeleton/tool_bone.h>
+
+#include <QMessageBox>
+#include <QPainter>
+
+#include <cmath>
+
+namespace finbook::ui {
+
+namespace {
+constexpr qreal kJointGrab = 9.0;   // widget px
+constexpr qreal kBoneGrab = 7.0;    // widget px
+constexpr qreal kObjectGrab = 12.0; // widget px around a stroke
+
+bool editable(const model::StrokeGroup &g)
+{
+    return g.visible && !g.locked;
+}
+
+qreal segmentDistance(QPointF p, QPointF a, QPointF b)
+{
+    const QPointF d = b - a;
+    const qreal len2 = QPointF::dotProduct(d, d);
+    const qreal t = len2 > 0 ? std::clamp(QPointF::dotProduct(p - a, d) / len2, 0.0, 1.0) : 0.0;
+    return QLineF(p, a + t * d).length();
+}
+
+Eigen::Vector2d vec(QPointF p)
+{
+    return {p.x(), p.y()};
+}
+} // namespace
+
+BoneTool::BoneTool(model::DeformController *controller, QObject *parent)
+    : CanvasTool(parent)
+    , m_controller(controller)
+{
+    m_confirmDiscard = [this] {
+        return QMessageBox::question(canvas(), tr("Build Skeleton"),
+                                     tr("The object is posed with another deformer. Building a "
+                                        "skeleton discards that pose. Build it anyway?")) ==
+               QMessageBox::Yes;
+    };
+}
+
+QIcon BoneTool::icon() const
+{
+    return QIcon(QStringLiteral(":/icons/tool_bone.svg"));
+}
+
+void BoneTool::activate()
+{
+    if (const model::Frame *f = state()->currentFrame())
+        for (const model::StrokeGroup &g : f->groups)
+            if (!g.rig.skeleton.empty())
+                m_controller->prepare(g.id);
+}
+
+void BoneTool::deactivate()
+{
+    m_drag = {};
+    m_hover = {};
+}
+
+BoneTool::Hit BoneTool::hitAt(const ToolEvent &event) const
+{
+    const model::Frame *f = state()->currentFrame();
+    if (!f)
+        return {};
+    const qreal zoom = canvas()->zoom();
+    const model::Id current = state()->currentGroupId();
+    Hit best;
+    qreal bestJoint = kJointGrab / zoom, bestBone = kBoneGrab / zoom;
+    for (const model::StrokeGroup &g : f->groups) {
+        if (!editable(g) || g.rig.skeleton.empty())
+            continue;
+        const std::vector<QPointF> joints = g.rig.skeleton.posedJoints();
+        const qreal bias = g.id == current ? 0.5 : 1.0; // ties go to the current object
+        for (std::size_t j = 0; j < joints.size(); ++j) {
+            const qreal d = QLineF(joints[j], event.pos).length() * bias;
+            if (d <= bestJoint) {
+                bestJoint = d;
+                best = {g.id, Part::Joint, int(j)};
+            }
+        }
+        if (best.part == Part::Joint)
+            continue;
+        for (std::size_t j = 0; j < joints.size(); ++j) {
+            const int p = g.rig.skeleton.parent[j];
+            if (p < 0)
+                continue;
+            const qreal d = segmentDistance(event.pos, joints[std::size_t(p)], joints[j]) * bias;
+            if (d <= bestBone) {
+                bestBone = d;
+                best = {g.id, Part::Bone, int(j)};
+            }
+        }
+    }
+    return best;
+}
+
+model::Id BoneTool::objectAt(const ToolEvent &event) const
+{
+    const model::Frame *f = state()->currentFrame();
+    if (!f)
+        return model::kNoId;
+    const qreal zoom = canvas()->zoom();
+    const auto hit = [&](const model::StrokeGroup &g) {
+        for (std::size_t s = 0; s < g.strokes.size(); ++s) {
+            const qreal reach = kObjectGrab / zoom + g.strokes[s].data->width / 2;
+            for (const model::StrokePoint &p : model::displayedPoints(g, s))
+                if (std::hypot(p.x - event.pos.x(), p.y - event.pos.y()) <= reach)
+                    return true;
+        }
+        return false;
+    };
+    if (const model::StrokeGroup *current = state()->currentGroup();
+        current && editable(*current) && hit(*current))
+        return current->id;
+    for (auto it = f->groups.rbegin(); it != f->groups.rend(); ++it)
+        if (editable(*it) && hit(*it))
+            return it->id;
+    return model::kNoId;
+}
+
+std::vector<bool> BoneTool::locks(model::Id groupId) const
+{
+    const model::StrokeGroup *g = state()->document()->group(groupId);
+    const auto it = m_locked.find(groupId);
+    if (!g || it == m_locked.end() || it->second.size() != g->rig.skeleton.joints.size())
+        return {};
+    return it->second;
+}
+
+bool BoneTool::isLocked(model::Id groupId, int joint) const
+{
+    const std::vector<bool> l = locks(groupId);
+    return joint >= 0 && std::size_t(joint) < l.size() && l[std::size_t(joint)];
+}
+
+void BoneTool::toggleLock(const Hit &hit)
+{
+    const model::StrokeGroup *g = state()->document()->group(hit.groupId);
+    if (!g || hit.part != Part::Joint)
+        return;
+    std::vector<bool> l = locks(hit.groupId);
+    l.resize(g->rig.skeleton.joints.size(), false);
+    l[std::size_t(hit.joint)] = !l[std::size_t(hit.joint)];
+    m_locked[hit.groupId] = std::move(l);
+    canvas()->update();
+}
+
+void BoneTool::build(model::Id groupId)
+{
+    model::Document *doc = state()->document();
+    const model::StrokeGroup *g = doc->group(groupId);
+    if (!g)
+        return;
+    if (g->isDeformed() && g->rig.isPosed() && !m_confirmDiscard())
+        return;
+    auto rig = model::buildSkeletonRig(*g);
+    if (!rig) {
+        canvas()->postMessage(rig.error());
+        return;
+    }
+    state()->setCurrentGroupId(groupId);
+    m_locked.erase(groupId);
+    doc->undoStack()->push(new model::BuildSkeletonCommand(doc, groupId, std::move(*rig)));
+    m_controller->prepare(groupId);
+}
+
+bool BoneTool::startDrag(const Hit &hit, QPointF at)
+{
+    const model::StrokeGroup *g = state()->document()->group(hit.groupId);
+    if (!g)
+        return false;
+    auto skeleton = model::deformSkeleton(g->rig.skeleton);
+    if (!skeleton) {
+        canvas()->postMessage(skeleton.error());
+        return false;
+    }
+    m_drag.groupId = hit.groupId;
+    m_drag.joint = hit.joint;
+    m_drag.skeleton = std::move(*skeleton);
+    m_drag.start = model::skeletonPose(g->rig.skeleton);
+    m_drag.grabbed = at;
+    const bool root = g->rig.skeleton.parent[std::size_t(hit.joint)] < 0;
+    m_drag.kind = hit.part == Part::Bone ? DragKind::Bone : root ? DragKind::Root : DragKind::Joint;
+    ++m_dragSerial;
+    state()->setCurrentGroupId(hit.groupId);
+    m_controller->prepare(hit.groupId);
+    return true;
+}
+
+void BoneTool::press(const ToolEvent &event)
+{
+    m_pressPos = event.pos;
+    m_drag = {};
+    const Hit hit = hitAt(event);
+    if (hit.part == Part::Joint &&
+        (event.button == Qt::RightButton || (event.modifiers & Qt::AltModifier))) {
+        toggleLock(hit);
+        return;
+    }
+    if (hit.part != Part::None) {
+        startDrag(hit, event.pos);
+        return;
+    }
+    const model::Id groupId = objectAt(event);
+    if (groupId == model::kNoId) {
+        canvas()->postMessage(tr("Click on a visible, unlocked drawing to give it a skeleton."));
+        return;
+    }
+    const model::StrokeGroup *g = state()->document()->group(groupId);
+    if (g->rig.skeleton.empty())
+        build(groupId);
+    else
+        canvas()->postMessage(tr("Drag a bone to turn it, a joint to pull it, the root to move "
+                                 "the object; Alt-click a joint to lock it."));
+}
+
+void BoneTool::secondaryClick(const ToolEvent &event)
+{
+    if (const Hit hit = hitAt(event); hit.part == Part::Joint)
+        toggleLock(hit);
+}
+
+void BoneTool::move(const ToolEvent &event)
+{
+    if (m_drag.kind == DragKind::None || event.pos == m_pressPos)
+        return;
+    deform::SkeletonPose pose = m_drag.start;
+    const Eigen::Vector2d cursor = vec(event.pos);
+    if (m_drag.kind == DragKind::Root) {
+        pose.rootOffset += cursor - vec(m_drag.grabbed);
+    } else if (m_drag.kind == DragKind::Bone) {
+        auto turned = deform::rotateBone(m_drag.skeleton, m_drag.start, m_drag.joint,
+                                         vec(m_drag.grabbed), cursor);
+        if (!turned)
+            return;
+        pose = std::move(*turned);
+    } else {
+        auto solved = deform::solveIk(m_drag.skeleton, m_drag.start, m_drag.joint, cursor,
+                                      locks(m_drag.groupId));
+        if (!solved)
+            return;
+        pose = std::move(solved->pose);
+    }
+    model::Document *doc = state()->document();
+    doc->undoStack()->push(new model::PoseBonesCommand(
+        doc, m_drag.groupId, std::vector<double>(pose.angles.begin(), pose.angles.end()),
+        QPointF(pose.rootOffset.x(), pose.rootOffset.y()), m_dragSerial));
+    canvas()->update();
+}
+
+void BoneTool::release(const ToolEvent &event)
+{
+    move(event);
+    m_drag = {};
+}
+
+void BoneTool::hover(const ToolEvent &event)
+{
+    const Hit h = hitAt(event);
+    if (h.groupId != m_hover.groupId || h.joint != m_hover.joint || h.part != m_hover.part) {
+        m_hover = h;
+        canvas()->update();
+    }
+}
+
+void BoneTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidget)
+{
+    const model::Frame *f = state()->currentFrame();
+    if (!f)
+        return;
+    for (const model::StrokeGroup &g : f->groups) {
+        if (!g.visible || g.rig.skeleton.empty())
+            continue;
+        SkeletonLook look;
+        look.current = g.id == state()->currentGroupId();
+        look.locked = locks(g.id);
+        if (m_drag.groupId == g.id)
+            look.highlightJoint = m_drag.joint;
+        else if (m_hover.groupId == g.id)
+            look.highlightJoint = m_hover.joint;
+        paintSkeleton(painter, canvasToWidget, g.rig.skeleton, look);
+    }
+}
+
+} // namespace finbook::ui
