@@ -1,10 +1,12 @@
 #include "cli.h"
 
+#include "cli_export.h"
+
+#include <finbook/model/export/export_plan.h>
 #include <finbook/model/finbook_file.h>
-#include <finbook/model/render.h>
+#include <finbook/model/io/printable_text.h>
 
 #include <QCoreApplication>
-#include <QDir>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTextStream>
@@ -22,7 +24,8 @@ class CommandLine {
 // Messages may carry newlines (or come from Qt); the contract is one line on stderr.
 int fail(QTextStream &err, const QString &message, ExitCode code = ExitCode::BadInput)
 {
-    err << message.simplified() << Qt::endl;
+    // Names from a file or the command line may hold terminal escapes: print them harmless.
+    err << model::printableText(message.simplified()) << Qt::endl;
     return int(code);
 }
 
@@ -34,7 +37,7 @@ QJsonObject summary(const model::LoadedDocument &doc)
         objects += qint64(f.groups.size());
         for (const model::StrokeGroup &g : f.groups) {
             strokes += qint64(g.strokes.size());
-            pins += qint64(g.pins.size());
+            pins += qint64(g.rig.pins.size());
             for (const model::Stroke &s : g.strokes) {
                 if (!s.data)
                     continue;
@@ -54,31 +57,13 @@ QJsonObject summary(const model::LoadedDocument &doc)
     o[QStringLiteral("fps")] = doc.settings.fps;
     o[QStringLiteral("canvas_width")] = doc.settings.canvasSize.width();
     o[QStringLiteral("canvas_height")] = doc.settings.canvasSize.height();
+    // What playback (and a default export) covers: the play range, holds included.
+    const qint64 ticks = model::playbackTicks(doc.frames, doc.settings);
+    o[QStringLiteral("ticks")] = ticks;
+    o[QStringLiteral("duration_s")] = double(ticks) / std::max(1, doc.settings.fps);
     return o;
 }
 
-int exportFrames(const QString &path, const QString &outDir, QTextStream &out, QTextStream &err)
-{
-    auto loaded = model::loadFinbook(path);
-    if (!loaded)
-        return fail(err, loaded.error().message);
-    QDir dir(outDir);
-    if (!dir.exists() && !QDir().mkpath(outDir))
-        return fail(err, CommandLine::tr("Cannot create the output folder %1.").arg(outDir),
-                    ExitCode::Failure);
-    const model::DocumentSettings &settings = loaded->settings;
-    for (std::size_t i = 0; i < loaded->frames.size(); ++i) {
-        const QImage image = model::renderFrame(loaded->frames[i], settings, settings.canvasSize);
-        const QString name = QStringLiteral("frame_%1.png").arg(i + 1, 4, 10, QLatin1Char('0'));
-        const QString file = dir.filePath(name);
-        if (!image.save(file, "PNG"))
-            return fail(
-                err, CommandLine::tr("Cannot write %1 (is the disk full or read-only?).").arg(file),
-                ExitCode::Failure);
-        out << file << Qt::endl;
-    }
-    return int(ExitCode::Ok);
-}
 } // namespace
 
 QString finbookVersion()
@@ -123,11 +108,8 @@ int runHeadlessCommand(const QStringList &arguments, QTextStream &out, QTextStre
         out << json << Qt::endl;
         return int(ExitCode::Ok);
     }
-    if (command == QLatin1String("export")) {
-        if (positional.size() != 2)
-            return fail(err, CommandLine::tr("Usage: finbook export FILE OUTDIR"));
-        return exportFrames(positional[0], positional[1], out, err);
-    }
+    if (command == QLatin1String("export"))
+        return runExportCommand(positional, out, err);
     return fail(err, CommandLine::tr("Unknown command \"%1\"; see finbook --help.").arg(command));
 }
 

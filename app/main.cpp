@@ -1,16 +1,26 @@
 #include "cli.h"
+#include "cli_export.h"
+#include "test_hooks.h"
 #include "translations.h"
 
+#include <finbook/model/io/printable_text.h>
 #include <finbook/ui/main_window.h>
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QTextStream>
+#include <QTimer>
 
 #include <cstdio>
 #include <memory>
 
 namespace {
+
+// Qt's French and Japanese catalogues lack the help options' texts. Finbook's catalogue holds
+// them under Qt's context; QCoreApplication::translate falls back to it when Qt's has none.
+[[maybe_unused]] constexpr const char *kQtHelpTexts[] = {
+    QT_TRANSLATE_NOOP("QCommandLineParser", "Displays help on commandline options."),
+    QT_TRANSLATE_NOOP("QCommandLineParser", "Displays help including Qt specific options.")};
 
 struct Options {
     QString language;
@@ -28,18 +38,21 @@ int parseCommandLine(const QStringList &arguments, Options &options, bool print 
         "Finbook, a flipbook animation editor.\n\n"
         "  finbook [FILE]               open FILE in the editor\n"
         "  finbook info FILE            print a JSON summary of FILE\n"
-        "  finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ..."));
+        "  finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...\n"
+        "  finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html\n"
+        "  finbook export FILE... --format F --out-dir DIR   export several files"));
     const QCommandLineOption help = parser.addHelpOption();
     const QCommandLineOption version = parser.addVersionOption();
     const QCommandLineOption lang(
         QStringLiteral("lang"),
         QCoreApplication::translate("CommandLine",
-                                    "Use LANGUAGE (e.g. de, en) instead of the system's."),
+                                    "Use LANGUAGE (e.g. de, en, fr, ja) instead of the system's."),
         QStringLiteral("LANGUAGE"));
     parser.addOption(lang);
+    finbook::app::addExportOptions(parser);
     parser.addPositionalArgument(QStringLiteral("args"),
                                  QCoreApplication::translate("CommandLine", "FILE, or a command."),
-                                 QStringLiteral("[FILE | info FILE | export FILE OUTDIR]"));
+                                 QStringLiteral("[FILE | info FILE | export FILE... OUT]"));
     QString outText, errText;
     QTextStream out(&outText), err(&errText);
     const auto finish = [&](finbook::app::ExitCode code) {
@@ -52,10 +65,15 @@ int parseCommandLine(const QStringList &arguments, Options &options, bool print 
     const QString seeHelp =
         QCoreApplication::translate("CommandLine", "see finbook --help", "after an error");
     if (!parser.parse(arguments)) {
-        QString error = parser.errorText().simplified();
-        if (error.endsWith(QLatin1Char('.')))
+        // Qt's message ends a sentence ('.', or U+3002 in Japanese); the translated pattern ends it
+        // after the hint instead, with the punctuation the language uses.
+        QString error = finbook::model::printableText(parser.errorText().simplified());
+        if (error.endsWith(QLatin1Char('.')) || error.endsWith(QChar(0x3002)))
             error.chop(1);
-        err << error << QStringLiteral("; ") << seeHelp << QLatin1Char('.') << Qt::endl;
+        err << QCoreApplication::translate("CommandLine", "%1; %2.",
+                                           "an argument error from Qt, then \"see finbook --help\"")
+                   .arg(error, seeHelp)
+            << Qt::endl;
         return finish(finbook::app::ExitCode::BadInput);
     }
     if (parser.isSet(help) || parser.isSet(QStringLiteral("help-all"))) {
@@ -76,10 +94,12 @@ int parseCommandLine(const QStringList &arguments, Options &options, bool print 
     options.language = parser.value(lang);
     options.positional = parser.positionalArguments();
     const bool headless = finbook::app::isHeadlessCommand(options.positional);
+    if (headless)
+        options.positional += finbook::app::exportOptionArguments(parser);
     // More than one word that is not info/export is a mistyped command, not a file list.
     if (!headless && options.positional.size() > 1) {
         err << QCoreApplication::translate("CommandLine", "Unknown command \"%1\"; %2.")
-                   .arg(options.positional.first(), seeHelp)
+                   .arg(finbook::model::printableText(options.positional.first()), seeHelp)
             << Qt::endl;
         return finish(finbook::app::ExitCode::BadInput);
     }
@@ -133,9 +153,19 @@ int main(int argc, char **argv)
     finbook::app::installTranslations(app, options.language);
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/finbook.svg")));
 
-    finbook::ui::MainWindow window;
-    window.show();
+    const bool scripted = finbook::app::testHooksRequested();
+    std::unique_ptr<finbook::ui::MainWindow> window =
+        scripted ? std::make_unique<finbook::app::ScriptedMainWindow>()
+                 : std::make_unique<finbook::ui::MainWindow>();
+    window->show();
     if (!options.positional.isEmpty())
-        window.openFile(options.positional.first());
+        window->openFile(options.positional.first());
+    // Once the window is up: what crashed Finbooks left is offered (or the test hooks run).
+    QTimer::singleShot(0, window.get(), [w = window.get(), scripted] {
+        if (scripted)
+            static_cast<finbook::app::ScriptedMainWindow *>(w)->runHooks();
+        else
+            w->offerRecovery();
+    });
     return app.exec();
 }

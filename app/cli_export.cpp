@@ -1,0 +1,282 @@
+#include "cli_export.h"
+
+#include "cli.h"
+
+#include <finbook/model/export/exporter.h>
+#include <finbook/model/finbook_file.h>
+#include <finbook/model/io/printable_text.h>
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QTextStream>
+
+#include <cstdio>
+#include <optional>
+
+#ifdef Q_OS_UNIX
+#include <unistd.h>
+#endif
+
+namespace finbook::app {
+
+namespace {
+class CommandLine {
+    Q_DECLARE_TR_FUNCTIONS(CommandLine)
+};
+
+struct OptionSpec {
+    const char *name;
+    const char *valueName; // nullptr: a flag
+    const char *help;
+};
+
+// QT_TRANSLATE_NOOP: the help texts are translated when --help prints them.
+const OptionSpec kOptions[] = {
+    {"format", "FORMAT",
+     QT_TRANSLATE_NOOP("CommandLine", "export: png, svg, gif, mp4, webm, apng or html.")},
+    {"range", "A-B",
+     QT_TRANSLATE_NOOP("CommandLine", "export: frames A to B (default: the play range).")},
+    {"scale", "S", QT_TRANSLATE_NOOP("CommandLine", "export: multiply the canvas size by S.")},
+    {"fps", "N",
+     QT_TRANSLATE_NOOP("CommandLine", "export: N frames per second (default: the document's).")},
+    {"background", "COLOR",
+     QT_TRANSLATE_NOOP("CommandLine", "export: this background colour (#rrggbb).")},
+    {"transparent", nullptr, QT_TRANSLATE_NOOP("CommandLine", "export: no background.")},
+    {"one-per-drawing", nullptr,
+     QT_TRANSLATE_NOOP("CommandLine",
+                       "export png/svg: one file per drawing plus an exposure sheet.")},
+    {"overwrite", nullptr, QT_TRANSLATE_NOOP("CommandLine", "export: replace existing files.")},
+    {"out-dir", "DIR", QT_TRANSLATE_NOOP("CommandLine", "export: write each FILE into DIR.")},
+};
+
+QString optionName(const OptionSpec &spec)
+{
+    return QString::fromLatin1(spec.name);
+}
+
+struct Request {
+    QStringList inputs;
+    QString output; // without --out-dir
+    QString outDir; // with it
+    std::optional<model::ExportFormat> format;
+    model::ExportOptions options;
+};
+
+int fail(QTextStream &err, const QString &message, ExitCode code = ExitCode::BadInput)
+{
+    // Names from a file or the command line may hold terminal escapes: print them harmless.
+    err << model::printableText(message.simplified()) << Qt::endl;
+    return int(code);
+}
+
+std::optional<QString> parseRange(const QString &text, model::ExportOptions &options)
+{
+    const QStringList parts = text.split(QLatin1Char('-'));
+    bool okA = false, okB = false;
+    const int a = parts.value(0).trimmed().toInt(&okA);
+    const int b = parts.size() == 2 ? parts[1].trimmed().toInt(&okB) : a;
+    if (parts.size() > 2 || !okA || (parts.size() == 2 && !okB) || a < 1 || b < a)
+        return CommandLine::tr("--range needs A-B with 1 <= A <= B, not \"%1\".").arg(text);
+    options.firstFrame = a - 1;
+    options.lastFrame = b - 1;
+    return std::nullopt;
+}
+
+std::optional<QString> parseNumbers(const QCommandLineParser &p, model::ExportOptions &options)
+{
+    if (p.isSet(QStringLiteral("range")))
+        if (auto error = parseRange(p.value(QStringLiteral("range")), options))
+            return error;
+    bool ok = true;
+    if (p.isSet(QStringLiteral("scale"))) {
+        options.scale = p.value(QStringLiteral("scale")).toDouble(&ok);
+        if (!ok || !(options.scale > 0))
+            return CommandLine::tr("--scale needs a number above 0, not \"%1\".")
+                .arg(p.value(QStringLiteral("scale")));
+    }
+    if (p.isSet(QStringLiteral("fps"))) {
+        options.fps = p.value(QStringLiteral("fps")).toInt(&ok);
+        if (!ok || options.fps < model::kMinFps || options.fps > model::kMaxFps)
+            return CommandLine::tr("--fps needs a whole number from %1 to %2, not \"%3\".")
+                .arg(model::kMinFps)
+                .arg(model::kMaxFps)
+                .arg(p.value(QStringLiteral("fps")));
+    }
+    if (p.isSet(QStringLiteral("background"))) {
+        const QColor color = QColor::fromString(p.value(QStringLiteral("background")));
+        if (!color.isValid())
+            return CommandLine::tr("--background needs a colour such as #ffffff, not \"%1\".")
+                .arg(p.value(QStringLiteral("background")));
+        options.background = color.rgb();
+    }
+    return std::nullopt;
+}
+
+std::optional<QString> parseFormat(const QCommandLineParser &p, Request &r)
+{
+    if (p.isSet(QStringLiteral("format"))) {
+        r.format = model::exportFormatFromName(p.value(QStringLiteral("format")));
+        if (!r.format)
+            return CommandLine::tr("Unknown export format \"%1\"; use png, svg, gif, mp4, webm, "
+                                   "apng or html.")
+                .arg(p.value(QStringLiteral("format")));
+    }
+    if (!r.outDir.isEmpty()) {
+        r.options.format = r.format.value_or(model::ExportFormat::PngSequence);
+        return std::nullopt;
+    }
+    if (!r.format && QFileInfo(r.output).isDir()) { // an existing folder: PNG frames into it
+        r.options.format = model::ExportFormat::PngSequence;
+        return std::nullopt;
+    }
+    const QString suffix = QFileInfo(r.output).suffix();
+    const auto named = model::exportFormatForPath(r.output);
+    if (!r.format && !suffix.isEmpty() && (!named || model::exportsSequence(*named)))
+        return CommandLine::tr("Cannot tell the format from \"%1\": end it in .gif, .mp4, .webm, "
+                               ".apng or .html, give a folder for PNG frames, or use --format.")
+            .arg(r.output);
+    if (r.format && named && !model::exportsSequence(*r.format) && *named != *r.format)
+        return CommandLine::tr("--format %1 does not match \"%2\".")
+            .arg(model::exportFormatName(*r.format), r.output);
+    r.options.format = r.format.value_or(named.value_or(model::ExportFormat::PngSequence));
+    return std::nullopt;
+}
+
+std::optional<QString> parseRequest(const QStringList &arguments, Request &r)
+{
+    QCommandLineParser p;
+    addExportOptions(p);
+    if (!p.parse(QStringList{QStringLiteral("finbook")} + arguments))
+        return p.errorText();
+    r.outDir = p.value(QStringLiteral("out-dir"));
+    r.inputs = p.positionalArguments();
+    if (r.outDir.isEmpty()) {
+        if (r.inputs.size() != 2)
+            return CommandLine::tr("Usage: finbook export FILE OUT, or finbook export FILE... "
+                                   "--out-dir DIR");
+        r.output = r.inputs.takeLast();
+    } else if (r.inputs.isEmpty()) {
+        return CommandLine::tr("Usage: finbook export FILE... --out-dir DIR");
+    }
+    if (auto error = parseFormat(p, r))
+        return error;
+    if (auto error = parseNumbers(p, r.options))
+        return error;
+    r.options.transparent = p.isSet(QStringLiteral("transparent"));
+    r.options.onePerDrawing = p.isSet(QStringLiteral("one-per-drawing"));
+    r.options.overwrite = p.isSet(QStringLiteral("overwrite"));
+    if (r.options.transparent && r.options.background)
+        return CommandLine::tr("--transparent and --background cannot be used together.");
+    if (r.options.onePerDrawing && !model::exportsSequence(r.options.format))
+        return CommandLine::tr("--one-per-drawing is for png and svg exports only.");
+    return std::nullopt;
+}
+
+QString targetFor(const Request &r, const QString &input)
+{
+    if (r.outDir.isEmpty())
+        return r.output;
+    const QString name = QFileInfo(input).completeBaseName();
+    if (model::exportsSequence(r.options.format))
+        return QDir(r.outDir).filePath(name);
+    return QDir(r.outDir).filePath(name + QLatin1Char('.') +
+                                   model::exportFormatSuffix(r.options.format));
+}
+
+bool stderrIsTerminal()
+{
+#ifdef Q_OS_UNIX
+    return ::isatty(STDERR_FILENO) == 1;
+#else
+    return false;
+#endif
+}
+
+// "walk.gif: 37/120" rewritten in place, only for people watching a terminal.
+model::ExportProgress terminalProgress(const QString &name)
+{
+    if (!stderrIsTerminal())
+        return {};
+    return [name, shown = -1](qint64 done, qint64 total) mutable {
+        const int percent = total > 0 ? int(done * 100 / total) : 100;
+        if (percent != shown) {
+            shown = percent;
+            std::fprintf(stderr, "\r%s: %lld/%lld (%d%%)", qPrintable(name), done, total, percent);
+            std::fflush(stderr);
+        }
+        return true;
+    };
+}
+
+void clearProgressLine()
+{
+    if (stderrIsTerminal())
+        std::fprintf(stderr, "\r\033[K");
+}
+
+int exportOne(const Request &request, const QString &input, QTextStream &out, QTextStream &err)
+{
+    auto loaded = model::loadFinbook(input);
+    if (!loaded)
+        return fail(err, loaded.error().message);
+    model::ExportOptions options = request.options;
+    options.target = targetFor(request, input);
+    options.title = QFileInfo(input).completeBaseName();
+    const model::ExportSource source{std::move(loaded->frames), loaded->settings};
+    const auto result = model::exportAnimation(
+        source, options, terminalProgress(QFileInfo(options.target).fileName()));
+    clearProgressLine();
+    if (!result) {
+        const model::ExportErrorCode code = result.error().code;
+        const bool badInput = code == model::ExportErrorCode::BadOptions ||
+                              code == model::ExportErrorCode::TargetExists;
+        QString message = result.error().message;
+        if (code == model::ExportErrorCode::TargetExists)
+            message += QLatin1Char(' ') + CommandLine::tr("Use --overwrite to replace it.");
+        return fail(err, message, badInput ? ExitCode::BadInput : ExitCode::Failure);
+    }
+    for (const QString &file : result->files)
+        out << file << Qt::endl;
+    return int(ExitCode::Ok);
+}
+} // namespace
+
+void addExportOptions(QCommandLineParser &parser)
+{
+    for (const OptionSpec &spec : kOptions) {
+        const QString help = QCoreApplication::translate("CommandLine", spec.help);
+        if (spec.valueName)
+            parser.addOption(
+                QCommandLineOption(optionName(spec), help, QString::fromLatin1(spec.valueName)));
+        else
+            parser.addOption(QCommandLineOption(optionName(spec), help));
+    }
+}
+
+QStringList exportOptionArguments(const QCommandLineParser &parser)
+{
+    QStringList words;
+    for (const OptionSpec &spec : kOptions) {
+        if (!parser.isSet(optionName(spec)))
+            continue;
+        QString word = QStringLiteral("--") + optionName(spec);
+        if (spec.valueName)
+            word += QLatin1Char('=') + parser.value(optionName(spec));
+        words << word;
+    }
+    return words;
+}
+
+int runExportCommand(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    Request request;
+    if (auto error = parseRequest(arguments, request))
+        return fail(err, *error);
+    for (const QString &input : request.inputs)
+        if (const int code = exportOne(request, input, out, err); code != int(ExitCode::Ok))
+            return code;
+    return int(ExitCode::Ok);
+}
+
+} // namespace finbook::app
