@@ -10,6 +10,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QTemporaryDir>
 #include <QTextStream>
 #include <QtEndian>
@@ -29,9 +30,11 @@ struct Run {
     QByteArray err;
 };
 
-Run runFinbook(const QStringList &arguments)
+Run runFinbook(const QStringList &arguments,
+               const QProcessEnvironment &environment = QProcessEnvironment::systemEnvironment())
 {
     QProcess process;
+    process.setProcessEnvironment(environment);
     process.start(QStringLiteral(FINBOOK_BINARY_DIR "/bin/finbook"), arguments);
     Run run;
     if (!process.waitForFinished(120000) || process.exitStatus() != QProcess::NormalExit)
@@ -69,6 +72,7 @@ class TestCli : public QObject {
 private slots:
     void initTestCase();
     void versionAndHelp();
+    void helpAndErrorsInFrenchAndJapanese();
     void infoMatchesTheFile();
     void infoInProcessMatchesBinary();
     void exportWritesEveryFrame();
@@ -107,6 +111,60 @@ void TestCli::versionAndHelp()
     const Run bad = runFinbook({QStringLiteral("--lang=de"), QStringLiteral("--bogus")});
     QCOMPARE(bad.code, 2);
     QVERIFY2(bad.err.contains("Unbekannte Option"), bad.err.constData());
+}
+
+// French and Japanese, chosen with --lang or taken from the system's language: the help
+// (Qt's own texts included), argument errors and command errors, each error one line.
+void TestCli::helpAndErrorsInFrenchAndJapanese()
+{
+    const Run french =
+        runFinbook({QStringLiteral("--lang"), QStringLiteral("fr"), QStringLiteral("--help")});
+    QCOMPARE(french.code, 0);
+    const QString frenchHelp = QString::fromUtf8(french.out);
+    QVERIFY2(frenchHelp.contains(QStringLiteral("Utilisation : finbook")), french.out.constData());
+    QVERIFY(frenchHelp.contains(QStringLiteral("ouvrir FILE dans l'éditeur")));
+    QVERIFY(frenchHelp.contains(QStringLiteral("Afficher l'aide sur les options")));
+
+    const Run japanese = runFinbook({QStringLiteral("--lang=ja"), QStringLiteral("--help")});
+    QCOMPARE(japanese.code, 0);
+    const QString japaneseHelp = QString::fromUtf8(japanese.out);
+    QVERIFY2(japaneseHelp.contains(QStringLiteral("使い方: finbook")), japanese.out.constData());
+    QVERIFY(japaneseHelp.contains(QStringLiteral("FILE をエディターで開く")));
+    QVERIFY(japaneseHelp.contains(QStringLiteral("コマンドラインオプションのヘルプを表示する")));
+    QVERIFY(!japaneseHelp.contains(QStringLiteral("Displays help")));
+
+    const Run badFrench = runFinbook({QStringLiteral("--lang=fr"), QStringLiteral("--bogus")});
+    QCOMPARE(badFrench.code, 2);
+    QVERIFY(isOneLine(badFrench.err));
+    QVERIFY2(QString::fromUtf8(badFrench.err).contains(QStringLiteral("; voir finbook --help.")),
+             badFrench.err.constData());
+    const Run badJapanese = runFinbook({QStringLiteral("--lang=ja"), QStringLiteral("--bogus")});
+    QCOMPARE(badJapanese.code, 2);
+    QVERIFY(isOneLine(badJapanese.err));
+    const QString japaneseError = QString::fromUtf8(badJapanese.err).trimmed();
+    QVERIFY2(japaneseError.endsWith(QStringLiteral("。finbook --help を参照してください。")),
+             badJapanese.err.constData());
+    QVERIFY(!japaneseError.contains(QStringLiteral("。;")));
+
+    const Run missing = runFinbook({QStringLiteral("--lang"), QStringLiteral("ja"),
+                                    QStringLiteral("info"), m_dir.filePath("none.finbook")});
+    QCOMPARE(missing.code, 2);
+    QVERIFY(isOneLine(missing.err));
+    QVERIFY2(QString::fromUtf8(missing.err).contains(QStringLiteral("を開けません")),
+             missing.err.constData());
+
+    // No --lang: the system's language decides (LC_ALL overrides the test's C.UTF-8).
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove(QStringLiteral("LANGUAGE"));
+    environment.insert(QStringLiteral("LC_ALL"), QStringLiteral("fr_FR.UTF-8"));
+    const Run system = runFinbook({QStringLiteral("frob"), QStringLiteral("x")}, environment);
+    QCOMPARE(system.code, 2);
+    QVERIFY2(QString::fromUtf8(system.err).contains(QStringLiteral("Commande inconnue")),
+             system.err.constData());
+    environment.insert(QStringLiteral("LC_ALL"), QStringLiteral("ja_JP.UTF-8"));
+    const Run systemJa = runFinbook({QStringLiteral("frob"), QStringLiteral("x")}, environment);
+    QVERIFY2(QString::fromUtf8(systemJa.err).contains(QStringLiteral("不明なコマンド「frob」")),
+             systemJa.err.constData());
 }
 
 void TestCli::infoMatchesTheFile()
@@ -210,7 +268,7 @@ void TestCli::badFilesExitTwo_data()
                            << "newer version of Finbook";
     QTest::newRow("folder") << m_dir.path() << "folder";
     if (QFile::exists(QStringLiteral("/dev/zero"))) // endless: must be refused, not read
-        QTest::newRow("endless device") << QStringLiteral("/dev/zero") << "not a Finbook";
+        QTest::newRow("endless device") << QStringLiteral("/dev/zero") << "not a file";
 }
 
 void TestCli::badFilesExitTwo()

@@ -1,10 +1,19 @@
 // finbook-bench arap: precompute and per-drag-event cost of the ARAP deformer on grid meshes,
-// against the floor of one step-2 back-substitution, plus pin-to-strokes latency.
+// against the floor of one step-2 back-substitution, plus pin-to-strokes latency and the
+// refined method's drag event (update_ms is the paper's two steps, drag_ms the refined drag
+// stage; *_min_ms the fastest event, less disturbed by a busy machine); then the
+// pose quality of a 4:1 bar bent 60° (see arap_quality.h). With --quality FILE... the same
+// quality columns for real drawings, each meshed as the app meshes it and bent 45°.
 #include "../deform/grid_mesh.h"
+#include "arap_quality.h"
 #include "bench.h"
 
 #include <finbook/deform/arap.h>
 
+#include <QFileInfo>
+#include <QJsonDocument>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <random>
@@ -123,27 +132,80 @@ int runSize(int vertices)
         mapPoints(embedding, g.F, U, points);
         endToEnd.push_back(msSince(start));
     }
+    // The same drag with the refined method's drag stage (data.dragPasses passes).
+    std::vector<double> drags;
+    for (int event = 0; event < (vertices > 50000 ? 20 : 100); ++event) {
+        const Eigen::MatrixX2d bc = dragTargets(rest, event, 150.0);
+        const auto start = Clock::now();
+        if (!finbook::deform::arapSolve(*data, bc, U, finbook::deform::ArapStage::Drag))
+            return 1;
+        drags.push_back(msSince(start));
+    }
     const Floors floor = measureFloor(*data, vertices > 50000 ? 30 : 200);
     const double update = finbook::bench::median(updates);
+    std::fprintf(stderr, "nnzL=%ld (%.1f/row)\n",
+                 long(data->stepTwoFactor.matrixL().nestedExpression().nonZeros()),
+                 double(data->stepTwoFactor.matrixL().nestedExpression().nonZeros()) /
+                     double(data->freeCount));
     std::printf("{\"bench\":\"arap\",\"vertices\":%lld,\"triangles\":%lld,\"pins\":4,"
                 "\"precompute_ms\":%.3f,\"update_ms\":%.4f,\"floor_ms\":%.4f,\"ratio\":%.2f,"
                 "\"floor_complex_ms\":%.4f,\"floor_kernel_ms\":%.4f,\"ratio_vs_kernel\":%.2f,"
-                "\"stroke_points\":5000,\"end_to_end_ms\":%.4f}\n",
+                "\"stroke_points\":5000,\"end_to_end_ms\":%.4f,\"drag_passes\":%d,"
+                "\"drag_ms\":%.4f,\"drag_min_ms\":%.4f,\"update_min_ms\":%.4f}\n",
                 (long long)g.V.rows(), (long long)g.F.rows(), precomputeMs, update,
                 floor.realPairMs, update / floor.realPairMs, floor.complexMs, floor.kernelMs,
-                update / floor.kernelMs, finbook::bench::median(endToEnd));
+                update / floor.kernelMs, finbook::bench::median(endToEnd), data->dragPasses,
+                finbook::bench::median(drags), *std::min_element(drags.begin(), drags.end()),
+                *std::min_element(updates.begin(), updates.end()));
     std::fflush(stdout);
     return 0;
 }
 
+void printRow(QJsonObject row)
+{
+    row.insert(QStringLiteral("bench"), QStringLiteral("arap_quality"));
+    std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
+    std::fflush(stdout);
+}
+
+// A 4:1 bar of about `vertices` vertices, bent 60°.
+void runBar(int vertices)
+{
+    const int rows = std::max(2, int(std::lround((std::sqrt(1.0 + 16.0 * vertices) - 5.0) / 8.0)));
+    const auto g = finbook::test::gridMesh(4 * rows, rows, 400.0, 100.0, 0.1);
+    QJsonObject row = finbook::bench::measureBend(g.V, g.F, 60.0);
+    row.insert(QStringLiteral("mesh"), QStringLiteral("bar 4:1"));
+    printRow(row);
+}
+
+int runQuality(const QStringList &files)
+{
+    int failures = 0;
+    for (const QString &path : files) {
+        QString error;
+        const auto mesh = finbook::bench::meshFile(path, error);
+        QJsonObject row = mesh ? finbook::bench::measureBend(mesh->first, mesh->second, 45.0)
+                               : QJsonObject{{QStringLiteral("error"), error}};
+        row.insert(QStringLiteral("file"), QFileInfo(path).fileName());
+        failures += row.contains(QStringLiteral("error")) ? 1 : 0;
+        printRow(row);
+    }
+    return failures == 0 ? 0 : 1;
+}
+
 int benchArap(const QStringList &args)
 {
-    QList<int> sizes{2000, 20000, 100000};
-    const int at = int(args.indexOf(QStringLiteral("--sizes")));
-    if (at >= 0 && at + 1 < args.size()) {
-        sizes.clear();
-        for (const QString &s : args[at + 1].split(QLatin1Char(',')))
-            sizes.append(s.toInt());
+    if (const int at = int(args.indexOf(QStringLiteral("--quality"))); at >= 0)
+        return runQuality(args.mid(at + 1));
+    QList<int> sizes{2000, 20000, 100000}, bars{2000, 20000};
+    for (const auto &[flag, list] : {std::pair{QStringLiteral("--sizes"), &sizes},
+                                     std::pair{QStringLiteral("--bars"), &bars}}) {
+        const int at = int(args.indexOf(flag));
+        if (at >= 0 && at + 1 < args.size()) {
+            list->clear();
+            for (const QString &s : args[at + 1].split(QLatin1Char(','), Qt::SkipEmptyParts))
+                list->append(s.toInt());
+        }
     }
     for (const int n : sizes) {
         if (n < 9 || runSize(n) != 0) {
@@ -151,9 +213,12 @@ int benchArap(const QStringList &args)
             return 1;
         }
     }
+    for (const int n : bars)
+        runBar(std::max(9, n));
     return 0;
 }
 
 } // namespace
 
-FINBOOK_BENCH("arap", "[--sizes 2000,20000,100000]", benchArap);
+FINBOOK_BENCH("arap", "[--sizes 2000,20000,100000] [--bars 2000,20000] | --quality FILE...",
+              benchArap);

@@ -55,7 +55,10 @@ double percentile(std::vector<double> samples, double p)
     return samples[lo] + (rank - double(lo)) * (samples[hi] - samples[lo]);
 }
 
-double median(std::vector<double> samples) { return percentile(std::move(samples), 0.5); }
+double median(std::vector<double> samples)
+{
+    return percentile(std::move(samples), 0.5);
+}
 
 } // namespace finbook::bench
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include <finbook/model/commands.h>
-#include <finbook/model/pin_commands.h>
+#include <finbook/model/pins/pin_commands.h>
 
 #include <QRandomGenerator>
 
@@ -46,8 +46,8 @@ inline Picks randomPicks(const model::Document &doc, QRandomGenerator &rng)
     p.group = g.id;
     if (!g.strokes.empty())
         p.stroke = g.strokes[rng.bounded(quint32(g.strokes.size()))].id;
-    if (!g.pins.empty())
-        p.pin = g.pins[rng.bounded(quint32(g.pins.size()))].id;
+    if (!g.rig.pins.empty())
+        p.pin = g.rig.pins[rng.bounded(quint32(g.rig.pins.size()))].id;
     return p;
 }
 
@@ -70,7 +70,7 @@ inline std::unique_ptr<QUndoCommand> randomCommand(model::Document &doc, QRandom
                                                 int(rng.bounded(3)));
     case 18:
         if (rng.bounded(2))
-            return std::make_unique<ResetDeformationCommand>(&doc, p.group);
+            return std::make_unique<ResetPoseCommand>(&doc, p.group);
         return std::make_unique<SetMeshDensityCommand>(&doc, p.group, rng.bounded(4.0),
                                                        int(rng.bounded(3)));
     case 0:

@@ -1,7 +1,7 @@
 // ARAP in the model: pin commands, the worker-thread precompute service and the controller.
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/finbook_file.h>
-#include <finbook/model/pin_commands.h>
+#include <finbook/model/pins/pin_commands.h>
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -46,8 +46,10 @@ DeformJob gridJob(Id groupId, const std::shared_ptr<const MeshedObject> &meshed)
     job.meshed = meshed;
     const Eigen::MatrixX2d &V = meshed->mesh.V;
     const Eigen::Vector2d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
-    job.pinRest.resize(4, 2);
-    job.pinRest << lo.x(), lo.y(), hi.x(), lo.y(), lo.x(), hi.y(), hi.x(), hi.y();
+    Id pinId = 1;
+    for (const QPointF p : {QPointF(lo.x(), lo.y()), QPointF(hi.x(), lo.y()),
+                            QPointF(lo.x(), hi.y()), QPointF(hi.x(), hi.y())})
+        job.rig.pins.push_back(Pin{pinId++, p, p});
     return job;
 }
 
@@ -118,6 +120,7 @@ private slots:
     void bakeMakesPoseTheRestAndUndoes();
     void duplicatedFrameSharesSetupButNotPins();
     void extraPassesReprepareAndStayStateless();
+    void unpinnedPartFollowsThePinnedOne();
     void reopenedFileContinuesWhereItStopped();
     void serviceDeliversOnlyLatestGeneration();
     void guiStaysResponsiveDuringBigPrecompute();
@@ -130,14 +133,14 @@ void TestDeformService::pinCommandsUndoExactly()
     QUndoStack *stack = doc.undoStack();
     const QByteArray start = serializeFinbook(doc);
     stack->push(new AddPinCommand(&doc, g, {100, 100}, {100, 100}));
-    const Id pin = doc.group(g)->pins.back().id;
+    const Id pin = doc.group(g)->rig.pins.back().id;
     stack->push(new AddPinCommand(&doc, g, {400, 100}, {400, 100}));
     stack->push(new MovePinCommand(&doc, g, pin, {120, 140}, 1));
     stack->push(new MovePinCommand(&doc, g, pin, {130, 150}, 1)); // same drag: merges
     QCOMPARE(stack->count(), 3);
     stack->push(new MovePinCommand(&doc, g, pin, {10, 10}, 2)); // next drag: its own step
     QCOMPARE(stack->count(), 4);
-    stack->push(new ResetDeformationCommand(&doc, g));
+    stack->push(new ResetPoseCommand(&doc, g));
     stack->push(new RemovePinCommand(&doc, g, pin));
     const QByteArray end = serializeFinbook(doc);
     while (stack->canUndo())
@@ -159,7 +162,7 @@ void TestDeformService::onePinTranslates()
     DeformController controller(&doc);
     doc.undoStack()->push(new AddPinCommand(&doc, g, {250, 100}, {250, 100}));
     QVERIFY(waitSolved(controller, g));
-    doc.undoStack()->push(new MovePinCommand(&doc, g, doc.group(g)->pins[0].id, {275, 60}, 1));
+    doc.undoStack()->push(new MovePinCommand(&doc, g, doc.group(g)->rig.pins[0].id, {275, 60}, 1));
     const StrokeGroup *group = doc.group(g);
     QVERIFY(group->isDeformed());
     for (std::size_t s = 0; s < group->strokes.size(); ++s)
@@ -181,7 +184,7 @@ void TestDeformService::dragSolvesSynchronouslyAndMergesPerDrag()
     // Pins at rest give the rest drawing.
     QVERIFY(maxDistance(doc.group(g)->strokes[0].data->points, restPose->strokes[0]) < 1e-3);
     // Every move re-solves at once: no waiting for the worker while dragging.
-    const Id tip = doc.group(g)->pins[2].id;
+    const Id tip = doc.group(g)->rig.pins[2].id;
     for (int step = 1; step <= 20; ++step) {
         doc.undoStack()->push(new MovePinCommand(&doc, g, tip, {400, 100.0 + 5 * step}, 7));
         QVERIFY(!controller.isWaiting(g));
@@ -202,12 +205,19 @@ void TestDeformService::bakeMakesPoseTheRestAndUndoes()
     DeformController controller(&doc);
     pinBothEnds(doc, g);
     QVERIFY(waitSolved(controller, g));
-    doc.undoStack()->push(new MovePinCommand(&doc, g, doc.group(g)->pins[1].id, {380, 220}, 1));
+    doc.undoStack()->push(new MovePinCommand(&doc, g, doc.group(g)->rig.pins[1].id, {380, 220}, 1));
     const QByteArray before = serializeFinbook(doc);
     const auto pose = doc.group(g)->deformed;
-    doc.undoStack()->push(new BakeDeformationCommand(&doc, g));
-    QVERIFY(doc.group(g)->pins.empty());
+    const Rig posedRig = doc.group(g)->rig;
+    doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
     QCOMPARE(doc.group(g)->strokes[0].data->points, pose->strokes[0]);
+    // The pins stay where they were shown, now at rest on the new drawing.
+    QCOMPARE(doc.group(g)->rig.pins.size(), posedRig.pins.size());
+    for (std::size_t i = 0; i < posedRig.pins.size(); ++i) {
+        QCOMPARE(doc.group(g)->rig.pins[i].rest, posedRig.pins[i].target);
+        QCOMPARE(doc.group(g)->rig.pins[i].target, posedRig.pins[i].target);
+    }
+    QVERIFY(!doc.group(g)->rig.isPosed());
     doc.undoStack()->undo();
     QCOMPARE(serializeFinbook(doc), before);
 }
@@ -221,13 +231,13 @@ void TestDeformService::duplicatedFrameSharesSetupButNotPins()
     QVERIFY(waitSolved(controller, g));
     doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frameAt(0).id, 1));
     const Id copy = doc.frameAt(1).groups[0].id;
-    const Id copyTip = doc.frameAt(1).groups[0].pins[1].id;
+    const Id copyTip = doc.frameAt(1).groups[0].rig.pins[1].id;
     controller.prepare(copy);
     QVERIFY2(!controller.isWaiting(copy), "the copy should reuse its source's factorization");
     doc.undoStack()->push(new MovePinCommand(&doc, copy, copyTip, {300, 250}, 1));
     QVERIFY(doc.group(copy)->deformed->strokes[0].back().y > 200);
     // The original keeps its own pins and pose.
-    QCOMPARE(doc.group(g)->pins[1].target, QPointF(400, 100));
+    QCOMPARE(doc.group(g)->rig.pins[1].target, QPointF(400, 100));
     QVERIFY(doc.group(g)->deformed->strokes[0].back().y < 120);
 }
 
@@ -236,9 +246,10 @@ void TestDeformService::extraPassesReprepareAndStayStateless()
     Document doc;
     const Id g = makeArm(doc);
     DeformController controller(&doc);
+    controller.setExtraPasses(0); // the paper's method
     pinBothEnds(doc, g);
     QVERIFY(waitSolved(controller, g));
-    const Id tip = doc.group(g)->pins[1].id;
+    const Id tip = doc.group(g)->rig.pins[1].id;
     doc.undoStack()->push(new MovePinCommand(&doc, g, tip, {330, 260}, 1));
     const auto paper = doc.group(g)->deformed;
     controller.setExtraPasses(3);
@@ -265,21 +276,22 @@ void TestDeformService::reopenedFileContinuesWhereItStopped()
         DeformController controller(&doc);
         pinBothEnds(doc, g);
         QVERIFY(waitSolved(controller, g));
-        doc.undoStack()->push(new MovePinCommand(&doc, g, doc.group(g)->pins[1].id, {380, 200}, 1));
+        doc.undoStack()->push(
+            new MovePinCommand(&doc, g, doc.group(g)->rig.pins[1].id, {380, 200}, 1));
         QVERIFY(!saveFinbook(doc, path));
     }
     Document reopened;
     QVERIFY(!openFinbook(reopened, path));
     const StrokeGroup *r = reopened.group(g);
     QVERIFY(r && r->isDeformed());
-    QCOMPARE(r->pins, doc.group(g)->pins);
+    QCOMPARE(r->rig.pins, doc.group(g)->rig.pins);
     QCOMPARE(*r->deformed, *doc.group(g)->deformed); // shown at once, without solving
     // Dragging on: the same solver gives the same pose for the same targets, then follows.
     DeformController controller(&reopened);
     controller.prepare(g);
     QVERIFY(waitSolved(controller, g));
     QCOMPARE(*reopened.group(g)->deformed, *doc.group(g)->deformed);
-    reopened.undoStack()->push(new MovePinCommand(&reopened, g, r->pins[1].id, {380, 260}, 1));
+    reopened.undoStack()->push(new MovePinCommand(&reopened, g, r->rig.pins[1].id, {380, 260}, 1));
     QVERIFY(reopened.group(g)->deformed->strokes[0].back().y > 230);
 }
 
@@ -363,6 +375,28 @@ void TestDeformService::guiStaysResponsiveDuringBigPrecompute()
     qInfo("worker precompute: p99 lateness %.2f ms over %zu ticks", p99(lateness), lateness.size());
     QVERIFY(lateness.size() > 20);
     QVERIFY2(p99(lateness) <= 50.0, qPrintable(QString::number(p99(lateness))));
+}
+
+void TestDeformService::unpinnedPartFollowsThePinnedOne()
+{
+    // An arm and, drawn apart from it, a hand: one object, two separate parts. Only the arm
+    // is pinned; dragging its tip must carry the hand along rather than leave it behind.
+    Document doc;
+    const Id g = makeArm(doc);
+    auto hand = wobble(430, 100, 40, 30);
+    doc.undoStack()->push(new AddStrokeCommand(&doc, g, hand));
+    DeformController controller(&doc);
+    pinBothEnds(doc, g);
+    QVERIFY(waitSolved(controller, g));
+    const Id tip = doc.group(g)->rig.pins[1].id;
+    doc.undoStack()->push(new MovePinCommand(&doc, g, tip, {400, 180}, 1));
+    controller.settle();
+    const auto &posedHand = doc.group(g)->deformed->strokes.back();
+    const auto &restHand = hand->points;
+    double moved = 0;
+    for (std::size_t i = 0; i < restHand.size(); ++i)
+        moved = std::max(moved, double(posedHand[i].y - restHand[i].y));
+    QVERIFY2(moved > 40, qPrintable(QString::number(moved)));
 }
 
 QTEST_GUILESS_MAIN(TestDeformService)

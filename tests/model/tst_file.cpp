@@ -21,7 +21,7 @@ static Id largestId(const std::vector<Frame> &frames)
             largest = std::max(largest, g.id);
             for (const Stroke &s : g.strokes)
                 largest = std::max(largest, s.id);
-            for (const Pin &p : g.pins)
+            for (const Pin &p : g.rig.pins)
                 largest = std::max(largest, p.id);
         }
     }

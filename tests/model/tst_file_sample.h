@@ -2,6 +2,8 @@
 // helpers to inspect and patch its bytes.
 #pragma once
 
+#include "../../model/src/io/crc32c.h"
+
 #include <finbook/model/finbook_file.h>
 
 #include <QFile>
@@ -56,8 +58,8 @@ inline void buildSample(Document &doc)
     body.name = QStringLiteral("body");
     body.strokes = {{id(), makeStroke(40, 0xff102030, 3.0f, 10, 10)},
                     {id(), makeStroke(25, 0x80ff0000, 5.5f, 50, 80)}};
-    body.pins = {{id(), QPointF(10.25, 11), QPointF(12, 13.5)},
-                 {id(), QPointF(60, 80), QPointF(61.125, 79)}};
+    body.rig.pins = {{id(), QPointF(10.25, 11), QPointF(12, 13.5)},
+                     {id(), QPointF(60, 80), QPointF(61.125, 79)}};
     body.deformed = shiftedPose(body, 2.0f);
     StrokeGroup arm;
     arm.id = id();
@@ -75,7 +77,7 @@ inline void buildSample(Document &doc)
         g.id = id();
         for (Stroke &s : g.strokes)
             s.id = id();
-        for (Pin &p : g.pins)
+        for (Pin &p : g.rig.pins)
             p.id = id();
     }
 
@@ -116,7 +118,7 @@ inline void compareFrames(const std::vector<Frame> &actual, const std::vector<Fr
             QCOMPARE(x.locked, y.locked);
             QCOMPARE(x.meshDensity, y.meshDensity);
             QVERIFY(x.strokes == y.strokes);
-            QVERIFY(x.pins == y.pins);
+            QVERIFY(x.rig.pins == y.rig.pins);
             QCOMPARE(bool(x.deformed), bool(y.deformed));
             if (x.deformed)
                 QVERIFY(*x.deformed == *y.deformed);
@@ -131,6 +133,12 @@ inline QByteArray validBytes()
     return serializeFinbook(doc);
 }
 
+// Bytes after each section's payload: its checksum from format 2 on.
+inline qsizetype sectionTrailer(const QByteArray &bytes)
+{
+    return qFromLittleEndian<quint32>(bytes.constData() + 8) >= 2 ? 4 : 0;
+}
+
 // Offset of a section's payload, walking the section list as the format describes it.
 inline qsizetype sectionPayload(const QByteArray &bytes, const char *name)
 {
@@ -139,9 +147,44 @@ inline qsizetype sectionPayload(const QByteArray &bytes, const char *name)
         const quint64 length = qFromLittleEndian<quint64>(bytes.constData() + at + 4);
         if (bytes.mid(at, 4) == name)
             return at + 12;
-        at += 12 + qsizetype(length);
+        at += 12 + qsizetype(length) + sectionTrailer(bytes);
     }
     return -1;
+}
+
+// Puts right every section checksum after a test patched the bytes on purpose, so the reader
+// reports the patched value rather than the damage. Sections must still chain up.
+inline void refreshChecksums(QByteArray &bytes)
+{
+    if (sectionTrailer(bytes) == 0)
+        return;
+    qsizetype at = 12;
+    while (at + 12 <= bytes.size()) {
+        const quint64 length = qFromLittleEndian<quint64>(bytes.constData() + at + 4);
+        const qsizetype end = at + 12 + qsizetype(length);
+        if (length > quint64(bytes.size()) || end + 4 > bytes.size())
+            return;
+        qToLittleEndian<quint32>(
+            finbook::model::io::crc32c(0, bytes.constData() + at, std::size_t(end - at)),
+            bytes.data() + end);
+        at = end + 4;
+    }
+}
+
+// A whole section (header, payload, checksum) with `tag` and `payload`, for inserting.
+inline QByteArray sectionBytes(const char *tag, const QByteArray &payload, bool withChecksum = true)
+{
+    QByteArray section(tag, 4);
+    char length[8];
+    qToLittleEndian<quint64>(quint64(payload.size()), length);
+    section.append(length, 8).append(payload);
+    if (withChecksum) {
+        char crc[4];
+        qToLittleEndian<quint32>(
+            finbook::model::io::crc32c(0, section.constData(), std::size_t(section.size())), crc);
+        section.append(crc, 4);
+    }
+    return section;
 }
 
 inline void putU32(QByteArray &bytes, qsizetype at, quint32 v)

@@ -45,7 +45,7 @@ std::vector<Id> allIds(const Document &doc)
             ids.push_back(g.id);
             for (const Stroke &s : g.strokes)
                 ids.push_back(s.id);
-            for (const Pin &p : g.pins)
+            for (const Pin &p : g.rig.pins)
                 ids.push_back(p.id);
         }
     }

@@ -39,7 +39,7 @@ bool sameFrame(const model::Frame &a, const model::Frame &b)
         const model::StrokeGroup &x = a.groups[i];
         const model::StrokeGroup &y = b.groups[i];
         if (x.id != y.id || x.name != y.name || x.visible != y.visible || x.locked != y.locked ||
-            x.strokes != y.strokes || x.pins != y.pins)
+            x.strokes != y.strokes || x.rig.pins != y.rig.pins)
             return false;
     }
     return true;

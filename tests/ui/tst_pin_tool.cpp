@@ -1,12 +1,12 @@
 // The Pin tool driven by real mouse events on the real canvas: add, drag, remove, undo.
 #include <finbook/model/finbook_file.h>
-#include <finbook/model/pin_commands.h>
+#include <finbook/model/pins/pin_commands.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/deform_actions.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/mesh_overlay.h>
+#include <finbook/ui/pins/tool_pin.h>
 #include <finbook/ui/stroke_editing.h>
-#include <finbook/ui/tool_pin.h>
 
 #include <QSignalSpy>
 #include <QTest>
@@ -104,7 +104,7 @@ void TestPinTool::addDragRemoveWithUndo()
     // Two clicks on the drawing: two pins, two undo steps.
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({210, 300}));
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({590, 300}));
-    QCOMPARE(fx.object().pins.size(), std::size_t(2));
+    QCOMPARE(fx.object().rig.pins.size(), std::size_t(2));
     QCOMPARE(stack->count(), 2);
     QVERIFY(fx.waitReady());
     const std::vector<StrokePoint> rest = fx.object().strokes[0].data->points;
@@ -112,7 +112,7 @@ void TestPinTool::addDragRemoveWithUndo()
     // Drag the right pin down: the arm bends live, and the whole drag is one undo step.
     fx.drag({590, 300}, {560, 420});
     QCOMPARE(stack->count(), 3);
-    const Pin &tip = fx.object().pins[1];
+    const Pin &tip = fx.object().rig.pins[1];
     QVERIFY(QLineF(tip.target, QPointF(560, 420)).length() < 2.0);
     QVERIFY(fx.object().isDeformed());
     const auto &bent = fx.object().deformed->strokes[0];
@@ -123,29 +123,29 @@ void TestPinTool::addDragRemoveWithUndo()
 
     // Undo the drag: back to the rest pose. Redo: bent again.
     stack->undo();
-    QVERIFY(QLineF(fx.object().pins[1].target, fx.object().pins[1].rest).length() < 1e-9);
+    QVERIFY(QLineF(fx.object().rig.pins[1].target, fx.object().rig.pins[1].rest).length() < 1e-9);
     QVERIFY(std::abs(fx.object().deformed->strokes[0].back().y - rest.back().y) < 1e-2);
     stack->redo();
     QVERIFY(fx.object().deformed->strokes[0].back().y > 380);
 
     // Ctrl-click removes the pin under the cursor; undo brings it back where it was.
-    const Pin removed = fx.object().pins[1];
+    const Pin removed = fx.object().rig.pins[1];
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, Qt::ControlModifier, fx.at(removed.target));
-    QCOMPARE(fx.object().pins.size(), std::size_t(1));
+    QCOMPARE(fx.object().rig.pins.size(), std::size_t(1));
     stack->undo();
-    QCOMPARE(fx.object().pins.size(), std::size_t(2));
-    QCOMPARE(fx.object().pins[1], removed);
+    QCOMPARE(fx.object().rig.pins.size(), std::size_t(2));
+    QCOMPARE(fx.object().rig.pins[1], removed);
 
     // A right-click does the same.
     QTest::mouseClick(&fx.canvas, Qt::RightButton, {}, fx.at(removed.target));
-    QCOMPARE(fx.object().pins.size(), std::size_t(1));
+    QCOMPARE(fx.object().rig.pins.size(), std::size_t(1));
     stack->undo();
-    QCOMPARE(fx.object().pins.size(), std::size_t(2));
+    QCOMPARE(fx.object().rig.pins.size(), std::size_t(2));
 
     // Undo everything: no pins, no pose.
     while (stack->canUndo())
         stack->undo();
-    QVERIFY(fx.object().pins.empty());
+    QVERIFY(fx.object().rig.pins.empty());
     QVERIFY(!fx.object().isDeformed());
 }
 
@@ -163,10 +163,14 @@ void TestPinTool::drawingOnPosedObjectKeepsWhatIsShown()
     auto drawn = std::make_shared<StrokeData>();
     drawn->points = {{500, 200, 1}, {520, 210, 1}, {540, 230, 1}};
     QVERIFY(StrokeEditing::addStrokes(fx.state, {drawn}, QStringLiteral("Draw Stroke")));
-    // One undo step; the new stroke is stored where it was drawn, and the bent strokes are
-    // now the drawing (no pins left to bend them a second time).
+    // One undo step that says the pose was applied; the new stroke is stored where it was
+    // drawn, the bent strokes are now the drawing, and the pins stay where they were shown
+    // (rebased: at rest there), so they do not bend the drawing a second time.
     QCOMPARE(fx.doc.undoStack()->count(), steps + 1);
-    QVERIFY(fx.object().pins.empty());
+    QCOMPARE(fx.doc.undoStack()->text(steps), QStringLiteral("Draw Stroke (pose applied)"));
+    QCOMPARE(fx.object().rig.pins.size(), std::size_t(2));
+    QCOMPARE(fx.object().rig.pins[1].rest, fx.object().rig.pins[1].target);
+    QVERIFY(!fx.object().rig.isPosed());
     QCOMPARE(fx.object().strokes.back().data->points, drawn->points);
     QCOMPARE(fx.object().strokes[0].data->points, shown->strokes[0]);
     fx.doc.undoStack()->undo();
@@ -204,7 +208,7 @@ void TestPinTool::clickOffTheDrawingAddsNothing()
 {
     Fixture fx;
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({100, 100}));
-    QVERIFY(fx.object().pins.empty());
+    QVERIFY(fx.object().rig.pins.empty());
     QCOMPARE(fx.doc.undoStack()->count(), 0);
 }
 
@@ -213,7 +217,7 @@ void TestPinTool::lockedObjectsAreNotPinned()
     Fixture fx;
     fx.doc.undoStack()->push(new SetObjectFlagCommand(&fx.doc, fx.group, ObjectFlag::Locked, true));
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({210, 300}));
-    QVERIFY(fx.object().pins.empty());
+    QVERIFY(fx.object().rig.pins.empty());
 }
 
 QTEST_MAIN(TestPinTool)

@@ -1,0 +1,359 @@
+// `finbook export` and `finbook info` as a user runs them: every format from the bundled example
+// (with holds added), the options, several files at once, and every refusal or failure ending
+// in one line on stderr, the promised exit code and nothing at the target.
+#include "../model/export_support.h"
+
+#include <finbook/model/document.h>
+#include <finbook/model/finbook_file.h>
+
+#include <QFile>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace finbook;
+using namespace finbook::test;
+
+namespace {
+
+const QString kFinbook = QStringLiteral(FINBOOK_BINARY_DIR "/bin/finbook");
+
+struct Run {
+    int code = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Run runProgram(const QString &program, const QStringList &arguments,
+               const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
+{
+    QProcess process;
+    process.setProcessEnvironment(env);
+    process.start(program, arguments);
+    Run run;
+    if (!process.waitForFinished(300000) || process.exitStatus() != QProcess::NormalExit)
+        return run;
+    run.code = process.exitCode();
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
+}
+
+Run runFinbook(const QStringList &arguments)
+{
+    return runProgram(kFinbook, arguments);
+}
+
+bool isOneLine(const QByteArray &text)
+{
+    return text.size() > 1 && text.endsWith('\n') && text.count('\n') == 1;
+}
+
+QString shellQuote(const QString &s)
+{
+    return QLatin1Char('\'') + QString(s).replace(QLatin1String("'"), QLatin1String("'\\''")) +
+           QLatin1Char('\'');
+}
+
+QString saveDocument(const model::ExportSource &source, const QString &path)
+{
+    model::Document doc;
+    doc.reset(source.frames, source.settings, 1000000);
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly))
+        return {};
+    f.write(model::serializeFinbook(doc));
+    return path;
+}
+
+bool haveFfmpeg()
+{
+    return !program("ffmpeg").isEmpty() && !program("ffprobe").isEmpty();
+}
+
+} // namespace
+
+class TestCliExport : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void infoCountsTicks();
+    void exportsEveryFormat_data();
+    void exportsEveryFormat();
+    void optionsReachTheExport();
+    void severalFilesWithOutDir();
+    void badArgumentsExitTwo_data();
+    void badArgumentsExitTwo();
+    void existingTargetNeedsOverwrite();
+    void fullDiskFailsCleanly_data();
+    void fullDiskFailsCleanly();
+    void missingFfmpegFails();
+    void progressOnlyOnATerminal();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_held; // the example with holds: 12 drawings, 18 ticks
+};
+
+void TestCliExport::initTestCase()
+{
+    QVERIFY(QFile::exists(kFinbook));
+    QVERIFY(m_dir.isValid());
+    m_held = saveDocument(exampleWithHolds(), m_dir.filePath(QStringLiteral("held.finbook")));
+    QVERIFY(!m_held.isEmpty());
+}
+
+void TestCliExport::infoCountsTicks()
+{
+    const auto info = [](const QString &file) {
+        const Run run = runFinbook({QStringLiteral("info"), file});
+        return QJsonDocument::fromJson(run.out).object();
+    };
+    const QJsonObject plain = info(examplePath());
+    QCOMPARE(plain[QStringLiteral("ticks")].toInteger(), qint64(12));
+    QCOMPARE(plain[QStringLiteral("duration_s")].toDouble(), 1.0);
+    const QJsonObject held = info(m_held);
+    QCOMPARE(held[QStringLiteral("frames")].toInteger(), qint64(12));
+    QCOMPARE(held[QStringLiteral("ticks")].toInteger(), qint64(18));
+    QCOMPARE(held[QStringLiteral("duration_s")].toDouble(), 1.5);
+    // Only the play range counts: frames 3-8 hold 3+1+1+1+1+2 ticks.
+    model::ExportSource ranged = exampleWithHolds();
+    ranged.settings.playStart = 2;
+    ranged.settings.playEnd = 7;
+    ranged.settings.fps = 6;
+    const QJsonObject part =
+        info(saveDocument(ranged, m_dir.filePath(QStringLiteral("part.finbook"))));
+    QCOMPARE(part[QStringLiteral("ticks")].toInteger(), qint64(9));
+    QCOMPARE(part[QStringLiteral("duration_s")].toDouble(), 1.5);
+}
+
+void TestCliExport::exportsEveryFormat_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("target");
+    QTest::addColumn<int>("files");
+    QTest::addColumn<bool>("needsFfmpeg");
+    QTest::newRow("png folder") << QStringList{} << "frames" << 18 << false;
+    QTest::newRow("svg") << QStringList{QStringLiteral("--format"), QStringLiteral("svg")}
+                         << "vectors" << 18 << false;
+    QTest::newRow("html") << QStringList{} << "walk.html" << 1 << false;
+    QTest::newRow("gif") << QStringList{} << "walk.gif" << 1 << true;
+    QTest::newRow("mp4") << QStringList{} << "walk.mp4" << 1 << true;
+    QTest::newRow("webm") << QStringList{} << "walk.webm" << 1 << true;
+    QTest::newRow("apng") << QStringList{} << "walk.apng" << 1 << true;
+    QTest::newRow("gif by --format")
+        << QStringList{QStringLiteral("--format=gif")} << "anim" << 1 << true;
+}
+
+void TestCliExport::exportsEveryFormat()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, target);
+    QFETCH(int, files);
+    QFETCH(bool, needsFfmpeg);
+    if (needsFfmpeg && !haveFfmpeg())
+        QSKIP("ffmpeg/ffprobe not installed (bash .ci/setup installs them)");
+    const QString out = m_dir.filePath(QStringLiteral("every/") + target);
+    const Run run = runFinbook(QStringList{QStringLiteral("export"), m_held, out} + arguments);
+    QCOMPARE(run.code, 0);
+    QVERIFY2(run.err.isEmpty(), run.err.constData()); // no progress: stderr is not a terminal
+    QCOMPARE(run.out.count('\n'), qsizetype(files));
+    const QStringList written =
+        QString::fromLocal8Bit(run.out).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    for (const QString &file : written)
+        QVERIFY2(QFileInfo(file).size() > 0, qPrintable(file));
+    if (files == 1)
+        QCOMPARE(written.first(), out);
+    if (needsFfmpeg) {
+        const QJsonObject stream = probe(out);
+        const bool gif = stream[QStringLiteral("codec_name")].toString() == QLatin1String("gif");
+        QCOMPARE(stream[QStringLiteral("nb_read_frames")].toString().toInt(), gif ? 12 : 18);
+        QCOMPARE(stream[QStringLiteral("width")].toInt(), 1280);
+    }
+}
+
+void TestCliExport::optionsReachTheExport()
+{
+    const QString png = m_dir.filePath(QStringLiteral("options/png"));
+    Run run = runFinbook({QStringLiteral("export"), m_held, png, QStringLiteral("--range"),
+                          QStringLiteral("3-8"), QStringLiteral("--scale"), QStringLiteral("0.25"),
+                          QStringLiteral("--background"), QStringLiteral("#ff0000")});
+    QCOMPARE(run.code, 0);
+    QCOMPARE(run.out.count('\n'), qsizetype(9)); // ticks of frames 3-8
+    const QImage red(QDir(png).filePath(QStringLiteral("frame_0001.png")));
+    QCOMPARE(red.size(), QSize(320, 180));
+    QCOMPARE(red.pixel(0, 0), qRgb(255, 0, 0));
+
+    const QString clear = m_dir.filePath(QStringLiteral("options/clear"));
+    run = runFinbook({QStringLiteral("export"), m_held, clear, QStringLiteral("--transparent"),
+                      QStringLiteral("--one-per-drawing"), QStringLiteral("--range=12")});
+    QCOMPARE(run.code, 0);
+    QCOMPARE(run.out.count('\n'), qsizetype(2)); // frame 12 once, and its exposure sheet
+    const QImage transparent(QDir(clear).filePath(QStringLiteral("frame_0012.png")));
+    QCOMPARE(qAlpha(transparent.pixel(0, 0)), 0);
+    QFile sheet(QDir(clear).filePath(QStringLiteral("frame_exposures.json")));
+    QVERIFY(sheet.open(QIODevice::ReadOnly));
+    QVERIFY(sheet.readAll().contains("\"hold\": 4"));
+
+    if (!haveFfmpeg())
+        QSKIP("ffmpeg/ffprobe not installed");
+    const QString mp4 = m_dir.filePath(QStringLiteral("options/part.mp4"));
+    run = runFinbook({QStringLiteral("export"), m_held, mp4, QStringLiteral("--range=3-8"),
+                      QStringLiteral("--scale=0.25"), QStringLiteral("--fps=24")});
+    QCOMPARE(run.code, 0);
+    const QJsonObject stream = probe(mp4);
+    QCOMPARE(stream[QStringLiteral("nb_read_frames")].toString().toInt(), 9);
+    QCOMPARE(stream[QStringLiteral("width")].toInt(), 320);
+    QCOMPARE(stream[QStringLiteral("r_frame_rate")].toString(), QStringLiteral("24/1"));
+}
+
+void TestCliExport::severalFilesWithOutDir()
+{
+    const QString second = m_dir.filePath(QStringLiteral("second.finbook"));
+    QVERIFY(QFile::copy(examplePath(), second));
+    const QString dir = m_dir.filePath(QStringLiteral("batch"));
+    Run run = runFinbook({QStringLiteral("export"), m_held, second, QStringLiteral("--format"),
+                          QStringLiteral("html"), QStringLiteral("--out-dir"), dir});
+    QCOMPARE(run.code, 0);
+    QCOMPARE(run.out, (QDir(dir).filePath(QStringLiteral("held.html")) + QLatin1Char('\n') +
+                       QDir(dir).filePath(QStringLiteral("second.html")) + QLatin1Char('\n'))
+                          .toLocal8Bit());
+    run = runFinbook({QStringLiteral("export"), m_held, second, QStringLiteral("--out-dir"), dir});
+    QCOMPARE(run.code, 0); // PNG by default: a folder per file
+    QCOMPARE(QDir(QDir(dir).filePath(QStringLiteral("held"))).entryList(QDir::Files).size(),
+             qsizetype(18));
+    QCOMPARE(QDir(QDir(dir).filePath(QStringLiteral("second"))).entryList(QDir::Files).size(),
+             qsizetype(12));
+}
+
+void TestCliExport::badArgumentsExitTwo_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    const QString out = m_dir.filePath(QStringLiteral("bad/out"));
+    const QString e = examplePath();
+    const QString x = QStringLiteral("export");
+    QTest::newRow("unknown suffix") << QStringList{x, e, out + QStringLiteral(".xyz")};
+    QTest::newRow("single png file") << QStringList{x, e, out + QStringLiteral(".png")};
+    QTest::newRow("unknown format") << QStringList{x, e, out, QStringLiteral("--format=bmp")};
+    QTest::newRow("format against suffix")
+        << QStringList{x, e, out + QStringLiteral(".mp4"), QStringLiteral("--format=gif")};
+    QTest::newRow("range backwards") << QStringList{x, e, out, QStringLiteral("--range=5-2")};
+    QTest::newRow("range words") << QStringList{x, e, out, QStringLiteral("--range=a-b")};
+    QTest::newRow("range past the end") << QStringList{x, e, out, QStringLiteral("--range=2-40")};
+    QTest::newRow("scale zero") << QStringList{x, e, out, QStringLiteral("--scale=0")};
+    QTest::newRow("scale word") << QStringList{x, e, out, QStringLiteral("--scale=big")};
+    QTest::newRow("scale huge") << QStringList{x, e, out, QStringLiteral("--scale=500")};
+    QTest::newRow("fps too high") << QStringList{x, e, out, QStringLiteral("--fps=99")};
+    QTest::newRow("bad colour") << QStringList{x, e, out, QStringLiteral("--background=nope")};
+    QTest::newRow("transparent mp4")
+        << QStringList{x, e, out + QStringLiteral(".mp4"), QStringLiteral("--transparent")};
+    QTest::newRow("transparent and background") << QStringList{
+        x, e, out, QStringLiteral("--transparent"), QStringLiteral("--background=#fff")};
+    QTest::newRow("per drawing gif")
+        << QStringList{x, e, out + QStringLiteral(".gif"), QStringLiteral("--one-per-drawing")};
+    QTest::newRow("three without out-dir") << QStringList{x, e, e, out};
+    QTest::newRow("out-dir without files") << QStringList{x, QStringLiteral("--out-dir"), out};
+    QTest::newRow("unknown option") << QStringList{x, e, out, QStringLiteral("--speed=2")};
+    QTest::newRow("export option for info")
+        << QStringList{QStringLiteral("info"), e, QStringLiteral("--scale=2")};
+}
+
+void TestCliExport::badArgumentsExitTwo()
+{
+    QFETCH(QStringList, arguments);
+    const Run run = runFinbook(arguments);
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err), run.err.constData());
+    QVERIFY(run.out.isEmpty());
+    QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("bad"))));
+}
+
+void TestCliExport::existingTargetNeedsOverwrite()
+{
+    const QString page = m_dir.filePath(QStringLiteral("again.html"));
+    QCOMPARE(runFinbook({QStringLiteral("export"), m_held, page}).code, 0);
+    const QDateTime written = QFileInfo(page).lastModified();
+    QFile::resize(page, 10);
+    Run run = runFinbook({QStringLiteral("export"), m_held, page});
+    QCOMPARE(run.code, 2);
+    QVERIFY(isOneLine(run.err));
+    QVERIFY2(run.err.contains("--overwrite"), run.err.constData());
+    QCOMPARE(QFileInfo(page).size(), qint64(10));
+    run = runFinbook({QStringLiteral("export"), m_held, page, QStringLiteral("--overwrite")});
+    QCOMPARE(run.code, 0);
+    QVERIFY(QFileInfo(page).size() > 10000);
+    Q_UNUSED(written);
+    // The PNG folder form too: an existing frame is not replaced without --overwrite.
+    const QString folder = m_dir.filePath(QStringLiteral("again"));
+    QCOMPARE(runFinbook({QStringLiteral("export"), m_held, folder}).code, 0);
+    QCOMPARE(runFinbook({QStringLiteral("export"), m_held, folder}).code, 2);
+    QCOMPARE(
+        runFinbook({QStringLiteral("export"), m_held, folder, QStringLiteral("--overwrite")}).code,
+        0);
+}
+
+void TestCliExport::fullDiskFailsCleanly_data()
+{
+    QTest::addColumn<QString>("target");
+    QTest::addColumn<bool>("needsFfmpeg");
+    QTest::newRow("png") << "frames" << false;
+    QTest::newRow("html") << "walk.html" << false;
+    QTest::newRow("gif") << "walk.gif" << true;
+    QTest::newRow("mp4") << "walk.mp4" << true;
+}
+
+// Files cannot grow past 8 KiB (ulimit -f; SIGXFSZ ignored so writes fail with EFBIG), as
+// when the disk fills during the export. Before, the PNG export said nothing and left empty
+// or cut PNGs; now it fails with one line and leaves nothing.
+void TestCliExport::fullDiskFailsCleanly()
+{
+    QFETCH(QString, target);
+    QFETCH(bool, needsFfmpeg);
+    if (needsFfmpeg && !haveFfmpeg())
+        QSKIP("ffmpeg not installed");
+    const QString folder =
+        m_dir.filePath(QStringLiteral("full_") + QString::fromLatin1(QTest::currentDataTag()));
+    QVERIFY(QDir().mkpath(folder));
+    const QString out = QDir(folder).filePath(target);
+    const QString command = QStringLiteral("trap '' XFSZ; ulimit -f 8; exec %1 export %2 %3")
+                                .arg(shellQuote(kFinbook), shellQuote(m_held), shellQuote(out));
+    const Run run = runProgram(QStringLiteral("/bin/sh"), {QStringLiteral("-c"), command});
+    QCOMPARE(run.code, 1);
+    QVERIFY2(isOneLine(run.err), run.err.constData());
+    qInfo("%s", run.err.trimmed().constData());
+    QVERIFY(run.out.isEmpty());
+    QCOMPARE(filesIn(folder), QStringList());
+}
+
+void TestCliExport::missingFfmpegFails()
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("FINBOOK_FFMPEG"), m_dir.filePath(QStringLiteral("nowhere/ffmpeg")));
+    const QString out = m_dir.filePath(QStringLiteral("noffmpeg/walk.mp4"));
+    const Run run = runProgram(kFinbook, {QStringLiteral("export"), m_held, out}, env);
+    QCOMPARE(run.code, 1);
+    QVERIFY(isOneLine(run.err));
+    QVERIFY2(run.err.contains("ffmpeg"), run.err.constData());
+    QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("noffmpeg"))));
+}
+
+void TestCliExport::progressOnlyOnATerminal()
+{
+    if (program("script").isEmpty())
+        QSKIP("script (util-linux) not installed");
+    const QString out = m_dir.filePath(QStringLiteral("tty.html"));
+    // script(1) gives the command a terminal; what it printed there comes back on stdout.
+    const QString command = QStringLiteral("%1 export %2 %3")
+                                .arg(shellQuote(kFinbook), shellQuote(m_held), shellQuote(out));
+    const Run run = runProgram(program("script"),
+                               {QStringLiteral("-qec"), command, QStringLiteral("/dev/null")});
+    QCOMPARE(run.code, 0);
+    QVERIFY2(run.out.contains("tty.html: 12/12 (100%)"), run.out.constData());
+    QVERIFY(QFileInfo::exists(out));
+}
+
+QTEST_GUILESS_MAIN(TestCliExport)
+#include "tst_cli_export.moc"

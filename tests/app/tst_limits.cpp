@@ -1,0 +1,270 @@
+// What the real `finbook` executable costs on hostile or huge input: peak memory and time of
+// `finbook info` and `finbook export` on hand-made files, and exports onto a full disk.
+#include "../model/file_builder.h"
+#include "limits_support.h"
+
+#include <finbook/model/finbook_file.h>
+
+#include <QDir>
+#include <QFileInfo>
+#include <QImage>
+#include <QImageReader>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace finbook;
+using namespace file_build;
+namespace fb = file_build;
+using model::Document;
+using namespace limits_test;
+
+namespace {
+QString writeFile(const QTemporaryDir &dir, const QString &name, const QByteArray &bytes)
+{
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    if (f.open(QIODevice::WriteOnly))
+        f.write(bytes);
+    return path;
+}
+
+bool isOneLine(const QByteArray &text)
+{
+    return text.size() > 1 && text.endsWith('\n') && text.count('\n') == 1;
+}
+} // namespace
+
+class TestLimits : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void hugeCanvasExportStaysSmall();
+    void exportOntoFullDiskSaysSo();
+    void openingCostsAtMostFourTimesTheFile_data();
+    void openingCostsAtMostFourTimesTheFile();
+    void outOfMemoryIsSaidAsSuch();
+    void errorLinesAreHarmlessOnATerminal();
+    void infoReportsDamage();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestLimits::initTestCase()
+{
+    QVERIFY(QFile::exists(QStringLiteral(FINBOOK_BINARY_DIR "/bin/finbook")));
+    QVERIFY(m_dir.isValid());
+}
+
+void TestLimits::hugeCanvasExportStaysSmall()
+{
+    // The largest canvas Finbook allows: one image of it is 1 GiB; band by band it is not.
+    const QByteArray bytes = fileV1(document(model::kMaxCanvasSide, model::kMaxCanvasSide),
+                                    strokeTable({{30.0f, {{10, 10}, {16000, 16300}}}}),
+                                    emptyTable(), frameList({frame(1, {object(2, {{3, 0}})})}));
+    const QString path = writeFile(m_dir, QStringLiteral("huge.finbook"), bytes);
+    const QString out = m_dir.filePath(QStringLiteral("huge"));
+    const Measured run = runMeasured({QStringLiteral("export"), path, out + QLatin1Char('/')});
+    qInfo("16384x16384 export: %.1f s, peak %ld MiB", run.seconds, run.peakMiB);
+    QCOMPARE(run.code, 0);
+    if (!kUnderAsan)
+        QVERIFY2(run.peakMiB < 300, qPrintable(QString::number(run.peakMiB)));
+    QImageReader reader(QDir(out).filePath(QStringLiteral("frame_0001.png")));
+    QCOMPARE(reader.size(), QSize(model::kMaxCanvasSide, model::kMaxCanvasSide));
+}
+
+void TestLimits::exportOntoFullDiskSaysSo()
+{
+    const QString out = m_dir.filePath(QStringLiteral("tiny"));
+    QVERIFY(QDir().mkpath(out));
+    TinyDisk disk(out, "size=48k");
+    if (!disk.mounted())
+        QSKIP("needs root to mount a tmpfs; model/tst_render_limits injects the failure");
+    const QString example = QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook");
+    for (const QString &target : {out + QLatin1Char('/'), out + QStringLiteral("/walk.gif"),
+                                  out + QStringLiteral("/walk.html")}) {
+        const Measured run = runMeasured({QStringLiteral("export"), example, target});
+        QCOMPARE(run.code, 1);
+        QVERIFY2(isOneLine(run.err), run.err.constData());
+        QVERIFY2(run.err.contains("the disk is full"), run.err.constData());
+        // Nothing partial is left: no 0-byte or cut-off frame, no temporary file or folder.
+        QVERIFY2(
+            QDir(out).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot).isEmpty(),
+            qPrintable(QDir(out)
+                           .entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot)
+                           .join(QLatin1Char(' '))));
+    }
+}
+
+// Files of up to 64 MiB: what `finbook info` (which opens the whole file) may cost is 4 × the
+// file plus 200 MB, whatever the file claims. Bombs are refused before they fill memory.
+void TestLimits::openingCostsAtMostFourTimesTheFile_data()
+{
+    // Rows hold paths: the files are written here and their bytes let go, so the test process
+    // is small when it forks (a child's peak memory starts from its parent's at the fork).
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<bool>("opens");
+    const auto row = [this](const char *name, const QByteArray &bytes, bool opens) {
+        QTest::newRow(name) << writeFile(m_dir, QString::fromLatin1(name).replace(' ', '_'), bytes)
+                            << opens;
+    };
+    const int mib = 48;
+    // A real drawing: strokes of 500 points, nearly all of the file (the largest test file).
+    {
+        Document doc;
+        std::vector<model::Frame> frames;
+        model::Id next = 1;
+        const int strokes = (mib << 20) / (500 * 10 + 24);
+        for (int f = 0; f * 200 < strokes; ++f) {
+            model::Frame frame;
+            frame.id = next++;
+            model::StrokeGroup g;
+            g.id = next++;
+            for (int s = 0; s < 200 && f * 200 + s < strokes; ++s) {
+                auto data = std::make_shared<model::StrokeData>();
+                for (int i = 0; i < 500; ++i)
+                    data->points.push_back({float(i), float(s + f), float(i % 7) / 7.0f});
+                g.strokes.push_back({next++, std::move(data)});
+            }
+            frame.groups.push_back(std::move(g));
+            frames.push_back(std::move(frame));
+        }
+        doc.reset(std::move(frames), model::DocumentSettings(), next);
+        row("real drawing", model::serializeFinbook(doc), true);
+    }
+    const int n = mib << 20;
+    fb::Bytes poses;
+    poses.u32(quint32(n / 4 - 8)).raw(QByteArray(n - 32, '\0'));
+    row("empty poses",
+        fb::fileV1(fb::document(), fb::emptyTable(), poses,
+                   fb::frameList({fb::frame(1, {fb::object(2, {})})})),
+        false);
+    fb::Bytes strokes;
+    strokes.u32(quint32(n / 12));
+    for (int i = 0; i < n / 12; ++i)
+        strokes.u32(0xff000000u).f32(1.0f).u32(0);
+    row("empty stroke data",
+        fb::fileV1(fb::document(), strokes, fb::emptyTable(),
+                   fb::frameList({fb::frame(1, {fb::object(2, {})})})),
+        false);
+    fb::Bytes frame;
+    frame.u64(1).u32(1).u32(quint32(n / 29));
+    for (int i = 0; i < n / 29; ++i)
+        frame.record(fb::object(quint64(i) + 2, {}, QByteArray()));
+    row("empty objects",
+        fb::fileV1(fb::document(640, 360, quint64(n) + 10), fb::emptyTable(), fb::emptyTable(),
+                   fb::Bytes().u32(1).record(frame)),
+        false);
+    // One stroke referenced by every stroke of one object: loads (12 bytes a reference).
+    std::vector<std::pair<quint64, quint32>> refs;
+    for (int i = 0; i < n / 12; ++i)
+        refs.push_back({quint64(i) + 3, 0});
+    row("one stroke referenced millions of times",
+        fb::fileV1(fb::document(640, 360, quint64(n) + 10),
+                   fb::strokeTable({{3.0f, {{1, 1}, {600, 300}}}}), fb::emptyTable(),
+                   fb::frameList({fb::frame(1, {fb::object(2, refs)})})),
+        true);
+}
+
+void TestLimits::openingCostsAtMostFourTimesTheFile()
+{
+    QFETCH(QString, path);
+    QFETCH(bool, opens);
+    const Measured run = runMeasured({QStringLiteral("info"), path});
+    const long fileMiB = long(QFileInfo(path).size() >> 20);
+    qInfo("%s: %ld MiB file, %s in %.2f s, peak %ld MiB", QTest::currentDataTag(), fileMiB,
+          run.code == 0 ? "opened" : "refused", run.seconds, run.peakMiB);
+    QCOMPARE(run.code, opens ? 0 : 2);
+    if (!opens)
+        QVERIFY2(isOneLine(run.err) && run.err.contains("memory"), run.err.constData());
+    if (!kUnderAsan)
+        QVERIFY2(run.peakMiB <= 4 * fileMiB + 200, qPrintable(QString::number(run.peakMiB)));
+}
+
+// With its address space capped, `finbook info` on a 100 MB drawing runs out of memory at
+// some cap: reading the file or building the drawing. Every run either opens the file or
+// says that memory ran out, in one line; none calls the file damaged, none crashes.
+void TestLimits::outOfMemoryIsSaidAsSuch()
+{
+    if (kUnderAsan)
+        QSKIP("AddressSanitizer cannot start under an address-space cap");
+    Document doc;
+    std::vector<model::Frame> frames(1);
+    frames[0].id = 1;
+    model::StrokeGroup g;
+    g.id = 2;
+    for (int s = 0; s < 100; ++s) {
+        auto data = std::make_shared<model::StrokeData>();
+        data->points.assign(100000, model::StrokePoint{float(s), 2, 1});
+        g.strokes.push_back({model::Id(s) + 3, std::move(data)});
+    }
+    frames[0].groups.push_back(std::move(g));
+    doc.reset(std::move(frames), model::DocumentSettings(), 200);
+    const QString path =
+        writeFile(m_dir, QStringLiteral("hundred.finbook"), model::serializeFinbook(doc));
+    int outOfMemory = 0, opened = 0;
+    for (long cap = 100; cap <= 1000; cap += 25) {
+        const Measured run = runMeasured({QStringLiteral("info"), path}, cap);
+        if (run.code == 0) {
+            ++opened;
+            continue;
+        }
+        QVERIFY2(run.code == 2, qPrintable(QStringLiteral("cap %1 MiB: exit %2, %3")
+                                               .arg(cap)
+                                               .arg(run.code)
+                                               .arg(QString::fromUtf8(run.err))));
+        QVERIFY2(isOneLine(run.err) && run.err.contains("not enough memory") &&
+                     !run.err.contains("damaged"),
+                 run.err.constData());
+        ++outOfMemory;
+    }
+    qInfo("address space caps: %d ran out of memory and said so, %d opened", outOfMemory, opened);
+    QVERIFY(outOfMemory > 0);
+    QVERIFY(opened > 0);
+}
+
+// A name with terminal escapes (colour, window title, bell, a right-to-left override) was
+// echoed raw into the error line; the line must hold no control character at all.
+void TestLimits::errorLinesAreHarmlessOnATerminal()
+{
+    const QByteArray name("\x1b[31mred\x1b]0;pwned\x07\xe2\x80\xae");
+    const QByteArray bytes =
+        fb::fileV1(fb::document(), fb::emptyTable(), fb::emptyTable(),
+                   fb::frameList({fb::frame(1, {fb::object(2, {{3, 7}}, name)})}));
+    const QString path = writeFile(m_dir, QStringLiteral("evil\x1b[2J.finbook"), bytes);
+    for (const QStringList &args :
+         {QStringList{QStringLiteral("info"), path},
+          QStringList{QStringLiteral("export"), path, m_dir.filePath(QStringLiteral("never/"))},
+          QStringList{QStringLiteral("frob\x1b[2Jnicate"), QStringLiteral("a")},
+          QStringList{QStringLiteral("--bo\x1bgus")}}) {
+        const Measured run = runMeasured(args);
+        QCOMPARE(run.code, 2);
+        QVERIFY2(isOneLine(run.err), run.err.constData());
+        const QString line = QString::fromUtf8(run.err).chopped(1);
+        for (QChar c : line)
+            QVERIFY2(c.unicode() >= 0x20 && c.unicode() != 0x7f && c.unicode() != 0x202e,
+                     qPrintable(line.toLatin1().toPercentEncoding()));
+        QVERIFY2(line.contains(QLatin1String("\\x1b")), qPrintable(line));
+    }
+}
+
+// A damaged file: `finbook info` says so in one line and exits with 2.
+void TestLimits::infoReportsDamage()
+{
+    QByteArray bytes;
+    {
+        QFile example(QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook"));
+        QVERIFY(example.open(QIODevice::ReadOnly));
+        bytes = example.readAll();
+    }
+    bytes[bytes.size() / 2] = char(bytes[bytes.size() / 2] ^ 0x04);
+    const QString path = writeFile(m_dir, QStringLiteral("flipped.finbook"), bytes);
+    const Measured run = runMeasured({QStringLiteral("info"), path});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err), run.err.constData());
+    QVERIFY2(run.err.contains("damaged") && run.err.contains("checksum"), run.err.constData());
+    QVERIFY(run.out.isEmpty());
+}
+
+QTEST_GUILESS_MAIN(TestLimits)
+#include "tst_limits.moc"

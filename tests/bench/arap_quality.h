@@ -1,0 +1,27 @@
+// Pose quality of the ARAP deformer for finbook-bench arap: energy against a converged
+// reference, area change and flipped triangles, per solve mode, on one bend of a mesh.
+#pragma once
+
+#include <QJsonObject>
+#include <QString>
+
+#include <Eigen/Core>
+
+#include <optional>
+
+namespace finbook::bench {
+
+// Pins every vertex in the left 6 % of the x extent at rest and every vertex in the right
+// 6 % rotated by `degrees` about the centroid of the left pins (the right end swings round
+// the held left end: a bend). Solves it the paper's way (two steps), as a drag event and as
+// a stored pose, and a converged reference (tolerance 1e-10 of the size, flip repair off).
+// Columns: energy ratios to the reference, area change in %, flipped triangles, times in ms
+// (fastest of several runs), passes run.
+QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees);
+
+// Meshes a file of ../shared/data (Quick, Draw! "strokes" or shape "contours") with the
+// geometry layer's defaults, as the app would; nullopt with `error` set when it cannot.
+std::optional<std::pair<Eigen::MatrixX2d, Eigen::MatrixX3i>> meshFile(const QString &path,
+                                                                      QString &error);
+
+} // namespace finbook::bench

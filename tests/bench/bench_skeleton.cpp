@@ -1,0 +1,247 @@
+// finbook-bench skeleton [--png DIR] FILE...: the automatic skeleton of each drawing (Quick,
+// Draw! "strokes", through the silhouette) or shape ("contours", as given), in the formats of
+// shared/data/README.md. One JSON object per file per line: the time of the whole pipeline
+// from the silhouette (raw straight skeleton + default refinement; median of 9 runs, wall
+// clock as skeleton_ms and this thread's CPU time as skeleton_cpu_ms), its size, and how much
+// of the bones' length lies inside the shape (sampled every 0.25 px). --png writes a picture
+// of each result to DIR: shape grey, simplified outline blue, raw skeleton orange, bones
+// black, joints as circles of their radius, the root red.
+#include "../geometry/geometry_test_support.h"
+#include "bench.h"
+
+#include <finbook/geometry/silhouette.h>
+#include <finbook/geometry/skeleton/raw_skeleton.h>
+#include <finbook/geometry/skeleton/skeleton.h>
+#include <finbook/geometry/skeleton/skeleton_refine.h>
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <time.h>
+
+namespace {
+
+using namespace finbook::geometry;
+using finbook::test::insideRing;
+using finbook::test::toMatrix;
+using Clock = std::chrono::steady_clock;
+
+constexpr int kRuns = 9;
+constexpr double kPenWidth = 3.0;       // Quick, Draw! strokes carry no width
+constexpr double kSampleSpacing = 0.25; // px along bones for the inside fraction
+
+double msSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// CPU time of this thread (ms): unlike wall time, not inflated when other processes share the
+// cores, so runs on a busy machine stay comparable.
+double threadCpuMs()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
+}
+
+// The shape of a file: the silhouette of its strokes, or its contours as one polygon.
+std::optional<Region> readShape(const QString &path, QString &problem)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        problem = QStringLiteral("unreadable");
+        return std::nullopt;
+    }
+    const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
+    if (json.contains(QStringLiteral("strokes"))) {
+        std::vector<StrokeInput> strokes;
+        for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray())
+            strokes.push_back({toMatrix(stroke.toArray()), kPenWidth});
+        const auto region = silhouette(strokes);
+        if (!region) {
+            problem = QString::fromStdString(region.error().message);
+            return std::nullopt;
+        }
+        return *region;
+    }
+    if (json.contains(QStringLiteral("contours"))) {
+        const QJsonArray contours = json.value(QStringLiteral("contours")).toArray();
+        Polygon polygon;
+        for (qsizetype i = 0; i < contours.size(); ++i)
+            (i == 0 ? polygon.outer : polygon.holes.emplace_back()) =
+                toMatrix(contours[i].toArray());
+        return Region{polygon};
+    }
+    problem = QStringLiteral("neither strokes nor contours");
+    return std::nullopt;
+}
+
+bool insideRegion(const Region &region, const Eigen::RowVector2d &p)
+{
+    bool in = false;
+    for (const Eigen::MatrixX2d &ring : regionRings(region))
+        in ^= insideRing(ring, p);
+    return in;
+}
+
+// Fraction of the bones' total length inside the region (even-odd), sampled every
+// kSampleSpacing px; 1 for a skeleton without bones.
+double bonesInside(const Skeleton &s, const Region &region)
+{
+    double inside = 0.0, total = 0.0;
+    for (int j = 0; j < s.jointCount(); ++j) {
+        if (s.parent(j) < 0)
+            continue;
+        const Eigen::RowVector2d a = s.joints.row(s.parent(j)), b = s.joints.row(j);
+        const double length = (b - a).norm();
+        const int samples = std::max(1, int(std::ceil(length / kSampleSpacing)));
+        for (int k = 0; k < samples; ++k) {
+            const double t = (k + 0.5) / samples;
+            total += length / samples;
+            inside += insideRegion(region, a + t * (b - a)) ? length / samples : 0.0;
+        }
+    }
+    return total > 0.0 ? inside / total : 1.0;
+}
+
+void writePicture(const QString &dir, const QString &name, const Region &shape,
+                  const RawSkeleton &raw, const Skeleton &s)
+{
+    Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(1e300), hi = -lo;
+    for (const Eigen::MatrixX2d &ring : regionRings(shape)) {
+        lo = lo.cwiseMin(ring.colwise().minCoeff());
+        hi = hi.cwiseMax(ring.colwise().maxCoeff());
+    }
+    const double scale = 800.0 / std::max(1.0, (hi - lo).maxCoeff());
+    QImage image(int((hi - lo).x() * scale) + 40, int((hi - lo).y() * scale) + 40,
+                 QImage::Format_RGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.translate(20, 20);
+    painter.scale(scale, scale);
+    painter.translate(-lo.x(), -lo.y());
+    auto path = [](const Region &region) {
+        QPainterPath p;
+        p.setFillRule(Qt::OddEvenFill);
+        for (const Eigen::MatrixX2d &ring : regionRings(region)) {
+            for (Eigen::Index i = 0; i < ring.rows(); ++i)
+                i == 0 ? p.moveTo(ring(i, 0), ring(i, 1)) : p.lineTo(ring(i, 0), ring(i, 1));
+            p.closeSubpath();
+        }
+        return p;
+    };
+    painter.fillPath(path(shape), QColor(220, 220, 220));
+    painter.setPen(QPen(QColor(120, 160, 255), 1.0 / scale));
+    painter.drawPath(path(raw.contour));
+    painter.setPen(QPen(QColor(255, 180, 120), 1.0 / scale));
+    for (Eigen::Index e = 0; e < raw.edges.rows(); ++e)
+        painter.drawLine(QPointF(raw.nodes(raw.edges(e, 0), 0), raw.nodes(raw.edges(e, 0), 1)),
+                         QPointF(raw.nodes(raw.edges(e, 1), 0), raw.nodes(raw.edges(e, 1), 1)));
+    painter.setPen(QPen(Qt::black, 2.0 / scale));
+    for (int j = 0; j < s.jointCount(); ++j) {
+        if (s.parent(j) >= 0)
+            painter.drawLine(QPointF(s.joints(j, 0), s.joints(j, 1)),
+                             QPointF(s.joints(s.parent(j), 0), s.joints(s.parent(j), 1)));
+    }
+    for (int j = 0; j < s.jointCount(); ++j) {
+        painter.setPen(QPen(j == s.root ? Qt::red : QColor(0, 120, 0), 1.0 / scale));
+        painter.drawEllipse(QPointF(s.joints(j, 0), s.joints(j, 1)), s.radius(j), s.radius(j));
+    }
+    painter.end();
+    image.save(QDir(dir).filePath(name + QStringLiteral(".png")));
+}
+
+QJsonObject measure(const QString &path, const Region &shape, const QString &pngDir)
+{
+    QJsonObject row{{QStringLiteral("file"), QFileInfo(path).fileName()}};
+    std::vector<double> totalMs, rawMs, cpuMs;
+    std::optional<RawSkeleton> raw;
+    std::optional<Skeleton> skeleton;
+    for (int run = 0; run < kRuns; ++run) {
+        const auto start = Clock::now();
+        const double cpuStart = threadCpuMs();
+        auto r = rawSkeleton(shape);
+        rawMs.push_back(msSince(start));
+        if (!r) {
+            row.insert(QStringLiteral("error"), QString::fromStdString(r.error().message));
+            return row;
+        }
+        auto s = refineSkeleton(*r);
+        totalMs.push_back(msSince(start));
+        cpuMs.push_back(threadCpuMs() - cpuStart);
+        if (!s) {
+            row.insert(QStringLiteral("error"), QString::fromStdString(s.error().message));
+            return row;
+        }
+        raw = std::move(*r);
+        skeleton = std::move(*s);
+    }
+    const std::vector<JointKind> kinds = jointKinds(*skeleton);
+    using finbook::bench::median;
+    row.insert(QStringLiteral("parts"), qint64(raw->contour.size()));
+    row.insert(QStringLiteral("input_vertices"), qint64(regionVertexCount(shape)));
+    row.insert(QStringLiteral("polygon_vertices"), qint64(raw->polygonVertices));
+    row.insert(QStringLiteral("tolerance_px"), raw->tolerance);
+    row.insert(QStringLiteral("raw_nodes"), qint64(raw->nodes.rows()));
+    row.insert(QStringLiteral("skeleton_ms"), median(totalMs));
+    row.insert(QStringLiteral("skeleton_cpu_ms"), median(cpuMs));
+    row.insert(QStringLiteral("raw_ms"), median(rawMs));
+    row.insert(QStringLiteral("joints"), skeleton->jointCount());
+    row.insert(QStringLiteral("bones"), boneCount(*skeleton));
+    row.insert(QStringLiteral("junctions"),
+               qint64(std::count(kinds.begin(), kinds.end(), JointKind::Junction)));
+    row.insert(QStringLiteral("terminals"),
+               qint64(std::count(kinds.begin(), kinds.end(), JointKind::Terminal)));
+    row.insert(QStringLiteral("bones_inside"), bonesInside(*skeleton, shape));
+    row.insert(QStringLiteral("finite"), skeleton->joints.allFinite() &&
+                                             skeleton->radius.allFinite() &&
+                                             isValidSkeleton(*skeleton));
+    if (!pngDir.isEmpty())
+        writePicture(pngDir, QFileInfo(path).baseName(), shape, *raw, *skeleton);
+    return row;
+}
+
+int benchSkeleton(const QStringList &arguments)
+{
+    QStringList args = arguments;
+    QString pngDir;
+    if (args.size() >= 2 && args.front() == QStringLiteral("--png")) {
+        pngDir = args[1];
+        args = args.mid(2);
+        QDir().mkpath(pngDir);
+    }
+    if (args.isEmpty()) {
+        std::fprintf(stderr, "usage: finbook-bench skeleton [--png DIR] FILE...\n");
+        return 2;
+    }
+    int failures = 0;
+    for (const QString &path : args) {
+        QString problem;
+        const std::optional<Region> shape = readShape(path, problem);
+        const QJsonObject row =
+            shape ? measure(path, *shape, pngDir)
+                  : QJsonObject{{QStringLiteral("file"), QFileInfo(path).fileName()},
+                                {QStringLiteral("error"), problem}};
+        failures += row.contains(QStringLiteral("error")) ? 1 : 0;
+        std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
+        std::fflush(stdout);
+    }
+    return failures == 0 ? 0 : 1;
+}
+
+} // namespace
+
+FINBOOK_BENCH("skeleton", "[--png DIR] FILE... (Quick, Draw! strokes or shape contours as JSON)",
+              benchSkeleton);

@@ -1,0 +1,176 @@
+// The skinning weights the notes compare harmonic weights with, for `finbook-bench skin
+// --compare` only: Synfig/Moho-style inverse-square distance falloff and unconstrained
+// biharmonic weights (the bounded variant, BBW, needs a QP solver; its cost is in the notes),
+// plus a measure of weight that crosses gaps in the shape.
+#pragma once
+
+#include "../deform/skin_test_support.h"
+
+#include <finbook/deform/skeleton/skinning_weights.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <cmath>
+#include <vector>
+
+namespace finbook::bench {
+
+inline double segmentDistance(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
+                              const Eigen::Vector2d &b)
+{
+    const Eigen::Vector2d ab = b - a;
+    const double t =
+        ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+    return (p - a - t * ab).norm();
+}
+
+// Euclidean distance from every vertex to every handle's segment (n×J, ∞ for non-handles).
+inline Eigen::MatrixXd handleDistances(const Eigen::MatrixX2d &V,
+                                       const finbook::deform::Skeleton &skeleton,
+                                       const Eigen::VectorXi &handles)
+{
+    Eigen::MatrixXd D = Eigen::MatrixXd::Constant(V.rows(), skeleton.jointCount(), INFINITY);
+    for (const int j : handles) {
+        const int p = skeleton.parent(j);
+        const Eigen::Vector2d b = skeleton.joints.row(j).transpose();
+        const Eigen::Vector2d a = p < 0 ? b : Eigen::Vector2d(skeleton.joints.row(p).transpose());
+        for (Eigen::Index v = 0; v < V.rows(); ++v)
+            D(v, j) = segmentDistance(V.row(v).transpose(), a, b);
+    }
+    return D;
+}
+
+// w_j ∝ 1 / (d_j² + 1 px²), normalized: weights by distance alone.
+inline Eigen::MatrixXd inverseSquareWeights(const Eigen::MatrixXd &D)
+{
+    Eigen::MatrixXd W = (D.array().square() + 1.0).inverse().matrix();
+    for (Eigen::Index v = 0; v < W.rows(); ++v)
+        W.row(v) /= W.row(v).sum();
+    return W;
+}
+
+// Unconstrained biharmonic weights with the same boundary conditions: minimize xᵀ L M⁻¹ L x
+// (cotangent L, lumped mass M) per bone. Smooth at the bones but not bounded: the overshoot
+// below 0 and above 1 is what BBW's constraints remove at 30–200× the cost.
+inline Eigen::MatrixXd biharmonicWeights(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                         const Eigen::VectorXi &owner, Eigen::Index joints)
+{
+    using Sparse = Eigen::SparseMatrix<double>;
+    std::vector<Eigen::Triplet<double>> t;
+    Eigen::VectorXd mass = Eigen::VectorXd::Zero(V.rows());
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+        const Eigen::RowVector2d e1 = V.row(F(f, 1)) - V.row(F(f, 0));
+        const Eigen::RowVector2d e2 = V.row(F(f, 2)) - V.row(F(f, 0));
+        const double area = 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+        for (int k = 0; k < 3; ++k) {
+            const int o = F(f, k), i = F(f, (k + 1) % 3), j = F(f, (k + 2) % 3);
+            mass(o) += area / 3.0;
+            const Eigen::RowVector2d u = V.row(i) - V.row(o), w = V.row(j) - V.row(o);
+            const double c = 0.5 * u.dot(w) / (2.0 * area);
+            t.emplace_back(i, j, -c);
+            t.emplace_back(j, i, -c);
+            t.emplace_back(i, i, c);
+            t.emplace_back(j, j, c);
+        }
+    }
+    Sparse L(V.rows(), V.rows());
+    L.setFromTriplets(t.begin(), t.end());
+    const Sparse Q = L * mass.cwiseInverse().asDiagonal() * L;
+    std::vector<int> freeIndex(std::size_t(V.rows()), -1), free;
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        if (owner(v) < 0) {
+            freeIndex[std::size_t(v)] = int(free.size());
+            free.push_back(int(v));
+        }
+    }
+    std::vector<Eigen::Triplet<double>> qff;
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(Eigen::Index(free.size()), joints);
+    for (Eigen::Index col = 0; col < Q.outerSize(); ++col) {
+        for (Sparse::InnerIterator it(Q, col); it; ++it) {
+            const int r = freeIndex[std::size_t(it.row())];
+            if (r < 0)
+                continue;
+            const int c = freeIndex[std::size_t(it.col())];
+            if (c >= 0)
+                qff.emplace_back(r, c, it.value());
+            else
+                B(r, owner(it.col())) -= it.value();
+        }
+    }
+    Sparse Qff(Eigen::Index(free.size()), Eigen::Index(free.size()));
+    Qff.setFromTriplets(qff.begin(), qff.end());
+    Eigen::SimplicialLDLT<Sparse> factor(Qff);
+    const Eigen::MatrixXd X = factor.solve(B);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(V.rows(), joints);
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        if (owner(v) >= 0)
+            W(v, owner(v)) = 1.0;
+        else
+            W.row(v) = X.row(freeIndex[std::size_t(v)]);
+    }
+    return W;
+}
+
+// Weight that crosses a gap: weight a vertex takes from a bone whose held vertices are near
+// through the air but far through the shape (distance inside the mesh > 2 × straight
+// distance + 3 edges; held vertices rather than the bone itself, because the test skeleton's
+// straight bones cut corners of curled limbs).
+// Counted on the largest component, where the test skeleton lives (smaller lobes follow their
+// nearest bone by design). Returns the mean over its vertices; `worst` gets the largest.
+inline double crossGapWeight(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                             const Eigen::VectorXi &owner, const Eigen::VectorXi &handles,
+                             const Eigen::MatrixXd &W, double &worst)
+{
+    const finbook::test::MeshGraph g = finbook::test::meshGraph(V, F);
+    double h = 0.0;
+    for (Eigen::Index f = 0; f < F.rows(); ++f)
+        h += (V.row(F(f, 0)) - V.row(F(f, 1))).norm() / double(F.rows());
+    Eigen::VectorXd crossing = Eigen::VectorXd::Zero(V.rows());
+    const auto length = [](int, int, double l) { return l; };
+    // The largest component: the vertices reached from the vertex that reaches most.
+    std::vector<double> largest;
+    std::vector<bool> seen(std::size_t(V.rows()), false);
+    std::size_t bestCount = 0;
+    for (int v = 0; v < int(V.rows()); ++v) {
+        if (seen[std::size_t(v)])
+            continue;
+        std::vector<double> d = finbook::test::dijkstra(g, {v}, length);
+        std::size_t count = 0;
+        for (std::size_t w = 0; w < d.size(); ++w)
+            if (std::isfinite(d[w])) {
+                seen[w] = true;
+                ++count;
+            }
+        if (count > bestCount) {
+            bestCount = count;
+            largest = std::move(d);
+        }
+    }
+    for (const int j : handles) {
+        std::vector<int> sources;
+        for (Eigen::Index v = 0; v < V.rows(); ++v)
+            if (owner(v) == j)
+                sources.push_back(int(v));
+        if (sources.empty())
+            continue;
+        const std::vector<double> inside = finbook::test::dijkstra(g, sources, length);
+        for (Eigen::Index v = 0; v < V.rows(); ++v) {
+            double air = INFINITY;
+            for (const int u : sources)
+                air = std::min(air, (V.row(v) - V.row(u)).squaredNorm());
+            if (inside[std::size_t(v)] > 2.0 * std::sqrt(air) + 3.0 * h)
+                crossing(v) += std::max(0.0, W(v, j));
+        }
+    }
+    worst = 0.0;
+    double sum = 0.0;
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        if (std::isfinite(largest[std::size_t(v)])) {
+            worst = std::max(worst, crossing(v));
+            sum += crossing(v);
+        }
+    }
+    return sum / double(std::max<std::size_t>(bestCount, 1));
+}
+
+} // namespace finbook::bench

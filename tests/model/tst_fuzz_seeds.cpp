@@ -1,0 +1,137 @@
+// The seed corpus of the fuzzer (tests/fuzz/seeds): small files that together use every
+// section and every object chunk of the format, so mutations start from each of them. The
+// test checks the seeds are what today's Finbook writes and that they cover the format;
+// FINBOOK_WRITE_SEEDS=DIR writes them anew (after a format change).
+#include "tst_file_sample.h"
+
+#include <finbook/model/recovery/recovery_store.h>
+
+#include <QDir>
+
+#include <set>
+
+using namespace finbook::model;
+using namespace file_test;
+
+namespace {
+const QString kSeedDir = QStringLiteral(FINBOOK_SOURCE_DIR "/tests/fuzz/seeds");
+
+StrokeGroup rigged(Id &next, const QString &name, float x0)
+{
+    StrokeGroup g;
+    g.id = next++;
+    g.name = name;
+    g.strokes = {{next++, makeStroke(9, 0xff334455, 4.0f, x0, 40)},
+                 {next++, makeStroke(3, 0x80aa0000, 2.0f, x0 + 5, 60)}};
+    return g;
+}
+
+// Two frames, each with a caged object and a boned one, both posed.
+void cageAndSkeleton(Document &doc)
+{
+    std::vector<Frame> frames(2);
+    Id next = 1;
+    for (Frame &f : frames) {
+        f.id = next++;
+        StrokeGroup caged = rigged(next, QStringLiteral("caged"), 10);
+        caged.rig.cage.rest = {{0, 0}, {60, 0}, {60, 90}, {0, 90}};
+        caged.rig.cage.posed = {{2, 1}, {63, 0}, {58, 95}, {-3, 88}};
+        caged.deformed = shiftedPose(caged, 1.5f);
+        StrokeGroup boned = rigged(next, QStringLiteral("boned"), 120);
+        SkeletonRig &s = boned.rig.skeleton;
+        s.joints = {{120, 40}, {130, 60}, {140, 80}};
+        s.parent = {-1, 0, 1};
+        s.radius = {4, 3, 2};
+        s.root = 0;
+        s.angles = {0.0, 0.25, -0.5};
+        s.rootOffset = QPointF(3, -2);
+        s.settings = {0.5, 0.1, 0.2, 0.05};
+        s.mode = SkinningMode::LinearBlend;
+        boned.deformed = shiftedPose(boned, -2.0f);
+        f.groups = {caged, boned};
+    }
+    DocumentSettings settings;
+    settings.canvasSize = QSize(320, 200);
+    doc.reset(std::move(frames), settings, next);
+}
+
+// Every seed by name.
+std::vector<std::pair<QString, QByteArray>> seeds()
+{
+    Document sample;
+    buildSample(sample);
+    Document rigs;
+    cageAndSkeleton(rigs);
+    std::vector<std::pair<QString, QByteArray>> all{
+        {QStringLiteral("sample.finbook"), serializeFinbook(sample)},
+        {QStringLiteral("cage_skeleton.finbook"), serializeFinbook(rigs)},
+        {QStringLiteral("recovery_copy.finbook"),
+         recoveryCopyBytes(rigs.frames(), rigs.settings(),
+                           {QStringLiteral("rigs.finbook"), QStringLiteral("/tmp/rigs.finbook"),
+                            QDateTime(QDate(2024, 11, 23), QTime(10, 0), Qt::UTC), 2})},
+        {QStringLiteral("format_v1.finbook"),
+         fileBytes(QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/format_v1_sample.finbook"))}};
+    return all;
+}
+
+// Tags of the sections and object chunks a file holds.
+void collectTags(const QByteArray &bytes, std::set<QByteArray> &tags)
+{
+    const qsizetype trailer = sectionTrailer(bytes);
+    qsizetype at = 12;
+    while (at + 12 <= bytes.size()) {
+        tags.insert(bytes.mid(at, 4));
+        const quint64 length = qFromLittleEndian<quint64>(bytes.constData() + at + 4);
+        at += 12 + qsizetype(length) + trailer;
+    }
+    // Object chunks: look for their tags followed by a plausible length (good enough for
+    // files this small, whose points never spell these letters).
+    for (const char *chunk : {"PINS", "CAGE", "SKEL", "DEFM"})
+        if (bytes.contains(chunk))
+            tags.insert(chunk);
+}
+} // namespace
+
+class TestFuzzSeeds : public QObject {
+    Q_OBJECT
+private slots:
+    void writeSeedsWhenAsked();
+    void seedsAreCurrent();
+    void seedsCoverTheFormat();
+};
+
+void TestFuzzSeeds::writeSeedsWhenAsked()
+{
+    const QString out = qEnvironmentVariable("FINBOOK_WRITE_SEEDS");
+    if (out.isEmpty())
+        QSKIP("set FINBOOK_WRITE_SEEDS=DIR to write the seeds");
+    QVERIFY(QDir().mkpath(out));
+    for (const auto &[name, bytes] : seeds()) {
+        QFile f(QDir(out).filePath(name));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QCOMPARE(f.write(bytes), bytes.size());
+    }
+}
+
+void TestFuzzSeeds::seedsAreCurrent()
+{
+    for (const auto &[name, bytes] : seeds()) {
+        QVERIFY2(!bytes.isEmpty(), qPrintable(name));
+        QVERIFY2(fileBytes(QDir(kSeedDir).filePath(name)) == bytes,
+                 qPrintable(name + QStringLiteral(" is stale: FINBOOK_WRITE_SEEDS=") + kSeedDir));
+        QVERIFY2(readFinbook(bytes), qPrintable(name));
+    }
+}
+
+void TestFuzzSeeds::seedsCoverTheFormat()
+{
+    std::set<QByteArray> tags;
+    for (const auto &[name, bytes] : seeds())
+        collectTags(bytes, tags);
+    for (const char *tag :
+         {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL", "DEFM"})
+        QVERIFY2(tags.count(tag), tag);
+}
+
+QTEST_GUILESS_MAIN(TestFuzzSeeds)
+#include "tst_fuzz_seeds.moc"

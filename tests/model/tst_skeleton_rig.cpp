@@ -1,0 +1,418 @@
+// Skeletons in the model: building, refining and posing as undoable commands, the skinning
+// precompute through the deform controller, and the "SKEL" file chunk.
+#include <finbook/model/deform_controller.h>
+#include <finbook/model/finbook_file.h>
+#include <finbook/model/pins/pin_commands.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/model/skeleton/skeleton_setup.h>
+
+#include <QRandomGenerator>
+#include <QSignalSpy>
+#include <QTest>
+#include <QtEndian>
+
+#include <cmath>
+#include <numbers>
+
+using namespace finbook;
+using namespace finbook::model;
+
+namespace {
+
+StrokeDataPtr line(QPointF a, QPointF b, int n)
+{
+    auto data = std::make_shared<StrokeData>();
+    for (int i = 0; i < n; ++i) {
+        const QPointF p = a + (b - a) * (double(i) / (n - 1));
+        data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+    }
+    data->width = 6.0f;
+    return data;
+}
+
+// An L-shaped object drawn with parallel strokes: an upper arm and a forearm.
+Id makeElbow(Document &doc)
+{
+    Frame f;
+    f.id = doc.allocateId();
+    StrokeGroup g;
+    g.id = doc.allocateId();
+    g.name = QStringLiteral("arm");
+    for (int k = 0; k <= 6; ++k) {
+        const double o = 5.0 * k;
+        g.strokes.push_back({doc.allocateId(), line({100, 100 + o}, {330, 100 + o}, 60)});
+        g.strokes.push_back({doc.allocateId(), line({300 + o, 100}, {300 + o, 330}, 60)});
+    }
+    f.groups.push_back(g);
+    doc.reset({f}, DocumentSettings{}, doc.nextId());
+    return g.id;
+}
+
+bool waitSolved(DeformController &controller, const Document &doc, Id groupId)
+{
+    QSignalSpy solved(&controller, &DeformController::poseSolved);
+    QSignalSpy failed(&controller, &DeformController::errorOccurred);
+    const auto ready = [&] {
+        const DeformSetup *s = controller.setup(groupId);
+        return s && s->matches(*doc.group(groupId)) && !controller.isWaiting(groupId);
+    };
+    for (int i = 0; i < 400 && !ready() && failed.isEmpty(); ++i)
+        solved.wait(25);
+    for (const auto &args : failed)
+        qWarning("deformation failed: %s", qPrintable(args.at(1).toString()));
+    return ready();
+}
+
+Id buildSkeleton(Document &doc, Id g)
+{
+    auto rig = buildSkeletonRig(*doc.group(g));
+    if (!rig)
+        qWarning("%s", qPrintable(rig.error()));
+    doc.undoStack()->push(new BuildSkeletonCommand(&doc, g, rig ? *rig : SkeletonRig{}));
+    return g;
+}
+
+// A terminal joint whose bone can turn (not a root).
+int terminalBone(const SkeletonRig &s)
+{
+    std::vector<int> children(s.joints.size(), 0);
+    for (int p : s.parent)
+        if (p >= 0)
+            ++children[std::size_t(p)];
+    for (int j = int(s.joints.size()) - 1; j >= 0; --j)
+        if (s.parent[std::size_t(j)] >= 0 && children[std::size_t(j)] == 0)
+            return j;
+    return -1;
+}
+
+double angleOf(QPointF v)
+{
+    return std::atan2(v.y(), v.x());
+}
+
+double wrapped(double a)
+{
+    return std::remainder(a, 2 * std::numbers::pi);
+}
+
+} // namespace
+
+class TestSkeletonRig : public QObject {
+    Q_OBJECT
+private slots:
+    void buildGivesValidRestSkeleton();
+    void identityPoseIsRest_data();
+    void identityPoseIsRest();
+    void rotatingABoneRotatesItsTip_data();
+    void rotatingABoneRotatesItsTip();
+    void commandsUndoAndRedoExactly();
+    void settingsDragIsOneStep();
+    void applyPoseRebases();
+    void fileRoundTripKeepsSkeletonAndPose();
+    void malformedSkeletonChunksAreRefused_data();
+    void malformedSkeletonChunksAreRefused();
+    void randomPosesNeverGiveNaN();
+    void duplicateFrameCopiesSkeletonAndPose();
+};
+
+void TestSkeletonRig::buildGivesValidRestSkeleton()
+{
+    Document doc;
+    const Id g = buildSkeleton(doc, makeElbow(doc));
+    const SkeletonRig &s = doc.group(g)->rig.skeleton;
+    QCOMPARE(doc.group(g)->rig.kind(), RigKind::Skeleton);
+    QVERIFY(s.isValid());
+    QVERIFY(s.jointCount() >= 3); // an L has at least two bones
+    QVERIFY(!s.isPosed());
+    QVERIFY(terminalBone(s) >= 0);
+    // An object without strokes gives a sentence, not a skeleton.
+    StrokeGroup empty;
+    QVERIFY(!buildSkeletonRig(empty));
+}
+
+void TestSkeletonRig::identityPoseIsRest_data()
+{
+    QTest::addColumn<int>("mode");
+    QTest::newRow("rigid") << int(SkinningMode::Rigid);
+    QTest::newRow("linear blend") << int(SkinningMode::LinearBlend);
+}
+
+void TestSkeletonRig::identityPoseIsRest()
+{
+    QFETCH(int, mode);
+    Document doc;
+    DeformController controller(&doc);
+    const Id g = buildSkeleton(doc, makeElbow(doc));
+    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode(mode)));
+    QVERIFY(waitSolved(controller, doc, g));
+    const StrokeGroup *group = doc.group(g);
+    QVERIFY(group->isDeformed());
+    double worst = 0;
+    for (std::size_t s = 0; s < group->strokes.size(); ++s)
+        for (std::size_t i = 0; i < group->strokes[s].data->points.size(); ++i) {
+            const StrokePoint a = group->strokes[s].data->points[i];
+            const StrokePoint b = group->deformed->strokes[s][i];
+            worst = std::max(worst, std::hypot(double(a.x) - b.x, double(a.y) - b.y));
+        }
+    QVERIFY2(worst <= 1e-9, qPrintable(QString::number(worst)));
+}
+
+void TestSkeletonRig::rotatingABoneRotatesItsTip_data()
+{
+    identityPoseIsRest_data();
+}
+
+void TestSkeletonRig::rotatingABoneRotatesItsTip()
+{
+    QFETCH(int, mode);
+    Document doc;
+    DeformController controller(&doc);
+    const Id g = buildSkeleton(doc, makeElbow(doc));
+    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode(mode)));
+    QVERIFY(waitSolved(controller, doc, g));
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
+    const int bone = terminalBone(rest);
+    const QPointF pivot = rest.joints[std::size_t(rest.parent[std::size_t(bone)])];
+    const QPointF tip = rest.joints[std::size_t(bone)];
+    // "Near its tip": the mesh vertices the bone holds (its skinning boundary condition) in
+    // the outer half of the bone.
+    const DeformSetup *setup = controller.setup(g);
+    QVERIFY(setup && setup->skeleton);
+    const Eigen::VectorXi &owner = setup->skeleton->weights->owner;
+    const Eigen::MatrixX2d V = setup->meshVertices();
+    for (const double theta : {0.3, -0.7}) {
+        std::vector<double> angles(rest.joints.size(), 0.0);
+        angles[std::size_t(bone)] = theta;
+        doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+        const Eigen::MatrixX2d *U = controller.poseVertices(g);
+        QVERIFY(U && U->rows() == V.rows());
+        int checked = 0;
+        for (Eigen::Index v = 0; v < V.rows(); ++v) {
+            const QPointF p(V(v, 0), V(v, 1));
+            if (owner(v) != bone || QLineF(p, tip).length() > QLineF(p, pivot).length())
+                continue;
+            const QPointF q((*U)(v, 0), (*U)(v, 1));
+            const double turned = wrapped(angleOf(q - pivot) - angleOf(p - pivot) - theta);
+            QVERIFY2(std::abs(turned) < 1e-3, qPrintable(QString::number(turned)));
+            // Rigidly: the distance to the pivot is kept too.
+            QVERIFY(std::abs(QLineF(q, pivot).length() - QLineF(p, pivot).length()) < 1e-2);
+            ++checked;
+        }
+        QVERIFY(checked > 0);
+        const StrokeGroup *group = doc.group(g);
+        // The posed joint is where forward kinematics puts it.
+        const QPointF posedTip = group->rig.skeleton.posedJoints()[std::size_t(bone)];
+        QVERIFY(std::abs(wrapped(angleOf(posedTip - pivot) - angleOf(tip - pivot) - theta)) < 1e-9);
+    }
+}
+
+void TestSkeletonRig::commandsUndoAndRedoExactly()
+{
+    Document doc;
+    DeformController controller(&doc);
+    const Id g = makeElbow(doc);
+    QUndoStack *stack = doc.undoStack();
+    const QByteArray start = serializeFinbook(doc);
+    stack->push(new AddPinCommand(&doc, g, {110, 110}, {110, 110})); // replaced by the skeleton
+    buildSkeleton(doc, g);
+    QVERIFY(doc.group(g)->rig.pins.empty());
+    QVERIFY(waitSolved(controller, doc, g));
+    const int joints = doc.group(g)->rig.skeleton.jointCount();
+    std::vector<double> angles(std::size_t(joints), 0.0);
+    for (int step = 1; step <= 5; ++step) {
+        angles.back() = 0.1 * step;
+        stack->push(new PoseBonesCommand(&doc, g, angles, {}, 3)); // one drag
+    }
+    const int afterDrag = stack->count();
+    stack->push(new PoseBonesCommand(&doc, g, angles, {12, -4}, 4)); // the root drag
+    QCOMPARE(stack->count(), afterDrag + 1);
+    stack->push(new SetSkinningModeCommand(&doc, g, SkinningMode::LinearBlend));
+    stack->push(new ResetPoseCommand(&doc, g));
+    QVERIFY(!doc.group(g)->rig.isPosed());
+    stack->push(new PoseBonesCommand(&doc, g, angles, {}, 5));
+    stack->push(new ApplyPoseCommand(&doc, g));
+    QVERIFY(waitSolved(controller, doc, g));
+    const QByteArray end = serializeFinbook(doc);
+    while (stack->canUndo())
+        stack->undo();
+    QCOMPARE(serializeFinbook(doc), start);
+    while (stack->canRedo())
+        stack->redo();
+    QVERIFY(waitSolved(controller, doc, g));
+    QCOMPARE(serializeFinbook(doc), end);
+    // Non-finite or wrongly sized poses are refused, never stored.
+    const int count = stack->count();
+    stack->push(
+        new PoseBonesCommand(&doc, g, std::vector<double>(std::size_t(joints), qQNaN()), {}, 9));
+    stack->push(new PoseBonesCommand(&doc, g, {0.5}, {}, 9));
+    QCOMPARE(stack->count(), count);
+}
+
+void TestSkeletonRig::settingsDragIsOneStep()
+{
+    Document doc;
+    const Id g = buildSkeleton(doc, makeElbow(doc));
+    QUndoStack *stack = doc.undoStack();
+    const QByteArray start = serializeFinbook(doc);
+    const SkeletonRig before = doc.group(g)->rig.skeleton;
+    const int count = stack->count();
+    SkeletonSettings settings;
+    for (int step = 1; step <= 10; ++step) {
+        settings.complexity = 0.1 * step;
+        auto rebuilt =
+            buildSkeletonRig(*doc.group(g), settings, before.joints[std::size_t(before.root)]);
+        QVERIFY(rebuilt);
+        stack->push(new SetSkeletonSettingsCommand(&doc, g, *rebuilt, 11));
+    }
+    QCOMPARE(stack->count(), count + 1);
+    const SkeletonRig &fine = doc.group(g)->rig.skeleton;
+    QCOMPARE(fine.settings.complexity, 1.0);
+    // Complexity 1 keeps a bone per raw edge: never fewer joints than the default.
+    QVERIFY(fine.jointCount() >= before.jointCount());
+    const QByteArray end = serializeFinbook(doc);
+    stack->undo();
+    QCOMPARE(serializeFinbook(doc), start);
+    stack->redo();
+    QCOMPARE(serializeFinbook(doc), end);
+}
+
+void TestSkeletonRig::applyPoseRebases()
+{
+    Document doc;
+    DeformController controller(&doc);
+    const Id g = buildSkeleton(doc, makeElbow(doc));
+    QVERIFY(waitSolved(controller, doc, g));
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
+    std::vector<double> angles(rest.joints.size(), 0.0);
+    angles[std::size_t(terminalBone(rest))] = 0.5;
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {3, 4}, 1));
+    const std::vector<QPointF> posed = doc.group(g)->rig.skeleton.posedJoints();
+    const auto shown = doc.group(g)->deformed;
+    doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
+    const SkeletonRig &after = doc.group(g)->rig.skeleton;
+    QVERIFY(!after.isPosed());
+    QCOMPARE(after.joints, posed);
+    QCOMPARE(after.parent, rest.parent);
+    for (std::size_t s = 0; s < shown->strokes.size(); ++s)
+        QCOMPARE(doc.group(g)->strokes[s].data->points, shown->strokes[s]);
+}
+
+void TestSkeletonRig::fileRoundTripKeepsSkeletonAndPose()
+{
+    Document doc;
+    DeformController controller(&doc);
+    const Id g = makeElbow(doc);
+    QVERIFY(!serializeFinbook(doc).contains("SKEL")); // only objects with a skeleton get one
+    buildSkeleton(doc, g);
+    QVERIFY(waitSolved(controller, doc, g));
+    std::vector<double> angles(std::size_t(doc.group(g)->rig.skeleton.jointCount()), 0.25);
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {1.5, -2.25}, 1));
+    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode::LinearBlend));
+    const QByteArray bytes = serializeFinbook(doc);
+    auto loaded = readFinbook(bytes);
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    const StrokeGroup &back = loaded->frames[0].groups[0];
+    QCOMPARE(back.rig, doc.group(g)->rig);
+    Document reopened;
+    reopened.reset(loaded->frames, loaded->settings, loaded->nextId);
+    QCOMPARE(serializeFinbook(reopened), bytes);
+    // Re-solving the reopened pose gives the saved strokes.
+    DeformController again(&reopened);
+    const auto saved = reopened.group(g)->deformed;
+    again.prepare(g);
+    QVERIFY(waitSolved(again, reopened, g));
+    QCOMPARE(*reopened.group(g)->deformed, *saved);
+}
+
+void TestSkeletonRig::malformedSkeletonChunksAreRefused_data()
+{
+    QTest::addColumn<int>("offset"); // from the start of the chunk's payload
+    QTest::addColumn<QByteArray>("bytes");
+    const auto f64 = [](double v) {
+        QByteArray b(8, 0);
+        qToLittleEndian(v, b.data());
+        return b;
+    };
+    const auto i32 = [](qint32 v) {
+        QByteArray b(4, 0);
+        qToLittleEndian(v, b.data());
+        return b;
+    };
+    QTest::newRow("no joints") << 0 << i32(0);
+    QTest::newRow("huge count") << 0 << i32(0x7fffffff);
+    QTest::newRow("NaN joint") << 4 << f64(qQNaN());
+    QTest::newRow("negative radius") << 4 + 16 << f64(-1.0);
+    QTest::newRow("first joint has a parent") << 4 + 24 << i32(0);
+    QTest::newRow("parent after child") << 4 + 36 + 24 << i32(5);
+    QTest::newRow("infinite angle") << 4 + 28 << f64(qInf());
+    QTest::newRow("root out of range") << -(4 + 6 * 8 + 1) << i32(1000);
+    QTest::newRow("setting above 1") << -(1 + 4 * 8) << f64(1.5);
+    QTest::newRow("unknown mode") << -1 << QByteArray(1, '\x07');
+}
+
+void TestSkeletonRig::malformedSkeletonChunksAreRefused()
+{
+    QFETCH(int, offset);
+    QFETCH(QByteArray, bytes);
+    Document doc;
+    const Id g = buildSkeleton(doc, makeElbow(doc));
+    QVERIFY(doc.group(g)->rig.skeleton.jointCount() >= 2);
+    QByteArray file = serializeFinbook(doc);
+    const qsizetype tag = file.indexOf("SKEL");
+    QVERIFY(tag > 0);
+    const qsizetype payload = tag + 8;
+    const quint32 length = qFromLittleEndian<quint32>(file.constData() + tag + 4);
+    const qsizetype at = offset >= 0 ? payload + offset : payload + length + offset;
+    file.replace(at, bytes.size(), bytes);
+    QVERIFY(!readFinbook(file));
+    // A chunk cut short is refused too.
+    QByteArray cut = serializeFinbook(doc);
+    qToLittleEndian<quint32>(length - 3, cut.data() + tag + 4);
+    QVERIFY(!readFinbook(cut));
+}
+
+void TestSkeletonRig::randomPosesNeverGiveNaN()
+{
+    Document doc;
+    DeformController controller(&doc);
+    const Id g = buildSkeleton(doc, makeElbow(doc));
+    QVERIFY(waitSolved(controller, doc, g));
+    const DeformSetup *setup = controller.setup(g);
+    QVERIFY(setup && setup->skeleton);
+    QRandomGenerator rng(20261123);
+    StrokeGroup group = *doc.group(g);
+    for (int i = 0; i < 1000; ++i) {
+        SkeletonRig &s = group.rig.skeleton;
+        for (double &a : s.angles)
+            a = (rng.generateDouble() - 0.5) * 4 * std::numbers::pi;
+        s.rootOffset = {(rng.generateDouble() - 0.5) * 2000, (rng.generateDouble() - 0.5) * 2000};
+        s.mode = i % 2 ? SkinningMode::Rigid : SkinningMode::LinearBlend;
+        auto pose = solvePose(*setup, group);
+        QVERIFY(pose);
+        QVERIFY(pose->vertices.allFinite());
+        for (const auto &stroke : pose->strokes->strokes)
+            for (const StrokePoint &p : stroke)
+                QVERIFY(std::isfinite(p.x) && std::isfinite(p.y));
+    }
+}
+
+void TestSkeletonRig::duplicateFrameCopiesSkeletonAndPose()
+{
+    Document doc;
+    const Id g = buildSkeleton(doc, makeElbow(doc));
+    std::vector<double> angles(std::size_t(doc.group(g)->rig.skeleton.jointCount()), 0.2);
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {5, 0}, 1));
+    auto *dup = new DuplicateFrameCommand(&doc, doc.frames()[0].id, 1);
+    doc.undoStack()->push(dup);
+    QCOMPARE(doc.frames().size(), std::size_t(2));
+    const StrokeGroup &copy = doc.frames()[1].groups[0];
+    QCOMPARE(copy.rig.skeleton, doc.group(g)->rig.skeleton);
+    // Posing the copy leaves the original as it was.
+    std::vector<double> other(angles.size(), -0.3);
+    doc.undoStack()->push(new PoseBonesCommand(&doc, copy.id, other, {}, 2));
+    QCOMPARE(doc.group(g)->rig.skeleton.angles, angles);
+    QCOMPARE(doc.frames()[1].groups[0].rig.skeleton.angles, other);
+}
+
+QTEST_GUILESS_MAIN(TestSkeletonRig)
+#include "tst_skeleton_rig.moc"

@@ -1,0 +1,274 @@
+// File > Export...: the dialog's defaults follow the document, the export runs on a worker
+// thread while the GUI thread keeps handling events, files are replaced only after asking,
+// Cancel leaves nothing, failures reach the user, and the File menu opens it.
+#include "../model/export_support.h"
+#include "tst_tools_support.h"
+
+#include <finbook/model/document.h>
+#include <finbook/ui/export/export_dialog.h>
+#include <finbook/ui/export/export_job.h>
+#include <finbook/ui/main_window.h>
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardItemModel>
+#include <QTemporaryDir>
+#include <QThread>
+#include <QTimer>
+#include <QtTest>
+
+using namespace finbook;
+using namespace finbook::test;
+using model::ExportFormat;
+
+namespace {
+
+class ScriptedDialog : public ui::ExportDialog {
+public:
+    using ui::ExportDialog::ExportDialog;
+    bool replace = false;
+    QStringList askedAbout;
+    QStringList failures;
+
+protected:
+    bool confirmOverwrite(const QStringList &existing) override
+    {
+        askedAbout = existing;
+        return replace;
+    }
+    void showFailure(const QString &message, const QString &) override { failures << message; }
+};
+
+void loadInto(model::Document &doc, int hold)
+{
+    model::ExportSource source = loadExample();
+    for (model::Frame &f : source.frames)
+        f.hold = hold;
+    doc.reset(std::move(source.frames), source.settings, 1000000);
+}
+
+} // namespace
+
+class TestExportDialog : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void defaultsFollowTheDocument();
+    void exportRunsOffTheGuiThread();
+    void gifThroughTheDialog();
+    void replacingAsksFirst();
+    void cancelLeavesNothing();
+    void failureIsShown();
+    void fileMenuOpensTheDialog();
+
+private:
+    std::unique_ptr<IsolatedSettings> m_settings;
+    QTemporaryDir m_dir;
+};
+
+void TestExportDialog::initTestCase()
+{
+    m_settings = std::make_unique<IsolatedSettings>();
+    QVERIFY(m_dir.isValid());
+}
+
+void TestExportDialog::defaultsFollowTheDocument()
+{
+    model::Document doc;
+    loadInto(doc, 1);
+    model::DocumentSettings s = doc.settings();
+    s.fps = 8;
+    s.loop = false;
+    doc.setSettings(s);
+    ScriptedDialog dialog(doc, QStringLiteral("/films/walk.finbook"));
+    QCOMPARE(dialog.fpsBox()->value(), 8);
+    QVERIFY(!dialog.loopBox()->isChecked());
+    QCOMPARE(dialog.options().format, ExportFormat::Gif);
+    QCOMPARE(dialog.options().target, QStringLiteral("/films/walk.gif"));
+    QCOMPARE(dialog.options().firstFrame, -1); // the play range
+
+    dialog.setFormat(ExportFormat::Mp4);
+    QCOMPARE(dialog.options().target, QStringLiteral("/films/walk.mp4"));
+    auto *items = qobject_cast<QStandardItemModel *>(dialog.backgroundBox()->model());
+    QVERIFY(!items->item(int(ui::ExportDialog::Background::Transparent))->isEnabled());
+    QVERIFY(!dialog.loopBox()->isEnabled());
+    dialog.setFormat(ExportFormat::PngSequence);
+    QCOMPARE(dialog.options().target, QStringLiteral("/films/walk"));
+    QVERIFY(dialog.perDrawingBox()->isEnabled());
+    QVERIFY(items->item(int(ui::ExportDialog::Background::Transparent))->isEnabled());
+    dialog.backgroundBox()->setCurrentIndex(int(ui::ExportDialog::Background::Transparent));
+    dialog.scaleBox()->setValue(0.5);
+    dialog.rangeBox()->setCurrentIndex(int(ui::ExportDialog::Range::Custom));
+    dialog.firstFrameBox()->setValue(3);
+    dialog.lastFrameBox()->setValue(5);
+    const model::ExportOptions o = dialog.options();
+    QVERIFY(o.transparent);
+    QCOMPARE(o.scale, 0.5);
+    QCOMPARE(o.firstFrame, 2);
+    QCOMPARE(o.lastFrame, 4);
+    QVERIFY(dialog.findChildren<QLabel *>().size() > 0);
+    bool sizeShown = false;
+    for (QLabel *label : dialog.findChildren<QLabel *>())
+        sizeShown |= label->text().contains(QLatin1String("640 x 360"));
+    QVERIFY(sizeShown);
+    // MP4 cannot be transparent: choosing it falls back to the document background.
+    dialog.setFormat(ExportFormat::Mp4);
+    QVERIFY(!dialog.options().transparent);
+}
+
+void TestExportDialog::exportRunsOffTheGuiThread()
+{
+    model::Document doc;
+    loadInto(doc, 20); // 240 files: long enough to watch
+    ScriptedDialog dialog(doc, QString());
+    dialog.setFormat(ExportFormat::PngSequence);
+    dialog.scaleBox()->setValue(0.25);
+    const QString folder = m_dir.filePath(QStringLiteral("thread"));
+    dialog.setTarget(folder);
+    QThread *worker = nullptr;
+    qint64 guiEventsDuringExport = 0;
+    QTimer ticker;
+    connect(&ticker, &QTimer::timeout, this,
+            [&] { guiEventsDuringExport += dialog.isExporting(); });
+    ticker.start(0);
+    connect(&dialog, &ui::ExportDialog::exportStarted, this, [&] {
+        connect(
+            dialog.job(), &ui::ExportJob::progressed, dialog.job(),
+            [&] { worker = QThread::currentThread(); }, Qt::DirectConnection);
+    });
+    QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);
+    QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
+    QVERIFY(dialog.isExporting());
+    QVERIFY(dialog.cancelButton()->isVisible() || !dialog.isVisible());
+    QVERIFY(finished.wait(120000));
+    ticker.stop();
+    QCOMPARE(finished.first().first().toBool(), true);
+    QVERIFY(worker != nullptr);
+    QVERIFY(worker != QThread::currentThread());
+    QVERIFY2(guiEventsDuringExport > 0, "the GUI thread handled no events while exporting");
+    QCOMPARE(QDir(folder).entryList(QDir::Files).size(), qsizetype(240));
+    QCOMPARE(dialog.result(), int(QDialog::Accepted));
+    QVERIFY(dialog.summary().contains(QLatin1String("240")));
+    QVERIFY(dialog.progressBar()->value() == dialog.progressBar()->maximum());
+}
+
+void TestExportDialog::gifThroughTheDialog()
+{
+    if (program("ffmpeg").isEmpty() || program("ffprobe").isEmpty())
+        QSKIP("ffmpeg/ffprobe not installed (bash .ci/setup installs them)");
+    model::Document doc;
+    loadInto(doc, 2);
+    ScriptedDialog dialog(doc, QString());
+    dialog.setFormat(ExportFormat::Gif);
+    dialog.scaleBox()->setValue(0.25);
+    const QString gif = m_dir.filePath(QStringLiteral("dialog.gif"));
+    dialog.setTarget(gif);
+    QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);
+    QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(),
+             qPrintable(dialog.failures.join(QLatin1Char('\n'))));
+    const QJsonObject stream = probe(gif);
+    QCOMPARE(stream[QStringLiteral("width")].toInt(), 320);
+    QCOMPARE(stream[QStringLiteral("nb_read_frames")].toString().toInt(), 12);
+    double seconds = 0;
+    for (double d : frameDurations(gif))
+        seconds += d;
+    QVERIFY(std::abs(seconds - 2.0) < 0.02); // 24 ticks at 12 fps
+}
+
+void TestExportDialog::replacingAsksFirst()
+{
+    model::Document doc;
+    loadInto(doc, 1);
+    const QString page = m_dir.filePath(QStringLiteral("page.html"));
+    QFile old(page);
+    QVERIFY(old.open(QIODevice::WriteOnly));
+    old.write("old");
+    old.close();
+    ScriptedDialog dialog(doc, QString());
+    dialog.setFormat(ExportFormat::Html);
+    dialog.setTarget(page);
+    dialog.replace = false;
+    QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
+    QCOMPARE(dialog.askedAbout, QStringList{page});
+    QVERIFY(!dialog.isExporting());
+    QCOMPARE(QFileInfo(page).size(), qint64(3));
+    dialog.replace = true;
+    QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);
+    QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(60000));
+    QVERIFY(finished.first().first().toBool());
+    QVERIFY(QFileInfo(page).size() > 10000);
+}
+
+void TestExportDialog::cancelLeavesNothing()
+{
+    model::Document doc;
+    loadInto(doc, 40); // 480 files: Cancel arrives long before the end
+    ScriptedDialog dialog(doc, QString());
+    dialog.setFormat(ExportFormat::PngSequence);
+    const QString folder = m_dir.filePath(QStringLiteral("cancelled/frames"));
+    dialog.setTarget(folder);
+    connect(&dialog, &ui::ExportDialog::exportStarted, this, [&] {
+        connect(dialog.job(), &ui::ExportJob::progressed, &dialog,
+                [&] { QTest::mouseClick(dialog.cancelButton(), Qt::LeftButton); });
+    });
+    QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);
+    dialog.show();
+    QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    QCOMPARE(finished.first().first().toBool(), false);
+    QVERIFY(dialog.failures.isEmpty()); // a cancel is not an error
+    QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("cancelled"))));
+    QVERIFY(dialog.isVisible());
+    QVERIFY(dialog.exportButton()->isVisible());
+    QVERIFY(dialog.formatBox()->isEnabled());
+}
+
+void TestExportDialog::failureIsShown()
+{
+    model::Document doc;
+    loadInto(doc, 1);
+    const QString plain = m_dir.filePath(QStringLiteral("plain.txt"));
+    QFile f(plain);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.close();
+    ScriptedDialog dialog(doc, QString());
+    dialog.setFormat(ExportFormat::PngSequence);
+    dialog.setTarget(plain + QStringLiteral("/frames"));
+    QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);
+    QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(dialog.failures.size(), 1);
+    QVERIFY(dialog.failures.first().contains(QLatin1String("frames")));
+}
+
+void TestExportDialog::fileMenuOpensTheDialog()
+{
+    ui::MainWindow window;
+    QAction *action = window.action(QStringLiteral("file.exportAnimation"));
+    QVERIFY(action);
+    bool opened = false;
+    QTimer::singleShot(0, this, [&] {
+        auto *dialog = qobject_cast<ui::ExportDialog *>(QApplication::activeModalWidget());
+        opened = dialog != nullptr;
+        if (dialog)
+            dialog->reject();
+    });
+    action->trigger();
+    QVERIFY(opened);
+}
+
+QTEST_MAIN(TestExportDialog)
+#include "tst_export_dialog.moc"

@@ -1,0 +1,170 @@
+// Frame → Generate In-betweens… through the real window: two keys picked with Ctrl-click in
+// the timeline, the dialog driven with QTest (count, spacing, preview in the canvas), OK
+// inserts the frames as one undo step; Cancel leaves the document and the canvas as they were.
+#include "../model/inbetween_support.h"
+#include "tst_tools_support.h"
+
+#include <finbook/model/finbook_file.h>
+#include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/inbetween/inbetween_dialog.h>
+#include <finbook/ui/main_window.h>
+#include <finbook/ui/timeline_view.h>
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTimer>
+#include <QtTest>
+
+#include <functional>
+
+using namespace finbook;
+using namespace finbook::test;
+using namespace finbook::inbetween_test;
+
+class TestInbetweenDialog : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { m_settings = std::make_unique<IsolatedSettings>(); }
+    void init();
+    void cleanup() { m_window.reset(); }
+    void ctrlClickPicksTwoKeys();
+    void okInsertsOneUndoStep();
+    void cancelLeavesNothing();
+
+private:
+    void pickKeys();
+    // Triggers Frame → Generate In-betweens… and runs `drive` on the open dialog.
+    bool runDialog(const std::function<void(ui::InbetweenDialog *)> &drive);
+    QPoint thumbnailCenter(int row) const { return m_view->thumbnailRect(row).center(); }
+
+    std::unique_ptr<IsolatedSettings> m_settings;
+    std::unique_ptr<ui::MainWindow> m_window;
+    ui::TimelineView *m_view = nullptr;
+};
+
+void TestInbetweenDialog::init()
+{
+    m_window = std::make_unique<ui::MainWindow>();
+    auto [a, b] = armKeys(1);
+    m_window->document()->reset({a, b}, {}, 100);
+    m_window->resize(1100, 750);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_view = m_window->findChild<ui::TimelineView *>();
+    QVERIFY(m_view);
+    QCoreApplication::processEvents();
+}
+
+void TestInbetweenDialog::pickKeys()
+{
+    QTest::mouseClick(m_view->viewport(), Qt::LeftButton, {}, thumbnailCenter(0));
+    QTest::mouseClick(m_view->viewport(), Qt::LeftButton, Qt::ControlModifier, thumbnailCenter(1));
+}
+
+bool TestInbetweenDialog::runDialog(const std::function<void(ui::InbetweenDialog *)> &drive)
+{
+    bool driven = false;
+    QTimer::singleShot(0, this, [&] {
+        auto *dialog = qobject_cast<ui::InbetweenDialog *>(QApplication::activeModalWidget());
+        if (!dialog) {
+            if (QWidget *modal = QApplication::activeModalWidget())
+                modal->close();
+            return;
+        }
+        driven = true;
+        drive(dialog);
+    });
+    m_window->action(QStringLiteral("frame.inbetweens"))->trigger();
+    return driven;
+}
+
+void TestInbetweenDialog::ctrlClickPicksTwoKeys()
+{
+    QAction *generate = m_window->action(QStringLiteral("frame.inbetweens"));
+    QVERIFY(generate);
+    QVERIFY(!generate->isEnabled()); // one frame picked
+    pickKeys();
+    QCOMPARE(m_window->editorState()->selectedFrames(), (std::vector<int>{0, 1}));
+    QCOMPARE(m_window->editorState()->currentFrameIndex(), 1);
+    QVERIFY(generate->isEnabled());
+    // A plain click picks one frame again; Shift-click picks the range.
+    QTest::mouseClick(m_view->viewport(), Qt::LeftButton, {}, thumbnailCenter(0));
+    QCOMPARE(m_window->editorState()->selectedFrames(), (std::vector<int>{0}));
+    QVERIFY(!generate->isEnabled());
+    QTest::mouseClick(m_view->viewport(), Qt::LeftButton, Qt::ShiftModifier, thumbnailCenter(1));
+    QCOMPARE(m_window->editorState()->selectedFrames(), (std::vector<int>{0, 1}));
+    // Ctrl-click on a picked frame drops it.
+    QTest::mouseClick(m_view->viewport(), Qt::LeftButton, Qt::ControlModifier, thumbnailCenter(0));
+    QCOMPARE(m_window->editorState()->selectedFrames(), (std::vector<int>{1}));
+    QVERIFY(!generate->isEnabled());
+}
+
+void TestInbetweenDialog::okInsertsOneUndoStep()
+{
+    model::Document *doc = m_window->document();
+    pickKeys();
+    const QByteArray before = model::serializeFinbook(*doc);
+    const bool driven = runDialog([&](ui::InbetweenDialog *dialog) {
+        auto *objects = dialog->findChild<QListWidget *>(QStringLiteral("inbetweenObjects"));
+        QCOMPARE(objects->count(), 1);
+        QVERIFY(objects->item(0)->text().contains(QStringLiteral("interpolated")));
+        // The middle in-between is on the canvas, posed, with the arm at its length.
+        QVERIFY(m_window->canvas()->hasPreviewFrame());
+        QVERIFY(dialog->previewFrame() && dialog->previewFrame()->groups[0].deformed);
+        QVERIFY(std::abs(strokeLength(*dialog->previewFrame()->groups[0].deformed) / 200 - 1) <
+                0.02);
+        auto *count = dialog->findChild<QSpinBox *>(QStringLiteral("inbetweenCount"));
+        count->setFocus();
+        count->selectAll();
+        QTest::keyClicks(count, QStringLiteral("4"));
+        QCOMPARE(count->value(), 4);
+        auto *spacing = dialog->findChild<QComboBox *>(QStringLiteral("inbetweenSpacing"));
+        spacing->setFocus();
+        QTest::keyClick(spacing, Qt::Key_Down); // ease in
+        QCOMPARE(dialog->options().spacing.kind, model::SpacingKind::EaseIn);
+        auto *buttons = dialog->findChild<QDialogButtonBox *>();
+        QTest::mouseClick(buttons->button(QDialogButtonBox::Ok), Qt::LeftButton);
+    });
+    QVERIFY(driven);
+    QVERIFY(!m_window->canvas()->hasPreviewFrame());
+    QCOMPARE(doc->frameCount(), 6);
+    QCOMPARE(doc->undoStack()->count(), 1);
+    QCOMPARE(doc->frameAt(0).id, Id(1));
+    // The DeformController poses the new frames (the keys were never posed in this window).
+    QTRY_VERIFY_WITH_TIMEOUT(
+        std::all_of(doc->frames().begin() + 1, doc->frames().end() - 1,
+                    [](const model::Frame &f) { return f.groups[0].deformed != nullptr; }),
+        10000);
+    // Ease in: the first in-between moves less than the last one does.
+    const auto handOf = [&](int row) { return doc->frameAt(row).groups[0].rig.pins[1].target; };
+    const auto step = [](QPointF p, QPointF q) { return std::hypot(p.x() - q.x(), p.y() - q.y()); };
+    QVERIFY(step(handOf(0), handOf(1)) < step(handOf(4), handOf(5)));
+    doc->undoStack()->undo();
+    QCOMPARE(doc->frameCount(), 2);
+    QCOMPARE(model::serializeFinbook(*doc), before);
+}
+
+void TestInbetweenDialog::cancelLeavesNothing()
+{
+    model::Document *doc = m_window->document();
+    pickKeys();
+    const QByteArray before = model::serializeFinbook(*doc);
+    const bool driven = runDialog([&](ui::InbetweenDialog *dialog) {
+        QVERIFY(m_window->canvas()->hasPreviewFrame());
+        auto *buttons = dialog->findChild<QDialogButtonBox *>();
+        QTest::mouseClick(buttons->button(QDialogButtonBox::Cancel), Qt::LeftButton);
+    });
+    QVERIFY(driven);
+    QVERIFY(!m_window->canvas()->hasPreviewFrame());
+    QCOMPARE(doc->frameCount(), 2);
+    QCOMPARE(doc->undoStack()->count(), 0);
+    QCOMPARE(model::serializeFinbook(*doc), before);
+}
+
+QTEST_MAIN(TestInbetweenDialog)
+#include "tst_inbetween_dialog.moc"

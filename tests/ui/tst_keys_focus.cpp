@@ -1,0 +1,269 @@
+// Keys and focus in the whole main window, driven as a person would: clicks on the real
+// controls, keys sent to whatever has the keyboard. Return confirms a field and never starts
+// playback; Escape cancels; after touching a toolbar or panel control the single-key tool
+// shortcuts work again without clicking the canvas.
+#include "tst_window_support.h"
+
+#include <finbook/model/object_list_model.h>
+#include <finbook/ui/canvas_tool.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/main_window.h>
+#include <finbook/ui/objects_panel.h>
+#include <finbook/ui/playback_controller.h>
+#include <finbook/ui/timeline_view.h>
+#include <finbook/ui/tool_pen.h>
+
+#include <QAbstractItemModel>
+#include <QDoubleSpinBox>
+#include <QListView>
+#include <QSpinBox>
+#include <QUndoView>
+#include <QtTest>
+
+using namespace finbook;
+using namespace finbook::test;
+
+class TestKeysFocus : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { m_settings = std::make_unique<IsolatedSettings>(); }
+    void init();
+    void cleanup() { m_window.reset(); }
+
+    void returnConfirmsFieldsAndNeverPlays_data();
+    void returnConfirmsFieldsAndNeverPlays();
+    void escapeCancelsAFieldEdit();
+    void renameCommitsOnReturnAndCancelsOnEscape();
+    void toolKeysWorkAfterTouchingControls();
+    void typingStaysInTheFieldUntilConfirmed();
+
+private:
+    QString tool() const { return m_window->canvas()->currentTool()->id(); }
+    bool playing() const { return m_window->editorState()->isPlaying(); }
+    template <typename T> T *child(const char *name) const
+    {
+        return m_window->findChild<T *>(QString::fromLatin1(name));
+    }
+    // Waits for the canvas to get the keyboard back (the window hands it over queued).
+    bool canvasHasFocus() const
+    {
+        return QTest::qWaitFor([this] { return QApplication::focusWidget() == m_window->canvas(); },
+                               2000);
+    }
+    int undoCount() const { return m_window->document()->undoStack()->count(); }
+
+    std::unique_ptr<IsolatedSettings> m_settings;
+    std::unique_ptr<ui::MainWindow> m_window;
+};
+
+void TestKeysFocus::init()
+{
+    m_window = std::make_unique<ui::MainWindow>();
+    model::Document *doc = m_window->document();
+    resetDocument(*doc, 3, 2);
+    for (const model::StrokeGroup &g : doc->frameAt(0).groups)
+        addStroke(*doc, g.id, line({50, 50}, {200, 120}));
+    doc->undoStack()->clear();
+    QVERIFY(showActive(*m_window));
+    m_window->canvas()->setCurrentTool(QStringLiteral("tool.pen"));
+    m_window->canvas()->setFocus();
+    QVERIFY(canvasHasFocus());
+}
+
+void TestKeysFocus::returnConfirmsFieldsAndNeverPlays_data()
+{
+    QTest::addColumn<QString>("field");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<int>("key");
+    QTest::newRow("brush width") << "penWidth"
+                                 << "4" << 4.0 << int(Qt::Key_Return);
+    QTest::newRow("smoothing") << "penSmoothing"
+                               << "5" << 5.0 << int(Qt::Key_Return);
+    QTest::newRow("mesh density") << "deform.meshDensity"
+                                  << "2" << 2.0 << int(Qt::Key_Return);
+    QTest::newRow("onion before") << "timeline.onionBefore"
+                                  << "3" << 3.0 << int(Qt::Key_Return);
+    QTest::newRow("onion after, keypad Enter") << "timeline.onionAfter"
+                                               << "2" << 2.0 << int(Qt::Key_Enter);
+}
+
+void TestKeysFocus::returnConfirmsFieldsAndNeverPlays()
+{
+    QFETCH(QString, field);
+    QFETCH(QString, typed);
+    QFETCH(double, value);
+    QFETCH(int, key);
+    auto *spin = m_window->findChild<QAbstractSpinBox *>(field);
+    QVERIFY(spin);
+    clickIntoText(spin);
+    QCOMPARE(QApplication::focusWidget(), spin);
+    typeText(typed);
+    typeKey(Qt::Key(key));
+    QVERIFY2(!playing(), "Return in a field started playback");
+    QCOMPARE(spin->property("value").toDouble(), value);
+    // Confirmed means applied: the editor state or the document follows the field.
+    if (field == QLatin1String("penWidth"))
+        QCOMPARE(m_window->penTool()->settings().width, value);
+    else if (field == QLatin1String("timeline.onionBefore"))
+        QCOMPARE(m_window->editorState()->onionSkin().before, int(value));
+    else if (field == QLatin1String("deform.meshDensity"))
+        QCOMPARE(m_window->editorState()->currentGroup()->meshDensity, value);
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_E);
+    QCOMPARE(tool(), QStringLiteral("tool.eraser"));
+    QVERIFY(!playing());
+    // On the canvas Return still plays.
+    typeKey(Qt::Key_Return);
+    QVERIFY(playing());
+    typeKey(Qt::Key_Return);
+    QVERIFY(!playing());
+}
+
+void TestKeysFocus::escapeCancelsAFieldEdit()
+{
+    auto *width = child<QDoubleSpinBox>("penWidth");
+    const double before = m_window->penTool()->settings().width;
+    clickIntoText(width);
+    typeText(QStringLiteral("12"));
+    QCOMPARE(m_window->penTool()->settings().width, 12.0); // live while typing
+    typeKey(Qt::Key_Escape);
+    QCOMPARE(m_window->penTool()->settings().width, before);
+    QCOMPARE(width->value(), before);
+    QVERIFY(canvasHasFocus());
+    QVERIFY(!playing());
+    typeKey(Qt::Key_V);
+    QCOMPARE(tool(), QStringLiteral("tool.select"));
+}
+
+void TestKeysFocus::renameCommitsOnReturnAndCancelsOnEscape()
+{
+    auto *panel = m_window->findChild<ui::ObjectsPanel *>();
+    QListView *view = panel->view();
+    const model::Id id = m_window->document()->frameAt(0).groups[0].id; // bottom row
+    const int row = panel->objectModel()->rowCount() - 1;
+    const QPoint at = view->visualRect(panel->objectModel()->index(row, 0)).center() -
+                      QPoint(view->visualRect(panel->objectModel()->index(row, 0)).width() / 4, 0);
+    const auto openEditor = [&] {
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, at);
+        QTest::mouseDClick(view->viewport(), Qt::LeftButton, {}, at);
+        auto *editor = view->findChild<QLineEdit *>();
+        return editor && QTest::qWaitFor([editor] { return editor->hasFocus(); }, 2000) ? editor
+                                                                                        : nullptr;
+    };
+    QLineEdit *editor = openEditor();
+    QVERIFY(editor);
+    typeKey(Qt::Key_A, Qt::ControlModifier);
+    typeText(QStringLiteral("Arm"));
+    typeKey(Qt::Key_Return);
+    QVERIFY2(!playing(), "Return in the rename editor started playback");
+    QTRY_COMPARE(m_window->document()->group(id)->name, QStringLiteral("Arm"));
+    QCOMPARE(undoCount(), 1);
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_H);
+    QCOMPARE(tool(), QStringLiteral("tool.hand"));
+
+    editor = openEditor();
+    QVERIFY(editor);
+    typeKey(Qt::Key_A, Qt::ControlModifier);
+    typeText(QStringLiteral("Leg"));
+    typeKey(Qt::Key_Escape);
+    QVERIFY(canvasHasFocus());
+    QCOMPARE(m_window->document()->group(id)->name, QStringLiteral("Arm"));
+    QCOMPARE(undoCount(), 1);
+    typeKey(Qt::Key_B);
+    QCOMPARE(tool(), QStringLiteral("tool.pen"));
+}
+
+void TestKeysFocus::toolKeysWorkAfterTouchingControls()
+{
+    // The brush width's arrows.
+    auto *width = child<QDoubleSpinBox>("penWidth");
+    const double before = width->value();
+    clickSpinArrow(width);
+    QCOMPARE(width->value(), before + width->singleStep());
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_E);
+    QCOMPARE(tool(), QStringLiteral("tool.eraser"));
+
+    // The onion-skin count in the timeline, then the mesh density on the Deform toolbar.
+    const int onionBefore = m_window->editorState()->onionSkin().before;
+    clickSpinArrow(child<QSpinBox>("timeline.onionBefore"));
+    QCOMPARE(m_window->editorState()->onionSkin().before, onionBefore + 1);
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_V);
+    QCOMPARE(tool(), QStringLiteral("tool.select"));
+    clickSpinArrow(child<QDoubleSpinBox>("deform.meshDensity"));
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_H);
+    QCOMPARE(tool(), QStringLiteral("tool.hand"));
+
+    // A row of the objects list.
+    auto *panel = m_window->findChild<ui::ObjectsPanel *>();
+    const QRect row = panel->view()->visualRect(panel->objectModel()->index(1, 0));
+    QTest::mouseClick(panel->view()->viewport(), Qt::LeftButton, {},
+                      QPoint(row.left() + 20, row.center().y()));
+    QCOMPARE(m_window->editorState()->currentGroupId(),
+             m_window->document()->frameAt(0).groups[0].id);
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_P);
+    QCOMPARE(tool(), QStringLiteral("tool.pin"));
+
+    // A frame in the timeline; then the frame keys step from there.
+    auto *timeline = m_window->findChild<ui::TimelineView *>();
+    QTest::mouseClick(timeline->viewport(), Qt::LeftButton, {},
+                      timeline->thumbnailRect(1).center());
+    QCOMPARE(m_window->editorState()->currentFrameIndex(), 1);
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_B);
+    QCOMPARE(tool(), QStringLiteral("tool.pen"));
+    typeKey(Qt::Key_Period);
+    QCOMPARE(m_window->editorState()->currentFrameIndex(), 2);
+    typeKey(Qt::Key_Comma);
+    QCOMPARE(m_window->editorState()->currentFrameIndex(), 1);
+
+    // A line of the undo history.
+    dragCanvas(m_window->canvas(), {60, 60}, {160, 90});
+    auto *history = m_window->findChild<QUndoView *>();
+    QTest::mouseClick(history->viewport(), Qt::LeftButton, {},
+                      history->visualRect(history->model()->index(0, 0)).center());
+    QCOMPARE(m_window->document()->undoStack()->index(),
+             0); // the mesh density and the stroke undone
+    QVERIFY(canvasHasFocus());
+    const bool onion = m_window->editorState()->onionSkin().enabled;
+    typeKey(Qt::Key_O);
+    QCOMPARE(m_window->editorState()->onionSkin().enabled, !onion);
+}
+
+void TestKeysFocus::typingStaysInTheFieldUntilConfirmed()
+{
+    m_window->action(QStringLiteral("edit.selectAll"))->trigger();
+    const std::size_t selected = m_window->editorState()->selectedStrokes().size();
+    QCOMPARE(selected, std::size_t(2));
+    auto *width = child<QDoubleSpinBox>("penWidth");
+    clickIntoText(width);
+    // '.' is part of the number, a letter is refused by the field, Backspace edits the text:
+    // none of them reaches the window's shortcuts (next frame, eraser, delete strokes).
+    typeText(QStringLiteral("2.5"));
+    QCOMPARE(width->cleanText(), QStringLiteral("2.5")); // not reformatted while typing
+    typeKey(Qt::Key_E);
+    typeKey(Qt::Key_Backspace);
+    typeText(QStringLiteral("5"));
+    QCOMPARE(QApplication::focusWidget(), width);
+    QCOMPARE(m_window->editorState()->currentFrameIndex(), 0);
+    QCOMPARE(tool(), QStringLiteral("tool.select"));
+    QCOMPARE(m_window->editorState()->selectedStrokes().size(), selected);
+    int strokes = 0;
+    for (const model::StrokeGroup &g : m_window->document()->frameAt(0).groups)
+        strokes += int(g.strokes.size());
+    QCOMPARE(strokes, 2);
+    typeKey(Qt::Key_Return);
+    QCOMPARE(m_window->penTool()->settings().width, 2.5);
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_Backspace); // on the canvas Backspace deletes the selection
+    QVERIFY(m_window->editorState()->selectedStrokes().empty());
+}
+
+QTEST_MAIN(TestKeysFocus)
+#include "tst_keys_focus.moc"

@@ -1,0 +1,129 @@
+// Paste never hides: through the Edit menu's action it lands offset from the original (one
+// more step for each copy already there), in another frame in place; with Ctrl+V and the
+// mouse over the canvas it lands under the mouse. The pasted strokes are selected, with the
+// select tool's box around them.
+#include "tst_window_support.h"
+
+#include <finbook/ui/canvas_tool.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/stroke_editing.h>
+
+#include <QtTest>
+
+using namespace finbook;
+using namespace finbook::test;
+
+namespace {
+QRectF boundsOf(const model::StrokeData &data)
+{
+    QPolygonF points;
+    for (const model::StrokePoint &p : data.points)
+        points << QPointF(p.x, p.y);
+    return points.boundingRect();
+}
+} // namespace
+
+class TestPaste : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { m_settings = std::make_unique<IsolatedSettings>(); }
+    void init();
+    void cleanup() { m_window.reset(); }
+
+    void menuPasteLandsOffsetAndSelected();
+    void pasteIntoAnotherFrameKeepsRegister();
+    void ctrlVOverTheCanvasLandsAtTheMouse();
+
+private:
+    ui::EditorState *state() const { return m_window->editorState(); }
+    model::Document *doc() const { return m_window->document(); }
+    // The one selected stroke (the paste's), or null.
+    const model::Stroke *pasted() const
+    {
+        const auto &ids = state()->selectedStrokes();
+        return ids.size() == 1 ? findStroke(*doc(), ids.front()) : nullptr;
+    }
+    void copyOriginal()
+    {
+        state()->setSelectedStrokes({m_original});
+        m_window->action(QStringLiteral("edit.copy"))->trigger();
+        QVERIFY(m_window->action(QStringLiteral("edit.paste"))->isEnabled());
+    }
+    void mouseAway()
+    {
+        QEvent leave(QEvent::Leave);
+        QApplication::sendEvent(m_window->canvas(), &leave);
+    }
+
+    std::unique_ptr<IsolatedSettings> m_settings;
+    std::unique_ptr<ui::MainWindow> m_window;
+    model::Id m_original = model::kNoId;
+};
+
+void TestPaste::init()
+{
+    m_window = std::make_unique<ui::MainWindow>();
+    resetDocument(*doc(), 2);
+    m_original = addStroke(*doc(), doc()->frameAt(0).groups[0].id, line({100, 100}, {180, 140}));
+    doc()->undoStack()->clear();
+    QVERIFY(showActive(*m_window));
+    m_window->canvas()->setCurrentTool(QStringLiteral("tool.pen"));
+    m_window->canvas()->setFocus();
+}
+
+void TestPaste::menuPasteLandsOffsetAndSelected()
+{
+    copyOriginal();
+    mouseAway();
+    const model::StrokeData &original = *findStroke(*doc(), m_original)->data;
+    QAction *paste = m_window->action(QStringLiteral("edit.paste"));
+    for (int copy = 1; copy <= 2; ++copy) {
+        paste->trigger();
+        const model::Stroke *stroke = pasted();
+        QVERIFY(stroke);
+        QVERIFY(stroke->id != m_original);
+        const QPointF offset = boundsOf(*stroke->data).topLeft() - boundsOf(original).topLeft();
+        const qreal step = ui::StrokeEditing::kPasteStep;
+        QVERIFY2(QLineF(offset, QPointF(step, step) * copy).length() < 1e-3,
+                 qPrintable(QStringLiteral("copy %1 moved by %2, %3")
+                                .arg(copy)
+                                .arg(offset.x())
+                                .arg(offset.y())));
+        QCOMPARE(stroke->data->color, original.color);
+        QCOMPARE(stroke->data->points.size(), original.points.size());
+        QCOMPARE(m_window->canvas()->currentTool()->id(), QStringLiteral("tool.select"));
+        QCOMPARE(doc()->undoStack()->count(), copy); // one undo step each
+    }
+    doc()->undoStack()->undo();
+    doc()->undoStack()->undo();
+    QCOMPARE(doc()->frameAt(0).groups[0].strokes.size(), std::size_t(1));
+}
+
+void TestPaste::pasteIntoAnotherFrameKeepsRegister()
+{
+    copyOriginal();
+    mouseAway();
+    state()->setCurrentFrameIndex(1);
+    m_window->action(QStringLiteral("edit.paste"))->trigger();
+    const model::Stroke *stroke = pasted();
+    QVERIFY(stroke);
+    QCOMPARE(stroke->data->points, findStroke(*doc(), m_original)->data->points);
+    QCOMPARE(doc()->locateStroke(stroke->id).frame, 1);
+}
+
+void TestPaste::ctrlVOverTheCanvasLandsAtTheMouse()
+{
+    copyOriginal();
+    ui::CanvasWidget *canvas = m_window->canvas();
+    const QPointF target(300, 220); // canvas pixels
+    sendMouse(canvas, QEvent::MouseMove, canvas->mapFromCanvas(target), Qt::NoButton, Qt::NoButton);
+    typeKey(Qt::Key_V, Qt::ControlModifier);
+    const model::Stroke *stroke = pasted();
+    QVERIFY(stroke);
+    QVERIFY(QLineF(boundsOf(*stroke->data).center(), target).length() < 1e-3);
+    QCOMPARE(m_window->canvas()->currentTool()->id(), QStringLiteral("tool.select"));
+}
+
+QTEST_MAIN(TestPaste)
+#include "tst_paste.moc"

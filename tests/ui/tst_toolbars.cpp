@@ -1,0 +1,117 @@
+// The main window's toolbars at the size of a small laptop (1280×800): nothing moves when the
+// undo text changes, and nothing an animator needs falls into an overflow menu, even with two
+// more tools (Cage, Bone) and more deformation actions than today.
+#include "tst_window_support.h"
+
+#include <finbook/ui/canvas_tool.h>
+#include <finbook/ui/editor_state.h>
+
+#include <QToolBar>
+#include <QToolButton>
+#include <QtTest>
+
+using namespace finbook;
+using namespace finbook::test;
+
+namespace {
+// Toolbar buttons and widgets an animator cannot reach without the overflow menu.
+QStringList hiddenInOverflow(const QMainWindow &window)
+{
+    QStringList hidden;
+    for (const QToolBar *bar : window.findChildren<QToolBar *>()) {
+        if (!bar->isVisible())
+            continue;
+        const auto *more = bar->findChild<QToolButton *>(QStringLiteral("qt_toolbar_ext_button"));
+        if (more && more->isVisible())
+            hidden << bar->objectName() + QStringLiteral(" has an overflow menu");
+        for (QAction *a : bar->actions()) {
+            const QWidget *w = bar->widgetForAction(a);
+            if (!a->isSeparator() && a->isVisible() && w && !w->isVisible())
+                hidden << bar->objectName() + QLatin1Char('/') + a->text();
+        }
+    }
+    return hidden;
+}
+} // namespace
+
+class TestToolbars : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { m_settings = std::make_unique<IsolatedSettings>(); }
+    void init()
+    {
+        m_window = std::make_unique<ui::MainWindow>();
+        resetDocument(*m_window->document(), 2);
+    }
+    void cleanup() { m_window.reset(); }
+
+    void undoButtonKeepsItsPlace();
+    void nothingOverflowsAt1280();
+    void toolsStandOnTheLeft();
+
+private:
+    std::unique_ptr<IsolatedSettings> m_settings;
+    std::unique_ptr<ui::MainWindow> m_window;
+};
+
+void TestToolbars::undoButtonKeepsItsPlace()
+{
+    QVERIFY(showActive(*m_window));
+    QAction *undo = m_window->action(QStringLiteral("edit.undo"));
+    auto *fileBar = m_window->findChild<QToolBar *>(QStringLiteral("fileToolBar"));
+    QWidget *button = fileBar->widgetForAction(undo);
+    QVERIFY(button);
+    // Every toolbar control, where it is before the undo text changes.
+    QMap<QWidget *, QRect> before;
+    for (QToolBar *bar : m_window->findChildren<QToolBar *>())
+        for (QAction *a : bar->actions())
+            if (QWidget *w = bar->widgetForAction(a))
+                before.insert(w, QRect(w->mapTo(m_window.get(), QPoint()), w->size()));
+    dragCanvas(m_window->canvas(), {40, 40}, {200, 120});
+    QVERIFY(undo->isEnabled());
+    QVERIFY(undo->text().size() > 6); // "Undo Draw Stroke", or the like
+    QCoreApplication::processEvents();
+    for (auto it = before.begin(); it != before.end(); ++it) {
+        QWidget *w = it.key();
+        QCOMPARE(QRect(w->mapTo(m_window.get(), QPoint()), w->size()), it.value());
+    }
+    // What would be undone is still said, in the tooltip.
+    QVERIFY2(undo->toolTip().contains(m_window->document()->undoStack()->undoText()),
+             qPrintable(undo->toolTip()));
+    QVERIFY(!static_cast<QToolButton *>(button)->icon().isNull());
+}
+
+void TestToolbars::nothingOverflowsAt1280()
+{
+    auto *deform = m_window->findChild<QToolBar *>(QStringLiteral("deformToolBar"));
+    QVERIFY(deform);
+    QVERIFY(showActive(*m_window, QSize(1280, 800)));
+    QCOMPARE(m_window->width(), 1280);
+    const QStringList hidden = hiddenInOverflow(*m_window);
+    QVERIFY2(hidden.isEmpty(), qPrintable(hidden.join(QStringLiteral(", "))));
+    // The deformer tools answer their keys like the others.
+    m_window->canvas()->setFocus();
+    typeKey(Qt::Key_K);
+    QCOMPARE(m_window->canvas()->currentTool()->id(), QStringLiteral("tool.bone"));
+    typeKey(Qt::Key_C);
+    QCOMPARE(m_window->canvas()->currentTool()->id(), QStringLiteral("tool.cage"));
+}
+
+void TestToolbars::toolsStandOnTheLeft()
+{
+    QVERIFY(showActive(*m_window, QSize(1280, 800)));
+    auto *tools = m_window->findChild<QToolBar *>(QStringLiteral("toolsToolBar"));
+    QVERIFY(tools);
+    QCOMPARE(m_window->toolBarArea(tools), Qt::LeftToolBarArea);
+    QCOMPARE(tools->orientation(), Qt::Vertical);
+    // Every other toolbar shares one row at the top: the canvas keeps its height.
+    for (QToolBar *bar : m_window->findChildren<QToolBar *>())
+        if (bar != tools && bar->isVisible()) {
+            QCOMPARE(m_window->toolBarArea(bar), Qt::TopToolBarArea);
+            QCOMPARE(bar->y(), m_window->findChild<QToolBar *>(QStringLiteral("fileToolBar"))->y());
+        }
+}
+
+QTEST_MAIN(TestToolbars)
+#include "tst_toolbars.moc"
