@@ -4,196 +4,341 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="27"/>
+        <location filename="../model/src/commands.cpp" line="21"/>
         <source>Draw Stroke</source>
         <translation>Strich zeichnen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="51"/>
+        <location filename="../model/src/commands.cpp" line="45"/>
         <source>Erase Stroke</source>
         <translation>Strich radieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="80"/>
+        <location filename="../model/src/commands.cpp" line="74"/>
         <source>Move Strokes to Object</source>
         <translation>Striche in Objekt verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="177"/>
+        <location filename="../model/src/commands.cpp" line="171"/>
         <source>New Object</source>
         <translation>Neues Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="205"/>
+        <location filename="../model/src/commands.cpp" line="199"/>
         <source>Delete Object</source>
         <translation>Objekt löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="234"/>
+        <location filename="../model/src/commands.cpp" line="228"/>
         <source>Rename Object</source>
         <translation>Objekt umbenennen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="259"/>
+        <location filename="../model/src/commands.cpp" line="253"/>
         <source>Reorder Object</source>
         <translation>Objekt umsortieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="290"/>
+        <location filename="../model/src/commands.cpp" line="284"/>
         <source>Show Object</source>
         <translation>Objekt einblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="290"/>
+        <location filename="../model/src/commands.cpp" line="284"/>
         <source>Hide Object</source>
         <translation>Objekt ausblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="292"/>
+        <location filename="../model/src/commands.cpp" line="286"/>
         <source>Lock Object</source>
         <translation>Objekt sperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="292"/>
+        <location filename="../model/src/commands.cpp" line="286"/>
         <source>Unlock Object</source>
         <translation>Objekt entsperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="325"/>
+        <location filename="../model/src/commands.cpp" line="319"/>
         <source>Insert Frame</source>
         <translation>Einzelbild einfügen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="329"/>
+        <location filename="../model/src/commands.cpp" line="323"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="348"/>
+        <location filename="../model/src/commands.cpp" line="342"/>
         <source>Duplicate Frame</source>
         <translation>Einzelbild duplizieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="393"/>
+        <location filename="../model/src/commands.cpp" line="387"/>
         <source>Delete Frame</source>
         <translation>Einzelbild löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="419"/>
+        <location filename="../model/src/commands.cpp" line="413"/>
         <source>Move Frame</source>
         <translation>Einzelbild verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="442"/>
+        <location filename="../model/src/commands.cpp" line="436"/>
         <source>Change Frame Exposure</source>
         <translation>Haltedauer des Einzelbilds ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="480"/>
+        <location filename="../model/src/commands.cpp" line="474"/>
         <source>Change Document Settings</source>
         <translation>Dokumenteinstellungen ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/object_commands.cpp" line="38"/>
+        <location filename="../model/src/object_commands.cpp" line="16"/>
         <source>Merge Objects</source>
         <translation>Objekte zusammenführen</translation>
     </message>
     <message>
-        <location filename="../model/src/pin_commands.cpp" line="29"/>
+        <location filename="../model/src/pins/pin_commands.cpp" line="56"/>
         <source>Add Pin</source>
         <translation>Pin setzen</translation>
     </message>
     <message>
-        <location filename="../model/src/pin_commands.cpp" line="57"/>
+        <location filename="../model/src/pins/pin_commands.cpp" line="64"/>
         <source>Remove Pin</source>
         <translation>Pin entfernen</translation>
     </message>
     <message>
-        <location filename="../model/src/pin_commands.cpp" line="88"/>
+        <location filename="../model/src/pins/pin_commands.cpp" line="74"/>
         <source>Move Pin</source>
         <translation>Pin verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/pin_commands.cpp" line="133"/>
-        <source>Reset Deformation</source>
-        <translation>Verformung zurücksetzen</translation>
-    </message>
-    <message>
-        <location filename="../model/src/pin_commands.cpp" line="162"/>
-        <source>Apply Deformation</source>
-        <translation>Verformung anwenden</translation>
-    </message>
-    <message>
-        <location filename="../model/src/pin_commands.cpp" line="204"/>
+        <location filename="../model/src/pins/pin_commands.cpp" line="88"/>
         <source>Change Mesh Density</source>
         <translation>Netzdichte ändern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="49"/>
+        <source>Place Cage</source>
+        <translation>Käfig platzieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="56"/>
+        <source>Edit Cage</source>
+        <translation>Käfig bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="67"/>
+        <source>Move Cage Corners</source>
+        <translation>Käfigecken verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="75"/>
+        <source>Remove Rig</source>
+        <translation>Rig entfernen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="31"/>
+        <source>Generate In-betweens</source>
+        <translation>Zwischenbilder erzeugen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/rig/rig_commands.cpp" line="89"/>
+        <source>Reset Pose</source>
+        <translation>Pose zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/rig/rig_commands.cpp" line="113"/>
+        <source>Apply Pose to Drawing</source>
+        <translation>Pose auf Zeichnung anwenden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="52"/>
+        <source>Build Skeleton</source>
+        <translation>Skelett erstellen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="63"/>
+        <source>Change Skeleton Settings</source>
+        <translation>Skeletteinstellungen ändern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="88"/>
+        <source>Pose Bones</source>
+        <translation>Knochen posieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="97"/>
+        <source>Change Skinning</source>
+        <translation>Skinning ändern</translation>
     </message>
 </context>
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="67"/>
-        <source>Cannot create the output folder %1.</source>
-        <translation>Der Ausgabeordner %1 kann nicht angelegt werden.</translation>
-    </message>
-    <message>
-        <location filename="../app/cli.cpp" line="76"/>
-        <source>Cannot write %1 (is the disk full or read-only?).</source>
-        <translation>%1 kann nicht geschrieben werden (ist der Datenträger voll oder schreibgeschützt?).</translation>
-    </message>
-    <message>
-        <location filename="../app/cli.cpp" line="114"/>
+        <location filename="../app/cli.cpp" line="99"/>
         <source>No command given; see finbook --help.</source>
         <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="118"/>
+        <location filename="../app/cli.cpp" line="103"/>
         <source>Usage: finbook info FILE</source>
         <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="128"/>
-        <source>Usage: finbook export FILE OUTDIR</source>
-        <translation>Aufruf: finbook export FILE OUTDIR</translation>
-    </message>
-    <message>
-        <location filename="../app/cli.cpp" line="131"/>
+        <location filename="../app/cli.cpp" line="113"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="25"/>
+        <location filename="../app/main.cpp" line="36"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
   finbook info FILE            print a JSON summary of FILE
-  finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...</source>
+  finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
+  finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
+  finbook export FILE... --format F --out-dir DIR   export several files</source>
         <translation>Finbook, ein Daumenkino-Animationseditor.
 
   finbook [FILE]               FILE im Editor öffnen
   finbook info FILE            eine JSON-Zusammenfassung von FILE ausgeben
-  finbook export FILE OUTDIR   alle Einzelbilder rendern nach OUTDIR/frame_0001.png ...</translation>
+  finbook export FILE OUTDIR   jedes Einzelbild nach OUTDIR/frame_0001.png ... rendern
+  finbook export FILE OUT      nach OUT.gif, .mp4, .webm, .apng oder .html exportieren
+  finbook export FILE... --format F --out-dir DIR   mehrere Dateien exportieren</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="35"/>
-        <source>Use LANGUAGE (e.g. de, en) instead of the system&apos;s.</source>
-        <translation>LANGUAGE (z. B. de, en) statt der Systemsprache verwenden.</translation>
+        <location filename="../app/main.cpp" line="48"/>
+        <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
+        <translation>LANGUAGE (z. B. de, en, fr, ja) statt der Systemsprache verwenden.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="40"/>
+        <location filename="../app/main.cpp" line="54"/>
         <source>FILE, or a command.</source>
         <translation>FILE oder ein Befehl.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="44"/>
+        <location filename="../app/main.cpp" line="66"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>siehe finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="67"/>
+        <location filename="../app/main.cpp" line="73"/>
+        <source>%1; %2.</source>
+        <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
+        <translation>%1; %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="101"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Unbekannter Befehl „%1“; %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="37"/>
+        <source>export: png, svg, gif, mp4, webm, apng or html.</source>
+        <translation>export: png, svg, gif, mp4, webm, apng oder html.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="39"/>
+        <source>export: frames A to B (default: the play range).</source>
+        <translation>export: Einzelbilder A bis B (Standard: der Wiedergabebereich).</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="40"/>
+        <source>export: multiply the canvas size by S.</source>
+        <translation>export: die Leinwandgröße mit S multiplizieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="42"/>
+        <source>export: N frames per second (default: the document&apos;s).</source>
+        <translation>export: N Bilder pro Sekunde (Standard: die des Dokuments).</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="44"/>
+        <source>export: this background colour (#rrggbb).</source>
+        <translation>export: diese Hintergrundfarbe (#rrggbb).</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="45"/>
+        <source>export: no background.</source>
+        <translation>export: kein Hintergrund.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="47"/>
+        <source>export png/svg: one file per drawing plus an exposure sheet.</source>
+        <translation>export png/svg: eine Datei pro Zeichnung plus ein Timing-Sheet.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="49"/>
+        <source>export: replace existing files.</source>
+        <translation>export: vorhandene Dateien ersetzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="50"/>
+        <source>export: write each FILE into DIR.</source>
+        <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="80"/>
+        <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
+        <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="95"/>
+        <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
+        <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="101"/>
+        <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
+        <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="109"/>
+        <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
+        <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="121"/>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
+        <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng oder html.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="136"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
+        <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng oder .html enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="140"/>
+        <source>--format %1 does not match &quot;%2&quot;.</source>
+        <translation>--format %1 passt nicht zu „%2“.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="156"/>
+        <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
+        <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="160"/>
+        <source>Usage: finbook export FILE... --out-dir DIR</source>
+        <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="170"/>
+        <source>--transparent and --background cannot be used together.</source>
+        <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="172"/>
+        <source>--one-per-drawing is for png and svg exports only.</source>
+        <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="236"/>
+        <source>Use --overwrite to replace it.</source>
+        <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
 </context>
 <context>
@@ -209,542 +354,1127 @@
         <translation>Für diese Zeichnung lässt sich kein Verformungsnetz erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="102"/>
+        <location filename="../model/src/deform_setup.cpp" line="110"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="111"/>
+        <location filename="../model/src/deform_setup.cpp" line="154"/>
+        <source>The cage changed while it was being prepared.</source>
+        <translation>Der Käfig wurde geändert, während er vorbereitet wurde.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="162"/>
+        <source>The object has no mesh to deform.</source>
+        <translation>Das Objekt hat kein Netz, das sich verformen ließe.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_setup.cpp" line="20"/>
         <source>The pins cannot be solved on this drawing: %1</source>
         <translation>Die Pins lassen sich auf dieser Zeichnung nicht berechnen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="137"/>
+        <location filename="../model/src/pins/pin_setup.cpp" line="47"/>
         <source>The pins could not be solved: %1</source>
         <translation>Die Pins konnten nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="144"/>
+        <location filename="../model/src/deform_setup.cpp" line="182"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="34"/>
+        <source>The cage cannot be used: %1</source>
+        <translation>Der Käfig kann nicht verwendet werden: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/cage/cage_setup.cpp" line="40"/>
+        <source>%n stroke point(s) lie outside the cage; move its corners out so it encloses the drawing.</source>
+        <translation>
+            <numerusform>%n Strichpunkt liegt außerhalb des Käfigs; ziehen Sie seine Ecken nach außen, damit er die Zeichnung umschließt.</numerusform>
+            <numerusform>%n Strichpunkte liegen außerhalb des Käfigs; ziehen Sie seine Ecken nach außen, damit er die Zeichnung umschließt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="43"/>
+        <source>The drawing cannot be bound to the cage: %1</source>
+        <translation>Die Zeichnung kann nicht an den Käfig gebunden werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="58"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="61"/>
+        <source>The cage could not be solved: %1</source>
+        <translation>Der Käfig konnte nicht berechnet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="71"/>
+        <source>This cage cannot be used: %1</source>
+        <translation>Dieser Käfig kann nicht verwendet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="74"/>
+        <source>The cage must enclose the whole object: %1</source>
+        <translation>Der Käfig muss das ganze Objekt umschließen: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="91"/>
+        <source>No cage fits this drawing: %1</source>
+        <translation>Kein Käfig passt zu dieser Zeichnung: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="55"/>
+        <source>No skeleton can be built for this drawing: %1</source>
+        <translation>Für diese Zeichnung lässt sich kein Skelett erstellen: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
+        <source>The object has no strokes to build a skeleton in.</source>
+        <translation>Das Objekt hat keine Striche, in denen sich ein Skelett erstellen ließe.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="81"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="90"/>
+        <source>No skeleton can be built for this drawing.</source>
+        <translation>Für diese Zeichnung lässt sich kein Skelett erstellen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="19"/>
+        <source>The skeleton is damaged; build it again.</source>
+        <translation>Das Skelett ist beschädigt; erstellen Sie es neu.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="30"/>
+        <source>The skeleton cannot be used: %1</source>
+        <translation>Das Skelett kann nicht verwendet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="57"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="63"/>
+        <source>The skeleton cannot skin this drawing: %1</source>
+        <translation>Das Skelett kann nicht an diese Zeichnung gebunden werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="75"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="80"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="86"/>
+        <source>The bones could not be posed: %1</source>
+        <translation>Die Knochen konnten nicht posiert werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>Export</name>
+    <message>
+        <location filename="../model/src/export/export_encoded.cpp" line="34"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="188"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="92"/>
+        <source>there is not enough memory to render it</source>
+        <translation>es ist nicht genug Speicher vorhanden, um es zu rendern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_encoded.cpp" line="56"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="196"/>
+        <source>its folder cannot be created</source>
+        <translation>ihr Ordner kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_encoded.cpp" line="85"/>
+        <source>ffmpeg finished without writing the %1; nothing was exported.</source>
+        <translation>ffmpeg wurde beendet, ohne die Ausgabe als %1 zu schreiben; es wurde nichts exportiert.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="151"/>
+        <source>Flipbook</source>
+        <translation>Daumenkino</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="161"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="169"/>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="163"/>
+        <source>Loop</source>
+        <translation>Endlosschleife</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="166"/>
+        <source>Frame</source>
+        <translation>Einzelbild</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="45"/>
+        <source>The frame range %1-%2 is not within the animation&apos;s frames 1-%3; choose a range inside it.</source>
+        <translation>Der Einzelbildbereich %1–%2 liegt nicht innerhalb der Einzelbilder 1–%3 der Animation; wählen Sie einen Bereich darin.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="80"/>
+        <source>The animation has no frames to export.</source>
+        <translation>Die Animation hat keine Einzelbilder, die sich exportieren ließen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="82"/>
+        <source>The canvas has no size; set one in Document Settings.</source>
+        <translation>Die Leinwand hat keine Größe; legen Sie eine in den Dokumenteinstellungen fest.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="101"/>
+        <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
+        <translation>Die Skalierung %1 ergibt keine mögliche Bildgröße; wählen Sie eine Skalierung, die 1 bis %2 Pixel pro Seite ergibt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="105"/>
+        <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
+        <translation>Die Skalierung %1 ergäbe ein Bild mit %2 × %3 Pixeln; wählen Sie eine Skalierung, die 1 bis %4 Pixel pro Seite ergibt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="118"/>
+        <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
+        <translation>Die Bildrate %1 ist nicht möglich; wählen Sie %2 bis %3 Bilder pro Sekunde.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="126"/>
+        <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
+        <translation>%1-Videos können nicht transparent sein; wählen Sie WebM, APNG, GIF oder PNG für einen transparenten Hintergrund.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="42"/>
+        <source>&quot;%1&quot; is a folder where a file should go; choose another folder.</source>
+        <translation>„%1“ ist ein Ordner, wo eine Datei hingehört; wählen Sie einen anderen Ordner.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="69"/>
+        <source>a file is in the way of the folder</source>
+        <translation>eine Datei ist dem Ordner im Weg</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="76"/>
+        <source>the folder cannot be created</source>
+        <translation>der Ordner kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="16"/>
+        <source>&quot;%1&quot; already exists; nothing was exported.</source>
+        <translation>„%1“ ist bereits vorhanden; es wurde nichts exportiert.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="23"/>
+        <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
+        <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und exportieren Sie dann erneut.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="31"/>
+        <source>The export was cancelled; nothing was written.</source>
+        <translation>Der Export wurde abgebrochen; es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="40"/>
+        <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
+        <translation>„%1“ ist ein Ordner; geben Sie einen Dateinamen an, der auf .%2 endet.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="97"/>
+        <source>Choose where to export the animation to.</source>
+        <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="37"/>
+        <source>GIF</source>
+        <translation>GIF</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="63"/>
+        <source>MP4 video</source>
+        <translation>MP4-Video</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="81"/>
+        <source>WebM video</source>
+        <translation>WebM-Video</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="95"/>
+        <source>animated PNG</source>
+        <translation>animiertes PNG</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="50"/>
+        <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
+        <translation>Für den Export als %1 wird das Programm ffmpeg benötigt, das nicht gefunden wurde; installieren Sie es (unter Debian: apt install ffmpeg) und exportieren Sie erneut.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="126"/>
+        <source>it stopped unexpectedly</source>
+        <translation>es wurde unerwartet beendet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="127"/>
+        <source>exit code %1</source>
+        <translation>Exit-Code %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="130"/>
+        <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
+        <translation>ffmpeg konnte die Ausgabe als %1 nicht erstellen (%2); es wurde nichts geschrieben. Falls der Datenträger voll ist, geben Sie Speicherplatz frei und exportieren Sie erneut.</translation>
+    </message>
+</context>
+<context>
+    <name>FileMessages</name>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="17"/>
+        <source>The file is not there any more: it may have been moved, renamed or deleted.</source>
+        <translation>Die Datei ist nicht mehr vorhanden: Sie wurde möglicherweise verschoben, umbenannt oder gelöscht.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="21"/>
+        <source>This is a folder, not an animation. Choose a file ending in .finbook.</source>
+        <translation>Dies ist ein Ordner, keine Animation. Wählen Sie eine Datei mit der Endung .finbook.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="23"/>
+        <source>This is a device or a pipe, not an animation. Choose a file ending in .finbook.</source>
+        <translation>Dies ist ein Gerät oder eine Pipe, keine Animation. Wählen Sie eine Datei mit der Endung .finbook.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="26"/>
+        <source>You are not allowed to read this file. Ask whoever owns it to share it with you, or open a copy of it.</source>
+        <translation>Sie dürfen diese Datei nicht lesen. Bitten Sie die Person, der sie gehört, sie für Sie freizugeben, oder öffnen Sie eine Kopie davon.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="29"/>
+        <source>The disk could not read the file. If it is on a removable drive or a network folder, check that it is still connected.</source>
+        <translation>Die Datei konnte nicht vom Datenträger gelesen werden. Wenn sie auf einem Wechseldatenträger oder in einem Netzwerkordner liegt, prüfen Sie, ob dieser noch verbunden ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="33"/>
+        <source>The file is empty: there is no drawing in it.</source>
+        <translation>Die Datei ist leer: Sie enthält keine Zeichnung.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="34"/>
+        <source>This is not a Finbook animation. Choose a file ending in .finbook.</source>
+        <translation>Dies ist keine Finbook-Animation. Wählen Sie eine Datei mit der Endung .finbook.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="37"/>
+        <source>It was saved by a newer version of Finbook. Install that version to open it.</source>
+        <translation>Sie wurde mit einer neueren Finbook-Version gespeichert. Installieren Sie diese Version, um sie zu öffnen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="40"/>
+        <source>The file is damaged near the end: it looks cut off. Perhaps a copy or a save was interrupted.</source>
+        <translation>Die Datei ist gegen Ende beschädigt: Sie scheint abgeschnitten zu sein. Vielleicht wurde ein Kopier- oder Speichervorgang unterbrochen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="43"/>
+        <source>The file is damaged, or too large for this computer: it asks for more memory than Finbook can use.</source>
+        <translation>Die Datei ist beschädigt oder zu groß für diesen Computer: Sie benötigt mehr Arbeitsspeicher, als Finbook nutzen kann.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="46"/>
+        <source>The file is damaged: some of it changed after it was saved. Finbook can open what is still readable.</source>
+        <translation>Die Datei ist beschädigt: Ein Teil davon wurde nach dem Speichern verändert. Finbook kann öffnen, was noch lesbar ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="50"/>
+        <source>This computer has not enough free memory to open the file. Close other programs or documents and try again.</source>
+        <translation>Dieser Computer hat nicht genug freien Arbeitsspeicher, um die Datei zu öffnen. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="57"/>
+        <source>The file is damaged: part of it cannot be read.</source>
+        <translation>Die Datei ist beschädigt: Ein Teil davon kann nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="64"/>
+        <source>Finbook cannot open “%1”.</source>
+        <translation>Finbook kann „%1“ nicht öffnen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="68"/>
+        <source>Finbook kept the version saved before it as “%1” in the same folder: open that one to get your work back.</source>
+        <translation>Finbook hat die zuvor gespeicherte Version als „%1“ im selben Ordner aufbewahrt: Öffnen Sie diese, um Ihre Arbeit wiederherzustellen.</translation>
     </message>
 </context>
 <context>
     <name>FinbookFile</name>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="34"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="29"/>
         <source>frame %1</source>
         <translation>Einzelbild %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="36"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="32"/>
         <source>, object &quot;%1&quot;</source>
         <translation>, Objekt „%1“</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="37"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="33"/>
         <source>, object %1</source>
         <translation>, Objekt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="39"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="35"/>
         <source>, stroke %1</source>
         <translation>, Strich %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="43"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="39"/>
         <source>stroke data %1</source>
         <translation>Strichdaten %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="45"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="41"/>
         <source>pose %1</source>
         <translation>Pose %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="72"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="77"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="61"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="80"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="85"/>
         <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
         <translation>%1 ist unvollständig, die Datei endet vorzeitig (%2 Bytes benötigt, %3 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="96"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="101"/>
         <source>%1 claims %2 entries but only %3 bytes remain</source>
         <translation>%1 gibt %2 Einträge an, es sind aber nur noch %3 Bytes übrig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="122"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="127"/>
         <source>%1 has %2 unexpected bytes at its end</source>
         <translation>%1 hat am Ende %2 unerwartete Bytes</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="29"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="32"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist unvollständig (vielleicht wurde ein Kopier- oder Speichervorgang unterbrochen); falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="35"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="38"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist beschädigt; falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="57"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="43"/>
+        <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
+        <translation>%1 Die Datei ist beschädigt; Finbook kann öffnen, was davon noch lesbar ist, oder Sie öffnen die Sicherungskopie mit demselben Namen und angehängtem ~, falls es eine gibt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="48"/>
+        <source>%1 Close other programs or documents and try again.</source>
+        <translation>%1 Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="71"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="71"/>
-        <source>the old backup &quot;%1&quot; cannot be replaced</source>
-        <translation>die alte Sicherungskopie „%1“ kann nicht ersetzt werden</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="81"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="197"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>die Sicherungskopie „%1“ kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="106"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="244"/>
+        <source>the disk is full</source>
+        <translation>der Datenträger ist voll</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="246"/>
+        <source>the disk is read-only</source>
+        <translation>der Datenträger ist schreibgeschützt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="248"/>
+        <source>you do not have permission to write in the folder &quot;%1&quot;</source>
+        <translation>Sie haben keine Schreibberechtigung für den Ordner „%1“</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="251"/>
+        <source>the folder &quot;%1&quot; does not exist</source>
+        <translation>der Ordner „%1“ existiert nicht</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="77"/>
+        <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
+        <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="87"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>„%1“ kann nicht geöffnet werden: %2. Prüfen Sie, ob die Datei existiert und ob Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="108"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="127"/>
         <source>it is a folder</source>
         <translation>es ist ein Ordner</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="116"/>
-        <source>Cannot open &quot;%1&quot;: it is too large for the memory available.</source>
-        <translation>„%1“ kann nicht geöffnet werden: die Datei ist zu groß für den verfügbaren Arbeitsspeicher.</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="159"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>„%1“ kann nicht gelesen werden: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="140"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="170"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>„%1“ kann nicht geöffnet werden. %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="146"/>
-        <source>the drawing holds invalid data (%1)</source>
-        <translation>die Zeichnung enthält ungültige Daten (%1)</translation>
+        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
+        <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
+        <translation>„%1“ kann nicht geöffnet werden: Es ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie eine .finbook-Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="33"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="149"/>
+        <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
+        <translation>„%1“ kann nicht geöffnet werden: Für die %2 MB der Datei ist nicht genug Arbeitsspeicher vorhanden. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="214"/>
+        <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
+        <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="40"/>
         <source>unknown %1 %2</source>
         <translation>unbekannter %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="36"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>die Datei enthält Daten („%1“), die diese Finbook-Version nicht kennt, und wurde daher wohl mit einer neueren Finbook-Version erstellt; bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="57"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <source>more problems were found and repaired the same way</source>
+        <translation>weitere Probleme wurden gefunden und auf dieselbe Weise behoben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="72"/>
+        <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
+        <translation>die Datei beschreibt mehr, als eine Datei ihrer Größe enthalten kann (zum Öffnen wären mehr als %1 MB Arbeitsspeicher nötig)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="92"/>
         <source>the file is empty</source>
         <translation>die Datei ist leer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
         <source>the file header</source>
         <translation>der Dateikopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
         <source>it is not a Finbook animation</source>
         <translation>die Datei ist keine Finbook-Animation</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
         <source>the file ends inside its header</source>
         <translation>die Datei endet mitten im Dateikopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="99"/>
         <source>the format version</source>
         <translation>die Formatversion</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="67"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="102"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>die Datei wurde mit einer neueren Finbook-Version erstellt (Dateiformat %1; diese Version liest bis %2); bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="74"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="109"/>
         <source>the format version %1 does not exist</source>
         <translation>die Formatversion %1 gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="84"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="126"/>
         <source>the file&apos;s section list</source>
         <translation>die Abschnittsliste der Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="85"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="86"/>
-        <source>a section header</source>
-        <translation>ein Abschnittskopf</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="87"/>
-        <source>section %1</source>
-        <translation>Abschnitt %1</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="91"/>
-        <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
-        <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
-        <source>a section</source>
-        <translation>ein Abschnitt</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
-        <source>section %1 is missing</source>
-        <translation>Abschnitt %1 fehlt</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="99"/>
-        <source>the end marker</source>
-        <translation>die Endmarke</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="100"/>
-        <source>the file</source>
-        <translation>die Datei</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="105"/>
-        <source>section</source>
-        <translation>Abschnitt</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="110"/>
-        <source>the section is repeated or out of order</source>
-        <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="125"/>
-        <source>the section</source>
-        <translation>der Abschnitt</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="131"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="349"/>
-        <source>the document settings</source>
-        <translation>die Dokumenteinstellungen</translation>
+        <location filename="../model/src/finbook_file_reader.cpp" line="129"/>
+        <source>the file ends before its end</source>
+        <translation>die Datei endet vorzeitig</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="133"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <source>a section header</source>
+        <translation>ein Abschnittskopf</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <source>section %1</source>
+        <translation>Abschnitt %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="148"/>
+        <source>the file&apos;s end is damaged</source>
+        <translation>das Ende der Datei ist beschädigt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
+        <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
+        <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
+        <source>the file ends inside this section; what it holds is read</source>
+        <translation>die Datei endet mitten in diesem Abschnitt; sein vorhandener Inhalt wird gelesen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
+        <source>a section</source>
+        <translation>ein Abschnitt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
+        <source>the file ends before this section&apos;s checksum</source>
+        <translation>die Datei endet vor der Prüfsumme dieses Abschnitts</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <source>a section checksum</source>
+        <translation>eine Abschnittsprüfsumme</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <source>its checksum does not match, so its bytes changed after it was saved</source>
+        <translation>seine Prüfsumme stimmt nicht, seine Bytes wurden also nach dem Speichern verändert</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="201"/>
+        <source>section %1 is missing</source>
+        <translation>Abschnitt %1 fehlt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <source>the end marker</source>
+        <translation>die Endmarke</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="181"/>
+        <source>the file</source>
+        <translation>die Datei</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <source>an unknown section is left out</source>
+        <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <source>section</source>
+        <translation>Abschnitt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="196"/>
+        <source>the section is repeated or out of order</source>
+        <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="227"/>
+        <source>the end of the section could not be read</source>
+        <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="228"/>
+        <source>the section</source>
+        <translation>der Abschnitt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <source>the document settings</source>
+        <translation>die Dokumenteinstellungen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="143"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="253"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="156"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="160"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="277"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <source>the next free id %1 is larger than any id can be</source>
+        <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
         <source>the frame list</source>
         <translation>die Einzelbildliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
         <source>a frame</source>
         <translation>ein Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
+        <source>the frame is cut off and is left out, with any after it</source>
+        <translation>das Einzelbild ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
+        <source>%1; the frame is left out</source>
+        <translation>%1; das Einzelbild wird ausgelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>a frame id</source>
         <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="184"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>the frame</source>
         <translation>das Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="185"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>a frame hold</source>
         <translation>eine Haltedauer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="191"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the object list</source>
         <translation>die Objektliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="195"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="196"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="201"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
+        <source>the object is cut off and is left out, with any after it</source>
+        <translation>das Objekt ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
+        <source>%1; the object is left out</source>
+        <translation>%1; das Objekt wird ausgelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
         <source>a chunk header</source>
         <translation>ein Blockkopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>a chunk</source>
         <translation>ein Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="204"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
         <source>chunk</source>
         <translation>Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
         <source>an object id</source>
         <translation>eine Objekt-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="213"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>the object</source>
         <translation>das Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>the object flags</source>
         <translation>die Objektattribute</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>the mesh density</source>
         <translation>die Netzdichte</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
         <source>the object name</source>
         <translation>der Objektname</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="228"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
         <source>the stroke list</source>
         <translation>die Strichliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
         <source>a stroke id</source>
         <translation>eine Strich-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>the stroke</source>
         <translation>der Strich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
         <source>a stroke reference</source>
         <translation>ein Strichverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="251"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
+        <source>%1 claims %2 entries; the %3 that fit are read</source>
+        <translation>%1 gibt %2 Einträge an; die %3, die hineinpassen, werden gelesen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
-        <source>chunk %1 appears twice</source>
-        <translation>Block %1 kommt doppelt vor</translation>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
+        <source>an unknown chunk is left out</source>
+        <translation>ein unbekannter Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <source>chunk %1 appears twice or with another rig</source>
+        <translation>Block %1 kommt doppelt oder mit einem anderen Rig vor</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
+        <source>%1; the chunk is left out</source>
+        <translation>%1; der Block wird ausgelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
         <source>the pin list</source>
         <translation>die Pin-Liste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
         <source>a pin id</source>
         <translation>eine Pin-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="294"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
         <source>pin %1</source>
         <translation>Pin %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="266"/>
         <source>a pin position</source>
         <translation>eine Pin-Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="269"/>
         <source>pin %1 has a non-finite position</source>
         <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <source>the cage corner list</source>
+        <translation>die Käfigeckenliste</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <source>the cage has fewer than 3 corners</source>
+        <translation>der Käfig hat weniger als 3 Ecken</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <source>a cage corner</source>
+        <translation>eine Käfigecke</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <source>cage corner %1 has a non-finite position</source>
+        <translation>Käfigecke %1 hat eine nicht endliche Position</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
         <source>a pose reference</source>
         <translation>ein Posenverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
         <source>its pose: %1</source>
         <translation>seine Pose: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
         <source>its pose has %1 strokes but the object has %2</source>
         <translation>seine Pose hat %1 Striche, das Objekt aber %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="326"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
         <source>stroke %1 has %2 points but its pose has %3</source>
         <translation>Strich %1 hat %2 Punkte, seine Pose aber %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>%1 has no id</source>
         <translation>%1 hat keine ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <source>%1 has the id %2, larger than any id can be</source>
+        <translation>%1 hat die ID %2, die größer ist als jede mögliche ID</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="374"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="330"/>
+        <source>the id %1 is used twice</source>
+        <translation>die ID %1 wird doppelt verwendet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <source>no frame of it could be read; there is nothing to recover</source>
+        <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="344"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_tables.cpp" line="22"/>
-        <location filename="../model/src/finbook_file_reader_tables.cpp" line="24"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="26"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="28"/>
         <source>a stroke</source>
         <translation>ein Strich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_tables.cpp" line="26"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="32"/>
         <source>point %1 has a non-finite coordinate</source>
         <translation>Punkt %1 hat eine nicht endliche Koordinate</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="48"/>
+        <source>%n point(s) with a non-finite coordinate are left out</source>
+        <translation>
+            <numerusform>%n Punkt mit einer nicht endlichen Koordinate wird ausgelassen</numerusform>
+            <numerusform>%n Punkte mit einer nicht endlichen Koordinate werden ausgelassen</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_tables.cpp" line="42"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="57"/>
         <source>the stroke table</source>
         <translation>die Strichtabelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_tables.cpp" line="47"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="71"/>
         <source>a stroke colour</source>
         <translation>eine Strichfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_tables.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="72"/>
         <source>a stroke width</source>
         <translation>eine Strichbreite</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_tables.cpp" line="51"/>
-        <source>the width %1 is not a positive number</source>
-        <translation>die Breite %1 ist keine positive Zahl</translation>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="74"/>
+        <source>the width %1 is not a number above 0 and up to %2</source>
+        <translation>die Breite %1 ist keine Zahl größer als 0 und höchstens %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_tables.cpp" line="60"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="90"/>
         <source>the pose table</source>
         <translation>die Posentabelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_tables.cpp" line="66"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="97"/>
         <source>a pose</source>
         <translation>eine Pose</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="22"/>
+        <source>the skeleton</source>
+        <translation>das Skelett</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="25"/>
+        <source>its skeleton has no joints</source>
+        <translation>sein Skelett hat keine Gelenke</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="32"/>
+        <source>skeleton joint %1 has a non-finite value</source>
+        <translation>Skelettgelenk %1 hat einen nicht endlichen Wert</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="39"/>
+        <source>skeleton joint %1 has a negative radius</source>
+        <translation>Skelettgelenk %1 hat einen negativen Radius</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="43"/>
+        <source>skeleton joint %1 has an invalid parent</source>
+        <translation>Skelettgelenk %1 hat ein ungültiges Elterngelenk</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="48"/>
+        <source>the skeleton&apos;s root is not a root joint</source>
+        <translation>die Wurzel des Skeletts ist kein Wurzelgelenk</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="49"/>
+        <source>the skeleton&apos;s pose has a non-finite value</source>
+        <translation>die Pose des Skeletts hat einen nicht endlichen Wert</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="52"/>
+        <source>a skeleton setting is outside 0 to 1</source>
+        <translation>eine Skeletteinstellung liegt nicht zwischen 0 und 1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="62"/>
+        <source>the skeleton has an unknown skinning mode</source>
+        <translation>das Skelett hat einen unbekannten Skinning-Modus</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
+        <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
+        <translation>%1 beschädigte Bytes konnten nicht gelesen werden; das Lesen wird mit Abschnitt %2 fortgesetzt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_recover.cpp" line="56"/>
+        <source>the last %1 bytes of the file are damaged and could not be read</source>
+        <translation>die letzten %1 Bytes der Datei sind beschädigt und konnten nicht gelesen werden</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_recover.cpp" line="85"/>
+        <source>%n missing or repeated id(s) were replaced by new ones</source>
+        <translation>
+            <numerusform>%n fehlende oder doppelte ID wurde durch eine neue ersetzt</numerusform>
+            <numerusform>%n fehlende oder doppelte IDs wurden durch neue ersetzt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/recovery/autosaver.cpp" line="154"/>
+        <source>Autosave could not write a recovery copy: %1.</source>
+        <translation>Die automatische Sicherung konnte keine Wiederherstellungskopie schreiben: %1.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
+        <source>there is not enough memory</source>
+        <translation>es ist nicht genug Arbeitsspeicher vorhanden</translation>
+    </message>
+</context>
+<context>
+    <name>MeshImport</name>
+    <message>
+        <location filename="../model/src/import/mesh_import.cpp" line="22"/>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>„%1“ kann nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/import/mesh_import.cpp" line="27"/>
+        <source>Cannot import &quot;%1&quot;: the mesh has no boundary to draw.</source>
+        <translation>„%1“ kann nicht importiert werden: Das Netz hat keinen Rand, der sich zeichnen ließe.</translation>
     </message>
 </context>
 <context>
@@ -756,6 +1486,32 @@
             <numerusform>%1: %n Strich</numerusform>
             <numerusform>%1: %n Striche</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>QCommandLineParser</name>
+    <message>
+        <location filename="../app/main.cpp" line="22"/>
+        <source>Displays help on commandline options.</source>
+        <translation>Zeigt Hilfe zu den Kommandozeilenoptionen an.</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="23"/>
+        <source>Displays help including Qt specific options.</source>
+        <translation>Zeigt Hilfe einschließlich Qt-spezifischer Optionen an.</translation>
+    </message>
+</context>
+<context>
+    <name>RigPrompt</name>
+    <message>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="18"/>
+        <source>Discard the Pose?</source>
+        <translation>Pose verwerfen?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="19"/>
+        <source>&quot;%1&quot; is posed. Replacing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
+        <translation>„%1“ ist posiert. Wenn sein Rig ersetzt wird, kehrt die Zeichnung in die Ruhelage zurück. (Mit „Pose auf Zeichnung anwenden“ bleibt die Pose vorher erhalten.)</translation>
     </message>
 </context>
 <context>
@@ -776,27 +1532,32 @@
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="109"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="111"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="140"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="150"/>
+        <source>%1 (pose applied)</source>
+        <translation>%1 (Pose angewendet)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="164"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="188"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="212"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="208"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="288"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="211"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="295"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -815,36 +1576,125 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::BoneTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="24"/>
+        <source>Bone</source>
+        <translation>Knochen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="46"/>
+        <source>Build Skeleton</source>
+        <translation>Skelett erstellen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="47"/>
+        <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
+        <translation>Das Objekt ist mit einem anderen Verformer posiert. Beim Erstellen eines Skeletts wird diese Pose verworfen. Trotzdem erstellen?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="218"/>
+        <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
+        <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um ihr ein Skelett zu geben.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="225"/>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
+        <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um daran zu ziehen, die Wurzel, um das Objekt zu verschieben; Alt-Klick auf ein Gelenk sperrt es.</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::BrushToolBar</name>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="13"/>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="15"/>
         <source>Brush</source>
         <translation>Pinsel</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="28"/>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="29"/>
         <source>Width:</source>
         <translation>Breite:</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="33"/>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="34"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="35"/>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="36"/>
         <source>Smoothing:</source>
         <translation>Glättung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="38"/>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="39"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>Wie stark ein Strich beim Absetzen des Stifts geglättet wird</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="66"/>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="84"/>
         <source>Pen colour %1</source>
         <translation>Stiftfarbe %1</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CageActions</name>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="32"/>
+        <source>&amp;Fit Cage</source>
+        <translation>Käfig an&amp;passen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="34"/>
+        <source>Put a coarse cage around the current object in one step</source>
+        <translation>Einen groben Käfig in einem Schritt um das aktuelle Objekt legen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
+        <source>Shift+C</source>
+        <translation>Shift+C</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
+        <source>Edit Cage &amp;Shape</source>
+        <translation>Käfig&amp;form bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="40"/>
+        <source>Change the cage itself (move, add or delete corners) instead of posing with it</source>
+        <translation>Den Käfig selbst ändern (Ecken verschieben, hinzufügen oder löschen), statt damit zu posieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="66"/>
+        <source>Corners </source>
+        <translation>Ecken </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
+        <source>About how many corners Fit Cage gives the cage</source>
+        <translation>Ungefähr wie viele Ecken „Käfig anpassen“ dem Käfig gibt</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="81"/>
+        <source>Choose an unlocked object with strokes to fit a cage to.</source>
+        <translation>Wählen Sie ein nicht gesperrtes Objekt mit Strichen, um einen Käfig daran anzupassen.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CageTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/cage/tool_cage.h" line="23"/>
+        <source>Cage</source>
+        <translation>Käfig</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="127"/>
+        <source>Choose an object first: the cage goes around it.</source>
+        <translation>Wählen Sie zuerst ein Objekt: Der Käfig wird darum gelegt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="249"/>
+        <source>A cage needs at least three corners.</source>
+        <translation>Ein Käfig braucht mindestens drei Ecken.</translation>
     </message>
 </context>
 <context>
@@ -863,67 +1713,72 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="17"/>
+        <location filename="../ui/src/deform_actions.cpp" line="21"/>
         <source>&amp;Reset Pose</source>
         <translation>Pose &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="19"/>
-        <source>Move every pin of the current object back to where it was put</source>
-        <translation>Alle Pins des aktuellen Objekts an die Stelle zurücksetzen, an der sie gesetzt wurden</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/deform_actions.cpp" line="20"/>
+        <location filename="../ui/src/deform_actions.cpp" line="25"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung &amp;anwenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="22"/>
-        <source>Make the bent drawing the object&apos;s new strokes and remove its pins</source>
-        <translation>Die verformte Zeichnung zu den neuen Strichen des Objekts machen und seine Pins entfernen</translation>
+        <location filename="../ui/src/deform_actions.cpp" line="24"/>
+        <source>Move the current object&apos;s pins or cage corners back to their rest positions</source>
+        <translation>Die Pins oder Käfigecken des aktuellen Objekts in ihre Ruhepositionen zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="23"/>
-        <source>Remove All &amp;Pins</source>
-        <translation>Alle &amp;Pins entfernen</translation>
+        <location filename="../ui/src/deform_actions.cpp" line="27"/>
+        <source>Make the posed drawing the object&apos;s new strokes; the pins or cage stay where they are</source>
+        <translation>Die posierte Zeichnung zu den neuen Strichen des Objekts machen; die Pins oder der Käfig bleiben, wo sie sind</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="37"/>
-        <source>Remove All Pins</source>
-        <translation>Alle Pins entfernen</translation>
+        <location filename="../ui/src/deform_actions.cpp" line="29"/>
+        <source>&amp;Remove Pins or Cage</source>
+        <translation>Pins oder Käfig &amp;entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="45"/>
+        <location filename="../ui/src/deform_actions.cpp" line="31"/>
+        <source>Take the pins or the cage off the current object</source>
+        <translation>Die Pins oder den Käfig vom aktuellen Objekt entfernen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="49"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="55"/>
+        <location filename="../ui/src/deform_actions.cpp" line="59"/>
         <source>R&amp;igidity</source>
         <translation>&amp;Steifigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="62"/>
+        <location filename="../ui/src/deform_actions.cpp" line="73"/>
+        <source>Converged (Most Rigid)</source>
+        <translation>Konvergiert (am starrsten)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="74"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Wie in der Veröffentlichung (zwei Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="63"/>
+        <location filename="../ui/src/deform_actions.cpp" line="75"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Steifer (+1 Durchgang)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="64"/>
+        <location filename="../ui/src/deform_actions.cpp" line="76"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Am steifsten (+3 Durchgänge)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="95"/>
+        <location filename="../ui/src/deform_actions.cpp" line="108"/>
         <source>Mesh density </source>
         <translation>Netzdichte </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="96"/>
+        <location filename="../ui/src/deform_actions.cpp" line="109"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Wie fein das Verformungsnetz des aktuellen Objekts ist (1 = Standard)</translation>
     </message>
@@ -992,6 +1847,227 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::ExportDialog</name>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="56"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
+        <source>Export Animation</source>
+        <translation>Animation exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="64"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="76"/>
+        <source>Animated GIF</source>
+        <translation>Animiertes GIF</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <source>MP4 video (H.264)</source>
+        <translation>MP4-Video (H.264)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <source>WebM video (VP9)</source>
+        <translation>WebM-Video (VP9)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <source>Animated PNG (APNG)</source>
+        <translation>Animiertes PNG (APNG)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <source>HTML flipbook (one file)</source>
+        <translation>HTML-Daumenkino (eine Datei)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <source>PNG images (a folder)</source>
+        <translation>PNG-Bilder (ein Ordner)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <source>SVG vector images (a folder)</source>
+        <translation>SVG-Vektorbilder (ein Ordner)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Durchsuchen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <source>Play range</source>
+        <translation>Wiedergabebereich</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
+        <source>All frames</source>
+        <translation>Alle Einzelbilder</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <source>Frames</source>
+        <translation>Einzelbilder</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="105"/>
+        <source>Document background</source>
+        <translation>Dokumenthintergrund</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="106"/>
+        <source>Transparent</source>
+        <translation>Transparent</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <source>Colour</source>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
+        <source>Start again after the last frame</source>
+        <translation>Nach dem letzten Einzelbild wieder von vorn beginnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <source>One file per drawing, with an exposure sheet</source>
+        <translation>Eine Datei pro Zeichnung, mit Timing-Sheet</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="132"/>
+        <source>to</source>
+        <translation>bis</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="147"/>
+        <source>&amp;Format:</source>
+        <translation>&amp;Format:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="148"/>
+        <source>&amp;Save to:</source>
+        <translation>&amp;Speichern in:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <source>F&amp;rames:</source>
+        <translation>Einzel&amp;bilder:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <source>Sc&amp;ale:</source>
+        <translation>S&amp;kalierung:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <source>&amp;Background:</source>
+        <translation>&amp;Hintergrund:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <source>Frame ra&amp;te:</source>
+        <translation>Bild&amp;rate:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <source>Loop:</source>
+        <translation>Endlosschleife:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <source>Cancel Export</source>
+        <translation>Export abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="225"/>
+        <source>%1 x %2 pixels</source>
+        <translation>%1 × %2 Pixel</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="228"/>
+        <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
+        <translation>Dieses Format benötigt das Programm ffmpeg, das nicht gefunden wurde; installieren Sie es zuerst (unter Debian: apt install ffmpeg).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <source>Export to Folder</source>
+        <translation>In Ordner exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="273"/>
+        <source>%1 files (*.%2)</source>
+        <translation>%1-Dateien (*.%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="44"/>
+        <source>Choose where to export the animation to.</source>
+        <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="63"/>
+        <source>Exporting...</source>
+        <translation>Wird exportiert...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="75"/>
+        <source>Cancelling...</source>
+        <translation>Wird abgebrochen...</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="91"/>
+        <source>Exported %n file(s) to %1</source>
+        <translation>
+            <numerusform>%n Datei nach %1 exportiert</numerusform>
+            <numerusform>%n Dateien nach %1 exportiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="102"/>
+        <source>Export cancelled; nothing was written.</source>
+        <translation>Export abgebrochen; es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="127"/>
+        <source>&quot;%1&quot; already exists. Replace it?</source>
+        <translation>„%1“ ist bereits vorhanden. Ersetzen?</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
+        <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
+        <translation>
+            <numerusform>%n Datei am Ziel ist bereits vorhanden: „%1“. Ersetzen?</numerusform>
+            <numerusform>%n Dateien am Ziel sind bereits vorhanden, etwa „%1“. Ersetzen?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="131"/>
+        <source>Replace Files?</source>
+        <translation>Dateien ersetzen?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="138"/>
+        <source>Cannot Export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::FrameActions</name>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="13"/>
@@ -1010,36 +2086,41 @@
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="19"/>
+        <source>Generate &amp;In-betweens…</source>
+        <translation>&amp;Zwischenbilder erzeugen…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="21"/>
         <source>De&amp;lete Frame</source>
         <translation>Einzelbild &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="22"/>
+        <location filename="../ui/src/frame_actions.cpp" line="24"/>
         <source>Move Frame &amp;Left</source>
         <translation>Einzelbild nach l&amp;inks verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="24"/>
+        <location filename="../ui/src/frame_actions.cpp" line="26"/>
         <source>Move Frame &amp;Right</source>
         <translation>Einzelbild nach &amp;rechts verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="27"/>
+        <location filename="../ui/src/frame_actions.cpp" line="29"/>
         <source>Hold &amp;Longer</source>
         <translation>Län&amp;ger halten</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="29"/>
+        <location filename="../ui/src/frame_actions.cpp" line="31"/>
         <source>Hold &amp;Shorter</source>
         <translation>&amp;Kürzer halten</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="32"/>
+        <location filename="../ui/src/frame_actions.cpp" line="34"/>
         <source>&amp;Previous Frame</source>
         <translation>&amp;Vorheriges Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="35"/>
+        <location filename="../ui/src/frame_actions.cpp" line="37"/>
         <source>&amp;Next Frame</source>
         <translation>Nä&amp;chstes Einzelbild</translation>
     </message>
@@ -1053,105 +2134,243 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::InbetweenDialog</name>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="35"/>
+        <source>Generate In-betweens</source>
+        <translation>Zwischenbilder erzeugen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="41"/>
+        <source>Objects:</source>
+        <translation>Objekte:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="65"/>
+        <source>&amp;Frames between the keys:</source>
+        <translation>&amp;Einzelbilder zwischen den Schlüsselbildern:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="68"/>
+        <source>Linear</source>
+        <translation>Linear</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="69"/>
+        <source>Ease in (slow from the first key)</source>
+        <translation>Ease-in (langsam vom ersten Schlüsselbild weg)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="70"/>
+        <source>Ease out (slow into the second key)</source>
+        <translation>Ease-out (langsam ins zweite Schlüsselbild hinein)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="71"/>
+        <source>Ease in and out</source>
+        <translation>Ease-in und Ease-out</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="72"/>
+        <source>Favour…</source>
+        <translation>Gewichtet…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="73"/>
+        <source>&amp;Spacing:</source>
+        <translation>&amp;Verteilung:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="77"/>
+        <source>Left favours the first key, right the second.</source>
+        <translation>Links wird das erste Schlüsselbild bevorzugt, rechts das zweite.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="79"/>
+        <source>F&amp;avour:</source>
+        <translation>&amp;Gewichtung:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
+        <source>Move pins and cage corners along &amp;arcs</source>
+        <translation>Pins und Käfigecken auf &amp;Bögen bewegen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
+        <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
+        <translation>Ein zwischen den Schlüsselbildern geschwungenes Glied behält seine Länge. Ohne diese Option bewegt sich jeder Zielpunkt geradlinig.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="112"/>
+        <source>(unnamed)</source>
+        <translation>(unbenannt)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="115"/>
+        <source>%1: interpolated</source>
+        <translation>%1: interpoliert</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="117"/>
+        <source>%1: held from the first key (no pins or cage)</source>
+        <translation>%1: vom ersten Schlüsselbild gehalten (keine Pins und kein Käfig)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
+        <source>%1: held from the first key (its pins or cage differ between the keys)</source>
+        <translation>%1: vom ersten Schlüsselbild gehalten (Pins oder Käfig unterscheiden sich zwischen den Schlüsselbildern)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>
+        <source>%1: only in the first key, held in the first half</source>
+        <translation>%1: nur im ersten Schlüsselbild, in der ersten Hälfte gehalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="124"/>
+        <source>%1: only in the second key, held in the second half</source>
+        <translation>%1: nur im zweiten Schlüsselbild, in der zweiten Hälfte gehalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <source>Select two different frames as keys.</source>
+        <translation>Wählen Sie zwei verschiedene Einzelbilder als Schlüsselbilder aus.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="147"/>
+        <source>The preview could not be posed: %1</source>
+        <translation>Die Vorschau konnte nicht posiert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
+        <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
+        <translation>Kein Objekt hat in beiden Schlüsselbildern passende Pins oder einen passenden Käfig: Die Zwischenbilder halten nur die Zeichnungen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="153"/>
+        <source>The canvas shows the middle in-between.</source>
+        <translation>Die Leinwand zeigt das mittlere Zwischenbild.</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="106"/>
+        <location filename="../ui/src/main_window.cpp" line="123"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="130"/>
+        <location filename="../ui/src/main_window.cpp" line="147"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="131"/>
+        <location filename="../ui/src/main_window.cpp" line="148"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="134"/>
+        <location filename="../ui/src/main_window.cpp" line="151"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="135"/>
+        <location filename="../ui/src/main_window.cpp" line="152"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="165"/>
+        <location filename="../ui/src/main_window.cpp" line="188"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="176"/>
+        <location filename="../ui/src/main_window.cpp" line="199"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="177"/>
+        <location filename="../ui/src/main_window.cpp" line="200"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="182"/>
-        <location filename="../ui/src/main_window_files.cpp" line="200"/>
+        <location filename="../ui/src/main_window.cpp" line="205"/>
+        <location filename="../ui/src/main_window_files.cpp" line="303"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="183"/>
+        <location filename="../ui/src/main_window.cpp" line="206"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="25"/>
+        <location filename="../ui/src/main_window_files.cpp" line="30"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook-Animationen (*.finbook);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="36"/>
+        <location filename="../ui/src/main_window_files.cpp" line="41"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="65"/>
+        <location filename="../ui/src/main_window_files.cpp" line="76"/>
+        <location filename="../ui/src/main_window_files.cpp" line="93"/>
         <source>Cannot Open File</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="93"/>
+        <location filename="../ui/src/main_window_files.cpp" line="128"/>
         <source>Cannot Save File</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="99"/>
+        <location filename="../ui/src/main_window_files.cpp" line="134"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="123"/>
+        <location filename="../ui/src/main_window_files.cpp" line="161"/>
+        <source>The folder %1 does not exist; choose an existing folder and export again.</source>
+        <translation>Der Ordner %1 existiert nicht; wählen Sie einen vorhandenen Ordner und exportieren Sie erneut.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="175"/>
+        <source>Replace Files?</source>
+        <translation>Dateien ersetzen?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="176"/>
+        <source>%1 already holds exported frames. Replace them?</source>
+        <translation>%1 enthält bereits exportierte Einzelbilder. Ersetzen?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="184"/>
         <source>Exporting frames...</source>
         <translation>Einzelbilder werden exportiert...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="123"/>
+        <location filename="../ui/src/main_window_files.cpp" line="184"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="132"/>
+        <location filename="../ui/src/main_window_files.cpp" line="160"/>
+        <location filename="../ui/src/main_window_files.cpp" line="206"/>
         <source>Cannot Export Frames</source>
         <translation>Einzelbilder können nicht exportiert werden</translation>
     </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="133"/>
-        <source>Cannot write %1. Check that the folder is writable and the disk is not full, then export again.</source>
-        <translation>%1 kann nicht geschrieben werden. Prüfen Sie, ob der Ordner beschreibbar und der Datenträger nicht voll ist, und exportieren Sie erneut.</translation>
+    <message numerus="yes">
+        <location filename="../ui/src/main_window_files.cpp" line="100"/>
+        <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
+        <translation>
+            <numerusform>Lesbare Teile von %1 geöffnet (%n Problem behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
+            <numerusform>Lesbare Teile von %1 geöffnet (%n Probleme behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="140"/>
+        <location filename="../ui/src/main_window_files.cpp" line="209"/>
         <source>Exported %n frame(s) to %1</source>
         <translation>
             <numerusform>%n Einzelbild nach %1 exportiert</numerusform>
@@ -1159,259 +2378,365 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="177"/>
+        <location filename="../ui/src/main_window_files.cpp" line="246"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="186"/>
+        <location filename="../ui/src/main_window_files.cpp" line="255"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="202"/>
+        <location filename="../ui/src/main_window_files.cpp" line="265"/>
+        <source>Cannot Import Mesh</source>
+        <translation>Netz kann nicht importiert werden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="269"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <source>Import Mesh</source>
+        <translation>Netz importieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="291"/>
+        <source>Damaged File</source>
+        <translation>Beschädigte Datei</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="292"/>
+        <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
+        <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="295"/>
+        <source>Open Anyway</source>
+        <translation>Trotzdem öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="305"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="203"/>
+        <location filename="../ui/src/main_window_files.cpp" line="306"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="209"/>
+        <location filename="../ui/src/main_window_files.cpp" line="312"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="215"/>
+        <location filename="../ui/src/main_window_files.cpp" line="318"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="216"/>
+        <location filename="../ui/src/main_window_files.cpp" line="319"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="222"/>
+        <location filename="../ui/src/main_window_files.cpp" line="325"/>
         <source>Export Frames to Folder</source>
         <translation>Einzelbilder in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="40"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="44"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="52"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="56"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="53"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="55"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="59"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="59"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="63"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="63"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="67"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="69"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="71"/>
+        <source>E&amp;xport...</source>
+        <translation>E&amp;xportieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="78"/>
+        <source>&amp;Import Mesh...</source>
+        <translation>Netz &amp;importieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <source>OFF meshes (*.off)</source>
+        <translation>OFF-Netze (*.off)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="85"/>
         <source>&amp;Export Frames...</source>
         <translation>Einzelbilder &amp;exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="87"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="83"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="103"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="85"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="105"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="88"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="117"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="99"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="119"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="101"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="121"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="123"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="131"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="112"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="134"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="118"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="140"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="125"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="147"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="150"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="151"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="173"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="174"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="154"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="176"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="180"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="163"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
         <source>&amp;Onion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="196"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="198"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="183"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="205"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="189"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="211"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="224"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="234"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="213"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="237"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="221"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="245"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="222"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="224"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="248"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="268"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="292"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="269"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="27"/>
+        <location filename="../ui/src/main_window_deform.cpp" line="35"/>
         <source>&amp;Deform</source>
         <translation>&amp;Verformen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="36"/>
+        <location filename="../ui/src/main_window_deform.cpp" line="50"/>
         <source>Deform</source>
         <translation>Verformen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="49"/>
+        <location filename="../ui/src/main_window_deform.cpp" line="66"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="39"/>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="41"/>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="45"/>
+        <source>Apply Pose</source>
+        <translation>Pose anwenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="47"/>
+        <source>Remove Rig</source>
+        <translation>Rig entfernen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="49"/>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="51"/>
+        <source>Shape</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="27"/>
+        <source>Show S&amp;keleton</source>
+        <translation>&amp;Skelett anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <source>Skeleton</source>
+        <translation>Skelett</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="41"/>
+        <source>&amp;Skinning</source>
+        <translation>S&amp;kinning</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="48"/>
+        <source>&amp;Rigid (Bones Pin the Mesh)</source>
+        <translation>&amp;Starr (Knochen fixieren das Netz)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="50"/>
+        <source>&amp;Linear Blend</source>
+        <translation>&amp;Lineare Überblendung</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="62"/>
+        <source>Cannot Recover</source>
+        <translation>Wiederherstellung nicht möglich</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="71"/>
+        <source>Recovered %1 as it was at %2; save it to keep it.</source>
+        <translation>%1 mit dem Stand vom %2 wiederhergestellt; speichern Sie die Animation, um sie zu behalten.</translation>
     </message>
 </context>
 <context>
@@ -1556,12 +2881,12 @@
 <context>
     <name>finbook::ui::PinTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_pin.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="17"/>
         <source>Pin</source>
         <translation>Pin</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_pin.cpp" line="154"/>
+        <location filename="../ui/src/pins/tool_pin.cpp" line="156"/>
         <source>Click on a visible, unlocked drawing to pin it.</source>
         <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um einen Pin zu setzen.</translation>
     </message>
@@ -1628,29 +2953,105 @@
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="53"/>
+        <location filename="../ui/src/preferences_dialog.cpp" line="55"/>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="56"/>
+        <source>Never</source>
+        <translation>Nie</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="57"/>
+        <source>How often Finbook keeps a recovery copy of unsaved changes, offered at the next start if Finbook did not close normally.</source>
+        <translation>Wie oft Finbook eine Wiederherstellungskopie ungespeicherter Änderungen anlegt; sie wird beim nächsten Start angeboten, falls Finbook nicht normal beendet wurde.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="61"/>
         <source>Frame rate:</source>
         <translation>Bildrate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="54"/>
+        <location filename="../ui/src/preferences_dialog.cpp" line="62"/>
         <source>Canvas width:</source>
         <translation>Leinwandbreite:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="55"/>
+        <location filename="../ui/src/preferences_dialog.cpp" line="63"/>
         <source>Canvas height:</source>
         <translation>Leinwandhöhe:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="76"/>
+        <location filename="../ui/src/preferences_dialog.cpp" line="64"/>
+        <source>Autosave every:</source>
+        <translation>Automatisch speichern alle:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="86"/>
         <source>Conflicting Shortcuts</source>
         <translation>Kollidierende Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="77"/>
+        <location filename="../ui/src/preferences_dialog.cpp" line="87"/>
         <source>Two or more actions share a shortcut. Change or clear the shortcuts marked in red, then press OK again.</source>
         <translation>Mehrere Aktionen teilen sich ein Tastenkürzel. Ändern oder löschen Sie die rot markierten Kürzel und drücken Sie erneut OK.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::RecoveryDialog</name>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="17"/>
+        <source>Recover Unsaved Work</source>
+        <translation>Ungespeicherte Arbeit wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="18"/>
+        <source>Finbook did not close normally last time. It kept these copies of work that was not saved:</source>
+        <translation>Finbook wurde beim letzten Mal nicht normal beendet. Folgende Kopien ungespeicherter Arbeit wurden aufbewahrt:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="31"/>
+        <source>&amp;Restore</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="32"/>
+        <source>&amp;Discard</source>
+        <translation>&amp;Verwerfen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="33"/>
+        <source>&amp;Later</source>
+        <translation>&amp;Später</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="35"/>
+        <source>Open the copy as an unsaved animation</source>
+        <translation>Die Kopie als ungespeicherte Animation öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="36"/>
+        <source>Delete the copy for good</source>
+        <translation>Die Kopie endgültig löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="37"/>
+        <source>Keep the copies and ask again at the next start</source>
+        <translation>Die Kopien behalten und beim nächsten Start erneut fragen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="56"/>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="58"/>
+        <source>%1 — %2 — %n frame(s)</source>
+        <translation>
+            <numerusform>%1 — %2 — %n Einzelbild</numerusform>
+            <numerusform>%1 — %2 — %n Einzelbilder</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1684,27 +3085,32 @@
 <context>
     <name>finbook::ui::ShortcutEditor</name>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="29"/>
+        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
         <source>Action</source>
         <translation>Aktion</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="29"/>
+        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
         <source>Shortcut</source>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="47"/>
+        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <source>Alternative</source>
+        <translation>Alternative</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="72"/>
         <source>Restore Defaults</source>
         <translation>Standardwerte wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="91"/>
+        <location filename="../ui/src/shortcut_editor.cpp" line="132"/>
         <source>%1 is used by: %2</source>
         <translation>%1 wird verwendet von: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="99"/>
+        <location filename="../ui/src/shortcut_editor.cpp" line="143"/>
         <source>Conflicting shortcuts:</source>
         <translation>Kollidierende Tastenkürzel:</translation>
     </message>
@@ -1712,44 +3118,92 @@
 <context>
     <name>finbook::ui::ShortcutsDialog</name>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="15"/>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="20"/>
         <source>Keyboard Shortcuts</source>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="21"/>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
         <source>Pan the view</source>
         <translation>Ansicht verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="21"/>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
         <source>Space + drag, or middle button drag</source>
         <translation>Leertaste + Ziehen oder Ziehen mit mittlerer Maustaste</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="22"/>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
         <source>Zoom about the cursor</source>
         <translation>Um den Mauszeiger zoomen</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="22"/>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
         <source>Mouse wheel</source>
         <translation>Mausrad</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
         <source>Action</source>
         <translation>Aktion</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
         <source>Shortcut</source>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="38"/>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="53"/>
         <source>Filter</source>
         <translation>Filter</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SkeletonPanel</name>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <source>Bone complexity</source>
+        <translation>Knochenanzahl</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <source>Merge junctions</source>
+        <translation>Verzweigungen zusammenführen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <source>Prune branches</source>
+        <translation>Äste beschneiden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <source>Collapse short bones</source>
+        <translation>Kurze Knochen zusammenfassen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="23"/>
+        <source>More bones follow the shape more closely</source>
+        <translation>Mehr Knochen folgen der Form genauer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
+        <source>Junctions closer than this become one</source>
+        <translation>Verzweigungen, die näher beieinander liegen, werden zu einer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
+        <source>Remove side branches shorter than this</source>
+        <translation>Seitenäste entfernen, die kürzer sind</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
+        <source>Collapse inner bones shorter than this into one joint</source>
+        <translation>Innere Knochen, die kürzer sind, zu einem Gelenk zusammenfassen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="42"/>
+        <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
+        <translation>Wählen Sie das Werkzeug Knochen (K) und klicken Sie auf ein Objekt, um ihm ein Skelett zu geben.</translation>
     </message>
 </context>
 <context>
@@ -1760,7 +3214,7 @@
         <translation>Strich-Radierer</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="92"/>
+        <location filename="../ui/src/tool_eraser.cpp" line="93"/>
         <source>Erase</source>
         <translation>Radieren</translation>
     </message>
@@ -1798,7 +3252,7 @@
         <translation>Wie viele folgende Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="116"/>
+        <location filename="../ui/src/timeline_widget.cpp" line="119"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Einzelbild %1 von %2 · %3 fps</translation>
     </message>

@@ -1,0 +1,3260 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="fr_FR">
+<context>
+    <name>Command</name>
+    <message>
+        <location filename="../model/src/commands.cpp" line="21"/>
+        <source>Draw Stroke</source>
+        <translation>Tracer un trait</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="45"/>
+        <source>Erase Stroke</source>
+        <translation>Effacer un trait</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="74"/>
+        <source>Move Strokes to Object</source>
+        <translation>Déplacer les traits vers un objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="171"/>
+        <source>New Object</source>
+        <translation>Nouvel objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="199"/>
+        <source>Delete Object</source>
+        <translation>Supprimer l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="228"/>
+        <source>Rename Object</source>
+        <translation>Renommer l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="253"/>
+        <source>Reorder Object</source>
+        <translation>Réordonner l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="284"/>
+        <source>Show Object</source>
+        <translation>Afficher l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="284"/>
+        <source>Hide Object</source>
+        <translation>Masquer l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="286"/>
+        <source>Lock Object</source>
+        <translation>Verrouiller l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="286"/>
+        <source>Unlock Object</source>
+        <translation>Déverrouiller l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="319"/>
+        <source>Insert Frame</source>
+        <translation>Insérer une image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="323"/>
+        <source>Object</source>
+        <translation>Objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="342"/>
+        <source>Duplicate Frame</source>
+        <translation>Dupliquer l&apos;image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="387"/>
+        <source>Delete Frame</source>
+        <translation>Supprimer l&apos;image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="413"/>
+        <source>Move Frame</source>
+        <translation>Déplacer l&apos;image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="436"/>
+        <source>Change Frame Exposure</source>
+        <translation>Modifier l&apos;exposition de l&apos;image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="474"/>
+        <source>Change Document Settings</source>
+        <translation>Modifier les paramètres du document</translation>
+    </message>
+    <message>
+        <location filename="../model/src/object_commands.cpp" line="16"/>
+        <source>Merge Objects</source>
+        <translation>Fusionner les objets</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_commands.cpp" line="56"/>
+        <source>Add Pin</source>
+        <translation>Ajouter une épingle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_commands.cpp" line="64"/>
+        <source>Remove Pin</source>
+        <translation>Retirer l&apos;épingle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_commands.cpp" line="74"/>
+        <source>Move Pin</source>
+        <translation>Déplacer l&apos;épingle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_commands.cpp" line="88"/>
+        <source>Change Mesh Density</source>
+        <translation>Modifier la densité du maillage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="49"/>
+        <source>Place Cage</source>
+        <translation>Placer une cage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="56"/>
+        <source>Edit Cage</source>
+        <translation>Modifier la cage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="67"/>
+        <source>Move Cage Corners</source>
+        <translation>Déplacer les coins de la cage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="75"/>
+        <source>Remove Rig</source>
+        <translation>Retirer l&apos;armature</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="31"/>
+        <source>Generate In-betweens</source>
+        <translation>Générer des intervalles</translation>
+    </message>
+    <message>
+        <location filename="../model/src/rig/rig_commands.cpp" line="89"/>
+        <source>Reset Pose</source>
+        <translation>Réinitialiser la pose</translation>
+    </message>
+    <message>
+        <location filename="../model/src/rig/rig_commands.cpp" line="113"/>
+        <source>Apply Pose to Drawing</source>
+        <translation>Appliquer la pose au dessin</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="52"/>
+        <source>Build Skeleton</source>
+        <translation>Construire le squelette</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="63"/>
+        <source>Change Skeleton Settings</source>
+        <translation>Modifier les réglages du squelette</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="88"/>
+        <source>Pose Bones</source>
+        <translation>Poser les os</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="97"/>
+        <source>Change Skinning</source>
+        <translation>Modifier l&apos;habillage</translation>
+    </message>
+</context>
+<context>
+    <name>CommandLine</name>
+    <message>
+        <location filename="../app/cli.cpp" line="99"/>
+        <source>No command given; see finbook --help.</source>
+        <translation>Aucune commande indiquée ; voir finbook --help.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli.cpp" line="103"/>
+        <source>Usage: finbook info FILE</source>
+        <translation>Utilisation : finbook info FILE</translation>
+    </message>
+    <message>
+        <location filename="../app/cli.cpp" line="113"/>
+        <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
+        <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="36"/>
+        <source>Finbook, a flipbook animation editor.
+
+  finbook [FILE]               open FILE in the editor
+  finbook info FILE            print a JSON summary of FILE
+  finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
+  finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
+  finbook export FILE... --format F --out-dir DIR   export several files</source>
+        <translation>Finbook, un éditeur d&apos;animation en folioscope.
+
+  finbook [FILE]               ouvrir FILE dans l&apos;éditeur
+  finbook info FILE            afficher un résumé JSON de FILE
+  finbook export FILE OUTDIR   rendre chaque image dans OUTDIR/frame_0001.png ...
+  finbook export FILE OUT      exporter vers OUT.gif, .mp4, .webm, .apng ou .html
+  finbook export FILE... --format F --out-dir DIR   exporter plusieurs fichiers</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="48"/>
+        <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
+        <translation>Utiliser la langue LANGUAGE (par ex. de, en, fr, ja) au lieu de celle du système.</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="54"/>
+        <source>FILE, or a command.</source>
+        <translation>FILE, ou une commande.</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="66"/>
+        <source>see finbook --help</source>
+        <comment>after an error</comment>
+        <translation>voir finbook --help</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="73"/>
+        <source>%1; %2.</source>
+        <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
+        <translation>%1 ; %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="101"/>
+        <source>Unknown command &quot;%1&quot;; %2.</source>
+        <translation>Commande inconnue « %1 » ; %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="37"/>
+        <source>export: png, svg, gif, mp4, webm, apng or html.</source>
+        <translation>export : png, svg, gif, mp4, webm, apng ou html.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="39"/>
+        <source>export: frames A to B (default: the play range).</source>
+        <translation>export : images A à B (par défaut : la plage de lecture).</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="40"/>
+        <source>export: multiply the canvas size by S.</source>
+        <translation>export : multiplier la taille du canevas par S.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="42"/>
+        <source>export: N frames per second (default: the document&apos;s).</source>
+        <translation>export : N images par seconde (par défaut : celle du document).</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="44"/>
+        <source>export: this background colour (#rrggbb).</source>
+        <translation>export : cette couleur d&apos;arrière-plan (#rrggbb).</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="45"/>
+        <source>export: no background.</source>
+        <translation>export : pas d&apos;arrière-plan.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="47"/>
+        <source>export png/svg: one file per drawing plus an exposure sheet.</source>
+        <translation>export png/svg : un fichier par dessin, plus une feuille d&apos;exposition.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="49"/>
+        <source>export: replace existing files.</source>
+        <translation>export : remplacer les fichiers existants.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="50"/>
+        <source>export: write each FILE into DIR.</source>
+        <translation>export : écrire chaque FILE dans DIR.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="80"/>
+        <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
+        <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="95"/>
+        <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
+        <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="101"/>
+        <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
+        <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="109"/>
+        <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
+        <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="121"/>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
+        <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng ou html.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="136"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
+        <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng ou .html, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="140"/>
+        <source>--format %1 does not match &quot;%2&quot;.</source>
+        <translation>--format %1 ne correspond pas à « %2 ».</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="156"/>
+        <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
+        <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="160"/>
+        <source>Usage: finbook export FILE... --out-dir DIR</source>
+        <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="170"/>
+        <source>--transparent and --background cannot be used together.</source>
+        <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="172"/>
+        <source>--one-per-drawing is for png and svg exports only.</source>
+        <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="236"/>
+        <source>Use --overwrite to replace it.</source>
+        <translation>Utilisez --overwrite pour le remplacer.</translation>
+    </message>
+</context>
+<context>
+    <name>Deformation</name>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="73"/>
+        <source>The object has no strokes to deform.</source>
+        <translation>L&apos;objet n&apos;a aucun trait à déformer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="78"/>
+        <source>This drawing cannot be meshed for deformation: %1</source>
+        <translation>Impossible de mailler ce dessin pour le déformer&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="110"/>
+        <source>Cancelled.</source>
+        <translation>Annulé.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="154"/>
+        <source>The cage changed while it was being prepared.</source>
+        <translation>La cage a changé pendant sa préparation.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="162"/>
+        <source>The object has no mesh to deform.</source>
+        <translation>L&apos;objet n&apos;a pas de maillage à déformer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_setup.cpp" line="20"/>
+        <source>The pins cannot be solved on this drawing: %1</source>
+        <translation>Impossible de calculer la déformation par les épingles sur ce dessin&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_setup.cpp" line="47"/>
+        <source>The pins could not be solved: %1</source>
+        <translation>Le calcul de la déformation par les épingles a échoué&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="182"/>
+        <source>The deformation produced invalid points; it was not applied.</source>
+        <translation>La déformation a produit des points invalides&#xa0;; elle n&apos;a pas été appliquée.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="34"/>
+        <source>The cage cannot be used: %1</source>
+        <translation>Impossible d&apos;utiliser la cage&#xa0;: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/cage/cage_setup.cpp" line="40"/>
+        <source>%n stroke point(s) lie outside the cage; move its corners out so it encloses the drawing.</source>
+        <translation>
+            <numerusform>%n point de trait se trouve hors de la cage&#xa0;; écartez ses coins pour qu&apos;elle entoure le dessin.</numerusform>
+            <numerusform>%n points de trait se trouvent hors de la cage&#xa0;; écartez ses coins pour qu&apos;elle entoure le dessin.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="43"/>
+        <source>The drawing cannot be bound to the cage: %1</source>
+        <translation>Impossible de lier le dessin à la cage&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="58"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="61"/>
+        <source>The cage could not be solved: %1</source>
+        <translation>Impossible de résoudre la cage&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="71"/>
+        <source>This cage cannot be used: %1</source>
+        <translation>Cette cage est inutilisable&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="74"/>
+        <source>The cage must enclose the whole object: %1</source>
+        <translation>La cage doit entourer tout l&apos;objet&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="91"/>
+        <source>No cage fits this drawing: %1</source>
+        <translation>Aucune cage ne convient à ce dessin&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="55"/>
+        <source>No skeleton can be built for this drawing: %1</source>
+        <translation>Impossible de construire un squelette pour ce dessin&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
+        <source>The object has no strokes to build a skeleton in.</source>
+        <translation>L&apos;objet n&apos;a aucun trait dans lequel construire un squelette.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="81"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="90"/>
+        <source>No skeleton can be built for this drawing.</source>
+        <translation>Impossible de construire un squelette pour ce dessin.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="19"/>
+        <source>The skeleton is damaged; build it again.</source>
+        <translation>Le squelette est endommagé&#xa0;; reconstruisez-le.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="30"/>
+        <source>The skeleton cannot be used: %1</source>
+        <translation>Impossible d&apos;utiliser le squelette&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="57"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="63"/>
+        <source>The skeleton cannot skin this drawing: %1</source>
+        <translation>Le squelette ne peut pas habiller ce dessin&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="75"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="80"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="86"/>
+        <source>The bones could not be posed: %1</source>
+        <translation>Impossible de poser les os&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>Export</name>
+    <message>
+        <location filename="../model/src/export/export_encoded.cpp" line="34"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="188"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="92"/>
+        <source>there is not enough memory to render it</source>
+        <translation>la mémoire est insuffisante pour en faire le rendu</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_encoded.cpp" line="56"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="196"/>
+        <source>its folder cannot be created</source>
+        <translation>son dossier ne peut pas être créé</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_encoded.cpp" line="85"/>
+        <source>ffmpeg finished without writing the %1; nothing was exported.</source>
+        <translation>ffmpeg s&apos;est terminé sans écrire le fichier %1&#xa0;; rien n&apos;a été exporté.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="151"/>
+        <source>Flipbook</source>
+        <translation>Folioscope</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="161"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="169"/>
+        <source>Play</source>
+        <translation>Lecture</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="163"/>
+        <source>Loop</source>
+        <translation>Boucle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="166"/>
+        <source>Frame</source>
+        <translation>Image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="45"/>
+        <source>The frame range %1-%2 is not within the animation&apos;s frames 1-%3; choose a range inside it.</source>
+        <translation>La plage d&apos;images %1-%2 n&apos;est pas comprise dans les images 1-%3 de l&apos;animation&#xa0;; choisissez une plage à l&apos;intérieur.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="80"/>
+        <source>The animation has no frames to export.</source>
+        <translation>L&apos;animation n&apos;a aucune image à exporter.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="82"/>
+        <source>The canvas has no size; set one in Document Settings.</source>
+        <translation>Le canevas n&apos;a pas de taille&#xa0;; définissez-en une dans Paramètres du document.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="101"/>
+        <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
+        <translation>L&apos;échelle %1 ne donne pas une taille d&apos;image possible&#xa0;; choisissez une échelle qui donne de 1 à %2 pixels de côté.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="105"/>
+        <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
+        <translation>L&apos;échelle %1 donnerait une image de %2 x %3 pixels&#xa0;; choisissez une échelle qui donne de 1 à %4 pixels de côté.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="118"/>
+        <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
+        <translation>La fréquence d&apos;images %1 n&apos;est pas possible&#xa0;; choisissez de %2 à %3 images par seconde.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="126"/>
+        <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
+        <translation>Une vidéo %1 ne peut pas être transparente&#xa0;; choisissez WebM, APNG, GIF ou PNG pour un arrière-plan transparent.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="42"/>
+        <source>&quot;%1&quot; is a folder where a file should go; choose another folder.</source>
+        <translation>«&#xa0;%1&#xa0;» est un dossier, à l&apos;emplacement prévu pour un fichier&#xa0;; choisissez un autre dossier.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="69"/>
+        <source>a file is in the way of the folder</source>
+        <translation>un fichier occupe l&apos;emplacement du dossier</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="76"/>
+        <source>the folder cannot be created</source>
+        <translation>le dossier ne peut pas être créé</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="16"/>
+        <source>&quot;%1&quot; already exists; nothing was exported.</source>
+        <translation>«&#xa0;%1&#xa0;» existe déjà&#xa0;; rien n&apos;a été exporté.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="23"/>
+        <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
+        <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis exportez à nouveau.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="31"/>
+        <source>The export was cancelled; nothing was written.</source>
+        <translation>L&apos;export a été annulé&#xa0;; rien n&apos;a été écrit.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="40"/>
+        <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
+        <translation>«&#xa0;%1&#xa0;» est un dossier&#xa0;; indiquez un nom de fichier se terminant par .%2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="97"/>
+        <source>Choose where to export the animation to.</source>
+        <translation>Choisissez où exporter l&apos;animation.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="37"/>
+        <source>GIF</source>
+        <translation>GIF</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="63"/>
+        <source>MP4 video</source>
+        <translation>vidéo MP4</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="81"/>
+        <source>WebM video</source>
+        <translation>vidéo WebM</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="95"/>
+        <source>animated PNG</source>
+        <translation>PNG animé</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="50"/>
+        <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
+        <translation>L&apos;export en %1 nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le (sous Debian&#xa0;: apt install ffmpeg) et exportez à nouveau.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="126"/>
+        <source>it stopped unexpectedly</source>
+        <translation>il s&apos;est arrêté de façon inattendue</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="127"/>
+        <source>exit code %1</source>
+        <translation>code de sortie %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="130"/>
+        <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
+        <translation>ffmpeg n&apos;a pas pu créer le fichier %1 (%2)&#xa0;; rien n&apos;a été écrit. Si le disque est plein, libérez de l&apos;espace et exportez à nouveau.</translation>
+    </message>
+</context>
+<context>
+    <name>FileMessages</name>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="17"/>
+        <source>The file is not there any more: it may have been moved, renamed or deleted.</source>
+        <translation>Le fichier n&apos;est plus là&#xa0;: il a peut-être été déplacé, renommé ou supprimé.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="21"/>
+        <source>This is a folder, not an animation. Choose a file ending in .finbook.</source>
+        <translation>Ceci est un dossier, pas une animation. Choisissez un fichier se terminant par .finbook.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="23"/>
+        <source>This is a device or a pipe, not an animation. Choose a file ending in .finbook.</source>
+        <translation>Ceci est un périphérique ou un tube, pas une animation. Choisissez un fichier se terminant par .finbook.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="26"/>
+        <source>You are not allowed to read this file. Ask whoever owns it to share it with you, or open a copy of it.</source>
+        <translation>Vous n&apos;avez pas le droit de lire ce fichier. Demandez à son propriétaire de le partager avec vous, ou ouvrez-en une copie.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="29"/>
+        <source>The disk could not read the file. If it is on a removable drive or a network folder, check that it is still connected.</source>
+        <translation>Le disque n&apos;a pas pu lire le fichier. S&apos;il se trouve sur un support amovible ou dans un dossier réseau, vérifiez qu&apos;il est toujours connecté.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="33"/>
+        <source>The file is empty: there is no drawing in it.</source>
+        <translation>Le fichier est vide&#xa0;: il ne contient aucun dessin.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="34"/>
+        <source>This is not a Finbook animation. Choose a file ending in .finbook.</source>
+        <translation>Ce n&apos;est pas une animation Finbook. Choisissez un fichier se terminant par .finbook.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="37"/>
+        <source>It was saved by a newer version of Finbook. Install that version to open it.</source>
+        <translation>Il a été enregistré par une version plus récente de Finbook. Installez cette version pour l&apos;ouvrir.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="40"/>
+        <source>The file is damaged near the end: it looks cut off. Perhaps a copy or a save was interrupted.</source>
+        <translation>Le fichier est endommagé vers la fin&#xa0;: il semble tronqué. Une copie ou un enregistrement a peut-être été interrompu.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="43"/>
+        <source>The file is damaged, or too large for this computer: it asks for more memory than Finbook can use.</source>
+        <translation>Le fichier est endommagé, ou trop volumineux pour cet ordinateur&#xa0;: il demande plus de mémoire que Finbook ne peut en utiliser.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="46"/>
+        <source>The file is damaged: some of it changed after it was saved. Finbook can open what is still readable.</source>
+        <translation>Le fichier est endommagé&#xa0;: une partie a changé après son enregistrement. Finbook peut ouvrir ce qui reste lisible.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="50"/>
+        <source>This computer has not enough free memory to open the file. Close other programs or documents and try again.</source>
+        <translation>Cet ordinateur n&apos;a pas assez de mémoire libre pour ouvrir le fichier. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="57"/>
+        <source>The file is damaged: part of it cannot be read.</source>
+        <translation>Le fichier est endommagé&#xa0;: une partie ne peut pas être lue.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="64"/>
+        <source>Finbook cannot open “%1”.</source>
+        <translation>Finbook ne peut pas ouvrir «&#xa0;%1&#xa0;».</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="68"/>
+        <source>Finbook kept the version saved before it as “%1” in the same folder: open that one to get your work back.</source>
+        <translation>Finbook a conservé la version enregistrée précédemment sous le nom «&#xa0;%1&#xa0;», dans le même dossier&#xa0;: ouvrez-la pour récupérer votre travail.</translation>
+    </message>
+</context>
+<context>
+    <name>FinbookFile</name>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="29"/>
+        <source>frame %1</source>
+        <translation>image %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="32"/>
+        <source>, object &quot;%1&quot;</source>
+        <translation>, objet «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="33"/>
+        <source>, object %1</source>
+        <translation>, objet %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="35"/>
+        <source>, stroke %1</source>
+        <translation>, trait %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="39"/>
+        <source>stroke data %1</source>
+        <translation>données de trait %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="41"/>
+        <source>pose %1</source>
+        <translation>pose %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="77"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="61"/>
+        <source>%1: %2</source>
+        <translation>%1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="85"/>
+        <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
+        <translation>le fichier s&apos;arrête dans %1 (%2 octets nécessaires, %3 restants)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="101"/>
+        <source>%1 claims %2 entries but only %3 bytes remain</source>
+        <translation>%1 annonce %2 entrées, mais il ne reste que %3 octets</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="127"/>
+        <source>%1 has %2 unexpected bytes at its end</source>
+        <translation>%1 se termine par %2 octets inattendus</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="32"/>
+        <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
+        <translation>%1 Le fichier est incomplet (copie ou enregistrement interrompu&#xa0;?)&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="38"/>
+        <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
+        <translation>%1 Le fichier est endommagé&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="43"/>
+        <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
+        <translation>%1 Le fichier est endommagé&#xa0;; Finbook peut en ouvrir ce qui reste lisible, ou vous pouvez ouvrir la sauvegarde du même nom terminée par ~, s&apos;il en existe une.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="48"/>
+        <source>%1 Close other programs or documents and try again.</source>
+        <translation>%1 Fermez d&apos;autres programmes ou documents et réessayez.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="71"/>
+        <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
+        <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis enregistrez à nouveau.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="197"/>
+        <source>the backup &quot;%1&quot; cannot be written (%2)</source>
+        <translation>la sauvegarde «&#xa0;%1&#xa0;» ne peut pas être écrite (%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="244"/>
+        <source>the disk is full</source>
+        <translation>le disque est plein</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="246"/>
+        <source>the disk is read-only</source>
+        <translation>le disque est en lecture seule</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="248"/>
+        <source>you do not have permission to write in the folder &quot;%1&quot;</source>
+        <translation>vous n&apos;avez pas le droit d&apos;écrire dans le dossier «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="251"/>
+        <source>the folder &quot;%1&quot; does not exist</source>
+        <translation>le dossier «&#xa0;%1&#xa0;» n&apos;existe pas</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="77"/>
+        <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
+        <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; choisissez un autre dossier, puis enregistrez à nouveau.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="87"/>
+        <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
+        <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: %2. Vérifiez que le fichier existe et que vous avez le droit de le lire.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="127"/>
+        <source>it is a folder</source>
+        <translation>c&apos;est un dossier</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="159"/>
+        <source>Cannot read &quot;%1&quot;: %2.</source>
+        <translation>Impossible de lire «&#xa0;%1&#xa0;»&#xa0;: %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="140"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="170"/>
+        <source>Cannot open &quot;%1&quot;. %2</source>
+        <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;». %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
+        <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
+        <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: c&apos;est un périphérique, un tube ou un socket, pas un fichier. Choisissez un fichier .finbook.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="149"/>
+        <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
+        <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante pour ses %2&#xa0;Mo. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="214"/>
+        <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
+        <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="40"/>
+        <source>unknown %1 %2</source>
+        <translation>%1 %2 de type inconnu</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
+        <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
+        <translation>il contient des données («&#xa0;%1&#xa0;») que cette version de Finbook ne connaît pas&#xa0;; il a sans doute été créé par une version plus récente. Mettez Finbook à jour pour l&apos;ouvrir</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <source>more problems were found and repaired the same way</source>
+        <translation>d&apos;autres problèmes ont été trouvés et réparés de la même façon</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="72"/>
+        <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
+        <translation>il décrit plus de données qu&apos;un fichier de cette taille ne peut en contenir (l&apos;ouvrir demanderait plus de %1&#xa0;Mo de mémoire)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="92"/>
+        <source>the file is empty</source>
+        <translation>le fichier est vide</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
+        <source>the file header</source>
+        <translation>l&apos;en-tête du fichier</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
+        <source>it is not a Finbook animation</source>
+        <translation>ce n&apos;est pas une animation Finbook</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
+        <source>the file ends inside its header</source>
+        <translation>le fichier s&apos;arrête au milieu de son en-tête</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="99"/>
+        <source>the format version</source>
+        <translation>la version du format</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="102"/>
+        <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
+        <translation>il a été créé par une version plus récente de Finbook (format de fichier %1&#xa0;; cette version lit jusqu&apos;au format %2). Mettez Finbook à jour pour l&apos;ouvrir</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="109"/>
+        <source>the format version %1 does not exist</source>
+        <translation>la version de format %1 n&apos;existe pas</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="126"/>
+        <source>the file&apos;s section list</source>
+        <translation>la liste des sections du fichier</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="129"/>
+        <source>the file ends before its end</source>
+        <translation>le fichier s&apos;arrête avant sa fin prévue</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <source>a section header</source>
+        <translation>un en-tête de section</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <source>section %1</source>
+        <translation>section %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="148"/>
+        <source>the file&apos;s end is damaged</source>
+        <translation>la fin du fichier est endommagée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
+        <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
+        <translation>le fichier s&apos;arrête au milieu de cette section (%1 octets annoncés, %2 restants)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
+        <source>the file ends inside this section; what it holds is read</source>
+        <translation>le fichier s&apos;arrête au milieu de cette section&#xa0;; ce qu&apos;elle contient est lu</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
+        <source>a section</source>
+        <translation>une section</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
+        <source>the file ends before this section&apos;s checksum</source>
+        <translation>le fichier s&apos;arrête avant la somme de contrôle de cette section</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <source>a section checksum</source>
+        <translation>une somme de contrôle de section</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <source>its checksum does not match, so its bytes changed after it was saved</source>
+        <translation>sa somme de contrôle ne correspond pas, ses octets ont donc changé après l&apos;enregistrement</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="201"/>
+        <source>section %1 is missing</source>
+        <translation>la section %1 est absente</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <source>the end marker</source>
+        <translation>le marqueur de fin</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="181"/>
+        <source>the file</source>
+        <translation>le fichier</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <source>an unknown section is left out</source>
+        <translation>une section inconnue est ignorée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <source>section</source>
+        <translation>section</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="196"/>
+        <source>the section is repeated or out of order</source>
+        <translation>la section est répétée ou mal placée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="227"/>
+        <source>the end of the section could not be read</source>
+        <translation>la fin de la section n&apos;a pas pu être lue</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="228"/>
+        <source>the section</source>
+        <translation>la section</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <source>the document settings</source>
+        <translation>les paramètres du document</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <source>the canvas size</source>
+        <translation>la taille du canevas</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
+        <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
+        <source>the background colour</source>
+        <translation>la couleur d&apos;arrière-plan</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="253"/>
+        <source>the frame rate</source>
+        <translation>la fréquence d&apos;images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <source>the frame rate %1 is outside %2 to %3</source>
+        <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <source>the loop flag</source>
+        <translation>l&apos;indicateur de boucle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <source>the loop flag %1 is neither 0 nor 1</source>
+        <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <source>the play range</source>
+        <translation>la plage de lecture</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
+        <source>the play range %1 to %2 is invalid</source>
+        <translation>la plage de lecture de %1 à %2 est invalide</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="277"/>
+        <source>the next id</source>
+        <translation>le prochain identifiant</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <source>the next free id %1 is larger than any id can be</source>
+        <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <source>the frame list</source>
+        <translation>la liste des images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
+        <source>a frame</source>
+        <translation>une image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
+        <source>the frame is cut off and is left out, with any after it</source>
+        <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
+        <source>%1; the frame is left out</source>
+        <translation>%1&#xa0;; l&apos;image est ignorée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <source>a frame id</source>
+        <translation>un identifiant d&apos;image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <source>the frame</source>
+        <translation>l&apos;image</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <source>a frame hold</source>
+        <translation>une durée d&apos;exposition</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <source>the hold %1 is outside 1 to %2</source>
+        <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <source>the object list</source>
+        <translation>la liste des objets</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
+        <source>an object</source>
+        <translation>un objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
+        <source>the object is cut off and is left out, with any after it</source>
+        <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
+        <source>%1; the object is left out</source>
+        <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <source>a chunk header</source>
+        <translation>un en-tête de bloc</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <source>a chunk</source>
+        <translation>un bloc</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <source>chunk</source>
+        <translation>bloc</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <source>an object id</source>
+        <translation>un identifiant d&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <source>the object</source>
+        <translation>l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <source>the object flags</source>
+        <translation>les attributs de l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <source>the object flags 0x%1 are unknown</source>
+        <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <source>the mesh density</source>
+        <translation>la densité du maillage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
+        <source>the mesh density %1 is not a number from 0 to 1000</source>
+        <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
+        <source>the object name</source>
+        <translation>le nom de l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
+        <source>the object name is %1 bytes long (at most %2)</source>
+        <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <source>the object name is not valid UTF-8 text</source>
+        <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
+        <source>the stroke list</source>
+        <translation>la liste des traits</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <source>a stroke id</source>
+        <translation>un identifiant de trait</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <source>the stroke</source>
+        <translation>le trait</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <source>a stroke reference</source>
+        <translation>une référence de trait</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
+        <source>%1 claims %2 entries; the %3 that fit are read</source>
+        <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <source>it refers to stroke data %1 of %2</source>
+        <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
+        <source>an unknown chunk is left out</source>
+        <translation>un bloc inconnu est ignoré</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <source>chunk %1 appears twice or with another rig</source>
+        <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
+        <source>%1; the chunk is left out</source>
+        <translation>%1&#xa0;; le bloc est ignoré</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
+        <source>the pin list</source>
+        <translation>la liste des épingles</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <source>a pin id</source>
+        <translation>un identifiant d&apos;épingle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <source>pin %1</source>
+        <translation>l&apos;épingle %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="266"/>
+        <source>a pin position</source>
+        <translation>une position d&apos;épingle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="269"/>
+        <source>pin %1 has a non-finite position</source>
+        <translation>l&apos;épingle %1 a une position non finie</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <source>the cage corner list</source>
+        <translation>la liste des coins de la cage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <source>the cage has fewer than 3 corners</source>
+        <translation>la cage a moins de 3 coins</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <source>a cage corner</source>
+        <translation>un coin de cage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <source>cage corner %1 has a non-finite position</source>
+        <translation>le coin de cage %1 a une position non finie</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
+        <source>a pose reference</source>
+        <translation>une référence de pose</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
+        <source>its pose refers to pose %1 of %2</source>
+        <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
+        <source>its pose: %1</source>
+        <translation>sa pose&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <source>its pose has %1 strokes but the object has %2</source>
+        <translation>sa pose a %1 traits, mais l&apos;objet en a %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <source>stroke %1 has %2 points but its pose has %3</source>
+        <translation>le trait %1 a %2 points, mais sa pose en a %3</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <source>%1 has no id</source>
+        <translation>%1 n&apos;a pas d&apos;identifiant</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <source>%1 has the id %2, larger than any id can be</source>
+        <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
+        <source>%1 has the id %2, which is already used</source>
+        <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <source>the next free id %1 is not above the largest id %2</source>
+        <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="330"/>
+        <source>the id %1 is used twice</source>
+        <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <source>no frame of it could be read; there is nothing to recover</source>
+        <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="344"/>
+        <source>there is not enough memory to open this file</source>
+        <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="26"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="28"/>
+        <source>a stroke</source>
+        <translation>un trait</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="32"/>
+        <source>point %1 has a non-finite coordinate</source>
+        <translation>le point %1 a une coordonnée non finie</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="48"/>
+        <source>%n point(s) with a non-finite coordinate are left out</source>
+        <translation>
+            <numerusform>%n point avec une coordonnée non finie est ignoré</numerusform>
+            <numerusform>%n points avec une coordonnée non finie sont ignorés</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="57"/>
+        <source>the stroke table</source>
+        <translation>la table des traits</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="71"/>
+        <source>a stroke colour</source>
+        <translation>une couleur de trait</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="72"/>
+        <source>a stroke width</source>
+        <translation>une épaisseur de trait</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="74"/>
+        <source>the width %1 is not a number above 0 and up to %2</source>
+        <translation>l&apos;épaisseur %1 n&apos;est pas un nombre supérieur à 0 et inférieur ou égal à %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="90"/>
+        <source>the pose table</source>
+        <translation>la table des poses</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="97"/>
+        <source>a pose</source>
+        <translation>une pose</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="22"/>
+        <source>the skeleton</source>
+        <translation>le squelette</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="25"/>
+        <source>its skeleton has no joints</source>
+        <translation>son squelette n&apos;a aucune articulation</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="32"/>
+        <source>skeleton joint %1 has a non-finite value</source>
+        <translation>l&apos;articulation %1 du squelette a une valeur non finie</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="39"/>
+        <source>skeleton joint %1 has a negative radius</source>
+        <translation>l&apos;articulation %1 du squelette a un rayon négatif</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="43"/>
+        <source>skeleton joint %1 has an invalid parent</source>
+        <translation>l&apos;articulation %1 du squelette a un parent invalide</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="48"/>
+        <source>the skeleton&apos;s root is not a root joint</source>
+        <translation>la racine du squelette n&apos;est pas une articulation racine</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="49"/>
+        <source>the skeleton&apos;s pose has a non-finite value</source>
+        <translation>la pose du squelette a une valeur non finie</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="52"/>
+        <source>a skeleton setting is outside 0 to 1</source>
+        <translation>un réglage du squelette n&apos;est pas compris entre 0 et 1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="62"/>
+        <source>the skeleton has an unknown skinning mode</source>
+        <translation>le squelette a un mode d&apos;habillage inconnu</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
+        <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
+        <translation>%1 octets endommagés n&apos;ont pas pu être lus&#xa0;; la lecture reprend à la section %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_recover.cpp" line="56"/>
+        <source>the last %1 bytes of the file are damaged and could not be read</source>
+        <translation>les %1 derniers octets du fichier sont endommagés et n&apos;ont pas pu être lus</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_recover.cpp" line="85"/>
+        <source>%n missing or repeated id(s) were replaced by new ones</source>
+        <translation>
+            <numerusform>%n identifiant manquant ou en double a été remplacé par un nouveau</numerusform>
+            <numerusform>%n identifiants manquants ou en double ont été remplacés par de nouveaux</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/recovery/autosaver.cpp" line="154"/>
+        <source>Autosave could not write a recovery copy: %1.</source>
+        <translation>L&apos;enregistrement automatique n&apos;a pas pu écrire de copie de récupération&#xa0;: %1.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
+        <source>there is not enough memory</source>
+        <translation>la mémoire est insuffisante</translation>
+    </message>
+</context>
+<context>
+    <name>MeshImport</name>
+    <message>
+        <location filename="../model/src/import/mesh_import.cpp" line="22"/>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>Impossible d&apos;importer «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/import/mesh_import.cpp" line="27"/>
+        <source>Cannot import &quot;%1&quot;: the mesh has no boundary to draw.</source>
+        <translation>Impossible d&apos;importer «&#xa0;%1&#xa0;»&#xa0;: le maillage n&apos;a pas de contour à dessiner.</translation>
+    </message>
+</context>
+<context>
+    <name>ObjectListModel</name>
+    <message numerus="yes">
+        <location filename="../model/src/object_list_model.cpp" line="160"/>
+        <source>%1: %n stroke(s)</source>
+        <translation>
+            <numerusform>%1&#xa0;: %n trait</numerusform>
+            <numerusform>%1&#xa0;: %n traits</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>QCommandLineParser</name>
+    <message>
+        <location filename="../app/main.cpp" line="22"/>
+        <source>Displays help on commandline options.</source>
+        <translation>Afficher l&apos;aide sur les options de la ligne de commande.</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="23"/>
+        <source>Displays help including Qt specific options.</source>
+        <translation>Afficher l&apos;aide, y compris les options propres à Qt.</translation>
+    </message>
+</context>
+<context>
+    <name>RigPrompt</name>
+    <message>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="18"/>
+        <source>Discard the Pose?</source>
+        <translation>Abandonner la pose&#xa0;?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="19"/>
+        <source>&quot;%1&quot; is posed. Replacing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
+        <translation>«&#xa0;%1&#xa0;» est posé. Remplacer son armature ramène le dessin au repos. (Utilisez d&apos;abord «&#xa0;Appliquer la pose au dessin&#xa0;» pour conserver la pose.)</translation>
+    </message>
+</context>
+<context>
+    <name>StrokeEditing</name>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="84"/>
+        <source>There is no frame to draw on. Insert a frame first.</source>
+        <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="87"/>
+        <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
+        <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="90"/>
+        <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
+        <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="111"/>
+        <source>Object</source>
+        <translation>Objet</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="150"/>
+        <source>%1 (pose applied)</source>
+        <translation>%1 (pose appliquée)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="164"/>
+        <source>Delete Strokes</source>
+        <translation>Supprimer les traits</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="212"/>
+        <source>Cut</source>
+        <translation>Couper</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="288"/>
+        <source>The clipboard holds strokes this version of Finbook cannot read.</source>
+        <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="295"/>
+        <source>Paste</source>
+        <translation>Coller</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::model::FrameListModel</name>
+    <message>
+        <location filename="../model/src/frame_list_model.cpp" line="132"/>
+        <source>Frame %1, held for %2 frames</source>
+        <translation>Image %1, exposée pendant %2 images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/frame_list_model.cpp" line="133"/>
+        <source>Frame %1</source>
+        <translation>Image %1</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::BoneTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="24"/>
+        <source>Bone</source>
+        <translation>Os</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="46"/>
+        <source>Build Skeleton</source>
+        <translation>Construire le squelette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="47"/>
+        <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
+        <translation>L&apos;objet est posé avec un autre déformateur. Construire un squelette abandonne cette pose. Le construire quand même&#xa0;?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="218"/>
+        <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
+        <translation>Cliquez sur un dessin visible et déverrouillé pour lui donner un squelette.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="225"/>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
+        <translation>Faites glisser un os pour le faire pivoter, une articulation pour la tirer, la racine pour déplacer l&apos;objet&#xa0;; Alt+clic sur une articulation pour la verrouiller.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::BrushToolBar</name>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="15"/>
+        <source>Brush</source>
+        <translation>Pinceau</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="29"/>
+        <source>Width:</source>
+        <translation>Épaisseur&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="34"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="36"/>
+        <source>Smoothing:</source>
+        <translation>Lissage&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="39"/>
+        <source>How much a stroke is smoothed when the pen lifts</source>
+        <translation>Force du lissage appliqué au trait quand le stylet se lève</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="84"/>
+        <source>Pen colour %1</source>
+        <translation>Couleur du stylo&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CageActions</name>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="32"/>
+        <source>&amp;Fit Cage</source>
+        <translation>Ajuster une &amp;cage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="34"/>
+        <source>Put a coarse cage around the current object in one step</source>
+        <translation>Placer en une seule étape une cage grossière autour de l&apos;objet courant</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
+        <source>Shift+C</source>
+        <translation>Shift+C</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
+        <source>Edit Cage &amp;Shape</source>
+        <translation>Modifier la &amp;forme de la cage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="40"/>
+        <source>Change the cage itself (move, add or delete corners) instead of posing with it</source>
+        <translation>Modifier la cage elle-même (déplacer, ajouter ou supprimer des coins) au lieu de poser avec elle</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="66"/>
+        <source>Corners </source>
+        <translation>Coins </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
+        <source>About how many corners Fit Cage gives the cage</source>
+        <translation>Nombre approximatif de coins que «&#xa0;Ajuster une cage&#xa0;» donne à la cage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="81"/>
+        <source>Choose an unlocked object with strokes to fit a cage to.</source>
+        <translation>Choisissez un objet déverrouillé contenant des traits pour y ajuster une cage.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CageTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/cage/tool_cage.h" line="23"/>
+        <source>Cage</source>
+        <translation>Cage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="127"/>
+        <source>Choose an object first: the cage goes around it.</source>
+        <translation>Choisissez d&apos;abord un objet&#xa0;: la cage se place autour de lui.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="249"/>
+        <source>A cage needs at least three corners.</source>
+        <translation>Une cage doit avoir au moins trois coins.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ColorButton</name>
+    <message>
+        <location filename="../ui/src/color_button.cpp" line="13"/>
+        <source>Choose a colour</source>
+        <translation>Choisir une couleur</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/color_button.cpp" line="31"/>
+        <source>Choose Colour</source>
+        <translation>Choisir une couleur</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::DeformActions</name>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="21"/>
+        <source>&amp;Reset Pose</source>
+        <translation>&amp;Réinitialiser la pose</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="25"/>
+        <source>&amp;Apply Pose to Drawing</source>
+        <translation>&amp;Appliquer la pose au dessin</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="24"/>
+        <source>Move the current object&apos;s pins or cage corners back to their rest positions</source>
+        <translation>Ramener les épingles ou les coins de cage de l&apos;objet courant à leur position de repos</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="27"/>
+        <source>Make the posed drawing the object&apos;s new strokes; the pins or cage stay where they are</source>
+        <translation>Faire du dessin posé les nouveaux traits de l&apos;objet&#xa0;; les épingles ou la cage restent en place</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="29"/>
+        <source>&amp;Remove Pins or Cage</source>
+        <translation>Re&amp;tirer les épingles ou la cage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="31"/>
+        <source>Take the pins or the cage off the current object</source>
+        <translation>Retirer les épingles ou la cage de l&apos;objet courant</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="49"/>
+        <source>Preparing the deformation…</source>
+        <translation>Préparation de la déformation…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="59"/>
+        <source>R&amp;igidity</source>
+        <translation>R&amp;igidité</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="73"/>
+        <source>Converged (Most Rigid)</source>
+        <translation>Convergence (rigidité maximale)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="74"/>
+        <source>As in the Paper (Two Steps)</source>
+        <translation>Comme dans l&apos;article (deux étapes)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="75"/>
+        <source>Stiffer (+1 Pass)</source>
+        <translation>Plus rigide (+1 passe)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="76"/>
+        <source>Stiffest (+3 Passes)</source>
+        <translation>Le plus rigide (+3 passes)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="108"/>
+        <source>Mesh density </source>
+        <translation>Densité du maillage </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="109"/>
+        <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
+        <translation>Finesse du maillage de déformation de l&apos;objet courant (1 = par défaut)</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::DocumentSettingsDialog</name>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="26"/>
+        <source>Start again after the last frame</source>
+        <translation>Recommencer après la dernière image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="30"/>
+        <source>Document Settings</source>
+        <translation>Paramètres du document</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="32"/>
+        <source> fps</source>
+        <translation> i/s</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="35"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="40"/>
+        <source>Last</source>
+        <translation>Dernière</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="50"/>
+        <source>to</source>
+        <translation>à</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="54"/>
+        <source>&amp;Frame rate:</source>
+        <translation>&amp;Fréquence d&apos;images&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="55"/>
+        <source>Canvas size:</source>
+        <translation>Taille du canevas&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="56"/>
+        <source>&amp;Background:</source>
+        <translation>Arrière-&amp;plan&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="57"/>
+        <source>Loop:</source>
+        <translation>Boucle&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="58"/>
+        <source>Play frames:</source>
+        <translation>Images à lire&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="125"/>
+        <source>Background Colour</source>
+        <translation>Couleur d&apos;arrière-plan</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ExportDialog</name>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="56"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
+        <source>Export Animation</source>
+        <translation>Exporter l&apos;animation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="64"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
+        <source>untitled</source>
+        <translation>sans titre</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="76"/>
+        <source>Animated GIF</source>
+        <translation>GIF animé</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <source>MP4 video (H.264)</source>
+        <translation>Vidéo MP4 (H.264)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <source>WebM video (VP9)</source>
+        <translation>Vidéo WebM (VP9)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <source>Animated PNG (APNG)</source>
+        <translation>PNG animé (APNG)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <source>HTML flipbook (one file)</source>
+        <translation>Folioscope HTML (un seul fichier)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <source>PNG images (a folder)</source>
+        <translation>Images PNG (un dossier)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <source>SVG vector images (a folder)</source>
+        <translation>Images vectorielles SVG (un dossier)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <source>&amp;Browse...</source>
+        <translation>Parc&amp;ourir...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <source>Play range</source>
+        <translation>Plage de lecture</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
+        <source>All frames</source>
+        <translation>Toutes les images</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <source>Frames</source>
+        <translation>Images</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="105"/>
+        <source>Document background</source>
+        <translation>Arrière-plan du document</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="106"/>
+        <source>Transparent</source>
+        <translation>Transparent</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <source>Colour</source>
+        <translation>Couleur</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <source> fps</source>
+        <translation> i/s</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
+        <source>Start again after the last frame</source>
+        <translation>Recommencer après la dernière image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <source>One file per drawing, with an exposure sheet</source>
+        <translation>Un fichier par dessin, avec une feuille d&apos;exposition</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="132"/>
+        <source>to</source>
+        <translation>à</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="147"/>
+        <source>&amp;Format:</source>
+        <translation>&amp;Format&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="148"/>
+        <source>&amp;Save to:</source>
+        <translation>Enregistrer &amp;dans&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <source>F&amp;rames:</source>
+        <translation>&amp;Images&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <source>Sc&amp;ale:</source>
+        <translation>É&amp;chelle&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <source>&amp;Background:</source>
+        <translation>Arrière-&amp;plan&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <source>Frame ra&amp;te:</source>
+        <translation>Fré&amp;quence d&apos;images&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <source>Loop:</source>
+        <translation>Boucle&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <source>&amp;Export</source>
+        <translation>&amp;Exporter</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <source>Cancel Export</source>
+        <translation>Annuler l&apos;export</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="225"/>
+        <source>%1 x %2 pixels</source>
+        <translation>%1 x %2 pixels</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="228"/>
+        <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
+        <translation>Ce format nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le d&apos;abord (sous Debian&#xa0;: apt install ffmpeg).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <source>Export to Folder</source>
+        <translation>Exporter dans un dossier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="273"/>
+        <source>%1 files (*.%2)</source>
+        <translation>Fichiers %1 (*.%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="44"/>
+        <source>Choose where to export the animation to.</source>
+        <translation>Choisissez où exporter l&apos;animation.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="63"/>
+        <source>Exporting...</source>
+        <translation>Exportation...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="75"/>
+        <source>Cancelling...</source>
+        <translation>Annulation...</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="91"/>
+        <source>Exported %n file(s) to %1</source>
+        <translation>
+            <numerusform>%n fichier exporté dans %1</numerusform>
+            <numerusform>%n fichiers exportés dans %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="102"/>
+        <source>Export cancelled; nothing was written.</source>
+        <translation>Export annulé&#xa0;; rien n&apos;a été écrit.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="127"/>
+        <source>&quot;%1&quot; already exists. Replace it?</source>
+        <translation>«&#xa0;%1&#xa0;» existe déjà. Le remplacer&#xa0;?</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
+        <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
+        <translation>
+            <numerusform>%n fichier existe déjà à la destination&#xa0;: «&#xa0;%1&#xa0;». Le remplacer&#xa0;?</numerusform>
+            <numerusform>%n fichiers existent déjà à la destination, par exemple «&#xa0;%1&#xa0;». Les remplacer&#xa0;?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="131"/>
+        <source>Replace Files?</source>
+        <translation>Remplacer les fichiers&#xa0;?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="138"/>
+        <source>Cannot Export</source>
+        <translation>Impossible d&apos;exporter</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::FrameActions</name>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="13"/>
+        <source>Insert Frame &amp;Before</source>
+        <translation>Insérer une image ava&amp;nt</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="15"/>
+        <source>&amp;Insert Frame After</source>
+        <translation>&amp;Insérer une image après</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="17"/>
+        <source>&amp;Duplicate Frame</source>
+        <translation>&amp;Dupliquer l&apos;image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="19"/>
+        <source>Generate &amp;In-betweens…</source>
+        <translation>Générer des in&amp;tervalles…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="21"/>
+        <source>De&amp;lete Frame</source>
+        <translation>&amp;Supprimer l&apos;image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="24"/>
+        <source>Move Frame &amp;Left</source>
+        <translation>Déplacer l&apos;image vers la &amp;gauche</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="26"/>
+        <source>Move Frame &amp;Right</source>
+        <translation>Déplacer l&apos;image vers la d&amp;roite</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="29"/>
+        <source>Hold &amp;Longer</source>
+        <translation>&amp;Allonger l&apos;exposition</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="31"/>
+        <source>Hold &amp;Shorter</source>
+        <translation>Ra&amp;ccourcir l&apos;exposition</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="34"/>
+        <source>&amp;Previous Frame</source>
+        <translation>Image &amp;précédente</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="37"/>
+        <source>&amp;Next Frame</source>
+        <translation>Image sui&amp;vante</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::HandTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_hand.h" line="16"/>
+        <source>Hand</source>
+        <translation>Main</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::InbetweenDialog</name>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="35"/>
+        <source>Generate In-betweens</source>
+        <translation>Générer des intervalles</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="41"/>
+        <source>Objects:</source>
+        <translation>Objets&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="65"/>
+        <source>&amp;Frames between the keys:</source>
+        <translation>&amp;Images entre les clés&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="68"/>
+        <source>Linear</source>
+        <translation>Linéaire</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="69"/>
+        <source>Ease in (slow from the first key)</source>
+        <translation>Démarrage progressif (lent depuis la première clé)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="70"/>
+        <source>Ease out (slow into the second key)</source>
+        <translation>Arrêt progressif (lent en arrivant à la seconde clé)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="71"/>
+        <source>Ease in and out</source>
+        <translation>Démarrage et arrêt progressifs</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="72"/>
+        <source>Favour…</source>
+        <translation>Favoriser…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="73"/>
+        <source>&amp;Spacing:</source>
+        <translation>&amp;Espacement&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="77"/>
+        <source>Left favours the first key, right the second.</source>
+        <translation>À gauche, la première clé est favorisée&#xa0;; à droite, la seconde.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="79"/>
+        <source>F&amp;avour:</source>
+        <translation>Fa&amp;voriser&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
+        <source>Move pins and cage corners along &amp;arcs</source>
+        <translation>Déplacer les épingles et les coins de cage en &amp;arcs</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
+        <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
+        <translation>Un membre qui pivote entre les clés garde sa longueur. Si la case est décochée, chaque cible se déplace en ligne droite.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="112"/>
+        <source>(unnamed)</source>
+        <translation>(sans nom)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="115"/>
+        <source>%1: interpolated</source>
+        <translation>%1&#xa0;: interpolé</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="117"/>
+        <source>%1: held from the first key (no pins or cage)</source>
+        <translation>%1&#xa0;: maintenu depuis la première clé (ni épingles ni cage)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
+        <source>%1: held from the first key (its pins or cage differ between the keys)</source>
+        <translation>%1&#xa0;: maintenu depuis la première clé (ses épingles ou sa cage diffèrent entre les clés)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>
+        <source>%1: only in the first key, held in the first half</source>
+        <translation>%1&#xa0;: seulement dans la première clé, maintenu pendant la première moitié</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="124"/>
+        <source>%1: only in the second key, held in the second half</source>
+        <translation>%1&#xa0;: seulement dans la seconde clé, maintenu pendant la seconde moitié</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <source>Select two different frames as keys.</source>
+        <translation>Sélectionnez deux images différentes comme clés.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="147"/>
+        <source>The preview could not be posed: %1</source>
+        <translation>Impossible de poser l&apos;aperçu&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
+        <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
+        <translation>Aucun objet n&apos;a d&apos;épingles ou de cage correspondantes dans les deux clés&#xa0;: les intervalles ne feront que maintenir les dessins.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="153"/>
+        <source>The canvas shows the middle in-between.</source>
+        <translation>Le canevas montre l&apos;intervalle du milieu.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::MainWindow</name>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="123"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="147"/>
+        <source>Timeline</source>
+        <translation>Chronologie</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <source>Objects</source>
+        <translation>Objets</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="151"/>
+        <source>&lt;opened document&gt;</source>
+        <translation>&lt;document ouvert&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <source>Undo History</source>
+        <translation>Historique</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="188"/>
+        <source>%1, %2 px</source>
+        <translation>%1, %2 px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="199"/>
+        <source>Frame %1 / %2</source>
+        <translation>Image %1 / %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <source>%1 %</source>
+        <translation>%1&#xa0;%</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="205"/>
+        <location filename="../ui/src/main_window_files.cpp" line="303"/>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="206"/>
+        <source>%1[*] - Finbook</source>
+        <translation>%1[*] – Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_deform.cpp" line="35"/>
+        <source>&amp;Deform</source>
+        <translation>Défor&amp;mer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_deform.cpp" line="50"/>
+        <source>Deform</source>
+        <translation>Déformation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_deform.cpp" line="66"/>
+        <source>Preparing the deformation…</source>
+        <translation>Préparation de la déformation…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="30"/>
+        <source>Finbook animations (*.finbook);;All files (*)</source>
+        <translation>Animations Finbook (*.finbook);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="41"/>
+        <source>Object</source>
+        <translation>Objet</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="76"/>
+        <location filename="../ui/src/main_window_files.cpp" line="93"/>
+        <source>Cannot Open File</source>
+        <translation>Impossible d&apos;ouvrir le fichier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="128"/>
+        <source>Cannot Save File</source>
+        <translation>Impossible d&apos;enregistrer le fichier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="134"/>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="161"/>
+        <source>The folder %1 does not exist; choose an existing folder and export again.</source>
+        <translation>Le dossier %1 n&apos;existe pas&#xa0;; choisissez un dossier existant et exportez à nouveau.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="175"/>
+        <source>Replace Files?</source>
+        <translation>Remplacer les fichiers&#xa0;?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="176"/>
+        <source>%1 already holds exported frames. Replace them?</source>
+        <translation>%1 contient déjà des images exportées. Les remplacer&#xa0;?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="184"/>
+        <source>Exporting frames...</source>
+        <translation>Exportation des images...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="184"/>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="160"/>
+        <location filename="../ui/src/main_window_files.cpp" line="206"/>
+        <source>Cannot Export Frames</source>
+        <translation>Impossible d&apos;exporter les images</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/main_window_files.cpp" line="100"/>
+        <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
+        <translation>
+            <numerusform>Ce qui était lisible de %1 a été ouvert (%n problème réparé)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
+            <numerusform>Ce qui était lisible de %1 a été ouvert (%n problèmes réparés)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/main_window_files.cpp" line="209"/>
+        <source>Exported %n frame(s) to %1</source>
+        <translation>
+            <numerusform>%n image exportée dans %1</numerusform>
+            <numerusform>%n images exportées dans %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="246"/>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="255"/>
+        <source>No recent files</source>
+        <translation>Aucun fichier récent</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="265"/>
+        <source>Cannot Import Mesh</source>
+        <translation>Impossible d&apos;importer le maillage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="269"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <source>Import Mesh</source>
+        <translation>Importer un maillage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="291"/>
+        <source>Damaged File</source>
+        <translation>Fichier endommagé</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="292"/>
+        <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
+        <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="295"/>
+        <source>Open Anyway</source>
+        <translation>Ouvrir quand même</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="305"/>
+        <source>Unsaved Changes</source>
+        <translation>Modifications non enregistrées</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="306"/>
+        <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
+        <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="312"/>
+        <source>Open Animation</source>
+        <translation>Ouvrir une animation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="318"/>
+        <source>Save Animation</source>
+        <translation>Enregistrer l&apos;animation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="319"/>
+        <source>untitled.finbook</source>
+        <translation>sans-titre.finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="325"/>
+        <source>Export Frames to Folder</source>
+        <translation>Exporter les images dans un dossier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="44"/>
+        <source>File</source>
+        <translation>Fichier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="56"/>
+        <source>&amp;File</source>
+        <translation>&amp;Fichier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
+        <source>&amp;New</source>
+        <translation>&amp;Nouveau</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="59"/>
+        <source>&amp;Open...</source>
+        <translation>&amp;Ouvrir...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="63"/>
+        <source>Open &amp;Recent</source>
+        <translation>Fichiers &amp;récents</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="67"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Enregistrer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="69"/>
+        <source>Save &amp;As...</source>
+        <translation>Enregistrer &amp;sous...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="71"/>
+        <source>E&amp;xport...</source>
+        <translation>Ex&amp;porter...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="78"/>
+        <source>&amp;Import Mesh...</source>
+        <translation>&amp;Importer un maillage...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <source>OFF meshes (*.off)</source>
+        <translation>Maillages OFF (*.off)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="85"/>
+        <source>&amp;Export Frames...</source>
+        <translation>E&amp;xporter les images...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="87"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quitter</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="103"/>
+        <source>&amp;Edit</source>
+        <translation>É&amp;dition</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="105"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annuler</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rétablir</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="117"/>
+        <source>Paste</source>
+        <translation>Coller</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="119"/>
+        <source>Cu&amp;t</source>
+        <translation>Co&amp;uper</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="121"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="123"/>
+        <source>&amp;Paste</source>
+        <translation>C&amp;oller</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="131"/>
+        <source>&amp;Delete</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="134"/>
+        <source>Select &amp;All</source>
+        <translation>&amp;Tout sélectionner</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="140"/>
+        <source>Dese&amp;lect</source>
+        <translation>&amp;Désélectionner</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="147"/>
+        <source>D&amp;ocument Settings...</source>
+        <translation>Paramètres du docu&amp;ment...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="150"/>
+        <source>Pre&amp;ferences...</source>
+        <translation>&amp;Préférences...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="173"/>
+        <source>&amp;View</source>
+        <translation>&amp;Affichage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="174"/>
+        <source>Zoom &amp;In</source>
+        <translation>Zoom &amp;avant</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="176"/>
+        <source>Zoom &amp;Out</source>
+        <translation>Zoom a&amp;rrière</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
+        <source>&amp;Fit to Window</source>
+        <translation>Adapter à la &amp;fenêtre</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="180"/>
+        <source>&amp;Actual Size (100 %)</source>
+        <translation>&amp;Taille réelle (100&#xa0;%)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
+        <source>&amp;Onion Skin</source>
+        <translation>&amp;Pelure d&apos;oignon</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="196"/>
+        <source>Onion Skin &amp;Settings...</source>
+        <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="198"/>
+        <source>Show &amp;Mesh</source>
+        <translation>Afficher le &amp;maillage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="205"/>
+        <source>&amp;Panels</source>
+        <translation>Pa&amp;nneaux</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="211"/>
+        <source>F&amp;rame</source>
+        <translation>&amp;Image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="224"/>
+        <source>&amp;Object</source>
+        <translation>&amp;Objet</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="234"/>
+        <source>&amp;Tools</source>
+        <translation>Ou&amp;tils</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="237"/>
+        <source>Tools</source>
+        <translation>Outils</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="245"/>
+        <source>&amp;Help</source>
+        <translation>Aid&amp;e</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Raccourcis clavier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="248"/>
+        <source>&amp;About Finbook</source>
+        <translation>À &amp;propos de Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="268"/>
+        <source>Onion Skin</source>
+        <translation>Pelure d&apos;oignon</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="292"/>
+        <source>About Finbook</source>
+        <translation>À propos de Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="39"/>
+        <source>Undo</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="41"/>
+        <source>Redo</source>
+        <translation>Rétablir</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="45"/>
+        <source>Apply Pose</source>
+        <translation>Appliquer la pose</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="47"/>
+        <source>Remove Rig</source>
+        <translation>Retirer l&apos;armature</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="49"/>
+        <source>Reset</source>
+        <translation>Réinitialiser</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="51"/>
+        <source>Shape</source>
+        <translation>Forme</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="27"/>
+        <source>Show S&amp;keleton</source>
+        <translation>Afficher le &amp;squelette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <source>Skeleton</source>
+        <translation>Squelette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="41"/>
+        <source>&amp;Skinning</source>
+        <translation>&amp;Habillage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="48"/>
+        <source>&amp;Rigid (Bones Pin the Mesh)</source>
+        <translation>&amp;Rigide (les os épinglent le maillage)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="50"/>
+        <source>&amp;Linear Blend</source>
+        <translation>Mélange &amp;linéaire</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="62"/>
+        <source>Cannot Recover</source>
+        <translation>Impossible de récupérer le travail</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="71"/>
+        <source>Recovered %1 as it was at %2; save it to keep it.</source>
+        <translation>%1 récupéré tel qu&apos;il était le %2&#xa0;; enregistrez-le pour le conserver.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ObjectActions</name>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="27"/>
+        <source>&amp;New Object</source>
+        <translation>&amp;Nouvel objet</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="29"/>
+        <source>&amp;Delete Object</source>
+        <translation>&amp;Supprimer l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="30"/>
+        <source>&amp;Merge Objects</source>
+        <translation>&amp;Fusionner les objets</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="33"/>
+        <source>Move &amp;Selection to Object</source>
+        <translation>&amp;Déplacer la sélection vers un objet</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="34"/>
+        <source>Bring &amp;Forward</source>
+        <translation>&amp;Monter</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="36"/>
+        <source>Send &amp;Backward</source>
+        <translation>D&amp;escendre</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="38"/>
+        <source>&amp;Visible</source>
+        <translation>&amp;Visible</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="39"/>
+        <source>&amp;Locked</source>
+        <translation>Ve&amp;rrouillé</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="42"/>
+        <source>New object above the current one</source>
+        <translation>Nouvel objet au-dessus de l&apos;objet courant</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="43"/>
+        <source>Merge the selected objects, or the current one into the one below</source>
+        <translation>Fusionner les objets sélectionnés, ou l&apos;objet courant avec celui du dessous</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="44"/>
+        <source>Move the selected strokes to another object</source>
+        <translation>Déplacer les traits sélectionnés vers un autre objet</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="46"/>
+        <source>New</source>
+        <translation>Nouveau</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="47"/>
+        <source>Delete</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="48"/>
+        <source>Merge</source>
+        <translation>Fusionner</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="49"/>
+        <source>Move To</source>
+        <translation>Déplacer vers</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="118"/>
+        <source>Object %1</source>
+        <translation>Objet %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="170"/>
+        <source>Merge Objects</source>
+        <translation>Fusionner les objets</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::OnionSkinEditor</name>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="14"/>
+        <source>Show onion skin</source>
+        <translation>Afficher la pelure d&apos;oignon</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="24"/>
+        <source> %</source>
+        <translation>&#xa0;%</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="27"/>
+        <source>Frames before:</source>
+        <translation>Images avant&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="28"/>
+        <source>Frames after:</source>
+        <translation>Images après&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="29"/>
+        <source>Opacity of the nearest frame:</source>
+        <translation>Opacité de l&apos;image la plus proche&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="30"/>
+        <source>Tint before:</source>
+        <translation>Teinte avant&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="31"/>
+        <source>Tint after:</source>
+        <translation>Teinte après&#xa0;:</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::PenTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_pen.h" line="30"/>
+        <source>Pen</source>
+        <translation>Stylo</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_pen.cpp" line="88"/>
+        <source>Draw Stroke</source>
+        <translation>Tracer un trait</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::PinTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="17"/>
+        <source>Pin</source>
+        <translation>Épingle</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/pins/tool_pin.cpp" line="156"/>
+        <source>Click on a visible, unlocked drawing to pin it.</source>
+        <translation>Cliquez sur un dessin visible et non verrouillé pour y poser une épingle.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::PlaybackController</name>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="64"/>
+        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <source>&amp;Play</source>
+        <translation>&amp;Lecture</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="68"/>
+        <source>Play or pause the animation</source>
+        <translation>Lire l&apos;animation ou la mettre en pause</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="76"/>
+        <source>&amp;Loop</source>
+        <translation>Lecture en &amp;boucle</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="80"/>
+        <source>Start again at the end of the play range</source>
+        <translation>Recommencer au début à la fin de la plage de lecture</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <source>&amp;Pause</source>
+        <translation>Pa&amp;use</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::PreferencesDialog</name>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="21"/>
+        <source>Preferences</source>
+        <translation>Préférences</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="25"/>
+        <source>New Documents</source>
+        <translation>Nouveaux documents</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="26"/>
+        <source>Onion Skin</source>
+        <translation>Pelure d&apos;oignon</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="27"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>Raccourcis clavier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="42"/>
+        <source> fps</source>
+        <translation> i/s</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="48"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="55"/>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="56"/>
+        <source>Never</source>
+        <translation>Jamais</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="57"/>
+        <source>How often Finbook keeps a recovery copy of unsaved changes, offered at the next start if Finbook did not close normally.</source>
+        <translation>Fréquence à laquelle Finbook conserve une copie de récupération des modifications non enregistrées, proposée au démarrage suivant si Finbook ne s&apos;est pas fermé normalement.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="61"/>
+        <source>Frame rate:</source>
+        <translation>Fréquence d&apos;images&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="62"/>
+        <source>Canvas width:</source>
+        <translation>Largeur du canevas&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="63"/>
+        <source>Canvas height:</source>
+        <translation>Hauteur du canevas&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="64"/>
+        <source>Autosave every:</source>
+        <translation>Enregistrement automatique&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="86"/>
+        <source>Conflicting Shortcuts</source>
+        <translation>Raccourcis en conflit</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="87"/>
+        <source>Two or more actions share a shortcut. Change or clear the shortcuts marked in red, then press OK again.</source>
+        <translation>Plusieurs actions partagent un raccourci. Modifiez ou effacez les raccourcis marqués en rouge, puis appuyez à nouveau sur OK.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::RecoveryDialog</name>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="17"/>
+        <source>Recover Unsaved Work</source>
+        <translation>Récupérer le travail non enregistré</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="18"/>
+        <source>Finbook did not close normally last time. It kept these copies of work that was not saved:</source>
+        <translation>Finbook ne s&apos;est pas fermé normalement la dernière fois. Il a conservé ces copies de travail non enregistré&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="31"/>
+        <source>&amp;Restore</source>
+        <translation>&amp;Restaurer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="32"/>
+        <source>&amp;Discard</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="33"/>
+        <source>&amp;Later</source>
+        <translation>Plus &amp;tard</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="35"/>
+        <source>Open the copy as an unsaved animation</source>
+        <translation>Ouvrir la copie comme une animation non enregistrée</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="36"/>
+        <source>Delete the copy for good</source>
+        <translation>Supprimer définitivement la copie</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="37"/>
+        <source>Keep the copies and ask again at the next start</source>
+        <translation>Conserver les copies et redemander au prochain démarrage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="56"/>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="58"/>
+        <source>%1 — %2 — %n frame(s)</source>
+        <translation>
+            <numerusform>%1 — %2 — %n image</numerusform>
+            <numerusform>%1 — %2 — %n images</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SelectTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_select.h" line="28"/>
+        <source>Select</source>
+        <translation>Sélection</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_select.cpp" line="264"/>
+        <source>The strokes cannot be transformed that far.</source>
+        <translation>Les traits ne peuvent pas être transformés à ce point.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_select.cpp" line="273"/>
+        <source>Move Strokes</source>
+        <translation>Déplacer les traits</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_select.cpp" line="274"/>
+        <source>Rotate Strokes</source>
+        <translation>Faire pivoter les traits</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_select.cpp" line="275"/>
+        <source>Scale Strokes</source>
+        <translation>Redimensionner les traits</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ShortcutEditor</name>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <source>Action</source>
+        <translation>Action</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <source>Shortcut</source>
+        <translation>Raccourci</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <source>Alternative</source>
+        <translation>Secondaire</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="72"/>
+        <source>Restore Defaults</source>
+        <translation>Rétablir les valeurs par défaut</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="132"/>
+        <source>%1 is used by: %2</source>
+        <translation>%1 est utilisé par&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="143"/>
+        <source>Conflicting shortcuts:</source>
+        <translation>Raccourcis en conflit&#xa0;:</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ShortcutsDialog</name>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="20"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>Raccourcis clavier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <source>Pan the view</source>
+        <translation>Faire défiler la vue</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <source>Space + drag, or middle button drag</source>
+        <translation>Espace + glisser, ou glisser avec le bouton du milieu</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <source>Zoom about the cursor</source>
+        <translation>Zoomer autour du curseur</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <source>Mouse wheel</source>
+        <translation>Molette de la souris</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <source>Action</source>
+        <translation>Action</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <source>Shortcut</source>
+        <translation>Raccourci</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="53"/>
+        <source>Filter</source>
+        <translation>Filtrer</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SkeletonPanel</name>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <source>Bone complexity</source>
+        <translation>Complexité des os</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <source>Merge junctions</source>
+        <translation>Fusionner les jonctions</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <source>Prune branches</source>
+        <translation>Élaguer les branches</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <source>Collapse short bones</source>
+        <translation>Réduire les os courts</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="23"/>
+        <source>More bones follow the shape more closely</source>
+        <translation>Plus il y a d&apos;os, plus ils suivent fidèlement la forme</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
+        <source>Junctions closer than this become one</source>
+        <translation>Les jonctions plus proches que cette distance n&apos;en forment plus qu&apos;une</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
+        <source>Remove side branches shorter than this</source>
+        <translation>Supprimer les branches latérales plus courtes que cette longueur</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
+        <source>Collapse inner bones shorter than this into one joint</source>
+        <translation>Réduire en une seule articulation les os internes plus courts que cette longueur</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="42"/>
+        <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
+        <translation>Choisissez l&apos;outil Os (K) et cliquez sur un objet pour lui donner un squelette.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::StrokeEraserTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="17"/>
+        <source>Stroke Eraser</source>
+        <translation>Gomme à traits</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_eraser.cpp" line="93"/>
+        <source>Erase</source>
+        <translation>Effacer</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::TimelineWidget</name>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="68"/>
+        <source>Onion Skin</source>
+        <translation>Pelure d&apos;oignon</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="69"/>
+        <source>Show neighbouring frames faintly while drawing</source>
+        <translation>Afficher les images voisines en transparence pendant le dessin</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="85"/>
+        <source>Before:</source>
+        <translation>Avant&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="86"/>
+        <source>How many earlier frames the onion skin shows</source>
+        <translation>Nombre d&apos;images précédentes que montre la pelure d&apos;oignon</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="87"/>
+        <source>After:</source>
+        <translation>Après&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="88"/>
+        <source>How many later frames the onion skin shows</source>
+        <translation>Nombre d&apos;images suivantes que montre la pelure d&apos;oignon</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="119"/>
+        <source>Frame %1 of %2 · %3 fps</source>
+        <translation>Image %1 sur %2 · %3 i/s</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,3251 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="ja_JP">
+<context>
+    <name>Command</name>
+    <message>
+        <location filename="../model/src/commands.cpp" line="21"/>
+        <source>Draw Stroke</source>
+        <translation>ストロークを描画</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="45"/>
+        <source>Erase Stroke</source>
+        <translation>ストロークを消去</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="74"/>
+        <source>Move Strokes to Object</source>
+        <translation>ストロークをオブジェクトへ移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="171"/>
+        <source>New Object</source>
+        <translation>新規オブジェクト</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="199"/>
+        <source>Delete Object</source>
+        <translation>オブジェクトを削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="228"/>
+        <source>Rename Object</source>
+        <translation>オブジェクト名を変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="253"/>
+        <source>Reorder Object</source>
+        <translation>オブジェクトの順序を変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="284"/>
+        <source>Show Object</source>
+        <translation>オブジェクトを表示</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="284"/>
+        <source>Hide Object</source>
+        <translation>オブジェクトを非表示</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="286"/>
+        <source>Lock Object</source>
+        <translation>オブジェクトをロック</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="286"/>
+        <source>Unlock Object</source>
+        <translation>オブジェクトのロックを解除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="319"/>
+        <source>Insert Frame</source>
+        <translation>フレームを挿入</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="323"/>
+        <source>Object</source>
+        <translation>オブジェクト</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="342"/>
+        <source>Duplicate Frame</source>
+        <translation>フレームを複製</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="387"/>
+        <source>Delete Frame</source>
+        <translation>フレームを削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="413"/>
+        <source>Move Frame</source>
+        <translation>フレームを移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="436"/>
+        <source>Change Frame Exposure</source>
+        <translation>フレームの表示時間を変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="474"/>
+        <source>Change Document Settings</source>
+        <translation>ドキュメント設定を変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/object_commands.cpp" line="16"/>
+        <source>Merge Objects</source>
+        <translation>オブジェクトを結合</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_commands.cpp" line="56"/>
+        <source>Add Pin</source>
+        <translation>ピンを追加</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_commands.cpp" line="64"/>
+        <source>Remove Pin</source>
+        <translation>ピンを削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_commands.cpp" line="74"/>
+        <source>Move Pin</source>
+        <translation>ピンを移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_commands.cpp" line="88"/>
+        <source>Change Mesh Density</source>
+        <translation>メッシュ密度を変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="49"/>
+        <source>Place Cage</source>
+        <translation>ケージを配置</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="56"/>
+        <source>Edit Cage</source>
+        <translation>ケージを編集</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="67"/>
+        <source>Move Cage Corners</source>
+        <translation>ケージの頂点を移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_commands.cpp" line="75"/>
+        <source>Remove Rig</source>
+        <translation>リグを削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="31"/>
+        <source>Generate In-betweens</source>
+        <translation>中割りを生成</translation>
+    </message>
+    <message>
+        <location filename="../model/src/rig/rig_commands.cpp" line="89"/>
+        <source>Reset Pose</source>
+        <translation>ポーズをリセット</translation>
+    </message>
+    <message>
+        <location filename="../model/src/rig/rig_commands.cpp" line="113"/>
+        <source>Apply Pose to Drawing</source>
+        <translation>ポーズを絵に適用</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="52"/>
+        <source>Build Skeleton</source>
+        <translation>スケルトンを作成</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="63"/>
+        <source>Change Skeleton Settings</source>
+        <translation>スケルトンの設定を変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="88"/>
+        <source>Pose Bones</source>
+        <translation>ボーンのポーズを変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="97"/>
+        <source>Change Skinning</source>
+        <translation>スキニングを変更</translation>
+    </message>
+</context>
+<context>
+    <name>CommandLine</name>
+    <message>
+        <location filename="../app/cli.cpp" line="99"/>
+        <source>No command given; see finbook --help.</source>
+        <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli.cpp" line="103"/>
+        <source>Usage: finbook info FILE</source>
+        <translation>使い方: finbook info FILE</translation>
+    </message>
+    <message>
+        <location filename="../app/cli.cpp" line="113"/>
+        <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
+        <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="36"/>
+        <source>Finbook, a flipbook animation editor.
+
+  finbook [FILE]               open FILE in the editor
+  finbook info FILE            print a JSON summary of FILE
+  finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
+  finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
+  finbook export FILE... --format F --out-dir DIR   export several files</source>
+        <translation>Finbook: パラパラ漫画のアニメーションエディター。
+
+  finbook [FILE]               FILE をエディターで開く
+  finbook info FILE            FILE の概要を JSON で出力する
+  finbook export FILE OUTDIR   すべてのフレームを OUTDIR/frame_0001.png ... に描き出す
+  finbook export FILE OUT      OUT.gif、.mp4、.webm、.apng、.html に書き出す
+  finbook export FILE... --format F --out-dir DIR   複数のファイルを書き出す</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="48"/>
+        <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
+        <translation>システムの言語の代わりに LANGUAGE（例: de, en, fr, ja）を使う。</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="54"/>
+        <source>FILE, or a command.</source>
+        <translation>FILE、またはコマンド。</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="66"/>
+        <source>see finbook --help</source>
+        <comment>after an error</comment>
+        <translation>finbook --help を参照してください</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="73"/>
+        <source>%1; %2.</source>
+        <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
+        <translation>%1。%2。</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="101"/>
+        <source>Unknown command &quot;%1&quot;; %2.</source>
+        <translation>不明なコマンド「%1」です。%2。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="37"/>
+        <source>export: png, svg, gif, mp4, webm, apng or html.</source>
+        <translation>export: png、svg、gif、mp4、webm、apng、html のいずれか。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="39"/>
+        <source>export: frames A to B (default: the play range).</source>
+        <translation>export: フレーム A～B（既定: 再生範囲）。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="40"/>
+        <source>export: multiply the canvas size by S.</source>
+        <translation>export: キャンバスサイズを S 倍にする。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="42"/>
+        <source>export: N frames per second (default: the document&apos;s).</source>
+        <translation>export: 毎秒 N フレーム（既定: ドキュメントの設定）。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="44"/>
+        <source>export: this background colour (#rrggbb).</source>
+        <translation>export: この背景色（#rrggbb）を使う。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="45"/>
+        <source>export: no background.</source>
+        <translation>export: 背景なし。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="47"/>
+        <source>export png/svg: one file per drawing plus an exposure sheet.</source>
+        <translation>export png/svg: 絵ごとに 1 ファイルとタイムシートを書き出す。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="49"/>
+        <source>export: replace existing files.</source>
+        <translation>export: 既存のファイルを置き換える。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="50"/>
+        <source>export: write each FILE into DIR.</source>
+        <translation>export: 各 FILE を DIR に書き出す。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="80"/>
+        <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
+        <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="95"/>
+        <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
+        <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="101"/>
+        <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
+        <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="109"/>
+        <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
+        <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="121"/>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
+        <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html のいずれかを使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="136"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
+        <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="140"/>
+        <source>--format %1 does not match &quot;%2&quot;.</source>
+        <translation>--format %1 が「%2」と一致しません。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="156"/>
+        <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
+        <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="160"/>
+        <source>Usage: finbook export FILE... --out-dir DIR</source>
+        <translation>使い方: finbook export FILE... --out-dir DIR</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="170"/>
+        <source>--transparent and --background cannot be used together.</source>
+        <translation>--transparent と --background は同時に使えません。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="172"/>
+        <source>--one-per-drawing is for png and svg exports only.</source>
+        <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="236"/>
+        <source>Use --overwrite to replace it.</source>
+        <translation>置き換えるには --overwrite を使ってください。</translation>
+    </message>
+</context>
+<context>
+    <name>Deformation</name>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="73"/>
+        <source>The object has no strokes to deform.</source>
+        <translation>このオブジェクトには変形できるストロークがありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="78"/>
+        <source>This drawing cannot be meshed for deformation: %1</source>
+        <translation>この絵から変形用のメッシュを作成できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="110"/>
+        <source>Cancelled.</source>
+        <translation>キャンセルしました。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="154"/>
+        <source>The cage changed while it was being prepared.</source>
+        <translation>準備中にケージが変更されました。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="162"/>
+        <source>The object has no mesh to deform.</source>
+        <translation>このオブジェクトには変形できるメッシュがありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_setup.cpp" line="20"/>
+        <source>The pins cannot be solved on this drawing: %1</source>
+        <translation>この絵ではピンによる変形を計算できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/pins/pin_setup.cpp" line="47"/>
+        <source>The pins could not be solved: %1</source>
+        <translation>ピンによる変形を計算できませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/deform_setup.cpp" line="182"/>
+        <source>The deformation produced invalid points; it was not applied.</source>
+        <translation>変形によって無効な点が生じたため、適用しませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="34"/>
+        <source>The cage cannot be used: %1</source>
+        <translation>ケージを使用できません: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/cage/cage_setup.cpp" line="40"/>
+        <source>%n stroke point(s) lie outside the cage; move its corners out so it encloses the drawing.</source>
+        <translation>
+            <numerusform>%n 個のストロークの点がケージの外にあります。絵を囲むように、ケージの頂点を外側へ動かしてください。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="43"/>
+        <source>The drawing cannot be bound to the cage: %1</source>
+        <translation>この絵をケージにバインドできません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="58"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="61"/>
+        <source>The cage could not be solved: %1</source>
+        <translation>ケージによる変形を計算できませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="71"/>
+        <source>This cage cannot be used: %1</source>
+        <translation>このケージは使用できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="74"/>
+        <source>The cage must enclose the whole object: %1</source>
+        <translation>ケージはオブジェクト全体を囲む必要があります: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/cage/cage_setup.cpp" line="91"/>
+        <source>No cage fits this drawing: %1</source>
+        <translation>この絵に合うケージがありません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="55"/>
+        <source>No skeleton can be built for this drawing: %1</source>
+        <translation>この絵にはスケルトンを作成できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
+        <source>The object has no strokes to build a skeleton in.</source>
+        <translation>このオブジェクトにはスケルトンを作成するためのストロークがありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="81"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="90"/>
+        <source>No skeleton can be built for this drawing.</source>
+        <translation>この絵にはスケルトンを作成できません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="19"/>
+        <source>The skeleton is damaged; build it again.</source>
+        <translation>スケルトンが破損しています。作成し直してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="30"/>
+        <source>The skeleton cannot be used: %1</source>
+        <translation>スケルトンを使用できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="57"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="63"/>
+        <source>The skeleton cannot skin this drawing: %1</source>
+        <translation>このスケルトンではこの絵をスキニングできません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="75"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="80"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="86"/>
+        <source>The bones could not be posed: %1</source>
+        <translation>ボーンのポーズを計算できませんでした: %1</translation>
+    </message>
+</context>
+<context>
+    <name>Export</name>
+    <message>
+        <location filename="../model/src/export/export_encoded.cpp" line="34"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="188"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="92"/>
+        <source>there is not enough memory to render it</source>
+        <translation>描画に必要なメモリが足りません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_encoded.cpp" line="56"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="196"/>
+        <source>its folder cannot be created</source>
+        <translation>フォルダーを作成できません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_encoded.cpp" line="85"/>
+        <source>ffmpeg finished without writing the %1; nothing was exported.</source>
+        <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="151"/>
+        <source>Flipbook</source>
+        <translation>パラパラ漫画</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="161"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="169"/>
+        <source>Play</source>
+        <translation>再生</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="163"/>
+        <source>Loop</source>
+        <translation>ループ</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="166"/>
+        <source>Frame</source>
+        <translation>フレーム</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <source>Pause</source>
+        <translation>一時停止</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="45"/>
+        <source>The frame range %1-%2 is not within the animation&apos;s frames 1-%3; choose a range inside it.</source>
+        <translation>フレーム範囲 %1～%2 がアニメーションのフレーム 1～%3 に収まっていません。その範囲内で選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="80"/>
+        <source>The animation has no frames to export.</source>
+        <translation>アニメーションに書き出すフレームがありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="82"/>
+        <source>The canvas has no size; set one in Document Settings.</source>
+        <translation>キャンバスのサイズがありません。ドキュメント設定で設定してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="101"/>
+        <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
+        <translation>倍率 %1 は画像のサイズとして使えません。一辺が 1～%2 ピクセルになる倍率を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="105"/>
+        <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
+        <translation>倍率 %1 では %2×%3 ピクセルの画像になります。一辺が 1～%4 ピクセルになる倍率を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="118"/>
+        <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
+        <translation>フレームレート %1 は使用できません。毎秒 %2～%3 フレームの範囲で選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="126"/>
+        <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
+        <translation>%1 動画は透明にできません。背景を透明にするには WebM、APNG、GIF、PNG のいずれかを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="42"/>
+        <source>&quot;%1&quot; is a folder where a file should go; choose another folder.</source>
+        <translation>「%1」はファイルを置く場所にあるフォルダーです。別のフォルダーを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="69"/>
+        <source>a file is in the way of the folder</source>
+        <translation>フォルダーを作る場所にファイルがあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="76"/>
+        <source>the folder cannot be created</source>
+        <translation>フォルダーを作成できません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="16"/>
+        <source>&quot;%1&quot; already exists; nothing was exported.</source>
+        <translation>「%1」はすでに存在するため、何も書き出しませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="23"/>
+        <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
+        <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度書き出してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="31"/>
+        <source>The export was cancelled; nothing was written.</source>
+        <translation>書き出しはキャンセルされました。何も書き込まれていません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="40"/>
+        <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
+        <translation>「%1」はフォルダーです。末尾が .%2 のファイル名を指定してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="97"/>
+        <source>Choose where to export the animation to.</source>
+        <translation>アニメーションの書き出し先を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="37"/>
+        <source>GIF</source>
+        <translation>GIF</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="63"/>
+        <source>MP4 video</source>
+        <translation>MP4 動画</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="81"/>
+        <source>WebM video</source>
+        <translation>WebM 動画</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="95"/>
+        <source>animated PNG</source>
+        <translation>アニメーション PNG</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="50"/>
+        <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
+        <translation>%1 を書き出すには ffmpeg プログラムが必要ですが、見つかりませんでした。インストールしてから（Debian の場合: apt install ffmpeg）、もう一度書き出してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="126"/>
+        <source>it stopped unexpectedly</source>
+        <translation>予期せず停止しました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="127"/>
+        <source>exit code %1</source>
+        <translation>終了コード %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="130"/>
+        <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
+        <translation>ffmpeg で %1 を作成できませんでした（%2）。何も書き込まれていません。ディスクがいっぱいの場合は、空き容量を増やしてからもう一度書き出してください。</translation>
+    </message>
+</context>
+<context>
+    <name>FileMessages</name>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="17"/>
+        <source>The file is not there any more: it may have been moved, renamed or deleted.</source>
+        <translation>ファイルがもうありません。移動、名前の変更、または削除された可能性があります。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="21"/>
+        <source>This is a folder, not an animation. Choose a file ending in .finbook.</source>
+        <translation>これはアニメーションではなくフォルダーです。末尾が .finbook のファイルを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="23"/>
+        <source>This is a device or a pipe, not an animation. Choose a file ending in .finbook.</source>
+        <translation>これはアニメーションではなく、デバイスまたはパイプです。末尾が .finbook のファイルを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="26"/>
+        <source>You are not allowed to read this file. Ask whoever owns it to share it with you, or open a copy of it.</source>
+        <translation>このファイルを読み取る権限がありません。所有者に共有を依頼するか、ファイルのコピーを開いてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="29"/>
+        <source>The disk could not read the file. If it is on a removable drive or a network folder, check that it is still connected.</source>
+        <translation>ディスクからファイルを読み取れませんでした。リムーバブルドライブやネットワークフォルダー上にある場合は、まだ接続されているか確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="33"/>
+        <source>The file is empty: there is no drawing in it.</source>
+        <translation>ファイルが空です。絵が何も入っていません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="34"/>
+        <source>This is not a Finbook animation. Choose a file ending in .finbook.</source>
+        <translation>これは Finbook のアニメーションではありません。末尾が .finbook のファイルを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="37"/>
+        <source>It was saved by a newer version of Finbook. Install that version to open it.</source>
+        <translation>より新しいバージョンの Finbook で保存されています。開くにはそのバージョンをインストールしてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="40"/>
+        <source>The file is damaged near the end: it looks cut off. Perhaps a copy or a save was interrupted.</source>
+        <translation>ファイルの末尾付近が破損しています。途中で切れているようです。コピーや保存が中断された可能性があります。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="43"/>
+        <source>The file is damaged, or too large for this computer: it asks for more memory than Finbook can use.</source>
+        <translation>ファイルが破損しているか、このコンピューターには大きすぎます。Finbook が使用できる以上のメモリを必要としています。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="46"/>
+        <source>The file is damaged: some of it changed after it was saved. Finbook can open what is still readable.</source>
+        <translation>ファイルが破損しています。保存後に一部が変更されています。Finbook は、まだ読み取れる部分を開くことができます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="50"/>
+        <source>This computer has not enough free memory to open the file. Close other programs or documents and try again.</source>
+        <translation>このコンピューターには、ファイルを開くのに十分な空きメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="57"/>
+        <source>The file is damaged: part of it cannot be read.</source>
+        <translation>ファイルが破損しています。一部を読み取れません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="64"/>
+        <source>Finbook cannot open “%1”.</source>
+        <translation>Finbook は「%1」を開けません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/file_messages.cpp" line="68"/>
+        <source>Finbook kept the version saved before it as “%1” in the same folder: open that one to get your work back.</source>
+        <translation>Finbook は、その前に保存されていたバージョンを同じフォルダーに「%1」として残しています。作業内容を取り戻すには、そちらを開いてください。</translation>
+    </message>
+</context>
+<context>
+    <name>FinbookFile</name>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="29"/>
+        <source>frame %1</source>
+        <translation>フレーム %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="32"/>
+        <source>, object &quot;%1&quot;</source>
+        <translation>、オブジェクト「%1」</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="33"/>
+        <source>, object %1</source>
+        <translation>、オブジェクト %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="35"/>
+        <source>, stroke %1</source>
+        <translation>、ストローク %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="39"/>
+        <source>stroke data %1</source>
+        <translation>ストロークデータ %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="41"/>
+        <source>pose %1</source>
+        <translation>ポーズ %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="77"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="61"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="85"/>
+        <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
+        <translation>%1 の途中でファイルが終わっています（%2 バイト必要ですが、残りは %3 バイトです）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="101"/>
+        <source>%1 claims %2 entries but only %3 bytes remain</source>
+        <translation>%1 には %2 個の項目があるはずですが、残りは %3 バイトしかありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="127"/>
+        <source>%1 has %2 unexpected bytes at its end</source>
+        <translation>%1 の末尾に予期しない %2 バイトがあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="32"/>
+        <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
+        <translation>%1 ファイルが不完全です（コピーや保存が中断された可能性があります）。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="38"/>
+        <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
+        <translation>%1 ファイルが破損しています。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="43"/>
+        <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
+        <translation>%1 ファイルが破損しています。Finbook でまだ読み取れる部分を開くか、同じ名前で末尾に ~ が付いたバックアップがあれば、そちらを開いてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="48"/>
+        <source>%1 Close other programs or documents and try again.</source>
+        <translation>%1 ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="71"/>
+        <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
+        <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度保存してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="197"/>
+        <source>the backup &quot;%1&quot; cannot be written (%2)</source>
+        <translation>バックアップ「%1」を書き込めません（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="244"/>
+        <source>the disk is full</source>
+        <translation>ディスクがいっぱいです</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="246"/>
+        <source>the disk is read-only</source>
+        <translation>ディスクが読み取り専用です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="248"/>
+        <source>you do not have permission to write in the folder &quot;%1&quot;</source>
+        <translation>フォルダー「%1」に書き込む権限がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/io/atomic_file.cpp" line="251"/>
+        <source>the folder &quot;%1&quot; does not exist</source>
+        <translation>フォルダー「%1」が存在しません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="77"/>
+        <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
+        <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。別のフォルダーを選んでから、もう一度保存してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="87"/>
+        <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
+        <translation>「%1」を開けません: %2。ファイルが存在し、読み取る権限があることを確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="127"/>
+        <source>it is a folder</source>
+        <translation>フォルダーです</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="159"/>
+        <source>Cannot read &quot;%1&quot;: %2.</source>
+        <translation>「%1」を読み込めません: %2。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="140"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="170"/>
+        <source>Cannot open &quot;%1&quot;. %2</source>
+        <translation>「%1」を開けません。%2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
+        <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
+        <translation>「%1」を開けません: ファイルではなく、デバイス、パイプ、またはソケットです。.finbook ファイルを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="149"/>
+        <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
+        <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_io.cpp" line="214"/>
+        <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
+        <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="40"/>
+        <source>unknown %1 %2</source>
+        <translation>不明な%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
+        <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
+        <translation>このバージョンの Finbook が知らないデータ（「%1」）が含まれているため、より新しい Finbook で作成されたと思われます。開くには Finbook を更新してください</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <source>more problems were found and repaired the same way</source>
+        <translation>ほかにも問題が見つかり、同じ方法で修復しました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="72"/>
+        <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
+        <translation>このサイズのファイルに収まる量を超える内容が記述されています（開くには %1 MB を超えるメモリが必要です）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="92"/>
+        <source>the file is empty</source>
+        <translation>ファイルが空です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
+        <source>the file header</source>
+        <translation>ファイルヘッダー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
+        <source>it is not a Finbook animation</source>
+        <translation>Finbook のアニメーションではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
+        <source>the file ends inside its header</source>
+        <translation>ヘッダーの途中でファイルが終わっています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="99"/>
+        <source>the format version</source>
+        <translation>フォーマットのバージョン</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="102"/>
+        <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
+        <translation>より新しいバージョンの Finbook で作成されています（ファイル形式 %1。このバージョンが読めるのは %2 までです）。開くには Finbook を更新してください</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="109"/>
+        <source>the format version %1 does not exist</source>
+        <translation>フォーマットのバージョン %1 は存在しません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="126"/>
+        <source>the file&apos;s section list</source>
+        <translation>ファイルのセクション一覧</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="129"/>
+        <source>the file ends before its end</source>
+        <translation>本来の終端より前でファイルが終わっています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <source>a section header</source>
+        <translation>セクションヘッダー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <source>section %1</source>
+        <translation>セクション %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="148"/>
+        <source>the file&apos;s end is damaged</source>
+        <translation>ファイルの終端が破損しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
+        <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
+        <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
+        <source>the file ends inside this section; what it holds is read</source>
+        <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
+        <source>a section</source>
+        <translation>セクション</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
+        <source>the file ends before this section&apos;s checksum</source>
+        <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <source>a section checksum</source>
+        <translation>セクションのチェックサム</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <source>its checksum does not match, so its bytes changed after it was saved</source>
+        <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="201"/>
+        <source>section %1 is missing</source>
+        <translation>セクション %1 がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <source>the end marker</source>
+        <translation>終端マーカー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="181"/>
+        <source>the file</source>
+        <translation>ファイル</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <source>an unknown section is left out</source>
+        <translation>不明なセクションを除外しました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <source>section</source>
+        <translation>セクション</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="196"/>
+        <source>the section is repeated or out of order</source>
+        <translation>セクションが重複しているか、順序が正しくありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="227"/>
+        <source>the end of the section could not be read</source>
+        <translation>セクションの終わりを読み取れませんでした</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="228"/>
+        <source>the section</source>
+        <translation>セクション</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <source>the document settings</source>
+        <translation>ドキュメント設定</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <source>the canvas size</source>
+        <translation>キャンバスサイズ</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
+        <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
+        <source>the background colour</source>
+        <translation>背景色</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="253"/>
+        <source>the frame rate</source>
+        <translation>フレームレート</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <source>the frame rate %1 is outside %2 to %3</source>
+        <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <source>the loop flag</source>
+        <translation>ループの設定</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <source>the loop flag %1 is neither 0 nor 1</source>
+        <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <source>the play range</source>
+        <translation>再生範囲</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
+        <source>the play range %1 to %2 is invalid</source>
+        <translation>再生範囲 %1～%2 が無効です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="277"/>
+        <source>the next id</source>
+        <translation>次の ID</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <source>the next free id %1 is larger than any id can be</source>
+        <translation>次の空き ID %1 が ID の上限を超えています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <source>the frame list</source>
+        <translation>フレーム一覧</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
+        <source>a frame</source>
+        <translation>フレーム</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
+        <source>the frame is cut off and is left out, with any after it</source>
+        <translation>フレームが途中で切れているため、以降のフレームとともに除外しました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
+        <source>%1; the frame is left out</source>
+        <translation>%1。このフレームは除外しました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <source>a frame id</source>
+        <translation>フレーム ID</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <source>the frame</source>
+        <translation>フレーム</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <source>a frame hold</source>
+        <translation>フレームの表示時間</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <source>the hold %1 is outside 1 to %2</source>
+        <translation>表示時間 %1 が 1～%2 の範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <source>the object list</source>
+        <translation>オブジェクト一覧</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
+        <source>an object</source>
+        <translation>オブジェクト</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
+        <source>the object is cut off and is left out, with any after it</source>
+        <translation>オブジェクトが途中で切れているため、以降のオブジェクトとともに除外しました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
+        <source>%1; the object is left out</source>
+        <translation>%1。このオブジェクトは除外しました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <source>a chunk header</source>
+        <translation>チャンクヘッダー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <source>a chunk</source>
+        <translation>チャンク</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <source>chunk</source>
+        <translation>チャンク</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <source>an object id</source>
+        <translation>オブジェクト ID</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <source>the object</source>
+        <translation>オブジェクト</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <source>the object flags</source>
+        <translation>オブジェクトのフラグ</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <source>the object flags 0x%1 are unknown</source>
+        <translation>オブジェクトのフラグ 0x%1 は不明です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <source>the mesh density</source>
+        <translation>メッシュ密度</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
+        <source>the mesh density %1 is not a number from 0 to 1000</source>
+        <translation>メッシュ密度 %1 が 0～1000 の数値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
+        <source>the object name</source>
+        <translation>オブジェクト名</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
+        <source>the object name is %1 bytes long (at most %2)</source>
+        <translation>オブジェクト名が %1 バイトあります（最大 %2 バイト）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <source>the object name is not valid UTF-8 text</source>
+        <translation>オブジェクト名が有効な UTF-8 テキストではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
+        <source>the stroke list</source>
+        <translation>ストローク一覧</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <source>a stroke id</source>
+        <translation>ストローク ID</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <source>the stroke</source>
+        <translation>ストローク</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <source>a stroke reference</source>
+        <translation>ストロークの参照</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
+        <source>%1 claims %2 entries; the %3 that fit are read</source>
+        <translation>%1 には %2 個の項目があるはずですが、収まっている %3 個を読み込みました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <source>it refers to stroke data %1 of %2</source>
+        <translation>ストロークデータ %1 を参照していますが、%2 個しかありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
+        <source>an unknown chunk is left out</source>
+        <translation>不明なチャンクを除外しました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <source>chunk %1 appears twice or with another rig</source>
+        <translation>チャンク %1 が 2 回、または別のリグと一緒に現れます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
+        <source>%1; the chunk is left out</source>
+        <translation>%1。このチャンクは除外しました</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
+        <source>the pin list</source>
+        <translation>ピン一覧</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <source>a pin id</source>
+        <translation>ピン ID</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <source>pin %1</source>
+        <translation>ピン %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="266"/>
+        <source>a pin position</source>
+        <translation>ピンの位置</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="269"/>
+        <source>pin %1 has a non-finite position</source>
+        <translation>ピン %1 の位置が有限の値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <source>the cage corner list</source>
+        <translation>ケージの頂点一覧</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <source>the cage has fewer than 3 corners</source>
+        <translation>ケージの頂点が 3 個未満です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <source>a cage corner</source>
+        <translation>ケージの頂点</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <source>cage corner %1 has a non-finite position</source>
+        <translation>ケージの頂点 %1 の位置が有限の値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
+        <source>a pose reference</source>
+        <translation>ポーズの参照</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
+        <source>its pose refers to pose %1 of %2</source>
+        <translation>ポーズがポーズ %1 を参照していますが、%2 個しかありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
+        <source>its pose: %1</source>
+        <translation>ポーズ: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <source>its pose has %1 strokes but the object has %2</source>
+        <translation>ポーズのストローク数は %1 ですが、オブジェクトのストローク数は %2 です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <source>stroke %1 has %2 points but its pose has %3</source>
+        <translation>ストローク %1 の点の数は %2 ですが、ポーズでは %3 です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <source>%1 has no id</source>
+        <translation>%1 に ID がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <source>%1 has the id %2, larger than any id can be</source>
+        <translation>%1 の ID %2 が ID の上限を超えています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
+        <source>%1 has the id %2, which is already used</source>
+        <translation>%1 の ID %2 はすでに使われています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <source>the next free id %1 is not above the largest id %2</source>
+        <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="330"/>
+        <source>the id %1 is used twice</source>
+        <translation>ID %1 が 2 回使われています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <source>no frame of it could be read; there is nothing to recover</source>
+        <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="344"/>
+        <source>there is not enough memory to open this file</source>
+        <translation>このファイルを開くのに十分なメモリがありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="26"/>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="28"/>
+        <source>a stroke</source>
+        <translation>ストローク</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="32"/>
+        <source>point %1 has a non-finite coordinate</source>
+        <translation>点 %1 の座標が有限の値ではありません</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="48"/>
+        <source>%n point(s) with a non-finite coordinate are left out</source>
+        <translation>
+            <numerusform>座標が有限の値ではない点 %n 個を除外しました</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="57"/>
+        <source>the stroke table</source>
+        <translation>ストロークテーブル</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="71"/>
+        <source>a stroke colour</source>
+        <translation>ストロークの色</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="72"/>
+        <source>a stroke width</source>
+        <translation>ストロークの太さ</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="74"/>
+        <source>the width %1 is not a number above 0 and up to %2</source>
+        <translation>太さ %1 が 0 より大きく %2 以下の数値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="90"/>
+        <source>the pose table</source>
+        <translation>ポーズテーブル</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_tables.cpp" line="97"/>
+        <source>a pose</source>
+        <translation>ポーズ</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="22"/>
+        <source>the skeleton</source>
+        <translation>スケルトン</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="25"/>
+        <source>its skeleton has no joints</source>
+        <translation>スケルトンにジョイントがありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="32"/>
+        <source>skeleton joint %1 has a non-finite value</source>
+        <translation>スケルトンのジョイント %1 に有限でない値が含まれています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="39"/>
+        <source>skeleton joint %1 has a negative radius</source>
+        <translation>スケルトンのジョイント %1 の半径が負の値です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="43"/>
+        <source>skeleton joint %1 has an invalid parent</source>
+        <translation>スケルトンのジョイント %1 の親が無効です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="48"/>
+        <source>the skeleton&apos;s root is not a root joint</source>
+        <translation>スケルトンのルートがルートジョイントではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="49"/>
+        <source>the skeleton&apos;s pose has a non-finite value</source>
+        <translation>スケルトンのポーズに有限でない値が含まれています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="52"/>
+        <source>a skeleton setting is outside 0 to 1</source>
+        <translation>スケルトンの設定値が 0～1 の範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="62"/>
+        <source>the skeleton has an unknown skinning mode</source>
+        <translation>スケルトンのスキニング方式が不明です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
+        <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
+        <translation>破損した %1 バイトを読み取れませんでした。セクション %2 から読み込みを続けます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_recover.cpp" line="56"/>
+        <source>the last %1 bytes of the file are damaged and could not be read</source>
+        <translation>ファイルの最後の %1 バイトが破損していて読み取れませんでした</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_recover.cpp" line="85"/>
+        <source>%n missing or repeated id(s) were replaced by new ones</source>
+        <translation>
+            <numerusform>欠落または重複していた ID %n 個を新しい ID に置き換えました</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/recovery/autosaver.cpp" line="154"/>
+        <source>Autosave could not write a recovery copy: %1.</source>
+        <translation>自動保存で復元用のコピーを書き込めませんでした: %1。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
+        <source>there is not enough memory</source>
+        <translation>メモリが足りません</translation>
+    </message>
+</context>
+<context>
+    <name>MeshImport</name>
+    <message>
+        <location filename="../model/src/import/mesh_import.cpp" line="22"/>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>「%1」をインポートできません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/import/mesh_import.cpp" line="27"/>
+        <source>Cannot import &quot;%1&quot;: the mesh has no boundary to draw.</source>
+        <translation>「%1」をインポートできません: メッシュに描画できる境界がありません。</translation>
+    </message>
+</context>
+<context>
+    <name>ObjectListModel</name>
+    <message numerus="yes">
+        <location filename="../model/src/object_list_model.cpp" line="160"/>
+        <source>%1: %n stroke(s)</source>
+        <translation>
+            <numerusform>%1: ストローク %n 本</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>QCommandLineParser</name>
+    <message>
+        <location filename="../app/main.cpp" line="22"/>
+        <source>Displays help on commandline options.</source>
+        <translation>コマンドラインオプションのヘルプを表示する。</translation>
+    </message>
+    <message>
+        <location filename="../app/main.cpp" line="23"/>
+        <source>Displays help including Qt specific options.</source>
+        <translation>Qt 固有のオプションを含むヘルプを表示する。</translation>
+    </message>
+</context>
+<context>
+    <name>RigPrompt</name>
+    <message>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="18"/>
+        <source>Discard the Pose?</source>
+        <translation>ポーズを破棄しますか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="19"/>
+        <source>&quot;%1&quot; is posed. Replacing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
+        <translation>「%1」にはポーズが付いています。リグを置き換えると、絵は元の状態に戻ります（先に「ポーズを絵に適用」を実行すれば、ポーズを残せます）。</translation>
+    </message>
+</context>
+<context>
+    <name>StrokeEditing</name>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="84"/>
+        <source>There is no frame to draw on. Insert a frame first.</source>
+        <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="87"/>
+        <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
+        <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="90"/>
+        <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
+        <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="111"/>
+        <source>Object</source>
+        <translation>オブジェクト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="150"/>
+        <source>%1 (pose applied)</source>
+        <translation>%1（ポーズ適用済み）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="164"/>
+        <source>Delete Strokes</source>
+        <translation>ストロークを削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="212"/>
+        <source>Cut</source>
+        <translation>切り取り</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="288"/>
+        <source>The clipboard holds strokes this version of Finbook cannot read.</source>
+        <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/stroke_editing.cpp" line="295"/>
+        <source>Paste</source>
+        <translation>貼り付け</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::model::FrameListModel</name>
+    <message>
+        <location filename="../model/src/frame_list_model.cpp" line="132"/>
+        <source>Frame %1, held for %2 frames</source>
+        <translation>フレーム %1（%2 フレーム分表示）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/frame_list_model.cpp" line="133"/>
+        <source>Frame %1</source>
+        <translation>フレーム %1</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::BoneTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="24"/>
+        <source>Bone</source>
+        <translation>ボーン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="46"/>
+        <source>Build Skeleton</source>
+        <translation>スケルトンを作成</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="47"/>
+        <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
+        <translation>このオブジェクトには別の変形方法によるポーズが付いています。スケルトンを作成すると、そのポーズは破棄されます。作成しますか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="218"/>
+        <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
+        <translation>表示されていてロックされていない絵をクリックすると、スケルトンを作成できます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="225"/>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
+        <translation>ボーンをドラッグすると回転、ジョイントをドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。Alt キーを押しながらジョイントをクリックするとロックします。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::BrushToolBar</name>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="15"/>
+        <source>Brush</source>
+        <translation>ブラシ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="29"/>
+        <source>Width:</source>
+        <translation>太さ:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="34"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="36"/>
+        <source>Smoothing:</source>
+        <translation>スムージング:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="39"/>
+        <source>How much a stroke is smoothed when the pen lifts</source>
+        <translation>ペンを離したときにストロークをどれだけ滑らかにするか</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/brush_tool_bar.cpp" line="84"/>
+        <source>Pen colour %1</source>
+        <translation>ペンの色: %1</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CageActions</name>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="32"/>
+        <source>&amp;Fit Cage</source>
+        <translation>ケージをフィット(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="34"/>
+        <source>Put a coarse cage around the current object in one step</source>
+        <translation>現在のオブジェクトの周りに粗いケージを一度に配置</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
+        <source>Shift+C</source>
+        <translation>Shift+C</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
+        <source>Edit Cage &amp;Shape</source>
+        <translation>ケージの形状を編集(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="40"/>
+        <source>Change the cage itself (move, add or delete corners) instead of posing with it</source>
+        <translation>ケージでポーズを付ける代わりに、ケージ自体を変更（頂点を移動・追加・削除）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="66"/>
+        <source>Corners </source>
+        <translation>頂点数 </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
+        <source>About how many corners Fit Cage gives the cage</source>
+        <translation>「ケージをフィット」で作成するケージのおおよその頂点数</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="81"/>
+        <source>Choose an unlocked object with strokes to fit a cage to.</source>
+        <translation>ケージを合わせる、ストロークのあるロックされていないオブジェクトを選んでください。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CageTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/cage/tool_cage.h" line="23"/>
+        <source>Cage</source>
+        <translation>ケージ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="127"/>
+        <source>Choose an object first: the cage goes around it.</source>
+        <translation>先にオブジェクトを選んでください。ケージはその周りに配置されます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="249"/>
+        <source>A cage needs at least three corners.</source>
+        <translation>ケージには少なくとも 3 つの頂点が必要です。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ColorButton</name>
+    <message>
+        <location filename="../ui/src/color_button.cpp" line="13"/>
+        <source>Choose a colour</source>
+        <translation>色を選択</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/color_button.cpp" line="31"/>
+        <source>Choose Colour</source>
+        <translation>色の選択</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::DeformActions</name>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="21"/>
+        <source>&amp;Reset Pose</source>
+        <translation>ポーズをリセット(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="25"/>
+        <source>&amp;Apply Pose to Drawing</source>
+        <translation>ポーズを絵に適用(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="24"/>
+        <source>Move the current object&apos;s pins or cage corners back to their rest positions</source>
+        <translation>現在のオブジェクトのピンまたはケージの頂点を元の位置に戻す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="27"/>
+        <source>Make the posed drawing the object&apos;s new strokes; the pins or cage stay where they are</source>
+        <translation>ポーズを付けた絵をオブジェクトの新しいストロークにする（ピンやケージはその位置のまま）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="29"/>
+        <source>&amp;Remove Pins or Cage</source>
+        <translation>ピンまたはケージを削除(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="31"/>
+        <source>Take the pins or the cage off the current object</source>
+        <translation>現在のオブジェクトからピンまたはケージを外す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="49"/>
+        <source>Preparing the deformation…</source>
+        <translation>変形を準備しています…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="59"/>
+        <source>R&amp;igidity</source>
+        <translation>剛性(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="73"/>
+        <source>Converged (Most Rigid)</source>
+        <translation>収束まで（最も硬く）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="74"/>
+        <source>As in the Paper (Two Steps)</source>
+        <translation>論文どおり（2 段階）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="75"/>
+        <source>Stiffer (+1 Pass)</source>
+        <translation>より硬く（+1 パス）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="76"/>
+        <source>Stiffest (+3 Passes)</source>
+        <translation>最も硬く（+3 パス）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="108"/>
+        <source>Mesh density </source>
+        <translation>メッシュ密度 </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/deform_actions.cpp" line="109"/>
+        <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
+        <translation>現在のオブジェクトの変形メッシュの細かさ（1 = 標準）</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::DocumentSettingsDialog</name>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="26"/>
+        <source>Start again after the last frame</source>
+        <translation>最後のフレームの後、最初から再生する</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="30"/>
+        <source>Document Settings</source>
+        <translation>ドキュメント設定</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="32"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="35"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="40"/>
+        <source>Last</source>
+        <translation>最後</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="50"/>
+        <source>to</source>
+        <translation>～</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="54"/>
+        <source>&amp;Frame rate:</source>
+        <translation>フレームレート(&amp;F):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="55"/>
+        <source>Canvas size:</source>
+        <translation>キャンバスサイズ:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="56"/>
+        <source>&amp;Background:</source>
+        <translation>背景(&amp;B):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="57"/>
+        <source>Loop:</source>
+        <translation>ループ:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="58"/>
+        <source>Play frames:</source>
+        <translation>再生するフレーム:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/document_settings_dialog.cpp" line="125"/>
+        <source>Background Colour</source>
+        <translation>背景色</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ExportDialog</name>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="56"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
+        <source>Export Animation</source>
+        <translation>アニメーションの書き出し</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="64"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
+        <source>untitled</source>
+        <translation>無題</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="76"/>
+        <source>Animated GIF</source>
+        <translation>アニメーション GIF</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <source>MP4 video (H.264)</source>
+        <translation>MP4 動画（H.264）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <source>WebM video (VP9)</source>
+        <translation>WebM 動画（VP9）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <source>Animated PNG (APNG)</source>
+        <translation>アニメーション PNG（APNG）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <source>HTML flipbook (one file)</source>
+        <translation>HTML パラパラ漫画（1 ファイル）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <source>PNG images (a folder)</source>
+        <translation>PNG 画像（フォルダー）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <source>SVG vector images (a folder)</source>
+        <translation>SVG ベクター画像（フォルダー）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <source>&amp;Browse...</source>
+        <translation>参照(&amp;O)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <source>Play range</source>
+        <translation>再生範囲</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
+        <source>All frames</source>
+        <translation>すべてのフレーム</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <source>Frames</source>
+        <translation>フレーム</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="105"/>
+        <source>Document background</source>
+        <translation>ドキュメントの背景</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="106"/>
+        <source>Transparent</source>
+        <translation>透明</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <source>Colour</source>
+        <translation>色</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
+        <source>Start again after the last frame</source>
+        <translation>最後のフレームの後、最初から再生する</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <source>One file per drawing, with an exposure sheet</source>
+        <translation>絵ごとに 1 ファイル（タイムシート付き）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="132"/>
+        <source>to</source>
+        <translation>～</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="147"/>
+        <source>&amp;Format:</source>
+        <translation>形式(&amp;F):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="148"/>
+        <source>&amp;Save to:</source>
+        <translation>保存先(&amp;S):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <source>F&amp;rames:</source>
+        <translation>フレーム(&amp;R):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <source>Sc&amp;ale:</source>
+        <translation>倍率(&amp;A):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <source>&amp;Background:</source>
+        <translation>背景(&amp;B):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <source>Frame ra&amp;te:</source>
+        <translation>フレームレート(&amp;T):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <source>Loop:</source>
+        <translation>ループ:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <source>&amp;Export</source>
+        <translation>書き出し(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <source>Cancel Export</source>
+        <translation>書き出しをキャンセル</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="225"/>
+        <source>%1 x %2 pixels</source>
+        <translation>%1×%2 ピクセル</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="228"/>
+        <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
+        <translation>この形式には ffmpeg プログラムが必要ですが、見つかりませんでした。先にインストールしてください（Debian の場合: apt install ffmpeg）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <source>Export to Folder</source>
+        <translation>フォルダーに書き出す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="273"/>
+        <source>%1 files (*.%2)</source>
+        <translation>%1 ファイル (*.%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="44"/>
+        <source>Choose where to export the animation to.</source>
+        <translation>アニメーションの書き出し先を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="63"/>
+        <source>Exporting...</source>
+        <translation>書き出しています...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="75"/>
+        <source>Cancelling...</source>
+        <translation>キャンセルしています...</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="91"/>
+        <source>Exported %n file(s) to %1</source>
+        <translation>
+            <numerusform>%n 個のファイルを %1 に書き出しました</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="102"/>
+        <source>Export cancelled; nothing was written.</source>
+        <translation>書き出しをキャンセルしました。何も書き込まれていません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="127"/>
+        <source>&quot;%1&quot; already exists. Replace it?</source>
+        <translation>「%1」はすでに存在します。置き換えますか？</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
+        <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
+        <translation>
+            <numerusform>書き出し先には「%1」など %n 個のファイルがすでに存在します。置き換えますか？</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="131"/>
+        <source>Replace Files?</source>
+        <translation>ファイルを置き換えますか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="138"/>
+        <source>Cannot Export</source>
+        <translation>書き出せません</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::FrameActions</name>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="13"/>
+        <source>Insert Frame &amp;Before</source>
+        <translation>前にフレームを挿入(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="15"/>
+        <source>&amp;Insert Frame After</source>
+        <translation>後ろにフレームを挿入(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="17"/>
+        <source>&amp;Duplicate Frame</source>
+        <translation>フレームを複製(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="19"/>
+        <source>Generate &amp;In-betweens…</source>
+        <translation>中割りを生成(&amp;T)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="21"/>
+        <source>De&amp;lete Frame</source>
+        <translation>フレームを削除(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="24"/>
+        <source>Move Frame &amp;Left</source>
+        <translation>フレームを左へ移動(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="26"/>
+        <source>Move Frame &amp;Right</source>
+        <translation>フレームを右へ移動(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="29"/>
+        <source>Hold &amp;Longer</source>
+        <translation>表示時間を延ばす(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="31"/>
+        <source>Hold &amp;Shorter</source>
+        <translation>表示時間を縮める(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="34"/>
+        <source>&amp;Previous Frame</source>
+        <translation>前のフレーム(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/frame_actions.cpp" line="37"/>
+        <source>&amp;Next Frame</source>
+        <translation>次のフレーム(&amp;N)</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::HandTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_hand.h" line="16"/>
+        <source>Hand</source>
+        <translation>手のひら</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::InbetweenDialog</name>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="35"/>
+        <source>Generate In-betweens</source>
+        <translation>中割りを生成</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="41"/>
+        <source>Objects:</source>
+        <translation>オブジェクト:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="65"/>
+        <source>&amp;Frames between the keys:</source>
+        <translation>キーの間のフレーム数(&amp;F):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="68"/>
+        <source>Linear</source>
+        <translation>等間隔</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="69"/>
+        <source>Ease in (slow from the first key)</source>
+        <translation>イーズイン（最初のキーからゆっくり）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="70"/>
+        <source>Ease out (slow into the second key)</source>
+        <translation>イーズアウト（2 番目のキーへゆっくり）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="71"/>
+        <source>Ease in and out</source>
+        <translation>イーズイン・アウト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="72"/>
+        <source>Favour…</source>
+        <translation>詰め…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="73"/>
+        <source>&amp;Spacing:</source>
+        <translation>間隔(&amp;S):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="77"/>
+        <source>Left favours the first key, right the second.</source>
+        <translation>左にすると最初のキー側に、右にすると 2 番目のキー側に詰めます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="79"/>
+        <source>F&amp;avour:</source>
+        <translation>詰め(&amp;A):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
+        <source>Move pins and cage corners along &amp;arcs</source>
+        <translation>ピンとケージの頂点を弧に沿って移動(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
+        <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
+        <translation>キーの間で振られた手足は長さを保ちます。オフにすると、すべての対象が直線的に移動します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="112"/>
+        <source>(unnamed)</source>
+        <translation>（名前なし）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="115"/>
+        <source>%1: interpolated</source>
+        <translation>%1: 補間</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="117"/>
+        <source>%1: held from the first key (no pins or cage)</source>
+        <translation>%1: 最初のキーを保持（ピンもケージもありません）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
+        <source>%1: held from the first key (its pins or cage differ between the keys)</source>
+        <translation>%1: 最初のキーを保持（キーの間でピンまたはケージが異なります）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>
+        <source>%1: only in the first key, held in the first half</source>
+        <translation>%1: 最初のキーにのみ存在、前半で保持</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="124"/>
+        <source>%1: only in the second key, held in the second half</source>
+        <translation>%1: 2 番目のキーにのみ存在、後半で保持</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <source>Select two different frames as keys.</source>
+        <translation>キーとして異なる 2 つのフレームを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="147"/>
+        <source>The preview could not be posed: %1</source>
+        <translation>プレビューのポーズを計算できませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
+        <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
+        <translation>両方のキーで一致するピンまたはケージを持つオブジェクトがありません。中割りでは絵が保持されるだけです。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="153"/>
+        <source>The canvas shows the middle in-between.</source>
+        <translation>キャンバスには中央の中割りが表示されています。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::MainWindow</name>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="123"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="147"/>
+        <source>Timeline</source>
+        <translation>タイムライン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <source>Objects</source>
+        <translation>オブジェクト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="151"/>
+        <source>&lt;opened document&gt;</source>
+        <translation>&lt;開いたドキュメント&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <source>Undo History</source>
+        <translation>操作履歴</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="188"/>
+        <source>%1, %2 px</source>
+        <translation>%1, %2 px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="199"/>
+        <source>Frame %1 / %2</source>
+        <translation>フレーム %1 / %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <source>%1 %</source>
+        <translation>%1%</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="205"/>
+        <location filename="../ui/src/main_window_files.cpp" line="303"/>
+        <source>Untitled</source>
+        <translation>無題</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window.cpp" line="206"/>
+        <source>%1[*] - Finbook</source>
+        <translation>%1[*] - Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_deform.cpp" line="35"/>
+        <source>&amp;Deform</source>
+        <translation>変形(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_deform.cpp" line="50"/>
+        <source>Deform</source>
+        <translation>変形</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_deform.cpp" line="66"/>
+        <source>Preparing the deformation…</source>
+        <translation>変形を準備しています…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="30"/>
+        <source>Finbook animations (*.finbook);;All files (*)</source>
+        <translation>Finbook アニメーション (*.finbook);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="41"/>
+        <source>Object</source>
+        <translation>オブジェクト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="76"/>
+        <location filename="../ui/src/main_window_files.cpp" line="93"/>
+        <source>Cannot Open File</source>
+        <translation>ファイルを開けません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="128"/>
+        <source>Cannot Save File</source>
+        <translation>ファイルを保存できません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="134"/>
+        <source>Saved %1</source>
+        <translation>%1 を保存しました</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="161"/>
+        <source>The folder %1 does not exist; choose an existing folder and export again.</source>
+        <translation>フォルダー %1 が存在しません。既存のフォルダーを選んで、もう一度書き出してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="175"/>
+        <source>Replace Files?</source>
+        <translation>ファイルを置き換えますか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="176"/>
+        <source>%1 already holds exported frames. Replace them?</source>
+        <translation>%1 にはすでに書き出したフレームがあります。置き換えますか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="184"/>
+        <source>Exporting frames...</source>
+        <translation>フレームを書き出しています...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="184"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="160"/>
+        <location filename="../ui/src/main_window_files.cpp" line="206"/>
+        <source>Cannot Export Frames</source>
+        <translation>フレームを書き出せません</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/main_window_files.cpp" line="100"/>
+        <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
+        <translation>
+            <numerusform>%1 の読み取れた部分を開きました（%n 件の問題を修復）。新しい名前で保存してください。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/main_window_files.cpp" line="209"/>
+        <source>Exported %n frame(s) to %1</source>
+        <translation>
+            <numerusform>%n フレームを %1 に書き出しました</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="246"/>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="255"/>
+        <source>No recent files</source>
+        <translation>最近使ったファイルはありません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="265"/>
+        <source>Cannot Import Mesh</source>
+        <translation>メッシュをインポートできません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="269"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <source>Import Mesh</source>
+        <translation>メッシュのインポート</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="291"/>
+        <source>Damaged File</source>
+        <translation>破損したファイル</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="292"/>
+        <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
+        <translation>「このまま開く」を選ぶと、まだ読み取れる部分を未保存の新しいアニメーションとして表示します。破損したファイルは変更されません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="295"/>
+        <source>Open Anyway</source>
+        <translation>このまま開く</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="305"/>
+        <source>Unsaved Changes</source>
+        <translation>未保存の変更</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="306"/>
+        <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
+        <translation>「%1」には保存されていない変更があります。続ける前に保存しますか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="312"/>
+        <source>Open Animation</source>
+        <translation>アニメーションを開く</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="318"/>
+        <source>Save Animation</source>
+        <translation>アニメーションを保存</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="319"/>
+        <source>untitled.finbook</source>
+        <translation>無題.finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_files.cpp" line="325"/>
+        <source>Export Frames to Folder</source>
+        <translation>フレームをフォルダーに書き出す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="44"/>
+        <source>File</source>
+        <translation>ファイル</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="56"/>
+        <source>&amp;File</source>
+        <translation>ファイル(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
+        <source>&amp;New</source>
+        <translation>新規(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="59"/>
+        <source>&amp;Open...</source>
+        <translation>開く(&amp;O)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="63"/>
+        <source>Open &amp;Recent</source>
+        <translation>最近使ったファイル(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="67"/>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="69"/>
+        <source>Save &amp;As...</source>
+        <translation>名前を付けて保存(&amp;A)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="71"/>
+        <source>E&amp;xport...</source>
+        <translation>書き出し(&amp;X)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="78"/>
+        <source>&amp;Import Mesh...</source>
+        <translation>メッシュをインポート(&amp;I)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <source>OFF meshes (*.off)</source>
+        <translation>OFF メッシュ (*.off)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="85"/>
+        <source>&amp;Export Frames...</source>
+        <translation>フレームを書き出す(&amp;E)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="87"/>
+        <source>&amp;Quit</source>
+        <translation>終了(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="103"/>
+        <source>&amp;Edit</source>
+        <translation>編集(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="105"/>
+        <source>&amp;Undo</source>
+        <translation>元に戻す(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
+        <source>&amp;Redo</source>
+        <translation>やり直す(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="117"/>
+        <source>Paste</source>
+        <translation>貼り付け</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="119"/>
+        <source>Cu&amp;t</source>
+        <translation>切り取り(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="121"/>
+        <source>&amp;Copy</source>
+        <translation>コピー(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="123"/>
+        <source>&amp;Paste</source>
+        <translation>貼り付け(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="131"/>
+        <source>&amp;Delete</source>
+        <translation>削除(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="134"/>
+        <source>Select &amp;All</source>
+        <translation>すべて選択(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="140"/>
+        <source>Dese&amp;lect</source>
+        <translation>選択を解除(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="147"/>
+        <source>D&amp;ocument Settings...</source>
+        <translation>ドキュメント設定(&amp;O)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="150"/>
+        <source>Pre&amp;ferences...</source>
+        <translation>環境設定(&amp;F)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="173"/>
+        <source>&amp;View</source>
+        <translation>表示(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="174"/>
+        <source>Zoom &amp;In</source>
+        <translation>ズームイン(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="176"/>
+        <source>Zoom &amp;Out</source>
+        <translation>ズームアウト(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
+        <source>&amp;Fit to Window</source>
+        <translation>ウィンドウに合わせる(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="180"/>
+        <source>&amp;Actual Size (100 %)</source>
+        <translation>実際のサイズ (100%)(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
+        <source>&amp;Onion Skin</source>
+        <translation>オニオンスキン(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="196"/>
+        <source>Onion Skin &amp;Settings...</source>
+        <translation>オニオンスキンの設定(&amp;S)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="198"/>
+        <source>Show &amp;Mesh</source>
+        <translation>メッシュを表示(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="205"/>
+        <source>&amp;Panels</source>
+        <translation>パネル(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="211"/>
+        <source>F&amp;rame</source>
+        <translation>フレーム(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="224"/>
+        <source>&amp;Object</source>
+        <translation>オブジェクト(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="234"/>
+        <source>&amp;Tools</source>
+        <translation>ツール(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="237"/>
+        <source>Tools</source>
+        <translation>ツール</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="245"/>
+        <source>&amp;Help</source>
+        <translation>ヘルプ(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>キーボードショートカット(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="248"/>
+        <source>&amp;About Finbook</source>
+        <translation>Finbook について(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="268"/>
+        <source>Onion Skin</source>
+        <translation>オニオンスキン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="292"/>
+        <source>About Finbook</source>
+        <translation>Finbook について</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="39"/>
+        <source>Undo</source>
+        <translation>元に戻す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="41"/>
+        <source>Redo</source>
+        <translation>やり直す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="45"/>
+        <source>Apply Pose</source>
+        <translation>ポーズを適用</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="47"/>
+        <source>Remove Rig</source>
+        <translation>リグを削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="49"/>
+        <source>Reset</source>
+        <translation>リセット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/main_window_toolbars.cpp" line="51"/>
+        <source>Shape</source>
+        <translation>形状</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="27"/>
+        <source>Show S&amp;keleton</source>
+        <translation>スケルトンを表示(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <source>Skeleton</source>
+        <translation>スケルトン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="41"/>
+        <source>&amp;Skinning</source>
+        <translation>スキニング(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="48"/>
+        <source>&amp;Rigid (Bones Pin the Mesh)</source>
+        <translation>剛体（ボーンがメッシュを固定）(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="50"/>
+        <source>&amp;Linear Blend</source>
+        <translation>線形ブレンド(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="62"/>
+        <source>Cannot Recover</source>
+        <translation>復元できません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="71"/>
+        <source>Recovered %1 as it was at %2; save it to keep it.</source>
+        <translation>%1 を %2 時点の状態に復元しました。残しておくには保存してください。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ObjectActions</name>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="27"/>
+        <source>&amp;New Object</source>
+        <translation>新規オブジェクト(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="29"/>
+        <source>&amp;Delete Object</source>
+        <translation>オブジェクトを削除(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="30"/>
+        <source>&amp;Merge Objects</source>
+        <translation>オブジェクトを結合(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="33"/>
+        <source>Move &amp;Selection to Object</source>
+        <translation>選択範囲をオブジェクトへ移動(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="34"/>
+        <source>Bring &amp;Forward</source>
+        <translation>前面へ(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="36"/>
+        <source>Send &amp;Backward</source>
+        <translation>背面へ(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="38"/>
+        <source>&amp;Visible</source>
+        <translation>表示(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="39"/>
+        <source>&amp;Locked</source>
+        <translation>ロック(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="42"/>
+        <source>New object above the current one</source>
+        <translation>現在のオブジェクトの上に新しいオブジェクトを作成</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="43"/>
+        <source>Merge the selected objects, or the current one into the one below</source>
+        <translation>選択したオブジェクトを結合します。選択がなければ現在のオブジェクトを下のオブジェクトに結合します</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="44"/>
+        <source>Move the selected strokes to another object</source>
+        <translation>選択したストロークを別のオブジェクトへ移動</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="46"/>
+        <source>New</source>
+        <translation>新規</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="47"/>
+        <source>Delete</source>
+        <translation>削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="48"/>
+        <source>Merge</source>
+        <translation>結合</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="49"/>
+        <source>Move To</source>
+        <translation>移動先</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="118"/>
+        <source>Object %1</source>
+        <translation>オブジェクト %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="170"/>
+        <source>Merge Objects</source>
+        <translation>オブジェクトを結合</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::OnionSkinEditor</name>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="14"/>
+        <source>Show onion skin</source>
+        <translation>オニオンスキンを表示</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="24"/>
+        <source> %</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="27"/>
+        <source>Frames before:</source>
+        <translation>前のフレーム数:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="28"/>
+        <source>Frames after:</source>
+        <translation>後のフレーム数:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="29"/>
+        <source>Opacity of the nearest frame:</source>
+        <translation>最も近いフレームの不透明度:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="30"/>
+        <source>Tint before:</source>
+        <translation>前のフレームの色:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/onion_skin_editor.cpp" line="31"/>
+        <source>Tint after:</source>
+        <translation>後のフレームの色:</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::PenTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_pen.h" line="30"/>
+        <source>Pen</source>
+        <translation>ペン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_pen.cpp" line="88"/>
+        <source>Draw Stroke</source>
+        <translation>ストロークを描画</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::PinTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="17"/>
+        <source>Pin</source>
+        <translation>ピン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/pins/tool_pin.cpp" line="156"/>
+        <source>Click on a visible, unlocked drawing to pin it.</source>
+        <translation>表示されていてロックされていない絵をクリックすると、ピンを置けます。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::PlaybackController</name>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="64"/>
+        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <source>&amp;Play</source>
+        <translation>再生(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="68"/>
+        <source>Play or pause the animation</source>
+        <translation>アニメーションを再生または一時停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="76"/>
+        <source>&amp;Loop</source>
+        <translation>ループ再生(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="80"/>
+        <source>Start again at the end of the play range</source>
+        <translation>再生範囲の最後まで来たら最初から再生</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <source>&amp;Pause</source>
+        <translation>一時停止(&amp;P)</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::PreferencesDialog</name>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="21"/>
+        <source>Preferences</source>
+        <translation>環境設定</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="25"/>
+        <source>New Documents</source>
+        <translation>新規ドキュメント</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="26"/>
+        <source>Onion Skin</source>
+        <translation>オニオンスキン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="27"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>キーボードショートカット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="42"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="48"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="55"/>
+        <source> min</source>
+        <translation> 分</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="56"/>
+        <source>Never</source>
+        <translation>しない</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="57"/>
+        <source>How often Finbook keeps a recovery copy of unsaved changes, offered at the next start if Finbook did not close normally.</source>
+        <translation>Finbook が未保存の変更から復元用のコピーを作成する間隔です。Finbook が正常に終了しなかった場合、次回の起動時に復元を提案します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="61"/>
+        <source>Frame rate:</source>
+        <translation>フレームレート:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="62"/>
+        <source>Canvas width:</source>
+        <translation>キャンバスの幅:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="63"/>
+        <source>Canvas height:</source>
+        <translation>キャンバスの高さ:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="64"/>
+        <source>Autosave every:</source>
+        <translation>自動保存の間隔:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="86"/>
+        <source>Conflicting Shortcuts</source>
+        <translation>ショートカットの競合</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/preferences_dialog.cpp" line="87"/>
+        <source>Two or more actions share a shortcut. Change or clear the shortcuts marked in red, then press OK again.</source>
+        <translation>複数の操作に同じショートカットが割り当てられています。赤で示されたショートカットを変更または消去してから、もう一度 OK を押してください。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::RecoveryDialog</name>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="17"/>
+        <source>Recover Unsaved Work</source>
+        <translation>未保存の作業を復元</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="18"/>
+        <source>Finbook did not close normally last time. It kept these copies of work that was not saved:</source>
+        <translation>前回、Finbook は正常に終了しませんでした。保存されていなかった作業の次のコピーが残っています:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="31"/>
+        <source>&amp;Restore</source>
+        <translation>復元(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="32"/>
+        <source>&amp;Discard</source>
+        <translation>破棄(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="33"/>
+        <source>&amp;Later</source>
+        <translation>後で(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="35"/>
+        <source>Open the copy as an unsaved animation</source>
+        <translation>コピーを未保存のアニメーションとして開く</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="36"/>
+        <source>Delete the copy for good</source>
+        <translation>コピーを完全に削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="37"/>
+        <source>Keep the copies and ask again at the next start</source>
+        <translation>コピーを残し、次回の起動時にもう一度確認</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="56"/>
+        <source>Untitled</source>
+        <translation>無題</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/recovery/recovery_dialog.cpp" line="58"/>
+        <source>%1 — %2 — %n frame(s)</source>
+        <translation>
+            <numerusform>%1 — %2 — %n フレーム</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SelectTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_select.h" line="28"/>
+        <source>Select</source>
+        <translation>選択</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_select.cpp" line="264"/>
+        <source>The strokes cannot be transformed that far.</source>
+        <translation>ストロークをそこまで変形することはできません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_select.cpp" line="273"/>
+        <source>Move Strokes</source>
+        <translation>ストロークを移動</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_select.cpp" line="274"/>
+        <source>Rotate Strokes</source>
+        <translation>ストロークを回転</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_select.cpp" line="275"/>
+        <source>Scale Strokes</source>
+        <translation>ストロークを拡大・縮小</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ShortcutEditor</name>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <source>Action</source>
+        <translation>操作</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <source>Shortcut</source>
+        <translation>ショートカット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <source>Alternative</source>
+        <translation>代替</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="72"/>
+        <source>Restore Defaults</source>
+        <translation>既定値に戻す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="132"/>
+        <source>%1 is used by: %2</source>
+        <translation>%1 の割り当て先: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcut_editor.cpp" line="143"/>
+        <source>Conflicting shortcuts:</source>
+        <translation>競合しているショートカット:</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ShortcutsDialog</name>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="20"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>キーボードショートカット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <source>Pan the view</source>
+        <translation>表示をスクロール</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <source>Space + drag, or middle button drag</source>
+        <translation>Space + ドラッグ、または中ボタンでドラッグ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <source>Zoom about the cursor</source>
+        <translation>カーソルを中心にズーム</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <source>Mouse wheel</source>
+        <translation>マウスホイール</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <source>Action</source>
+        <translation>操作</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <source>Shortcut</source>
+        <translation>ショートカット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shortcuts_dialog.cpp" line="53"/>
+        <source>Filter</source>
+        <translation>フィルター</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SkeletonPanel</name>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <source>Bone complexity</source>
+        <translation>ボーンの細かさ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <source>Merge junctions</source>
+        <translation>分岐点の統合</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <source>Prune branches</source>
+        <translation>枝の刈り込み</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <source>Collapse short bones</source>
+        <translation>短いボーンをまとめる</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="23"/>
+        <source>More bones follow the shape more closely</source>
+        <translation>ボーンが多いほど形状に忠実になります</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
+        <source>Junctions closer than this become one</source>
+        <translation>これより近い分岐点は 1 つにまとめます</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
+        <source>Remove side branches shorter than this</source>
+        <translation>これより短い側枝を削除します</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
+        <source>Collapse inner bones shorter than this into one joint</source>
+        <translation>これより短い内側のボーンを 1 つのジョイントにまとめます</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="42"/>
+        <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
+        <translation>ボーンツール（K）を選んでオブジェクトをクリックすると、スケルトンを作成できます。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::StrokeEraserTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="17"/>
+        <source>Stroke Eraser</source>
+        <translation>ストローク消しゴム</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_eraser.cpp" line="93"/>
+        <source>Erase</source>
+        <translation>消去</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::TimelineWidget</name>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="68"/>
+        <source>Onion Skin</source>
+        <translation>オニオンスキン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="69"/>
+        <source>Show neighbouring frames faintly while drawing</source>
+        <translation>描画中に前後のフレームを薄く表示</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="85"/>
+        <source>Before:</source>
+        <translation>前:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="86"/>
+        <source>How many earlier frames the onion skin shows</source>
+        <translation>オニオンスキンで表示する前のフレームの数</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="87"/>
+        <source>After:</source>
+        <translation>後:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="88"/>
+        <source>How many later frames the onion skin shows</source>
+        <translation>オニオンスキンで表示する後のフレームの数</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline_widget.cpp" line="119"/>
+        <source>Frame %1 of %2 · %3 fps</source>
+        <translation>フレーム %1 / %2 · %3 fps</translation>
+    </message>
+</context>
+</TS>
