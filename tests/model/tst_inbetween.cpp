@@ -2,6 +2,7 @@
 // InsertInbetweensCommand with the DeformController.
 #include "inbetween_support.h"
 
+#include <finbook/model/cage/cage_setup.h>
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/inbetween/inbetween_commands.h>
@@ -33,6 +34,51 @@ double distance(QPointF a, QPointF b)
     return std::hypot(a.x() - b.x(), a.y() - b.y());
 }
 
+QPointF pointOf(const StrokePoint &p)
+{
+    return {p.x, p.y};
+}
+
+bool allFinite(const DeformedStrokes &pose)
+{
+    for (const auto &stroke : pose.strokes)
+        for (const StrokePoint &p : stroke)
+            if (!std::isfinite(p.x) || !std::isfinite(p.y))
+                return false;
+    return true;
+}
+
+// Keys and in-betweens at `times`, solved the way the dialog's preview and the benchmark do
+// (solveInbetweenPoses with one shared setup cache). Fails the test when anything does not
+// solve.
+struct SolvedSwing {
+    std::vector<Frame> keys;
+    InbetweenPlan plan;
+    std::size_t setups = 0;
+};
+
+SolvedSwing solveSwing(const Frame &a, const Frame &b, const std::vector<double> &times)
+{
+    SolvedSwing out;
+    DeformSetupCache cache;
+    out.keys = {a, b};
+    const auto keys = solveInbetweenPoses(out.keys, {}, &cache);
+    if (!keys || *keys != 2)
+        qFatal("keys do not solve: %s", keys ? "not posed" : qPrintable(keys.error()));
+    out.plan = planInbetweens(out.keys[0], out.keys[1], times, TargetPath::Arc);
+    const auto solved = solveInbetweenPoses(out.plan.frames, {}, &cache);
+    if (!solved || *solved != int(times.size()))
+        qFatal("in-betweens do not solve: %s", solved ? "not posed" : qPrintable(solved.error()));
+    out.setups = cache.size();
+    return out;
+}
+
+// The angle (radians) of `p` seen from `pivot`.
+double angleFrom(QPointF pivot, QPointF p)
+{
+    return std::atan2(p.y() - pivot.y(), p.x() - pivot.x());
+}
+
 } // namespace
 
 class TestInbetween : public QObject {
@@ -46,6 +92,11 @@ private slots:
     void commandInsertsOneUndoStep();
     void commandRejectsBadInput();
     void skeletonAnglesTakeTheShorterArc();
+    void skeletonArmSwingKeepsItsLength_data();
+    void skeletonArmSwingKeepsItsLength();
+    void cageBendInbetweens();
+    void controllerPosesSkeletonAndCageInbetweens_data();
+    void controllerPosesSkeletonAndCageInbetweens();
 };
 
 void TestInbetween::spacingCurves()
@@ -291,6 +342,198 @@ void TestInbetween::skeletonAnglesTakeTheShorterArc()
     QCOMPARE(middle.skeleton.rootOffset, QPointF(20, -10));
     QCOMPARE(interpolateRig(first, second, 0.0, TargetPath::Arc).skeleton, first.skeleton);
     QCOMPARE(interpolateRig(first, second, 1.0, TargetPath::Arc).skeleton, second.skeleton);
+}
+
+void TestInbetween::skeletonArmSwingKeepsItsLength_data()
+{
+    QTest::addColumn<bool>("built");
+    QTest::addColumn<int>("mode");
+    QTest::newRow("three joints, rigid") << false << int(SkinningMode::Rigid);
+    QTest::newRow("three joints, linear blend") << false << int(SkinningMode::LinearBlend);
+    QTest::newRow("built, rigid") << true << int(SkinningMode::Rigid);
+    QTest::newRow("built, linear blend") << true << int(SkinningMode::LinearBlend);
+}
+
+// The figure for the skeleton: a 90° swing of the shoulder bone keeps the arm's length
+// in the middle in-between, the naive point blend loses about 30 %, and the ends are the keys.
+void TestInbetween::skeletonArmSwingKeepsItsLength()
+{
+    QFETCH(bool, built);
+    QFETCH(int, mode);
+    const SkeletonRig rest = built ? builtArmSkeleton() : armSkeleton();
+    QVERIFY(!rest.empty() && rest.isValid());
+    const auto [a, b] = skeletonArmKeys(rest, SkinningMode(mode));
+    const SolvedSwing swing = solveSwing(a, b, {0.0, 0.5, 1.0});
+    QCOMPARE(swing.plan.interpolatedCount(), 1);
+    QCOMPARE(swing.setups, std::size_t(1)); // keys and in-betweens share one skinning setup
+    const DeformedStrokes &poseA = *swing.keys[0].groups[0].deformed;
+    const DeformedStrokes &poseB = *swing.keys[1].groups[0].deformed;
+    const auto &frames = swing.plan.frames;
+
+    // t = 0 and t = 1 are the keys: the same rig, and the same solve to the bit.
+    QCOMPARE(frames[0].groups[0].rig, a.groups[0].rig);
+    QCOMPARE(frames[2].groups[0].rig.skeleton, b.groups[0].rig.skeleton);
+    QCOMPARE(*frames[0].groups[0].deformed, poseA);
+    QCOMPARE(*frames[2].groups[0].deformed, poseB);
+
+    // Half way the shoulder bone has turned half as far.
+    const SkeletonRig &half = frames[1].groups[0].rig.skeleton;
+    for (std::size_t j = 0; j < half.angles.size(); ++j)
+        QVERIFY(std::abs(half.angles[j] - b.groups[0].rig.skeleton.angles[j] / 2) < 1e-12);
+    const DeformedStrokes &middle = *frames[1].groups[0].deformed;
+    QVERIFY(allFinite(middle));
+
+    const double keyA = strokeLength(poseA), keyB = strokeLength(poseB);
+    const double resolved = strokeLength(middle);
+    const double naive = strokeLength(blendPoints(poseA, poseB, 0.5));
+    qInfo("skeleton (%s, %s): keys %.2f px and %.2f px; middle in-between %.2f px (%+.2f %%), "
+          "naive point blend %.2f px (%+.2f %%)",
+          built ? "built" : "three joints", mode ? "linear blend" : "rigid", keyA, keyB, resolved,
+          100 * (resolved / keyA - 1), naive, 100 * (naive / keyA - 1));
+    QVERIFY(std::abs(resolved / keyA - 1) < 0.02);
+    QVERIFY(std::abs(resolved / keyB - 1) < 0.02);
+    QVERIFY(naive / keyA < 0.8); // shortened by more than 20 % (cos 45° ≈ 0.71)
+
+    // The hand is half way round: 45° about the root joint, as far from it as in the keys.
+    const QPointF root = rest.joints[std::size_t(rest.root)];
+    const QPointF handA = pointOf(poseA.strokes[1].back());
+    const QPointF handB = pointOf(poseB.strokes[1].back());
+    const QPointF hand = pointOf(middle.strokes[1].back());
+    const double turnB = std::remainder(angleFrom(root, handB) - angleFrom(root, handA), 2 * M_PI);
+    const double turnMiddle =
+        std::remainder(angleFrom(root, hand) - angleFrom(root, handA), 2 * M_PI);
+    QVERIFY2(std::abs(turnB - M_PI / 2) < 2 * M_PI / 180, qPrintable(QString::number(turnB)));
+    QVERIFY2(std::abs(turnMiddle - M_PI / 4) < 2 * M_PI / 180,
+             qPrintable(QString::number(turnMiddle)));
+    QVERIFY(std::abs(distance(root, hand) / distance(root, handA) - 1) < 0.02);
+}
+
+// A cage bent at the elbow: the in-betweens are finite, the forearm swings through the bend
+// step by step, and the ends are the keys.
+void TestInbetween::cageBendInbetweens()
+{
+    const auto [a, b] = cageArmKeys(M_PI / 3);
+    QVERIFY(!cageProblem(a.groups[0], a.groups[0].rig.cage.rest));
+    const std::vector<double> times{0.0, 0.25, 0.5, 0.75, 1.0};
+    const SolvedSwing swing = solveSwing(a, b, times);
+    QCOMPARE(swing.plan.interpolatedCount(), 1);
+    QCOMPARE(swing.setups, std::size_t(1));
+    const DeformedStrokes &poseA = *swing.keys[0].groups[0].deformed;
+    const DeformedStrokes &poseB = *swing.keys[1].groups[0].deformed;
+    const auto &frames = swing.plan.frames;
+    QCOMPARE(frames[0].groups[0].rig, a.groups[0].rig);
+    QCOMPARE(frames[4].groups[0].rig.cage, b.groups[0].rig.cage);
+    QCOMPARE(*frames[0].groups[0].deformed, poseA);
+    QCOMPARE(*frames[4].groups[0].deformed, poseB);
+
+    const QPointF elbow = (kShoulder + kHand) / 2;
+    const auto tipTurn = [&](const DeformedStrokes &pose) {
+        return angleFrom(elbow, pointOf(pose.strokes[1].back())) -
+               angleFrom(elbow, pointOf(poseA.strokes[1].back()));
+    };
+    QRectF keysBox;
+    for (const DeformedStrokes *pose : {&poseA, &poseB})
+        for (const auto &stroke : pose->strokes)
+            for (const StrokePoint &p : stroke)
+                keysBox |= QRectF(pointOf(p), QSizeF(1e-9, 1e-9));
+    keysBox.adjust(-2, -2, 2, 2);
+    double previous = tipTurn(poseA);
+    for (std::size_t i = 1; i + 1 < frames.size(); ++i) {
+        const DeformedStrokes &pose = *frames[i].groups[0].deformed;
+        QVERIFY(allFinite(pose));
+        for (const auto &stroke : pose.strokes)
+            for (const StrokePoint &p : stroke)
+                QVERIFY2(keysBox.contains(pointOf(p)),
+                         qPrintable(QStringLiteral("t %1: (%2, %3) outside the keys")
+                                        .arg(times[i])
+                                        .arg(p.x)
+                                        .arg(p.y)));
+        const double turn = tipTurn(pose);
+        QVERIFY(turn > previous); // the forearm swings on, step by step
+        previous = turn;
+    }
+    QVERIFY(previous < tipTurn(poseB));
+    // Corners that stay put in both keys stay put in between; report how far they drift.
+    const auto &restCorners = a.groups[0].rig.cage.rest;
+    const auto &middleCorners = frames[2].groups[0].rig.cage.posed;
+    double drift = 0;
+    for (std::size_t i = 0; i < restCorners.size(); ++i)
+        if (restCorners[i] == b.groups[0].rig.cage.posed[i])
+            drift = std::max(drift, distance(middleCorners[i], restCorners[i]));
+    const double middleTurn = tipTurn(*frames[2].groups[0].deformed);
+    qInfo("cage bend %.1f°: forearm tip turned %.2f° half way; still corners drift %.3f px",
+          tipTurn(poseB) * 180 / M_PI, middleTurn * 180 / M_PI, drift);
+}
+
+void TestInbetween::controllerPosesSkeletonAndCageInbetweens_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<int>("mode");
+    QTest::newRow("skeleton, rigid") << int(RigKind::Skeleton) << int(SkinningMode::Rigid);
+    QTest::newRow("skeleton, linear blend")
+        << int(RigKind::Skeleton) << int(SkinningMode::LinearBlend);
+    QTest::newRow("cage") << int(RigKind::Cage) << 0;
+}
+
+// The app's path: Generate In-betweens pushes InsertInbetweensCommand and the DeformController
+// poses the new frames; they match the synchronous solve, and undo/redo restore the document.
+void TestInbetween::controllerPosesSkeletonAndCageInbetweens()
+{
+    QFETCH(int, kind);
+    QFETCH(int, mode);
+    const auto [a, b] = RigKind(kind) == RigKind::Skeleton
+                            ? skeletonArmKeys(armSkeleton(), SkinningMode(mode))
+                            : cageArmKeys();
+    Document doc;
+    doc.reset({a, b}, {}, 100);
+    DeformController controller(&doc);
+    const auto posed = [&] {
+        return std::all_of(doc.frames().begin(), doc.frames().end(), [&](const Frame &f) {
+            // Not the cage's stand-in (a similarity shown while its coordinates are on the way).
+            const Id id = f.groups[0].id;
+            return f.groups[0].deformed && !controller.isWaiting(id) && !controller.isSettling(id);
+        });
+    };
+    // The keys posed as the user left them (the controller prepares an object when it is
+    // edited or shown; a reopened file carries the poses).
+    controller.prepare(a.groups[0].id);
+    controller.prepare(b.groups[0].id);
+    QTRY_VERIFY_WITH_TIMEOUT(posed(), 20000);
+    const QByteArray before = serializeFinbook(doc);
+    auto *command = new InsertInbetweensCommand(&doc, a.id, b.id, 5, {});
+    QCOMPARE(command->plan().interpolatedCount(), 1);
+    doc.undoStack()->push(command);
+    QCOMPARE(doc.frameCount(), 7);
+    QTRY_VERIFY_WITH_TIMEOUT(posed(), 20000);
+    controller.settle();
+
+    const SolvedSwing swing = solveSwing(a, b, command->plan().times);
+    for (int i = 0; i < 5; ++i) {
+        const StrokeGroup &g = doc.frameAt(1 + i).groups[0];
+        QCOMPARE(g.rig.kind(), RigKind(kind));
+        QCOMPARE(g.rig, swing.plan.frames[std::size_t(i)].groups[0].rig);
+        QVERIFY(allFinite(*g.deformed));
+        const DeformedStrokes &expected = *swing.plan.frames[std::size_t(i)].groups[0].deformed;
+        double worst = 0;
+        for (std::size_t s = 0; s < expected.strokes.size(); ++s)
+            for (std::size_t k = 0; k < expected.strokes[s].size(); ++k)
+                worst = std::max(worst, distance(pointOf(g.deformed->strokes[s][k]),
+                                                 pointOf(expected.strokes[s][k])));
+        QVERIFY2(worst < 1e-3, qPrintable(QStringLiteral("in-between %1: %2 px from the "
+                                                         "synchronous solve")
+                                              .arg(i + 1)
+                                              .arg(worst)));
+    }
+    if (RigKind(kind) == RigKind::Skeleton) {
+        const double keyLength = strokeLength(*swing.keys[0].groups[0].deformed);
+        QVERIFY(std::abs(strokeLength(*doc.frameAt(3).groups[0].deformed) / keyLength - 1) < 0.02);
+    }
+    const QByteArray after = serializeFinbook(doc);
+    doc.undoStack()->undo();
+    QCOMPARE(doc.frameCount(), 2);
+    QCOMPARE(serializeFinbook(doc), before);
+    doc.undoStack()->redo();
+    QCOMPARE(serializeFinbook(doc), after);
 }
 
 QTEST_MAIN(TestInbetween)
