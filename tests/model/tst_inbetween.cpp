@@ -95,6 +95,8 @@ private slots:
     void skeletonArmSwingKeepsItsLength_data();
     void skeletonArmSwingKeepsItsLength();
     void cageBendInbetweens();
+    void skeletonAnglesLeftOutCountAsRest();
+    void mismatchedSkeletonsAreHeld();
     void controllerPosesSkeletonAndCageInbetweens_data();
     void controllerPosesSkeletonAndCageInbetweens();
 };
@@ -463,6 +465,60 @@ void TestInbetween::cageBendInbetweens()
     const double middleTurn = tipTurn(*frames[2].groups[0].deformed);
     qInfo("cage bend %.1f°: forearm tip turned %.2f° half way; still corners drift %.3f px",
           tipTurn(poseB) * 180 / M_PI, middleTurn * 180 / M_PI, drift);
+}
+
+// Regression: a skeleton key that leaves its angles out (valid: empty = at rest) against a
+// posed one was held from the first key instead of interpolated, because the angle counts
+// differed.
+void TestInbetween::skeletonAnglesLeftOutCountAsRest()
+{
+    auto [a, b] = skeletonArmKeys(armSkeleton(), SkinningMode::Rigid);
+    a.groups[0].rig.skeleton.angles.clear();
+    QVERIFY(a.groups[0].rig.skeleton.isValid());
+    QVERIFY(canInterpolateRigs(a.groups[0].rig, b.groups[0].rig));
+    QVERIFY(canInterpolateRigs(b.groups[0].rig, a.groups[0].rig));
+    const Rig half = interpolateRig(a.groups[0].rig, b.groups[0].rig, 0.5, TargetPath::Arc);
+    QCOMPARE(half.skeleton.angles, (std::vector<double>{0.0, M_PI / 4, 0.0}));
+    const Rig back = interpolateRig(b.groups[0].rig, a.groups[0].rig, 0.5, TargetPath::Arc);
+    QCOMPARE(back.skeleton.angles, (std::vector<double>{0.0, M_PI / 4, 0.0}));
+    QCOMPARE(interpolateRig(a.groups[0].rig, b.groups[0].rig, 0.0, TargetPath::Arc),
+             a.groups[0].rig);
+
+    const SolvedSwing swing = solveSwing(a, b, {0.0, 0.5, 1.0});
+    QCOMPARE(swing.plan.objects[0].fate, ObjectFate::Interpolated);
+    QCOMPARE(*swing.plan.frames[0].groups[0].deformed, *swing.keys[0].groups[0].deformed);
+    QCOMPARE(*swing.plan.frames[2].groups[0].deformed, *swing.keys[1].groups[0].deformed);
+    const DeformedStrokes &middle = *swing.plan.frames[1].groups[0].deformed;
+    QVERIFY(std::abs(strokeLength(middle) / strokeLength(*swing.keys[0].groups[0].deformed) - 1) <
+            0.02);
+
+    // A malformed angle list (neither empty nor one per joint) is still not interpolated.
+    b.groups[0].rig.skeleton.angles.pop_back();
+    QVERIFY(!canInterpolateRigs(a.groups[0].rig, b.groups[0].rig));
+}
+
+// Skeletons that differ in their rest bones or skinning mode are held from the first key,
+// with its pose; the plan says so.
+void TestInbetween::mismatchedSkeletonsAreHeld()
+{
+    for (int variant = 0; variant < 2; ++variant) {
+        auto [a, b] = skeletonArmKeys(armSkeleton(), SkinningMode::Rigid);
+        if (variant == 0)
+            b.groups[0].rig.skeleton.mode = SkinningMode::LinearBlend;
+        else
+            b.groups[0].rig.skeleton.joints[1] += QPointF(0, 1);
+        std::vector<Frame> keys{a, b};
+        QCOMPARE(*solveInbetweenPoses(keys), 2);
+        auto plan = planInbetweens(keys[0], keys[1], {0.25, 0.75}, TargetPath::Arc);
+        QCOMPARE(plan.objects[0].fate, ObjectFate::HeldRigDiffers);
+        QCOMPARE(plan.objects[0].rig, RigKind::Skeleton);
+        QCOMPARE(plan.interpolatedCount(), 0);
+        for (const Frame &f : plan.frames) {
+            QCOMPARE(f.groups[0].rig, keys[0].groups[0].rig);
+            QCOMPARE(f.groups[0].deformed, keys[0].groups[0].deformed);
+        }
+        QCOMPARE(*solveInbetweenPoses(plan.frames), 0); // nothing left to solve
+    }
 }
 
 void TestInbetween::controllerPosesSkeletonAndCageInbetweens_data()

@@ -88,14 +88,25 @@ std::vector<QPointF> targetsOf(const std::vector<Pin> &pins)
     return out;
 }
 
+// A skeleton's pose may leave its angles out (empty = all zero, at rest); otherwise one per
+// joint.
+bool anglesFit(const SkeletonRig &s)
+{
+    return s.angles.empty() || s.angles.size() == s.joints.size();
+}
+
+double angleAt(const SkeletonRig &s, std::size_t joint)
+{
+    return joint < s.angles.size() ? s.angles[joint] : 0.0;
+}
+
 } // namespace
 
 bool canInterpolateRigs(const Rig &first, const Rig &second)
 {
     return !first.empty() && sameRestDefinition(first, second) &&
-           first.cage.posed.size() == second.cage.posed.size() &&
-           first.skeleton.angles.size() == second.skeleton.angles.size() &&
-           first.skeleton.mode == second.skeleton.mode;
+           first.cage.posed.size() == second.cage.posed.size() && anglesFit(first.skeleton) &&
+           anglesFit(second.skeleton) && first.skeleton.mode == second.skeleton.mode;
 }
 
 std::vector<QPointF> interpolateTargets(const std::vector<QPointF> &first,
@@ -134,8 +145,9 @@ Rig interpolateRig(const Rig &first, const Rig &second, double t, TargetPath pat
             out.skeleton = second.skeleton;
             break;
         }
+        out.skeleton.angles.resize(out.skeleton.joints.size());
         for (std::size_t j = 0; j < out.skeleton.angles.size(); ++j) {
-            const double a = first.skeleton.angles[j], b = second.skeleton.angles[j];
+            const double a = angleAt(first.skeleton, j), b = angleAt(second.skeleton, j);
             const double turn = std::remainder(b - a, 2.0 * M_PI);
             out.skeleton.angles[j] = a + t * turn;
         }

@@ -19,7 +19,9 @@ namespace finbook::model {
 enum class TargetPath { Arc, Straight };
 
 // Whether two keys' rigs can be interpolated: same kind, same rest definition (pins by rest
-// position and order, cage rest corners). Targets and pin ids may differ; empty rigs cannot.
+// position and order, cage rest corners, skeleton rest joints and parents) and, for a
+// skeleton, the same skinning mode. Targets and pin ids may differ; a skeleton's angles may be
+// left out in either key (empty = at rest). Empty rigs cannot be interpolated.
 bool canInterpolateRigs(const Rig &first, const Rig &second);
 
 // Target positions at t for two sets of the same size (and order). t <= 0 gives `first`
@@ -29,7 +31,9 @@ std::vector<QPointF> interpolateTargets(const std::vector<QPointF> &first,
                                         TargetPath path);
 
 // The rig at t: `first`'s rest definition and pin ids, targets between the keys' (see
-// interpolateTargets). Needs canInterpolateRigs(first, second); otherwise returns `first`.
+// interpolateTargets); a skeleton's joint angles along the shorter arc (one per joint), its
+// root offset along the line. t <= 0 (or NaN) gives `first`, t >= 1 `second`'s targets, exactly.
+// Needs canInterpolateRigs(first, second); otherwise returns `first`.
 Rig interpolateRig(const Rig &first, const Rig &second, double t, TargetPath path);
 
 } // namespace finbook::model
