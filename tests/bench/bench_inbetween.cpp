@@ -179,15 +179,24 @@ int benchCageArm()
             const QPointF d = plan.frames[0].groups[0].rig.cage.posed[i] - rest[i];
             drift = std::max(drift, std::hypot(d.x(), d.y()));
         }
+    const DeformedStrokes &poseA = *keys[0].groups[0].deformed;
+    const DeformedStrokes &poseB = *keys[1].groups[0].deformed;
+    const double keyA = strokeLength(poseA), keyB = strokeLength(poseB);
+    const double keyMean = (keyA + keyB) / 2;
+    const double resolved = strokeLength(*plan.frames[0].groups[0].deformed);
+    const double naive = strokeLength(blendPoints(poseA, poseB, 0.5));
     InbetweenTimes times;
     if (!timeInbetweens(a, b, times))
         return 1;
     std::printf("{\"bench\":\"inbetween\",\"case\":\"arm_bend_60_cage\",\"corners\":%zu,"
+                "\"key_length_px\":[%.2f,%.2f],\"middle_resolved_change_pct\":%.2f,"
+                "\"middle_naive_blend_change_pct\":%.2f,"
                 "\"vertices\":%lld,\"key_tip_turn_deg\":%.2f,\"middle_tip_turn_deg\":%.2f,"
                 "\"middle_still_corner_drift_px\":%.3f,\"keys_precompute_ms\":%.1f,"
                 "\"sync_24_inbetweens_ms\":%.2f,\"app_path_24_inbetweens_ms\":%.2f}\n",
-                rest.size(), times.vertices, turnB, turnMiddle, drift, times.keysPrecomputeMs,
-                times.syncMs, times.appMs);
+                rest.size(), keyA, keyB, 100 * (resolved / keyMean - 1),
+                100 * (naive / keyMean - 1), times.vertices, turnB, turnMiddle, drift,
+                times.keysPrecomputeMs, times.syncMs, times.appMs);
     return 0;
 }
 

@@ -463,8 +463,13 @@ void TestInbetween::cageBendInbetweens()
         if (restCorners[i] == b.groups[0].rig.cage.posed[i])
             drift = std::max(drift, distance(middleCorners[i], restCorners[i]));
     const double middleTurn = tipTurn(*frames[2].groups[0].deformed);
-    qInfo("cage bend %.1f°: forearm tip turned %.2f° half way; still corners drift %.3f px",
-          tipTurn(poseB) * 180 / M_PI, middleTurn * 180 / M_PI, drift);
+    const double keyLength = strokeLength(poseA);
+    const double middleLength = strokeLength(*frames[2].groups[0].deformed);
+    const double naiveLength = strokeLength(blendPoints(poseA, poseB, 0.5));
+    qInfo("cage bend %.1f°: forearm tip turned %.2f° half way; still corners drift %.3f px; arm "
+          "length keys %.2f / %.2f px, middle %.2f px, naive point blend %.2f px",
+          tipTurn(poseB) * 180 / M_PI, middleTurn * 180 / M_PI, drift, keyLength,
+          strokeLength(poseB), middleLength, naiveLength);
 }
 
 // Regression: a skeleton key that leaves its angles out (valid: empty = at rest) against a
