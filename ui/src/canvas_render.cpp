@@ -123,7 +123,17 @@ void CanvasWidget::updateCanvasRect(const QRectF &canvasRect)
         update();
         return;
     }
-    update(canvasToWidget().mapRect(canvasRect).toAlignedRect().adjusted(-2, -2, 2, 2));
+    // Clipped to the widget in floating point first: a stroke at 1e30 px (a tablet or a file
+    // can give one) must not overflow QRect's int coordinates.
+    const QRectF mapped = canvasToWidget().mapRect(canvasRect);
+    if (!std::isfinite(mapped.left()) || !std::isfinite(mapped.top()) ||
+        !std::isfinite(mapped.width()) || !std::isfinite(mapped.height())) {
+        update();
+        return;
+    }
+    const QRectF visible = mapped.adjusted(-2, -2, 2, 2) & QRectF(rect());
+    if (!visible.isEmpty())
+        update(visible.toAlignedRect());
 }
 
 QRectF CanvasWidget::pageRect() const
