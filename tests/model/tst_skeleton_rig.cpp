@@ -1,5 +1,7 @@
 // Skeletons in the model: building, refining and posing as undoable commands, the skinning
 // precompute through the deform controller, and the "SKEL" file chunk.
+#include "random_edits.h"
+
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
@@ -13,6 +15,7 @@
 #include <QtEndian>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 using namespace finbook;
@@ -123,6 +126,7 @@ private slots:
     void deleteRootPicksANewRoot();
     void jointEditsNeedAnUnposedSkeleton();
     void movingAJointReprecomputes();
+    void randomSkeletonEditsUndoExactly();
 };
 
 void TestSkeletonRig::buildGivesValidRestSkeleton()
@@ -712,6 +716,45 @@ void TestSkeletonRig::movingAJointReprecomputes()
     doc.undoStack()->push(new MoveJointCommand(&doc, g, bone, from + QPointF(3, 3), 8));
     doc.undoStack()->push(new MoveJointCommand(&doc, g, bone, from + QPointF(0, -20), 8));
     QCOMPARE(doc.undoStack()->count(), count + 1);
+}
+
+// Random skeleton edits (with some other edits between them) on one object: undo all gives
+// the start bytes, redo all the end bytes, and every step leaves a valid skeleton.
+void TestSkeletonRig::randomSkeletonEditsUndoExactly()
+{
+    QRandomGenerator rng(20261123u);
+    std::map<QString, int> applied;
+    for (int seq = 0; seq < 1500; ++seq) {
+        Document doc;
+        const Id g = makeElbow(doc);
+        const QByteArray start = serializeFinbook(doc);
+        const int length = 1 + int(rng.bounded(30));
+        for (int i = 0; i < length; ++i) {
+            auto command = rng.bounded(5) ? finbook::testing::randomSkeletonCommand(doc, g, rng)
+                                          : finbook::testing::randomCommand(doc, rng);
+            doc.undoStack()->push(command.release());
+            if (const StrokeGroup *group = doc.group(g))
+                QVERIFY(group->rig.skeleton.isValid());
+        }
+        for (int i = 0; i < doc.undoStack()->count(); ++i)
+            ++applied[doc.undoStack()->command(i)->text()];
+        const QByteArray end = serializeFinbook(doc);
+        while (doc.undoStack()->canUndo())
+            doc.undoStack()->undo();
+        if (serializeFinbook(doc) != start)
+            QFAIL(qPrintable(QStringLiteral("undo-all differs: sequence %1").arg(seq)));
+        while (doc.undoStack()->canRedo())
+            doc.undoStack()->redo();
+        if (serializeFinbook(doc) != end)
+            QFAIL(qPrintable(QStringLiteral("redo-all differs: sequence %1").arg(seq)));
+    }
+    // Every kind of skeleton edit was really exercised, not refused every time.
+    for (const char *text :
+         {"Build Skeleton", "Pose Bones", "Lock Joint", "Unlock Joint", "Reset Bone Pose",
+          "Reset Pose", "Move Joint", "Insert Joint", "Delete Joint", "Change Skinning"}) {
+        QVERIFY2(applied[QString::fromLatin1(text)] > 20, text);
+        qInfo("%s: %d", text, applied[QString::fromLatin1(text)]);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestSkeletonRig)
