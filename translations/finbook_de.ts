@@ -1586,47 +1586,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="84"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="85"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="87"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="88"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="90"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="91"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="111"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="113"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="150"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="152"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="164"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="173"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="212"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="221"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="288"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="297"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="295"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="304"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -3343,12 +3343,12 @@
 <context>
     <name>finbook::ui::StrokeEraserTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
         <source>Stroke Eraser</source>
         <translation>Strich-Radierer</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="93"/>
+        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
         <source>Erase</source>
         <translation>Radieren</translation>
     </message>

@@ -1586,47 +1586,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="84"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="85"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="87"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="88"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="90"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="91"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="111"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="113"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="150"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="152"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="164"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="173"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="212"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="221"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="288"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="297"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="295"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="304"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -3343,12 +3343,12 @@
 <context>
     <name>finbook::ui::StrokeEraserTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
         <source>Stroke Eraser</source>
         <translation>Gomme à traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="93"/>
+        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
         <source>Erase</source>
         <translation>Effacer</translation>
     </message>

@@ -1582,47 +1582,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="84"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="85"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="87"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="88"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="90"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="91"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="111"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="113"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="150"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="152"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="164"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="173"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="212"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="221"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="288"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="297"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="295"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="304"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -3334,12 +3334,12 @@
 <context>
     <name>finbook::ui::StrokeEraserTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
         <source>Stroke Eraser</source>
         <translation>ストローク消しゴム</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="93"/>
+        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
         <source>Erase</source>
         <translation>消去</translation>
     </message>

@@ -7,6 +7,8 @@
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/skeleton/skeleton_overlay.h>
 #include <finbook/ui/skeleton/tool_bone.h>
+#include <finbook/ui/stroke_editing.h>
+#include <finbook/ui/tool_eraser.h>
 
 #include <QElapsedTimer>
 #include <QMenu>
@@ -151,6 +153,10 @@ private slots:
     void editJointsMovesAJoint();
     void editJointsInsertsAndDeletes();
     void editJointsRefusesAPosedSkeleton();
+    void skeletonFollowsTheDrawingWhenShown();
+    void skeletonStaysWhenHiddenOrPosed();
+    void erasingEverythingRemovesTheSkeleton();
+    void erasingALimbRebuildsTheSkeleton();
 };
 
 void TestBoneTool::clickBuildsThenDragTurnsABone()
@@ -450,6 +456,111 @@ void TestBoneTool::editJointsRefusesAPosedSkeleton()
     fx.drag(tip, tip + QPointF(10, 10));
     QCOMPARE(fx.doc.undoStack()->count(), count);
     QCOMPARE(fx.skeleton(), posed);
+}
+
+namespace {
+// A band of strokes lengthening the upper arm to the left.
+std::vector<StrokeDataPtr> longerArm()
+{
+    std::vector<StrokeDataPtr> band;
+    for (int k = 0; k <= 6; ++k)
+        band.push_back(line({20, 200 + 5.0 * k}, {170, 200 + 5.0 * k}));
+    return band;
+}
+
+double leftmostJoint(const SkeletonRig &s)
+{
+    double x = 1e9;
+    for (const QPointF &p : s.joints)
+        x = std::min(x, p.x());
+    return x;
+}
+} // namespace
+
+void TestBoneTool::skeletonFollowsTheDrawingWhenShown()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    fx.overlay->setShown(true);
+    const SkeletonRig before = fx.skeleton();
+    QVERIFY(leftmostJoint(before) > 120);
+    const QByteArray start = serializeFinbook(fx.doc);
+    const int count = fx.doc.undoStack()->count();
+    QVERIFY(StrokeEditing::addStrokes(fx.state, longerArm(), QStringLiteral("Draw Stroke")));
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1); // strokes and skeleton: one step
+    const SkeletonRig &after = fx.skeleton();
+    QVERIFY(after.isValid());
+    QVERIFY2(leftmostJoint(after) < 60, qPrintable(QString::number(leftmostJoint(after))));
+    QCOMPARE(after.settings, before.settings);
+    QCOMPARE(after.mode, before.mode);
+    // The rebuild is what the builder gives for the new drawing, root near the old root.
+    auto expected =
+        buildSkeletonRig(fx.object(), before.settings, before.joints[std::size_t(before.root)]);
+    QVERIFY(expected);
+    QCOMPARE(after, *expected);
+    const QByteArray end = serializeFinbook(fx.doc);
+    fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), start);
+    fx.doc.undoStack()->redo();
+    QCOMPARE(serializeFinbook(fx.doc), end);
+}
+
+void TestBoneTool::skeletonStaysWhenHiddenOrPosed()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    const SkeletonRig before = fx.skeleton();
+    QVERIFY(StrokeEditing::addStrokes(fx.state, longerArm(), QStringLiteral("Draw Stroke")));
+    QCOMPARE(fx.skeleton(), before); // Show Skeleton is off
+    fx.doc.undoStack()->undo();
+    // Posed: the pose becomes the drawing (as for any rest edit), the bones are not rebuilt.
+    fx.overlay->setShown(true);
+    QVERIFY(fx.waitReady());
+    const QPointF root = before.joints[std::size_t(before.root)];
+    fx.drag(root, root + QPointF(15, 5));
+    QVERIFY(fx.skeleton().isPosed());
+    const SkeletonRig rebased = fx.skeleton().rebased();
+    QVERIFY(StrokeEditing::addStrokes(fx.state, longerArm(), QStringLiteral("Draw Stroke")));
+    QCOMPARE(fx.skeleton().joints, rebased.joints);
+    QCOMPARE(fx.skeleton().parent, rebased.parent);
+}
+
+void TestBoneTool::erasingEverythingRemovesTheSkeleton()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    fx.overlay->setShown(true);
+    const QByteArray start = serializeFinbook(fx.doc);
+    StrokeEditing::selectAll(fx.state);
+    QVERIFY(StrokeEditing::deleteSelection(fx.state));
+    QVERIFY(fx.object().strokes.empty());
+    QVERIFY(fx.object().rig.empty());
+    fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), start);
+}
+
+void TestBoneTool::erasingALimbRebuildsTheSkeleton()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    fx.overlay->setShown(true);
+    const auto lowest = [&fx] {
+        double y = -1e9;
+        for (const QPointF &p : fx.skeleton().joints)
+            y = std::max(y, p.y());
+        return y;
+    };
+    QVERIFY(lowest() > 400); // the forearm has bones
+    const QByteArray start = serializeFinbook(fx.doc);
+    const int count = fx.doc.undoStack()->count();
+    auto *eraser = fx.canvas.addTool(std::make_unique<StrokeEraserTool>());
+    fx.canvas.setCurrentTool(eraser->id());
+    fx.drag({380, 420}, {490, 420}); // across every forearm stroke
+    QCOMPARE(fx.object().strokes.size(), std::size_t(7));
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1); // the erase and the rebuild
+    QVERIFY2(lowest() < 260, qPrintable(QString::number(lowest())));
+    fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), start);
 }
 
 QTEST_MAIN(TestBoneTool)

@@ -74,6 +74,7 @@ void SkeletonOverlay::setShown(bool shown)
     if (shown == m_shown)
         return;
     m_shown = shown;
+    m_state->setShowSkeleton(shown);
     m_canvas->update();
     emit shownChanged(shown);
 }
