@@ -154,24 +154,54 @@
         <translation>Pose auf Zeichnung anwenden</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="52"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="78"/>
         <source>Build Skeleton</source>
         <translation>Skelett erstellen</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="63"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="89"/>
         <source>Change Skeleton Settings</source>
         <translation>Skeletteinstellungen ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="88"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="114"/>
         <source>Pose Bones</source>
         <translation>Knochen posieren</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="97"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="123"/>
         <source>Change Skinning</source>
         <translation>Skinning ändern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <source>Lock Joint</source>
+        <translation>Gelenk sperren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <source>Unlock Joint</source>
+        <translation>Gelenk entsperren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="167"/>
+        <source>Reset Bone Pose</source>
+        <translation>Knochenpose zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="179"/>
+        <source>Move Joint</source>
+        <translation>Gelenk verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="202"/>
+        <source>Insert Joint</source>
+        <translation>Gelenk einfügen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="215"/>
+        <source>Delete Joint</source>
+        <translation>Gelenk löschen</translation>
     </message>
 </context>
 <context>
@@ -439,9 +469,43 @@
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen.</translation>
     </message>
     <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="26"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="89"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="131"/>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="19"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>Das Skelett ist beschädigt; erstellen Sie es neu.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="28"/>
+        <source>Reset the pose or apply it to the drawing before editing joints.</source>
+        <translation>Setzen Sie die Pose zurück oder wenden Sie sie auf die Zeichnung an, bevor Sie Gelenke bearbeiten.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="30"/>
+        <source>There is no such joint.</source>
+        <translation>Dieses Gelenk gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="47"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="61"/>
+        <source>A joint cannot go there.</source>
+        <translation>Dorthin kann kein Gelenk.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="59"/>
+        <source>A joint can only be inserted on a bone.</source>
+        <translation>Ein Gelenk kann nur auf einem Knochen eingefügt werden.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="66"/>
+        <source>The bone is too short to split.</source>
+        <translation>Der Knochen ist zu kurz zum Teilen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="98"/>
+        <source>A skeleton needs at least one bone.</source>
+        <translation>Ein Skelett braucht mindestens einen Knochen.</translation>
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="30"/>
@@ -781,27 +845,27 @@
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="197"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="241"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>die Sicherungskopie „%1“ kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="244"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="288"/>
         <source>the disk is full</source>
         <translation>der Datenträger ist voll</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="246"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="290"/>
         <source>the disk is read-only</source>
         <translation>der Datenträger ist schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="248"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
         <source>you do not have permission to write in the folder &quot;%1&quot;</source>
         <translation>Sie haben keine Schreibberechtigung für den Ordner „%1“</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="251"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="295"/>
         <source>the folder &quot;%1&quot; does not exist</source>
         <translation>der Ordner „%1“ existiert nicht</translation>
     </message>
@@ -1391,49 +1455,54 @@
         <translation>eine Pose</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="22"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="24"/>
         <source>the skeleton</source>
         <translation>das Skelett</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="25"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="27"/>
         <source>its skeleton has no joints</source>
         <translation>sein Skelett hat keine Gelenke</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="32"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="34"/>
         <source>skeleton joint %1 has a non-finite value</source>
         <translation>Skelettgelenk %1 hat einen nicht endlichen Wert</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="39"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="41"/>
         <source>skeleton joint %1 has a negative radius</source>
         <translation>Skelettgelenk %1 hat einen negativen Radius</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="43"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="45"/>
         <source>skeleton joint %1 has an invalid parent</source>
         <translation>Skelettgelenk %1 hat ein ungültiges Elterngelenk</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="48"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="50"/>
         <source>the skeleton&apos;s root is not a root joint</source>
         <translation>die Wurzel des Skeletts ist kein Wurzelgelenk</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="49"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="51"/>
         <source>the skeleton&apos;s pose has a non-finite value</source>
         <translation>die Pose des Skeletts hat einen nicht endlichen Wert</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="52"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="54"/>
         <source>a skeleton setting is outside 0 to 1</source>
         <translation>eine Skeletteinstellung liegt nicht zwischen 0 und 1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="62"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="64"/>
         <source>the skeleton has an unknown skinning mode</source>
         <translation>das Skelett hat einen unbekannten Skinning-Modus</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="73"/>
+        <source>skeleton joint %1 has an unknown lock state</source>
+        <translation>Skelettgelenk %1 hat einen unbekannten Sperrzustand</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
@@ -1517,47 +1586,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="84"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="85"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="87"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="88"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="90"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="91"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="111"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="113"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="150"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="152"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="164"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="173"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="212"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="221"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="288"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="297"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="295"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="304"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -1578,7 +1647,7 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="24"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="32"/>
         <source>Bone</source>
         <translation>Knochen</translation>
     </message>
@@ -1593,14 +1662,59 @@
         <translation>Das Objekt ist mit einem anderen Verformer posiert. Beim Erstellen eines Skeletts wird diese Pose verworfen. Trotzdem erstellen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="218"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="195"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um ihr ein Skelett zu geben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="225"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="202"/>
+        <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
+        <translation>Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen; Rechtsklick auf ein Gelenk löscht es.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="205"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
         <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um daran zu ziehen, die Wurzel, um das Objekt zu verschieben; Alt-Klick auf ein Gelenk sperrt es.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="80"/>
+        <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
+        <translation>Gelenke bearbeiten: Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="95"/>
+        <source>Reset the pose or apply it to the drawing before editing joints.</source>
+        <translation>Setzen Sie die Pose zurück oder wenden Sie sie auf die Zeichnung an, bevor Sie Gelenke bearbeiten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <source>Unlock Joint</source>
+        <translation>Gelenk entsperren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <source>Lock Joint</source>
+        <translation>Gelenk sperren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="159"/>
+        <source>Reset Bone Pose</source>
+        <translation>Knochenpose zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <source>Edit Joints</source>
+        <translation>Gelenke bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <source>Insert Joint Here</source>
+        <translation>Gelenk hier einfügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="169"/>
+        <source>Delete Joint</source>
+        <translation>Gelenk löschen</translation>
     </message>
 </context>
 <context>
@@ -2704,27 +2818,47 @@
         <translation>Form</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="27"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="28"/>
+        <source>Reset &amp;Bone Pose</source>
+        <translation>K&amp;nochenpose zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="29"/>
+        <source>Turn the bone selected with the Bone tool back to rest; the bones below it keep their bends</source>
+        <translation>Den mit dem Knochenwerkzeug gewählten Knochen in die Ruhelage zurückdrehen; die Knochen darunter behalten ihre Beugung</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <source>&amp;Edit Joints</source>
+        <translation>&amp;Gelenke bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="35"/>
+        <source>With the Bone tool, move, insert and delete the joints of an unposed skeleton instead of posing it</source>
+        <translation>Mit dem Knochenwerkzeug die Gelenke eines unverformten Skeletts verschieben, einfügen und löschen, statt es zu posieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="55"/>
         <source>Show S&amp;keleton</source>
         <translation>&amp;Skelett anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="61"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="41"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="69"/>
         <source>&amp;Skinning</source>
         <translation>S&amp;kinning</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="48"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="76"/>
         <source>&amp;Rigid (Bones Pin the Mesh)</source>
         <translation>&amp;Starr (Knochen fixieren das Netz)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="50"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="78"/>
         <source>&amp;Linear Blend</source>
         <translation>&amp;Lineare Überblendung</translation>
     </message>
@@ -3209,12 +3343,12 @@
 <context>
     <name>finbook::ui::StrokeEraserTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
         <source>Stroke Eraser</source>
         <translation>Strich-Radierer</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="93"/>
+        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
         <source>Erase</source>
         <translation>Radieren</translation>
     </message>

@@ -154,24 +154,54 @@
         <translation>Appliquer la pose au dessin</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="52"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="78"/>
         <source>Build Skeleton</source>
         <translation>Construire le squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="63"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="89"/>
         <source>Change Skeleton Settings</source>
         <translation>Modifier les réglages du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="88"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="114"/>
         <source>Pose Bones</source>
         <translation>Poser les os</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="97"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="123"/>
         <source>Change Skinning</source>
         <translation>Modifier l&apos;habillage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <source>Lock Joint</source>
+        <translation>Verrouiller l’articulation</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <source>Unlock Joint</source>
+        <translation>Déverrouiller l’articulation</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="167"/>
+        <source>Reset Bone Pose</source>
+        <translation>Réinitialiser la pose de l’os</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="179"/>
+        <source>Move Joint</source>
+        <translation>Déplacer l’articulation</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="202"/>
+        <source>Insert Joint</source>
+        <translation>Insérer une articulation</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="215"/>
+        <source>Delete Joint</source>
+        <translation>Supprimer l’articulation</translation>
     </message>
 </context>
 <context>
@@ -439,9 +469,43 @@
         <translation>Impossible de construire un squelette pour ce dessin.</translation>
     </message>
     <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="26"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="89"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="131"/>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="19"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>Le squelette est endommagé&#xa0;; reconstruisez-le.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="28"/>
+        <source>Reset the pose or apply it to the drawing before editing joints.</source>
+        <translation>Réinitialisez la pose ou appliquez-la au dessin avant de modifier les articulations.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="30"/>
+        <source>There is no such joint.</source>
+        <translation>Cette articulation n’existe pas.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="47"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="61"/>
+        <source>A joint cannot go there.</source>
+        <translation>Une articulation ne peut pas aller là.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="59"/>
+        <source>A joint can only be inserted on a bone.</source>
+        <translation>Une articulation ne peut être insérée que sur un os.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="66"/>
+        <source>The bone is too short to split.</source>
+        <translation>L’os est trop court pour être divisé.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="98"/>
+        <source>A skeleton needs at least one bone.</source>
+        <translation>Un squelette a besoin d’au moins un os.</translation>
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="30"/>
@@ -781,27 +845,27 @@
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="197"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="241"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>la sauvegarde «&#xa0;%1&#xa0;» ne peut pas être écrite (%2)</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="244"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="288"/>
         <source>the disk is full</source>
         <translation>le disque est plein</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="246"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="290"/>
         <source>the disk is read-only</source>
         <translation>le disque est en lecture seule</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="248"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
         <source>you do not have permission to write in the folder &quot;%1&quot;</source>
         <translation>vous n&apos;avez pas le droit d&apos;écrire dans le dossier «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="251"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="295"/>
         <source>the folder &quot;%1&quot; does not exist</source>
         <translation>le dossier «&#xa0;%1&#xa0;» n&apos;existe pas</translation>
     </message>
@@ -1391,49 +1455,54 @@
         <translation>une pose</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="22"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="24"/>
         <source>the skeleton</source>
         <translation>le squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="25"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="27"/>
         <source>its skeleton has no joints</source>
         <translation>son squelette n&apos;a aucune articulation</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="32"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="34"/>
         <source>skeleton joint %1 has a non-finite value</source>
         <translation>l&apos;articulation %1 du squelette a une valeur non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="39"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="41"/>
         <source>skeleton joint %1 has a negative radius</source>
         <translation>l&apos;articulation %1 du squelette a un rayon négatif</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="43"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="45"/>
         <source>skeleton joint %1 has an invalid parent</source>
         <translation>l&apos;articulation %1 du squelette a un parent invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="48"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="50"/>
         <source>the skeleton&apos;s root is not a root joint</source>
         <translation>la racine du squelette n&apos;est pas une articulation racine</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="49"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="51"/>
         <source>the skeleton&apos;s pose has a non-finite value</source>
         <translation>la pose du squelette a une valeur non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="52"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="54"/>
         <source>a skeleton setting is outside 0 to 1</source>
         <translation>un réglage du squelette n&apos;est pas compris entre 0 et 1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="62"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="64"/>
         <source>the skeleton has an unknown skinning mode</source>
         <translation>le squelette a un mode d&apos;habillage inconnu</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="73"/>
+        <source>skeleton joint %1 has an unknown lock state</source>
+        <translation>l’articulation %1 du squelette a un état de verrouillage inconnu</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
@@ -1517,47 +1586,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="84"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="85"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="87"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="88"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="90"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="91"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="111"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="113"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="150"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="152"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="164"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="173"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="212"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="221"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="288"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="297"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="295"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="304"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -1578,7 +1647,7 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="24"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="32"/>
         <source>Bone</source>
         <translation>Os</translation>
     </message>
@@ -1593,14 +1662,59 @@
         <translation>L&apos;objet est posé avec un autre déformateur. Construire un squelette abandonne cette pose. Le construire quand même&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="218"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="195"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Cliquez sur un dessin visible et déverrouillé pour lui donner un squelette.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="225"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="202"/>
+        <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
+        <translation>Faites glisser une articulation pour la déplacer, cliquez sur un os pour insérer une articulation ; clic droit sur une articulation pour la supprimer.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="205"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
         <translation>Faites glisser un os pour le faire pivoter, une articulation pour la tirer, la racine pour déplacer l&apos;objet&#xa0;; Alt+clic sur une articulation pour la verrouiller.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="80"/>
+        <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
+        <translation>Modifier les articulations : faites glisser une articulation pour la déplacer, cliquez sur un os pour insérer une articulation.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="95"/>
+        <source>Reset the pose or apply it to the drawing before editing joints.</source>
+        <translation>Réinitialisez la pose ou appliquez-la au dessin avant de modifier les articulations.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <source>Unlock Joint</source>
+        <translation>Déverrouiller l’articulation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <source>Lock Joint</source>
+        <translation>Verrouiller l’articulation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="159"/>
+        <source>Reset Bone Pose</source>
+        <translation>Réinitialiser la pose de l’os</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <source>Edit Joints</source>
+        <translation>Modifier les articulations</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <source>Insert Joint Here</source>
+        <translation>Insérer une articulation ici</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="169"/>
+        <source>Delete Joint</source>
+        <translation>Supprimer l’articulation</translation>
     </message>
 </context>
 <context>
@@ -2704,27 +2818,47 @@
         <translation>Forme</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="27"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="28"/>
+        <source>Reset &amp;Bone Pose</source>
+        <translation>Réinitialiser la pose de l’&amp;os</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="29"/>
+        <source>Turn the bone selected with the Bone tool back to rest; the bones below it keep their bends</source>
+        <translation>Ramener au repos l’os choisi avec l’outil Os ; les os en dessous gardent leur flexion</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <source>&amp;Edit Joints</source>
+        <translation>&amp;Modifier les articulations</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="35"/>
+        <source>With the Bone tool, move, insert and delete the joints of an unposed skeleton instead of posing it</source>
+        <translation>Avec l’outil Os, déplacer, insérer et supprimer les articulations d’un squelette sans pose au lieu de le poser</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="55"/>
         <source>Show S&amp;keleton</source>
         <translation>Afficher le &amp;squelette</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="61"/>
         <source>Skeleton</source>
         <translation>Squelette</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="41"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="69"/>
         <source>&amp;Skinning</source>
         <translation>&amp;Habillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="48"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="76"/>
         <source>&amp;Rigid (Bones Pin the Mesh)</source>
         <translation>&amp;Rigide (les os épinglent le maillage)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="50"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="78"/>
         <source>&amp;Linear Blend</source>
         <translation>Mélange &amp;linéaire</translation>
     </message>
@@ -3209,12 +3343,12 @@
 <context>
     <name>finbook::ui::StrokeEraserTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
         <source>Stroke Eraser</source>
         <translation>Gomme à traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="93"/>
+        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
         <source>Erase</source>
         <translation>Effacer</translation>
     </message>

@@ -154,24 +154,54 @@
         <translation>ポーズを絵に適用</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="52"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="78"/>
         <source>Build Skeleton</source>
         <translation>スケルトンを作成</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="63"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="89"/>
         <source>Change Skeleton Settings</source>
         <translation>スケルトンの設定を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="88"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="114"/>
         <source>Pose Bones</source>
         <translation>ボーンのポーズを変更</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="97"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="123"/>
         <source>Change Skinning</source>
         <translation>スキニングを変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <source>Lock Joint</source>
+        <translation>関節をロック</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <source>Unlock Joint</source>
+        <translation>関節のロックを解除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="167"/>
+        <source>Reset Bone Pose</source>
+        <translation>ボーンのポーズをリセット</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="179"/>
+        <source>Move Joint</source>
+        <translation>関節を移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="202"/>
+        <source>Insert Joint</source>
+        <translation>関節を挿入</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="215"/>
+        <source>Delete Joint</source>
+        <translation>関節を削除</translation>
     </message>
 </context>
 <context>
@@ -438,9 +468,43 @@
         <translation>この絵にはスケルトンを作成できません。</translation>
     </message>
     <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="26"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="89"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="131"/>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="19"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>スケルトンが破損しています。作成し直してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="28"/>
+        <source>Reset the pose or apply it to the drawing before editing joints.</source>
+        <translation>関節を編集する前に、ポーズをリセットするか絵に適用してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="30"/>
+        <source>There is no such joint.</source>
+        <translation>その関節はありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="47"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="61"/>
+        <source>A joint cannot go there.</source>
+        <translation>そこには関節を置けません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="59"/>
+        <source>A joint can only be inserted on a bone.</source>
+        <translation>関節はボーンの上にだけ挿入できます。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="66"/>
+        <source>The bone is too short to split.</source>
+        <translation>ボーンが短すぎて分割できません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="98"/>
+        <source>A skeleton needs at least one bone.</source>
+        <translation>スケルトンには少なくとも 1 本のボーンが必要です。</translation>
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="30"/>
@@ -780,27 +844,27 @@
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="197"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="241"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>バックアップ「%1」を書き込めません（%2）</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="244"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="288"/>
         <source>the disk is full</source>
         <translation>ディスクがいっぱいです</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="246"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="290"/>
         <source>the disk is read-only</source>
         <translation>ディスクが読み取り専用です</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="248"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
         <source>you do not have permission to write in the folder &quot;%1&quot;</source>
         <translation>フォルダー「%1」に書き込む権限がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="251"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="295"/>
         <source>the folder &quot;%1&quot; does not exist</source>
         <translation>フォルダー「%1」が存在しません</translation>
     </message>
@@ -1389,49 +1453,54 @@
         <translation>ポーズ</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="22"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="24"/>
         <source>the skeleton</source>
         <translation>スケルトン</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="25"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="27"/>
         <source>its skeleton has no joints</source>
         <translation>スケルトンにジョイントがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="32"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="34"/>
         <source>skeleton joint %1 has a non-finite value</source>
         <translation>スケルトンのジョイント %1 に有限でない値が含まれています</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="39"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="41"/>
         <source>skeleton joint %1 has a negative radius</source>
         <translation>スケルトンのジョイント %1 の半径が負の値です</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="43"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="45"/>
         <source>skeleton joint %1 has an invalid parent</source>
         <translation>スケルトンのジョイント %1 の親が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="48"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="50"/>
         <source>the skeleton&apos;s root is not a root joint</source>
         <translation>スケルトンのルートがルートジョイントではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="49"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="51"/>
         <source>the skeleton&apos;s pose has a non-finite value</source>
         <translation>スケルトンのポーズに有限でない値が含まれています</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="52"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="54"/>
         <source>a skeleton setting is outside 0 to 1</source>
         <translation>スケルトンの設定値が 0～1 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="62"/>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="64"/>
         <source>the skeleton has an unknown skinning mode</source>
         <translation>スケルトンのスキニング方式が不明です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="73"/>
+        <source>skeleton joint %1 has an unknown lock state</source>
+        <translation>スケルトンの関節 %1 のロック状態が不明です</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
@@ -1513,47 +1582,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="84"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="85"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="87"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="88"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="90"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="91"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="111"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="113"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="150"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="152"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="164"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="173"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="212"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="221"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="288"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="297"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="295"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="304"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -1574,7 +1643,7 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="24"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="32"/>
         <source>Bone</source>
         <translation>ボーン</translation>
     </message>
@@ -1589,14 +1658,59 @@
         <translation>このオブジェクトには別の変形方法によるポーズが付いています。スケルトンを作成すると、そのポーズは破棄されます。作成しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="218"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="195"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>表示されていてロックされていない絵をクリックすると、スケルトンを作成できます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="225"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="202"/>
+        <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
+        <translation>関節をドラッグで移動、ボーンをクリックで関節を挿入、関節を右クリックで削除します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="205"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
         <translation>ボーンをドラッグすると回転、ジョイントをドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。Alt キーを押しながらジョイントをクリックするとロックします。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="80"/>
+        <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
+        <translation>関節を編集：関節をドラッグで移動、ボーンをクリックで関節を挿入します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="95"/>
+        <source>Reset the pose or apply it to the drawing before editing joints.</source>
+        <translation>関節を編集する前に、ポーズをリセットするか絵に適用してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <source>Unlock Joint</source>
+        <translation>関節のロックを解除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <source>Lock Joint</source>
+        <translation>関節をロック</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="159"/>
+        <source>Reset Bone Pose</source>
+        <translation>ボーンのポーズをリセット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <source>Edit Joints</source>
+        <translation>関節を編集</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <source>Insert Joint Here</source>
+        <translation>ここに関節を挿入</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="169"/>
+        <source>Delete Joint</source>
+        <translation>関節を削除</translation>
     </message>
 </context>
 <context>
@@ -2696,27 +2810,47 @@
         <translation>形状</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="27"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="28"/>
+        <source>Reset &amp;Bone Pose</source>
+        <translation>ボーンのポーズをリセット(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="29"/>
+        <source>Turn the bone selected with the Bone tool back to rest; the bones below it keep their bends</source>
+        <translation>ボーンツールで選んだボーンを静止状態に戻します。その下のボーンは曲がりを保ちます</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <source>&amp;Edit Joints</source>
+        <translation>関節を編集(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="35"/>
+        <source>With the Bone tool, move, insert and delete the joints of an unposed skeleton instead of posing it</source>
+        <translation>ボーンツールで、ポーズを付ける代わりに、ポーズのないスケルトンの関節を移動・挿入・削除します</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="55"/>
         <source>Show S&amp;keleton</source>
         <translation>スケルトンを表示(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="61"/>
         <source>Skeleton</source>
         <translation>スケルトン</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="41"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="69"/>
         <source>&amp;Skinning</source>
         <translation>スキニング(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="48"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="76"/>
         <source>&amp;Rigid (Bones Pin the Mesh)</source>
         <translation>剛体（ボーンがメッシュを固定）(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="50"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="78"/>
         <source>&amp;Linear Blend</source>
         <translation>線形ブレンド(&amp;L)</translation>
     </message>
@@ -3200,12 +3334,12 @@
 <context>
     <name>finbook::ui::StrokeEraserTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
         <source>Stroke Eraser</source>
         <translation>ストローク消しゴム</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="93"/>
+        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
         <source>Erase</source>
         <translation>消去</translation>
     </message>

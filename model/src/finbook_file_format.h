@@ -21,7 +21,10 @@
 //   "DEFM"  := u32 poseIndex
 //   "SKEL"  := u32 joints (f64 x f64 y f64 radius i32 parent f64 angle)[joints] i32 root
 //              f64 rootOffsetX f64 rootOffsetY f64 complexity f64 merge f64 prune
-//              f64 collapse u8 skinningMode        (skeleton/skeleton_rig.h)
+//              f64 collapse u8 skinningMode [u8 locked[joints]]   (skeleton/skeleton_rig.h)
+//              The locks (0 or 1 per joint) are written only when a joint is locked, so a
+//              skeleton without locks keeps the original layout and older files (which end
+//              at the mode) open with no locks.
 //
 // An object carries at most one rig chunk (PINS or CAGE).
 //

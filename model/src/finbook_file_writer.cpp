@@ -155,6 +155,9 @@ void writeSkeleton(ByteWriter &w, const SkeletonRig &s)
          {s.settings.complexity, s.settings.merge, s.settings.prune, s.settings.collapse})
         w.f64(v);
     w.u8(quint8(s.mode));
+    if (std::find(s.locked.begin(), s.locked.end(), true) != s.locked.end())
+        for (std::size_t j = 0; j < s.joints.size(); ++j)
+            w.u8(j < s.locked.size() && s.locked[j] ? 1 : 0);
 }
 
 // The chunks an object may carry, in the order they are written. A new kind of object state

@@ -3,6 +3,7 @@
 
 #include <finbook/model/commands.h>
 #include <finbook/model/pins/pin_commands.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
 
 #include <QRandomGenerator>
 
@@ -23,6 +24,63 @@ inline model::StrokeDataPtr randomStrokeData(QRandomGenerator &rng)
     data->color = 0xff000000u | rng.bounded(0x1000000u);
     data->width = 1.0f + float(rng.bounded(8));
     return data;
+}
+
+// A small random skeleton (a random tree, root 0) without the automatic builder: fast, and
+// every shape of tree the hand edits must keep valid.
+inline model::SkeletonRig randomSkeleton(QRandomGenerator &rng)
+{
+    model::SkeletonRig s;
+    const int n = 2 + int(rng.bounded(6));
+    for (int j = 0; j < n; ++j) {
+        s.joints.emplace_back(rng.bounded(1000.0), rng.bounded(700.0));
+        s.parent.push_back(j == 0 ? -1 : int(rng.bounded(j)));
+        s.radius.push_back(rng.bounded(20.0));
+    }
+    s.root = 0;
+    s.settings.complexity = rng.bounded(1.0);
+    return s.atRest();
+}
+
+// One random skeleton edit of object `groupId` (its skeleton, if it has one): build, pose,
+// lock, reset a bone or everything, move, insert or delete a joint, change skinning.
+inline std::unique_ptr<QUndoCommand> randomSkeletonCommand(model::Document &doc, model::Id groupId,
+                                                           QRandomGenerator &rng)
+{
+    using namespace model;
+    const StrokeGroup *g = doc.group(groupId);
+    const int n = g ? g->rig.skeleton.jointCount() : 0;
+    const int joint = int(rng.bounded(std::max(n, 1)));
+    const QPointF somewhere(rng.bounded(1000.0), rng.bounded(700.0));
+    switch (n == 0 ? 0 : rng.bounded(9)) {
+    case 0:
+        return std::make_unique<BuildSkeletonCommand>(&doc, groupId, randomSkeleton(rng));
+    case 1:
+    case 2: {
+        std::vector<double> angles(std::size_t(n), 0.0);
+        for (double &a : angles)
+            a = rng.bounded(2) ? rng.bounded(6.0) - 3.0 : 0.0;
+        const QPointF offset = rng.bounded(2) ? QPointF(rng.bounded(40.0), 0.0) : QPointF();
+        return std::make_unique<PoseBonesCommand>(&doc, groupId, angles, offset,
+                                                  int(rng.bounded(3)));
+    }
+    case 3:
+        return std::make_unique<SetJointLockCommand>(&doc, groupId, joint, rng.bounded(3) != 0);
+    case 4:
+        if (rng.bounded(2))
+            return std::make_unique<ResetPoseCommand>(&doc, groupId);
+        return std::make_unique<ResetBonePoseCommand>(&doc, groupId, joint);
+    case 5:
+        return std::make_unique<MoveJointCommand>(&doc, groupId, joint, somewhere,
+                                                  int(rng.bounded(3)));
+    case 6:
+        return std::make_unique<InsertJointCommand>(&doc, groupId, joint, somewhere);
+    case 7:
+        return std::make_unique<DeleteJointCommand>(&doc, groupId, joint);
+    default:
+        return std::make_unique<SetSkinningModeCommand>(
+            &doc, groupId, rng.bounded(2) ? SkinningMode::Rigid : SkinningMode::LinearBlend);
+    }
 }
 
 // Picks a random id of a live entity (0 when there is none).
@@ -58,7 +116,11 @@ inline std::unique_ptr<QUndoCommand> randomCommand(model::Document &doc, QRandom
     const Picks p = randomPicks(doc, rng);
     const int n = doc.frameCount();
     const QPointF somewhere(rng.bounded(1000.0), rng.bounded(700.0));
-    switch (rng.bounded(19)) {
+    switch (rng.bounded(22)) {
+    case 19:
+    case 20:
+    case 21:
+        return randomSkeletonCommand(doc, p.group, rng);
     case 14:
     case 15:
         return std::make_unique<AddPinCommand>(&doc, p.group, somewhere,

@@ -26,7 +26,8 @@ StrokeGroup rigged(Id &next, const QString &name, float x0)
     return g;
 }
 
-// Two frames, each with a caged object and a boned one, both posed.
+// Two frames, each with a caged object and a boned one, both posed; the second frame's
+// skeleton has a locked joint.
 void cageAndSkeleton(Document &doc)
 {
     std::vector<Frame> frames(2);
@@ -47,6 +48,8 @@ void cageAndSkeleton(Document &doc)
         s.rootOffset = QPointF(3, -2);
         s.settings = {0.5, 0.1, 0.2, 0.05};
         s.mode = SkinningMode::LinearBlend;
+        if (f.id != frames.front().id) // the optional lock tail, in one frame of two
+            s.locked = {false, true, false};
         boned.deformed = shiftedPose(boned, -2.0f);
         f.groups = {caged, boned};
     }

@@ -1,9 +1,12 @@
 // Skeletons in the model: building, refining and posing as undoable commands, the skinning
 // precompute through the deform controller, and the "SKEL" file chunk.
+#include "random_edits.h"
+
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/model/skeleton/skeleton_joint_edit.h>
 #include <finbook/model/skeleton/skeleton_setup.h>
 
 #include <QRandomGenerator>
@@ -12,6 +15,7 @@
 #include <QtEndian>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 using namespace finbook;
@@ -113,6 +117,16 @@ private slots:
     void malformedSkeletonChunksAreRefused();
     void randomPosesNeverGiveNaN();
     void duplicateFrameCopiesSkeletonAndPose();
+    void jointLocksAreOneStepAndSaved();
+    void filesBeforeLocksOpenWithoutLocks();
+    void badLockFlagsAreRefused();
+    void resetBonePoseResetsThatBoneOnly();
+    void insertJointSplitsABone();
+    void deleteJointReattachesChildren();
+    void deleteRootPicksANewRoot();
+    void jointEditsNeedAnUnposedSkeleton();
+    void movingAJointReprecomputes();
+    void randomSkeletonEditsUndoExactly();
 };
 
 void TestSkeletonRig::buildGivesValidRestSkeleton()
@@ -412,6 +426,335 @@ void TestSkeletonRig::duplicateFrameCopiesSkeletonAndPose()
     doc.undoStack()->push(new PoseBonesCommand(&doc, copy.id, other, {}, 2));
     QCOMPARE(doc.group(g)->rig.skeleton.angles, angles);
     QCOMPARE(doc.frames()[1].groups[0].rig.skeleton.angles, other);
+}
+
+namespace {
+// A hand-made skeleton: a chain 0→1→2→3 along x with a side branch 1→4, root 0.
+SkeletonRig forkRig()
+{
+    SkeletonRig s;
+    s.joints = {{100, 100}, {150, 100}, {200, 100}, {250, 100}, {150, 150}};
+    s.parent = {-1, 0, 1, 2, 1};
+    s.radius = {10, 8, 6, 4, 5};
+    s.root = 0;
+    return s.atRest();
+}
+
+Id withForkSkeleton(Document &doc)
+{
+    const Id g = makeElbow(doc);
+    doc.undoStack()->push(new BuildSkeletonCommand(&doc, g, forkRig()));
+    return g;
+}
+
+bool sameRestPointsExcept(const SkeletonRig &a, const SkeletonRig &b, int skipInB)
+{
+    std::vector<QPointF> rest = b.joints;
+    rest.erase(rest.begin() + skipInB);
+    return rest == a.joints;
+}
+} // namespace
+
+void TestSkeletonRig::jointLocksAreOneStepAndSaved()
+{
+    Document doc;
+    const Id g = withForkSkeleton(doc);
+    QUndoStack *stack = doc.undoStack();
+    const QByteArray unlocked = serializeFinbook(doc);
+    const int count = stack->count();
+    stack->push(new SetJointLockCommand(&doc, g, 1, true));
+    QCOMPARE(stack->count(), count + 1);
+    QVERIFY(doc.group(g)->rig.skeleton.isLocked(1));
+    QVERIFY(!doc.group(g)->rig.skeleton.isLocked(2));
+    QCOMPARE(stack->command(count)->text(), QStringLiteral("Lock Joint"));
+    // Locking a locked joint, or a joint that does not exist, does nothing.
+    stack->push(new SetJointLockCommand(&doc, g, 1, true));
+    stack->push(new SetJointLockCommand(&doc, g, 17, true));
+    QCOMPARE(stack->count(), count + 1);
+    // Saved and read back.
+    const QByteArray locked = serializeFinbook(doc);
+    QVERIFY(locked != unlocked);
+    auto loaded = readFinbook(locked);
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    QCOMPARE(loaded->frames[0].groups[0].rig.skeleton.locked,
+             (std::vector<bool>{false, true, false, false, false}));
+    Document reopened;
+    reopened.reset(loaded->frames, loaded->settings, loaded->nextId);
+    QCOMPARE(serializeFinbook(reopened), locked);
+    // Unlocking the last lock gives back the lock-free layout, byte for byte.
+    stack->push(new SetJointLockCommand(&doc, g, 1, false));
+    QVERIFY(doc.group(g)->rig.skeleton.locked.empty());
+    QCOMPARE(serializeFinbook(doc), unlocked);
+    stack->undo();
+    QCOMPARE(serializeFinbook(doc), locked);
+    stack->undo();
+    QCOMPARE(serializeFinbook(doc), unlocked);
+    // Locks survive a pose and Reset Pose.
+    stack->redo();
+    std::vector<double> angles(5, 0.0);
+    angles[3] = 0.4;
+    stack->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+    stack->push(new ResetPoseCommand(&doc, g));
+    QVERIFY(doc.group(g)->rig.skeleton.isLocked(1));
+}
+
+void TestSkeletonRig::filesBeforeLocksOpenWithoutLocks()
+{
+    QFile f(QStringLiteral(FINBOOK_SOURCE_DIR "/tests/data/skeleton_before_locks.finbook"));
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray bytes = f.readAll();
+    auto loaded = readFinbook(bytes);
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    int skeletons = 0;
+    for (const Frame &frame : loaded->frames)
+        for (const StrokeGroup &group : frame.groups)
+            if (!group.rig.skeleton.empty()) {
+                ++skeletons;
+                QVERIFY(group.rig.skeleton.isValid());
+                QVERIFY(group.rig.skeleton.locked.empty());
+                QVERIFY(group.rig.skeleton.isPosed());
+            }
+    QCOMPARE(skeletons, 2);
+    // Saved again, such a file keeps its layout.
+    Document doc;
+    doc.reset(loaded->frames, loaded->settings, loaded->nextId);
+    QCOMPARE(serializeFinbook(doc), bytes);
+}
+
+void TestSkeletonRig::badLockFlagsAreRefused()
+{
+    Document doc;
+    const Id g = withForkSkeleton(doc);
+    doc.undoStack()->push(new SetJointLockCommand(&doc, g, 2, true));
+    const QByteArray good = serializeFinbook(doc);
+    QVERIFY(readFinbook(good));
+    const qsizetype tag = good.indexOf("SKEL");
+    QVERIFY(tag > 0);
+    const quint32 length = qFromLittleEndian<quint32>(good.constData() + tag + 4);
+    const qsizetype payload = tag + 8;
+    QCOMPARE(good.at(payload + length - 3), '\x01'); // joint 2 of 5, from the end: 0 0 1 0 0 ...
+    QByteArray bad = good;
+    bad[payload + length - 3] = '\x02';
+    QVERIFY(!readFinbook(bad));
+}
+
+void TestSkeletonRig::resetBonePoseResetsThatBoneOnly()
+{
+    Document doc;
+    const Id g = withForkSkeleton(doc);
+    QUndoStack *stack = doc.undoStack();
+    const std::vector<double> angles{0.1, 0.2, 0.3, 0.4, -0.5};
+    stack->push(new PoseBonesCommand(&doc, g, angles, {7, 8}, 1));
+    const QByteArray posed = serializeFinbook(doc);
+    const int count = stack->count();
+    stack->push(new ResetBonePoseCommand(&doc, g, 2));
+    QCOMPARE(stack->count(), count + 1);
+    std::vector<double> expected = angles;
+    expected[2] = 0.0;
+    QCOMPARE(doc.group(g)->rig.skeleton.angles, expected);
+    QCOMPARE(doc.group(g)->rig.skeleton.rootOffset, QPointF(7, 8));
+    // Joint 3's bend relative to bone 2 is kept: the angle between the bones is unchanged.
+    const std::vector<QPointF> p = doc.group(g)->rig.skeleton.posedJoints();
+    const double bend = angleOf(p[3] - p[2]) - angleOf(p[2] - p[1]);
+    QVERIFY(std::abs(wrapped(bend - 0.4)) < 1e-9);
+    // Bone 2 again: nothing to do.
+    stack->push(new ResetBonePoseCommand(&doc, g, 2));
+    QCOMPARE(stack->count(), count + 1);
+    // The root: its angle and the offset.
+    stack->push(new ResetBonePoseCommand(&doc, g, 0));
+    QCOMPARE(doc.group(g)->rig.skeleton.angles[0], 0.0);
+    QCOMPARE(doc.group(g)->rig.skeleton.rootOffset, QPointF());
+    const QByteArray end = serializeFinbook(doc);
+    stack->undo();
+    stack->undo();
+    QCOMPARE(serializeFinbook(doc), posed);
+    stack->redo();
+    stack->redo();
+    QCOMPARE(serializeFinbook(doc), end);
+    // Resetting every bone one by one gives the rest skeleton, as Reset Pose does.
+    for (int j : {1, 3, 4})
+        stack->push(new ResetBonePoseCommand(&doc, g, j));
+    QVERIFY(!doc.group(g)->rig.isPosed());
+    QCOMPARE(doc.group(g)->rig.skeleton, forkRig());
+}
+
+void TestSkeletonRig::insertJointSplitsABone()
+{
+    Document doc;
+    const Id g = withForkSkeleton(doc);
+    doc.undoStack()->push(new SetJointLockCommand(&doc, g, 4, true));
+    const SkeletonRig before = doc.group(g)->rig.skeleton;
+    const QByteArray start = serializeFinbook(doc);
+    // Bone 2 runs from joint 1 (150,100) to joint 2 (200,100); click a little off it.
+    auto *insert = new InsertJointCommand(&doc, g, 2, {180, 103});
+    doc.undoStack()->push(insert);
+    QCOMPARE(insert->insertedJoint(), 2);
+    const SkeletonRig &after = doc.group(g)->rig.skeleton;
+    QVERIFY(after.isValid());
+    QCOMPARE(after.jointCount(), before.jointCount() + 1);
+    QCOMPARE(after.joints[2], QPointF(180, 100)); // on the bone
+    QVERIFY(sameRestPointsExcept(before, after, 2));
+    QCOMPARE(after.parent, (std::vector<int>{-1, 0, 1, 2, 3, 1}));
+    QCOMPARE(after.root, 0);
+    QCOMPARE(after.radius[2], 6.8);                   // between 8 and 6, 60% of the way
+    QVERIFY(after.isLocked(5) && !after.isLocked(2)); // the lock moved with its joint
+    doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(doc), start);
+    // A root is not a bone, a bone end is never doubled.
+    const int index = doc.undoStack()->index();
+    doc.undoStack()->push(new InsertJointCommand(&doc, g, 0, {100, 100}));
+    QCOMPARE(doc.undoStack()->index(), index);
+    auto inserted = withJointInserted(before, 3, {400, 100}); // past the end
+    QVERIFY(inserted);
+    QVERIFY(inserted->rig.joints[3].x() < 250.0 && inserted->rig.joints[3].x() > 200.0);
+}
+
+void TestSkeletonRig::deleteJointReattachesChildren()
+{
+    Document doc;
+    const Id g = withForkSkeleton(doc);
+    const SkeletonRig before = doc.group(g)->rig.skeleton;
+    const QByteArray start = serializeFinbook(doc);
+    doc.undoStack()->push(new DeleteJointCommand(&doc, g, 1)); // the fork joint
+    const SkeletonRig &after = doc.group(g)->rig.skeleton;
+    QVERIFY(after.isValid());
+    QCOMPARE(after.jointCount(), 4);
+    QVERIFY(sameRestPointsExcept(after, before, 1));
+    // Joints 2 and 4 (now 1 and 3) hang from the root; 3 (now 2) still from 2 (now 1).
+    QCOMPARE(after.parent, (std::vector<int>{-1, 0, 1, 0}));
+    QCOMPARE(after.root, 0);
+    const QByteArray end = serializeFinbook(doc);
+    doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(doc), start);
+    doc.undoStack()->redo();
+    QCOMPARE(serializeFinbook(doc), end);
+    // Down to one bone, and no further.
+    doc.undoStack()->push(new DeleteJointCommand(&doc, g, 3));
+    doc.undoStack()->push(new DeleteJointCommand(&doc, g, 2));
+    QCOMPARE(doc.group(g)->rig.skeleton.jointCount(), 2);
+    const int count = doc.undoStack()->count();
+    doc.undoStack()->push(new DeleteJointCommand(&doc, g, 1));
+    QCOMPARE(doc.undoStack()->count(), count);
+    QVERIFY(!withJointDeleted(doc.group(g)->rig.skeleton, 0));
+}
+
+void TestSkeletonRig::deleteRootPicksANewRoot()
+{
+    const SkeletonRig fork = forkRig();
+    auto noRoot = withJointDeleted(fork, 0);
+    QVERIFY(noRoot);
+    QVERIFY(noRoot->isValid());
+    QCOMPARE(noRoot->root, 0); // old joint 1, the root's only child
+    QCOMPARE(noRoot->joints[0], fork.joints[1]);
+    QCOMPARE(noRoot->parent, (std::vector<int>{-1, 0, 1, 0}));
+    // The fork as root: its first child leads, its other child hangs from it.
+    auto again = withJointDeleted(*noRoot, 0);
+    QVERIFY(again);
+    QVERIFY(again->isValid());
+    QCOMPARE(again->joints[std::size_t(again->root)], fork.joints[2]);
+    QCOMPARE(again->parent, (std::vector<int>{-1, 0, 0}));
+    // A lock on a deleted joint goes with it; the others stay.
+    SkeletonRig locked = fork.withLock(0, true).withLock(3, true);
+    auto lockedAfter = withJointDeleted(locked, 0);
+    QVERIFY(lockedAfter);
+    QCOMPARE(lockedAfter->locked, (std::vector<bool>{false, false, true, false}));
+    auto noneLeft = withJointDeleted(fork.withLock(0, true), 0);
+    QVERIFY(noneLeft && noneLeft->locked.empty()); // canonical: no locks, no flags
+}
+
+void TestSkeletonRig::jointEditsNeedAnUnposedSkeleton()
+{
+    Document doc;
+    const Id g = withForkSkeleton(doc);
+    std::vector<double> angles(5, 0.0);
+    angles[2] = 0.3;
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+    const int count = doc.undoStack()->count();
+    doc.undoStack()->push(new MoveJointCommand(&doc, g, 2, {0, 0}, 1));
+    doc.undoStack()->push(new InsertJointCommand(&doc, g, 2, {170, 100}));
+    doc.undoStack()->push(new DeleteJointCommand(&doc, g, 2));
+    QCOMPARE(doc.undoStack()->count(), count);
+    QVERIFY(!withJointMoved(doc.group(g)->rig.skeleton, 2, {0, 0}));
+    // Non-finite positions and joints that do not exist are refused too.
+    doc.undoStack()->push(new ResetPoseCommand(&doc, g));
+    const int reset = doc.undoStack()->count();
+    doc.undoStack()->push(new MoveJointCommand(&doc, g, 2, {qQNaN(), 0}, 2));
+    doc.undoStack()->push(new MoveJointCommand(&doc, g, 9, {1, 1}, 2));
+    doc.undoStack()->push(new DeleteJointCommand(&doc, g, -1));
+    QCOMPARE(doc.undoStack()->count(), reset);
+}
+
+void TestSkeletonRig::movingAJointReprecomputes()
+{
+    Document doc;
+    DeformController controller(&doc);
+    const Id g = buildSkeleton(doc, makeElbow(doc));
+    QVERIFY(waitSolved(controller, doc, g));
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
+    const int bone = terminalBone(rest);
+    const QPointF from = rest.joints[std::size_t(bone)];
+    const int count = doc.undoStack()->count();
+    for (int step = 1; step <= 5; ++step) // one drag
+        doc.undoStack()->push(new MoveJointCommand(&doc, g, bone, from + QPointF(0, -4) * step, 7));
+    QCOMPARE(doc.undoStack()->count(), count + 1);
+    QCOMPARE(doc.group(g)->rig.skeleton.joints[std::size_t(bone)], from + QPointF(0, -20));
+    // The skinning precompute follows the new rest joints.
+    QVERIFY(waitSolved(controller, doc, g));
+    const DeformSetup *setup = controller.setup(g);
+    QVERIFY(setup && setup->skeleton);
+    QCOMPARE(setup->rest.skeleton.joints, doc.group(g)->rig.skeleton.joints);
+    QCOMPARE(setup->skeleton->skeleton.joints(bone, 1), from.y() - 20);
+    // Unposed, the drawing is still the rest drawing.
+    const StrokeGroup *group = doc.group(g);
+    for (std::size_t s = 0; s < group->strokes.size(); ++s)
+        for (std::size_t i = 0; i < group->strokes[s].data->points.size(); ++i) {
+            const StrokePoint a = group->strokes[s].data->points[i];
+            const StrokePoint b = group->deformed->strokes[s][i];
+            QVERIFY(std::hypot(double(a.x) - b.x, double(a.y) - b.y) < 1e-6);
+        }
+    // A drag back to the start is nothing to undo.
+    doc.undoStack()->push(new MoveJointCommand(&doc, g, bone, from + QPointF(3, 3), 8));
+    doc.undoStack()->push(new MoveJointCommand(&doc, g, bone, from + QPointF(0, -20), 8));
+    QCOMPARE(doc.undoStack()->count(), count + 1);
+}
+
+// Random skeleton edits (with some other edits between them) on one object: undo all gives
+// the start bytes, redo all the end bytes, and every step leaves a valid skeleton.
+void TestSkeletonRig::randomSkeletonEditsUndoExactly()
+{
+    QRandomGenerator rng(20261123u);
+    std::map<QString, int> applied;
+    for (int seq = 0; seq < 1500; ++seq) {
+        Document doc;
+        const Id g = makeElbow(doc);
+        const QByteArray start = serializeFinbook(doc);
+        const int length = 1 + int(rng.bounded(30));
+        for (int i = 0; i < length; ++i) {
+            auto command = rng.bounded(5) ? finbook::testing::randomSkeletonCommand(doc, g, rng)
+                                          : finbook::testing::randomCommand(doc, rng);
+            doc.undoStack()->push(command.release());
+            if (const StrokeGroup *group = doc.group(g))
+                QVERIFY(group->rig.skeleton.isValid());
+        }
+        for (int i = 0; i < doc.undoStack()->count(); ++i)
+            ++applied[doc.undoStack()->command(i)->text()];
+        const QByteArray end = serializeFinbook(doc);
+        while (doc.undoStack()->canUndo())
+            doc.undoStack()->undo();
+        if (serializeFinbook(doc) != start)
+            QFAIL(qPrintable(QStringLiteral("undo-all differs: sequence %1").arg(seq)));
+        while (doc.undoStack()->canRedo())
+            doc.undoStack()->redo();
+        if (serializeFinbook(doc) != end)
+            QFAIL(qPrintable(QStringLiteral("redo-all differs: sequence %1").arg(seq)));
+    }
+    // Every kind of skeleton edit was really exercised, not refused every time.
+    for (const char *text :
+         {"Build Skeleton", "Pose Bones", "Lock Joint", "Unlock Joint", "Reset Bone Pose",
+          "Reset Pose", "Move Joint", "Insert Joint", "Delete Joint", "Change Skinning"}) {
+        QVERIFY2(applied[QString::fromLatin1(text)] > 20, text);
+        qInfo("%s: %d", text, applied[QString::fromLatin1(text)]);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestSkeletonRig)

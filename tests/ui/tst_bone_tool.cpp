@@ -1,14 +1,19 @@
 // The Bone tool driven by real mouse events on the real canvas: build a skeleton with a click,
 // turn a bone, pull a joint, move the root, lock a joint; every drag one exact undo step.
 #include <finbook/model/finbook_file.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/deform_actions.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/skeleton/skeleton_overlay.h>
 #include <finbook/ui/skeleton/tool_bone.h>
+#include <finbook/ui/stroke_editing.h>
+#include <finbook/ui/tool_eraser.h>
 
 #include <QElapsedTimer>
+#include <QMenu>
 #include <QPainter>
+#include <QSignalSpy>
 #include <QTest>
 
 #include <cmath>
@@ -111,6 +116,21 @@ struct Fixture {
                 return j;
         return -1;
     }
+
+    // The longest bone: easy to hit away from its joints.
+    int longestBone() const
+    {
+        const SkeletonRig &s = skeleton();
+        int best = -1;
+        double length = 0.0;
+        for (std::size_t j = 0; j < s.joints.size(); ++j)
+            if (const int p = s.parent[j];
+                p >= 0 && QLineF(s.joints[std::size_t(p)], s.joints[j]).length() > length) {
+                length = QLineF(s.joints[std::size_t(p)], s.joints[j]).length();
+                best = int(j);
+            }
+        return best;
+    }
 };
 
 double angleAbout(QPointF pivot, QPointF p)
@@ -128,6 +148,15 @@ private slots:
     void dragRootMovesTheObject();
     void altClickLocksAJoint();
     void showSkeletonPaints();
+    void lockedJointsLookLocked();
+    void contextMenuResetsOneBone();
+    void editJointsMovesAJoint();
+    void editJointsInsertsAndDeletes();
+    void editJointsRefusesAPosedSkeleton();
+    void skeletonFollowsTheDrawingWhenShown();
+    void skeletonStaysWhenHiddenOrPosed();
+    void erasingEverythingRemovesTheSkeleton();
+    void erasingALimbRebuildsTheSkeleton();
 };
 
 void TestBoneTool::clickBuildsThenDragTurnsABone()
@@ -221,16 +250,29 @@ void TestBoneTool::altClickLocksAJoint()
     const int count = fx.doc.undoStack()->count();
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, Qt::AltModifier, fx.at(p));
     QVERIFY(fx.tool->isLocked(fx.group, parent));
-    QCOMPARE(fx.doc.undoStack()->count(), count); // a lock is not a document edit
+    QVERIFY(fx.skeleton().isLocked(parent)); // in the document: saved, undoable
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1);
     // With its pivot locked, pulling the tip turns only the tip's bone.
     const SkeletonRig before = fx.skeleton();
     const QPointF tip = before.joints[std::size_t(bone)];
     fx.drag(tip, tip + QPointF(0, 25));
+    QVERIFY(fx.skeleton().angles[std::size_t(bone)] != 0.0);
     for (std::size_t j = 0; j < before.joints.size(); ++j)
         if (int(j) != bone)
             QCOMPARE(fx.skeleton().angles[j], 0.0);
+    // The context menu unlocks it.
+    QString offered;
+    fx.tool->setMenuExec([&offered](QMenu &menu, QPoint) {
+        QAction *lock = menu.findChild<QAction *>(QStringLiteral("bone.lock"));
+        offered = lock ? lock->text() : QString();
+        return lock;
+    });
     QTest::mouseClick(&fx.canvas, Qt::RightButton, {}, fx.at(p));
+    QCOMPARE(offered, QStringLiteral("Unlock Joint"));
     QVERIFY(!fx.tool->isLocked(fx.group, parent));
+    QVERIFY(fx.skeleton().locked.empty());
+    fx.doc.undoStack()->undo();
+    QVERIFY(fx.tool->isLocked(fx.group, parent));
 }
 
 void TestBoneTool::showSkeletonPaints()
@@ -258,6 +300,267 @@ void TestBoneTool::showSkeletonPaints()
             coloured = px.red() > px.blue() + 60 && px.green() > px.blue() + 20;
         }
     QVERIFY(coloured);
+}
+
+namespace {
+QImage paintOverlay(Fixture &fx)
+{
+    QImage image(800, 600, QImage::Format_ARGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    fx.overlay->paint(painter, fx.canvas.canvasToWidget());
+    return image;
+}
+
+int redPixelsNear(const QImage &image, QPoint c, int reach)
+{
+    int red = 0;
+    for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx) {
+            const QColor px = image.pixelColor(c + QPoint(dx, dy));
+            red += px.red() > 150 && px.green() < 90 && px.blue() < 90;
+        }
+    return red;
+}
+
+// Chooses the context-menu action named `name` (none when absent).
+void choose(Fixture &fx, const char *name)
+{
+    fx.tool->setMenuExec([name](QMenu &menu, QPoint) {
+        return menu.findChild<QAction *>(QString::fromLatin1(name));
+    });
+}
+} // namespace
+
+void TestBoneTool::lockedJointsLookLocked()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    fx.overlay->setShown(true);
+    const int joint = fx.tipBone();
+    const QPoint c = fx.at(fx.skeleton().joints[std::size_t(joint)]);
+    QCOMPARE(redPixelsNear(paintOverlay(fx), c, 8), 0);
+    fx.doc.undoStack()->push(new SetJointLockCommand(&fx.doc, fx.group, joint, true));
+    QVERIFY(redPixelsNear(paintOverlay(fx), c, 8) > 20);
+}
+
+void TestBoneTool::contextMenuResetsOneBone()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    QVERIFY(fx.waitReady());
+    const int bone = fx.longestBone();
+    const int parent = fx.skeleton().parent[std::size_t(bone)];
+    const QPointF root = fx.skeleton().joints[std::size_t(fx.skeleton().root)];
+    // Turn the tip bone, then move the root: two posed parts.
+    const SkeletonRig rest = fx.skeleton();
+    const QPointF pivot = rest.joints[std::size_t(parent)];
+    const QPointF tip = rest.joints[std::size_t(bone)];
+    const QPointF grab = pivot + (tip - pivot) * 0.6;
+    fx.drag(grab, grab + QPointF(-(tip - pivot).y(), (tip - pivot).x()) * 0.2);
+    fx.drag(root, root + QPointF(20, 10));
+    QVERIFY(fx.skeleton().angles[std::size_t(bone)] != 0.0);
+    const QPointF offset = fx.skeleton().rootOffset;
+    QVERIFY(offset != QPointF());
+    const std::vector<QPointF> shown = fx.skeleton().posedJoints();
+    const QPointF middle = (shown[std::size_t(parent)] + shown[std::size_t(bone)]) / 2;
+    const int count = fx.doc.undoStack()->count();
+    choose(fx, "bone.resetBone");
+    QTest::mouseClick(&fx.canvas, Qt::RightButton, {}, fx.at(middle));
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1);
+    QCOMPARE(fx.skeleton().angles[std::size_t(bone)], 0.0);
+    QCOMPARE(fx.skeleton().rootOffset, offset); // the other part of the pose stays
+    QVERIFY(!fx.tool->canResetSelectedBone());
+    // The same through the tool's entry point (Deform → Reset Bone Pose) for the root.
+    fx.doc.undoStack()->undo();
+    QVERIFY(fx.tool->canResetSelectedBone());
+    fx.tool->setMenuExec([](QMenu &, QPoint) -> QAction * { return nullptr; }); // dismissed
+    QTest::mouseClick(&fx.canvas, Qt::RightButton, {}, fx.at(root + offset));   // selects it
+    fx.tool->resetSelectedBone();
+    QCOMPARE(fx.skeleton().rootOffset, QPointF());
+    QVERIFY(fx.skeleton().angles[std::size_t(bone)] != 0.0);
+}
+
+void TestBoneTool::editJointsMovesAJoint()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    QVERIFY(fx.waitReady());
+    const QByteArray built = serializeFinbook(fx.doc);
+    fx.tool->setEditJoints(true);
+    const int joint = fx.tipBone();
+    const SkeletonRig before = fx.skeleton();
+    const QPointF from = before.joints[std::size_t(joint)];
+    const int count = fx.doc.undoStack()->count();
+    fx.drag(from, from + QPointF(12, -8));
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1); // the drag is one step
+    QVERIFY(QLineF(fx.skeleton().joints[std::size_t(joint)], from + QPointF(12, -8)).length() <
+            1.0);
+    QVERIFY(!fx.skeleton().isPosed()); // the rest moved, nothing is posed
+    for (std::size_t j = 0; j < before.joints.size(); ++j)
+        if (int(j) != joint)
+            QCOMPARE(fx.skeleton().joints[j], before.joints[j]);
+    // The skinning follows the new rest skeleton.
+    QVERIFY(fx.waitReady());
+    QCOMPARE(fx.actions.controller()->setup(fx.group)->rest.skeleton.joints, fx.skeleton().joints);
+    fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), built);
+}
+
+void TestBoneTool::editJointsInsertsAndDeletes()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    QVERIFY(fx.waitReady());
+    QSignalSpy edit(fx.tool, &BoneTool::editJointsChanged);
+    choose(fx, "bone.editJoints"); // the menu turns the mode on
+    const int bone = fx.longestBone();
+    const SkeletonRig before = fx.skeleton();
+    const QPointF a = before.joints[std::size_t(before.parent[std::size_t(bone)])];
+    const QPointF b = before.joints[std::size_t(bone)];
+    QTest::mouseClick(&fx.canvas, Qt::RightButton, {}, fx.at(b));
+    QVERIFY(fx.tool->editJoints());
+    QCOMPARE(edit.count(), 1);
+    // A click on the bone's middle inserts a joint there.
+    const int count = fx.doc.undoStack()->count();
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at((a + b) / 2));
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1);
+    QCOMPARE(fx.skeleton().jointCount(), before.jointCount() + 1);
+    QVERIFY(fx.skeleton().isValid());
+    const BoneTool::Hit inserted = fx.tool->selection();
+    QCOMPARE(inserted.part, BoneTool::Part::Joint);
+    QVERIFY(QLineF(fx.skeleton().joints[std::size_t(inserted.joint)], (a + b) / 2).length() < 1.5);
+    // Delete Joint from the menu takes it out again: the same skeleton as before.
+    choose(fx, "bone.deleteJoint");
+    QTest::mouseClick(&fx.canvas, Qt::RightButton, {},
+                      fx.at(fx.skeleton().joints[std::size_t(inserted.joint)]));
+    QCOMPARE(fx.doc.undoStack()->count(), count + 2);
+    QCOMPARE(fx.skeleton().joints, before.joints);
+    QCOMPARE(fx.skeleton().parent, before.parent);
+    fx.doc.undoStack()->undo();
+    fx.doc.undoStack()->undo();
+    QCOMPARE(fx.skeleton(), before);
+}
+
+void TestBoneTool::editJointsRefusesAPosedSkeleton()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    QVERIFY(fx.waitReady());
+    const QPointF root = fx.skeleton().joints[std::size_t(fx.skeleton().root)];
+    fx.drag(root, root + QPointF(30, 0));
+    fx.tool->setEditJoints(true);
+    const SkeletonRig posed = fx.skeleton();
+    const int count = fx.doc.undoStack()->count();
+    const QPointF tip = posed.posedJoints()[std::size_t(fx.tipBone())];
+    fx.drag(tip, tip + QPointF(10, 10));
+    QCOMPARE(fx.doc.undoStack()->count(), count);
+    QCOMPARE(fx.skeleton(), posed);
+}
+
+namespace {
+// A band of strokes lengthening the upper arm to the left.
+std::vector<StrokeDataPtr> longerArm()
+{
+    std::vector<StrokeDataPtr> band;
+    for (int k = 0; k <= 6; ++k)
+        band.push_back(line({20, 200 + 5.0 * k}, {170, 200 + 5.0 * k}));
+    return band;
+}
+
+double leftmostJoint(const SkeletonRig &s)
+{
+    double x = 1e9;
+    for (const QPointF &p : s.joints)
+        x = std::min(x, p.x());
+    return x;
+}
+} // namespace
+
+void TestBoneTool::skeletonFollowsTheDrawingWhenShown()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    fx.overlay->setShown(true);
+    const SkeletonRig before = fx.skeleton();
+    QVERIFY(leftmostJoint(before) > 120);
+    const QByteArray start = serializeFinbook(fx.doc);
+    const int count = fx.doc.undoStack()->count();
+    QVERIFY(StrokeEditing::addStrokes(fx.state, longerArm(), QStringLiteral("Draw Stroke")));
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1); // strokes and skeleton: one step
+    const SkeletonRig &after = fx.skeleton();
+    QVERIFY(after.isValid());
+    QVERIFY2(leftmostJoint(after) < 60, qPrintable(QString::number(leftmostJoint(after))));
+    QCOMPARE(after.settings, before.settings);
+    QCOMPARE(after.mode, before.mode);
+    // The rebuild is what the builder gives for the new drawing, root near the old root.
+    auto expected =
+        buildSkeletonRig(fx.object(), before.settings, before.joints[std::size_t(before.root)]);
+    QVERIFY(expected);
+    QCOMPARE(after, *expected);
+    const QByteArray end = serializeFinbook(fx.doc);
+    fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), start);
+    fx.doc.undoStack()->redo();
+    QCOMPARE(serializeFinbook(fx.doc), end);
+}
+
+void TestBoneTool::skeletonStaysWhenHiddenOrPosed()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    const SkeletonRig before = fx.skeleton();
+    QVERIFY(StrokeEditing::addStrokes(fx.state, longerArm(), QStringLiteral("Draw Stroke")));
+    QCOMPARE(fx.skeleton(), before); // Show Skeleton is off
+    fx.doc.undoStack()->undo();
+    // Posed: the pose becomes the drawing (as for any rest edit), the bones are not rebuilt.
+    fx.overlay->setShown(true);
+    QVERIFY(fx.waitReady());
+    const QPointF root = before.joints[std::size_t(before.root)];
+    fx.drag(root, root + QPointF(15, 5));
+    QVERIFY(fx.skeleton().isPosed());
+    const SkeletonRig rebased = fx.skeleton().rebased();
+    QVERIFY(StrokeEditing::addStrokes(fx.state, longerArm(), QStringLiteral("Draw Stroke")));
+    QCOMPARE(fx.skeleton().joints, rebased.joints);
+    QCOMPARE(fx.skeleton().parent, rebased.parent);
+}
+
+void TestBoneTool::erasingEverythingRemovesTheSkeleton()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    fx.overlay->setShown(true);
+    const QByteArray start = serializeFinbook(fx.doc);
+    StrokeEditing::selectAll(fx.state);
+    QVERIFY(StrokeEditing::deleteSelection(fx.state));
+    QVERIFY(fx.object().strokes.empty());
+    QVERIFY(fx.object().rig.empty());
+    fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), start);
+}
+
+void TestBoneTool::erasingALimbRebuildsTheSkeleton()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    fx.overlay->setShown(true);
+    const auto lowest = [&fx] {
+        double y = -1e9;
+        for (const QPointF &p : fx.skeleton().joints)
+            y = std::max(y, p.y());
+        return y;
+    };
+    QVERIFY(lowest() > 400); // the forearm has bones
+    const QByteArray start = serializeFinbook(fx.doc);
+    const int count = fx.doc.undoStack()->count();
+    auto *eraser = fx.canvas.addTool(std::make_unique<StrokeEraserTool>());
+    fx.canvas.setCurrentTool(eraser->id());
+    fx.drag({380, 420}, {490, 420}); // across every forearm stroke
+    QCOMPARE(fx.object().strokes.size(), std::size_t(7));
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1); // the erase and the rebuild
+    QVERIFY2(lowest() < 260, qPrintable(QString::number(lowest())));
+    fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), start);
 }
 
 QTEST_MAIN(TestBoneTool)

@@ -181,6 +181,11 @@ void EditorState::setShowMesh(bool show)
     emit showMeshChanged(show);
 }
 
+void EditorState::setShowSkeleton(bool show)
+{
+    m_showSkeleton = show;
+}
+
 void EditorState::nextFrame()
 {
     setCurrentFrameIndex(m_frameIndex + 1);

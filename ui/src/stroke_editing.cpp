@@ -4,6 +4,7 @@
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
 #include <finbook/ui/editor_state.h>
+#include <finbook/ui/skeleton/skeleton_follow.h>
 #include <finbook/ui/stroke_editing.h>
 
 #include <QApplication>
@@ -106,6 +107,7 @@ StrokeEditing::addStrokes(EditorState &state, const std::vector<model::StrokeDat
     model::Id groupId = state.currentGroupId();
     // New strokes are drawn on the posed object as shown; as rest strokes they would be bent
     // again by the rig and land elsewhere.
+    const std::vector<model::Id> following = skeletonsFollowing(state, {groupId});
     beginRestEdit(doc, text, {groupId});
     if (groupId == model::kNoId) {
         auto *add = new model::AddObjectCommand(doc, state.currentFrameId(), -1, tr("Object"));
@@ -119,7 +121,7 @@ StrokeEditing::addStrokes(EditorState &state, const std::vector<model::StrokeDat
         ids.push_back(cmd->strokeId());
         stack->push(cmd);
     }
-    stack->endMacro();
+    endRestEdit(state, following);
     return ids;
 }
 
@@ -151,6 +153,12 @@ void StrokeEditing::beginRestEdit(model::Document *doc, const QString &text,
     applyPoses(doc, groupIds);
 }
 
+void StrokeEditing::endRestEdit(EditorState &state, const std::vector<model::Id> &following)
+{
+    followDrawing(state, following);
+    state.document()->undoStack()->endMacro();
+}
+
 bool StrokeEditing::deleteSelection(EditorState &state)
 {
     const std::vector<model::Id> ids = state.selectedStrokes();
@@ -161,10 +169,11 @@ bool StrokeEditing::deleteSelection(EditorState &state)
     for (model::Id id : ids)
         if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
             groups.push_back(doc->frameAt(at.frame).groups[std::size_t(at.group)].id);
+    const std::vector<model::Id> following = skeletonsFollowing(state, groups);
     beginRestEdit(doc, tr("Delete Strokes"), groups);
     for (model::Id id : ids)
         doc->undoStack()->push(new model::RemoveStrokeCommand(doc, id));
-    doc->undoStack()->endMacro();
+    endRestEdit(state, following);
     state.setSelectedStrokes({});
     return true;
 }

@@ -4,10 +4,14 @@
 #include <finbook/model/render.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/editor_state.h>
+#include <finbook/ui/skeleton/skeleton_follow.h>
 #include <finbook/ui/stroke_editing.h>
 #include <finbook/ui/tool_eraser.h>
 
 #include <QPainter>
+
+#include <algorithm>
+#include <utility>
 
 namespace finbook::ui {
 
@@ -63,7 +67,8 @@ void StrokeEraserTool::finish()
     m_erasing = false;
     if (m_macroOpen) {
         m_macroOpen = false;
-        state()->document()->undoStack()->endMacro();
+        m_erasedFrom.clear();
+        StrokeEditing::endRestEdit(*state(), std::exchange(m_following, {}));
     }
 }
 
@@ -99,6 +104,14 @@ void StrokeEraserTool::eraseAlong(const QPointF &from, const QPointF &to)
     for (model::Id id : hits)
         if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
             groups.push_back(doc->frameAt(at.frame).groups[std::size_t(at.group)].id);
+    // Whether a skeleton follows is decided when the gesture first reaches its object,
+    // before its pose (if any) is applied.
+    for (model::Id id : groups)
+        if (std::find(m_erasedFrom.begin(), m_erasedFrom.end(), id) == m_erasedFrom.end()) {
+            m_erasedFrom.push_back(id);
+            for (model::Id f : skeletonsFollowing(*state(), {id}))
+                m_following.push_back(f);
+        }
     StrokeEditing::applyPoses(doc, groups);
     for (model::Id id : hits)
         doc->undoStack()->push(new model::RemoveStrokeCommand(doc, id));

@@ -1,8 +1,10 @@
 // Reading an object's "SKEL" chunk (the layout is in finbook_file_format.h). Everything is
 // checked before the skeleton reaches the document: counts against the bytes left, finite
-// numbers, parents before children, a root that is a root, settings in [0, 1], a known mode.
+// numbers, parents before children, a root that is a root, settings in [0, 1], a known mode,
+// lock flags 0 or 1.
 #include "../finbook_file_reader.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace finbook::model::file_format {
@@ -61,6 +63,19 @@ SkeletonRig Reader::readSkeleton(Cursor &c)
         c.fail(FileErrorCode::BadValue,
                FinbookFile::tr("the skeleton has an unknown skinning mode"));
     s.mode = SkinningMode(mode);
+    // Joint locks came later as an optional tail: a chunk that ends here has none.
+    if (!c.atEnd()) {
+        const char *locks = c.take(n, what);
+        s.locked.resize(n);
+        for (quint32 j = 0; j < n; ++j) {
+            if (quint8(locks[j]) > 1)
+                c.fail(FileErrorCode::BadValue,
+                       FinbookFile::tr("skeleton joint %1 has an unknown lock state").arg(j + 1));
+            s.locked[j] = locks[j] != 0;
+        }
+        if (std::none_of(s.locked.begin(), s.locked.end(), [](bool l) { return l; }))
+            s.locked.clear();
+    }
     return s;
 }
 

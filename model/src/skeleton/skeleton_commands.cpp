@@ -1,6 +1,7 @@
 #include "../command_text.h"
 
 #include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/model/skeleton/skeleton_joint_edit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,31 @@ Rig withMode(const Document *doc, Id groupId, SkinningMode mode)
     Rig rig = g->rig;
     rig.skeleton.mode = mode;
     return rig;
+}
+
+// The object's rig with its skeleton replaced by `edit(skeleton)`, or an empty rig (which
+// makes the command obsolete) when there is no skeleton or the edit is refused.
+template <typename Edit> Rig editedRig(const Document *doc, Id groupId, Edit edit)
+{
+    const StrokeGroup *g = doc->group(groupId);
+    if (!g || g->rig.kind() != RigKind::Skeleton)
+        return {};
+    Rig rig = g->rig;
+    std::optional<SkeletonRig> edited = edit(rig.skeleton);
+    if (!edited)
+        return {};
+    rig.skeleton = std::move(*edited);
+    return rig;
+}
+
+template <typename T> std::optional<SkeletonRig> valueOr(Expected<T, QString> e)
+{
+    if (!e)
+        return std::nullopt;
+    if constexpr (std::is_same_v<T, SkeletonRig>)
+        return std::move(*e);
+    else
+        return std::move(e->rig);
 }
 
 bool finitePose(const std::vector<double> &angles, QPointF offset)
@@ -99,6 +125,96 @@ SetSkinningModeCommand::SetSkinningModeCommand(Document *doc, Id groupId, Skinni
 {
     const StrokeGroup *g = doc->group(groupId);
     if (!g || g->rig.kind() != RigKind::Skeleton || g->rig.skeleton.mode == mode)
+        setObsolete(true);
+}
+
+SetJointLockCommand::SetJointLockCommand(Document *doc, Id groupId, int joint, bool locked,
+                                         QUndoCommand *parent)
+    : SetRigCommand(doc, groupId,
+                    editedRig(doc, groupId,
+                              [&](const SkeletonRig &s) -> std::optional<SkeletonRig> {
+                                  if (joint < 0 || joint >= s.jointCount())
+                                      return std::nullopt;
+                                  return s.withLock(joint, locked);
+                              }),
+                    locked ? Command::tr("Lock Joint") : Command::tr("Unlock Joint"), parent)
+{
+    if (m_new.empty())
+        setObsolete(true);
+}
+
+ResetBonePoseCommand::ResetBonePoseCommand(Document *doc, Id groupId, int joint,
+                                           QUndoCommand *parent)
+    : SetRigCommand(doc, groupId,
+                    editedRig(doc, groupId,
+                              [&](const SkeletonRig &s) -> std::optional<SkeletonRig> {
+                                  if (joint < 0 || joint >= s.jointCount())
+                                      return std::nullopt;
+                                  const bool root = s.parent[std::size_t(joint)] < 0;
+                                  const bool turned = std::size_t(joint) < s.angles.size() &&
+                                                      s.angles[std::size_t(joint)] != 0.0;
+                                  if (!turned && !(root && s.rootOffset != QPointF()))
+                                      return std::nullopt; // already at rest
+                                  SkeletonRig r = s;
+                                  r.angles.resize(r.joints.size(), 0.0);
+                                  r.angles[std::size_t(joint)] = 0.0;
+                                  if (root)
+                                      r.rootOffset = QPointF();
+                                  if (!r.isPosed()) // canonical rest, as Reset Pose gives
+                                      r = r.atRest();
+                                  return r;
+                              }),
+                    Command::tr("Reset Bone Pose"), parent)
+{
+    if (m_new.empty())
+        setObsolete(true);
+}
+
+MoveJointCommand::MoveJointCommand(Document *doc, Id groupId, int joint, QPointF at, int dragSerial,
+                                   QUndoCommand *parent)
+    : SetRigCommand(
+          doc, groupId,
+          editedRig(doc, groupId,
+                    [&](const SkeletonRig &s) { return valueOr(withJointMoved(s, joint, at)); }),
+          Command::tr("Move Joint"), parent)
+    , m_serial(dragSerial)
+{
+    if (m_new.empty())
+        setObsolete(true);
+}
+
+bool MoveJointCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *o = static_cast<const MoveJointCommand *>(other);
+    if (o->m_groupId != m_groupId || o->m_serial != m_serial || o->isObsolete() || isObsolete())
+        return false;
+    m_new = o->m_new;
+    setObsolete(m_new == m_old); // back where the drag started
+    return true;
+}
+
+InsertJointCommand::InsertJointCommand(Document *doc, Id groupId, int bone, QPointF at,
+                                       QUndoCommand *parent)
+    : SetRigCommand(
+          doc, groupId,
+          editedRig(doc, groupId,
+                    [&](const SkeletonRig &s) { return valueOr(withJointInserted(s, bone, at)); }),
+          Command::tr("Insert Joint"), parent)
+{
+    if (m_new.empty())
+        setObsolete(true);
+    else
+        m_joint = bone; // withJointInserted gives the new joint the split bone's index
+}
+
+DeleteJointCommand::DeleteJointCommand(Document *doc, Id groupId, int joint, QUndoCommand *parent)
+    : SetRigCommand(
+          doc, groupId,
+          editedRig(doc, groupId,
+                    [&](const SkeletonRig &s) { return valueOr(withJointDeleted(s, joint)); }),
+          Command::tr("Delete Joint"), parent)
+{
+    if (m_new.empty())
         setObsolete(true);
 }
 

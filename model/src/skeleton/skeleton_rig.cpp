@@ -25,6 +25,32 @@ bool SkeletonRig::isPosed() const
            std::any_of(angles.begin(), angles.end(), [](double a) { return a != 0.0; });
 }
 
+bool SkeletonRig::isLocked(int joint) const
+{
+    return joint >= 0 && std::size_t(joint) < locked.size() && locked[std::size_t(joint)];
+}
+
+SkeletonRig SkeletonRig::withLock(int joint, bool on) const
+{
+    SkeletonRig r = *this;
+    if (joint < 0 || joint >= jointCount())
+        return r;
+    r.locked.resize(joints.size(), false);
+    r.locked[std::size_t(joint)] = on;
+    if (std::none_of(r.locked.begin(), r.locked.end(), [](bool l) { return l; }))
+        r.locked.clear();
+    return r;
+}
+
+std::vector<std::vector<int>> SkeletonRig::children() const
+{
+    std::vector<std::vector<int>> c(joints.size());
+    for (std::size_t j = 0; j < parent.size() && j < joints.size(); ++j)
+        if (parent[j] >= 0 && std::size_t(parent[j]) < joints.size())
+            c[std::size_t(parent[j])].push_back(int(j));
+    return c;
+}
+
 SkeletonRig SkeletonRig::atRest() const
 {
     SkeletonRig r = *this;
@@ -76,6 +102,9 @@ bool SkeletonRig::isValid() const
 {
     const std::size_t n = joints.size();
     if (parent.size() != n || radius.size() != n || (!angles.empty() && angles.size() != n))
+        return false;
+    if (!locked.empty() && (locked.size() != n ||
+                            std::none_of(locked.begin(), locked.end(), [](bool l) { return l; })))
         return false;
     if (n == 0)
         return root == -1;

@@ -1,5 +1,6 @@
-// The main window's skeleton parts: the Bone tool, View → Show Skeleton, the Skeleton panel
-// and Deform → Skinning (rigid or linear blend for the current object).
+// The main window's skeleton parts: the Bone tool, View → Show Skeleton, the Skeleton panel,
+// Deform → Reset Bone Pose and Edit Joints (both act through the Bone tool), and
+// Deform → Skinning (rigid or linear blend for the current object).
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/deform_actions.h>
@@ -19,7 +20,34 @@ namespace finbook::ui {
 
 void MainWindow::createSkeleton(QMenu *deformMenu)
 {
-    addTool(std::make_unique<BoneTool>(m_deform->controller()));
+    auto boneTool = std::make_unique<BoneTool>(m_deform->controller());
+    BoneTool *bones = boneTool.get();
+    QAction *boneAction = addTool(std::move(boneTool));
+
+    deformMenu->addSeparator();
+    QAction *resetBone = makeAction(QStringLiteral("deform.resetBone"), tr("Reset &Bone Pose"));
+    resetBone->setStatusTip(tr("Turn the bone selected with the Bone tool back to rest; the "
+                               "bones below it keep their bends"));
+    connect(resetBone, &QAction::triggered, bones, &BoneTool::resetSelectedBone);
+    deformMenu->addAction(resetBone);
+    QAction *editJoints = makeAction(QStringLiteral("deform.editJoints"), tr("&Edit Joints"));
+    editJoints->setCheckable(true);
+    editJoints->setStatusTip(tr("With the Bone tool, move, insert and delete the joints of an "
+                                "unposed skeleton instead of posing it"));
+    connect(editJoints, &QAction::toggled, this, [bones, boneAction](bool on) {
+        bones->setEditJoints(on);
+        if (on && !boneAction->isChecked())
+            boneAction->trigger();
+    });
+    connect(bones, &BoneTool::editJointsChanged, editJoints, &QAction::setChecked);
+    deformMenu->addAction(editJoints);
+    const auto syncReset = [resetBone, bones] {
+        resetBone->setEnabled(bones->canResetSelectedBone());
+    };
+    connect(bones, &BoneTool::selectionChanged, resetBone, syncReset);
+    connect(m_doc, &model::Document::constraintsChanged, resetBone, syncReset);
+    connect(m_doc, &model::Document::documentReset, resetBone, syncReset);
+    syncReset();
 
     auto overlay = std::make_unique<SkeletonOverlay>(m_state, m_canvas);
     SkeletonOverlay *skeletons = overlay.get();

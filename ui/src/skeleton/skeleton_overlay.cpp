@@ -22,11 +22,11 @@ void paintSkeleton(QPainter &painter, const QTransform &canvasToWidget,
             continue;
         const QLineF line(canvasToWidget.map(joints[std::size_t(p)]),
                           canvasToWidget.map(joints[j]));
-        const bool hot = int(j) == look.highlightJoint;
+        const bool hot = int(j) == look.highlightJoint || int(j) == look.selectedJoint;
         painter.setPen(QPen(QColor(255, 255, 255, 200), hot ? 7 : 5, Qt::SolidLine, Qt::RoundCap));
         painter.drawLine(line);
-        painter.setPen(
-            QPen(hot ? bone.darker(130) : bone, hot ? 4 : 2.5, Qt::SolidLine, Qt::RoundCap));
+        painter.setPen(QPen(hot ? bone.darker(130) : bone, hot ? 4 : 2.5,
+                            look.editing ? Qt::DashLine : Qt::SolidLine, Qt::RoundCap));
         painter.drawLine(line);
     }
     for (std::size_t j = 0; j < joints.size(); ++j) {
@@ -37,7 +37,17 @@ void paintSkeleton(QPainter &painter, const QTransform &canvasToWidget,
         painter.setPen(QPen(ring, int(j) == look.highlightJoint ? 2.5 : 1.2));
         painter.setBrush(Qt::NoBrush);
         painter.drawEllipse(at, r, r);
-        const bool locked = j < look.locked.size() && look.locked[j];
+        const bool locked = skeleton.isLocked(int(j));
+        if (int(j) == look.selectedJoint) {
+            painter.setPen(QPen(QColor(30, 110, 230), 2.0));
+            painter.setBrush(Qt::NoBrush);
+            painter.drawEllipse(at, 9, 9);
+        }
+        if (locked) { // a second, red ring: the joint is held in place
+            painter.setPen(QPen(QColor(200, 30, 30), 2.0));
+            painter.setBrush(Qt::NoBrush);
+            painter.drawEllipse(at, 7, 7);
+        }
         painter.setPen(QPen(Qt::white, 1.5));
         painter.setBrush(locked ? QColor(200, 30, 30) : bone.darker(120));
         if (int(j) == skeleton.root) // the root: a square
@@ -64,6 +74,7 @@ void SkeletonOverlay::setShown(bool shown)
     if (shown == m_shown)
         return;
     m_shown = shown;
+    m_state->setShowSkeleton(shown);
     m_canvas->update();
     emit shownChanged(shown);
 }
@@ -76,7 +87,7 @@ void SkeletonOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
     for (const model::StrokeGroup &g : f->groups)
         if (g.visible && !g.rig.skeleton.empty())
             paintSkeleton(painter, canvasToWidget, g.rig.skeleton,
-                          {g.id == m_state->currentGroupId(), -1, {}});
+                          {g.id == m_state->currentGroupId(), -1, -1, false});
 }
 
 } // namespace finbook::ui

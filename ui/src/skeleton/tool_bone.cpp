@@ -130,33 +130,6 @@ model::Id BoneTool::objectAt(const ToolEvent &event) const
     return model::kNoId;
 }
 
-std::vector<bool> BoneTool::locks(model::Id groupId) const
-{
-    const model::StrokeGroup *g = state()->document()->group(groupId);
-    const auto it = m_locked.find(groupId);
-    if (!g || it == m_locked.end() || it->second.size() != g->rig.skeleton.joints.size())
-        return {};
-    return it->second;
-}
-
-bool BoneTool::isLocked(model::Id groupId, int joint) const
-{
-    const std::vector<bool> l = locks(groupId);
-    return joint >= 0 && std::size_t(joint) < l.size() && l[std::size_t(joint)];
-}
-
-void BoneTool::toggleLock(const Hit &hit)
-{
-    const model::StrokeGroup *g = state()->document()->group(hit.groupId);
-    if (!g || hit.part != Part::Joint)
-        return;
-    std::vector<bool> l = locks(hit.groupId);
-    l.resize(g->rig.skeleton.joints.size(), false);
-    l[std::size_t(hit.joint)] = !l[std::size_t(hit.joint)];
-    m_locked[hit.groupId] = std::move(l);
-    canvas()->update();
-}
-
 void BoneTool::build(model::Id groupId)
 {
     model::Document *doc = state()->document();
@@ -171,7 +144,6 @@ void BoneTool::build(model::Id groupId)
         return;
     }
     state()->setCurrentGroupId(groupId);
-    m_locked.erase(groupId);
     doc->undoStack()->push(new model::BuildSkeletonCommand(doc, groupId, std::move(*rig)));
     m_controller->prepare(groupId);
 }
@@ -204,8 +176,13 @@ void BoneTool::press(const ToolEvent &event)
     m_pressPos = event.pos;
     m_drag = {};
     const Hit hit = hitAt(event);
-    if (hit.part == Part::Joint &&
-        (event.button == Qt::RightButton || (event.modifiers & Qt::AltModifier))) {
+    if (hit.part != Part::None)
+        select(hit);
+    if (m_editJoints && hit.part != Part::None) {
+        pressEditing(hit, event.pos);
+        return;
+    }
+    if (hit.part == Part::Joint && (event.modifiers & Qt::AltModifier)) {
         toggleLock(hit);
         return;
     }
@@ -221,21 +198,25 @@ void BoneTool::press(const ToolEvent &event)
     const model::StrokeGroup *g = state()->document()->group(groupId);
     if (g->rig.skeleton.empty())
         build(groupId);
+    else if (m_editJoints)
+        canvas()->postMessage(tr("Drag a joint to move it, click a bone to insert a joint; "
+                                 "right-click a joint to delete it."));
     else
         canvas()->postMessage(tr("Drag a bone to turn it, a joint to pull it, the root to move "
                                  "the object; Alt-click a joint to lock it."));
-}
-
-void BoneTool::secondaryClick(const ToolEvent &event)
-{
-    if (const Hit hit = hitAt(event); hit.part == Part::Joint)
-        toggleLock(hit);
 }
 
 void BoneTool::move(const ToolEvent &event)
 {
     if (m_drag.kind == DragKind::None || event.pos == m_pressPos)
         return;
+    model::Document *doc = state()->document();
+    if (m_drag.kind == DragKind::MoveJoint) {
+        push(new model::MoveJointCommand(doc, m_drag.groupId, m_drag.joint,
+                                         m_drag.jointRest + (event.pos - m_drag.grabbed),
+                                         m_dragSerial));
+        return;
+    }
     deform::SkeletonPose pose = m_drag.start;
     const Eigen::Vector2d cursor = vec(event.pos);
     if (m_drag.kind == DragKind::Root) {
@@ -247,13 +228,15 @@ void BoneTool::move(const ToolEvent &event)
             return;
         pose = std::move(*turned);
     } else {
+        const model::StrokeGroup *g = doc->group(m_drag.groupId);
+        if (!g)
+            return;
         auto solved = deform::solveIk(m_drag.skeleton, m_drag.start, m_drag.joint, cursor,
-                                      locks(m_drag.groupId));
+                                      g->rig.skeleton.locked);
         if (!solved)
             return;
         pose = std::move(solved->pose);
     }
-    model::Document *doc = state()->document();
     doc->undoStack()->push(new model::PoseBonesCommand(
         doc, m_drag.groupId, std::vector<double>(pose.angles.begin(), pose.angles.end()),
         QPointF(pose.rootOffset.x(), pose.rootOffset.y()), m_dragSerial));
@@ -285,7 +268,9 @@ void BoneTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidget)
             continue;
         SkeletonLook look;
         look.current = g.id == state()->currentGroupId();
-        look.locked = locks(g.id);
+        look.editing = m_editJoints;
+        if (m_selected.groupId == g.id)
+            look.selectedJoint = m_selected.joint;
         if (m_drag.groupId == g.id)
             look.highlightJoint = m_drag.joint;
         else if (m_hover.groupId == g.id)

@@ -18,6 +18,7 @@ enum class CommandId : int {
     PoseRig = 1,
     SetMeshDensity,
     SetSkeletonSettings,
+    MoveJoint,
 };
 
 class DocumentCommand : public QUndoCommand {

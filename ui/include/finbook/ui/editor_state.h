@@ -44,6 +44,8 @@ public:
     const OnionSkin &onionSkin() const { return m_onion; }
     bool isPlaying() const { return m_playing; }
     bool showMesh() const { return m_showMesh; }
+    // View → Show Skeleton; while on, skeletons follow the drawing (skeleton_follow.h).
+    bool showSkeleton() const { return m_showSkeleton; }
 
 public slots:
     void setCurrentFrameIndex(int index);
@@ -53,6 +55,7 @@ public slots:
     void setOnionSkin(const OnionSkin &onion);
     void setPlaying(bool playing);
     void setShowMesh(bool show);
+    void setShowSkeleton(bool show);
     void nextFrame();
     void previousFrame();
 
@@ -76,6 +79,7 @@ private:
     OnionSkin m_onion;
     bool m_playing = false;
     bool m_showMesh = false;
+    bool m_showSkeleton = false;
 };
 
 } // namespace finbook::ui

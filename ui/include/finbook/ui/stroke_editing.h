@@ -46,9 +46,14 @@ public:
     // inside the edit's macro.
     static bool applyPoses(model::Document *doc, const std::vector<model::Id> &groupIds);
     // Opens the undo macro of a rest edit on `groupIds` and applies their poses first; the
-    // macro's text says "(pose applied)" when it did. Close it with endMacro().
+    // macro's text says "(pose applied)" when it did. Close it with endRestEdit() (or
+    // endMacro() when the edit leaves the drawing's outline as it is).
     static void beginRestEdit(model::Document *doc, const QString &text,
                               const std::vector<model::Id> &groupIds);
+    // Closes a rest edit's macro after letting the skeletons of `following` (from
+    // skeletonsFollowing() before the edit, skeleton/skeleton_follow.h) follow the new
+    // drawing, so the stroke edit and the skeleton are one undo step.
+    static void endRestEdit(EditorState &state, const std::vector<model::Id> &following);
     // Selects every stroke of the visible, unlocked objects of the current frame.
     static void selectAll(EditorState &state);
 

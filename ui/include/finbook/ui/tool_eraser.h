@@ -2,7 +2,10 @@
 // undo step. Hidden and locked objects are left alone.
 #pragma once
 
+#include <finbook/model/types.h>
 #include <finbook/ui/canvas_tool.h>
+
+#include <vector>
 
 namespace finbook::ui {
 
@@ -32,6 +35,8 @@ private:
 
     bool m_erasing = false;
     bool m_macroOpen = false;
+    std::vector<model::Id> m_erasedFrom; // objects the open macro erased from
+    std::vector<model::Id> m_following;  // those whose skeleton follows (skeleton_follow.h)
     QPointF m_last;
     QPointF m_cursor;
     bool m_cursorShown = false;

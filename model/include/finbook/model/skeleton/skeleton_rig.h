@@ -5,7 +5,8 @@
 // root offset (px), as deform/skeleton/skeleton.h defines it: no drag history, so undo, reopen
 // and re-solve give the same strokes. The rest joints and parents are the rest definition (a
 // change re-precomputes the skinning on the worker); angles, offset and skinning mode only
-// re-solve.
+// re-solve. Joint locks (issue 10) only steer inverse kinematics: they are neither rest nor
+// pose, so toggling one never re-precomputes or re-solves.
 #pragma once
 
 #include <QPointF>
@@ -40,10 +41,18 @@ struct SkeletonRig {
     std::vector<double> angles;
     QPointF rootOffset;
     SkinningMode mode = SkinningMode::Rigid;
+    // Joints an IK drag must not move (the chain stops below them): empty when none is locked
+    // (kept canonical so files and comparisons agree), else one flag per joint.
+    std::vector<bool> locked;
 
     bool empty() const { return joints.empty(); }
     int jointCount() const { return int(joints.size()); }
     bool isPosed() const;
+    bool isLocked(int joint) const;
+    // The same skeleton with `joint`'s lock set to `on` (locked stays canonical).
+    SkeletonRig withLock(int joint, bool on) const;
+    // Children of each joint, in index order.
+    std::vector<std::vector<int>> children() const;
     // The same skeleton with every angle zero and no offset.
     SkeletonRig atRest() const;
     // The posed joints become the rest joints, angles zero, offset zero.
@@ -52,7 +61,8 @@ struct SkeletonRig {
     std::vector<QPointF> posedJoints() const;
     // Same rest joints and parents: what the skinning precompute depends on.
     bool sameRest(const SkeletonRig &other) const;
-    // Sizes agree, everything finite, parent[j] ∈ [−1, j), root a root, settings in [0, 1].
+    // Sizes agree (locked empty or one per joint, not all false), everything finite,
+    // parent[j] ∈ [−1, j), root a root, settings in [0, 1].
     bool isValid() const;
     friend bool operator==(const SkeletonRig &, const SkeletonRig &) = default;
 };

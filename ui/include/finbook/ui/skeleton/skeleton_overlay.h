@@ -1,6 +1,8 @@
 // View → Show Skeleton: every object's skeleton over the current frame, posed as it is shown.
 // Joints are circles scaled to their inscribed radius, bones lines, the root a square; the
-// current object's skeleton is coloured, the others grey. The Bone tool draws the same way.
+// current object's skeleton is coloured, the others grey. Locked joints are red with a ring
+// (a pin head: they stay put). The Bone tool draws the same way, plus its selection and, in
+// Edit Joints, dashed bones.
 #pragma once
 
 #include <finbook/model/types.h>
@@ -17,8 +19,9 @@ class EditorState;
 
 struct SkeletonLook {
     bool current = false;
-    int highlightJoint = -1;  // the joint or bone under the cursor / being dragged
-    std::vector<bool> locked; // per joint, or empty
+    int highlightJoint = -1; // the joint or bone under the cursor / being dragged
+    int selectedJoint = -1;  // the Bone tool's selected joint or bone
+    bool editing = false;    // Edit Joints: the rest skeleton is being edited
 };
 
 // Paints one skeleton (its posed joints) in widget space.

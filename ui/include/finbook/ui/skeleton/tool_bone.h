@@ -1,8 +1,13 @@
 // The Bone tool (K): poses objects by their skeletons. Click an object without a skeleton to
 // build one; drag a bone to turn it about its parent joint (forward kinematics); drag a joint
 // to pull it and the chain above it, up to the nearest locked joint or the root (inverse
-// kinematics); drag the root to move the whole object. Alt-click or right-click a joint to
-// lock or unlock it. Each drag is one undo step.
+// kinematics); drag the root to move the whole object. Alt-click a joint to lock or unlock it
+// (locks are saved with the skeleton). Right-click a joint or bone for its menu: Lock Joint,
+// Reset Bone Pose, Edit Joints and, while editing, Insert Joint Here and Delete Joint.
+//
+// Edit Joints (a mode, from the menu or Deform → Edit Joints) changes the rest skeleton of an
+// unposed object instead of posing it: drag a joint to move it, click a bone to split it with
+// a new joint. Every drag, click and menu choice is one undo step.
 #pragma once
 
 #include <finbook/deform/skeleton/skeleton.h>
@@ -10,7 +15,10 @@
 #include <finbook/ui/canvas_tool.h>
 
 #include <functional>
-#include <map>
+
+class QAction;
+class QMenu;
+class QUndoCommand;
 #include <vector>
 
 namespace finbook::ui {
@@ -43,11 +51,27 @@ public:
     // The joint or bone drawn under the cursor (screen tolerance), current object first.
     Hit hitAt(const ToolEvent &event) const;
     bool isLocked(model::Id groupId, int joint) const;
+    // The joint or bone last pressed or right-clicked (part None when there is none).
+    Hit selection() const;
+    // Whether Reset Bone Pose has something to do for the selection, and doing it.
+    bool canResetSelectedBone() const;
+    void resetSelectedBone();
+    bool editJoints() const { return m_editJoints; }
+    void setEditJoints(bool on);
+    // Shows the context menu and returns the chosen action; the default runs QMenu::exec.
+    void setMenuExec(std::function<QAction *(QMenu &, QPoint)> exec)
+    {
+        m_menuExec = std::move(exec);
+    }
     // Asked before a new skeleton replaces a posed rig; the default asks with a message box.
     void setConfirmDiscard(std::function<bool()> confirm) { m_confirmDiscard = std::move(confirm); }
 
+signals:
+    void selectionChanged();
+    void editJointsChanged(bool on);
+
 private:
-    enum class DragKind { None, Bone, Joint, Root };
+    enum class DragKind { None, Bone, Joint, Root, MoveJoint };
     struct Drag {
         model::Id groupId = model::kNoId;
         DragKind kind = DragKind::None;
@@ -55,21 +79,28 @@ private:
         deform::Skeleton skeleton;
         deform::SkeletonPose start;
         QPointF grabbed;
+        QPointF jointRest; // MoveJoint: where the joint was when grabbed
     };
 
     model::Id objectAt(const ToolEvent &event) const;
     void build(model::Id groupId);
     void toggleLock(const Hit &hit);
     bool startDrag(const Hit &hit, QPointF at);
-    std::vector<bool> locks(model::Id groupId) const;
+    void pressEditing(const Hit &hit, QPointF at);
+    void select(const Hit &hit);
+    void insertJoint(const Hit &hit, QPointF at);
+    void deleteJoint(const Hit &hit);
+    void push(QUndoCommand *command);
 
     model::DeformController *m_controller;
     Drag m_drag;
     Hit m_hover;
     QPointF m_pressPos;
     int m_dragSerial = 0;
-    std::map<model::Id, std::vector<bool>> m_locked;
+    Hit m_selected;
+    bool m_editJoints = false;
     std::function<bool()> m_confirmDiscard;
+    std::function<QAction *(QMenu &, QPoint)> m_menuExec;
 };
 
 } // namespace finbook::ui

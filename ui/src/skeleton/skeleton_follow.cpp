@@ -1,0 +1,50 @@
+#include <finbook/model/cage/cage_commands.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/skeleton/skeleton_follow.h>
+
+#include <algorithm>
+
+namespace finbook::ui {
+
+std::vector<model::Id> skeletonsFollowing(const EditorState &state,
+                                          const std::vector<model::Id> &groupIds)
+{
+    std::vector<model::Id> ids;
+    if (!state.showSkeleton())
+        return ids;
+    for (model::Id id : groupIds) {
+        const model::StrokeGroup *g = state.document()->group(id);
+        if (g && g->rig.kind() == model::RigKind::Skeleton && !g->rig.skeleton.isPosed() &&
+            std::find(ids.begin(), ids.end(), id) == ids.end())
+            ids.push_back(id);
+    }
+    return ids;
+}
+
+void followDrawing(EditorState &state, const std::vector<model::Id> &groupIds)
+{
+    if (!state.showSkeleton())
+        return;
+    model::Document *doc = state.document();
+    std::vector<model::Id> ids = groupIds;
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    for (model::Id id : ids) {
+        const model::StrokeGroup *g = doc->group(id);
+        if (!g || g->rig.kind() != model::RigKind::Skeleton || g->rig.skeleton.isPosed())
+            continue;
+        const model::SkeletonRig &old = g->rig.skeleton;
+        if (g->strokes.empty()) {
+            doc->undoStack()->push(new model::RemoveRigCommand(doc, id));
+            continue;
+        }
+        auto rebuilt = model::buildSkeletonRig(*g, old.settings, old.joints[std::size_t(old.root)]);
+        if (!rebuilt)
+            continue; // e.g. a single dot: keep the bones the drawing had
+        rebuilt->mode = old.mode;
+        doc->undoStack()->push(new model::BuildSkeletonCommand(doc, id, std::move(*rebuilt)));
+    }
+}
+
+} // namespace finbook::ui

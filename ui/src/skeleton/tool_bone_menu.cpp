@@ -1,0 +1,186 @@
+// The Bone tool's joint and bone commands: locks, Reset Bone Pose, the context menu, and the
+// Edit Joints mode (move, insert, delete rest joints).
+#include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/model/skeleton/skeleton_joint_edit.h>
+#include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/editor_state.h>
+#include <finbook/ui/skeleton/tool_bone.h>
+
+#include <QMenu>
+
+namespace finbook::ui {
+
+void BoneTool::push(QUndoCommand *command)
+{
+    state()->document()->undoStack()->push(command);
+    canvas()->update();
+}
+
+void BoneTool::select(const Hit &hit)
+{
+    if (hit.groupId == m_selected.groupId && hit.joint == m_selected.joint &&
+        hit.part == m_selected.part)
+        return;
+    m_selected = hit;
+    emit selectionChanged();
+    canvas()->update();
+}
+
+BoneTool::Hit BoneTool::selection() const
+{
+    const model::StrokeGroup *g = state()->document()->group(m_selected.groupId);
+    if (!g || m_selected.joint < 0 || m_selected.joint >= g->rig.skeleton.jointCount())
+        return {};
+    return m_selected;
+}
+
+bool BoneTool::isLocked(model::Id groupId, int joint) const
+{
+    const model::StrokeGroup *g = state()->document()->group(groupId);
+    return g && g->rig.skeleton.isLocked(joint);
+}
+
+void BoneTool::toggleLock(const Hit &hit)
+{
+    if (hit.part != Part::Joint)
+        return;
+    model::Document *doc = state()->document();
+    push(new model::SetJointLockCommand(doc, hit.groupId, hit.joint,
+                                        !isLocked(hit.groupId, hit.joint)));
+}
+
+bool BoneTool::canResetSelectedBone() const
+{
+    const Hit hit = selection();
+    if (hit.part == Part::None)
+        return false;
+    const model::StrokeGroup *g = state()->document()->group(hit.groupId);
+    const model::SkeletonRig &s = g->rig.skeleton;
+    const std::size_t j = std::size_t(hit.joint);
+    return !g->locked && ((j < s.angles.size() && s.angles[j] != 0.0) ||
+                          (s.parent[j] < 0 && s.rootOffset != QPointF()));
+}
+
+void BoneTool::resetSelectedBone()
+{
+    if (!canResetSelectedBone())
+        return;
+    push(
+        new model::ResetBonePoseCommand(state()->document(), m_selected.groupId, m_selected.joint));
+}
+
+void BoneTool::setEditJoints(bool on)
+{
+    if (on == m_editJoints)
+        return;
+    m_editJoints = on;
+    m_drag = {};
+    if (canvas()) {
+        canvas()->postMessage(
+            on ? tr("Edit Joints: drag a joint to move it, click a bone to insert a joint.")
+               : QString());
+        canvas()->update();
+    }
+    emit editJointsChanged(on);
+}
+
+void BoneTool::pressEditing(const Hit &hit, QPointF at)
+{
+    const model::StrokeGroup *g = state()->document()->group(hit.groupId);
+    if (!g)
+        return;
+    state()->setCurrentGroupId(hit.groupId);
+    if (g->rig.skeleton.isPosed()) {
+        canvas()->postMessage(
+            tr("Reset the pose or apply it to the drawing before editing joints."));
+        return;
+    }
+    if (hit.part == Part::Bone) {
+        insertJoint(hit, at);
+        return;
+    }
+    ++m_dragSerial;
+    m_drag.groupId = hit.groupId;
+    m_drag.joint = hit.joint;
+    m_drag.kind = DragKind::MoveJoint;
+    m_drag.grabbed = at;
+    m_drag.jointRest = g->rig.skeleton.joints[std::size_t(hit.joint)];
+}
+
+void BoneTool::insertJoint(const Hit &hit, QPointF at)
+{
+    model::Document *doc = state()->document();
+    const model::StrokeGroup *g = doc->group(hit.groupId);
+    if (!g)
+        return;
+    auto inserted = model::withJointInserted(g->rig.skeleton, hit.joint, at);
+    if (!inserted) {
+        canvas()->postMessage(inserted.error());
+        return;
+    }
+    auto *command = new model::InsertJointCommand(doc, hit.groupId, hit.joint, at);
+    const int joint = command->insertedJoint();
+    push(command);
+    select({hit.groupId, Part::Joint, joint});
+    m_controller->prepare(hit.groupId);
+}
+
+void BoneTool::deleteJoint(const Hit &hit)
+{
+    model::Document *doc = state()->document();
+    const model::StrokeGroup *g = doc->group(hit.groupId);
+    if (!g)
+        return;
+    if (auto deleted = model::withJointDeleted(g->rig.skeleton, hit.joint); !deleted) {
+        canvas()->postMessage(deleted.error());
+        return;
+    }
+    push(new model::DeleteJointCommand(doc, hit.groupId, hit.joint));
+    select({});
+    m_controller->prepare(hit.groupId);
+}
+
+void BoneTool::secondaryClick(const ToolEvent &event)
+{
+    const Hit hit = hitAt(event);
+    if (hit.part == Part::None)
+        return;
+    select(hit);
+    QMenu menu(canvas());
+    const auto add = [&menu](const QString &text, const char *name) {
+        QAction *a = menu.addAction(text);
+        a->setObjectName(QString::fromLatin1(name));
+        return a;
+    };
+    QAction *lock = nullptr;
+    if (hit.part == Part::Joint)
+        lock = add(isLocked(hit.groupId, hit.joint) ? tr("Unlock Joint") : tr("Lock Joint"),
+                   "bone.lock");
+    QAction *reset = add(tr("Reset Bone Pose"), "bone.resetBone");
+    reset->setEnabled(canResetSelectedBone());
+    menu.addSeparator();
+    QAction *edit = add(tr("Edit Joints"), "bone.editJoints");
+    edit->setCheckable(true);
+    edit->setChecked(m_editJoints);
+    QAction *insert = nullptr, *remove = nullptr;
+    if (m_editJoints && hit.part == Part::Bone)
+        insert = add(tr("Insert Joint Here"), "bone.insertJoint");
+    if (m_editJoints && hit.part == Part::Joint)
+        remove = add(tr("Delete Joint"), "bone.deleteJoint");
+    const QPoint global = canvas()->mapToGlobal(event.widgetPos.toPoint());
+    QAction *chosen = m_menuExec ? m_menuExec(menu, global) : menu.exec(global);
+    if (!chosen || !chosen->isEnabled())
+        return;
+    if (chosen == lock)
+        toggleLock(hit);
+    else if (chosen == reset)
+        resetSelectedBone();
+    else if (chosen == edit)
+        setEditJoints(!m_editJoints);
+    else if (chosen == insert)
+        insertJoint(hit, event.pos);
+    else if (chosen == remove)
+        deleteJoint(hit);
+}
+
+} // namespace finbook::ui
