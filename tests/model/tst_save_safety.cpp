@@ -105,6 +105,7 @@ private slots:
     void errnoClassification();
     void replacedFileKeepsPermissions();
     void leftoversOfGoneSaversAreRemoved();
+    void backupAlreadyLinkedToTheFileLeavesNoTemporary();
 };
 
 void TestSaveSafety::fullTmpfsKeepsOldFile()
@@ -384,6 +385,28 @@ void TestSaveSafety::leftoversOfGoneSaversAreRemoved()
     if (liveStart == 0)
         QSKIP("no /proc here: a reused pid cannot be told from its first owner");
     QVERIFY2(!QFile::exists(reused), "a temporary file of a reused pid was kept");
+}
+
+// A save killed after keeping the backup (a hard link to the file) but before replacing the
+// file leaves the file and its backup as two names of one file. The next save must still keep
+// the backup and leave no temporary file: rename() between two links of one file is a no-op.
+void TestSaveSafety::backupAlreadyLinkedToTheFileLeavesNoTemporary()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("a.finbook"));
+    const QString backup = finbookBackupPath(path);
+    Document doc;
+    buildSample(doc);
+    QVERIFY(!saveFinbook(doc, path));
+    const QByteArray first = fileBytes(path);
+    QVERIFY(::link(QFile::encodeName(path).constData(), QFile::encodeName(backup).constData()) ==
+            0);
+    editHold(doc, 3);
+    QVERIFY(!saveFinbook(doc, path));
+    QCOMPARE(fileBytes(backup), first);
+    QVERIFY(fileBytes(path) != first);
+    QCOMPARE(hiddenAndFiles(dir.path()),
+             QStringList({QStringLiteral("a.finbook"), QStringLiteral("a.finbook~")}));
 }
 
 QTEST_GUILESS_MAIN(TestSaveSafety)

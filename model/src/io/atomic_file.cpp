@@ -231,8 +231,12 @@ std::optional<WriteFailure> keepBackup(const QString &target, const QString &bac
     }
     if (error == EXDEV || error == EPERM || error == ENOTSUP || error == EMLINK) // no links: copy
         error = copyToTemporary(target, backup, temporary).value_or(0);
-    if (error == 0 && ::rename(encoded(temporary).constData(), encoded(backup).constData()) != 0) {
-        error = errno;
+    if (error == 0) { // the temporary is ours
+        if (::rename(encoded(temporary).constData(), encoded(backup).constData()) != 0)
+            error = errno;
+        // rename() of two links to one file does nothing and succeeds: when a save was killed
+        // between keeping the backup and replacing the target, both names are one file, and
+        // the temporary link would stay behind. Removing it is harmless once it was moved.
         ::unlink(encoded(temporary).constData());
     }
     if (error == 0)
