@@ -845,27 +845,27 @@
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="241"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="245"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>die Sicherungskopie „%1“ kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="288"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
         <source>the disk is full</source>
         <translation>der Datenträger ist voll</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="290"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="294"/>
         <source>the disk is read-only</source>
         <translation>der Datenträger ist schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="296"/>
         <source>you do not have permission to write in the folder &quot;%1&quot;</source>
         <translation>Sie haben keine Schreibberechtigung für den Ordner „%1“</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="295"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="299"/>
         <source>the folder &quot;%1&quot; does not exist</source>
         <translation>der Ordner „%1“ existiert nicht</translation>
     </message>
@@ -1848,7 +1848,7 @@
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="29"/>
-        <source>&amp;Remove Pins or Cage</source>
+        <source>Remo&amp;ve Pins or Cage</source>
         <translation>Pins oder Käfig &amp;entfernen</translation>
     </message>
     <message>
@@ -2200,12 +2200,12 @@
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="19"/>
-        <source>Generate &amp;In-betweens…</source>
+        <source>Generate In-be&amp;tweens…</source>
         <translation>&amp;Zwischenbilder erzeugen…</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="21"/>
-        <source>De&amp;lete Frame</source>
+        <source>Delete Fra&amp;me</source>
         <translation>Einzelbild &amp;löschen</translation>
     </message>
     <message>
@@ -2220,7 +2220,7 @@
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="29"/>
-        <source>Hold &amp;Longer</source>
+        <source>Hold Lon&amp;ger</source>
         <translation>Län&amp;ger halten</translation>
     </message>
     <message>
@@ -2704,7 +2704,7 @@
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="185"/>
-        <source>&amp;Onion Skin</source>
+        <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
@@ -2849,7 +2849,7 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="69"/>
-        <source>&amp;Skinning</source>
+        <source>S&amp;kinning</source>
         <translation>S&amp;kinning</translation>
     </message>
     <message>
@@ -3030,7 +3030,7 @@
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="64"/>
         <location filename="../ui/src/playback_controller.cpp" line="206"/>
-        <source>&amp;Play</source>
+        <source>Pl&amp;ay</source>
         <translation>Abs&amp;pielen</translation>
     </message>
     <message>
@@ -3040,7 +3040,7 @@
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="76"/>
-        <source>&amp;Loop</source>
+        <source>L&amp;oop</source>
         <translation>&amp;Endlosschleife</translation>
     </message>
     <message>
@@ -3050,7 +3050,7 @@
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="206"/>
-        <source>&amp;Pause</source>
+        <source>P&amp;ause</source>
         <translation>&amp;Pause</translation>
     </message>
 </context>

@@ -845,27 +845,27 @@
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="241"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="245"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>la sauvegarde «&#xa0;%1&#xa0;» ne peut pas être écrite (%2)</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="288"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
         <source>the disk is full</source>
         <translation>le disque est plein</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="290"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="294"/>
         <source>the disk is read-only</source>
         <translation>le disque est en lecture seule</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="296"/>
         <source>you do not have permission to write in the folder &quot;%1&quot;</source>
         <translation>vous n&apos;avez pas le droit d&apos;écrire dans le dossier «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="295"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="299"/>
         <source>the folder &quot;%1&quot; does not exist</source>
         <translation>le dossier «&#xa0;%1&#xa0;» n&apos;existe pas</translation>
     </message>
@@ -1848,7 +1848,7 @@
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="29"/>
-        <source>&amp;Remove Pins or Cage</source>
+        <source>Remo&amp;ve Pins or Cage</source>
         <translation>Re&amp;tirer les épingles ou la cage</translation>
     </message>
     <message>
@@ -2200,12 +2200,12 @@
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="19"/>
-        <source>Generate &amp;In-betweens…</source>
+        <source>Generate In-be&amp;tweens…</source>
         <translation>Générer des in&amp;tervalles…</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="21"/>
-        <source>De&amp;lete Frame</source>
+        <source>Delete Fra&amp;me</source>
         <translation>&amp;Supprimer l&apos;image</translation>
     </message>
     <message>
@@ -2220,7 +2220,7 @@
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="29"/>
-        <source>Hold &amp;Longer</source>
+        <source>Hold Lon&amp;ger</source>
         <translation>&amp;Allonger l&apos;exposition</translation>
     </message>
     <message>
@@ -2719,7 +2719,7 @@
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="185"/>
-        <source>&amp;Onion Skin</source>
+        <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
@@ -2849,7 +2849,7 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="69"/>
-        <source>&amp;Skinning</source>
+        <source>S&amp;kinning</source>
         <translation>&amp;Habillage</translation>
     </message>
     <message>
@@ -3030,7 +3030,7 @@
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="64"/>
         <location filename="../ui/src/playback_controller.cpp" line="206"/>
-        <source>&amp;Play</source>
+        <source>Pl&amp;ay</source>
         <translation>&amp;Lecture</translation>
     </message>
     <message>
@@ -3040,7 +3040,7 @@
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="76"/>
-        <source>&amp;Loop</source>
+        <source>L&amp;oop</source>
         <translation>Lecture en &amp;boucle</translation>
     </message>
     <message>
@@ -3050,7 +3050,7 @@
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="206"/>
-        <source>&amp;Pause</source>
+        <source>P&amp;ause</source>
         <translation>Pa&amp;use</translation>
     </message>
 </context>

@@ -844,27 +844,27 @@
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="241"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="245"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>バックアップ「%1」を書き込めません（%2）</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="288"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
         <source>the disk is full</source>
         <translation>ディスクがいっぱいです</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="290"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="294"/>
         <source>the disk is read-only</source>
         <translation>ディスクが読み取り専用です</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="296"/>
         <source>you do not have permission to write in the folder &quot;%1&quot;</source>
         <translation>フォルダー「%1」に書き込む権限がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="295"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="299"/>
         <source>the folder &quot;%1&quot; does not exist</source>
         <translation>フォルダー「%1」が存在しません</translation>
     </message>
@@ -1844,7 +1844,7 @@
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="29"/>
-        <source>&amp;Remove Pins or Cage</source>
+        <source>Remo&amp;ve Pins or Cage</source>
         <translation>ピンまたはケージを削除(&amp;M)</translation>
     </message>
     <message>
@@ -2194,12 +2194,12 @@
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="19"/>
-        <source>Generate &amp;In-betweens…</source>
+        <source>Generate In-be&amp;tweens…</source>
         <translation>中割りを生成(&amp;T)…</translation>
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="21"/>
-        <source>De&amp;lete Frame</source>
+        <source>Delete Fra&amp;me</source>
         <translation>フレームを削除(&amp;L)</translation>
     </message>
     <message>
@@ -2214,7 +2214,7 @@
     </message>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="29"/>
-        <source>Hold &amp;Longer</source>
+        <source>Hold Lon&amp;ger</source>
         <translation>表示時間を延ばす(&amp;G)</translation>
     </message>
     <message>
@@ -2711,7 +2711,7 @@
     </message>
     <message>
         <location filename="../ui/src/main_window_menus.cpp" line="185"/>
-        <source>&amp;Onion Skin</source>
+        <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
@@ -2841,7 +2841,7 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="69"/>
-        <source>&amp;Skinning</source>
+        <source>S&amp;kinning</source>
         <translation>スキニング(&amp;K)</translation>
     </message>
     <message>
@@ -3022,7 +3022,7 @@
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="64"/>
         <location filename="../ui/src/playback_controller.cpp" line="206"/>
-        <source>&amp;Play</source>
+        <source>Pl&amp;ay</source>
         <translation>再生(&amp;P)</translation>
     </message>
     <message>
@@ -3032,7 +3032,7 @@
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="76"/>
-        <source>&amp;Loop</source>
+        <source>L&amp;oop</source>
         <translation>ループ再生(&amp;O)</translation>
     </message>
     <message>
@@ -3042,7 +3042,7 @@
     </message>
     <message>
         <location filename="../ui/src/playback_controller.cpp" line="206"/>
-        <source>&amp;Pause</source>
+        <source>P&amp;ause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>
 </context>

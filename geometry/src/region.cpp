@@ -43,4 +43,22 @@ long regionVertexCount(const Region &region)
     return count;
 }
 
+bool regionContains(const Region &region, double x, double y)
+{
+    bool inside = false;
+    const auto cross = [&](const Eigen::MatrixX2d &ring) {
+        for (Eigen::Index i = 0, j = ring.rows() - 1; i < ring.rows(); j = i++) {
+            const double ax = ring(i, 0), ay = ring(i, 1), bx = ring(j, 0), by = ring(j, 1);
+            if ((ay > y) != (by > y) && x < (bx - ax) * (y - ay) / (by - ay) + ax)
+                inside = !inside;
+        }
+    };
+    for (const Polygon &polygon : region) {
+        cross(polygon.outer);
+        for (const Eigen::MatrixX2d &hole : polygon.holes)
+            cross(hole);
+    }
+    return inside;
+}
+
 } // namespace finbook::geometry

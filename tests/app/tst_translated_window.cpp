@@ -140,7 +140,7 @@ class TestTranslatedWindow : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase();
-    void menusHaveUniqueMnemonics_data() { languages(false); }
+    void menusHaveUniqueMnemonics_data() { languages(true); }
     void menusHaveUniqueMnemonics();
     void toolbarButtonsShowNoMnemonic_data() { languages(true); }
     void toolbarButtonsShowNoMnemonic();
@@ -164,8 +164,6 @@ void TestTranslatedWindow::initTestCase()
     QCoreApplication::setApplicationName(QStringLiteral("FinbookTests"));
 }
 
-// English is the source text: its mnemonics are the developers' (they reuse L, P and O in the
-// Frame and View menus), the translations' are checked here.
 void TestTranslatedWindow::languages(bool withEnglish)
 {
     QTest::addColumn<QString>("language");
@@ -183,7 +181,8 @@ void TestTranslatedWindow::menusHaveUniqueMnemonics()
     ui::MainWindow window;
     const QList<QAction *> titles = window.menuBar()->actions();
     QVERIFY(titles.size() >= 8);
-    QVERIFY2(titles.first()->text() != QLatin1String("&File"), "the catalogue was not used");
+    if (language != QLatin1String("en"))
+        QVERIFY2(titles.first()->text() != QLatin1String("&File"), "the catalogue was not used");
     QStringList clashes;
     collectClashes(QStringLiteral("menu bar"), titles, clashes);
     QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));

@@ -105,6 +105,7 @@ private slots:
     void partsDrawnApartStayLobes();
     void selfCrossingAndRepeatedPoints();
     void marginAndGapScaleTheArea();
+    void regionContainsItsInside();
 };
 
 void TestSilhouette::singleStrokeIsABand()
@@ -253,6 +254,44 @@ void TestSilhouette::marginAndGapScaleTheArea()
     const auto c = silhouette(moved, thin);
     QVERIFY(c.hasValue());
     QVERIFY(std::abs(regionArea(*c) - regionArea(*a)) < 1e-3 * regionArea(*a));
+}
+
+// regionContains agrees with the tests' own even-odd check everywhere on a grid, over a filled
+// outline and over concentric rings that keep their hole; empty and flat regions hold nothing.
+void TestSilhouette::regionContainsItsInside()
+{
+    const std::vector<StrokeInput> outline{{finbook::test::circle(96, 100, {0, 0}), 3.0}};
+    const auto filled = silhouette(outline, SilhouetteOptions());
+    QVERIFY(filled.hasValue());
+    QVERIFY(regionContains(*filled, 0, 0));
+    QVERIFY(!regionContains(*filled, 130, 0));
+
+    std::vector<StrokeInput> rings;
+    for (double r = 100.0; r <= 160.0; r += 5.0)
+        rings.push_back({arc(240, r, {0, 0}), 3.0});
+    SilhouetteOptions keepHoles;
+    keepHoles.holes = HoleMode::KeepHoles;
+    const auto annulus = silhouette(rings, keepHoles);
+    QVERIFY(annulus.hasValue());
+    QCOMPARE(holeCount(*annulus), std::size_t(1));
+    QVERIFY(!regionContains(*annulus, 0, 0));    // the hole
+    QVERIFY(regionContains(*annulus, 132.5, 0)); // the band
+
+    int in = 0;
+    for (const Region *region : {&*filled, &*annulus})
+        for (double x = -180.5; x < 180; x += 7.0)
+            for (double y = -180.5; y < 180; y += 7.0) {
+                const bool expected = inside(*region, Eigen::RowVector2d(x, y));
+                QCOMPARE(regionContains(*region, x, y), expected);
+                in += expected;
+            }
+    QVERIFY(in > 500); // the grid did sample the insides
+
+    QVERIFY(!regionContains(Region(), 0, 0));
+    Polygon flat;
+    flat.outer.resize(2, 2);
+    flat.outer << 0, 0, 10, 0;
+    QVERIFY(!regionContains(Region{flat}, 5, 0));
 }
 
 QTEST_APPLESS_MAIN(TestSilhouette)

@@ -157,6 +157,7 @@ private slots:
     void skeletonStaysWhenHiddenOrPosed();
     void erasingEverythingRemovesTheSkeleton();
     void erasingALimbRebuildsTheSkeleton();
+    void clickInsideAnOutlineBuilds();
 };
 
 void TestBoneTool::clickBuildsThenDragTurnsABone()
@@ -561,6 +562,39 @@ void TestBoneTool::erasingALimbRebuildsTheSkeleton()
     QVERIFY2(lowest() < 260, qPrintable(QString::number(lowest())));
     fx.doc.undoStack()->undo();
     QCOMPARE(serializeFinbook(fx.doc), start);
+}
+
+// An outline drawn as one closed stroke: a click in its empty middle, far from any line, gives
+// it a skeleton, as the Pin tool takes a click inside a shape; a click outside does nothing.
+void TestBoneTool::clickInsideAnOutlineBuilds()
+{
+    Fixture fx;
+    Frame f;
+    f.id = fx.doc.allocateId();
+    StrokeGroup g;
+    g.id = fx.doc.allocateId();
+    g.name = QStringLiteral("outline");
+    auto data = std::make_shared<StrokeData>();
+    const QPointF corners[] = {{100, 200}, {600, 200}, {600, 320}, {100, 320}, {100, 200}};
+    for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < 40; ++i) {
+            const QPointF p = corners[c] + (corners[c + 1] - corners[c]) * (i / 40.0);
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        }
+    data->points.push_back(data->points.front());
+    data->width = 3.0f;
+    g.strokes.push_back({fx.doc.allocateId(), data});
+    f.groups.push_back(g);
+    fx.group = g.id;
+    fx.doc.reset({f}, fx.doc.settings(), fx.doc.nextId());
+
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({350, 420})); // outside
+    QVERIFY(fx.object().rig.empty());
+    QCOMPARE(fx.doc.undoStack()->count(), 0);
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({350, 260})); // 60 px from lines
+    QCOMPARE(fx.object().rig.kind(), RigKind::Skeleton);
+    QCOMPARE(fx.doc.undoStack()->count(), 1);
+    QVERIFY(fx.skeleton().jointCount() >= 2);
 }
 
 QTEST_MAIN(TestBoneTool)

@@ -26,7 +26,7 @@ DeformActions::DeformActions(EditorState *state, QObject *parent)
     m_bake->setObjectName(QStringLiteral("deform.apply"));
     m_bake->setStatusTip(tr(
         "Make the posed drawing the object's new strokes; the pins or cage stay where they are"));
-    m_removePins = new QAction(tr("&Remove Pins or Cage"), this);
+    m_removePins = new QAction(tr("Remo&ve Pins or Cage"), this);
     m_removePins->setObjectName(QStringLiteral("deform.removePins"));
     m_removePins->setStatusTip(tr("Take the pins or the cage off the current object"));
 

@@ -16,9 +16,9 @@ FrameActions::FrameActions(EditorState *state, QObject *parent)
                                QKeySequence(Qt::Key_F5));
     m_duplicate = makeAction(QStringLiteral("frame.duplicate"), tr("&Duplicate Frame"),
                              QKeySequence(Qt::Key_F6));
-    m_inbetweens = makeAction(QStringLiteral("frame.inbetweens"), tr("Generate &In-betweens…"),
+    m_inbetweens = makeAction(QStringLiteral("frame.inbetweens"), tr("Generate In-be&tweens…"),
                               QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F6));
-    m_remove = makeAction(QStringLiteral("frame.delete"), tr("De&lete Frame"),
+    m_remove = makeAction(QStringLiteral("frame.delete"), tr("Delete Fra&me"),
                           QKeySequence(Qt::SHIFT | Qt::Key_F5));
     addSeparator();
     m_moveLeft = makeAction(QStringLiteral("frame.moveLeft"), tr("Move Frame &Left"),
@@ -26,7 +26,7 @@ FrameActions::FrameActions(EditorState *state, QObject *parent)
     m_moveRight = makeAction(QStringLiteral("frame.moveRight"), tr("Move Frame &Right"),
                              QKeySequence(Qt::ALT | Qt::Key_Right));
     addSeparator();
-    m_holdMore = makeAction(QStringLiteral("frame.holdMore"), tr("Hold &Longer"),
+    m_holdMore = makeAction(QStringLiteral("frame.holdMore"), tr("Hold Lon&ger"),
                             QKeySequence(Qt::ALT | Qt::Key_Equal));
     m_holdLess = makeAction(QStringLiteral("frame.holdLess"), tr("Hold &Shorter"),
                             QKeySequence(Qt::ALT | Qt::Key_Minus));

@@ -182,7 +182,7 @@ void MainWindow::createViewMenu()
     m_viewMenu->addActions({zoomIn, zoomOut, fit, actual});
     m_viewMenu->addSeparator();
 
-    QAction *onion = makeAction(QStringLiteral("view.onionSkin"), tr("&Onion Skin"));
+    QAction *onion = makeAction(QStringLiteral("view.onionSkin"), tr("O&nion Skin"));
     onion->setCheckable(true);
     onion->setChecked(m_state->onionSkin().enabled);
     connect(onion, &QAction::toggled, this, [this](bool on) {

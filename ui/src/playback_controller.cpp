@@ -61,7 +61,7 @@ PlaybackController::PlaybackController(EditorState *state, QObject *parent)
     : QObject(parent)
     , m_state(state)
 {
-    m_toggle = new QAction(tr("&Play"), this);
+    m_toggle = new QAction(tr("Pl&ay"), this);
     m_toggle->setObjectName(QStringLiteral("playback.toggle"));
     m_toggle->setCheckable(true);
     m_toggle->setShortcut(QKeySequence(Qt::Key_Return));
@@ -73,7 +73,7 @@ PlaybackController::PlaybackController(EditorState *state, QObject *parent)
             pause();
     });
 
-    m_loop = new QAction(tr("&Loop"), this);
+    m_loop = new QAction(tr("L&oop"), this);
     m_loop->setObjectName(QStringLiteral("playback.loop"));
     m_loop->setCheckable(true);
     m_loop->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
@@ -203,7 +203,7 @@ void PlaybackController::show(int frameIndex)
 void PlaybackController::updateActions()
 {
     m_toggle->setChecked(m_playing);
-    m_toggle->setText(m_playing ? tr("&Pause") : tr("&Play"));
+    m_toggle->setText(m_playing ? tr("P&ause") : tr("Pl&ay"));
     m_toggle->setEnabled(m_state->document()->frameCount() > 0);
     m_loop->setChecked(m_state->document()->settings().loop);
 }

@@ -66,7 +66,7 @@ void MainWindow::createSkeleton(QMenu *deformMenu)
     connect(panel, &SkeletonPanel::messagePosted, this,
             [this](const QString &message) { statusBar()->showMessage(message, 6000); });
 
-    QMenu *skinning = deformMenu->addMenu(tr("&Skinning"));
+    QMenu *skinning = deformMenu->addMenu(tr("S&kinning"));
     auto *group = new QActionGroup(skinning);
     const struct {
         model::SkinningMode mode;

@@ -34,4 +34,8 @@ std::vector<Eigen::MatrixX2d> regionRings(const Region &region);
 // Number of ring vertices in total.
 long regionVertexCount(const Region &region);
 
+// Whether (x, y) lies inside the region: inside an outer ring and in none of its holes (the
+// even-odd rule over every ring). Points exactly on a boundary may go either way.
+bool regionContains(const Region &region, double x, double y);
+
 } // namespace finbook::geometry

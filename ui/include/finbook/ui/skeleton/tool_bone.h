@@ -83,6 +83,8 @@ private:
     };
 
     model::Id objectAt(const ToolEvent &event) const;
+    // Whether `pos` lies inside the filled silhouette of what the object shows.
+    static bool insideShape(const model::StrokeGroup &g, QPointF pos);
     void build(model::Id groupId);
     void toggleLock(const Hit &hit);
     bool startDrag(const Hit &hit, QPointF at);
