@@ -455,13 +455,23 @@ void TestInbetween::cageBendInbetweens()
         previous = turn;
     }
     QVERIFY(previous < tipTurn(poseB));
-    // Corners that stay put in both keys stay put in between; report how far they drift.
+    // Corners that stay put in both keys stay put in between.
     const auto &restCorners = a.groups[0].rig.cage.rest;
     const auto &middleCorners = frames[2].groups[0].rig.cage.posed;
     double drift = 0;
     for (std::size_t i = 0; i < restCorners.size(); ++i)
         if (restCorners[i] == b.groups[0].rig.cage.posed[i])
             drift = std::max(drift, distance(middleCorners[i], restCorners[i]));
+    QCOMPARE(drift, 0.0);
+    // The corners that move turn about the elbow they were bent about, half way at t = 0.5.
+    for (std::size_t i = 0; i < restCorners.size(); ++i)
+        if (restCorners[i] != b.groups[0].rig.cage.posed[i]) {
+            const QPointF expected = turnedAbout(restCorners[i], elbow, M_PI / 6);
+            QVERIFY2(distance(middleCorners[i], expected) < 1e-6,
+                     qPrintable(QStringLiteral("corner %1 is %2 px off the arc")
+                                    .arg(i)
+                                    .arg(distance(middleCorners[i], expected))));
+        }
     const double middleTurn = tipTurn(*frames[2].groups[0].deformed);
     const double keyLength = strokeLength(poseA);
     const double middleLength = strokeLength(*frames[2].groups[0].deformed);

@@ -55,15 +55,37 @@ std::vector<QPointF> straight(const std::vector<QPointF> &a, const std::vector<Q
     return out;
 }
 
+// Targets closer than this (px) in both keys count as unmoved.
+constexpr double kStill = 1e-6;
+
+bool still(QPointF a, QPointF b)
+{
+    return std::abs(b.x() - a.x()) <= kStill && std::abs(b.y() - a.y()) <= kStill;
+}
+
 std::vector<QPointF> alongArc(const std::vector<QPointF> &a, const std::vector<QPointF> &b,
                               double t)
 {
-    const double turn = a.size() >= 2 ? bestTurn(a, b) : 0.0;
+    // A target that stays put in both keys stays put in between. The turn is fitted to the
+    // targets that move when at least two do (a cage bent at one end turns about its joint,
+    // not by a compromise of the whole cage), to all of them otherwise (one pin swung about
+    // pins that hold still).
+    std::vector<QPointF> fitA, fitB;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (!still(a[i], b[i])) {
+            fitA.push_back(a[i]);
+            fitB.push_back(b[i]);
+        }
+    if (fitA.size() < 2) {
+        fitA = a;
+        fitB = b;
+    }
+    const double turn = fitA.size() >= 2 ? bestTurn(fitA, fitB) : 0.0;
     if (std::abs(turn) < kMinTurn)
         return straight(a, b, t);
     // The rigid map p ↦ R(p − ca) + cb turns about its fixed point c, (I − R) c = cb − R ca;
     // following it part way is a turn by t·turn about c (the screw motion of SE(2)).
-    const QPointF ca = centroid(a), cb = centroid(b);
+    const QPointF ca = centroid(fitA), cb = centroid(fitB);
     const QPointF rhs = cb - rotated(ca, turn);
     const double cr = std::cos(turn), sr = std::sin(turn);
     // I − R = [[1 − cr, sr], [−sr, 1 − cr]], determinant 2 (1 − cr) > 0 for turn ≠ 0.
@@ -72,6 +94,10 @@ std::vector<QPointF> alongArc(const std::vector<QPointF> &a, const std::vector<Q
                     (sr * rhs.x() + (1.0 - cr) * rhs.y()) / det);
     std::vector<QPointF> out(a.size());
     for (std::size_t i = 0; i < a.size(); ++i) {
+        if (still(a[i], b[i])) {
+            out[i] = a[i];
+            continue;
+        }
         const QPointF rigidEnd = c + rotated(a[i] - c, turn);
         const QPointF residual = b[i] - rigidEnd; // the non-rigid part, blended linearly
         out[i] = c + rotated(a[i] - c, t * turn) + residual * t;
