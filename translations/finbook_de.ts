@@ -1652,27 +1652,27 @@
         <translation>Knochen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="46"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="48"/>
         <source>Build Skeleton</source>
         <translation>Skelett erstellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="47"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>Das Objekt ist mit einem anderen Verformer posiert. Beim Erstellen eines Skeletts wird diese Pose verworfen. Trotzdem erstellen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="195"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="235"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um ihr ein Skelett zu geben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="202"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="242"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen; Rechtsklick auf ein Gelenk löscht es.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="205"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="245"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
         <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um daran zu ziehen, die Wurzel, um das Objekt zu verschieben; Alt-Klick auf ein Gelenk sperrt es.</translation>
     </message>
@@ -1838,23 +1838,23 @@
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="24"/>
-        <source>Move the current object&apos;s pins or cage corners back to their rest positions</source>
-        <translation>Die Pins oder Käfigecken des aktuellen Objekts in ihre Ruhepositionen zurücksetzen</translation>
+        <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
+        <translation>Die Pins, Käfigecken oder Knochen des aktuellen Objekts in ihre Ruhepositionen zurücksetzen</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="27"/>
-        <source>Make the posed drawing the object&apos;s new strokes; the pins or cage stay where they are</source>
-        <translation>Die posierte Zeichnung zu den neuen Strichen des Objekts machen; die Pins oder der Käfig bleiben, wo sie sind</translation>
+        <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
+        <translation>Die posierte Zeichnung zu den neuen Strichen des Objekts machen; die Pins, der Käfig oder das Skelett bleiben, wo sie sind</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="29"/>
-        <source>Remo&amp;ve Pins or Cage</source>
-        <translation>Pins oder Käfig &amp;entfernen</translation>
+        <source>Remo&amp;ve Rig</source>
+        <translation>Rig &amp;entfernen</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="31"/>
-        <source>Take the pins or the cage off the current object</source>
-        <translation>Die Pins oder den Käfig vom aktuellen Objekt entfernen</translation>
+        <source>Take the pins, the cage or the skeleton off the current object</source>
+        <translation>Die Pins, den Käfig oder das Skelett vom aktuellen Objekt entfernen</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="49"/>
@@ -2326,13 +2326,13 @@
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="117"/>
-        <source>%1: held from the first key (no pins or cage)</source>
-        <translation>%1: vom ersten Schlüsselbild gehalten (keine Pins und kein Käfig)</translation>
+        <source>%1: held from the first key (no pins, cage or skeleton)</source>
+        <translation>%1: vom ersten Schlüsselbild gehalten (keine Pins, kein Käfig und kein Skelett)</translation>
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
-        <source>%1: held from the first key (its pins or cage differ between the keys)</source>
-        <translation>%1: vom ersten Schlüsselbild gehalten (Pins oder Käfig unterscheiden sich zwischen den Schlüsselbildern)</translation>
+        <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
+        <translation>%1: vom ersten Schlüsselbild gehalten (Pins, Käfig oder Skelett unterscheiden sich zwischen den Schlüsselbildern)</translation>
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>

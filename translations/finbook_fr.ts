@@ -1652,27 +1652,27 @@
         <translation>Os</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="46"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="48"/>
         <source>Build Skeleton</source>
         <translation>Construire le squelette</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="47"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>L&apos;objet est posé avec un autre déformateur. Construire un squelette abandonne cette pose. Le construire quand même&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="195"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="235"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Cliquez sur un dessin visible et déverrouillé pour lui donner un squelette.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="202"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="242"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>Faites glisser une articulation pour la déplacer, cliquez sur un os pour insérer une articulation ; clic droit sur une articulation pour la supprimer.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="205"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="245"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
         <translation>Faites glisser un os pour le faire pivoter, une articulation pour la tirer, la racine pour déplacer l&apos;objet&#xa0;; Alt+clic sur une articulation pour la verrouiller.</translation>
     </message>
@@ -1838,23 +1838,23 @@
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="24"/>
-        <source>Move the current object&apos;s pins or cage corners back to their rest positions</source>
-        <translation>Ramener les épingles ou les coins de cage de l&apos;objet courant à leur position de repos</translation>
+        <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
+        <translation>Ramener les épingles, les coins de cage ou les os de l&apos;objet courant à leur position de repos</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="27"/>
-        <source>Make the posed drawing the object&apos;s new strokes; the pins or cage stay where they are</source>
-        <translation>Faire du dessin posé les nouveaux traits de l&apos;objet&#xa0;; les épingles ou la cage restent en place</translation>
+        <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
+        <translation>Faire du dessin posé les nouveaux traits de l&apos;objet&#xa0;; les épingles, la cage ou le squelette restent en place</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="29"/>
-        <source>Remo&amp;ve Pins or Cage</source>
-        <translation>Re&amp;tirer les épingles ou la cage</translation>
+        <source>Remo&amp;ve Rig</source>
+        <translation>Re&amp;tirer l&apos;armature</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="31"/>
-        <source>Take the pins or the cage off the current object</source>
-        <translation>Retirer les épingles ou la cage de l&apos;objet courant</translation>
+        <source>Take the pins, the cage or the skeleton off the current object</source>
+        <translation>Retirer les épingles, la cage ou le squelette de l&apos;objet courant</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="49"/>
@@ -2326,13 +2326,13 @@
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="117"/>
-        <source>%1: held from the first key (no pins or cage)</source>
-        <translation>%1&#xa0;: maintenu depuis la première clé (ni épingles ni cage)</translation>
+        <source>%1: held from the first key (no pins, cage or skeleton)</source>
+        <translation>%1&#xa0;: maintenu depuis la première clé (ni épingles, ni cage, ni squelette)</translation>
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
-        <source>%1: held from the first key (its pins or cage differ between the keys)</source>
-        <translation>%1&#xa0;: maintenu depuis la première clé (ses épingles ou sa cage diffèrent entre les clés)</translation>
+        <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
+        <translation>%1&#xa0;: maintenu depuis la première clé (ses épingles, sa cage ou son squelette diffèrent entre les clés)</translation>
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>

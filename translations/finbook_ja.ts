@@ -1648,27 +1648,27 @@
         <translation>ボーン</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="46"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="48"/>
         <source>Build Skeleton</source>
         <translation>スケルトンを作成</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="47"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>このオブジェクトには別の変形方法によるポーズが付いています。スケルトンを作成すると、そのポーズは破棄されます。作成しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="195"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="235"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>表示されていてロックされていない絵をクリックすると、スケルトンを作成できます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="202"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="242"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>関節をドラッグで移動、ボーンをクリックで関節を挿入、関節を右クリックで削除します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="205"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="245"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
         <translation>ボーンをドラッグすると回転、ジョイントをドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。Alt キーを押しながらジョイントをクリックするとロックします。</translation>
     </message>
@@ -1834,23 +1834,23 @@
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="24"/>
-        <source>Move the current object&apos;s pins or cage corners back to their rest positions</source>
-        <translation>現在のオブジェクトのピンまたはケージの頂点を元の位置に戻す</translation>
+        <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
+        <translation>現在のオブジェクトのピン、ケージの頂点、またはボーンを元の位置に戻す</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="27"/>
-        <source>Make the posed drawing the object&apos;s new strokes; the pins or cage stay where they are</source>
-        <translation>ポーズを付けた絵をオブジェクトの新しいストロークにする（ピンやケージはその位置のまま）</translation>
+        <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
+        <translation>ポーズを付けた絵をオブジェクトの新しいストロークにする（ピン、ケージ、スケルトンはその位置のまま）</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="29"/>
-        <source>Remo&amp;ve Pins or Cage</source>
-        <translation>ピンまたはケージを削除(&amp;M)</translation>
+        <source>Remo&amp;ve Rig</source>
+        <translation>リグを削除(&amp;M)</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="31"/>
-        <source>Take the pins or the cage off the current object</source>
-        <translation>現在のオブジェクトからピンまたはケージを外す</translation>
+        <source>Take the pins, the cage or the skeleton off the current object</source>
+        <translation>現在のオブジェクトからピン、ケージ、またはスケルトンを外す</translation>
     </message>
     <message>
         <location filename="../ui/src/deform_actions.cpp" line="49"/>
@@ -2320,13 +2320,13 @@
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="117"/>
-        <source>%1: held from the first key (no pins or cage)</source>
-        <translation>%1: 最初のキーを保持（ピンもケージもありません）</translation>
+        <source>%1: held from the first key (no pins, cage or skeleton)</source>
+        <translation>%1: 最初のキーを保持（ピン、ケージ、スケルトンがありません）</translation>
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
-        <source>%1: held from the first key (its pins or cage differ between the keys)</source>
-        <translation>%1: 最初のキーを保持（キーの間でピンまたはケージが異なります）</translation>
+        <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
+        <translation>%1: 最初のキーを保持（キーの間でピン、ケージ、またはスケルトンが異なります）</translation>
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>

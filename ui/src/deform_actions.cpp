@@ -21,14 +21,15 @@ DeformActions::DeformActions(EditorState *state, QObject *parent)
     m_reset = new QAction(tr("&Reset Pose"), this);
     m_reset->setObjectName(QStringLiteral("deform.reset"));
     m_reset->setStatusTip(
-        tr("Move the current object's pins or cage corners back to their rest positions"));
+        tr("Move the current object's pins, cage corners or bones back to their rest positions"));
     m_bake = new QAction(tr("&Apply Pose to Drawing"), this);
     m_bake->setObjectName(QStringLiteral("deform.apply"));
-    m_bake->setStatusTip(tr(
-        "Make the posed drawing the object's new strokes; the pins or cage stay where they are"));
-    m_removePins = new QAction(tr("Remo&ve Pins or Cage"), this);
+    m_bake->setStatusTip(tr("Make the posed drawing the object's new strokes; the pins, cage or "
+                            "skeleton stay where they are"));
+    m_removePins = new QAction(tr("Remo&ve Rig"), this);
     m_removePins->setObjectName(QStringLiteral("deform.removePins"));
-    m_removePins->setStatusTip(tr("Take the pins or the cage off the current object"));
+    m_removePins->setStatusTip(
+        tr("Take the pins, the cage or the skeleton off the current object"));
 
     model::Document *doc = state->document();
     connect(m_reset, &QAction::triggered, this, [this, doc] {

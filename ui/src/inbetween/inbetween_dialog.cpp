@@ -114,9 +114,10 @@ QString InbetweenDialog::describe(const model::InbetweenObjectReport &object) co
     case model::ObjectFate::Interpolated:
         return tr("%1: interpolated").arg(name);
     case model::ObjectFate::HeldNoRig:
-        return tr("%1: held from the first key (no pins or cage)").arg(name);
+        return tr("%1: held from the first key (no pins, cage or skeleton)").arg(name);
     case model::ObjectFate::HeldRigDiffers:
-        return tr("%1: held from the first key (its pins or cage differ between the keys)")
+        return tr("%1: held from the first key (its pins, cage or skeleton differ between the "
+                  "keys)")
             .arg(name);
     case model::ObjectFate::FirstKeyOnly:
         return tr("%1: only in the first key, held in the first half").arg(name);
