@@ -17,11 +17,14 @@ std::vector<geometry::StrokeInput> strokeInputs(const MeshKey &key)
     std::vector<geometry::StrokeInput> inputs;
     inputs.reserve(key.strokes.size());
     for (const StrokeDataPtr &data : key.strokes) {
+        if (!data || data->points.empty()) // nothing to outline
+            continue;
         geometry::StrokeInput in;
         in.points.resize(Eigen::Index(data->points.size()), 2);
         for (std::size_t i = 0; i < data->points.size(); ++i)
             in.points.row(Eigen::Index(i)) << data->points[i].x, data->points[i].y;
-        in.width = std::isfinite(data->width) ? data->width : 1.0;
+        // A width the pen cannot have (NaN, 0 or less, from a damaged file) outlines as 1 px.
+        in.width = std::isfinite(data->width) && data->width > 0 ? data->width : 1.0;
         inputs.push_back(std::move(in));
     }
     return inputs;

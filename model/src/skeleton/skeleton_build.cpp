@@ -4,6 +4,7 @@
 
 #include <finbook/geometry/silhouette.h>
 #include <finbook/geometry/skeleton/skeleton_refine.h>
+#include <finbook/model/deform_setup.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 
 #include <cmath>
@@ -12,22 +13,6 @@
 namespace finbook::model {
 
 namespace {
-
-std::vector<geometry::StrokeInput> strokeInputs(const StrokeGroup &group)
-{
-    std::vector<geometry::StrokeInput> inputs;
-    for (const Stroke &s : group.strokes) {
-        if (!s.data || s.data->points.empty())
-            continue;
-        geometry::StrokeInput in;
-        in.points.resize(Eigen::Index(s.data->points.size()), 2);
-        for (std::size_t i = 0; i < s.data->points.size(); ++i)
-            in.points.row(Eigen::Index(i)) << s.data->points[i].x, s.data->points[i].y;
-        in.width = std::isfinite(s.data->width) && s.data->width > 0 ? s.data->width : 1.0;
-        inputs.push_back(std::move(in));
-    }
-    return inputs;
-}
 
 double clampUnit(double v)
 {
@@ -62,7 +47,7 @@ Expected<SkeletonRig, QString> buildSkeletonRig(const StrokeGroup &group,
                                                 const SkeletonSettings &settings,
                                                 std::optional<QPointF> rootNear)
 {
-    const auto inputs = strokeInputs(group);
+    const auto inputs = strokeInputs(MeshKey::of(group));
     if (inputs.empty())
         return unexpected(Deformation::tr("The object has no strokes to build a skeleton in."));
     auto region = geometry::silhouette(inputs);
