@@ -1,5 +1,6 @@
 // The Bone tool driven by real mouse events on the real canvas: build a skeleton with a click,
 // turn a bone, pull a joint, move the root, lock a joint; every drag one exact undo step.
+#include <finbook/model/commands.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/ui/canvas_widget.h>
@@ -380,6 +381,23 @@ void TestBoneTool::contextMenuResetsOneBone()
     fx.tool->resetSelectedBone();
     QCOMPARE(fx.skeleton().rootOffset, QPointF());
     QVERIFY(fx.skeleton().angles[std::size_t(bone)] != 0.0);
+
+    // The selection belongs to its frame: on a duplicate of it (same bones, other ids) there
+    // is nothing to reset until a bone there is chosen, and Reset Bone Pose never reaches
+    // back into the frame left behind.
+    fx.tool->setMenuExec([](QMenu &, QPoint) -> QAction * { return nullptr; });
+    QTest::mouseClick(&fx.canvas, Qt::RightButton, {}, fx.at(middle));
+    QVERIFY(fx.tool->canResetSelectedBone());
+    const Id first = fx.state.currentFrameId();
+    fx.doc.undoStack()->push(new DuplicateFrameCommand(&fx.doc, first, 1));
+    fx.state.setCurrentFrameIndex(1);
+    QVERIFY(fx.state.currentFrameId() != first);
+    QVERIFY(!fx.tool->canResetSelectedBone());
+    const int before = fx.doc.undoStack()->count();
+    fx.tool->resetSelectedBone();
+    QCOMPARE(fx.doc.undoStack()->count(), before);
+    fx.state.setCurrentFrameIndex(0);
+    QVERIFY(fx.tool->canResetSelectedBone());
 }
 
 void TestBoneTool::editJointsMovesAJoint()

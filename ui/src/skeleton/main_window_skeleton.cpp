@@ -45,6 +45,7 @@ void MainWindow::createSkeleton(QMenu *deformMenu)
         resetBone->setEnabled(bones->canResetSelectedBone());
     };
     connect(bones, &BoneTool::selectionChanged, resetBone, syncReset);
+    connect(m_state, &EditorState::currentFrameChanged, resetBone, syncReset);
     connect(m_doc, &model::Document::constraintsChanged, resetBone, syncReset);
     connect(m_doc, &model::Document::documentReset, resetBone, syncReset);
     syncReset();

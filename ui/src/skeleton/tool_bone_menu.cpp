@@ -28,8 +28,12 @@ void BoneTool::select(const Hit &hit)
 
 BoneTool::Hit BoneTool::selection() const
 {
-    const model::StrokeGroup *g = state()->document()->group(m_selected.groupId);
-    if (!g || m_selected.joint < 0 || m_selected.joint >= g->rig.skeleton.jointCount())
+    // Only a bone of the frame on show: ids are unique across frames, and Reset Bone Pose must
+    // not reach into a frame the animator has moved away from.
+    const model::Document *doc = state()->document();
+    const model::StrokeGroup *g = doc->group(m_selected.groupId);
+    if (!g || m_selected.joint < 0 || m_selected.joint >= g->rig.skeleton.jointCount() ||
+        doc->locateGroup(m_selected.groupId).frame != doc->frameIndex(state()->currentFrameId()))
         return {};
     return m_selected;
 }
