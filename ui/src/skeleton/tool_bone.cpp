@@ -131,11 +131,12 @@ model::Id BoneTool::objectAt(const ToolEvent &event) const
             return it->id;
     // No line under the cursor: a click inside a shape counts too (the filled silhouette the
     // skeleton is built from), topmost object first.
-    if (const model::StrokeGroup *current = state()->currentGroup();
-        current && editable(*current) && insideShape(*current, event.pos))
+    // Each silhouette is computed once: the current object first, then the others.
+    const model::StrokeGroup *current = state()->currentGroup();
+    if (current && editable(*current) && insideShape(*current, event.pos))
         return current->id;
     for (auto it = f->groups.rbegin(); it != f->groups.rend(); ++it)
-        if (editable(*it) && insideShape(*it, event.pos))
+        if (&*it != current && editable(*it) && insideShape(*it, event.pos))
             return it->id;
     return model::kNoId;
 }
