@@ -1,6 +1,7 @@
 #include "command_text.h"
 
 #include <finbook/model/commands.h>
+#include <finbook/model/skeleton/skeleton_join.h>
 
 #include <QCoreApplication>
 
@@ -364,13 +365,16 @@ void DuplicateFrameCommand::redo()
     Frame copy = *source; // strokes share their point data; pose caches are immutable too
     copy.id = m_copyId;
     std::size_t next = 0;
+    std::unordered_map<Id, Id> groupIds; // joins between parts follow the copies
     for (StrokeGroup &g : copy.groups) {
+        groupIds[g.id] = m_ids.at(next);
         g.id = m_ids.at(next++);
         for (Stroke &s : g.strokes)
             s.id = m_ids.at(next++);
         for (Pin &p : g.rig.pins)
             p.id = m_ids.at(next++);
     }
+    remapJoins(copy, groupIds);
     m_doc->insertFrame(m_index, std::move(copy));
 }
 

@@ -1,4 +1,5 @@
 #include <finbook/model/document.h>
+#include <finbook/model/skeleton/skeleton_join.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -91,6 +92,8 @@ void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings
 {
     m_undoStack.clear();
     m_frames = std::move(frames);
+    for (Frame &f : m_frames)
+        resolveJoins(f);
     m_settings = settings;
     m_nextId = std::max<Id>(nextId, 1);
     emit documentReset();
@@ -99,6 +102,7 @@ void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings
 void Document::insertFrame(int index, Frame frame)
 {
     index = std::clamp(index, 0, frameCount());
+    resolveJoins(frame);
     m_frames.insert(m_frames.begin() + index, std::move(frame));
     emit framesInserted(index, 1);
 }
@@ -142,8 +146,10 @@ void Document::insertGroup(Id frameId, int index, StrokeGroup group)
     auto &groups = m_frames[std::size_t(f)].groups;
     index = std::clamp(index, 0, int(groups.size()));
     groups.insert(groups.begin() + index, std::move(group));
+    const std::vector<Id> joined = resolveJoins(m_frames[std::size_t(f)]);
     emit groupsChanged(frameId);
     emit frameChanged(frameId);
+    joinsChanged(joined, kNoId);
 }
 
 StrokeGroup Document::takeGroup(Id groupId)
@@ -154,9 +160,11 @@ StrokeGroup Document::takeGroup(Id groupId)
     auto &groups = m_frames[std::size_t(at.frame)].groups;
     StrokeGroup taken = std::move(groups[std::size_t(at.group)]);
     groups.erase(groups.begin() + at.group);
+    const std::vector<Id> joined = resolveJoins(m_frames[std::size_t(at.frame)]);
     const Id frameId = m_frames[std::size_t(at.frame)].id;
     emit groupsChanged(frameId);
     emit frameChanged(frameId);
+    joinsChanged(joined, kNoId);
     return taken;
 }
 
@@ -264,8 +272,20 @@ void Document::setRig(Id groupId, Rig rig)
     g.rig = std::move(rig);
     if (g.rig.empty())
         g.deformed.reset();
+    // The parts hanging from this object follow its new pose (and this one its parent).
+    const std::vector<Id> joined = resolveJoins(m_frames[std::size_t(locateGroup(groupId).frame)]);
     emit constraintsChanged(groupId);
     groupEdited(groupId, false);
+    joinsChanged(joined, groupId);
+}
+
+void Document::joinsChanged(const std::vector<Id> &groupIds, Id already)
+{
+    for (Id id : groupIds)
+        if (id != already && group(id)) {
+            emit constraintsChanged(id);
+            groupEdited(id, false);
+        }
 }
 
 void Document::setDeformed(Id groupId, DeformedStrokesPtr deformed)

@@ -25,8 +25,11 @@
 //              The locks (0 or 1 per joint) are written only when a joint is locked, so a
 //              skeleton without locks keeps the original layout and older files (which end
 //              at the mode) open with no locks.
+//   "JOIN"  := u64 parentObjectId f64 childAtX f64 childAtY f64 parentAtX f64 parentAtY
+//              (skeleton/skeleton_rig.h SkeletonJoin): the object's skeleton hangs from
+//              another object's skeleton in the same frame. Only after SKEL.
 //
-// An object carries at most one rig chunk (PINS or CAGE).
+// An object carries at most one rig chunk (PINS, CAGE or SKEL).
 //
 // Everything is little-endian. Sections come in the order above, each exactly once; ancillary
 // sections may come between FRAM and FEND. Records and chunks are length-prefixed so later
@@ -69,6 +72,7 @@ constexpr quint32 kTagPins = tag("PINS");
 constexpr quint32 kTagDeformed = tag("DEFM");
 constexpr quint32 kTagCage = tag("CAGE");
 constexpr quint32 kTagSkeleton = tag("SKEL");
+constexpr quint32 kTagJoin = tag("JOIN");
 
 inline bool isAncillary(quint32 t)
 {

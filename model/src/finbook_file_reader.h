@@ -83,6 +83,7 @@ private:
     void readPinsChunk(Cursor &c, StrokeGroup &g);
     void readCageChunk(Cursor &c, StrokeGroup &g);
     void readSkeletonChunk(Cursor &c, StrokeGroup &g);
+    void readJoinChunk(Cursor &c, StrokeGroup &g);
     void readPoseChunk(Cursor &c, StrokeGroup &g);
     std::vector<Pin> readPins(Cursor &c);
     CageRig readCage(Cursor &c);

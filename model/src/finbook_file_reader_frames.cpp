@@ -22,9 +22,8 @@ constexpr qint64 kClaimedIdBytes = qint64(sizeof(Id));
 
 // New object chunks go here: one row, one read function.
 const Reader::ObjectChunk Reader::kObjectChunks[] = {
-    {kTagPins, true, &Reader::readPinsChunk},
-    {kTagCage, true, &Reader::readCageChunk},
-    {kTagSkeleton, true, &Reader::readSkeletonChunk},
+    {kTagPins, true, &Reader::readPinsChunk},         {kTagCage, true, &Reader::readCageChunk},
+    {kTagSkeleton, true, &Reader::readSkeletonChunk}, {kTagJoin, false, &Reader::readJoinChunk},
     {kTagDeformed, false, &Reader::readPoseChunk},
 };
 
@@ -245,6 +244,24 @@ void Reader::readSkeletonChunk(Cursor &c, StrokeGroup &g)
 {
     charge(c, qint64(c.remaining()) * 2);
     g.rig.skeleton = readSkeleton(c);
+}
+
+void Reader::readJoinChunk(Cursor &c, StrokeGroup &g)
+{
+    const char *what = QT_TRANSLATE_NOOP("FinbookFile", "the skeleton's join");
+    if (g.rig.skeleton.empty())
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("a join comes without a skeleton"));
+    SkeletonJoin j;
+    j.parent = c.u64(what);
+    double v[4];
+    for (double &x : v)
+        x = c.f64(what);
+    if (j.parent == kNoId ||
+        !std::all_of(std::begin(v), std::end(v), [](double x) { return std::isfinite(x); }))
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("the skeleton's join is damaged"));
+    j.childAt = QPointF(v[0], v[1]);
+    j.parentAt = QPointF(v[2], v[3]);
+    g.rig.skeleton.join = j;
 }
 
 void Reader::readPoseChunk(Cursor &c, StrokeGroup &g)

@@ -174,6 +174,14 @@ const ObjectChunkWriter kObjectChunkWriters[] = {
      [](ByteWriter &w, const StrokeGroup &g, const Tables &) { writeCage(w, g.rig.cage); }},
     {kTagSkeleton, [](const StrokeGroup &g) { return !g.rig.skeleton.empty(); },
      [](ByteWriter &w, const StrokeGroup &g, const Tables &) { writeSkeleton(w, g.rig.skeleton); }},
+    {kTagJoin,
+     [](const StrokeGroup &g) { return !g.rig.skeleton.empty() && g.rig.skeleton.join.joined(); },
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &) {
+         const SkeletonJoin &j = g.rig.skeleton.join;
+         w.u64(j.parent);
+         for (double v : {j.childAt.x(), j.childAt.y(), j.parentAt.x(), j.parentAt.y()})
+             w.f64(v);
+     }},
     {kTagDeformed, poseMatches,
      [](ByteWriter &w, const StrokeGroup &g, const Tables &tables) {
          w.u32(tables.poseIndex.at(g.deformed.get()));

@@ -1,6 +1,7 @@
 #include "../command_text.h"
 
 #include <finbook/model/inbetween/inbetween_commands.h>
+#include <finbook/model/skeleton/skeleton_join.h>
 
 #include <algorithm>
 
@@ -12,13 +13,17 @@ namespace {
 void renumber(Frame &frame, Document *doc)
 {
     frame.id = doc->allocateId();
+    std::unordered_map<Id, Id> groupIds;
     for (StrokeGroup &g : frame.groups) {
+        const Id old = g.id;
         g.id = doc->allocateId();
+        groupIds[old] = g.id;
         for (Stroke &s : g.strokes)
             s.id = doc->allocateId();
         for (Pin &p : g.rig.pins)
             p.id = doc->allocateId();
     }
+    remapJoins(frame, groupIds);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/inbetween/inbetween_plan.h>
+#include <finbook/model/skeleton/skeleton_join.h>
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +76,7 @@ Frame inbetweenFrame(const Frame &first, const Frame &second, const Matching &m,
         }
         out.groups.push_back(std::move(g));
     }
+    resolveJoins(out); // parts follow their parents' interpolated poses
     return out;
 }
 

@@ -168,7 +168,11 @@ Rig interpolateRig(const Rig &first, const Rig &second, double t, TargetPath pat
         if (!std::isfinite(t) || t <= 0.0)
             break;
         if (t >= 1.0) {
+            // The second key's pose; the join stays the first's (it names the first key's
+            // objects, which the in-between holds).
             out.skeleton = second.skeleton;
+            out.skeleton.join = first.skeleton.join;
+            out.skeleton.anchor = first.skeleton.anchor;
             break;
         }
         out.skeleton.angles.resize(out.skeleton.joints.size());

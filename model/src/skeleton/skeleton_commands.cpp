@@ -93,8 +93,11 @@ SetSkeletonSettingsCommand::SetSkeletonSettingsCommand(Document *doc, Id groupId
     if (!g || g->rig.kind() != RigKind::Skeleton || !m_new.skeleton.isValid() ||
         m_new.skeleton.empty())
         setObsolete(true);
-    else // the mode is the user's choice, not the sliders'
+    else { // the mode and the part's join are the user's choices, not the sliders'
         m_new.skeleton.mode = g->rig.skeleton.mode;
+        m_new.skeleton.join = g->rig.skeleton.join;
+        m_new.skeleton.anchor = g->rig.skeleton.anchor;
+    }
 }
 
 bool SetSkeletonSettingsCommand::mergeWith(const QUndoCommand *other)

@@ -1,6 +1,7 @@
 // Hand edits of a rest skeleton: index bookkeeping so that parent[j] < j keeps holding.
 #include "../deformation_text.h"
 
+#include <finbook/geometry/skeleton/skeleton_edit.h>
 #include <finbook/model/skeleton/skeleton_joint_edit.h>
 
 #include <QLineF>
@@ -126,6 +127,51 @@ Expected<SkeletonRig, QString> withJointDeleted(const SkeletonRig &rig, int join
     if (root < 0) // a childless root of a forest: another root leads
         root = int(std::find(r.parent.begin(), r.parent.end(), -1) - r.parent.begin());
     r.root = root;
+    r.angles.assign(r.joints.size(), 0.0);
+    if (!r.isValid())
+        return unexpected(Deformation::tr("The skeleton is damaged; build it again."));
+    return r;
+}
+
+Expected<SkeletonRig, QString> withRootJoint(const SkeletonRig &rig, int joint)
+{
+    if (auto why = editable(rig, joint))
+        return unexpected(*why);
+    if (rig.root == joint)
+        return rig;
+    geometry::Skeleton s;
+    const Eigen::Index n = Eigen::Index(rig.joints.size());
+    s.joints.resize(n, 2);
+    s.radius.resize(n);
+    s.parent.resize(n);
+    s.part = Eigen::VectorXi::Zero(n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+        s.joints.row(j) << rig.joints[std::size_t(j)].x(), rig.joints[std::size_t(j)].y();
+        s.radius(j) = rig.radius[std::size_t(j)];
+        s.parent(j) = rig.parent[std::size_t(j)];
+    }
+    s.root = rig.root;
+    auto edit = geometry::setRoot(s, joint);
+    if (!edit)
+        return unexpected(Deformation::tr("The skeleton is damaged; build it again."));
+    SkeletonRig r = rig;
+    const geometry::Skeleton &e = edit->skeleton;
+    r.joints.resize(std::size_t(e.jointCount()));
+    r.radius.resize(r.joints.size());
+    r.parent.resize(r.joints.size());
+    for (int j = 0; j < e.jointCount(); ++j) {
+        r.joints[std::size_t(j)] = QPointF(e.joints(j, 0), e.joints(j, 1));
+        r.radius[std::size_t(j)] = e.radius(j);
+        r.parent[std::size_t(j)] = e.parent(j);
+    }
+    r.root = e.root;
+    if (!rig.locked.empty()) {
+        r.locked.assign(r.joints.size(), false);
+        for (Eigen::Index j = 0; j < edit->newIndex.size(); ++j)
+            if (edit->newIndex(j) >= 0 && rig.locked[std::size_t(j)])
+                r.locked[std::size_t(edit->newIndex(j))] = true;
+        normaliseLocks(r);
+    }
     r.angles.assign(r.joints.size(), 0.0);
     if (!r.isValid())
         return unexpected(Deformation::tr("The skeleton is damaged; build it again."));

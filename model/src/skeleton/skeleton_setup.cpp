@@ -4,6 +4,8 @@
 
 #include <finbook/model/skeleton/skeleton_setup.h>
 
+#include <cmath>
+
 namespace finbook::model {
 
 namespace {
@@ -31,6 +33,68 @@ Expected<deform::Skeleton, QString> deformSkeleton(const SkeletonRig &rig)
     return std::move(*skeleton);
 }
 
+Expected<deform::Skeleton, QString> skinningSkeleton(const SkeletonRig &rig)
+{
+    auto own = deformSkeleton(rig);
+    if (!own || !rig.hangs() || rig.anchor.from == rig.anchor.to)
+        return own;
+    // The parent's bone joins as a tree of its own (two joints after the part's), so the
+    // part's vertices along it take its motion and blend into the part's own bones.
+    const Eigen::Index n = own->jointCount();
+    Eigen::MatrixX2d joints(n + 2, 2);
+    Eigen::VectorXi parent(n + 2);
+    joints.topRows(n) = own->joints;
+    parent.head(n) = own->parent;
+    joints.row(n) << rig.anchor.from.x(), rig.anchor.from.y();
+    joints.row(n + 1) << rig.anchor.to.x(), rig.anchor.to.y();
+    parent(n) = -1;
+    parent(n + 1) = int(n);
+    auto skeleton = deform::makeSkeleton(joints, parent);
+    if (!skeleton)
+        return unexpected(
+            Deformation::tr("The skeleton cannot be used: %1").arg(message(skeleton.error())));
+    return std::move(*skeleton);
+}
+
+Expected<deform::PosedSkeleton, QString> posedSkinningSkeleton(const deform::Skeleton &skeleton,
+                                                               const SkeletonRig &rig)
+{
+    deform::SkeletonPose pose = skeletonPose(rig);
+    const Eigen::Index own = pose.angles.size();
+    if (skeleton.jointCount() < own)
+        return unexpected(Deformation::tr("The skeleton is damaged; build it again."));
+    pose.angles.conservativeResize(skeleton.jointCount());
+    pose.angles.tail(skeleton.jointCount() - own).setZero();
+    auto posed = deform::forwardKinematics(skeleton, pose);
+    if (!posed)
+        return unexpected(
+            Deformation::tr("The bones could not be posed: %1").arg(message(posed.error())));
+    if (!rig.hangs())
+        return std::move(*posed);
+    // The part's own pose happens in its parent bone's rest frame; that bone's motion
+    // follows. The parent's bone itself (if it skins) moves by that motion alone.
+    const RigidMotion &m = rig.anchor.motion;
+    const double c = std::cos(m.angle), s = std::sin(m.angle);
+    deform::BoneTransform A;
+    A << c, -s, m.shift.x(), s, c, m.shift.y();
+    for (Eigen::Index j = 0; j < skeleton.jointCount(); ++j) {
+        deform::BoneTransform &T = posed->transforms[std::size_t(j)];
+        if (j < own) {
+            T.col(2) = A.leftCols<2>() * T.col(2) + A.col(2);
+            T.leftCols<2>() = A.leftCols<2>() * T.leftCols<2>();
+            posed->joints.row(j) =
+                (A.leftCols<2>() * posed->joints.row(j).transpose() + A.col(2)).transpose();
+            posed->worldAngles(j) += m.angle;
+        } else {
+            T = A;
+            posed->joints.row(j) =
+                (A.leftCols<2>() * skeleton.joints.row(j).transpose() + A.col(2)).transpose();
+            posed->worldAngles(j) = m.angle;
+        }
+    }
+    return std::move(*posed);
+}
+
 deform::SkeletonPose skeletonPose(const SkeletonRig &rig)
 {
     deform::SkeletonPose pose;
@@ -45,7 +109,7 @@ Expected<std::shared_ptr<const SkeletonSetup>, QString>
 buildSkeletonSetup(const MeshedObject &meshed, const SkeletonRig &rig,
                    const deform::ArapOptions &options, const std::function<bool()> &cancelled)
 {
-    auto skeleton = deformSkeleton(rig);
+    auto skeleton = skinningSkeleton(rig);
     if (!skeleton)
         return unexpected(skeleton.error());
     auto setup = std::make_shared<SkeletonSetup>();
@@ -69,10 +133,9 @@ buildSkeletonSetup(const MeshedObject &meshed, const SkeletonRig &rig,
 Expected<Eigen::MatrixX2d, QString>
 solveSkeleton(const MeshedObject &meshed, const SkeletonSetup &setup, const SkeletonRig &rig)
 {
-    auto posed = deform::forwardKinematics(setup.skeleton, skeletonPose(rig));
+    auto posed = posedSkinningSkeleton(setup.skeleton, rig);
     if (!posed)
-        return unexpected(
-            Deformation::tr("The bones could not be posed: %1").arg(message(posed.error())));
+        return unexpected(posed.error());
     Eigen::MatrixX2d U;
     if (rig.mode == SkinningMode::LinearBlend) {
         if (auto error = deform::skin(setup.vertices, *posed, U))

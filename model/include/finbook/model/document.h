@@ -78,6 +78,9 @@ public:
 
     // Replaces an object's rig (pins or cage, rest definition and targets). A rig with more
     // than one kind keeps only its first (pins, then cage). An empty rig drops the pose.
+    // Skeleton joins in the frame are resolved again (skeleton/skeleton_join.h): this
+    // object's anchor is recomputed from its parent, and the parts hanging from it get
+    // constraintsChanged too. Frames and objects inserted or removed resolve them as well.
     void setRig(Id groupId, Rig rig);
     // Stores a solved pose. Not undo state: a cache that any rest or pin edit invalidates.
     void setDeformed(Id groupId, DeformedStrokesPtr deformed);
@@ -101,6 +104,9 @@ signals:
 private:
     StrokeGroup &mutableGroup(Id groupId);
     void groupEdited(Id groupId, bool structural);
+    // Objects whose join anchor changed (skeleton/skeleton_join.h): their constraints changed
+    // too; `already` has been announced.
+    void joinsChanged(const std::vector<Id> &groupIds, Id already);
 
     std::vector<Frame> m_frames;
     DocumentSettings m_settings;

@@ -29,4 +29,9 @@ Expected<InsertedJoint, QString> withJointInserted(const SkeletonRig &rig, int b
 // and takes its siblings. Errors: posed, no such joint, fewer than two joints would be left.
 Expected<SkeletonRig, QString> withJointDeleted(const SkeletonRig &rig, int joint);
 
+// `joint` made the root of its tree and the skeleton's root (bones along the way turn
+// around; joints are renumbered so parents come first, locks follow their joints).
+// Errors: posed, no such joint.
+Expected<SkeletonRig, QString> withRootJoint(const SkeletonRig &rig, int joint);
+
 } // namespace finbook::model

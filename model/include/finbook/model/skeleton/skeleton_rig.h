@@ -11,6 +11,7 @@
 
 #include <QPointF>
 
+#include <cstdint>
 #include <vector>
 
 namespace finbook::model {
@@ -29,6 +30,42 @@ struct SkeletonSettings {
 // bent joints; the default), or linear blend skinning (cheaper, thins bent joints).
 enum class SkinningMode { Rigid = 0, LinearBlend = 1 };
 
+// A rigid motion of the canvas, x ↦ R(angle) x + shift (R as in deform/skeleton/skeleton.h).
+struct RigidMotion {
+    double angle = 0.0;
+    QPointF shift;
+    QPointF map(QPointF x) const;
+    QPointF unmap(QPointF x) const;                   // the inverse motion
+    RigidMotion then(const RigidMotion &after) const; // this first, then `after`
+    bool isIdentity() const { return angle == 0.0 && shift == QPointF(); }
+    friend bool operator==(const RigidMotion &, const RigidMotion &) = default;
+};
+
+// Parts of a character (issue 9): an object's skeleton can hang from a bone of another object
+// in the same frame, so posing the parent moves the part (its root follows that bone) and the
+// part's skinning weights include that bone. Stored as points, like geometry::PartJoin, so a
+// join survives rebuilding either skeleton. A part without a join is a character root.
+struct SkeletonJoin {
+    std::uint64_t parent = 0; // Id of the object it hangs from (types.h); 0 = not joined
+    QPointF childAt;          // where it attaches: near its own root (rest, canvas px)
+    QPointF parentAt;         // where it hangs: on the parent's rest skeleton
+    bool joined() const { return parent != 0; }
+    friend bool operator==(const SkeletonJoin &, const SkeletonJoin &) = default;
+};
+
+// A join resolved against the parent's rig as it is now (model::resolveJoins; the Document
+// keeps it current whenever a rig in the frame changes). Derived: never saved, never edited.
+struct SkeletonAnchor {
+    bool valid = false; // the parent exists in the frame with a skeleton, and no loop
+    // The parent's rest bone the part hangs from (from == to: a lone root joint), in the
+    // part's rest coordinates (all objects share the canvas at rest): a rest definition.
+    QPointF from, to;
+    // That bone's motion from rest to the parent's pose (its character motion included):
+    // applied after the part's own pose. Identity when the parent is at rest.
+    RigidMotion motion;
+    friend bool operator==(const SkeletonAnchor &, const SkeletonAnchor &) = default;
+};
+
 struct SkeletonRig {
     // Rest skeleton: joints (canvas px), parent[j] ∈ [−1, j) (−1 = root), inscribed radius
     // per joint (≥ 0, for drawing), and the character root (a root joint).
@@ -44,10 +81,16 @@ struct SkeletonRig {
     // Joints an IK drag must not move (the chain stops below them): empty when none is locked
     // (kept canonical so files and comparisons agree), else one flag per joint.
     std::vector<bool> locked;
+    // Where this part hangs in a character (rest definition), and that join resolved.
+    SkeletonJoin join;
+    SkeletonAnchor anchor;
 
     bool empty() const { return joints.empty(); }
     int jointCount() const { return int(joints.size()); }
+    // Own angles or offset, or a parent that moves the part.
     bool isPosed() const;
+    // The anchor applies: the part follows its parent's bone.
+    bool hangs() const { return join.joined() && anchor.valid; }
     bool isLocked(int joint) const;
     // The same skeleton with `joint`'s lock set to `on` (locked stays canonical).
     SkeletonRig withLock(int joint, bool on) const;
@@ -57,9 +100,21 @@ struct SkeletonRig {
     SkeletonRig atRest() const;
     // The posed joints become the rest joints, angles zero, offset zero.
     SkeletonRig rebased() const;
-    // Joint positions in the current pose (rest when the pose does not fit).
+    // Joint positions in the current pose, the anchor's motion included (rest when the pose
+    // does not fit).
     std::vector<QPointF> posedJoints() const;
-    // Same rest joints and parents: what the skinning precompute depends on.
+    // The same without the anchor: the part's own pose, in its parent bone's rest frame.
+    std::vector<QPointF> ownPosedJoints() const;
+    // Per joint, the motion of its bone from rest to the shown pose (a root: its tree's
+    // motion), the anchor's included. Identity motions when the pose does not fit.
+    std::vector<RigidMotion> boneMotions() const;
+    // The same pose shown with `newAnchor` (applied when valid: the caller sets the join that
+    // goes with it) instead of the current anchor: the root's angle
+    // and the offset absorb the difference, so the drawing does not jump when a join is made,
+    // broken or turned around (exact for the root's tree; other roots of a forest share the
+    // offset and may shift).
+    SkeletonRig keepingShownPose(const SkeletonAnchor &newAnchor) const;
+    // Same rest joints and parents and anchor bone: what the skinning precompute depends on.
     bool sameRest(const SkeletonRig &other) const;
     // Sizes agree (locked empty or one per joint, not all false), everything finite,
     // parent[j] ∈ [−1, j), root a root, settings in [0, 1].

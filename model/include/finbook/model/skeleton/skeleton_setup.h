@@ -19,6 +19,16 @@ struct SkeletonSetup {
 // The rest skeleton for deform/ (joints and parents). Errors: sentences for the user.
 Expected<deform::Skeleton, QString> deformSkeleton(const SkeletonRig &rig);
 
+// The skeleton that skins the object: its own joints, then, for a part hanging from another
+// object's bone (SkeletonRig::hangs), that bone as two more joints (a tree of its own), so
+// the weights include the bone it is joined to. Errors: sentences for the user.
+Expected<deform::Skeleton, QString> skinningSkeleton(const SkeletonRig &rig);
+
+// Forward kinematics of skinningSkeleton(rig) in the rig's pose, the anchor's motion
+// composed after the part's own (the parent's bone moves by it alone).
+Expected<deform::PosedSkeleton, QString> posedSkinningSkeleton(const deform::Skeleton &skeleton,
+                                                               const SkeletonRig &rig);
+
 // The stored pose for deform/: J angles (missing entries are 0) and the root offset.
 deform::SkeletonPose skeletonPose(const SkeletonRig &rig);
 

@@ -1,0 +1,498 @@
+// Characters made of parts (issue 9/10): an arm drawn over a torso joins the torso's skeleton,
+// posing the torso moves the arm (and its drawing), the arm's weights include the torso bone
+// it hangs from, and joins are undoable, never make the drawing jump, follow Duplicate Frame
+// and are saved.
+#include <finbook/deform/skeleton/skinning_weights.h>
+#include <finbook/model/deform_controller.h>
+#include <finbook/model/finbook_file.h>
+#include <finbook/model/inbetween/inbetween_commands.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/model/skeleton/skeleton_join_commands.h>
+#include <finbook/model/skeleton/skeleton_setup.h>
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace finbook;
+using namespace finbook::model;
+
+namespace {
+
+StrokeDataPtr line(QPointF a, QPointF b, int n)
+{
+    auto data = std::make_shared<StrokeData>();
+    for (int i = 0; i < n; ++i) {
+        const QPointF p = a + (b - a) * (double(i) / (n - 1));
+        data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+    }
+    data->width = 6.0f;
+    return data;
+}
+
+// A thick bar of parallel strokes from a to b (`across` px wide).
+StrokeGroup bar(Document &doc, const QString &name, QPointF a, QPointF b, double across)
+{
+    StrokeGroup g;
+    g.id = doc.allocateId();
+    g.name = name;
+    const QPointF d = b - a;
+    const QPointF n = QPointF(-d.y(), d.x()) / std::hypot(d.x(), d.y());
+    for (double o = -across / 2; o <= across / 2 + 1e-9; o += 5.0)
+        g.strokes.push_back({doc.allocateId(), line(a + o * n, b + o * n, 80)});
+    return g;
+}
+
+struct Character {
+    Id torso = kNoId;
+    Id arm = kNoId;
+};
+
+// A tall torso and an arm drawn over its upper end, each with its automatic skeleton.
+Character makeCharacter(Document &doc)
+{
+    Frame f;
+    f.id = doc.allocateId();
+    f.groups.push_back(bar(doc, QStringLiteral("torso"), {300, 100}, {300, 500}, 40));
+    f.groups.push_back(bar(doc, QStringLiteral("arm"), {305, 160}, {600, 160}, 30));
+    const Character c{f.groups[0].id, f.groups[1].id};
+    doc.reset({f}, DocumentSettings{}, doc.nextId());
+    for (Id id : {c.torso, c.arm}) {
+        auto rig = buildSkeletonRig(*doc.group(id));
+        if (!rig)
+            qWarning("%s", qPrintable(rig.error()));
+        doc.undoStack()->push(new BuildSkeletonCommand(&doc, id, rig ? *rig : SkeletonRig{}));
+    }
+    return c;
+}
+
+bool waitSolved(DeformController &controller, const Document &doc, Id groupId)
+{
+    QSignalSpy solved(&controller, &DeformController::poseSolved);
+    QSignalSpy failed(&controller, &DeformController::errorOccurred);
+    const auto ready = [&] {
+        const DeformSetup *s = controller.setup(groupId);
+        return s && s->matches(*doc.group(groupId)) && !controller.isWaiting(groupId) &&
+               doc.group(groupId)->deformed;
+    };
+    for (int i = 0; i < 400 && !ready() && failed.isEmpty(); ++i)
+        solved.wait(25);
+    for (const auto &args : failed)
+        qWarning("deformation failed: %s", qPrintable(args.at(1).toString()));
+    return ready();
+}
+
+void poseRoot(Document &doc, Id id, double angle, QPointF offset, int serial)
+{
+    std::vector<double> angles(std::size_t(doc.group(id)->rig.skeleton.jointCount()), 0.0);
+    angles[std::size_t(doc.group(id)->rig.skeleton.root)] = angle;
+    doc.undoStack()->push(new PoseBonesCommand(&doc, id, angles, offset, serial));
+}
+
+double distance(const std::vector<QPointF> &a, const std::vector<QPointF> &b)
+{
+    double worst = a.size() == b.size() ? 0.0 : HUGE_VAL;
+    for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+        worst = std::max(worst, QLineF(a[i], b[i]).length());
+    return worst;
+}
+
+std::vector<Rig> rigsOf(const Document &doc)
+{
+    std::vector<Rig> rigs;
+    for (const Frame &f : doc.frames())
+        for (const StrokeGroup &g : f.groups)
+            rigs.push_back(g.rig);
+    return rigs;
+}
+
+Character joinedCharacter(Document &doc)
+{
+    const Character c = makeCharacter(doc);
+    const auto join = proposeJoin(doc.frames()[0], c.arm);
+    if (join)
+        doc.undoStack()->push(new JoinPartCommand(&doc, c.arm, *join));
+    return c;
+}
+
+} // namespace
+
+class TestSkeletonJoin : public QObject {
+    Q_OBJECT
+private slots:
+    void overlappingArmJoinsTheTorso();
+    void posingTheTorsoMovesTheArm();
+    void posedArmFollowsThroughTheController();
+    void weightsIncludeTheJoinedBone();
+    void joinDetachAndRerootKeepTheShownPose();
+    void loopsAreRefused();
+    void joinOverlappingPartsJoinsSmallerToBigger();
+    void removingTheParentLeavesThePartStanding();
+    void duplicateFrameKeepsJoinsWithinTheCopy();
+    void fileRoundTripKeepsJoins();
+    void applyPoseBakesTheWholeCharacter();
+    void joinEditsUndoAndRedoExactly();
+    void inbetweensMoveThePartWithItsParent();
+};
+
+void TestSkeletonJoin::overlappingArmJoinsTheTorso()
+{
+    Document doc;
+    const Character c = makeCharacter(doc);
+    const auto join = proposeJoin(doc.frames()[0], c.arm);
+    QVERIFY(join);
+    QCOMPARE(join->parent, c.torso);
+    // It attaches at the arm's inner end, inside the torso.
+    QVERIFY2(join->childAt.x() < 330, qPrintable(QString::number(join->childAt.x())));
+    QVERIFY(std::abs(join->parentAt.x() - 300) < 10);
+    QVERIFY(!proposeJoin(doc.frames()[0], c.torso) ||
+            proposeJoin(doc.frames()[0], c.torso)->parent == c.arm);
+
+    doc.undoStack()->push(new JoinPartCommand(&doc, c.arm, *join));
+    const SkeletonRig &arm = doc.group(c.arm)->rig.skeleton;
+    QVERIFY(arm.hangs());
+    QCOMPARE(arm.join.parent, c.torso);
+    QVERIFY(arm.anchor.motion.isIdentity()); // the torso is at rest
+    QVERIFY(!arm.isPosed());
+    // Re-rooted where it attaches, so it turns about the shoulder.
+    QVERIFY(QLineF(arm.joints[std::size_t(arm.root)], join->childAt).length() < 40);
+    QCOMPARE(characterRoot(doc.frames()[0], c.arm), c.torso);
+    QCOMPARE(characterParts(doc.frames()[0], c.arm), (std::vector<Id>{c.torso, c.arm}));
+}
+
+void TestSkeletonJoin::posingTheTorsoMovesTheArm()
+{
+    Document doc;
+    const Character c = joinedCharacter(doc);
+    QVERIFY(doc.group(c.arm)->rig.skeleton.hangs());
+    const std::vector<QPointF> armRest = doc.group(c.arm)->rig.skeleton.joints;
+    const SkeletonRig torsoRest = doc.group(c.torso)->rig.skeleton;
+    const QPointF pivot = torsoRest.joints[std::size_t(torsoRest.root)];
+    const double theta = 0.4;
+    QSignalSpy changed(&doc, &Document::constraintsChanged);
+    poseRoot(doc, c.torso, theta, {10, -5}, 1);
+    // The arm's constraints changed too: the controller re-solves it.
+    QVERIFY(std::any_of(changed.begin(), changed.end(),
+                        [&](const QList<QVariant> &a) { return a.at(0).value<Id>() == c.arm; }));
+    const SkeletonRig &arm = doc.group(c.arm)->rig.skeleton;
+    QVERIFY(arm.isPosed());
+    const std::vector<QPointF> shown = arm.posedJoints();
+    const double cs = std::cos(theta), sn = std::sin(theta);
+    for (std::size_t j = 0; j < armRest.size(); ++j) {
+        const QPointF r = armRest[j] - pivot;
+        const QPointF expected =
+            pivot + QPointF(cs * r.x() - sn * r.y(), sn * r.x() + cs * r.y()) + QPointF(10, -5);
+        QVERIFY2(QLineF(shown[j], expected).length() < 1e-9,
+                 qPrintable(QStringLiteral("joint %1 off by %2")
+                                .arg(j)
+                                .arg(QLineF(shown[j], expected).length())));
+    }
+    // Undo puts the arm back at rest.
+    doc.undoStack()->undo();
+    QVERIFY(distance(doc.group(c.arm)->rig.skeleton.posedJoints(), armRest) < 1e-12);
+    QVERIFY(!doc.group(c.arm)->rig.skeleton.isPosed());
+}
+
+void TestSkeletonJoin::posedArmFollowsThroughTheController()
+{
+    Document doc;
+    DeformController controller(&doc);
+    const Character c = joinedCharacter(doc);
+    controller.prepare(c.torso);
+    controller.prepare(c.arm);
+    QVERIFY(waitSolved(controller, doc, c.torso));
+    QVERIFY(waitSolved(controller, doc, c.arm));
+    const SkeletonRig torso = doc.group(c.torso)->rig.skeleton;
+    const QPointF pivot = torso.joints[std::size_t(torso.root)];
+    const double theta = 0.3;
+    poseRoot(doc, c.torso, theta, {}, 1);
+    QVERIFY(waitSolved(controller, doc, c.arm));
+    controller.settle();
+    // The arm's far end turns by θ about the torso's root, like the torso itself.
+    const StrokeGroup &arm = *doc.group(c.arm);
+    QVERIFY(arm.isDeformed());
+    int checked = 0;
+    for (std::size_t s = 0; s < arm.strokes.size(); ++s) {
+        const auto &rest = arm.strokes[s].data->points;
+        const auto &posed = arm.deformed->strokes[s];
+        for (std::size_t i = 0; i < rest.size(); ++i) {
+            if (rest[i].x < 560)
+                continue; // near the tip only
+            const double a0 = std::atan2(rest[i].y - pivot.y(), rest[i].x - pivot.x());
+            const double a1 = std::atan2(posed[i].y - pivot.y(), posed[i].x - pivot.x());
+            QVERIFY2(std::abs(std::remainder(a1 - a0 - theta, 2 * std::numbers::pi)) < 1e-3,
+                     qPrintable(QString::number(a1 - a0)));
+            QVERIFY(std::isfinite(posed[i].x) && std::isfinite(posed[i].y));
+            ++checked;
+        }
+    }
+    QVERIFY(checked > 20);
+}
+
+void TestSkeletonJoin::weightsIncludeTheJoinedBone()
+{
+    Document doc;
+    const Character c = joinedCharacter(doc);
+    const SkeletonRig &arm = doc.group(c.arm)->rig.skeleton;
+    QVERIFY(arm.hangs());
+    QVERIFY(arm.anchor.from != arm.anchor.to);
+    auto skeleton = skinningSkeleton(arm);
+    QVERIFY(skeleton);
+    QCOMPARE(skeleton->jointCount(), Eigen::Index(arm.jointCount() + 2));
+    auto own = deformSkeleton(arm);
+    QVERIFY(own);
+    QCOMPARE(own->jointCount(), Eigen::Index(arm.jointCount()));
+
+    auto meshed = meshObject(MeshKey::of(*doc.group(c.arm)));
+    QVERIFY(meshed);
+    auto weights = deform::computeSkinningWeights((*meshed)->mesh.V, (*meshed)->mesh.F, *skeleton);
+    QVERIFY(weights);
+    const Eigen::MatrixXd &W = (*weights)->W;
+    const Eigen::Index anchorBone = skeleton->jointCount() - 1;
+    // The torso bone holds the arm's vertices where it passes through them, and no more
+    // than the shoulder: the far half of the arm is the arm's own.
+    double nearShoulder = 0.0, farHalf = 0.0;
+    for (Eigen::Index i = 0; i < W.rows(); ++i) {
+        QVERIFY(std::abs(W.row(i).sum() - 1.0) < 1e-9);
+        QVERIFY(W.row(i).minCoeff() >= -1e-12 && W.row(i).maxCoeff() <= 1.0 + 1e-12);
+        const double x = (*meshed)->mesh.V(i, 0);
+        if (x < 310)
+            nearShoulder = std::max(nearShoulder, W(i, anchorBone));
+        if (x > 450)
+            farHalf = std::max(farHalf, W(i, anchorBone));
+    }
+    QVERIFY2(nearShoulder > 0.9, qPrintable(QString::number(nearShoulder)));
+    QVERIFY2(farHalf < 0.05, qPrintable(QString::number(farHalf)));
+}
+
+void TestSkeletonJoin::joinDetachAndRerootKeepTheShownPose()
+{
+    Document doc;
+    const Character c = makeCharacter(doc);
+    // Both posed before they are joined.
+    poseRoot(doc, c.torso, 0.5, {20, 10}, 1);
+    poseRoot(doc, c.arm, -0.2, {-5, 3}, 2);
+    const std::vector<QPointF> torsoShown = doc.group(c.torso)->rig.skeleton.posedJoints();
+    const std::vector<QPointF> armShown = doc.group(c.arm)->rig.skeleton.posedJoints();
+    const auto join = proposeJoin(doc.frames()[0], c.arm);
+    QVERIFY(join);
+    doc.undoStack()->push(new JoinPartCommand(&doc, c.arm, *join));
+    QVERIFY(doc.group(c.arm)->rig.skeleton.hangs());
+    QVERIFY(distance(doc.group(c.arm)->rig.skeleton.posedJoints(), armShown) < 1e-9);
+    QVERIFY(distance(doc.group(c.torso)->rig.skeleton.posedJoints(), torsoShown) < 1e-9);
+
+    doc.undoStack()->push(new MakeCharacterRootCommand(&doc, c.arm));
+    QCOMPARE(characterRoot(doc.frames()[0], c.torso), c.arm);
+    QVERIFY(doc.group(c.torso)->rig.skeleton.hangs());
+    QVERIFY(!doc.group(c.arm)->rig.skeleton.hangs());
+    QVERIFY(distance(doc.group(c.arm)->rig.skeleton.posedJoints(), armShown) < 1e-9);
+    QVERIFY(distance(doc.group(c.torso)->rig.skeleton.posedJoints(), torsoShown) < 1e-9);
+    // Now the arm leads: moving it moves the torso.
+    const SkeletonRig armNow = doc.group(c.arm)->rig.skeleton;
+    doc.undoStack()->push(
+        new PoseBonesCommand(&doc, c.arm, armNow.angles, armNow.rootOffset + QPointF(7, 0), 3));
+    std::vector<QPointF> moved = torsoShown;
+    for (QPointF &p : moved)
+        p += QPointF(7, 0);
+    QVERIFY(distance(doc.group(c.torso)->rig.skeleton.posedJoints(), moved) < 1e-9);
+    doc.undoStack()->undo();
+
+    doc.undoStack()->push(new DetachPartCommand(&doc, c.torso));
+    QVERIFY(!doc.group(c.torso)->rig.skeleton.join.joined());
+    QVERIFY(distance(doc.group(c.torso)->rig.skeleton.posedJoints(), torsoShown) < 1e-9);
+    QCOMPARE(characterParts(doc.frames()[0], c.arm), std::vector<Id>{c.arm});
+}
+
+void TestSkeletonJoin::loopsAreRefused()
+{
+    Document doc;
+    const Character c = joinedCharacter(doc);
+    const SkeletonRig &torso = doc.group(c.torso)->rig.skeleton;
+    const SkeletonRig &arm = doc.group(c.arm)->rig.skeleton;
+    JoinPartCommand loop(&doc, c.torso, joinAt(torso, c.arm, arm.joints.back()));
+    QVERIFY(loop.isObsolete());
+    JoinPartCommand self(&doc, c.arm, joinAt(arm, c.arm, arm.joints.front()));
+    QVERIFY(self.isObsolete());
+    // A loop written into a file resolves as no join at all.
+    Frame f = doc.frames()[0];
+    f.groups[0].rig.skeleton.join = joinAt(f.groups[0].rig.skeleton, c.arm, arm.joints.back());
+    resolveJoins(f);
+    QVERIFY(!f.groups[0].rig.skeleton.hangs() || !f.groups[1].rig.skeleton.hangs());
+}
+
+void TestSkeletonJoin::joinOverlappingPartsJoinsSmallerToBigger()
+{
+    Document doc;
+    const Character c = makeCharacter(doc);
+    auto *command = new JoinOverlappingPartsCommand(&doc, doc.frames()[0].id);
+    QCOMPARE(command->joined(), 1);
+    doc.undoStack()->push(command);
+    QVERIFY(doc.group(c.arm)->rig.skeleton.hangs());
+    QVERIFY(!doc.group(c.torso)->rig.skeleton.join.joined());
+    // Nothing left to join.
+    JoinOverlappingPartsCommand again(&doc, doc.frames()[0].id);
+    QVERIFY(again.isObsolete());
+    doc.undoStack()->undo();
+    QVERIFY(!doc.group(c.arm)->rig.skeleton.join.joined());
+}
+
+void TestSkeletonJoin::removingTheParentLeavesThePartStanding()
+{
+    Document doc;
+    const Character c = joinedCharacter(doc);
+    poseRoot(doc, c.torso, 0.3, {}, 1);
+    const SkeletonRig before = doc.group(c.arm)->rig.skeleton;
+    QVERIFY(before.isPosed());
+    doc.undoStack()->push(new RemoveObjectCommand(&doc, c.torso));
+    const SkeletonRig &alone = doc.group(c.arm)->rig.skeleton;
+    QVERIFY(!alone.hangs());
+    QVERIFY(!alone.isPosed());
+    QCOMPARE(alone.posedJoints(), alone.joints);
+    doc.undoStack()->undo();
+    QCOMPARE(doc.group(c.arm)->rig.skeleton, before);
+}
+
+void TestSkeletonJoin::duplicateFrameKeepsJoinsWithinTheCopy()
+{
+    Document doc;
+    const Character c = joinedCharacter(doc);
+    poseRoot(doc, c.torso, 0.2, {}, 1);
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frames()[0].id, 1));
+    const Frame &copy = doc.frames()[1];
+    const StrokeGroup &torso2 = copy.groups[0];
+    const StrokeGroup &arm2 = copy.groups[1];
+    QVERIFY(torso2.id != c.torso && arm2.id != c.arm);
+    QCOMPARE(arm2.rig.skeleton.join.parent, torso2.id);
+    QVERIFY(arm2.rig.skeleton.hangs());
+    QCOMPARE(arm2.rig.skeleton.posedJoints(), doc.group(c.arm)->rig.skeleton.posedJoints());
+    // Posing the copy's torso moves the copy's arm only.
+    const std::vector<QPointF> original = doc.group(c.arm)->rig.skeleton.posedJoints();
+    const Id arm2Id = arm2.id;
+    poseRoot(doc, torso2.id, -0.4, {}, 2);
+    QCOMPARE(doc.group(c.arm)->rig.skeleton.posedJoints(), original);
+    QVERIFY(distance(doc.group(arm2Id)->rig.skeleton.posedJoints(), original) > 10);
+}
+
+void TestSkeletonJoin::fileRoundTripKeepsJoins()
+{
+    Document doc;
+    const Character c = joinedCharacter(doc);
+    poseRoot(doc, c.torso, 0.25, {3, 4}, 1);
+    const QByteArray bytes = serializeFinbook(doc);
+    QVERIFY(bytes.contains("JOIN"));
+    auto loaded = readFinbook(bytes);
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    Document reopened;
+    reopened.reset(loaded->frames, loaded->settings, loaded->nextId);
+    QCOMPARE(rigsOf(reopened), rigsOf(doc));
+    QVERIFY(reopened.group(c.arm)->rig.skeleton.hangs());
+    QCOMPARE(serializeFinbook(reopened), bytes);
+    // Without the parent object's skeleton the join chunk is still read; it resolves to none.
+    Document detached;
+    auto frames = loaded->frames;
+    frames[0].groups[0].rig = {};
+    detached.reset(frames, loaded->settings, loaded->nextId);
+    QVERIFY(!detached.group(c.arm)->rig.skeleton.hangs());
+    QVERIFY(detached.group(c.arm)->rig.skeleton.join.joined());
+}
+
+void TestSkeletonJoin::applyPoseBakesTheWholeCharacter()
+{
+    Document doc;
+    DeformController controller(&doc);
+    const Character c = joinedCharacter(doc);
+    controller.prepare(c.torso);
+    controller.prepare(c.arm);
+    QVERIFY(waitSolved(controller, doc, c.torso));
+    QVERIFY(waitSolved(controller, doc, c.arm));
+    poseRoot(doc, c.torso, 0.35, {12, 0}, 1);
+    QVERIFY(waitSolved(controller, doc, c.torso));
+    QVERIFY(waitSolved(controller, doc, c.arm));
+    controller.settle();
+    const std::vector<Rig> before = rigsOf(doc);
+    const auto armShown = doc.group(c.arm)->deformed;
+    const auto armJoints = doc.group(c.arm)->rig.skeleton.posedJoints();
+    const auto torsoJoints = doc.group(c.torso)->rig.skeleton.posedJoints();
+    // Applying from the arm bakes the torso too: one step.
+    const int steps = doc.undoStack()->count();
+    doc.undoStack()->push(makeApplyPoseCommand(&doc, c.arm));
+    QCOMPARE(doc.undoStack()->count(), steps + 1);
+    const SkeletonRig &arm = doc.group(c.arm)->rig.skeleton;
+    QVERIFY(!arm.isPosed());
+    QVERIFY(!doc.group(c.torso)->rig.skeleton.isPosed());
+    QVERIFY(arm.hangs());
+    QVERIFY(distance(arm.joints, armJoints) < 1e-9);
+    QVERIFY(distance(doc.group(c.torso)->rig.skeleton.joints, torsoJoints) < 1e-9);
+    for (std::size_t s = 0; s < armShown->strokes.size(); ++s)
+        QCOMPARE(doc.group(c.arm)->strokes[s].data->points, armShown->strokes[s]);
+    // Posing the baked torso still moves the arm.
+    poseRoot(doc, c.torso, 0.1, {}, 2);
+    QVERIFY(doc.group(c.arm)->rig.skeleton.isPosed());
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    QCOMPARE(rigsOf(doc), before);
+}
+
+void TestSkeletonJoin::joinEditsUndoAndRedoExactly()
+{
+    Document doc;
+    const Character c = makeCharacter(doc);
+    const int base = doc.undoStack()->index();
+    const std::vector<Rig> start = rigsOf(doc);
+    const QByteArray startBytes = serializeFinbook(doc);
+    poseRoot(doc, c.torso, 0.3, {1, 2}, 1);
+    doc.undoStack()->push(new JoinPartCommand(&doc, c.arm, *proposeJoin(doc.frames()[0], c.arm)));
+    poseRoot(doc, c.arm, -0.6, {}, 2);
+    doc.undoStack()->push(new MakeCharacterRootCommand(&doc, c.arm));
+    poseRoot(doc, c.torso, 0.1, {}, 3);
+    doc.undoStack()->push(new DetachPartCommand(&doc, c.torso));
+    const std::vector<Rig> end = rigsOf(doc);
+    const QByteArray endBytes = serializeFinbook(doc);
+    QCOMPARE(doc.undoStack()->index(), base + 6);
+    while (doc.undoStack()->index() > base)
+        doc.undoStack()->undo();
+    QCOMPARE(rigsOf(doc), start);
+    QCOMPARE(serializeFinbook(doc), startBytes);
+    while (doc.undoStack()->canRedo())
+        doc.undoStack()->redo();
+    QCOMPARE(rigsOf(doc), end);
+    QCOMPARE(serializeFinbook(doc), endBytes);
+}
+
+void TestSkeletonJoin::inbetweensMoveThePartWithItsParent()
+{
+    Document doc;
+    const Character c = joinedCharacter(doc);
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frames()[0].id, 1));
+    const Id torso2 = doc.frames()[1].groups[0].id;
+    poseRoot(doc, torso2, 0.8, {}, 1);
+    const SkeletonRig armRest = doc.group(c.arm)->rig.skeleton;
+    doc.undoStack()->push(
+        new InsertInbetweensCommand(&doc, doc.frames()[0].id, doc.frames()[1].id, 3, {}));
+    QCOMPARE(doc.frameCount(), 5);
+    const SkeletonRig torsoRest = doc.group(c.torso)->rig.skeleton;
+    const QPointF pivot = torsoRest.joints[std::size_t(torsoRest.root)];
+    double previous = 0.0;
+    for (int f = 1; f <= 3; ++f) {
+        const Frame &mid = doc.frames()[std::size_t(f)];
+        const SkeletonRig &torso = mid.groups[0].rig.skeleton;
+        const SkeletonRig &arm = mid.groups[1].rig.skeleton;
+        QCOMPARE(arm.join.parent, mid.groups[0].id);
+        QVERIFY(arm.hangs());
+        const double phi = torso.angles[std::size_t(torso.root)];
+        QVERIFY(phi > previous && phi < 0.8);
+        previous = phi;
+        const std::vector<QPointF> shown = arm.posedJoints();
+        for (std::size_t j = 0; j < shown.size(); ++j) {
+            const QPointF r = armRest.joints[j] - pivot;
+            const QPointF expected = pivot + QPointF(std::cos(phi) * r.x() - std::sin(phi) * r.y(),
+                                                     std::sin(phi) * r.x() + std::cos(phi) * r.y());
+            QVERIFY(QLineF(shown[j], expected).length() < 1e-9);
+        }
+    }
+}
+
+QTEST_GUILESS_MAIN(TestSkeletonJoin)
+#include "tst_skeleton_join.moc"
