@@ -4,92 +4,92 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="21"/>
+        <location filename="../model/src/commands.cpp" line="22"/>
         <source>Draw Stroke</source>
         <translation>Strich zeichnen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="45"/>
+        <location filename="../model/src/commands.cpp" line="46"/>
         <source>Erase Stroke</source>
         <translation>Strich radieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="74"/>
+        <location filename="../model/src/commands.cpp" line="75"/>
         <source>Move Strokes to Object</source>
         <translation>Striche in Objekt verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="171"/>
+        <location filename="../model/src/commands.cpp" line="172"/>
         <source>New Object</source>
         <translation>Neues Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="199"/>
+        <location filename="../model/src/commands.cpp" line="200"/>
         <source>Delete Object</source>
         <translation>Objekt löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="228"/>
+        <location filename="../model/src/commands.cpp" line="229"/>
         <source>Rename Object</source>
         <translation>Objekt umbenennen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="253"/>
+        <location filename="../model/src/commands.cpp" line="254"/>
         <source>Reorder Object</source>
         <translation>Objekt umsortieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="284"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Show Object</source>
         <translation>Objekt einblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="284"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Hide Object</source>
         <translation>Objekt ausblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Lock Object</source>
         <translation>Objekt sperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Unlock Object</source>
         <translation>Objekt entsperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="319"/>
+        <location filename="../model/src/commands.cpp" line="320"/>
         <source>Insert Frame</source>
         <translation>Einzelbild einfügen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="323"/>
+        <location filename="../model/src/commands.cpp" line="324"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="342"/>
+        <location filename="../model/src/commands.cpp" line="343"/>
         <source>Duplicate Frame</source>
         <translation>Einzelbild duplizieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="387"/>
+        <location filename="../model/src/commands.cpp" line="391"/>
         <source>Delete Frame</source>
         <translation>Einzelbild löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="413"/>
+        <location filename="../model/src/commands.cpp" line="417"/>
         <source>Move Frame</source>
         <translation>Einzelbild verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="436"/>
+        <location filename="../model/src/commands.cpp" line="440"/>
         <source>Change Frame Exposure</source>
         <translation>Haltedauer des Einzelbilds ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="474"/>
+        <location filename="../model/src/commands.cpp" line="478"/>
         <source>Change Document Settings</source>
         <translation>Dokumenteinstellungen ändern</translation>
     </message>
@@ -139,7 +139,7 @@
         <translation>Rig entfernen</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="31"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="36"/>
         <source>Generate In-betweens</source>
         <translation>Zwischenbilder erzeugen</translation>
     </message>
@@ -150,6 +150,7 @@
     </message>
     <message>
         <location filename="../model/src/rig/rig_commands.cpp" line="113"/>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung anwenden</translation>
     </message>
@@ -164,44 +165,64 @@
         <translation>Skeletteinstellungen ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="114"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="117"/>
         <source>Pose Bones</source>
         <translation>Knochen posieren</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="123"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="126"/>
         <source>Change Skinning</source>
         <translation>Skinning ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="143"/>
         <source>Lock Joint</source>
         <translation>Gelenk sperren</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="143"/>
         <source>Unlock Joint</source>
         <translation>Gelenk entsperren</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="167"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="170"/>
         <source>Reset Bone Pose</source>
         <translation>Knochenpose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="179"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="182"/>
         <source>Move Joint</source>
         <translation>Gelenk verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="202"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="205"/>
         <source>Insert Joint</source>
         <translation>Gelenk einfügen</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="215"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="218"/>
         <source>Delete Joint</source>
         <translation>Gelenk löschen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="106"/>
+        <source>Join Part</source>
+        <translation>Teil verbinden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="130"/>
+        <source>Detach Part</source>
+        <translation>Teil lösen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="135"/>
+        <source>Join Overlapping Parts</source>
+        <translation>Überlappende Teile verbinden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="166"/>
+        <source>Make Character Root</source>
+        <translation>Zur Wurzel der Figur machen</translation>
     </message>
 </context>
 <context>
@@ -374,27 +395,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="73"/>
+        <location filename="../model/src/deform_setup.cpp" line="76"/>
         <source>The object has no strokes to deform.</source>
         <translation>Das Objekt hat keine Striche, die sich verformen ließen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="78"/>
+        <location filename="../model/src/deform_setup.cpp" line="81"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Für diese Zeichnung lässt sich kein Verformungsnetz erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="110"/>
+        <location filename="../model/src/deform_setup.cpp" line="113"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="154"/>
+        <location filename="../model/src/deform_setup.cpp" line="157"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>Der Käfig wurde geändert, während er vorbereitet wurde.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="162"/>
+        <location filename="../model/src/deform_setup.cpp" line="165"/>
         <source>The object has no mesh to deform.</source>
         <translation>Das Objekt hat kein Netz, das sich verformen ließe.</translation>
     </message>
@@ -409,7 +430,7 @@
         <translation>Die Pins konnten nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="182"/>
+        <location filename="../model/src/deform_setup.cpp" line="185"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
     </message>
@@ -453,75 +474,79 @@
         <translation>Kein Käfig passt zu dieser Zeichnung: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="55"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="40"/>
         <source>No skeleton can be built for this drawing: %1</source>
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="52"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>Das Objekt hat keine Striche, in denen sich ein Skelett erstellen ließe.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="81"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="90"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="66"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="75"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="26"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="89"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="131"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="19"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="27"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="90"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="156"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="177"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="21"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="65"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>Das Skelett ist beschädigt; erstellen Sie es neu.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="28"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="29"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>Setzen Sie die Pose zurück oder wenden Sie sie auf die Zeichnung an, bevor Sie Gelenke bearbeiten.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="30"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="31"/>
         <source>There is no such joint.</source>
         <translation>Dieses Gelenk gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="47"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="61"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="48"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="62"/>
         <source>A joint cannot go there.</source>
         <translation>Dorthin kann kein Gelenk.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="59"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="60"/>
         <source>A joint can only be inserted on a bone.</source>
         <translation>Ein Gelenk kann nur auf einem Knochen eingefügt werden.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="66"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="67"/>
         <source>The bone is too short to split.</source>
         <translation>Der Knochen ist zu kurz zum Teilen.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="98"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="99"/>
         <source>A skeleton needs at least one bone.</source>
         <translation>Ein Skelett braucht mindestens einen Knochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="30"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="32"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="55"/>
         <source>The skeleton cannot be used: %1</source>
         <translation>Das Skelett kann nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="57"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="63"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="121"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="127"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>Das Skelett kann nicht an diese Zeichnung gebunden werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="75"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="80"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="86"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="71"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="143"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="149"/>
         <source>The bones could not be posed: %1</source>
         <translation>Die Knochen konnten nicht posiert werden: %1</translation>
     </message>
@@ -1126,262 +1151,277 @@
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
         <source>the frame list</source>
         <translation>die Einzelbildliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
         <source>a frame</source>
         <translation>ein Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>das Einzelbild ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
         <source>%1; the frame is left out</source>
         <translation>%1; das Einzelbild wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
         <source>a frame id</source>
         <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>the frame</source>
         <translation>das Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>a frame hold</source>
         <translation>eine Haltedauer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>the object list</source>
         <translation>die Objektliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>das Objekt ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
         <source>%1; the object is left out</source>
         <translation>%1; das Objekt wird ausgelassen</translation>
     </message>
     <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="111"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
         <source>a chunk header</source>
         <translation>ein Blockkopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
         <source>a chunk</source>
         <translation>ein Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
         <source>chunk</source>
         <translation>Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
         <source>an object id</source>
         <translation>eine Objekt-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
         <source>the object</source>
         <translation>das Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>the object flags</source>
         <translation>die Objektattribute</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>the mesh density</source>
         <translation>die Netzdichte</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
         <source>the object name</source>
         <translation>der Objektname</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="168"/>
         <source>the stroke list</source>
         <translation>die Strichliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="175"/>
         <source>a stroke id</source>
         <translation>eine Strich-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
         <source>the stroke</source>
         <translation>der Strich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
         <source>a stroke reference</source>
         <translation>ein Strichverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="39"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 gibt %2 Einträge an; die %3, die hineinpassen, werden gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
         <source>an unknown chunk is left out</source>
         <translation>ein unbekannter Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>Block %1 kommt doppelt oder mit einem anderen Rig vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="223"/>
         <source>%1; the chunk is left out</source>
         <translation>%1; der Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="251"/>
+        <source>the skeleton&apos;s join</source>
+        <translation>die Verbindung des Skeletts</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <source>a join comes without a skeleton</source>
+        <translation>eine Verbindung steht ohne Skelett</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="261"/>
+        <source>the skeleton&apos;s join is damaged</source>
+        <translation>die Verbindung des Skeletts ist beschädigt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
         <source>the pin list</source>
         <translation>die Pin-Liste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="279"/>
         <source>a pin id</source>
         <translation>eine Pin-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>pin %1</source>
         <translation>Pin %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
         <source>a pin position</source>
         <translation>eine Pin-Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>pin %1 has a non-finite position</source>
         <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
         <source>the cage corner list</source>
         <translation>die Käfigeckenliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>der Käfig hat weniger als 3 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="306"/>
         <source>a cage corner</source>
         <translation>eine Käfigecke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>Käfigecke %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
         <source>a pose reference</source>
         <translation>ein Posenverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
         <source>its pose: %1</source>
         <translation>seine Pose: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="328"/>
         <source>its pose has %1 strokes but the object has %2</source>
         <translation>seine Pose hat %1 Striche, das Objekt aber %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
         <source>stroke %1 has %2 points but its pose has %3</source>
         <translation>Strich %1 hat %2 Punkte, seine Pose aber %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
         <source>%1 has no id</source>
         <translation>%1 hat keine ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 hat die ID %2, die größer ist als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="356"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
@@ -1586,47 +1626,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="85"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="86"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="88"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="89"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="91"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="92"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="113"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="114"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="152"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="153"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="173"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="174"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="221"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="222"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="297"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="298"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="304"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="305"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -1647,74 +1687,124 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="32"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="38"/>
         <source>Bone</source>
         <translation>Knochen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="48"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="189"/>
         <source>Build Skeleton</source>
         <translation>Skelett erstellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="50"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>Das Objekt ist mit einem anderen Verformer posiert. Beim Erstellen eines Skeletts wird diese Pose verworfen. Trotzdem erstellen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="235"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="207"/>
+        <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
+        <translation>Mit %1 verbunden. Ziehen Sie die Wurzel mit Umschalt an eine andere Stelle, um es dort zu verbinden; Rechtsklick darauf löst es.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um ihr ein Skelett zu geben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="242"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="275"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen; Rechtsklick auf ein Gelenk löscht es.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="245"/>
-        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
-        <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um daran zu ziehen, die Wurzel, um das Objekt zu verschieben; Alt-Klick auf ein Gelenk sperrt es.</translation>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="278"/>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
+        <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um es zu ziehen, die Wurzel, um das Objekt zu verschieben; Alt-Klick auf ein Gelenk sperrt es; die Wurzel mit Umschalt auf ein anderes Teil ziehen verbindet beide.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="80"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="375"/>
+        <source>Drop the root on a bone of another part to join them.</source>
+        <translation>Legen Sie die Wurzel auf einem Knochen eines anderen Teils ab, um beide zu verbinden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="383"/>
+        <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
+        <translation>%1 hängt bereits an diesem Teil und kann daher nicht umgekehrt daran hängen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="85"/>
         <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
         <translation>Gelenke bearbeiten: Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="95"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="100"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>Setzen Sie die Pose zurück oder wenden Sie sie auf die Zeichnung an, bevor Sie Gelenke bearbeiten.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
         <source>Unlock Joint</source>
         <translation>Gelenk entsperren</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
         <source>Lock Joint</source>
         <translation>Gelenk sperren</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="159"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="164"/>
         <source>Reset Bone Pose</source>
         <translation>Knochenpose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
         <source>Edit Joints</source>
         <translation>Gelenke bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="172"/>
         <source>Insert Joint Here</source>
         <translation>Gelenk hier einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="169"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="174"/>
         <source>Delete Joint</source>
         <translation>Gelenk löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="178"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="230"/>
+        <source>Make Root Joint</source>
+        <translation>Zum Wurzelgelenk machen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="187"/>
+        <source>Detach from %1</source>
+        <translation>Von %1 lösen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="190"/>
+        <source>Make Character Root</source>
+        <translation>Zur Wurzel der Figur machen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
+        <source>Join Overlapping Parts</source>
+        <translation>Überlappende Teile verbinden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="242"/>
+        <source>No part overlaps another part&apos;s skeleton.</source>
+        <translation>Kein Teil überlappt das Skelett eines anderen Teils.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="246"/>
+        <source>Joined %n part(s).</source>
+        <translation>
+            <numerusform>%n Teil verbunden.</numerusform>
+            <numerusform>%n Teile verbunden.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1827,72 +1917,72 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="21"/>
+        <location filename="../ui/src/deform_actions.cpp" line="22"/>
         <source>&amp;Reset Pose</source>
         <translation>Pose &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="25"/>
+        <location filename="../ui/src/deform_actions.cpp" line="26"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung &amp;anwenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="24"/>
+        <location filename="../ui/src/deform_actions.cpp" line="25"/>
         <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
         <translation>Die Pins, Käfigecken oder Knochen des aktuellen Objekts in ihre Ruhepositionen zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="27"/>
+        <location filename="../ui/src/deform_actions.cpp" line="28"/>
         <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
         <translation>Die posierte Zeichnung zu den neuen Strichen des Objekts machen; die Pins, der Käfig oder das Skelett bleiben, wo sie sind</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="29"/>
+        <location filename="../ui/src/deform_actions.cpp" line="30"/>
         <source>Remo&amp;ve Rig</source>
         <translation>Rig &amp;entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="31"/>
+        <location filename="../ui/src/deform_actions.cpp" line="33"/>
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>Die Pins, den Käfig oder das Skelett vom aktuellen Objekt entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="49"/>
+        <location filename="../ui/src/deform_actions.cpp" line="51"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="59"/>
+        <location filename="../ui/src/deform_actions.cpp" line="61"/>
         <source>R&amp;igidity</source>
         <translation>&amp;Steifigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="73"/>
+        <location filename="../ui/src/deform_actions.cpp" line="75"/>
         <source>Converged (Most Rigid)</source>
         <translation>Konvergiert (am starrsten)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="74"/>
+        <location filename="../ui/src/deform_actions.cpp" line="76"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Wie in der Veröffentlichung (zwei Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="75"/>
+        <location filename="../ui/src/deform_actions.cpp" line="77"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Steifer (+1 Durchgang)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="76"/>
+        <location filename="../ui/src/deform_actions.cpp" line="78"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Am steifsten (+3 Durchgänge)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="108"/>
+        <location filename="../ui/src/deform_actions.cpp" line="110"/>
         <source>Mesh density </source>
         <translation>Netzdichte </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="109"/>
+        <location filename="../ui/src/deform_actions.cpp" line="111"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Wie fein das Verformungsnetz des aktuellen Objekts ist (1 = Standard)</translation>
     </message>
@@ -2335,32 +2425,32 @@
         <translation>%1: vom ersten Schlüsselbild gehalten (Pins, Käfig oder Skelett unterscheiden sich zwischen den Schlüsselbildern)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="123"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: nur im ersten Schlüsselbild, in der ersten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="124"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="125"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: nur im zweiten Schlüsselbild, in der zweiten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
         <source>Select two different frames as keys.</source>
         <translation>Wählen Sie zwei verschiedene Einzelbilder als Schlüsselbilder aus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="147"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="148"/>
         <source>The preview could not be posed: %1</source>
         <translation>Die Vorschau konnte nicht posiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="152"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Kein Objekt hat in beiden Schlüsselbildern passende Pins oder einen passenden Käfig: Die Zwischenbilder halten nur die Zeichnungen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="153"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="154"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Die Leinwand zeigt das mittlere Zwischenbild.</translation>
     </message>
@@ -2838,27 +2928,27 @@
         <translation>Mit dem Knochenwerkzeug die Gelenke eines unverformten Skeletts verschieben, einfügen und löschen, statt es zu posieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="55"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="56"/>
         <source>Show S&amp;keleton</source>
         <translation>&amp;Skelett anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="61"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="62"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="69"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="70"/>
         <source>S&amp;kinning</source>
         <translation>S&amp;kinning</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="76"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="77"/>
         <source>&amp;Rigid (Bones Pin the Mesh)</source>
         <translation>&amp;Starr (Knochen fixieren das Netz)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="78"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="79"/>
         <source>&amp;Linear Blend</source>
         <translation>&amp;Lineare Überblendung</translation>
     </message>

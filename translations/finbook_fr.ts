@@ -4,92 +4,92 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="21"/>
+        <location filename="../model/src/commands.cpp" line="22"/>
         <source>Draw Stroke</source>
         <translation>Tracer un trait</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="45"/>
+        <location filename="../model/src/commands.cpp" line="46"/>
         <source>Erase Stroke</source>
         <translation>Effacer un trait</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="74"/>
+        <location filename="../model/src/commands.cpp" line="75"/>
         <source>Move Strokes to Object</source>
         <translation>Déplacer les traits vers un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="171"/>
+        <location filename="../model/src/commands.cpp" line="172"/>
         <source>New Object</source>
         <translation>Nouvel objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="199"/>
+        <location filename="../model/src/commands.cpp" line="200"/>
         <source>Delete Object</source>
         <translation>Supprimer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="228"/>
+        <location filename="../model/src/commands.cpp" line="229"/>
         <source>Rename Object</source>
         <translation>Renommer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="253"/>
+        <location filename="../model/src/commands.cpp" line="254"/>
         <source>Reorder Object</source>
         <translation>Réordonner l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="284"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Show Object</source>
         <translation>Afficher l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="284"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Hide Object</source>
         <translation>Masquer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Lock Object</source>
         <translation>Verrouiller l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Unlock Object</source>
         <translation>Déverrouiller l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="319"/>
+        <location filename="../model/src/commands.cpp" line="320"/>
         <source>Insert Frame</source>
         <translation>Insérer une image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="323"/>
+        <location filename="../model/src/commands.cpp" line="324"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="342"/>
+        <location filename="../model/src/commands.cpp" line="343"/>
         <source>Duplicate Frame</source>
         <translation>Dupliquer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="387"/>
+        <location filename="../model/src/commands.cpp" line="391"/>
         <source>Delete Frame</source>
         <translation>Supprimer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="413"/>
+        <location filename="../model/src/commands.cpp" line="417"/>
         <source>Move Frame</source>
         <translation>Déplacer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="436"/>
+        <location filename="../model/src/commands.cpp" line="440"/>
         <source>Change Frame Exposure</source>
         <translation>Modifier l&apos;exposition de l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="474"/>
+        <location filename="../model/src/commands.cpp" line="478"/>
         <source>Change Document Settings</source>
         <translation>Modifier les paramètres du document</translation>
     </message>
@@ -139,7 +139,7 @@
         <translation>Retirer l&apos;armature</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="31"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="36"/>
         <source>Generate In-betweens</source>
         <translation>Générer des intervalles</translation>
     </message>
@@ -150,6 +150,7 @@
     </message>
     <message>
         <location filename="../model/src/rig/rig_commands.cpp" line="113"/>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Appliquer la pose au dessin</translation>
     </message>
@@ -164,44 +165,64 @@
         <translation>Modifier les réglages du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="114"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="117"/>
         <source>Pose Bones</source>
         <translation>Poser les os</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="123"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="126"/>
         <source>Change Skinning</source>
         <translation>Modifier l&apos;habillage</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="143"/>
         <source>Lock Joint</source>
         <translation>Verrouiller l’articulation</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="143"/>
         <source>Unlock Joint</source>
         <translation>Déverrouiller l’articulation</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="167"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="170"/>
         <source>Reset Bone Pose</source>
         <translation>Réinitialiser la pose de l’os</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="179"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="182"/>
         <source>Move Joint</source>
         <translation>Déplacer l’articulation</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="202"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="205"/>
         <source>Insert Joint</source>
         <translation>Insérer une articulation</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="215"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="218"/>
         <source>Delete Joint</source>
         <translation>Supprimer l’articulation</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="106"/>
+        <source>Join Part</source>
+        <translation>Joindre la partie</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="130"/>
+        <source>Detach Part</source>
+        <translation>Détacher la partie</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="135"/>
+        <source>Join Overlapping Parts</source>
+        <translation>Joindre les parties qui se chevauchent</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="166"/>
+        <source>Make Character Root</source>
+        <translation>Faire la racine du personnage</translation>
     </message>
 </context>
 <context>
@@ -374,27 +395,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="73"/>
+        <location filename="../model/src/deform_setup.cpp" line="76"/>
         <source>The object has no strokes to deform.</source>
         <translation>L&apos;objet n&apos;a aucun trait à déformer.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="78"/>
+        <location filename="../model/src/deform_setup.cpp" line="81"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Impossible de mailler ce dessin pour le déformer&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="110"/>
+        <location filename="../model/src/deform_setup.cpp" line="113"/>
         <source>Cancelled.</source>
         <translation>Annulé.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="154"/>
+        <location filename="../model/src/deform_setup.cpp" line="157"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>La cage a changé pendant sa préparation.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="162"/>
+        <location filename="../model/src/deform_setup.cpp" line="165"/>
         <source>The object has no mesh to deform.</source>
         <translation>L&apos;objet n&apos;a pas de maillage à déformer.</translation>
     </message>
@@ -409,7 +430,7 @@
         <translation>Le calcul de la déformation par les épingles a échoué&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="182"/>
+        <location filename="../model/src/deform_setup.cpp" line="185"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>La déformation a produit des points invalides&#xa0;; elle n&apos;a pas été appliquée.</translation>
     </message>
@@ -453,75 +474,79 @@
         <translation>Aucune cage ne convient à ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="55"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="40"/>
         <source>No skeleton can be built for this drawing: %1</source>
         <translation>Impossible de construire un squelette pour ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="52"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>L&apos;objet n&apos;a aucun trait dans lequel construire un squelette.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="81"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="90"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="66"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="75"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Impossible de construire un squelette pour ce dessin.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="26"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="89"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="131"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="19"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="27"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="90"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="156"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="177"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="21"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="65"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>Le squelette est endommagé&#xa0;; reconstruisez-le.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="28"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="29"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>Réinitialisez la pose ou appliquez-la au dessin avant de modifier les articulations.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="30"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="31"/>
         <source>There is no such joint.</source>
         <translation>Cette articulation n’existe pas.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="47"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="61"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="48"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="62"/>
         <source>A joint cannot go there.</source>
         <translation>Une articulation ne peut pas aller là.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="59"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="60"/>
         <source>A joint can only be inserted on a bone.</source>
         <translation>Une articulation ne peut être insérée que sur un os.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="66"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="67"/>
         <source>The bone is too short to split.</source>
         <translation>L’os est trop court pour être divisé.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="98"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="99"/>
         <source>A skeleton needs at least one bone.</source>
         <translation>Un squelette a besoin d’au moins un os.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="30"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="32"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="55"/>
         <source>The skeleton cannot be used: %1</source>
         <translation>Impossible d&apos;utiliser le squelette&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="57"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="63"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="121"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="127"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>Le squelette ne peut pas habiller ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="75"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="80"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="86"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="71"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="143"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="149"/>
         <source>The bones could not be posed: %1</source>
         <translation>Impossible de poser les os&#xa0;: %1</translation>
     </message>
@@ -1126,262 +1151,277 @@
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
         <source>the frame list</source>
         <translation>la liste des images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
         <source>a frame</source>
         <translation>une image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
         <source>%1; the frame is left out</source>
         <translation>%1&#xa0;; l&apos;image est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
         <source>a frame id</source>
         <translation>un identifiant d&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>the frame</source>
         <translation>l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>a frame hold</source>
         <translation>une durée d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>the object list</source>
         <translation>la liste des objets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
         <source>an object</source>
         <translation>un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
         <source>%1; the object is left out</source>
         <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
     </message>
     <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="111"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
         <source>a chunk header</source>
         <translation>un en-tête de bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
         <source>a chunk</source>
         <translation>un bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
         <source>chunk</source>
         <translation>bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
         <source>an object id</source>
         <translation>un identifiant d&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
         <source>the object</source>
         <translation>l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>the object flags</source>
         <translation>les attributs de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>the mesh density</source>
         <translation>la densité du maillage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
         <source>the object name</source>
         <translation>le nom de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="168"/>
         <source>the stroke list</source>
         <translation>la liste des traits</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="175"/>
         <source>a stroke id</source>
         <translation>un identifiant de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
         <source>the stroke</source>
         <translation>le trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
         <source>a stroke reference</source>
         <translation>une référence de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="39"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
         <source>an unknown chunk is left out</source>
         <translation>un bloc inconnu est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="223"/>
         <source>%1; the chunk is left out</source>
         <translation>%1&#xa0;; le bloc est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="251"/>
+        <source>the skeleton&apos;s join</source>
+        <translation>la jonction du squelette</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <source>a join comes without a skeleton</source>
+        <translation>une jonction est présente sans squelette</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="261"/>
+        <source>the skeleton&apos;s join is damaged</source>
+        <translation>la jonction du squelette est endommagée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
         <source>the pin list</source>
         <translation>la liste des épingles</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="279"/>
         <source>a pin id</source>
         <translation>un identifiant d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>pin %1</source>
         <translation>l&apos;épingle %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
         <source>a pin position</source>
         <translation>une position d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>pin %1 has a non-finite position</source>
         <translation>l&apos;épingle %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
         <source>the cage corner list</source>
         <translation>la liste des coins de la cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>la cage a moins de 3 coins</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="306"/>
         <source>a cage corner</source>
         <translation>un coin de cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>le coin de cage %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
         <source>a pose reference</source>
         <translation>une référence de pose</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
         <source>its pose: %1</source>
         <translation>sa pose&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="328"/>
         <source>its pose has %1 strokes but the object has %2</source>
         <translation>sa pose a %1 traits, mais l&apos;objet en a %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
         <source>stroke %1 has %2 points but its pose has %3</source>
         <translation>le trait %1 a %2 points, mais sa pose en a %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
         <source>%1 has no id</source>
         <translation>%1 n&apos;a pas d&apos;identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="356"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
@@ -1586,47 +1626,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="85"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="86"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="88"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="89"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="91"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="92"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="113"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="114"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="152"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="153"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="173"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="174"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="221"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="222"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="297"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="298"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="304"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="305"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -1647,74 +1687,124 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="32"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="38"/>
         <source>Bone</source>
         <translation>Os</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="48"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="189"/>
         <source>Build Skeleton</source>
         <translation>Construire le squelette</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="50"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>L&apos;objet est posé avec un autre déformateur. Construire un squelette abandonne cette pose. Le construire quand même&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="235"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="207"/>
+        <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
+        <translation>Joint à %1. Faites glisser sa racine avec Maj pour le joindre ailleurs ; clic droit dessus pour le détacher.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Cliquez sur un dessin visible et déverrouillé pour lui donner un squelette.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="242"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="275"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>Faites glisser une articulation pour la déplacer, cliquez sur un os pour insérer une articulation ; clic droit sur une articulation pour la supprimer.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="245"/>
-        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
-        <translation>Faites glisser un os pour le faire pivoter, une articulation pour la tirer, la racine pour déplacer l&apos;objet&#xa0;; Alt+clic sur une articulation pour la verrouiller.</translation>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="278"/>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
+        <translation>Faites glisser un os pour le tourner, une articulation pour la tirer, la racine pour déplacer l’objet ; Alt-clic sur une articulation la verrouille ; faites glisser la racine avec Maj sur une autre partie pour les joindre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="80"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="375"/>
+        <source>Drop the root on a bone of another part to join them.</source>
+        <translation>Déposez la racine sur un os d’une autre partie pour les joindre.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="383"/>
+        <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
+        <translation>%1 est déjà suspendu à cette partie ; elle ne peut donc pas être suspendue à lui en retour.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="85"/>
         <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
         <translation>Modifier les articulations : faites glisser une articulation pour la déplacer, cliquez sur un os pour insérer une articulation.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="95"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="100"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>Réinitialisez la pose ou appliquez-la au dessin avant de modifier les articulations.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
         <source>Unlock Joint</source>
         <translation>Déverrouiller l’articulation</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
         <source>Lock Joint</source>
         <translation>Verrouiller l’articulation</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="159"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="164"/>
         <source>Reset Bone Pose</source>
         <translation>Réinitialiser la pose de l’os</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
         <source>Edit Joints</source>
         <translation>Modifier les articulations</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="172"/>
         <source>Insert Joint Here</source>
         <translation>Insérer une articulation ici</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="169"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="174"/>
         <source>Delete Joint</source>
         <translation>Supprimer l’articulation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="178"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="230"/>
+        <source>Make Root Joint</source>
+        <translation>Faire l’articulation racine</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="187"/>
+        <source>Detach from %1</source>
+        <translation>Détacher de %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="190"/>
+        <source>Make Character Root</source>
+        <translation>Faire la racine du personnage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
+        <source>Join Overlapping Parts</source>
+        <translation>Joindre les parties qui se chevauchent</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="242"/>
+        <source>No part overlaps another part&apos;s skeleton.</source>
+        <translation>Aucune partie ne chevauche le squelette d’une autre partie.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="246"/>
+        <source>Joined %n part(s).</source>
+        <translation>
+            <numerusform>%n partie jointe.</numerusform>
+            <numerusform>%n parties jointes.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1827,72 +1917,72 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="21"/>
+        <location filename="../ui/src/deform_actions.cpp" line="22"/>
         <source>&amp;Reset Pose</source>
         <translation>&amp;Réinitialiser la pose</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="25"/>
+        <location filename="../ui/src/deform_actions.cpp" line="26"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>&amp;Appliquer la pose au dessin</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="24"/>
+        <location filename="../ui/src/deform_actions.cpp" line="25"/>
         <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
         <translation>Ramener les épingles, les coins de cage ou les os de l&apos;objet courant à leur position de repos</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="27"/>
+        <location filename="../ui/src/deform_actions.cpp" line="28"/>
         <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
         <translation>Faire du dessin posé les nouveaux traits de l&apos;objet&#xa0;; les épingles, la cage ou le squelette restent en place</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="29"/>
+        <location filename="../ui/src/deform_actions.cpp" line="30"/>
         <source>Remo&amp;ve Rig</source>
         <translation>Re&amp;tirer l&apos;armature</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="31"/>
+        <location filename="../ui/src/deform_actions.cpp" line="33"/>
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>Retirer les épingles, la cage ou le squelette de l&apos;objet courant</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="49"/>
+        <location filename="../ui/src/deform_actions.cpp" line="51"/>
         <source>Preparing the deformation…</source>
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="59"/>
+        <location filename="../ui/src/deform_actions.cpp" line="61"/>
         <source>R&amp;igidity</source>
         <translation>R&amp;igidité</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="73"/>
+        <location filename="../ui/src/deform_actions.cpp" line="75"/>
         <source>Converged (Most Rigid)</source>
         <translation>Convergence (rigidité maximale)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="74"/>
+        <location filename="../ui/src/deform_actions.cpp" line="76"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Comme dans l&apos;article (deux étapes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="75"/>
+        <location filename="../ui/src/deform_actions.cpp" line="77"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Plus rigide (+1 passe)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="76"/>
+        <location filename="../ui/src/deform_actions.cpp" line="78"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Le plus rigide (+3 passes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="108"/>
+        <location filename="../ui/src/deform_actions.cpp" line="110"/>
         <source>Mesh density </source>
         <translation>Densité du maillage </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="109"/>
+        <location filename="../ui/src/deform_actions.cpp" line="111"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Finesse du maillage de déformation de l&apos;objet courant (1 = par défaut)</translation>
     </message>
@@ -2335,32 +2425,32 @@
         <translation>%1&#xa0;: maintenu depuis la première clé (ses épingles, sa cage ou son squelette diffèrent entre les clés)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="123"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1&#xa0;: seulement dans la première clé, maintenu pendant la première moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="124"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="125"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1&#xa0;: seulement dans la seconde clé, maintenu pendant la seconde moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
         <source>Select two different frames as keys.</source>
         <translation>Sélectionnez deux images différentes comme clés.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="147"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="148"/>
         <source>The preview could not be posed: %1</source>
         <translation>Impossible de poser l&apos;aperçu&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="152"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Aucun objet n&apos;a d&apos;épingles ou de cage correspondantes dans les deux clés&#xa0;: les intervalles ne feront que maintenir les dessins.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="153"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="154"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Le canevas montre l&apos;intervalle du milieu.</translation>
     </message>
@@ -2838,27 +2928,27 @@
         <translation>Avec l’outil Os, déplacer, insérer et supprimer les articulations d’un squelette sans pose au lieu de le poser</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="55"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="56"/>
         <source>Show S&amp;keleton</source>
         <translation>Afficher le &amp;squelette</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="61"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="62"/>
         <source>Skeleton</source>
         <translation>Squelette</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="69"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="70"/>
         <source>S&amp;kinning</source>
         <translation>&amp;Habillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="76"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="77"/>
         <source>&amp;Rigid (Bones Pin the Mesh)</source>
         <translation>&amp;Rigide (les os épinglent le maillage)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="78"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="79"/>
         <source>&amp;Linear Blend</source>
         <translation>Mélange &amp;linéaire</translation>
     </message>

@@ -4,92 +4,92 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="21"/>
+        <location filename="../model/src/commands.cpp" line="22"/>
         <source>Draw Stroke</source>
         <translation>ストロークを描画</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="45"/>
+        <location filename="../model/src/commands.cpp" line="46"/>
         <source>Erase Stroke</source>
         <translation>ストロークを消去</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="74"/>
+        <location filename="../model/src/commands.cpp" line="75"/>
         <source>Move Strokes to Object</source>
         <translation>ストロークをオブジェクトへ移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="171"/>
+        <location filename="../model/src/commands.cpp" line="172"/>
         <source>New Object</source>
         <translation>新規オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="199"/>
+        <location filename="../model/src/commands.cpp" line="200"/>
         <source>Delete Object</source>
         <translation>オブジェクトを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="228"/>
+        <location filename="../model/src/commands.cpp" line="229"/>
         <source>Rename Object</source>
         <translation>オブジェクト名を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="253"/>
+        <location filename="../model/src/commands.cpp" line="254"/>
         <source>Reorder Object</source>
         <translation>オブジェクトの順序を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="284"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Show Object</source>
         <translation>オブジェクトを表示</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="284"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Hide Object</source>
         <translation>オブジェクトを非表示</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Lock Object</source>
         <translation>オブジェクトをロック</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Unlock Object</source>
         <translation>オブジェクトのロックを解除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="319"/>
+        <location filename="../model/src/commands.cpp" line="320"/>
         <source>Insert Frame</source>
         <translation>フレームを挿入</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="323"/>
+        <location filename="../model/src/commands.cpp" line="324"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="342"/>
+        <location filename="../model/src/commands.cpp" line="343"/>
         <source>Duplicate Frame</source>
         <translation>フレームを複製</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="387"/>
+        <location filename="../model/src/commands.cpp" line="391"/>
         <source>Delete Frame</source>
         <translation>フレームを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="413"/>
+        <location filename="../model/src/commands.cpp" line="417"/>
         <source>Move Frame</source>
         <translation>フレームを移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="436"/>
+        <location filename="../model/src/commands.cpp" line="440"/>
         <source>Change Frame Exposure</source>
         <translation>フレームの表示時間を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="474"/>
+        <location filename="../model/src/commands.cpp" line="478"/>
         <source>Change Document Settings</source>
         <translation>ドキュメント設定を変更</translation>
     </message>
@@ -139,7 +139,7 @@
         <translation>リグを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="31"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="36"/>
         <source>Generate In-betweens</source>
         <translation>中割りを生成</translation>
     </message>
@@ -150,6 +150,7 @@
     </message>
     <message>
         <location filename="../model/src/rig/rig_commands.cpp" line="113"/>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>ポーズを絵に適用</translation>
     </message>
@@ -164,44 +165,64 @@
         <translation>スケルトンの設定を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="114"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="117"/>
         <source>Pose Bones</source>
         <translation>ボーンのポーズを変更</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="123"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="126"/>
         <source>Change Skinning</source>
         <translation>スキニングを変更</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="143"/>
         <source>Lock Joint</source>
         <translation>関節をロック</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="140"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="143"/>
         <source>Unlock Joint</source>
         <translation>関節のロックを解除</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="167"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="170"/>
         <source>Reset Bone Pose</source>
         <translation>ボーンのポーズをリセット</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="179"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="182"/>
         <source>Move Joint</source>
         <translation>関節を移動</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="202"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="205"/>
         <source>Insert Joint</source>
         <translation>関節を挿入</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="215"/>
+        <location filename="../model/src/skeleton/skeleton_commands.cpp" line="218"/>
         <source>Delete Joint</source>
         <translation>関節を削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="106"/>
+        <source>Join Part</source>
+        <translation>パーツを接続</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="130"/>
+        <source>Detach Part</source>
+        <translation>パーツを切り離す</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="135"/>
+        <source>Join Overlapping Parts</source>
+        <translation>重なるパーツを接続</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="166"/>
+        <source>Make Character Root</source>
+        <translation>キャラクターのルートにする</translation>
     </message>
 </context>
 <context>
@@ -374,27 +395,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="73"/>
+        <location filename="../model/src/deform_setup.cpp" line="76"/>
         <source>The object has no strokes to deform.</source>
         <translation>このオブジェクトには変形できるストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="78"/>
+        <location filename="../model/src/deform_setup.cpp" line="81"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>この絵から変形用のメッシュを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="110"/>
+        <location filename="../model/src/deform_setup.cpp" line="113"/>
         <source>Cancelled.</source>
         <translation>キャンセルしました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="154"/>
+        <location filename="../model/src/deform_setup.cpp" line="157"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>準備中にケージが変更されました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="162"/>
+        <location filename="../model/src/deform_setup.cpp" line="165"/>
         <source>The object has no mesh to deform.</source>
         <translation>このオブジェクトには変形できるメッシュがありません。</translation>
     </message>
@@ -409,7 +430,7 @@
         <translation>ピンによる変形を計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="182"/>
+        <location filename="../model/src/deform_setup.cpp" line="185"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>変形によって無効な点が生じたため、適用しませんでした。</translation>
     </message>
@@ -452,75 +473,79 @@
         <translation>この絵に合うケージがありません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="55"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="40"/>
         <source>No skeleton can be built for this drawing: %1</source>
         <translation>この絵にはスケルトンを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="52"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>このオブジェクトにはスケルトンを作成するためのストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="81"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="90"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="66"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="75"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>この絵にはスケルトンを作成できません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="26"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="89"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="131"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="19"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="27"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="90"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="156"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="177"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="21"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="65"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>スケルトンが破損しています。作成し直してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="28"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="29"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>関節を編集する前に、ポーズをリセットするか絵に適用してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="30"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="31"/>
         <source>There is no such joint.</source>
         <translation>その関節はありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="47"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="61"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="48"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="62"/>
         <source>A joint cannot go there.</source>
         <translation>そこには関節を置けません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="59"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="60"/>
         <source>A joint can only be inserted on a bone.</source>
         <translation>関節はボーンの上にだけ挿入できます。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="66"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="67"/>
         <source>The bone is too short to split.</source>
         <translation>ボーンが短すぎて分割できません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="98"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="99"/>
         <source>A skeleton needs at least one bone.</source>
         <translation>スケルトンには少なくとも 1 本のボーンが必要です。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="30"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="32"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="55"/>
         <source>The skeleton cannot be used: %1</source>
         <translation>スケルトンを使用できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="57"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="63"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="121"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="127"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>このスケルトンではこの絵をスキニングできません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="75"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="80"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="86"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="71"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="143"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="149"/>
         <source>The bones could not be posed: %1</source>
         <translation>ボーンのポーズを計算できませんでした: %1</translation>
     </message>
@@ -1125,262 +1150,277 @@
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
         <source>the frame list</source>
         <translation>フレーム一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
         <source>a frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>フレームが途中で切れているため、以降のフレームとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
         <source>%1; the frame is left out</source>
         <translation>%1。このフレームは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
         <source>a frame id</source>
         <translation>フレーム ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>the frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>a frame hold</source>
         <translation>フレームの表示時間</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>表示時間 %1 が 1～%2 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>the object list</source>
         <translation>オブジェクト一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
         <source>an object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>オブジェクトが途中で切れているため、以降のオブジェクトとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
         <source>%1; the object is left out</source>
         <translation>%1。このオブジェクトは除外しました</translation>
     </message>
     <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="111"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
         <source>a chunk header</source>
         <translation>チャンクヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
         <source>a chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
         <source>chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
         <source>an object id</source>
         <translation>オブジェクト ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
         <source>the object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>the object flags</source>
         <translation>オブジェクトのフラグ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>オブジェクトのフラグ 0x%1 は不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>the mesh density</source>
         <translation>メッシュ密度</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>メッシュ密度 %1 が 0～1000 の数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
         <source>the object name</source>
         <translation>オブジェクト名</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>オブジェクト名が %1 バイトあります（最大 %2 バイト）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>オブジェクト名が有効な UTF-8 テキストではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="168"/>
         <source>the stroke list</source>
         <translation>ストローク一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="175"/>
         <source>a stroke id</source>
         <translation>ストローク ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
         <source>the stroke</source>
         <translation>ストローク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
         <source>a stroke reference</source>
         <translation>ストロークの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="39"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 には %2 個の項目があるはずですが、収まっている %3 個を読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>ストロークデータ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
         <source>an unknown chunk is left out</source>
         <translation>不明なチャンクを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>チャンク %1 が 2 回、または別のリグと一緒に現れます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="223"/>
         <source>%1; the chunk is left out</source>
         <translation>%1。このチャンクは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="251"/>
+        <source>the skeleton&apos;s join</source>
+        <translation>スケルトンの接続</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <source>a join comes without a skeleton</source>
+        <translation>スケルトンのない接続があります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="261"/>
+        <source>the skeleton&apos;s join is damaged</source>
+        <translation>スケルトンの接続が壊れています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
         <source>the pin list</source>
         <translation>ピン一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="279"/>
         <source>a pin id</source>
         <translation>ピン ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>pin %1</source>
         <translation>ピン %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
         <source>a pin position</source>
         <translation>ピンの位置</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>pin %1 has a non-finite position</source>
         <translation>ピン %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
         <source>the cage corner list</source>
         <translation>ケージの頂点一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>ケージの頂点が 3 個未満です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="306"/>
         <source>a cage corner</source>
         <translation>ケージの頂点</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>ケージの頂点 %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
         <source>a pose reference</source>
         <translation>ポーズの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>ポーズがポーズ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
         <source>its pose: %1</source>
         <translation>ポーズ: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="328"/>
         <source>its pose has %1 strokes but the object has %2</source>
         <translation>ポーズのストローク数は %1 ですが、オブジェクトのストローク数は %2 です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
         <source>stroke %1 has %2 points but its pose has %3</source>
         <translation>ストローク %1 の点の数は %2 ですが、ポーズでは %3 です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
         <source>%1 has no id</source>
         <translation>%1 に ID がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 の ID %2 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="356"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
@@ -1582,47 +1622,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="85"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="86"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="88"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="89"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="91"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="92"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="113"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="114"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="152"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="153"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="173"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="174"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="221"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="222"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="297"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="298"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="304"/>
+        <location filename="../ui/src/stroke_editing.cpp" line="305"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -1643,74 +1683,123 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="32"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="38"/>
         <source>Bone</source>
         <translation>ボーン</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="48"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="189"/>
         <source>Build Skeleton</source>
         <translation>スケルトンを作成</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="50"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>このオブジェクトには別の変形方法によるポーズが付いています。スケルトンを作成すると、そのポーズは破棄されます。作成しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="235"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="207"/>
+        <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
+        <translation>%1 に接続しました。ルートを Shift キーを押しながらドラッグすると別の場所に接続し、右クリックで切り離します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>表示されていてロックされていない絵をクリックすると、スケルトンを作成できます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="242"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="275"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>関節をドラッグで移動、ボーンをクリックで関節を挿入、関節を右クリックで削除します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="245"/>
-        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it.</source>
-        <translation>ボーンをドラッグすると回転、ジョイントをドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。Alt キーを押しながらジョイントをクリックするとロックします。</translation>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="278"/>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
+        <translation>ボーンをドラッグすると回転、関節をドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。Alt クリックで関節をロックします。ルートを Shift キーを押しながら別のパーツへドラッグすると接続します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="80"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="375"/>
+        <source>Drop the root on a bone of another part to join them.</source>
+        <translation>ルートを別のパーツのボーンにドロップすると接続します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="383"/>
+        <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
+        <translation>%1 はすでにこのパーツにぶら下がっているため、逆にぶら下げることはできません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="85"/>
         <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
         <translation>関節を編集：関節をドラッグで移動、ボーンをクリックで関節を挿入します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="95"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="100"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>関節を編集する前に、ポーズをリセットするか絵に適用してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
         <source>Unlock Joint</source>
         <translation>関節のロックを解除</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="157"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
         <source>Lock Joint</source>
         <translation>関節をロック</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="159"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="164"/>
         <source>Reset Bone Pose</source>
         <translation>ボーンのポーズをリセット</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
         <source>Edit Joints</source>
         <translation>関節を編集</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="172"/>
         <source>Insert Joint Here</source>
         <translation>ここに関節を挿入</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="169"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="174"/>
         <source>Delete Joint</source>
         <translation>関節を削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="178"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="230"/>
+        <source>Make Root Joint</source>
+        <translation>ルート関節にする</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="187"/>
+        <source>Detach from %1</source>
+        <translation>%1 から切り離す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="190"/>
+        <source>Make Character Root</source>
+        <translation>キャラクターのルートにする</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
+        <source>Join Overlapping Parts</source>
+        <translation>重なるパーツを接続</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="242"/>
+        <source>No part overlaps another part&apos;s skeleton.</source>
+        <translation>他のパーツのスケルトンに重なるパーツはありません。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="246"/>
+        <source>Joined %n part(s).</source>
+        <translation>
+            <numerusform>%n 個のパーツを接続しました。</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1823,72 +1912,72 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="21"/>
+        <location filename="../ui/src/deform_actions.cpp" line="22"/>
         <source>&amp;Reset Pose</source>
         <translation>ポーズをリセット(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="25"/>
+        <location filename="../ui/src/deform_actions.cpp" line="26"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>ポーズを絵に適用(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="24"/>
+        <location filename="../ui/src/deform_actions.cpp" line="25"/>
         <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
         <translation>現在のオブジェクトのピン、ケージの頂点、またはボーンを元の位置に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="27"/>
+        <location filename="../ui/src/deform_actions.cpp" line="28"/>
         <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
         <translation>ポーズを付けた絵をオブジェクトの新しいストロークにする（ピン、ケージ、スケルトンはその位置のまま）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="29"/>
+        <location filename="../ui/src/deform_actions.cpp" line="30"/>
         <source>Remo&amp;ve Rig</source>
         <translation>リグを削除(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="31"/>
+        <location filename="../ui/src/deform_actions.cpp" line="33"/>
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>現在のオブジェクトからピン、ケージ、またはスケルトンを外す</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="49"/>
+        <location filename="../ui/src/deform_actions.cpp" line="51"/>
         <source>Preparing the deformation…</source>
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="59"/>
+        <location filename="../ui/src/deform_actions.cpp" line="61"/>
         <source>R&amp;igidity</source>
         <translation>剛性(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="73"/>
+        <location filename="../ui/src/deform_actions.cpp" line="75"/>
         <source>Converged (Most Rigid)</source>
         <translation>収束まで（最も硬く）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="74"/>
+        <location filename="../ui/src/deform_actions.cpp" line="76"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>論文どおり（2 段階）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="75"/>
+        <location filename="../ui/src/deform_actions.cpp" line="77"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>より硬く（+1 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="76"/>
+        <location filename="../ui/src/deform_actions.cpp" line="78"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>最も硬く（+3 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="108"/>
+        <location filename="../ui/src/deform_actions.cpp" line="110"/>
         <source>Mesh density </source>
         <translation>メッシュ密度 </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="109"/>
+        <location filename="../ui/src/deform_actions.cpp" line="111"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>現在のオブジェクトの変形メッシュの細かさ（1 = 標準）</translation>
     </message>
@@ -2329,32 +2418,32 @@
         <translation>%1: 最初のキーを保持（キーの間でピン、ケージ、またはスケルトンが異なります）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="123"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: 最初のキーにのみ存在、前半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="124"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="125"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: 2 番目のキーにのみ存在、後半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
         <source>Select two different frames as keys.</source>
         <translation>キーとして異なる 2 つのフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="147"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="148"/>
         <source>The preview could not be posed: %1</source>
         <translation>プレビューのポーズを計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="152"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>両方のキーで一致するピンまたはケージを持つオブジェクトがありません。中割りでは絵が保持されるだけです。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="153"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="154"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>キャンバスには中央の中割りが表示されています。</translation>
     </message>
@@ -2830,27 +2919,27 @@
         <translation>ボーンツールで、ポーズを付ける代わりに、ポーズのないスケルトンの関節を移動・挿入・削除します</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="55"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="56"/>
         <source>Show S&amp;keleton</source>
         <translation>スケルトンを表示(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="61"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="62"/>
         <source>Skeleton</source>
         <translation>スケルトン</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="69"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="70"/>
         <source>S&amp;kinning</source>
         <translation>スキニング(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="76"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="77"/>
         <source>&amp;Rigid (Bones Pin the Mesh)</source>
         <translation>剛体（ボーンがメッシュを固定）(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="78"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="79"/>
         <source>&amp;Linear Blend</source>
         <translation>線形ブレンド(&amp;L)</translation>
     </message>

@@ -2,6 +2,7 @@
 
 #include <finbook/model/cage/cage_commands.h>
 #include <finbook/model/pins/pin_commands.h>
+#include <finbook/model/skeleton/skeleton_join_commands.h>
 #include <finbook/ui/deform_actions.h>
 #include <finbook/ui/editor_state.h>
 
@@ -37,7 +38,7 @@ DeformActions::DeformActions(EditorState *state, QObject *parent)
     });
     connect(m_bake, &QAction::triggered, this, [this, doc] {
         m_controller.settle(); // what becomes the drawing is the converged pose
-        doc->undoStack()->push(new model::ApplyPoseCommand(doc, m_state->currentGroupId()));
+        doc->undoStack()->push(model::makeApplyPoseCommand(doc, m_state->currentGroupId()));
     });
     connect(m_removePins, &QAction::triggered, this, [this, doc] {
         const model::StrokeGroup *g = m_state->currentGroup();

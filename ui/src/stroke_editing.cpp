@@ -3,6 +3,7 @@
 #include <finbook/model/commands.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
+#include <finbook/model/skeleton/skeleton_join_commands.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/skeleton/skeleton_follow.h>
 #include <finbook/ui/stroke_editing.h>
@@ -138,7 +139,7 @@ bool StrokeEditing::applyPoses(model::Document *doc, const std::vector<model::Id
     bool applied = false;
     for (model::Id id : groupIds)
         if (isPosed(doc, id)) {
-            doc->undoStack()->push(new model::ApplyPoseCommand(doc, id));
+            doc->undoStack()->push(model::makeApplyPoseCommand(doc, id));
             applied = true;
         }
     return applied;

@@ -43,6 +43,8 @@ void followDrawing(EditorState &state, const std::vector<model::Id> &groupIds)
         if (!rebuilt)
             continue; // e.g. a single dot: keep the bones the drawing had
         rebuilt->mode = old.mode;
+        rebuilt->join = old.join; // a part stays joined to its character
+        rebuilt->anchor = old.anchor;
         doc->undoStack()->push(new model::BuildSkeletonCommand(doc, id, std::move(*rebuilt)));
     }
 }

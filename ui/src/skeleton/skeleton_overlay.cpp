@@ -16,6 +16,18 @@ void paintSkeleton(QPainter &painter, const QTransform &canvasToWidget,
     const QColor bone = look.current ? QColor(240, 140, 20) : QColor(130, 130, 130);
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing);
+    const bool hangs = skeleton.hangs();
+    if (hangs) { // the join: a dashed link from the part's root to where it hangs
+        const QPointF root = canvasToWidget.map(joints[std::size_t(skeleton.root)]);
+        const QPointF at = canvasToWidget.map(skeleton.anchor.motion.map(skeleton.join.parentAt));
+        painter.setPen(QPen(QColor(255, 255, 255, 200), 4, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(root, at);
+        painter.setPen(QPen(QColor(40, 150, 90), 2, Qt::DashLine, Qt::RoundCap));
+        painter.drawLine(root, at);
+        painter.setBrush(QColor(40, 150, 90));
+        painter.setPen(QPen(Qt::white, 1.2));
+        painter.drawEllipse(at, 3.5, 3.5);
+    }
     for (std::size_t j = 0; j < joints.size(); ++j) {
         const int p = skeleton.parent[j];
         if (p < 0)
@@ -50,7 +62,12 @@ void paintSkeleton(QPainter &painter, const QTransform &canvasToWidget,
         }
         painter.setPen(QPen(Qt::white, 1.5));
         painter.setBrush(locked ? QColor(200, 30, 30) : bone.darker(120));
-        if (int(j) == skeleton.root) // the root: a square
+        if (int(j) == skeleton.root && hangs) { // a joined part's root: a green diamond
+            painter.setBrush(locked ? QColor(200, 30, 30) : QColor(40, 150, 90));
+            const QPointF d[4] = {at + QPointF(0, -6), at + QPointF(6, 0), at + QPointF(0, 6),
+                                  at + QPointF(-6, 0)};
+            painter.drawPolygon(d, 4);
+        } else if (int(j) == skeleton.root) // a character's root: a square
             painter.drawRect(QRectF(at - QPointF(5, 5), QSizeF(10, 10)));
         else
             painter.drawEllipse(at, 4, 4);

@@ -3,6 +3,7 @@
 #include <finbook/geometry/silhouette.h>
 #include <finbook/model/render.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/model/skeleton/skeleton_join_commands.h>
 #include <finbook/model/skeleton/skeleton_setup.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/editor_state.h>
@@ -185,8 +186,27 @@ void BoneTool::build(model::Id groupId)
         return;
     }
     state()->setCurrentGroupId(groupId);
+    doc->undoStack()->beginMacro(tr("Build Skeleton"));
     doc->undoStack()->push(new model::BuildSkeletonCommand(doc, groupId, std::move(*rig)));
+    joinIfOverlapping(groupId);
+    doc->undoStack()->endMacro();
     m_controller->prepare(groupId);
+}
+
+void BoneTool::joinIfOverlapping(model::Id groupId)
+{
+    model::Document *doc = state()->document();
+    const model::GroupLocation at = doc->locateGroup(groupId);
+    if (!at.isValid())
+        return;
+    const auto join = model::proposeJoin(doc->frameAt(at.frame), groupId);
+    if (!join)
+        return;
+    doc->undoStack()->push(new model::JoinPartCommand(doc, groupId, *join));
+    if (const model::StrokeGroup *parent = doc->group(join->parent))
+        canvas()->postMessage(tr("Joined to %1. Shift-drag its root to join it elsewhere; "
+                                 "right-click it to detach it.")
+                                  .arg(parent->name));
 }
 
 bool BoneTool::startDrag(const Hit &hit, QPointF at)
@@ -203,7 +223,8 @@ bool BoneTool::startDrag(const Hit &hit, QPointF at)
     m_drag.joint = hit.joint;
     m_drag.skeleton = std::move(*skeleton);
     m_drag.start = model::skeletonPose(g->rig.skeleton);
-    m_drag.grabbed = at;
+    m_drag.anchor = g->rig.skeleton.hangs() ? g->rig.skeleton.anchor.motion : model::RigidMotion{};
+    m_drag.grabbed = m_drag.anchor.unmap(at);
     const bool root = g->rig.skeleton.parent[std::size_t(hit.joint)] < 0;
     m_drag.kind = hit.part == Part::Bone ? DragKind::Bone : root ? DragKind::Root : DragKind::Joint;
     ++m_dragSerial;
@@ -227,6 +248,17 @@ void BoneTool::press(const ToolEvent &event)
         toggleLock(hit);
         return;
     }
+    if (hit.part == Part::Joint && (event.modifiers & Qt::ShiftModifier)) {
+        const model::StrokeGroup *g = state()->document()->group(hit.groupId);
+        if (g && g->rig.skeleton.parent[std::size_t(hit.joint)] < 0) {
+            state()->setCurrentGroupId(hit.groupId);
+            m_drag.groupId = hit.groupId;
+            m_drag.joint = hit.joint;
+            m_drag.kind = DragKind::Attach;
+            m_drag.cursor = event.pos;
+            return;
+        }
+    }
     if (hit.part != Part::None) {
         startDrag(hit, event.pos);
         return;
@@ -244,7 +276,8 @@ void BoneTool::press(const ToolEvent &event)
                                  "right-click a joint to delete it."));
     else
         canvas()->postMessage(tr("Drag a bone to turn it, a joint to pull it, the root to move "
-                                 "the object; Alt-click a joint to lock it."));
+                                 "the object; Alt-click a joint to lock it; Shift-drag the "
+                                 "root onto another part to join them."));
 }
 
 void BoneTool::move(const ToolEvent &event)
@@ -252,6 +285,11 @@ void BoneTool::move(const ToolEvent &event)
     if (m_drag.kind == DragKind::None || event.pos == m_pressPos)
         return;
     model::Document *doc = state()->document();
+    if (m_drag.kind == DragKind::Attach) {
+        m_drag.cursor = event.pos;
+        canvas()->update();
+        return;
+    }
     if (m_drag.kind == DragKind::MoveJoint) {
         push(new model::MoveJointCommand(doc, m_drag.groupId, m_drag.joint,
                                          m_drag.jointRest + (event.pos - m_drag.grabbed),
@@ -259,7 +297,7 @@ void BoneTool::move(const ToolEvent &event)
         return;
     }
     deform::SkeletonPose pose = m_drag.start;
-    const Eigen::Vector2d cursor = vec(event.pos);
+    const Eigen::Vector2d cursor = vec(m_drag.anchor.unmap(event.pos));
     if (m_drag.kind == DragKind::Root) {
         pose.rootOffset += cursor - vec(m_drag.grabbed);
     } else if (m_drag.kind == DragKind::Bone) {
@@ -286,8 +324,68 @@ void BoneTool::move(const ToolEvent &event)
 
 void BoneTool::release(const ToolEvent &event)
 {
+    if (m_drag.kind == DragKind::Attach) {
+        if (event.pos != m_pressPos)
+            attach(event.pos);
+        m_drag = {};
+        canvas()->update();
+        return;
+    }
     move(event);
     m_drag = {};
+}
+
+void BoneTool::attach(QPointF at)
+{
+    model::Document *doc = state()->document();
+    const model::StrokeGroup *child = doc->group(m_drag.groupId);
+    if (!child)
+        return;
+    // What lies under the drop, the dragged part left out.
+    const model::Frame *f = state()->currentFrame();
+    if (!f)
+        return;
+    const qreal reach = kBoneGrab * 2 / canvas()->zoom();
+    const model::StrokeGroup *target = nullptr;
+    QPointF rest;
+    qreal best = reach;
+    for (const model::StrokeGroup &g : f->groups) {
+        if (g.id == child->id || !editable(g) || g.rig.skeleton.empty())
+            continue;
+        const model::SkeletonRig &s = g.rig.skeleton;
+        const std::vector<QPointF> shown = s.posedJoints();
+        for (std::size_t j = 0; j < shown.size(); ++j) {
+            const int p = s.parent[j];
+            const QPointF a = p < 0 ? shown[j] : shown[std::size_t(p)], b = shown[j];
+            const QPointF d = b - a;
+            const qreal len2 = QPointF::dotProduct(d, d);
+            const qreal t =
+                len2 > 0 ? std::clamp(QPointF::dotProduct(at - a, d) / len2, 0.0, 1.0) : 0.0;
+            const qreal distance = QLineF(at, a + t * d).length();
+            if (distance < best) {
+                best = distance;
+                target = &g;
+                // The same place on the rest skeleton, where joins are kept.
+                const QPointF ra = p < 0 ? s.joints[j] : s.joints[std::size_t(p)];
+                rest = ra + t * (s.joints[j] - ra);
+            }
+        }
+    }
+    if (!target) {
+        canvas()->postMessage(tr("Drop the root on a bone of another part to join them."));
+        return;
+    }
+    auto *command = new model::JoinPartCommand(
+        doc, child->id, model::joinAt(child->rig.skeleton, target->id, rest));
+    if (command->isObsolete()) {
+        delete command;
+        canvas()->postMessage(
+            tr("%1 hangs from this part already, so it cannot hang from it in turn.")
+                .arg(target->name));
+        return;
+    }
+    push(command);
+    m_controller->prepare(child->id);
 }
 
 void BoneTool::hover(const ToolEvent &event)
@@ -317,6 +415,17 @@ void BoneTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidget)
         else if (m_hover.groupId == g.id)
             look.highlightJoint = m_hover.joint;
         paintSkeleton(painter, canvasToWidget, g.rig.skeleton, look);
+    }
+    if (m_drag.kind == DragKind::Attach) { // the rubber band from the root to the cursor
+        const model::StrokeGroup *g = state()->document()->group(m_drag.groupId);
+        if (g && m_drag.joint < g->rig.skeleton.jointCount()) {
+            const QPointF root = g->rig.skeleton.posedJoints()[std::size_t(m_drag.joint)];
+            painter.save();
+            painter.setRenderHint(QPainter::Antialiasing);
+            painter.setPen(QPen(QColor(40, 150, 90), 2, Qt::DashLine, Qt::RoundCap));
+            painter.drawLine(canvasToWidget.map(root), canvasToWidget.map(m_drag.cursor));
+            painter.restore();
+        }
     }
 }
 

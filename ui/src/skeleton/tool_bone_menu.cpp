@@ -1,6 +1,7 @@
 // The Bone tool's joint and bone commands: locks, Reset Bone Pose, the context menu, and the
 // Edit Joints mode (move, insert, delete rest joints).
 #include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/model/skeleton/skeleton_join_commands.h>
 #include <finbook/model/skeleton/skeleton_joint_edit.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/editor_state.h>
@@ -166,11 +167,28 @@ void BoneTool::secondaryClick(const ToolEvent &event)
     QAction *edit = add(tr("Edit Joints"), "bone.editJoints");
     edit->setCheckable(true);
     edit->setChecked(m_editJoints);
-    QAction *insert = nullptr, *remove = nullptr;
+    QAction *insert = nullptr, *remove = nullptr, *makeRoot = nullptr;
     if (m_editJoints && hit.part == Part::Bone)
         insert = add(tr("Insert Joint Here"), "bone.insertJoint");
     if (m_editJoints && hit.part == Part::Joint)
         remove = add(tr("Delete Joint"), "bone.deleteJoint");
+    model::Document *doc = state()->document();
+    const model::StrokeGroup *g = doc->group(hit.groupId);
+    if (hit.part == Part::Joint && g && g->rig.skeleton.root != hit.joint) {
+        makeRoot = add(tr("Make Root Joint"), "bone.makeRootJoint");
+        makeRoot->setEnabled(!g->rig.skeleton.isPosed());
+    }
+    menu.addSeparator();
+    const model::Frame *frame = state()->currentFrame();
+    QAction *detach = nullptr, *characterRoot = nullptr;
+    if (g && g->rig.skeleton.hangs()) {
+        const model::StrokeGroup *parent = doc->group(g->rig.skeleton.join.parent);
+        detach =
+            add(tr("Detach from %1").arg(parent ? parent->name : QString()), "bone.detachPart");
+    }
+    if (g && frame && g->rig.skeleton.hangs())
+        characterRoot = add(tr("Make Character Root"), "bone.characterRoot");
+    QAction *joinAll = add(tr("Join Overlapping Parts"), "bone.joinParts");
     const QPoint global = canvas()->mapToGlobal(event.widgetPos.toPoint());
     QAction *chosen = m_menuExec ? m_menuExec(menu, global) : menu.exec(global);
     if (!chosen || !chosen->isEnabled())
@@ -185,6 +203,47 @@ void BoneTool::secondaryClick(const ToolEvent &event)
         insertJoint(hit, event.pos);
     else if (chosen == remove)
         deleteJoint(hit);
+    else if (chosen == makeRoot)
+        setRootJoint(hit);
+    else if (chosen == detach)
+        push(new model::DetachPartCommand(doc, hit.groupId));
+    else if (chosen == characterRoot)
+        push(new model::MakeCharacterRootCommand(doc, hit.groupId));
+    else if (chosen == joinAll)
+        joinOverlappingParts();
+}
+
+void BoneTool::setRootJoint(const Hit &hit)
+{
+    model::Document *doc = state()->document();
+    const model::StrokeGroup *g = doc->group(hit.groupId);
+    if (!g)
+        return;
+    auto rerooted = model::withRootJoint(g->rig.skeleton, hit.joint);
+    if (!rerooted) {
+        canvas()->postMessage(rerooted.error());
+        return;
+    }
+    model::Rig rig = g->rig;
+    rig.skeleton = std::move(*rerooted);
+    const int root = rig.skeleton.root;
+    push(new model::SetRigCommand(doc, hit.groupId, std::move(rig), tr("Make Root Joint")));
+    select({hit.groupId, Part::Joint, root});
+    m_controller->prepare(hit.groupId);
+}
+
+void BoneTool::joinOverlappingParts()
+{
+    model::Document *doc = state()->document();
+    auto *command = new model::JoinOverlappingPartsCommand(doc, state()->currentFrameId());
+    const int joined = command->joined();
+    if (command->isObsolete()) {
+        delete command;
+        canvas()->postMessage(tr("No part overlaps another part's skeleton."));
+        return;
+    }
+    push(command);
+    canvas()->postMessage(tr("Joined %n part(s).", nullptr, joined));
 }
 
 } // namespace finbook::ui

@@ -1,5 +1,6 @@
 // View → Show Skeleton: every object's skeleton over the current frame, posed as it is shown.
-// Joints are circles scaled to their inscribed radius, bones lines, the root a square; the
+// Joints are circles scaled to their inscribed radius, bones lines, the root a square (a part
+// joined to a character: a green diamond, with a dashed link to where it hangs); the
 // current object's skeleton is coloured, the others grey. Locked joints are red with a ring
 // (a pin head: they stay put). The Bone tool draws the same way, plus its selection and, in
 // Edit Joints, dashed bones.

@@ -5,6 +5,12 @@
 // (locks are saved with the skeleton). Right-click a joint or bone for its menu: Lock Joint,
 // Reset Bone Pose, Edit Joints and, while editing, Insert Joint Here and Delete Joint.
 //
+// Characters (issue 9): a skeleton built on a drawing that overlaps another part's skeleton
+// joins it (RealSkel's bone split or joint connect); posing the parent moves the part.
+// Shift-drag a part's root onto a bone of another part to join it there; the menu detaches a
+// part, joins the frame's overlapping parts, makes a part the character's root or a joint its
+// part's root.
+//
 // Edit Joints (a mode, from the menu or Deform → Edit Joints) changes the rest skeleton of an
 // unposed object instead of posing it: drag a joint to move it, click a bone to split it with
 // a new joint. Every drag, click and menu choice is one undo step.
@@ -71,7 +77,7 @@ signals:
     void editJointsChanged(bool on);
 
 private:
-    enum class DragKind { None, Bone, Joint, Root, MoveJoint };
+    enum class DragKind { None, Bone, Joint, Root, MoveJoint, Attach };
     struct Drag {
         model::Id groupId = model::kNoId;
         DragKind kind = DragKind::None;
@@ -80,6 +86,10 @@ private:
         deform::SkeletonPose start;
         QPointF grabbed;
         QPointF jointRest; // MoveJoint: where the joint was when grabbed
+        // A joined part poses in its parent bone's rest frame: the cursor is taken back by
+        // the bone's motion (fixed during the drag: the parent does not move).
+        model::RigidMotion anchor;
+        QPointF cursor; // Attach: where the rubber band ends
     };
 
     model::Id objectAt(const ToolEvent &event) const;
@@ -92,7 +102,14 @@ private:
     void select(const Hit &hit);
     void insertJoint(const Hit &hit, QPointF at);
     void deleteJoint(const Hit &hit);
+    void setRootJoint(const Hit &hit);
+    void joinOverlappingParts();
     void push(QUndoCommand *command);
+    // Attach: the part's root dropped at `at` joins the part under it (a bone or joint of
+    // another object's skeleton).
+    void attach(QPointF at);
+    // After building a part's skeleton: join it to the part it overlaps, if any.
+    void joinIfOverlapping(model::Id groupId);
 
     model::DeformController *m_controller;
     Drag m_drag;
