@@ -77,14 +77,12 @@ SkeletonAnchor anchorOn(const SkeletonRig &parent, QPointF parentAt)
         return a;
     }
     const int start = parent.parent[std::size_t(best)];
-    // Near the bone's start: the joint there, which moves with the bone before it (or with
-    // the tree when it is a root). The bone stays the skinning influence either way.
-    const int moving =
-        bestT < kJoinEndFraction && parent.parent[std::size_t(start)] >= 0 ? start : best;
-    const int from = parent.parent[std::size_t(moving)];
-    a.from = parent.joints[std::size_t(from)];
-    a.to = parent.joints[std::size_t(moving)];
-    a.motion = motions[std::size_t(moving)];
+    // The bone the part overlaps skins it. Near the bone's start the part hangs from the
+    // joint there, which moves with the bone ending at it (or, at a root, with the whole
+    // tree); elsewhere with the bone itself.
+    a.from = parent.joints[std::size_t(start)];
+    a.to = parent.joints[std::size_t(best)];
+    a.motion = motions[std::size_t(bestT < kJoinEndFraction ? start : best)];
     return a;
 }
 

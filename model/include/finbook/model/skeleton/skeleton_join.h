@@ -12,8 +12,10 @@
 
 namespace finbook::model {
 
-// Near a bone's start (within this fraction of its length) a part hangs from the joint there,
-// which moves with the bone before it; elsewhere it hangs from the bone itself (a split).
+// Near a bone's start (within this fraction of its length) a part hangs from the joint there
+// (a joint connect), which moves with the bone ending at it, or with its whole tree at a
+// root; elsewhere it hangs from the bone itself (a bone split, or a connect at its end).
+// Either way the bone it overlaps is the bone its weights include.
 constexpr double kJoinEndFraction = 0.15;
 
 // Where a part hanging at `parentAt` (the parent's rest coordinates) hangs on `parent`: the

@@ -57,11 +57,13 @@ struct SkeletonJoin {
 // keeps it current whenever a rig in the frame changes). Derived: never saved, never edited.
 struct SkeletonAnchor {
     bool valid = false; // the parent exists in the frame with a skeleton, and no loop
-    // The parent's rest bone the part hangs from (from == to: a lone root joint), in the
-    // part's rest coordinates (all objects share the canvas at rest): a rest definition.
+    // The parent's rest bone the part overlaps, which its weights include (from == to: a
+    // parent of lone joints), in the part's rest coordinates (all objects share the canvas
+    // at rest): a rest definition.
     QPointF from, to;
-    // That bone's motion from rest to the parent's pose (its character motion included):
-    // applied after the part's own pose. Identity when the parent is at rest.
+    // How the point it hangs from moves from rest to the parent's pose (that bone's motion,
+    // or the joint's at the bone's start; the parent's own anchor included): applied after
+    // the part's own pose. Identity when the parent is at rest.
     RigidMotion motion;
     friend bool operator==(const SkeletonAnchor &, const SkeletonAnchor &) = default;
 };
