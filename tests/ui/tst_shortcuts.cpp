@@ -218,6 +218,10 @@ void TestShortcuts::applyPoseHasAShortcut()
     QVERIFY(!doc->group(group)->rig.isPosed());
     QCOMPARE(doc->group(group)->rig.pins.size(), std::size_t(2));
     QVERIFY(doc->group(group)->strokes[0].data->points.back().y > 180);
+    // Nothing posed any more: nothing to reset or apply, but the rig can still go.
+    QVERIFY(!m_window->action(QStringLiteral("deform.apply"))->isEnabled());
+    QVERIFY(!m_window->action(QStringLiteral("deform.reset"))->isEnabled());
+    QVERIFY(m_window->action(QStringLiteral("deform.removePins"))->isEnabled());
 }
 
 QTEST_MAIN(TestShortcuts)

@@ -93,11 +93,12 @@ QMenu *DeformActions::createRigidityMenu(QWidget *parent)
 void DeformActions::updateEnabled()
 {
     const model::StrokeGroup *g = m_state->currentGroup();
-    const bool pinned = g && !g->rig.pins.empty() && !g->locked;
+    // Any rig kind: pins, a cage or a skeleton (Remove Rig was left enabled for pins only).
     const bool rigged = g && !g->rig.empty() && !g->locked;
-    m_reset->setEnabled(rigged);
-    m_bake->setEnabled(rigged && g->isDeformed());
-    m_removePins->setEnabled(pinned);
+    const bool posed = rigged && g->rig.isPosed();
+    m_reset->setEnabled(posed);
+    m_bake->setEnabled(posed && g->isDeformed());
+    m_removePins->setEnabled(rigged);
 }
 
 QDoubleSpinBox *DeformActions::createDensitySpinBox(QWidget *parent)
