@@ -4,6 +4,7 @@
 #include <finbook/model/commands.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
+#include <finbook/model/skeleton/skeleton_join_commands.h>
 
 #include <QRandomGenerator>
 
@@ -43,7 +44,8 @@ inline model::SkeletonRig randomSkeleton(QRandomGenerator &rng)
 }
 
 // One random skeleton edit of object `groupId` (its skeleton, if it has one): build, pose,
-// lock, reset a bone or everything, move, insert or delete a joint, change skinning.
+// lock, reset a bone or everything, move, insert or delete a joint, change skinning, join
+// it to another object of its frame, detach it, make it its character's root.
 inline std::unique_ptr<QUndoCommand> randomSkeletonCommand(model::Document &doc, model::Id groupId,
                                                            QRandomGenerator &rng)
 {
@@ -52,7 +54,14 @@ inline std::unique_ptr<QUndoCommand> randomSkeletonCommand(model::Document &doc,
     const int n = g ? g->rig.skeleton.jointCount() : 0;
     const int joint = int(rng.bounded(std::max(n, 1)));
     const QPointF somewhere(rng.bounded(1000.0), rng.bounded(700.0));
-    switch (n == 0 ? 0 : rng.bounded(9)) {
+    // Another object of the same frame, for joins.
+    Id other = kNoId, frameId = kNoId;
+    if (const GroupLocation at = doc.locateGroup(groupId); at.isValid()) {
+        const Frame &f = doc.frameAt(at.frame);
+        other = f.groups[rng.bounded(quint32(f.groups.size()))].id;
+        frameId = f.id;
+    }
+    switch (n == 0 ? 0 : rng.bounded(13)) {
     case 0:
         return std::make_unique<BuildSkeletonCommand>(&doc, groupId, randomSkeleton(rng));
     case 1:
@@ -77,6 +86,15 @@ inline std::unique_ptr<QUndoCommand> randomSkeletonCommand(model::Document &doc,
         return std::make_unique<InsertJointCommand>(&doc, groupId, joint, somewhere);
     case 7:
         return std::make_unique<DeleteJointCommand>(&doc, groupId, joint);
+    case 9: // may be a loop or a part without a skeleton: then obsolete
+        return std::make_unique<JoinPartCommand>(&doc, groupId,
+                                                 joinAt(g->rig.skeleton, other, somewhere));
+    case 10:
+        return std::make_unique<DetachPartCommand>(&doc, groupId);
+    case 11:
+        return std::make_unique<MakeCharacterRootCommand>(&doc, groupId);
+    case 12:
+        return std::make_unique<JoinOverlappingPartsCommand>(&doc, frameId);
     default:
         return std::make_unique<SetSkinningModeCommand>(
             &doc, groupId, rng.bounded(2) ? SkinningMode::Rigid : SkinningMode::LinearBlend);

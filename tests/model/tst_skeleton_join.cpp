@@ -2,6 +2,8 @@
 // posing the torso moves the arm (and its drawing), the arm's weights include the torso bone
 // it hangs from, and joins are undoable, never make the drawing jump, follow Duplicate Frame
 // and are saved.
+#include "random_edits.h"
+
 #include <finbook/deform/skeleton/skinning_weights.h>
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/finbook_file.h>
@@ -14,6 +16,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 using namespace finbook;
@@ -135,6 +138,7 @@ private slots:
     void applyPoseBakesTheWholeCharacter();
     void joinEditsUndoAndRedoExactly();
     void inbetweensMoveThePartWithItsParent();
+    void randomCharacterEditsUndoExactly();
 };
 
 void TestSkeletonJoin::overlappingArmJoinsTheTorso()
@@ -491,6 +495,71 @@ void TestSkeletonJoin::inbetweensMoveThePartWithItsParent()
                                                      std::sin(phi) * r.x() + std::cos(phi) * r.y());
             QVERIFY(QLineF(shown[j], expected).length() < 1e-9);
         }
+    }
+}
+
+void TestSkeletonJoin::randomCharacterEditsUndoExactly()
+{
+    QRandomGenerator rng(20261124u);
+    std::map<QString, int> applied;
+    // Three parts: a torso and two arms over it, automatic skeletons, then random edits of
+    // any of them (joins, poses, joint edits, rebuilds) and of the document.
+    Document base;
+    makeCharacter(base);
+    {
+        StrokeGroup left = bar(base, QStringLiteral("left arm"), {295, 200}, {40, 260}, 30);
+        auto rig = buildSkeletonRig(left);
+        QVERIFY(rig);
+        left.rig.skeleton = *rig;
+        base.insertGroup(base.frames()[0].id, 2, left);
+    }
+    const Frame start = base.frames()[0];
+    for (int seq = 0; seq < 600; ++seq) {
+        Document doc;
+        doc.reset({start}, DocumentSettings{}, base.nextId());
+        if (rng.bounded(2))
+            doc.undoStack()->push(new JoinOverlappingPartsCommand(&doc, start.id));
+        const QByteArray before = serializeFinbook(doc);
+        const std::vector<Rig> rigsBefore = rigsOf(doc);
+        const int undoBase = doc.undoStack()->index();
+        const int length = 1 + int(rng.bounded(25));
+        for (int i = 0; i < length; ++i) {
+            Id g = kNoId; // a random object of a random frame (there may be none left)
+            if (doc.frameCount() > 0) {
+                const Frame &f = doc.frameAt(int(rng.bounded(doc.frameCount())));
+                if (!f.groups.empty())
+                    g = f.groups[rng.bounded(quint32(f.groups.size()))].id;
+            }
+            auto command = rng.bounded(6) ? finbook::testing::randomSkeletonCommand(doc, g, rng)
+                                          : finbook::testing::randomCommand(doc, rng);
+            doc.undoStack()->push(command.release());
+            for (const Frame &frame : doc.frames()) {
+                Frame resolved = frame;
+                QVERIFY(resolveJoins(resolved).empty()); // anchors are always current
+                for (const StrokeGroup &group : frame.groups) {
+                    QVERIFY(group.rig.skeleton.isValid());
+                    for (const QPointF &p : group.rig.skeleton.posedJoints())
+                        QVERIFY(std::isfinite(p.x()) && std::isfinite(p.y()));
+                }
+            }
+        }
+        for (int i = undoBase; i < doc.undoStack()->count(); ++i)
+            ++applied[doc.undoStack()->command(i)->text()];
+        const QByteArray end = serializeFinbook(doc);
+        const std::vector<Rig> rigsEnd = rigsOf(doc);
+        while (doc.undoStack()->index() > undoBase)
+            doc.undoStack()->undo();
+        if (serializeFinbook(doc) != before || rigsOf(doc) != rigsBefore)
+            QFAIL(qPrintable(QStringLiteral("undo-all differs: sequence %1").arg(seq)));
+        while (doc.undoStack()->canRedo())
+            doc.undoStack()->redo();
+        if (serializeFinbook(doc) != end || rigsOf(doc) != rigsEnd)
+            QFAIL(qPrintable(QStringLiteral("redo-all differs: sequence %1").arg(seq)));
+    }
+    for (const char *text :
+         {"Join Part", "Detach Part", "Make Character Root", "Pose Bones", "Build Skeleton"}) {
+        qInfo("%s: %d", text, applied[QString::fromLatin1(text)]);
+        QVERIFY2(applied[QString::fromLatin1(text)] > 20, text);
     }
 }
 

@@ -724,7 +724,7 @@ void TestSkeletonRig::randomSkeletonEditsUndoExactly()
 {
     QRandomGenerator rng(20261123u);
     std::map<QString, int> applied;
-    for (int seq = 0; seq < 1500; ++seq) {
+    for (int seq = 0; seq < 2500; ++seq) {
         Document doc;
         const Id g = makeElbow(doc);
         const QByteArray start = serializeFinbook(doc);
