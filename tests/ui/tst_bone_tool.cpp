@@ -159,6 +159,7 @@ private slots:
     void erasingEverythingRemovesTheSkeleton();
     void erasingALimbRebuildsTheSkeleton();
     void clickInsideAnOutlineBuilds();
+    void partsJoinWhenBuiltAndShiftDragReattaches();
 };
 
 void TestBoneTool::clickBuildsThenDragTurnsABone()
@@ -613,6 +614,70 @@ void TestBoneTool::clickInsideAnOutlineBuilds()
     QCOMPARE(fx.object().rig.kind(), RigKind::Skeleton);
     QCOMPARE(fx.doc.undoStack()->count(), 1);
     QVERIFY(fx.skeleton().jointCount() >= 2);
+}
+
+void TestBoneTool::partsJoinWhenBuiltAndShiftDragReattaches()
+{
+    Fixture fx;
+    // A torso drawn under the arm's left end: a vertical bar of its own.
+    StrokeGroup torso;
+    torso.id = fx.doc.allocateId();
+    torso.name = QStringLiteral("torso");
+    for (int k = 0; k <= 6; ++k)
+        torso.strokes.push_back(
+            {fx.doc.allocateId(), line({140 + 5.0 * k, 120}, {140 + 5.0 * k, 560})});
+    fx.doc.insertGroup(fx.state.currentFrameId(), 0, torso);
+    const auto torsoRig = [&] { return fx.doc.group(torso.id)->rig.skeleton; };
+
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({155, 450}));
+    QVERIFY(!torsoRig().empty());
+    QVERIFY(!torsoRig().join.joined());
+    const int steps = fx.doc.undoStack()->count();
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    // Built and joined in one step: the arm overlaps the torso.
+    QCOMPARE(fx.doc.undoStack()->count(), steps + 1);
+    QVERIFY(fx.skeleton().hangs());
+    QCOMPARE(fx.skeleton().join.parent, torso.id);
+
+    // Detach from the menu on the arm's root.
+    const QPointF root = fx.skeleton().joints[std::size_t(fx.skeleton().root)];
+    choose(fx, "bone.detachPart");
+    QTest::mouseClick(&fx.canvas, Qt::RightButton, {}, fx.at(root));
+    QVERIFY(!fx.skeleton().join.joined());
+
+    // Shift-drag the root onto the torso's bone, lower down: joined there.
+    const QPointF drop(155, 400);
+    QTest::mousePress(&fx.canvas, Qt::LeftButton, Qt::ShiftModifier, fx.at(root));
+    for (int i = 1; i <= 8; ++i) {
+        const QPointF p = root + (drop - root) * (i / 8.0);
+        QMouseEvent move(QEvent::MouseMove, fx.at(p), fx.canvas.mapToGlobal(fx.at(p)), Qt::NoButton,
+                         Qt::LeftButton, Qt::ShiftModifier);
+        QApplication::sendEvent(&fx.canvas, &move);
+    }
+    QTest::mouseRelease(&fx.canvas, Qt::LeftButton, Qt::ShiftModifier, fx.at(drop));
+    QVERIFY(fx.skeleton().hangs());
+    QCOMPARE(fx.skeleton().join.parent, torso.id);
+    QVERIFY2(QLineF(fx.skeleton().join.parentAt, drop).length() < 8,
+             qPrintable(QStringLiteral("%1,%2")
+                            .arg(fx.skeleton().join.parentAt.x())
+                            .arg(fx.skeleton().join.parentAt.y())));
+    QVERIFY(!fx.skeleton().isPosed()); // joining never moves the drawing
+
+    // Moving the torso by its root moves the arm's drawing with it.
+    QVERIFY(fx.waitReady());
+    const QPointF torsoRoot = torsoRig().joints[std::size_t(torsoRig().root)];
+    fx.drag(torsoRoot, torsoRoot + QPointF(30, -20));
+    const QPointF offset = torsoRig().rootOffset;
+    QVERIFY(QLineF(offset, QPointF(30, -20)).length() < 2.0);
+    QVERIFY(fx.skeleton().isPosed());
+    QVERIFY(fx.waitReady());
+    QTRY_VERIFY_WITH_TIMEOUT(fx.object().deformed, 10000);
+    const StrokePoint a = fx.object().strokes[0].data->points[30];
+    QTRY_VERIFY_WITH_TIMEOUT(
+        QLineF(QPointF(a.x, a.y) + offset, QPointF(fx.object().deformed->strokes[0][30].x,
+                                                   fx.object().deformed->strokes[0][30].y))
+                .length() < 0.05,
+        10000);
 }
 
 QTEST_MAIN(TestBoneTool)
