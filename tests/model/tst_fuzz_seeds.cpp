@@ -26,8 +26,8 @@ StrokeGroup rigged(Id &next, const QString &name, float x0)
     return g;
 }
 
-// Two frames, each with a caged object and a boned one, both posed; the second frame's
-// skeleton has a locked joint.
+// Two frames, each with a caged object and a boned one, both posed, and a part joined to the
+// boned one; the second frame's skeleton has a locked joint.
 void cageAndSkeleton(Document &doc)
 {
     std::vector<Frame> frames(2);
@@ -51,7 +51,17 @@ void cageAndSkeleton(Document &doc)
         if (f.id != frames.front().id) // the optional lock tail, in one frame of two
             s.locked = {false, true, false};
         boned.deformed = shiftedPose(boned, -2.0f);
-        f.groups = {caged, boned};
+        // A part hanging from the boned object's last bone (a JOIN chunk).
+        StrokeGroup hand = rigged(next, QStringLiteral("hand"), 140);
+        SkeletonRig &h = hand.rig.skeleton;
+        h.joints = {{142, 82}, {150, 95}};
+        h.parent = {-1, 0};
+        h.radius = {2, 1};
+        h.root = 0;
+        h.angles = {0.0, 0.3};
+        h.join = {boned.id, QPointF(142, 82), QPointF(139, 79)};
+        hand.deformed = shiftedPose(hand, 1.0f);
+        f.groups = {caged, boned, hand};
     }
     DocumentSettings settings;
     settings.canvasSize = QSize(320, 200);
@@ -89,7 +99,7 @@ void collectTags(const QByteArray &bytes, std::set<QByteArray> &tags)
     }
     // Object chunks: look for their tags followed by a plausible length (good enough for
     // files this small, whose points never spell these letters).
-    for (const char *chunk : {"PINS", "CAGE", "SKEL", "DEFM"})
+    for (const char *chunk : {"PINS", "CAGE", "SKEL", "JOIN", "DEFM"})
         if (bytes.contains(chunk))
             tags.insert(chunk);
 }
@@ -131,8 +141,8 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     std::set<QByteArray> tags;
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
-    for (const char *tag :
-         {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL", "DEFM"})
+    for (const char *tag : {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE",
+                            "SKEL", "JOIN", "DEFM"})
         QVERIFY2(tags.count(tag), tag);
 }
 
