@@ -9,6 +9,8 @@
 
 #include "io/crc32c.h"
 
+#include <finbook/model/skeleton/skeleton_join.h>
+
 #include <algorithm>
 #include <cctype>
 #include <new>
@@ -294,9 +296,16 @@ void Reader::finish(Cursor &c)
         throw DuplicateId{*twice};
     m_idsClash = m_idsClash || twice != m_ids.end();
     std::vector<Id>().swap(m_ids);
+    // Joins are stored, anchors derived: every reader of the file sees them resolved, as a
+    // Document holding these frames would have them.
+    const auto resolveAll = [this] {
+        for (Frame &f : m_doc.frames)
+            resolveJoins(f);
+    };
     if (recovering()) {
         if (m_idsClash)
             renumberClashingIds();
+        resolveAll();
         m_doc.nextId = std::max(m_doc.nextId, m_maxId + 1);
         return;
     }
@@ -313,6 +322,7 @@ void Reader::finish(Cursor &c)
                FinbookFile::tr("the next free id %1 is not above the largest id %2")
                    .arg(m_doc.nextId)
                    .arg(m_maxId));
+    resolveAll();
 }
 
 Expected<LoadedDocument, ReadFailure> parseFinbook(const QByteArray &bytes, ParseMode mode,
