@@ -12,9 +12,6 @@ namespace {
 // about as much as streaming 1/40 of the step-1 factor; past this many handles a per-event
 // back-substitution is cheaper in both memory and time.
 constexpr Eigen::Index kMaxBasisHandles = 32;
-// Below this many free vertices the whole factorization takes a few milliseconds and a second
-// thread costs more in start-up and scheduling (especially on a busy machine) than it saves.
-constexpr Eigen::Index kParallelFreeVertices = 8000;
 
 DeformError cancelledError()
 {

@@ -110,6 +110,10 @@ double relativeResidual(const R &residual, double normA, const X &x, const B &rh
     return scale > 0.0 ? r / scale : r;
 }
 
+// Below this many free vertices the whole factorization takes a few milliseconds and a second
+// thread costs more in start-up and scheduling (especially on a busy machine) than it saves.
+constexpr Eigen::Index kParallelFreeVertices = 8000;
+
 // Solves whose relative residual exceeds this are reported as SolveFailed. Cholesky on these
 // well-conditioned SPD systems lands around 1e-16; 1e-8 leaves room for 100k-vertex meshes.
 constexpr double kResidualTolerance = 1e-8;

@@ -177,7 +177,12 @@ ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::Matr
     detail::assembleArapSystems(V, F, c.solvedTriangles, internal, *d);
     if (auto error = factorization.finish(cancelled))
         return unexpected(std::move(*error));
-    detail::chooseDragPasses(*d);
+    const double budgetPasses = detail::chooseDragPasses(*d);
+    if (d->options.method == ArapMethod::Refined && budgetPasses < detail::kCoarseBelowPasses) {
+        if (!detail::buildCoarseRotations(*d, stop))
+            return cancelledError();
+        detail::chooseDragPasses(*d);
+    }
     return std::shared_ptr<const ArapPrecompute>(std::move(d));
 }
 

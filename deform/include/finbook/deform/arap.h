@@ -148,6 +148,16 @@ struct ArapPrecompute {
     // the anchor vertex (the pinned component's vertex nearest to the group at rest).
     Eigen::VectorXi rigidFollowGroup;
     Eigen::VectorXi followAnchor;
+
+    // Coarse rotations (Refined, Drag, when the budget allows only a few passes): the solved
+    // triangles are grouped into K compact clusters that share one rotation, and that reduced
+    // ARAP problem is solved exactly in K dimensions before the fine passes. With the global
+    // step linear in the rotations, a cluster's covariance Σ conj(r)·p is S = C·R + E·q
+    // (R the K unit rotations, q the handle targets). Empty when not used.
+    Eigen::VectorXi triangleCluster; // per row of `triangles`: its cluster
+    Eigen::MatrixXcd coarseCoupling; // C, K×K, Hermitian
+    Eigen::MatrixXcd coarseHandles;  // E, K×handles
+    Eigen::VectorXd coarseThreshold; // per cluster: below this |S| the cluster collapsed
 };
 
 // relativeResidual: largest ‖Ax − b‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞) over the linear solves of one
