@@ -11,10 +11,8 @@
 #include "arap_solver.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <numeric>
-#include <thread>
 
 namespace finbook::deform::detail {
 namespace {
@@ -120,34 +118,59 @@ Eigen::VectorXi clusterTriangles(const ArapPrecompute &d, int &count)
     return cluster;
 }
 
+// Per solved vertex, the clusters of its triangles with a_k(v) = Σ conj(r) over its corners
+// in cluster k (most vertices lie in one cluster): cluster k's covariance is Σ_v a_k(v)·p(v),
+// and its rotation's share of step 2's right-hand side is 3·conj(a_k(v)) per free vertex.
+struct ClusterCorners {
+    std::vector<int> start, cluster;
+    std::vector<Complex> weight;
+};
+
+ClusterCorners clusterCorners(const ArapPrecompute &d)
+{
+    const Eigen::Index solved = d.vertexStart.size() - 1;
+    ClusterCorners c;
+    c.start.reserve(std::size_t(solved) + 1);
+    c.start.push_back(0);
+    for (Eigen::Index v = 0; v < solved; ++v) {
+        const std::size_t first = c.cluster.size();
+        for (int k = d.vertexStart(v); k < d.vertexStart(v + 1); ++k) {
+            const int t = d.vertexTriangle(k), cluster = d.triangleCluster(t);
+            const int corner = d.triangles(t, 0) == v ? 0 : d.triangles(t, 1) == v ? 1 : 2;
+            const Complex a = std::conj(d.restCentered(t, corner));
+            std::size_t i = first;
+            while (i < c.cluster.size() && c.cluster[i] != cluster)
+                ++i;
+            if (i == c.cluster.size()) {
+                c.cluster.push_back(cluster);
+                c.weight.push_back(a);
+            } else {
+                c.weight[i] += a;
+            }
+        }
+        c.start.push_back(int(c.cluster.size()));
+    }
+    return c;
+}
+
 // P_k = H00⁻¹ g_k: the free positions a unit rotation of cluster k alone produces (handles
 // at the origin); C(:, k) is every cluster's covariance with it, E(k, :) what the handles
-// add to cluster k's covariance (their own corners, and −⅓ P_kᴴ H01 through the free ones).
-void coarseColumn(ArapPrecompute &d, const std::vector<int> &members, const std::vector<int> &start,
-                  int k, Eigen::VectorXcd &x)
+// add to cluster k's covariance (−⅓ P_kᴴ H01 through the free vertices; their own corners
+// are added by the caller).
+void coarseColumn(ArapPrecompute &d, const ClusterCorners &c, int k, Eigen::VectorXcd &x)
 {
-    const Eigen::Index nf = d.freeCount, m = d.triangles.rows();
-    x.setZero();
-    for (int i = start[std::size_t(k)]; i < start[std::size_t(k) + 1]; ++i) {
-        const int t = members[std::size_t(i)];
-        d.coarseThreshold(k) += d.collapseThreshold(t);
-        for (int c = 0; c < 3; ++c) {
-            const int v = d.triangles(t, c);
-            if (v < nf)
-                x(v) += 3.0 * d.restCentered(t, c);
-            else
-                d.coarseHandles(k, v - nf) += std::conj(d.restCentered(t, c));
-        }
+    const Eigen::Index nf = d.freeCount;
+    for (Eigen::Index v = 0; v < nf; ++v) {
+        Complex g;
+        for (int i = c.start[std::size_t(v)]; i < c.start[std::size_t(v) + 1]; ++i)
+            if (c.cluster[std::size_t(i)] == k)
+                g = 3.0 * std::conj(c.weight[std::size_t(i)]);
+        x(v) = g;
     }
     arapStepTwoBacksubstitute(d, x);
-    for (Eigen::Index t = 0; t < m; ++t) {
-        Complex s;
-        for (int c = 0; c < 3; ++c) {
-            const int v = d.triangles(t, c);
-            if (v < nf)
-                s += std::conj(d.restCentered(t, c)) * x(v);
-        }
-        d.coarseCoupling(d.triangleCluster(t), k) += s;
+    for (Eigen::Index v = 0; v < nf; ++v) {
+        for (int i = c.start[std::size_t(v)]; i < c.start[std::size_t(v) + 1]; ++i)
+            d.coarseCoupling(c.cluster[std::size_t(i)], k) += c.weight[std::size_t(i)] * x(v);
     }
     for (Eigen::Index h = 0; h < d.coarseHandles.cols(); ++h) {
         Complex s;
@@ -169,40 +192,24 @@ bool buildCoarseRotations(ArapPrecompute &d, const std::function<bool()> &stop)
     if (count > kMaxClusters)
         return true;
     d.triangleCluster = std::move(clusters);
-    const Eigen::VectorXi &cluster = d.triangleCluster;
-    std::vector<int> start(std::size_t(count) + 1, 0), members(static_cast<std::size_t>(m));
-    for (Eigen::Index t = 0; t < m; ++t)
-        ++start[std::size_t(cluster(t)) + 1];
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<int> next(start.begin(), start.end() - 1);
-    for (Eigen::Index t = 0; t < m; ++t)
-        members[std::size_t(next[std::size_t(cluster(t))]++)] = int(t);
-
+    const ClusterCorners corners = clusterCorners(d);
     d.coarseCoupling = Eigen::MatrixXcd::Zero(count, count);
     d.coarseHandles = Eigen::MatrixXcd::Zero(count, handles);
     d.coarseThreshold = Eigen::VectorXd::Zero(count);
-    // Clusters first, first + stride, …: each writes only its own column of C, row of E and
-    // threshold, so two threads share the work on large meshes without locks.
-    std::atomic<bool> abort{false};
-    Eigen::VectorXcd scratch[2] = {Eigen::VectorXcd(nf), Eigen::VectorXcd(nf)};
-    const auto columns = [&](int first, int stride, const std::function<bool()> &halt) {
-        Eigen::VectorXcd &x = scratch[first];
-        for (int k = first; k < count; k += stride) {
-            if (abort || halt()) {
-                abort = true;
-                return;
-            }
-            coarseColumn(d, members, start, k, x);
-        }
-    };
-    std::thread helper;
-    const bool parallel = nf >= kParallelFreeVertices && count > 1;
-    if (parallel)
-        helper = std::thread([&] { columns(1, 2, [] { return false; }); });
-    columns(0, parallel ? 2 : 1, stop);
-    if (helper.joinable())
-        helper.join();
-    return !abort;
+    for (Eigen::Index t = 0; t < m; ++t)
+        d.coarseThreshold(d.triangleCluster(t)) += d.collapseThreshold(t);
+    for (Eigen::Index h = 0; h < handles; ++h) { // the handles' own corners
+        for (int i = corners.start[std::size_t(nf + h)]; i < corners.start[std::size_t(nf + h) + 1];
+             ++i)
+            d.coarseHandles(corners.cluster[std::size_t(i)], h) += corners.weight[std::size_t(i)];
+    }
+    Eigen::VectorXcd x(nf);
+    for (int k = 0; k < count; ++k) {
+        if (stop())
+            return false;
+        coarseColumn(d, corners, k, x);
+    }
+    return true;
 }
 
 void coarseStart(const ArapPrecompute &d, Workspace &w)

@@ -35,7 +35,7 @@ double chooseDragPasses(ArapPrecompute &d)
     d.estimatedPassMs =
         1e-6 * (kTriangleNs * double(d.triangles.rows()) + kFactorEntryNs * factorEntries +
                 kFreeVertexNs * double(d.freeCount));
-    const double stepOneNs = d.stepOneBasis.cols() == d.handleEntry.size()
+    const double stepOneNs = d.handleEntry.size() <= kMaxBasisHandles
                                  ? kBasisEntryNs * double(d.stepOneBasis.size())
                                  : kComplexFactorEntryNs * factorEntries;
     const double vertexMs = 1e-6 * kVertexNs * double(d.rest.size());

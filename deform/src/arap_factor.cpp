@@ -1,4 +1,4 @@
-#include "arap_internal.h"
+#include "arap_solver.h"
 
 #include <atomic>
 #include <exception>
@@ -7,11 +7,6 @@
 
 namespace finbook::deform::detail {
 namespace {
-
-// Dense step-1 basis columns cost freeCount complex numbers each, and applying one costs
-// about as much as streaming 1/40 of the step-1 factor; past this many handles a per-event
-// back-substitution is cheaper in both memory and time.
-constexpr Eigen::Index kMaxBasisHandles = 32;
 
 DeformError cancelledError()
 {
@@ -47,11 +42,34 @@ struct ArapFactorization::Shared {
     {}
     ArapPrecompute &d;
     std::latch stepOneFactored{1};
-    bool released = false; // stepOneFactored was counted down (calling thread only)
+    std::latch assembled{1};    // the caller finished assembleArapSystems
+    bool released = false;      // stepOneFactored was counted down (calling thread only)
+    bool assembledSaid = false; // assembled was counted down (calling thread only)
     bool stepTwoOk = false;
     std::atomic<bool> stepOneOk{false};
     std::atomic<bool> abort{false};
     std::atomic<bool> inaccurate{false};
+
+    void sayAssembled()
+    {
+        if (!assembledSaid)
+            assembled.count_down();
+        assembledSaid = true;
+    }
+
+    // The drag pass count, and coarse rotations where the budget holds few passes: they need
+    // H00's factor and the assembled triangles, not G00, so on large meshes the helper does
+    // them while the caller factors G00.
+    bool prepareDrag(const std::function<bool()> &stop)
+    {
+        const double budgetPasses = chooseDragPasses(d);
+        if (d.options.method != ArapMethod::Refined || !(budgetPasses < kCoarseBelowPasses))
+            return true;
+        if (!buildCoarseRotations(d, stop))
+            return false;
+        chooseDragPasses(d);
+        return true;
+    }
 
     void release(bool ok)
     {
@@ -104,6 +122,9 @@ ArapFactorization::ArapFactorization(ArapPrecompute &d)
         Shared &s = *m_shared;
         try {
             s.factorStepTwo();
+            s.assembled.wait();
+            if (s.stepTwoOk && !s.abort && !s.prepareDrag([&s] { return s.abort.load(); }))
+                s.abort = true;
             s.stepOneFactored.wait();
             if (s.stepTwoOk && s.stepOneOk && !s.abort)
                 s.basisColumns(1, 2, [] { return false; });
@@ -119,6 +140,7 @@ ArapFactorization::~ArapFactorization()
     if (!m_helper.joinable())
         return;
     m_shared->abort = true;
+    m_shared->sayAssembled();
     if (!m_shared->released)
         m_shared->release(false);
     m_helper.join();
@@ -128,11 +150,17 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
 {
     const std::function<bool()> stop = [&cancelled] { return cancelled && cancelled(); };
     Shared &s = *m_shared;
-    if (s.d.freeCount == 0) // every vertex of every solved component is pinned
+    s.sayAssembled();
+    if (s.d.freeCount == 0) { // every vertex of every solved component is pinned
+        chooseDragPasses(s.d);
         return std::nullopt;
+    }
     const bool parallel = m_helper.joinable();
-    if (!parallel)
+    if (!parallel) {
         s.factorStepTwo();
+        if (s.stepTwoOk && !s.prepareDrag(stop))
+            return cancelledError();
+    }
     const Eigen::Index handles = s.d.handleEntry.size();
     s.d.stepOneBasis.resize(s.d.freeCount, handles <= kMaxBasisHandles ? handles : 0);
     if (stop()) {
