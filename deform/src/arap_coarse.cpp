@@ -5,10 +5,13 @@
 // ARAP problem: the global step is linear in the rotations, so every cluster's covariance
 // Σ conj(r)·p at the global solution is S = C·R + E·q with C (K×K) and E (K×handles) fixed
 // at precompute time (one step-2 back-substitution per cluster). Its local/global iteration
-// costs K² per pass, so it runs to convergence; one fine global step with the cluster
-// rotations then starts the fine passes from a pose whose long-wavelength error is gone.
+// costs K² per pass, so it runs (nearly) to convergence from the solution of its convex
+// relaxation; one fine global step with the cluster rotations then starts the fine passes
+// from a pose whose long-wavelength error is gone.
 // Everything is sequential and a function of the handles only (no state across events).
 #include "arap_solver.h"
+
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -17,19 +20,20 @@
 namespace finbook::deform::detail {
 namespace {
 
-// Clusters aimed for (grid cells; splitting and merging make it 12–20 on a bar): each costs
-// one back-substitution at precompute time (7 ms at 100k vertices). On the 20k bar with two
-// fine passes 8 left 1.15×, 16 1.13×, 24–48 1.13× the converged energy (measured).
+// Clusters aimed for (grid cells; splitting and merging make it 12–20 on a bar, more on thin
+// drawings): each costs one back-substitution at precompute time (7 ms at 100k vertices). On
+// the 20k bar with two fine passes 8 left 1.15×, 16 1.13×, 24–48 1.13× the converged energy.
 constexpr int kTargetClusters = 16;
 // Pieces smaller than this fraction of the average cluster join a neighbour.
 constexpr double kSmallPiece = 0.25;
 // The change of every cluster rotation below which the reduced iterations stop early: a rigid
-// motion of the pins must come out rigid to round-off (took 152 iterations on a 10k grid; a
-// bend runs all kCoarseIterations, about 0.1 ms at 16 clusters).
+// motion of the pins must come out rigid to round-off (the relaxed start gives it at once);
+// a bend runs all kCoarseIterations, about 0.1 ms at 16 clusters, 1 ms at 95.
 constexpr double kCoarseTolerance = 1e-13;
-// More clusters than this (many separately pinned parts) would make the K² iterations cost
-// more than the passes they save: such meshes start from step 1.
-constexpr int kMaxClusters = 64;
+// More clusters than this (many separately pinned parts, very thin strokes) would make the K²
+// iterations cost more than the passes they save (95 clusters took 1 ms per event on a 16k
+// octopus): such meshes start from step 1.
+constexpr int kMaxClusters = 128;
 
 int findRoot(std::vector<int> &parent, int i)
 {
@@ -65,9 +69,16 @@ Eigen::VectorXi clusterTriangles(const ArapPrecompute &d, int &count)
         y0 = std::min(y0, c.imag());
         y1 = std::max(y1, c.imag());
     }
-    const double area = std::max((x1 - x0) * (y1 - y0), 1e-300);
-    const double cell = std::max({std::sqrt(area / kTargetClusters), (x1 - x0) / kTargetClusters,
-                                  (y1 - y0) / kTargetClusters, 1e-300});
+    // Cells sized by the mesh's own area, not its bounding box: a drawing of thin strokes
+    // gets proportionally smaller cells, so fewer clusters straddle a joint that the pose
+    // bends (on 20k-vertex quickdraw meshes bounding-box cells left 5–50× the converged
+    // energy where these leave 1.8–11×).
+    double area = 0.0;
+    for (Eigen::Index t = 0; t < m; ++t)
+        area += 0.5 * std::abs(d.restDoubleArea(t));
+    const double cell =
+        std::max({std::sqrt(std::max(area, 1e-300) / kTargetClusters), (x1 - x0) / kTargetClusters,
+                  (y1 - y0) / kTargetClusters, 1e-300});
     const int columns = int((x1 - x0) / cell) + 1;
     std::vector<int> cellOf(static_cast<std::size_t>(m));
     for (Eigen::Index t = 0; t < m; ++t) {
@@ -209,6 +220,17 @@ bool buildCoarseRotations(ArapPrecompute &d, const std::function<bool()> &stop)
             return false;
         coarseColumn(d, corners, k, x);
     }
+    // The start of the reduced iterations: clusters as similarities (scaled rotations), the
+    // convex relaxation of the clustered problem, as step 1 is of the fine one. Its energy
+    // 3·Σ_k (ρ_k |R_k|² − 2 Re(conj(R_k) S_k)) + … with S = C R + E q is stationary where
+    // (diag(ρ) − C) R = E q.
+    Eigen::MatrixXcd relaxed = -d.coarseCoupling;
+    for (Eigen::Index t = 0; t < m; ++t)
+        relaxed(d.triangleCluster(t), d.triangleCluster(t)) += d.restSquaredNorm(t);
+    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(relaxed);
+    d.coarseSimilarity = lu.inverse();
+    if (!d.coarseSimilarity.allFinite())
+        d.coarseSimilarity.resize(0, 0); // start from the harmonic covariance instead
     return true;
 }
 
@@ -218,10 +240,16 @@ void coarseStart(const ArapPrecompute &d, Workspace &w)
     const Eigen::Index count = d.coarseCoupling.rows();
     auto &R = w.coarseRotations, &S = w.coarseCovariance, &e = w.coarseHandleTerm;
     e.noalias() = d.coarseHandles * w.positions.segment(nf, handles);
-    // From R = 0, S = E·q: the covariance of the handles' harmonic extension, a rotation
-    // estimate that already follows the pins.
+    // Start from the relaxed problem's solution (clusters as similarities), normalized by the
+    // first local step; without it (singular relaxation) from R = 0, where S = E·q is the
+    // covariance of the handles' harmonic extension. On thin quickdraw meshes of 16–20k
+    // vertices the relaxed start left 1.8–11× the converged energy, R = 0 5–330×: the
+    // clustered problem has poor local minima that plain iterations from R = 0 fall into.
     R = Eigen::VectorXcd::Ones(count);
-    S = e;
+    if (d.coarseSimilarity.rows() == count)
+        S.noalias() = d.coarseSimilarity * e;
+    else
+        S = e;
     for (int iteration = 0; iteration < kCoarseIterations; ++iteration) {
         double change = 0.0;
         for (Eigen::Index k = 0; k < count; ++k) {

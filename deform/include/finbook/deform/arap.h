@@ -154,10 +154,11 @@ struct ArapPrecompute {
     // ARAP problem is solved exactly in K dimensions before the fine passes. With the global
     // step linear in the rotations, a cluster's covariance Σ conj(r)·p is S = C·R + E·q
     // (R the K unit rotations, q the handle targets). Empty when not used.
-    Eigen::VectorXi triangleCluster; // per row of `triangles`: its cluster
-    Eigen::MatrixXcd coarseCoupling; // C, K×K, Hermitian
-    Eigen::MatrixXcd coarseHandles;  // E, K×handles
-    Eigen::VectorXd coarseThreshold; // per cluster: below this |S| the cluster collapsed
+    Eigen::VectorXi triangleCluster;   // per row of `triangles`: its cluster
+    Eigen::MatrixXcd coarseCoupling;   // C, K×K, Hermitian
+    Eigen::MatrixXcd coarseHandles;    // E, K×handles
+    Eigen::VectorXd coarseThreshold;   // per cluster: below this |S| the cluster collapsed
+    Eigen::MatrixXcd coarseSimilarity; // (diag(ρ) − C)⁻¹, K×K: the relaxed start (or empty)
 };
 
 // relativeResidual: largest ‖Ax − b‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞) over the linear solves of one
