@@ -129,18 +129,10 @@ Eigen::VectorXi clusterTriangles(const ArapPrecompute &d, int &count)
     return cluster;
 }
 
-// Per solved vertex, the clusters of its triangles with a_k(v) = Σ conj(r) over its corners
-// in cluster k (most vertices lie in one cluster): cluster k's covariance is Σ_v a_k(v)·p(v),
-// and its rotation's share of step 2's right-hand side is 3·conj(a_k(v)) per free vertex.
-struct ClusterCorners {
-    std::vector<int> start, cluster;
-    std::vector<Complex> weight;
-};
-
-ClusterCorners clusterCorners(const ArapPrecompute &d)
+CoarseBuilder::Corners clusterCorners(const ArapPrecompute &d)
 {
     const Eigen::Index solved = d.vertexStart.size() - 1;
-    ClusterCorners c;
+    CoarseBuilder::Corners c;
     c.start.reserve(std::size_t(solved) + 1);
     c.start.push_back(0);
     for (Eigen::Index v = 0; v < solved; ++v) {
@@ -168,7 +160,7 @@ ClusterCorners clusterCorners(const ArapPrecompute &d)
 // at the origin); C(:, k) is every cluster's covariance with it, E(k, :) what the handles
 // add to cluster k's covariance (−⅓ P_kᴴ H01 through the free vertices; their own corners
 // are added by the caller).
-void coarseColumn(ArapPrecompute &d, const ClusterCorners &c, int k, Eigen::VectorXcd &x)
+void coarseColumn(ArapPrecompute &d, const CoarseBuilder::Corners &c, int k, Eigen::VectorXcd &x)
 {
     const Eigen::Index nf = d.freeCount;
     for (Eigen::Index v = 0; v < nf; ++v) {
@@ -193,45 +185,52 @@ void coarseColumn(ArapPrecompute &d, const ClusterCorners &c, int k, Eigen::Vect
 
 } // namespace
 
-bool buildCoarseRotations(ArapPrecompute &d, const std::function<bool()> &stop)
+bool CoarseBuilder::prepare(ArapPrecompute &d)
 {
     const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size(), m = d.triangles.rows();
     if (nf == 0 || m == 0)
-        return true;
+        return false;
     int count = 0;
     Eigen::VectorXi clusters = clusterTriangles(d, count);
     if (count > kMaxClusters)
-        return true;
+        return false;
     d.triangleCluster = std::move(clusters);
-    const ClusterCorners corners = clusterCorners(d);
+    m_corners = clusterCorners(d);
     d.coarseCoupling = Eigen::MatrixXcd::Zero(count, count);
     d.coarseHandles = Eigen::MatrixXcd::Zero(count, handles);
     d.coarseThreshold = Eigen::VectorXd::Zero(count);
     for (Eigen::Index t = 0; t < m; ++t)
         d.coarseThreshold(d.triangleCluster(t)) += d.collapseThreshold(t);
     for (Eigen::Index h = 0; h < handles; ++h) { // the handles' own corners
-        for (int i = corners.start[std::size_t(nf + h)]; i < corners.start[std::size_t(nf + h) + 1];
-             ++i)
-            d.coarseHandles(corners.cluster[std::size_t(i)], h) += corners.weight[std::size_t(i)];
+        const auto first = m_corners.start[std::size_t(nf + h)],
+                   last = m_corners.start[std::size_t(nf + h) + 1];
+        for (int i = first; i < last; ++i)
+            d.coarseHandles(m_corners.cluster[std::size_t(i)], h) +=
+                m_corners.weight[std::size_t(i)];
     }
-    Eigen::VectorXcd x(nf);
-    for (int k = 0; k < count; ++k) {
-        if (stop())
-            return false;
-        coarseColumn(d, corners, k, x);
-    }
+    m_count = count;
+    return true;
+}
+
+void CoarseBuilder::column(ArapPrecompute &d, int k, Eigen::VectorXcd &x) const
+{
+    x.resize(d.freeCount);
+    coarseColumn(d, m_corners, k, x);
+}
+
+void CoarseBuilder::finish(ArapPrecompute &d) const
+{
     // The start of the reduced iterations: clusters as similarities (scaled rotations), the
     // convex relaxation of the clustered problem, as step 1 is of the fine one. Its energy
     // 3·Σ_k (ρ_k |R_k|² − 2 Re(conj(R_k) S_k)) + … with S = C R + E q is stationary where
     // (diag(ρ) − C) R = E q.
     Eigen::MatrixXcd relaxed = -d.coarseCoupling;
-    for (Eigen::Index t = 0; t < m; ++t)
+    for (Eigen::Index t = 0; t < d.triangles.rows(); ++t)
         relaxed(d.triangleCluster(t), d.triangleCluster(t)) += d.restSquaredNorm(t);
     const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(relaxed);
     d.coarseSimilarity = lu.inverse();
     if (!d.coarseSimilarity.allFinite())
         d.coarseSimilarity.resize(0, 0); // start from the harmonic covariance instead
-    return true;
 }
 
 void coarseStart(const ArapPrecompute &d, Workspace &w)

@@ -49,6 +49,9 @@ struct ArapFactorization::Shared {
     std::atomic<bool> stepOneOk{false};
     std::atomic<bool> abort{false};
     std::atomic<bool> inaccurate{false};
+    CoarseBuilder coarse;
+    std::atomic<bool> coarseReady{false};
+    std::atomic<int> nextColumn{0};
 
     void sayAssembled()
     {
@@ -57,18 +60,39 @@ struct ArapFactorization::Shared {
         assembledSaid = true;
     }
 
-    // The drag pass count, and coarse rotations where the budget holds few passes: they need
-    // H00's factor and the assembled triangles, not G00, so on large meshes the helper does
-    // them while the caller factors G00.
-    bool prepareDrag(const std::function<bool()> &stop)
+    // The drag pass count, and whether coarse rotations are wanted (the budget holds few
+    // passes): then their clusters. They need H00's factor and the assembled triangles, not
+    // G00, so on large meshes the helper does them while the caller factors G00; the
+    // columns are shared (coarseColumns) and finishDrag completes them on the caller.
+    void prepareDrag()
     {
         const double budgetPasses = chooseDragPasses(d);
-        if (d.options.method != ArapMethod::Refined || !(budgetPasses < kCoarseBelowPasses))
-            return true;
-        if (!buildCoarseRotations(d, stop))
-            return false;
+        if (d.options.method == ArapMethod::Refined && budgetPasses < kCoarseBelowPasses &&
+            coarse.prepare(d))
+            coarseReady = true;
+    }
+
+    // Claims coarse columns until none is left (either thread; each column once).
+    void coarseColumns(const std::function<bool()> &stop)
+    {
+        if (!coarseReady)
+            return;
+        Eigen::VectorXcd x;
+        for (int k = nextColumn++; k < coarse.count(); k = nextColumn++) {
+            if (abort || stop()) {
+                abort = true;
+                return;
+            }
+            coarse.column(d, k, x);
+        }
+    }
+
+    void finishDrag()
+    {
+        if (!coarseReady)
+            return;
+        coarse.finish(d);
         chooseDragPasses(d);
-        return true;
     }
 
     void release(bool ok)
@@ -123,8 +147,10 @@ ArapFactorization::ArapFactorization(ArapPrecompute &d)
         try {
             s.factorStepTwo();
             s.assembled.wait();
-            if (s.stepTwoOk && !s.abort && !s.prepareDrag([&s] { return s.abort.load(); }))
-                s.abort = true;
+            if (s.stepTwoOk && !s.abort) {
+                s.prepareDrag();
+                s.coarseColumns([] { return false; });
+            }
             s.stepOneFactored.wait();
             if (s.stepTwoOk && s.stepOneOk && !s.abort)
                 s.basisColumns(1, 2, [] { return false; });
@@ -158,8 +184,9 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
     const bool parallel = m_helper.joinable();
     if (!parallel) {
         s.factorStepTwo();
-        if (s.stepTwoOk && !s.prepareDrag(stop))
-            return cancelledError();
+        if (s.stepTwoOk)
+            s.prepareDrag();
+        s.coarseColumns(stop);
     }
     const Eigen::Index handles = s.d.handleEntry.size();
     s.d.stepOneBasis.resize(s.d.freeCount, handles <= kMaxBasisHandles ? handles : 0);
@@ -176,6 +203,8 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
         s.release(ok);
         if (ok && (s.stepTwoOk || parallel))
             s.basisColumns(0, parallel ? 2 : 1, stop);
+        if (parallel) // help with the coarse columns the helper has not claimed yet
+            s.coarseColumns(stop);
     }
     if (parallel)
         m_helper.join();
@@ -188,6 +217,7 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
     if (s.inaccurate)
         return makeError(DeformErrorCode::SolveFailed,
                          "the similarity basis could not be computed accurately");
+    s.finishDrag();
     return std::nullopt;
 }
 

@@ -42,9 +42,9 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
 // The two factorizations are independent, so for large systems they run side by side:
 // constructing this starts factoring and probing H00 on a helper thread (H00 and its norm
 // must be ready) while the caller assembles G00; finish() factors G00 while the helper
-// chooses the drag passes and builds coarse rotations (chooseDragPasses,
-// buildCoarseRotations), then both compute the step-1 basis. Small systems do all of it in
-// finish(), on the caller.
+// chooses the drag passes and starts on coarse rotations (chooseDragPasses, CoarseBuilder),
+// then both share the rest of the coarse columns and the step-1 basis. Small systems do all
+// of it in finish(), on the caller.
 class ArapFactorization {
 public:
     explicit ArapFactorization(ArapPrecompute &d);

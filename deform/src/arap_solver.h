@@ -96,9 +96,25 @@ constexpr int kCoarseBelowPasses = 8;
 // Reduced iterations per drag event at most (K² work each).
 constexpr int kCoarseIterations = 200;
 
-// Precompute side of coarse rotations: clusters the solved triangles and fills C and E (one
-// step-2 back-substitution per cluster). Polls `stop` between clusters; false when stopped.
-bool buildCoarseRotations(ArapPrecompute &d, const std::function<bool()> &stop);
+// Precompute side of coarse rotations, in steps so that two threads can share the columns
+// (one step-2 back-substitution each): prepare() clusters the solved triangles and sizes C
+// and E (false: not used, too many clusters); column(k) fills column k of C and row k of E,
+// so distinct k may run at once; finish() after all columns.
+class CoarseBuilder {
+public:
+    struct Corners { // per solved vertex: its clusters and Σ conj(r) over its corners in each
+        std::vector<int> start, cluster;
+        std::vector<Complex> weight;
+    };
+    bool prepare(ArapPrecompute &d);
+    int count() const { return m_count; }
+    void column(ArapPrecompute &d, int k, Eigen::VectorXcd &x) const;
+    void finish(ArapPrecompute &d) const;
+
+private:
+    Corners m_corners;
+    int m_count = 0;
+};
 
 // Drag start with coarse rotations: solves the clustered problem from the handles in
 // w.positions, then one global step with those rotations into w.positions.head(freeCount).
