@@ -36,7 +36,7 @@ double chooseDragPasses(ArapPrecompute &d)
         1e-6 * (kTriangleNs * double(d.triangles.rows()) + kFactorEntryNs * factorEntries +
                 kFreeVertexNs * double(d.freeCount));
     const double stepOneNs = d.handleEntry.size() <= kMaxBasisHandles
-                                 ? kBasisEntryNs * double(d.stepOneBasis.size())
+                                 ? kBasisEntryNs * double(d.freeCount * d.handleEntry.size())
                                  : kComplexFactorEntryNs * factorEntries;
     const double vertexMs = 1e-6 * kVertexNs * double(d.rest.size());
     const double stepOneMs = 1e-6 * stepOneNs;

@@ -445,6 +445,11 @@ void TestArapRefine::largeMeshDragStartsFromCoarseRotations()
         QVERIFY2(maxRowDistance(U, expected) <= 1e-9 * 130.0,
                  qPrintable(QString::number(maxRowDistance(U, expected))));
     }
+    // Every pin on one spot collapses every cluster: finite, and the pins still hold.
+    const Eigen::MatrixX2d onePoint = Eigen::MatrixX2d::Constant(bend.b.size(), 2, 0.5);
+    const Eigen::MatrixX2d collapsed = solved(*data, onePoint, ArapStage::Drag);
+    QVERIFY(collapsed.allFinite() && collapsed.rows() == g.V.rows());
+    QCOMPARE(finbook::test::rowsOf(collapsed, bend.b), onePoint);
 }
 
 void TestArapRefine::finalSolveCanBeCancelled()
