@@ -1,4 +1,4 @@
-#include "arap_internal.h"
+#include "arap_solver.h"
 
 #include <atomic>
 #include <exception>
@@ -7,14 +7,6 @@
 
 namespace finbook::deform::detail {
 namespace {
-
-// Dense step-1 basis columns cost freeCount complex numbers each, and applying one costs
-// about as much as streaming 1/40 of the step-1 factor; past this many handles a per-event
-// back-substitution is cheaper in both memory and time.
-constexpr Eigen::Index kMaxBasisHandles = 32;
-// Below this many free vertices the whole factorization takes a few milliseconds and a second
-// thread costs more in start-up and scheduling (especially on a busy machine) than it saves.
-constexpr Eigen::Index kParallelFreeVertices = 8000;
 
 DeformError cancelledError()
 {
@@ -50,11 +42,58 @@ struct ArapFactorization::Shared {
     {}
     ArapPrecompute &d;
     std::latch stepOneFactored{1};
-    bool released = false; // stepOneFactored was counted down (calling thread only)
+    std::latch assembled{1};    // the caller finished assembleArapSystems
+    bool released = false;      // stepOneFactored was counted down (calling thread only)
+    bool assembledSaid = false; // assembled was counted down (calling thread only)
     bool stepTwoOk = false;
     std::atomic<bool> stepOneOk{false};
     std::atomic<bool> abort{false};
     std::atomic<bool> inaccurate{false};
+    CoarseBuilder coarse;
+    std::atomic<bool> coarseReady{false};
+    std::atomic<int> nextColumn{0};
+
+    void sayAssembled()
+    {
+        if (!assembledSaid)
+            assembled.count_down();
+        assembledSaid = true;
+    }
+
+    // The drag pass count, and whether coarse rotations are wanted (the budget holds few
+    // passes): then their clusters. They need H00's factor and the assembled triangles, not
+    // G00, so on large meshes the helper does them while the caller factors G00; the
+    // columns are shared (coarseColumns) and finishDrag completes them on the caller.
+    void prepareDrag()
+    {
+        const double budgetPasses = chooseDragPasses(d);
+        if (d.options.method == ArapMethod::Refined && budgetPasses < kCoarseBelowPasses &&
+            coarse.prepare(d))
+            coarseReady = true;
+    }
+
+    // Claims coarse columns until none is left (either thread; each column once).
+    void coarseColumns(const std::function<bool()> &stop)
+    {
+        if (!coarseReady)
+            return;
+        Eigen::VectorXcd x;
+        for (int k = nextColumn++; k < coarse.count(); k = nextColumn++) {
+            if (abort || stop()) {
+                abort = true;
+                return;
+            }
+            coarse.column(d, k, x);
+        }
+    }
+
+    void finishDrag()
+    {
+        if (!coarseReady)
+            return;
+        coarse.finish(d);
+        chooseDragPasses(d);
+    }
 
     void release(bool ok)
     {
@@ -107,6 +146,11 @@ ArapFactorization::ArapFactorization(ArapPrecompute &d)
         Shared &s = *m_shared;
         try {
             s.factorStepTwo();
+            s.assembled.wait();
+            if (s.stepTwoOk && !s.abort) {
+                s.prepareDrag();
+                s.coarseColumns([] { return false; });
+            }
             s.stepOneFactored.wait();
             if (s.stepTwoOk && s.stepOneOk && !s.abort)
                 s.basisColumns(1, 2, [] { return false; });
@@ -122,6 +166,7 @@ ArapFactorization::~ArapFactorization()
     if (!m_helper.joinable())
         return;
     m_shared->abort = true;
+    m_shared->sayAssembled();
     if (!m_shared->released)
         m_shared->release(false);
     m_helper.join();
@@ -131,11 +176,18 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
 {
     const std::function<bool()> stop = [&cancelled] { return cancelled && cancelled(); };
     Shared &s = *m_shared;
-    if (s.d.freeCount == 0) // every vertex of every solved component is pinned
+    s.sayAssembled();
+    if (s.d.freeCount == 0) { // every vertex of every solved component is pinned
+        chooseDragPasses(s.d);
         return std::nullopt;
+    }
     const bool parallel = m_helper.joinable();
-    if (!parallel)
+    if (!parallel) {
         s.factorStepTwo();
+        if (s.stepTwoOk)
+            s.prepareDrag();
+        s.coarseColumns(stop);
+    }
     const Eigen::Index handles = s.d.handleEntry.size();
     s.d.stepOneBasis.resize(s.d.freeCount, handles <= kMaxBasisHandles ? handles : 0);
     if (stop()) {
@@ -151,6 +203,8 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
         s.release(ok);
         if (ok && (s.stepTwoOk || parallel))
             s.basisColumns(0, parallel ? 2 : 1, stop);
+        if (parallel) // help with the coarse columns the helper has not claimed yet
+            s.coarseColumns(stop);
     }
     if (parallel)
         m_helper.join();
@@ -163,6 +217,7 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
     if (s.inaccurate)
         return makeError(DeformErrorCode::SolveFailed,
                          "the similarity basis could not be computed accurately");
+    s.finishDrag();
     return std::nullopt;
 }
 

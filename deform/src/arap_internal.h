@@ -41,8 +41,10 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
 
 // The two factorizations are independent, so for large systems they run side by side:
 // constructing this starts factoring and probing H00 on a helper thread (H00 and its norm
-// must be ready) while the caller assembles G00; finish() factors G00 and computes the
-// step-1 basis on both threads. Small systems do all of it in finish(), on the caller.
+// must be ready) while the caller assembles G00; finish() factors G00 while the helper
+// chooses the drag passes and starts on coarse rotations (chooseDragPasses, CoarseBuilder),
+// then both share the rest of the coarse columns and the step-1 basis. Small systems do all
+// of it in finish(), on the caller.
 class ArapFactorization {
 public:
     explicit ArapFactorization(ArapPrecompute &d);
@@ -109,6 +111,15 @@ double relativeResidual(const R &residual, double normA, const X &x, const B &rh
     const double r = maxAbs(residual);
     return scale > 0.0 ? r / scale : r;
 }
+
+// Dense step-1 basis columns cost freeCount complex numbers each, and applying one costs
+// about as much as streaming 1/40 of the step-1 factor; past this many handles a per-event
+// back-substitution is cheaper in both memory and time.
+constexpr Eigen::Index kMaxBasisHandles = 32;
+
+// Below this many free vertices the whole factorization takes a few milliseconds and a second
+// thread costs more in start-up and scheduling (especially on a busy machine) than it saves.
+constexpr Eigen::Index kParallelFreeVertices = 8000;
 
 // Solves whose relative residual exceeds this are reported as SolveFailed. Cholesky on these
 // well-conditioned SPD systems lands around 1e-16; 1e-8 leaves room for 100k-vertex meshes.

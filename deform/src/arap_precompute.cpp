@@ -173,11 +173,12 @@ ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::Matr
     const std::vector<int> internal = numberVertices(V, F, b, c, *d);
     if (stop())
         return cancelledError();
-    detail::ArapFactorization factorization(*d); // H00 is factored while G00 is assembled
+    // H00 is factored while G00 is assembled, and the drag set-up (see
+    // ArapFactorization::finish) done while G00 is factored.
+    detail::ArapFactorization factorization(*d);
     detail::assembleArapSystems(V, F, c.solvedTriangles, internal, *d);
     if (auto error = factorization.finish(cancelled))
         return unexpected(std::move(*error));
-    detail::chooseDragPasses(*d);
     return std::shared_ptr<const ArapPrecompute>(std::move(d));
 }
 

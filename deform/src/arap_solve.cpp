@@ -243,9 +243,11 @@ ArapSolveResult refinedSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc
     if (auto error = detail::beginSolve(d, bc, w))
         return unexpected(std::move(*error));
     ArapSolveReport report;
-    if (auto error = detail::similarityStep(d, w, report, false))
-        return unexpected(std::move(*error));
     const bool final = stage == ArapStage::Final;
+    if (!final && d.triangleCluster.size() > 0)
+        detail::coarseStart(d, w);
+    else if (auto error = detail::similarityStep(d, w, report, false))
+        return unexpected(std::move(*error));
     const int passes = final ? std::max(1, d.options.finalPassCap) : d.dragPasses;
     const double tolerance = final ? d.options.finalTolerance * d.objectSize : 0.0;
     // Drag: the flip repair may add an eighth of the passes (only for poses with flipped

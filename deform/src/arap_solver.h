@@ -23,8 +23,9 @@ struct Workspace {
     Eigen::VectorXcd trialRotations; // the same for an extrapolated candidate
     // Refinement (Anderson acceleration) state, freeCount rows each.
     Eigen::VectorXcd iterate, mapped, mappedBefore, residualBefore;
-    Eigen::MatrixXcd mappedSteps, residualSteps; // freeCount × history
-    std::vector<int> region, mark;               // flip repair
+    Eigen::MatrixXcd mappedSteps, residualSteps;                          // freeCount × history
+    std::vector<int> region, mark;                                        // flip repair
+    Eigen::VectorXcd coarseRotations, coarseCovariance, coarseHandleTerm; // K each
 };
 
 Workspace &workspace();
@@ -84,8 +85,40 @@ void placeFollowers(const ArapPrecompute &d, Eigen::VectorXcd &W);
 void buildFollowers(const Eigen::VectorXi &componentLabel, const std::vector<bool> &pinned,
                     ArapPrecompute &d);
 
-// Precompute side of the cost model: d.estimatedPassMs and d.dragPasses.
-void chooseDragPasses(ArapPrecompute &d);
+// Precompute side of the cost model: d.estimatedPassMs and d.dragPasses. Returns how many
+// passes the budget holds before the options' minimum and maximum apply.
+double chooseDragPasses(ArapPrecompute &d);
+
+// When the drag budget holds fewer passes than this (large meshes), a precompute adds coarse
+// rotations: from about 8 passes on, step 1 and the passes alone reach the drag target (1.3×
+// the converged energy); the bars of `finbook-bench arap` needed 3–4 at 20k vertices.
+constexpr int kCoarseBelowPasses = 8;
+// Reduced iterations per drag event at most (K² work each).
+constexpr int kCoarseIterations = 200;
+
+// Precompute side of coarse rotations, in steps so that two threads can share the columns
+// (one step-2 back-substitution each): prepare() clusters the solved triangles and sizes C
+// and E (false: not used, too many clusters); column(k) fills column k of C and row k of E,
+// so distinct k may run at once; finish() after all columns.
+class CoarseBuilder {
+public:
+    struct Corners { // per solved vertex: its clusters and Σ conj(r) over its corners in each
+        std::vector<int> start, cluster;
+        std::vector<Complex> weight;
+    };
+    bool prepare(ArapPrecompute &d);
+    int count() const { return m_count; }
+    void column(ArapPrecompute &d, int k, Eigen::VectorXcd &x) const;
+    void finish(ArapPrecompute &d) const;
+
+private:
+    Corners m_corners;
+    int m_count = 0;
+};
+
+// Drag start with coarse rotations: solves the clustered problem from the handles in
+// w.positions, then one global step with those rotations into w.positions.head(freeCount).
+void coarseStart(const ArapPrecompute &d, Workspace &w);
 
 // Writes internal-order positions into U (n×2, original order).
 void scatterPositions(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::MatrixX2d &U);

@@ -16,12 +16,13 @@ namespace finbook::bench {
 // the held left end: a bend). Solves it the paper's way (two steps), as a drag event and as
 // a stored pose, and a converged reference (tolerance 1e-10 of the size, flip repair off).
 // Columns: energy ratios to the reference, area change in %, flipped triangles, times in ms
-// (fastest of several runs), passes run.
+// (fastest of several runs), passes run, drag_over_two_step (drag time over the two steps').
 QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees);
 
 // Meshes a file of ../shared/data (Quick, Draw! "strokes" or shape "contours") with the
 // geometry layer's defaults, as the app would; nullopt with `error` set when it cannot.
-std::optional<std::pair<Eigen::MatrixX2d, Eigen::MatrixX3i>> meshFile(const QString &path,
-                                                                      QString &error);
+// `density` is MeshOptions::density: 3.65 gives about 13× the vertices (about 20k).
+std::optional<std::pair<Eigen::MatrixX2d, Eigen::MatrixX3i>>
+meshFile(const QString &path, QString &error, double density = 1.0);
 
 } // namespace finbook::bench

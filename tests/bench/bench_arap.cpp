@@ -1,9 +1,11 @@
 // finbook-bench arap: precompute and per-drag-event cost of the ARAP deformer on grid meshes,
 // against the floor of one step-2 back-substitution, plus pin-to-strokes latency and the
 // refined method's drag event (update_ms is the paper's two steps, drag_ms the refined drag
-// stage; *_min_ms the fastest event, less disturbed by a busy machine); then the
-// pose quality of a 4:1 bar bent 60° (see arap_quality.h). With --quality FILE... the same
-// quality columns for real drawings, each meshed as the app meshes it and bent 45°.
+// stage, drag_over_update their ratio; *_min_ms the fastest event, less disturbed by a busy
+// machine); then the pose quality of a 4:1 bar bent 60° (see arap_quality.h; there
+// drag_over_two_step is the same ratio for that pose). With --quality FILE... the same
+// quality columns for real drawings, each meshed as the app meshes it and bent 45° (with
+// --density D at that mesh density: 3.65 for about 20k vertices).
 #include "../deform/grid_mesh.h"
 #include "arap_quality.h"
 #include "bench.h"
@@ -151,12 +153,14 @@ int runSize(int vertices)
                 "\"precompute_ms\":%.3f,\"update_ms\":%.4f,\"floor_ms\":%.4f,\"ratio\":%.2f,"
                 "\"floor_complex_ms\":%.4f,\"floor_kernel_ms\":%.4f,\"ratio_vs_kernel\":%.2f,"
                 "\"stroke_points\":5000,\"end_to_end_ms\":%.4f,\"drag_passes\":%d,"
-                "\"drag_ms\":%.4f,\"drag_min_ms\":%.4f,\"update_min_ms\":%.4f}\n",
+                "\"drag_ms\":%.4f,\"drag_min_ms\":%.4f,\"update_min_ms\":%.4f,"
+                "\"drag_over_update\":%.2f}\n",
                 (long long)g.V.rows(), (long long)g.F.rows(), precomputeMs, update,
                 floor.realPairMs, update / floor.realPairMs, floor.complexMs, floor.kernelMs,
                 update / floor.kernelMs, finbook::bench::median(endToEnd), data->dragPasses,
                 finbook::bench::median(drags), *std::min_element(drags.begin(), drags.end()),
-                *std::min_element(updates.begin(), updates.end()));
+                *std::min_element(updates.begin(), updates.end()),
+                finbook::bench::median(drags) / update);
     std::fflush(stdout);
     return 0;
 }
@@ -178,12 +182,18 @@ void runBar(int vertices)
     printRow(row);
 }
 
-int runQuality(const QStringList &files)
+int runQuality(QStringList files)
 {
+    double density = 1.0;
+    if (const int at = int(files.indexOf(QStringLiteral("--density")));
+        at >= 0 && at + 1 < files.size()) {
+        density = std::clamp(files[at + 1].toDouble(), 0.01, 100.0);
+        files.remove(at, 2);
+    }
     int failures = 0;
     for (const QString &path : files) {
         QString error;
-        const auto mesh = finbook::bench::meshFile(path, error);
+        const auto mesh = finbook::bench::meshFile(path, error, density);
         QJsonObject row = mesh ? finbook::bench::measureBend(mesh->first, mesh->second, 45.0)
                                : QJsonObject{{QStringLiteral("error"), error}};
         row.insert(QStringLiteral("file"), QFileInfo(path).fileName());
@@ -220,5 +230,6 @@ int benchArap(const QStringList &args)
 
 } // namespace
 
-FINBOOK_BENCH("arap", "[--sizes 2000,20000,100000] [--bars 2000,20000] | --quality FILE...",
+FINBOOK_BENCH("arap",
+              "[--sizes 2000,20000,100000] [--bars 2000,20000] | --quality [--density D] FILE...",
               benchArap);

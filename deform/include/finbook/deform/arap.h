@@ -58,11 +58,11 @@ struct ArapOptions {
     // Used by ArapMethod::TwoStep and by the three-argument arapSolve.
     int extraPasses = 0;
     ArapMethod method = ArapMethod::Refined;
-    // Refined, Drag: per-event time budget in milliseconds. arapPrecompute turns it into a
-    // pass count from the mesh size (a cost model, never a clock), so a drag pose is a
-    // deterministic function of the pins; see ArapPrecompute::dragPasses.
+    // Refined, Drag: per-event budget in ms (or twice the modelled two steps, if more). It
+    // becomes a pass count from the mesh size (a cost model, never a clock), so a drag pose
+    // is a deterministic function of the pins; see ArapPrecompute::dragPasses.
     double dragBudgetMs = 4.0;
-    // Refined, Drag: at least / at most this many passes, whatever the budget allows. Below
+    // Refined, Drag: at least / at most this many passes (a coarse start counts as one). Below
     // 2 a drag pose is barely better than the paper's; about 30 fit 4 ms at 2k vertices.
     int minDragPasses = 2;
     int maxDragPasses = 32;
@@ -96,7 +96,7 @@ struct ArapPrecompute {
     using RealFactor = Eigen::SimplicialLLT<RealMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>>;
 
     ArapOptions options;
-    // Refined, Drag: local/global passes after step 1 per drag event, from options and the
+    // Refined, Drag: passes after step 1 (or coarse start) per drag event, from options and the
     // cost model below; estimatedPassMs is that model's cost of one pass on the reference
     // machine (the 2-core development machine): Final costs about that per pass it runs.
     int dragPasses = 0;
@@ -148,6 +148,17 @@ struct ArapPrecompute {
     // the anchor vertex (the pinned component's vertex nearest to the group at rest).
     Eigen::VectorXi rigidFollowGroup;
     Eigen::VectorXi followAnchor;
+
+    // Coarse rotations (Refined, Drag, when the budget allows only a few passes): the solved
+    // triangles are grouped into K compact clusters that share one rotation, and that reduced
+    // ARAP problem is solved exactly in K dimensions before the fine passes. With the global
+    // step linear in the rotations, a cluster's covariance Σ conj(r)·p is S = C·R + E·q
+    // (R the K unit rotations, q the handle targets). Empty when not used.
+    Eigen::VectorXi triangleCluster;   // per row of `triangles`: its cluster
+    Eigen::MatrixXcd coarseCoupling;   // C, K×K, Hermitian
+    Eigen::MatrixXcd coarseHandles;    // E, K×handles
+    Eigen::VectorXd coarseThreshold;   // per cluster: below this |S| the cluster collapsed
+    Eigen::MatrixXcd coarseSimilarity; // (diag(ρ) − C)⁻¹, K×K: the relaxed start (or empty)
 };
 
 // relativeResidual: largest ‖Ax − b‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞) over the linear solves of one
@@ -186,7 +197,7 @@ ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc
 // The pose for `stage` with data.options.method (pure function of data and bc: the same
 // bits for the same pins and precompute, on any thread, whatever was solved before):
 //   TwoStep            steps 1, 2a, 2b + options.extraPasses, for both stages;
-//   Refined, Drag      step 1 + data.dragPasses accelerated passes, flip repair;
+//   Refined, Drag      step 1 or coarse rotations + dragPasses accelerated passes, flip fix;
 //   Refined, Final     step 1 + accelerated passes until no vertex moves more than
 //                      options.finalTolerance × objectSize (or finalPassCap), flip repair.
 // Final costs about estimatedPassMs per pass; drawings of ~2k vertices took 17–400 passes
