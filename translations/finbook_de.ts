@@ -825,7 +825,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="77"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -936,217 +936,217 @@
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="42"/>
         <source>unknown %1 %2</source>
         <translation>unbekannter %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="45"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>die Datei enthält Daten („%1“), die diese Finbook-Version nicht kennt, und wurde daher wohl mit einer neueren Finbook-Version erstellt; bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="65"/>
         <source>more problems were found and repaired the same way</source>
         <translation>weitere Probleme wurden gefunden und auf dieselbe Weise behoben</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="74"/>
         <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
         <translation>die Datei beschreibt mehr, als eine Datei ihrer Größe enthalten kann (zum Öffnen wären mehr als %1 MB Arbeitsspeicher nötig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="92"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
         <source>the file is empty</source>
         <translation>die Datei ist leer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
         <source>the file header</source>
         <translation>der Dateikopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
         <source>it is not a Finbook animation</source>
         <translation>die Datei ist keine Finbook-Animation</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="100"/>
         <source>the file ends inside its header</source>
         <translation>die Datei endet mitten im Dateikopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="99"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="101"/>
         <source>the format version</source>
         <translation>die Formatversion</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="102"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="104"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>die Datei wurde mit einer neueren Finbook-Version erstellt (Dateiformat %1; diese Version liest bis %2); bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="109"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="111"/>
         <source>the format version %1 does not exist</source>
         <translation>die Formatversion %1 gibt es nicht</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="128"/>
         <source>the file&apos;s section list</source>
         <translation>die Abschnittsliste der Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="131"/>
         <source>the file ends before its end</source>
         <translation>die Datei endet vorzeitig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="133"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
         <source>a section header</source>
         <translation>ein Abschnittskopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
         <source>section %1</source>
         <translation>Abschnitt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
         <source>the file&apos;s end is damaged</source>
         <translation>das Ende der Datei ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="156"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="160"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>die Datei endet mitten in diesem Abschnitt; sein vorhandener Inhalt wird gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>a section</source>
         <translation>ein Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>die Datei endet vor der Prüfsumme dieses Abschnitts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
         <source>a section checksum</source>
         <translation>eine Abschnittsprüfsumme</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>seine Prüfsumme stimmt nicht, seine Bytes wurden also nach dem Speichern verändert</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
         <source>the end marker</source>
         <translation>die Endmarke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="181"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
         <source>the file</source>
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="191"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="196"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="227"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="228"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="240"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="277"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
@@ -1426,22 +1426,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="340"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="344"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="354"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -1977,12 +1977,12 @@
         <translation>Am steifsten (+3 Durchgänge)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="110"/>
+        <location filename="../ui/src/deform_actions.cpp" line="111"/>
         <source>Mesh density </source>
         <translation>Netzdichte </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="111"/>
+        <location filename="../ui/src/deform_actions.cpp" line="112"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Wie fein das Verformungsnetz des aktuellen Objekts ist (1 = Standard)</translation>
     </message>
@@ -2966,89 +2966,94 @@
 <context>
     <name>finbook::ui::ObjectActions</name>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="27"/>
+        <location filename="../ui/src/object_actions.cpp" line="28"/>
         <source>&amp;New Object</source>
         <translation>&amp;Neues Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="29"/>
+        <location filename="../ui/src/object_actions.cpp" line="30"/>
         <source>&amp;Delete Object</source>
         <translation>Objekt &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="30"/>
+        <location filename="../ui/src/object_actions.cpp" line="31"/>
         <source>&amp;Merge Objects</source>
         <translation>Objekte &amp;zusammenführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="33"/>
+        <location filename="../ui/src/object_actions.cpp" line="34"/>
         <source>Move &amp;Selection to Object</source>
         <translation>&amp;Auswahl in Objekt verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="34"/>
+        <location filename="../ui/src/object_actions.cpp" line="35"/>
         <source>Bring &amp;Forward</source>
         <translation>Nach &amp;vorne bringen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="36"/>
+        <location filename="../ui/src/object_actions.cpp" line="37"/>
         <source>Send &amp;Backward</source>
         <translation>Nach &amp;hinten stellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="38"/>
+        <location filename="../ui/src/object_actions.cpp" line="39"/>
         <source>&amp;Visible</source>
         <translation>&amp;Sichtbar</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="39"/>
+        <location filename="../ui/src/object_actions.cpp" line="40"/>
         <source>&amp;Locked</source>
         <translation>&amp;Gesperrt</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="42"/>
+        <location filename="../ui/src/object_actions.cpp" line="43"/>
         <source>New object above the current one</source>
         <translation>Neues Objekt über dem aktuellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="43"/>
+        <location filename="../ui/src/object_actions.cpp" line="44"/>
         <source>Merge the selected objects, or the current one into the one below</source>
         <translation>Die ausgewählten Objekte zusammenführen oder das aktuelle mit dem darunterliegenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="44"/>
+        <location filename="../ui/src/object_actions.cpp" line="45"/>
         <source>Move the selected strokes to another object</source>
         <translation>Die ausgewählten Striche in ein anderes Objekt verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="46"/>
+        <location filename="../ui/src/object_actions.cpp" line="47"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="47"/>
+        <location filename="../ui/src/object_actions.cpp" line="48"/>
         <source>Delete</source>
         <translation>Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="48"/>
+        <location filename="../ui/src/object_actions.cpp" line="49"/>
         <source>Merge</source>
         <translation>Zusammenführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="49"/>
+        <location filename="../ui/src/object_actions.cpp" line="50"/>
         <source>Move To</source>
         <translation>Verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="118"/>
+        <location filename="../ui/src/object_actions.cpp" line="119"/>
         <source>Object %1</source>
         <translation>Objekt %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="170"/>
+        <location filename="../ui/src/object_actions.cpp" line="171"/>
         <source>Merge Objects</source>
         <translation>Objekte zusammenführen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="193"/>
+        <source>Move Strokes to Object</source>
+        <translation>Striche in Objekt verschieben</translation>
     </message>
 </context>
 <context>

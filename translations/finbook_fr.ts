@@ -825,7 +825,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="77"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
         <source>%1: %2</source>
         <translation>%1&#xa0;: %2</translation>
     </message>
@@ -936,217 +936,217 @@
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="42"/>
         <source>unknown %1 %2</source>
         <translation>%1 %2 de type inconnu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="45"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>il contient des données («&#xa0;%1&#xa0;») que cette version de Finbook ne connaît pas&#xa0;; il a sans doute été créé par une version plus récente. Mettez Finbook à jour pour l&apos;ouvrir</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="65"/>
         <source>more problems were found and repaired the same way</source>
         <translation>d&apos;autres problèmes ont été trouvés et réparés de la même façon</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="74"/>
         <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
         <translation>il décrit plus de données qu&apos;un fichier de cette taille ne peut en contenir (l&apos;ouvrir demanderait plus de %1&#xa0;Mo de mémoire)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="92"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
         <source>the file is empty</source>
         <translation>le fichier est vide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
         <source>the file header</source>
         <translation>l&apos;en-tête du fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
         <source>it is not a Finbook animation</source>
         <translation>ce n&apos;est pas une animation Finbook</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="100"/>
         <source>the file ends inside its header</source>
         <translation>le fichier s&apos;arrête au milieu de son en-tête</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="99"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="101"/>
         <source>the format version</source>
         <translation>la version du format</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="102"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="104"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>il a été créé par une version plus récente de Finbook (format de fichier %1&#xa0;; cette version lit jusqu&apos;au format %2). Mettez Finbook à jour pour l&apos;ouvrir</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="109"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="111"/>
         <source>the format version %1 does not exist</source>
         <translation>la version de format %1 n&apos;existe pas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="128"/>
         <source>the file&apos;s section list</source>
         <translation>la liste des sections du fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="131"/>
         <source>the file ends before its end</source>
         <translation>le fichier s&apos;arrête avant sa fin prévue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="133"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
         <source>a section header</source>
         <translation>un en-tête de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
         <source>section %1</source>
         <translation>section %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
         <source>the file&apos;s end is damaged</source>
         <translation>la fin du fichier est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="156"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>le fichier s&apos;arrête au milieu de cette section (%1 octets annoncés, %2 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="160"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>le fichier s&apos;arrête au milieu de cette section&#xa0;; ce qu&apos;elle contient est lu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>a section</source>
         <translation>une section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>le fichier s&apos;arrête avant la somme de contrôle de cette section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
         <source>a section checksum</source>
         <translation>une somme de contrôle de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>sa somme de contrôle ne correspond pas, ses octets ont donc changé après l&apos;enregistrement</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
         <source>the end marker</source>
         <translation>le marqueur de fin</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="181"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
         <source>the file</source>
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="191"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="196"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="227"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="228"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="240"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="277"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
@@ -1426,22 +1426,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="340"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="344"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="354"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -1977,12 +1977,12 @@
         <translation>Le plus rigide (+3 passes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="110"/>
+        <location filename="../ui/src/deform_actions.cpp" line="111"/>
         <source>Mesh density </source>
         <translation>Densité du maillage </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="111"/>
+        <location filename="../ui/src/deform_actions.cpp" line="112"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Finesse du maillage de déformation de l&apos;objet courant (1 = par défaut)</translation>
     </message>
@@ -2966,89 +2966,94 @@
 <context>
     <name>finbook::ui::ObjectActions</name>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="27"/>
+        <location filename="../ui/src/object_actions.cpp" line="28"/>
         <source>&amp;New Object</source>
         <translation>&amp;Nouvel objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="29"/>
+        <location filename="../ui/src/object_actions.cpp" line="30"/>
         <source>&amp;Delete Object</source>
         <translation>&amp;Supprimer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="30"/>
+        <location filename="../ui/src/object_actions.cpp" line="31"/>
         <source>&amp;Merge Objects</source>
         <translation>&amp;Fusionner les objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="33"/>
+        <location filename="../ui/src/object_actions.cpp" line="34"/>
         <source>Move &amp;Selection to Object</source>
         <translation>&amp;Déplacer la sélection vers un objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="34"/>
+        <location filename="../ui/src/object_actions.cpp" line="35"/>
         <source>Bring &amp;Forward</source>
         <translation>&amp;Monter</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="36"/>
+        <location filename="../ui/src/object_actions.cpp" line="37"/>
         <source>Send &amp;Backward</source>
         <translation>D&amp;escendre</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="38"/>
+        <location filename="../ui/src/object_actions.cpp" line="39"/>
         <source>&amp;Visible</source>
         <translation>&amp;Visible</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="39"/>
+        <location filename="../ui/src/object_actions.cpp" line="40"/>
         <source>&amp;Locked</source>
         <translation>Ve&amp;rrouillé</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="42"/>
+        <location filename="../ui/src/object_actions.cpp" line="43"/>
         <source>New object above the current one</source>
         <translation>Nouvel objet au-dessus de l&apos;objet courant</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="43"/>
+        <location filename="../ui/src/object_actions.cpp" line="44"/>
         <source>Merge the selected objects, or the current one into the one below</source>
         <translation>Fusionner les objets sélectionnés, ou l&apos;objet courant avec celui du dessous</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="44"/>
+        <location filename="../ui/src/object_actions.cpp" line="45"/>
         <source>Move the selected strokes to another object</source>
         <translation>Déplacer les traits sélectionnés vers un autre objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="46"/>
+        <location filename="../ui/src/object_actions.cpp" line="47"/>
         <source>New</source>
         <translation>Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="47"/>
+        <location filename="../ui/src/object_actions.cpp" line="48"/>
         <source>Delete</source>
         <translation>Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="48"/>
+        <location filename="../ui/src/object_actions.cpp" line="49"/>
         <source>Merge</source>
         <translation>Fusionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="49"/>
+        <location filename="../ui/src/object_actions.cpp" line="50"/>
         <source>Move To</source>
         <translation>Déplacer vers</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="118"/>
+        <location filename="../ui/src/object_actions.cpp" line="119"/>
         <source>Object %1</source>
         <translation>Objet %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="170"/>
+        <location filename="../ui/src/object_actions.cpp" line="171"/>
         <source>Merge Objects</source>
         <translation>Fusionner les objets</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="193"/>
+        <source>Move Strokes to Object</source>
+        <translation>Déplacer les traits vers un objet</translation>
     </message>
 </context>
 <context>

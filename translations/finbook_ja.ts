@@ -824,7 +824,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="77"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -935,217 +935,217 @@
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="42"/>
         <source>unknown %1 %2</source>
         <translation>不明な%1 %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="45"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>このバージョンの Finbook が知らないデータ（「%1」）が含まれているため、より新しい Finbook で作成されたと思われます。開くには Finbook を更新してください</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="65"/>
         <source>more problems were found and repaired the same way</source>
         <translation>ほかにも問題が見つかり、同じ方法で修復しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="74"/>
         <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
         <translation>このサイズのファイルに収まる量を超える内容が記述されています（開くには %1 MB を超えるメモリが必要です）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="92"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
         <source>the file is empty</source>
         <translation>ファイルが空です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
         <source>the file header</source>
         <translation>ファイルヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
         <source>it is not a Finbook animation</source>
         <translation>Finbook のアニメーションではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="100"/>
         <source>the file ends inside its header</source>
         <translation>ヘッダーの途中でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="99"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="101"/>
         <source>the format version</source>
         <translation>フォーマットのバージョン</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="102"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="104"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>より新しいバージョンの Finbook で作成されています（ファイル形式 %1。このバージョンが読めるのは %2 までです）。開くには Finbook を更新してください</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="109"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="111"/>
         <source>the format version %1 does not exist</source>
         <translation>フォーマットのバージョン %1 は存在しません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="128"/>
         <source>the file&apos;s section list</source>
         <translation>ファイルのセクション一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="131"/>
         <source>the file ends before its end</source>
         <translation>本来の終端より前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="133"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
         <source>a section header</source>
         <translation>セクションヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
         <source>section %1</source>
         <translation>セクション %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
         <source>the file&apos;s end is damaged</source>
         <translation>ファイルの終端が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="156"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="160"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>a section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
         <source>a section checksum</source>
         <translation>セクションのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
         <source>the end marker</source>
         <translation>終端マーカー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="181"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
         <source>the file</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="191"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="196"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="227"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="228"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="240"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="277"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
@@ -1425,22 +1425,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="340"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="344"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="354"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -1972,12 +1972,12 @@
         <translation>最も硬く（+3 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="110"/>
+        <location filename="../ui/src/deform_actions.cpp" line="111"/>
         <source>Mesh density </source>
         <translation>メッシュ密度 </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="111"/>
+        <location filename="../ui/src/deform_actions.cpp" line="112"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>現在のオブジェクトの変形メッシュの細かさ（1 = 標準）</translation>
     </message>
@@ -2957,89 +2957,94 @@
 <context>
     <name>finbook::ui::ObjectActions</name>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="27"/>
+        <location filename="../ui/src/object_actions.cpp" line="28"/>
         <source>&amp;New Object</source>
         <translation>新規オブジェクト(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="29"/>
+        <location filename="../ui/src/object_actions.cpp" line="30"/>
         <source>&amp;Delete Object</source>
         <translation>オブジェクトを削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="30"/>
+        <location filename="../ui/src/object_actions.cpp" line="31"/>
         <source>&amp;Merge Objects</source>
         <translation>オブジェクトを結合(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="33"/>
+        <location filename="../ui/src/object_actions.cpp" line="34"/>
         <source>Move &amp;Selection to Object</source>
         <translation>選択範囲をオブジェクトへ移動(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="34"/>
+        <location filename="../ui/src/object_actions.cpp" line="35"/>
         <source>Bring &amp;Forward</source>
         <translation>前面へ(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="36"/>
+        <location filename="../ui/src/object_actions.cpp" line="37"/>
         <source>Send &amp;Backward</source>
         <translation>背面へ(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="38"/>
+        <location filename="../ui/src/object_actions.cpp" line="39"/>
         <source>&amp;Visible</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="39"/>
+        <location filename="../ui/src/object_actions.cpp" line="40"/>
         <source>&amp;Locked</source>
         <translation>ロック(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="42"/>
+        <location filename="../ui/src/object_actions.cpp" line="43"/>
         <source>New object above the current one</source>
         <translation>現在のオブジェクトの上に新しいオブジェクトを作成</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="43"/>
+        <location filename="../ui/src/object_actions.cpp" line="44"/>
         <source>Merge the selected objects, or the current one into the one below</source>
         <translation>選択したオブジェクトを結合します。選択がなければ現在のオブジェクトを下のオブジェクトに結合します</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="44"/>
+        <location filename="../ui/src/object_actions.cpp" line="45"/>
         <source>Move the selected strokes to another object</source>
         <translation>選択したストロークを別のオブジェクトへ移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="46"/>
+        <location filename="../ui/src/object_actions.cpp" line="47"/>
         <source>New</source>
         <translation>新規</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="47"/>
+        <location filename="../ui/src/object_actions.cpp" line="48"/>
         <source>Delete</source>
         <translation>削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="48"/>
+        <location filename="../ui/src/object_actions.cpp" line="49"/>
         <source>Merge</source>
         <translation>結合</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="49"/>
+        <location filename="../ui/src/object_actions.cpp" line="50"/>
         <source>Move To</source>
         <translation>移動先</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="118"/>
+        <location filename="../ui/src/object_actions.cpp" line="119"/>
         <source>Object %1</source>
         <translation>オブジェクト %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="170"/>
+        <location filename="../ui/src/object_actions.cpp" line="171"/>
         <source>Merge Objects</source>
         <translation>オブジェクトを結合</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/object_actions.cpp" line="193"/>
+        <source>Move Strokes to Object</source>
+        <translation>ストロークをオブジェクトへ移動</translation>
     </message>
 </context>
 <context>

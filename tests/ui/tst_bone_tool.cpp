@@ -6,6 +6,7 @@
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/deform_actions.h>
 #include <finbook/ui/editor_state.h>
+#include <finbook/ui/object_actions.h>
 #include <finbook/ui/skeleton/skeleton_overlay.h>
 #include <finbook/ui/skeleton/tool_bone.h>
 #include <finbook/ui/stroke_editing.h>
@@ -160,6 +161,7 @@ private slots:
     void erasingALimbRebuildsTheSkeleton();
     void clickInsideAnOutlineBuilds();
     void partsJoinWhenBuiltAndShiftDragReattaches();
+    void movingStrokesAwayRebuildsTheShownSkeleton();
 };
 
 void TestBoneTool::clickBuildsThenDragTurnsABone()
@@ -678,6 +680,40 @@ void TestBoneTool::partsJoinWhenBuiltAndShiftDragReattaches()
                                                    fx.object().deformed->strokes[0][30].y))
                 .length() < 0.05,
         10000);
+}
+
+void TestBoneTool::movingStrokesAwayRebuildsTheShownSkeleton()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    fx.overlay->setShown(true);
+    const auto lowest = [&] {
+        double y = -HUGE_VAL;
+        for (const QPointF &p : fx.skeleton().joints)
+            y = std::max(y, p.y());
+        return y;
+    };
+    QVERIFY(lowest() > 400); // the forearm's bones reach down
+    StrokeGroup other;
+    other.id = fx.doc.allocateId();
+    other.name = QStringLiteral("other");
+    fx.doc.insertGroup(fx.state.currentFrameId(), 1, other);
+    // Select the forearm (the vertical strokes) and move it to the other object.
+    std::vector<Id> forearm;
+    for (std::size_t i = 1; i < fx.object().strokes.size(); i += 2)
+        forearm.push_back(fx.object().strokes[i].id);
+    fx.state.setCurrentGroupId(fx.group);
+    fx.state.setSelectedStrokes(forearm);
+    const QByteArray start = serializeFinbook(fx.doc);
+    const int count = fx.doc.undoStack()->count();
+    ObjectActions objects(&fx.state);
+    objects.moveSelectionTo(other.id);
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1); // strokes and skeleton: one step
+    QCOMPARE(fx.doc.group(other.id)->strokes.size(), forearm.size());
+    QVERIFY(fx.skeleton().isValid());
+    QVERIFY2(lowest() < 300, qPrintable(QString::number(lowest())));
+    fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), start);
 }
 
 QTEST_MAIN(TestBoneTool)

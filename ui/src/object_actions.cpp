@@ -2,6 +2,7 @@
 #include <finbook/model/object_commands.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/object_actions.h>
+#include <finbook/ui/stroke_editing.h>
 
 #include <QMenu>
 
@@ -181,7 +182,18 @@ void ObjectActions::moveSelectionTo(model::Id targetGroupId)
     if (strokes.empty() || !m_state->document()->group(targetGroupId))
         return;
     model::Document *doc = m_state->document();
+    // A rest edit of both ends: posed objects are applied first, and shown skeletons of the
+    // objects that lose or gain strokes follow (StrokeEditing, as for the other edits).
+    std::vector<model::Id> groups{targetGroupId};
+    for (model::Id id : strokes)
+        if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
+            groups.push_back(doc->frameAt(at.frame).groups[std::size_t(at.group)].id);
+    std::sort(groups.begin(), groups.end());
+    groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+    const QString text = tr("Move Strokes to Object");
+    StrokeEditing::beginRestEdit(doc, text, groups);
     doc->undoStack()->push(new model::MoveStrokesCommand(doc, std::move(strokes), targetGroupId));
+    StrokeEditing::endRestEdit(*m_state, groups);
     m_state->setCurrentGroupId(targetGroupId);
 }
 

@@ -275,7 +275,7 @@ void SelectTool::commitTransform()
                                                   : tr("Scale Strokes");
     StrokeEditing::beginRestEdit(doc, text, groups);
     doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, ids, data, text));
-    doc->undoStack()->endMacro();
+    StrokeEditing::endRestEdit(*state(), groups); // a shown skeleton follows the moved lines
 }
 
 void SelectTool::cancelDrag()
