@@ -665,6 +665,18 @@ void TestBoneTool::partsJoinWhenBuiltAndShiftDragReattaches()
                             .arg(fx.skeleton().join.parentAt.y())));
     QVERIFY(!fx.skeleton().isPosed()); // joining never moves the drawing
 
+    // Dragging the joined arm's root moves the whole character: the torso's root offset.
+    const QPointF armRoot = fx.skeleton().posedJoints()[std::size_t(fx.skeleton().root)];
+    fx.drag(armRoot, armRoot + QPointF(10, 5));
+    QVERIFY(QLineF(torsoRig().rootOffset, QPointF(10, 5)).length() < 2.0);
+    QCOMPARE(fx.skeleton().rootOffset, QPointF());
+    QVERIFY(fx.skeleton().hangs());
+    QVERIFY(QLineF(fx.skeleton().posedJoints()[std::size_t(fx.skeleton().root)],
+                   armRoot + torsoRig().rootOffset)
+                .length() < 1e-9);
+    fx.doc.undoStack()->undo();
+    QCOMPARE(torsoRig().rootOffset, QPointF());
+
     // Moving the torso by its root moves the arm's drawing with it.
     QVERIFY(fx.waitReady());
     const QPointF torsoRoot = torsoRig().joints[std::size_t(torsoRig().root)];

@@ -209,11 +209,25 @@ void BoneTool::joinIfOverlapping(model::Id groupId)
                                   .arg(parent->name));
 }
 
-bool BoneTool::startDrag(const Hit &hit, QPointF at)
+bool BoneTool::startDrag(const Hit &clicked, QPointF at)
 {
-    const model::StrokeGroup *g = state()->document()->group(hit.groupId);
+    model::Document *doc = state()->document();
+    const model::StrokeGroup *g = doc->group(clicked.groupId);
     if (!g)
         return false;
+    // The root of a joined part is a joint of its character: dragging it moves the whole
+    // character, by the root of the part at its top.
+    Hit hit = clicked;
+    if (hit.part == Part::Joint && g->rig.skeleton.hangs() &&
+        g->rig.skeleton.parent[std::size_t(hit.joint)] < 0) {
+        const model::GroupLocation where = doc->locateGroup(hit.groupId);
+        const model::Id top = model::characterRoot(doc->frameAt(where.frame), hit.groupId);
+        if (const model::StrokeGroup *r = doc->group(top);
+            r && r != g && !r->rig.skeleton.empty() && editable(*r)) {
+            hit = {top, Part::Joint, r->rig.skeleton.root};
+            g = r;
+        }
+    }
     auto skeleton = model::deformSkeleton(g->rig.skeleton);
     if (!skeleton) {
         canvas()->postMessage(skeleton.error());
@@ -228,7 +242,7 @@ bool BoneTool::startDrag(const Hit &hit, QPointF at)
     const bool root = g->rig.skeleton.parent[std::size_t(hit.joint)] < 0;
     m_drag.kind = hit.part == Part::Bone ? DragKind::Bone : root ? DragKind::Root : DragKind::Joint;
     ++m_dragSerial;
-    state()->setCurrentGroupId(hit.groupId);
+    state()->setCurrentGroupId(clicked.groupId);
     m_controller->prepare(hit.groupId);
     return true;
 }

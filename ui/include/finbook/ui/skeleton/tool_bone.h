@@ -6,7 +6,8 @@
 // Reset Bone Pose, Edit Joints and, while editing, Insert Joint Here and Delete Joint.
 //
 // Characters (issue 9): a skeleton built on a drawing that overlaps another part's skeleton
-// joins it (RealSkel's bone split or joint connect); posing the parent moves the part.
+// joins it (RealSkel's bone split or joint connect); posing the parent moves the part, and
+// dragging a joined part's root moves the whole character.
 // Shift-drag a part's root onto a bone of another part to join it there; the menu detaches a
 // part, joins the frame's overlapping parts, makes a part the character's root or a joint its
 // part's root.
