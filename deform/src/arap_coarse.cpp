@@ -28,7 +28,7 @@ constexpr int kTargetClusters = 16;
 constexpr double kSmallPiece = 0.25;
 // The change of every cluster rotation below which the reduced iterations stop early: a rigid
 // motion of the pins must come out rigid to round-off (the relaxed start gives it at once);
-// a bend runs all kCoarseIterations, about 0.1 ms at 16 clusters, 1 ms at 95.
+// a bend runs all d.coarseIterations, about 0.1 ms at 16 clusters, 1 ms at 95 (200 of them).
 constexpr double kCoarseTolerance = 1e-13;
 // More clusters than this (many separately pinned parts, very thin strokes) would make the K²
 // iterations cost more than the passes they save (95 clusters took 1 ms per event on a 16k
@@ -249,7 +249,7 @@ void coarseStart(const ArapPrecompute &d, Workspace &w)
         S.noalias() = d.coarseSimilarity * e;
     else
         S = e;
-    for (int iteration = 0; iteration < kCoarseIterations; ++iteration) {
+    for (int iteration = 0; iteration < d.coarseIterations; ++iteration) {
         double change = 0.0;
         for (Eigen::Index k = 0; k < count; ++k) {
             const double squared = squaredMagnitude(S(k));

@@ -160,6 +160,7 @@ struct ArapPrecompute {
     Eigen::MatrixXcd coarseHandles;    // E, K×handles
     Eigen::VectorXd coarseThreshold;   // per cluster: below this |S| the cluster collapsed
     Eigen::MatrixXcd coarseSimilarity; // (diag(ρ) − C)⁻¹, K×K: the relaxed start (or empty)
+    int coarseIterations = 0;          // reduced iterations per drag event at most (cost model)
 };
 
 // relativeResidual: largest ‖Ax − b‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞) over the linear solves of one
