@@ -43,16 +43,21 @@ double chooseDragPasses(ArapPrecompute &d)
     // With coarse rotations an event starts with E·q, the reduced iterations (at most) and
     // one global step instead of step 1.
     const double clusters = double(d.coarseCoupling.rows());
-    const double fixedMs =
-        d.triangleCluster.size() > 0
-            ? 1e-6 * kBasisEntryNs *
-                      (double(d.coarseHandles.size()) + clusters * clusters * kCoarseIterations) +
-                  d.estimatedPassMs + vertexMs
-            : stepOneMs + vertexMs;
     // Where the budget cannot hold even the paper's two steps (large meshes), a drag event
     // may take up to twice what they cost, with the same model on both sides.
     const double budgetMs =
         std::max(d.options.dragBudgetMs, 2.0 * (stepOneMs + vertexMs + d.estimatedPassMs));
+    const double iterationMs = 1e-6 * kBasisEntryNs * clusters * clusters;
+    d.coarseIterations =
+        iterationMs > 0.0 ? int(std::clamp(std::floor(kCoarseBudgetShare * budgetMs / iterationMs),
+                                           double(kCoarseIterations), double(kMaxCoarseIterations)))
+                          : kCoarseIterations;
+    const double fixedMs =
+        d.triangleCluster.size() > 0
+            ? 1e-6 * kBasisEntryNs *
+                      (double(d.coarseHandles.size()) + clusters * clusters * d.coarseIterations) +
+                  d.estimatedPassMs + vertexMs
+            : stepOneMs + vertexMs;
     const int cap = std::max(1, d.options.maxDragPasses);
     // The coarse start ends with a global step, worth one of the minimum's passes: with it one
     // fine pass left the 20k bar at 1.15× the converged energy, where two from step 1 left 1.51×.

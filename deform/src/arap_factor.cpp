@@ -60,10 +60,13 @@ struct ArapFactorization::Shared {
         assembledSaid = true;
     }
 
-    // The drag pass count, and whether coarse rotations are wanted (the budget holds few
-    // passes): then their clusters. They need H00's factor and the assembled triangles, not
-    // G00, so on large meshes the helper does them while the caller factors G00; the
-    // columns are shared (coarseColumns) and finishDrag completes them on the caller.
+    // The drag pass count, and whether coarse rotations are wanted (the budget holds fewer
+    // than kCoarseBelowPasses): then their clusters. On 55 drawings of about 2k vertices
+    // (finbook-bench arap --quality) they took the median drag pose from 1.004× to 1.0001×
+    // the converged energy and the worst from 6.2× to 1.5×. They need H00's factor and the
+    // assembled triangles, not G00, so on large meshes the helper does them while the caller
+    // factors G00; the columns are shared (coarseColumns) and finishDrag completes them on
+    // the caller.
     void prepareDrag()
     {
         const double budgetPasses = chooseDragPasses(d);

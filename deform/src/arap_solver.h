@@ -89,12 +89,20 @@ void buildFollowers(const Eigen::VectorXi &componentLabel, const std::vector<boo
 // passes the budget holds before the options' minimum and maximum apply.
 double chooseDragPasses(ArapPrecompute &d);
 
-// When the drag budget holds fewer passes than this (large meshes), a precompute adds coarse
-// rotations: from about 8 passes on, step 1 and the passes alone reach the drag target (1.3×
-// the converged energy); the bars of `finbook-bench arap` needed 3–4 at 20k vertices.
-constexpr int kCoarseBelowPasses = 8;
-// Reduced iterations per drag event at most (K² work each).
+// When the drag budget holds fewer passes than this, a precompute adds coarse rotations:
+// not only on large meshes (the bars of `finbook-bench arap` needed 3–4 passes after them at
+// 20k vertices) but on thin 2k-vertex drawings with nearly rigid optima, where 35–70 plain
+// passes from step 1 left up to 4.6× the converged energy. Smaller meshes, whose budget holds
+// more, converge by plain passes within maxDragPasses.
+constexpr int kCoarseBelowPasses = 128;
+// Reduced iterations per drag event at most (K² work each): kCoarseIterations, or up to
+// kMaxCoarseIterations while their modelled cost stays within kCoarseBudgetShare of the drag
+// budget (see ArapPrecompute::coarseIterations). Plain reduced iterations converge slowly on
+// thin drawings: on a 2k-vertex quickdraw hand (71 clusters) 200 left the drag pose at 1.48×
+// the converged energy, 400 at 1.22×, even with fewer fine passes after them.
 constexpr int kCoarseIterations = 200;
+constexpr int kMaxCoarseIterations = 400;
+constexpr double kCoarseBudgetShare = 0.5;
 
 // Precompute side of coarse rotations, in steps so that two threads can share the columns
 // (one step-2 back-substitution each): prepare() clusters the solved triangles and sizes C
