@@ -31,4 +31,41 @@ void arapStepTwoBacksubstitute(const ArapPrecompute &data, Eigen::Ref<Eigen::Vec
     }
 }
 
+namespace detail {
+
+void backsubstituteBlock(const ArapPrecompute &data, Complex *x)
+{
+    constexpr int B = kBlockWidth;
+    const auto &L = data.stepTwoFactor.matrixL().nestedExpression();
+    const int *start = L.outerIndexPtr();
+    const int *row = L.innerIndexPtr();
+    const double *value = L.valuePtr();
+    const double *pivotInverse = data.stepTwoPivotInverse.data();
+    const Eigen::Index n = L.cols();
+    for (Eigen::Index j = 0; j < n; ++j) { // L y = b
+        Complex yj[B];
+        for (int b = 0; b < B; ++b)
+            yj[b] = x[j * B + b] = x[j * B + b] * pivotInverse[j];
+        for (int p = start[j] + 1; p < start[j + 1]; ++p) {
+            Complex *target = x + Eigen::Index(row[p]) * B;
+            for (int b = 0; b < B; ++b)
+                target[b] -= value[p] * yj[b];
+        }
+    }
+    for (Eigen::Index j = n - 1; j >= 0; --j) { // Lᵀ x = y
+        Complex sum[B];
+        for (int b = 0; b < B; ++b)
+            sum[b] = x[j * B + b];
+        for (int p = start[j] + 1; p < start[j + 1]; ++p) {
+            const Complex *source = x + Eigen::Index(row[p]) * B;
+            for (int b = 0; b < B; ++b)
+                sum[b] -= value[p] * source[b];
+        }
+        for (int b = 0; b < B; ++b)
+            x[j * B + b] = sum[b] * pivotInverse[j];
+    }
+}
+
+} // namespace detail
+
 } // namespace finbook::deform

@@ -161,28 +161,32 @@ CoarseBuilder::Corners clusterCorners(const ArapPrecompute &d)
 // P_k = H00⁻¹ g_k: the free positions a unit rotation of cluster k alone produces (handles
 // at the origin); C(:, k) is every cluster's covariance with it, E(k, :) what the handles
 // add to cluster k's covariance (−⅓ P_kᴴ H01 through the free vertices; their own corners
-// are added by the caller).
-void coarseColumn(ArapPrecompute &d, const CoarseBuilder::Corners &c, int k, Eigen::VectorXcd &x)
+// are added by the caller). Clusters first … first + kBlockWidth − 1 at once (one pass over
+// the factor); x holds them row by row, columns past the last cluster stay zero.
+void coarseColumns(ArapPrecompute &d, const CoarseBuilder::Corners &c, int first, int count,
+                   std::vector<Complex> &x)
 {
+    constexpr int B = kBlockWidth;
     const Eigen::Index nf = d.freeCount;
-    for (Eigen::Index v = 0; v < nf; ++v) {
-        Complex g;
+    const int last = std::min(first + B, count);
+    x.assign(std::size_t(nf) * B, Complex());
+    for (Eigen::Index v = 0; v < nf; ++v)
         for (int i = c.start[std::size_t(v)]; i < c.start[std::size_t(v) + 1]; ++i)
-            if (c.cluster[std::size_t(i)] == k)
-                g = 3.0 * std::conj(c.weight[std::size_t(i)]);
-        x(v) = g;
-    }
-    arapStepTwoBacksubstitute(d, x);
-    for (Eigen::Index v = 0; v < nf; ++v) {
+            if (const int k = c.cluster[std::size_t(i)]; k >= first && k < last)
+                x[std::size_t(v * B + (k - first))] = 3.0 * std::conj(c.weight[std::size_t(i)]);
+    backsubstituteBlock(d, x.data());
+    for (Eigen::Index v = 0; v < nf; ++v)
         for (int i = c.start[std::size_t(v)]; i < c.start[std::size_t(v) + 1]; ++i)
-            d.coarseCoupling(c.cluster[std::size_t(i)], k) += c.weight[std::size_t(i)] * x(v);
-    }
-    for (Eigen::Index h = 0; h < d.coarseHandles.cols(); ++h) {
-        Complex s;
-        for (ArapPrecompute::RealMatrix::InnerIterator it(d.stepTwoCoupling, h); it; ++it)
-            s += std::conj(x(it.row())) * it.value();
-        d.coarseHandles(k, h) -= s / 3.0;
-    }
+            for (int k = first; k < last; ++k)
+                d.coarseCoupling(c.cluster[std::size_t(i)], k) +=
+                    c.weight[std::size_t(i)] * x[std::size_t(v * B + (k - first))];
+    for (int k = first; k < last; ++k)
+        for (Eigen::Index h = 0; h < d.coarseHandles.cols(); ++h) {
+            Complex s;
+            for (ArapPrecompute::RealMatrix::InnerIterator it(d.stepTwoCoupling, h); it; ++it)
+                s += std::conj(x[std::size_t(it.row() * B + (k - first))]) * it.value();
+            d.coarseHandles(k, h) -= s / 3.0;
+        }
 }
 
 } // namespace
@@ -214,10 +218,9 @@ bool CoarseBuilder::prepare(ArapPrecompute &d)
     return true;
 }
 
-void CoarseBuilder::column(ArapPrecompute &d, int k, Eigen::VectorXcd &x) const
+void CoarseBuilder::columns(ArapPrecompute &d, int first, std::vector<Complex> &x) const
 {
-    x.resize(d.freeCount);
-    coarseColumn(d, m_corners, k, x);
+    coarseColumns(d, m_corners, first, m_count, x);
 }
 
 void CoarseBuilder::finish(ArapPrecompute &d) const

@@ -75,18 +75,19 @@ struct ArapFactorization::Shared {
             coarseReady = true;
     }
 
-    // Claims coarse columns until none is left (either thread; each column once).
+    // Claims blocks of coarse columns until none is left (either thread; each block once).
     void coarseColumns(const std::function<bool()> &stop)
     {
         if (!coarseReady)
             return;
-        Eigen::VectorXcd x;
-        for (int k = nextColumn++; k < coarse.count(); k = nextColumn++) {
+        std::vector<Complex> x;
+        for (int k = nextColumn.fetch_add(kBlockWidth); k < coarse.count();
+             k = nextColumn.fetch_add(kBlockWidth)) {
             if (abort || stop()) {
                 abort = true;
                 return;
             }
-            coarse.column(d, k, x);
+            coarse.columns(d, k, x);
         }
     }
 

@@ -19,6 +19,15 @@ namespace finbook::deform::detail {
 
 using Complex = std::complex<double>;
 
+// Right-hand sides the step-2 back-substitution takes at once (backsubstituteBlock).
+constexpr int kBlockWidth = 4;
+
+// x ← H00⁻¹ x for kBlockWidth right-hand sides stored row by row (x[v·kBlockWidth + b]):
+// the same operations, in the same order, as arapStepTwoBacksubstitute on each column, with
+// one pass over the factor for all of them (that pass, not the arithmetic, is what a
+// back-substitution of a large mesh waits for).
+void backsubstituteBlock(const ArapPrecompute &data, Complex *x);
+
 inline DeformError makeError(DeformErrorCode code, std::string message)
 {
     return DeformError{code, std::move(message)};

@@ -116,7 +116,8 @@ public:
     };
     bool prepare(ArapPrecompute &d);
     int count() const { return m_count; }
-    void column(ArapPrecompute &d, int k, Eigen::VectorXcd &x) const;
+    // Columns first … first + kBlockWidth − 1 (those below count()); x is scratch.
+    void columns(ArapPrecompute &d, int first, std::vector<Complex> &x) const;
     void finish(ArapPrecompute &d) const;
 
 private:
