@@ -87,6 +87,14 @@ bool waitSolved(DeformController &controller, const Document &doc, Id groupId)
     return ready();
 }
 
+// Both parts precomputed and solved.
+bool prepared(DeformController &controller, const Document &doc, const Character &c)
+{
+    controller.prepare(c.torso);
+    controller.prepare(c.arm);
+    return waitSolved(controller, doc, c.torso) && waitSolved(controller, doc, c.arm);
+}
+
 void poseRoot(Document &doc, Id id, double angle, QPointF offset, int serial)
 {
     std::vector<double> angles(std::size_t(doc.group(id)->rig.skeleton.jointCount()), 0.0);
@@ -204,10 +212,7 @@ void TestSkeletonJoin::posedArmFollowsThroughTheController()
     Document doc;
     DeformController controller(&doc);
     const Character c = joinedCharacter(doc);
-    controller.prepare(c.torso);
-    controller.prepare(c.arm);
-    QVERIFY(waitSolved(controller, doc, c.torso));
-    QVERIFY(waitSolved(controller, doc, c.arm));
+    QVERIFY(prepared(controller, doc, c));
     const SkeletonRig torso = doc.group(c.torso)->rig.skeleton;
     const QPointF pivot = torso.joints[std::size_t(torso.root)];
     const double theta = 0.3;
@@ -409,10 +414,7 @@ void TestSkeletonJoin::applyPoseBakesTheWholeCharacter()
     Document doc;
     DeformController controller(&doc);
     const Character c = joinedCharacter(doc);
-    controller.prepare(c.torso);
-    controller.prepare(c.arm);
-    QVERIFY(waitSolved(controller, doc, c.torso));
-    QVERIFY(waitSolved(controller, doc, c.arm));
+    QVERIFY(prepared(controller, doc, c));
     poseRoot(doc, c.torso, 0.35, {12, 0}, 1);
     QVERIFY(waitSolved(controller, doc, c.torso));
     QVERIFY(waitSolved(controller, doc, c.arm));

@@ -2,6 +2,7 @@
 // parts of a character, and automatic joins where parts overlap.
 #include <finbook/geometry/skeleton/skeleton_connect.h>
 #include <finbook/model/skeleton/skeleton_join.h>
+#include <finbook/model/skeleton/skeleton_joint_edit.h>
 
 #include <QLineF>
 
@@ -12,23 +13,6 @@
 namespace finbook::model {
 
 namespace {
-
-geometry::Skeleton toGeometry(const SkeletonRig &rig)
-{
-    geometry::Skeleton s;
-    const Eigen::Index n = Eigen::Index(rig.joints.size());
-    s.joints.resize(n, 2);
-    s.radius.resize(n);
-    s.parent.resize(n);
-    s.part = Eigen::VectorXi::Zero(n);
-    for (Eigen::Index j = 0; j < n; ++j) {
-        s.joints.row(j) << rig.joints[std::size_t(j)].x(), rig.joints[std::size_t(j)].y();
-        s.radius(j) = rig.radius[std::size_t(j)];
-        s.parent(j) = rig.parent[std::size_t(j)];
-    }
-    s.root = rig.root;
-    return s;
-}
 
 // Fraction along a → b of the point nearest p, and the distance to it.
 std::pair<double, double> project(QPointF p, QPointF a, QPointF b)
@@ -169,7 +153,7 @@ std::optional<SkeletonJoin> proposeJoin(const Frame &frame, Id child)
     if (c < 0 || frame.groups[std::size_t(c)].rig.skeleton.empty())
         return std::nullopt;
     const SkeletonRig &rig = frame.groups[std::size_t(c)].rig.skeleton;
-    const geometry::Skeleton childSkeleton = toGeometry(rig);
+    const geometry::Skeleton childSkeleton = geometrySkeleton(rig);
     const std::vector<Id> own = characterParts(frame, child);
     std::optional<SkeletonJoin> best;
     double bestScore = std::numeric_limits<double>::infinity();
@@ -178,7 +162,7 @@ std::optional<SkeletonJoin> proposeJoin(const Frame &frame, Id child)
         if (g.rig.skeleton.empty() || !g.visible ||
             std::find(own.begin(), own.end(), g.id) != own.end())
             continue; // joining into its own character would close a loop
-        const auto join = geometry::findJoin(0, childSkeleton, 1, toGeometry(g.rig.skeleton));
+        const auto join = geometry::findJoin(0, childSkeleton, 1, geometrySkeleton(g.rig.skeleton));
         if (!join)
             continue;
         // Closest fit first: the attach point deepest inside the other part's skeleton.

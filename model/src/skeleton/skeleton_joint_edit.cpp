@@ -133,12 +133,8 @@ Expected<SkeletonRig, QString> withJointDeleted(const SkeletonRig &rig, int join
     return r;
 }
 
-Expected<SkeletonRig, QString> withRootJoint(const SkeletonRig &rig, int joint)
+geometry::Skeleton geometrySkeleton(const SkeletonRig &rig)
 {
-    if (auto why = editable(rig, joint))
-        return unexpected(*why);
-    if (rig.root == joint)
-        return rig;
     geometry::Skeleton s;
     const Eigen::Index n = Eigen::Index(rig.joints.size());
     s.joints.resize(n, 2);
@@ -147,11 +143,20 @@ Expected<SkeletonRig, QString> withRootJoint(const SkeletonRig &rig, int joint)
     s.part = Eigen::VectorXi::Zero(n);
     for (Eigen::Index j = 0; j < n; ++j) {
         s.joints.row(j) << rig.joints[std::size_t(j)].x(), rig.joints[std::size_t(j)].y();
-        s.radius(j) = rig.radius[std::size_t(j)];
-        s.parent(j) = rig.parent[std::size_t(j)];
+        s.radius(j) = j < Eigen::Index(rig.radius.size()) ? rig.radius[std::size_t(j)] : 0.0;
+        s.parent(j) = j < Eigen::Index(rig.parent.size()) ? rig.parent[std::size_t(j)] : -1;
     }
     s.root = rig.root;
-    auto edit = geometry::setRoot(s, joint);
+    return s;
+}
+
+Expected<SkeletonRig, QString> withRootJoint(const SkeletonRig &rig, int joint)
+{
+    if (auto why = editable(rig, joint))
+        return unexpected(*why);
+    if (rig.root == joint)
+        return rig;
+    auto edit = geometry::setRoot(geometrySkeleton(rig), joint);
     if (!edit)
         return unexpected(Deformation::tr("The skeleton is damaged; build it again."));
     SkeletonRig r = rig;

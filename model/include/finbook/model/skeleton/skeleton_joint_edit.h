@@ -5,6 +5,7 @@
 #pragma once
 
 #include <finbook/geometry/expected.h>
+#include <finbook/geometry/skeleton/skeleton.h>
 #include <finbook/model/skeleton/skeleton_rig.h>
 
 #include <QString>
@@ -28,6 +29,9 @@ Expected<InsertedJoint, QString> withJointInserted(const SkeletonRig &rig, int b
 // `joint` removed. Its children hang from its parent; a root's first child becomes the root
 // and takes its siblings. Errors: posed, no such joint, fewer than two joints would be left.
 Expected<SkeletonRig, QString> withJointDeleted(const SkeletonRig &rig, int joint);
+
+// The rest skeleton as the geometry layer takes it (every joint in part 0).
+geometry::Skeleton geometrySkeleton(const SkeletonRig &rig);
 
 // `joint` made the root of its tree and the skeleton's root (bones along the way turn
 // around; joints are renumbered so parents come first, locks follow their joints).
