@@ -4,6 +4,8 @@
 // with a cage (the forearm's corners bent about the elbow).
 #pragma once
 
+#include "stroke_support.h"
+
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/types.h>
 
@@ -19,13 +21,7 @@ inline const QPointF kHand(500, 300);
 
 inline StrokeDataPtr line(QPointF from, QPointF to, int points)
 {
-    auto data = std::make_shared<StrokeData>();
-    data->width = 16.0f;
-    for (int i = 0; i < points; ++i) {
-        const QPointF p = from + (to - from) * (double(i) / (points - 1));
-        data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-    }
-    return data;
+    return testing::lineStroke(from, to, points, 16.0f);
 }
 
 // Key frames: ids from `firstId` on (frame, object, 2 strokes, 2 pins per key).

@@ -3,6 +3,7 @@
 // it hangs from, and joins are undoable, never make the drawing jump, follow Duplicate Frame
 // and are saved.
 #include "random_edits.h"
+#include "stroke_support.h"
 
 #include <finbook/deform/skeleton/skinning_weights.h>
 #include <finbook/model/deform_controller.h>
@@ -26,13 +27,7 @@ namespace {
 
 StrokeDataPtr line(QPointF a, QPointF b, int n)
 {
-    auto data = std::make_shared<StrokeData>();
-    for (int i = 0; i < n; ++i) {
-        const QPointF p = a + (b - a) * (double(i) / (n - 1));
-        data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-    }
-    data->width = 6.0f;
-    return data;
+    return finbook::testing::lineStroke(a, b, n, 6.0f);
 }
 
 // A thick bar of parallel strokes from a to b (`across` px wide).

@@ -1,6 +1,7 @@
 // Skeletons in the model: building, refining and posing as undoable commands, the skinning
 // precompute through the deform controller, and the "SKEL" file chunk.
 #include "random_edits.h"
+#include "stroke_support.h"
 
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/finbook_file.h>
@@ -25,13 +26,7 @@ namespace {
 
 StrokeDataPtr line(QPointF a, QPointF b, int n)
 {
-    auto data = std::make_shared<StrokeData>();
-    for (int i = 0; i < n; ++i) {
-        const QPointF p = a + (b - a) * (double(i) / (n - 1));
-        data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-    }
-    data->width = 6.0f;
-    return data;
+    return finbook::testing::lineStroke(a, b, n, 6.0f);
 }
 
 // An L-shaped object drawn with parallel strokes: an upper arm and a forearm.

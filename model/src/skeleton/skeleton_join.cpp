@@ -72,6 +72,11 @@ SkeletonAnchor anchorOn(const SkeletonRig &parent, QPointF parentAt)
 
 std::vector<Id> resolveJoins(Frame &frame)
 {
+    // Called on every rig change (each drag event): a frame without joins has nothing to do.
+    if (std::none_of(frame.groups.begin(), frame.groups.end(), [](const StrokeGroup &g) {
+            return g.rig.skeleton.join.joined() || !(g.rig.skeleton.anchor == SkeletonAnchor{});
+        }))
+        return {};
     const std::size_t n = frame.groups.size();
     enum State : char { Unvisited, Visiting, Done };
     std::vector<State> state(n, Unvisited);

@@ -27,12 +27,17 @@ bool editable(const model::StrokeGroup &g)
     return g.visible && !g.locked;
 }
 
-qreal segmentDistance(QPointF p, QPointF a, QPointF b)
+// The point of segment a–b nearest p: its fraction from a, and how far p is from it.
+struct Projection {
+    qreal t = 0.0;
+    qreal distance = 0.0;
+};
+Projection project(QPointF p, QPointF a, QPointF b)
 {
     const QPointF d = b - a;
     const qreal len2 = QPointF::dotProduct(d, d);
     const qreal t = len2 > 0 ? std::clamp(QPointF::dotProduct(p - a, d) / len2, 0.0, 1.0) : 0.0;
-    return QLineF(p, a + t * d).length();
+    return {t, QLineF(p, a + t * d).length()};
 }
 
 Eigen::Vector2d vec(QPointF p)
@@ -99,7 +104,7 @@ BoneTool::Hit BoneTool::hitAt(const ToolEvent &event) const
             const int p = g.rig.skeleton.parent[j];
             if (p < 0)
                 continue;
-            const qreal d = segmentDistance(event.pos, joints[std::size_t(p)], joints[j]) * bias;
+            const qreal d = project(event.pos, joints[std::size_t(p)], joints[j]).distance * bias;
             if (d <= bestBone) {
                 bestBone = d;
                 best = {g.id, Part::Bone, int(j)};
@@ -370,12 +375,8 @@ void BoneTool::attach(QPointF at)
         const std::vector<QPointF> shown = s.posedJoints();
         for (std::size_t j = 0; j < shown.size(); ++j) {
             const int p = s.parent[j];
-            const QPointF a = p < 0 ? shown[j] : shown[std::size_t(p)], b = shown[j];
-            const QPointF d = b - a;
-            const qreal len2 = QPointF::dotProduct(d, d);
-            const qreal t =
-                len2 > 0 ? std::clamp(QPointF::dotProduct(at - a, d) / len2, 0.0, 1.0) : 0.0;
-            const qreal distance = QLineF(at, a + t * d).length();
+            const auto [t, distance] =
+                project(at, p < 0 ? shown[j] : shown[std::size_t(p)], shown[j]);
             if (distance < best) {
                 best = distance;
                 target = &g;
