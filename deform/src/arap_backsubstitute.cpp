@@ -6,11 +6,11 @@ namespace finbook::deform {
 
 // Eigen's sparse triangular solve with a real factor and a complex right-hand side promotes
 // the pivot to complex and divides through __divdc3 on every row; written out, each row is
-// a multiply by the stored reciprocal pivot and real × complex updates (the L of SimplicialLLT
-// is column-major with the diagonal first in each column).
+// a multiply by the stored reciprocal pivot and real × complex updates (stepTwoLower is
+// column-major with the diagonal first in each column).
 void arapStepTwoBacksubstitute(const ArapPrecompute &data, Eigen::Ref<Eigen::VectorXcd> x)
 {
-    const auto &L = data.stepTwoFactor.matrixL().nestedExpression();
+    const auto &L = data.stepTwoLower;
     const int *start = L.outerIndexPtr();
     const int *row = L.innerIndexPtr();
     const double *value = L.valuePtr();
@@ -36,7 +36,7 @@ namespace detail {
 void backsubstituteBlock(const ArapPrecompute &data, Complex *x)
 {
     constexpr int B = kBlockWidth;
-    const auto &L = data.stepTwoFactor.matrixL().nestedExpression();
+    const auto &L = data.stepTwoLower;
     const int *start = L.outerIndexPtr();
     const int *row = L.innerIndexPtr();
     const double *value = L.valuePtr();

@@ -30,8 +30,7 @@ constexpr double kVertexNs = 6.0;
 
 double chooseDragPasses(ArapPrecompute &d)
 {
-    const double factorEntries =
-        d.freeCount > 0 ? double(d.stepTwoFactor.matrixL().nestedExpression().nonZeros()) : 0.0;
+    const double factorEntries = d.freeCount > 0 ? double(d.stepTwoLower.nonZeros()) : 0.0;
     d.estimatedPassMs =
         1e-6 * (kTriangleNs * double(d.triangles.rows()) + kFactorEntryNs * factorEntries +
                 kFreeVertexNs * double(d.freeCount));

@@ -19,7 +19,7 @@ DeformError singularError()
                      "the deformation system is numerically singular");
 }
 
-// Simplicial Cholesky reports Success for NaN and for numerically singular matrices, so
+// Positive pivots do not make a factor accurate (a nearly singular matrix has them too), so
 // solve for a known vector and check the answer is finite with a small residual.
 template <class Factor, class Matrix>
 bool probe(const Factor &factor, const Matrix &upper, double norm)
@@ -109,15 +109,16 @@ struct ArapFactorization::Shared {
     // LLᵀ of H00, the reciprocal pivots of the back-substitution kernel, and a probe.
     void factorStepTwo()
     {
-        d.stepTwoFactor.compute(d.stepTwoMatrix);
-        stepTwoOk = d.stepTwoFactor.info() == Eigen::Success;
+        SupernodalCholesky<double> factor;
+        stepTwoOk = factor.factorize(d.factorPattern, d.stepTwoMatrix) &&
+                    probe(factor, d.stepTwoMatrix, d.stepTwoNorm);
         if (!stepTwoOk)
             return;
-        const auto &L = d.stepTwoFactor.matrixL().nestedExpression();
+        d.stepTwoLower = factor.lowerMatrix();
+        const auto &L = d.stepTwoLower;
         d.stepTwoPivotInverse.resize(L.cols());
         for (Eigen::Index j = 0; j < L.cols(); ++j) // the diagonal leads each column
             d.stepTwoPivotInverse(j) = 1.0 / L.valuePtr()[L.outerIndexPtr()[j]];
-        stepTwoOk = probe(d.stepTwoFactor, d.stepTwoMatrix, d.stepTwoNorm);
     }
 
     // Basis columns first, first + stride, …: M(:, c) = −G00⁻¹ G01(:, c), each
@@ -198,10 +199,9 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
         s.abort = true;
         s.release(false);
     } else {
-        s.d.stepOneFactor.compute(s.d.stepOneMatrix);
-        // LDLᴴ only reports exactly zero pivots; a Hermitian positive definite G00 has D > 0.
-        bool ok = s.d.stepOneFactor.info() == Eigen::Success &&
-                  s.d.stepOneFactor.vectorD().real().minCoeff() > 0.0;
+        // The factor reads lower columns: G00's are the conjugates of its upper rows.
+        bool ok = s.d.stepOneFactor.factorize(
+            s.d.factorPattern, ArapPrecompute::ComplexMatrix(s.d.stepOneMatrix.adjoint()));
         if (ok && s.d.stepOneBasis.cols() == 0) // no basis solves to verify the factor with
             ok = probe(s.d.stepOneFactor, s.d.stepOneMatrix, s.d.stepOneNorm);
         s.release(ok);

@@ -84,7 +84,8 @@ Eigen::SparseMatrix<double> freeLaplacian(const Eigen::MatrixX3i &F, const Class
 }
 
 // AMD on the free-vertex adjacency, computed once and shared by G00 and H00 (same pattern).
-// Stores H00 pre-permuted in d and returns the free vertices in elimination order.
+// Stores H00 pre-permuted and the factors' shared symbolic analysis in d and returns the free
+// vertices in elimination order.
 std::vector<int> fillReducingOrder(const Eigen::MatrixX3i &F, const Classification &c,
                                    const std::vector<int> &freeLocal, ArapPrecompute &d)
 {
@@ -92,16 +93,33 @@ std::vector<int> fillReducingOrder(const Eigen::MatrixX3i &F, const Classificati
     const auto nf = static_cast<int>(c.freeVertices.size());
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
     Eigen::AMDOrdering<int>()(laplacian.selfadjointView<Eigen::Upper>(), inverse);
+    Eigen::SparseMatrix<double> permuted(nf, nf);
+    permuted = laplacian.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
+    permuted.makeCompressed();
+    // Then a postorder of the elimination tree: the same fill, with the chains of columns
+    // that become supernodes made contiguous.
+    const std::vector<int> post =
+        postorder(eliminationTree(nf, permuted.outerIndexPtr(), permuted.innerIndexPtr()));
+    bool identity = true;
+    for (int k = 0; k < nf; ++k)
+        identity = identity && post[std::size_t(k)] == k;
+    if (!identity) {
+        Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> composed(nf);
+        for (int k = 0; k < nf; ++k)
+            composed.indices()(k) = inverse.indices()(post[std::size_t(k)]);
+        inverse = composed;
+        permuted = laplacian.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
+    }
     std::vector<int> ordered(static_cast<std::size_t>(nf));
     for (int k = 0; k < nf; ++k)
         ordered[k] = c.freeVertices[inverse.indices()(k)];
-    Eigen::SparseMatrix<double> permuted(nf, nf);
-    permuted = laplacian.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
     // Both halves are kept: the Upper factor reads the upper one, the per-event residual check
     // reads whole rows (= columns). Permuted columns come out unsorted, and G00 is built on
     // this pattern through an assignment that needs sorted indices: a double transpose sorts.
     d.stepTwoMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>(permuted);
     d.stepTwoNorm = detail::selfAdjointNorm(d.stepTwoMatrix);
+    d.factorPattern =
+        analyzeSupernodal(nf, d.stepTwoMatrix.outerIndexPtr(), d.stepTwoMatrix.innerIndexPtr());
     return ordered;
 }
 

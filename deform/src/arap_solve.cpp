@@ -131,7 +131,8 @@ std::optional<DeformError> similarityStep(const ArapPrecompute &d, Workspace &w,
     }
     auto &rhs = w.rhs;
     rhs.noalias() = -(d.stepOneCoupling * q);
-    u = d.stepOneFactor.solve(rhs);
+    u = rhs;
+    d.stepOneFactor.solveInPlace(u.data());
     if (!check) // an initial guess for refinement, which checks the solve it ends with
         return u.allFinite() ? std::nullopt
                              : std::optional(makeError(DeformErrorCode::SolveFailed,

@@ -21,10 +21,11 @@
 #pragma once
 
 #include <finbook/deform/deform_error.h>
+#include <finbook/deform/supernodal_cholesky.h>
 #include <finbook/geometry/expected.h>
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 #include <complex>
 #include <functional>
@@ -91,10 +92,9 @@ struct ArapOptions {
 struct ArapPrecompute {
     using ComplexMatrix = Eigen::SparseMatrix<std::complex<double>>;
     using RealMatrix = Eigen::SparseMatrix<double>;
-    // LDLᴴ rather than LLᴴ for the complex system: no square roots, up to 20% faster measured.
-    using ComplexFactor =
-        Eigen::SimplicialLDLT<ComplexMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>>;
-    using RealFactor = Eigen::SimplicialLLT<RealMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>>;
+    // Both systems are factored by supernodes (supernodal_cholesky.h) in the same
+    // fill-reducing order, so one symbolic analysis serves both.
+    using ComplexFactor = SupernodalCholesky<std::complex<double>>;
 
     ArapOptions options;
     // Refined, Drag: passes after step 1 (or coarse start) per drag event, from options and the
@@ -125,19 +125,22 @@ struct ArapPrecompute {
     Eigen::VectorXi cornerTriangle; // row of `triangles` the corner belongs to
     Eigen::VectorXcd cornerRest;    // the corner's centred rest position
 
-    ComplexMatrix stepOneMatrix;   // G00, upper triangle
-    ComplexMatrix stepOneCoupling; // G01, freeCount × handles
-    ComplexFactor stepOneFactor;   // LDLᴴ of G00
-    double stepOneNorm = 0.0;      // ‖G00‖∞, scales the residual test
+    ComplexMatrix stepOneMatrix;                             // G00, upper triangle
+    ComplexMatrix stepOneCoupling;                           // G01, freeCount × handles
+    std::shared_ptr<const SupernodalSymbolic> factorPattern; // of H00, which G00 shares
+    ComplexFactor stepOneFactor;                             // LLᴴ of G00
+    double stepOneNorm = 0.0; // ‖G00‖∞, scales the residual test
     // M = −G00⁻¹G01, row-major so that u = M q is one pass. Empty when there are more than
     // 32 handles: then applying it would cost more than step 1 back-substituting per event.
     Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
         stepOneBasis;
-    RealMatrix stepTwoMatrix;            // H00 (uniform-weight graph Laplacian), both halves
-    RealMatrix stepTwoCoupling;          // H01, freeCount × handles
-    RealFactor stepTwoFactor;            // LLᵀ of H00
-    Eigen::VectorXd stepTwoPivotInverse; // 1 / diag(L) of that factor, for the back-substitution
-    double stepTwoNorm = 0.0;            // ‖H00‖∞, scales the residual test
+    RealMatrix stepTwoMatrix;   // H00 (uniform-weight graph Laplacian), both halves
+    RealMatrix stepTwoCoupling; // H01, freeCount × handles
+    // L of H00 = LLᵀ, compressed columns with the diagonal first in each (what the step-2
+    // back-substitution kernel walks), and 1 / diag(L).
+    RealMatrix stepTwoLower;
+    Eigen::VectorXd stepTwoPivotInverse;
+    double stepTwoNorm = 0.0; // ‖H00‖∞, scales the residual test
 
     // Triangles around each solved vertex (free and handles, internal index < freeCount +
     // handles): those of vertex v are vertexTriangle(vertexStart(v)) … (vertexStart(v+1) − 1).

@@ -1,0 +1,101 @@
+// Sparse Cholesky A = L Lᴴ for Hermitian positive definite matrices already in a
+// fill-reducing order (the ARAP precompute assembles its systems pre-permuted), computed by
+// supernodes: columns of L with the same structure below their diagonal block are factored
+// together as one dense block, so almost all the arithmetic runs in Eigen's dense kernels.
+// Eigen's SimplicialLDLT touches one entry at a time and spent about 300 ms on the complex
+// ARAP system of a 100k-vertex mesh; most of the factorization time is in the few large
+// separator blocks of such meshes, where dense products are many times faster.
+//
+// The symbolic analysis depends only on the pattern and is shared: the ARAP step-1 and
+// step-2 systems have the same pattern, so they are analysed once and factored twice.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <complex>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace finbook::deform {
+
+// Supernode partition and row structures of L for one pattern. Supernode s holds columns
+// first[s] … first[s + 1] − 1; its rows (ascending, its own columns first) are
+// rows[rowStart[s]] … rows[rowStart[s + 1] − 1]; its values are a column-major block of
+// (row count) × (column count) at valueStart[s].
+struct SupernodalSymbolic {
+    int n = 0;
+    std::vector<int> first;
+    std::vector<int> superOf; // per column: its supernode
+    std::vector<std::int64_t> rowStart;
+    std::vector<int> rows;
+    std::vector<std::int64_t> valueStart;
+    std::int64_t factorEntries = 0; // nonzeros of L, diagonal included (as a simplicial L)
+    int maxRows = 0;                // of any supernode
+};
+
+// Elimination tree of the upper-triangular pattern (column j holds rows i ≤ j): parent per
+// column, −1 at roots.
+std::vector<int> eliminationTree(int n, const int *outer, const int *inner);
+
+// A postorder of that forest: post[k] is the k-th column visited, children in ascending
+// order before their parent. Renumbering by it keeps the fill of L and makes every chain of
+// single children contiguous, which is what lets columns form supernodes.
+std::vector<int> postorder(const std::vector<int> &parent);
+
+// Analyses the upper-triangular pattern (compressed columns, column j holding rows i ≤ j;
+// entries below the diagonal are ignored) of a matrix whose elimination tree is postordered.
+std::shared_ptr<const SupernodalSymbolic> analyzeSupernodal(int n, const int *outer,
+                                                            const int *inner);
+
+// The copies of the numeric factorization (see src/supernodal/numeric.h). Automatic takes
+// the widest the CPU runs, capped by the environment variable FINBOOK_SUPERNODAL_ISA
+// (baseline or avx2) to measure or rule out a wider one.
+enum class SupernodalIsa { Automatic, Baseline, Avx2, Avx512 };
+bool supernodalIsaAvailable(SupernodalIsa isa); // built in and supported by this CPU
+// What Automatic is here: "avx512", "avx2" or "baseline" (SSE2 on x86-64).
+const char *supernodalInstructionSet();
+
+template <class Scalar> class SupernodalCholesky {
+public:
+    using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+
+    // Numeric factorization of A, given by the entries on and below the diagonal of each
+    // column of `lower` (compressed columns; entries above the diagonal are skipped, so a
+    // matrix holding both halves may be passed as is). False when A is not numerically
+    // positive definite (a pivot ≤ 0 or not finite). An unavailable isa runs the baseline.
+    bool factorize(std::shared_ptr<const SupernodalSymbolic> symbolic,
+                   const Eigen::SparseMatrix<Scalar> &lower,
+                   SupernodalIsa isa = SupernodalIsa::Automatic);
+    bool ok() const { return m_ok; }
+    Eigen::Index rows() const { return m_symbolic ? m_symbolic->n : 0; }
+    std::int64_t factorEntries() const { return m_symbolic ? m_symbolic->factorEntries : 0; }
+
+    // x ← A⁻¹ x for the rows() entries at x. Rhs may be real or complex (a real factor with a
+    // complex right-hand side solves for its real and imaginary parts at once). Allocates
+    // nothing.
+    template <class RhsScalar> void solveInPlace(RhsScalar *x) const;
+    template <class RhsScalar>
+    Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1>
+    solve(const Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> &b) const
+    {
+        Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> x = b;
+        solveInPlace(x.data());
+        return x;
+    }
+
+    // L as compressed columns, the diagonal first in each column, structural zeros of the
+    // supernodes left out (the layout SimplicialLLT's matrixL() has).
+    Eigen::SparseMatrix<Scalar> lowerMatrix() const;
+
+private:
+    std::shared_ptr<const SupernodalSymbolic> m_symbolic;
+    std::vector<Scalar> m_values;
+    bool m_ok = false;
+};
+
+extern template class SupernodalCholesky<double>;
+extern template class SupernodalCholesky<std::complex<double>>;
+
+} // namespace finbook::deform

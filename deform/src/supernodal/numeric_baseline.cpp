@@ -1,0 +1,3 @@
+#define FINBOOK_SUPERNODAL_ISA baseline
+#define FINBOOK_SUPERNODAL_EIGEN finbook_eigen_baseline
+#include "numeric_kernel.inc"

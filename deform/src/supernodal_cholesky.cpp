@@ -1,0 +1,399 @@
+#include "supernodal/numeric.h"
+
+#include <finbook/deform/supernodal_cholesky.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+
+namespace finbook::deform {
+namespace {
+
+// Relaxed amalgamation (the rule CHOLMOD uses by default): a supernode is merged with its
+// parent when the merged block stays small, or when the explicit zeros the merge stores stay
+// a small share of it. Tiny supernodes cost more in loop and call overhead than the zeros
+// cost in arithmetic; the zeros stay exact zeros and lowerMatrix() leaves them out.
+bool mergeAllowed(std::int64_t columns, std::int64_t zeros, std::int64_t total)
+{
+    const double share = total > 0 ? double(zeros) / double(total) : 0.0;
+    if (columns <= 4)
+        return true;
+    if (columns <= 16)
+        return share < 0.8;
+    if (columns <= 48)
+        return share < 0.1;
+    return share < 0.05;
+}
+
+// Entries of a column-major block of `rows` × `columns` whose first `columns` rows are its
+// diagonal block, lower trapezoid only.
+std::int64_t trapezoid(std::int64_t rows, std::int64_t columns)
+{
+    return columns * rows - columns * (columns - 1) / 2;
+}
+
+} // namespace
+
+std::vector<int> eliminationTree(int n, const int *outer, const int *inner)
+{
+    std::vector<int> parent(std::size_t(n), -1), ancestor(std::size_t(n), -1);
+    for (int j = 0; j < n; ++j) {
+        for (int p = outer[j]; p < outer[j + 1]; ++p) {
+            for (int i = inner[p]; i != -1 && i < j;) { // climb with path compression
+                const int next = ancestor[std::size_t(i)];
+                ancestor[std::size_t(i)] = j;
+                if (next == -1)
+                    parent[std::size_t(i)] = j;
+                i = next;
+            }
+        }
+    }
+    return parent;
+}
+
+std::vector<int> postorder(const std::vector<int> &parent)
+{
+    const int n = int(parent.size());
+    std::vector<int> head(std::size_t(n), -1), next(std::size_t(n), -1), post, stack;
+    post.reserve(std::size_t(n));
+    for (int j = n - 1; j >= 0; --j) { // children lists in ascending order
+        if (parent[std::size_t(j)] >= 0) {
+            next[std::size_t(j)] = head[std::size_t(parent[std::size_t(j)])];
+            head[std::size_t(parent[std::size_t(j)])] = j;
+        }
+    }
+    for (int root = 0; root < n; ++root) {
+        if (parent[std::size_t(root)] >= 0)
+            continue;
+        stack.push_back(root);
+        while (!stack.empty()) {
+            const int j = stack.back();
+            const int child = head[std::size_t(j)];
+            if (child == -1) {
+                stack.pop_back();
+                post.push_back(j);
+            } else {
+                head[std::size_t(j)] = next[std::size_t(child)];
+                stack.push_back(child);
+            }
+        }
+    }
+    return post;
+}
+
+std::shared_ptr<const SupernodalSymbolic> analyzeSupernodal(int n, const int *outer,
+                                                            const int *inner)
+{
+    auto s = std::make_shared<SupernodalSymbolic>();
+    s->n = n;
+    const std::vector<int> parent = eliminationTree(n, outer, inner);
+    // Column counts of L below the diagonal: row k of L is the union of the etree paths
+    // from the entries of column k of the upper triangle up to k.
+    std::vector<int> below(std::size_t(n), 0), flag(std::size_t(n), -1),
+        children(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+        flag[std::size_t(k)] = k;
+        for (int p = outer[k]; p < outer[k + 1]; ++p) {
+            for (int i = inner[p]; i < k && flag[std::size_t(i)] != k; i = parent[std::size_t(i)]) {
+                flag[std::size_t(i)] = k;
+                ++below[std::size_t(i)];
+            }
+        }
+        if (parent[std::size_t(k)] >= 0)
+            ++children[std::size_t(parent[std::size_t(k)])];
+    }
+    for (int j = 0; j < n; ++j)
+        s->factorEntries += below[std::size_t(j)] + 1;
+
+    // Fundamental supernodes, then relaxed merges of a supernode into the one right after
+    // it when that is its parent (in a postorder, a parent's last child comes right before).
+    // Tracked per supernode: its columns, rows (of its first column) and true entries.
+    std::vector<int> first;
+    std::vector<std::int64_t> rowCount, entries;
+    for (int j = 0; j < n; ++j) {
+        const bool continues = j > 0 && parent[std::size_t(j - 1)] == j &&
+                               children[std::size_t(j)] == 1 &&
+                               below[std::size_t(j - 1)] == below[std::size_t(j)] + 1;
+        if (continues) {
+            entries.back() += below[std::size_t(j)] + 1;
+            continue;
+        }
+        first.push_back(j);
+        rowCount.push_back(below[std::size_t(j)] + 1);
+        entries.push_back(below[std::size_t(j)] + 1);
+    }
+    first.push_back(n);
+    std::vector<int> merged{0};
+    std::int64_t mergedEntries = entries.empty() ? 0 : entries[0];
+    for (std::size_t t = 1; t + 1 < first.size(); ++t) {
+        const int lastColumn = first[t] - 1;
+        const std::int64_t columns = first[t + 1] - merged.back();
+        const std::int64_t width = first[t] - merged.back();
+        const std::int64_t rowsTogether = width + rowCount[t];
+        const std::int64_t total = trapezoid(rowsTogether, columns);
+        const std::int64_t trueEntries = mergedEntries + entries[t];
+        if (parent[std::size_t(lastColumn)] == first[t] &&
+            mergeAllowed(columns, total - trueEntries, total)) {
+            mergedEntries = trueEntries;
+            continue;
+        }
+        merged.push_back(first[t]);
+        mergedEntries = entries[t];
+    }
+    if (n > 0)
+        merged.push_back(n);
+    else
+        merged.assign(1, 0);
+    s->first = std::move(merged);
+    const int count = int(s->first.size()) - 1;
+    s->superOf.resize(std::size_t(n));
+    for (int t = 0; t < count; ++t)
+        std::fill(s->superOf.begin() + s->first[std::size_t(t)],
+                  s->superOf.begin() + s->first[std::size_t(t) + 1], t);
+
+    // Row structures: a supernode's columns, the rows below it in its columns of A, and the
+    // rows below it of its child supernodes. Lower entries of A are read as the upper
+    // triangle's rows, so build that transpose's pattern first.
+    std::vector<int> rowStartOfUpper(std::size_t(n) + 1, 0), upperRows;
+    for (int j = 0; j < n; ++j) {
+        for (int p = outer[j]; p < outer[j + 1]; ++p) {
+            if (inner[p] < j)
+                ++rowStartOfUpper[std::size_t(inner[p]) + 1];
+        }
+    }
+    for (int i = 0; i < n; ++i)
+        rowStartOfUpper[std::size_t(i) + 1] += rowStartOfUpper[std::size_t(i)];
+    upperRows.resize(std::size_t(rowStartOfUpper[std::size_t(n)]));
+    {
+        std::vector<int> fill(rowStartOfUpper.begin(), rowStartOfUpper.end() - 1);
+        for (int j = 0; j < n; ++j) {
+            for (int p = outer[j]; p < outer[j + 1]; ++p) {
+                if (inner[p] < j)
+                    upperRows[std::size_t(fill[std::size_t(inner[p])]++)] = j;
+            }
+        }
+    }
+    std::vector<int> childHead(std::size_t(count), -1), childNext(std::size_t(count), -1);
+    for (int t = count - 1; t >= 0; --t) {
+        const int up = parent[std::size_t(s->first[std::size_t(t) + 1] - 1)];
+        if (up >= 0) {
+            const int p = s->superOf[std::size_t(up)];
+            childNext[std::size_t(t)] = childHead[std::size_t(p)];
+            childHead[std::size_t(p)] = t;
+        }
+    }
+    s->rowStart.assign(std::size_t(count) + 1, 0);
+    s->valueStart.assign(std::size_t(count) + 1, 0);
+    std::vector<int> mark(std::size_t(n), -1), gathered;
+    for (int t = 0; t < count; ++t) {
+        const int f = s->first[std::size_t(t)], l = s->first[std::size_t(t) + 1] - 1;
+        gathered.clear();
+        const auto add = [&](int row) {
+            if (row > l && mark[std::size_t(row)] != t) {
+                mark[std::size_t(row)] = t;
+                gathered.push_back(row);
+            }
+        };
+        for (int j = f; j <= l; ++j) {
+            for (int p = rowStartOfUpper[std::size_t(j)]; p < rowStartOfUpper[std::size_t(j) + 1];
+                 ++p)
+                add(upperRows[std::size_t(p)]);
+        }
+        for (int c = childHead[std::size_t(t)]; c >= 0; c = childNext[std::size_t(c)]) {
+            for (std::int64_t p = s->rowStart[std::size_t(c)]; p < s->rowStart[std::size_t(c) + 1];
+                 ++p)
+                add(s->rows[std::size_t(p)]);
+        }
+        std::sort(gathered.begin(), gathered.end());
+        for (int j = f; j <= l; ++j)
+            s->rows.push_back(j);
+        s->rows.insert(s->rows.end(), gathered.begin(), gathered.end());
+        const std::int64_t m = std::int64_t(l - f + 1) + std::int64_t(gathered.size());
+        s->rowStart[std::size_t(t) + 1] = s->rowStart[std::size_t(t)] + m;
+        s->maxRows = std::max(s->maxRows, int(m));
+        s->valueStart[std::size_t(t) + 1] = s->valueStart[std::size_t(t)] + m * (l - f + 1);
+    }
+    return s;
+}
+
+namespace {
+
+SupernodalIsa widestSupported()
+{
+#if defined(FINBOOK_SUPERNODAL_X86)
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+        __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+        return SupernodalIsa::Avx512;
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+        return SupernodalIsa::Avx2;
+#endif
+    return SupernodalIsa::Baseline;
+}
+
+SupernodalIsa automaticIsa()
+{
+    static const SupernodalIsa isa = [] {
+        const SupernodalIsa widest = widestSupported();
+        const char *cap = std::getenv("FINBOOK_SUPERNODAL_ISA");
+        if (cap && std::strcmp(cap, "baseline") == 0)
+            return SupernodalIsa::Baseline;
+        if (cap && std::strcmp(cap, "avx2") == 0 && widest == SupernodalIsa::Avx512)
+            return SupernodalIsa::Avx2;
+        return widest;
+    }();
+    return isa;
+}
+
+} // namespace
+
+bool supernodalIsaAvailable(SupernodalIsa isa)
+{
+    static const SupernodalIsa widest = widestSupported();
+    switch (isa) {
+    case SupernodalIsa::Automatic:
+    case SupernodalIsa::Baseline:
+        return true;
+    case SupernodalIsa::Avx2:
+        return widest == SupernodalIsa::Avx2 || widest == SupernodalIsa::Avx512;
+    case SupernodalIsa::Avx512:
+        return widest == SupernodalIsa::Avx512;
+    }
+    return false;
+}
+
+const char *supernodalInstructionSet()
+{
+    switch (automaticIsa()) {
+    case SupernodalIsa::Avx512:
+        return "avx512";
+    case SupernodalIsa::Avx2:
+        return "avx2";
+    default:
+        return "baseline";
+    }
+}
+
+template <class Scalar>
+bool SupernodalCholesky<Scalar>::factorize(std::shared_ptr<const SupernodalSymbolic> symbolic,
+                                           const Eigen::SparseMatrix<Scalar> &lower,
+                                           SupernodalIsa isa)
+{
+    m_symbolic = std::move(symbolic);
+    m_ok = false;
+    const SupernodalSymbolic &s = *m_symbolic;
+    const int count = int(s.first.size()) - 1;
+    m_values.assign(std::size_t(s.valueStart.back()), Scalar(0));
+    supernodal::Pattern pattern;
+    pattern.n = s.n;
+    pattern.count = count;
+    pattern.first = s.first.data();
+    pattern.superOf = s.superOf.data();
+    pattern.rowStart = s.rowStart.data();
+    pattern.rows = s.rows.data();
+    pattern.valueStart = s.valueStart.data();
+    supernodal::Lower<Scalar> a;
+    a.outer = lower.outerIndexPtr();
+    a.inner = lower.innerIndexPtr();
+    a.nonZeros = lower.innerNonZeroPtr();
+    a.values = lower.valuePtr();
+    std::vector<int> ints(std::size_t(s.n) + 3 * std::size_t(count) + std::size_t(s.maxRows));
+    std::vector<Scalar> update(std::size_t(s.maxRows) * std::size_t(s.maxRows));
+    supernodal::Scratch scratch;
+    scratch.map = ints.data();
+    scratch.head = scratch.map + s.n;
+    scratch.link = scratch.head + count;
+    scratch.position = scratch.link + count;
+    scratch.relative = scratch.position + count;
+    scratch.update = update.data();
+    if (isa == SupernodalIsa::Automatic)
+        isa = automaticIsa();
+    else if (!supernodalIsaAvailable(isa))
+        isa = SupernodalIsa::Baseline;
+    switch (isa) {
+#if defined(FINBOOK_SUPERNODAL_X86)
+    case SupernodalIsa::Avx512:
+        m_ok = supernodal::avx512::factorize(pattern, a, m_values.data(), scratch);
+        break;
+    case SupernodalIsa::Avx2:
+        m_ok = supernodal::avx2::factorize(pattern, a, m_values.data(), scratch);
+        break;
+#endif
+    default:
+        m_ok = supernodal::baseline::factorize(pattern, a, m_values.data(), scratch);
+        break;
+    }
+    return m_ok;
+}
+
+template <class Scalar>
+template <class RhsScalar>
+void SupernodalCholesky<Scalar>::solveInPlace(RhsScalar *y) const
+{
+    using Eigen::numext::conj;
+    using Eigen::numext::real;
+    const SupernodalSymbolic &s = *m_symbolic;
+    const int count = int(s.first.size()) - 1;
+    for (int t = 0; t < count; ++t) { // L y = b
+        const int f = s.first[std::size_t(t)];
+        const int w = s.first[std::size_t(t) + 1] - f;
+        const int *rs = s.rows.data() + s.rowStart[std::size_t(t)];
+        const int m = int(s.rowStart[std::size_t(t) + 1] - s.rowStart[std::size_t(t)]);
+        const Scalar *block = m_values.data() + s.valueStart[std::size_t(t)];
+        for (int k = 0; k < w; ++k) {
+            const Scalar *column = block + std::ptrdiff_t(k) * m;
+            const RhsScalar yk = y[f + k] * (1.0 / real(column[k]));
+            y[f + k] = yk;
+            for (int r = k + 1; r < m; ++r)
+                y[rs[r]] -= column[r] * yk;
+        }
+    }
+    for (int t = count - 1; t >= 0; --t) { // Lᴴ x = y
+        const int f = s.first[std::size_t(t)];
+        const int w = s.first[std::size_t(t) + 1] - f;
+        const int *rs = s.rows.data() + s.rowStart[std::size_t(t)];
+        const int m = int(s.rowStart[std::size_t(t) + 1] - s.rowStart[std::size_t(t)]);
+        const Scalar *block = m_values.data() + s.valueStart[std::size_t(t)];
+        for (int k = w - 1; k >= 0; --k) {
+            const Scalar *column = block + std::ptrdiff_t(k) * m;
+            RhsScalar sum = y[f + k];
+            for (int r = k + 1; r < m; ++r)
+                sum -= conj(column[r]) * y[rs[r]];
+            y[f + k] = sum * (1.0 / real(column[k]));
+        }
+    }
+}
+
+template <class Scalar> Eigen::SparseMatrix<Scalar> SupernodalCholesky<Scalar>::lowerMatrix() const
+{
+    const SupernodalSymbolic &s = *m_symbolic;
+    Eigen::SparseMatrix<Scalar> L(s.n, s.n);
+    L.reserve(Eigen::Index(s.factorEntries));
+    const int count = int(s.first.size()) - 1;
+    for (int t = 0; t < count; ++t) {
+        const int f = s.first[std::size_t(t)];
+        const int w = s.first[std::size_t(t) + 1] - f;
+        const int *rs = s.rows.data() + s.rowStart[std::size_t(t)];
+        const int m = int(s.rowStart[std::size_t(t) + 1] - s.rowStart[std::size_t(t)]);
+        const Scalar *block = m_values.data() + s.valueStart[std::size_t(t)];
+        for (int k = 0; k < w; ++k) {
+            const Scalar *column = block + std::ptrdiff_t(k) * m;
+            L.startVec(f + k);
+            L.insertBack(f + k, f + k) = column[k];
+            for (int r = k + 1; r < m; ++r) {
+                if (column[r] != Scalar(0)) // zeros stored by a relaxed merge
+                    L.insertBack(rs[r], f + k) = column[r];
+            }
+        }
+    }
+    L.finalize();
+    return L;
+}
+
+template class SupernodalCholesky<double>;
+template class SupernodalCholesky<std::complex<double>>;
+template void SupernodalCholesky<double>::solveInPlace(double *) const;
+template void SupernodalCholesky<double>::solveInPlace(std::complex<double> *) const;
+template void SupernodalCholesky<std::complex<double>>::solveInPlace(std::complex<double> *) const;
+
+} // namespace finbook::deform
