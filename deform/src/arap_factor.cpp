@@ -52,6 +52,7 @@ struct ArapFactorization::Shared {
     CoarseBuilder coarse;
     std::atomic<bool> coarseReady{false};
     std::atomic<int> nextColumn{0};
+    SupernodalCholesky<Complex> stepOne; // G00's factor, for the basis solves
 
     void sayAssembled()
     {
@@ -106,12 +107,12 @@ struct ArapFactorization::Shared {
         stepOneFactored.count_down();
     }
 
-    // LLᵀ of H00, the reciprocal pivots of the back-substitution kernel, and a probe.
+    // LLᵀ of H00, the compressed L and reciprocal pivots of the back-substitution kernel,
+    // and a probe through that kernel (x and y of a known vector at once).
     void factorStepTwo()
     {
         SupernodalCholesky<double> factor;
-        stepTwoOk = factor.factorize(d.factorPattern, d.stepTwoMatrix) &&
-                    probe(factor, d.stepTwoMatrix, d.stepTwoNorm);
+        stepTwoOk = factor.factorize(d.factorPattern, d.stepTwoMatrix);
         if (!stepTwoOk)
             return;
         d.stepTwoLower = factor.lowerMatrix();
@@ -119,25 +120,49 @@ struct ArapFactorization::Shared {
         d.stepTwoPivotInverse.resize(L.cols());
         for (Eigen::Index j = 0; j < L.cols(); ++j) // the diagonal leads each column
             d.stepTwoPivotInverse(j) = 1.0 / L.valuePtr()[L.outerIndexPtr()[j]];
+        const Eigen::Index n = L.cols();
+        Eigen::VectorXcd known(n);
+        known.real() = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+        known.imag() = Eigen::VectorXd::LinSpaced(n, 2.0, 1.0);
+        const Eigen::VectorXcd rhs = d.stepTwoMatrix * known; // both halves are stored
+        Eigen::VectorXcd x = rhs;
+        arapStepTwoBacksubstitute(d, x);
+        const Eigen::VectorXcd residual = d.stepTwoMatrix * x - rhs;
+        stepTwoOk = x.allFinite() &&
+                    relativeResidual(residual, d.stepTwoNorm, x, rhs) <= kResidualTolerance;
     }
 
-    // Basis columns first, first + stride, …: M(:, c) = −G00⁻¹ G01(:, c), each
-    // residual-checked (which also verifies the G00 factor, so it needs no probe then).
+    // Basis columns first, first + stride, …: M(:, c) = −G00⁻¹ G01(:, c), solved together
+    // (one pass over the factor; each right-hand side has a pin's few neighbours, so the
+    // forward pass hardly touches L) and each residual-checked (which also verifies the G00
+    // factor, so it needs no probe then).
     void basisColumns(Eigen::Index first, Eigen::Index stride, const std::function<bool()> &stop)
     {
-        for (Eigen::Index c = first; c < d.stepOneBasis.cols(); c += stride) {
-            if (abort || inaccurate || stop()) {
-                abort = true;
-                return;
-            }
-            const Eigen::VectorXcd rhs = -Eigen::VectorXcd(d.stepOneCoupling.col(c));
-            const Eigen::VectorXcd column = d.stepOneFactor.solve(rhs);
+        std::vector<Eigen::Index> columns;
+        for (Eigen::Index c = first; c < d.stepOneBasis.cols(); c += stride)
+            columns.push_back(c);
+        if (columns.empty())
+            return;
+        if (abort || inaccurate || stop()) {
+            abort = true;
+            return;
+        }
+        const auto k = Eigen::Index(columns.size());
+        // Row by row, as the multi-column solve takes them.
+        Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> block =
+            Eigen::MatrixXcd::Zero(d.freeCount, k);
+        for (Eigen::Index j = 0; j < k; ++j)
+            block.col(j) = -Eigen::VectorXcd(d.stepOneCoupling.col(columns[std::size_t(j)]));
+        const Eigen::MatrixXcd rhs = block;
+        stepOne.solveInPlace(block.data(), int(k));
+        for (Eigen::Index j = 0; j < k; ++j) {
+            const Eigen::VectorXcd column = block.col(j);
             const Eigen::VectorXcd residual =
-                d.stepOneMatrix.selfadjointView<Eigen::Upper>() * column - rhs;
+                d.stepOneMatrix.selfadjointView<Eigen::Upper>() * column - rhs.col(j);
             if (!column.allFinite() ||
-                relativeResidual(residual, d.stepOneNorm, column, rhs) > kResidualTolerance)
+                relativeResidual(residual, d.stepOneNorm, column, rhs.col(j)) > kResidualTolerance)
                 inaccurate = true;
-            d.stepOneBasis.col(c) = column;
+            d.stepOneBasis.col(columns[std::size_t(j)]) = column;
         }
     }
 };
@@ -200,10 +225,14 @@ std::optional<DeformError> ArapFactorization::finish(const std::function<bool()>
         s.release(false);
     } else {
         // The factor reads lower columns: G00's are the conjugates of its upper rows.
-        bool ok = s.d.stepOneFactor.factorize(
-            s.d.factorPattern, ArapPrecompute::ComplexMatrix(s.d.stepOneMatrix.adjoint()));
-        if (ok && s.d.stepOneBasis.cols() == 0) // no basis solves to verify the factor with
+        bool ok = s.stepOne.factorize(s.d.factorPattern,
+                                      ArapPrecompute::ComplexMatrix(s.d.stepOneMatrix.adjoint()));
+        // Drag events solve with G00 only when there is no basis: then they need the
+        // compact factor, and there are no basis solves to verify it with.
+        if (ok && s.d.stepOneBasis.cols() == 0) {
+            s.d.stepOneFactor = ArapPrecompute::ComplexFactor(s.stepOne.lowerMatrix());
             ok = probe(s.d.stepOneFactor, s.d.stepOneMatrix, s.d.stepOneNorm);
+        }
         s.release(ok);
         if (ok && (s.stepTwoOk || parallel))
             s.basisColumns(0, parallel ? 2 : 1, stop);

@@ -233,6 +233,51 @@ private slots:
         QVERIFY(!complexFactor.factorize(analyze(complexIndefinite), complexIndefinite));
     }
 
+    // Several right-hand sides at once (row by row), some with only a few entries (the
+    // forward pass skips what stays zero), through the supernodes and the compact factor:
+    // each column as its own solve gives, to rounding.
+    void blocksOfRightHandSides()
+    {
+        std::mt19937 random(13);
+        const auto edges = gridEdges(3000);
+        const int n = vertexCount(edges);
+        const auto A = ordered(hermitian<Complex>(n, edges, random));
+        SupernodalCholesky<Complex> factor;
+        QVERIFY(factor.factorize(analyze(A), A));
+        const finbook::deform::CholeskyFactor<Complex> compact(factor.lowerMatrix());
+        QCOMPARE(compact.rows(), Eigen::Index(n));
+        constexpr int k = 5;
+        Eigen::Matrix<Complex, Eigen::Dynamic, k, Eigen::RowMajor> block =
+            Eigen::Matrix<Complex, Eigen::Dynamic, k, Eigen::RowMajor>::Zero(n, k);
+        block.col(0) = Eigen::VectorXcd::Random(n);
+        for (int c = 1; c < k; ++c) { // a pin's neighbourhood: a handful of entries
+            for (int e = 0; e < 6; ++e)
+                block(int(random() % std::uint32_t(n)), c) = Complex(1.0 + e, -0.5 * c);
+        }
+        const Eigen::MatrixXcd rhs = block;
+        auto viaSupernodes = block, viaCompact = block;
+        factor.solveInPlace(viaSupernodes.data(), k);
+        compact.solveInPlace(viaCompact.data(), k);
+        for (int c = 0; c < k; ++c) {
+            const Eigen::VectorXcd single = factor.solve(Eigen::VectorXcd(rhs.col(c)));
+            const double scale = single.norm();
+            QVERIFY((Eigen::VectorXcd(viaSupernodes.col(c)) - single).norm() <= 1e-12 * scale);
+            QVERIFY((Eigen::VectorXcd(viaCompact.col(c)) - single).norm() <= 1e-12 * scale);
+            QVERIFY((A * single - Eigen::VectorXcd(rhs.col(c))).norm() <=
+                    1e-12 * rhs.col(c).norm());
+        }
+        // A real factor with a complex right-hand side solves both parts at once.
+        const auto R = ordered(hermitian<double>(n, edges, random));
+        SupernodalCholesky<double> real;
+        QVERIFY(real.factorize(analyze(R), R));
+        const Eigen::VectorXcd b = Eigen::VectorXcd::Random(n);
+        const Eigen::VectorXcd x = real.solve(b);
+        QVERIFY((R * Eigen::VectorXd(x.real()) - Eigen::VectorXd(b.real())).norm() <=
+                1e-12 * b.real().norm());
+        QVERIFY((R * Eigen::VectorXd(x.imag()) - Eigen::VectorXd(b.imag())).norm() <=
+                1e-12 * b.imag().norm());
+    }
+
     void emptyAndSingle()
     {
         const Sparse<double> empty(0, 0);

@@ -94,7 +94,7 @@ struct ArapPrecompute {
     using RealMatrix = Eigen::SparseMatrix<double>;
     // Both systems are factored by supernodes (supernodal_cholesky.h) in the same
     // fill-reducing order, so one symbolic analysis serves both.
-    using ComplexFactor = SupernodalCholesky<std::complex<double>>;
+    using ComplexFactor = CholeskyFactor<std::complex<double>>;
 
     ArapOptions options;
     // Refined, Drag: passes after step 1 (or coarse start) per drag event, from options and the
@@ -128,8 +128,8 @@ struct ArapPrecompute {
     ComplexMatrix stepOneMatrix;                             // G00, upper triangle
     ComplexMatrix stepOneCoupling;                           // G01, freeCount × handles
     std::shared_ptr<const SupernodalSymbolic> factorPattern; // of H00, which G00 shares
-    ComplexFactor stepOneFactor;                             // LLᴴ of G00
-    double stepOneNorm = 0.0; // ‖G00‖∞, scales the residual test
+    ComplexFactor stepOneFactor; // LLᴴ of G00, only kept without a basis (see below)
+    double stepOneNorm = 0.0;    // ‖G00‖∞, scales the residual test
     // M = −G00⁻¹G01, row-major so that u = M q is one pass. Empty when there are more than
     // 32 handles: then applying it would cost more than step 1 back-substituting per event.
     Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>

@@ -75,7 +75,12 @@ public:
     // x ← A⁻¹ x for the rows() entries at x. Rhs may be real or complex (a real factor with a
     // complex right-hand side solves for its real and imaginary parts at once). Allocates
     // nothing.
-    template <class RhsScalar> void solveInPlace(RhsScalar *x) const;
+    template <class RhsScalar> void solveInPlace(RhsScalar *x) const { solveInPlace(x, 1); }
+    // The same for `columns` right-hand sides stored row by row (x[i·columns + c]), in one
+    // pass over L. Supernodes whose entries are all zero when the forward pass reaches them
+    // are skipped there: a right-hand side with a few entries (a basis column of a pin)
+    // only travels up the elimination tree from them.
+    template <class RhsScalar> void solveInPlace(RhsScalar *x, int columns) const;
     template <class RhsScalar>
     Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1>
     solve(const Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> &b) const
@@ -95,7 +100,42 @@ private:
     bool m_ok = false;
 };
 
+// A Cholesky factor L (A = L Lᴴ) kept as compressed columns, the diagonal first in each:
+// what repeated solves use. The supernodes' dense blocks are the fast layout to factor in,
+// but they store the zeros of relaxed merges (about 35–45 % more entries on meshes), and a
+// solve streams every stored entry: at 20k vertices a supernodal solve took 1.9 ms where
+// this one takes about as long as Eigen's simplicial solve (1.1 ms).
+template <class Scalar> class CholeskyFactor {
+public:
+    CholeskyFactor() = default;
+    explicit CholeskyFactor(Eigen::SparseMatrix<Scalar> lower)
+        : m_lower(std::move(lower))
+    {}
+    const Eigen::SparseMatrix<Scalar> &lower() const { return m_lower; }
+    Eigen::Index rows() const { return m_lower.rows(); }
+
+    // x ← A⁻¹ x for `columns` right-hand sides stored row by row (x[i·columns + c]), real or
+    // complex (a real factor solves a complex right-hand side's two parts at once), in one
+    // pass over L each way. The forward pass skips columns of L whose entries of x are all
+    // zero, so a right-hand side with a few entries (a pin's basis column) costs little
+    // there. Allocates nothing.
+    template <class RhsScalar> void solveInPlace(RhsScalar *x, int columns = 1) const;
+    template <class RhsScalar>
+    Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1>
+    solve(const Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> &b) const
+    {
+        Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> x = b;
+        solveInPlace(x.data());
+        return x;
+    }
+
+private:
+    Eigen::SparseMatrix<Scalar> m_lower;
+};
+
 extern template class SupernodalCholesky<double>;
 extern template class SupernodalCholesky<std::complex<double>>;
+extern template class CholeskyFactor<double>;
+extern template class CholeskyFactor<std::complex<double>>;
 
 } // namespace finbook::deform
