@@ -43,6 +43,13 @@ void backsubstituteBlock(const ArapPrecompute &data, Complex *x)
     const double *pivotInverse = data.stepTwoPivotInverse.data();
     const Eigen::Index n = L.cols();
     for (Eigen::Index j = 0; j < n; ++j) { // L y = b
+        // Where all B are still zero the column adds nothing: right-hand sides with entries
+        // in a few regions (coarse clusters) only travel up the elimination tree from them.
+        bool zero = true;
+        for (int b = 0; b < B; ++b)
+            zero = zero && x[j * B + b] == Complex(0.0, 0.0);
+        if (zero)
+            continue;
         Complex yj[B];
         for (int b = 0; b < B; ++b)
             yj[b] = x[j * B + b] = x[j * B + b] * pivotInverse[j];

@@ -23,7 +23,8 @@ using Complex = std::complex<double>;
 constexpr int kBlockWidth = 4;
 
 // x ← H00⁻¹ x for kBlockWidth right-hand sides stored row by row (x[v·kBlockWidth + b]):
-// the same operations, in the same order, as arapStepTwoBacksubstitute on each column, with
+// the same operations, in the same order, as arapStepTwoBacksubstitute on each column (less
+// the columns of L it reaches with all B entries still zero, which add nothing), with
 // one pass over the factor for all of them (that pass, not the arithmetic, is what a
 // back-substitution of a large mesh waits for).
 void backsubstituteBlock(const ArapPrecompute &data, Complex *x);
