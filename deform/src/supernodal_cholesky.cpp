@@ -211,6 +211,9 @@ std::shared_ptr<const SupernodalSymbolic> analyzeSupernodal(int n, const int *ou
         const std::int64_t m = std::int64_t(l - f + 1) + std::int64_t(gathered.size());
         s->rowStart[std::size_t(t) + 1] = s->rowStart[std::size_t(t)] + m;
         s->maxRows = std::max(s->maxRows, int(m));
+        // An update this supernode sends has at most (rows below its columns)² entries.
+        const std::int64_t offDiagonalRows = m - (l - f + 1);
+        s->maxUpdate = std::max(s->maxUpdate, offDiagonalRows * offDiagonalRows);
         s->valueStart[std::size_t(t) + 1] = s->valueStart[std::size_t(t)] + m * (l - f + 1);
     }
     return s;
@@ -298,7 +301,7 @@ bool SupernodalCholesky<Scalar>::factorize(std::shared_ptr<const SupernodalSymbo
     a.nonZeros = lower.innerNonZeroPtr();
     a.values = lower.valuePtr();
     std::vector<int> ints(std::size_t(s.n) + 3 * std::size_t(count) + std::size_t(s.maxRows));
-    std::vector<Scalar> update(std::size_t(s.maxRows) * std::size_t(s.maxRows));
+    std::vector<Scalar> update(std::size_t(s.maxUpdate));
     supernodal::Scratch scratch;
     scratch.map = ints.data();
     scratch.head = scratch.map + s.n;
@@ -339,7 +342,7 @@ void supernodalSolve(const SupernodalSymbolic &s, const std::vector<Scalar> &val
     using Eigen::numext::conj;
     using Eigen::numext::real;
     const int count = int(s.first.size()) - 1;
-    const auto row = [y, columns](int i) { return y + std::ptrdiff_t(i) * columns; };
+    const auto row = [=](int i) { return y + std::ptrdiff_t(i) * columns; };
     for (int t = 0; t < count; ++t) { // L y = b
         const int f = s.first[std::size_t(t)];
         const int w = s.first[std::size_t(t) + 1] - f;

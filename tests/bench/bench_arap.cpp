@@ -1,10 +1,11 @@
 // finbook-bench arap: precompute and per-drag-event cost of the ARAP deformer on grid meshes,
 // against the floor of one step-2 back-substitution, plus pin-to-strokes latency and the
 // refined method's drag event (update_ms is the paper's two steps, drag_ms the refined drag
-// stage, drag_over_update their ratio; *_min_ms the fastest event, less disturbed by a busy
-// machine); then the pose quality of a 4:1 bar bent 60° (see arap_quality.h; there
-// drag_over_two_step is the same ratio for that pose). With --quality FILE... the same
-// quality columns for real drawings, each meshed as the app meshes it and bent 45° (with
+// stage, drag_over_update their ratio; factor_isa the instruction set of the factorization;
+// *_min_ms the fastest event, less disturbed by a busy machine); then the pose quality of a 4:1 bar
+// bent 60° (see arap_quality.h; there drag_over_two_step is the same ratio for that pose). With
+// --quality FILE... the same quality columns for real drawings, each meshed as the app meshes it
+// and bent 45° (with
 // --density D at that mesh density: 3.65 for about 20k vertices).
 #include "../deform/grid_mesh.h"
 #include "arap_quality.h"
@@ -162,13 +163,14 @@ int runSize(int vertices)
                 "\"floor_complex_ms\":%.4f,\"floor_kernel_ms\":%.4f,\"ratio_vs_kernel\":%.2f,"
                 "\"stroke_points\":5000,\"end_to_end_ms\":%.4f,\"drag_passes\":%d,"
                 "\"drag_ms\":%.4f,\"drag_min_ms\":%.4f,\"update_min_ms\":%.4f,"
-                "\"drag_over_update\":%.2f}\n",
+                "\"drag_over_update\":%.2f,\"factor_isa\":\"%s\"}\n",
                 (long long)g.V.rows(), (long long)g.F.rows(), precomputeMs, update,
                 floor.realPairMs, update / floor.realPairMs, floor.complexMs, floor.kernelMs,
                 update / floor.kernelMs, finbook::bench::median(endToEnd), data->dragPasses,
                 finbook::bench::median(drags), *std::min_element(drags.begin(), drags.end()),
                 *std::min_element(updates.begin(), updates.end()),
-                finbook::bench::median(drags) / update);
+                finbook::bench::median(drags) / update,
+                finbook::deform::supernodalInstructionSet());
     std::fflush(stdout);
     return 0;
 }

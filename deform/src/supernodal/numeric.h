@@ -31,7 +31,8 @@ template <class Scalar> struct Lower {
     const Scalar *values = nullptr;
 };
 
-// Scratch the caller owns: n + 3·count + maxRows ints, maxRows² scalars for updates.
+// Scratch the caller owns: n + 3·count + maxRows ints, maxUpdate scalars for updates (see
+// SupernodalSymbolic).
 struct Scratch {
     int *map = nullptr, *head = nullptr, *link = nullptr, *position = nullptr, *relative = nullptr;
     void *update = nullptr;

@@ -33,6 +33,7 @@ struct SupernodalSymbolic {
     std::vector<std::int64_t> valueStart;
     std::int64_t factorEntries = 0; // nonzeros of L, diagonal included (as a simplicial L)
     int maxRows = 0;                // of any supernode
+    std::int64_t maxUpdate = 0;     // entries of the largest update one supernode sends
 };
 
 // Elimination tree of the upper-triangular pattern (column j holds rows i ≤ j): parent per
