@@ -103,7 +103,10 @@ template <class Scalar> Sparse<Scalar> ordered(const Sparse<Scalar> &A)
 template <class Scalar>
 std::shared_ptr<const finbook::deform::SupernodalSymbolic> analyze(const Sparse<Scalar> &A)
 {
-    return finbook::deform::analyzeSupernodal(int(A.rows()), A.outerIndexPtr(), A.innerIndexPtr());
+    Sparse<Scalar> compressed = A; // the analysis reads compressed columns
+    compressed.makeCompressed();
+    return finbook::deform::analyzeSupernodal(int(compressed.rows()), compressed.outerIndexPtr(),
+                                              compressed.innerIndexPtr());
 }
 
 // L from supernodes against Eigen's SimplicialLLT in the same (natural) order: the same

@@ -36,8 +36,8 @@ struct SupernodalSymbolic {
     std::int64_t maxUpdate = 0;     // entries of the largest update one supernode sends
 };
 
-// Elimination tree of the upper-triangular pattern (column j holds rows i ≤ j): parent per
-// column, −1 at roots.
+// Elimination tree of the upper-triangular pattern (compressed columns, column j holding
+// rows i ≤ j; other entries are ignored): parent per column, −1 at roots.
 std::vector<int> eliminationTree(int n, const int *outer, const int *inner);
 
 // A postorder of that forest: post[k] is the k-th column visited, children in ascending
@@ -45,8 +45,9 @@ std::vector<int> eliminationTree(int n, const int *outer, const int *inner);
 // single children contiguous, which is what lets columns form supernodes.
 std::vector<int> postorder(const std::vector<int> &parent);
 
-// Analyses the upper-triangular pattern (compressed columns, column j holding rows i ≤ j;
-// entries below the diagonal are ignored) of a matrix whose elimination tree is postordered.
+// Analyses the upper-triangular pattern of a matrix whose elimination tree is postordered:
+// compressed columns (outer[j + 1] ends column j, so an Eigen matrix must be compressed
+// first), column j holding rows i ≤ j; entries below the diagonal are ignored.
 std::shared_ptr<const SupernodalSymbolic> analyzeSupernodal(int n, const int *outer,
                                                             const int *inner);
 
