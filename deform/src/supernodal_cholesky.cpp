@@ -331,63 +331,63 @@ bool SupernodalCholesky<Scalar>::factorize(std::shared_ptr<const SupernodalSymbo
 
 namespace {
 
-// The solve of SupernodalCholesky::solveInPlace; Fixed > 0 fixes the column count at compile
-// time (one right-hand side, the step-1 solve of a drag event with many pins, must not pay
-// for loops over a run-time count).
-template <int Fixed, class Scalar, class RhsScalar>
-void supernodalSolve(const SupernodalSymbolic &s, const std::vector<Scalar> &values, RhsScalar *y,
-                     int runtimeColumns)
+// One column of L: its diagonal entry first, then the rows below it that are stored.
+template <class Scalar> struct Column {
+    const int *rows;
+    const Scalar *values;
+    int count;
+};
+
+// x ← (L Lᴴ)⁻¹ x for right-hand sides stored row by row, L given column by column (both
+// layouts of L solve through this). Fixed > 0 fixes the column count at compile time: one
+// right-hand side, the step-1 solve of a drag event with many pins, must not pay for loops
+// over a run-time count. The forward pass skips columns of L where x is still all zero.
+template <int Fixed, class Scalar, class RhsScalar, class ColumnOf>
+void solveByColumns(int n, const ColumnOf &columnOf, RhsScalar *y, int runtimeColumns)
 {
-    const int columns = Fixed > 0 ? Fixed : runtimeColumns;
     using Eigen::numext::conj;
     using Eigen::numext::real;
-    const int count = int(s.first.size()) - 1;
-    const auto row = [=](int i) { return y + std::ptrdiff_t(i) * columns; };
-    for (int t = 0; t < count; ++t) { // L y = b
-        const int f = s.first[std::size_t(t)];
-        const int w = s.first[std::size_t(t) + 1] - f;
+    const int columns = Fixed > 0 ? Fixed : runtimeColumns;
+    for (int j = 0; j < n; ++j) { // L y = b
+        RhsScalar *yj = y + std::ptrdiff_t(j) * columns;
         bool zero = true;
-        for (const RhsScalar *v = row(f), *end = row(f + w); v != end && zero; ++v)
-            zero = *v == RhsScalar(0);
+        for (int c = 0; c < columns; ++c)
+            zero = zero && yj[c] == RhsScalar(0);
         if (zero)
             continue;
-        const int *rs = s.rows.data() + s.rowStart[std::size_t(t)];
-        const int m = int(s.rowStart[std::size_t(t) + 1] - s.rowStart[std::size_t(t)]);
-        const Scalar *block = values.data() + s.valueStart[std::size_t(t)];
-        for (int k = 0; k < w; ++k) {
-            const Scalar *column = block + std::ptrdiff_t(k) * m;
-            RhsScalar *yk = row(f + k);
-            const double pivotInverse = 1.0 / real(column[k]);
+        const Column<Scalar> column = columnOf(j);
+        const double pivotInverse = 1.0 / real(column.values[0]);
+        for (int c = 0; c < columns; ++c)
+            yj[c] *= pivotInverse;
+        for (int p = 1; p < column.count; ++p) {
+            RhsScalar *target = y + std::ptrdiff_t(column.rows[p]) * columns;
+            const Scalar v = column.values[p];
             for (int c = 0; c < columns; ++c)
-                yk[c] *= pivotInverse;
-            for (int r = k + 1; r < m; ++r) {
-                RhsScalar *target = row(rs[r]);
-                const Scalar value = column[r];
-                for (int c = 0; c < columns; ++c)
-                    target[c] -= value * yk[c];
-            }
+                target[c] -= v * yj[c];
         }
     }
-    for (int t = count - 1; t >= 0; --t) { // Lᴴ x = y
-        const int f = s.first[std::size_t(t)];
-        const int w = s.first[std::size_t(t) + 1] - f;
-        const int *rs = s.rows.data() + s.rowStart[std::size_t(t)];
-        const int m = int(s.rowStart[std::size_t(t) + 1] - s.rowStart[std::size_t(t)]);
-        const Scalar *block = values.data() + s.valueStart[std::size_t(t)];
-        for (int k = w - 1; k >= 0; --k) {
-            const Scalar *column = block + std::ptrdiff_t(k) * m;
-            RhsScalar *yk = row(f + k);
-            for (int r = k + 1; r < m; ++r) {
-                const RhsScalar *source = row(rs[r]);
-                const Scalar value = conj(column[r]);
-                for (int c = 0; c < columns; ++c)
-                    yk[c] -= value * source[c];
-            }
-            const double pivotInverse = 1.0 / real(column[k]);
+    for (int j = n - 1; j >= 0; --j) { // Lᴴ x = y
+        RhsScalar *yj = y + std::ptrdiff_t(j) * columns;
+        const Column<Scalar> column = columnOf(j);
+        for (int p = 1; p < column.count; ++p) {
+            const RhsScalar *source = y + std::ptrdiff_t(column.rows[p]) * columns;
+            const Scalar v = conj(column.values[p]);
             for (int c = 0; c < columns; ++c)
-                yk[c] *= pivotInverse;
+                yj[c] -= v * source[c];
         }
+        const double pivotInverse = 1.0 / real(column.values[0]);
+        for (int c = 0; c < columns; ++c)
+            yj[c] *= pivotInverse;
     }
+}
+
+template <class Scalar, class RhsScalar, class ColumnOf>
+void solveByColumns(int n, const ColumnOf &columnOf, RhsScalar *y, int columns)
+{
+    if (columns == 1)
+        solveByColumns<1, Scalar>(n, columnOf, y, 1);
+    else
+        solveByColumns<0, Scalar>(n, columnOf, y, columns);
 }
 
 } // namespace
@@ -396,10 +396,15 @@ template <class Scalar>
 template <class RhsScalar>
 void SupernodalCholesky<Scalar>::solveInPlace(RhsScalar *y, int columns) const
 {
-    if (columns == 1)
-        supernodalSolve<1>(*m_symbolic, m_values, y, 1);
-    else
-        supernodalSolve<0>(*m_symbolic, m_values, y, columns);
+    const SupernodalSymbolic &s = *m_symbolic;
+    const auto columnOf = [&s, this](int j) {
+        const auto t = std::size_t(s.superOf[std::size_t(j)]);
+        const int k = j - s.first[t];
+        const int m = int(s.rowStart[t + 1] - s.rowStart[t]);
+        return Column<Scalar>{s.rows.data() + s.rowStart[t] + k,
+                              m_values.data() + s.valueStart[t] + std::ptrdiff_t(k) * m + k, m - k};
+    };
+    solveByColumns<Scalar>(s.n, columnOf, y, columns);
 }
 
 template <class Scalar> Eigen::SparseMatrix<Scalar> SupernodalCholesky<Scalar>::lowerMatrix() const
@@ -439,59 +444,16 @@ template <class Scalar> Eigen::SparseMatrix<Scalar> SupernodalCholesky<Scalar>::
     return L;
 }
 
-namespace {
-
-template <int Fixed, class Scalar, class RhsScalar>
-void compressedSolve(const Eigen::SparseMatrix<Scalar> &L, RhsScalar *y, int runtimeColumns)
-{
-    using Eigen::numext::conj;
-    using Eigen::numext::real;
-    const int columns = Fixed > 0 ? Fixed : runtimeColumns;
-    const int *start = L.outerIndexPtr();
-    const int *row = L.innerIndexPtr();
-    const Scalar *value = L.valuePtr();
-    const int n = int(L.cols());
-    for (int j = 0; j < n; ++j) { // L y = b
-        RhsScalar *yj = y + std::ptrdiff_t(j) * columns;
-        bool zero = true;
-        for (int c = 0; c < columns; ++c)
-            zero = zero && yj[c] == RhsScalar(0);
-        if (zero)
-            continue;
-        const double pivotInverse = 1.0 / real(value[start[j]]);
-        for (int c = 0; c < columns; ++c)
-            yj[c] *= pivotInverse;
-        for (int p = start[j] + 1; p < start[j + 1]; ++p) {
-            RhsScalar *target = y + std::ptrdiff_t(row[p]) * columns;
-            const Scalar v = value[p];
-            for (int c = 0; c < columns; ++c)
-                target[c] -= v * yj[c];
-        }
-    }
-    for (int j = n - 1; j >= 0; --j) { // Lᴴ x = y
-        RhsScalar *yj = y + std::ptrdiff_t(j) * columns;
-        for (int p = start[j] + 1; p < start[j + 1]; ++p) {
-            const RhsScalar *source = y + std::ptrdiff_t(row[p]) * columns;
-            const Scalar v = conj(value[p]);
-            for (int c = 0; c < columns; ++c)
-                yj[c] -= v * source[c];
-        }
-        const double pivotInverse = 1.0 / real(value[start[j]]);
-        for (int c = 0; c < columns; ++c)
-            yj[c] *= pivotInverse;
-    }
-}
-
-} // namespace
-
 template <class Scalar>
 template <class RhsScalar>
 void CholeskyFactor<Scalar>::solveInPlace(RhsScalar *x, int columns) const
 {
-    if (columns == 1)
-        compressedSolve<1>(m_lower, x, 1);
-    else
-        compressedSolve<0>(m_lower, x, columns);
+    const int *start = m_lower.outerIndexPtr();
+    const auto columnOf = [this, start](int j) {
+        return Column<Scalar>{m_lower.innerIndexPtr() + start[j], m_lower.valuePtr() + start[j],
+                              start[j + 1] - start[j]};
+    };
+    solveByColumns<Scalar>(int(m_lower.cols()), columnOf, x, columns);
 }
 
 template class CholeskyFactor<double>;

@@ -59,6 +59,16 @@ bool supernodalIsaAvailable(SupernodalIsa isa); // built in and supported by thi
 // What Automatic is here: "avx512", "avx2" or "baseline" (SSE2 on x86-64).
 const char *supernodalInstructionSet();
 
+// A⁻¹ b through factor.solveInPlace (the solve() of both factor classes).
+template <class Factor, class RhsScalar>
+Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1>
+solvedCopy(const Factor &factor, const Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> &b)
+{
+    Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> x = b;
+    factor.solveInPlace(x.data());
+    return x;
+}
+
 template <class Scalar> class SupernodalCholesky {
 public:
     using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
@@ -79,17 +89,15 @@ public:
     // nothing.
     template <class RhsScalar> void solveInPlace(RhsScalar *x) const { solveInPlace(x, 1); }
     // The same for `columns` right-hand sides stored row by row (x[i·columns + c]), in one
-    // pass over L. Supernodes whose entries are all zero when the forward pass reaches them
-    // are skipped there: a right-hand side with a few entries (a basis column of a pin)
-    // only travels up the elimination tree from them.
+    // pass over L. Columns of L whose entries of x are all zero when the forward pass
+    // reaches them are skipped there: a right-hand side with a few entries (a basis column
+    // of a pin) only travels up the elimination tree from them.
     template <class RhsScalar> void solveInPlace(RhsScalar *x, int columns) const;
     template <class RhsScalar>
     Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1>
     solve(const Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> &b) const
     {
-        Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> x = b;
-        solveInPlace(x.data());
-        return x;
+        return solvedCopy(*this, b);
     }
 
     // L as compressed columns, the diagonal first in each column, structural zeros of the
@@ -126,9 +134,7 @@ public:
     Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1>
     solve(const Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> &b) const
     {
-        Eigen::Matrix<RhsScalar, Eigen::Dynamic, 1> x = b;
-        solveInPlace(x.data());
-        return x;
+        return solvedCopy(*this, b);
     }
 
 private:
