@@ -282,7 +282,7 @@ void TestArap::cancellationReturnsCancelled()
     auto immediately = arapPrecompute(g.V, g.F, b, {}, [] { return true; });
     QVERIFY(!immediately);
     QCOMPARE(immediately.error().code, DeformErrorCode::Cancelled);
-    // Cancelling after the k-th poll hits every phase, including between basis solves.
+    // Cancelling after the k-th poll hits every phase, including the basis solves.
     int cancelledRuns = 0;
     for (int allowed = 1;; ++allowed) {
         std::atomic<int> polls{0};
@@ -292,7 +292,7 @@ void TestArap::cancellationReturnsCancelled()
         QCOMPARE(result.error().code, DeformErrorCode::Cancelled);
         ++cancelledRuns;
     }
-    // Four phases poll before the factorization; more polls mean the basis loop polls too.
+    // Four phases poll before the factorization; more polls mean the basis solves poll too.
     QVERIFY(cancelledRuns > 4);
 }
 
