@@ -113,8 +113,8 @@ std::vector<int> fillReducingOrder(const Eigen::MatrixX3i &F, const Classificati
     std::vector<int> ordered(static_cast<std::size_t>(nf));
     for (int k = 0; k < nf; ++k)
         ordered[k] = c.freeVertices[inverse.indices()(k)];
-    // Both halves are kept: the Upper factor reads the upper one, the per-event residual check
-    // reads whole rows (= columns). Permuted columns come out unsorted, and G00 is built on
+    // Both halves are kept: the factorization reads the lower one, the per-event residual
+    // check whole rows (= columns). Permuted columns come out unsorted, and G00 is built on
     // this pattern through an assignment that needs sorted indices: a double transpose sorts.
     d.stepTwoMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>(permuted);
     d.stepTwoNorm = detail::selfAdjointNorm(d.stepTwoMatrix);
