@@ -493,8 +493,8 @@
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="27"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="90"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="156"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="177"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="161"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="182"/>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="21"/>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="65"/>
         <source>The skeleton is damaged; build it again.</source>
@@ -1687,48 +1687,48 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="38"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="39"/>
         <source>Bone</source>
         <translation>Knochen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="189"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="54"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="194"/>
         <source>Build Skeleton</source>
         <translation>Skelett erstellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="50"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>Das Objekt ist mit einem anderen Verformer posiert. Beim Erstellen eines Skeletts wird diese Pose verworfen. Trotzdem erstellen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="207"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="212"/>
         <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
         <translation>Mit %1 verbunden. Ziehen Sie die Wurzel mit Umschalt an eine andere Stelle, um es dort zu verbinden; Rechtsklick darauf löst es.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="287"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um ihr ein Skelett zu geben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="275"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="294"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen; Rechtsklick auf ein Gelenk löscht es.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="278"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
         <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um es zu ziehen, die Wurzel, um das Objekt zu verschieben; Alt-Klick auf ein Gelenk sperrt es; die Wurzel mit Umschalt auf ein anderes Teil ziehen verbindet beide.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="375"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>Legen Sie die Wurzel auf einem Knochen eines anderen Teils ab, um beide zu verbinden.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="383"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="398"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 hängt bereits an diesem Teil und kann daher nicht umgekehrt daran hängen.</translation>
     </message>
@@ -2340,117 +2340,122 @@
 <context>
     <name>finbook::ui::InbetweenDialog</name>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="35"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="37"/>
         <source>Generate In-betweens</source>
         <translation>Zwischenbilder erzeugen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="41"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="43"/>
         <source>Objects:</source>
         <translation>Objekte:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="65"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
         <source>&amp;Frames between the keys:</source>
         <translation>&amp;Einzelbilder zwischen den Schlüsselbildern:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="68"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="69"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="84"/>
         <source>Ease in (slow from the first key)</source>
         <translation>Ease-in (langsam vom ersten Schlüsselbild weg)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="70"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="85"/>
         <source>Ease out (slow into the second key)</source>
         <translation>Ease-out (langsam ins zweite Schlüsselbild hinein)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="71"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="86"/>
         <source>Ease in and out</source>
         <translation>Ease-in und Ease-out</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="72"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="87"/>
         <source>Favour…</source>
         <translation>Gewichtet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="73"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="88"/>
         <source>&amp;Spacing:</source>
         <translation>&amp;Verteilung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="77"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="92"/>
         <source>Left favours the first key, right the second.</source>
         <translation>Links wird das erste Schlüsselbild bevorzugt, rechts das zweite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="79"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
         <source>F&amp;avour:</source>
         <translation>&amp;Gewichtung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="95"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Pins und Käfigecken auf &amp;Bögen bewegen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="98"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Ein zwischen den Schlüsselbildern geschwungenes Glied behält seine Länge. Ohne diese Option bewegt sich jeder Zielpunkt geradlinig.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="112"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
         <source>(unnamed)</source>
         <translation>(unbenannt)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="115"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="130"/>
         <source>%1: interpolated</source>
         <translation>%1: interpoliert</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="117"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (keine Pins, kein Käfig und kein Skelett)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (Pins, Käfig oder Skelett unterscheiden sich zwischen den Schlüsselbildern)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="123"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: nur im ersten Schlüsselbild, in der ersten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="125"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: nur im zweiten Schlüsselbild, in der zweiten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="150"/>
         <source>Select two different frames as keys.</source>
         <translation>Wählen Sie zwei verschiedene Einzelbilder als Schlüsselbilder aus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="148"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="160"/>
+        <source>Posing the preview…</source>
+        <translation>Die Vorschau wird berechnet…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
         <source>The preview could not be posed: %1</source>
         <translation>Die Vorschau konnte nicht posiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="152"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Kein Objekt hat in beiden Schlüsselbildern passende Pins oder einen passenden Käfig: Die Zwischenbilder halten nur die Zeichnungen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="154"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Die Leinwand zeigt das mittlere Zwischenbild.</translation>
     </message>

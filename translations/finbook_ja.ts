@@ -492,8 +492,8 @@
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="27"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="90"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="156"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="177"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="161"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="182"/>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="21"/>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="65"/>
         <source>The skeleton is damaged; build it again.</source>
@@ -1683,48 +1683,48 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="38"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="39"/>
         <source>Bone</source>
         <translation>ボーン</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="49"/>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="189"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="54"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="194"/>
         <source>Build Skeleton</source>
         <translation>スケルトンを作成</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="50"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>このオブジェクトには別の変形方法によるポーズが付いています。スケルトンを作成すると、そのポーズは破棄されます。作成しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="207"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="212"/>
         <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
         <translation>%1 に接続しました。ルートを Shift キーを押しながらドラッグすると別の場所に接続し、右クリックで切り離します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="287"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>表示されていてロックされていない絵をクリックすると、スケルトンを作成できます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="275"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="294"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>関節をドラッグで移動、ボーンをクリックで関節を挿入、関節を右クリックで削除します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="278"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
         <translation>ボーンをドラッグすると回転、関節をドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。Alt クリックで関節をロックします。ルートを Shift キーを押しながら別のパーツへドラッグすると接続します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="375"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>ルートを別のパーツのボーンにドロップすると接続します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="383"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="398"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 はすでにこのパーツにぶら下がっているため、逆にぶら下げることはできません。</translation>
     </message>
@@ -2333,117 +2333,122 @@
 <context>
     <name>finbook::ui::InbetweenDialog</name>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="35"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="37"/>
         <source>Generate In-betweens</source>
         <translation>中割りを生成</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="41"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="43"/>
         <source>Objects:</source>
         <translation>オブジェクト:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="65"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
         <source>&amp;Frames between the keys:</source>
         <translation>キーの間のフレーム数(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="68"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
         <source>Linear</source>
         <translation>等間隔</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="69"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="84"/>
         <source>Ease in (slow from the first key)</source>
         <translation>イーズイン（最初のキーからゆっくり）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="70"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="85"/>
         <source>Ease out (slow into the second key)</source>
         <translation>イーズアウト（2 番目のキーへゆっくり）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="71"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="86"/>
         <source>Ease in and out</source>
         <translation>イーズイン・アウト</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="72"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="87"/>
         <source>Favour…</source>
         <translation>詰め…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="73"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="88"/>
         <source>&amp;Spacing:</source>
         <translation>間隔(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="77"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="92"/>
         <source>Left favours the first key, right the second.</source>
         <translation>左にすると最初のキー側に、右にすると 2 番目のキー側に詰めます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="79"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
         <source>F&amp;avour:</source>
         <translation>詰め(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="95"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>ピンとケージの頂点を弧に沿って移動(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="98"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>キーの間で振られた手足は長さを保ちます。オフにすると、すべての対象が直線的に移動します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="112"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
         <source>(unnamed)</source>
         <translation>（名前なし）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="115"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="130"/>
         <source>%1: interpolated</source>
         <translation>%1: 補間</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="117"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: 最初のキーを保持（ピン、ケージ、スケルトンがありません）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: 最初のキーを保持（キーの間でピン、ケージ、またはスケルトンが異なります）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="123"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: 最初のキーにのみ存在、前半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="125"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: 2 番目のキーにのみ存在、後半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="150"/>
         <source>Select two different frames as keys.</source>
         <translation>キーとして異なる 2 つのフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="148"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="160"/>
+        <source>Posing the preview…</source>
+        <translation>プレビューを計算中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
         <source>The preview could not be posed: %1</source>
         <translation>プレビューのポーズを計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="152"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>両方のキーで一致するピンまたはケージを持つオブジェクトがありません。中割りでは絵が保持されるだけです。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="154"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>キャンバスには中央の中割りが表示されています。</translation>
     </message>

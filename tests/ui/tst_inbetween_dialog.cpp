@@ -14,6 +14,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSpinBox>
@@ -113,7 +114,9 @@ void TestInbetweenDialog::okInsertsOneUndoStep()
         auto *objects = dialog->findChild<QListWidget *>(QStringLiteral("inbetweenObjects"));
         QCOMPARE(objects->count(), 1);
         QVERIFY(objects->item(0)->text().contains(QStringLiteral("interpolated")));
-        // The middle in-between is on the canvas, posed, with the arm at its length.
+        // The middle in-between is posed on a worker, then on the canvas with the arm at its
+        // length.
+        QTRY_VERIFY(!dialog->posing());
         QVERIFY(m_window->canvas()->hasPreviewFrame());
         QVERIFY(dialog->previewFrame() && dialog->previewFrame()->groups[0].deformed);
         QVERIFY(std::abs(strokeLength(*dialog->previewFrame()->groups[0].deformed) / 200 - 1) <
@@ -123,6 +126,14 @@ void TestInbetweenDialog::okInsertsOneUndoStep()
         count->selectAll();
         QTest::keyClicks(count, QStringLiteral("4"));
         QCOMPARE(count->value(), 4);
+        // The change is posed off the GUI thread: until the event loop hears back, the
+        // dialog says so and the controls answer.
+        QVERIFY(dialog->posing());
+        auto *status = dialog->findChild<QLabel *>(QStringLiteral("inbetweenStatus"));
+        QVERIFY(status->text().startsWith(QStringLiteral("Posing")));
+        QTRY_VERIFY(!dialog->posing());
+        QVERIFY(status->text().contains(QStringLiteral("middle in-between")));
+        QVERIFY(dialog->previewFrame() && dialog->previewFrame()->groups[0].deformed);
         auto *spacing = dialog->findChild<QComboBox *>(QStringLiteral("inbetweenSpacing"));
         spacing->setFocus();
         QTest::keyClick(spacing, Qt::Key_Down); // ease in
@@ -155,11 +166,18 @@ void TestInbetweenDialog::cancelLeavesNothing()
     pickKeys();
     const QByteArray before = model::serializeFinbook(*doc);
     const bool driven = runDialog([&](ui::InbetweenDialog *dialog) {
-        QVERIFY(m_window->canvas()->hasPreviewFrame());
+        QTRY_VERIFY(m_window->canvas()->hasPreviewFrame());
+        // Cancelled while a changed preview is still being posed: that pose must not bring
+        // the preview back after the dialog has gone.
+        auto *count = dialog->findChild<QSpinBox *>(QStringLiteral("inbetweenCount"));
+        count->setValue(5);
+        QVERIFY(dialog->posing());
         auto *buttons = dialog->findChild<QDialogButtonBox *>();
         QTest::mouseClick(buttons->button(QDialogButtonBox::Cancel), Qt::LeftButton);
     });
     QVERIFY(driven);
+    QVERIFY(!m_window->canvas()->hasPreviewFrame());
+    QTest::qWait(100); // any late result of the worker would arrive now
     QVERIFY(!m_window->canvas()->hasPreviewFrame());
     QCOMPARE(doc->frameCount(), 2);
     QCOMPARE(doc->undoStack()->count(), 0);

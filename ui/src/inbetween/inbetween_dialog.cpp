@@ -9,9 +9,11 @@
 #include <QListWidget>
 #include <QSlider>
 #include <QSpinBox>
+#include <QThread>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <memory>
 
 namespace finbook::ui {
 
@@ -51,7 +53,20 @@ InbetweenDialog::InbetweenDialog(model::Document *document, model::Id firstKey, 
     updatePlan();
 }
 
-InbetweenDialog::~InbetweenDialog() = default;
+// What the worker poses: copies only, so it never touches the dialog or the document.
+struct InbetweenDialog::PreviewJob {
+    std::vector<model::Frame> frames;
+    model::DeformSetupCache setups;
+    deform::ArapOptions options;
+    int interpolated = 0;
+    std::optional<Expected<int, QString>> solved;
+};
+
+InbetweenDialog::~InbetweenDialog()
+{
+    if (m_worker)
+        m_worker->wait(); // a QThread must not be destroyed while it runs (one pose at most)
+}
 
 QWidget *InbetweenDialog::buildControls()
 {
@@ -142,13 +157,43 @@ void InbetweenDialog::updatePlan()
     m_objects->clear();
     for (const model::InbetweenObjectReport &object : plan.objects)
         m_objects->addItem(describe(object));
-    const auto solved = model::solveInbetweenPoses(plan.frames, m_arap, &m_setups);
-    if (!solved) {
+    m_status->setText(tr("Posing the preview…"));
+    if (m_worker) { // the running pose is out of date: pose again when it is done
+        m_replan = true;
+        return;
+    }
+    auto job = std::make_shared<PreviewJob>();
+    job->interpolated = plan.interpolatedCount();
+    job->frames = std::move(plan.frames);
+    job->setups = m_setups;
+    job->options = m_arap;
+    m_worker = QThread::create([job] {
+        job->solved = model::solveInbetweenPoses(job->frames, job->options, &job->setups);
+    });
+    m_worker->setParent(this);
+    connect(m_worker, &QThread::finished, this, [this, job] {
+        m_worker->deleteLater();
+        m_worker = nullptr;
+        m_setups = std::move(job->setups); // keeps the factorizations for the next pose
+        if (m_replan) {
+            m_replan = false;
+            updatePlan();
+            return;
+        }
+        showPreview(*job);
+    });
+    m_worker->start();
+}
+
+void InbetweenDialog::showPreview(PreviewJob &job)
+{
+    if (!job.solved || !*job.solved) {
         m_preview.reset();
-        m_status->setText(tr("The preview could not be posed: %1").arg(solved.error()));
+        m_status->setText(tr("The preview could not be posed: %1")
+                              .arg(job.solved ? job.solved->error() : QString()));
     } else {
-        m_preview = plan.frames.front();
-        m_status->setText(plan.interpolatedCount() == 0
+        m_preview = std::move(job.frames.front());
+        m_status->setText(job.interpolated == 0
                               ? tr("No object has matching pins or a matching cage in both "
                                    "keys: the in-betweens will only hold drawings.")
                               : tr("The canvas shows the middle in-between."));
@@ -159,6 +204,8 @@ void InbetweenDialog::updatePlan()
 
 void InbetweenDialog::done(int result)
 {
+    if (m_worker) // a pose still running must not bring the preview back
+        m_worker->disconnect(this);
     if (m_sink)
         m_sink(std::nullopt); // the preview never outlives the dialog
     QDialog::done(result);

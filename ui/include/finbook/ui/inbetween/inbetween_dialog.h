@@ -1,10 +1,13 @@
 // Frame → Generate In-betweens…: how many frames go between two keys and how they are spaced,
 // what will be interpolated and what held, with the middle in-between previewed live.
 //
-// The dialog never changes the document. Its preview is a planned frame posed synchronously
-// (solveInbetweenPoses, one factorization per object for the dialog's lifetime) and handed to
-// the preview sink (the canvas); the sink gets std::nullopt when the dialog closes. The caller
-// pushes InsertInbetweensCommand with count() and options() on Accepted.
+// The dialog never changes the document. Its preview is a planned frame posed on a worker
+// thread (solveInbetweenPoses, one factorization per object for the dialog's lifetime: the
+// first pose of a 2.4k-vertex object took about 70 ms, which froze the controls when it ran
+// on the GUI thread) and handed to the preview sink (the canvas) when it is ready; a change
+// made meanwhile is posed after it, only the newest shown. The sink gets std::nullopt when
+// the dialog closes. The caller pushes InsertInbetweensCommand with count() and options() on
+// Accepted.
 #pragma once
 
 #include <finbook/deform/arap.h>
@@ -23,6 +26,7 @@ class QLabel;
 class QListWidget;
 class QSlider;
 class QSpinBox;
+class QThread;
 
 namespace finbook::ui {
 
@@ -41,8 +45,10 @@ public:
     model::Id secondKey() const { return m_second; }
     int count() const;
     model::InbetweenOptions options() const;
-    // The middle in-between as previewed now (nullopt if its pose could not be solved).
+    // The middle in-between as previewed now (nullopt if its pose could not be solved, and
+    // before the first one is ready); posing() while a newer one is being solved.
     const std::optional<model::Frame> &previewFrame() const { return m_preview; }
+    bool posing() const { return m_worker != nullptr; }
 
     void done(int result) override;
 
@@ -50,6 +56,8 @@ private:
     QWidget *buildControls();
     void updatePlan();
     QString describe(const model::InbetweenObjectReport &object) const;
+    struct PreviewJob;
+    void showPreview(PreviewJob &job);
 
     model::Document *m_doc;
     model::Id m_first;
@@ -58,6 +66,8 @@ private:
     PreviewSink m_sink;
     model::DeformSetupCache m_setups;
     std::optional<model::Frame> m_preview;
+    QThread *m_worker = nullptr; // posing the preview
+    bool m_replan = false;       // the options changed while it did
 
     QSpinBox *m_count = nullptr;
     QComboBox *m_spacing = nullptr;
