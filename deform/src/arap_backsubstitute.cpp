@@ -4,18 +4,36 @@
 
 namespace finbook::deform {
 
+namespace detail {
+namespace {
+
+// What both kernels walk: stepTwoLower (compressed columns, the diagonal first in each) and
+// the reciprocal pivots.
+struct StepTwoFactor {
+    const int *start;
+    const int *row;
+    const double *value;
+    const double *pivotInverse;
+    Eigen::Index n;
+};
+
+StepTwoFactor stepTwoFactor(const ArapPrecompute &data)
+{
+    const auto &L = data.stepTwoLower;
+    return {L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(), data.stepTwoPivotInverse.data(),
+            L.cols()};
+}
+
+} // namespace
+} // namespace detail
+
 // Eigen's sparse triangular solve with a real factor and a complex right-hand side promotes
 // the pivot to complex and divides through __divdc3 on every row; written out, each row is
 // a multiply by the stored reciprocal pivot and real × complex updates (stepTwoLower is
 // column-major with the diagonal first in each column).
 void arapStepTwoBacksubstitute(const ArapPrecompute &data, Eigen::Ref<Eigen::VectorXcd> x)
 {
-    const auto &L = data.stepTwoLower;
-    const int *start = L.outerIndexPtr();
-    const int *row = L.innerIndexPtr();
-    const double *value = L.valuePtr();
-    const double *pivotInverse = data.stepTwoPivotInverse.data();
-    const Eigen::Index n = L.cols();
+    const auto [start, row, value, pivotInverse, n] = detail::stepTwoFactor(data);
     detail::Complex *y = x.data();
     for (Eigen::Index j = 0; j < n; ++j) { // L y = b, column by column
         const detail::Complex yj = y[j] * pivotInverse[j];
@@ -36,12 +54,7 @@ namespace detail {
 void backsubstituteBlock(const ArapPrecompute &data, Complex *x)
 {
     constexpr int B = kBlockWidth;
-    const auto &L = data.stepTwoLower;
-    const int *start = L.outerIndexPtr();
-    const int *row = L.innerIndexPtr();
-    const double *value = L.valuePtr();
-    const double *pivotInverse = data.stepTwoPivotInverse.data();
-    const Eigen::Index n = L.cols();
+    const auto [start, row, value, pivotInverse, n] = detail::stepTwoFactor(data);
     for (Eigen::Index j = 0; j < n; ++j) { // L y = b
         // Where all B are still zero the column adds nothing: right-hand sides with entries
         // in a few regions (coarse clusters) only travel up the elimination tree from them.

@@ -81,12 +81,10 @@ public:
                    const Eigen::SparseMatrix<Scalar> &lower,
                    SupernodalIsa isa = SupernodalIsa::Automatic);
     bool ok() const { return m_ok; }
-    Eigen::Index rows() const { return m_symbolic ? m_symbolic->n : 0; }
-    std::int64_t factorEntries() const { return m_symbolic ? m_symbolic->factorEntries : 0; }
 
-    // x ← A⁻¹ x for the rows() entries at x. Rhs may be real or complex (a real factor with a
-    // complex right-hand side solves for its real and imaginary parts at once). Allocates
-    // nothing.
+    // x ← A⁻¹ x for the n entries at x (n of the symbolic). Rhs may be real or complex (a real
+    // factor with a complex right-hand side solves for its real and imaginary parts at once).
+    // Allocates nothing.
     template <class RhsScalar> void solveInPlace(RhsScalar *x) const { solveInPlace(x, 1); }
     // The same for `columns` right-hand sides stored row by row (x[i·columns + c]), in one
     // pass over L. Columns of L whose entries of x are all zero when the forward pass
