@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "cli_export.h"
+#include "thumbnail/thumbnail_command.h"
 
 #include <finbook/model/export/export_plan.h>
 #include <finbook/model/finbook_file.h>
@@ -76,7 +77,8 @@ bool isHeadlessCommand(const QStringList &arguments)
     for (const QString &a : arguments) {
         if (a.startsWith(QLatin1Char('-')))
             continue;
-        return a == QLatin1String("info") || a == QLatin1String("export");
+        return a == QLatin1String("info") || a == QLatin1String("export") ||
+               a == QLatin1String("thumbnail");
     }
     return false;
 }
@@ -110,6 +112,8 @@ int runHeadlessCommand(const QStringList &arguments, QTextStream &out, QTextStre
     }
     if (command == QLatin1String("export"))
         return runExportCommand(positional, out, err);
+    if (command == QLatin1String("thumbnail"))
+        return runThumbnailCommand(positional, err);
     return fail(err, CommandLine::tr("Unknown command \"%1\"; see finbook --help.").arg(command));
 }
 

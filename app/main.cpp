@@ -1,5 +1,7 @@
 #include "cli.h"
 #include "cli_export.h"
+#include "instance/instance_server.h"
+#include "instance/window_list.h"
 #include "test_hooks.h"
 #include "translations.h"
 
@@ -150,16 +152,30 @@ int main(int argc, char **argv)
     }
 
     QApplication app(argc, argv);
+    // The desktop entry's id: Wayland compositors match windows to the entry (and its icon).
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.finbook.Finbook"));
     finbook::app::installTranslations(app, options.language);
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/finbook.svg")));
 
     const bool scripted = finbook::app::testHooksRequested();
+    // A Finbook already running opens the file in a window of its own (instance/); this one
+    // then has nothing to do. --lang asks for a Finbook of its own in that language.
+    finbook::app::InstanceServer instance;
+    if (!scripted && options.language.isEmpty()) {
+        if (finbook::app::forwardToRunningInstance(options.positional))
+            return 0;
+        instance.listen();
+    }
     std::unique_ptr<finbook::ui::MainWindow> window =
         scripted ? std::make_unique<finbook::app::ScriptedMainWindow>()
                  : std::make_unique<finbook::ui::MainWindow>();
     window->show();
     if (!options.positional.isEmpty())
         window->openFile(options.positional.first());
+    finbook::app::WindowList windows;
+    windows.add(window.get());
+    QObject::connect(&instance, &finbook::app::InstanceServer::openRequested, &windows,
+                     &finbook::app::WindowList::open);
     // Once the window is up: what crashed Finbooks left is offered (or the test hooks run).
     QTimer::singleShot(0, window.get(), [w = window.get(), scripted] {
         if (scripted)

@@ -13,9 +13,11 @@ QString installTranslations(QCoreApplication &app, const QString &language)
     const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
     if (!language.isEmpty())
         QLocale::setDefault(locale);
+    // Beside the executable in a build folder; in an installation, where the install rules put
+    // them relative to the executable's folder (so a moved prefix or a DESTDIR still works).
     const QString appDir = QCoreApplication::applicationDirPath();
     const QStringList folders{appDir + QStringLiteral("/translations"),
-                              appDir + QStringLiteral("/../share/finbook/translations"),
+                              appDir + QStringLiteral("/" FINBOOK_TRANSLATIONS_FROM_BIN),
                               QStringLiteral(":/translations")};
     auto *finbook = new QTranslator(&app);
     for (const QString &folder : folders) {

@@ -228,22 +228,22 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="99"/>
+        <location filename="../app/cli.cpp" line="101"/>
         <source>No command given; see finbook --help.</source>
         <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="103"/>
+        <location filename="../app/cli.cpp" line="105"/>
         <source>Usage: finbook info FILE</source>
         <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="113"/>
+        <location filename="../app/cli.cpp" line="117"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="36"/>
+        <location filename="../app/main.cpp" line="38"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -260,29 +260,29 @@
   finbook export FILE... --format F --out-dir DIR   mehrere Dateien exportieren</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="48"/>
+        <location filename="../app/main.cpp" line="50"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>LANGUAGE (z. B. de, en, fr, ja) statt der Systemsprache verwenden.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="54"/>
+        <location filename="../app/main.cpp" line="56"/>
         <source>FILE, or a command.</source>
         <translation>FILE oder ein Befehl.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="66"/>
+        <location filename="../app/main.cpp" line="68"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>siehe finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="73"/>
+        <location filename="../app/main.cpp" line="75"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="101"/>
+        <location filename="../app/main.cpp" line="103"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Unbekannter Befehl „%1“; %2.</translation>
     </message>
@@ -1600,12 +1600,12 @@
 <context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="22"/>
+        <location filename="../app/main.cpp" line="24"/>
         <source>Displays help on commandline options.</source>
         <translation>Zeigt Hilfe zu den Kommandozeilenoptionen an.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="23"/>
+        <location filename="../app/main.cpp" line="25"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Zeigt Hilfe einschließlich Qt-spezifischer Optionen an.</translation>
     </message>
@@ -1669,6 +1669,59 @@
         <location filename="../ui/src/stroke_editing.cpp" line="305"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
+    </message>
+</context>
+<context>
+    <name>Thumbnail</name>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="52"/>
+        <source>it is not a regular file</source>
+        <translation>es ist keine gewöhnliche Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="326"/>
+        <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
+        <translation>Für „%1“ kann keine Vorschau erstellt werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
+        <source>a checksum does not match, so the file is damaged.</source>
+        <translation>eine Prüfsumme stimmt nicht, die Datei ist also beschädigt.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
+        <source>it holds data that this version of Finbook does not know.</source>
+        <translation>sie enthält Daten, die diese Version von Finbook nicht kennt.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
+        <source>the file is damaged or incomplete.</source>
+        <translation>die Datei ist beschädigt oder unvollständig.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="42"/>
+        <source>Usage: finbook thumbnail FILE OUT.png SIZE</source>
+        <translation>Aufruf: finbook thumbnail DATEI AUSGABE.png GRÖSSE</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="48"/>
+        <source>The thumbnail size &quot;%1&quot; is not a whole number from 1 to %2.</source>
+        <translation>Die Vorschaugröße „%1“ ist keine ganze Zahl von 1 bis %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="57"/>
+        <source>Cannot make a thumbnail of &quot;%1&quot;: it has no frame.</source>
+        <translation>Für „%1“ kann keine Vorschau erstellt werden: sie hat kein Bild.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="67"/>
+        <source>Cannot make a thumbnail of &quot;%1&quot;: there is not enough memory.</source>
+        <translation>Für „%1“ kann keine Vorschau erstellt werden: nicht genug Arbeitsspeicher.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="73"/>
+        <source>Cannot write the thumbnail &quot;%1&quot;: %2.</source>
+        <translation>Die Vorschau „%1“ kann nicht geschrieben werden: %2.</translation>
     </message>
 </context>
 <context>
@@ -2445,17 +2498,17 @@
         <translation>Die Vorschau wird berechnet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="192"/>
         <source>The preview could not be posed: %1</source>
         <translation>Die Vorschau konnte nicht posiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="197"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Kein Objekt hat in beiden Schlüsselbildern passende Pins oder einen passenden Käfig: Die Zwischenbilder halten nur die Zeichnungen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="199"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Die Leinwand zeigt das mittlere Zwischenbild.</translation>
     </message>

@@ -228,22 +228,22 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="99"/>
+        <location filename="../app/cli.cpp" line="101"/>
         <source>No command given; see finbook --help.</source>
         <translation>Aucune commande indiquée ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="103"/>
+        <location filename="../app/cli.cpp" line="105"/>
         <source>Usage: finbook info FILE</source>
         <translation>Utilisation : finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="113"/>
+        <location filename="../app/cli.cpp" line="117"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="36"/>
+        <location filename="../app/main.cpp" line="38"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -260,29 +260,29 @@
   finbook export FILE... --format F --out-dir DIR   exporter plusieurs fichiers</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="48"/>
+        <location filename="../app/main.cpp" line="50"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>Utiliser la langue LANGUAGE (par ex. de, en, fr, ja) au lieu de celle du système.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="54"/>
+        <location filename="../app/main.cpp" line="56"/>
         <source>FILE, or a command.</source>
         <translation>FILE, ou une commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="66"/>
+        <location filename="../app/main.cpp" line="68"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>voir finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="73"/>
+        <location filename="../app/main.cpp" line="75"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1 ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="101"/>
+        <location filename="../app/main.cpp" line="103"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Commande inconnue « %1 » ; %2.</translation>
     </message>
@@ -1600,12 +1600,12 @@
 <context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="22"/>
+        <location filename="../app/main.cpp" line="24"/>
         <source>Displays help on commandline options.</source>
         <translation>Afficher l&apos;aide sur les options de la ligne de commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="23"/>
+        <location filename="../app/main.cpp" line="25"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Afficher l&apos;aide, y compris les options propres à Qt.</translation>
     </message>
@@ -1669,6 +1669,59 @@
         <location filename="../ui/src/stroke_editing.cpp" line="305"/>
         <source>Paste</source>
         <translation>Coller</translation>
+    </message>
+</context>
+<context>
+    <name>Thumbnail</name>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="52"/>
+        <source>it is not a regular file</source>
+        <translation>ce n&apos;est pas un fichier ordinaire</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="326"/>
+        <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
+        <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
+        <source>a checksum does not match, so the file is damaged.</source>
+        <translation>une somme de contrôle ne correspond pas, le fichier est donc endommagé.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
+        <source>it holds data that this version of Finbook does not know.</source>
+        <translation>il contient des données que cette version de Finbook ne connaît pas.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
+        <source>the file is damaged or incomplete.</source>
+        <translation>le fichier est endommagé ou incomplet.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="42"/>
+        <source>Usage: finbook thumbnail FILE OUT.png SIZE</source>
+        <translation>Utilisation&#xa0;: finbook thumbnail FICHIER SORTIE.png TAILLE</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="48"/>
+        <source>The thumbnail size &quot;%1&quot; is not a whole number from 1 to %2.</source>
+        <translation>La taille de vignette «&#xa0;%1&#xa0;» n&apos;est pas un nombre entier de 1 à %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="57"/>
+        <source>Cannot make a thumbnail of &quot;%1&quot;: it has no frame.</source>
+        <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: il n&apos;a aucune image.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="67"/>
+        <source>Cannot make a thumbnail of &quot;%1&quot;: there is not enough memory.</source>
+        <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante.</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="73"/>
+        <source>Cannot write the thumbnail &quot;%1&quot;: %2.</source>
+        <translation>Impossible d&apos;écrire la vignette «&#xa0;%1&#xa0;»&#xa0;: %2.</translation>
     </message>
 </context>
 <context>
@@ -2445,17 +2498,17 @@
         <translation>Calcul de l’aperçu…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="192"/>
         <source>The preview could not be posed: %1</source>
         <translation>Impossible de poser l&apos;aperçu&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="197"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Aucun objet n&apos;a d&apos;épingles ou de cage correspondantes dans les deux clés&#xa0;: les intervalles ne feront que maintenir les dessins.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="199"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Le canevas montre l&apos;intervalle du milieu.</translation>
     </message>

@@ -228,22 +228,22 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="99"/>
+        <location filename="../app/cli.cpp" line="101"/>
         <source>No command given; see finbook --help.</source>
         <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="103"/>
+        <location filename="../app/cli.cpp" line="105"/>
         <source>Usage: finbook info FILE</source>
         <translation>使い方: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="113"/>
+        <location filename="../app/cli.cpp" line="117"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="36"/>
+        <location filename="../app/main.cpp" line="38"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -260,29 +260,29 @@
   finbook export FILE... --format F --out-dir DIR   複数のファイルを書き出す</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="48"/>
+        <location filename="../app/main.cpp" line="50"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>システムの言語の代わりに LANGUAGE（例: de, en, fr, ja）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="54"/>
+        <location filename="../app/main.cpp" line="56"/>
         <source>FILE, or a command.</source>
         <translation>FILE、またはコマンド。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="66"/>
+        <location filename="../app/main.cpp" line="68"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>finbook --help を参照してください</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="73"/>
+        <location filename="../app/main.cpp" line="75"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1。%2。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="101"/>
+        <location filename="../app/main.cpp" line="103"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>不明なコマンド「%1」です。%2。</translation>
     </message>
@@ -1596,12 +1596,12 @@
 <context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="22"/>
+        <location filename="../app/main.cpp" line="24"/>
         <source>Displays help on commandline options.</source>
         <translation>コマンドラインオプションのヘルプを表示する。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="23"/>
+        <location filename="../app/main.cpp" line="25"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Qt 固有のオプションを含むヘルプを表示する。</translation>
     </message>
@@ -1665,6 +1665,59 @@
         <location filename="../ui/src/stroke_editing.cpp" line="305"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
+    </message>
+</context>
+<context>
+    <name>Thumbnail</name>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="52"/>
+        <source>it is not a regular file</source>
+        <translation>通常のファイルではありません</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="326"/>
+        <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
+        <translation>「%1」のサムネイルを作成できません: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
+        <source>a checksum does not match, so the file is damaged.</source>
+        <translation>チェックサムが一致しないため、ファイルが破損しています。</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
+        <source>it holds data that this version of Finbook does not know.</source>
+        <translation>このバージョンの Finbook が知らないデータが含まれています。</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
+        <source>the file is damaged or incomplete.</source>
+        <translation>ファイルが破損しているか不完全です。</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="42"/>
+        <source>Usage: finbook thumbnail FILE OUT.png SIZE</source>
+        <translation>使い方: finbook thumbnail ファイル 出力.png サイズ</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="48"/>
+        <source>The thumbnail size &quot;%1&quot; is not a whole number from 1 to %2.</source>
+        <translation>サムネイルのサイズ「%1」は 1 から %2 までの整数ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="57"/>
+        <source>Cannot make a thumbnail of &quot;%1&quot;: it has no frame.</source>
+        <translation>「%1」のサムネイルを作成できません: フレームがありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="67"/>
+        <source>Cannot make a thumbnail of &quot;%1&quot;: there is not enough memory.</source>
+        <translation>「%1」のサムネイルを作成できません: メモリが足りません。</translation>
+    </message>
+    <message>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="73"/>
+        <source>Cannot write the thumbnail &quot;%1&quot;: %2.</source>
+        <translation>サムネイル「%1」を書き込めません: %2。</translation>
     </message>
 </context>
 <context>
@@ -2438,17 +2491,17 @@
         <translation>プレビューを計算中…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="192"/>
         <source>The preview could not be posed: %1</source>
         <translation>プレビューのポーズを計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="197"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>両方のキーで一致するピンまたはケージを持つオブジェクトがありません。中割りでは絵が保持されるだけです。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="199"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>キャンバスには中央の中割りが表示されています。</translation>
     </message>
