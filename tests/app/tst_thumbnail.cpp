@@ -18,6 +18,7 @@
 #include <QtEndian>
 #include <QtTest>
 
+#include <cmath>
 #include <sys/stat.h>
 
 using namespace finbook;
@@ -62,10 +63,17 @@ QByteArray manyFrames(int frames, int strokes, int points)
             data->color = qRgb(20 * s % 255, 40, 200);
             data->width = 2.0f + float(s % 4);
             data->points.reserve(std::size_t(points));
-            for (int p = 0; p < points; ++p)
-                data->points.push_back({float(40 + (p * 7 + s * 13 + f) % 1200),
-                                        float(30 + (p * 3 + s * 29) % 660),
-                                        float(p % 100) / 100.0f});
+            // A pen line as people draw it: samples about 1.5 px apart on a widening spiral,
+            // with the pressure rising and falling smoothly.
+            const double cx = 100 + (s * 97 + f * 11) % 1080, cy = 80 + (s * 53 + f * 7) % 560;
+            double angle = 0;
+            for (int p = 0; p < points; ++p) {
+                const double r = 10 + 0.06 * p;
+                angle += 1.5 / r;
+                data->points.push_back({float(cx + r * std::cos(angle)),
+                                        float(cy + r * std::sin(angle)),
+                                        float(0.5 + 0.4 * std::sin(p / 40.0))});
+            }
             group.strokes.push_back({id++, data});
         }
         frame.groups.push_back(std::move(group));
