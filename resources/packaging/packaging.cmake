@@ -22,8 +22,8 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # the encoder that GIF/MP4/WebM/APNG export runs.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "ffmpeg, qt6-qpa-plugins, qt6-translations-l10n, qt6-wayland")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
-set(CPACK_DEBIAN_PACKAGE_DESCRIPTION "${CPACK_PACKAGE_DESCRIPTION_SUMMARY}
-Finbook is a desktop flipbook animation editor. Draw a character once, then
+# CPack puts the summary on the first line and this text below it.
+set(CPACK_DEBIAN_PACKAGE_DESCRIPTION "Finbook is a desktop flipbook animation editor. Draw a character once, then
 deform the drawing to make the next frame - with as-rigid-as-possible pins,
 harmonic cages or automatic skeletons - and keep editing the result as
 ordinary strokes. It generates in-betweens between two keys and exports to
