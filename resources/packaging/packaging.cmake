@@ -18,6 +18,9 @@ set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://github.com/finbook/finbook")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# Not linked, so dpkg-shlibdeps cannot see it: the SVG icon engine plugin that draws every
+# toolbar and tool icon (all SVG) comes with libqt6svg6.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6 (>= 6.4)")
 # The X11 platform plugin ships with libqt6gui6; these add Wayland, Qt's own translations and
 # the encoder that GIF/MP4/WebM/APNG export runs.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "ffmpeg, qt6-qpa-plugins, qt6-translations-l10n, qt6-wayland")
