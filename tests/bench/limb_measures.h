@@ -100,11 +100,13 @@ inline bool properlyCross(const Eigen::Vector2d &a, const Eigen::Vector2d &b,
            d4 != 0;
 }
 
-// Pairs of outline edges without a common vertex that cross, found through a uniform grid.
-inline int outlineCrossings(const Eigen::MatrixX2d &U, const std::vector<std::pair<int, int>> &E)
+// Pairs of outline edges (indices into E) without a common vertex that cross, found through a
+// uniform grid.
+inline std::vector<std::pair<int, int>> outlineCrossings(const Eigen::MatrixX2d &U,
+                                                         const std::vector<std::pair<int, int>> &E)
 {
     if (E.empty())
-        return 0;
+        return {};
     double mean = 0.0;
     for (const auto &[a, b] : E)
         mean += (U.row(a) - U.row(b)).norm();
@@ -137,7 +139,8 @@ inline int outlineCrossings(const Eigen::MatrixX2d &U, const std::vector<std::pa
         }
     }
     std::sort(found.begin(), found.end());
-    return int(std::unique(found.begin(), found.end()) - found.begin());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
 }
 
 } // namespace finbook::bench

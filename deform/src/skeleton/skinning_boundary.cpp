@@ -165,3 +165,42 @@ Eigen::VectorXi detail::skinningBoundary(const Eigen::MatrixX2d &V, const Eigen:
 }
 
 } // namespace finbook::deform
+
+namespace finbook::deform {
+
+SkinningWeights withJointZones(const SkinningWeights &weights, const Eigen::MatrixX2d &V,
+                               const Skeleton &skeleton, const Eigen::VectorXd &jointRadius,
+                               double jointFree)
+{
+    SkinningWeights out = weights;
+    if (weights.owner.size() != V.rows() || !jointRadius.allFinite())
+        return out;
+    Eigen::VectorXi zoned = weights.owner;
+    freeJointZones(V, skeleton, jointRadius, jointFree, zoned);
+    std::vector<int> held(static_cast<std::size_t>(skeleton.jointCount()), 0);
+    for (const int o : zoned) {
+        if (o >= 0)
+            ++held[static_cast<std::size_t>(o)];
+    }
+    // A bone all of whose vertices lie in joint zones keeps one, the nearest to its middle,
+    // as the weights' boundary would give it (giveEveryHandleAVertex): it must move something.
+    std::vector<int> keep(held.size(), -1);
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        const int o = weights.owner(v);
+        if (o < 0 || o >= skeleton.jointCount() || held[static_cast<std::size_t>(o)] > 0)
+            continue;
+        const int p = skeleton.parent(o) >= 0 ? skeleton.parent(o) : o;
+        const Eigen::RowVector2d middle = 0.5 * (skeleton.joints.row(o) + skeleton.joints.row(p));
+        int &k = keep[static_cast<std::size_t>(o)];
+        if (k < 0 || (V.row(v) - middle).squaredNorm() < (V.row(k) - middle).squaredNorm())
+            k = static_cast<int>(v);
+    }
+    for (const int k : keep) {
+        if (k >= 0)
+            zoned(k) = weights.owner(k);
+    }
+    out.owner = zoned;
+    return out;
+}
+
+} // namespace finbook::deform

@@ -78,6 +78,15 @@ SkinningWeightsResult computeSkinningWeights(const Eigen::MatrixX2d &V, const Ei
                                              const SkinningOptions &options = {},
                                              std::function<bool()> cancelled = {});
 
+// The same weights with joint zones in the boundary only (SkinningOptions::jointFree): every
+// vertex within jointFree × jointRadius(j) of a joint j where bones meet is no longer held,
+// (a bone left without any keeps the one nearest its middle). W is unchanged, so linear blend
+// skinning is the same; the rigid mode built from the result (rigidSkinPins) leaves those vertices
+// to the ARAP solve. jointRadius: J entries (other sizes, or jointFree ≤ 0: the weights unchanged).
+SkinningWeights withJointZones(const SkinningWeights &weights, const Eigen::MatrixX2d &V,
+                               const Skeleton &skeleton, const Eigen::VectorXd &jointRadius,
+                               double jointFree = kDefaultJointFree);
+
 // The handles of a skeleton (see SkinningWeights::handles).
 Eigen::VectorXi skinningHandles(const Skeleton &skeleton);
 
