@@ -5,7 +5,10 @@
 // clock as skeleton_ms and this thread's CPU time as skeleton_cpu_ms), its size, and how much
 // of the bones' length lies inside the shape (sampled every 0.25 px). --png writes a picture
 // of each result to DIR: shape grey, simplified outline blue, raw skeleton orange, bones
-// black, joints as circles of their radius, the root red.
+// black, joints as circles of their radius, the root red, and DIR/sheet.png: every picture on
+// one contact sheet. Per file also the rig an animator sees (issue 21): terminals, junctions,
+// bones, the shortest bone relative to the shape's diagonal, whether the root is a tip.
+// --before: without the animator rig (RefineOptions::animatorRig off), for comparison.
 #include "../geometry/geometry_test_support.h"
 #include "bench.h"
 
@@ -163,7 +166,44 @@ void writePicture(const QString &dir, const QString &name, const Region &shape,
     image.save(QDir(dir).filePath(name + QStringLiteral(".png")));
 }
 
-QJsonObject measure(const QString &path, const Region &shape, const QString &pngDir)
+// Every picture in `files` scaled into one grid, with its name: what an animator looks over.
+void writeContactSheet(const QString &dir, const QStringList &names)
+{
+    constexpr int kTile = 260, kColumns = 8;
+    const int rows = (int(names.size()) + kColumns - 1) / kColumns;
+    QImage sheet(kColumns * kTile, std::max(1, rows) * kTile, QImage::Format_RGB32);
+    sheet.fill(Qt::white);
+    QPainter painter(&sheet);
+    painter.setRenderHint(QPainter::SmoothPixmapTransform);
+    for (qsizetype i = 0; i < names.size(); ++i) {
+        const QImage image(QDir(dir).filePath(names[i] + QStringLiteral(".png")));
+        const QRect cell(int(i % kColumns) * kTile, int(i / kColumns) * kTile, kTile, kTile);
+        if (!image.isNull()) {
+            const QImage scaled =
+                image.scaled(kTile - 8, kTile - 22, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+            painter.drawImage(cell.left() + 4, cell.top() + 18, scaled);
+        }
+        painter.setPen(Qt::black);
+        painter.drawText(cell.adjusted(4, 2, -4, 0), Qt::AlignTop | Qt::AlignLeft, names[i]);
+        painter.setPen(QColor(200, 200, 200));
+        painter.drawRect(cell.adjusted(0, 0, -1, -1));
+    }
+    painter.end();
+    sheet.save(QDir(dir).filePath(QStringLiteral("sheet.png")));
+}
+
+double shortestBone(const Skeleton &s)
+{
+    double shortest = 0.0;
+    const Eigen::VectorXd lengths = boneLengths(s);
+    for (int j = 0; j < s.jointCount(); ++j) {
+        if (s.parent(j) >= 0 && (shortest == 0.0 || lengths(j) < shortest))
+            shortest = lengths(j);
+    }
+    return shortest;
+}
+
+QJsonObject measure(const QString &path, const Region &shape, const QString &pngDir, bool before)
 {
     QJsonObject row{{QStringLiteral("file"), QFileInfo(path).fileName()}};
     std::vector<double> totalMs, rawMs, cpuMs;
@@ -178,7 +218,9 @@ QJsonObject measure(const QString &path, const Region &shape, const QString &png
             row.insert(QStringLiteral("error"), QString::fromStdString(r.error().message));
             return row;
         }
-        auto s = refineSkeleton(*r);
+        RefineOptions refine;
+        refine.animatorRig = !before;
+        auto s = refineSkeleton(*r, refine);
         totalMs.push_back(msSince(start));
         cpuMs.push_back(threadCpuMs() - cpuStart);
         if (!s) {
@@ -205,6 +247,15 @@ QJsonObject measure(const QString &path, const Region &shape, const QString &png
     row.insert(QStringLiteral("terminals"),
                qint64(std::count(kinds.begin(), kinds.end(), JointKind::Terminal)));
     row.insert(QStringLiteral("bones_inside"), bonesInside(*skeleton, shape));
+    Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(1e300), hi = -lo;
+    for (const Eigen::MatrixX2d &ring : regionRings(shape)) {
+        lo = lo.cwiseMin(ring.colwise().minCoeff());
+        hi = hi.cwiseMax(ring.colwise().maxCoeff());
+    }
+    row.insert(QStringLiteral("shortest_bone_rel"), shortestBone(*skeleton) / (hi - lo).norm());
+    row.insert(QStringLiteral("root_is_terminal"),
+               skeleton->root >= 0 && jointDegrees(*skeleton)(skeleton->root) == 1);
+    row.insert(QStringLiteral("trees"), qint64((skeleton->parent.array() < 0).count()));
     row.insert(QStringLiteral("finite"), skeleton->joints.allFinite() &&
                                              skeleton->radius.allFinite() &&
                                              isValidSkeleton(*skeleton));
@@ -217,31 +268,44 @@ int benchSkeleton(const QStringList &arguments)
 {
     QStringList args = arguments;
     QString pngDir;
-    if (args.size() >= 2 && args.front() == QStringLiteral("--png")) {
-        pngDir = args[1];
-        args = args.mid(2);
-        QDir().mkpath(pngDir);
+    bool before = false;
+    while (!args.isEmpty()) {
+        if (args.size() >= 2 && args.front() == QStringLiteral("--png")) {
+            pngDir = args[1];
+            args = args.mid(2);
+            QDir().mkpath(pngDir);
+        } else if (args.front() == QStringLiteral("--before")) {
+            before = true;
+            args.removeFirst();
+        } else {
+            break;
+        }
     }
     if (args.isEmpty()) {
         std::fprintf(stderr, "usage: finbook-bench skeleton [--png DIR] FILE...\n");
         return 2;
     }
     int failures = 0;
+    QStringList names;
     for (const QString &path : args) {
         QString problem;
         const std::optional<Region> shape = readShape(path, problem);
         const QJsonObject row =
-            shape ? measure(path, *shape, pngDir)
+            shape ? measure(path, *shape, pngDir, before)
                   : QJsonObject{{QStringLiteral("file"), QFileInfo(path).fileName()},
                                 {QStringLiteral("error"), problem}};
         failures += row.contains(QStringLiteral("error")) ? 1 : 0;
         std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
         std::fflush(stdout);
+        names << QFileInfo(path).baseName();
     }
+    if (!pngDir.isEmpty())
+        writeContactSheet(pngDir, names);
     return failures == 0 ? 0 : 1;
 }
 
 } // namespace
 
-FINBOOK_BENCH("skeleton", "[--png DIR] FILE... (Quick, Draw! strokes or shape contours as JSON)",
+FINBOOK_BENCH("skeleton",
+              "[--before] [--png DIR] FILE... (Quick, Draw! strokes or shape contours as JSON)",
               benchSkeleton);

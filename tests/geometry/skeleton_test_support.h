@@ -76,6 +76,36 @@ inline double bonesInside(const geometry::Skeleton &s, const geometry::Region &r
     return total > 0.0 ? inside / total : 1.0;
 }
 
+// Index of the polygon of `region` containing p, −1 if none.
+inline int pieceOf(const geometry::Region &region, const Eigen::RowVector2d &p)
+{
+    for (std::size_t k = 0; k < region.size(); ++k) {
+        if (insideRegion(geometry::Region{region[k]}, p))
+            return int(k);
+    }
+    return -1;
+}
+
+// bonesInside without the bones that join separate pieces (polygons of `pieces`), which the
+// animator rig draws across the gap between them; `joining` receives their number.
+inline double bonesInsidePieces(const geometry::Skeleton &s, const geometry::Region &region,
+                                const geometry::Region &pieces, int &joining, double spacing = 0.25)
+{
+    geometry::Skeleton own = s;
+    joining = 0;
+    for (int j = 0; j < s.jointCount(); ++j) {
+        if (s.parent(j) < 0 || pieces.size() < 2)
+            continue;
+        const int a = pieceOf(pieces, s.joints.row(s.parent(j)));
+        const int b = pieceOf(pieces, s.joints.row(j));
+        if (a != b) {
+            own.parent(j) = -1;
+            ++joining;
+        }
+    }
+    return bonesInside(own, region, spacing);
+}
+
 // The bones as unordered pairs of joint positions: the same skeleton whatever the numbering
 // and the root.
 inline std::set<std::pair<std::pair<double, double>, std::pair<double, double>>>

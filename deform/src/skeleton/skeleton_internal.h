@@ -57,6 +57,7 @@ inline double squaredSegmentDistance(const Eigen::Vector2d &p, const Eigen::Vect
 // non-empty list of its handle joints.
 Eigen::VectorXi skinningBoundary(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                  const Skeleton &skeleton, const Eigen::VectorXi &handles,
-                                 double reachEdges);
+                                 double reachEdges, const Eigen::VectorXd &jointRadius = {},
+                                 double jointFree = 0.0);
 
 } // namespace finbook::deform::detail

@@ -72,6 +72,30 @@ void giveEveryHandleAVertex(const Eigen::MatrixX2d &V, const std::vector<Segment
     }
 }
 
+// Vertices within jointFree × radius of a joint where two or more bones meet are left free.
+void freeJointZones(const Eigen::MatrixX2d &V, const Skeleton &skeleton,
+                    const Eigen::VectorXd &jointRadius, double jointFree, Eigen::VectorXi &owner)
+{
+    if (!(jointFree > 0.0) || jointRadius.size() != skeleton.jointCount())
+        return;
+    std::vector<int> degree(static_cast<std::size_t>(skeleton.jointCount()), 0);
+    for (Eigen::Index j = 0; j < skeleton.jointCount(); ++j) {
+        if (skeleton.parent(j) >= 0) {
+            ++degree[static_cast<std::size_t>(j)];
+            ++degree[static_cast<std::size_t>(skeleton.parent(j))];
+        }
+    }
+    for (Eigen::Index j = 0; j < skeleton.jointCount(); ++j) {
+        const double r = jointFree * jointRadius(j);
+        if (degree[static_cast<std::size_t>(j)] < 2 || !(r > 0.0))
+            continue;
+        for (Eigen::Index v = 0; v < V.rows(); ++v) {
+            if ((V.row(v) - skeleton.joints.row(j)).squaredNorm() < r * r)
+                owner(v) = -1;
+        }
+    }
+}
+
 } // namespace
 
 Eigen::VectorXi skinningHandles(const Skeleton &skeleton)
@@ -92,7 +116,8 @@ Eigen::VectorXi skinningHandles(const Skeleton &skeleton)
 // Works in handle positions 0 … H−1 internally and returns joint indices.
 Eigen::VectorXi detail::skinningBoundary(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                          const Skeleton &skeleton, const Eigen::VectorXi &handles,
-                                         double reachEdges)
+                                         double reachEdges, const Eigen::VectorXd &jointRadius,
+                                         double jointFree)
 {
     const std::vector<Segment> segments = handleSegments(skeleton, handles);
     const double reach = reachEdges * meanEdgeLength(V, F);
@@ -114,6 +139,7 @@ Eigen::VectorXi detail::skinningBoundary(const Eigen::MatrixX2d &V, const Eigen:
         if (best <= reach2)
             owner(v) = nearest(v);
     }
+    freeJointZones(V, skeleton, jointRadius, jointFree, owner);
     giveEveryHandleAVertex(V, segments, owner);
     // A component no bone reaches would make the Laplacian singular: its vertex nearest to a
     // bone is fixed to that bone, so the whole component follows it.
@@ -136,6 +162,45 @@ Eigen::VectorXi detail::skinningBoundary(const Eigen::MatrixX2d &V, const Eigen:
             owner(v) = handles(owner(v));
     }
     return owner;
+}
+
+} // namespace finbook::deform
+
+namespace finbook::deform {
+
+SkinningWeights withJointZones(const SkinningWeights &weights, const Eigen::MatrixX2d &V,
+                               const Skeleton &skeleton, const Eigen::VectorXd &jointRadius,
+                               double jointFree)
+{
+    SkinningWeights out = weights;
+    if (weights.owner.size() != V.rows() || !jointRadius.allFinite())
+        return out;
+    Eigen::VectorXi zoned = weights.owner;
+    freeJointZones(V, skeleton, jointRadius, jointFree, zoned);
+    std::vector<int> held(static_cast<std::size_t>(skeleton.jointCount()), 0);
+    for (const int o : zoned) {
+        if (o >= 0)
+            ++held[static_cast<std::size_t>(o)];
+    }
+    // A bone all of whose vertices lie in joint zones keeps one, the nearest to its middle,
+    // as the weights' boundary would give it (giveEveryHandleAVertex): it must move something.
+    std::vector<int> keep(held.size(), -1);
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        const int o = weights.owner(v);
+        if (o < 0 || o >= skeleton.jointCount() || held[static_cast<std::size_t>(o)] > 0)
+            continue;
+        const int p = skeleton.parent(o) >= 0 ? skeleton.parent(o) : o;
+        const Eigen::RowVector2d middle = 0.5 * (skeleton.joints.row(o) + skeleton.joints.row(p));
+        int &k = keep[static_cast<std::size_t>(o)];
+        if (k < 0 || (V.row(v) - middle).squaredNorm() < (V.row(k) - middle).squaredNorm())
+            k = static_cast<int>(v);
+    }
+    for (const int k : keep) {
+        if (k >= 0)
+            zoned(k) = weights.owner(k);
+    }
+    out.owner = zoned;
+    return out;
 }
 
 } // namespace finbook::deform

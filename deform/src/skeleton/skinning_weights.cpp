@@ -174,6 +174,12 @@ SkinningWeightsResult computeSkinningWeights(const Eigen::MatrixX2d &V, const Ei
     if (!(options.reach >= 0.0) || !std::isfinite(options.reach))
         return unexpected(makeError(DeformErrorCode::InvalidSkeleton,
                                     "the bones' reach must be a finite non-negative number"));
+    if (!(options.jointFree >= 0.0) || !std::isfinite(options.jointFree) ||
+        (options.jointRadius.size() != 0 &&
+         (options.jointRadius.size() != skeleton.jointCount() || !options.jointRadius.allFinite() ||
+          options.jointRadius.minCoeff() < 0.0)))
+        return unexpected(makeError(DeformErrorCode::InvalidSkeleton,
+                                    "the joint zones need one finite radius per joint"));
     if (double(V.rows()) * double(skeleton.jointCount()) > kMaxSkinningEntries)
         return unexpected(
             makeError(DeformErrorCode::InvalidSkeleton, "too many bones for a mesh of this size"));
@@ -182,7 +188,8 @@ SkinningWeightsResult computeSkinningWeights(const Eigen::MatrixX2d &V, const Ei
         return unexpected(handles.error());
     auto weights = std::make_shared<SkinningWeights>();
     weights->handles = std::move(*handles);
-    weights->owner = detail::skinningBoundary(V, F, skeleton, weights->handles, options.reach);
+    weights->owner = detail::skinningBoundary(V, F, skeleton, weights->handles, options.reach,
+                                              options.jointRadius, options.jointFree);
     std::vector<int> column(static_cast<std::size_t>(skeleton.jointCount()), -1);
     std::vector<int> active;
     for (const int o : weights->owner) {

@@ -1,6 +1,7 @@
 #include "bone_graph.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace finbook::geometry::detail {
@@ -11,12 +12,23 @@ namespace {
 // not cross the contour; otherwise it splits at the node that exceeds its bound the most.
 // Returns the kept positions along the branch (first and last always).
 std::vector<int> boundedDouglasPeucker(const DenseGraph &g, const std::vector<int> &nodes,
-                                       double tolerance, const Contours &contours)
+                                       double tolerance, const Contours &contours,
+                                       const std::vector<int> &forced)
 {
     const int m = int(nodes.size());
     std::vector<char> keep(std::size_t(m), 0);
     keep.front() = keep.back() = 1;
-    std::vector<std::pair<int, int>> stack{{0, m - 1}};
+    for (int f : forced) {
+        if (f > 0 && f < m - 1)
+            keep[std::size_t(f)] = 1;
+    }
+    std::vector<std::pair<int, int>> stack;
+    for (int a = 0, b = 1; b < m; ++b) {
+        if (keep[std::size_t(b)]) {
+            stack.emplace_back(a, b);
+            a = b;
+        }
+    }
     while (!stack.empty()) {
         const auto [a, b] = stack.back();
         stack.pop_back();
@@ -109,7 +121,8 @@ bool collapseBone(DenseGraph &g, int a, int b, const Contours &contours)
 } // namespace
 
 // The bone graph: branch ends and kept branch nodes become joints.
-DenseGraph bonesFromBranches(const DenseGraph &g, double tolerance, const Contours &contours)
+DenseGraph bonesFromBranches(const DenseGraph &g, double tolerance, const Contours &contours,
+                             const ForcedJoints &forced)
 {
     DenseGraph bones;
     std::vector<int> joint(std::size_t(g.size()), -1);
@@ -121,7 +134,8 @@ DenseGraph bonesFromBranches(const DenseGraph &g, double tolerance, const Contou
         return joint[std::size_t(v)];
     };
     for (const Branch &branch : extractBranches(g)) {
-        const std::vector<int> kept = boundedDouglasPeucker(g, branch.nodes, tolerance, contours);
+        const std::vector<int> kept = boundedDouglasPeucker(
+            g, branch.nodes, tolerance, contours, forced ? forced(branch) : std::vector<int>{});
         int previous = jointOf(branch.nodes[std::size_t(kept.front())]);
         for (std::size_t k = 1; k < kept.size(); ++k) {
             const int next = jointOf(branch.nodes[std::size_t(kept[k])]);
@@ -132,22 +146,26 @@ DenseGraph bonesFromBranches(const DenseGraph &g, double tolerance, const Contou
     return bones;
 }
 
-void collapseShortBones(DenseGraph &g, double length, const Contours &contours)
+void collapseShortBones(DenseGraph &g, double length, double relative, const Contours &contours)
 {
-    if (!(length > 0.0))
+    if (!(length > 0.0) && !(relative > 0.0))
         return;
     std::vector<std::pair<int, int>> blocked;
     for (;;) {
         int ba = -1, bb = -1;
-        double best = length;
+        double best = std::numeric_limits<double>::infinity();
         for (int a = 0; a < g.size(); ++a) {
             if (!g.alive[std::size_t(a)] || g.degree(a) < 2)
                 continue;
             for (int b : g.adj[std::size_t(a)]) {
-                if (b < a || g.degree(b) < 2 || g.length(a, b) >= best ||
+                const double l = g.length(a, b);
+                const double limit =
+                    std::max(length, relative * std::min(g.clearance[std::size_t(a)],
+                                                         g.clearance[std::size_t(b)]));
+                if (b < a || g.degree(b) < 2 || l >= limit || l >= best ||
                     std::find(blocked.begin(), blocked.end(), std::pair{a, b}) != blocked.end())
                     continue;
-                best = g.length(a, b);
+                best = l;
                 ba = a;
                 bb = b;
             }

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <functional>
 #include <vector>
 
 namespace finbook::geometry::detail {
@@ -20,7 +21,9 @@ inline constexpr double kBoundFraction = 0.5;
 // Contour lookup by polygon; empty for a degenerate raw skeleton (no inside tests then).
 class Contours {
 public:
-    explicit Contours(const Region &region)
+    // margin: the least distance (px) a new bone keeps from the outline, whatever the width.
+    explicit Contours(const Region &region, double margin = 0.0)
+        : m_margin(margin)
     {
         for (const Polygon &polygon : region)
             m_index.emplace_back(polygon);
@@ -40,11 +43,14 @@ public:
             return true;
         const ContourIndex &index = m_index[std::size_t(polygon)];
         return index.segmentInside(a, b) &&
-               index.segmentDistance(a, b) >= kBoundFraction * std::min(clearanceA, clearanceB);
+               index.segmentDistance(a, b) >=
+                   std::min(std::max(m_margin, kBoundFraction * std::min(clearanceA, clearanceB)),
+                            std::min(clearanceA, clearanceB));
     }
 
 private:
     std::vector<ContourIndex> m_index;
+    double m_margin = 0.0;
 };
 
 inline bool isJunction(const DenseGraph &g, int v)
@@ -55,11 +61,19 @@ inline bool isJunction(const DenseGraph &g, int v)
 // The bone graph: every branch (extractBranches) split into bones by bounded Douglas–Peucker
 // (a stretch becomes one bone when every node it replaces lies within
 // min(tolerance, kBoundFraction × clearance) of it and it crosses no contour edge; otherwise
-// it splits at the node exceeding its bound the most). Branch ends and kept nodes are joints.
-DenseGraph bonesFromBranches(const DenseGraph &g, double tolerance, const Contours &contours);
+// it splits at the node exceeding its bound the most). Branch ends and kept nodes are joints,
+// and so are the positions `forced` gives for a branch (indices into branch.nodes).
+using ForcedJoints = std::function<std::vector<int>(const Branch &branch)>;
+DenseGraph bonesFromBranches(const DenseGraph &g, double tolerance, const Contours &contours,
+                             const ForcedJoints &forced = {});
 
-// Collapses bones between two non-terminal joints shorter than `length`, shortest first,
-// where the merged joint keeps every neighbouring bone fitting (Contours::boneFits).
-void collapseShortBones(DenseGraph &g, double length, const Contours &contours);
+// Collapses bones between two non-terminal joints shorter than `length` or than `relative` ×
+// the smaller inscribed radius of their ends, shortest first, where the merged joint keeps
+// every neighbouring bone fitting (Contours::boneFits).
+void collapseShortBones(DenseGraph &g, double length, double relative, const Contours &contours);
+
+// The `relative` of collapseShortBones for the clean-up by default: a bone shorter than half
+// the width at its ends is no bone an animator would turn.
+inline constexpr double kTinyBone = 0.5;
 
 } // namespace finbook::geometry::detail

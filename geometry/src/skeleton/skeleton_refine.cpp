@@ -1,3 +1,4 @@
+#include "animator_rig.h"
 #include "bone_graph.h"
 #include "dense_graph.h"
 #include "skeleton_contour.h"
@@ -69,12 +70,12 @@ bool mergeBranch(DenseGraph &g, const Branch &branch, const Contours &contours)
     return true;
 }
 
-// Junctions joined by a branch shorter than `distance` merge, shortest branch first, so
-// clusters of junctions shrink to their widest one step by step; a merge that would take a
-// bone outside is skipped.
-void mergeJunctions(DenseGraph &g, double distance, const Contours &contours)
+// Junctions joined by a branch shorter than `distance` (or, with `clusters`, inside each
+// other's inscribed disk) merge, shortest branch first, so clusters of junctions shrink to
+// their widest one step by step; a merge that would take a bone outside is skipped.
+void mergeJunctions(DenseGraph &g, double distance, bool clusters, const Contours &contours)
 {
-    if (!(distance > 0.0))
+    if (!(distance > 0.0) && !clusters)
         return;
     std::vector<std::pair<int, int>> blocked;
     for (;;) {
@@ -83,7 +84,8 @@ void mergeJunctions(DenseGraph &g, double distance, const Contours &contours)
             const std::pair ends{std::min(b.nodes.front(), b.nodes.back()),
                                  std::max(b.nodes.front(), b.nodes.back())};
             if (b.nodes.size() < 2 || !isJunction(g, b.nodes.front()) ||
-                !isJunction(g, b.nodes.back()) || b.length >= distance ||
+                !isJunction(g, b.nodes.back()) ||
+                (b.length >= distance && !(clusters && isJunctionCluster(g, b))) ||
                 std::find(blocked.begin(), blocked.end(), ends) != blocked.end())
                 continue;
             if (!shortest || b.length < shortest->length)
@@ -137,9 +139,15 @@ Skeleton rooted(const DenseGraph &bones, const RawSkeleton &raw, const RefineOpt
     std::vector<int> roots;
     for (std::size_t p = 0; p < raw.contour.size(); ++p) {
         const Eigen::Vector2d c = regionCentroid(Region{raw.contour[p]}).transpose();
-        roots.push_back(nearestJoint(graph, polygonOf, int(p), c));
+        roots.push_back(options.animatorRig ? thickestJoint(graph, polygonOf, int(p))
+                                            : nearestJoint(graph, polygonOf, int(p), c));
     }
-    return orderedSkeleton(graph, roots, nearestJoint(graph, polygonOf, -1, target));
+    const int root = options.rootNear || !options.animatorRig
+                         ? nearestJoint(graph, polygonOf, -1, target)
+                         : thickestJoint(graph, polygonOf, -1);
+    if (options.animatorRig)
+        joinPieces(graph, polygonOf, root);
+    return orderedSkeleton(graph, roots, root);
 }
 
 bool validLength(double value)
@@ -160,12 +168,24 @@ Expected<Skeleton, GeometryError> refineSkeleton(const RawSkeleton &raw,
     if (!validRaw(raw))
         return unexpected(GeometryError{GeometryErrorCode::InvalidIndex,
                                         "The stored skeleton is inconsistent; rebuild it."});
-    const Contours contours(raw.contour);
+    // New bones (merges, collapses) keep at least the outline's simplification and erosion
+    // away from it, so they stay inside the drawn shape too, not only inside raw.contour.
+    const Contours contours(raw.contour, raw.tolerance + raw.erosion);
     DenseGraph graph = fromRaw(raw);
     prune(graph, options.pruneLength);
-    mergeJunctions(graph, options.mergeDistance, contours);
-    DenseGraph bones = bonesFromBranches(graph, options.boneTolerance, contours);
-    collapseShortBones(bones, options.collapseLength, contours);
+    if (options.animatorRig)
+        removeCornerSpurs(graph, raw.contour);
+    mergeJunctions(graph, options.mergeDistance, options.animatorRig, contours);
+    ForcedJoints forced;
+    if (options.animatorRig) {
+        subdivideLongEdges(graph);
+        forced = [&graph](const Branch &branch) { return limbJoints(graph, branch); };
+    }
+    DenseGraph bones = bonesFromBranches(graph, options.boneTolerance, contours, forced);
+    collapseShortBones(bones, options.collapseLength, options.animatorRig ? kTinyBone : 0.0,
+                       contours);
+    if (options.animatorRig)
+        trimTinyTips(bones, contours);
     return rooted(bones, raw, options);
 }
 

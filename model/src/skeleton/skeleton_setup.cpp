@@ -4,6 +4,7 @@
 
 #include <finbook/model/skeleton/skeleton_setup.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace finbook::model {
@@ -122,7 +123,14 @@ buildSkeletonSetup(const MeshedObject &meshed, const SkeletonRig &rig,
                               .arg(message(weights.error())));
     setup->weights = *weights;
     setup->vertices = deform::bindVertices(*setup->weights, V);
-    auto rigid = deform::rigidSkinPrecompute(V, F, *setup->weights, options, cancelled);
+    // The rigid mode leaves each joint's flesh to the ARAP solve (joint zones of one inscribed
+    // radius): chosen over plain bone pins with `finbook-bench limbs` (README).
+    Eigen::VectorXd radius = Eigen::VectorXd::Zero(setup->skeleton.jointCount());
+    for (std::size_t j = 0; j < rig.radius.size() && Eigen::Index(j) < radius.size(); ++j)
+        radius(Eigen::Index(j)) = std::isfinite(rig.radius[j]) ? std::max(0.0, rig.radius[j]) : 0.0;
+    const deform::SkinningWeights pins =
+        deform::withJointZones(*setup->weights, V, setup->skeleton, radius);
+    auto rigid = deform::rigidSkinPrecompute(V, F, pins, options, cancelled);
     if (!rigid)
         return unexpected(Deformation::tr("The skeleton cannot skin this drawing: %1")
                               .arg(message(rigid.error())));

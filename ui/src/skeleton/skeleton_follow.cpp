@@ -1,4 +1,5 @@
 #include <finbook/model/cage/cage_commands.h>
+#include <finbook/model/skeleton/skeleton_carry.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/skeleton/skeleton_follow.h>
@@ -42,6 +43,7 @@ void followDrawing(EditorState &state, const std::vector<model::Id> &groupIds)
         auto rebuilt = model::buildSkeletonRig(*g, old.settings, old.joints[std::size_t(old.root)]);
         if (!rebuilt)
             continue; // e.g. a single dot: keep the bones the drawing had
+        *rebuilt = model::carryHandEdits(old, *rebuilt); // hand moves and locks that still fit
         rebuilt->mode = old.mode;
         rebuilt->join = old.join; // a part stays joined to its character
         rebuilt->anchor = old.anchor;

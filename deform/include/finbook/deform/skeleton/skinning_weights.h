@@ -32,7 +32,18 @@ struct SkinningOptions {
     // bone it is joined to), or a far bone would still take the vertex nearest to it.
     // Entries that are not handles (roots with children) are ignored.
     Eigen::VectorXi bones;
+    // Joint zones (issue 21): with J radii (the inscribed radius at each joint, px), vertices
+    // within jointFree × radius of a joint where bones meet (a bend or a junction) are held by
+    // no bone, so the weights blend across the whole joint and the rigid mode's ARAP solve
+    // places the joint's flesh itself: the inner side of a bend compresses, the outer side
+    // stretches, instead of curling between pins of the two bones. Empty, or jointFree 0: off.
+    Eigen::VectorXd jointRadius;
+    double jointFree = 0.0;
 };
+
+// The joint-zone factor the app skins with: measured with `finbook-bench limbs` against the
+// plain bone boundary (0) on ../shared/data.
+inline constexpr double kDefaultJointFree = 1.0;
 
 // Immutable once computeSkinningWeights returns it; safe to share between threads.
 // "Handles" are what carries weight: every bone (column j for the bone ending at joint j) and
@@ -58,13 +69,23 @@ using SkinningWeightsResult = Expected<std::shared_ptr<const SkinningWeights>, D
 // vertex), skeleton in the same coordinates. Bones may leave the mesh; a mesh component no bone
 // reaches follows the bone nearest to it rigidly. `cancelled` is polled between phases and
 // between right-hand sides. Errors: those of arapPrecompute's input checks, InvalidSkeleton
-// (options.reach negative or not finite, options.bones naming no handle, or n × J beyond
+// (options.reach or jointFree negative or not finite, jointRadius neither empty nor J finite
+// non-negative entries, options.bones naming no handle, or n × J beyond
 // kMaxSkinningEntries), InvalidIndex (options.bones out of range), FactorizationFailed,
 // SolveFailed, Cancelled.
 SkinningWeightsResult computeSkinningWeights(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                              const Skeleton &skeleton,
                                              const SkinningOptions &options = {},
                                              std::function<bool()> cancelled = {});
+
+// The same weights with joint zones in the boundary only (SkinningOptions::jointFree): every
+// vertex within jointFree × jointRadius(j) of a joint j where bones meet is no longer held,
+// (a bone left without any keeps the one nearest its middle). W is unchanged, so linear blend
+// skinning is the same; the rigid mode built from the result (rigidSkinPins) leaves those vertices
+// to the ARAP solve. jointRadius: J entries (other sizes, or jointFree ≤ 0: the weights unchanged).
+SkinningWeights withJointZones(const SkinningWeights &weights, const Eigen::MatrixX2d &V,
+                               const Skeleton &skeleton, const Eigen::VectorXd &jointRadius,
+                               double jointFree = kDefaultJointFree);
 
 // The handles of a skeleton (see SkinningWeights::handles).
 Eigen::VectorXi skinningHandles(const Skeleton &skeleton);

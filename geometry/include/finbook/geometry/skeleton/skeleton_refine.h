@@ -35,10 +35,24 @@ struct RefineOptions {
     // Bones between two non-terminal joints shorter than this (px) collapse into one joint,
     // shortest first, unless that would take a neighbouring bone outside the shape. ≥ 0.
     double collapseLength = 0.0;
-    // The character root: the joint nearest this point (canvas px). Default: the joint nearest
-    // the region's centre of mass. Other trees (separate lobes) are rooted at the joint
-    // nearest their own polygon's centre of mass.
+    // The character root: the joint nearest this point (canvas px). Default: with animatorRig
+    // the joint with the largest inscribed disk (the body's thickest part; inner joints before
+    // tips), else the joint nearest the region's centre of mass.
     std::optional<Eigen::Vector2d> rootNear;
+    // A rig an animator accepts as it comes (issue 21), on top of the four px controls above:
+    //  - clean-up relative to the local width: side branches shorter than 1.1 junction radii,
+    //    or shorter than 2 and not ending in a limb's tip (the outline turns less than 135°
+    //    there: a box corner turns 90°, a stubby finger 180°) go; junctions inside each
+    //    other's inscribed disk merge; inner bones shorter than half the width at their ends
+    //    collapse, and so do stubs at tips;
+    //  - a base joint where each limb leaves the body (the width drops from the junction's to
+    //    the limb's) and, on a limb longer than 6 of its radii, a middle joint where it bends
+    //    most, else narrows, else half way;
+    //  - the root at the thickest part, and separate pieces (polygons) hung from the nearest
+    //    bone of the root's tree (split there when the point lies inside the bone): the only
+    //    bones that may leave the shape.
+    // false: RealSkel's pipeline alone, with a tree per polygon rooted near its centre of mass.
+    bool animatorRig = true;
 };
 
 // Slider ranges for a raw skeleton, in px (after RealSkel's dialogs): bone tolerance up to
@@ -53,7 +67,8 @@ struct RefineRanges {
 RefineRanges refineRanges(const RawSkeleton &raw);
 
 // Errors: InvalidOptions (a negative or NaN length). Promise: isValidSkeleton, part = 0 for
-// every joint, J ≥ 1 (J == 0 only when raw has no nodes), every bone inside raw.contour.
+// every joint, J ≥ 1 (J == 0 only when raw has no nodes), every bone inside raw.contour (but those
+// that join separate pieces).
 Expected<Skeleton, GeometryError> refineSkeleton(const RawSkeleton &raw,
                                                  const RefineOptions &options = {});
 

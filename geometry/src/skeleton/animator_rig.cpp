@@ -1,0 +1,454 @@
+#include "animator_rig.h"
+
+#include "skeleton_contour.h"
+
+#include <finbook/geometry/polyline.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace finbook::geometry::detail {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// The base of a limb: where the width has come down to within this fraction of the way from
+// the body's inscribed radius to the limb's.
+constexpr double kBaseDrop = 0.1;
+// A limb is narrower than the body when its typical radius is below this fraction of the
+// junction's; otherwise the junction itself is the base (a plus sign's arms).
+constexpr double kNarrower = 0.8;
+// A limb longer than this many of its radii from its base gets a middle joint.
+constexpr double kLongLimb = 6.0;
+
+double cross2(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
+{
+    return a.x() * b.y() - a.y() * b.x();
+}
+
+// Cumulative arc length along a node path.
+std::vector<double> arcLengths(const DenseGraph &g, const std::vector<int> &nodes)
+{
+    std::vector<double> s(nodes.size(), 0.0);
+    for (std::size_t i = 1; i < nodes.size(); ++i)
+        s[i] = s[i - 1] + g.length(nodes[i - 1], nodes[i]);
+    return s;
+}
+
+double median(std::vector<double> v)
+{
+    if (v.empty())
+        return 0.0;
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+// The bend of the path at node i: the angle between the directions to the nodes `span` away
+// (by arc length) on either side.
+double bendAt(const DenseGraph &g, const std::vector<int> &nodes, const std::vector<double> &s,
+              std::size_t i, double span)
+{
+    std::size_t a = i, b = i;
+    while (a > 0 && s[i] - s[a] < span)
+        --a;
+    while (b + 1 < nodes.size() && s[b] - s[i] < span)
+        ++b;
+    if (a == i || b == i)
+        return 0.0;
+    const Eigen::Vector2d u = g.pos[std::size_t(nodes[i])] - g.pos[std::size_t(nodes[a])];
+    const Eigen::Vector2d w = g.pos[std::size_t(nodes[b])] - g.pos[std::size_t(nodes[i])];
+    return std::abs(std::atan2(cross2(u, w), u.dot(w)));
+}
+
+double segmentPointT(const Eigen::Vector2d &p, const Eigen::Vector2d &a, const Eigen::Vector2d &b)
+{
+    const Eigen::Vector2d ab = b - a;
+    const double l2 = ab.squaredNorm();
+    return l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+}
+
+} // namespace
+
+double outlineTurning(const Polygon &contour, const Eigen::Vector2d &p, double reach)
+{
+    double best = 0.0, bestDistance = std::numeric_limits<double>::infinity();
+    for (const Eigen::MatrixX2d &ring : regionRings(Region{contour})) {
+        const Eigen::Index n = ring.rows();
+        if (n < 3)
+            continue;
+        // Holes run the other way round: their convex corners (seen from inside the shape)
+        // turn negatively.
+        const double sign = signedArea(ring) >= 0.0 ? 1.0 : -1.0;
+        double turning = 0.0, nearest = std::numeric_limits<double>::infinity();
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const Eigen::Vector2d v = ring.row(i).transpose();
+            const Eigen::Vector2d a = ring.row((i + n - 1) % n).transpose();
+            const Eigen::Vector2d b = ring.row((i + 1) % n).transpose();
+            nearest = std::min(nearest, pointSegmentDistance(p, v, b));
+            if ((v - p).norm() > reach)
+                continue;
+            const Eigen::Vector2d u = v - a, w = b - v;
+            const double angle = sign * std::atan2(cross2(u, w), u.dot(w));
+            turning += std::max(angle, 0.0);
+        }
+        if (nearest < bestDistance) {
+            bestDistance = nearest;
+            best = turning;
+        }
+    }
+    return std::min(best, 2.0 * kPi);
+}
+
+namespace {
+
+// The path from a tip up to (not including) the first node that is not an inner one; `end`
+// is that node if it is a junction, else −1.
+std::vector<int> tipPath(const DenseGraph &g, int tip, int &end)
+{
+    std::vector<int> path{tip};
+    int previous = -1, at = tip;
+    for (;;) {
+        int next = -1;
+        for (int n : g.adj[std::size_t(at)])
+            next = n != previous ? n : next;
+        if (next < 0 || g.degree(next) != 2) {
+            end = next >= 0 && g.degree(next) >= 3 ? next : -1;
+            return path;
+        }
+        path.push_back(next);
+        previous = at;
+        at = next;
+    }
+}
+
+bool isCornerSpur(const DenseGraph &graph, const Region &contour, const std::vector<int> &path,
+                  int junction)
+{
+    const double r = graph.clearance[std::size_t(junction)];
+    const Eigen::Vector2d &c = graph.pos[std::size_t(junction)];
+    double reach = 0.0, length = 0.0;
+    std::vector<double> widths;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const int n = path[i];
+        reach = std::max(reach,
+                         (graph.pos[std::size_t(n)] - c).norm() + graph.clearance[std::size_t(n)]);
+        widths.push_back(graph.clearance[std::size_t(n)]);
+        length += graph.length(n, i + 1 < path.size() ? path[i + 1] : junction);
+    }
+    if (reach <= kInsideDisk * r)
+        return true;
+    if (length >= kSpurLength * r)
+        return false;
+    const int tip = path.front();
+    const int polygon = graph.polygon[std::size_t(tip)];
+    if (polygon < 0 || std::size_t(polygon) >= contour.size())
+        return false;
+    // Around the tip, as far as the branch is wide: the whole cap of a limb.
+    const double around = 2.0 * std::max({graph.clearance[std::size_t(tip)], median(widths), 1e-9});
+    return outlineTurning(contour[std::size_t(polygon)], graph.pos[std::size_t(tip)], around) <
+           kTipTurning;
+}
+
+} // namespace
+
+void removeCornerSpurs(DenseGraph &graph, const Region &contour)
+{
+    // All spurs of a junction go at once: a box's two corner spurs at one end both go, where
+    // one at a time would leave the second one part of a longer branch.
+    for (;;) {
+        std::vector<std::pair<int, std::vector<int>>> spurs; // junction, path
+        for (int v = 0; v < graph.size(); ++v) {
+            if (!graph.alive[std::size_t(v)] || graph.degree(v) != 1)
+                continue;
+            int junction = -1;
+            std::vector<int> path = tipPath(graph, v, junction);
+            if (junction >= 0 && isCornerSpur(graph, contour, path, junction))
+                spurs.emplace_back(junction, std::move(path));
+        }
+        if (spurs.empty())
+            return;
+        // A junction keeps its longest branch when every branch of it is a spur.
+        std::sort(spurs.begin(), spurs.end(), [](const auto &a, const auto &b) {
+            return a.first != b.first ? a.first < b.first : a.second.size() > b.second.size();
+        });
+        for (std::size_t i = 0; i < spurs.size();) {
+            std::size_t end = i;
+            while (end < spurs.size() && spurs[end].first == spurs[i].first)
+                ++end;
+            const bool all = int(end - i) >= graph.degree(spurs[i].first);
+            for (std::size_t k = all ? i + 1 : i; k < end; ++k) {
+                for (int n : spurs[k].second)
+                    graph.removeNode(n);
+            }
+            i = end;
+        }
+    }
+}
+
+bool isJunctionCluster(const DenseGraph &graph, const Branch &branch)
+{
+    const int a = branch.nodes.front(), z = branch.nodes.back();
+    return branch.length <
+           std::max(graph.clearance[std::size_t(a)], graph.clearance[std::size_t(z)]);
+}
+
+namespace {
+
+// limbJoints for nodes[0] the body end (a junction, or the thickest node of a branch between
+// two tips) and nodes.back() the tip: positions into `nodes`.
+std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nodes)
+{
+    const int m = int(nodes.size());
+    if (m < 3)
+        return {};
+    const std::vector<double> s = arcLengths(g, nodes);
+    const double length = s.back();
+    const double body = g.clearance[std::size_t(nodes.front())];
+    std::vector<double> outer;
+    for (int i = 1; i + 1 < m; ++i) {
+        if (s[std::size_t(i)] >= std::max(body, length / 3.0))
+            outer.push_back(g.clearance[std::size_t(nodes[std::size_t(i)])]);
+    }
+    const double limb =
+        outer.empty() ? g.clearance[std::size_t(nodes[std::size_t(m - 2)])] : median(outer);
+    std::vector<int> kept;
+    int base = 0;
+    if (limb < kNarrower * body) {
+        const double level = limb + kBaseDrop * (body - limb);
+        for (int i = 1; i + 1 < m; ++i) {
+            if (g.clearance[std::size_t(nodes[std::size_t(i)])] <= level ||
+                s[std::size_t(i)] >= body) {
+                base = i;
+                break;
+            }
+        }
+        // Not inside the junction's own disk centre, and with a limb left beyond it.
+        if (base > 0 &&
+            (s[std::size_t(base)] < 0.5 * body || length - s[std::size_t(base)] < 1.5 * limb))
+            base = 0;
+        if (base > 0)
+            kept.push_back(base);
+    }
+    const double limbLength = length - s[std::size_t(base)];
+    if (limb > 0.0 && limbLength > kLongLimb * limb) {
+        // The middle third of the limb: the sharpest bend if it bends, else the narrowest
+        // place if it narrows, else half way.
+        const double lo = s[std::size_t(base)] + limbLength / 3.0;
+        const double hi = s[std::size_t(base)] + 2.0 * limbLength / 3.0;
+        int bend = -1, narrow = -1, middle = -1;
+        double bendAngle = 0.0, narrowest = std::numeric_limits<double>::infinity();
+        for (int i = base + 1; i + 1 < m; ++i) {
+            const double si = s[std::size_t(i)];
+            if (si < lo || si > hi)
+                continue;
+            const double angle = bendAt(g, nodes, s, std::size_t(i), limb);
+            if (angle > bendAngle) {
+                bendAngle = angle;
+                bend = i;
+            }
+            const double c = g.clearance[std::size_t(nodes[std::size_t(i)])];
+            if (c < narrowest) {
+                narrowest = c;
+                narrow = i;
+            }
+            if (middle < 0 ||
+                std::abs(si - 0.5 * (lo + hi)) < std::abs(s[std::size_t(middle)] - 0.5 * (lo + hi)))
+                middle = i;
+        }
+        const int chosen = bendAngle > kPi / 12.0 ? bend : narrowest < 0.8 * limb ? narrow : middle;
+        if (chosen > 0)
+            kept.push_back(chosen);
+    }
+    return kept;
+}
+
+} // namespace
+
+std::vector<int> limbJoints(const DenseGraph &g, const Branch &branch)
+{
+    const std::vector<int> &nodes = branch.nodes;
+    const int m = int(nodes.size());
+    if (m < 3)
+        return {};
+    const int front = g.degree(nodes.front()), back = g.degree(nodes.back());
+    std::vector<int> kept;
+    if (front >= 3 && back == 1) {
+        kept = limbJointsFrom(g, nodes);
+    } else if (back >= 3 && front == 1) {
+        const std::vector<int> reversed(nodes.rbegin(), nodes.rend());
+        for (int k : limbJointsFrom(g, reversed))
+            kept.push_back(m - 1 - k);
+    } else if (front == 1 && back == 1) {
+        // Two tips: a body (the thickest node, clearly thicker than the branch typically is)
+        // at one end or in the middle; each side of it is a limb from it.
+        int thick = 0;
+        std::vector<double> widths;
+        for (int i = 0; i < m; ++i) {
+            widths.push_back(g.clearance[std::size_t(nodes[std::size_t(i)])]);
+            if (widths.back() > widths[std::size_t(thick)])
+                thick = i;
+        }
+        if (widths[std::size_t(thick)] < 1.25 * median(widths))
+            return {};
+        if (thick > 0 && thick < m - 1)
+            kept.push_back(thick);
+        const std::vector<int> ahead(nodes.begin() + thick, nodes.end());
+        for (int k : limbJointsFrom(g, ahead))
+            kept.push_back(thick + k);
+        const std::vector<int> behind(nodes.rend() - thick - 1, nodes.rend());
+        for (int k : limbJointsFrom(g, behind))
+            kept.push_back(thick - k);
+    }
+    std::sort(kept.begin(), kept.end());
+    return kept;
+}
+
+void trimTinyTips(DenseGraph &bones, const Contours &contours)
+{
+    for (int v = 0; v < bones.size(); ++v) {
+        if (!bones.alive[std::size_t(v)] || bones.degree(v) != 1)
+            continue;
+        const int inner = bones.adj[std::size_t(v)].front();
+        if (bones.degree(inner) != 2 ||
+            bones.length(v, inner) >= 0.5 * bones.clearance[std::size_t(inner)])
+            continue;
+        const int outer = bones.adj[std::size_t(inner)][0] == v ? bones.adj[std::size_t(inner)][1]
+                                                                : bones.adj[std::size_t(inner)][0];
+        if (!contours.segmentInside(bones.polygon[std::size_t(v)], bones.pos[std::size_t(outer)],
+                                    bones.pos[std::size_t(v)]))
+            continue;
+        bones.pos[std::size_t(inner)] = bones.pos[std::size_t(v)];
+        bones.radius[std::size_t(inner)] = bones.radius[std::size_t(v)];
+        bones.clearance[std::size_t(inner)] = bones.clearance[std::size_t(v)];
+        bones.removeNode(v);
+    }
+}
+
+int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, int polygon)
+{
+    // The largest disk; an inner joint nearly as thick (90 %) wins over a tip.
+    int best = -1, bestInner = -1;
+    for (int j = 0; j < graph.size(); ++j) {
+        if (polygon >= 0 && polygonOf[std::size_t(j)] != polygon)
+            continue;
+        if (best < 0 || graph.radius[std::size_t(j)] > graph.radius[std::size_t(best)])
+            best = j;
+        if (graph.adj[std::size_t(j)].size() >= 2 &&
+            (bestInner < 0 || graph.radius[std::size_t(j)] > graph.radius[std::size_t(bestInner)]))
+            bestInner = j;
+    }
+    if (bestInner >= 0 &&
+        graph.radius[std::size_t(bestInner)] >= 0.9 * graph.radius[std::size_t(best)])
+        return bestInner;
+    return best;
+}
+
+void subdivideLongEdges(DenseGraph &graph)
+{
+    const int n = graph.size();
+    for (int a = 0; a < n; ++a) {
+        const std::vector<int> neighbours = graph.adj[std::size_t(a)];
+        for (int b : neighbours) {
+            if (b < a || !graph.alive[std::size_t(a)])
+                continue;
+            const double width =
+                std::min(graph.clearance[std::size_t(a)], graph.clearance[std::size_t(b)]);
+            const double length = graph.length(a, b);
+            const int pieces = width > 0.0 ? int(std::min(64.0, std::floor(length / width))) : 1;
+            if (pieces < 2)
+                continue;
+            graph.removeEdge(a, b);
+            int previous = a;
+            for (int k = 1; k < pieces; ++k) {
+                const double t = double(k) / pieces;
+                auto lerp = [&](const std::vector<double> &v) {
+                    return (1.0 - t) * v[std::size_t(a)] + t * v[std::size_t(b)];
+                };
+                const int v = graph.addNode(
+                    (1.0 - t) * graph.pos[std::size_t(a)] + t * graph.pos[std::size_t(b)],
+                    lerp(graph.radius), lerp(graph.clearance), graph.polygon[std::size_t(a)]);
+                graph.addEdge(previous, v);
+                previous = v;
+            }
+            graph.addEdge(previous, b);
+        }
+    }
+}
+
+void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root)
+{
+    if (root < 0 || root >= graph.size())
+        return;
+    std::vector<char> attached(std::size_t(graph.size()), 0);
+    auto attachTree = [&](int from) {
+        std::vector<int> stack{from};
+        attached[std::size_t(from)] = 1;
+        while (!stack.empty()) {
+            const int v = stack.back();
+            stack.pop_back();
+            for (int n : graph.adj[std::size_t(v)]) {
+                if (!attached[std::size_t(n)]) {
+                    attached[std::size_t(n)] = 1;
+                    stack.push_back(n);
+                }
+            }
+        }
+    };
+    attachTree(root);
+    for (;;) {
+        // The free joint nearest to an attached bone (or lone attached joint).
+        double best = std::numeric_limits<double>::infinity(), bestT = 0.0;
+        int child = -1, from = -1, to = -1;
+        for (int c = 0; c < graph.size(); ++c) {
+            if (attached[std::size_t(c)])
+                continue;
+            const Eigen::Vector2d &p = graph.pos[std::size_t(c)];
+            for (int a = 0; a < graph.size(); ++a) {
+                if (!attached[std::size_t(a)])
+                    continue;
+                auto consider = [&](int b) {
+                    const Eigen::Vector2d &pa = graph.pos[std::size_t(a)];
+                    const Eigen::Vector2d &pb = graph.pos[std::size_t(b)];
+                    const double t = segmentPointT(p, pa, pb);
+                    const double d = (p - (pa + t * (pb - pa))).norm();
+                    if (d < best) {
+                        best = d;
+                        bestT = t;
+                        child = c;
+                        from = a;
+                        to = b;
+                    }
+                };
+                consider(a);
+                for (int b : graph.adj[std::size_t(a)]) {
+                    if (b > a)
+                        consider(b);
+                }
+            }
+        }
+        if (child < 0)
+            return;
+        attachTree(child);
+        int hang = bestT < 0.5 ? from : to;
+        const double length = (graph.pos[std::size_t(to)] - graph.pos[std::size_t(from)]).norm();
+        const double fromEnd = std::min(bestT, 1.0 - bestT) * length;
+        if (from != to && fromEnd > 0.5 * std::min(graph.radius[std::size_t(from)],
+                                                   graph.radius[std::size_t(to)])) {
+            // A bone split: a new joint where the piece's nearest point projects.
+            const Eigen::Vector2d at =
+                graph.pos[std::size_t(from)] +
+                bestT * (graph.pos[std::size_t(to)] - graph.pos[std::size_t(from)]);
+            const double r = (1.0 - bestT) * graph.radius[std::size_t(from)] +
+                             bestT * graph.radius[std::size_t(to)];
+            hang = graph.add(at, r, graph.part[std::size_t(from)]);
+            polygonOf.push_back(polygonOf[std::size_t(from)]);
+            attached.push_back(1);
+            graph.disconnect(from, to);
+            graph.connect(from, hang);
+            graph.connect(hang, to);
+        }
+        graph.connect(hang, child);
+    }
+}
+
+} // namespace finbook::geometry::detail

@@ -1,0 +1,348 @@
+// finbook-bench limbs [--before] [--png DIR] FILE...: every limb of the automatic skeleton
+// (a branch ending in a tip, tests/bench/limb_measures.h) turned at its base joint by +60°,
+// −60°, +100° and −100° in each skinning scheme, on the mesh the app builds (about 1,500
+// vertices). Per limb, scheme and angle one JSON line: outline self-crossings near the joint
+// (folds: both edges within 3 joint radii of the pivot at rest) and elsewhere (overlaps: the
+// limb passing over the body), flipped triangles, the area within 1.5 joint radii of the pivot (%
+// of rest), how far the rest of the body moved (max over vertices outside that disk whose nearest
+// bone is not the limb's, % of the shape's diagonal) and the solve time; then one summary line per
+// scheme and angle over all limbs of all files (clean: no fold and no flip). Schemes: rigid and lbs
+// (plain bone boundary conditions) and rigid_zones and lbs_zones (joint zones of
+// deform::kDefaultJointFree radii left to the solve). --before: the skeleton without the animator
+// rig (RefineOptions::animatorRig off).
+// --png DIR: one contact sheet of every ±60° pose per file, DIR/poses_*.png (flipped
+// triangles red, pivots as red dots), of the scheme --scheme NAME (default rigid_zones).
+#include "../deform/skin_test_support.h"
+#include "bench.h"
+#include "limb_measures.h"
+
+#include <finbook/deform/skeleton/linear_blend_skinning.h>
+#include <finbook/deform/skeleton/rigid_skinning.h>
+#include <finbook/deform/skeleton/skeleton.h>
+#include <finbook/deform/skeleton/skinning_weights.h>
+#include <finbook/geometry/object_mesh.h>
+#include <finbook/geometry/skeleton/skeleton_refine.h>
+
+#include <QDir>
+#include <QFileInfo>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QPainter>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace {
+
+using namespace finbook;
+using bench::Limb;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kDegrees[] = {60.0, -60.0, 100.0, -100.0};
+constexpr double kJointDisk = 1.5; // joint radii around the pivot
+constexpr int kCell = 320;         // px per pose on the contact sheet
+constexpr double kFoldDisk = 3.0;  // joint radii: outline crossings nearer than this are folds
+
+struct Scheme {
+    const char *name;
+    bool rigid;
+    double jointFree;
+};
+constexpr Scheme kSchemes[] = {{"rigid", true, 0.0},
+                               {"lbs", false, 0.0},
+                               {"rigid_zones", true, deform::kDefaultJointFree},
+                               {"lbs_zones", false, deform::kDefaultJointFree}};
+
+struct Sample {
+    int folds = 0, crossings = 0, flips = 0;
+    double jointArea = 100.0, bodyMoved = 0.0, ms = 0.0;
+};
+
+struct Skinned {
+    std::shared_ptr<const deform::SkinningWeights> weights;
+    deform::SkinBinding vertices;
+    std::shared_ptr<const deform::RigidSkinning> rigid;
+};
+
+std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::Skeleton &skeleton,
+                               const geometry::Skeleton &s, const Scheme &scheme)
+{
+    // The rigid scheme with zones is the app's: plain weights, zones in the pins only
+    // (deform::withJointZones); lbs_zones puts them in the weights' boundary.
+    deform::SkinningOptions options;
+    options.jointRadius = s.radius;
+    options.jointFree = scheme.rigid ? 0.0 : scheme.jointFree;
+    auto weights = deform::computeSkinningWeights(mesh.V, mesh.F, skeleton, options);
+    if (!weights)
+        return std::nullopt;
+    Skinned out{*weights, deform::bindVertices(**weights, mesh.V), nullptr};
+    if (scheme.rigid) {
+        const deform::SkinningWeights pins =
+            deform::withJointZones(**weights, mesh.V, skeleton, s.radius, scheme.jointFree);
+        auto rigid = deform::rigidSkinPrecompute(mesh.V, mesh.F, pins);
+        if (!rigid)
+            return std::nullopt;
+        out.rigid = *rigid;
+    }
+    return out;
+}
+
+// Vertices that belong to neither the limb nor the joint disk: their nearest bone is not one
+// of the limb's.
+std::vector<int> bodyVertices(const geometry::ObjectMesh &mesh, const geometry::Skeleton &s,
+                              const Limb &limb)
+{
+    std::vector<char> inLimb(std::size_t(s.jointCount()), 0);
+    for (int j : limb.joints)
+        inLimb[std::size_t(j)] = 1;
+    const Eigen::Vector2d pivot = s.joints.row(limb.base).transpose();
+    const double disk = kJointDisk * s.radius(limb.base);
+    std::vector<int> body;
+    for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
+        const Eigen::Vector2d p = mesh.V.row(v).transpose();
+        if ((p - pivot).norm() <= disk)
+            continue;
+        double best = INFINITY;
+        int owner = -1;
+        for (int j = 0; j < s.jointCount(); ++j) {
+            if (s.parent(j) < 0)
+                continue;
+            const Eigen::Vector2d a = s.joints.row(s.parent(j)).transpose();
+            const Eigen::Vector2d b = s.joints.row(j).transpose();
+            const Eigen::Vector2d ab = b - a;
+            const double t = ab.squaredNorm() > 0
+                                 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0)
+                                 : 0.0;
+            const double d = (p - a - t * ab).norm();
+            if (d < best) {
+                best = d;
+                owner = j;
+            }
+        }
+        if (owner < 0 || !inLimb[std::size_t(owner)])
+            body.push_back(int(v));
+    }
+    return body;
+}
+
+Sample measurePose(const geometry::ObjectMesh &mesh, const Eigen::MatrixX2d &U,
+                   const std::vector<std::pair<int, int>> &outline, const Eigen::Vector2d &pivot,
+                   double disk, const std::vector<int> &body, double diagonal)
+{
+    Sample out;
+    // A crossing of two outline edges that both start near the joint is a fold there; any
+    // other is the limb passing over the body (or another limb), which a turn may well do.
+    for (const auto &[e, f] : bench::outlineCrossings(U, outline)) {
+        const auto near = [&](int edge) {
+            return (mesh.V.row(outline[std::size_t(edge)].first).transpose() - pivot).norm() <=
+                   kFoldDisk / kJointDisk * disk;
+        };
+        ++(near(e) && near(f) ? out.folds : out.crossings);
+    }
+    double rest = 0.0, posed = 0.0;
+    for (Eigen::Index t = 0; t < mesh.F.rows(); ++t) {
+        const double r = bench::signedTriangleArea(mesh.V, mesh.F, t);
+        const double p = bench::signedTriangleArea(U, mesh.F, t);
+        out.flips += r * p <= 0.0 ? 1 : 0;
+        const Eigen::Vector2d c =
+            (mesh.V.row(mesh.F(t, 0)) + mesh.V.row(mesh.F(t, 1)) + mesh.V.row(mesh.F(t, 2)))
+                .transpose() /
+            3.0;
+        if ((c - pivot).norm() <= disk) {
+            rest += r;
+            posed += p;
+        }
+    }
+    out.jointArea = rest > 0.0 ? 100.0 * posed / rest : 100.0;
+    for (int v : body)
+        out.bodyMoved = std::max(out.bodyMoved, (U.row(v) - mesh.V.row(v)).norm());
+    out.bodyMoved *= 100.0 / diagonal;
+    return out;
+}
+
+struct Summary {
+    std::vector<double> folds, crossings, flips, jointArea, bodyMoved, ms;
+    int clean = 0; // poses with no fold and no flip
+};
+
+void drawPose(QPainter &painter, const geometry::ObjectMesh &mesh, const Eigen::MatrixX2d &U,
+              const Eigen::Vector2d &pivot, const QRectF &cell, const Eigen::RowVector2d &lo,
+              double scale)
+{
+    painter.save();
+    painter.translate(cell.topLeft());
+    painter.scale(scale, scale);
+    painter.translate(-lo.x(), -lo.y());
+    for (Eigen::Index t = 0; t < mesh.F.rows(); ++t) {
+        const bool flipped = bench::signedTriangleArea(mesh.V, mesh.F, t) *
+                                 bench::signedTriangleArea(U, mesh.F, t) <=
+                             0.0;
+        QPolygonF tri;
+        for (int k = 0; k < 3; ++k)
+            tri << QPointF(U(mesh.F(t, k), 0), U(mesh.F(t, k), 1));
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(flipped ? QColor(255, 40, 40) : QColor(150, 180, 230, 140));
+        painter.drawPolygon(tri);
+    }
+    painter.setPen(QPen(Qt::black, 1.0 / scale));
+    for (const auto &[a, b] : bench::boundaryEdges(mesh.F))
+        painter.drawLine(QPointF(U(a, 0), U(a, 1)), QPointF(U(b, 0), U(b, 1)));
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(Qt::red);
+    painter.drawEllipse(QPointF(pivot.x(), pivot.y()), 3.0 / scale, 3.0 / scale);
+    painter.restore();
+}
+
+int benchLimbs(const QStringList &arguments)
+{
+    QStringList args = arguments;
+    bool before = false;
+    QString pngDir;
+    int pngScheme = 2;
+    while (!args.isEmpty() && args.front().startsWith(QStringLiteral("--"))) {
+        if (args.front() == QStringLiteral("--before")) {
+            before = true;
+            args.removeFirst();
+        } else if (args.front() == QStringLiteral("--scheme") && args.size() >= 2) {
+            for (int k = 0; k < int(std::size(kSchemes)); ++k)
+                pngScheme = args[1] == QLatin1String(kSchemes[k].name) ? k : pngScheme;
+            args = args.mid(2);
+        } else if (args.front() == QStringLiteral("--png") && args.size() >= 2) {
+            pngDir = args[1];
+            args = args.mid(2);
+            QDir().mkpath(pngDir);
+        } else {
+            break;
+        }
+    }
+    if (args.isEmpty()) {
+        std::fprintf(stderr, "usage: finbook-bench limbs [--before] [--png DIR] FILE...\n");
+        return 2;
+    }
+    std::map<std::pair<int, int>, Summary> summary; // (scheme, angle index)
+    int limbCount = 0, failures = 0;
+    for (const QString &path : args) {
+        const QString name = QFileInfo(path).baseName();
+        const auto mesh = test::meshDataFile(path);
+        geometry::RefineOptions refine;
+        refine.animatorRig = !before;
+        std::optional<geometry::Skeleton> s;
+        std::optional<deform::Skeleton> skeleton;
+        if (mesh) {
+            auto built = geometry::skeletonize(mesh->region, {}, refine);
+            if (built && built->jointCount() > 0)
+                s = std::move(*built);
+        }
+        if (s) {
+            auto made = deform::makeSkeleton(s->joints, s->parent);
+            if (made)
+                skeleton = std::move(*made);
+        }
+        if (!skeleton) {
+            ++failures;
+            std::printf("{\"file\":\"%s\",\"error\":\"no mesh or skeleton\"}\n", qPrintable(name));
+            continue;
+        }
+        const Eigen::RowVector2d lo = mesh->V.colwise().minCoeff(),
+                                 hi = mesh->V.colwise().maxCoeff();
+        const double diagonal = (hi - lo).norm();
+        const auto outline = bench::boundaryEdges(mesh->F);
+        const std::vector<Limb> limbs = bench::findLimbs(*s);
+        limbCount += int(limbs.size());
+        const double scale = (kCell - 10) / std::max(1.0, (hi - lo).maxCoeff() * 1.6);
+        QImage sheet(std::max<int>(1, int(limbs.size())) * kCell, 2 * kCell, QImage::Format_RGB32);
+        sheet.fill(Qt::white);
+        QPainter painter(&sheet);
+        painter.setRenderHint(QPainter::Antialiasing);
+        for (int k = 0; k < int(std::size(kSchemes)); ++k) {
+            const Scheme &scheme = kSchemes[k];
+            const auto skinned = skinFor(*mesh, *skeleton, *s, scheme);
+            if (!skinned) {
+                ++failures;
+                continue;
+            }
+            for (std::size_t l = 0; l < limbs.size(); ++l) {
+                const Limb &limb = limbs[l];
+                const std::vector<int> body = bodyVertices(*mesh, *s, limb);
+                const Eigen::Vector2d pivot = s->joints.row(limb.base).transpose();
+                for (int a = 0; a < int(std::size(kDegrees)); ++a) {
+                    deform::SkeletonPose pose = deform::restPose(*skeleton);
+                    pose.angles(limb.first) = kDegrees[a] * M_PI / 180.0;
+                    const auto start = Clock::now();
+                    const auto posed = deform::forwardKinematics(*skeleton, pose);
+                    Eigen::MatrixX2d U = mesh->V;
+                    if (scheme.rigid)
+                        (void)deform::rigidSkinSolve(*skinned->rigid, *posed, U);
+                    else
+                        deform::skin(skinned->vertices, *posed, U);
+                    const double ms =
+                        std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+                    Sample m = measurePose(*mesh, U, outline, pivot,
+                                           kJointDisk * s->radius(limb.base), body, diagonal);
+                    m.ms = ms;
+                    Summary &sum = summary[{k, a}];
+                    sum.folds.push_back(m.folds);
+                    sum.crossings.push_back(m.crossings);
+                    sum.flips.push_back(m.flips);
+                    sum.jointArea.push_back(m.jointArea);
+                    sum.bodyMoved.push_back(m.bodyMoved);
+                    sum.ms.push_back(ms);
+                    sum.clean += m.folds == 0 && m.flips == 0 ? 1 : 0;
+                    std::printf("{\"file\":\"%s\",\"limb\":%d,\"tip\":%d,\"base\":%d,"
+                                "\"scheme\":\"%s\",\"degrees\":%g,\"folds\":%d,\"overlaps\":%d,"
+                                "\"flips\":%d,"
+                                "\"joint_area_pct\":%.1f,\"body_moved_pct\":%.2f,\"ms\":%.2f}\n",
+                                qPrintable(name), int(l), limb.tip, limb.base, scheme.name,
+                                kDegrees[a], m.folds, m.crossings, m.flips, m.jointArea,
+                                m.bodyMoved, ms);
+                    if (!pngDir.isEmpty() && k == pngScheme && a < 2)
+                        drawPose(
+                            painter, *mesh, U, pivot,
+                            QRectF(double(l) * kCell + 5, a * kCell + 5, kCell - 10, kCell - 10),
+                            lo - 0.3 * (hi - lo), scale);
+                }
+            }
+        }
+        painter.end();
+        if (!pngDir.isEmpty() && !limbs.empty())
+            sheet.save(QDir(pngDir).filePath(QStringLiteral("poses_%1.png").arg(name)));
+        std::fflush(stdout);
+    }
+    using bench::median;
+    using bench::percentile;
+    for (const auto &[key, sum] : summary) {
+        const int n = int(sum.flips.size());
+        std::printf(
+            "{\"summary\":true,\"scheme\":\"%s\",\"degrees\":%g,\"limbs\":%d,"
+            "\"clean_pct\":%.1f,\"no_overlap_pct\":%.1f,\"median_flips\":%g,"
+            "\"median_folds\":%g,\"median_overlaps\":%g,"
+            "\"joint_area_pct_p5\":%.1f,\"joint_area_pct_median\":%.1f,"
+            "\"joint_area_pct_p95\":%.1f,\"body_moved_pct_median\":%.2f,"
+            "\"body_moved_pct_p95\":%.2f,\"body_moved_le1_pct\":%.1f,\"median_ms\":%.2f}\n",
+            kSchemes[key.first].name, kDegrees[key.second], n, n ? 100.0 * sum.clean / n : 0.0,
+            n ? 100.0 * double(std::count(sum.crossings.begin(), sum.crossings.end(), 0.0)) / n
+              : 0.0,
+            median(sum.flips), median(sum.folds), median(sum.crossings),
+            percentile(sum.jointArea, 0.05), median(sum.jointArea), percentile(sum.jointArea, 0.95),
+            median(sum.bodyMoved), percentile(sum.bodyMoved, 0.95),
+            n ? 100.0 *
+                    double(std::count_if(sum.bodyMoved.begin(), sum.bodyMoved.end(),
+                                         [](double d) { return d <= 1.0; })) /
+                    n
+              : 0.0,
+            median(sum.ms));
+    }
+    std::printf("{\"summary\":true,\"files\":%d,\"limbs\":%d,\"failures\":%d}\n", int(args.size()),
+                limbCount, failures);
+    return failures == 0 ? 0 : 1;
+}
+
+} // namespace
+
+FINBOOK_BENCH(
+    "limbs",
+    "[--before] [--png DIR] [--scheme NAME] FILE... (every limb turned ±60°/±100° at its base)",
+    benchLimbs);

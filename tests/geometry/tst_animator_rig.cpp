@@ -1,0 +1,232 @@
+// The automatic skeleton as a rig an animator accepts as it comes (issue 21): clean-up by
+// default, joints where limbs leave the body and bend, the root at the thickest part, loose
+// pieces joined. Each test compares with RealSkel's refinement alone (animatorRig off), so it
+// fails if the rig's step it checks does nothing.
+#include "skeleton_test_support.h"
+
+#include <finbook/geometry/silhouette.h>
+#include <finbook/geometry/skeleton/skeleton_connect.h>
+#include <finbook/geometry/skeleton/skeleton_refine.h>
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace finbook::geometry;
+using namespace finbook::test;
+
+namespace {
+
+Region shapeOf(const std::vector<StrokeInput> &strokes)
+{
+    const auto region = silhouette(strokes);
+    if (!region)
+        qFatal("silhouette failed: %s", region.error().message.c_str());
+    return *region;
+}
+
+Skeleton rigOf(const Region &region, bool animator = true)
+{
+    RefineOptions options;
+    options.animatorRig = animator;
+    const auto s = skeletonize(region, {}, options);
+    if (!s)
+        qFatal("skeletonize failed: %s", s.error().message.c_str());
+    return *s;
+}
+
+int kindCount(const Skeleton &s, JointKind kind)
+{
+    const std::vector<JointKind> kinds = jointKinds(s);
+    return int(std::count(kinds.begin(), kinds.end(), kind));
+}
+
+// Joints from a tip up to (not including) the first junction or root: the limb's chain.
+std::vector<int> limbChain(const Skeleton &s, int tip)
+{
+    const Eigen::VectorXi degree = jointDegrees(s);
+    std::vector<int> chain{tip};
+    while (s.parent(chain.back()) >= 0 && degree(s.parent(chain.back())) == 2)
+        chain.push_back(s.parent(chain.back()));
+    return chain;
+}
+
+int tipNearest(const Skeleton &s, const Eigen::RowVector2d &p)
+{
+    const Eigen::VectorXi degree = jointDegrees(s);
+    int best = -1;
+    for (int j = 0; j < s.jointCount(); ++j) {
+        if (degree(j) == 1 &&
+            (best < 0 || (s.joints.row(j) - p).norm() < (s.joints.row(best) - p).norm()))
+            best = j;
+    }
+    return best;
+}
+
+// A body (a disk of radius 80) with three arms 24 px wide reaching 260 px from its centre.
+Region threeArmedBody()
+{
+    std::vector<StrokeInput> strokes{{rows({{0, 0}}), 156.0}};
+    for (int k = 0; k < 3; ++k) {
+        const double a = 2.0 * M_PI * k / 3 + 0.3;
+        strokes.push_back({rows({{0, 0}, {250 * std::cos(a), 250 * std::sin(a)}}), 20.0});
+    }
+    return shapeOf(strokes);
+}
+
+} // namespace
+
+class TestAnimatorRig : public QObject {
+    Q_OBJECT
+private slots:
+    void drawnRectangleHasOneBone();
+    void plusSignHasFourLimbsFromOneJunction();
+    void limbBaseJointSitsWhereWidthDrops();
+    void rootIsAtThickestPart();
+    void bentArmGetsAnElbow();
+    void longStraightArmGetsAMiddleJoint();
+    void loosePiecesHangFromNearestBone();
+    void crossOfTwoObjectsJoins();
+};
+
+void TestAnimatorRig::drawnRectangleHasOneBone()
+{
+    // A rectangle drawn as one closed stroke with a 4 px pen, corners a little rounded and
+    // uneven as a hand makes them: the silhouette fills it, its corners leave spurs.
+    const Region shape = shapeOf({{rows({{0, 2},
+                                         {3, 0},
+                                         {150, -1},
+                                         {204, 1},
+                                         {206, 5},
+                                         {205, 60},
+                                         {201, 64},
+                                         {90, 62},
+                                         {2, 63},
+                                         {-1, 58},
+                                         {0, 2}}),
+                                   4.0}});
+    const Skeleton s = rigOf(shape);
+    QVERIFY(isValidSkeleton(s));
+    QCOMPARE(boneCount(s), 1);
+    QVERIFY(bonesInside(s, shape) >= 0.99);
+    // Without the clean-up the corner spurs stay.
+    QVERIFY(boneCount(rigOf(shape, false)) > 1);
+}
+
+void TestAnimatorRig::plusSignHasFourLimbsFromOneJunction()
+{
+    const Region shape = regionOf(plusSign(40, 120));
+    const Skeleton s = rigOf(shape);
+    QVERIFY(isValidSkeleton(s));
+    QCOMPARE(kindCount(s, JointKind::Junction), 1);
+    QCOMPARE(kindCount(s, JointKind::Terminal), 4);
+    const Eigen::VectorXi degree = jointDegrees(s);
+    int junction = -1;
+    for (int j = 0; j < s.jointCount(); ++j)
+        junction = degree(j) >= 3 ? j : junction;
+    QVERIFY(s.joints.row(junction).norm() < 2.0);
+    QCOMPARE(s.root, junction); // the thickest place
+    for (int j = 0; j < s.jointCount(); ++j) {
+        if (degree(j) != 1)
+            continue;
+        const std::vector<int> chain = limbChain(s, j);
+        QCOMPARE(s.parent(chain.back()), junction);
+    }
+}
+
+void TestAnimatorRig::limbBaseJointSitsWhereWidthDrops()
+{
+    const Region shape = threeArmedBody();
+    const Skeleton s = rigOf(shape), plain = rigOf(shape, false);
+    QVERIFY(bonesInside(s, shape) >= 0.99);
+    QCOMPARE(kindCount(s, JointKind::Terminal), 3);
+    for (int k = 0; k < 3; ++k) {
+        const double a = 2.0 * M_PI * k / 3 + 0.3;
+        const Eigen::RowVector2d tipAt(260 * std::cos(a), 260 * std::sin(a));
+        const int tip = tipNearest(s, tipAt);
+        const std::vector<int> chain = limbChain(s, tip);
+        // The joint nearest the junction on the limb is its base: where the arm (radius 12)
+        // leaves the body (radius 80), not at the body's centre.
+        const double base = s.joints.row(chain.back()).norm();
+        QVERIFY2(base > 60.0 && base < 110.0, qPrintable(QString::number(base)));
+        QVERIFY(s.radius(chain.back()) < 0.5 * s.radius(s.parent(chain.back())));
+        // RealSkel alone turns the arm about the centre: one bone from there.
+        const std::vector<int> plainChain = limbChain(plain, tipNearest(plain, tipAt));
+        QVERIFY(plain.joints.row(plainChain.back()).norm() < 60.0 ||
+                plain.joints.row(plainChain.back()).norm() > 110.0);
+    }
+}
+
+void TestAnimatorRig::rootIsAtThickestPart()
+{
+    // A long bent tail on a small body: the centre of mass lies out by the tail's bend, the
+    // thickest part is the body.
+    const Region shape =
+        shapeOf({{rows({{0, 0}}), 100.0}, {rows({{0, 0}, {400, 0}, {400, -400}}), 40.0}});
+    const Skeleton s = rigOf(shape);
+    QCOMPARE(s.radius(s.root), s.radius.maxCoeff());
+    QVERIFY(s.joints.row(s.root).norm() < 40.0);
+    const Skeleton plain = rigOf(shape, false);
+    QVERIFY(plain.joints.row(plain.root).norm() > 100.0);
+}
+
+void TestAnimatorRig::bentArmGetsAnElbow()
+{
+    // An L-shaped arm (upper arm right, forearm down) on a body.
+    const Region shape =
+        shapeOf({{rows({{0, 0}}), 150.0}, {rows({{0, 0}, {230, 0}, {230, 200}}), 28.0}});
+    const Skeleton s = rigOf(shape);
+    QVERIFY(bonesInside(s, shape) >= 0.99);
+    const std::vector<int> chain = limbChain(s, tipNearest(s, {230, 214}));
+    QVERIFY(chain.size() >= 3); // tip, elbow, base
+    bool elbow = false;
+    for (int j : chain)
+        elbow = elbow || (s.joints.row(j) - Eigen::RowVector2d(230, 0)).norm() < 30.0;
+    QVERIFY(elbow);
+}
+
+void TestAnimatorRig::longStraightArmGetsAMiddleJoint()
+{
+    const Region shape = shapeOf({{rows({{0, 0}}), 150.0}, {rows({{0, 0}, {400, 0}}), 24.0}});
+    const Skeleton s = rigOf(shape);
+    const std::vector<int> chain = limbChain(s, tipNearest(s, {412, 0}));
+    // Tip, a middle joint, the base where the arm leaves the body.
+    QVERIFY2(chain.size() >= 3, qPrintable(QString::number(chain.size())));
+    bool middle = false;
+    for (std::size_t k = 1; k + 1 < chain.size(); ++k)
+        middle = middle || (s.joints(chain[k], 0) > 170.0 && s.joints(chain[k], 0) < 330.0);
+    QVERIFY(middle);
+    const std::vector<int> plainChain =
+        limbChain(rigOf(shape, false), tipNearest(rigOf(shape, false), {412, 0}));
+    QCOMPARE(int(plainChain.size()), 1);
+}
+
+void TestAnimatorRig::loosePiecesHangFromNearestBone()
+{
+    // A body with a head drawn apart from it (20 px gap): one object, two polygons.
+    const Region shape = shapeOf({{rows({{0, 0}, {0, 200}}), 60.0}, {rows({{0, -80}}), 50.0}});
+    QCOMPARE(int(shape.size()), 2);
+    const Skeleton s = rigOf(shape);
+    QVERIFY(isValidSkeleton(s));
+    QCOMPARE(int((s.parent.array() < 0).count()), 1); // one tree
+    const Skeleton plain = rigOf(shape, false);
+    QCOMPARE(int((plain.parent.array() < 0).count()), 2);
+}
+
+void TestAnimatorRig::crossOfTwoObjectsJoins()
+{
+    // Two bars drawn as separate objects, crossing as an X.
+    const std::vector<Skeleton> parts{rigOf(regionOf(bar(300, 30, M_PI / 4))),
+                                      rigOf(regionOf(bar(300, 30, -M_PI / 4)))};
+    const std::vector<PartJoin> joins = findJoins(parts, 0);
+    QCOMPARE(int(joins.size()), 1);
+    const auto character = assembleCharacter(parts, joins, 0);
+    QVERIFY(character.hasValue());
+    QCOMPARE(int((character->skeleton.parent.array() < 0).count()), 1);
+    QCOMPARE(character->joins.front().kind, JoinKind::BoneSplit);
+    const int joint = character->joins.front().joint;
+    QVERIFY(character->skeleton.joints.row(joint).norm() < 10.0); // where they cross
+}
+
+QTEST_APPLESS_MAIN(TestAnimatorRig)
+#include "tst_animator_rig.moc"
