@@ -1,0 +1,115 @@
+// The root at the thickest part and separate pieces of one object joined (issue 21).
+#include "animator_rig.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace finbook::geometry::detail {
+namespace {
+
+double segmentPointT(const Eigen::Vector2d &p, const Eigen::Vector2d &a, const Eigen::Vector2d &b)
+{
+    const Eigen::Vector2d ab = b - a;
+    const double l2 = ab.squaredNorm();
+    return l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+}
+
+} // namespace
+
+int thickestJoint(const JointGraph &graph, const std::vector<int> &polygonOf, int polygon)
+{
+    // The largest disk; an inner joint nearly as thick (90 %) wins over a tip.
+    int best = -1, bestInner = -1;
+    for (int j = 0; j < graph.size(); ++j) {
+        if (polygon >= 0 && polygonOf[std::size_t(j)] != polygon)
+            continue;
+        if (best < 0 || graph.radius[std::size_t(j)] > graph.radius[std::size_t(best)])
+            best = j;
+        if (graph.adj[std::size_t(j)].size() >= 2 &&
+            (bestInner < 0 || graph.radius[std::size_t(j)] > graph.radius[std::size_t(bestInner)]))
+            bestInner = j;
+    }
+    if (bestInner >= 0 &&
+        graph.radius[std::size_t(bestInner)] >= 0.9 * graph.radius[std::size_t(best)])
+        return bestInner;
+    return best;
+}
+
+void joinPieces(JointGraph &graph, std::vector<int> &polygonOf, int root)
+{
+    if (root < 0 || root >= graph.size())
+        return;
+    std::vector<char> attached(std::size_t(graph.size()), 0);
+    auto attachTree = [&](int from) {
+        std::vector<int> stack{from};
+        attached[std::size_t(from)] = 1;
+        while (!stack.empty()) {
+            const int v = stack.back();
+            stack.pop_back();
+            for (int n : graph.adj[std::size_t(v)]) {
+                if (!attached[std::size_t(n)]) {
+                    attached[std::size_t(n)] = 1;
+                    stack.push_back(n);
+                }
+            }
+        }
+    };
+    attachTree(root);
+    for (;;) {
+        // The free joint nearest to an attached bone (or lone attached joint).
+        double best = std::numeric_limits<double>::infinity(), bestT = 0.0;
+        int child = -1, from = -1, to = -1;
+        for (int c = 0; c < graph.size(); ++c) {
+            if (attached[std::size_t(c)])
+                continue;
+            const Eigen::Vector2d &p = graph.pos[std::size_t(c)];
+            for (int a = 0; a < graph.size(); ++a) {
+                if (!attached[std::size_t(a)])
+                    continue;
+                auto consider = [&](int b) {
+                    const Eigen::Vector2d &pa = graph.pos[std::size_t(a)];
+                    const Eigen::Vector2d &pb = graph.pos[std::size_t(b)];
+                    const double t = segmentPointT(p, pa, pb);
+                    const double d = (p - (pa + t * (pb - pa))).norm();
+                    if (d < best) {
+                        best = d;
+                        bestT = t;
+                        child = c;
+                        from = a;
+                        to = b;
+                    }
+                };
+                consider(a);
+                for (int b : graph.adj[std::size_t(a)]) {
+                    if (b > a)
+                        consider(b);
+                }
+            }
+        }
+        if (child < 0)
+            return;
+        attachTree(child);
+        int hang = bestT < 0.5 ? from : to;
+        const double length = (graph.pos[std::size_t(to)] - graph.pos[std::size_t(from)]).norm();
+        const double fromEnd = std::min(bestT, 1.0 - bestT) * length;
+        if (from != to && fromEnd > 0.5 * std::min(graph.radius[std::size_t(from)],
+                                                   graph.radius[std::size_t(to)])) {
+            // A bone split: a new joint where the piece's nearest point projects.
+            const Eigen::Vector2d at =
+                graph.pos[std::size_t(from)] +
+                bestT * (graph.pos[std::size_t(to)] - graph.pos[std::size_t(from)]);
+            const double r = (1.0 - bestT) * graph.radius[std::size_t(from)] +
+                             bestT * graph.radius[std::size_t(to)];
+            hang = graph.add(at, r, graph.part[std::size_t(from)]);
+            polygonOf.push_back(polygonOf[std::size_t(from)]);
+            attached.push_back(1);
+            graph.disconnect(from, to);
+            graph.connect(from, hang);
+            graph.connect(hang, to);
+        }
+        graph.connect(hang, child);
+    }
+}
+
+} // namespace finbook::geometry::detail
