@@ -142,7 +142,7 @@ void TestRegions::gapJustOverThresholdStaysOpen()
 
 void TestRegions::automaticGapClosesSmallOpening()
 {
-    // 4 % of a 100 px drawing's diagonal (141 px) is 5.7 px, at least 4 pen widths: 12 px.
+    // 6 % of a 100 px drawing's diagonal (141 px) is 8.5 px, at least 4 pen widths: 12 px.
     const std::vector<StrokeInput> strokes{cShape(50, 11.0)};
     QVERIFY(std::abs(autoCloseGap(strokes) - 12.0) < 1e-9);
     const Regions r = regionsOf(strokes);

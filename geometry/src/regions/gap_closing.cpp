@@ -18,6 +18,18 @@ constexpr double kContactSlack = 0.05;
 // Passes of accept-and-reconnect (each may connect parts that let further closures close).
 constexpr int kMaxPasses = 8;
 
+// A link ending on a stroke's interior runs this far past it: the rounded point on the
+// segment misses it in exact arithmetic, the overshoot crosses it (a dangling tip that no face
+// keeps).
+constexpr double kOvershoot = 0.01;
+
+LabelledSegment linkTo(const Eigen::Vector2d &from, const Eigen::Vector2d &to, int label)
+{
+    const Eigen::Vector2d d = to - from;
+    const double len = d.norm();
+    return {from, len > 0.0 ? Eigen::Vector2d(to + kOvershoot / len * d) : to, label};
+}
+
 struct End {
     int stroke = -1, end = 0;
     Eigen::Vector2d point, direction;
@@ -29,6 +41,7 @@ struct Candidate {
     int toEnd = -1; // free end index, or -1 for a point on a stroke
     int toStroke = -1;
     Eigen::Vector2d to;
+    bool exact = false; // `to` is a vertex of the drawing
     double score = 0.0;
 };
 
@@ -72,7 +85,7 @@ std::vector<End> findEnds(const StrokeSoup &soup, std::vector<LabelledSegment> &
             const double w = soup.strokes()[std::size_t(s)].width;
             NearestPoint touch;
             for (int j = 0; j < n; ++j) {
-                if (soup.strokes()[std::size_t(j)].segmentCount == 0)
+                if (!soup.within(j, e.point, touchTolerance(soup, s, j)))
                     continue;
                 const NearestPoint near =
                     soup.nearestOnStroke(j, e.point, s, e.arc, kLoopArcFactor, 2.0 * w + 0.5);
@@ -83,7 +96,9 @@ std::vector<End> findEnds(const StrokeSoup &soup, std::vector<LabelledSegment> &
             if (touch.distance < 0.0) {
                 free.push_back(e);
             } else if (touch.distance > 0.0) {
-                snaps.push_back({e.point, touch.point, -1 - int(snaps.size())});
+                const int label = -1 - int(snaps.size());
+                snaps.push_back(touch.onVertex ? LabelledSegment{e.point, touch.point, label}
+                                               : linkTo(e.point, touch.point, label));
                 snapStrokes.emplace_back(s, touch.stroke);
             }
         }
@@ -112,11 +127,11 @@ std::vector<Candidate> candidates(const StrokeSoup &soup, const std::vector<End>
             if (toEnd >= 0)
                 turn = 0.5 *
                        (turn + turnCost(ends[std::size_t(toEnd)].direction, e.point - near.point));
-            out.push_back(
-                {i, toEnd, near.stroke, near.point, near.distance / gap + kTurnWeight * turn});
+            out.push_back({i, toEnd, near.stroke, near.point, toEnd >= 0 || near.onVertex,
+                           near.distance / gap + kTurnWeight * turn});
         };
         for (int j = 0; j < int(soup.strokes().size()); ++j)
-            if (soup.strokes()[std::size_t(j)].segmentCount > 0)
+            if (soup.within(j, e.point, gap))
                 add(soup.nearestOnStroke(j, e.point, e.stroke, e.arc, kLoopArcFactor,
                                          2.0 * w + 0.5),
                     -1);
@@ -126,7 +141,7 @@ std::vector<Candidate> candidates(const StrokeSoup &soup, const std::vector<End>
             if (k == i || (o.stroke == e.stroke && soup.strokes()[std::size_t(e.stroke)].length <
                                                        kLoopArcFactor * (o.point - e.point).norm()))
                 continue;
-            NearestPoint near{o.point, (o.point - e.point).norm(), o.stroke};
+            NearestPoint near{o.point, (o.point - e.point).norm(), o.stroke, true};
             add(near, k);
         }
     }
@@ -172,7 +187,7 @@ public:
         m_used[std::size_t(c.from)] = true;
         if (c.toEnd >= 0)
             m_used[std::size_t(c.toEnd)] = true;
-        m_map.insert({e.point, c.to, -1});
+        m_map.insert(c.exact ? LabelledSegment{e.point, c.to, -1} : linkTo(e.point, c.to, -1));
         m_parts.join(e.stroke, c.toStroke);
         closures.push_back({e.point, c.to, e.stroke, c.toStroke});
     }

@@ -12,13 +12,29 @@ Eigen::Vector2d closestOnSegment(const Eigen::Vector2d &p, const Eigen::Vector2d
 {
     const Eigen::Vector2d ab = b - a;
     const double len2 = ab.squaredNorm();
-    double s = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    const double s = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
     if (t)
         *t = s;
-    return a + s * ab;
+    // The end points exactly, so that a link to a stroke's vertex meets it in exact arithmetic.
+    return s <= 0.0 ? a : s >= 1.0 ? b : Eigen::Vector2d(a + s * ab);
 }
 
 namespace {
+
+constexpr double kVertexSnap = 1e-6; // px
+
+void setPoint(NearestPoint &near, const Eigen::Vector2d &x, const SoupSegment &seg)
+{
+    near.onVertex = true;
+    if ((x - seg.a).norm() <= kVertexSnap)
+        near.point = seg.a;
+    else if ((x - seg.b).norm() <= kVertexSnap)
+        near.point = seg.b;
+    else {
+        near.point = x;
+        near.onVertex = false;
+    }
+}
 
 double cross(const Eigen::Vector2d &u, const Eigen::Vector2d &v)
 {
@@ -69,9 +85,20 @@ StrokeSoup::StrokeSoup(const std::vector<StrokeInput> &strokes, double simplifyF
             arc += (b - a).norm();
         }
         stroke.length = arc;
+        if (stroke.points.rows() > 0) {
+            stroke.lo = stroke.points.colwise().minCoeff().transpose();
+            stroke.hi = stroke.points.colwise().maxCoeff().transpose();
+        }
         stroke.segmentCount = int(m_segments.size()) - stroke.firstSegment;
         m_strokes.push_back(std::move(stroke));
     }
+}
+
+bool StrokeSoup::within(int s, const Eigen::Vector2d &p, double r) const
+{
+    const SoupStroke &stroke = m_strokes[std::size_t(s)];
+    return stroke.segmentCount > 0 && p.x() >= stroke.lo.x() - r && p.x() <= stroke.hi.x() + r &&
+           p.y() >= stroke.lo.y() - r && p.y() <= stroke.hi.y() + r;
 }
 
 Eigen::Vector2d StrokeSoup::endPoint(int stroke, int end) const
@@ -128,7 +155,7 @@ NearestPoint StrokeSoup::nearestOnStroke(int s, const Eigen::Vector2d &p, int ow
                     const double ax = seg.arcA + tt * len;
                     if (std::abs(ax - ownArc) >= arcFactor * dx + arcExtra &&
                         (best.distance < 0.0 || dx < best.distance)) {
-                        best.point = x;
+                        setPoint(best, x, seg);
                         best.distance = dx;
                         found = true;
                     }
@@ -136,7 +163,7 @@ NearestPoint StrokeSoup::nearestOnStroke(int s, const Eigen::Vector2d &p, int ow
                 continue;
             }
         }
-        best.point = c;
+        setPoint(best, c, seg);
         best.distance = d;
     }
     return best;
@@ -150,6 +177,8 @@ NearestPoint StrokeSoup::castRay(const Eigen::Vector2d &p, const Eigen::Vector2d
         return best;
     const Eigen::Vector2d q = p + maxT * dir;
     for (const SoupSegment &seg : m_segments) {
+        if (!within(seg.stroke, p, maxT))
+            continue;
         const Eigen::Vector2d r = q - p, s = seg.b - seg.a;
         const double denom = cross(r, s);
         if (std::abs(denom) < 1e-12)
@@ -163,7 +192,7 @@ NearestPoint StrokeSoup::castRay(const Eigen::Vector2d &p, const Eigen::Vector2d
         if (seg.stroke == ownStroke &&
             std::abs(seg.arcA + u * s.norm() - ownArc) < arcExcluded + 2.0 * d)
             continue;
-        best.point = p + t * r;
+        setPoint(best, p + t * r, seg);
         best.distance = d;
         best.stroke = seg.stroke;
     }

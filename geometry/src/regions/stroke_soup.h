@@ -21,12 +21,16 @@ struct SoupStroke {
     double width = 0.0;
     double length = 0.0;
     int firstSegment = 0, segmentCount = 0;
+    Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero(); // bounding box
 };
 
 struct NearestPoint {
     Eigen::Vector2d point = Eigen::Vector2d::Zero();
     double distance = -1.0; // < 0: none found
     int stroke = -1;
+    // The point is exactly a vertex of the stroke (points within 1e-6 px of one are moved
+    // onto it), so a link ending there meets the stroke in exact arithmetic.
+    bool onVertex = false;
 };
 
 class StrokeSoup {
@@ -42,6 +46,9 @@ public:
     Eigen::Vector2d endDirection(int stroke, int end) const;
     // Arc length of the end along its stroke (0 or the stroke's length).
     double endArc(int stroke, int end) const;
+
+    // Whether stroke s has segments and comes within r of p (its bounding box does).
+    bool within(int s, const Eigen::Vector2d &p, double r) const;
 
     // Nearest point of stroke `s` to p. For the stroke the end belongs to (ownStroke == s),
     // points whose arc-length distance from ownArc is below arcFactor·d + arcExtra are

@@ -51,7 +51,7 @@ struct Regions {
     double closeGap = 0.0; // the gap actually used (px)
 };
 
-// The automatic close-gap distance: 4 % of the drawing's bounding-box diagonal, at least four
+// The automatic close-gap distance: 6 % of the drawing's bounding-box diagonal, at least four
 // and at most forty pen widths (median width of the strokes). 0 for no finite points.
 double autoCloseGap(const std::vector<StrokeInput> &strokes);
 
