@@ -1,6 +1,6 @@
 #include <finbook/deform/skeleton/inverse_kinematics.h>
-#include <finbook/geometry/region.h>
 #include <finbook/geometry/object_shape.h>
+#include <finbook/geometry/region.h>
 #include <finbook/model/render.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
