@@ -1,17 +1,22 @@
 // finbook-bench skeleton [--png DIR] FILE...: the automatic skeleton of each drawing (Quick,
-// Draw! "strokes", through the silhouette) or shape ("contours", as given), in the formats of
-// shared/data/README.md. One JSON object per file per line: the time of the whole pipeline
-// from the silhouette (raw straight skeleton + default refinement; median of 9 runs, wall
-// clock as skeleton_ms and this thread's CPU time as skeleton_cpu_ms), its size, and how much
-// of the bones' length lies inside the shape (sampled every 0.25 px). --png writes a picture
+// Draw! "strokes", through the object's shape: closed regions and ink) or shape ("contours", as
+// given), in the formats of shared/data/README.md. One JSON object per file per line: the time of
+// the whole pipeline from the silhouette (raw straight skeleton + default refinement; median of 9
+// runs, wall clock as skeleton_ms and this thread's CPU time as skeleton_cpu_ms), its size, and how
+// much of the bones' length lies inside the shape (sampled every 0.25 px). --png writes a picture
 // of each result to DIR: shape grey, simplified outline blue, raw skeleton orange, bones
 // black, joints as circles of their radius, the root red, and DIR/sheet.png: every picture on
 // one contact sheet. Per file also the rig an animator sees (issue 21): terminals, junctions,
 // bones, the shortest bone relative to the shape's diagonal, whether the root is a tip.
 // --before: without the animator rig (RefineOptions::animatorRig off), for comparison.
+// "Wires": a skeleton that lies within one pen width of the strokes along most (> half) of its
+// length traces the pen line instead of the body. Each row says whether the skeleton is one
+// now (wire_after) and whether the one from the silhouette alone, before regions, was
+// (wire_before); the last line counts both.
 #include "../geometry/geometry_test_support.h"
 #include "bench.h"
 
+#include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/silhouette.h>
 #include <finbook/geometry/skeleton/raw_skeleton.h>
 #include <finbook/geometry/skeleton/skeleton.h>
@@ -30,6 +35,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <time.h>
 
@@ -58,8 +64,13 @@ double threadCpuMs()
     return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
 }
 
-// The shape of a file: the silhouette of its strokes, or its contours as one polygon.
-std::optional<Region> readShape(const QString &path, QString &problem)
+struct Input {
+    Region before, after;                // silhouette alone, object shape (equal for contours)
+    std::vector<Eigen::MatrixX2d> lines; // the pen lines (strokes, or the contours)
+};
+
+// The shape of a file: the object shape of its strokes, or its contours as one polygon.
+std::optional<Input> readShape(const QString &path, QString &problem)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
@@ -68,23 +79,39 @@ std::optional<Region> readShape(const QString &path, QString &problem)
     }
     const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
     if (json.contains(QStringLiteral("strokes"))) {
+        Input input;
         std::vector<StrokeInput> strokes;
-        for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray())
+        for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray()) {
             strokes.push_back({toMatrix(stroke.toArray()), kPenWidth});
-        const auto region = silhouette(strokes);
-        if (!region) {
-            problem = QString::fromStdString(region.error().message);
+            input.lines.push_back(strokes.back().points);
+        }
+        const auto before = silhouette(strokes);
+        const auto after = objectShape(strokes);
+        if (!before || !after) {
+            problem =
+                QString::fromStdString(!before ? before.error().message : after.error().message);
             return std::nullopt;
         }
-        return *region;
+        input.before = *before;
+        input.after = *after;
+        return input;
     }
     if (json.contains(QStringLiteral("contours"))) {
         const QJsonArray contours = json.value(QStringLiteral("contours")).toArray();
+        Input input;
         Polygon polygon;
-        for (qsizetype i = 0; i < contours.size(); ++i)
+        for (qsizetype i = 0; i < contours.size(); ++i) {
             (i == 0 ? polygon.outer : polygon.holes.emplace_back()) =
                 toMatrix(contours[i].toArray());
-        return Region{polygon};
+            Eigen::MatrixX2d closed = toMatrix(contours[i].toArray());
+            if (closed.rows() > 0) {
+                closed.conservativeResize(closed.rows() + 1, 2);
+                closed.row(closed.rows() - 1) = closed.row(0);
+            }
+            input.lines.push_back(closed);
+        }
+        input.before = input.after = Region{polygon};
+        return input;
     }
     problem = QStringLiteral("neither strokes nor contours");
     return std::nullopt;
@@ -116,6 +143,53 @@ double bonesInside(const Skeleton &s, const Region &region)
         }
     }
     return total > 0.0 ? inside / total : 1.0;
+}
+
+double distanceToLines(const std::vector<Eigen::MatrixX2d> &lines, const Eigen::RowVector2d &p)
+{
+    double best = std::numeric_limits<double>::max();
+    for (const Eigen::MatrixX2d &line : lines)
+        for (Eigen::Index i = 0; i < line.rows(); ++i) {
+            const Eigen::RowVector2d a = line.row(i);
+            const Eigen::RowVector2d ab = i + 1 < line.rows()
+                                              ? Eigen::RowVector2d(line.row(i + 1) - a)
+                                              : Eigen::RowVector2d::Zero();
+            const double len2 = ab.squaredNorm();
+            const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+            best = std::min(best, (p - (a + t * ab)).norm());
+        }
+    return best;
+}
+
+// Fraction of the bones' length within one pen width of the pen lines (sampled every px).
+double boneLengthOnLines(const Skeleton &s, const std::vector<Eigen::MatrixX2d> &lines)
+{
+    double near = 0.0, total = 0.0;
+    for (int j = 0; j < s.jointCount(); ++j) {
+        if (s.parent(j) < 0)
+            continue;
+        const Eigen::RowVector2d a = s.joints.row(s.parent(j)), b = s.joints.row(j);
+        const double length = (b - a).norm();
+        const int samples = std::max(1, int(std::ceil(length)));
+        for (int k = 0; k < samples; ++k) {
+            total += length / samples;
+            if (distanceToLines(lines, a + (k + 0.5) / samples * (b - a)) <= kPenWidth)
+                near += length / samples;
+        }
+    }
+    return total > 0.0 ? near / total : 0.0;
+}
+
+// Whether the default skeleton of `shape` is a wire along `lines`; nullopt if none is built.
+std::optional<bool> isWire(const Region &shape, const std::vector<Eigen::MatrixX2d> &lines)
+{
+    auto raw = rawSkeleton(shape);
+    if (!raw)
+        return std::nullopt;
+    auto s = refineSkeleton(*raw);
+    if (!s)
+        return std::nullopt;
+    return boneLengthOnLines(*s, lines) > 0.5;
 }
 
 void writePicture(const QString &dir, const QString &name, const Region &shape,
@@ -203,8 +277,10 @@ double shortestBone(const Skeleton &s)
     return shortest;
 }
 
-QJsonObject measure(const QString &path, const Region &shape, const QString &pngDir, bool before)
+QJsonObject measure(const QString &path, const Input &input, const QString &pngDir, bool before,
+                    int &wiresBefore, int &wiresAfter)
 {
+    const Region &shape = input.after;
     QJsonObject row{{QStringLiteral("file"), QFileInfo(path).fileName()}};
     std::vector<double> totalMs, rawMs, cpuMs;
     std::optional<RawSkeleton> raw;
@@ -259,6 +335,12 @@ QJsonObject measure(const QString &path, const Region &shape, const QString &png
     row.insert(QStringLiteral("finite"), skeleton->joints.allFinite() &&
                                              skeleton->radius.allFinite() &&
                                              isValidSkeleton(*skeleton));
+    const std::optional<bool> wireBefore = isWire(input.before, input.lines);
+    const std::optional<bool> wireAfter = isWire(input.after, input.lines);
+    row.insert(QStringLiteral("wire_before"), wireBefore.value_or(false));
+    row.insert(QStringLiteral("wire_after"), wireAfter.value_or(false));
+    wiresBefore += wireBefore.value_or(false) ? 1 : 0;
+    wiresAfter += wireAfter.value_or(false) ? 1 : 0;
     if (!pngDir.isEmpty())
         writePicture(pngDir, QFileInfo(path).baseName(), shape, *raw, *skeleton);
     return row;
@@ -285,13 +367,13 @@ int benchSkeleton(const QStringList &arguments)
         std::fprintf(stderr, "usage: finbook-bench skeleton [--png DIR] FILE...\n");
         return 2;
     }
-    int failures = 0;
+    int failures = 0, wiresBefore = 0, wiresAfter = 0;
     QStringList names;
     for (const QString &path : args) {
         QString problem;
-        const std::optional<Region> shape = readShape(path, problem);
+        const std::optional<Input> input = readShape(path, problem);
         const QJsonObject row =
-            shape ? measure(path, *shape, pngDir, before)
+            input ? measure(path, *input, pngDir, before, wiresBefore, wiresAfter)
                   : QJsonObject{{QStringLiteral("file"), QFileInfo(path).fileName()},
                                 {QStringLiteral("error"), problem}};
         failures += row.contains(QStringLiteral("error")) ? 1 : 0;
@@ -301,6 +383,12 @@ int benchSkeleton(const QStringList &arguments)
     }
     if (!pngDir.isEmpty())
         writeContactSheet(pngDir, names);
+    const QJsonObject summary{{QStringLiteral("summary"), true},
+                              {QStringLiteral("files"), qint64(args.size())},
+                              {QStringLiteral("failures"), failures},
+                              {QStringLiteral("wires_before"), wiresBefore},
+                              {QStringLiteral("wires_after"), wiresAfter}};
+    std::printf("%s\n", QJsonDocument(summary).toJson(QJsonDocument::Compact).constData());
     return failures == 0 ? 0 : 1;
 }
 

@@ -1,8 +1,9 @@
-// An object's automatic skeleton (issue 9's pipeline) as a rig: silhouette of the rest
-// strokes, raw straight skeleton, refinement under the panel's four sliders.
+// An object's automatic skeleton (issue 9's pipeline) as a rig: shape of the rest strokes
+// (object_shape.h: closed regions and the ink), raw straight skeleton, refinement under the panel's
+// four sliders.
 #include "../deformation_text.h"
 
-#include <finbook/geometry/silhouette.h>
+#include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/skeleton/skeleton_refine.h>
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
@@ -50,7 +51,7 @@ Expected<SkeletonRig, QString> buildSkeletonRig(const StrokeGroup &group,
     const auto inputs = strokeInputs(MeshKey::of(group));
     if (inputs.empty())
         return unexpected(Deformation::tr("The object has no strokes to build a skeleton in."));
-    auto region = geometry::silhouette(inputs);
+    auto region = geometry::objectShape(inputs);
     if (!region)
         return unexpected(sentence(region.error()));
     auto raw = geometry::rawSkeleton(*region);

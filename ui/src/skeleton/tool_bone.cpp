@@ -1,6 +1,6 @@
 #include <finbook/deform/skeleton/inverse_kinematics.h>
+#include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/region.h>
-#include <finbook/geometry/silhouette.h>
 #include <finbook/model/render.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
@@ -135,9 +135,9 @@ model::Id BoneTool::objectAt(const ToolEvent &event) const
     for (auto it = f->groups.rbegin(); it != f->groups.rend(); ++it)
         if (editable(*it) && hit(*it))
             return it->id;
-    // No line under the cursor: a click inside a shape counts too (the filled silhouette the
-    // skeleton is built from), topmost object first.
-    // Each silhouette is computed once: the current object first, then the others.
+    // No line under the cursor: a click inside a shape counts too (the object's shape the
+    // skeleton is built from: closed regions and the ink), topmost object first.
+    // Each shape is computed once: the current object first, then the others.
     const model::StrokeGroup *current = state()->currentGroup();
     if (current && editable(*current) && insideShape(*current, event.pos))
         return current->id;
@@ -168,12 +168,12 @@ bool BoneTool::insideShape(const model::StrokeGroup &g, QPointF pos)
         in.width = std::isfinite(width) && width > 0 ? width : 1.0;
         inputs.push_back(std::move(in));
     }
-    // Cheap refusal first: the silhouette never reaches far beyond the points.
+    // Cheap refusal first: the shape never reaches far beyond the points.
     const double reach = 32.0;
     if (inputs.empty() || !(pos.x() >= left - reach && pos.x() <= right + reach &&
                             pos.y() >= top - reach && pos.y() <= bottom + reach))
         return false;
-    const auto region = geometry::silhouette(inputs);
+    const auto region = geometry::objectShape(inputs);
     return region && geometry::regionContains(*region, pos.x(), pos.y());
 }
 
