@@ -1,12 +1,14 @@
 // finbook-bench arap: precompute and per-drag-event cost of the ARAP deformer on grid meshes,
-// against the floor of one step-2 back-substitution, plus pin-to-strokes latency and the
-// refined method's drag event (update_ms is the paper's two steps, drag_ms the refined drag
-// stage, drag_over_update their ratio; factor_isa the instruction set of the factorization;
-// *_min_ms the fastest event, less disturbed by a busy machine); then the pose quality of a 4:1 bar
-// bent 60° (see arap_quality.h; there drag_over_two_step is the same ratio for that pose). With
-// --quality FILE... the same quality columns for real drawings, each meshed as the app meshes it
-// and bent 45° (with
-// --density D at that mesh density: 3.65 for about 20k vertices).
+// with 4 pins and with about 6 % of the vertices pinned (pins column; precompute_min_ms the
+// fastest of several precomputes), against the floor of one step-2 back-substitution, plus
+// pin-to-strokes latency and the refined method's drag event (update_ms is the paper's two
+// steps, drag_ms the refined drag stage, drag_over_update their ratio; factor_isa the
+// instruction set of the factorization; *_min_ms the fastest event, less disturbed by a busy
+// machine); then the pose quality of a 4:1 bar bent 60° (see arap_quality.h; there
+// drag_over_two_step is the same ratio for that pose). With --quality FILE... the same quality
+// columns for real drawings, each meshed as the app meshes it and bent 45° (with --density D
+// at that mesh density: 3.65 for about 20k vertices). --dump DIR writes each bend and its
+// reference pose as text, to check the reference against another ARAP solver.
 #include "../deform/grid_mesh.h"
 #include "arap_quality.h"
 #include "bench.h"

@@ -83,7 +83,9 @@ struct ArapOptions {
     // finalPassCap.
     double finalTolerance = 1e-6;
     double finalEnergyTolerance = 1e-7;
-    int finalPassCap = 400;
+    // 400 left thin drawings meshed at ~20k vertices (slow, low-frequency rotation fields) up
+    // to 1.06× the converged cotangent energy.
+    int finalPassCap = 1000;
     // Refined: look for flipped triangles after a solve and repair those that the ARAP
     // optimum does not force: a drag pose gets up to dragPasses / 8 more passes (from 3
     // drag passes on) while the count of flips still falls, then every pose a bounded local
@@ -228,8 +230,8 @@ ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc
 //   Refined, Drag      step 1 or coarse rotations + dragPasses accelerated passes, flip fix;
 //   Refined, Final     the same start + accelerated passes until converged (see
 //                      ArapOptions::finalTolerance; or finalPassCap), flip repair.
-// Final costs about estimatedPassMs per pass; drawings of ~2k vertices took 17–400 passes
-// (median 80, 2–90 ms on a busy 2-core machine) in `finbook-bench arap --quality`, so run it
+// Final costs about estimatedPassMs per pass; drawings of ~2k vertices took 1–400 passes
+// (median 51, 35 ms on a very busy 2-core machine) in `finbook-bench arap --quality`, so run it
 // on a worker when estimatedPassMs × finalPassCap exceeds a frame. `cancelled` is polled
 // between passes (Final only); then the result is DeformErrorCode::Cancelled.
 // Errors as the three-argument form, plus Cancelled.
