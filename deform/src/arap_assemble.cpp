@@ -40,9 +40,9 @@ Eigen::Index entryIndex(const Eigen::SparseMatrix<Complex> &m, int row, int col)
 }
 
 // Adds one triangle's step-1 form to G00 (upper triangle, H00's pattern) and the free-handle
-// couplings of both steps. Step 2's form is the triangle's graph Laplacian: 2 on the
-// diagonal, −1 off it.
-void scatter(const int I[3], const Eigen::Matrix3cd &form, ArapPrecompute &d,
+// couplings of both steps. Step 2's form is the triangle's edge-weighted Laplacian: −w off
+// the diagonal (w of the edge (r, s), opposite the third corner).
+void scatter(const int I[3], const Eigen::Matrix3cd &form, const double w[3], ArapPrecompute &d,
              std::vector<Eigen::Triplet<Complex>> &g01, std::vector<Eigen::Triplet<double>> &h01)
 {
     const Eigen::Index nf = d.freeCount;
@@ -52,7 +52,7 @@ void scatter(const int I[3], const Eigen::Matrix3cd &form, ArapPrecompute &d,
         for (int s = 0; s < 3; ++s) {
             if (I[s] >= nf) {
                 g01.emplace_back(I[r], I[s] - nf, form(r, s));
-                h01.emplace_back(I[r], I[s] - nf, r == s ? 2.0 : -1.0);
+                h01.emplace_back(I[r], I[s] - nf, -w[3 - r - s]); // r ≠ s: one is free
             } else if (I[r] <= I[s]) {
                 d.stepOneMatrix.valuePtr()[entryIndex(d.stepOneMatrix, I[r], I[s])] += form(r, s);
             }
@@ -102,7 +102,7 @@ void buildCorners(ArapPrecompute &d)
             const int v = d.triangles(t, k);
             if (v < nf) {
                 d.cornerTriangle(next(v)) = t;
-                d.cornerRest(next(v)++) = d.restCentered(t, k);
+                d.cornerRest(next(v)++) = d.restWeighted(t, k);
             }
         }
     }
@@ -126,6 +126,43 @@ void buildVertexTriangles(ArapPrecompute &d)
             d.vertexTriangle(next(d.triangles(t, k))++) = t;
 }
 
+// Edges whose assembled weight is negative: positive off-diagonal entries of H00 (upper
+// half) and of H01.
+int countNegativeWeights(const ArapPrecompute &d)
+{
+    int count = 0;
+    for (const auto *m : {&d.stepTwoMatrix, &d.stepTwoCoupling}) {
+        for (Eigen::Index col = 0; col < m->outerSize(); ++col) {
+            for (ArapPrecompute::RealMatrix::InnerIterator it(*m, col); it; ++it) {
+                const bool offDiagonal = m == &d.stepTwoCoupling || it.row() < it.col();
+                count += offDiagonal && it.value() > 0.0 ? 1 : 0;
+            }
+        }
+    }
+    return count;
+}
+
+// Per-triangle rest data of row k (see ArapPrecompute::edgeWeight, restWeighted).
+void restData(const Complex z[3], const double w[3], Eigen::Index k, ArapPrecompute &d)
+{
+    const Complex centroid = (z[0] + z[1] + z[2]) / 3.0;
+    double norm = 0.0;
+    for (int r = 0; r < 3; ++r) {
+        d.restCentered(k, r) = z[r] - centroid;
+        d.edgeWeight(k, r) = w[r];
+        const int a = (r + 1) % 3, b = (r + 2) % 3;
+        // Uniform weights: exactly the centred corners, so the paper's method keeps its bits.
+        d.restWeighted(k, r) = d.options.method == ArapMethod::Refined
+                                   ? (w[b] * (z[r] - z[a]) + w[a] * (z[r] - z[b])) / 3.0
+                                   : d.restCentered(k, r);
+        norm += w[r] * squaredMagnitude(z[b] - z[a]);
+    }
+    d.restSquaredNorm(k) = norm;
+    d.collapseThreshold(k) = kCollapseFraction * d.restWeighted.row(k).squaredNorm();
+    const Complex e1 = z[1] - z[0], e2 = z[2] - z[0];
+    d.restDoubleArea(k) = e1.real() * e2.imag() - e1.imag() * e2.real();
+}
+
 } // namespace
 
 void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
@@ -135,6 +172,8 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
     const auto m = static_cast<Eigen::Index>(triangles.size());
     d.triangles.resize(m, 3);
     d.restCentered.resize(m, 3);
+    d.edgeWeight.resize(m, 3);
+    d.restWeighted.resize(m, 3);
     d.collapseThreshold.resize(m);
     d.restSquaredNorm.resize(m);
     d.restDoubleArea.resize(m);
@@ -153,14 +192,10 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
             z[r] = Complex(V(v, 0), V(v, 1));
             d.triangles(k, r) = I[r];
         }
-        const Complex centroid = (z[0] + z[1] + z[2]) / 3.0;
-        for (int r = 0; r < 3; ++r)
-            d.restCentered(k, r) = z[r] - centroid;
-        d.restSquaredNorm(k) = d.restCentered.row(k).squaredNorm();
-        d.collapseThreshold(k) = kCollapseFraction * d.restSquaredNorm(k);
-        const Complex e1 = z[1] - z[0], e2 = z[2] - z[0];
-        d.restDoubleArea(k) = e1.real() * e2.imag() - e1.imag() * e2.real();
-        scatter(I, similarityForm(z), d, g01, h01);
+        double w[3];
+        edgeWeights(z, d.options.method == ArapMethod::Refined, w);
+        restData(z, w, k, d);
+        scatter(I, similarityForm(z), w, d, g01, h01);
     }
     const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
     d.stepOneCoupling.resize(nf, handles);
@@ -168,6 +203,7 @@ void assembleArapSystems(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
     d.stepTwoCoupling.resize(nf, handles);
     d.stepTwoCoupling.setFromTriplets(h01.begin(), h01.end());
     d.stepOneNorm = selfAdjointNorm(d.stepOneMatrix);
+    d.negativeWeightEdges = countNegativeWeights(d);
     buildCorners(d);
     buildVertexTriangles(d);
 }

@@ -142,7 +142,7 @@ CoarseBuilder::Corners clusterCorners(const ArapPrecompute &d)
         for (int k = d.vertexStart(v); k < d.vertexStart(v + 1); ++k) {
             const int t = d.vertexTriangle(k), cluster = d.triangleCluster(t);
             const int corner = d.triangles(t, 0) == v ? 0 : d.triangles(t, 1) == v ? 1 : 2;
-            const Complex a = std::conj(d.restCentered(t, corner));
+            const Complex a = std::conj(d.restWeighted(t, corner));
             std::size_t i = first;
             while (i < c.cluster.size() && c.cluster[i] != cluster)
                 ++i;
@@ -231,7 +231,7 @@ void CoarseBuilder::finish(ArapPrecompute &d) const
     // (diag(ρ) − C) R = E q.
     Eigen::MatrixXcd relaxed = -d.coarseCoupling;
     for (Eigen::Index t = 0; t < d.triangles.rows(); ++t)
-        relaxed(d.triangleCluster(t), d.triangleCluster(t)) += d.restSquaredNorm(t);
+        relaxed(d.triangleCluster(t), d.triangleCluster(t)) += d.restSquaredNorm(t) / 3.0;
     const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(relaxed);
     d.coarseSimilarity = lu.inverse();
     if (!d.coarseSimilarity.allFinite())

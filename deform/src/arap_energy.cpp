@@ -2,6 +2,10 @@
 
 #include <finbook/deform/arap.h>
 
+#include <Eigen/LU>
+
+#include <cmath>
+
 namespace finbook::deform {
 
 double arapEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Eigen::MatrixX2d &U)
@@ -26,6 +30,26 @@ double arapEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Ei
             const int j = (k + 1) % 3;
             energy += detail::squaredMagnitude((p[j] - p[k]) - rotation * (r[j] - r[k]));
         }
+    }
+    return energy;
+}
+
+double arapCotangentEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                           const Eigen::MatrixX2d &U)
+{
+    double energy = 0.0;
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        Eigen::Matrix2d rest, deformed; // edges 0→1 and 0→2 as columns
+        for (int k = 1; k < 3; ++k) {
+            rest.col(k - 1) = (V.row(F(t, k)) - V.row(F(t, 0))).transpose();
+            deformed.col(k - 1) = (U.row(F(t, k)) - U.row(F(t, 0))).transpose();
+        }
+        const double det = rest.determinant();
+        const Eigen::Matrix2d J = deformed * rest.inverse();
+        // max over rotations R of tr(RᵀJ) is |(J00 + J11, J10 − J01)|, so
+        // ‖J − R‖² = ‖J‖² + 2 − 2·that for the closest rotation.
+        const double trace = std::hypot(J(0, 0) + J(1, 1), J(1, 0) - J(0, 1));
+        energy += 0.5 * std::abs(det) * (J.squaredNorm() + 2.0 - 2.0 * trace);
     }
     return energy;
 }

@@ -3,8 +3,9 @@
 // typically a few next to a pin under compression. The repair relaxes the ARAP energy
 // locally around them: Gauss–Seidel over the free vertices of a small region, each vertex
 // moved to its energy minimum given its neighbours with the rotations of its triangles
-// refitted first. Each update lowers (never raises) the energy, so the repair can only bring
-// the pose closer to the optimum; a fold that survives it is taken as forced by the pins.
+// refitted first (in the precompute's weights: the cotangent ARAP energy for Refined). Each update
+// lowers (never raises) the energy, so the repair can only bring the pose closer to the optimum; a
+// fold that survives it is taken as forced by the pins.
 #include "arap_solver.h"
 
 #include <algorithm>
@@ -45,30 +46,33 @@ Complex rotationOf(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::In
 {
     Complex r[3], p[3];
     for (int k = 0; k < 3; ++k) {
-        r[k] = d.restCentered(t, k);
+        r[k] = d.restWeighted(t, k);
         p[k] = W(d.triangles(t, k)) - W(d.triangles(t, 0));
     }
     return bestRotation(r, p, d.collapseThreshold(t));
 }
 
-// The energy minimum of free vertex v with everything else fixed: the mean over its
-// triangles' two edges at v of "neighbour + rotated rest edge".
+// The energy minimum of free vertex v with everything else fixed: the weighted mean over its
+// triangles' two edges at v of "neighbour + rotated rest edge". The weights sum to the
+// vertex's diagonal entry of the per-triangle forms, which is positive even where a single
+// cotangent weight is negative (½(cot α + cot β) = sin(α + β) / (2 sin α sin β) per triangle).
 Complex relaxedPosition(const ArapPrecompute &d, const Eigen::VectorXcd &W, int v)
 {
     Complex sum;
-    int terms = 0;
+    double total = 0.0;
     for (int c = d.vertexStart(v); c < d.vertexStart(v + 1); ++c) {
         const int t = d.vertexTriangle(c);
         const Complex rotation = rotationOf(d, W, t);
         const int k = d.triangles(t, 0) == v ? 0 : d.triangles(t, 1) == v ? 1 : 2;
         for (int j = 1; j < 3; ++j) {
             const int other = (k + j) % 3;
-            sum += W(d.triangles(t, other)) +
-                   mul(rotation, d.restCentered(t, k) - d.restCentered(t, other));
-            ++terms;
+            const double weight = d.edgeWeight(t, 3 - k - other);
+            sum += weight * (W(d.triangles(t, other)) +
+                             mul(rotation, d.restCentered(t, k) - d.restCentered(t, other)));
+            total += weight;
         }
     }
-    return terms > 0 ? sum / double(terms) : W(v);
+    return total > 0.0 ? sum / total : W(v);
 }
 
 // Adds the free vertices of the triangles around the region's vertices, `rings` times.

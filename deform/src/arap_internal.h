@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <complex>
 #include <exception>
 #include <functional>
@@ -32,6 +33,23 @@ void backsubstituteBlock(const ArapPrecompute &data, Complex *x);
 inline DeformError makeError(DeformErrorCode code, std::string message)
 {
     return DeformError{code, std::move(message)};
+}
+
+// Weight of the edge opposite each corner of the rest triangle z: ½ cot of the corner's angle
+// (the standard ARAP energy's, for ArapMethod::Refined; negative for an obtuse angle) or 1
+// (the paper's uniform weights). z must have non-zero area.
+inline void edgeWeights(const Complex z[3], bool cotangent, double w[3])
+{
+    for (int k = 0; k < 3; ++k) {
+        if (!cotangent) {
+            w[k] = 1.0;
+            continue;
+        }
+        const Complex a = z[(k + 1) % 3] - z[k], b = z[(k + 2) % 3] - z[k];
+        const double dot = a.real() * b.real() + a.imag() * b.imag();
+        const double cross = a.real() * b.imag() - a.imag() * b.real();
+        w[k] = 0.5 * dot / std::abs(cross);
+    }
 }
 
 // Rest positions, triangles and pins as arapPrecompute receives them; nullopt when usable.

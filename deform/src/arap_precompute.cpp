@@ -62,19 +62,30 @@ Classification classify(Eigen::Index n, const Eigen::MatrixX3i &F, const Eigen::
 }
 
 // Step 2's matrix H00 over the free vertices (upper triangle, free-local numbering): the
-// uniform graph Laplacian summed per triangle, 2 on the diagonal and −1 per edge.
-Eigen::SparseMatrix<double> freeLaplacian(const Eigen::MatrixX3i &F, const Classification &c,
-                                          const std::vector<int> &freeLocal)
+// edge-weighted Laplacian summed per triangle, Σ w on the diagonal and −w per edge, with the
+// weights of `cotangent` (see edgeWeights). Entries whose weights cancel stay in the pattern.
+Eigen::SparseMatrix<double> freeLaplacian(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                          const Classification &c,
+                                          const std::vector<int> &freeLocal, bool cotangent)
 {
     const auto nf = static_cast<int>(c.freeVertices.size());
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(c.solvedTriangles.size() * 6);
     for (const Eigen::Index t : c.solvedTriangles) {
+        Complex z[3];
+        for (int r = 0; r < 3; ++r)
+            z[r] = Complex(V(F(t, r), 0), V(F(t, r), 1));
+        double w[3];
+        detail::edgeWeights(z, cotangent, w);
         for (int r = 0; r < 3; ++r) {
             for (int s = r; s < 3; ++s) {
                 const int i = freeLocal[F(t, r)], j = freeLocal[F(t, s)];
-                if (i >= 0 && j >= 0)
-                    entries.emplace_back(std::min(i, j), std::max(i, j), r == s ? 2.0 : -1.0);
+                if (i < 0 || j < 0)
+                    continue;
+                // Vertex r's two edges are opposite the other two corners; edge (r, s) is
+                // opposite the third.
+                const double value = r == s ? w[(r + 1) % 3] + w[(r + 2) % 3] : -w[3 - r - s];
+                entries.emplace_back(std::min(i, j), std::max(i, j), value);
             }
         }
     }
@@ -86,10 +97,12 @@ Eigen::SparseMatrix<double> freeLaplacian(const Eigen::MatrixX3i &F, const Class
 // AMD on the free-vertex adjacency, computed once and shared by G00 and H00 (same pattern).
 // Stores H00 pre-permuted and the factors' shared symbolic analysis in d and returns the free
 // vertices in elimination order.
-std::vector<int> fillReducingOrder(const Eigen::MatrixX3i &F, const Classification &c,
-                                   const std::vector<int> &freeLocal, ArapPrecompute &d)
+std::vector<int> fillReducingOrder(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                   const Classification &c, const std::vector<int> &freeLocal,
+                                   ArapPrecompute &d)
 {
-    const Eigen::SparseMatrix<double> laplacian = freeLaplacian(F, c, freeLocal);
+    const Eigen::SparseMatrix<double> laplacian =
+        freeLaplacian(V, F, c, freeLocal, d.options.method == ArapMethod::Refined);
     const auto nf = static_cast<int>(c.freeVertices.size());
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
     Eigen::AMDOrdering<int>()(laplacian.selfadjointView<Eigen::Upper>(), inverse);
@@ -132,7 +145,7 @@ std::vector<int> numberVertices(const Eigen::MatrixX2d &V, const Eigen::MatrixX3
     std::vector<int> freeLocal(static_cast<std::size_t>(n), -1);
     for (std::size_t k = 0; k < c.freeVertices.size(); ++k)
         freeLocal[c.freeVertices[k]] = static_cast<int>(k);
-    const std::vector<int> ordered = fillReducingOrder(F, c, freeLocal, d);
+    const std::vector<int> ordered = fillReducingOrder(V, F, c, freeLocal, d);
 
     d.freeCount = static_cast<Eigen::Index>(ordered.size());
     d.order.resize(n);

@@ -131,8 +131,8 @@ void keepBetterOfLastTwo(const ArapPrecompute &d, Workspace &w, bool havePreviou
 } // namespace
 
 std::optional<DeformError> refine(const ArapPrecompute &d, Workspace &w, int passes, int flipPasses,
-                                  double tolerance, const std::function<bool()> &cancelled,
-                                  ArapSolveReport &report)
+                                  double tolerance, double energyTolerance,
+                                  const std::function<bool()> &cancelled, ArapSolveReport &report)
 {
     const Eigen::Index nf = d.freeCount;
     if (nf == 0 || passes <= 0)
@@ -169,7 +169,12 @@ std::optional<DeformError> refine(const ArapPrecompute &d, Workspace &w, int pas
         // free = G(x); the fixed-point residual G(x) − x measures how far a pass still moves.
         w.mapped = free;
         w.residual = w.mapped - w.iterate;
-        if (tolerance > 0.0 && maxMagnitude(w.residual) <= tolerance) {
+        // Converged: the pass moves no vertex by more than `tolerance` and (when asked) the
+        // previous one lowered the energy by no more than energyTolerance of it. Either alone
+        // stops too early on thin drawings, where a pass moves little (slow, low-frequency
+        // rotation fields) or a plain pass gains little while the acceleration still does.
+        const bool settled = energyTolerance <= 0.0 || report.lastEnergyChange <= energyTolerance;
+        if (tolerance > 0.0 && settled && maxMagnitude(w.residual) <= tolerance) {
             report.converged = true;
             break;
         }
@@ -193,6 +198,8 @@ std::optional<DeformError> refine(const ArapPrecompute &d, Workspace &w, int pas
             free = w.mapped;
             next = fitRotations(d, w.positions, w.rotations, true);
         }
+        // The energy falls with every pass (the safeguard).
+        report.lastEnergyChange = next > 0.0 ? (energy - next) / next : 0.0;
         energy = next;
         globalStep(d, w); // reads the rotations and the handles, not the free positions
         ++report.passes;

@@ -65,11 +65,12 @@ std::optional<DeformError> checkGlobalStep(const ArapPrecompute &d, const Worksp
 
 // Accelerated local/global passes from the step-1 result in w.positions (Refined). Runs
 // `passes` passes, or with tolerance > 0 until no free vertex moves more than `tolerance` in a
-// pass (at most `passes`); then up to `flipPasses` more while a triangle is flipped. Leaves
+// pass or (energyTolerance > 0) a pass lowers the energy by no more than energyTolerance of
+// it (at most `passes`); then up to `flipPasses` more while a triangle is flipped. Leaves
 // the result of the last global step in w.positions.
 std::optional<DeformError> refine(const ArapPrecompute &d, Workspace &w, int passes, int flipPasses,
-                                  double tolerance, const std::function<bool()> &cancelled,
-                                  ArapSolveReport &report);
+                                  double tolerance, double energyTolerance,
+                                  const std::function<bool()> &cancelled, ArapSolveReport &report);
 
 // Flipped triangles at W (signed area ≤ 0 relative to the rest orientation).
 int countFlips(const ArapPrecompute &d, const Eigen::VectorXcd &W);

@@ -9,6 +9,7 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QTextStream>
 
 #include <algorithm>
 #include <chrono>
@@ -119,9 +120,38 @@ std::shared_ptr<const ArapPrecompute> prepare(const Eigen::MatrixX2d &V, const E
     return data ? *data : nullptr;
 }
 
+std::vector<bool> flippedTriangles(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                   const Eigen::MatrixX2d &U)
+{
+    std::vector<bool> flipped(std::size_t(F.rows()));
+    for (Eigen::Index t = 0; t < F.rows(); ++t)
+        flipped[std::size_t(t)] = arapFlippedTriangles(V, F.row(t), U) > 0;
+    return flipped;
+}
+
+// V, F, the pinned vertices, their targets and the reference pose as plain text (one file per
+// bend, named by vertex count), for checking the reference against another ARAP solver.
+void dump(const QString &directory, const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+          const Bend &bend, const Eigen::MatrixX2d &U)
+{
+    QFile file(directory + QStringLiteral("/bend_%1_%2.txt").arg(V.rows()).arg(F.rows()));
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+        return;
+    QTextStream out(&file);
+    out.setRealNumberPrecision(17);
+    out << V.rows() << ' ' << F.rows() << ' ' << bend.b.size() << '\n';
+    for (Eigen::Index v = 0; v < V.rows(); ++v)
+        out << V(v, 0) << ' ' << V(v, 1) << ' ' << U(v, 0) << ' ' << U(v, 1) << '\n';
+    for (Eigen::Index t = 0; t < F.rows(); ++t)
+        out << F(t, 0) << ' ' << F(t, 1) << ' ' << F(t, 2) << '\n';
+    for (Eigen::Index k = 0; k < bend.b.size(); ++k)
+        out << bend.b(k) << ' ' << bend.bc(k, 0) << ' ' << bend.bc(k, 1) << '\n';
+}
+
 } // namespace
 
-QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees)
+QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees,
+                        const QString &dumpDirectory)
 {
     QJsonObject row{{QStringLiteral("vertices"), qint64(V.rows())},
                     {QStringLiteral("triangles"), qint64(F.rows())},
@@ -130,6 +160,7 @@ QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, do
     row.insert(QStringLiteral("pins"), qint64(bend.b.size()));
     ArapOptions referenceOptions;
     referenceOptions.finalTolerance = 1e-10;
+    referenceOptions.finalEnergyTolerance = 0.0;
     referenceOptions.finalPassCap = 20000;
     referenceOptions.fixFlips = false;
     ArapOptions twoStep;
@@ -151,22 +182,34 @@ QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, do
         row.insert(QStringLiteral("error"), QStringLiteral("solve failed"));
         return row;
     }
-    // Energy scale: Σ |rest edge|² (the energy of collapsing every triangle to a point).
+    if (!dumpDirectory.isEmpty())
+        dump(dumpDirectory, V, F, bend, converged->U);
+    // Everything is measured in the standard (cotangent) ARAP energy, which the refined method
+    // minimises; the reference is its converged pose without flip repair.
+    // Energy scale: the energy of collapsing every triangle to a point (Σ area·‖I‖² = 2·area).
     // When parts move rigidly (pinned ends in separate components) the reference energy is
     // round-off, and ratios to it say nothing: they are left out (null), the excess stays.
-    const double scale = arapEnergy(V, F, Eigen::MatrixX2d::Zero(V.rows(), 2));
-    const double referenceEnergy = arapEnergy(V, F, converged->U);
+    const double scale = arapCotangentEnergy(V, F, Eigen::MatrixX2d::Zero(V.rows(), 2));
+    const double referenceEnergy = arapCotangentEnergy(V, F, converged->U);
     const bool rigid = referenceEnergy <= kRigidEnergy * scale;
+    const std::vector<bool> referenceFlipped = flippedTriangles(V, F, converged->U);
     row.insert(QStringLiteral("reference_energy_rel"), referenceEnergy / scale);
     const auto columns = [&](const char *name, const Solved &s) {
         const QString prefix = QString::fromLatin1(name);
-        const double energy = arapEnergy(V, F, s.U);
+        const double energy = arapCotangentEnergy(V, F, s.U);
         row.insert(prefix + QStringLiteral("_energy_ratio"),
                    rigid ? QJsonValue() : QJsonValue(energy / referenceEnergy));
         row.insert(prefix + QStringLiteral("_energy_excess_rel"),
                    (energy - referenceEnergy) / scale);
         row.insert(prefix + QStringLiteral("_area_pct"), areaChangePercent(V, F, s.U));
-        row.insert(prefix + QStringLiteral("_flips"), arapFlippedTriangles(V, F, s.U));
+        const std::vector<bool> flipped = flippedTriangles(V, F, s.U);
+        int count = 0, beyond = 0;
+        for (std::size_t t = 0; t < flipped.size(); ++t) {
+            count += flipped[t] ? 1 : 0;
+            beyond += flipped[t] && !referenceFlipped[t] ? 1 : 0;
+        }
+        row.insert(prefix + QStringLiteral("_flips"), count);
+        row.insert(prefix + QStringLiteral("_flips_beyond_reference"), beyond);
         row.insert(prefix + QStringLiteral("_ms"), s.ms);
         row.insert(prefix + QStringLiteral("_passes"), s.report.passes);
     };
@@ -174,6 +217,7 @@ QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, do
     row.insert(QStringLiteral("reference_converged"), converged->report.converged);
     row.insert(QStringLiteral("reference_area_pct"), areaChangePercent(V, F, converged->U));
     row.insert(QStringLiteral("reference_flips"), arapFlippedTriangles(V, F, converged->U));
+    row.insert(QStringLiteral("negative_weight_edges"), refined->negativeWeightEdges);
     columns("two_step", *exact);
     columns("drag", *drag);
     columns("stored", *stored);
@@ -182,6 +226,7 @@ QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, do
     row.insert(QStringLiteral("drag_repaired"), drag->report.repairedTriangles);
     row.insert(QStringLiteral("stored_repaired"), stored->report.repairedTriangles);
     row.insert(QStringLiteral("stored_converged"), stored->report.converged);
+    row.insert(QStringLiteral("stored_last_pass_energy_change"), stored->report.lastEnergyChange);
     row.insert(QStringLiteral("precompute_ms"), precomputeMs);
     return row;
 }

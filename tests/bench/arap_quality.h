@@ -15,9 +15,14 @@ namespace finbook::bench {
 // 6 % rotated by `degrees` about the centroid of the left pins (the right end swings round
 // the held left end: a bend). Solves it the paper's way (two steps), as a drag event and as
 // a stored pose, and a converged reference (tolerance 1e-10 of the size, flip repair off).
-// Columns: energy ratios to the reference, area change in %, flipped triangles, times in ms
-// (fastest of several runs), passes run, drag_over_two_step (drag time over the two steps').
-QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees);
+// Columns: ratios of the cotangent ARAP energy (arapCotangentEnergy) to the reference's, area
+// change in %, flipped triangles (and those not flipped in the reference), times in ms
+// (fastest of several runs), passes run, drag_over_two_step (drag time over the two steps'),
+// the stored pose's last relative energy change.
+// With a dumpDirectory, also writes the bend and the reference pose there as text (see dump
+// in arap_quality.cpp) for checking against another solver.
+QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees,
+                        const QString &dumpDirectory = {});
 
 // Meshes a file of ../shared/data (Quick, Draw! "strokes" or shape "contours") with the
 // geometry layer's defaults, as the app would; nullopt with `error` set when it cannot.

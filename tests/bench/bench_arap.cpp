@@ -1,12 +1,14 @@
 // finbook-bench arap: precompute and per-drag-event cost of the ARAP deformer on grid meshes,
-// against the floor of one step-2 back-substitution, plus pin-to-strokes latency and the
-// refined method's drag event (update_ms is the paper's two steps, drag_ms the refined drag
-// stage, drag_over_update their ratio; factor_isa the instruction set of the factorization;
-// *_min_ms the fastest event, less disturbed by a busy machine); then the pose quality of a 4:1 bar
-// bent 60° (see arap_quality.h; there drag_over_two_step is the same ratio for that pose). With
-// --quality FILE... the same quality columns for real drawings, each meshed as the app meshes it
-// and bent 45° (with
-// --density D at that mesh density: 3.65 for about 20k vertices).
+// with 4 pins and with about 6 % of the vertices pinned (pins column; precompute_min_ms the
+// fastest of several precomputes), against the floor of one step-2 back-substitution, plus
+// pin-to-strokes latency and the refined method's drag event (update_ms is the paper's two
+// steps, drag_ms the refined drag stage, drag_over_update their ratio; factor_isa the
+// instruction set of the factorization; *_min_ms the fastest event, less disturbed by a busy
+// machine); then the pose quality of a 4:1 bar bent 60° (see arap_quality.h; there
+// drag_over_two_step is the same ratio for that pose). With --quality FILE... the same quality
+// columns for real drawings, each meshed as the app meshes it and bent 45° (with --density D
+// at that mesh density: 3.65 for about 20k vertices). --dump DIR writes each bend and its
+// reference pose as text, to check the reference against another ARAP solver.
 #include "../deform/grid_mesh.h"
 #include "arap_quality.h"
 #include "bench.h"
@@ -78,13 +80,50 @@ void mapPoints(const Embedding &e, const Eigen::MatrixX3i &F, const Eigen::Matri
     }
 }
 
-// One drag event: pin 0 moves along a circle, the other pins stay.
-Eigen::MatrixX2d dragTargets(const Eigen::MatrixX2d &rest, int event, double radius)
+// One drag event: the first `moving` pins move along a circle, the other pins stay.
+Eigen::MatrixX2d dragTargets(const Eigen::MatrixX2d &rest, int event, double radius,
+                             Eigen::Index moving = 1)
 {
     Eigen::MatrixX2d bc = rest;
     const double angle = 0.05 * event;
-    bc.row(0) += radius * Eigen::RowVector2d(std::cos(angle) - 1.0, std::sin(angle));
+    bc.topRows(moving).rowwise() +=
+        radius * Eigen::RowVector2d(std::cos(angle) - 1.0, std::sin(angle));
     return bc;
+}
+
+// The pinned sets of `finbook-bench arap`: 4 single vertices (a quarter in from each corner),
+// or about 6 % of the vertices (every vertex within 3 % of the width of the right edge, then of
+// the left; the right ones move).
+struct PinSet {
+    Eigen::VectorXi b;
+    Eigen::Index moving = 1;
+};
+
+PinSet pinSet(const finbook::test::GridMesh &g, bool sixPercent)
+{
+    PinSet p;
+    const int c = g.columns, r = g.rows;
+    if (!sixPercent) {
+        p.b.resize(4);
+        p.b << g.vertex(c / 4, r / 4), g.vertex(3 * c / 4, r / 4), g.vertex(c / 4, 3 * r / 4),
+            g.vertex(3 * c / 4, 3 * r / 4);
+        return p;
+    }
+    const double low = g.V.col(0).minCoeff(), high = g.V.col(0).maxCoeff();
+    std::vector<int> right, left;
+    for (Eigen::Index v = 0; v < g.V.rows(); ++v) {
+        if (g.V(v, 0) >= high - 0.03 * (high - low))
+            right.push_back(int(v));
+        else if (g.V(v, 0) <= low + 0.03 * (high - low))
+            left.push_back(int(v));
+    }
+    p.b.resize(Eigen::Index(right.size() + left.size()));
+    Eigen::Index k = 0;
+    for (const auto *side : {&right, &left})
+        for (const int v : *side)
+            p.b(k++) = v;
+    p.moving = Eigen::Index(right.size());
+    return p;
 }
 
 struct Floors {
@@ -121,23 +160,26 @@ Floors measureFloor(const ArapPrecompute &d, int repeats)
     return f;
 }
 
-int runSize(int vertices)
+int runSize(int vertices, bool sixPercent)
 {
     const auto g = finbook::test::gridMeshWithVertices(vertices, 1000.0, 0.1);
-    Eigen::VectorXi b(4);
-    const int c = g.columns, r = g.rows;
-    b << g.vertex(c / 4, r / 4), g.vertex(3 * c / 4, r / 4), g.vertex(c / 4, 3 * r / 4),
-        g.vertex(3 * c / 4, 3 * r / 4);
-    const int repeats = vertices > 50000 ? 3 : 7;
+    const PinSet pins = pinSet(g, sixPercent);
+    const Eigen::VectorXi &b = pins.b;
+    const int repeats = vertices > 50000 ? 5 : 9;
     std::shared_ptr<const ArapPrecompute> data;
-    const double precomputeMs =
-        medianMs(repeats, [&] { data = *finbook::deform::arapPrecompute(g.V, g.F, b); });
+    std::vector<double> precomputes;
+    for (int k = 0; k < repeats; ++k) {
+        const auto start = Clock::now();
+        data = *finbook::deform::arapPrecompute(g.V, g.F, b);
+        precomputes.push_back(msSince(start));
+    }
+    const double precomputeMs = finbook::bench::median(precomputes);
     const Eigen::MatrixX2d rest = finbook::test::rowsOf(g.V, b);
     Eigen::MatrixX2d U, points;
     std::vector<double> updates, endToEnd;
     const Embedding embedding = randomEmbedding(g.F.rows(), 5000);
     for (int event = 0; event < 200; ++event) {
-        const Eigen::MatrixX2d bc = dragTargets(rest, event, 150.0);
+        const Eigen::MatrixX2d bc = dragTargets(rest, event, 150.0, pins.moving);
         auto start = Clock::now();
         if (!finbook::deform::arapSolve(*data, bc, U))
             return 1;
@@ -148,7 +190,7 @@ int runSize(int vertices)
     // The same drag with the refined method's drag stage (data.dragPasses passes).
     std::vector<double> drags;
     for (int event = 0; event < (vertices > 50000 ? 20 : 100); ++event) {
-        const Eigen::MatrixX2d bc = dragTargets(rest, event, 150.0);
+        const Eigen::MatrixX2d bc = dragTargets(rest, event, 150.0, pins.moving);
         const auto start = Clock::now();
         if (!finbook::deform::arapSolve(*data, bc, U, finbook::deform::ArapStage::Drag))
             return 1;
@@ -158,16 +200,18 @@ int runSize(int vertices)
     const double update = finbook::bench::median(updates);
     std::fprintf(stderr, "nnzL=%ld (%.1f/row)\n", long(data->stepTwoLower.nonZeros()),
                  double(data->stepTwoLower.nonZeros()) / double(data->freeCount));
-    std::printf("{\"bench\":\"arap\",\"vertices\":%lld,\"triangles\":%lld,\"pins\":4,"
-                "\"precompute_ms\":%.3f,\"update_ms\":%.4f,\"floor_ms\":%.4f,\"ratio\":%.2f,"
+    std::printf("{\"bench\":\"arap\",\"vertices\":%lld,\"triangles\":%lld,\"pins\":%lld,"
+                "\"precompute_ms\":%.3f,\"precompute_min_ms\":%.3f,\"update_ms\":%.4f,\"floor_ms\":"
+                "%.4f,\"ratio\":%.2f,"
                 "\"floor_complex_ms\":%.4f,\"floor_kernel_ms\":%.4f,\"ratio_vs_kernel\":%.2f,"
                 "\"stroke_points\":5000,\"end_to_end_ms\":%.4f,\"drag_passes\":%d,"
                 "\"drag_ms\":%.4f,\"drag_min_ms\":%.4f,\"update_min_ms\":%.4f,"
                 "\"drag_over_update\":%.2f,\"factor_isa\":\"%s\"}\n",
-                (long long)g.V.rows(), (long long)g.F.rows(), precomputeMs, update,
-                floor.realPairMs, update / floor.realPairMs, floor.complexMs, floor.kernelMs,
-                update / floor.kernelMs, finbook::bench::median(endToEnd), data->dragPasses,
-                finbook::bench::median(drags), *std::min_element(drags.begin(), drags.end()),
+                (long long)g.V.rows(), (long long)g.F.rows(), (long long)b.size(), precomputeMs,
+                *std::min_element(precomputes.begin(), precomputes.end()), update, floor.realPairMs,
+                update / floor.realPairMs, floor.complexMs, floor.kernelMs, update / floor.kernelMs,
+                finbook::bench::median(endToEnd), data->dragPasses, finbook::bench::median(drags),
+                *std::min_element(drags.begin(), drags.end()),
                 *std::min_element(updates.begin(), updates.end()),
                 finbook::bench::median(drags) / update,
                 finbook::deform::supernodalInstructionSet());
@@ -183,11 +227,11 @@ void printRow(QJsonObject row)
 }
 
 // A 4:1 bar of about `vertices` vertices, bent 60°.
-void runBar(int vertices)
+void runBar(int vertices, const QString &dumpDirectory)
 {
     const int rows = std::max(2, int(std::lround((std::sqrt(1.0 + 16.0 * vertices) - 5.0) / 8.0)));
     const auto g = finbook::test::gridMesh(4 * rows, rows, 400.0, 100.0, 0.1);
-    QJsonObject row = finbook::bench::measureBend(g.V, g.F, 60.0);
+    QJsonObject row = finbook::bench::measureBend(g.V, g.F, 60.0, dumpDirectory);
     row.insert(QStringLiteral("mesh"), QStringLiteral("bar 4:1"));
     printRow(row);
 }
@@ -200,12 +244,19 @@ int runQuality(QStringList files)
         density = std::clamp(files[at + 1].toDouble(), 0.01, 100.0);
         files.remove(at, 2);
     }
+    QString dumpDirectory;
+    if (const int at = int(files.indexOf(QStringLiteral("--dump")));
+        at >= 0 && at + 1 < files.size()) {
+        dumpDirectory = files[at + 1];
+        files.remove(at, 2);
+    }
     int failures = 0;
     for (const QString &path : files) {
         QString error;
         const auto mesh = finbook::bench::meshFile(path, error, density);
-        QJsonObject row = mesh ? finbook::bench::measureBend(mesh->first, mesh->second, 45.0)
-                               : QJsonObject{{QStringLiteral("error"), error}};
+        QJsonObject row =
+            mesh ? finbook::bench::measureBend(mesh->first, mesh->second, 45.0, dumpDirectory)
+                 : QJsonObject{{QStringLiteral("error"), error}};
         row.insert(QStringLiteral("file"), QFileInfo(path).fileName());
         failures += row.contains(QStringLiteral("error")) ? 1 : 0;
         printRow(row);
@@ -228,18 +279,23 @@ int benchArap(const QStringList &args)
         }
     }
     for (const int n : sizes) {
-        if (n < 9 || runSize(n) != 0) {
-            std::fprintf(stderr, "arap: size %d failed\n", n);
-            return 1;
+        for (const bool sixPercent : {false, true}) {
+            if (n < 9 || runSize(n, sixPercent) != 0) {
+                std::fprintf(stderr, "arap: size %d failed\n", n);
+                return 1;
+            }
         }
     }
+    const int dump = int(args.indexOf(QStringLiteral("--dump")));
+    const QString dumpDirectory = dump >= 0 && dump + 1 < args.size() ? args[dump + 1] : QString();
     for (const int n : bars)
-        runBar(std::max(9, n));
+        runBar(std::max(9, n), dumpDirectory);
     return 0;
 }
 
 } // namespace
 
 FINBOOK_BENCH("arap",
-              "[--sizes 2000,20000,100000] [--bars 2000,20000] | --quality [--density D] FILE...",
+              "[--sizes 2000,20000,100000] [--bars 2000,20000] [--dump DIR] | --quality "
+              "[--density D] [--dump DIR] FILE...",
               benchArap);

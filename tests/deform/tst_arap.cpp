@@ -16,10 +16,14 @@ using finbook::test::GridMesh;
 
 namespace {
 
+// These tests are about the paper's method (the three-argument solve, uniform weights, as
+// Deform → Rigidity → As in the Paper precomputes it); the refined method's are in
+// tst_arap_refine and tst_arap_cotangent.
 std::shared_ptr<const ArapPrecompute> precompute(const Eigen::MatrixX2d &V,
                                                  const Eigen::MatrixX3i &F,
                                                  const Eigen::VectorXi &b, ArapOptions options = {})
 {
+    options.method = ArapMethod::TwoStep;
     auto result = arapPrecompute(V, F, b, options);
     if (!result)
         qWarning("precompute failed: %s", result.error().message.c_str());

@@ -8,10 +8,18 @@
 //   step 2b  scale adjustment: graph-Laplacian solve H00 u = f, x+iy as one complex
 //            right-hand side against the real factor
 //
-// Refinement (ArapMethod::Refined, the default): more 2a/2b passes from step 1, which is one
-// local/global iteration of uniform-weight ARAP, accelerated (over-relaxation, then Anderson
-// acceleration with an energy safeguard): a budgeted number per drag event, to convergence
-// for a stored pose; then flipped triangles are repaired by local relaxation.
+// Refinement (ArapMethod::Refined, the default): step 1, then local/global iterations of the
+// standard, cotangent-weighted ARAP energy Σ_t area_t ‖J_t − R_t‖²_F (Sorkine & Alexa 2007,
+// Liu et al. 2008; libigl's ELEMENTS energy): 2a fits each triangle's rotation to its
+// cotangent-weighted edge covariance and 2b solves with the cotangent Laplacian, so the first
+// pass is the paper's two steps with step 2 in those weights. The passes are accelerated
+// (over-relaxation, then Anderson acceleration with an energy safeguard): a budgeted number
+// per drag event, to convergence for a stored pose; then flipped triangles are repaired by
+// local relaxation of the same energy. The cotangent weight of an edge is negative where the
+// angles opposite it add up to more than 180° (a non-Delaunay edge, or a boundary edge facing an
+// obtuse angle); the CDT meshes the app builds have none, and where one occurs it is kept as
+// it is: the energy is still a sum of per-triangle squares area·‖J − R‖², so both systems
+// stay positive definite and every pass still lowers it.
 //
 // Pins are resolved per connected component of the mesh: one with ≥ 2 distinct pinned
 // vertices gets the full solve, one with one pinned vertex translates with it, one with no
@@ -35,10 +43,11 @@ namespace finbook::deform {
 
 // What a pose is solved with (the Deform → Rigidity setting).
 enum class ArapMethod {
-    // Igarashi 2005 exactly: steps 1, 2a, 2b, then ArapOptions::extraPasses more 2a/2b
-    // passes, the same while dragging and when stored. No flip fix.
+    // Igarashi 2005 exactly: steps 1, 2a, 2b (uniform weights, as in the paper), then
+    // ArapOptions::extraPasses more 2a/2b passes, the same while dragging and when stored.
+    // No flip fix.
     TwoStep,
-    // Step 1, then accelerated local/global passes toward the uniform-weight ARAP optimum:
+    // Step 1, then accelerated local/global passes toward the cotangent-weighted ARAP optimum:
     // dragPasses of them per drag event, to convergence for a final (stored) pose; flipped
     // triangles that the optimum does not force are repaired.
     Refined,
@@ -68,10 +77,15 @@ struct ArapOptions {
     // drawings with nearly rigid optima need them: 32 left one at 1.57× the converged energy).
     int minDragPasses = 2;
     int maxDragPasses = 64;
-    // Refined, Final: stop when no vertex moved more than this fraction of the object size
-    // (diagonal of the solved components' bounding box) in a pass, or after finalPassCap.
+    // Refined, Final: stop when no vertex moved more than finalTolerance × the object size
+    // (diagonal of the solved components' bounding box) in a pass and the pass before lowered
+    // the energy by no more than finalEnergyTolerance of it (0: not checked), or after
+    // finalPassCap.
     double finalTolerance = 1e-6;
-    int finalPassCap = 400;
+    double finalEnergyTolerance = 1e-7;
+    // 400 left thin drawings meshed at ~20k vertices (slow, low-frequency rotation fields) up
+    // to 1.06× the converged cotangent energy.
+    int finalPassCap = 1000;
     // Refined: look for flipped triangles after a solve and repair those that the ARAP
     // optimum does not force: a drag pose gets up to dragPasses / 8 more passes (from 3
     // drag passes on) while the count of flips still falls, then every pose a bounded local
@@ -114,11 +128,18 @@ struct ArapPrecompute {
     Eigen::VectorXcd entryRest;  // per entry of b: rest position of its vertex, x+iy
     Eigen::VectorXcd rest;       // n rest positions x+iy, internal order
 
-    Eigen::MatrixX3i triangles;        // triangles of solved components, internal indices
-    Eigen::MatrixX3cd restCentered;    // their rest corners minus the rest centroid
+    Eigen::MatrixX3i triangles;     // triangles of solved components, internal indices
+    Eigen::MatrixX3cd restCentered; // their rest corners minus the rest centroid
+    // Per triangle and corner k: the weight w_k of the edge opposite k (½ cot of the angle at
+    // k for Refined, 1 for TwoStep), and ⅓ Σ_j w_kj (v_k − v_j) over the two edges at k, which
+    // is restCentered for uniform weights. Step 2a's covariance is Σ conj(restWeighted_k)·p_k
+    // and step 2b's right-hand side gathers 3·R·restWeighted_k.
+    Eigen::MatrixX3d edgeWeight;
+    Eigen::MatrixX3cd restWeighted;
     Eigen::VectorXd collapseThreshold; // below this |Σ conj(r)·p| the step-1 triangle collapsed
-    Eigen::VectorXd restSquaredNorm;   // Σ_k |r_k|² per triangle, for the energy
+    Eigen::VectorXd restSquaredNorm;   // Σ_k w_k |rest edge opposite k|² per triangle
     Eigen::VectorXd restDoubleArea;    // signed, in the triangle's own corner order
+    int negativeWeightEdges = 0;       // edges whose assembled weight is below 0 (see above)
     // Corners around each free vertex, for gathering step 2's right-hand side per vertex:
     // those of free vertex i are cornerStart(i) … cornerStart(i + 1) − 1.
     Eigen::VectorXi cornerStart;    // freeCount + 1
@@ -134,7 +155,7 @@ struct ArapPrecompute {
     // 32 handles: then applying it would cost more than step 1 back-substituting per event.
     Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
         stepOneBasis;
-    RealMatrix stepTwoMatrix;   // H00 (uniform-weight graph Laplacian), both halves
+    RealMatrix stepTwoMatrix;   // H00 (the edge-weighted Laplacian: cotangent or uniform)
     RealMatrix stepTwoCoupling; // H01, freeCount × handles
     // L of H00 = LLᵀ, compressed columns with the diagonal first in each (what the step-2
     // back-substitution kernel walks), and 1 / diag(L).
@@ -174,6 +195,9 @@ struct ArapSolveReport {
     bool converged = false;    // Final: the tolerance was met before options.finalPassCap
     int flippedTriangles = 0;  // flipped triangles in the returned pose
     int repairedTriangles = 0; // flipped triangles the repair turned back (fixFlips)
+    // Refined: how much the last accelerated pass lowered the energy, relative to it (before
+    // the flip repair, which only lowers it further).
+    double lastEnergyChange = 0.0;
 };
 
 using ArapPrecomputeResult = Expected<std::shared_ptr<const ArapPrecompute>, DeformError>;
@@ -192,7 +216,8 @@ ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::Matr
 
 // bc  k×2 targets, one row per entry of b as passed to arapPrecompute. U  out n×2 deformed
 // positions (resized). Steps 1, 2a, 2b, then options.extraPasses × (2a, 2b), whatever
-// options.method says (the paper's method, as before ArapMethod existed).
+// options.method says (the paper's method, as before ArapMethod existed; with a Refined
+// precompute step 2 uses its cotangent weights).
 // Allocation-free after the first call on a thread (per-thread scratch buffers).
 // Errors: SizeMismatch, NonFiniteInput, CoordinateOutOfRange, SolveFailed; U is left
 // unspecified on error.
@@ -203,10 +228,10 @@ ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc
 // bits for the same pins and precompute, on any thread, whatever was solved before):
 //   TwoStep            steps 1, 2a, 2b + options.extraPasses, for both stages;
 //   Refined, Drag      step 1 or coarse rotations + dragPasses accelerated passes, flip fix;
-//   Refined, Final     step 1 + accelerated passes until no vertex moves more than
-//                      options.finalTolerance × objectSize (or finalPassCap), flip repair.
-// Final costs about estimatedPassMs per pass; drawings of ~2k vertices took 17–400 passes
-// (median 80, 2–90 ms on a busy 2-core machine) in `finbook-bench arap --quality`, so run it
+//   Refined, Final     the same start + accelerated passes until converged (see
+//                      ArapOptions::finalTolerance; or finalPassCap), flip repair.
+// Final costs about estimatedPassMs per pass; drawings of ~2k vertices took 1–400 passes
+// (median 51, 35 ms on a very busy 2-core machine) in `finbook-bench arap --quality`, so run it
 // on a worker when estimatedPassMs × finalPassCap exceeds a frame. `cancelled` is polled
 // between passes (Final only); then the result is DeformErrorCode::Cancelled.
 // Errors as the three-argument form, plus Cancelled.
@@ -225,9 +250,17 @@ ArapSolveResult arapSimilarity(const ArapPrecompute &data, const Eigen::MatrixX2
 void arapStepTwoBacksubstitute(const ArapPrecompute &data, Eigen::Ref<Eigen::VectorXcd> x);
 
 // Uniform-weight ARAP energy Σ_t Σ_edges(i→j) |(u_j − u_i) − R_t (v_j − v_i)|² with the best
-// rotation R_t per triangle: the energy step 2 and every extra pass cannot increase.
+// rotation R_t per triangle: the energy the paper's step 2 and its extra passes cannot increase.
 // V  n×2 rest, F  m×3, U  n×2 deformed; indices must be valid.
 double arapEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Eigen::MatrixX2d &U);
+
+// The standard ARAP energy Σ_t area_t ‖J_t − R_t‖²_F (J_t the triangle's deformation
+// gradient, R_t its closest rotation), which equals Σ_t Σ_edges ½ cot(opposite angle)·
+// |(u_j − u_i) − R_t (v_j − v_i)|²: what ArapMethod::Refined minimises, independent of how the
+// shape was triangulated. Computed from J directly. Same requirements as arapEnergy, and rest
+// triangles of non-zero area.
+double arapCotangentEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                           const Eigen::MatrixX2d &U);
 
 // Triangles of F whose signed area in U has the strictly opposite sign to the one in V:
 // turned inside out (collapsed ones do not count). Same requirements as arapEnergy.
