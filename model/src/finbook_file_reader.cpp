@@ -8,6 +8,7 @@
 #include "finbook_file_reader.h"
 
 #include "io/crc32c.h"
+#include "skeleton/join_resolution.h"
 
 #include <finbook/model/skeleton/skeleton_join.h>
 
@@ -76,11 +77,52 @@ void Reader::charge(Cursor &c, qint64 bytes)
                    .arg(m_budget >> 20));
 }
 
+namespace {
+// Whether the file's first section (at the cursor, just after the header) ends in a matching
+// checksum, as from format 2 on.
+bool firstSectionHasCrc(const Cursor &c)
+{
+    if (c.remaining() < kSectionHeaderBytes + kSectionCrcBytes)
+        return false;
+    const char *p = c.position();
+    const quint64 length = qFromLittleEndian<quint64>(p + 4);
+    if (length > c.remaining() - kSectionHeaderBytes - kSectionCrcBytes)
+        return false;
+    const std::size_t covered = kSectionHeaderBytes + std::size_t(length);
+    return qFromLittleEndian<quint32>(p + covered) == io::crc32c(0, p, covered);
+}
+
+// Whether the file ends with its end marker ("FEND", length 0, and from format 2 on its
+// checksum): then it is complete, and a section running past its end has a damaged length.
+bool endsWithEndMarker(const QByteArray &bytes)
+{
+    const qsizetype head = qsizetype(kHeaderBytes);
+    if (bytes.size() < head + qsizetype(kSectionHeaderBytes))
+        return false;
+    const bool hasCrc = qFromLittleEndian<quint32>(bytes.constData() + 8) >= kFirstVersionWithCrc;
+    const qsizetype marker = qsizetype(kSectionHeaderBytes + (hasCrc ? kSectionCrcBytes : 0));
+    if (bytes.size() < head + marker)
+        return false;
+    const char *p = bytes.constData() + bytes.size() - marker;
+    if (qFromLittleEndian<quint32>(p) != kTagEnd || qFromLittleEndian<quint64>(p + 4) != 0)
+        return false;
+    return !hasCrc || qFromLittleEndian<quint32>(p + kSectionHeaderBytes) ==
+                          io::crc32c(0, p, kSectionHeaderBytes);
+}
+} // namespace
+
 LoadedDocument Reader::read(const QByteArray &bytes)
 {
-    Cursor c(bytes.constData(), bytes.constData() + bytes.size(), &m_where);
+    Cursor c(bytes.constData(), bytes.constData() + bytes.size(), &m_where,
+             !endsWithEndMarker(bytes));
     // Header problems need no location: they are about the file as a whole.
-    m_version = readHeader(c);
+    m_version = readHeader(c, recovering());
+    if (m_version < kOldestVersion || m_version > kFinbookFormatVersion) {
+        // Recovering a file whose version word is damaged: read it as the version its first
+        // section's checksum says it has.
+        problem(c, FileErrorCode::Damaged, damagedVersion(m_version));
+        m_version = firstSectionHasCrc(c) ? kFinbookFormatVersion : kOldestVersion;
+    }
     readSections(c);
     m_doc.formatVersion = m_version;
     if (m_version < kFinbookFormatVersion)
@@ -88,7 +130,16 @@ LoadedDocument Reader::read(const QByteArray &bytes)
     return std::move(m_doc);
 }
 
-quint32 Reader::readHeader(Cursor &c)
+QString Reader::damagedVersion(quint32 version)
+{
+    return FinbookFile::tr("its format version %1 is not one any Finbook writes (this version "
+                           "reads %2 to %3), so the version number is damaged")
+        .arg(version)
+        .arg(kOldestVersion)
+        .arg(kFinbookFormatVersion);
+}
+
+quint32 Reader::readHeader(Cursor &c, bool tolerateDamagedVersion)
 {
     if (c.atEnd())
         c.fail(FileErrorCode::NotFinbook, FinbookFile::tr("the file is empty"));
@@ -99,16 +150,17 @@ quint32 Reader::readHeader(Cursor &c)
     if (n < sizeof(kMagic))
         c.fail(FileErrorCode::Truncated, FinbookFile::tr("the file ends inside its header"));
     const quint32 version = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "the format version"));
-    if (version > kFinbookFormatVersion)
+    // Formats change a few times in years: only the next few versions are a newer Finbook's.
+    // Anything else (a flipped bit makes 0, 6, 10, … 2^31 + 2) is damage.
+    if (version > kFinbookFormatVersion && version <= kFinbookFormatVersion + kNewerVersionsKnown)
         c.fail(FileErrorCode::NewerVersion,
                FinbookFile::tr(
                    "it was made by a newer version of Finbook (file format %1; this version "
                    "reads up to %2); please update Finbook to open it")
                    .arg(version)
                    .arg(kFinbookFormatVersion));
-    if (version < kOldestVersion)
-        c.fail(FileErrorCode::BadValue,
-               FinbookFile::tr("the format version %1 does not exist").arg(version));
+    if ((version < kOldestVersion || version > kFinbookFormatVersion) && !tolerateDamagedVersion)
+        c.fail(FileErrorCode::Damaged, damagedVersion(version));
     return version;
 }
 
@@ -150,6 +202,13 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
             problem(c, FileErrorCode::Truncated, FinbookFile::tr("the file's end is damaged"));
             return false;
         }
+        if (!recovering() && !c.endIsFileEnd())
+            c.fail(FileErrorCode::Damaged,
+                   FinbookFile::tr("its length (%1 bytes) runs past the end of the file (%2 bytes "
+                                   "left), yet the file ends with its end marker, so the length "
+                                   "is damaged")
+                       .arg(length)
+                       .arg(c.remaining()));
         if (!recovering())
             c.fail(
                 FileErrorCode::Truncated,
@@ -298,9 +357,23 @@ void Reader::finish(Cursor &c)
     std::vector<Id>().swap(m_ids);
     // Joins are stored, anchors derived: every reader of the file sees them resolved, as a
     // Document holding these frames would have them.
-    const auto resolveAll = [this] {
-        for (Frame &f : m_doc.frames)
-            resolveJoins(f);
+    const auto resolveAll = [this, &c] {
+        // Bounded: a file must not make opening cost more than its size can honestly ask
+        // (parts on a huge skeleton at points nearly equally near thousands of its bones).
+        std::int64_t budget = join_detail::joinWorkAllowance(m_doc.frames);
+        for (std::size_t k = 0; k < m_doc.frames.size(); ++k) {
+            Frame &f = m_doc.frames[k];
+            if (join_detail::resolveJoinsWithin(f, budget))
+                continue;
+            m_where.frame = int(k + 1);
+            problem(c, FileErrorCode::TooLarge,
+                    FinbookFile::tr("its parts are joined in a way too costly to work out"));
+            for (StrokeGroup &g : f.groups) { // recovering: the parts stand alone
+                g.rig.skeleton.join = {};
+                g.rig.skeleton.anchor = {};
+            }
+            m_where.frame = 0;
+        }
     };
     if (recovering()) {
         if (m_idsClash)
