@@ -38,11 +38,13 @@ Versions saveTwice(Document &doc, const QString &path)
     if (saveFinbook(doc, path))
         return {};
     v.first = fileBytes(path);
-    doc.setFrameHold(doc.frameAt(0).id, 2);
+    doc.setFrameHold(doc.frameAt(0).id, 7);
     if (saveFinbook(doc, path))
         return {};
     v.second = fileBytes(path);
-    doc.setFrameHold(doc.frameAt(0).id, 3);
+    doc.setFrameHold(doc.frameAt(0).id, 9);
+    if (v.first == v.second)
+        return {}; // three different versions, or nothing is shown
     return v;
 }
 
