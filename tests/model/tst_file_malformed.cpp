@@ -4,6 +4,7 @@
 #include "tst_file_sample.h"
 
 #include <QRandomGenerator>
+#include <QTemporaryDir>
 
 #include <limits>
 
@@ -192,6 +193,20 @@ void TestFileMalformed::flippedVersionBitsAreDamage()
         QCOMPARE(problems.size(), 1);
     }
     QCOMPARE(newer, 1);
+    // From disk too: File > Open refuses it after its header; Open Anyway reads past it.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("flipped.finbook"));
+    QByteArray bytes = valid;
+    putU32(bytes, 8, kFinbookFormatVersion ^ 0x100u);
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size());
+    file.close();
+    const auto refused = loadFinbook(path);
+    QVERIFY(!refused);
+    QCOMPARE(refused.error().code, FileErrorCode::Damaged);
+    QStringList problems;
+    QVERIFY(loadFinbookRecovering(path, &problems));
+    QCOMPARE(problems.size(), 1);
 }
 
 // A length that runs past the end of a file that is complete (it ends with its end marker) is
