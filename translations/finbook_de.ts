@@ -961,207 +961,207 @@
         <translation>die Datei beschreibt mehr, als eine Datei ihrer Größe enthalten kann (zum Öffnen wären mehr als %1 MB Arbeitsspeicher nötig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="45"/>
         <source>its format version %1 is not one any Finbook writes (this version reads %2 to %3), so the version number is damaged</source>
         <translation>ihre Formatversion %1 schreibt kein Finbook (diese Version liest %2 bis %3), also ist die Versionsnummer beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="55"/>
         <source>the file is empty</source>
         <translation>die Datei ist leer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="57"/>
         <source>the file header</source>
         <translation>der Dateikopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="59"/>
         <source>it is not a Finbook animation</source>
         <translation>die Datei ist keine Finbook-Animation</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="61"/>
         <source>the file ends inside its header</source>
         <translation>die Datei endet mitten im Dateikopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="152"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="62"/>
         <source>the format version</source>
         <translation>die Formatversion</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="67"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>die Datei wurde mit einer neueren Finbook-Version erstellt (Dateiformat %1; diese Version liest bis %2); bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="112"/>
         <source>the file&apos;s section list</source>
         <translation>die Abschnittsliste der Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="115"/>
         <source>the file ends before its end</source>
         <translation>die Datei endet vorzeitig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="120"/>
         <source>a section header</source>
         <translation>ein Abschnittskopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
         <source>section %1</source>
         <translation>Abschnitt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
         <source>the file&apos;s end is damaged</source>
         <translation>das Ende der Datei ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>ihre Länge (%1 Bytes) reicht über das Dateiende hinaus (%2 Bytes übrig), obwohl die Datei mit ihrer Endmarke endet; die Längenangabe ist also beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>die Datei endet mitten in diesem Abschnitt; sein vorhandener Inhalt wird gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <source>a section</source>
         <translation>ein Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="227"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>die Datei endet vor der Prüfsumme dieses Abschnitts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>a section checksum</source>
         <translation>eine Abschnittsprüfsumme</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="232"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>seine Prüfsumme stimmt nicht, seine Bytes wurden also nach dem Speichern verändert</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <source>the end marker</source>
         <translation>die Endmarke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
         <source>the file</source>
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="351"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="314"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1441,22 +1441,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="395"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="413"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="418"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="427"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>

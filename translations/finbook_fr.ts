@@ -961,207 +961,207 @@
         <translation>il décrit plus de données qu&apos;un fichier de cette taille ne peut en contenir (l&apos;ouvrir demanderait plus de %1&#xa0;Mo de mémoire)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="45"/>
         <source>its format version %1 is not one any Finbook writes (this version reads %2 to %3), so the version number is damaged</source>
         <translation>sa version de format %1 n&apos;est écrite par aucun Finbook (cette version lit de %2 à %3)&#xa0;: le numéro de version est donc endommagé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="55"/>
         <source>the file is empty</source>
         <translation>le fichier est vide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="57"/>
         <source>the file header</source>
         <translation>l&apos;en-tête du fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="59"/>
         <source>it is not a Finbook animation</source>
         <translation>ce n&apos;est pas une animation Finbook</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="61"/>
         <source>the file ends inside its header</source>
         <translation>le fichier s&apos;arrête au milieu de son en-tête</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="152"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="62"/>
         <source>the format version</source>
         <translation>la version du format</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="67"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>il a été créé par une version plus récente de Finbook (format de fichier %1&#xa0;; cette version lit jusqu&apos;au format %2). Mettez Finbook à jour pour l&apos;ouvrir</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="112"/>
         <source>the file&apos;s section list</source>
         <translation>la liste des sections du fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="115"/>
         <source>the file ends before its end</source>
         <translation>le fichier s&apos;arrête avant sa fin prévue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="120"/>
         <source>a section header</source>
         <translation>un en-tête de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
         <source>section %1</source>
         <translation>section %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
         <source>the file&apos;s end is damaged</source>
         <translation>la fin du fichier est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>sa longueur (%1 octets) dépasse la fin du fichier (%2 octets restants), alors que le fichier se termine par sa marque de fin&#xa0;: la longueur est donc endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>le fichier s&apos;arrête au milieu de cette section (%1 octets annoncés, %2 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>le fichier s&apos;arrête au milieu de cette section&#xa0;; ce qu&apos;elle contient est lu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <source>a section</source>
         <translation>une section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="227"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>le fichier s&apos;arrête avant la somme de contrôle de cette section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>a section checksum</source>
         <translation>une somme de contrôle de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="232"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>sa somme de contrôle ne correspond pas, ses octets ont donc changé après l&apos;enregistrement</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <source>the end marker</source>
         <translation>le marqueur de fin</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
         <source>the file</source>
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="351"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="314"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1441,22 +1441,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="395"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="413"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="418"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="427"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>

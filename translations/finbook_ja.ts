@@ -960,207 +960,207 @@
         <translation>このサイズのファイルに収まる量を超える内容が記述されています（開くには %1 MB を超えるメモリが必要です）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="45"/>
         <source>its format version %1 is not one any Finbook writes (this version reads %2 to %3), so the version number is damaged</source>
         <translation>形式バージョン %1 はどの Finbook も書き出さないものです（このバージョンが読めるのは %2 から %3）。バージョン番号が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="55"/>
         <source>the file is empty</source>
         <translation>ファイルが空です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="57"/>
         <source>the file header</source>
         <translation>ファイルヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="59"/>
         <source>it is not a Finbook animation</source>
         <translation>Finbook のアニメーションではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="61"/>
         <source>the file ends inside its header</source>
         <translation>ヘッダーの途中でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="152"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="62"/>
         <source>the format version</source>
         <translation>フォーマットのバージョン</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="67"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>より新しいバージョンの Finbook で作成されています（ファイル形式 %1。このバージョンが読めるのは %2 までです）。開くには Finbook を更新してください</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="112"/>
         <source>the file&apos;s section list</source>
         <translation>ファイルのセクション一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="115"/>
         <source>the file ends before its end</source>
         <translation>本来の終端より前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="120"/>
         <source>a section header</source>
         <translation>セクションヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
         <source>section %1</source>
         <translation>セクション %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
         <source>the file&apos;s end is damaged</source>
         <translation>ファイルの終端が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>長さ（%1 バイト）がファイルの終わりを超えています（残り %2 バイト）が、ファイルは終端マーカーで終わっています。長さの値が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <source>a section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="227"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>a section checksum</source>
         <translation>セクションのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="232"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="241"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <source>the end marker</source>
         <translation>終端マーカー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
         <source>the file</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="351"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="314"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1440,22 +1440,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="395"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="413"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="418"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="427"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>

@@ -28,6 +28,10 @@ public:
     // fails as damage unless `tolerateDamagedVersion` (recovering).
     static quint32 readHeader(Cursor &c, bool tolerateDamagedVersion = false);
     static QString damagedVersion(quint32 version);
+    // Whether the first section (at `c`, after the header) ends in a matching checksum.
+    static bool firstSectionHasCrc(const Cursor &c);
+    // Whether the file ends with its end marker: then it is complete.
+    static bool endsWithEndMarker(const QByteArray &bytes);
 
     // One kind of object chunk: its tag, whether it is a rig (an object carries one rig at
     // most), and how to read it into the object.
