@@ -824,23 +824,28 @@
         <translation>Pose %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="77"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="82"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="85"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="90"/>
+        <source>%1 runs past the end of its record (%2 bytes needed, %3 left), so a length in the file is wrong</source>
+        <translation>%1 reicht über das Ende seines Eintrags hinaus (%2 Bytes benötigt, %3 übrig), also ist eine Längenangabe in der Datei falsch</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="97"/>
         <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
         <translation>%1 ist unvollständig, die Datei endet vorzeitig (%2 Bytes benötigt, %3 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="101"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="113"/>
         <source>%1 claims %2 entries but only %3 bytes remain</source>
         <translation>%1 gibt %2 Einträge an, es sind aber nur noch %3 Bytes übrig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="127"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="139"/>
         <source>%1 has %2 unexpected bytes at its end</source>
         <translation>%1 hat am Ende %2 unerwartete Bytes</translation>
     </message>
@@ -870,27 +875,27 @@
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="245"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="249"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>die Sicherungskopie „%1“ kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="350"/>
         <source>the disk is full</source>
         <translation>der Datenträger ist voll</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="294"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="352"/>
         <source>the disk is read-only</source>
         <translation>der Datenträger ist schreibgeschützt</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="296"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="354"/>
         <source>you do not have permission to write in the folder &quot;%1&quot;</source>
         <translation>Sie haben keine Schreibberechtigung für den Ordner „%1“</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="299"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="357"/>
         <source>the folder &quot;%1&quot; does not exist</source>
         <translation>der Ordner „%1“ existiert nicht</translation>
     </message>
@@ -905,250 +910,260 @@
         <translation>„%1“ kann nicht geöffnet werden: %2. Prüfen Sie, ob die Datei existiert und ob Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="128"/>
         <source>it is a folder</source>
         <translation>es ist ein Ordner</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="161"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>„%1“ kann nicht gelesen werden: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="140"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="172"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>„%1“ kann nicht geöffnet werden. %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>„%1“ kann nicht geöffnet werden: Es ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie eine .finbook-Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="151"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>„%1“ kann nicht geöffnet werden: Für die %2 MB der Datei ist nicht genug Arbeitsspeicher vorhanden. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="216"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="42"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
         <source>unknown %1 %2</source>
         <translation>unbekannter %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="45"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="46"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>die Datei enthält Daten („%1“), die diese Finbook-Version nicht kennt, und wurde daher wohl mit einer neueren Finbook-Version erstellt; bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="65"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="66"/>
         <source>more problems were found and repaired the same way</source>
         <translation>weitere Probleme wurden gefunden und auf dieselbe Weise behoben</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="74"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="75"/>
         <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
         <translation>die Datei beschreibt mehr, als eine Datei ihrer Größe enthalten kann (zum Öffnen wären mehr als %1 MB Arbeitsspeicher nötig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="45"/>
+        <source>its format version %1 is not one any Finbook writes (this version reads %2 to %3), so the version number is damaged</source>
+        <translation>ihre Formatversion %1 schreibt kein Finbook (diese Version liest %2 bis %3), also ist die Versionsnummer beschädigt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_header.cpp" line="55"/>
         <source>the file is empty</source>
         <translation>die Datei ist leer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="57"/>
         <source>the file header</source>
         <translation>der Dateikopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="59"/>
         <source>it is not a Finbook animation</source>
         <translation>die Datei ist keine Finbook-Animation</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="61"/>
         <source>the file ends inside its header</source>
         <translation>die Datei endet mitten im Dateikopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="101"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="62"/>
         <source>the format version</source>
         <translation>die Formatversion</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="104"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="67"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>die Datei wurde mit einer neueren Finbook-Version erstellt (Dateiformat %1; diese Version liest bis %2); bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="111"/>
-        <source>the format version %1 does not exist</source>
-        <translation>die Formatversion %1 gibt es nicht</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="112"/>
         <source>the file&apos;s section list</source>
         <translation>die Abschnittsliste der Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="115"/>
         <source>the file ends before its end</source>
         <translation>die Datei endet vorzeitig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="120"/>
         <source>a section header</source>
         <translation>ein Abschnittskopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
         <source>section %1</source>
         <translation>Abschnitt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
         <source>the file&apos;s end is damaged</source>
         <translation>das Ende der Datei ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="156"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
+        <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
+        <translation>ihre Länge (%1 Bytes) reicht über das Dateiende hinaus (%2 Bytes übrig), obwohl die Datei mit ihrer Endmarke endet; die Längenangabe ist also beschädigt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="160"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>die Datei endet mitten in diesem Abschnitt; sein vorhandener Inhalt wird gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <source>a section</source>
         <translation>ein Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>die Datei endet vor der Prüfsumme dieses Abschnitts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>a section checksum</source>
         <translation>eine Abschnittsprüfsumme</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>seine Prüfsumme stimmt nicht, seine Bytes wurden also nach dem Speichern verändert</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <source>the end marker</source>
         <translation>die Endmarke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
         <source>the file</source>
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="191"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="240"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
+        <source>its parts are joined in a way too costly to work out</source>
+        <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
@@ -1426,22 +1441,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="340"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="354"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>

@@ -824,23 +824,28 @@
         <translation>pose %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="77"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="82"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
         <source>%1: %2</source>
         <translation>%1&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="85"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="90"/>
+        <source>%1 runs past the end of its record (%2 bytes needed, %3 left), so a length in the file is wrong</source>
+        <translation>%1 dépasse la fin de son enregistrement (%2 octets nécessaires, %3 restants)&#xa0;: une longueur dans le fichier est donc fausse</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="97"/>
         <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
         <translation>le fichier s&apos;arrête dans %1 (%2 octets nécessaires, %3 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="101"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="113"/>
         <source>%1 claims %2 entries but only %3 bytes remain</source>
         <translation>%1 annonce %2 entrées, mais il ne reste que %3 octets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="127"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="139"/>
         <source>%1 has %2 unexpected bytes at its end</source>
         <translation>%1 se termine par %2 octets inattendus</translation>
     </message>
@@ -870,27 +875,27 @@
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="245"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="249"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>la sauvegarde «&#xa0;%1&#xa0;» ne peut pas être écrite (%2)</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="350"/>
         <source>the disk is full</source>
         <translation>le disque est plein</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="294"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="352"/>
         <source>the disk is read-only</source>
         <translation>le disque est en lecture seule</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="296"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="354"/>
         <source>you do not have permission to write in the folder &quot;%1&quot;</source>
         <translation>vous n&apos;avez pas le droit d&apos;écrire dans le dossier «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="299"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="357"/>
         <source>the folder &quot;%1&quot; does not exist</source>
         <translation>le dossier «&#xa0;%1&#xa0;» n&apos;existe pas</translation>
     </message>
@@ -905,250 +910,260 @@
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: %2. Vérifiez que le fichier existe et que vous avez le droit de le lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="128"/>
         <source>it is a folder</source>
         <translation>c&apos;est un dossier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="161"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>Impossible de lire «&#xa0;%1&#xa0;»&#xa0;: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="140"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="172"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;». %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: c&apos;est un périphérique, un tube ou un socket, pas un fichier. Choisissez un fichier .finbook.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="151"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante pour ses %2&#xa0;Mo. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="216"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="42"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
         <source>unknown %1 %2</source>
         <translation>%1 %2 de type inconnu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="45"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="46"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>il contient des données («&#xa0;%1&#xa0;») que cette version de Finbook ne connaît pas&#xa0;; il a sans doute été créé par une version plus récente. Mettez Finbook à jour pour l&apos;ouvrir</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="65"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="66"/>
         <source>more problems were found and repaired the same way</source>
         <translation>d&apos;autres problèmes ont été trouvés et réparés de la même façon</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="74"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="75"/>
         <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
         <translation>il décrit plus de données qu&apos;un fichier de cette taille ne peut en contenir (l&apos;ouvrir demanderait plus de %1&#xa0;Mo de mémoire)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="45"/>
+        <source>its format version %1 is not one any Finbook writes (this version reads %2 to %3), so the version number is damaged</source>
+        <translation>sa version de format %1 n&apos;est écrite par aucun Finbook (cette version lit de %2 à %3)&#xa0;: le numéro de version est donc endommagé</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_header.cpp" line="55"/>
         <source>the file is empty</source>
         <translation>le fichier est vide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="57"/>
         <source>the file header</source>
         <translation>l&apos;en-tête du fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="59"/>
         <source>it is not a Finbook animation</source>
         <translation>ce n&apos;est pas une animation Finbook</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="61"/>
         <source>the file ends inside its header</source>
         <translation>le fichier s&apos;arrête au milieu de son en-tête</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="101"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="62"/>
         <source>the format version</source>
         <translation>la version du format</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="104"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="67"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>il a été créé par une version plus récente de Finbook (format de fichier %1&#xa0;; cette version lit jusqu&apos;au format %2). Mettez Finbook à jour pour l&apos;ouvrir</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="111"/>
-        <source>the format version %1 does not exist</source>
-        <translation>la version de format %1 n&apos;existe pas</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="112"/>
         <source>the file&apos;s section list</source>
         <translation>la liste des sections du fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="115"/>
         <source>the file ends before its end</source>
         <translation>le fichier s&apos;arrête avant sa fin prévue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="120"/>
         <source>a section header</source>
         <translation>un en-tête de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
         <source>section %1</source>
         <translation>section %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
         <source>the file&apos;s end is damaged</source>
         <translation>la fin du fichier est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="156"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
+        <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
+        <translation>sa longueur (%1 octets) dépasse la fin du fichier (%2 octets restants), alors que le fichier se termine par sa marque de fin&#xa0;: la longueur est donc endommagée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>le fichier s&apos;arrête au milieu de cette section (%1 octets annoncés, %2 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="160"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>le fichier s&apos;arrête au milieu de cette section&#xa0;; ce qu&apos;elle contient est lu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <source>a section</source>
         <translation>une section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>le fichier s&apos;arrête avant la somme de contrôle de cette section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>a section checksum</source>
         <translation>une somme de contrôle de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>sa somme de contrôle ne correspond pas, ses octets ont donc changé après l&apos;enregistrement</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <source>the end marker</source>
         <translation>le marqueur de fin</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
         <source>the file</source>
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="191"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="240"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
+        <source>its parts are joined in a way too costly to work out</source>
+        <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
@@ -1426,22 +1441,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="340"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="354"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>

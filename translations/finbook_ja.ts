@@ -823,23 +823,28 @@
         <translation>ポーズ %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="77"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="82"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="85"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="90"/>
+        <source>%1 runs past the end of its record (%2 bytes needed, %3 left), so a length in the file is wrong</source>
+        <translation>%1 がレコードの終わりを超えています（%2 バイト必要、残り %3 バイト）。ファイル内の長さの値が誤っています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="97"/>
         <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
         <translation>%1 の途中でファイルが終わっています（%2 バイト必要ですが、残りは %3 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="101"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="113"/>
         <source>%1 claims %2 entries but only %3 bytes remain</source>
         <translation>%1 には %2 個の項目があるはずですが、残りは %3 バイトしかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="127"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="139"/>
         <source>%1 has %2 unexpected bytes at its end</source>
         <translation>%1 の末尾に予期しない %2 バイトがあります</translation>
     </message>
@@ -869,27 +874,27 @@
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="245"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="249"/>
         <source>the backup &quot;%1&quot; cannot be written (%2)</source>
         <translation>バックアップ「%1」を書き込めません（%2）</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="292"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="350"/>
         <source>the disk is full</source>
         <translation>ディスクがいっぱいです</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="294"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="352"/>
         <source>the disk is read-only</source>
         <translation>ディスクが読み取り専用です</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="296"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="354"/>
         <source>you do not have permission to write in the folder &quot;%1&quot;</source>
         <translation>フォルダー「%1」に書き込む権限がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/io/atomic_file.cpp" line="299"/>
+        <location filename="../model/src/io/atomic_file.cpp" line="357"/>
         <source>the folder &quot;%1&quot; does not exist</source>
         <translation>フォルダー「%1」が存在しません</translation>
     </message>
@@ -904,250 +909,260 @@
         <translation>「%1」を開けません: %2。ファイルが存在し、読み取る権限があることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="128"/>
         <source>it is a folder</source>
         <translation>フォルダーです</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="161"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>「%1」を読み込めません: %2。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="140"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="172"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>「%1」を開けません。%2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>「%1」を開けません: ファイルではなく、デバイス、パイプ、またはソケットです。.finbook ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="151"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="216"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="42"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
         <source>unknown %1 %2</source>
         <translation>不明な%1 %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="45"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="46"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>このバージョンの Finbook が知らないデータ（「%1」）が含まれているため、より新しい Finbook で作成されたと思われます。開くには Finbook を更新してください</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="65"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="66"/>
         <source>more problems were found and repaired the same way</source>
         <translation>ほかにも問題が見つかり、同じ方法で修復しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="74"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="75"/>
         <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
         <translation>このサイズのファイルに収まる量を超える内容が記述されています（開くには %1 MB を超えるメモリが必要です）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="94"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="45"/>
+        <source>its format version %1 is not one any Finbook writes (this version reads %2 to %3), so the version number is damaged</source>
+        <translation>形式バージョン %1 はどの Finbook も書き出さないものです（このバージョンが読めるのは %2 から %3）。バージョン番号が破損しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_header.cpp" line="55"/>
         <source>the file is empty</source>
         <translation>ファイルが空です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="57"/>
         <source>the file header</source>
         <translation>ファイルヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="59"/>
         <source>it is not a Finbook animation</source>
         <translation>Finbook のアニメーションではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="61"/>
         <source>the file ends inside its header</source>
         <translation>ヘッダーの途中でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="101"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="62"/>
         <source>the format version</source>
         <translation>フォーマットのバージョン</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="104"/>
+        <location filename="../model/src/finbook_file_header.cpp" line="67"/>
         <source>it was made by a newer version of Finbook (file format %1; this version reads up to %2); please update Finbook to open it</source>
         <translation>より新しいバージョンの Finbook で作成されています（ファイル形式 %1。このバージョンが読めるのは %2 までです）。開くには Finbook を更新してください</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="111"/>
-        <source>the format version %1 does not exist</source>
-        <translation>フォーマットのバージョン %1 は存在しません</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="112"/>
         <source>the file&apos;s section list</source>
         <translation>ファイルのセクション一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="115"/>
         <source>the file ends before its end</source>
         <translation>本来の終端より前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="135"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="120"/>
         <source>a section header</source>
         <translation>セクションヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
         <source>section %1</source>
         <translation>セクション %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
         <source>the file&apos;s end is damaged</source>
         <translation>ファイルの終端が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="156"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
+        <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
+        <translation>長さ（%1 バイト）がファイルの終わりを超えています（残り %2 バイト）が、ファイルは終端マーカーで終わっています。長さの値が破損しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="160"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <source>a section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>a section checksum</source>
         <translation>セクションのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
         <source>the end marker</source>
         <translation>終端マーカー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
         <source>the file</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="191"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="240"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
+        <source>its parts are joined in a way too costly to work out</source>
+        <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
@@ -1425,22 +1440,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="340"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="354"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>

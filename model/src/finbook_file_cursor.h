@@ -52,10 +52,14 @@ struct Where {
 
 class Cursor {
 public:
-    Cursor(const char *begin, const char *end, const Where *where)
+    // `endIsFileEnd`: running out of bytes here can mean the file was cut short. Not so inside
+    // a record that ends before the file does, nor in a file that ends with its end marker:
+    // there a length that runs past the end is damage, not an incomplete file.
+    Cursor(const char *begin, const char *end, const Where *where, bool endIsFileEnd = true)
         : m_p(begin)
         , m_end(end)
         , m_where(where)
+        , m_endIsFileEnd(endIsFileEnd)
     {}
 
     std::size_t remaining() const { return std::size_t(m_end - m_p); }
@@ -69,6 +73,7 @@ public:
             m_p = p;
     }
     bool atEnd() const { return m_p == m_end; }
+    bool endIsFileEnd() const { return m_endIsFileEnd; }
 
     [[noreturn]] void fail(FileErrorCode code, const QString &what) const
     {
@@ -80,6 +85,13 @@ public:
     // The next `n` bytes, or a Truncated failure naming `what` was cut off.
     const char *take(std::size_t n, const char *what)
     {
+        if (n > remaining() && !m_endIsFileEnd)
+            fail(FileErrorCode::BadValue,
+                 FinbookFile::tr("%1 runs past the end of its record (%2 bytes needed, %3 left), "
+                                 "so a length in the file is wrong")
+                     .arg(FinbookFile::tr(what))
+                     .arg(n)
+                     .arg(remaining()));
         if (n > remaining())
             fail(FileErrorCode::Truncated,
                  FinbookFile::tr("the file ends inside %1 (%2 bytes needed, %3 left)")
@@ -109,7 +121,7 @@ public:
     Cursor record(std::size_t length, const char *what)
     {
         const char *begin = take(length, what);
-        return Cursor(begin, begin + length, m_where);
+        return Cursor(begin, begin + length, m_where, m_endIsFileEnd && begin + length == m_end);
     }
 
     quint8 u8(const char *what) { return quint8(*take(1, what)); }
@@ -133,6 +145,7 @@ private:
     const char *m_p;
     const char *m_end;
     const Where *m_where;
+    bool m_endIsFileEnd;
 };
 
 } // namespace finbook::model::file_format

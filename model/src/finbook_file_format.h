@@ -57,6 +57,9 @@ static_assert(std::endian::native == std::endian::little ||
 constexpr char kMagic[8] = {'\x89', 'F', 'B', 'K', '\r', '\n', '\x1a', '\n'};
 constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4;
 constexpr quint32 kOldestVersion = 1;
+// Versions up to kFinbookFormatVersion + this are "made by a newer Finbook"; any other
+// version word is damage (one flipped bit turns 2 into 3, 0, 6, 10, …, 2^31 + 2).
+constexpr quint32 kNewerVersionsKnown = 2;
 
 constexpr quint32 tag(const char (&name)[5])
 {

@@ -108,8 +108,9 @@ qint64 readFully(int fd, char *into, qint64 size)
 
 // The bytes of the .finbook at `path`. Only a regular file is read (a pipe or a device could
 // block or never end), and only after its first bytes proved it a .finbook of a version this
-// Finbook reads: a 10 GB video or a newer file is refused after 12 bytes.
-Expected<QByteArray, FileError> readFinbookBytes(const QString &path)
+// Finbook reads: a 10 GB video or a newer file is refused after 12 bytes. So is a damaged
+// version word, unless `recovering` ("open anyway" reads past it).
+Expected<QByteArray, FileError> readFinbookBytes(const QString &path, bool recovering = false)
 {
     // O_NONBLOCK: opening a pipe nobody writes to would otherwise wait for ever.
     const int fd =
@@ -135,7 +136,8 @@ Expected<QByteArray, FileError> readFinbookBytes(const QString &path)
     const qint64 headBytes = readFully(fd, head, qint64(sizeof(head)));
     if (headBytes < 0)
         return unexpected(cannotOpen(path, QString::fromLocal8Bit(std::strerror(errno))));
-    if (auto failure = file_format::checkHeader(QByteArrayView(head, headBytes)))
+    if (auto failure = file_format::checkHeader(QByteArrayView(head, headBytes));
+        failure && !(recovering && failure->code == FileErrorCode::Damaged))
         return unexpected(FileError{
             failure->code, FinbookFile::tr("Cannot open \"%1\". %2")
                                .arg(displayName(path),
@@ -189,7 +191,7 @@ Expected<LoadedDocument, FileError> loadFinbook(const QString &path)
 Expected<LoadedDocument, FileError> loadFinbookRecovering(const QString &path,
                                                           QStringList *problems)
 {
-    auto bytes = readFinbookBytes(path);
+    auto bytes = readFinbookBytes(path, true);
     if (!bytes)
         return unexpected(bytes.error());
     return withPath(path, recoverFinbook(*bytes, problems));

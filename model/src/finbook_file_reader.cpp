@@ -8,6 +8,7 @@
 #include "finbook_file_reader.h"
 
 #include "io/crc32c.h"
+#include "skeleton/join_resolution.h"
 
 #include <finbook/model/skeleton/skeleton_join.h>
 
@@ -78,38 +79,21 @@ void Reader::charge(Cursor &c, qint64 bytes)
 
 LoadedDocument Reader::read(const QByteArray &bytes)
 {
-    Cursor c(bytes.constData(), bytes.constData() + bytes.size(), &m_where);
+    Cursor c(bytes.constData(), bytes.constData() + bytes.size(), &m_where,
+             !endsWithEndMarker(bytes));
     // Header problems need no location: they are about the file as a whole.
-    m_version = readHeader(c);
+    m_version = readHeader(c, recovering());
+    if (m_version < kOldestVersion || m_version > kFinbookFormatVersion) {
+        // Recovering a file whose version word is damaged: read it as the version its first
+        // section's checksum says it has.
+        problem(c, FileErrorCode::Damaged, damagedVersion(m_version));
+        m_version = firstSectionHasCrc(c) ? kFinbookFormatVersion : kOldestVersion;
+    }
     readSections(c);
     m_doc.formatVersion = m_version;
     if (m_version < kFinbookFormatVersion)
         migrateLoadedDocument(m_doc, m_version);
     return std::move(m_doc);
-}
-
-quint32 Reader::readHeader(Cursor &c)
-{
-    if (c.atEnd())
-        c.fail(FileErrorCode::NotFinbook, FinbookFile::tr("the file is empty"));
-    const std::size_t n = std::min(c.remaining(), sizeof(kMagic));
-    const char *magic = c.take(n, QT_TRANSLATE_NOOP("FinbookFile", "the file header"));
-    if (std::memcmp(magic, kMagic, n) != 0)
-        c.fail(FileErrorCode::NotFinbook, FinbookFile::tr("it is not a Finbook animation"));
-    if (n < sizeof(kMagic))
-        c.fail(FileErrorCode::Truncated, FinbookFile::tr("the file ends inside its header"));
-    const quint32 version = c.u32(QT_TRANSLATE_NOOP("FinbookFile", "the format version"));
-    if (version > kFinbookFormatVersion)
-        c.fail(FileErrorCode::NewerVersion,
-               FinbookFile::tr(
-                   "it was made by a newer version of Finbook (file format %1; this version "
-                   "reads up to %2); please update Finbook to open it")
-                   .arg(version)
-                   .arg(kFinbookFormatVersion));
-    if (version < kOldestVersion)
-        c.fail(FileErrorCode::BadValue,
-               FinbookFile::tr("the format version %1 does not exist").arg(version));
-    return version;
 }
 
 void Reader::readSections(Cursor &c)
@@ -150,6 +134,13 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
             problem(c, FileErrorCode::Truncated, FinbookFile::tr("the file's end is damaged"));
             return false;
         }
+        if (!recovering() && !c.endIsFileEnd())
+            c.fail(FileErrorCode::Damaged,
+                   FinbookFile::tr("its length (%1 bytes) runs past the end of the file (%2 bytes "
+                                   "left), yet the file ends with its end marker, so the length "
+                                   "is damaged")
+                       .arg(length)
+                       .arg(c.remaining()));
         if (!recovering())
             c.fail(
                 FileErrorCode::Truncated,
@@ -298,9 +289,23 @@ void Reader::finish(Cursor &c)
     std::vector<Id>().swap(m_ids);
     // Joins are stored, anchors derived: every reader of the file sees them resolved, as a
     // Document holding these frames would have them.
-    const auto resolveAll = [this] {
-        for (Frame &f : m_doc.frames)
-            resolveJoins(f);
+    const auto resolveAll = [this, &c] {
+        // Bounded: a file must not make opening cost more than its size can honestly ask
+        // (parts on a huge skeleton at points nearly equally near thousands of its bones).
+        std::int64_t budget = join_detail::joinWorkAllowance(m_doc.frames);
+        for (std::size_t k = 0; k < m_doc.frames.size(); ++k) {
+            Frame &f = m_doc.frames[k];
+            if (join_detail::resolveJoinsWithin(f, budget))
+                continue;
+            m_where.frame = int(k + 1);
+            problem(c, FileErrorCode::TooLarge,
+                    FinbookFile::tr("its parts are joined in a way too costly to work out"));
+            for (StrokeGroup &g : f.groups) { // recovering: the parts stand alone
+                g.rig.skeleton.join = {};
+                g.rig.skeleton.anchor = {};
+            }
+            m_where.frame = 0;
+        }
     };
     if (recovering()) {
         if (m_idsClash)
@@ -353,18 +358,6 @@ Expected<LoadedDocument, ReadFailure> parseFinbook(const QByteArray &bytes, Pars
             ReadFailure{FileErrorCode::OutOfMemory,
                         FinbookFile::tr("there is not enough memory to open this file")});
     }
-}
-
-std::optional<ReadFailure> checkHeader(QByteArrayView head)
-{
-    Where where;
-    Cursor c(head.data(), head.data() + head.size(), &where);
-    try {
-        Reader::readHeader(c);
-    } catch (const ReadFailure &failure) {
-        return failure;
-    }
-    return std::nullopt;
 }
 
 } // namespace file_format

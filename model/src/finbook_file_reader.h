@@ -24,7 +24,14 @@ public:
     // Recover mode: what was left out or repaired, one sentence each.
     const QStringList &problems() const { return m_problems; }
     // Magic and version; throws ReadFailure for a file this Finbook cannot read at all.
-    static quint32 readHeader(Cursor &c);
+    // The format version; a damaged one (neither a known version nor one of the next few)
+    // fails as damage unless `tolerateDamagedVersion` (recovering).
+    static quint32 readHeader(Cursor &c, bool tolerateDamagedVersion = false);
+    static QString damagedVersion(quint32 version);
+    // Whether the first section (at `c`, after the header) ends in a matching checksum.
+    static bool firstSectionHasCrc(const Cursor &c);
+    // Whether the file ends with its end marker: then it is complete.
+    static bool endsWithEndMarker(const QByteArray &bytes);
 
     // One kind of object chunk: its tag, whether it is a rig (an object carries one rig at
     // most), and how to read it into the object.

@@ -1,9 +1,11 @@
 // What the real `finbook` executable costs on hostile or huge input: peak memory and time of
 // `finbook info` and `finbook export` on hand-made files, and exports onto a full disk.
+#include "../model/deep_structures.h"
 #include "../model/file_builder.h"
 #include "limits_support.h"
 
 #include <finbook/model/finbook_file.h>
+#include <finbook/model/recovery/recovery_store.h>
 
 #include <QDir>
 #include <QFileInfo>
@@ -45,6 +47,9 @@ private slots:
     void outOfMemoryIsSaidAsSuch();
     void errorLinesAreHarmlessOnATerminal();
     void infoReportsDamage();
+    void deepAndWideStructuresOpenQuickly_data();
+    void deepAndWideStructuresOpenQuickly();
+    void startsQuicklyWhateverTheRecoveryFolderHolds();
 
 private:
     QTemporaryDir m_dir;
@@ -264,6 +269,85 @@ void TestLimits::infoReportsDamage()
     QVERIFY2(isOneLine(run.err), run.err.constData());
     QVERIFY2(run.err.contains("damaged") && run.err.contains("checksum"), run.err.constData());
     QVERIFY(run.out.isEmpty());
+}
+
+// Issue 25, items 1 and 2: one frame of 80,000 objects each joined to the next killed
+// `finbook info` with a stack overflow after seconds; 100,000 joints with 10,000 parts joined
+// to them were still opening after two minutes. Each opens (or, for parts equally near
+// thousands of bones, is refused as too costly) in well under a second of work, within the
+// memory rule above.
+void TestLimits::deepAndWideStructuresOpenQuickly_data()
+{
+    using deep_build::Shape;
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<int>("code");
+    const auto row = [this](const char *name, deep_build::Params p, int code) {
+        QTest::newRow(name) << writeFile(m_dir,
+                                         QString::fromLatin1(name) + QStringLiteral(".finbook"),
+                                         deep_build::file(p))
+                            << code;
+    };
+    row("join_chain_80000", {Shape::JoinChain, 80000, 0, 1, true, false}, 0);
+    row("join_chain_reversed_80000", {Shape::JoinChain, 80000, 0, 2, true, true}, 0);
+    row("join_tree_80000", {Shape::JoinTree, 80000, 0, 3, true, false}, 0);
+    row("joint_chain_100000", {Shape::JointChain, 100000, 0, 4, true, false}, 0);
+    row("joints_20000_parts_1000", {Shape::JoinStar, 20000, 1000, 5, true, false}, 0);
+    row("joints_100000_parts_10000", {Shape::JoinStar, 100000, 10000, 6, true, false}, 0);
+    deep_build::Params star{Shape::JoinStar, 100000, 10000, 7, false, false};
+    star.star = true;
+    row("star_100000_parts_10000_at_its_centre", star, 2);
+}
+
+void TestLimits::deepAndWideStructuresOpenQuickly()
+{
+    QFETCH(QString, path);
+    QFETCH(int, code);
+    const Measured run = runMeasured({QStringLiteral("info"), path});
+    const long fileMiB = long(QFileInfo(path).size() >> 20);
+    qInfo("%s: %.1f MiB file, exit %d in %.2f s, peak %ld MiB", QTest::currentDataTag(),
+          double(QFileInfo(path).size()) / double(1 << 20), run.code, run.seconds, run.peakMiB);
+    QCOMPARE(run.code, code);
+    if (code != 0)
+        QVERIFY2(isOneLine(run.err) && run.err.contains("too costly"), run.err.constData());
+    if (!kUnderAsan)
+        QVERIFY2(run.peakMiB <= 4 * fileMiB + 200, qPrintable(QString::number(run.peakMiB)));
+}
+
+// Issue 25, item 3: a link named like a recovery copy pointing at /dev/zero made every start
+// read for ever (12.9 GB in 15 s); a 2 GiB sparse copy cost seconds and gigabytes at every
+// start. The real executable starts, lists the one real copy and quits, in little memory.
+void TestLimits::startsQuicklyWhateverTheRecoveryFolderHolds()
+{
+    const QString folder = m_dir.filePath(QStringLiteral("recovery"));
+    QVERIFY(QDir().mkpath(folder));
+    model::Document doc;
+    doc.reset({model::Frame{1, 1, {}}}, model::DocumentSettings(), 2);
+    model::RecoveryInfo info;
+    info.title = QStringLiteral("real");
+    info.savedAt = QDateTime::currentDateTimeUtc();
+    const QByteArray copy = model::recoveryCopyBytes(doc.frames(), doc.settings(), info);
+    QVERIFY(!writeFile(m_dir, QStringLiteral("recovery/11-a-1.finbook"), copy).isEmpty());
+    const QString sparse = writeFile(m_dir, QStringLiteral("recovery/12-b-1.finbook"), copy);
+    QVERIFY(QFile::resize(sparse, qint64(2) << 30));
+    QVERIFY(QFile::link(QStringLiteral("/dev/zero"),
+                        QDir(folder).filePath(QStringLiteral("13-c-1.finbook"))));
+    const QString dump = m_dir.filePath(QStringLiteral("dump.finbook"));
+    const QByteArray before = qgetenv("FINBOOK_RECOVERY_DIR");
+    qputenv("FINBOOK_RECOVERY_DIR", QFile::encodeName(folder));
+    qputenv("FINBOOK_TEST_RECOVERY", "later");
+    qputenv("FINBOOK_TEST_DUMP", QFile::encodeName(dump));
+    const Measured run = runMeasured({});
+    qunsetenv("FINBOOK_TEST_RECOVERY");
+    qunsetenv("FINBOOK_TEST_DUMP");
+    qputenv("FINBOOK_RECOVERY_DIR", before);
+    qInfo("start with /dev/zero and a 2 GiB copy in the recovery folder: exit %d in %.2f s, "
+          "peak %ld MiB",
+          run.code, run.seconds, run.peakMiB);
+    QCOMPARE(run.code, 0);
+    QVERIFY2(run.out.contains("recovery copies: 2"),
+             run.out.constData()); // the real and the sparse
+    if (!kUnderAsan)
+        QVERIFY2(run.peakMiB < 400, qPrintable(QString::number(run.peakMiB)));
 }
 
 QTEST_GUILESS_MAIN(TestLimits)

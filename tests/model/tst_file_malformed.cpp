@@ -4,6 +4,7 @@
 #include "tst_file_sample.h"
 
 #include <QRandomGenerator>
+#include <QTemporaryDir>
 
 #include <limits>
 
@@ -19,6 +20,8 @@ private slots:
     void invalidValuesAreRejected();
     void badNameUtf8IsRejected();
     void newerVersionIsRefused();
+    void flippedVersionBitsAreDamage();
+    void flippedLengthsAreDamageNotTruncation();
     void absurdCountsAreRefused();
     void unknownSectionsAreSkippedOrRefused();
     void fuzzedFilesNeverCrash();
@@ -157,7 +160,74 @@ void TestFileMalformed::newerVersionIsRefused()
     QVERIFY2(message.contains(QLatin1String("newer")) && message.contains(QLatin1String("update")),
              qPrintable(message));
     putU32(bytes, 8, 0);
-    QCOMPARE(errorOf(bytes), FileErrorCode::BadValue);
+    QCOMPARE(errorOf(bytes), FileErrorCode::Damaged);
+}
+
+// One flipped bit in the version word: 3 may be a newer Finbook's file; 0, 6, 10, …, 2^31 + 2
+// are not versions any Finbook writes, so the word is damaged. That is said as damage (with
+// "open anyway", which reads the file as the version its checksums show), not as "update".
+void TestFileMalformed::flippedVersionBitsAreDamage()
+{
+    const QByteArray valid = validBytes();
+    int newer = 0;
+    for (int bit = 0; bit < 32; ++bit) {
+        QByteArray bytes = valid;
+        putU32(bytes, 8, kFinbookFormatVersion ^ (quint32(1) << bit));
+        QString message;
+        const FileErrorCode code = errorOf(bytes, &message);
+        const quint32 version = kFinbookFormatVersion ^ (quint32(1) << bit);
+        if (version > kFinbookFormatVersion && version <= kFinbookFormatVersion + 2) {
+            QCOMPARE(code, FileErrorCode::NewerVersion);
+            ++newer;
+            continue;
+        }
+        QCOMPARE(code, FileErrorCode::Damaged);
+        QVERIFY(isRecoverable(code));
+        QVERIFY2(message.contains(QLatin1String("damaged")) &&
+                     !message.contains(QLatin1String("newer")),
+                 qPrintable(message));
+        QStringList problems;
+        const auto recovered = recoverFinbook(bytes, &problems);
+        QVERIFY2(recovered, qPrintable(recovered ? QString() : recovered.error().message));
+        QCOMPARE(recovered->frames.size(), readFinbook(valid)->frames.size());
+        QCOMPARE(problems.size(), 1);
+    }
+    QCOMPARE(newer, 1);
+    // From disk too: File > Open refuses it after its header; Open Anyway reads past it.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("flipped.finbook"));
+    QByteArray bytes = valid;
+    putU32(bytes, 8, kFinbookFormatVersion ^ 0x100u);
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size());
+    file.close();
+    const auto refused = loadFinbook(path);
+    QVERIFY(!refused);
+    QCOMPARE(refused.error().code, FileErrorCode::Damaged);
+    QStringList problems;
+    QVERIFY(loadFinbookRecovering(path, &problems));
+    QCOMPARE(problems.size(), 1);
+}
+
+// A length that runs past the end of a file that is complete (it ends with its end marker) is
+// damage, not an incomplete file; a record's length running past its section is damage too.
+void TestFileMalformed::flippedLengthsAreDamageNotTruncation()
+{
+    const QByteArray valid = validBytes();
+    const qsizetype frames = sectionPayload(valid, "FRAM");
+    for (int bit = 20; bit < 64; bit += 7) {
+        QByteArray bytes = valid;
+        qToLittleEndian<quint64>(qFromLittleEndian<quint64>(bytes.constData() + frames - 8) ^
+                                     (quint64(1) << bit),
+                                 bytes.data() + frames - 8);
+        QString message;
+        QCOMPARE(errorOf(bytes, &message), FileErrorCode::Damaged);
+        QVERIFY2(message.contains(QLatin1String("damaged")) &&
+                     !message.contains(QLatin1String("incomplete")),
+                 qPrintable(message));
+    }
+    // Cut short, the same file is incomplete.
+    QCOMPARE(errorOf(valid.left(valid.size() - 40)), FileErrorCode::Truncated);
 }
 
 void TestFileMalformed::absurdCountsAreRefused()
@@ -175,13 +245,14 @@ void TestFileMalformed::absurdCountsAreRefused()
         QCOMPARE(errorOf(bytes, &message), FileErrorCode::TooLarge);
         QVERIFY(message.contains(QLatin1String("4294967295")));
     }
+    // Lengths beyond what is there, in a complete file: damage (issue 25), not truncation.
     QByteArray bytes = valid;
     qToLittleEndian<quint64>(~quint64(0), bytes.data() + frames - 8);
-    QCOMPARE(errorOf(bytes), FileErrorCode::Truncated);
+    QCOMPARE(errorOf(bytes), FileErrorCode::Damaged);
     bytes = valid;
     putU32(bytes, frames + 4, 0x7fffffffu); // frame record length
     refreshChecksums(bytes);
-    QCOMPARE(errorOf(bytes), FileErrorCode::Truncated);
+    QCOMPARE(errorOf(bytes), FileErrorCode::BadValue);
 }
 
 void TestFileMalformed::unknownSectionsAreSkippedOrRefused()

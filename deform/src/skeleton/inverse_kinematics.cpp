@@ -231,10 +231,12 @@ Eigen::VectorXi ikChain(const Skeleton &skeleton, int joint, const std::vector<b
                 lockedBelow[static_cast<std::size_t>(skeleton.parent(j))] = true;
         }
     }
+    const int longest =
+        maxChainBones > 0 ? std::min(maxChainBones, kMaxIkChainBones) : kMaxIkChainBones;
     std::vector<int> chain;
     for (int j = joint; j >= 0 && !skeleton.isRoot(j) && !lockedBelow[static_cast<std::size_t>(j)];
          j = skeleton.parent(j)) {
-        if (maxChainBones > 0 && static_cast<int>(chain.size()) >= maxChainBones)
+        if (static_cast<int>(chain.size()) >= longest)
             break;
         chain.push_back(j);
     }

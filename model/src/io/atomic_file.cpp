@@ -1,11 +1,15 @@
-// writeFileAtomically: temporary file, unbuffered checked writes, fsync, backup, rename.
+// writeFileAtomically: temporary file, unbuffered checked writes, fsync, rename, backup.
 //
 // The order is what makes it safe: nothing the user already has (the target, its backup) is
-// touched until the new bytes are known to be on the disk, so a full disk, a read-only folder
-// or a kill at any moment leaves the old file and the old backup as they were.
+// touched until the new bytes are known to be on the disk, and the old backup is replaced only
+// once the new file is in place. The current file is first kept under a temporary name (a
+// hard link, or a copy), so each step can be undone: a full disk, a read-only folder, a failed
+// rename or a kill at any moment leaves the target old or new and the backup the old backup,
+// or (once the target is new) the file it replaced.
 #include "../finbook_file_tr.h"
 
 #include <finbook/model/io/atomic_file.h>
+#include <finbook/model/io/atomic_file_faults.h>
 
 #include <QDir>
 #include <QFile>
@@ -23,6 +27,25 @@ namespace finbook::model {
 
 namespace {
 using file_format::FinbookFile;
+
+AtomicFaultHook &faultHook()
+{
+    static AtomicFaultHook hook;
+    return hook;
+}
+
+// Runs `call` (a system call returning -1 and errno on failure) unless the test hook makes
+// this step fail first.
+template <class Call> int step(AtomicStep which, Call call)
+{
+    if (const AtomicFaultHook &hook = faultHook(); hook) {
+        if (const int error = hook(which); error != 0) {
+            errno = error;
+            return -1;
+        }
+    }
+    return call();
+}
 
 QByteArray encoded(const QString &path)
 {
@@ -121,8 +144,11 @@ void removeLeftovers(const QString &target)
 {
     const QDir dir = QFileInfo(target).dir();
     const QString stem = temporaryStem(target);
+    // The name is never part of a pattern: "[", "*" or "?" in it would be wildcards.
     for (const QString &name :
-         dir.entryList({stem + QStringLiteral("*.tmp")}, QDir::Files | QDir::Hidden)) {
+         dir.entryList({QStringLiteral("*.tmp")}, QDir::Files | QDir::Hidden)) {
+        if (!name.startsWith(stem))
+            continue;
         const QString suffix = name.mid(stem.size()).chopped(4); // without ".tmp"
         if (!saverAlive(suffix))
             ::unlink(encoded(dir.filePath(name)).constData());
@@ -134,8 +160,10 @@ int createTemporary(const QString &target, QString &temporary)
 {
     for (int attempt = 0; attempt < 64; ++attempt) {
         temporary = siblingName(target);
-        const int fd =
-            ::open(encoded(temporary).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        const int fd = step(AtomicStep::CreateTemporary, [&] {
+            return ::open(encoded(temporary).constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC,
+                          0666);
+        });
         if (fd >= 0 || errno != EEXIST)
             return fd;
     }
@@ -168,9 +196,9 @@ int writeAll(int fd, QByteArrayView bytes, const WriteFunction &write)
 // here.
 int syncAndClose(FdGuard &fd)
 {
-    if (::fsync(fd.get()) != 0)
+    if (step(AtomicStep::SyncTemporary, [&] { return ::fsync(fd.get()); }) != 0)
         return errno;
-    if (::close(fd.release()) != 0)
+    if (step(AtomicStep::CloseTemporary, [&] { return ::close(fd.release()); }) != 0)
         return errno;
     return 0;
 }
@@ -215,10 +243,22 @@ std::optional<int> copyToTemporary(const QString &from, const QString &to, QStri
     }
 }
 
-// Keeps `target` as `backup`: a hard link (free even for a huge file) or a copy, made under
-// a temporary name and renamed over the old backup, so the old backup survives any failure.
-std::optional<WriteFailure> keepBackup(const QString &target, const QString &backup)
+WriteFailure backupFailure(const QString &backup, int error)
 {
+    WriteFailure failure = writeFailureFromErrno(error);
+    failure.detail = FinbookFile::tr("the backup \"%1\" cannot be written (%2)")
+                         .arg(QFileInfo(backup).fileName(), failure.detail);
+    if (failure.problem == WriteProblem::Other || failure.problem == WriteProblem::FolderMissing)
+        failure.problem = WriteProblem::Other; // the sentence is about the backup, not the folder
+    return failure;
+}
+
+// Keeps the current `target` under a new temporary name beside `backup` (in `kept`): a hard
+// link (free even for a huge file) or a copy. Nothing the user has changes. Empty `kept` and
+// no failure when there is no target yet.
+std::optional<WriteFailure> keepCurrent(const QString &target, const QString &backup, QString &kept)
+{
+    kept.clear();
     struct stat st;
     if (::lstat(encoded(target).constData(), &st) != 0)
         return std::nullopt; // nothing to keep
@@ -226,27 +266,45 @@ std::optional<WriteFailure> keepBackup(const QString &target, const QString &bac
     int error = EEXIST;
     for (int attempt = 0; attempt < 64 && error == EEXIST; ++attempt) {
         temporary = siblingName(backup);
-        error =
-            ::link(encoded(target).constData(), encoded(temporary).constData()) == 0 ? 0 : errno;
+        error = step(AtomicStep::LinkBackup,
+                     [&] {
+                         return ::link(encoded(target).constData(), encoded(temporary).constData());
+                     }) == 0
+                    ? 0
+                    : errno;
     }
-    if (error == EXDEV || error == EPERM || error == ENOTSUP || error == EMLINK) // no links: copy
-        error = copyToTemporary(target, backup, temporary).value_or(0);
-    if (error == 0) { // the temporary is ours
-        if (::rename(encoded(temporary).constData(), encoded(backup).constData()) != 0)
-            error = errno;
-        // rename() of two links to one file does nothing and succeeds: when a save was killed
-        // between keeping the backup and replacing the target, both names are one file, and
-        // the temporary link would stay behind. Removing it is harmless once it was moved.
-        ::unlink(encoded(temporary).constData());
+    if (error == EXDEV || error == EPERM || error == ENOTSUP || error == EMLINK) { // no links
+        error = step(AtomicStep::CopyBackup, [] { return 0; }) == 0
+                    ? copyToTemporary(target, backup, temporary).value_or(0)
+                    : errno;
     }
-    if (error == 0)
+    if (error != 0)
+        return backupFailure(backup, error);
+    kept = temporary;
+    return std::nullopt;
+}
+
+// The new file is in place at `target`; `kept` (the file it replaced) becomes the backup. If
+// that fails, the replaced file goes back to `target`, so target and backup are as before the
+// save; only if that fails too does the save stand (the new file is complete) with the old
+// backup kept and the replaced file left at `kept`.
+std::optional<WriteFailure> replaceBackup(const QString &target, const QString &backup,
+                                          const QString &kept)
+{
+    if (step(AtomicStep::ReplaceBackup, [&] {
+            return ::rename(encoded(kept).constData(), encoded(backup).constData());
+        }) == 0) {
+        // rename() of two links to one file does nothing and succeeds (a backup linked to the
+        // target by an older Finbook killed mid-save): the temporary link would stay behind.
+        // Removing it is harmless once it was moved.
+        ::unlink(encoded(kept).constData());
         return std::nullopt;
-    WriteFailure failure = writeFailureFromErrno(error);
-    failure.detail = FinbookFile::tr("the backup \"%1\" cannot be written (%2)")
-                         .arg(QFileInfo(backup).fileName(), failure.detail);
-    if (failure.problem == WriteProblem::Other || failure.problem == WriteProblem::FolderMissing)
-        failure.problem = WriteProblem::Other; // the sentence is about the backup, not the folder
-    return failure;
+    }
+    const int error = errno;
+    if (step(AtomicStep::RestoreTarget,
+             [&] { return ::rename(encoded(kept).constData(), encoded(target).constData()); }) != 0)
+        return std::nullopt;
+    return backupFailure(backup, error);
 }
 
 QString resolvedTarget(const QString &path)
@@ -322,19 +380,38 @@ std::optional<WriteFailure> writeFileAtomically(const QString &path, QByteArrayV
         return abandon(error);
     if (const int error = syncAndClose(fd))
         return abandon(error);
+    QString kept; // the current file under a temporary name, until it is the backup
     if (!options.backupPath.isEmpty()) {
-        if (auto failure = keepBackup(target, options.backupPath)) {
+        if (auto failure = keepCurrent(target, options.backupPath, kept)) {
             ::unlink(encoded(temporary).constData());
             return failure;
         }
     }
-    if (::rename(encoded(temporary).constData(), encoded(target).constData()) != 0)
-        return abandon(errno);
+    if (step(AtomicStep::ReplaceTarget, [&] {
+            return ::rename(encoded(temporary).constData(), encoded(target).constData());
+        }) != 0) {
+        const int error = errno;
+        if (!kept.isEmpty())
+            ::unlink(encoded(kept).constData());
+        return abandon(error);
+    }
+    if (!kept.isEmpty()) {
+        syncFolder(target); // the new file's name first: a crash now keeps it
+        if (auto failure = replaceBackup(target, options.backupPath, kept)) {
+            syncFolder(target);
+            return failure; // the old file is back; the new one is gone with its name
+        }
+    }
     syncFolder(target);
     removeLeftovers(target);
     if (!options.backupPath.isEmpty())
         removeLeftovers(options.backupPath);
     return std::nullopt;
+}
+
+AtomicFaultHook setAtomicFaultHook(AtomicFaultHook hook)
+{
+    return std::exchange(faultHook(), std::move(hook));
 }
 
 } // namespace finbook::model

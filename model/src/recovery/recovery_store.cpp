@@ -19,6 +19,9 @@ namespace finbook::model {
 
 namespace {
 constexpr int kThumbnailWidth = 160;
+// A folder holding thousands of copies (or of files named like them) is listed quickly: the
+// newest this many are looked at, which is more than anyone picks from.
+constexpr int kMaxCopiesLooked = 100;
 const QString kCopySuffix = QStringLiteral(".finbook");
 const QString kLockSuffix = QStringLiteral(".lock");
 
@@ -72,28 +75,6 @@ QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSet
     return serializeFinbook(frames, settings, extra);
 }
 
-std::optional<RecoveryCopy> readRecoveryCopy(const QString &path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return std::nullopt;
-    const QByteArray bytes = file.readAll();
-    const auto description = readAncillarySection(bytes, "rcvy");
-    if (!description)
-        return std::nullopt;
-    const QJsonObject o = QJsonDocument::fromJson(*description).object();
-    RecoveryCopy copy;
-    copy.path = path;
-    copy.info.title = o.value(QStringLiteral("title")).toString();
-    copy.info.originalPath = o.value(QStringLiteral("original")).toString();
-    copy.info.savedAt =
-        QDateTime::fromString(o.value(QStringLiteral("saved")).toString(), Qt::ISODateWithMs);
-    copy.info.frames = o.value(QStringLiteral("frames")).toInt();
-    if (const auto png = readAncillarySection(bytes, "thmb"))
-        copy.thumbnail.loadFromData(*png, "PNG");
-    return copy;
-}
-
 QString recoveryFolder()
 {
     const QString overridden = qEnvironmentVariable("FINBOOK_RECOVERY_DIR");
@@ -135,10 +116,15 @@ std::vector<RecoveryCopy> RecoverySession::orphans() const
     std::vector<RecoveryCopy> found;
     const QDir dir(m_folder);
     QStringList alive, dead;
-    for (const QString &name : dir.entryList({QStringLiteral("*") + kCopySuffix}, QDir::Files)) {
+    int looked = 0;
+    // Newest first; links are not copies (readRecoveryCopy refuses them unopened anyway).
+    for (const QString &name : dir.entryList({QStringLiteral("*") + kCopySuffix},
+                                             QDir::Files | QDir::NoSymLinks, QDir::Time)) {
         const QString session = sessionOf(name);
         if (session.isEmpty() || session == m_id || alive.contains(session))
             continue;
+        if (++looked > kMaxCopiesLooked)
+            break;
         if (!dead.contains(session)) {
             // Taking the lock succeeds only when its owner is gone (or it never existed).
             auto probe = lockFor(dir.filePath(session + kLockSuffix));

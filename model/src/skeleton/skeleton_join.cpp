@@ -1,5 +1,8 @@
 // Joins between the parts of a character: resolving them against the parents' rigs, the
 // parts of a character, and automatic joins where parts overlap.
+#include "join_resolution.h"
+#include "nearest_bone.h"
+
 #include <finbook/geometry/skeleton/skeleton_connect.h>
 #include <finbook/model/skeleton/skeleton_join.h>
 #include <finbook/model/skeleton/skeleton_joint_edit.h>
@@ -9,18 +12,78 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <optional>
+#include <unordered_set>
 
 namespace finbook::model {
 
 namespace {
 
-// Fraction along a → b of the point nearest p, and the distance to it.
-std::pair<double, double> project(QPointF p, QPointF a, QPointF b)
+using join_detail::BoneIndex;
+using join_detail::NearestBone;
+
+// Skeletons up to this many joints are scanned; larger ones with parts hanging get an index.
+constexpr std::size_t kScanJoints = 32;
+
+// A parent's rig prepared once for all the parts hanging from it: its validity, its bones'
+// motions and (when large) the nearest-bone index, each O(J) or O(J log J) instead of that per
+// part. `rig` must outlive it and keep its anchor meanwhile (resolveJoins sets a parent's
+// anchor before any part reads it).
+class ParentBones {
+public:
+    ParentBones(const SkeletonRig &rig, bool indexed, std::int64_t &work)
+        : m_rig(rig)
+        , m_valid(!rig.empty() && rig.isValid())
+    {
+        work += 4 * std::int64_t(rig.joints.size());
+        if (!m_valid)
+            return;
+        m_motions = rig.boneMotions();
+        if (indexed && rig.joints.size() > kScanJoints)
+            m_index.emplace(rig);
+    }
+
+    SkeletonAnchor anchorAt(QPointF parentAt, std::int64_t &work) const
+    {
+        SkeletonAnchor a;
+        if (!m_valid || !std::isfinite(parentAt.x()) || !std::isfinite(parentAt.y()))
+            return a;
+        const NearestBone nearest = m_index ? m_index->nearest(parentAt, work)
+                                            : join_detail::nearestByScan(m_rig, parentAt, work);
+        a.valid = true;
+        if (nearest.joint < 0) { // a skeleton of lone joints: hang from the root's motion
+            const int r = m_rig.root;
+            a.from = a.to = m_rig.joints[std::size_t(r)];
+            a.motion = m_motions[std::size_t(r)];
+            return a;
+        }
+        const int best = nearest.joint;
+        const int start = m_rig.parent[std::size_t(best)];
+        // The bone the part overlaps skins it. Near the bone's start the part hangs from the
+        // joint there, which moves with the bone ending at it (or, at a root, with the whole
+        // tree); elsewhere with the bone itself.
+        a.from = m_rig.joints[std::size_t(start)];
+        a.to = m_rig.joints[std::size_t(best)];
+        a.motion = m_motions[std::size_t(nearest.t < kJoinEndFraction ? start : best)];
+        return a;
+    }
+
+private:
+    const SkeletonRig &m_rig;
+    bool m_valid;
+    std::vector<RigidMotion> m_motions;
+    std::optional<BoneIndex> m_index;
+};
+
+// Every object's index in the frame by id (the first, should an id repeat).
+std::unordered_map<Id, std::size_t> indexById(const Frame &frame)
 {
-    const QPointF d = b - a;
-    const double len2 = QPointF::dotProduct(d, d);
-    const double t = len2 > 0 ? std::clamp(QPointF::dotProduct(p - a, d) / len2, 0.0, 1.0) : 0.0;
-    return {t, QLineF(p, a + t * d).length()};
+    std::unordered_map<Id, std::size_t> index;
+    index.reserve(frame.groups.size());
+    for (std::size_t i = 0; i < frame.groups.size(); ++i)
+        index.emplace(frame.groups[i].id, i);
+    return index;
 }
 
 int indexOf(const Frame &frame, Id id)
@@ -35,81 +98,97 @@ int indexOf(const Frame &frame, Id id)
 
 SkeletonAnchor anchorOn(const SkeletonRig &parent, QPointF parentAt)
 {
-    SkeletonAnchor a;
-    if (parent.empty() || !parent.isValid() || !std::isfinite(parentAt.x()) ||
-        !std::isfinite(parentAt.y()))
-        return a;
-    const std::vector<RigidMotion> motions = parent.boneMotions();
-    int best = -1;
-    double bestDistance = std::numeric_limits<double>::infinity(), bestT = 0.0;
-    for (std::size_t j = 0; j < parent.joints.size(); ++j) {
-        const int p = parent.parent[j];
-        if (p < 0)
-            continue;
-        const auto [t, d] = project(parentAt, parent.joints[std::size_t(p)], parent.joints[j]);
-        if (d < bestDistance) {
-            bestDistance = d;
-            best = int(j);
-            bestT = t;
-        }
-    }
-    a.valid = true;
-    if (best < 0) { // a skeleton of lone joints: hang from the root's motion
-        const int r = parent.root;
-        a.from = a.to = parent.joints[std::size_t(r)];
-        a.motion = motions[std::size_t(r)];
-        return a;
-    }
-    const int start = parent.parent[std::size_t(best)];
-    // The bone the part overlaps skins it. Near the bone's start the part hangs from the
-    // joint there, which moves with the bone ending at it (or, at a root, with the whole
-    // tree); elsewhere with the bone itself.
-    a.from = parent.joints[std::size_t(start)];
-    a.to = parent.joints[std::size_t(best)];
-    a.motion = motions[std::size_t(bestT < kJoinEndFraction ? start : best)];
-    return a;
+    std::int64_t work = 0;
+    return ParentBones(parent, false, work).anchorAt(parentAt, work);
 }
 
-std::vector<Id> resolveJoins(Frame &frame)
+namespace join_detail {
+
+bool resolveJoinsWithin(Frame &frame, std::int64_t &budget, std::vector<Id> *changed)
 {
+    if (changed)
+        changed->clear();
     // Called on every rig change (each drag event): a frame without joins has nothing to do.
     if (std::none_of(frame.groups.begin(), frame.groups.end(), [](const StrokeGroup &g) {
             return g.rig.skeleton.join.joined() || !(g.rig.skeleton.anchor == SkeletonAnchor{});
         }))
-        return {};
+        return true;
     const std::size_t n = frame.groups.size();
+    const std::unordered_map<Id, std::size_t> byId = indexById(frame);
+    constexpr std::size_t kNone = std::size_t(-1);
+    const auto parentOf = [&](std::size_t i) {
+        const SkeletonRig &rig = frame.groups[i].rig.skeleton;
+        if (rig.empty() || !rig.join.joined())
+            return kNone;
+        const auto it = byId.find(rig.join.parent);
+        return it == byId.end() || it->second == i ? kNone : it->second;
+    };
     enum State : char { Unvisited, Visiting, Done };
     std::vector<State> state(n, Unvisited);
-    std::vector<SkeletonAnchor> anchors(n);
-    // Depth-first, parents first; a parent met while still Visiting closes a loop.
-    const auto resolve = [&](auto &&self, std::size_t i) -> void {
-        if (state[i] != Unvisited)
-            return;
-        state[i] = Visiting;
-        SkeletonRig &rig = frame.groups[i].rig.skeleton;
-        SkeletonAnchor anchor;
-        if (!rig.empty() && rig.join.joined()) {
-            const int p = indexOf(frame, rig.join.parent);
-            if (p >= 0 && std::size_t(p) != i && state[std::size_t(p)] != Visiting) {
-                self(self, std::size_t(p));
-                const SkeletonRig &parent = frame.groups[std::size_t(p)].rig.skeleton;
-                if (!parent.empty())
-                    anchor = anchorOn(parent, rig.join.parentAt);
-            }
-        }
-        anchors[i] = anchor;
-        rig.anchor = anchor; // before the children read this part's motions
-        state[i] = Done;
-    };
-    std::vector<SkeletonAnchor> before(n);
+    std::vector<SkeletonAnchor> anchors(n), before(n);
     for (std::size_t i = 0; i < n; ++i)
         before[i] = frame.groups[i].rig.skeleton.anchor;
-    for (std::size_t i = 0; i < n; ++i)
-        resolve(resolve, i);
+    std::vector<std::unique_ptr<ParentBones>> prepared(n);
+    std::int64_t work = 0;
+    // Depth-first, parents first, on an explicit stack (a chain of joins as long as the file
+    // holds objects must not exhaust the call stack); a parent met while still Visiting closes
+    // a loop, and the part meeting it stands alone.
+    std::vector<std::size_t> stack;
+    for (std::size_t first = 0; first < n; ++first) {
+        if (state[first] != Unvisited)
+            continue;
+        stack.push_back(first);
+        while (!stack.empty()) {
+            const std::size_t i = stack.back();
+            const std::size_t p = parentOf(i);
+            if (state[i] == Unvisited) {
+                state[i] = Visiting;
+                if (p != kNone && state[p] == Unvisited) {
+                    stack.push_back(p); // back to i once its parent is done
+                    continue;
+                }
+            }
+            SkeletonAnchor anchor;
+            if (p != kNone && state[p] == Done) {
+                if (!prepared[p])
+                    prepared[p] =
+                        std::make_unique<ParentBones>(frame.groups[p].rig.skeleton, true, work);
+                anchor = prepared[p]->anchorAt(frame.groups[i].rig.skeleton.join.parentAt, work);
+                if (work > budget)
+                    return false;
+            }
+            anchors[i] = anchor;
+            frame.groups[i].rig.skeleton.anchor = anchor; // before its parts read its motions
+            state[i] = Done;
+            stack.pop_back();
+        }
+    }
+    budget -= work;
+    if (changed)
+        for (std::size_t i = 0; i < n; ++i)
+            if (!(before[i] == anchors[i]))
+                changed->push_back(frame.groups[i].id);
+    return true;
+}
+
+std::int64_t joinWorkAllowance(const std::vector<Frame> &frames)
+{
+    std::int64_t items = 0;
+    for (const Frame &f : frames)
+        for (const StrokeGroup &g : f.groups)
+            items += 1 + std::int64_t(g.rig.skeleton.joints.size());
+    // A part costs about log J tree nodes and a few leaves of bones (under a hundred in all
+    // even on a 100,000-joint skeleton); preparing a parent a few units per joint.
+    return (std::int64_t(1) << 20) + 64 * items;
+}
+
+} // namespace join_detail
+
+std::vector<Id> resolveJoins(Frame &frame)
+{
+    std::int64_t unlimited = std::numeric_limits<std::int64_t>::max();
     std::vector<Id> changed;
-    for (std::size_t i = 0; i < n; ++i)
-        if (!(before[i] == anchors[i]))
-            changed.push_back(frame.groups[i].id);
+    join_detail::resolveJoinsWithin(frame, unlimited, &changed);
     return changed;
 }
 
@@ -126,12 +205,13 @@ void remapJoins(Frame &frame, const std::unordered_map<Id, Id> &newIds)
 
 Id characterRoot(const Frame &frame, Id groupId)
 {
+    const std::unordered_map<Id, std::size_t> byId = indexById(frame);
     Id at = groupId;
     for (std::size_t steps = 0; steps <= frame.groups.size(); ++steps) {
-        const int i = indexOf(frame, at);
-        if (i < 0)
+        const auto it = byId.find(at);
+        if (it == byId.end())
             return groupId;
-        const SkeletonRig &rig = frame.groups[std::size_t(i)].rig.skeleton;
+        const SkeletonRig &rig = frame.groups[it->second].rig.skeleton;
         if (!rig.hangs())
             return at;
         at = rig.join.parent;
@@ -142,13 +222,18 @@ Id characterRoot(const Frame &frame, Id groupId)
 std::vector<Id> characterParts(const Frame &frame, Id groupId)
 {
     const Id root = characterRoot(frame, groupId);
+    // Each object's parts, in frame order, then breadth-first down the joins.
+    std::unordered_map<Id, std::vector<Id>> partsOf;
+    for (const StrokeGroup &g : frame.groups)
+        if (g.rig.skeleton.hangs())
+            partsOf[g.rig.skeleton.join.parent].push_back(g.id);
     std::vector<Id> parts{root};
-    // Breadth-first down the joins.
+    std::unordered_set<Id> seen{root};
     for (std::size_t k = 0; k < parts.size(); ++k)
-        for (const StrokeGroup &g : frame.groups)
-            if (g.rig.skeleton.hangs() && g.rig.skeleton.join.parent == parts[k] &&
-                std::find(parts.begin(), parts.end(), g.id) == parts.end())
-                parts.push_back(g.id);
+        if (const auto it = partsOf.find(parts[k]); it != partsOf.end())
+            for (Id part : it->second)
+                if (seen.insert(part).second)
+                    parts.push_back(part);
     return parts;
 }
 

@@ -19,8 +19,14 @@
 
 namespace finbook::deform {
 
+// The longest IK chain: a drag turns at most this many bones above the dragged joint, so one
+// drag event costs at most a few million steps whatever skeleton a file holds (a chain of
+// 100,000 bones would take seconds per event). Drawn skeletons have tens of bones.
+constexpr int kMaxIkChainBones = 256;
+
 struct IkOptions {
-    int maxChainBones = 0;   // > 0 caps the chain length; 0 = up to a lock or a root
+    int maxChainBones = 0;   // > 0 caps the chain length; 0 = up to a lock or a root (either
+                             // way at most kMaxIkChainBones)
     int iterations = 64;     // FABRIK passes for chains of three or more bones
     double tolerance = 1e-4; // px: FABRIK stops once the dragged joint is this close
 };

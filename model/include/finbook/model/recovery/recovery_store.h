@@ -40,8 +40,14 @@ struct RecoveryCopy {
 // a thumbnail rendered here.
 QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
                              const RecoveryInfo &info);
+// Copies larger than this are not listed (nor read): a recovery copy is an autosave of a
+// drawing that had to fit in memory.
+constexpr qint64 kMaxRecoveryCopyBytes = qint64(4) << 30;
+
 // The description and thumbnail of the copy at `path`; nullopt when it is not one (or not
-// readable). Reads the file but does not parse the drawing.
+// readable). File → Open's rules: a regular file (not a link, a device or a pipe), at most
+// kMaxRecoveryCopyBytes, a .finbook header; then only the two small sections describing the
+// copy are read (a few reads, whatever the file's size), never the drawing.
 std::optional<RecoveryCopy> readRecoveryCopy(const QString &path);
 
 // $FINBOOK_RECOVERY_DIR when set, else "recovery" in the application's data folder.
