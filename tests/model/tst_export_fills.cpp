@@ -7,6 +7,7 @@
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/fill/fill_commands.h>
 
+#include <QPainter>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QUrl>
