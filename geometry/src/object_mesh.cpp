@@ -2,6 +2,7 @@
 #include "mesh_cleanup.h"
 
 #include <finbook/geometry/object_mesh.h>
+#include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/simplicity.h>
 
 #include <algorithm>
@@ -97,7 +98,7 @@ Expected<ObjectMesh, GeometryError> meshRegion(const Region &region, const MeshO
 Expected<ObjectMesh, GeometryError> buildObjectMesh(const std::vector<StrokeInput> &strokes,
                                                     const MeshOptions &options)
 {
-    auto region = silhouette(strokes, options.silhouette);
+    auto region = objectShape(strokes, options.silhouette, options.regions);
     if (!region)
         return unexpected(region.error());
     return meshRegion(*region, options);

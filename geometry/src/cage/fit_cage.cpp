@@ -2,6 +2,7 @@
 
 #include <finbook/geometry/cage/cage_polygon.h>
 #include <finbook/geometry/cage/fit_cage.h>
+#include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/polyline.h>
 #include <finbook/geometry/simplicity.h>
 
@@ -221,7 +222,7 @@ fitCage(const Region &shape, const Eigen::MatrixX2d &mustContain, const FitCageO
 Expected<Eigen::MatrixX2d, GeometryError> fitCage(const std::vector<StrokeInput> &strokes,
                                                   const FitCageOptions &options)
 {
-    auto region = silhouette(strokes, options.silhouette);
+    auto region = objectShape(strokes, options.silhouette, options.regions);
     if (!region)
         return unexpected(region.error());
     long total = 0;

@@ -1,4 +1,4 @@
-// Quality triangle mesh of an object: from its strokes (via silhouette()) or from a Region.
+// Quality triangle mesh of an object: from its strokes (via objectShape()) or from a Region.
 //
 // Constrained Delaunay triangulation of the region refined by CGAL's Delaunay mesher with the
 // domain marked by nesting depth (holes and the space between lobes stay empty), shape bound
@@ -9,6 +9,7 @@
 #include <finbook/geometry/geometry_error.h>
 #include <finbook/geometry/polygon_repair.h>
 #include <finbook/geometry/region.h>
+#include <finbook/geometry/regions.h>
 #include <finbook/geometry/silhouette.h>
 #include <finbook/geometry/stroke_input.h>
 #include <finbook/geometry/tri_mesh.h>
@@ -31,7 +32,8 @@ struct MeshOptions {
     int maxVertices = 30000;
     double minEdge = 1.0; // px: small objects are not refined below this
     SilhouetteOptions silhouette;
-    RepairOptions repair; // for the Region overload
+    RegionsOptions regions; // closed regions fill the shape (object_shape.h)
+    RepairOptions repair;   // for the Region overload
 };
 
 // V: n×2 vertex positions (canvas px). F: m×3 vertex indices, every triangle with positive
@@ -45,7 +47,8 @@ struct ObjectMesh {
     Region region;
 };
 
-// silhouette(strokes, options.silhouette), then meshRegion. Errors: those of silhouette().
+// objectShape(strokes, options.silhouette, options.regions), then meshRegion. Errors: those of
+// objectShape().
 Expected<ObjectMesh, GeometryError> buildObjectMesh(const std::vector<StrokeInput> &strokes,
                                                     const MeshOptions &options = {});
 

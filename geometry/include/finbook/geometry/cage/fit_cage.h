@@ -4,6 +4,7 @@
 #include <finbook/geometry/expected.h>
 #include <finbook/geometry/geometry_error.h>
 #include <finbook/geometry/region.h>
+#include <finbook/geometry/regions.h>
 #include <finbook/geometry/silhouette.h>
 #include <finbook/geometry/stroke_input.h>
 
@@ -21,6 +22,7 @@ struct FitCageOptions {
     // contained ends up at least margin / 2 inside the cage. In [0, 1e4].
     double margin = 8.0;
     SilhouetteOptions silhouette; // for the strokes overload
+    RegionsOptions regions;       // for the strokes overload (object_shape.h)
 };
 
 inline constexpr int kMinFitCorners = 3;
@@ -39,8 +41,8 @@ Expected<Eigen::MatrixX2d, GeometryError> fitCage(const Region &shape,
                                                   const Eigen::MatrixX2d &mustContain,
                                                   const FitCageOptions &options = {});
 
-// silhouette(strokes, options.silhouette), then the cage around it that contains every finite
-// stroke point. Errors: those of silhouette() and of the Region overload.
+// objectShape(strokes, options.silhouette, options.regions), then the cage around it that
+// contains every finite stroke point. Errors: those of objectShape() and of the Region overload.
 Expected<Eigen::MatrixX2d, GeometryError> fitCage(const std::vector<StrokeInput> &strokes,
                                                   const FitCageOptions &options = {});
 

@@ -1,0 +1,23 @@
+// The shape of an object: what meshing, skeletons and Fit Cage see. The union of the closed
+// regions of its strokes (regions.h) and the strokes' bands (silhouette.h), so a drawing whose
+// outline is left slightly open still gives a body, not a wire along the pen line. A tidy
+// closed outline gives exactly its silhouette.
+#pragma once
+
+#include <finbook/geometry/expected.h>
+#include <finbook/geometry/geometry_error.h>
+#include <finbook/geometry/regions.h>
+#include <finbook/geometry/silhouette.h>
+
+#include <vector>
+
+namespace finbook::geometry {
+
+// Errors: those of silhouette() and computeRegions(). Promise: as silhouette() — simple up to
+// touching points, outer rings positive, holes negative (kept only with HoleMode::KeepHoles),
+// no NaN, every finite stroke point inside.
+Expected<Region, GeometryError> objectShape(const std::vector<StrokeInput> &strokes,
+                                            const SilhouetteOptions &silhouetteOptions = {},
+                                            const RegionsOptions &regionsOptions = {});
+
+} // namespace finbook::geometry

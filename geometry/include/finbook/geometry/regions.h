@@ -1,0 +1,68 @@
+// Regions of a drawing: the faces of the planar arrangement of its strokes' centre lines,
+// after short gaps between a free stroke end and another stroke have been closed. What a
+// paint bucket fills and what the object's shape (object_shape.h) adds to the ink.
+//
+// Strokes are simplified first (Douglas–Peucker at a tenth of the pen width). A stroke end
+// is *free* when no other part of the drawing comes within the two pens' half widths of it;
+// an end that does come that close is joined to the nearest point silently (it touches). A
+// free end is joined to a point of a stroke or to another free end by a straight closure when
+// the closure is at most closeGap long, crosses no stroke and no other closure, runs through
+// no region that is already closed, and closes a new face (its two ends are already connected
+// through the drawing, or a second closure connects the same two parts); closures that
+// continue the end's direction are preferred. Faces thinner than a pen width (slivers from
+// overshoots) are merged into their neighbour.
+#pragma once
+
+#include <finbook/geometry/expected.h>
+#include <finbook/geometry/geometry_error.h>
+#include <finbook/geometry/region.h>
+#include <finbook/geometry/stroke_input.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace finbook::geometry {
+
+struct RegionsOptions {
+    // Gaps up to this many px between a free stroke end and another stroke (or another free
+    // end) are closed. < 0 means automatic: autoCloseGap(strokes). Must not be NaN or above
+    // kMaxPenWidth.
+    double closeGap = -1.0;
+};
+
+struct GapClosure {           // a segment added to close a face
+    Eigen::Vector2d from, to; // from = the free end
+    int fromStroke = -1;      // index into the input strokes
+    int toStroke = -1;        // index into the input strokes
+};
+
+struct Face {        // one bounded face of the arrangement (after gap closing)
+    Polygon polygon; // region.h conventions: outer A > 0, holes A < 0 (nested faces are holes)
+    std::vector<int> strokes; // indices of the input strokes on its boundary, sorted, unique
+    Eigen::Vector2d seed;     // a point strictly inside (not in a hole), far from the boundary
+    double area = 0.0;        // polygon area (outer minus holes)
+};
+
+struct Regions {
+    std::vector<Face> faces; // tiny faces (slivers from overshoots) already merged away
+    std::vector<GapClosure> closures;
+    int freeEnds = 0;      // free stroke ends found (before closing)
+    double closeGap = 0.0; // the gap actually used (px)
+};
+
+// The automatic close-gap distance: 4 % of the drawing's bounding-box diagonal, at least four
+// and at most forty pen widths (median width of the strokes). 0 for no finite points.
+double autoCloseGap(const std::vector<StrokeInput> &strokes);
+
+// Errors as silhouette(): EmptyInput, InvalidWidth, InvalidOptions, CoordinateOutOfRange,
+// TooManyPoints (also: more than 20,000 segments after simplification or more than 4,000
+// crossings, as scribbled shading makes), ClippingFailed (reported, never thrown).
+// Never NaN, never throws. Strokes that reduce to a dot take part in no face.
+Expected<Regions, GeometryError> computeRegions(const std::vector<StrokeInput> &strokes,
+                                                const RegionsOptions &options = {});
+
+// Index of the innermost face containing (x, y), or -1.
+int faceAt(const Regions &regions, double x, double y);
+
+} // namespace finbook::geometry

@@ -1,0 +1,281 @@
+#include "gap_closing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace finbook::geometry::detail {
+namespace {
+
+// Along its own stroke, a point counts as "elsewhere" (a loop coming back) only when it is
+// this many times its straight distance away along the stroke, plus a few pen widths.
+constexpr double kLoopArcFactor = 2.5;
+// Weight of direction in a closure's score: distance/gap + kTurnWeight·(1 − cos turn).
+constexpr double kTurnWeight = 0.35;
+// Closures only start this far from the ends they join (numerical contact slack, px).
+constexpr double kContactSlack = 0.05;
+// Passes of accept-and-reconnect (each may connect parts that let further closures close).
+constexpr int kMaxPasses = 8;
+
+struct End {
+    int stroke = -1, end = 0;
+    Eigen::Vector2d point, direction;
+    double arc = 0.0;
+};
+
+struct Candidate {
+    int from = -1;  // free end index
+    int toEnd = -1; // free end index, or -1 for a point on a stroke
+    int toStroke = -1;
+    Eigen::Vector2d to;
+    double score = 0.0;
+};
+
+class UnionFind {
+public:
+    explicit UnionFind(int n)
+        : m_parent(std::size_t(n))
+    {
+        std::iota(m_parent.begin(), m_parent.end(), 0);
+    }
+    int find(int a)
+    {
+        while (m_parent[std::size_t(a)] != a)
+            a = m_parent[std::size_t(a)] = m_parent[std::size_t(m_parent[std::size_t(a)])];
+        return a;
+    }
+    void join(int a, int b) { m_parent[std::size_t(find(a))] = find(b); }
+
+private:
+    std::vector<int> m_parent;
+};
+
+double touchTolerance(const StrokeSoup &soup, int a, int b)
+{
+    return std::max(
+        0.25, 0.5 * (soup.strokes()[std::size_t(a)].width + soup.strokes()[std::size_t(b)].width));
+}
+
+// Splits the stroke ends into free ones and touching ones; a touching end that does not
+// quite reach gets a snap segment to the point it touches.
+std::vector<End> findEnds(const StrokeSoup &soup, std::vector<LabelledSegment> &snaps,
+                          std::vector<std::pair<int, int>> &snapStrokes)
+{
+    std::vector<End> free;
+    const int n = int(soup.strokes().size());
+    for (int s = 0; s < n; ++s) {
+        if (soup.strokes()[std::size_t(s)].segmentCount == 0)
+            continue;
+        for (int end = 0; end < 2; ++end) {
+            End e{s, end, soup.endPoint(s, end), soup.endDirection(s, end), soup.endArc(s, end)};
+            const double w = soup.strokes()[std::size_t(s)].width;
+            NearestPoint touch;
+            for (int j = 0; j < n; ++j) {
+                if (soup.strokes()[std::size_t(j)].segmentCount == 0)
+                    continue;
+                const NearestPoint near =
+                    soup.nearestOnStroke(j, e.point, s, e.arc, kLoopArcFactor, 2.0 * w + 0.5);
+                if (near.distance >= 0.0 && near.distance <= touchTolerance(soup, s, j) &&
+                    (touch.distance < 0.0 || near.distance < touch.distance))
+                    touch = near;
+            }
+            if (touch.distance < 0.0) {
+                free.push_back(e);
+            } else if (touch.distance > 0.0) {
+                snaps.push_back({e.point, touch.point, -1 - int(snaps.size())});
+                snapStrokes.emplace_back(s, touch.stroke);
+            }
+        }
+    }
+    return free;
+}
+
+double turnCost(const Eigen::Vector2d &direction, const Eigen::Vector2d &delta)
+{
+    const double d = delta.norm();
+    if (!(d > 0.0) || !(direction.squaredNorm() > 0.0))
+        return 1.0;
+    return 1.0 - std::clamp(direction.dot(delta) / d, -1.0, 1.0);
+}
+
+std::vector<Candidate> candidates(const StrokeSoup &soup, const std::vector<End> &ends, double gap)
+{
+    std::vector<Candidate> out;
+    for (int i = 0; i < int(ends.size()); ++i) {
+        const End &e = ends[std::size_t(i)];
+        const double w = soup.strokes()[std::size_t(e.stroke)].width;
+        const auto add = [&](const NearestPoint &near, int toEnd) {
+            if (near.distance <= 0.0 || near.distance > gap)
+                return;
+            double turn = turnCost(e.direction, near.point - e.point);
+            if (toEnd >= 0)
+                turn = 0.5 *
+                       (turn + turnCost(ends[std::size_t(toEnd)].direction, e.point - near.point));
+            out.push_back(
+                {i, toEnd, near.stroke, near.point, near.distance / gap + kTurnWeight * turn});
+        };
+        for (int j = 0; j < int(soup.strokes().size()); ++j)
+            if (soup.strokes()[std::size_t(j)].segmentCount > 0)
+                add(soup.nearestOnStroke(j, e.point, e.stroke, e.arc, kLoopArcFactor,
+                                         2.0 * w + 0.5),
+                    -1);
+        add(soup.castRay(e.point, e.direction, gap, e.stroke, e.arc, 2.0 * w + 0.5), -1);
+        for (int k = 0; k < int(ends.size()); ++k) {
+            const End &o = ends[std::size_t(k)];
+            if (k == i || (o.stroke == e.stroke && soup.strokes()[std::size_t(e.stroke)].length <
+                                                       kLoopArcFactor * (o.point - e.point).norm()))
+                continue;
+            NearestPoint near{o.point, (o.point - e.point).norm(), o.stroke};
+            add(near, k);
+        }
+    }
+    std::sort(out.begin(), out.end(),
+              [](const Candidate &a, const Candidate &b) { return a.score < b.score; });
+    return out;
+}
+
+class Closer {
+public:
+    Closer(const StrokeSoup &soup, const std::vector<End> &ends, PlanarMap &map, UnionFind &parts)
+        : m_soup(soup)
+        , m_ends(ends)
+        , m_map(map)
+        , m_parts(parts)
+        , m_used(ends.size(), false)
+    {}
+
+    bool usable(const Candidate &c) const
+    {
+        if (m_used[std::size_t(c.from)] || (c.toEnd >= 0 && m_used[std::size_t(c.toEnd)]))
+            return false;
+        const Eigen::Vector2d p = m_ends[std::size_t(c.from)].point;
+        if (m_soup.crossesStrokes(p, c.to, kContactSlack))
+            return false;
+        for (const GapClosure &g : closures)
+            if (segmentsCross(p, c.to, g.from, g.to, kContactSlack))
+                return false;
+        for (double t : {0.25, 0.5, 0.75})
+            if (m_map.inBoundedFace(p + t * (c.to - p)))
+                return false;
+        return true;
+    }
+
+    bool connected(const Candidate &c)
+    {
+        return m_parts.find(m_ends[std::size_t(c.from)].stroke) == m_parts.find(c.toStroke);
+    }
+
+    void accept(const Candidate &c)
+    {
+        const End &e = m_ends[std::size_t(c.from)];
+        m_used[std::size_t(c.from)] = true;
+        if (c.toEnd >= 0)
+            m_used[std::size_t(c.toEnd)] = true;
+        m_map.insert({e.point, c.to, -1});
+        m_parts.join(e.stroke, c.toStroke);
+        closures.push_back({e.point, c.to, e.stroke, c.toStroke});
+    }
+
+    std::vector<GapClosure> closures;
+
+private:
+    const StrokeSoup &m_soup;
+    const std::vector<End> &m_ends;
+    PlanarMap &m_map;
+    UnionFind &m_parts;
+    std::vector<bool> m_used;
+};
+
+// Two separate parts joined by two closures enclose a face between them (two halves of an
+// outline drawn facing each other); one closure alone would only join them.
+double segmentDistance(const Eigen::Vector2d &p, const Eigen::Vector2d &q, const Eigen::Vector2d &a,
+                       const Eigen::Vector2d &b)
+{
+    if (segmentsCross(p, q, a, b, 0.0))
+        return 0.0;
+    return std::min({(closestOnSegment(p, a, b) - p).norm(), (closestOnSegment(q, a, b) - q).norm(),
+                     (closestOnSegment(a, p, q) - a).norm(),
+                     (closestOnSegment(b, p, q) - b).norm()});
+}
+
+bool acceptPairs(Closer &closer, const std::vector<Candidate> &deferred, UnionFind &parts,
+                 const std::vector<End> &ends, double gap)
+{
+    std::map<std::pair<int, int>, std::vector<const Candidate *>> byParts;
+    for (const Candidate &c : deferred) {
+        int a = parts.find(ends[std::size_t(c.from)].stroke), b = parts.find(c.toStroke);
+        if (a != b)
+            byParts[{std::min(a, b), std::max(a, b)}].push_back(&c);
+    }
+    for (auto &[key, list] : byParts) {
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            if (!closer.usable(*list[i]))
+                continue;
+            for (std::size_t j = i + 1; j < list.size(); ++j) {
+                const Candidate &a = *list[i], &b = *list[j];
+                const bool sharesEnd = a.from == b.from || a.from == b.toEnd ||
+                                       (a.toEnd >= 0 && (a.toEnd == b.from || a.toEnd == b.toEnd));
+                // Two closures side by side across one narrow slot (two fingers) enclose
+                // nothing worth a face: the pair must be further apart than a gap.
+                if (sharesEnd || !closer.usable(b) ||
+                    segmentDistance(ends[std::size_t(a.from)].point, a.to,
+                                    ends[std::size_t(b.from)].point, b.to) <= gap)
+                    continue;
+                closer.accept(a);
+                closer.accept(b);
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, PlanarMap &map)
+{
+    std::vector<LabelledSegment> segments, snaps;
+    std::vector<std::pair<int, int>> snapStrokes;
+    const std::vector<End> ends = findEnds(soup, snaps, snapStrokes);
+    for (const SoupSegment &s : soup.segments())
+        segments.push_back({s.a, s.b, s.stroke});
+    segments.insert(segments.end(), snaps.begin(), snaps.end());
+    map.insertAll(segments);
+
+    const int strokeCount = int(soup.strokes().size());
+    UnionFind parts(strokeCount);
+    const auto node = [&](int label) {
+        return label >= 0 ? label : snapStrokes[std::size_t(-1 - label)].first;
+    };
+    map.forEachContact([&](int a, int b) { parts.join(node(a), node(b)); });
+    for (const auto &[a, b] : snapStrokes)
+        parts.join(a, b);
+
+    GapClosingResult result;
+    result.freeEnds = int(ends.size());
+    if (!(closeGap > 0.0) || ends.empty())
+        return result;
+    Closer closer(soup, ends, map, parts);
+    const std::vector<Candidate> all = candidates(soup, ends, closeGap);
+    for (int pass = 0; pass < kMaxPasses; ++pass) {
+        std::vector<Candidate> deferred;
+        bool changed = false;
+        for (const Candidate &c : all) {
+            if (!closer.usable(c))
+                continue;
+            if (closer.connected(c)) {
+                closer.accept(c);
+                changed = true;
+            } else {
+                deferred.push_back(c);
+            }
+        }
+        if (!changed && !acceptPairs(closer, deferred, parts, ends, closeGap))
+            break;
+    }
+    result.closures = std::move(closer.closures);
+    return result;
+}
+
+} // namespace finbook::geometry::detail
