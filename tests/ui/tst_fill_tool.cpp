@@ -167,6 +167,11 @@ void TestFillTool::mainWindowHasToolMenuAndCloseGaps()
     QVERIFY(objectMenu && objectMenu->actions().contains(fillAll));
     auto *spin = window.findChild<QSpinBox *>(QStringLiteral("fill.closeGap"));
     QVERIFY(spin);
+    // The tool's options show with the tool.
+    fill->trigger();
+    QVERIFY(spin->isVisible());
+    window.findChild<QAction *>(QStringLiteral("tool.pen"))->trigger();
+    QVERIFY(!spin->isVisible());
     QCOMPARE(spin->value(), -1);
     QCOMPARE(spin->text(), spin->specialValueText());
     model::Document *doc = window.document();

@@ -1,6 +1,7 @@
 // The main window's fill parts: the Fill tool (F), the Fill toolbar with "Close gaps", and
 // Object → Fill All Enclosed Regions.
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/ui/canvas_tool.h>
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/fill/tool_fill.h>
@@ -71,12 +72,20 @@ void MainWindow::createFill()
         objectMenu->addAction(fillAll);
     }
 
+    // The tool's options: shown while the Fill tool is current, so the one row of toolbars
+    // keeps its room for the pen and the deformers the rest of the time.
     auto *bar = new QToolBar(tr("Fill"), this);
     bar->setObjectName(QStringLiteral("fillToolBar"));
     bar->addWidget(createCloseGapSpinBox(m_doc, bar));
-    bar->addAction(fillAll);
     addToolBar(Qt::TopToolBarArea, bar);
-    m_docksMenu->addAction(bar->toggleViewAction());
+    const auto showOptions = [bar](CanvasTool *current) {
+        bar->setVisible(current && current->id() == QStringLiteral("tool.fill"));
+    };
+    connect(m_canvas, &CanvasWidget::currentToolChanged, bar, showOptions);
+    showOptions(m_canvas->currentTool());
+    // Again once the window has restored its saved state (which may show the bar) and tool.
+    QMetaObject::invokeMethod(
+        bar, [this, showOptions] { showOptions(m_canvas->currentTool()); }, Qt::QueuedConnection);
 }
 
 } // namespace finbook::ui
