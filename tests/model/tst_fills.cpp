@@ -423,8 +423,8 @@ void TestFills::saveLoadRoundTrip()
 
 void TestFills::olderFilesOpenWithoutFills()
 {
-    for (const char *name :
-         {"/tests/data/format_v1_sample.finbook", "/resources/examples/walk.finbook"}) {
+    for (const char *name : {"/tests/data/format_v1_sample.finbook", "/tests/data/walk_v2.finbook",
+                             "/tests/data/walk_v1.finbook"}) {
         auto loaded = loadFinbook(QStringLiteral(FINBOOK_SOURCE_DIR) + QLatin1String(name));
         QVERIFY2(loaded, name);
         QVERIFY(loaded->formatVersion < kFinbookFormatVersion);
