@@ -3057,7 +3057,7 @@
     </message>
     <message>
         <location filename="../ui/src/fill/main_window_fill.cpp" line="58"/>
-        <source>&amp;Fill All Enclosed Regions</source>
+        <source>Fill All Enclosed Re&amp;gions</source>
         <translation>Alle geschlossenen Bereiche &amp;füllen</translation>
     </message>
     <message>

@@ -3057,8 +3057,8 @@
     </message>
     <message>
         <location filename="../ui/src/fill/main_window_fill.cpp" line="58"/>
-        <source>&amp;Fill All Enclosed Regions</source>
-        <translation>&amp;Remplir toutes les zones fermées</translation>
+        <source>Fill All Enclosed Re&amp;gions</source>
+        <translation>Remplir toutes les &amp;zones fermées</translation>
     </message>
     <message>
         <location filename="../ui/src/fill/main_window_fill.cpp" line="60"/>

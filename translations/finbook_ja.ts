@@ -3048,8 +3048,8 @@
     </message>
     <message>
         <location filename="../ui/src/fill/main_window_fill.cpp" line="58"/>
-        <source>&amp;Fill All Enclosed Regions</source>
-        <translation>閉じた領域をすべて塗る(&amp;F)</translation>
+        <source>Fill All Enclosed Re&amp;gions</source>
+        <translation>閉じた領域をすべて塗る(&amp;G)</translation>
     </message>
     <message>
         <location filename="../ui/src/fill/main_window_fill.cpp" line="60"/>

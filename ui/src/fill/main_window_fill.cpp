@@ -56,7 +56,7 @@ void MainWindow::createFill()
             [this](const QString &message) { statusBar()->showMessage(message, 6000); });
 
     QAction *fillAll =
-        makeAction(QStringLiteral("object.fillAll"), tr("&Fill All Enclosed Regions"));
+        makeAction(QStringLiteral("object.fillAll"), tr("Fill All Enclosed Re&gions"));
     fillAll->setStatusTip(
         tr("Fill every closed region of the current object that has no fill, in the pen colour"));
     connect(fillAll, &QAction::triggered, this, [this] {
