@@ -4,97 +4,97 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="22"/>
+        <location filename="../model/src/commands.cpp" line="23"/>
         <source>Draw Stroke</source>
         <translation>Strich zeichnen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="46"/>
+        <location filename="../model/src/commands.cpp" line="47"/>
         <source>Erase Stroke</source>
         <translation>Strich radieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="75"/>
+        <location filename="../model/src/commands.cpp" line="76"/>
         <source>Move Strokes to Object</source>
         <translation>Striche in Objekt verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="172"/>
+        <location filename="../model/src/commands.cpp" line="173"/>
         <source>New Object</source>
         <translation>Neues Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="200"/>
+        <location filename="../model/src/commands.cpp" line="201"/>
         <source>Delete Object</source>
         <translation>Objekt löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="229"/>
+        <location filename="../model/src/commands.cpp" line="230"/>
         <source>Rename Object</source>
         <translation>Objekt umbenennen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="254"/>
+        <location filename="../model/src/commands.cpp" line="255"/>
         <source>Reorder Object</source>
         <translation>Objekt umsortieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="285"/>
+        <location filename="../model/src/commands.cpp" line="286"/>
         <source>Show Object</source>
         <translation>Objekt einblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="285"/>
+        <location filename="../model/src/commands.cpp" line="286"/>
         <source>Hide Object</source>
         <translation>Objekt ausblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="288"/>
         <source>Lock Object</source>
         <translation>Objekt sperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="288"/>
         <source>Unlock Object</source>
         <translation>Objekt entsperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="320"/>
+        <location filename="../model/src/commands.cpp" line="321"/>
         <source>Insert Frame</source>
         <translation>Einzelbild einfügen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="324"/>
+        <location filename="../model/src/commands.cpp" line="325"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="343"/>
+        <location filename="../model/src/commands.cpp" line="344"/>
         <source>Duplicate Frame</source>
         <translation>Einzelbild duplizieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="391"/>
+        <location filename="../model/src/commands.cpp" line="394"/>
         <source>Delete Frame</source>
         <translation>Einzelbild löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="417"/>
+        <location filename="../model/src/commands.cpp" line="420"/>
         <source>Move Frame</source>
         <translation>Einzelbild verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="440"/>
+        <location filename="../model/src/commands.cpp" line="443"/>
         <source>Change Frame Exposure</source>
         <translation>Haltedauer des Einzelbilds ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="478"/>
+        <location filename="../model/src/commands.cpp" line="482"/>
         <source>Change Document Settings</source>
         <translation>Dokumenteinstellungen ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/object_commands.cpp" line="16"/>
+        <location filename="../model/src/object_commands.cpp" line="17"/>
         <source>Merge Objects</source>
         <translation>Objekte zusammenführen</translation>
     </message>
@@ -139,17 +139,17 @@
         <translation>Rig entfernen</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="36"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="39"/>
         <source>Generate In-betweens</source>
         <translation>Zwischenbilder erzeugen</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="89"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="90"/>
         <source>Reset Pose</source>
         <translation>Pose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="113"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="114"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung anwenden</translation>
@@ -223,6 +223,31 @@
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="166"/>
         <source>Make Character Root</source>
         <translation>Zur Wurzel der Figur machen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <source>Recolour Fill</source>
+        <translation>Füllung umfärben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <source>Fill Region</source>
+        <translation>Bereich füllen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="83"/>
+        <source>Remove Fill</source>
+        <translation>Füllung entfernen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="93"/>
+        <source>Fill All Enclosed Regions</source>
+        <translation>Alle geschlossenen Bereiche füllen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="104"/>
+        <source>Close Gaps</source>
+        <translation>Lücken schließen</translation>
     </message>
 </context>
 <context>
@@ -474,18 +499,18 @@
         <translation>Kein Käfig passt zu dieser Zeichnung: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="40"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="41"/>
         <source>No skeleton can be built for this drawing: %1</source>
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="52"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="53"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>Das Objekt hat keine Striche, in denen sich ein Skelett erstellen ließe.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="66"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="75"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="76"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen.</translation>
     </message>
@@ -495,8 +520,8 @@
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="161"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="182"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="21"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="65"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="22"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="66"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>Das Skelett ist beschädigt; erstellen Sie es neu.</translation>
     </message>
@@ -532,21 +557,21 @@
         <translation>Ein Skelett braucht mindestens einen Knochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="32"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="55"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="33"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="56"/>
         <source>The skeleton cannot be used: %1</source>
         <translation>Das Skelett kann nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="121"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="127"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="122"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="135"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>Das Skelett kann nicht an diese Zeichnung gebunden werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="71"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="143"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="149"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="72"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="151"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="157"/>
         <source>The bones could not be posed: %1</source>
         <translation>Die Knochen konnten nicht posiert werden: %1</translation>
     </message>
@@ -1099,7 +1124,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
@@ -1156,12 +1181,22 @@
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <source>the close-gap setting</source>
+        <translation>die Einstellung zum Lückenschließen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
+        <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1441,22 +1476,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="355"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -1586,6 +1621,26 @@
         <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
         <source>there is not enough memory</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="15"/>
+        <source>the fill list</source>
+        <translation>die Liste der Füllungen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="18"/>
+        <source>the object claims %1 fills, more than %2</source>
+        <translation>das Objekt gibt %1 Füllungen an, mehr als %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="28"/>
+        <source>a fill&apos;s seed is not a number</source>
+        <translation>der Startpunkt einer Füllung ist keine Zahl</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="38"/>
+        <source>a fill&apos;s stroke ids are not in order</source>
+        <translation>die Strich-IDs einer Füllung sind nicht geordnet</translation>
     </message>
 </context>
 <context>
@@ -2340,6 +2395,19 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::FillTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="23"/>
+        <source>Fill</source>
+        <translation>Füllen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/tool_fill.cpp" line="70"/>
+        <source>No closed region here: close the outline, or raise Close gaps</source>
+        <translation>Hier ist kein geschlossener Bereich: Umriss schließen oder „Lücken schließen“ erhöhen</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::FrameActions</name>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="13"/>
@@ -2531,53 +2599,53 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="123"/>
+        <location filename="../ui/src/main_window.cpp" line="124"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="147"/>
+        <location filename="../ui/src/main_window.cpp" line="148"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <location filename="../ui/src/main_window.cpp" line="149"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="151"/>
+        <location filename="../ui/src/main_window.cpp" line="152"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <location filename="../ui/src/main_window.cpp" line="153"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="188"/>
+        <location filename="../ui/src/main_window.cpp" line="189"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="199"/>
+        <location filename="../ui/src/main_window.cpp" line="200"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <location filename="../ui/src/main_window.cpp" line="201"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="205"/>
+        <location filename="../ui/src/main_window.cpp" line="206"/>
         <location filename="../ui/src/main_window_files.cpp" line="303"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="206"/>
+        <location filename="../ui/src/main_window.cpp" line="207"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -2896,42 +2964,42 @@
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="234"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="235"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="237"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="238"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="245"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="247"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="248"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="249"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="269"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="292"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="294"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -3034,6 +3102,46 @@
         <location filename="../ui/src/recovery/main_window_recovery.cpp" line="71"/>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
         <translation>%1 mit dem Stand vom %2 wiederhergestellt; speichern Sie die Animation, um sie zu behalten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="28"/>
+        <source>Close gaps: automatic</source>
+        <translation>Lücken schließen: automatisch</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="29"/>
+        <source>Close gaps up to </source>
+        <translation>Lücken schließen bis </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="30"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="31"/>
+        <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
+        <translation>Öffnungen im Umriss bis zu dieser Breite ergeben noch einen Bereich, den das Füllwerkzeug füllen kann (0 = nur geschlossene Umrisse)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="59"/>
+        <source>Fill All Enclosed Re&amp;gions</source>
+        <translation>Alle geschlossenen Bereiche &amp;füllen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="61"/>
+        <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
+        <translation>Jeden geschlossenen Bereich des aktuellen Objekts ohne Füllung in der Stiftfarbe füllen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="68"/>
+        <source>The current object has no unfilled closed region</source>
+        <translation>Das aktuelle Objekt hat keinen ungefüllten geschlossenen Bereich</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
+        <source>Fill</source>
+        <translation>Füllen</translation>
     </message>
 </context>
 <context>

@@ -4,97 +4,97 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="22"/>
+        <location filename="../model/src/commands.cpp" line="23"/>
         <source>Draw Stroke</source>
         <translation>Tracer un trait</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="46"/>
+        <location filename="../model/src/commands.cpp" line="47"/>
         <source>Erase Stroke</source>
         <translation>Effacer un trait</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="75"/>
+        <location filename="../model/src/commands.cpp" line="76"/>
         <source>Move Strokes to Object</source>
         <translation>Déplacer les traits vers un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="172"/>
+        <location filename="../model/src/commands.cpp" line="173"/>
         <source>New Object</source>
         <translation>Nouvel objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="200"/>
+        <location filename="../model/src/commands.cpp" line="201"/>
         <source>Delete Object</source>
         <translation>Supprimer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="229"/>
+        <location filename="../model/src/commands.cpp" line="230"/>
         <source>Rename Object</source>
         <translation>Renommer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="254"/>
+        <location filename="../model/src/commands.cpp" line="255"/>
         <source>Reorder Object</source>
         <translation>Réordonner l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="285"/>
+        <location filename="../model/src/commands.cpp" line="286"/>
         <source>Show Object</source>
         <translation>Afficher l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="285"/>
+        <location filename="../model/src/commands.cpp" line="286"/>
         <source>Hide Object</source>
         <translation>Masquer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="288"/>
         <source>Lock Object</source>
         <translation>Verrouiller l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="288"/>
         <source>Unlock Object</source>
         <translation>Déverrouiller l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="320"/>
+        <location filename="../model/src/commands.cpp" line="321"/>
         <source>Insert Frame</source>
         <translation>Insérer une image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="324"/>
+        <location filename="../model/src/commands.cpp" line="325"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="343"/>
+        <location filename="../model/src/commands.cpp" line="344"/>
         <source>Duplicate Frame</source>
         <translation>Dupliquer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="391"/>
+        <location filename="../model/src/commands.cpp" line="394"/>
         <source>Delete Frame</source>
         <translation>Supprimer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="417"/>
+        <location filename="../model/src/commands.cpp" line="420"/>
         <source>Move Frame</source>
         <translation>Déplacer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="440"/>
+        <location filename="../model/src/commands.cpp" line="443"/>
         <source>Change Frame Exposure</source>
         <translation>Modifier l&apos;exposition de l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="478"/>
+        <location filename="../model/src/commands.cpp" line="482"/>
         <source>Change Document Settings</source>
         <translation>Modifier les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/object_commands.cpp" line="16"/>
+        <location filename="../model/src/object_commands.cpp" line="17"/>
         <source>Merge Objects</source>
         <translation>Fusionner les objets</translation>
     </message>
@@ -139,17 +139,17 @@
         <translation>Retirer l&apos;armature</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="36"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="39"/>
         <source>Generate In-betweens</source>
         <translation>Générer des intervalles</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="89"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="90"/>
         <source>Reset Pose</source>
         <translation>Réinitialiser la pose</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="113"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="114"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Appliquer la pose au dessin</translation>
@@ -223,6 +223,31 @@
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="166"/>
         <source>Make Character Root</source>
         <translation>Faire la racine du personnage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <source>Recolour Fill</source>
+        <translation>Recolorer le remplissage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <source>Fill Region</source>
+        <translation>Remplir la zone</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="83"/>
+        <source>Remove Fill</source>
+        <translation>Retirer le remplissage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="93"/>
+        <source>Fill All Enclosed Regions</source>
+        <translation>Remplir toutes les zones fermées</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="104"/>
+        <source>Close Gaps</source>
+        <translation>Fermer les trous</translation>
     </message>
 </context>
 <context>
@@ -474,18 +499,18 @@
         <translation>Aucune cage ne convient à ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="40"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="41"/>
         <source>No skeleton can be built for this drawing: %1</source>
         <translation>Impossible de construire un squelette pour ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="52"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="53"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>L&apos;objet n&apos;a aucun trait dans lequel construire un squelette.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="66"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="75"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="76"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Impossible de construire un squelette pour ce dessin.</translation>
     </message>
@@ -495,8 +520,8 @@
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="161"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="182"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="21"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="65"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="22"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="66"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>Le squelette est endommagé&#xa0;; reconstruisez-le.</translation>
     </message>
@@ -532,21 +557,21 @@
         <translation>Un squelette a besoin d’au moins un os.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="32"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="55"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="33"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="56"/>
         <source>The skeleton cannot be used: %1</source>
         <translation>Impossible d&apos;utiliser le squelette&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="121"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="127"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="122"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="135"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>Le squelette ne peut pas habiller ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="71"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="143"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="149"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="72"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="151"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="157"/>
         <source>The bones could not be posed: %1</source>
         <translation>Impossible de poser les os&#xa0;: %1</translation>
     </message>
@@ -1099,7 +1124,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
@@ -1156,12 +1181,22 @@
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <source>the close-gap setting</source>
+        <translation>le réglage de fermeture des trous</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
+        <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1441,22 +1476,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="355"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -1586,6 +1621,26 @@
         <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
         <source>there is not enough memory</source>
         <translation>la mémoire est insuffisante</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="15"/>
+        <source>the fill list</source>
+        <translation>la liste des remplissages</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="18"/>
+        <source>the object claims %1 fills, more than %2</source>
+        <translation>l&apos;objet annonce %1 remplissages, plus que %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="28"/>
+        <source>a fill&apos;s seed is not a number</source>
+        <translation>le point de départ d&apos;un remplissage n&apos;est pas un nombre</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="38"/>
+        <source>a fill&apos;s stroke ids are not in order</source>
+        <translation>les identifiants de traits d&apos;un remplissage ne sont pas dans l&apos;ordre</translation>
     </message>
 </context>
 <context>
@@ -2340,6 +2395,19 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::FillTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="23"/>
+        <source>Fill</source>
+        <translation>Remplissage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/tool_fill.cpp" line="70"/>
+        <source>No closed region here: close the outline, or raise Close gaps</source>
+        <translation>Aucune zone fermée ici : fermez le contour ou augmentez « Fermer les trous »</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::FrameActions</name>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="13"/>
@@ -2531,53 +2599,53 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="123"/>
+        <location filename="../ui/src/main_window.cpp" line="124"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="147"/>
+        <location filename="../ui/src/main_window.cpp" line="148"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <location filename="../ui/src/main_window.cpp" line="149"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="151"/>
+        <location filename="../ui/src/main_window.cpp" line="152"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <location filename="../ui/src/main_window.cpp" line="153"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="188"/>
+        <location filename="../ui/src/main_window.cpp" line="189"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="199"/>
+        <location filename="../ui/src/main_window.cpp" line="200"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <location filename="../ui/src/main_window.cpp" line="201"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="205"/>
+        <location filename="../ui/src/main_window.cpp" line="206"/>
         <location filename="../ui/src/main_window_files.cpp" line="303"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="206"/>
+        <location filename="../ui/src/main_window.cpp" line="207"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -2911,42 +2979,42 @@
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="234"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="235"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="237"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="238"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="245"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="247"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="248"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="249"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="269"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="292"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="294"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
@@ -3034,6 +3102,46 @@
         <location filename="../ui/src/recovery/main_window_recovery.cpp" line="71"/>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
         <translation>%1 récupéré tel qu&apos;il était le %2&#xa0;; enregistrez-le pour le conserver.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="28"/>
+        <source>Close gaps: automatic</source>
+        <translation>Fermer les trous : automatique</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="29"/>
+        <source>Close gaps up to </source>
+        <translation>Fermer les trous jusqu&apos;à </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="30"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="31"/>
+        <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
+        <translation>Les ouvertures d&apos;un contour jusqu&apos;à cette largeur forment encore une zone que l&apos;outil Remplissage peut remplir (0 = contours fermés seulement)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="59"/>
+        <source>Fill All Enclosed Re&amp;gions</source>
+        <translation>Remplir toutes les &amp;zones fermées</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="61"/>
+        <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
+        <translation>Remplir de la couleur du stylo chaque zone fermée de l&apos;objet courant qui n&apos;a pas de remplissage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="68"/>
+        <source>The current object has no unfilled closed region</source>
+        <translation>L&apos;objet courant n&apos;a aucune zone fermée sans remplissage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
+        <source>Fill</source>
+        <translation>Remplissage</translation>
     </message>
 </context>
 <context>

@@ -4,97 +4,97 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="22"/>
+        <location filename="../model/src/commands.cpp" line="23"/>
         <source>Draw Stroke</source>
         <translation>ストロークを描画</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="46"/>
+        <location filename="../model/src/commands.cpp" line="47"/>
         <source>Erase Stroke</source>
         <translation>ストロークを消去</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="75"/>
+        <location filename="../model/src/commands.cpp" line="76"/>
         <source>Move Strokes to Object</source>
         <translation>ストロークをオブジェクトへ移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="172"/>
+        <location filename="../model/src/commands.cpp" line="173"/>
         <source>New Object</source>
         <translation>新規オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="200"/>
+        <location filename="../model/src/commands.cpp" line="201"/>
         <source>Delete Object</source>
         <translation>オブジェクトを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="229"/>
+        <location filename="../model/src/commands.cpp" line="230"/>
         <source>Rename Object</source>
         <translation>オブジェクト名を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="254"/>
+        <location filename="../model/src/commands.cpp" line="255"/>
         <source>Reorder Object</source>
         <translation>オブジェクトの順序を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="285"/>
+        <location filename="../model/src/commands.cpp" line="286"/>
         <source>Show Object</source>
         <translation>オブジェクトを表示</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="285"/>
+        <location filename="../model/src/commands.cpp" line="286"/>
         <source>Hide Object</source>
         <translation>オブジェクトを非表示</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="288"/>
         <source>Lock Object</source>
         <translation>オブジェクトをロック</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="288"/>
         <source>Unlock Object</source>
         <translation>オブジェクトのロックを解除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="320"/>
+        <location filename="../model/src/commands.cpp" line="321"/>
         <source>Insert Frame</source>
         <translation>フレームを挿入</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="324"/>
+        <location filename="../model/src/commands.cpp" line="325"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="343"/>
+        <location filename="../model/src/commands.cpp" line="344"/>
         <source>Duplicate Frame</source>
         <translation>フレームを複製</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="391"/>
+        <location filename="../model/src/commands.cpp" line="394"/>
         <source>Delete Frame</source>
         <translation>フレームを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="417"/>
+        <location filename="../model/src/commands.cpp" line="420"/>
         <source>Move Frame</source>
         <translation>フレームを移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="440"/>
+        <location filename="../model/src/commands.cpp" line="443"/>
         <source>Change Frame Exposure</source>
         <translation>フレームの表示時間を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="478"/>
+        <location filename="../model/src/commands.cpp" line="482"/>
         <source>Change Document Settings</source>
         <translation>ドキュメント設定を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/object_commands.cpp" line="16"/>
+        <location filename="../model/src/object_commands.cpp" line="17"/>
         <source>Merge Objects</source>
         <translation>オブジェクトを結合</translation>
     </message>
@@ -139,17 +139,17 @@
         <translation>リグを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="36"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="39"/>
         <source>Generate In-betweens</source>
         <translation>中割りを生成</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="89"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="90"/>
         <source>Reset Pose</source>
         <translation>ポーズをリセット</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="113"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="114"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>ポーズを絵に適用</translation>
@@ -223,6 +223,31 @@
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="166"/>
         <source>Make Character Root</source>
         <translation>キャラクターのルートにする</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <source>Recolour Fill</source>
+        <translation>塗りの色を変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <source>Fill Region</source>
+        <translation>領域を塗る</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="83"/>
+        <source>Remove Fill</source>
+        <translation>塗りを削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="93"/>
+        <source>Fill All Enclosed Regions</source>
+        <translation>閉じた領域をすべて塗る</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_commands.cpp" line="104"/>
+        <source>Close Gaps</source>
+        <translation>隙間を閉じる</translation>
     </message>
 </context>
 <context>
@@ -473,18 +498,18 @@
         <translation>この絵に合うケージがありません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="40"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="41"/>
         <source>No skeleton can be built for this drawing: %1</source>
         <translation>この絵にはスケルトンを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="52"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="53"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>このオブジェクトにはスケルトンを作成するためのストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="66"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="75"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="76"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>この絵にはスケルトンを作成できません。</translation>
     </message>
@@ -494,8 +519,8 @@
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="161"/>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="182"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="21"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="65"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="22"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="66"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>スケルトンが破損しています。作成し直してください。</translation>
     </message>
@@ -531,21 +556,21 @@
         <translation>スケルトンには少なくとも 1 本のボーンが必要です。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="32"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="55"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="33"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="56"/>
         <source>The skeleton cannot be used: %1</source>
         <translation>スケルトンを使用できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="121"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="127"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="122"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="135"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>このスケルトンではこの絵をスキニングできません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="71"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="143"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="149"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="72"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="151"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="157"/>
         <source>The bones could not be posed: %1</source>
         <translation>ボーンのポーズを計算できませんでした: %1</translation>
     </message>
@@ -1098,7 +1123,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
@@ -1155,12 +1180,22 @@
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <source>the close-gap setting</source>
+        <translation>隙間を閉じる設定</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
+        <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1440,22 +1475,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="327"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="355"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -1583,6 +1618,26 @@
         <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
         <source>there is not enough memory</source>
         <translation>メモリが足りません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="15"/>
+        <source>the fill list</source>
+        <translation>塗りの一覧</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="18"/>
+        <source>the object claims %1 fills, more than %2</source>
+        <translation>オブジェクトの塗りが %1 個あり、上限 %2 を超えています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="28"/>
+        <source>a fill&apos;s seed is not a number</source>
+        <translation>塗りの基準点が数値ではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="38"/>
+        <source>a fill&apos;s stroke ids are not in order</source>
+        <translation>塗りのストロークIDが順に並んでいません</translation>
     </message>
 </context>
 <context>
@@ -2333,6 +2388,19 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::FillTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="23"/>
+        <source>Fill</source>
+        <translation>塗りつぶし</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/tool_fill.cpp" line="70"/>
+        <source>No closed region here: close the outline, or raise Close gaps</source>
+        <translation>ここに閉じた領域はありません。輪郭を閉じるか「隙間を閉じる」を大きくしてください</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::FrameActions</name>
     <message>
         <location filename="../ui/src/frame_actions.cpp" line="13"/>
@@ -2524,53 +2592,53 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="123"/>
+        <location filename="../ui/src/main_window.cpp" line="124"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="147"/>
+        <location filename="../ui/src/main_window.cpp" line="148"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <location filename="../ui/src/main_window.cpp" line="149"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="151"/>
+        <location filename="../ui/src/main_window.cpp" line="152"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <location filename="../ui/src/main_window.cpp" line="153"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="188"/>
+        <location filename="../ui/src/main_window.cpp" line="189"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="199"/>
+        <location filename="../ui/src/main_window.cpp" line="200"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <location filename="../ui/src/main_window.cpp" line="201"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="205"/>
+        <location filename="../ui/src/main_window.cpp" line="206"/>
         <location filename="../ui/src/main_window_files.cpp" line="303"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="206"/>
+        <location filename="../ui/src/main_window.cpp" line="207"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -2902,42 +2970,42 @@
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="234"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="235"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="237"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="238"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="245"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="247"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="248"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="249"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="269"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="292"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="294"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
@@ -3025,6 +3093,46 @@
         <location filename="../ui/src/recovery/main_window_recovery.cpp" line="71"/>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
         <translation>%1 を %2 時点の状態に復元しました。残しておくには保存してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="28"/>
+        <source>Close gaps: automatic</source>
+        <translation>隙間を閉じる: 自動</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="29"/>
+        <source>Close gaps up to </source>
+        <translation>隙間を閉じる: 最大 </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="30"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="31"/>
+        <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
+        <translation>この幅までの輪郭の切れ目は、塗りつぶしツールで塗れる領域として扱います（0 = 閉じた輪郭のみ）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="59"/>
+        <source>Fill All Enclosed Re&amp;gions</source>
+        <translation>閉じた領域をすべて塗る(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="61"/>
+        <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
+        <translation>現在のオブジェクトの塗られていない閉じた領域をすべてペンの色で塗ります</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="68"/>
+        <source>The current object has no unfilled closed region</source>
+        <translation>現在のオブジェクトに塗られていない閉じた領域はありません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
+        <source>Fill</source>
+        <translation>塗りつぶし</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 #include "command_text.h"
 
 #include <finbook/model/commands.h>
+#include <finbook/model/fill/fill_ids.h>
 #include <finbook/model/skeleton/skeleton_join.h>
 
 #include <QCoreApplication>
@@ -369,8 +370,10 @@ void DuplicateFrameCommand::redo()
     for (StrokeGroup &g : copy.groups) {
         groupIds[g.id] = m_ids.at(next);
         g.id = m_ids.at(next++);
+        std::unordered_map<Id, Id> strokeIds;
         for (Stroke &s : g.strokes)
-            s.id = m_ids.at(next++);
+            s.id = strokeIds[s.id] = m_ids.at(next++);
+        remapFillStrokeIds(g, strokeIds);
         for (Pin &p : g.rig.pins)
             p.id = m_ids.at(next++);
     }
@@ -466,6 +469,7 @@ DocumentSettings sanitizedSettings(DocumentSettings s)
     s.playStart = std::max(0, s.playStart);
     if (s.playEnd >= 0 && s.playEnd < s.playStart)
         std::swap(s.playStart, s.playEnd);
+    s.closeGap = s.closeGap >= 0 ? std::min(s.closeGap, kMaxCloseGap) : -1.0; // NaN: automatic
     return s;
 }
 

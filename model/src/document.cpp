@@ -260,6 +260,12 @@ void Document::setStrokes(Id groupId, std::vector<Stroke> strokes)
     groupEdited(groupId, false);
 }
 
+void Document::setFills(Id groupId, std::vector<Fill> fills)
+{
+    mutableGroup(groupId).fills = std::move(fills);
+    groupEdited(groupId, false);
+}
+
 void Document::setRig(Id groupId, Rig rig)
 {
     StrokeGroup &g = mutableGroup(groupId);

@@ -5,7 +5,7 @@
 //   crc     := u32 CRC-32C of the section's tag, length and payload (format 2 on; version-1
 //              files have none)
 //   "DOCU"  := u32 canvasWidth u32 canvasHeight u32 background u32 fps u8 loop
-//              i32 playStart i32 playEnd u64 nextId
+//              i32 playStart i32 playEnd u64 nextId [f64 closeGap]   (format 3 on; < 0 = auto)
 //   "STRK"  := u32 count strokeData*       (the stroke-data table, first appearance order)
 //   strokeData := u32 color f32 width u32 n point[n]
 //   point   := f32 x f32 y u16 pressure     (pressure = q / 65535; 10 bytes)
@@ -25,6 +25,8 @@
 //              The locks (0 or 1 per joint) are written only when a joint is locked, so a
 //              skeleton without locks keeps the original layout and older files (which end
 //              at the mode) open with no locks.
+//   "FILL"  := u32 count (u32 color f64 seedX f64 seedY u32 n u64 strokeId[n])[count]
+//              (format 3 on; types.h Fill): fills, drawn under the strokes in this order.
 //   "JOIN"  := u64 parentObjectId f64 childAtX f64 childAtY f64 parentAtX f64 parentAtY
 //              (skeleton/skeleton_rig.h SkeletonJoin): the object's skeleton hangs from
 //              another object's skeleton in the same frame. Only after SKEL.
@@ -76,6 +78,7 @@ constexpr quint32 kTagDeformed = tag("DEFM");
 constexpr quint32 kTagCage = tag("CAGE");
 constexpr quint32 kTagSkeleton = tag("SKEL");
 constexpr quint32 kTagJoin = tag("JOIN");
+constexpr quint32 kTagFills = tag("FILL");
 
 inline bool isAncillary(quint32 t)
 {
@@ -88,6 +91,8 @@ constexpr std::size_t kSectionCrcBytes = 4;
 constexpr quint32 kFirstVersionWithCrc = 2;
 constexpr std::size_t kChunkHeaderBytes = 4 + 4;
 constexpr std::size_t kDocumentBytes = 4 * 4 + 1 + 4 + 4 + 8;
+constexpr quint32 kFirstVersionWithFills = 3;
+constexpr std::size_t kFillFixedBytes = 4 + 8 + 8 + 4;
 constexpr std::size_t kPointBytes = 4 + 4 + 2;
 constexpr std::size_t kStrokeDataHeaderBytes = 4 + 4 + 4;
 constexpr std::size_t kStrokeRefBytes = 8 + 4;

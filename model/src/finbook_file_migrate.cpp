@@ -17,6 +17,9 @@ constexpr std::array<MigrationStep, kFinbookFormatVersion - kOldestVersion> kSte
     // 1 → 2 added a checksum after each section (the reader's business); what a document
     // holds did not change.
     [](LoadedDocument &) {},
+    // 2 → 3 added fills and the close-gap setting: an older file has no fills and closes gaps
+    // automatically, which are the defaults.
+    [](LoadedDocument &document) { document.settings.closeGap = DocumentSettings().closeGap; },
 };
 } // namespace
 

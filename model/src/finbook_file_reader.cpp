@@ -268,6 +268,16 @@ void Reader::readDocument(Cursor &c)
         s.playEnd = defaults.playEnd;
     }
     m_doc.nextId = c.u64(QT_TRANSLATE_NOOP("FinbookFile", "the next id"));
+    if (m_version >= kFirstVersionWithFills) {
+        s.closeGap = c.f64(QT_TRANSLATE_NOOP("FinbookFile", "the close-gap setting"));
+        if (!(s.closeGap <= kMaxCloseGap) || (s.closeGap < 0.0 && s.closeGap != -1.0)) {
+            problem(c, FileErrorCode::BadValue,
+                    FinbookFile::tr("the close-gap setting %1 is outside 0 to %2 pixels")
+                        .arg(s.closeGap)
+                        .arg(kMaxCloseGap));
+            s.closeGap = defaults.closeGap;
+        }
+    }
     if (m_doc.nextId > kMaxId + 1) {
         problem(
             c, FileErrorCode::BadValue,

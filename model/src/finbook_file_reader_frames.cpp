@@ -24,7 +24,7 @@ constexpr qint64 kClaimedIdBytes = qint64(sizeof(Id));
 const Reader::ObjectChunk Reader::kObjectChunks[] = {
     {kTagPins, true, &Reader::readPinsChunk},         {kTagCage, true, &Reader::readCageChunk},
     {kTagSkeleton, true, &Reader::readSkeletonChunk}, {kTagJoin, false, &Reader::readJoinChunk},
-    {kTagDeformed, false, &Reader::readPoseChunk},
+    {kTagDeformed, false, &Reader::readPoseChunk},    {kTagFills, false, &Reader::readFillsChunk},
 };
 
 quint32 Reader::count(Cursor &c, std::size_t recordBytes, const char *what)

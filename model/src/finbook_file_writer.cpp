@@ -59,6 +59,11 @@ struct Tables {
         noteId(g.id);
         for (const Pin &p : g.rig.pins)
             noteId(p.id);
+        for (const Fill &f : g.fills) {
+            expectedBytes += qsizetype(kFillFixedBytes + 8 * f.strokes.size());
+            for (Id id : f.strokes)
+                noteId(id);
+        }
         expectedBytes += 4 + qsizetype(kObjectFixedBytes) + 3 * qsizetype(kChunkHeaderBytes) +
                          g.name.size() * 3 + qsizetype(g.rig.pins.size() * kPinBytes + 4) +
                          qsizetype(g.strokes.size() * kStrokeRefBytes);
@@ -93,6 +98,7 @@ void writeDocumentSection(ByteWriter &w, const DocumentSettings &s, Id maxId)
     // ids when they are created, and undo does not give them back, so the counter depends on
     // history. Past every stored id is all a reopened document needs (its undo stack is new).
     w.u64(maxId + 1);
+    w.f64(s.closeGap < 0.0 ? -1.0 : s.closeGap);
 }
 
 void writeStrokeTable(ByteWriter &w, const Tables &tables)
@@ -181,6 +187,18 @@ const ObjectChunkWriter kObjectChunkWriters[] = {
          w.u64(j.parent);
          for (double v : {j.childAt.x(), j.childAt.y(), j.parentAt.x(), j.parentAt.y()})
              w.f64(v);
+     }},
+    {kTagFills, [](const StrokeGroup &g) { return !g.fills.empty(); },
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &) {
+         w.u32(quint32(g.fills.size()));
+         for (const Fill &f : g.fills) {
+             w.u32(f.color);
+             w.f64(f.seed.x());
+             w.f64(f.seed.y());
+             w.u32(quint32(f.strokes.size()));
+             for (Id id : f.strokes)
+                 w.u64(id);
+         }
      }},
     {kTagDeformed, poseMatches,
      [](ByteWriter &w, const StrokeGroup &g, const Tables &tables) {

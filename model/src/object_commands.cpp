@@ -1,5 +1,6 @@
 #include "command_text.h"
 
+#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/object_commands.h>
 #include <finbook/model/render.h>
 
@@ -46,6 +47,17 @@ void MergeObjectsCommand::redo()
     merged.insert(merged.end(), below.begin(), below.end());
     merged.insert(merged.end(), above.begin(), above.end());
     m_doc->setStrokes(m_targetId, std::move(merged));
+    // The source's fills come along (their seeds moved with a pose that was baked), under the
+    // target's when the source was below it.
+    if (!m_source->fills.empty()) {
+        m_targetFills = m_doc->group(m_targetId)->fills;
+        const std::vector<Fill> movedFills =
+            fillsAfterBake(*m_source, moved, m_doc->settings().closeGap);
+        std::vector<Fill> fills = sourceAbove ? m_targetFills : movedFills;
+        const std::vector<Fill> &upper = sourceAbove ? movedFills : m_targetFills;
+        fills.insert(fills.end(), upper.begin(), upper.end());
+        m_doc->setFills(m_targetId, std::move(fills));
+    }
 }
 
 void MergeObjectsCommand::undo()
@@ -53,6 +65,8 @@ void MergeObjectsCommand::undo()
     if (isObsolete() || !m_source)
         return;
     m_doc->setStrokes(m_targetId, m_targetStrokes);
+    if (!m_source->fills.empty())
+        m_doc->setFills(m_targetId, m_targetFills);
     if (m_targetDeformed)
         m_doc->setDeformed(m_targetId, m_targetDeformed);
     m_doc->insertGroup(m_frameId, m_sourceIndex, *m_source);

@@ -5,6 +5,7 @@
 // stroke referenced thousands of times (each reference painted again). So segments are
 // clipped to what the painter can show before QPainter sees them, and references to the
 // same points in one frame are painted once (paintList).
+#include <finbook/model/fill/fill_render.h>
 #include <finbook/model/render.h>
 
 #include <QPainterPath>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <unordered_map>
 
 namespace finbook::model {
@@ -204,10 +206,12 @@ std::vector<Stroke> posedStrokes(const StrokeGroup &group)
     return strokes;
 }
 
-std::vector<PaintItem> paintList(const Frame &frame, const RenderOptions &options)
+namespace {
+std::vector<PaintItem> paintListOf(const StrokeGroup *groups, std::size_t count,
+                                   const RenderOptions &options)
 {
     std::vector<PaintItem> items;
-    for (const StrokeGroup &g : frame.groups) {
+    for (const StrokeGroup &g : std::span(groups, count)) {
         if (!g.visible && !options.showHidden)
             continue;
         for (std::size_t i = 0; i < g.strokes.size(); ++i) {
@@ -259,6 +263,17 @@ std::vector<PaintItem> paintList(const Frame &frame, const RenderOptions &option
     }
     return merged;
 }
+} // namespace
+
+std::vector<PaintItem> paintList(const Frame &frame, const RenderOptions &options)
+{
+    return paintListOf(frame.groups.data(), frame.groups.size(), options);
+}
+
+std::vector<PaintItem> paintList(const StrokeGroup &group, const RenderOptions &options)
+{
+    return paintListOf(&group, 1, options);
+}
 
 void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
                 const RenderOptions &options)
@@ -269,8 +284,18 @@ void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &s
         painter.fillRect(QRectF(QPointF(0, 0), QSizeF(settings.canvasSize)),
                          QColor::fromRgba(settings.background));
     painter.setOpacity(options.opacity);
-    for (const PaintItem &item : paintList(frame, options))
-        paintStroke(painter, *item.points, item.color, item.width);
+    if (!frameHasFills(frame, options)) {
+        for (const PaintItem &item : paintList(frame, options))
+            paintStroke(painter, *item.points, item.color, item.width);
+        painter.restore();
+        return;
+    }
+    for (const StrokeGroup &group : frame.groups) {
+        for (const FillItem &fill : fillList(group, settings.closeGap, options))
+            painter.fillPath(fill.path, QColor::fromRgba(fill.color));
+        for (const PaintItem &item : paintList(group, options))
+            paintStroke(painter, *item.points, item.color, item.width);
+    }
     painter.restore();
 }
 

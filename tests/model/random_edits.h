@@ -2,6 +2,7 @@
 #pragma once
 
 #include <finbook/model/commands.h>
+#include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
@@ -127,6 +128,33 @@ inline Picks randomPicks(const model::Document &doc, QRandomGenerator &rng)
     return p;
 }
 
+// A fill edit on object `groupId`: Fill All when the object has unfilled regions, else a fill
+// added (random seed, colour and strokes of the object) or one taken away.
+inline std::unique_ptr<QUndoCommand> randomFillCommand(model::Document &doc, model::Id groupId,
+                                                       QRandomGenerator &rng)
+{
+    using namespace model;
+    const QRgb color = 0xff000000u | rng.bounded(0x1000000u);
+    if (rng.bounded(2))
+        if (auto all = fillAllRegionsCommand(&doc, groupId, color))
+            return all;
+    const StrokeGroup *g = doc.group(groupId);
+    std::vector<Fill> fills = g ? g->fills : std::vector<Fill>{};
+    if (!fills.empty() && rng.bounded(3) == 0) {
+        fills.erase(fills.begin() + rng.bounded(quint32(fills.size())));
+    } else {
+        Fill f{color, QPointF(rng.bounded(1000.0), rng.bounded(700.0)), {}};
+        if (g)
+            for (const Stroke &s : g->strokes)
+                if (rng.bounded(2))
+                    f.strokes.push_back(s.id);
+        std::sort(f.strokes.begin(), f.strokes.end());
+        fills.push_back(f);
+    }
+    return std::make_unique<SetFillsCommand>(&doc, groupId, std::move(fills),
+                                             QStringLiteral("Fill"));
+}
+
 // Builds one random command against the document's current state (never null).
 inline std::unique_ptr<QUndoCommand> randomCommand(model::Document &doc, QRandomGenerator &rng)
 {
@@ -134,7 +162,13 @@ inline std::unique_ptr<QUndoCommand> randomCommand(model::Document &doc, QRandom
     const Picks p = randomPicks(doc, rng);
     const int n = doc.frameCount();
     const QPointF somewhere(rng.bounded(1000.0), rng.bounded(700.0));
-    switch (rng.bounded(22)) {
+    switch (rng.bounded(24)) {
+    case 22:
+        return randomFillCommand(doc, p.group, rng);
+    case 23:
+        if (auto gap = setCloseGapCommand(&doc, rng.bounded(3) ? rng.bounded(40.0) : -1.0))
+            return gap;
+        return randomFillCommand(doc, p.group, rng);
     case 19:
     case 20:
     case 21:

@@ -79,7 +79,7 @@ void TestFileIntegrity::everySectionCarriesItsChecksum()
 {
     const QByteArray bytes = validBytes();
     QCOMPARE(qFromLittleEndian<quint32>(bytes.constData() + 8), kFinbookFormatVersion);
-    QCOMPARE(kFinbookFormatVersion, 2u);
+    QVERIFY(kFinbookFormatVersion >= 2u); // checksums from format 2 on
     qsizetype at = 12;
     QStringList tags;
     while (at < bytes.size()) {

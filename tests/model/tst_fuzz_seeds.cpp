@@ -27,7 +27,8 @@ StrokeGroup rigged(Id &next, const QString &name, float x0)
 }
 
 // Two frames, each with a caged object and a boned one, both posed, and a part joined to the
-// boned one; the second frame's skeleton has a locked joint.
+// boned one; the second frame's skeleton has a locked joint; the caged object has fills, and
+// the document its own close-gap setting.
 void cageAndSkeleton(Document &doc)
 {
     std::vector<Frame> frames(2);
@@ -61,11 +62,15 @@ void cageAndSkeleton(Document &doc)
         h.angles = {0.0, 0.3};
         h.join = {boned.id, QPointF(142, 82), QPointF(139, 79)};
         hand.deformed = shiftedPose(hand, 1.0f);
+        // Fills (a FILL chunk): one naming both strokes, one naming a stroke erased since.
+        caged.fills = {{0xffe0c040, QPointF(30, 45), {caged.strokes[0].id, caged.strokes[1].id}},
+                       {0x80304050, QPointF(12, 70), {caged.strokes[1].id, next + 1000}}};
         f.groups = {caged, boned, hand};
     }
     DocumentSettings settings;
     settings.canvasSize = QSize(320, 200);
-    doc.reset(std::move(frames), settings, next);
+    settings.closeGap = 14.0;
+    doc.reset(std::move(frames), settings, next + 2000);
 }
 
 // Every seed by name.
@@ -99,7 +104,7 @@ void collectTags(const QByteArray &bytes, std::set<QByteArray> &tags)
     }
     // Object chunks: look for their tags followed by a plausible length (good enough for
     // files this small, whose points never spell these letters).
-    for (const char *chunk : {"PINS", "CAGE", "SKEL", "JOIN", "DEFM"})
+    for (const char *chunk : {"PINS", "CAGE", "SKEL", "JOIN", "DEFM", "FILL"})
         if (bytes.contains(chunk))
             tags.insert(chunk);
 }
@@ -142,7 +147,7 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
     for (const char *tag : {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE",
-                            "SKEL", "JOIN", "DEFM"})
+                            "SKEL", "JOIN", "DEFM", "FILL"})
         QVERIFY2(tags.count(tag), tag);
 }
 

@@ -510,10 +510,15 @@ void TestSkeletonRig::filesBeforeLocksOpenWithoutLocks()
                 QVERIFY(group.rig.skeleton.isPosed());
             }
     QCOMPARE(skeletons, 2);
-    // Saved again, such a file keeps its layout.
+    // Saved again (in today's format, whose header and settings grew), the skeleton chunks
+    // keep their layout: no lock tail.
     Document doc;
     doc.reset(loaded->frames, loaded->settings, loaded->nextId);
-    QCOMPARE(serializeFinbook(doc), bytes);
+    const QByteArray again = serializeFinbook(doc);
+    const qsizetype before = bytes.indexOf("SKEL"), after = again.indexOf("SKEL");
+    QVERIFY(before > 0 && after > 0);
+    const quint32 length = qFromLittleEndian<quint32>(bytes.constData() + before + 4);
+    QCOMPARE(again.mid(after, 8 + length), bytes.mid(before, 8 + length));
 }
 
 void TestSkeletonRig::badLockFlagsAreRefused()

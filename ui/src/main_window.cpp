@@ -55,6 +55,7 @@ MainWindow::MainWindow(QWidget *parent)
     createActions();
     createCanvasAndTools();
     createDeformation();
+    createFill();
     createDocks();
     createStatusBar();
     arrangeToolBars();

@@ -222,6 +222,7 @@ void MainWindow::createFrameAndObjectMenus()
         m_shortcuts->registerAction(a);
     }
     QMenu *objectMenu = menuBar()->addMenu(tr("&Object"));
+    objectMenu->setObjectName(QStringLiteral("objectMenu"));
     for (QAction *a : m_objectActions->menuActions()) {
         objectMenu->addAction(a);
         if (!a->isSeparator() && !a->objectName().isEmpty())

@@ -4,6 +4,10 @@
 #include <emmintrin.h>
 #endif
 
+#include <finbook/model/fill/fill_render.h>
+
+#include <QPainter>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -132,11 +136,61 @@ void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal sc
         pool[b] = std::move(rasters[b]->m_mask);
 }
 
-void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptions &options)
+void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptions &options,
+                             double closeGap)
 {
     // paintList folds repeated references of one stroke into one item, as paintFrame does.
-    for (const model::PaintItem &item : model::paintList(frame, options))
-        drawStroke(*item.points, item.color, item.width, options.opacity);
+    if (!model::frameHasFills(frame, options)) {
+        for (const model::PaintItem &item : model::paintList(frame, options))
+            drawStroke(*item.points, item.color, item.width, options.opacity);
+        return;
+    }
+    for (const model::StrokeGroup &group : frame.groups) {
+        for (const model::FillItem &fill : model::fillList(group, closeGap, options))
+            drawFill(fill.path, fill.color, options.opacity);
+        for (const model::PaintItem &item : model::paintList(group, options))
+            drawStroke(*item.points, item.color, item.width, options.opacity);
+    }
+}
+
+void StrokeRaster::prepareFills(const model::Frame &frame, const model::RenderOptions &options,
+                                double closeGap)
+{
+    for (const model::StrokeGroup &group : frame.groups)
+        model::fillList(group, closeGap, options);
+}
+
+void StrokeRaster::drawFill(const QPainterPath &path, QRgb color, qreal opacity)
+{
+    if (path.isEmpty() || m_clip.isEmpty() || opacity <= 0 || qAlpha(color) == 0)
+        return;
+    const QTransform toDevice(m_scale, 0, 0, m_scale, m_ox, m_oy);
+    const QPainterPath device = toDevice.map(path);
+    const QRect box =
+        device.boundingRect().toAlignedRect().adjusted(-1, -1, 1, 1).intersected(m_clip);
+    if (box.isEmpty())
+        return;
+    // QPainter's coverage in a scratch mask the size of the fill's part of this band, then
+    // into the band's mask, so it composites exactly as a stroke does.
+    QImage coverage(box.size(), QImage::Format_Alpha8);
+    coverage.fill(0);
+    {
+        QPainter p(&coverage);
+        p.setRenderHint(QPainter::Antialiasing, true);
+        p.translate(-box.topLeft());
+        p.fillPath(device, QColor(0, 0, 0, 255));
+    }
+    for (int y = 0; y < box.height(); ++y) {
+        const uchar *src = coverage.constScanLine(y);
+        std::uint8_t *row = m_mask.data() +
+                            std::size_t(box.top() + y - m_clip.top()) * std::size_t(m_width) +
+                            std::size_t(box.left() - m_clip.left());
+        for (int x = 0; x < box.width(); ++x)
+            row[x] = std::max(row[x], std::uint8_t(src[x]));
+    }
+    touch(box.left() - m_clip.left(), box.top() - m_clip.top(), box.right() - m_clip.left(),
+          box.bottom() - m_clip.top());
+    composite(color, opacity);
 }
 
 void StrokeRaster::drawStroke(const std::vector<model::StrokePoint> &points, QRgb color,

@@ -12,6 +12,7 @@
 #include <finbook/model/render.h>
 
 #include <QImage>
+#include <QPainterPath>
 
 #include <cstdint>
 #include <functional>
@@ -29,9 +30,16 @@ public:
 
     void drawStroke(const std::vector<model::StrokePoint> &points, QRgb color, float width,
                     qreal opacity);
+    // A fill (canvas pixels, the path's own fill rule), antialiased by QPainter.
+    void drawFill(const QPainterPath &path, QRgb color, qreal opacity);
     // paintFrame()'s rules: hidden objects skipped unless options.showHidden, the tint
-    // replaces every colour, options.opacity applies per stroke. No background.
-    void drawFrame(const model::Frame &frame, const model::RenderOptions &options);
+    // replaces every colour, options.opacity applies per stroke and fill, each object's fills
+    // under its strokes (regions closed with `closeGap`, DocumentSettings). No background.
+    void drawFrame(const model::Frame &frame, const model::RenderOptions &options, double closeGap);
+    // Computes what drawFrame needs of the frame's fills once, on this thread, so the bands
+    // of drawParallel find it cached instead of each computing it.
+    static void prepareFills(const model::Frame &frame, const model::RenderOptions &options,
+                             double closeGap);
 
     // Runs `draw` once per horizontal band of the clip, one band per core (up to 4), each on
     // its own rasterizer: bands share no pixel, so the result equals one rasterizer's. Blocks

@@ -17,6 +17,7 @@ ThumbnailCache::ThumbnailCache(model::Document *document, QObject *parent)
     , m_doc(document)
     , m_canvasSize(document->settings().canvasSize)
     , m_background(document->settings().background)
+    , m_closeGap(document->settings().closeGap)
 {
     m_timer.setSingleShot(true);
     m_timer.setInterval(0);
@@ -31,10 +32,12 @@ ThumbnailCache::ThumbnailCache(model::Document *document, QObject *parent)
     });
     connect(m_doc, &model::Document::settingsChanged, this, [this] {
         const model::DocumentSettings &s = m_doc->settings();
-        if (s.canvasSize == m_canvasSize && s.background == m_background)
+        if (s.canvasSize == m_canvasSize && s.background == m_background &&
+            s.closeGap == m_closeGap)
             return; // fps, loop and range do not show in a thumbnail
         m_canvasSize = s.canvasSize;
         m_background = s.background;
+        m_closeGap = s.closeGap;
         ++m_generation;
         emit thumbnailsInvalidated();
     });

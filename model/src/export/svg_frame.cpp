@@ -4,6 +4,7 @@
 // pixels and renders like the canvas, which paints the same widths.
 #include "export_formats.h"
 
+#include <finbook/model/fill/fill_render.h>
 #include <finbook/model/render.h>
 
 #include <QLineF>
@@ -112,6 +113,41 @@ QByteArray colour(QRgb rgb)
 {
     return QColor::fromRgb(rgb).name(QColor::HexRgb).toLatin1();
 }
+
+// A fill's faces as one path: a closed subpath per ring, holes running the other way, so the
+// non-zero rule leaves them empty as the canvas does.
+QByteArray fillPath(const QPainterPath &path)
+{
+    QByteArray d;
+    for (const QPolygonF &ring : path.toSubpathPolygons()) {
+        if (ring.size() < 3)
+            continue;
+        for (qsizetype i = 0; i < ring.size(); ++i) {
+            if (i == ring.size() - 1 && ring[i] == ring.front())
+                break;
+            appendPoint(d, i == 0 ? 'M' : 'L', ring[i]);
+        }
+        d += 'Z';
+    }
+    return d;
+}
+
+void appendFills(QByteArray &svg, const StrokeGroup &group, const DocumentSettings &settings)
+{
+    int k = 0;
+    for (const FillItem &fill : fillList(group, settings.closeGap)) {
+        const QByteArray d = fillPath(fill.path);
+        ++k;
+        if (d.isEmpty())
+            continue;
+        svg += "<path id=\"fill-" + QByteArray::number(group.id) + '-' + QByteArray::number(k) +
+               "\" class=\"fill\" fill=\"" + colour(fill.color) + '"';
+        const int alpha = qAlpha(fill.color);
+        if (alpha < 255)
+            svg += " fill-opacity=\"" + QByteArray::number(alpha / 255.0, 'g', 3) + '"';
+        svg += " fill-rule=\"nonzero\" d=\"" + d + "\"/>\n";
+    }
+}
 } // namespace
 
 QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const ExportPlan &plan)
@@ -131,6 +167,7 @@ QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const 
         if (!group.visible)
             continue;
         svg += "<g id=\"object-" + QByteArray::number(group.id) + "\">\n";
+        appendFills(svg, group, settings);
         for (std::size_t i = 0; i < group.strokes.size(); ++i) {
             const Stroke &stroke = group.strokes[i];
             if (!stroke.data)

@@ -1,5 +1,6 @@
 #include "../command_text.h"
 
+#include <finbook/model/fill/fill_ids.h>
 #include <finbook/model/inbetween/inbetween_commands.h>
 #include <finbook/model/skeleton/skeleton_join.h>
 
@@ -18,8 +19,10 @@ void renumber(Frame &frame, Document *doc)
         const Id old = g.id;
         g.id = doc->allocateId();
         groupIds[old] = g.id;
+        std::unordered_map<Id, Id> strokeIds;
         for (Stroke &s : g.strokes)
-            s.id = doc->allocateId();
+            s.id = strokeIds[s.id] = doc->allocateId();
+        remapFillStrokeIds(g, strokeIds);
         for (Pin &p : g.rig.pins)
             p.id = doc->allocateId();
     }

@@ -1,5 +1,6 @@
 #include "../command_text.h"
 
+#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/render.h>
 #include <finbook/model/rig/rig_commands.h>
 
@@ -121,6 +122,8 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
     m_oldDeformed = g->deformed;
     // The baked strokes keep their ids: they are the same strokes, redrawn.
     m_newStrokes = posedStrokes(*g);
+    m_oldFills = g->fills;
+    m_newFills = fillsAfterBake(*g, m_newStrokes, doc->settings().closeGap);
 }
 
 void ApplyPoseCommand::redo()
@@ -128,6 +131,8 @@ void ApplyPoseCommand::redo()
     if (isObsolete())
         return;
     m_doc->setStrokes(m_groupId, m_newStrokes);
+    if (m_newFills != m_oldFills)
+        m_doc->setFills(m_groupId, m_newFills);
     m_doc->setRig(m_groupId, m_oldRig.rebased());
 }
 
@@ -136,6 +141,8 @@ void ApplyPoseCommand::undo()
     if (isObsolete())
         return;
     m_doc->setStrokes(m_groupId, m_oldStrokes);
+    if (m_newFills != m_oldFills)
+        m_doc->setFills(m_groupId, m_oldFills);
     m_doc->setRig(m_groupId, m_oldRig);
     m_doc->setDeformed(m_groupId, m_oldDeformed);
 }

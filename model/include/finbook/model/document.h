@@ -75,6 +75,8 @@ public:
     Stroke takeStroke(Id strokeId);
     // Replaces all rest strokes of an object (transform, bake). Drops the deformed cache.
     void setStrokes(Id groupId, std::vector<Stroke> strokes);
+    // Replaces an object's fills (fill/fill_commands.h).
+    void setFills(Id groupId, std::vector<Fill> fills);
 
     // Replaces an object's rig (pins or cage, rest definition and targets). A rig with more
     // than one kind keeps only its first (pins, then cage). An empty rig drops the pose.

@@ -21,8 +21,10 @@
 
 namespace finbook::model {
 
-// 1: the first format. 2: a CRC-32C after every section. Version-1 files keep opening.
-constexpr quint32 kFinbookFormatVersion = 2;
+// 1: the first format. 2: a CRC-32C after every section. 3: fills (a FILL chunk per object)
+// and the document's "close gaps" setting. Older files keep opening; a Finbook that reads only
+// format 2 refuses format-3 files as made by a newer Finbook.
+constexpr quint32 kFinbookFormatVersion = 3;
 
 // Opening a file of n bytes may allocate at most kLoadMemoryFactor × n + kLoadMemorySlack
 // bytes for the document (the file's own bytes not counted). A real drawing needs about 1.2 × n

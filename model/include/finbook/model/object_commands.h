@@ -13,7 +13,7 @@ namespace finbook::model {
 // strokes go on top of the target's when the source was above it, underneath otherwise, and a
 // posed (deformed) source is baked into its strokes. Stroke ids are kept. The target keeps its
 // pins; its solved pose is dropped (its rest drawing changed) and restored by undo, which puts
-// back both objects exactly as they were.
+// back both objects exactly as they were. The source's fills join the target's.
 class MergeObjectsCommand : public DocumentCommand {
 public:
     MergeObjectsCommand(Document *doc, Id sourceId, Id targetId, QUndoCommand *parent = nullptr);
@@ -27,6 +27,7 @@ private:
     int m_sourceIndex = -1;
     std::optional<StrokeGroup> m_source;
     std::vector<Stroke> m_targetStrokes;
+    std::vector<Fill> m_targetFills;
     DeformedStrokesPtr m_targetDeformed;
 };
 

@@ -47,9 +47,13 @@ struct PaintItem {
 // place whose alpha is what its coats add up to (exact inside the stroke, within a grey level
 // at its edges), so painting a frame costs what its distinct strokes cost.
 std::vector<PaintItem> paintList(const Frame &frame, const RenderOptions &options = {});
+// The same for one object's strokes (a frame with fills is painted object by object, each
+// object's fills under its strokes: fill/fill_render.h).
+std::vector<PaintItem> paintList(const StrokeGroup &group, const RenderOptions &options = {});
 
 // Paints the objects of a frame (deformed pose where an object has one) in canvas
-// coordinates; the painter's transform maps canvas to device.
+// coordinates; the painter's transform maps canvas to device. Each object's fills go under
+// its strokes (settings.closeGap decides its regions).
 void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
                 const RenderOptions &options = {});
 

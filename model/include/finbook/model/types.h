@@ -105,6 +105,17 @@ struct DeformedStrokes {
 };
 using DeformedStrokesPtr = std::shared_ptr<const DeformedStrokes>;
 
+// A fill: a colour on one region of its object (fill/fill_regions.h), tied to the region by a
+// point inside it on the rest drawing and the ids of the strokes that bounded it when it was
+// made, not by pixels: when the strokes change, the region that still holds the seed (or, when
+// the seed fell out, the one bounded by most of the same strokes) keeps the colour.
+struct Fill {
+    QRgb color = 0xff000000; // ARGB
+    QPointF seed;            // rest canvas pixels
+    std::vector<Id> strokes; // sorted, unique
+    friend bool operator==(const Fill &, const Fill &) = default;
+};
+
 constexpr double kDefaultMeshDensity = 1.0; // 1 = default edge length; 2 = twice as fine
 
 struct StrokeGroup {
@@ -114,6 +125,8 @@ struct StrokeGroup {
     bool locked = false;
     double meshDensity = kDefaultMeshDensity;
     std::vector<Stroke> strokes; // rest strokes, drawing order (last on top)
+    // Drawn under the strokes, in this order (a later fill on the same region wins).
+    std::vector<Fill> fills;
     Rig rig;
     // The pose the rig produced, as last solved. Saved with the file so a reopened document
     // shows (and exports) the deformed drawing without re-solving; cleared by any rest edit.
@@ -135,6 +148,8 @@ struct DocumentSettings {
     bool loop = true;
     int playStart = 0; // first frame index of the play range
     int playEnd = -1;  // last frame index, -1 = the last frame
+    // Gaps up to this many canvas pixels close the regions that fills use; < 0 = automatic.
+    double closeGap = -1.0;
     friend bool operator==(const DocumentSettings &, const DocumentSettings &) = default;
 };
 
@@ -145,5 +160,9 @@ constexpr int kMaxHold = 1000;
 // The widest stroke a file may hold: the largest canvas side. Wider says nothing more (it
 // covers any canvas), and QPen refuses widths of 32768 and more (it silently draws 1 pixel).
 constexpr float kMaxStrokeWidth = 16384.0f;
+// The widest gap the "Close gaps" setting offers.
+constexpr double kMaxCloseGap = 500.0;
+// Fills one object may carry (a file claiming more is refused).
+constexpr int kMaxFillsPerObject = 100000;
 
 } // namespace finbook::model

@@ -120,6 +120,7 @@ private:
     // Every pending converged pose solved now, before the document is saved or exported.
     void settlePoses();
     void createSkeleton(QMenu *deformMenu); // skeleton/main_window_skeleton.cpp
+    void createFill();                      // fill/main_window_fill.cpp
     void createDocks();
     void createStatusBar();
     void connectStatus();

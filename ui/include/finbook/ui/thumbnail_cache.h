@@ -70,6 +70,7 @@ private:
     int m_rendered = 0;
     QSize m_canvasSize;
     QRgb m_background = 0;
+    double m_closeGap = -1.0; // fills' regions depend on it
 };
 
 } // namespace finbook::ui

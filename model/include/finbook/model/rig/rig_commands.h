@@ -68,6 +68,8 @@ private:
     Id m_groupId;
     std::vector<Stroke> m_oldStrokes;
     std::vector<Stroke> m_newStrokes;
+    std::vector<Fill> m_oldFills; // seeds follow the pose (fill/fill_resolve.h fillsAfterBake)
+    std::vector<Fill> m_newFills;
     Rig m_oldRig;
     DeformedStrokesPtr m_oldDeformed;
 };

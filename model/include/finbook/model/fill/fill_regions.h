@@ -1,0 +1,68 @@
+// An object's regions (geometry/regions.h) as the model sees them: computed from its rest
+// strokes, cached by their content (rest stroke data is immutable and shared, so the list of
+// data pointers is the strokes' revision), never undo state. Safe on any thread: export renders
+// on a worker.
+#pragma once
+
+#include <finbook/geometry/regions.h>
+#include <finbook/model/types.h>
+
+#include <QPainterPath>
+#include <QPolygonF>
+
+#include <memory>
+#include <mutex>
+#include <unordered_map>
+#include <vector>
+
+namespace finbook::model {
+
+class ObjectRegions {
+public:
+    ObjectRegions(geometry::Regions regions, std::vector<Id> strokeIds,
+                  std::vector<int> strokeIndex);
+
+    const geometry::Regions &regions() const { return m_regions; }
+    int faceCount() const { return int(m_regions.faces.size()); }
+    // The ids of the strokes bounding `face`, sorted.
+    const std::vector<Id> &faceStrokeIds(int face) const { return m_faceIds[std::size_t(face)]; }
+    // The face's rest outline (outer ring and holes; non-zero rule, holes run the other way).
+    const QPainterPath &restPath(int face) const { return m_restPaths[std::size_t(face)]; }
+    // Innermost face holding rest point p, or -1.
+    int faceAt(QPointF p) const;
+
+    // The face's outline as the object shows now: each outline corner lies on (or within the
+    // stroke simplification of) a boundary stroke, so it is tied to the nearest point of one
+    // (stroke, segment, t) once, and follows that stroke's displayed (posed) points. The fill
+    // then meets its ink exactly under any deformer (pins, cage, skeleton) and in in-betweens.
+    QPainterPath displayedPath(const StrokeGroup &group, int face) const;
+    // The gap-closing segments, each end following the stroke it lies on, as shown.
+    std::vector<QLineF> displayedClosures(const StrokeGroup &group) const;
+
+    struct Anchor {
+        int stroke = -1; // index into the object's strokes; -1 = keep the rest position
+        int segment = 0;
+        float t = 0.0f;
+    };
+
+private:
+    const std::vector<std::vector<Anchor>> &anchors(const StrokeGroup &group, int face) const;
+
+    geometry::Regions m_regions;
+    std::vector<std::vector<Id>> m_faceIds;
+    std::vector<QPainterPath> m_restPaths;
+    std::vector<int> m_strokeIndex; // input index → index into the object's strokes
+    mutable std::mutex m_mutex;
+    mutable std::unordered_map<int, std::vector<std::vector<Anchor>>> m_anchors; // per ring
+};
+
+using ObjectRegionsPtr = std::shared_ptr<const ObjectRegions>;
+
+// The gap the document asks for, as geometry::RegionsOptions reads it (< 0 = automatic).
+geometry::RegionsOptions regionsOptions(double closeGap);
+
+// The regions of the object's rest strokes with gaps closed as `closeGap` says. Never null:
+// an object whose regions cannot be computed (no strokes, absurd coordinates) has none.
+ObjectRegionsPtr objectRegions(const StrokeGroup &group, double closeGap);
+
+} // namespace finbook::model

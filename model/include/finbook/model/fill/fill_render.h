@@ -1,0 +1,28 @@
+// Fills as every renderer draws them (the canvas, thumbnails, onion skin, playback, each export
+// format): one item per fill, its faces as the object shows now (posed where it is posed), to be
+// drawn under the object's strokes.
+#pragma once
+
+#include <finbook/model/render.h>
+
+#include <QPainterPath>
+
+namespace finbook::model {
+
+struct FillItem {
+    QPainterPath path; // canvas pixels, non-zero (winding) rule
+    QRgb color = 0;    // after options: the onion-skin tint, lighter than the strokes'
+};
+
+// The fills of one object, back to front. Empty for an object without fills.
+std::vector<FillItem> fillList(const StrokeGroup &group, double closeGap,
+                               const RenderOptions &options = {});
+
+// Whether any object of the frame that `options` shows has fills.
+bool frameHasFills(const Frame &frame, const RenderOptions &options = {});
+
+// The alpha a tinted fill gets against a tinted stroke (onion skin): the shape reads, the ink
+// stays on top.
+constexpr double kTintedFillAlpha = 0.35;
+
+} // namespace finbook::model

@@ -1,0 +1,108 @@
+// The Fill tool's commands (fill_commands.h).
+#include "../command_text.h"
+
+#include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_resolve.h>
+
+#include <cmath>
+
+namespace finbook::model {
+
+SetFillsCommand::SetFillsCommand(Document *doc, Id groupId, std::vector<Fill> fills,
+                                 const QString &text, QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+    , m_groupId(groupId)
+    , m_new(std::move(fills))
+{
+    setText(text);
+    const StrokeGroup *g = doc->group(groupId);
+    if (!g || g->fills == m_new)
+        setObsolete(true);
+    else
+        m_old = g->fills;
+}
+
+void SetFillsCommand::redo()
+{
+    if (m_doc->group(m_groupId))
+        m_doc->setFills(m_groupId, m_new);
+}
+
+void SetFillsCommand::undo()
+{
+    if (m_doc->group(m_groupId))
+        m_doc->setFills(m_groupId, m_old);
+}
+
+namespace {
+std::unique_ptr<QUndoCommand>
+commandFor(Document *doc, Id groupId, std::optional<std::vector<Fill>> fills, const QString &text)
+{
+    if (!fills)
+        return nullptr;
+    auto command = std::make_unique<SetFillsCommand>(doc, groupId, std::move(*fills), text);
+    if (command->isObsolete())
+        return nullptr;
+    return command;
+}
+
+struct Target {
+    const StrokeGroup *group = nullptr;
+    ObjectRegionsPtr regions;
+    int face = -1;
+};
+
+Target targetAt(Document *doc, Id groupId, QPointF at)
+{
+    Target t;
+    t.group = doc->group(groupId);
+    if (!t.group)
+        return t;
+    t.regions = objectRegions(*t.group, doc->settings().closeGap);
+    t.face = displayedFaceAt(*t.regions, *t.group, at);
+    return t;
+}
+} // namespace
+
+std::unique_ptr<QUndoCommand> fillRegionCommand(Document *doc, Id groupId, QPointF at, QRgb color)
+{
+    const Target t = targetAt(doc, groupId, at);
+    if (t.face < 0)
+        return nullptr;
+    const bool filled = faceFills(*t.regions, t.group->fills)[std::size_t(t.face)] >= 0;
+    return commandFor(doc, groupId, fillsWithFace(*t.regions, t.group->fills, t.face, color),
+                      filled ? Command::tr("Recolour Fill") : Command::tr("Fill Region"));
+}
+
+std::unique_ptr<QUndoCommand> removeFillCommand(Document *doc, Id groupId, QPointF at)
+{
+    const Target t = targetAt(doc, groupId, at);
+    if (t.face < 0)
+        return nullptr;
+    return commandFor(doc, groupId, fillsWithoutFace(*t.regions, t.group->fills, t.face),
+                      Command::tr("Remove Fill"));
+}
+
+std::unique_ptr<QUndoCommand> fillAllRegionsCommand(Document *doc, Id groupId, QRgb color)
+{
+    const StrokeGroup *g = doc->group(groupId);
+    if (!g)
+        return nullptr;
+    const ObjectRegionsPtr regions = objectRegions(*g, doc->settings().closeGap);
+    return commandFor(doc, groupId, fillsWithAllFaces(*regions, g->fills, color),
+                      Command::tr("Fill All Enclosed Regions"));
+}
+
+std::unique_ptr<QUndoCommand> setCloseGapCommand(Document *doc, double closeGap)
+{
+    DocumentSettings settings = doc->settings();
+    settings.closeGap = std::isfinite(closeGap) && closeGap >= 0 ? std::min(closeGap, kMaxCloseGap)
+                                                                 : DocumentSettings().closeGap;
+    auto command = std::make_unique<ChangeSettingsCommand>(doc, settings);
+    if (command->isObsolete())
+        return nullptr;
+    command->setText(Command::tr("Close Gaps"));
+    return command;
+}
+
+} // namespace finbook::model

@@ -1,0 +1,266 @@
+// Regions of an object, cached by the content of its rest strokes, and their outlines as shown.
+#include <finbook/model/fill/fill_regions.h>
+#include <finbook/model/render.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <list>
+
+namespace finbook::model {
+
+namespace {
+QPolygonF ring(const Eigen::MatrixX2d &m)
+{
+    QPolygonF poly;
+    poly.reserve(int(m.rows()) + 1);
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+        poly << QPointF(m(i, 0), m(i, 1));
+    if (!poly.isEmpty())
+        poly << poly.front();
+    return poly;
+}
+
+std::vector<const Eigen::MatrixX2d *> rings(const geometry::Polygon &p)
+{
+    std::vector<const Eigen::MatrixX2d *> out{&p.outer};
+    for (const Eigen::MatrixX2d &h : p.holes)
+        out.push_back(&h);
+    return out;
+}
+
+bool finitePoint(const StrokePoint &p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+// Squared distance from q to segment a-b and where along it (0..1) the nearest point is.
+double segmentDistance2(QPointF q, QPointF a, QPointF b, double &t)
+{
+    const QPointF d = b - a;
+    const double len2 = d.x() * d.x() + d.y() * d.y();
+    t = len2 > 0 ? std::clamp(QPointF::dotProduct(q - a, d) / len2, 0.0, 1.0) : 0.0;
+    const QPointF n = a + t * d - q;
+    return n.x() * n.x() + n.y() * n.y();
+}
+} // namespace
+
+ObjectRegions::ObjectRegions(geometry::Regions regions, std::vector<Id> strokeIds,
+                             std::vector<int> strokeIndex)
+    : m_regions(std::move(regions))
+    , m_strokeIndex(std::move(strokeIndex))
+{
+    for (const geometry::Face &face : m_regions.faces) {
+        std::vector<Id> ids;
+        for (int s : face.strokes)
+            if (s >= 0 && std::size_t(s) < strokeIds.size())
+                ids.push_back(strokeIds[std::size_t(s)]);
+        std::sort(ids.begin(), ids.end());
+        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+        m_faceIds.push_back(std::move(ids));
+        QPainterPath path;
+        path.setFillRule(Qt::WindingFill);
+        for (const Eigen::MatrixX2d *r : rings(face.polygon))
+            path.addPolygon(ring(*r));
+        m_restPaths.push_back(std::move(path));
+    }
+}
+
+int ObjectRegions::faceAt(QPointF p) const
+{
+    return geometry::faceAt(m_regions, p.x(), p.y());
+}
+
+namespace {
+using Anchor = ObjectRegions::Anchor;
+
+// The nearest point to q on the candidate strokes (indices into the object's strokes).
+Anchor nearestAnchor(QPointF q, const std::vector<int> &candidates, const StrokeGroup &group)
+{
+    Anchor best;
+    double bestD2 = std::numeric_limits<double>::infinity();
+    for (int s : candidates) {
+        if (s < 0 || std::size_t(s) >= group.strokes.size() || !group.strokes[std::size_t(s)].data)
+            continue;
+        const auto &pts = group.strokes[std::size_t(s)].data->points;
+        for (std::size_t k = 0; k < pts.size(); ++k) {
+            const std::size_t next = std::min(k + 1, pts.size() - 1);
+            if (!finitePoint(pts[k]) || !finitePoint(pts[next]))
+                continue;
+            double t = 0;
+            const double d2 = segmentDistance2(q, QPointF(pts[k].x, pts[k].y),
+                                               QPointF(pts[next].x, pts[next].y), t);
+            if (d2 < bestD2) {
+                bestD2 = d2;
+                best = Anchor{s, int(k), float(t)};
+            }
+        }
+    }
+    return best;
+}
+
+// Where an anchored point shows now; `rest` when its stroke cannot say.
+QPointF placed(const Anchor &a, QPointF rest, const StrokeGroup &group)
+{
+    if (a.stroke < 0 || std::size_t(a.stroke) >= group.strokes.size())
+        return rest;
+    const auto &shown = displayedPoints(group, std::size_t(a.stroke));
+    const std::size_t k = std::size_t(a.segment);
+    if (k >= shown.size())
+        return rest;
+    const StrokePoint &p0 = shown[k], &p1 = shown[std::min(k + 1, shown.size() - 1)];
+    if (!finitePoint(p0) || !finitePoint(p1))
+        return rest;
+    return QPointF(p0.x + a.t * (p1.x - p0.x), p0.y + a.t * (p1.y - p0.y));
+}
+} // namespace
+
+const std::vector<std::vector<ObjectRegions::Anchor>> &
+ObjectRegions::anchors(const StrokeGroup &group, int face) const
+{
+    std::lock_guard lock(m_mutex);
+    if (auto it = m_anchors.find(face); it != m_anchors.end())
+        return it->second;
+    const geometry::Face &f = m_regions.faces[std::size_t(face)];
+    std::vector<int> candidates;
+    for (int s : f.strokes)
+        if (s >= 0 && std::size_t(s) < m_strokeIndex.size())
+            candidates.push_back(m_strokeIndex[std::size_t(s)]);
+    std::vector<std::vector<Anchor>> out;
+    for (const Eigen::MatrixX2d *r : rings(f.polygon)) {
+        std::vector<Anchor> anchors(std::size_t(r->rows()));
+        for (Eigen::Index i = 0; i < r->rows(); ++i)
+            anchors[std::size_t(i)] =
+                nearestAnchor(QPointF((*r)(i, 0), (*r)(i, 1)), candidates, group);
+        out.push_back(std::move(anchors));
+    }
+    return m_anchors.emplace(face, std::move(out)).first->second;
+}
+
+QPainterPath ObjectRegions::displayedPath(const StrokeGroup &group, int face) const
+{
+    if (face < 0 || face >= faceCount())
+        return {};
+    if (!group.isDeformed())
+        return restPath(face);
+    const auto &faceAnchors = anchors(group, face);
+    const geometry::Face &f = m_regions.faces[std::size_t(face)];
+    QPainterPath path;
+    path.setFillRule(Qt::WindingFill);
+    const auto rs = rings(f.polygon);
+    for (std::size_t r = 0; r < rs.size() && r < faceAnchors.size(); ++r) {
+        QPolygonF poly;
+        for (Eigen::Index i = 0; i < rs[r]->rows(); ++i)
+            poly << placed(faceAnchors[r][std::size_t(i)], QPointF((*rs[r])(i, 0), (*rs[r])(i, 1)),
+                           group);
+        if (!poly.isEmpty()) {
+            poly << poly.front();
+            path.addPolygon(poly);
+        }
+    }
+    return path;
+}
+
+std::vector<QLineF> ObjectRegions::displayedClosures(const StrokeGroup &group) const
+{
+    std::vector<QLineF> lines;
+    const auto strokeOf = [&](int input) {
+        return input >= 0 && std::size_t(input) < m_strokeIndex.size()
+                   ? std::vector<int>{m_strokeIndex[std::size_t(input)]}
+                   : std::vector<int>{};
+    };
+    for (const geometry::GapClosure &c : m_regions.closures) {
+        const QPointF from(c.from.x(), c.from.y()), to(c.to.x(), c.to.y());
+        if (!group.isDeformed()) {
+            lines.emplace_back(from, to);
+            continue;
+        }
+        lines.emplace_back(placed(nearestAnchor(from, strokeOf(c.fromStroke), group), from, group),
+                           placed(nearestAnchor(to, strokeOf(c.toStroke), group), to, group));
+    }
+    return lines;
+}
+
+geometry::RegionsOptions regionsOptions(double closeGap)
+{
+    geometry::RegionsOptions options;
+    options.closeGap = std::isfinite(closeGap) && closeGap >= 0 ? closeGap : -1.0;
+    return options;
+}
+
+namespace {
+struct CacheEntry {
+    std::vector<StrokeDataPtr> strokes; // held, so a pointer is never reused while cached
+    std::vector<Id> ids;
+    double closeGap;
+    ObjectRegionsPtr regions;
+};
+constexpr std::size_t kCacheEntries = 64;
+std::mutex g_cacheMutex;
+std::list<CacheEntry> g_cache; // most recently used first
+
+bool sameKey(const CacheEntry &e, const StrokeGroup &group, double closeGap)
+{
+    if (e.closeGap != closeGap || e.strokes.size() != group.strokes.size())
+        return false;
+    for (std::size_t i = 0; i < e.strokes.size(); ++i)
+        if (e.strokes[i] != group.strokes[i].data || e.ids[i] != group.strokes[i].id)
+            return false;
+    return true;
+}
+
+ObjectRegionsPtr compute(const StrokeGroup &group, double closeGap)
+{
+    std::vector<geometry::StrokeInput> inputs;
+    std::vector<Id> ids;
+    std::vector<int> index;
+    for (std::size_t s = 0; s < group.strokes.size(); ++s) {
+        const StrokeDataPtr &data = group.strokes[s].data;
+        if (!data || data->points.empty())
+            continue;
+        geometry::StrokeInput in;
+        in.points.resize(Eigen::Index(data->points.size()), 2);
+        for (std::size_t i = 0; i < data->points.size(); ++i)
+            in.points.row(Eigen::Index(i)) << data->points[i].x, data->points[i].y;
+        in.width = std::isfinite(data->width) && data->width > 0 ? data->width : 1.0;
+        inputs.push_back(std::move(in));
+        ids.push_back(group.strokes[s].id);
+        index.push_back(int(s));
+    }
+    geometry::Regions regions;
+    if (!inputs.empty()) {
+        auto computed = geometry::computeRegions(inputs, regionsOptions(closeGap));
+        if (computed)
+            regions = std::move(computed.value());
+    }
+    return std::make_shared<const ObjectRegions>(std::move(regions), std::move(ids),
+                                                 std::move(index));
+}
+} // namespace
+
+ObjectRegionsPtr objectRegions(const StrokeGroup &group, double closeGap)
+{
+    {
+        std::lock_guard lock(g_cacheMutex);
+        for (auto it = g_cache.begin(); it != g_cache.end(); ++it)
+            if (sameKey(*it, group, closeGap)) {
+                g_cache.splice(g_cache.begin(), g_cache, it);
+                return g_cache.front().regions;
+            }
+    }
+    // Computed outside the lock: two threads may both compute one object, never wait on
+    // each other's long computations.
+    ObjectRegionsPtr regions = compute(group, closeGap);
+    CacheEntry entry{{}, {}, closeGap, regions};
+    for (const Stroke &s : group.strokes) {
+        entry.strokes.push_back(s.data);
+        entry.ids.push_back(s.id);
+    }
+    std::lock_guard lock(g_cacheMutex);
+    g_cache.push_front(std::move(entry));
+    if (g_cache.size() > kCacheEntries)
+        g_cache.pop_back();
+    return regions;
+}
+
+} // namespace finbook::model

@@ -1,0 +1,49 @@
+// Fills → paths to draw (fill_render.h).
+#include <finbook/model/fill/fill_regions.h>
+#include <finbook/model/fill/fill_render.h>
+#include <finbook/model/fill/fill_resolve.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace finbook::model {
+
+std::vector<FillItem> fillList(const StrokeGroup &group, double closeGap,
+                               const RenderOptions &options)
+{
+    if (group.fills.empty() || (!group.visible && !options.showHidden))
+        return {};
+    const ObjectRegionsPtr regions = objectRegions(group, closeGap);
+    const std::vector<int> shown = faceFills(*regions, group.fills);
+    std::vector<FillItem> items(group.fills.size());
+    for (int f = 0; f < regions->faceCount(); ++f) {
+        const int fill = shown[std::size_t(f)];
+        if (fill < 0)
+            continue;
+        items[std::size_t(fill)].path.addPath(regions->displayedPath(group, f));
+    }
+    std::vector<FillItem> out;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (items[i].path.isEmpty())
+            continue;
+        items[i].path.setFillRule(Qt::WindingFill);
+        QRgb color = group.fills[i].color;
+        if (options.tint) {
+            const QColor t = *options.tint;
+            color =
+                qRgba(t.red(), t.green(), t.blue(), int(std::lround(t.alpha() * kTintedFillAlpha)));
+        }
+        items[i].color = color;
+        out.push_back(std::move(items[i]));
+    }
+    return out;
+}
+
+bool frameHasFills(const Frame &frame, const RenderOptions &options)
+{
+    return std::any_of(frame.groups.begin(), frame.groups.end(), [&](const StrokeGroup &g) {
+        return !g.fills.empty() && (g.visible || options.showHidden);
+    });
+}
+
+} // namespace finbook::model
