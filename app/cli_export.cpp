@@ -2,6 +2,7 @@
 
 #include "cli.h"
 #include "cli_terminal.h"
+#include "native_names.h"
 
 #include <finbook/model/export/exporter.h>
 #include <finbook/model/finbook_file.h>
@@ -241,11 +242,18 @@ void clearProgressLine()
 
 int exportOne(const Request &request, const QString &input, QTextStream &out, QTextStream &err)
 {
-    auto loaded = model::loadFinbook(input);
+    const QString openable = openablePath(input);
+    auto loaded = model::loadFinbook(openable);
     if (!loaded)
-        return fail(err, loaded.error().message);
+        return fail(err, QString(loaded.error().message).replace(openable, input));
     model::ExportOptions options = request.options;
     options.target = targetFor(request, input);
+    // Qt would write the name with U+FFFD in place of the bytes that are not UTF-8: another
+    // name than the one given. Say so instead.
+    if (isLossyArgument(request.output) || isLossyArgument(request.outDir))
+        return fail(err, CommandLine::tr("\"%1\" is not a valid UTF-8 file name, which Finbook "
+                                         "writes; choose a name in UTF-8.")
+                             .arg(request.outDir.isEmpty() ? request.output : request.outDir));
     options.title = QFileInfo(input).completeBaseName();
     const model::ExportSource source{std::move(loaded->frames), loaded->settings};
     const auto result = model::exportAnimation(

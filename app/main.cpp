@@ -1,5 +1,6 @@
 #include "cli.h"
 #include "cli_export.h"
+#include "native_names.h"
 #include "test_hooks.h"
 #include "translations.h"
 
@@ -137,6 +138,7 @@ int main(int argc, char **argv)
     QStringList arguments;
     for (int i = 0; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);
+    finbook::app::rememberRawArguments(argc, argv);
 
     // Parse before any application object exists: --help, --version, bad arguments, `info`
     // and `export` must all work without a display.

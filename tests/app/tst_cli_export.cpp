@@ -14,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cstdio>
+
 using namespace finbook;
 using namespace finbook::test;
 
@@ -98,6 +100,7 @@ private slots:
     void rootFolderIsRefused();
     void fileInTheWayOfTheFolderExitsTwo();
     void tooLargeNeedsMaxFrames();
+    void namesThatAreNotUtf8();
 
 private:
     QTemporaryDir m_dir;
@@ -479,6 +482,42 @@ void TestCliExport::tooLargeNeedsMaxFrames()
     run = runFinbook({QStringLiteral("export"), m_held, folder, QStringLiteral("--max-frames=18")});
     QCOMPARE(run.code, 0);
     QCOMPARE(run.out.count('\n'), 18);
+}
+
+// A Latin-1 file name ("caf\xe9.finbook") could not be opened: Qt read it as "caf\uFFFD".
+// Now it opens (info and export); an output with such a name is refused, where it used to be
+// written under the name with U+FFFD.
+void TestCliExport::namesThatAreNotUtf8()
+{
+    const QString folder = m_dir.filePath(QStringLiteral("latin1"));
+    QVERIFY(QDir().mkpath(folder));
+    const QByteArray raw = QFile::encodeName(folder) + "/caf\xe9.finbook";
+    QFile source(m_held);
+    QVERIFY(source.open(QIODevice::ReadOnly));
+    const QByteArray bytes = source.readAll();
+    FILE *copy = std::fopen(raw.constData(), "wb");
+    QVERIFY(copy);
+    QCOMPARE(std::fwrite(bytes.constData(), 1, std::size_t(bytes.size()), copy),
+             std::size_t(bytes.size()));
+    std::fclose(copy);
+    const auto shell = [&](const QString &arguments) {
+        // printf makes the byte 0xE9; QProcess could only pass UTF-8 arguments.
+        return runProgram(
+            QStringLiteral("/bin/sh"),
+            {QStringLiteral("-c"), QStringLiteral("cd %1 && exec %2 %3")
+                                       .arg(shellQuote(folder), shellQuote(kFinbook), arguments)});
+    };
+    Run run = shell(QStringLiteral("info \"$(printf 'caf\\351.finbook')\""));
+    QVERIFY2(run.code == 0, run.err.constData());
+    QVERIFY(run.out.contains("\"frames\":12"));
+    run = shell(QStringLiteral("export \"$(printf 'caf\\351.finbook')\" out.html"));
+    QVERIFY2(run.code == 0, run.err.constData());
+    QVERIFY(QFileInfo(QDir(folder).filePath(QStringLiteral("out.html"))).size() > 1000);
+    run = shell(
+        QStringLiteral("export \"$(printf 'caf\\351.finbook')\" \"$(printf 'x\\351.html')\""));
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err) && run.err.contains("UTF-8"), run.err.constData());
+    QVERIFY(!QFileInfo::exists(QDir(folder).filePath(QStringLiteral("x\uFFFD.html"))));
 }
 
 QTEST_GUILESS_MAIN(TestCliExport)
