@@ -228,22 +228,22 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="99"/>
+        <location filename="../app/cli.cpp" line="101"/>
         <source>No command given; see finbook --help.</source>
         <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="103"/>
+        <location filename="../app/cli.cpp" line="105"/>
         <source>Usage: finbook info FILE</source>
         <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="113"/>
+        <location filename="../app/cli.cpp" line="115"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="36"/>
+        <location filename="../app/main.cpp" line="37"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -260,159 +260,164 @@
   finbook export FILE... --format F --out-dir DIR   mehrere Dateien exportieren</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="48"/>
+        <location filename="../app/main.cpp" line="49"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>LANGUAGE (z. B. de, en, fr, ja) statt der Systemsprache verwenden.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="54"/>
+        <location filename="../app/main.cpp" line="55"/>
         <source>FILE, or a command.</source>
         <translation>FILE oder ein Befehl.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="66"/>
+        <location filename="../app/main.cpp" line="67"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>siehe finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="73"/>
+        <location filename="../app/main.cpp" line="74"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="109"/>
+        <location filename="../app/main.cpp" line="110"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Unbekannter Befehl „%1“; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="35"/>
+        <location filename="../app/cli_export.cpp" line="36"/>
         <source>export: png, svg, gif, mp4, webm, apng or html.</source>
         <translation>export: png, svg, gif, mp4, webm, apng oder html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="37"/>
+        <location filename="../app/cli_export.cpp" line="38"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: Einzelbilder A bis B (Standard: der Wiedergabebereich).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
+        <location filename="../app/cli_export.cpp" line="39"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: die Leinwandgröße mit S multiplizieren.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="40"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: N Bilder pro Sekunde (Standard: die des Dokuments).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="42"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: diese Hintergrundfarbe (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="44"/>
         <source>export: no background.</source>
         <translation>export: kein Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: eine Datei pro Zeichnung plus ein Timing-Sheet.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="47"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="49"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="81"/>
+        <location filename="../app/cli_export.cpp" line="82"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="96"/>
+        <location filename="../app/cli_export.cpp" line="97"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="102"/>
+        <location filename="../app/cli_export.cpp" line="103"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="110"/>
+        <location filename="../app/cli_export.cpp" line="111"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="116"/>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="128"/>
+        <location filename="../app/cli_export.cpp" line="129"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
         <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng oder html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="141"/>
+        <location filename="../app/cli_export.cpp" line="142"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="148"/>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
         <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng oder .html enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="152"/>
+        <location filename="../app/cli_export.cpp" line="153"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="168"/>
+        <location filename="../app/cli_export.cpp" line="169"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="173"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="182"/>
+        <location filename="../app/cli_export.cpp" line="183"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="184"/>
+        <location filename="../app/cli_export.cpp" line="185"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="257"/>
+        <location filename="../app/cli_export.cpp" line="254"/>
+        <source>&quot;%1&quot; is not a valid UTF-8 file name, which Finbook writes; choose a name in UTF-8.</source>
+        <translation>„%1“ ist kein gültiger UTF-8-Dateiname, wie Finbook ihn schreibt; wählen Sie einen Namen in UTF-8.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="265"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Unterbrochen; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="264"/>
+        <location filename="../app/cli_export.cpp" line="272"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="266"/>
+        <location filename="../app/cli_export.cpp" line="274"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
@@ -1668,12 +1673,12 @@
 <context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="22"/>
+        <location filename="../app/main.cpp" line="23"/>
         <source>Displays help on commandline options.</source>
         <translation>Zeigt Hilfe zu den Kommandozeilenoptionen an.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="23"/>
+        <location filename="../app/main.cpp" line="24"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Zeigt Hilfe einschließlich Qt-spezifischer Optionen an.</translation>
     </message>

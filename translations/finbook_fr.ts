@@ -228,22 +228,22 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="99"/>
+        <location filename="../app/cli.cpp" line="101"/>
         <source>No command given; see finbook --help.</source>
         <translation>Aucune commande indiquée ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="103"/>
+        <location filename="../app/cli.cpp" line="105"/>
         <source>Usage: finbook info FILE</source>
         <translation>Utilisation : finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="113"/>
+        <location filename="../app/cli.cpp" line="115"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="36"/>
+        <location filename="../app/main.cpp" line="37"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -260,159 +260,164 @@
   finbook export FILE... --format F --out-dir DIR   exporter plusieurs fichiers</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="48"/>
+        <location filename="../app/main.cpp" line="49"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>Utiliser la langue LANGUAGE (par ex. de, en, fr, ja) au lieu de celle du système.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="54"/>
+        <location filename="../app/main.cpp" line="55"/>
         <source>FILE, or a command.</source>
         <translation>FILE, ou une commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="66"/>
+        <location filename="../app/main.cpp" line="67"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>voir finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="73"/>
+        <location filename="../app/main.cpp" line="74"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1 ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="109"/>
+        <location filename="../app/main.cpp" line="110"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Commande inconnue « %1 » ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="35"/>
+        <location filename="../app/cli_export.cpp" line="36"/>
         <source>export: png, svg, gif, mp4, webm, apng or html.</source>
         <translation>export : png, svg, gif, mp4, webm, apng ou html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="37"/>
+        <location filename="../app/cli_export.cpp" line="38"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export : images A à B (par défaut : la plage de lecture).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
+        <location filename="../app/cli_export.cpp" line="39"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export : multiplier la taille du canevas par S.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="40"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export : N images par seconde (par défaut : celle du document).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="42"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export : cette couleur d&apos;arrière-plan (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="44"/>
         <source>export: no background.</source>
         <translation>export : pas d&apos;arrière-plan.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg : un fichier par dessin, plus une feuille d&apos;exposition.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="47"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="49"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="81"/>
+        <location filename="../app/cli_export.cpp" line="82"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="96"/>
+        <location filename="../app/cli_export.cpp" line="97"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="102"/>
+        <location filename="../app/cli_export.cpp" line="103"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="110"/>
+        <location filename="../app/cli_export.cpp" line="111"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="116"/>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="128"/>
+        <location filename="../app/cli_export.cpp" line="129"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
         <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng ou html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="141"/>
+        <location filename="../app/cli_export.cpp" line="142"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="148"/>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
         <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng ou .html, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="152"/>
+        <location filename="../app/cli_export.cpp" line="153"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="168"/>
+        <location filename="../app/cli_export.cpp" line="169"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="173"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="182"/>
+        <location filename="../app/cli_export.cpp" line="183"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="184"/>
+        <location filename="../app/cli_export.cpp" line="185"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="257"/>
+        <location filename="../app/cli_export.cpp" line="254"/>
+        <source>&quot;%1&quot; is not a valid UTF-8 file name, which Finbook writes; choose a name in UTF-8.</source>
+        <translation>« %1 » n’est pas un nom de fichier UTF-8 valide, comme Finbook les écrit ; choisissez un nom en UTF-8.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="265"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="264"/>
+        <location filename="../app/cli_export.cpp" line="272"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="266"/>
+        <location filename="../app/cli_export.cpp" line="274"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -1668,12 +1673,12 @@
 <context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="22"/>
+        <location filename="../app/main.cpp" line="23"/>
         <source>Displays help on commandline options.</source>
         <translation>Afficher l&apos;aide sur les options de la ligne de commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="23"/>
+        <location filename="../app/main.cpp" line="24"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Afficher l&apos;aide, y compris les options propres à Qt.</translation>
     </message>

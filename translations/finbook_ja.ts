@@ -228,22 +228,22 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="99"/>
+        <location filename="../app/cli.cpp" line="101"/>
         <source>No command given; see finbook --help.</source>
         <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="103"/>
+        <location filename="../app/cli.cpp" line="105"/>
         <source>Usage: finbook info FILE</source>
         <translation>使い方: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="113"/>
+        <location filename="../app/cli.cpp" line="115"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="36"/>
+        <location filename="../app/main.cpp" line="37"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -260,159 +260,164 @@
   finbook export FILE... --format F --out-dir DIR   複数のファイルを書き出す</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="48"/>
+        <location filename="../app/main.cpp" line="49"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>システムの言語の代わりに LANGUAGE（例: de, en, fr, ja）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="54"/>
+        <location filename="../app/main.cpp" line="55"/>
         <source>FILE, or a command.</source>
         <translation>FILE、またはコマンド。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="66"/>
+        <location filename="../app/main.cpp" line="67"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>finbook --help を参照してください</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="73"/>
+        <location filename="../app/main.cpp" line="74"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1。%2。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="109"/>
+        <location filename="../app/main.cpp" line="110"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>不明なコマンド「%1」です。%2。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="35"/>
+        <location filename="../app/cli_export.cpp" line="36"/>
         <source>export: png, svg, gif, mp4, webm, apng or html.</source>
         <translation>export: png、svg、gif、mp4、webm、apng、html のいずれか。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="37"/>
+        <location filename="../app/cli_export.cpp" line="38"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: フレーム A～B（既定: 再生範囲）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
+        <location filename="../app/cli_export.cpp" line="39"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: キャンバスサイズを S 倍にする。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="40"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: 毎秒 N フレーム（既定: ドキュメントの設定）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="42"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: この背景色（#rrggbb）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="44"/>
         <source>export: no background.</source>
         <translation>export: 背景なし。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: 絵ごとに 1 ファイルとタイムシートを書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="47"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="49"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="81"/>
+        <location filename="../app/cli_export.cpp" line="82"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="96"/>
+        <location filename="../app/cli_export.cpp" line="97"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="102"/>
+        <location filename="../app/cli_export.cpp" line="103"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="110"/>
+        <location filename="../app/cli_export.cpp" line="111"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="116"/>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="128"/>
+        <location filename="../app/cli_export.cpp" line="129"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
         <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="141"/>
+        <location filename="../app/cli_export.cpp" line="142"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="148"/>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
         <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="152"/>
+        <location filename="../app/cli_export.cpp" line="153"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="168"/>
+        <location filename="../app/cli_export.cpp" line="169"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="173"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="182"/>
+        <location filename="../app/cli_export.cpp" line="183"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="184"/>
+        <location filename="../app/cli_export.cpp" line="185"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="257"/>
+        <location filename="../app/cli_export.cpp" line="254"/>
+        <source>&quot;%1&quot; is not a valid UTF-8 file name, which Finbook writes; choose a name in UTF-8.</source>
+        <translation>「%1」は Finbook が書き込める有効な UTF-8 のファイル名ではありません。UTF-8 の名前を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="265"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="264"/>
+        <location filename="../app/cli_export.cpp" line="272"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="266"/>
+        <location filename="../app/cli_export.cpp" line="274"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -1663,12 +1668,12 @@
 <context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="22"/>
+        <location filename="../app/main.cpp" line="23"/>
         <source>Displays help on commandline options.</source>
         <translation>コマンドラインオプションのヘルプを表示する。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="23"/>
+        <location filename="../app/main.cpp" line="24"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Qt 固有のオプションを含むヘルプを表示する。</translation>
     </message>
