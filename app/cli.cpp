@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "cli_export.h"
+#include "native_names.h"
 #include "thumbnail/thumbnail_command.h"
 
 #include <finbook/model/export/export_plan.h>
@@ -85,10 +86,11 @@ bool isHeadlessCommand(const QStringList &arguments)
 
 QByteArray documentInfoJson(const QString &path, QString *error)
 {
-    auto loaded = model::loadFinbook(path);
+    const QString openable = openablePath(path); // a name that is not UTF-8: native_names.h
+    auto loaded = model::loadFinbook(openable);
     if (!loaded) {
         if (error)
-            *error = loaded.error().message;
+            *error = QString(loaded.error().message).replace(openable, path);
         return {};
     }
     return QJsonDocument(summary(*loaded)).toJson(QJsonDocument::Compact);

@@ -1,6 +1,8 @@
 #include "cli_export.h"
 
 #include "cli.h"
+#include "cli_terminal.h"
+#include "native_names.h"
 
 #include <finbook/model/export/exporter.h>
 #include <finbook/model/finbook_file.h>
@@ -11,12 +13,9 @@
 #include <QFileInfo>
 #include <QTextStream>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
-
-#ifdef Q_OS_UNIX
-#include <unistd.h>
-#endif
 
 namespace finbook::app {
 
@@ -48,6 +47,9 @@ const OptionSpec kOptions[] = {
                        "export png/svg: one file per drawing plus an exposure sheet.")},
     {"overwrite", nullptr, QT_TRANSLATE_NOOP("CommandLine", "export: replace existing files.")},
     {"out-dir", "DIR", QT_TRANSLATE_NOOP("CommandLine", "export: write each FILE into DIR.")},
+    {"max-frames", "N",
+     QT_TRANSLATE_NOOP("CommandLine",
+                       "export: allow up to N frames (default: 100000 files, 3 hours of video).")},
 };
 
 QString optionName(const OptionSpec &spec)
@@ -103,6 +105,12 @@ std::optional<QString> parseNumbers(const QCommandLineParser &p, model::ExportOp
                 .arg(model::kMaxFps)
                 .arg(p.value(QStringLiteral("fps")));
     }
+    if (p.isSet(QStringLiteral("max-frames"))) {
+        options.maxFrames = p.value(QStringLiteral("max-frames")).toLongLong(&ok);
+        if (!ok || options.maxFrames < 1)
+            return CommandLine::tr("--max-frames needs a whole number above 0, not \"%1\".")
+                .arg(p.value(QStringLiteral("max-frames")));
+    }
     if (p.isSet(QStringLiteral("background"))) {
         const QColor color = QColor::fromString(p.value(QStringLiteral("background")));
         if (!color.isValid())
@@ -126,12 +134,17 @@ std::optional<QString> parseFormat(const QCommandLineParser &p, Request &r)
         r.options.format = r.format.value_or(model::ExportFormat::PngSequence);
         return std::nullopt;
     }
+    const QString suffix = QFileInfo(r.output).suffix();
+    const auto named = model::exportFormatForPath(r.output);
     if (!r.format && QFileInfo(r.output).isDir()) { // an existing folder: PNG frames into it
+        // ... unless its name asks for one file: "anim.gif/" receiving PNGs surprises.
+        if (named && !model::exportsSequence(*named))
+            return CommandLine::tr("\"%1\" is a folder, not a %2 file; give a file name, or "
+                                   "--format png to write PNG frames into the folder.")
+                .arg(r.output, model::exportFormatName(*named).toUpper());
         r.options.format = model::ExportFormat::PngSequence;
         return std::nullopt;
     }
-    const QString suffix = QFileInfo(r.output).suffix();
-    const auto named = model::exportFormatForPath(r.output);
     if (!r.format && !suffix.isEmpty() && (!named || model::exportsSequence(*named)))
         return CommandLine::tr("Cannot tell the format from \"%1\": end it in .gif, .mp4, .webm, "
                                ".apng or .html, give a folder for PNG frames, or use --format.")
@@ -184,25 +197,37 @@ QString targetFor(const Request &r, const QString &input)
                                    model::exportFormatSuffix(r.options.format));
 }
 
-bool stderrIsTerminal()
+// The files written, one a line: a long sequence's names are made again one at a time.
+void printWrittenFiles(const model::ExportResult &result, const model::ExportOptions &options,
+                       const model::ExportSource &source, QTextStream &out)
 {
-#ifdef Q_OS_UNIX
-    return ::isatty(STDERR_FILENO) == 1;
-#else
-    return false;
-#endif
+    // Written as they are for a program reading them; on a terminal harmless, as ls does.
+    const bool terminal = stdoutIsTerminal();
+    const auto print = [&](const QString &path) {
+        out << (terminal ? model::printableText(path) : path) << '\n';
+    };
+    if (result.fileCount <= result.files.size())
+        std::for_each(result.files.begin(), result.files.end(), print);
+    else
+        model::forEachExportTarget(source, options, print);
+    out.flush();
 }
 
-// "walk.gif: 37/120" rewritten in place, only for people watching a terminal.
-model::ExportProgress terminalProgress(const QString &name)
+// "walk.gif: 37/120" rewritten in place, only for people watching a terminal. The name is
+// printed harmless (a file name may hold terminal escapes). Returns false once SIGINT,
+// SIGTERM or SIGHUP arrived, which stops the export and removes what it wrote.
+model::ExportProgress exportProgress(const QString &name)
 {
-    if (!stderrIsTerminal())
-        return {};
-    return [name, shown = -1](qint64 done, qint64 total) mutable {
+    const bool terminal = stderrIsTerminal();
+    const QByteArray shownName = model::printableText(name).toLocal8Bit();
+    return [terminal, shownName, shown = -1](qint64 done, qint64 total) mutable {
+        if (interrupted())
+            return false;
         const int percent = total > 0 ? int(done * 100 / total) : 100;
-        if (percent != shown) {
+        if (terminal && percent != shown) {
             shown = percent;
-            std::fprintf(stderr, "\r%s: %lld/%lld (%d%%)", qPrintable(name), done, total, percent);
+            std::fprintf(stderr, "\r%s: %lld/%lld (%d%%)", shownName.constData(), done, total,
+                         percent);
             std::fflush(stderr);
         }
         return true;
@@ -217,27 +242,39 @@ void clearProgressLine()
 
 int exportOne(const Request &request, const QString &input, QTextStream &out, QTextStream &err)
 {
-    auto loaded = model::loadFinbook(input);
+    const QString openable = openablePath(input);
+    auto loaded = model::loadFinbook(openable);
     if (!loaded)
-        return fail(err, loaded.error().message);
+        return fail(err, QString(loaded.error().message).replace(openable, input));
     model::ExportOptions options = request.options;
     options.target = targetFor(request, input);
+    // Qt would write the name with U+FFFD in place of the bytes that are not UTF-8: another
+    // name than the one given. Say so instead.
+    if (isLossyArgument(request.output) || isLossyArgument(request.outDir))
+        return fail(err, CommandLine::tr("\"%1\" is not a valid UTF-8 file name, which Finbook "
+                                         "writes; choose a name in UTF-8.")
+                             .arg(request.outDir.isEmpty() ? request.output : request.outDir));
     options.title = QFileInfo(input).completeBaseName();
     const model::ExportSource source{std::move(loaded->frames), loaded->settings};
     const auto result = model::exportAnimation(
-        source, options, terminalProgress(QFileInfo(options.target).fileName()));
+        source, options, exportProgress(QFileInfo(options.target).fileName()));
     clearProgressLine();
     if (!result) {
         const model::ExportErrorCode code = result.error().code;
+        if (code == model::ExportErrorCode::Cancelled && interrupted())
+            return fail(err, CommandLine::tr("Interrupted; nothing was exported."),
+                        ExitCode(128 + interruptSignal()));
         const bool badInput = code == model::ExportErrorCode::BadOptions ||
-                              code == model::ExportErrorCode::TargetExists;
+                              code == model::ExportErrorCode::TargetExists ||
+                              code == model::ExportErrorCode::TooLarge;
         QString message = result.error().message;
         if (code == model::ExportErrorCode::TargetExists)
             message += QLatin1Char(' ') + CommandLine::tr("Use --overwrite to replace it.");
+        if (code == model::ExportErrorCode::TooLarge)
+            message += QLatin1Char(' ') + CommandLine::tr("Use --max-frames N to allow N frames.");
         return fail(err, message, badInput ? ExitCode::BadInput : ExitCode::Failure);
     }
-    for (const QString &file : result->files)
-        out << file << Qt::endl;
+    printWrittenFiles(*result, options, source, out);
     return int(ExitCode::Ok);
 }
 } // namespace
@@ -273,6 +310,7 @@ int runExportCommand(const QStringList &arguments, QTextStream &out, QTextStream
     Request request;
     if (auto error = parseRequest(arguments, request))
         return fail(err, *error);
+    catchInterrupts();
     for (const QString &input : request.inputs)
         if (const int code = exportOne(request, input, out, err); code != int(ExitCode::Ok))
             return code;

@@ -2,6 +2,7 @@
 #include "cli_export.h"
 #include "instance/instance_server.h"
 #include "instance/window_list.h"
+#include "native_names.h"
 #include "test_hooks.h"
 #include "translations.h"
 
@@ -96,8 +97,16 @@ int parseCommandLine(const QStringList &arguments, Options &options, bool print 
     options.language = parser.value(lang);
     options.positional = parser.positionalArguments();
     const bool headless = finbook::app::isHeadlessCommand(options.positional);
-    if (headless)
-        options.positional += finbook::app::exportOptionArguments(parser);
+    if (headless) {
+        // The option words go before a "--", so a file named "-x.finbook" (given after "--")
+        // stays a file name when `export` parses its arguments again.
+        const QStringList words = finbook::app::exportOptionArguments(parser);
+        if (options.positional.first() == QLatin1String("export"))
+            options.positional = QStringList{options.positional.first()} + words +
+                                 QStringList{QStringLiteral("--")} + options.positional.mid(1);
+        else
+            options.positional += words;
+    }
     // More than one word that is not info/export is a mistyped command, not a file list.
     if (!headless && options.positional.size() > 1) {
         err << QCoreApplication::translate("CommandLine", "Unknown command \"%1\"; %2.")
@@ -131,6 +140,7 @@ int main(int argc, char **argv)
     QStringList arguments;
     for (int i = 0; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);
+    finbook::app::rememberRawArguments(argc, argv);
 
     // Parse before any application object exists: --help, --version, bad arguments, `info`
     // and `export` must all work without a display.

@@ -253,22 +253,22 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="101"/>
+        <location filename="../app/cli.cpp" line="103"/>
         <source>No command given; see finbook --help.</source>
         <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="105"/>
+        <location filename="../app/cli.cpp" line="107"/>
         <source>Usage: finbook info FILE</source>
         <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="117"/>
+        <location filename="../app/cli.cpp" line="119"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="38"/>
+        <location filename="../app/main.cpp" line="39"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -285,136 +285,166 @@
   finbook export FILE... --format F --out-dir DIR   mehrere Dateien exportieren</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="50"/>
+        <location filename="../app/main.cpp" line="51"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>LANGUAGE (z. B. de, en, fr, ja) statt der Systemsprache verwenden.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="56"/>
+        <location filename="../app/main.cpp" line="57"/>
         <source>FILE, or a command.</source>
         <translation>FILE oder ein Befehl.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="68"/>
+        <location filename="../app/main.cpp" line="69"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>siehe finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="75"/>
+        <location filename="../app/main.cpp" line="76"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="103"/>
+        <location filename="../app/main.cpp" line="112"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Unbekannter Befehl „%1“; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="37"/>
+        <location filename="../app/cli_export.cpp" line="36"/>
         <source>export: png, svg, gif, mp4, webm, apng or html.</source>
         <translation>export: png, svg, gif, mp4, webm, apng oder html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="39"/>
+        <location filename="../app/cli_export.cpp" line="38"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: Einzelbilder A bis B (Standard: der Wiedergabebereich).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="40"/>
+        <location filename="../app/cli_export.cpp" line="39"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: die Leinwandgröße mit S multiplizieren.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="42"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: N Bilder pro Sekunde (Standard: die des Dokuments).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="44"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: diese Hintergrundfarbe (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="44"/>
         <source>export: no background.</source>
         <translation>export: kein Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="47"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: eine Datei pro Zeichnung plus ein Timing-Sheet.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="49"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="49"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="80"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
+        <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
+        <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="82"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="95"/>
+        <location filename="../app/cli_export.cpp" line="97"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="101"/>
+        <location filename="../app/cli_export.cpp" line="103"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="109"/>
+        <location filename="../app/cli_export.cpp" line="111"/>
+        <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
+        <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="121"/>
+        <location filename="../app/cli_export.cpp" line="129"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
         <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng oder html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="136"/>
+        <location filename="../app/cli_export.cpp" line="142"/>
+        <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
+        <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
         <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng oder .html enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="140"/>
+        <location filename="../app/cli_export.cpp" line="153"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="156"/>
+        <location filename="../app/cli_export.cpp" line="169"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="160"/>
+        <location filename="../app/cli_export.cpp" line="173"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="170"/>
+        <location filename="../app/cli_export.cpp" line="183"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="185"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="236"/>
+        <location filename="../app/cli_export.cpp" line="254"/>
+        <source>&quot;%1&quot; is not a valid UTF-8 file name, which Finbook writes; choose a name in UTF-8.</source>
+        <translation>„%1“ ist kein gültiger UTF-8-Dateiname, wie Finbook ihn schreibt; wählen Sie einen Namen in UTF-8.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="265"/>
+        <source>Interrupted; nothing was exported.</source>
+        <translation>Unterbrochen; es wurde nichts exportiert.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="272"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="274"/>
+        <source>Use --max-frames N to allow N frames.</source>
+        <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
 </context>
 <context>
@@ -579,46 +609,46 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="34"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="188"/>
-        <location filename="../model/src/export/export_sequence.cpp" line="92"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="35"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="197"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>es ist nicht genug Speicher vorhanden, um es zu rendern</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="56"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="196"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="57"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
         <source>its folder cannot be created</source>
         <translation>ihr Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="85"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="90"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg wurde beendet, ohne die Ausgabe als %1 zu schreiben; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="151"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="152"/>
         <source>Flipbook</source>
         <translation>Daumenkino</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="161"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="169"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="162"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="163"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="164"/>
         <source>Loop</source>
         <translation>Endlosschleife</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="166"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="167"/>
         <source>Frame</source>
         <translation>Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="171"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -658,42 +688,67 @@
         <translation>%1-Videos können nicht transparent sein; wählen Sie WebM, APNG, GIF oder PNG für einen transparenten Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="42"/>
+        <location filename="../model/src/export/export_plan.cpp" line="150"/>
+        <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
+        <translation>Dieser Export würde %1 Einzelbilder schreiben, mehr als die erlaubten %2; es wurde nichts exportiert.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="157"/>
+        <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
+        <translation>Dieser Export würde %1 Dateien schreiben (%2 Wiedergabeschritte), mehr als %3 ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="165"/>
+        <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
+        <translation>Dieser Export würde %1 Stunden Animation ergeben (%2 Einzelbilder), mehr als %3 Stunden ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="61"/>
         <source>&quot;%1&quot; is a folder where a file should go; choose another folder.</source>
         <translation>„%1“ ist ein Ordner, wo eine Datei hingehört; wählen Sie einen anderen Ordner.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="69"/>
-        <source>a file is in the way of the folder</source>
-        <translation>eine Datei ist dem Ordner im Weg</translation>
+        <location filename="../model/src/export/export_sequence.cpp" line="111"/>
+        <source>&quot;%1&quot; is a file, not a folder; choose a folder for the %2 files, or remove the file.</source>
+        <translation>„%1“ ist eine Datei, kein Ordner; wählen Sie einen Ordner für die %2-Dateien oder entfernen Sie die Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="76"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="120"/>
+        <source>&quot;%1&quot; is the top folder of the disk; choose or name a folder for the frames, such as &quot;%2&quot;.</source>
+        <translation>„%1“ ist der oberste Ordner des Datenträgers; wählen oder benennen Sie einen Ordner für die Einzelbilder, etwa „%2“.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="130"/>
         <source>the folder cannot be created</source>
         <translation>der Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="16"/>
+        <location filename="../model/src/export/exporter.cpp" line="21"/>
         <source>&quot;%1&quot; already exists; nothing was exported.</source>
         <translation>„%1“ ist bereits vorhanden; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="23"/>
+        <location filename="../model/src/export/exporter.cpp" line="28"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und exportieren Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="31"/>
+        <location filename="../model/src/export/exporter.cpp" line="36"/>
         <source>The export was cancelled; nothing was written.</source>
         <translation>Der Export wurde abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="40"/>
+        <location filename="../model/src/export/exporter.cpp" line="42"/>
+        <source>Another export is writing to &quot;%1&quot;; wait until it has finished, or choose another target.</source>
+        <translation>Ein anderer Export schreibt gerade nach „%1“; warten Sie, bis er fertig ist, oder wählen Sie ein anderes Ziel.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="61"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>„%1“ ist ein Ordner; geben Sie einen Dateinamen an, der auf .%2 endet.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="97"/>
+        <location filename="../model/src/export/exporter.cpp" line="174"/>
         <source>Choose where to export the animation to.</source>
         <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
     </message>
@@ -718,24 +773,42 @@
         <translation>animiertes PNG</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="50"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="116"/>
         <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
         <translation>Für den Export als %1 wird das Programm ffmpeg benötigt, das nicht gefunden wurde; installieren Sie es (unter Debian: apt install ffmpeg) und exportieren Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="126"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="207"/>
         <source>it stopped unexpectedly</source>
         <translation>es wurde unerwartet beendet</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="127"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="208"/>
         <source>exit code %1</source>
         <translation>Exit-Code %1</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="130"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="211"/>
         <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
         <translation>ffmpeg konnte die Ausgabe als %1 nicht erstellen (%2); es wurde nichts geschrieben. Falls der Datenträger voll ist, geben Sie Speicherplatz frei und exportieren Sie erneut.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="222"/>
+        <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
+        <translation>
+            <numerusform>ffmpeg kam %n Sekunde lang nicht voran und wurde beendet; es wurde nichts geschrieben. Prüfen Sie, ob ffmpeg funktioniert, und exportieren Sie erneut.</numerusform>
+            <numerusform>ffmpeg kam %n Sekunden lang nicht voran und wurde beendet; es wurde nichts geschrieben. Prüfen Sie, ob ffmpeg funktioniert, und exportieren Sie erneut.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/pending_output.cpp" line="245"/>
+        <source>a folder cannot be created in it</source>
+        <translation>darin kann kein Ordner angelegt werden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/pending_output.cpp" line="251"/>
+        <source>&quot;%1&quot; is a folder where a file should go</source>
+        <translation>„%1“ ist ein Ordner, wo eine Datei hingehört</translation>
     </message>
 </context>
 <context>
@@ -1670,12 +1743,12 @@
 <context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="24"/>
+        <location filename="../app/main.cpp" line="25"/>
         <source>Displays help on commandline options.</source>
         <translation>Zeigt Hilfe zu den Kommandozeilenoptionen an.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="25"/>
+        <location filename="../app/main.cpp" line="26"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Zeigt Hilfe einschließlich Qt-spezifischer Optionen an.</translation>
     </message>
@@ -2343,22 +2416,22 @@
         <translation>%1-Dateien (*.%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="44"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="30"/>
         <source>Choose where to export the animation to.</source>
         <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="63"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="56"/>
         <source>Exporting...</source>
         <translation>Wird exportiert...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="75"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="68"/>
         <source>Cancelling...</source>
         <translation>Wird abgebrochen...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="85"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 exportiert</numerusform>
@@ -2366,17 +2439,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="102"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="96"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="127"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="121"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>„%1“ ist bereits vorhanden. Ersetzen?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n Datei am Ziel ist bereits vorhanden: „%1“. Ersetzen?</numerusform>
@@ -2384,12 +2457,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="131"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="125"/>
         <source>Replace Files?</source>
         <translation>Dateien ersetzen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="138"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="132"/>
+        <source>Export Anyway?</source>
+        <translation>Trotzdem exportieren?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="134"/>
+        <source>It may take a long time and a lot of disk space. Export anyway?</source>
+        <translation>Das kann lange dauern und viel Speicherplatz belegen. Trotzdem exportieren?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="142"/>
         <source>Cannot Export</source>
         <translation>Export nicht möglich</translation>
     </message>

@@ -253,22 +253,22 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="101"/>
+        <location filename="../app/cli.cpp" line="103"/>
         <source>No command given; see finbook --help.</source>
         <translation>Aucune commande indiquée ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="105"/>
+        <location filename="../app/cli.cpp" line="107"/>
         <source>Usage: finbook info FILE</source>
         <translation>Utilisation : finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="117"/>
+        <location filename="../app/cli.cpp" line="119"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="38"/>
+        <location filename="../app/main.cpp" line="39"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -285,136 +285,166 @@
   finbook export FILE... --format F --out-dir DIR   exporter plusieurs fichiers</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="50"/>
+        <location filename="../app/main.cpp" line="51"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>Utiliser la langue LANGUAGE (par ex. de, en, fr, ja) au lieu de celle du système.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="56"/>
+        <location filename="../app/main.cpp" line="57"/>
         <source>FILE, or a command.</source>
         <translation>FILE, ou une commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="68"/>
+        <location filename="../app/main.cpp" line="69"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>voir finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="75"/>
+        <location filename="../app/main.cpp" line="76"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1 ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="103"/>
+        <location filename="../app/main.cpp" line="112"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Commande inconnue « %1 » ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="37"/>
+        <location filename="../app/cli_export.cpp" line="36"/>
         <source>export: png, svg, gif, mp4, webm, apng or html.</source>
         <translation>export : png, svg, gif, mp4, webm, apng ou html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="39"/>
+        <location filename="../app/cli_export.cpp" line="38"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export : images A à B (par défaut : la plage de lecture).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="40"/>
+        <location filename="../app/cli_export.cpp" line="39"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export : multiplier la taille du canevas par S.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="42"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export : N images par seconde (par défaut : celle du document).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="44"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export : cette couleur d&apos;arrière-plan (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="44"/>
         <source>export: no background.</source>
         <translation>export : pas d&apos;arrière-plan.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="47"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg : un fichier par dessin, plus une feuille d&apos;exposition.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="49"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="49"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="80"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
+        <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
+        <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="82"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="95"/>
+        <location filename="../app/cli_export.cpp" line="97"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="101"/>
+        <location filename="../app/cli_export.cpp" line="103"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="109"/>
+        <location filename="../app/cli_export.cpp" line="111"/>
+        <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
+        <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="121"/>
+        <location filename="../app/cli_export.cpp" line="129"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
         <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng ou html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="136"/>
+        <location filename="../app/cli_export.cpp" line="142"/>
+        <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
+        <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
         <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng ou .html, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="140"/>
+        <location filename="../app/cli_export.cpp" line="153"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="156"/>
+        <location filename="../app/cli_export.cpp" line="169"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="160"/>
+        <location filename="../app/cli_export.cpp" line="173"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="170"/>
+        <location filename="../app/cli_export.cpp" line="183"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="185"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="236"/>
+        <location filename="../app/cli_export.cpp" line="254"/>
+        <source>&quot;%1&quot; is not a valid UTF-8 file name, which Finbook writes; choose a name in UTF-8.</source>
+        <translation>« %1 » n’est pas un nom de fichier UTF-8 valide, comme Finbook les écrit ; choisissez un nom en UTF-8.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="265"/>
+        <source>Interrupted; nothing was exported.</source>
+        <translation>Interrompu ; rien n’a été exporté.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="272"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="274"/>
+        <source>Use --max-frames N to allow N frames.</source>
+        <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
 </context>
 <context>
@@ -579,46 +609,46 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="34"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="188"/>
-        <location filename="../model/src/export/export_sequence.cpp" line="92"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="35"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="197"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>la mémoire est insuffisante pour en faire le rendu</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="56"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="196"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="57"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
         <source>its folder cannot be created</source>
         <translation>son dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="85"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="90"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg s&apos;est terminé sans écrire le fichier %1&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="151"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="152"/>
         <source>Flipbook</source>
         <translation>Folioscope</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="161"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="169"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="162"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
         <source>Play</source>
         <translation>Lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="163"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="164"/>
         <source>Loop</source>
         <translation>Boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="166"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="167"/>
         <source>Frame</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="171"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -658,42 +688,67 @@
         <translation>Une vidéo %1 ne peut pas être transparente&#xa0;; choisissez WebM, APNG, GIF ou PNG pour un arrière-plan transparent.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="42"/>
+        <location filename="../model/src/export/export_plan.cpp" line="150"/>
+        <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
+        <translation>Cet export écrirait %1 images, plus que les %2 autorisées ; rien n’a été exporté.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="157"/>
+        <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
+        <translation>Cet export écrirait %1 fichiers (%2 pas de lecture), plus de %3 sans votre autorisation explicite ; rien n’a été exporté.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="165"/>
+        <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
+        <translation>Cet export produirait %1 heures d’animation (%2 images), plus de %3 heures sans votre autorisation explicite ; rien n’a été exporté.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="61"/>
         <source>&quot;%1&quot; is a folder where a file should go; choose another folder.</source>
         <translation>«&#xa0;%1&#xa0;» est un dossier, à l&apos;emplacement prévu pour un fichier&#xa0;; choisissez un autre dossier.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="69"/>
-        <source>a file is in the way of the folder</source>
-        <translation>un fichier occupe l&apos;emplacement du dossier</translation>
+        <location filename="../model/src/export/export_sequence.cpp" line="111"/>
+        <source>&quot;%1&quot; is a file, not a folder; choose a folder for the %2 files, or remove the file.</source>
+        <translation>« %1 » est un fichier, pas un dossier ; choisissez un dossier pour les fichiers %2, ou supprimez le fichier.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="76"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="120"/>
+        <source>&quot;%1&quot; is the top folder of the disk; choose or name a folder for the frames, such as &quot;%2&quot;.</source>
+        <translation>« %1 » est le dossier racine du disque ; choisissez ou nommez un dossier pour les images, par exemple « %2 ».</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="130"/>
         <source>the folder cannot be created</source>
         <translation>le dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="16"/>
+        <location filename="../model/src/export/exporter.cpp" line="21"/>
         <source>&quot;%1&quot; already exists; nothing was exported.</source>
         <translation>«&#xa0;%1&#xa0;» existe déjà&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="23"/>
+        <location filename="../model/src/export/exporter.cpp" line="28"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis exportez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="31"/>
+        <location filename="../model/src/export/exporter.cpp" line="36"/>
         <source>The export was cancelled; nothing was written.</source>
         <translation>L&apos;export a été annulé&#xa0;; rien n&apos;a été écrit.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="40"/>
+        <location filename="../model/src/export/exporter.cpp" line="42"/>
+        <source>Another export is writing to &quot;%1&quot;; wait until it has finished, or choose another target.</source>
+        <translation>Un autre export écrit dans « %1 » ; attendez qu’il soit terminé, ou choisissez une autre destination.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="61"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>«&#xa0;%1&#xa0;» est un dossier&#xa0;; indiquez un nom de fichier se terminant par .%2.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="97"/>
+        <location filename="../model/src/export/exporter.cpp" line="174"/>
         <source>Choose where to export the animation to.</source>
         <translation>Choisissez où exporter l&apos;animation.</translation>
     </message>
@@ -718,24 +773,42 @@
         <translation>PNG animé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="50"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="116"/>
         <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
         <translation>L&apos;export en %1 nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le (sous Debian&#xa0;: apt install ffmpeg) et exportez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="126"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="207"/>
         <source>it stopped unexpectedly</source>
         <translation>il s&apos;est arrêté de façon inattendue</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="127"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="208"/>
         <source>exit code %1</source>
         <translation>code de sortie %1</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="130"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="211"/>
         <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
         <translation>ffmpeg n&apos;a pas pu créer le fichier %1 (%2)&#xa0;; rien n&apos;a été écrit. Si le disque est plein, libérez de l&apos;espace et exportez à nouveau.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="222"/>
+        <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
+        <translation>
+            <numerusform>ffmpeg n’a pas progressé pendant %n seconde et a été arrêté ; rien n’a été écrit. Vérifiez que ffmpeg fonctionne, puis exportez à nouveau.</numerusform>
+            <numerusform>ffmpeg n’a pas progressé pendant %n secondes et a été arrêté ; rien n’a été écrit. Vérifiez que ffmpeg fonctionne, puis exportez à nouveau.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/pending_output.cpp" line="245"/>
+        <source>a folder cannot be created in it</source>
+        <translation>aucun dossier ne peut y être créé</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/pending_output.cpp" line="251"/>
+        <source>&quot;%1&quot; is a folder where a file should go</source>
+        <translation>« %1 » est un dossier là où un fichier doit aller</translation>
     </message>
 </context>
 <context>
@@ -1670,12 +1743,12 @@
 <context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="24"/>
+        <location filename="../app/main.cpp" line="25"/>
         <source>Displays help on commandline options.</source>
         <translation>Afficher l&apos;aide sur les options de la ligne de commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="25"/>
+        <location filename="../app/main.cpp" line="26"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Afficher l&apos;aide, y compris les options propres à Qt.</translation>
     </message>
@@ -2343,22 +2416,22 @@
         <translation>Fichiers %1 (*.%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="44"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="30"/>
         <source>Choose where to export the animation to.</source>
         <translation>Choisissez où exporter l&apos;animation.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="63"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="56"/>
         <source>Exporting...</source>
         <translation>Exportation...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="75"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="68"/>
         <source>Cancelling...</source>
         <translation>Annulation...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="85"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n fichier exporté dans %1</numerusform>
@@ -2366,17 +2439,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="102"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="96"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export annulé&#xa0;; rien n&apos;a été écrit.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="127"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="121"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>«&#xa0;%1&#xa0;» existe déjà. Le remplacer&#xa0;?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n fichier existe déjà à la destination&#xa0;: «&#xa0;%1&#xa0;». Le remplacer&#xa0;?</numerusform>
@@ -2384,12 +2457,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="131"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="125"/>
         <source>Replace Files?</source>
         <translation>Remplacer les fichiers&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="138"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="132"/>
+        <source>Export Anyway?</source>
+        <translation>Exporter quand même ?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="134"/>
+        <source>It may take a long time and a lot of disk space. Export anyway?</source>
+        <translation>Cela peut prendre longtemps et beaucoup d’espace disque. Exporter quand même ?</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="142"/>
         <source>Cannot Export</source>
         <translation>Impossible d&apos;exporter</translation>
     </message>

@@ -253,22 +253,22 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="101"/>
+        <location filename="../app/cli.cpp" line="103"/>
         <source>No command given; see finbook --help.</source>
         <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="105"/>
+        <location filename="../app/cli.cpp" line="107"/>
         <source>Usage: finbook info FILE</source>
         <translation>使い方: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="117"/>
+        <location filename="../app/cli.cpp" line="119"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="38"/>
+        <location filename="../app/main.cpp" line="39"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -285,136 +285,166 @@
   finbook export FILE... --format F --out-dir DIR   複数のファイルを書き出す</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="50"/>
+        <location filename="../app/main.cpp" line="51"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>システムの言語の代わりに LANGUAGE（例: de, en, fr, ja）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="56"/>
+        <location filename="../app/main.cpp" line="57"/>
         <source>FILE, or a command.</source>
         <translation>FILE、またはコマンド。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="68"/>
+        <location filename="../app/main.cpp" line="69"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>finbook --help を参照してください</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="75"/>
+        <location filename="../app/main.cpp" line="76"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1。%2。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="103"/>
+        <location filename="../app/main.cpp" line="112"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>不明なコマンド「%1」です。%2。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="37"/>
+        <location filename="../app/cli_export.cpp" line="36"/>
         <source>export: png, svg, gif, mp4, webm, apng or html.</source>
         <translation>export: png、svg、gif、mp4、webm、apng、html のいずれか。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="39"/>
+        <location filename="../app/cli_export.cpp" line="38"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: フレーム A～B（既定: 再生範囲）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="40"/>
+        <location filename="../app/cli_export.cpp" line="39"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: キャンバスサイズを S 倍にする。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="42"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: 毎秒 N フレーム（既定: ドキュメントの設定）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="44"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: この背景色（#rrggbb）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="44"/>
         <source>export: no background.</source>
         <translation>export: 背景なし。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="47"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: 絵ごとに 1 ファイルとタイムシートを書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="49"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="49"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="80"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
+        <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
+        <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="82"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="95"/>
+        <location filename="../app/cli_export.cpp" line="97"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="101"/>
+        <location filename="../app/cli_export.cpp" line="103"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="109"/>
+        <location filename="../app/cli_export.cpp" line="111"/>
+        <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
+        <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="121"/>
+        <location filename="../app/cli_export.cpp" line="129"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
         <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="136"/>
+        <location filename="../app/cli_export.cpp" line="142"/>
+        <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
+        <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
         <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="140"/>
+        <location filename="../app/cli_export.cpp" line="153"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="156"/>
+        <location filename="../app/cli_export.cpp" line="169"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="160"/>
+        <location filename="../app/cli_export.cpp" line="173"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="170"/>
+        <location filename="../app/cli_export.cpp" line="183"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="185"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="236"/>
+        <location filename="../app/cli_export.cpp" line="254"/>
+        <source>&quot;%1&quot; is not a valid UTF-8 file name, which Finbook writes; choose a name in UTF-8.</source>
+        <translation>「%1」は Finbook が書き込める有効な UTF-8 のファイル名ではありません。UTF-8 の名前を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="265"/>
+        <source>Interrupted; nothing was exported.</source>
+        <translation>中断されました。何も書き出されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="272"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="274"/>
+        <source>Use --max-frames N to allow N frames.</source>
+        <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
 </context>
 <context>
@@ -578,46 +608,46 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="34"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="188"/>
-        <location filename="../model/src/export/export_sequence.cpp" line="92"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="35"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="197"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>描画に必要なメモリが足りません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="56"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="196"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="57"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
         <source>its folder cannot be created</source>
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="85"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="90"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="151"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="152"/>
         <source>Flipbook</source>
         <translation>パラパラ漫画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="161"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="169"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="162"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
         <source>Play</source>
         <translation>再生</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="163"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="164"/>
         <source>Loop</source>
         <translation>ループ</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="166"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="167"/>
         <source>Frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="171"/>
         <source>Pause</source>
         <translation>一時停止</translation>
     </message>
@@ -657,42 +687,67 @@
         <translation>%1 動画は透明にできません。背景を透明にするには WebM、APNG、GIF、PNG のいずれかを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="42"/>
+        <location filename="../model/src/export/export_plan.cpp" line="150"/>
+        <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
+        <translation>この書き出しは %1 フレームを書き込みます。許可された %2 を超えるため、何も書き出していません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="157"/>
+        <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
+        <translation>この書き出しは %1 個のファイル（再生ティック %2）を書き込みます。明示的な許可なしに %3 を超えることはできないため、何も書き出していません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="165"/>
+        <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
+        <translation>この書き出しは %1 時間のアニメーション（%2 フレーム）になります。明示的な許可なしに %3 時間を超えることはできないため、何も書き出していません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="61"/>
         <source>&quot;%1&quot; is a folder where a file should go; choose another folder.</source>
         <translation>「%1」はファイルを置く場所にあるフォルダーです。別のフォルダーを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="69"/>
-        <source>a file is in the way of the folder</source>
-        <translation>フォルダーを作る場所にファイルがあります</translation>
+        <location filename="../model/src/export/export_sequence.cpp" line="111"/>
+        <source>&quot;%1&quot; is a file, not a folder; choose a folder for the %2 files, or remove the file.</source>
+        <translation>「%1」はフォルダーではなくファイルです。%2 ファイル用のフォルダーを選ぶか、そのファイルを削除してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="76"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="120"/>
+        <source>&quot;%1&quot; is the top folder of the disk; choose or name a folder for the frames, such as &quot;%2&quot;.</source>
+        <translation>「%1」はディスクの最上位フォルダーです。「%2」のように、フレーム用のフォルダーを選ぶか名前を付けてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sequence.cpp" line="130"/>
         <source>the folder cannot be created</source>
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="16"/>
+        <location filename="../model/src/export/exporter.cpp" line="21"/>
         <source>&quot;%1&quot; already exists; nothing was exported.</source>
         <translation>「%1」はすでに存在するため、何も書き出しませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="23"/>
+        <location filename="../model/src/export/exporter.cpp" line="28"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度書き出してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="31"/>
+        <location filename="../model/src/export/exporter.cpp" line="36"/>
         <source>The export was cancelled; nothing was written.</source>
         <translation>書き出しはキャンセルされました。何も書き込まれていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="40"/>
+        <location filename="../model/src/export/exporter.cpp" line="42"/>
+        <source>Another export is writing to &quot;%1&quot;; wait until it has finished, or choose another target.</source>
+        <translation>別の書き出しが「%1」に書き込み中です。終わるまで待つか、別の書き出し先を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="61"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>「%1」はフォルダーです。末尾が .%2 のファイル名を指定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="97"/>
+        <location filename="../model/src/export/exporter.cpp" line="174"/>
         <source>Choose where to export the animation to.</source>
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
@@ -717,24 +772,41 @@
         <translation>アニメーション PNG</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="50"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="116"/>
         <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
         <translation>%1 を書き出すには ffmpeg プログラムが必要ですが、見つかりませんでした。インストールしてから（Debian の場合: apt install ffmpeg）、もう一度書き出してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="126"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="207"/>
         <source>it stopped unexpectedly</source>
         <translation>予期せず停止しました</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="127"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="208"/>
         <source>exit code %1</source>
         <translation>終了コード %1</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="130"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="211"/>
         <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
         <translation>ffmpeg で %1 を作成できませんでした（%2）。何も書き込まれていません。ディスクがいっぱいの場合は、空き容量を増やしてからもう一度書き出してください。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="222"/>
+        <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
+        <translation>
+            <numerusform>ffmpeg が %n 秒間進まなかったため停止しました。何も書き込まれていません。ffmpeg が動作するか確認してから、もう一度書き出してください。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/pending_output.cpp" line="245"/>
+        <source>a folder cannot be created in it</source>
+        <translation>その中にフォルダーを作成できません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/pending_output.cpp" line="251"/>
+        <source>&quot;%1&quot; is a folder where a file should go</source>
+        <translation>ファイルを置くべき場所に「%1」というフォルダーがあります</translation>
     </message>
 </context>
 <context>
@@ -1666,12 +1738,12 @@
 <context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="24"/>
+        <location filename="../app/main.cpp" line="25"/>
         <source>Displays help on commandline options.</source>
         <translation>コマンドラインオプションのヘルプを表示する。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="25"/>
+        <location filename="../app/main.cpp" line="26"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Qt 固有のオプションを含むヘルプを表示する。</translation>
     </message>
@@ -2338,51 +2410,61 @@
         <translation>%1 ファイル (*.%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="44"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="30"/>
         <source>Choose where to export the animation to.</source>
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="63"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="56"/>
         <source>Exporting...</source>
         <translation>書き出しています...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="75"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="68"/>
         <source>Cancelling...</source>
         <translation>キャンセルしています...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="85"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n 個のファイルを %1 に書き出しました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="102"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="96"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>書き出しをキャンセルしました。何も書き込まれていません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="127"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="121"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>「%1」はすでに存在します。置き換えますか？</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>書き出し先には「%1」など %n 個のファイルがすでに存在します。置き換えますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="131"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="125"/>
         <source>Replace Files?</source>
         <translation>ファイルを置き換えますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="138"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="132"/>
+        <source>Export Anyway?</source>
+        <translation>それでも書き出しますか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="134"/>
+        <source>It may take a long time and a lot of disk space. Export anyway?</source>
+        <translation>長い時間と多くのディスク容量が必要になることがあります。それでも書き出しますか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="142"/>
         <source>Cannot Export</source>
         <translation>書き出せません</translation>
     </message>

@@ -5,6 +5,8 @@
 // stroke referenced thousands of times (each reference painted again). So segments are
 // clipped to what the painter can show before QPainter sees them, and references to the
 // same points in one frame are painted once (paintList).
+#include "render_wide_pen.h"
+
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/render.h>
 
@@ -14,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <tuple>
 #include <unordered_map>
 
 namespace finbook::model {
@@ -108,9 +111,12 @@ qreal coatedAlpha(qreal alpha, int coats)
 }
 } // namespace
 
-bool clipSegment(QPointF &a, QPointF &b, const QRectF &r, double *t0Out, double *t1Out)
+namespace {
+// Liang–Barsky from `a` along a→b.
+bool clipFrom(QPointF &a, QPointF &b, const QRectF &r, double &t0, double &t1)
 {
-    double t0 = 0.0, t1 = 1.0;
+    t0 = 0.0;
+    t1 = 1.0;
     const double dx = b.x() - a.x(), dy = b.y() - a.y();
     if (!std::isfinite(dx) || !std::isfinite(dy))
         return false;
@@ -135,6 +141,26 @@ bool clipSegment(QPointF &a, QPointF &b, const QRectF &r, double *t0Out, double 
         a = QPointF(from.x() + t0 * dx, from.y() + t0 * dy);
     if (t1 < 1.0)
         b = QPointF(from.x() + t1 * dx, from.y() + t1 * dy);
+    return true;
+}
+
+double distanceTo(const QPointF &p, const QPointF &c)
+{
+    return std::abs(p.x() - c.x()) + std::abs(p.y() - c.y());
+}
+} // namespace
+
+bool clipSegment(QPointF &a, QPointF &b, const QRectF &r, double *t0Out, double *t1Out)
+{
+    // The cuts are measured from the end nearer the rectangle: from a point near 1e30, t × d
+    // loses every digit that matters there (1 - 1e-28 is 1), and the piece drawn pointed the
+    // wrong way or vanished. From the near end the cuts are small multiples of d, exact enough.
+    const bool flip = distanceTo(b, r.center()) < distanceTo(a, r.center());
+    double t0 = 0.0, t1 = 1.0;
+    if (flip ? !clipFrom(b, a, r, t0, t1) : !clipFrom(a, b, r, t0, t1))
+        return false;
+    if (flip)
+        std::tie(t0, t1) = std::pair(1.0 - t1, 1.0 - t0);
     if (t0Out)
         *t0Out = t0;
     if (t1Out)
@@ -162,6 +188,18 @@ void paintStroke(QPainter &painter, const std::vector<StrokePoint> &points, QRgb
         const QPointF at(p.x, p.y);
         if (isFinite(p) && clip.contains(at))
             paintDot(painter, at, std::max(0.5f, width * std::clamp(p.pressure, 0.0f, 1.0f)));
+        return;
+    }
+    if (widestPen(points, width) * scale >= kWidePenPixels) {
+        std::vector<WideSegment> segments;
+        for (std::size_t i = 1; i < points.size(); ++i) {
+            const StrokePoint &from = points[i - 1], &to = points[i];
+            QPointF a(from.x, from.y), b(to.x, to.y);
+            if (isFinite(from) && isFinite(to) && clipSegment(a, b, clip))
+                segments.push_back({a, b, std::max(0.25, widthBucket(width, to.pressure) / 4.0)});
+        }
+        const qreal edge = 2.0 / scale; // antialiasing reaches a pixel past the picture
+        fillWideSegments(painter, segments, paintable.adjusted(-edge, -edge, edge, edge), scale);
         return;
     }
     RunPainter runs(painter, QPen(c, 1.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));

@@ -7,6 +7,7 @@
 #include <QFile>
 #include <QStringList>
 
+#include <csignal>
 #include <fcntl.h>
 #include <sys/mount.h>
 #include <sys/resource.h>
@@ -49,8 +50,9 @@ inline QByteArray readAllFrom(int fd)
 // Runs `finbook arguments...` with its output in temporary files (so a chatty child never
 // blocks on a pipe) and returns its exit code, peak memory and time.
 // `addressSpaceMiB` > 0 caps the child's address space (RLIMIT_AS) to provoke running out
-// of memory.
-inline Measured runMeasured(const QStringList &arguments, long addressSpaceMiB = 0)
+// of memory. `signal` is sent after `signalAfterMs` (when > 0); SIGKILL after `killAfterMs`.
+inline Measured runMeasured(const QStringList &arguments, long addressSpaceMiB = 0,
+                            int signalAfterMs = 0, int signal = SIGTERM, int killAfterMs = 0)
 {
     std::vector<QByteArray> args{QByteArray(FINBOOK_BINARY_DIR "/bin/finbook")};
     for (const QString &a : arguments)
@@ -83,7 +85,21 @@ inline Measured runMeasured(const QStringList &arguments, long addressSpaceMiB =
     }
     int status = 0;
     struct rusage usage {};
-    if (child > 0 && ::wait4(child, &status, 0, &usage) == child) {
+    // Sends `signal` once `signalAfterMs` have passed (0: never), and SIGKILL at `killAfterMs`
+    // (0: never), so a run that would go on for ever still ends and counts as failed.
+    bool signalled = false;
+    pid_t done = 0;
+    while (child > 0 && (signalAfterMs > 0 || killAfterMs > 0) &&
+           (done = ::wait4(child, &status, WNOHANG, &usage)) == 0) {
+        if (signalAfterMs > 0 && !signalled && clock.elapsed() >= signalAfterMs) {
+            ::kill(child, signal);
+            signalled = true;
+        }
+        if (killAfterMs > 0 && clock.elapsed() >= killAfterMs)
+            ::kill(child, SIGKILL);
+        ::usleep(20000);
+    }
+    if (child > 0 && (done == child || ::wait4(child, &status, 0, &usage) == child)) {
         m.seconds = double(clock.nsecsElapsed()) / 1e9;
         m.peakMiB = usage.ru_maxrss / 1024;
         m.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

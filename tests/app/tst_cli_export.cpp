@@ -14,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cstdio>
+
 using namespace finbook;
 using namespace finbook::test;
 
@@ -92,6 +94,13 @@ private slots:
     void fullDiskFailsCleanly();
     void missingFfmpegFails();
     void progressOnlyOnATerminal();
+    void progressNameIsPrintedHarmless();
+    void dashDashEndsOptions();
+    void folderNamedLikeAFileIsRefused();
+    void rootFolderIsRefused();
+    void fileInTheWayOfTheFolderExitsTwo();
+    void tooLargeNeedsMaxFrames();
+    void namesThatAreNotUtf8();
 
 private:
     QTemporaryDir m_dir;
@@ -353,6 +362,162 @@ void TestCliExport::progressOnlyOnATerminal()
     QCOMPARE(run.code, 0);
     QVERIFY2(run.out.contains("tty.html: 12/12 (100%)"), run.out.constData());
     QVERIFY(QFileInfo::exists(out));
+}
+
+// A file name holding a terminal escape reaches the progress line written out (\x1B), as it
+// does in error lines; before, the terminal received the escape itself.
+void TestCliExport::progressNameIsPrintedHarmless()
+{
+    if (program("script").isEmpty())
+        QSKIP("script (util-linux) not installed");
+    const QString out = m_dir.filePath(QStringLiteral("tty\x1b[31mred.html"));
+    const QString command = QStringLiteral("%1 export %2 %3")
+                                .arg(shellQuote(kFinbook), shellQuote(m_held), shellQuote(out));
+    const Run run = runProgram(program("script"),
+                               {QStringLiteral("-qec"), command, QStringLiteral("/dev/null")});
+    QCOMPARE(run.code, 0);
+    QVERIFY2(!run.out.contains("\x1b[31m"), run.out.constData());
+    QVERIFY2(run.out.contains("tty\\x1b[31mred.html: 12/12 (100%)"), run.out.constData());
+}
+
+// "--" ends the options for `export` as it does for `info`: a file named "-x.finbook" is a
+// file, not the options -x, -., -f ...
+void TestCliExport::dashDashEndsOptions()
+{
+    const QString folder = m_dir.filePath(QStringLiteral("dashes"));
+    QVERIFY(QDir().mkpath(folder));
+    QVERIFY(QFile::copy(m_held, QDir(folder).filePath(QStringLiteral("-x.finbook"))));
+    QProcess process;
+    process.setWorkingDirectory(folder);
+    process.start(kFinbook, {QStringLiteral("export"), QStringLiteral("--"),
+                             QStringLiteral("-x.finbook"), QStringLiteral("-out.html")});
+    QVERIFY(process.waitForFinished(60000));
+    QVERIFY2(process.exitCode() == 0, process.readAllStandardError().constData());
+    QVERIFY(QFileInfo(QDir(folder).filePath(QStringLiteral("-out.html"))).size() > 1000);
+    // Options before "--" still count.
+    process.start(kFinbook,
+                  {QStringLiteral("export"), QStringLiteral("--scale=0.5"), QStringLiteral("--"),
+                   QStringLiteral("-x.finbook"), QStringLiteral("-frames")});
+    QVERIFY(process.waitForFinished(60000));
+    QVERIFY2(process.exitCode() == 0, process.readAllStandardError().constData());
+    const QImage first(QDir(folder).filePath(QStringLiteral("-frames/frame_0001.png")));
+    QCOMPARE(first.size(), exampleWithHolds().settings.canvasSize / 2);
+}
+
+// An existing folder called "anim.gif" is not a place for PNG frames unless asked for.
+void TestCliExport::folderNamedLikeAFileIsRefused()
+{
+    const QString folder = m_dir.filePath(QStringLiteral("anim.gif"));
+    QVERIFY(QDir().mkpath(folder));
+    Run run = runFinbook({QStringLiteral("export"), m_held, folder});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err) && run.err.contains("--format png"), run.err.constData());
+    QCOMPARE(filesIn(folder), QStringList());
+    run = runFinbook({QStringLiteral("export"), m_held, folder, QStringLiteral("--format=png")});
+    QCOMPARE(run.code, 0);
+    QCOMPARE(filesIn(folder).size(), 18);
+}
+
+// "export walk.finbook /" is a slip, never a wish to strew frames over the root folder.
+void TestCliExport::rootFolderIsRefused()
+{
+    const QStringList before = filesIn(QStringLiteral("/"));
+    const Run run = runFinbook({QStringLiteral("export"), m_held, QStringLiteral("/")});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err) && run.err.contains("/frame"), run.err.constData());
+    QCOMPARE(filesIn(QStringLiteral("/")), before);
+}
+
+// The README promises exit code 2 for a file in the way; it was 1 for a file where the PNG
+// folder should be.
+void TestCliExport::fileInTheWayOfTheFolderExitsTwo()
+{
+    const QString blocked = m_dir.filePath(QStringLiteral("blocked"));
+    QFile file(blocked);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("mine");
+    file.close();
+    const Run run = runFinbook({QStringLiteral("export"), m_held, blocked});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err), run.err.constData());
+    QCOMPARE(QFileInfo(blocked).size(), qint64(4));
+}
+
+// More frames than the limits allow need --max-frames; a limit below the export refuses it.
+void TestCliExport::tooLargeNeedsMaxFrames()
+{
+    model::ExportSource held = exampleWithHolds();
+    for (model::Frame &f : held.frames)
+        f.hold = model::kMaxHold; // 12,000 ticks: 16.7 minutes at 12 fps
+    while (held.frames.size() < 101)
+        held.frames.push_back(held.frames.back());
+    model::Id next = 100000; // copies need ids of their own
+    for (model::Frame &f : held.frames) {
+        f.id = next++;
+        for (model::StrokeGroup &g : f.groups) {
+            g.id = next++;
+            for (model::Stroke &stroke : g.strokes)
+                stroke.id = next++;
+        }
+    }
+    const QString file = saveDocument(held, m_dir.filePath(QStringLiteral("long.finbook")));
+    QVERIFY(!file.isEmpty());
+    const QString folder = m_dir.filePath(QStringLiteral("long"));
+    // 101,000 PNG files: refused at once, with the way out named.
+    Run run = runFinbook({QStringLiteral("export"), file, folder});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err) && run.err.contains("--max-frames"), run.err.constData());
+    QVERIFY(!QFileInfo::exists(folder));
+    // 28 hours of GIF at 1 frame per second: refused before ffmpeg is started.
+    const QString gif = m_dir.filePath(QStringLiteral("long.gif"));
+    run = runFinbook({QStringLiteral("export"), file, gif, QStringLiteral("--fps=1")});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err) && run.err.contains("--max-frames"), run.err.constData());
+    QVERIFY(!QFileInfo::exists(gif));
+    // An explicit limit below what the export needs refuses it too.
+    run = runFinbook({QStringLiteral("export"), m_held, folder, QStringLiteral("--max-frames=17")});
+    QCOMPARE(run.code, 2);
+    QVERIFY2(run.err.contains("18"), run.err.constData());
+    QVERIFY(!QFileInfo::exists(folder));
+    run = runFinbook({QStringLiteral("export"), m_held, folder, QStringLiteral("--max-frames=18")});
+    QCOMPARE(run.code, 0);
+    QCOMPARE(run.out.count('\n'), 18);
+}
+
+// A Latin-1 file name ("caf\xe9.finbook") could not be opened: Qt read it as "caf\uFFFD".
+// Now it opens (info and export); an output with such a name is refused, where it used to be
+// written under the name with U+FFFD.
+void TestCliExport::namesThatAreNotUtf8()
+{
+    const QString folder = m_dir.filePath(QStringLiteral("latin1"));
+    QVERIFY(QDir().mkpath(folder));
+    const QByteArray raw = QFile::encodeName(folder) + "/caf\xe9.finbook";
+    QFile source(m_held);
+    QVERIFY(source.open(QIODevice::ReadOnly));
+    const QByteArray bytes = source.readAll();
+    FILE *copy = std::fopen(raw.constData(), "wb");
+    QVERIFY(copy);
+    QCOMPARE(std::fwrite(bytes.constData(), 1, std::size_t(bytes.size()), copy),
+             std::size_t(bytes.size()));
+    std::fclose(copy);
+    const auto shell = [&](const QString &arguments) {
+        // printf makes the byte 0xE9; QProcess could only pass UTF-8 arguments.
+        return runProgram(
+            QStringLiteral("/bin/sh"),
+            {QStringLiteral("-c"), QStringLiteral("cd %1 && exec %2 %3")
+                                       .arg(shellQuote(folder), shellQuote(kFinbook), arguments)});
+    };
+    Run run = shell(QStringLiteral("info \"$(printf 'caf\\351.finbook')\""));
+    QVERIFY2(run.code == 0, run.err.constData());
+    QVERIFY(run.out.contains("\"frames\":12"));
+    run = shell(QStringLiteral("export \"$(printf 'caf\\351.finbook')\" out.html"));
+    QVERIFY2(run.code == 0, run.err.constData());
+    QVERIFY(QFileInfo(QDir(folder).filePath(QStringLiteral("out.html"))).size() > 1000);
+    run = shell(
+        QStringLiteral("export \"$(printf 'caf\\351.finbook')\" \"$(printf 'x\\351.html')\""));
+    QCOMPARE(run.code, 2);
+    QVERIFY2(isOneLine(run.err) && run.err.contains("UTF-8"), run.err.constData());
+    QVERIFY(!QFileInfo::exists(QDir(folder).filePath(QStringLiteral("x\uFFFD.html"))));
 }
 
 QTEST_GUILESS_MAIN(TestCliExport)

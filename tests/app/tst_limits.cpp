@@ -11,6 +11,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QImageReader>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -34,6 +35,26 @@ bool isOneLine(const QByteArray &text)
 {
     return text.size() > 1 && text.endsWith('\n') && text.count('\n') == 1;
 }
+
+// Hidden entries too: temporaries and locks are what is looked for.
+QStringList entriesIn(const QString &folder)
+{
+    return QDir(folder).entryList(QDir::AllEntries | QDir::Hidden | QDir::System |
+                                  QDir::NoDotAndDotDot);
+}
+
+// Processes still running whose command line mentions `text` (an orphaned encoder).
+int processesMentioning(const QByteArray &text)
+{
+    int found = 0;
+    for (const QString &pid : QDir(QStringLiteral("/proc")).entryList(QDir::Dirs)) {
+        QFile cmdline(QStringLiteral("/proc/%1/cmdline").arg(pid));
+        if (pid.toInt() > 0 && cmdline.open(QIODevice::ReadOnly) &&
+            cmdline.readAll().contains(text))
+            ++found;
+    }
+    return found;
+}
 } // namespace
 
 class TestLimits : public QObject {
@@ -50,8 +71,14 @@ private slots:
     void deepAndWideStructuresOpenQuickly_data();
     void deepAndWideStructuresOpenQuickly();
     void startsQuicklyWhateverTheRecoveryFolderHolds();
+    void holdsBombIsRefusedAtOnce();
+    void interruptedExportLeavesNothing_data();
+    void interruptedExportLeavesNothing();
+    void widePensCostWhatIsVisible_data();
+    void widePensCostWhatIsVisible();
 
 private:
+    QString holdsBomb();
     QTemporaryDir m_dir;
 };
 
@@ -86,8 +113,11 @@ void TestLimits::exportOntoFullDiskSaysSo()
     if (!disk.mounted())
         QSKIP("needs root to mount a tmpfs; model/tst_render_limits injects the failure");
     const QString example = QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook");
-    for (const QString &target : {out + QLatin1Char('/'), out + QStringLiteral("/walk.gif"),
-                                  out + QStringLiteral("/walk.html")}) {
+    // MP4 used to say "Error initializing output stream" on a full disk.
+    QStringList targets{out + QLatin1Char('/'), out + QStringLiteral("/walk.html")};
+    if (!QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty())
+        targets << out + QStringLiteral("/walk.gif") << out + QStringLiteral("/walk.mp4");
+    for (const QString &target : targets) {
         const Measured run = runMeasured({QStringLiteral("export"), example, target});
         QCOMPARE(run.code, 1);
         QVERIFY2(isOneLine(run.err), run.err.constData());
@@ -348,6 +378,135 @@ void TestLimits::startsQuicklyWhateverTheRecoveryFolderHolds()
              run.out.constData()); // the real and the sparse
     if (!kUnderAsan)
         QVERIFY2(run.peakMiB < 400, qPrintable(QString::number(run.peakMiB)));
+}
+
+// The bomb: 50,000 drawings held 1,000 ticks each (a 1.6 MB file) ask for 50 million
+// ticks. It reached 4.3 GB before the first PNG; now it is refused at once, as is the GIF.
+QString TestLimits::holdsBomb()
+{
+    const QString path = m_dir.filePath(QStringLiteral("holds.finbook"));
+    if (QFileInfo::exists(path))
+        return path;
+    fb::Bytes frames;
+    const int count = 50000;
+    frames.u32(quint32(count));
+    for (int i = 0; i < count; ++i) {
+        fb::Bytes f;
+        f.u64(quint64(100 + i)).u32(quint32(model::kMaxHold)).u32(1);
+        f.record(fb::object(quint64(1000000 + i), {{quint64(2000000 + i), 0}}));
+        frames.record(f);
+    }
+    return writeFile(m_dir, QStringLiteral("holds.finbook"),
+                     fb::fileV1(fb::document(64, 64, 10000000),
+                                fb::strokeTable({{3.0f, {{1, 1}, {60, 60}}}}), fb::emptyTable(),
+                                frames));
+}
+
+void TestLimits::holdsBombIsRefusedAtOnce()
+{
+    const QString bomb = holdsBomb();
+    for (const QString &name : {QStringLiteral("bomb"), QStringLiteral("bomb.gif")}) {
+        const QString out = m_dir.filePath(name);
+        const Measured run =
+            runMeasured({QStringLiteral("export"), bomb, out}, 0, 0, SIGTERM, 120000);
+        qInfo("50,000,000 ticks to %s: exit %d in %.2f s, peak %ld MiB: %s", qPrintable(name),
+              run.code, run.seconds, run.peakMiB, run.err.trimmed().constData());
+        QCOMPARE(run.code, 2);
+        QVERIFY2(isOneLine(run.err) && run.err.contains("--max-frames"), run.err.constData());
+        if (!kUnderAsan)
+            QVERIFY2(run.peakMiB < 200, qPrintable(QString::number(run.peakMiB)));
+        QVERIFY(!QFileInfo::exists(out));
+    }
+}
+
+void TestLimits::interruptedExportLeavesNothing_data()
+{
+    QTest::addColumn<QString>("target");
+    QTest::addColumn<int>("signal");
+    QTest::newRow("png, SIGTERM") << "frames" << int(SIGTERM);
+    QTest::newRow("png, SIGINT") << "frames" << int(SIGINT);
+    QTest::newRow("gif, SIGTERM") << "anim.gif" << int(SIGTERM);
+}
+
+// The bomb allowed explicitly (--max-frames) and stopped after a few seconds: memory stayed
+// flat meanwhile, and the signal stops it cleanly: its temporaries, lock and new folder are
+// gone, ffmpeg is not left running. It used to die with them left behind (and the encoder
+// orphaned).
+void TestLimits::interruptedExportLeavesNothing()
+{
+    QFETCH(QString, target);
+    QFETCH(int, signal);
+    const bool gif = target.endsWith(QLatin1String(".gif"));
+    if (gif && QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty())
+        QSKIP("ffmpeg not installed");
+    const QString folder = m_dir.filePath(QStringLiteral("stopped_%1")
+                                              .arg(QTest::currentDataTag())
+                                              .replace(QLatin1Char(' '), QLatin1Char('_'))
+                                              .remove(QLatin1Char(',')));
+    QVERIFY(QDir().mkpath(folder));
+    const QString out = QDir(folder).filePath(target);
+    const Measured run = runMeasured(
+        {QStringLiteral("export"), holdsBomb(), out, QStringLiteral("--max-frames=1000000000")}, 0,
+        3000, signal, 60000);
+    qInfo("%s after 3 s: exit %d in %.2f s, peak %ld MiB: %s", QTest::currentDataTag(), run.code,
+          run.seconds, run.peakMiB, run.err.trimmed().constData());
+    QCOMPARE(run.code, 128 + signal);
+    QVERIFY2(isOneLine(run.err), run.err.constData());
+    // The peak includes ffmpeg's: its GIF palette pass keeps every frame it is given.
+    if (!kUnderAsan && !gif)
+        QVERIFY2(run.peakMiB < 200, qPrintable(QString::number(run.peakMiB)));
+    QCOMPARE(entriesIn(folder), QStringList());
+    if (gif)
+        QCOMPARE(processesMentioning(QFile::encodeName(folder)), 0);
+}
+
+void TestLimits::widePensCostWhatIsVisible_data()
+{
+    QTest::addColumn<float>("width");
+    QTest::addColumn<int>("points");
+    QTest::addColumn<double>("scale");
+    QTest::newRow("2,000 px pen, 2,000 points") << 2000.0f << 2000 << 1.0;
+    QTest::newRow("16,384 px pen, 2,000 points") << model::kMaxStrokeWidth << 2000 << 1.0;
+    QTest::newRow("2,000 px pen, 400 points, scale 4") << 2000.0f << 400 << 4.0;
+    QTest::newRow("200 px pen, 2,000 points") << 200.0f << 2000 << 1.0;
+}
+
+// A pen thousands of pixels wide scribbling over a 640 x 360 canvas (the 20 KB file
+// took 22 s a frame, a 4 KB one 35 s): the frame costs what the picture shows. Figures are
+// printed, not gated; the picture is checked: such pens cover every pixel.
+void TestLimits::widePensCostWhatIsVisible()
+{
+    QFETCH(float, width);
+    QFETCH(int, points);
+    QFETCH(double, scale);
+    std::vector<fb::Point> scribble;
+    quint32 seed = 12345;
+    const auto next = [&seed](int range) {
+        seed = seed * 1664525u + 1013904223u;
+        return float((seed >> 8) % quint32(range));
+    };
+    for (int i = 0; i < points; ++i)
+        scribble.push_back({next(640), next(360)});
+    const QString path = writeFile(
+        m_dir,
+        QStringLiteral("wide_%1.finbook")
+            .arg(QTest::currentDataTag())
+            .replace(QLatin1Char(' '), QLatin1Char('_'))
+            .remove(QLatin1Char(',')),
+        fb::fileV1(fb::document(640, 360), fb::strokeTable({{width, scribble}}), fb::emptyTable(),
+                   fb::frameList({fb::frame(1, {fb::object(2, {{3, 0}})})})));
+    const QString out = path.chopped(8) + QStringLiteral("_out");
+    const Measured run =
+        runMeasured({QStringLiteral("export"), path, out, QStringLiteral("--scale=%1").arg(scale)},
+                    0, 0, SIGTERM, 300000);
+    qInfo("%s (%lld-byte file): exit %d in %.2f s, peak %ld MiB", QTest::currentDataTag(),
+          QFileInfo(path).size(), run.code, run.seconds, run.peakMiB);
+    QCOMPARE(run.code, 0);
+    const QImage frame(QDir(out).filePath(QStringLiteral("frame_0001.png")));
+    QCOMPARE(frame.size(), QSize(int(640 * scale), int(360 * scale)));
+    if (width >= 2000) // every pixel lies under the pen somewhere
+        for (const QPoint p : {QPoint(0, 0), frame.rect().center(), frame.rect().bottomRight()})
+            QCOMPARE(qGray(frame.pixel(p)), 0);
 }
 
 QTEST_GUILESS_MAIN(TestLimits)

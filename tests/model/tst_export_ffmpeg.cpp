@@ -127,6 +127,7 @@ private slots:
     void fullDiskLeavesNothing_data();
     void fullDiskLeavesNothing();
     void cancelLeavesNothing();
+    void stuckEncoderIsStopped();
 
 private:
     QString exportTo(ExportFormat format, const QString &name,
@@ -447,6 +448,35 @@ void TestExportFfmpeg::cancelLeavesNothing()
         QCOMPARE(result.error().code, model::ExportErrorCode::Cancelled);
         QCOMPARE(filesIn(folder), QStringList());
     }
+}
+
+// An encoder that never reads its input, or reads it all and never exits, used to make the
+// export wait for ever. With no progress for the timeout ($FINBOOK_ENCODER_TIMEOUT, 2 s here)
+// it is killed and the export fails, leaving nothing.
+void TestExportFfmpeg::stuckEncoderIsStopped()
+{
+    const QString deaf = writeScript(m_dir, QStringLiteral("ffmpeg-deaf"), "exec sleep 600\n");
+    const QString mute =
+        writeScript(m_dir, QStringLiteral("ffmpeg-mute"), "cat > /dev/null\nexec sleep 600\n");
+    const QString folder = m_dir.filePath(QStringLiteral("stuck"));
+    QVERIFY(QDir().mkpath(folder));
+    qputenv("FINBOOK_ENCODER_TIMEOUT", "2");
+    for (const QString &encoder : {deaf, mute}) {
+        FfmpegOverride stuck(encoder);
+        QElapsedTimer clock;
+        clock.start();
+        const auto result = model::exportAnimation(
+            m_source,
+            optionsFor(ExportFormat::Mp4, QDir(folder).filePath(QStringLiteral("a.mp4"))));
+        qInfo("%s: stopped after %.1f s", qPrintable(QFileInfo(encoder).fileName()),
+              clock.elapsed() / 1000.0);
+        QVERIFY(!result);
+        QCOMPARE(result.error().code, model::ExportErrorCode::EncoderFailed);
+        QVERIFY2(result.error().message.contains(QLatin1String("no progress")),
+                 qPrintable(result.error().message));
+        QCOMPARE(filesIn(folder), QStringList());
+    }
+    qunsetenv("FINBOOK_ENCODER_TIMEOUT");
 }
 
 QTEST_GUILESS_MAIN(TestExportFfmpeg)

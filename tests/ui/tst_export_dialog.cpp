@@ -39,8 +39,15 @@ public:
     bool replace = false;
     QStringList askedAbout;
     QStringList failures;
+    bool allowLarge = false;
+    QStringList largeQuestions;
 
 protected:
+    bool confirmLargeExport(const QString &message) override
+    {
+        largeQuestions << message;
+        return allowLarge;
+    }
     bool confirmOverwrite(const QStringList &existing) override
     {
         askedAbout = existing;
@@ -67,6 +74,7 @@ private slots:
     void exportRunsOffTheGuiThread();
     void gifThroughTheDialog();
     void replacingAsksFirst();
+    void largeExportAsksFirst();
     void cancelLeavesNothing();
     void failureIsShown();
     void fileMenuOpensTheDialog();
@@ -209,6 +217,32 @@ void TestExportDialog::replacingAsksFirst()
     QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
     QVERIFY(finished.wait(60000));
     QVERIFY(finished.first().first().toBool());
+    QVERIFY(QFileInfo(page).size() > 10000);
+}
+
+// 12 drawings held 1,000 ticks at 1 fps: 3.3 hours, beyond the 3 hours an export may take
+// without a yes. No: nothing happens. Yes: the export runs with the limit raised to it.
+void TestExportDialog::largeExportAsksFirst()
+{
+    model::Document doc;
+    loadInto(doc, model::kMaxHold);
+    const QString page = m_dir.filePath(QStringLiteral("long.html"));
+    ScriptedDialog dialog(doc, QString());
+    dialog.setFormat(ExportFormat::Html);
+    dialog.setTarget(page);
+    dialog.fpsBox()->setValue(1);
+    QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
+    QCOMPARE(dialog.largeQuestions.size(), 1);
+    QVERIFY2(dialog.largeQuestions.first().contains(QLatin1String("12000")),
+             qPrintable(dialog.largeQuestions.first()));
+    QVERIFY(!dialog.isExporting());
+    QVERIFY(!QFileInfo::exists(page));
+    dialog.allowLarge = true;
+    QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);
+    QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(60000));
+    QVERIFY(finished.first().first().toBool());
+    QVERIFY(dialog.failures.isEmpty());
     QVERIFY(QFileInfo(page).size() > 10000);
 }
 

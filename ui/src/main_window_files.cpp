@@ -194,7 +194,7 @@ void MainWindow::exportFrames()
     qsizetype written = -1;
     connect(&job, &ExportJob::finished, &loop,
             [&](bool ok, const model::ExportError &e, const QStringList &files) {
-                written = ok ? files.size() : -1;
+                written = ok ? std::max<qint64>(files.size(), job.fileCount()) : -1;
                 error = e;
                 loop.quit();
             });

@@ -5,6 +5,7 @@
 #include "ffmpeg_arguments.h"
 #include "ffmpeg_encoder.h"
 #include "pending_output.h"
+#include "target_lock.h"
 
 #include <QFileInfo>
 
@@ -54,6 +55,10 @@ ExportOutcome exportEncoded(const ExportContext &context)
     FolderGuard guard(QFileInfo(target).path());
     if (!guard.ok())
         return unexpected(writeFailed(target, Export::tr("its folder cannot be created")));
+    TargetLock lock(target, false);
+    if (!lock.tryLock())
+        return unexpected(targetBusy(target));
+    lock.removeLeftovers();
     PendingFile pending(target);
     QString openFailure;
     if (!pending.open(&openFailure))
@@ -75,7 +80,7 @@ ExportOutcome exportEncoded(const ExportContext &context)
                 .replace(pending.path(), target);
         return unexpected(error);
     };
-    FfmpegEncoder encoder(job.what);
+    FfmpegEncoder encoder(job.what, pending.path());
     if (auto error = encoder.start(job.arguments))
         return failed(*error);
     if (auto error = pipeFrames(context, encoder, job.perTick, done, cancelled))
@@ -86,12 +91,13 @@ ExportOutcome exportEncoded(const ExportContext &context)
                                                  "nothing was exported.")
                                           .arg(job.what),
                                       encoder.errorTail()));
-    if (auto reason = pending.commit())
-        return unexpected(writeFailed(target, *reason));
+    if (auto error = commitFile(pending, context.options))
+        return unexpected(*error);
     guard.keep();
 
     ExportResult result;
     result.files << target;
+    result.fileCount = 1;
     result.images = done;
     result.ticks = plan.ticks;
     result.size = plan.size;

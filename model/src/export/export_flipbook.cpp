@@ -5,6 +5,7 @@
 #include "export_formats.h"
 #include "export_text.h"
 #include "pending_output.h"
+#include "target_lock.h"
 
 #include <QFileInfo>
 
@@ -178,6 +179,14 @@ ExportOutcome exportFlipbook(const ExportContext &context)
     const QString target = context.options.target;
     if (auto error = checkFileTarget(context.options))
         return unexpected(*error);
+    FolderGuard guard(QFileInfo(target).path());
+    if (!guard.ok())
+        return unexpected(writeFailed(target, Export::tr("its folder cannot be created")));
+    TargetLock lock(target, false);
+    if (!lock.tryLock())
+        return unexpected(targetBusy(target));
+    lock.removeLeftovers();
+
     const ExportPlan &plan = context.plan;
     std::vector<QByteArray> pngs;
     const qint64 total = qint64(plan.frames.size());
@@ -190,22 +199,19 @@ ExportOutcome exportFlipbook(const ExportContext &context)
             return unexpected(cancelledError());
     }
     const QByteArray html = flipbookHtml(pngs, plan, context.options.title);
-
-    FolderGuard guard(QFileInfo(target).path());
-    if (!guard.ok())
-        return unexpected(writeFailed(target, Export::tr("its folder cannot be created")));
     PendingFile pending(target);
     QString reason;
     if (!pending.open(&reason))
         return unexpected(writeFailed(target, reason));
     if (auto failed = writeSynced(pending.file(), html))
         return unexpected(writeFailed(target, *failed));
-    if (auto failed = pending.commit())
-        return unexpected(writeFailed(target, *failed));
+    if (auto error = commitFile(pending, context.options))
+        return unexpected(*error);
     guard.keep();
 
     ExportResult result;
     result.files << target;
+    result.fileCount = 1;
     result.images = total;
     result.ticks = plan.ticks;
     result.size = plan.size;

@@ -39,12 +39,22 @@ ExportOutcome exportSequence(const ExportContext &context);
 ExportOutcome exportEncoded(const ExportContext &context);
 ExportOutcome exportFlipbook(const ExportContext &context);
 
-// Sequence file names in writing order: one per tick, or one per drawing plus the sheet.
-struct SequenceEntry {
-    QString name;
-    std::size_t planIndex = 0;
+// The files of a sequence in writing order: one image per tick (or one per drawing plus the
+// exposure sheet, last). Names are made when asked for: a sequence may hold millions.
+class SequenceFiles {
+public:
+    SequenceFiles(const ExportPlan &plan, const ExportOptions &options);
+    qint64 count() const { return m_count; }
+    QString name(qint64 index) const; // 0 <= index < count()
+    // Whether `fileName` is one of name(0 .. count()-1), found without making them all.
+    bool contains(const QString &fileName) const;
+
+private:
+    const ExportPlan &m_plan;
+    const ExportOptions &m_options;
+    qint64 m_count = 0;
+    int m_digits = 4;
 };
-std::vector<SequenceEntry> sequenceEntries(const ExportPlan &plan, const ExportOptions &options);
 QString exposureSheetName(const ExportOptions &options);
 
 // Refuses a target that is a folder, or an existing file without options.overwrite.
@@ -52,6 +62,12 @@ std::optional<ExportError> checkFileTarget(const ExportOptions &options);
 ExportError targetExists(const QString &path);
 ExportError writeFailed(const QString &path, const QString &reason);
 ExportError cancelledError();
+ExportError targetBusy(const QString &path);
+
+class PendingFile;
+// Renames the finished file over the target: replacing it only with options.overwrite, so a
+// file that appeared meanwhile (another program's export) is refused rather than replaced.
+std::optional<ExportError> commitFile(PendingFile &pending, const ExportOptions &options);
 
 // One frame as an SVG document: plan.size pixels, a viewBox in canvas units, each stroke one
 // filled path (the union of tapered capsules between its samples).

@@ -131,6 +131,46 @@ Expected<ExportPlan, ExportError> planExport(const ExportSource &source,
     return plan;
 }
 
+qint64 exportFrameCount(const ExportPlan &plan, const ExportOptions &options)
+{
+    if (exportsSequence(options.format) && options.onePerDrawing)
+        return qint64(plan.frames.size()) + 1;
+    return plan.ticks;
+}
+
+std::optional<ExportError> checkExportSize(const ExportPlan &plan, const ExportOptions &options)
+{
+    const qint64 count = exportFrameCount(plan, options);
+    const bool sequence = exportsSequence(options.format);
+    const double seconds = double(plan.ticks) / std::max(1, plan.fps);
+    if (options.maxFrames > 0) {
+        if (count <= options.maxFrames)
+            return std::nullopt;
+        return exportError(ExportErrorCode::TooLarge,
+                           Export::tr("This export would write %1 frames, more than the %2 "
+                                      "allowed; nothing was exported.")
+                               .arg(count)
+                               .arg(options.maxFrames));
+    }
+    if (sequence && count > kMaxSequenceFiles)
+        return exportError(ExportErrorCode::TooLarge,
+                           Export::tr("This export would write %1 files (%2 playback ticks), "
+                                      "more than %3 without your explicit permission; nothing "
+                                      "was exported.")
+                               .arg(count)
+                               .arg(plan.ticks)
+                               .arg(kMaxSequenceFiles));
+    if (!sequence && seconds > double(kMaxVideoSeconds))
+        return exportError(ExportErrorCode::TooLarge,
+                           Export::tr("This export would make %1 hours of animation (%2 frames), "
+                                      "more than %3 hours without your explicit permission; "
+                                      "nothing was exported.")
+                               .arg(seconds / 3600.0, 0, 'f', 1)
+                               .arg(count)
+                               .arg(kMaxVideoSeconds / 3600));
+    return std::nullopt;
+}
+
 QImage renderExportFrame(const Frame &frame, const DocumentSettings &settings,
                          const ExportPlan &plan)
 {

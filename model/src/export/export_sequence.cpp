@@ -3,8 +3,10 @@
 #include "export_formats.h"
 #include "export_text.h"
 #include "pending_output.h"
+#include "target_lock.h"
 
 #include <QDir>
+#include <QDirIterator>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -13,14 +15,15 @@
 namespace finbook::model {
 
 namespace {
-QByteArray exposureSheet(const ExportContext &context, const std::vector<SequenceEntry> &entries)
+// One entry per drawing (the sheet only exists with one file per drawing).
+QByteArray exposureSheet(const ExportContext &context, const SequenceFiles &files)
 {
     QJsonArray frames;
     qint64 start = 0;
-    for (const SequenceEntry &e : entries) {
-        const int hold = context.plan.holds[e.planIndex];
-        frames.append(QJsonObject{{QStringLiteral("file"), e.name},
-                                  {QStringLiteral("frame"), context.plan.frames[e.planIndex] + 1},
+    for (std::size_t i = 0; i < context.plan.frames.size(); ++i) {
+        const int hold = context.plan.holds[i];
+        frames.append(QJsonObject{{QStringLiteral("file"), files.name(qint64(i))},
+                                  {QStringLiteral("frame"), context.plan.frames[i] + 1},
                                   {QStringLiteral("start_tick"), start},
                                   {QStringLiteral("hold"), hold}});
         start += hold;
@@ -33,18 +36,34 @@ QByteArray exposureSheet(const ExportContext &context, const std::vector<Sequenc
     return QJsonDocument(sheet).toJson(QJsonDocument::Indented);
 }
 
-std::optional<ExportError> refuseExisting(const QString &folder, const QStringList &names)
+// A folder where a file should go is refused even with overwrite (it is never replaced);
+// other files in the way only without it. The folder's entries are read, not the sequence's
+// names tried one by one: a long sequence (millions of ticks) costs what the folder holds.
+std::optional<ExportError> refuseExisting(const QString &folder, const SequenceFiles &files,
+                                          bool overwrite)
 {
-    for (const QString &name : names) {
+    if (!QFileInfo(folder).isDir())
+        return std::nullopt;
+    QDirIterator entries(folder,
+                         QDir::AllEntries | QDir::Hidden | QDir::System | QDir::NoDotAndDotDot);
+    QStringList ours;
+    while (entries.hasNext()) {
+        const QString name = QFileInfo(entries.next()).fileName();
+        if (files.contains(name))
+            ours << name;
+    }
+    ours.sort(); // the first in writing order is named (same width numbers sort as they count)
+    for (const QString &name : ours) {
         const QString path = QDir(folder).filePath(name);
-        if (QFileInfo(path).isDir())
+        const QFileInfo info(path);
+        if (info.isDir() && !info.isSymLink())
             return exportError(ExportErrorCode::BadOptions,
                                Export::tr("\"%1\" is a folder where a file should go; choose "
                                           "another folder.")
                                    .arg(QDir::toNativeSeparators(path)));
-        if (QFileInfo::exists(path))
-            return targetExists(path);
     }
+    if (!overwrite && !ours.isEmpty())
+        return targetExists(QDir(folder).filePath(ours.first()));
     return std::nullopt;
 }
 
@@ -54,59 +73,88 @@ QByteArray encodeFrame(const ExportContext &context, std::size_t planIndex)
         return frameSvg(context.frame(planIndex), context.source.settings, context.plan);
     return context.png(planIndex);
 }
+
+// Writes every image into the staging folder: a held drawing is encoded once and written
+// once per tick.
+std::optional<ExportError> writeImages(const ExportContext &context, const SequenceFiles &files,
+                                       const PendingFolder &staging)
+{
+    const QString folder = context.options.target;
+    const ExportPlan &plan = context.plan;
+    const qint64 total = files.count();
+    qint64 done = 0;
+    for (std::size_t i = 0; i < plan.frames.size(); ++i) {
+        const QByteArray bytes = encodeFrame(context, i);
+        const int repeats = context.options.onePerDrawing ? 1 : plan.holds[i];
+        for (int r = 0; r < repeats; ++r) {
+            const QString name = files.name(done);
+            if (bytes.isEmpty())
+                return writeFailed(QDir(folder).filePath(name),
+                                   Export::tr("there is not enough memory to render it"));
+            if (auto reason = writeFileSynced(staging.filePath(name), bytes))
+                return writeFailed(QDir(folder).filePath(name), *reason);
+            if (context.cancelled(++done, total))
+                return cancelledError();
+        }
+    }
+    return std::nullopt;
+}
 } // namespace
 
 ExportOutcome exportSequence(const ExportContext &context)
 {
     const QString folder = context.options.target;
-    const std::vector<SequenceEntry> entries = sequenceEntries(context.plan, context.options);
-    QStringList names;
-    for (const SequenceEntry &e : entries)
-        names << e.name;
-    if (context.options.onePerDrawing)
-        names << exposureSheetName(context.options);
+    const SequenceFiles files(context.plan, context.options);
     if (QFileInfo(folder).exists() && !QFileInfo(folder).isDir())
-        return unexpected(writeFailed(folder, Export::tr("a file is in the way of the folder")));
-    if (!context.options.overwrite)
-        if (auto error = refuseExisting(folder, names))
-            return unexpected(*error);
+        return unexpected(
+            exportError(ExportErrorCode::BadOptions,
+                        Export::tr("\"%1\" is a file, not a folder; choose a folder for the %2 "
+                                   "files, or remove the file.")
+                            .arg(QDir::toNativeSeparators(folder),
+                                 exportFormatSuffix(context.options.format).toUpper())));
+    // Frames strewn over the root of the file system are never what was meant (a slip such
+    // as "export walk.finbook /"); they would also mix with the system's own files.
+    if (QDir(folder).isRoot())
+        return unexpected(exportError(
+            ExportErrorCode::BadOptions,
+            Export::tr("\"%1\" is the top folder of the disk; choose "
+                       "or name a folder for the frames, such as "
+                       "\"%2\".")
+                .arg(QDir::toNativeSeparators(folder),
+                     QDir::toNativeSeparators(QDir(folder).filePath(context.options.baseName)))));
+    if (auto error = refuseExisting(folder, files, context.options.overwrite))
+        return unexpected(*error);
 
     FolderGuard guard(folder);
     if (!guard.ok())
         return unexpected(writeFailed(folder, Export::tr("the folder cannot be created")));
+    TargetLock lock(folder, true);
+    if (!lock.tryLock())
+        return unexpected(targetBusy(folder));
+    lock.removeLeftovers();
     PendingFolder staging(folder);
     if (!staging.isValid())
         return unexpected(writeFailed(folder, staging.errorString()));
 
-    const qint64 total = qint64(entries.size());
-    qint64 done = 0;
-    QByteArray bytes;
-    std::size_t encoded = std::size_t(-1);
-    for (const SequenceEntry &e : entries) {
-        if (e.planIndex != encoded) { // a held drawing is encoded once, written per tick
-            bytes = encodeFrame(context, e.planIndex);
-            encoded = e.planIndex;
-        }
-        if (bytes.isEmpty())
-            return unexpected(writeFailed(QDir(folder).filePath(e.name),
-                                          Export::tr("there is not enough memory to render it")));
-        if (auto reason = writeFileSynced(staging.filePath(e.name), bytes))
-            return unexpected(writeFailed(QDir(folder).filePath(e.name), *reason));
-        if (context.cancelled(++done, total))
-            return unexpected(cancelledError());
-    }
+    if (auto error = writeImages(context, files, staging))
+        return unexpected(*error);
     if (context.options.onePerDrawing) {
         const QString sheet = exposureSheetName(context.options);
-        if (auto reason = writeFileSynced(staging.filePath(sheet), exposureSheet(context, entries)))
+        if (auto reason = writeFileSynced(staging.filePath(sheet), exposureSheet(context, files)))
             return unexpected(writeFailed(QDir(folder).filePath(sheet), *reason));
     }
-    if (auto reason = staging.commit(names))
-        return unexpected(writeFailed(folder, *reason));
+    QString appeared;
+    if (auto reason = staging.commit(
+            files.count(), [&](qint64 i) { return files.name(i); }, context.options.overwrite,
+            &appeared))
+        return unexpected(appeared.isEmpty() ? writeFailed(folder, *reason)
+                                             : targetExists(appeared));
     guard.keep();
 
     ExportResult result;
-    for (const QString &name : names)
-        result.files << QDir(folder).filePath(name);
+    result.fileCount = files.count();
+    for (qint64 i = 0; i < std::min<qint64>(files.count(), kListedExportFiles); ++i)
+        result.files << QDir(folder).filePath(files.name(i));
     result.images = qint64(context.plan.frames.size());
     result.ticks = context.plan.ticks;
     result.size = context.plan.size;

@@ -1,12 +1,17 @@
 #include "export_formats.h"
 #include "export_text.h"
+#include "pending_output.h"
 
 #include <finbook/model/export/exporter.h>
 
 #include <QBuffer>
 #include <QDir>
+#include <QDirIterator>
 #include <QFileInfo>
 #include <QImageWriter>
+
+#include <algorithm>
+#include <limits>
 
 namespace finbook::model {
 
@@ -31,6 +36,22 @@ ExportError cancelledError()
                        Export::tr("The export was cancelled; nothing was written."));
 }
 
+ExportError targetBusy(const QString &path)
+{
+    return exportError(ExportErrorCode::TargetBusy,
+                       Export::tr("Another export is writing to \"%1\"; wait until it has "
+                                  "finished, or choose another target.")
+                           .arg(QDir::toNativeSeparators(path)));
+}
+
+std::optional<ExportError> commitFile(PendingFile &pending, const ExportOptions &options)
+{
+    bool appeared = false;
+    if (auto reason = pending.commit(options.overwrite, &appeared))
+        return appeared ? targetExists(options.target) : writeFailed(options.target, *reason);
+    return std::nullopt;
+}
+
 std::optional<ExportError> checkFileTarget(const ExportOptions &options)
 {
     const QFileInfo info(options.target);
@@ -49,28 +70,46 @@ QString exposureSheetName(const ExportOptions &options)
     return options.baseName + QStringLiteral("_exposures.json");
 }
 
-std::vector<SequenceEntry> sequenceEntries(const ExportPlan &plan, const ExportOptions &options)
+SequenceFiles::SequenceFiles(const ExportPlan &plan, const ExportOptions &options)
+    : m_plan(plan)
+    , m_options(options)
+    , m_count(exportFrameCount(plan, options))
 {
-    const qint64 count = options.onePerDrawing ? qint64(plan.frames.back()) + 1 : plan.ticks;
-    const int digits = std::max(4, int(QString::number(count).size()));
-    const QString suffix = exportFormatSuffix(options.format);
-    const auto name = [&](qint64 number) {
-        return QStringLiteral("%1_%2.%3")
-            .arg(options.baseName)
-            .arg(number, digits, 10, QLatin1Char('0'))
-            .arg(suffix);
-    };
-    std::vector<SequenceEntry> entries;
-    qint64 tick = 0;
-    for (std::size_t i = 0; i < plan.frames.size(); ++i) {
-        if (options.onePerDrawing) {
-            entries.push_back({name(plan.frames[i] + 1), i});
-            continue;
-        }
-        for (int r = 0; r < plan.holds[i]; ++r)
-            entries.push_back({name(++tick), i});
-    }
-    return entries;
+    const qint64 largest = options.onePerDrawing ? qint64(plan.frames.back()) + 1 : plan.ticks;
+    m_digits = std::max(4, int(QString::number(largest).size()));
+}
+
+QString SequenceFiles::name(qint64 index) const
+{
+    if (m_options.onePerDrawing && index == m_count - 1)
+        return exposureSheetName(m_options);
+    const qint64 number =
+        m_options.onePerDrawing ? qint64(m_plan.frames[std::size_t(index)]) + 1 : index + 1;
+    return QStringLiteral("%1_%2.%3")
+        .arg(m_options.baseName)
+        .arg(number, m_digits, 10, QLatin1Char('0'))
+        .arg(exportFormatSuffix(m_options.format));
+}
+
+bool SequenceFiles::contains(const QString &fileName) const
+{
+    if (m_options.onePerDrawing && fileName == exposureSheetName(m_options))
+        return true;
+    const QString prefix = m_options.baseName + QLatin1Char('_');
+    const QString suffix = QLatin1Char('.') + exportFormatSuffix(m_options.format);
+    if (!fileName.startsWith(prefix) || !fileName.endsWith(suffix))
+        return false;
+    const QStringView digits =
+        QStringView(fileName).mid(prefix.size(), fileName.size() - prefix.size() - suffix.size());
+    bool ok = false;
+    const qint64 number = digits.toLongLong(&ok);
+    if (!ok || digits.size() != std::max<qsizetype>(m_digits, QString::number(number).size()) ||
+        !digits.front().isDigit())
+        return false;
+    if (!m_options.onePerDrawing)
+        return number >= 1 && number <= m_count;
+    return std::binary_search(m_plan.frames.begin(), m_plan.frames.end(), int(number - 1)) &&
+           number - 1 <= std::numeric_limits<int>::max();
 }
 
 QStringList exportTargetFiles(const ExportSource &source, const ExportOptions &options)
@@ -80,12 +119,50 @@ QStringList exportTargetFiles(const ExportSource &source, const ExportOptions &o
     const auto plan = planExport(source, options);
     if (!plan)
         return {};
+    if (checkExportSize(*plan, options))
+        return {};
+    const SequenceFiles files(*plan, options);
     QStringList names;
-    for (const SequenceEntry &e : sequenceEntries(*plan, options))
-        names << e.name;
-    if (options.onePerDrawing)
-        names << exposureSheetName(options);
+    for (qint64 i = 0; i < files.count(); ++i)
+        names << files.name(i);
     return names;
+}
+
+void forEachExportTarget(const ExportSource &source, const ExportOptions &options,
+                         const std::function<void(const QString &path)> &visit)
+{
+    if (!exportsSequence(options.format)) {
+        visit(options.target);
+        return;
+    }
+    const auto plan = planExport(source, options);
+    if (!plan)
+        return;
+    const SequenceFiles files(*plan, options);
+    const QDir folder(options.target);
+    for (qint64 i = 0; i < files.count(); ++i)
+        visit(folder.filePath(files.name(i)));
+}
+
+QStringList existingExportTargets(const ExportSource &source, const ExportOptions &options)
+{
+    if (!exportsSequence(options.format))
+        return QFileInfo::exists(options.target) ? QStringList{options.target} : QStringList();
+    const auto plan = planExport(source, options);
+    if (!plan || !QFileInfo(options.target).isDir())
+        return {};
+    // The folder's entries, not every name of a sequence that may be millions long.
+    const SequenceFiles files(*plan, options);
+    QStringList existing;
+    QDirIterator entries(options.target,
+                         QDir::AllEntries | QDir::Hidden | QDir::System | QDir::NoDotAndDotDot);
+    while (entries.hasNext()) {
+        const QString path = entries.next();
+        if (files.contains(QFileInfo(path).fileName()))
+            existing << path;
+    }
+    existing.sort();
+    return existing;
 }
 
 Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
@@ -98,6 +175,8 @@ Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
     const auto plan = planExport(source, options);
     if (!plan)
         return unexpected(plan.error());
+    if (auto error = checkExportSize(*plan, options))
+        return unexpected(*error);
     const ExportContext context{source, options, *plan, progress};
     if (exportsSequence(options.format))
         return exportSequence(context);

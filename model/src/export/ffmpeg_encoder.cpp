@@ -4,9 +4,20 @@
 #include "export_text.h"
 
 #include <finbook/model/export/exporter.h>
+#include <finbook/model/io/atomic_file.h>
 
 #include <QFileInfo>
 #include <QStandardPaths>
+
+#include <cerrno>
+
+#ifdef Q_OS_UNIX
+#include <sys/statvfs.h>
+#endif
+#ifdef Q_OS_LINUX
+#include <csignal>
+#include <sys/prctl.h>
+#endif
 
 namespace finbook::model {
 
@@ -14,6 +25,36 @@ namespace {
 constexpr qsizetype kErrorBytes = 4096; // ffmpeg's last words; the start is rarely the cause
 constexpr int kTailLines = 6;
 constexpr int kPollMs = 100; // how quickly a cancel or a dead ffmpeg is noticed
+
+// An ffmpeg that takes no input, writes no output and says nothing for this long is stuck
+// (a broken build, a filter waiting forever): it is killed. $FINBOOK_ENCODER_TIMEOUT (seconds)
+// sets another limit, for tests.
+qint64 stallLimitMs()
+{
+    bool ok = false;
+    const int seconds = qEnvironmentVariableIntValue("FINBOOK_ENCODER_TIMEOUT", &ok);
+    return ok && seconds > 0 ? qint64(seconds) * 1000 : qint64(300) * 1000;
+}
+
+// Less free space than ffmpeg needs to write one more block of output.
+bool diskFull(const QString &output)
+{
+#ifdef Q_OS_UNIX
+    struct statvfs disk {};
+    if (output.isEmpty() ||
+        ::statvfs(QFile::encodeName(QFileInfo(output).path()).constData(), &disk) != 0)
+        return false;
+    return quint64(disk.f_bavail) * quint64(disk.f_frsize) < (quint64(1) << 20);
+#else
+    Q_UNUSED(output);
+    return false;
+#endif
+}
+
+qint64 sizeOf(const QString &path)
+{
+    return path.isEmpty() ? 0 : QFileInfo(path).size();
+}
 } // namespace
 
 QString ffmpegProgram()
@@ -26,11 +67,34 @@ QString ffmpegProgram()
     return QStandardPaths::findExecutable(name);
 }
 
-FfmpegEncoder::FfmpegEncoder(const QString &what)
+FfmpegEncoder::FfmpegEncoder(const QString &what, const QString &output)
     : m_what(what)
+    , m_output(output)
+    , m_stallLimitMs(stallLimitMs())
 {
     m_process.setProcessChannelMode(QProcess::SeparateChannels);
     m_process.setStandardOutputFile(QProcess::nullDevice());
+#ifdef Q_OS_LINUX
+    // A Finbook killed outright (kill -9) takes its encoder with it instead of orphaning it.
+    m_process.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGKILL); });
+#endif
+}
+
+void FfmpegEncoder::noteProgress()
+{
+    const qint64 size = sizeOf(m_output);
+    const qint64 pending = m_process.bytesToWrite();
+    if (size != m_lastSize || pending != m_lastPending) {
+        m_lastSize = size;
+        m_lastPending = pending;
+        m_sinceProgress.start();
+    }
+}
+
+bool FfmpegEncoder::stalled()
+{
+    noteProgress();
+    return m_sinceProgress.isValid() && m_sinceProgress.elapsed() > m_stallLimitMs;
 }
 
 FfmpegEncoder::~FfmpegEncoder()
@@ -43,8 +107,10 @@ std::optional<ExportError> FfmpegEncoder::start(const QStringList &arguments)
     const QString program = ffmpegProgram();
     if (!program.isEmpty()) {
         m_process.start(program, arguments, QIODevice::ReadWrite);
-        if (m_process.waitForStarted())
+        if (m_process.waitForStarted()) {
+            m_sinceProgress.start();
             return std::nullopt;
+        }
     }
     return exportError(ExportErrorCode::EncoderMissing,
                        Export::tr("Exporting %1 needs the ffmpeg program, which was not found; "
@@ -66,6 +132,8 @@ std::optional<ExportError> FfmpegEncoder::write(const QImage &frame, const Cance
             if (m_process.state() != QProcess::Running || m_process.error() == QProcess::WriteError)
                 return failure();
         }
+        if (stalled())
+            return stuck();
     }
     readErrors();
     return std::nullopt;
@@ -79,6 +147,8 @@ std::optional<ExportError> FfmpegEncoder::finish(const Cancelled &isCancelled)
             return cancelled();
         m_process.waitForFinished(kPollMs);
         readErrors();
+        if (m_process.state() != QProcess::NotRunning && stalled())
+            return stuck();
     }
     readErrors();
     // At -loglevel error anything printed is an error; ffmpeg has been seen to report a failed
@@ -99,7 +169,10 @@ void FfmpegEncoder::abort()
 
 void FfmpegEncoder::readErrors()
 {
-    m_errors += m_process.readAllStandardError();
+    const QByteArray said = m_process.readAllStandardError();
+    if (!said.isEmpty())
+        m_sinceProgress.start();
+    m_errors += said;
     if (m_errors.size() > kErrorBytes)
         m_errors = m_errors.right(kErrorBytes);
 }
@@ -121,6 +194,14 @@ ExportError FfmpegEncoder::failure()
         abort();
     readErrors();
     const QString tail = errorTail();
+    // ffmpeg words a full disk in many ways ("Error initializing output stream" for MP4):
+    // the free space of the disk it was writing to says it plainly.
+    if (diskFull(m_output)) {
+        ExportError full = writeFailed(
+            m_output, describeWriteFailure(WriteFailure{WriteProblem::DiskFull, ENOSPC, {}}, {}));
+        full.detail = tail;
+        return full;
+    }
     const QString why = tail.isEmpty()
                             ? (m_process.exitStatus() == QProcess::CrashExit
                                    ? Export::tr("it stopped unexpectedly")
@@ -131,6 +212,18 @@ ExportError FfmpegEncoder::failure()
                                   "disk is full, free some space and export again.")
                            .arg(m_what, why),
                        tail);
+}
+
+ExportError FfmpegEncoder::stuck()
+{
+    abort();
+    readErrors();
+    return exportError(ExportErrorCode::EncoderFailed,
+                       Export::tr("ffmpeg made no progress for %n second(s) and was stopped; "
+                                  "nothing was written. Check that ffmpeg works, then export "
+                                  "again.",
+                                  nullptr, int(m_stallLimitMs / 1000)),
+                       errorTail());
 }
 
 ExportError FfmpegEncoder::cancelled()

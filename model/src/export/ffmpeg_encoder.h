@@ -4,6 +4,7 @@
 
 #include <finbook/model/export/export_options.h>
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QProcess>
 
@@ -16,8 +17,10 @@ class FfmpegEncoder {
 public:
     using Cancelled = std::function<bool()>;
 
-    // `what` names the output for messages ("GIF", "MP4 video").
-    explicit FfmpegEncoder(const QString &what);
+    // `what` names the output for messages ("GIF", "MP4 video"); `output` is the file ffmpeg
+    // writes (its growth counts as progress). An ffmpeg that makes no progress for a while
+    // (5 minutes; $FINBOOK_ENCODER_TIMEOUT seconds) is killed and reported as failed.
+    FfmpegEncoder(const QString &what, const QString &output);
     ~FfmpegEncoder(); // a still running ffmpeg is killed
 
     // EncoderMissing when there is no ffmpeg or it cannot be started.
@@ -34,12 +37,20 @@ public:
 
 private:
     void readErrors();
+    void noteProgress();
+    bool stalled();
     ExportError failure();
     ExportError cancelled();
+    ExportError stuck();
 
     QString m_what;
+    QString m_output;
     QProcess m_process;
     QByteArray m_errors;
+    qint64 m_stallLimitMs = 0;
+    QElapsedTimer m_sinceProgress; // since ffmpeg last read, wrote or said something
+    qint64 m_lastSize = -1;
+    qint64 m_lastPending = -1;
 };
 
 } // namespace finbook::model

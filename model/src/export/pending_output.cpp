@@ -1,5 +1,7 @@
 #include "pending_output.h"
 
+#include "export_text.h"
+
 #include <finbook/model/io/atomic_file.h>
 
 #include <QDir>
@@ -83,6 +85,27 @@ QFileDevice::Permissions outputPermissions(const QString &target)
     if (mode & 0200)
         permissions |= QFileDevice::WriteUser;
     return permissions;
+}
+
+// Renames `from` to `to` unless `to` exists (then EEXIST): renameat2's RENAME_NOREPLACE, or a
+// hard link and an unlink where the file system has no such rename.
+bool renameNoReplace(const QString &from, const QString &to)
+{
+    const QByteArray a = QFile::encodeName(from), b = QFile::encodeName(to);
+#if defined(Q_OS_LINUX)
+    if (::renameat2(AT_FDCWD, a.constData(), AT_FDCWD, b.constData(), RENAME_NOREPLACE) == 0)
+        return true;
+    if (errno != EINVAL && errno != ENOSYS)
+        return false;
+#endif
+#ifdef Q_OS_UNIX
+    if (::link(a.constData(), b.constData()) != 0)
+        return false;
+    ::unlink(a.constData());
+    return true;
+#else
+    return QFile::rename(from, to);
+#endif
 }
 
 std::optional<QString> renameOver(const QString &from, const QString &to)
@@ -169,7 +192,7 @@ bool PendingFile::open(QString *reason)
     return false;
 }
 
-std::optional<QString> PendingFile::commit()
+std::optional<QString> PendingFile::commit(bool replace, bool *appeared)
 {
     if (!m_file)
         return QStringLiteral("no file");
@@ -181,8 +204,14 @@ std::optional<QString> PendingFile::commit()
         return systemError();
     written.close();
     QFile::setPermissions(m_file->fileName(), outputPermissions(m_target));
-    if (auto reason = renameOver(m_file->fileName(), m_target))
-        return reason;
+    if (!replace && !renameNoReplace(m_file->fileName(), m_target)) {
+        if (appeared)
+            *appeared = errno == EEXIST;
+        return systemError();
+    }
+    if (replace)
+        if (auto reason = renameOver(m_file->fileName(), m_target))
+            return reason;
     m_file->setAutoRemove(false);
     syncFolder(QFileInfo(m_target).path());
     return std::nullopt;
@@ -193,14 +222,62 @@ PendingFolder::PendingFolder(const QString &folder)
     , m_staging(QDir(folder).filePath(QStringLiteral(".finbook-export-XXXXXX")))
 {}
 
-std::optional<QString> PendingFolder::commit(const QStringList &names)
+namespace {
+QString asideName()
+{
+    return QStringLiteral(".replaced");
+}
+
+bool existsOrLinks(const QString &path)
+{
+    const QFileInfo info(path);
+    return info.exists() || info.isSymLink();
+}
+} // namespace
+
+std::optional<QString> PendingFolder::commit(qint64 count,
+                                             const std::function<QString(qint64)> &name,
+                                             bool replace, QString *appeared)
 {
     syncFolder(m_staging.path());
-    for (const QString &name : names)
-        if (auto reason = renameOver(m_staging.filePath(name), QDir(m_folder).filePath(name)))
+    const QDir folder(m_folder), aside(m_staging.filePath(asideName()));
+    if (replace && !QDir().mkpath(aside.path()))
+        return Export::tr("a folder cannot be created in it");
+    for (qint64 i = 0; i < count; ++i) {
+        const QString file = name(i), target = folder.filePath(file);
+        std::optional<QString> reason;
+        if (replace && existsOrLinks(target)) {
+            if (QFileInfo(target).isDir() && !QFileInfo(target).isSymLink())
+                reason = Export::tr("\"%1\" is a folder where a file should go")
+                             .arg(QDir::toNativeSeparators(target));
+            else
+                reason = renameOver(target, aside.filePath(file));
+        }
+        if (!reason && !renameNoReplace(m_staging.filePath(file), target)) {
+            if (errno == EEXIST && appeared)
+                *appeared = target;
+            reason = systemError();
+        }
+        if (reason) {
+            rollBack(i, name);
             return reason;
+        }
+    }
     syncFolder(m_folder);
     return std::nullopt;
+}
+
+void PendingFolder::rollBack(qint64 upTo, const std::function<QString(qint64)> &name)
+{
+    const QDir folder(m_folder), aside(m_staging.filePath(asideName()));
+    for (qint64 i = 0; i <= upTo; ++i) {
+        const QString file = name(i);
+        if (i < upTo) // in place: take it out again
+            renameOver(folder.filePath(file), m_staging.filePath(file));
+        if (existsOrLinks(aside.filePath(file)))
+            renameOver(aside.filePath(file), folder.filePath(file));
+    }
+    syncFolder(m_folder);
 }
 
 } // namespace finbook::model

@@ -9,6 +9,7 @@
 #include <QTemporaryDir>
 #include <QTemporaryFile>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -44,7 +45,8 @@ public:
     QString path() const { return m_file ? m_file->fileName() : QString(); }
     QFile &file() { return *m_file; }
     // Syncs what is in the temporary (written here or by another program) and renames it.
-    std::optional<QString> commit();
+    // Unless `replace`, a target that appeared meanwhile stays and `*appeared` is set.
+    std::optional<QString> commit(bool replace = true, bool *appeared = nullptr);
 
 private:
     QString m_target;
@@ -59,9 +61,17 @@ public:
     bool isValid() const { return m_staging.isValid(); }
     QString errorString() const { return m_staging.errorString(); }
     QString filePath(const QString &name) const { return m_staging.filePath(name); }
-    std::optional<QString> commit(const QStringList &names);
+    // Moves files 0 .. count-1 (named by name(i)) into `folder` as a whole: the files they
+    // replace are set aside until every new one is in place; on a failure every new file is
+    // taken out again and every replaced one put back, so the folder is exactly as before.
+    // Unless `replace`, a file that appeared at the target meanwhile is such a failure
+    // (its path in `*appeared`).
+    std::optional<QString> commit(qint64 count, const std::function<QString(qint64)> &name,
+                                  bool replace, QString *appeared = nullptr);
 
 private:
+    void rollBack(qint64 upTo, const std::function<QString(qint64)> &name);
+
     QString m_folder;
     QTemporaryDir m_staging;
 };

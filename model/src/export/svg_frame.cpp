@@ -9,14 +9,23 @@
 
 #include <QLineF>
 
+#include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace finbook::model {
 
 namespace {
+// Far beyond any canvas (kMaxCanvasSide), yet far from where llround overflows. Outlines are
+// clipped near the canvas first (outline()), so this only guards the conversion.
+constexpr double kLargestNumber = 1e9;
+
 // Canvas units to 1/100 px, trailing zeros dropped: "12.5", "3", "-0.25".
 void appendNumber(QByteArray &out, double value)
 {
+    if (!std::isfinite(value))
+        value = 0.0;
+    value = std::clamp(value, -kLargestNumber, kLargestNumber);
     const long long hundredths = std::llround(value * 100.0);
     if (hundredths < 0)
         out += '-';
@@ -88,8 +97,10 @@ bool finite(const StrokePoint &p)
 }
 
 // The same widths paintStroke draws: width × pressure, at least a quarter pixel (a lone
-// sample: a dot of at least half a pixel).
-QByteArray outline(const std::vector<StrokePoint> &points, float width)
+// sample: a dot of at least half a pixel). Only what can reach `visible` is written: each
+// segment is clipped, in floating point, to `visible` grown by its widest radius, so a point
+// near 1e30 gives a short capsule at the edge instead of numbers no integer holds.
+QByteArray outline(const std::vector<StrokePoint> &points, float width, const QRectF &visible)
 {
     QByteArray d;
     const auto radius = [&](const StrokePoint &p, double least) {
@@ -97,14 +108,22 @@ QByteArray outline(const std::vector<StrokePoint> &points, float width)
     };
     if (points.size() == 1 && finite(points.front())) {
         const StrokePoint &p = points.front();
-        appendCircle(d, QPointF(p.x, p.y), radius(p, 0.5));
+        const double r = radius(p, 0.5);
+        if (visible.adjusted(-r, -r, r, r).contains(QPointF(p.x, p.y)))
+            appendCircle(d, QPointF(p.x, p.y), r);
         return d;
     }
     for (std::size_t i = 1; i < points.size(); ++i) {
         const StrokePoint &a = points[i - 1], &b = points[i];
-        if (finite(a) && finite(b))
-            appendCapsule(d, QPointF(a.x, a.y), radius(a, 0.25), QPointF(b.x, b.y),
-                          radius(b, 0.25));
+        if (!finite(a) || !finite(b))
+            continue;
+        const double ra = radius(a, 0.25), rb = radius(b, 0.25);
+        const double reach = std::max(ra, rb) + 1.0;
+        QPointF from(a.x, a.y), to(b.x, b.y);
+        double t0 = 0.0, t1 = 1.0;
+        if (!clipSegment(from, to, visible.adjusted(-reach, -reach, reach, reach), &t0, &t1))
+            continue;
+        appendCapsule(d, from, ra + t0 * (rb - ra), to, ra + t1 * (rb - ra));
     }
     return d;
 }
@@ -155,7 +174,8 @@ QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const 
     const QSize canvas = settings.canvasSize;
     QByteArray svg;
     svg += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
+    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+           "xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" width=\"" +
            QByteArray::number(plan.size.width()) + "\" height=\"" +
            QByteArray::number(plan.size.height()) + "\" viewBox=\"0 0 " +
            QByteArray::number(canvas.width()) + ' ' + QByteArray::number(canvas.height()) + "\">\n";
@@ -163,6 +183,32 @@ QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const 
         svg += "<rect width=\"" + QByteArray::number(canvas.width()) + "\" height=\"" +
                QByteArray::number(canvas.height()) + "\" fill=\"" + colour(plan.background) +
                "\"/>\n";
+    const QRectF visible(QPointF(0, 0), QSizeF(canvas));
+    // A drawing referenced more than once in the frame (a crafted file may reference one
+    // stroke thousands of times) is written once in <defs> and placed with <use>.
+    std::unordered_map<const std::vector<StrokePoint> *, int> uses;
+    for (const StrokeGroup &group : frame.groups)
+        for (std::size_t i = 0; group.visible && i < group.strokes.size(); ++i)
+            if (group.strokes[i].data)
+                ++uses[&displayedPoints(group, i)];
+    std::unordered_map<const std::vector<StrokePoint> *, int> shapes; // -1: nothing to draw
+    QByteArray defs;
+    for (const StrokeGroup &group : frame.groups) {
+        for (std::size_t i = 0; group.visible && i < group.strokes.size(); ++i) {
+            const Stroke &stroke = group.strokes[i];
+            const std::vector<StrokePoint> *points =
+                stroke.data ? &displayedPoints(group, i) : nullptr;
+            if (!points || uses[points] < 2 || shapes.count(points))
+                continue;
+            const QByteArray d = outline(*points, stroke.data->width, visible);
+            const int shape = d.isEmpty() ? -1 : int(shapes.size());
+            shapes[points] = shape;
+            if (shape >= 0)
+                defs += "<path id=\"shape-" + QByteArray::number(shape) + "\" d=\"" + d + "\"/>\n";
+        }
+    }
+    if (!defs.isEmpty())
+        svg += "<defs>\n" + defs + "</defs>\n";
     for (const StrokeGroup &group : frame.groups) {
         if (!group.visible)
             continue;
@@ -172,15 +218,23 @@ QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const 
             const Stroke &stroke = group.strokes[i];
             if (!stroke.data)
                 continue;
-            const QByteArray d = outline(displayedPoints(group, i), stroke.data->width);
-            if (d.isEmpty())
+            const std::vector<StrokePoint> &points = displayedPoints(group, i);
+            const auto shape = shapes.find(&points);
+            QByteArray d;
+            if (shape == shapes.end())
+                d = outline(points, stroke.data->width, visible);
+            if (shape != shapes.end() ? shape->second < 0 : d.isEmpty())
                 continue;
-            svg += "<path id=\"stroke-" + QByteArray::number(stroke.id) + "\" fill=\"" +
+            svg += (d.isEmpty() ? "<use" : "<path");
+            svg += " id=\"stroke-" + QByteArray::number(stroke.id) + "\" fill=\"" +
                    colour(stroke.data->color) + '"';
             const int alpha = qAlpha(stroke.data->color);
             if (alpha < 255)
                 svg += " fill-opacity=\"" + QByteArray::number(alpha / 255.0, 'g', 3) + '"';
-            svg += " d=\"" + d + "\"/>\n";
+            if (d.isEmpty())
+                svg += " xlink:href=\"#shape-" + QByteArray::number(shape->second) + "\"/>\n";
+            else
+                svg += " d=\"" + d + "\"/>\n";
         }
         svg += "</g>\n";
     }

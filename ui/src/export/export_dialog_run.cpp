@@ -1,5 +1,6 @@
 // ExportDialog: starting, following and cancelling the export.
 #include <finbook/model/document.h>
+#include <finbook/model/export/export_plan.h>
 #include <finbook/model/export/exporter.h>
 #include <finbook/ui/export/export_dialog.h>
 #include <finbook/ui/export/export_job.h>
@@ -14,21 +15,6 @@
 #include <QPushButton>
 
 namespace finbook::ui {
-
-namespace {
-// The target's files that exist now: the file itself, or the sequence's files in its folder.
-QStringList existingFiles(const model::ExportSource &source, const model::ExportOptions &options)
-{
-    QStringList existing;
-    for (const QString &name : model::exportTargetFiles(source, options)) {
-        const QString path =
-            model::exportsSequence(options.format) ? QDir(options.target).filePath(name) : name;
-        if (QFileInfo::exists(path))
-            existing << path;
-    }
-    return existing;
-}
-} // namespace
 
 bool ExportDialog::isExporting() const
 {
@@ -45,7 +31,14 @@ void ExportDialog::startExport()
         return;
     }
     model::ExportSource source = model::exportSource(m_doc);
-    const QStringList existing = existingFiles(source, options);
+    if (const auto plan = model::planExport(source, options)) {
+        if (const auto tooLarge = model::checkExportSize(*plan, options)) {
+            if (!confirmLargeExport(tooLarge->message))
+                return;
+            options.maxFrames = model::exportFrameCount(*plan, options);
+        }
+    }
+    const QStringList existing = model::existingExportTargets(source, options);
     if (!existing.isEmpty()) {
         if (!confirmOverwrite(existing))
             return;
@@ -88,7 +81,8 @@ void ExportDialog::jobFinished(bool ok, const model::ExportError &error, const Q
     setRunning(false);
     if (ok) {
         const QString where = files.size() == 1 ? files.first() : options().target;
-        m_summary = tr("Exported %n file(s) to %1", nullptr, int(files.size()))
+        const qint64 count = m_job ? m_job->fileCount() : files.size();
+        m_summary = tr("Exported %n file(s) to %1", nullptr, int(std::min<qint64>(count, INT_MAX)))
                         .arg(QDir::toNativeSeparators(where));
         m_status->setText(m_summary);
         emit exportFinished(true);
@@ -129,6 +123,16 @@ bool ExportDialog::confirmOverwrite(const QStringList &existing)
                  int(existing.size()))
                   .arg(first);
     return QMessageBox::question(this, tr("Replace Files?"), text,
+                                 QMessageBox::Yes | QMessageBox::No,
+                                 QMessageBox::No) == QMessageBox::Yes;
+}
+
+bool ExportDialog::confirmLargeExport(const QString &message)
+{
+    return QMessageBox::question(this, tr("Export Anyway?"),
+                                 message + QLatin1Char(' ') +
+                                     tr("It may take a long time and a lot of disk space. Export "
+                                        "anyway?"),
                                  QMessageBox::Yes | QMessageBox::No,
                                  QMessageBox::No) == QMessageBox::Yes;
 }

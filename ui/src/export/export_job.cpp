@@ -41,6 +41,8 @@ void ExportJob::run()
             return !m_cancel.load();
         });
     if (result)
+        m_fileCount = result->fileCount;
+    if (result)
         emit finished(true, model::ExportError{}, result->files);
     else
         emit finished(false, result.error(), {});

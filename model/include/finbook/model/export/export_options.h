@@ -42,6 +42,10 @@ struct ExportOptions {
     bool overwrite = false;         // replace files already at the target
     QString baseName = QStringLiteral("frame"); // sequences: <baseName>_0001.png, ...
     QString title;                              // HTML: the page title
+    // Frames the user allowed this export to write (see exportFrameCount). 0: the default
+    // limits, kMaxSequenceFiles files or kMaxVideoSeconds of video (export_plan.h); a larger
+    // export is refused with TooLarge until the user sets this to at least its frame count.
+    qint64 maxFrames = 0;
 };
 
 // The frames and settings an export reads: a value snapshot (strokes are shared, immutable),
@@ -53,7 +57,10 @@ struct ExportSource {
 ExportSource exportSource(const Document &document);
 
 struct ExportResult {
-    QStringList files; // what is at the target now, in order
+    // What is at the target now, in order; a sequence lists its first kListedExportFiles
+    // files only (fileCount says how many there are), so memory does not grow with its length.
+    QStringList files;
+    qint64 fileCount = 0;
     qint64 images = 0; // frames rendered and encoded
     qint64 ticks = 0;  // playback ticks covered (holds included)
     QSize size;        // pixel size of the output
@@ -66,6 +73,8 @@ enum class ExportErrorCode {
     EncoderMissing, // the ffmpeg program cannot be started
     EncoderFailed,  // ffmpeg stopped with an error
     Cancelled,      // the progress callback asked to stop
+    TooLarge,       // more frames than the limits allow without options.maxFrames
+    TargetBusy,     // another export is writing to the same target
 };
 
 struct ExportError {
@@ -76,6 +85,9 @@ struct ExportError {
 
 // Called after each rendered frame with (frames done, frames in all), on the exporting thread.
 // Returning false cancels: the export stops and leaves nothing at the target.
+// How many file names an ExportResult lists at most.
+constexpr qsizetype kListedExportFiles = 1000;
+
 using ExportProgress = std::function<bool(qint64 done, qint64 total)>;
 
 // "png", "svg", "gif", "mp4", "webm", "apng", "html" (also "htm"), case-insensitive.

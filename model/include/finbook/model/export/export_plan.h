@@ -22,6 +22,11 @@ struct ExportPlan {
     QRgb background = 0xffffffff; // opaque; unused when transparent
 };
 
+// An export of a few kilobytes can ask for millions of ticks. Without options.maxFrames an
+// export writes at most this many sequence files, or a video (GIF, HTML) this long.
+constexpr qint64 kMaxSequenceFiles = 100000;
+constexpr qint64 kMaxVideoSeconds = 3 * 3600;
+
 // Playback ticks of frames first..last (clamped to the frames there are), holds included.
 qint64 exposureTicks(const std::vector<Frame> &frames, int first, int last);
 
@@ -32,6 +37,14 @@ qint64 playbackTicks(const std::vector<Frame> &frames, const DocumentSettings &s
 // (range, scale, rate, transparency) and the values allowed.
 Expected<ExportPlan, ExportError> planExport(const ExportSource &source,
                                              const ExportOptions &options);
+
+// The frames an export writes: files of a sequence (the exposure sheet included), or the
+// playback ticks of a video, GIF or HTML page (each a frame of the result at plan.fps).
+qint64 exportFrameCount(const ExportPlan &plan, const ExportOptions &options);
+
+// Refuses with TooLarge (the count and the limit in the message) an export beyond the
+// default limits that options.maxFrames does not allow, or one beyond options.maxFrames.
+std::optional<ExportError> checkExportSize(const ExportPlan &plan, const ExportOptions &options);
 
 // The frame as it is exported: plan.size pixels, QImage::Format_ARGB32 (straight alpha), the
 // canvas scaled to fit and centred, over the plan's background unless it is transparent.

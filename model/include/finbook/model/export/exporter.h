@@ -20,8 +20,19 @@ Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
                                                     const ExportProgress &progress = {});
 
 // The files a sequence export would write into its folder (names only, in order), so callers
-// can ask before overwriting; for single-file formats, the target itself.
+// can ask before overwriting; for single-file formats, the target itself. Empty when the
+// options cannot be exported or the export is larger than allowed (checkExportSize).
 QStringList exportTargetFiles(const ExportSource &source, const ExportOptions &options);
+
+// Calls `visit` with the path of every file the export writes, in order (the target itself
+// for single-file formats); nothing when the options cannot be exported. Names are made one
+// at a time however long the sequence.
+void forEachExportTarget(const ExportSource &source, const ExportOptions &options,
+                         const std::function<void(const QString &path)> &visit);
+
+// The paths of the files at the target that the export would replace (that exist now), the
+// names made one at a time however long the sequence.
+QStringList existingExportTargets(const ExportSource &source, const ExportOptions &options);
 
 // The ffmpeg executable exports use: $FINBOOK_FFMPEG if set, else "ffmpeg" from PATH; empty
 // when there is none.

@@ -77,6 +77,8 @@ signals:
 
 protected:
     virtual bool confirmOverwrite(const QStringList &existing);
+    // An export beyond the default size limits (model::checkExportSize) runs only after a yes.
+    virtual bool confirmLargeExport(const QString &message);
     virtual void showFailure(const QString &message, const QString &detail);
     virtual QString askTargetPath();
 

@@ -27,6 +27,8 @@ public:
     void cancel() { m_cancel = true; }
     bool isRunning() const { return m_running; }
     const model::ExportOptions &options() const { return m_options; }
+    // Files the finished export wrote (`files` lists only the first of a long sequence).
+    qint64 fileCount() const { return m_fileCount; }
 
 signals:
     void progressed(qint64 done, qint64 total);
@@ -39,6 +41,7 @@ private:
     model::ExportSource m_source;
     model::ExportOptions m_options;
     std::atomic<bool> m_cancel{false};
+    std::atomic<qint64> m_fileCount{0};
     bool m_running = false;
     QThread *m_thread = nullptr;
 };
