@@ -714,6 +714,24 @@
     </message>
 </context>
 <context>
+    <name>ExportDone</name>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="26"/>
+        <source>Export Finished</source>
+        <translation>Export abgeschlossen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="31"/>
+        <source>Show in Folder</source>
+        <translation>Im Ordner zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="38"/>
+        <source>Open in Browser</source>
+        <translation>Im Browser öffnen</translation>
+    </message>
+</context>
+<context>
     <name>FileMessages</name>
     <message>
         <location filename="../ui/src/file_messages.cpp" line="17"/>
@@ -1151,277 +1169,283 @@
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
         <source>the frame list</source>
         <translation>die Einzelbildliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
         <source>a frame</source>
         <translation>ein Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>das Einzelbild ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
         <source>%1; the frame is left out</source>
         <translation>%1; das Einzelbild wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>a frame id</source>
         <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>the frame</source>
         <translation>das Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>a frame hold</source>
         <translation>eine Haltedauer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the object list</source>
         <translation>die Objektliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>das Objekt ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
         <source>%1; the object is left out</source>
         <translation>%1; das Objekt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="111"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
         <source>a chunk header</source>
         <translation>ein Blockkopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>a chunk</source>
         <translation>ein Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
         <source>chunk</source>
         <translation>Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
         <source>an object id</source>
         <translation>eine Objekt-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>the object</source>
         <translation>das Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>the object flags</source>
         <translation>die Objektattribute</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>the mesh density</source>
         <translation>die Netzdichte</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="147"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
         <source>the object name</source>
         <translation>der Objektname</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
         <source>the stroke list</source>
         <translation>die Strichliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
         <source>a stroke id</source>
         <translation>eine Strich-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>the stroke</source>
         <translation>der Strich</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <source>its pose has %n stroke(s) but the object has %1</source>
+        <translation>
+            <numerusform>seine Pose hat %n Strich, das Objekt aber %1</numerusform>
+            <numerusform>seine Pose hat %n Striche, das Objekt aber %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <source>stroke %1 has %n point(s) but its pose has %2</source>
+        <translation>
+            <numerusform>Strich %1 hat %n Punkt, seine Pose aber %2</numerusform>
+            <numerusform>Strich %1 hat %n Punkte, seine Pose aber %2</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
         <source>a stroke reference</source>
         <translation>ein Strichverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="39"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 gibt %2 Einträge an; die %3, die hineinpassen, werden gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
         <source>an unknown chunk is left out</source>
         <translation>ein unbekannter Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>Block %1 kommt doppelt oder mit einem anderen Rig vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
         <source>%1; the chunk is left out</source>
         <translation>%1; der Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="251"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="252"/>
         <source>the skeleton&apos;s join</source>
         <translation>die Verbindung des Skeletts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
         <source>a join comes without a skeleton</source>
         <translation>eine Verbindung steht ohne Skelett</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>die Verbindung des Skeletts ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="275"/>
         <source>the pin list</source>
         <translation>die Pin-Liste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>a pin id</source>
         <translation>eine Pin-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
         <source>pin %1</source>
         <translation>Pin %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="284"/>
         <source>a pin position</source>
         <translation>eine Pin-Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
         <source>pin %1 has a non-finite position</source>
         <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
         <source>the cage corner list</source>
         <translation>die Käfigeckenliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>der Käfig hat weniger als 3 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
         <source>a cage corner</source>
         <translation>eine Käfigecke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>Käfigecke %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
         <source>a pose reference</source>
         <translation>ein Posenverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="325"/>
         <source>its pose: %1</source>
         <translation>seine Pose: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="328"/>
-        <source>its pose has %1 strokes but the object has %2</source>
-        <translation>seine Pose hat %1 Striche, das Objekt aber %2</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
-        <source>stroke %1 has %2 points but its pose has %3</source>
-        <translation>Strich %1 hat %2 Punkte, seine Pose aber %3</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>%1 has no id</source>
         <translation>%1 hat keine ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 hat die ID %2, die größer ist als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="356"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="357"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
@@ -1673,10 +1697,13 @@
 </context>
 <context>
     <name>finbook::model::FrameListModel</name>
-    <message>
+    <message numerus="yes">
         <location filename="../model/src/frame_list_model.cpp" line="132"/>
-        <source>Frame %1, held for %2 frames</source>
-        <translation>Einzelbild %1, %2 Einzelbilder lang gehalten</translation>
+        <source>Frame %1, held for %n frame(s)</source>
+        <translation>
+            <numerusform>Einzelbild %1, %n Einzelbild lang gehalten</numerusform>
+            <numerusform>Einzelbild %1, %n Einzelbilder lang gehalten</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../model/src/frame_list_model.cpp" line="133"/>
@@ -1687,7 +1714,7 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="39"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="40"/>
         <source>Bone</source>
         <translation>Knochen</translation>
     </message>
@@ -1719,8 +1746,8 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
-        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
-        <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um es zu ziehen, die Wurzel, um das Objekt zu verschieben; Alt-Klick auf ein Gelenk sperrt es; die Wurzel mit Umschalt auf ein anderes Teil ziehen verbindet beide.</translation>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
+        <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um es zu ziehen, die Wurzel, um das Objekt zu verschieben; L über einem Gelenk sperrt es; die Wurzel mit Umschalt auf ein anderes Teil ziehen verbindet beide.</translation>
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
@@ -1733,73 +1760,73 @@
         <translation>%1 hängt bereits an diesem Teil und kann daher nicht umgekehrt daran hängen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="85"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="114"/>
         <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
         <translation>Gelenke bearbeiten: Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="100"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="129"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>Setzen Sie die Pose zurück oder wenden Sie sie auf die Zeichnung an, bevor Sie Gelenke bearbeiten.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
         <source>Unlock Joint</source>
         <translation>Gelenk entsperren</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
         <source>Lock Joint</source>
         <translation>Gelenk sperren</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="164"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="196"/>
         <source>Reset Bone Pose</source>
         <translation>Knochenpose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="199"/>
         <source>Edit Joints</source>
         <translation>Gelenke bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="172"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="204"/>
         <source>Insert Joint Here</source>
         <translation>Gelenk hier einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="174"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="206"/>
         <source>Delete Joint</source>
         <translation>Gelenk löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="178"/>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="230"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="210"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="262"/>
         <source>Make Root Joint</source>
         <translation>Zum Wurzelgelenk machen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="187"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="219"/>
         <source>Detach from %1</source>
         <translation>Von %1 lösen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="190"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="222"/>
         <source>Make Character Root</source>
         <translation>Zur Wurzel der Figur machen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="223"/>
         <source>Join Overlapping Parts</source>
         <translation>Überlappende Teile verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="242"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="274"/>
         <source>No part overlaps another part&apos;s skeleton.</source>
         <translation>Kein Teil überlappt das Skelett eines anderen Teils.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="246"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="278"/>
         <source>Joined %n part(s).</source>
         <translation>
             <numerusform>%n Teil verbunden.</numerusform>
@@ -1843,42 +1870,42 @@
 <context>
     <name>finbook::ui::CageActions</name>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="32"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="33"/>
         <source>&amp;Fit Cage</source>
         <translation>Käfig an&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="34"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
         <source>Put a coarse cage around the current object in one step</source>
         <translation>Einen groben Käfig in einem Schritt um das aktuelle Objekt legen</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
         <source>Shift+C</source>
         <translation>Shift+C</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="37"/>
         <source>Edit Cage &amp;Shape</source>
         <translation>Käfig&amp;form bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="40"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="41"/>
         <source>Change the cage itself (move, add or delete corners) instead of posing with it</source>
         <translation>Den Käfig selbst ändern (Ecken verschieben, hinzufügen oder löschen), statt damit zu posieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="66"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
         <source>Corners </source>
         <translation>Ecken </translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="68"/>
         <source>About how many corners Fit Cage gives the cage</source>
         <translation>Ungefähr wie viele Ecken „Käfig anpassen“ dem Käfig gibt</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="81"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="82"/>
         <source>Choose an unlocked object with strokes to fit a cage to.</source>
         <translation>Wählen Sie ein nicht gesperrtes Objekt mit Strichen, um einen Käfig daran anzupassen.</translation>
     </message>
@@ -1891,12 +1918,12 @@
         <translation>Käfig</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="127"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="139"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>Wählen Sie zuerst ein Objekt: Der Käfig wird darum gelegt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="249"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="265"/>
         <source>A cage needs at least three corners.</source>
         <translation>Ein Käfig braucht mindestens drei Ecken.</translation>
     </message>
@@ -2048,6 +2075,62 @@
         <location filename="../ui/src/document_settings_dialog.cpp" line="125"/>
         <source>Background Colour</source>
         <translation>Hintergrundfarbe</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="29"/>
+        <source>Eraser</source>
+        <translation>Radierer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_eraser.cpp" line="157"/>
+        <source>Erase</source>
+        <translation>Radieren</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserToolBar</name>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="11"/>
+        <source>Eraser</source>
+        <translation>Radierer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="13"/>
+        <source>Cut Lines</source>
+        <translation>Linien schneiden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="14"/>
+        <source>Whole Strokes</source>
+        <translation>Ganze Striche</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="25"/>
+        <source>Erase the part of a line under the eraser (the rest is split into pieces)</source>
+        <translation>Radiert den Teil einer Linie unter dem Radierer (der Rest wird in Stücke geteilt)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="28"/>
+        <source>Erase every stroke the eraser touches (or hold Shift when you start rubbing)</source>
+        <translation>Radiert jeden Strich, den der Radierer berührt (oder Umschalt beim Beginn gedrückt halten)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="31"/>
+        <source>Size:</source>
+        <translation>Größe:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="35"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="36"/>
+        <source>The eraser&apos;s diameter on the canvas</source>
+        <translation>Der Durchmesser des Radierers auf der Zeichenfläche</translation>
     </message>
 </context>
 <context>
@@ -2235,7 +2318,7 @@
         <translation>Wird abgebrochen...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="92"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 exportiert</numerusform>
@@ -2243,17 +2326,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="102"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="103"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="127"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>„%1“ ist bereits vorhanden. Ersetzen?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="129"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n Datei am Ziel ist bereits vorhanden: „%1“. Ersetzen?</numerusform>
@@ -2261,12 +2344,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="131"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="132"/>
         <source>Replace Files?</source>
         <translation>Dateien ersetzen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="138"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="139"/>
         <source>Cannot Export</source>
         <translation>Export nicht möglich</translation>
     </message>
@@ -2390,72 +2473,72 @@
         <translation>Links wird das erste Schlüsselbild bevorzugt, rechts das zweite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
         <source>F&amp;avour:</source>
         <translation>&amp;Gewichtung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="95"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="96"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Pins und Käfigecken auf &amp;Bögen bewegen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="98"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="99"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Ein zwischen den Schlüsselbildern geschwungenes Glied behält seine Länge. Ohne diese Option bewegt sich jeder Zielpunkt geradlinig.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="128"/>
         <source>(unnamed)</source>
         <translation>(unbenannt)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="130"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
         <source>%1: interpolated</source>
         <translation>%1: interpoliert</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="133"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (keine Pins, kein Käfig und kein Skelett)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (Pins, Käfig oder Skelett unterscheiden sich zwischen den Schlüsselbildern)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="139"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: nur im ersten Schlüsselbild, in der ersten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: nur im zweiten Schlüsselbild, in der zweiten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="150"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
         <source>Select two different frames as keys.</source>
         <translation>Wählen Sie zwei verschiedene Einzelbilder als Schlüsselbilder aus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="160"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="161"/>
         <source>Posing the preview…</source>
         <translation>Die Vorschau wird berechnet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="193"/>
         <source>The preview could not be posed: %1</source>
         <translation>Die Vorschau konnte nicht posiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Kein Objekt hat in beiden Schlüsselbildern passende Pins oder einen passenden Käfig: Die Zwischenbilder halten nur die Zeichnungen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="200"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Die Leinwand zeigt das mittlere Zwischenbild.</translation>
     </message>
@@ -2463,407 +2546,358 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="123"/>
+        <location filename="../ui/src/main_window.cpp" line="132"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="147"/>
+        <location filename="../ui/src/main_window.cpp" line="156"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <location filename="../ui/src/main_window.cpp" line="157"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="151"/>
+        <location filename="../ui/src/main_window.cpp" line="160"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <location filename="../ui/src/main_window.cpp" line="161"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="188"/>
+        <location filename="../ui/src/main_window.cpp" line="197"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="199"/>
+        <location filename="../ui/src/main_window.cpp" line="208"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <location filename="../ui/src/main_window.cpp" line="209"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="205"/>
-        <location filename="../ui/src/main_window_files.cpp" line="303"/>
+        <location filename="../ui/src/main_window.cpp" line="214"/>
+        <location filename="../ui/src/main_window_files.cpp" line="237"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="206"/>
+        <location filename="../ui/src/main_window.cpp" line="215"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="30"/>
+        <location filename="../ui/src/main_window_files.cpp" line="26"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook-Animationen (*.finbook);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="41"/>
+        <location filename="../ui/src/main_window_files.cpp" line="37"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="76"/>
-        <location filename="../ui/src/main_window_files.cpp" line="93"/>
+        <location filename="../ui/src/main_window_files.cpp" line="72"/>
+        <location filename="../ui/src/main_window_files.cpp" line="89"/>
         <source>Cannot Open File</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="128"/>
+        <location filename="../ui/src/main_window_files.cpp" line="124"/>
         <source>Cannot Save File</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="134"/>
+        <location filename="../ui/src/main_window_files.cpp" line="130"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="161"/>
-        <source>The folder %1 does not exist; choose an existing folder and export again.</source>
-        <translation>Der Ordner %1 existiert nicht; wählen Sie einen vorhandenen Ordner und exportieren Sie erneut.</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="175"/>
-        <source>Replace Files?</source>
-        <translation>Dateien ersetzen?</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="176"/>
-        <source>%1 already holds exported frames. Replace them?</source>
-        <translation>%1 enthält bereits exportierte Einzelbilder. Ersetzen?</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Exporting frames...</source>
-        <translation>Einzelbilder werden exportiert...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="160"/>
-        <location filename="../ui/src/main_window_files.cpp" line="206"/>
-        <source>Cannot Export Frames</source>
-        <translation>Einzelbilder können nicht exportiert werden</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="100"/>
+        <location filename="../ui/src/main_window_files.cpp" line="96"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Problem behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Probleme behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="209"/>
-        <source>Exported %n frame(s) to %1</source>
-        <translation>
-            <numerusform>%n Einzelbild nach %1 exportiert</numerusform>
-            <numerusform>%n Einzelbilder nach %1 exportiert</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="246"/>
+        <location filename="../ui/src/main_window_files.cpp" line="180"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="255"/>
+        <location filename="../ui/src/main_window_files.cpp" line="189"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="265"/>
+        <location filename="../ui/src/main_window_files.cpp" line="199"/>
         <source>Cannot Import Mesh</source>
         <translation>Netz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="269"/>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/main_window_files.cpp" line="203"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="89"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="291"/>
+        <location filename="../ui/src/main_window_files.cpp" line="225"/>
         <source>Damaged File</source>
         <translation>Beschädigte Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="292"/>
+        <location filename="../ui/src/main_window_files.cpp" line="226"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="295"/>
+        <location filename="../ui/src/main_window_files.cpp" line="229"/>
         <source>Open Anyway</source>
         <translation>Trotzdem öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="305"/>
+        <location filename="../ui/src/main_window_files.cpp" line="239"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="306"/>
+        <location filename="../ui/src/main_window_files.cpp" line="240"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="312"/>
+        <location filename="../ui/src/main_window_files.cpp" line="246"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="318"/>
+        <location filename="../ui/src/main_window_files.cpp" line="252"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="319"/>
+        <location filename="../ui/src/main_window_files.cpp" line="253"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="325"/>
-        <source>Export Frames to Folder</source>
-        <translation>Einzelbilder in Ordner exportieren</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="44"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="45"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="56"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="58"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="59"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="60"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="63"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="64"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="68"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="70"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="74"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="86"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="89"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="85"/>
-        <source>&amp;Export Frames...</source>
-        <translation>Einzelbilder &amp;exportieren...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="93"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="110"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="113"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="117"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="122"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="119"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="124"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="121"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="126"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="128"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="131"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="136"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="139"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="140"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="145"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="152"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="155"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="173"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="179"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="181"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="183"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="180"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="190"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="196"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="201"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="203"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="210"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="211"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="216"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="224"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="229"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="234"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="239"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="237"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="242"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="245"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="250"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="251"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="248"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="253"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="273"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="292"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="297"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="298"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -3115,12 +3149,12 @@
 <context>
     <name>finbook::ui::PinTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="19"/>
         <source>Pin</source>
         <translation>Pin</translation>
     </message>
     <message>
-        <location filename="../ui/src/pins/tool_pin.cpp" line="156"/>
+        <location filename="../ui/src/pins/tool_pin.cpp" line="162"/>
         <source>Click on a visible, unlocked drawing to pin it.</source>
         <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um einen Pin zu setzen.</translation>
     </message>
@@ -3438,19 +3472,6 @@
         <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="42"/>
         <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
         <translation>Wählen Sie das Werkzeug Knochen (K) und klicken Sie auf ein Objekt, um ihm ein Skelett zu geben.</translation>
-    </message>
-</context>
-<context>
-    <name>finbook::ui::StrokeEraserTool</name>
-    <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
-        <source>Stroke Eraser</source>
-        <translation>Strich-Radierer</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
-        <source>Erase</source>
-        <translation>Radieren</translation>
     </message>
 </context>
 <context>

@@ -714,6 +714,24 @@
     </message>
 </context>
 <context>
+    <name>ExportDone</name>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="26"/>
+        <source>Export Finished</source>
+        <translation>Exportation terminée</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="31"/>
+        <source>Show in Folder</source>
+        <translation>Afficher dans le dossier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="38"/>
+        <source>Open in Browser</source>
+        <translation>Ouvrir dans le navigateur</translation>
+    </message>
+</context>
+<context>
     <name>FileMessages</name>
     <message>
         <location filename="../ui/src/file_messages.cpp" line="17"/>
@@ -1151,277 +1169,283 @@
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
         <source>the frame list</source>
         <translation>la liste des images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
         <source>a frame</source>
         <translation>une image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
         <source>%1; the frame is left out</source>
         <translation>%1&#xa0;; l&apos;image est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>a frame id</source>
         <translation>un identifiant d&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>the frame</source>
         <translation>l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>a frame hold</source>
         <translation>une durée d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the object list</source>
         <translation>la liste des objets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
         <source>an object</source>
         <translation>un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
         <source>%1; the object is left out</source>
         <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="111"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
         <source>a chunk header</source>
         <translation>un en-tête de bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>a chunk</source>
         <translation>un bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
         <source>chunk</source>
         <translation>bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
         <source>an object id</source>
         <translation>un identifiant d&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>the object</source>
         <translation>l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>the object flags</source>
         <translation>les attributs de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>the mesh density</source>
         <translation>la densité du maillage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="147"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
         <source>the object name</source>
         <translation>le nom de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
         <source>the stroke list</source>
         <translation>la liste des traits</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
         <source>a stroke id</source>
         <translation>un identifiant de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>the stroke</source>
         <translation>le trait</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <source>its pose has %n stroke(s) but the object has %1</source>
+        <translation>
+            <numerusform>sa pose a %n trait, mais l&apos;objet en a %1</numerusform>
+            <numerusform>sa pose a %n traits, mais l&apos;objet en a %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <source>stroke %1 has %n point(s) but its pose has %2</source>
+        <translation>
+            <numerusform>le trait %1 a %n point, mais sa pose en a %2</numerusform>
+            <numerusform>le trait %1 a %n points, mais sa pose en a %2</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
         <source>a stroke reference</source>
         <translation>une référence de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="39"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
         <source>an unknown chunk is left out</source>
         <translation>un bloc inconnu est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
         <source>%1; the chunk is left out</source>
         <translation>%1&#xa0;; le bloc est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="251"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="252"/>
         <source>the skeleton&apos;s join</source>
         <translation>la jonction du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
         <source>a join comes without a skeleton</source>
         <translation>une jonction est présente sans squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>la jonction du squelette est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="275"/>
         <source>the pin list</source>
         <translation>la liste des épingles</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>a pin id</source>
         <translation>un identifiant d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
         <source>pin %1</source>
         <translation>l&apos;épingle %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="284"/>
         <source>a pin position</source>
         <translation>une position d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
         <source>pin %1 has a non-finite position</source>
         <translation>l&apos;épingle %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
         <source>the cage corner list</source>
         <translation>la liste des coins de la cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>la cage a moins de 3 coins</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
         <source>a cage corner</source>
         <translation>un coin de cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>le coin de cage %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
         <source>a pose reference</source>
         <translation>une référence de pose</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="325"/>
         <source>its pose: %1</source>
         <translation>sa pose&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="328"/>
-        <source>its pose has %1 strokes but the object has %2</source>
-        <translation>sa pose a %1 traits, mais l&apos;objet en a %2</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
-        <source>stroke %1 has %2 points but its pose has %3</source>
-        <translation>le trait %1 a %2 points, mais sa pose en a %3</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>%1 has no id</source>
         <translation>%1 n&apos;a pas d&apos;identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="356"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="357"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
@@ -1673,10 +1697,13 @@
 </context>
 <context>
     <name>finbook::model::FrameListModel</name>
-    <message>
+    <message numerus="yes">
         <location filename="../model/src/frame_list_model.cpp" line="132"/>
-        <source>Frame %1, held for %2 frames</source>
-        <translation>Image %1, exposée pendant %2 images</translation>
+        <source>Frame %1, held for %n frame(s)</source>
+        <translation>
+            <numerusform>Image %1, exposée pendant %n image</numerusform>
+            <numerusform>Image %1, exposée pendant %n images</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../model/src/frame_list_model.cpp" line="133"/>
@@ -1687,7 +1714,7 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="39"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="40"/>
         <source>Bone</source>
         <translation>Os</translation>
     </message>
@@ -1719,8 +1746,8 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
-        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
-        <translation>Faites glisser un os pour le tourner, une articulation pour la tirer, la racine pour déplacer l’objet ; Alt-clic sur une articulation la verrouille ; faites glisser la racine avec Maj sur une autre partie pour les joindre.</translation>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
+        <translation>Faites glisser un os pour le tourner, une articulation pour la tirer, la racine pour déplacer l’objet ; L sur une articulation la verrouille ; faites glisser la racine avec Maj sur une autre partie pour les joindre.</translation>
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
@@ -1733,73 +1760,73 @@
         <translation>%1 est déjà suspendu à cette partie ; elle ne peut donc pas être suspendue à lui en retour.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="85"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="114"/>
         <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
         <translation>Modifier les articulations : faites glisser une articulation pour la déplacer, cliquez sur un os pour insérer une articulation.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="100"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="129"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>Réinitialisez la pose ou appliquez-la au dessin avant de modifier les articulations.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
         <source>Unlock Joint</source>
         <translation>Déverrouiller l’articulation</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
         <source>Lock Joint</source>
         <translation>Verrouiller l’articulation</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="164"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="196"/>
         <source>Reset Bone Pose</source>
         <translation>Réinitialiser la pose de l’os</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="199"/>
         <source>Edit Joints</source>
         <translation>Modifier les articulations</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="172"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="204"/>
         <source>Insert Joint Here</source>
         <translation>Insérer une articulation ici</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="174"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="206"/>
         <source>Delete Joint</source>
         <translation>Supprimer l’articulation</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="178"/>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="230"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="210"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="262"/>
         <source>Make Root Joint</source>
         <translation>Faire l’articulation racine</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="187"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="219"/>
         <source>Detach from %1</source>
         <translation>Détacher de %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="190"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="222"/>
         <source>Make Character Root</source>
         <translation>Faire la racine du personnage</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="223"/>
         <source>Join Overlapping Parts</source>
         <translation>Joindre les parties qui se chevauchent</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="242"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="274"/>
         <source>No part overlaps another part&apos;s skeleton.</source>
         <translation>Aucune partie ne chevauche le squelette d’une autre partie.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="246"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="278"/>
         <source>Joined %n part(s).</source>
         <translation>
             <numerusform>%n partie jointe.</numerusform>
@@ -1843,42 +1870,42 @@
 <context>
     <name>finbook::ui::CageActions</name>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="32"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="33"/>
         <source>&amp;Fit Cage</source>
         <translation>Ajuster une &amp;cage</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="34"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
         <source>Put a coarse cage around the current object in one step</source>
         <translation>Placer en une seule étape une cage grossière autour de l&apos;objet courant</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
         <source>Shift+C</source>
         <translation>Shift+C</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="37"/>
         <source>Edit Cage &amp;Shape</source>
         <translation>Modifier la &amp;forme de la cage</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="40"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="41"/>
         <source>Change the cage itself (move, add or delete corners) instead of posing with it</source>
         <translation>Modifier la cage elle-même (déplacer, ajouter ou supprimer des coins) au lieu de poser avec elle</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="66"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
         <source>Corners </source>
         <translation>Coins </translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="68"/>
         <source>About how many corners Fit Cage gives the cage</source>
         <translation>Nombre approximatif de coins que «&#xa0;Ajuster une cage&#xa0;» donne à la cage</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="81"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="82"/>
         <source>Choose an unlocked object with strokes to fit a cage to.</source>
         <translation>Choisissez un objet déverrouillé contenant des traits pour y ajuster une cage.</translation>
     </message>
@@ -1891,12 +1918,12 @@
         <translation>Cage</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="127"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="139"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>Choisissez d&apos;abord un objet&#xa0;: la cage se place autour de lui.</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="249"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="265"/>
         <source>A cage needs at least three corners.</source>
         <translation>Une cage doit avoir au moins trois coins.</translation>
     </message>
@@ -2048,6 +2075,62 @@
         <location filename="../ui/src/document_settings_dialog.cpp" line="125"/>
         <source>Background Colour</source>
         <translation>Couleur d&apos;arrière-plan</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="29"/>
+        <source>Eraser</source>
+        <translation>Gomme</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tool_eraser.cpp" line="157"/>
+        <source>Erase</source>
+        <translation>Effacer</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserToolBar</name>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="11"/>
+        <source>Eraser</source>
+        <translation>Gomme</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="13"/>
+        <source>Cut Lines</source>
+        <translation>Couper les traits</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="14"/>
+        <source>Whole Strokes</source>
+        <translation>Traits entiers</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="25"/>
+        <source>Erase the part of a line under the eraser (the rest is split into pieces)</source>
+        <translation>Efface la partie d’un trait sous la gomme (le reste est coupé en morceaux)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="28"/>
+        <source>Erase every stroke the eraser touches (or hold Shift when you start rubbing)</source>
+        <translation>Efface chaque trait que touche la gomme (ou maintenez Maj en commençant à gommer)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="31"/>
+        <source>Size:</source>
+        <translation>Taille&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="35"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/eraser_tool_bar.cpp" line="36"/>
+        <source>The eraser&apos;s diameter on the canvas</source>
+        <translation>Le diamètre de la gomme sur la toile</translation>
     </message>
 </context>
 <context>
@@ -2235,7 +2318,7 @@
         <translation>Annulation...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="92"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n fichier exporté dans %1</numerusform>
@@ -2243,17 +2326,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="102"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="103"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export annulé&#xa0;; rien n&apos;a été écrit.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="127"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>«&#xa0;%1&#xa0;» existe déjà. Le remplacer&#xa0;?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="129"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n fichier existe déjà à la destination&#xa0;: «&#xa0;%1&#xa0;». Le remplacer&#xa0;?</numerusform>
@@ -2261,12 +2344,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="131"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="132"/>
         <source>Replace Files?</source>
         <translation>Remplacer les fichiers&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="138"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="139"/>
         <source>Cannot Export</source>
         <translation>Impossible d&apos;exporter</translation>
     </message>
@@ -2390,72 +2473,72 @@
         <translation>À gauche, la première clé est favorisée&#xa0;; à droite, la seconde.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
         <source>F&amp;avour:</source>
         <translation>Fa&amp;voriser&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="95"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="96"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Déplacer les épingles et les coins de cage en &amp;arcs</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="98"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="99"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Un membre qui pivote entre les clés garde sa longueur. Si la case est décochée, chaque cible se déplace en ligne droite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="128"/>
         <source>(unnamed)</source>
         <translation>(sans nom)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="130"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
         <source>%1: interpolated</source>
         <translation>%1&#xa0;: interpolé</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="133"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ni épingles, ni cage, ni squelette)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ses épingles, sa cage ou son squelette diffèrent entre les clés)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="139"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1&#xa0;: seulement dans la première clé, maintenu pendant la première moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1&#xa0;: seulement dans la seconde clé, maintenu pendant la seconde moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="150"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
         <source>Select two different frames as keys.</source>
         <translation>Sélectionnez deux images différentes comme clés.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="160"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="161"/>
         <source>Posing the preview…</source>
         <translation>Calcul de l’aperçu…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="193"/>
         <source>The preview could not be posed: %1</source>
         <translation>Impossible de poser l&apos;aperçu&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Aucun objet n&apos;a d&apos;épingles ou de cage correspondantes dans les deux clés&#xa0;: les intervalles ne feront que maintenir les dessins.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="200"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Le canevas montre l&apos;intervalle du milieu.</translation>
     </message>
@@ -2463,53 +2546,53 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="123"/>
+        <location filename="../ui/src/main_window.cpp" line="132"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="147"/>
+        <location filename="../ui/src/main_window.cpp" line="156"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <location filename="../ui/src/main_window.cpp" line="157"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="151"/>
+        <location filename="../ui/src/main_window.cpp" line="160"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <location filename="../ui/src/main_window.cpp" line="161"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="188"/>
+        <location filename="../ui/src/main_window.cpp" line="197"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="199"/>
+        <location filename="../ui/src/main_window.cpp" line="208"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <location filename="../ui/src/main_window.cpp" line="209"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="205"/>
-        <location filename="../ui/src/main_window_files.cpp" line="303"/>
+        <location filename="../ui/src/main_window.cpp" line="214"/>
+        <location filename="../ui/src/main_window_files.cpp" line="237"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="206"/>
+        <location filename="../ui/src/main_window.cpp" line="215"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -2529,356 +2612,307 @@
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="30"/>
+        <location filename="../ui/src/main_window_files.cpp" line="26"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Animations Finbook (*.finbook);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="41"/>
+        <location filename="../ui/src/main_window_files.cpp" line="37"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="76"/>
-        <location filename="../ui/src/main_window_files.cpp" line="93"/>
+        <location filename="../ui/src/main_window_files.cpp" line="72"/>
+        <location filename="../ui/src/main_window_files.cpp" line="89"/>
         <source>Cannot Open File</source>
         <translation>Impossible d&apos;ouvrir le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="128"/>
+        <location filename="../ui/src/main_window_files.cpp" line="124"/>
         <source>Cannot Save File</source>
         <translation>Impossible d&apos;enregistrer le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="134"/>
+        <location filename="../ui/src/main_window_files.cpp" line="130"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="161"/>
-        <source>The folder %1 does not exist; choose an existing folder and export again.</source>
-        <translation>Le dossier %1 n&apos;existe pas&#xa0;; choisissez un dossier existant et exportez à nouveau.</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="175"/>
-        <source>Replace Files?</source>
-        <translation>Remplacer les fichiers&#xa0;?</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="176"/>
-        <source>%1 already holds exported frames. Replace them?</source>
-        <translation>%1 contient déjà des images exportées. Les remplacer&#xa0;?</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Exporting frames...</source>
-        <translation>Exportation des images...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Cancel</source>
-        <translation>Annuler</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="160"/>
-        <location filename="../ui/src/main_window_files.cpp" line="206"/>
-        <source>Cannot Export Frames</source>
-        <translation>Impossible d&apos;exporter les images</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="100"/>
+        <location filename="../ui/src/main_window_files.cpp" line="96"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problème réparé)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problèmes réparés)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="209"/>
-        <source>Exported %n frame(s) to %1</source>
-        <translation>
-            <numerusform>%n image exportée dans %1</numerusform>
-            <numerusform>%n images exportées dans %1</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="246"/>
+        <location filename="../ui/src/main_window_files.cpp" line="180"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="255"/>
+        <location filename="../ui/src/main_window_files.cpp" line="189"/>
         <source>No recent files</source>
         <translation>Aucun fichier récent</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="265"/>
+        <location filename="../ui/src/main_window_files.cpp" line="199"/>
         <source>Cannot Import Mesh</source>
         <translation>Impossible d&apos;importer le maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="269"/>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/main_window_files.cpp" line="203"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="89"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="291"/>
+        <location filename="../ui/src/main_window_files.cpp" line="225"/>
         <source>Damaged File</source>
         <translation>Fichier endommagé</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="292"/>
+        <location filename="../ui/src/main_window_files.cpp" line="226"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="295"/>
+        <location filename="../ui/src/main_window_files.cpp" line="229"/>
         <source>Open Anyway</source>
         <translation>Ouvrir quand même</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="305"/>
+        <location filename="../ui/src/main_window_files.cpp" line="239"/>
         <source>Unsaved Changes</source>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="306"/>
+        <location filename="../ui/src/main_window_files.cpp" line="240"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="312"/>
+        <location filename="../ui/src/main_window_files.cpp" line="246"/>
         <source>Open Animation</source>
         <translation>Ouvrir une animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="318"/>
+        <location filename="../ui/src/main_window_files.cpp" line="252"/>
         <source>Save Animation</source>
         <translation>Enregistrer l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="319"/>
+        <location filename="../ui/src/main_window_files.cpp" line="253"/>
         <source>untitled.finbook</source>
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="325"/>
-        <source>Export Frames to Folder</source>
-        <translation>Exporter les images dans un dossier</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="44"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="45"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="56"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="58"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="59"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="60"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="63"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="64"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="68"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="70"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="74"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="86"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="89"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="85"/>
-        <source>&amp;Export Frames...</source>
-        <translation>E&amp;xporter les images...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="93"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="110"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="113"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="117"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="122"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="119"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="124"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="121"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="126"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="128"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="131"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="136"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="139"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="140"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="145"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="152"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="155"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="173"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="179"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="181"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="183"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="180"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="190"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="196"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="201"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="203"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="210"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="211"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="216"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="224"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="229"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="234"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="239"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="237"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="242"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="245"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="250"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="251"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="248"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="253"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="273"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="292"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="297"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/main_window_menus.cpp" line="298"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
@@ -3115,12 +3149,12 @@
 <context>
     <name>finbook::ui::PinTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="19"/>
         <source>Pin</source>
         <translation>Épingle</translation>
     </message>
     <message>
-        <location filename="../ui/src/pins/tool_pin.cpp" line="156"/>
+        <location filename="../ui/src/pins/tool_pin.cpp" line="162"/>
         <source>Click on a visible, unlocked drawing to pin it.</source>
         <translation>Cliquez sur un dessin visible et non verrouillé pour y poser une épingle.</translation>
     </message>
@@ -3438,19 +3472,6 @@
         <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="42"/>
         <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
         <translation>Choisissez l&apos;outil Os (K) et cliquez sur un objet pour lui donner un squelette.</translation>
-    </message>
-</context>
-<context>
-    <name>finbook::ui::StrokeEraserTool</name>
-    <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
-        <source>Stroke Eraser</source>
-        <translation>Gomme à traits</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
-        <source>Erase</source>
-        <translation>Effacer</translation>
     </message>
 </context>
 <context>

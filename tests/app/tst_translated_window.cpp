@@ -7,10 +7,13 @@
 #include <finbook/ui/shortcut_editor.h>
 #include <finbook/ui/shortcuts_dialog.h>
 
+#include <QAbstractButton>
 #include <QHeaderView>
+#include <QLabel>
 #include <QLibraryInfo>
 #include <QMenuBar>
 #include <QSettings>
+#include <QStatusBar>
 #include <QStyle>
 #include <QTabBar>
 #include <QTabWidget>
@@ -148,6 +151,8 @@ private slots:
     void shortcutListShowsEveryTextInFull();
     void preferencesShowEveryTextInFull_data() { languages(true); }
     void preferencesShowEveryTextInFull();
+    void controlsFitTheirTextAtTheDefaultSize_data() { languages(true); }
+    void controlsFitTheirTextAtTheDefaultSize();
 
 private:
     static void languages(bool withEnglish);
@@ -250,6 +255,49 @@ void TestTranslatedWindow::preferencesShowEveryTextInFull()
              qPrintable(QStringLiteral("key column %1 px").arg(table->columnWidth(1))));
     const QStringList elided = elidedCells(table);
     QVERIFY2(elided.isEmpty(), qPrintable(elided.join(QLatin1Char('\n'))));
+}
+
+// Issue 22, item 8: "Move To…" was cut off in every language and the Skeleton panel's hint at
+// the default window size. Every button and label the window shows at 1280×840 gets the room
+// its text asks for (a menu button also the room of its arrow, which the style draws over the
+// text otherwise).
+void TestTranslatedWindow::controlsFitTheirTextAtTheDefaultSize()
+{
+    QFETCH(QString, language);
+    Language installed(language);
+    ui::MainWindow window;
+    window.resize(1280, 840);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QCoreApplication::processEvents();
+    QStringList cut;
+    const auto describe = [](const QWidget *w, const QString &text, int has, int needs) {
+        return QStringLiteral("%1 \"%2\": %3 px of %4")
+            .arg(w->objectName(), text)
+            .arg(has)
+            .arg(needs);
+    };
+    for (const QAbstractButton *b : window.findChildren<QAbstractButton *>()) {
+        if (!b->isVisible() || b->text().isEmpty())
+            continue;
+        int needs = b->sizeHint().width();
+        if (const auto *tool = qobject_cast<const QToolButton *>(b);
+            tool && tool->popupMode() == QToolButton::InstantPopup &&
+            (tool->toolButtonStyle() != Qt::ToolButtonIconOnly || tool->icon().isNull()) &&
+            (tool->menu() || (tool->defaultAction() && tool->defaultAction()->menu())))
+            needs += tool->style()->pixelMetric(QStyle::PM_MenuButtonIndicator, nullptr, tool);
+        if (b->width() < needs)
+            cut << describe(b, b->text(), b->width(), needs);
+    }
+    for (const QLabel *l : window.findChildren<QLabel *>()) {
+        if (!l->isVisible() || l->text().isEmpty() || l->parent() == window.statusBar())
+            continue;
+        if (l->wordWrap() ? l->height() < l->heightForWidth(l->width())
+                          : l->width() < l->sizeHint().width())
+            cut << describe(l, l->text(), l->wordWrap() ? l->height() : l->width(),
+                            l->wordWrap() ? l->heightForWidth(l->width()) : l->sizeHint().width());
+    }
+    QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QLatin1Char('\n'))));
 }
 
 QTEST_MAIN(TestTranslatedWindow)

@@ -65,7 +65,9 @@ void TestTools::init()
     m_state = std::make_unique<ui::EditorState>(m_doc.get());
     m_canvas = std::make_unique<ui::CanvasWidget>(m_state.get());
     m_canvas->addTool(std::make_unique<ui::PenTool>());
-    m_canvas->addTool(std::make_unique<ui::StrokeEraserTool>());
+    // These tests keep the whole-stroke mode; tst_eraser covers cutting.
+    static_cast<ui::EraserTool *>(m_canvas->addTool(std::make_unique<ui::EraserTool>()))
+        ->setMode(ui::EraserMode::WholeStrokes);
     m_canvas->addTool(std::make_unique<ui::SelectTool>());
     m_canvas->addTool(std::make_unique<ui::HandTool>());
     m_canvas->resize(600, 500);

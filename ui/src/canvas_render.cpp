@@ -255,6 +255,10 @@ void CanvasWidget::paintEvent(QPaintEvent *event)
     painter.setBrush(Qt::NoBrush);
     painter.drawRect(pageRect().adjusted(-0.5, -0.5, 0.5, 0.5));
 
+    // Playback shows the animation, not the editing handles (pins, cages, bones, the mesh, the
+    // tool's cursor); scrubbing is not playing, so they stay while the timeline is dragged.
+    if (m_state->isPlaying())
+        return;
     const QTransform view = canvasToWidget();
     for (const std::unique_ptr<CanvasOverlay> &overlay : m_overlays) {
         painter.save();

@@ -317,6 +317,23 @@ void CanvasWidget::wheelEvent(QWheelEvent *event)
     event->accept();
 }
 
+const model::Frame *CanvasWidget::shownFrame() const
+{
+    return m_preview ? &*m_preview : m_state->currentFrame();
+}
+
+bool CanvasWidget::event(QEvent *event)
+{
+    // A shortcut override accepted here turns the key into a key press for the tool instead
+    // of a window shortcut.
+    if (event->type() == QEvent::ShortcutOverride && m_tool &&
+        m_tool->claimsKey(*static_cast<QKeyEvent *>(event))) {
+        event->accept();
+        return true;
+    }
+    return QWidget::event(event);
+}
+
 void CanvasWidget::keyPressEvent(QKeyEvent *event)
 {
     if (event->key() == Qt::Key_Space && event->modifiers() == Qt::NoModifier) {

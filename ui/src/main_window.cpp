@@ -7,6 +7,7 @@
 #include <finbook/ui/canvas_widget.h>
 #include <finbook/ui/editor_memory.h>
 #include <finbook/ui/editor_state.h>
+#include <finbook/ui/eraser_tool_bar.h>
 #include <finbook/ui/frame_actions.h>
 #include <finbook/ui/i18n/action_text.h>
 #include <finbook/ui/keys/canvas_focus.h>
@@ -60,6 +61,10 @@ MainWindow::MainWindow(QWidget *parent)
     arrangeToolBars();
     readSettings();
     rememberEditor();
+    // The saved window state may show the eraser's bar; it stands only beside the eraser.
+    if (auto *eraserBar = findChild<EraserToolBar *>())
+        eraserBar->setVisible(m_canvas->currentTool() &&
+                              m_canvas->currentTool()->id() == QLatin1String("tool.eraser"));
     connect(m_doc->undoStack(), &QUndoStack::cleanChanged, this,
             [this](bool clean) { setWindowModified(!clean); });
     createRecovery();
@@ -89,11 +94,20 @@ void MainWindow::createCanvasAndTools()
     auto pen = std::make_unique<PenTool>();
     m_pen = pen.get();
     addTool(std::move(pen));
-    addTool(std::make_unique<StrokeEraserTool>());
+    auto eraser = std::make_unique<EraserTool>();
+    EraserTool *eraserTool = eraser.get();
+    addTool(std::move(eraser));
     addTool(std::make_unique<SelectTool>());
     addTool(std::make_unique<HandTool>());
     auto *brush = new BrushToolBar(m_pen, this);
     addToolBar(Qt::TopToolBarArea, brush);
+    // The eraser's mode and size stand beside the brush while the eraser is in hand.
+    auto *eraserBar = new EraserToolBar(eraserTool, this);
+    addToolBar(Qt::TopToolBarArea, eraserBar);
+    eraserBar->setVisible(false);
+    connect(
+        m_canvas, &CanvasWidget::currentToolChanged, eraserBar,
+        [eraserBar, eraserTool](CanvasTool *tool) { eraserBar->setVisible(tool == eraserTool); });
     m_docksMenu->addAction(m_toolsBar->toggleViewAction());
     m_docksMenu->addAction(brush->toggleViewAction());
 }

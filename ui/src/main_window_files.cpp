@@ -1,21 +1,17 @@
-// MainWindow: new, open, save, export and the recent-files list.
+// MainWindow: new, open, save and the recent-files list (File → Export is export/).
 #include <finbook/model/commands.h>
 #include <finbook/model/document.h>
-#include <finbook/model/export/exporter.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/import/mesh_import.h>
 #include <finbook/ui/editor_state.h>
-#include <finbook/ui/export/export_job.h>
 #include <finbook/ui/file_messages.h>
 #include <finbook/ui/main_window.h>
 
 #include <QDir>
-#include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QMenu>
-#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
@@ -149,68 +145,6 @@ bool MainWindow::maybeSave()
     }
 }
 
-// Every frame, held ones repeated, as PNGs in the chosen folder; on a worker thread, with
-// nothing left behind when it fails or is cancelled (see model/export/exporter.h).
-void MainWindow::exportFrames()
-{
-    const QString folder = askExportFolder();
-    if (folder.isEmpty())
-        return;
-    if (!QFileInfo(folder).isDir()) {
-        reportError(tr("Cannot Export Frames"),
-                    tr("The folder %1 does not exist; choose an existing folder and export again.")
-                        .arg(QDir::toNativeSeparators(folder)));
-        return;
-    }
-    model::ExportOptions options;
-    options.target = folder;
-    options.firstFrame = 0;
-    options.lastFrame = m_doc->frameCount() - 1;
-    settlePoses();
-    model::ExportSource source = model::exportSource(*m_doc);
-    const QStringList names = model::exportTargetFiles(source, options);
-    const bool replacing = std::any_of(names.begin(), names.end(), [&](const QString &name) {
-        return QFileInfo::exists(QDir(folder).filePath(name));
-    });
-    if (replacing && QMessageBox::question(this, tr("Replace Files?"),
-                                           tr("%1 already holds exported frames. Replace them?")
-                                               .arg(QDir::toNativeSeparators(folder)),
-                                           QMessageBox::Yes | QMessageBox::No,
-                                           QMessageBox::No) != QMessageBox::Yes)
-        return;
-    options.overwrite = replacing;
-
-    ExportJob job(std::move(source), options);
-    QProgressDialog progress(tr("Exporting frames..."), tr("Cancel"), 0, 0, this);
-    progress.setWindowModality(Qt::WindowModal);
-    progress.setMinimumDuration(500);
-    connect(&job, &ExportJob::progressed, &progress, [&progress](qint64 done, qint64 total) {
-        progress.setMaximum(int(std::min<qint64>(total, INT_MAX)));
-        progress.setValue(int(std::min<qint64>(done, INT_MAX)));
-    });
-    connect(&progress, &QProgressDialog::canceled, &job, &ExportJob::cancel);
-    QEventLoop loop;
-    model::ExportError error{};
-    qsizetype written = -1;
-    connect(&job, &ExportJob::finished, &loop,
-            [&](bool ok, const model::ExportError &e, const QStringList &files) {
-                written = ok ? files.size() : -1;
-                error = e;
-                loop.quit();
-            });
-    job.start();
-    loop.exec();
-    progress.reset();
-    if (written < 0) {
-        if (error.code != model::ExportErrorCode::Cancelled)
-            reportError(tr("Cannot Export Frames"), error.message);
-        return;
-    }
-    statusBar()->showMessage(tr("Exported %n frame(s) to %1", nullptr, int(written))
-                                 .arg(QDir::toNativeSeparators(folder)),
-                             5000);
-}
-
 void MainWindow::setFilePath(const QString &path)
 {
     m_path = path;
@@ -318,12 +252,6 @@ QString MainWindow::askSavePath()
     return QFileDialog::getSaveFileName(this, tr("Save Animation"),
                                         m_path.isEmpty() ? tr("untitled.finbook") : m_path,
                                         fileFilter());
-}
-
-QString MainWindow::askExportFolder()
-{
-    return QFileDialog::getExistingDirectory(this, tr("Export Frames to Folder"),
-                                             QFileInfo(m_path).path());
 }
 
 } // namespace finbook::ui

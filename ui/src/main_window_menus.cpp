@@ -4,6 +4,7 @@
 #include <finbook/ui/document_settings_dialog.h>
 #include <finbook/ui/editor_state.h>
 #include <finbook/ui/export/export_dialog.h>
+#include <finbook/ui/export/export_done.h>
 #include <finbook/ui/frame_actions.h>
 #include <finbook/ui/main_window.h>
 #include <finbook/ui/object_actions.h>
@@ -68,12 +69,19 @@ void MainWindow::createFileMenu()
     connect(saveAction, &QAction::triggered, this, &MainWindow::save);
     QAction *saveAsAction = makeAction(QStringLiteral("file.saveAs"), tr("Save &As..."));
     connect(saveAsAction, &QAction::triggered, this, &MainWindow::saveAs);
-    QAction *exportAnimation = makeAction(QStringLiteral("file.exportAnimation"), tr("E&xport..."));
+    // One Export entry: the dialog does every format, a folder of PNG frames included. It
+    // keeps the id (and so the shortcut) "Export Frames" had.
+    QAction *exportAnimation = makeAction(QStringLiteral("file.export"), tr("E&xport..."));
     connect(exportAnimation, &QAction::triggered, this, [this] {
         settlePoses();
         ExportDialog dialog(*m_doc, m_path, this);
-        if (dialog.exec() == QDialog::Accepted)
-            statusBar()->showMessage(dialog.summary(), 5000);
+        if (dialog.exec() != QDialog::Accepted)
+            return;
+        statusBar()->showMessage(dialog.summary());
+        const bool page = dialog.options().format == model::ExportFormat::Html;
+        const QStringList &files = dialog.writtenFiles();
+        showExportDone(this, dialog.summary(), files,
+                       page && !files.isEmpty() ? files.first() : QString());
     });
     QAction *importAction = makeAction(QStringLiteral("file.importMesh"), tr("&Import Mesh..."));
     connect(importAction, &QAction::triggered, this, [this] {
@@ -82,8 +90,6 @@ void MainWindow::createFileMenu()
         if (!path.isEmpty())
             importMesh(path);
     });
-    QAction *exportAction = makeAction(QStringLiteral("file.export"), tr("&Export Frames..."));
-    connect(exportAction, &QAction::triggered, this, &MainWindow::exportFrames);
     QAction *quitAction = makeAction(QStringLiteral("file.quit"), tr("&Quit"));
     quitAction->setMenuRole(QAction::QuitRole);
     connect(quitAction, &QAction::triggered, this, &QWidget::close);
@@ -92,7 +98,6 @@ void MainWindow::createFileMenu()
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(importAction);
     m_fileMenu->addAction(exportAnimation);
-    m_fileMenu->addAction(exportAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(quitAction);
     m_fileBar->addActions({newAction, openAction, saveAction});

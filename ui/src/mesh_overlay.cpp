@@ -44,7 +44,8 @@ void MeshOverlay::requestMissing()
 void MeshOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
 {
     const model::Frame *f = m_state->currentFrame();
-    if (!m_state->showMesh() || !f)
+    // A preview frame (the in-between dialog's) is not meshed: its pose is not the document's.
+    if (!m_state->showMesh() || !f || m_canvas->hasPreviewFrame())
         return;
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing);

@@ -7,6 +7,7 @@
 
 #include <QHBoxLayout>
 #include <QListView>
+#include <QStyle>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -35,7 +36,13 @@ ObjectsPanel::ObjectsPanel(EditorState *state, ObjectActions *actions, QWidget *
         buttons->addWidget(button);
     }
     buttons->addStretch(1);
-    button(actions->moveSelection())->setPopupMode(QToolButton::InstantPopup);
+    // The style draws a menu button's arrow over its text ("Move To" lost its last letters in
+    // every language): give the arrow room of its own.
+    QToolButton *move = button(actions->moveSelection());
+    move->setPopupMode(QToolButton::InstantPopup);
+    move->setMinimumWidth(
+        move->sizeHint().width() +
+        move->style()->pixelMetric(QStyle::PM_MenuButtonIndicator, nullptr, move));
 
     m_view->setModel(m_model);
     m_view->setItemDelegate(new ObjectsPanelDelegate(m_view));

@@ -32,6 +32,10 @@ inline bool isEditable(const model::StrokeGroup &group)
     return group.visible && !group.locked;
 }
 
+// Whether `pos` lies inside the object's shape as shown: the filled silhouette of its strokes
+// (geometry/silhouette.h), so a click in the middle of an outline counts before any mesh exists.
+bool insideShape(const model::StrokeGroup &group, QPointF pos);
+
 // The topmost stroke of an editable object within `tolerance` of `p`, or kNoId.
 model::Id strokeAt(const model::Frame &frame, const QPointF &p, qreal tolerance);
 

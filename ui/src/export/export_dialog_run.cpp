@@ -88,6 +88,7 @@ void ExportDialog::jobFinished(bool ok, const model::ExportError &error, const Q
     setRunning(false);
     if (ok) {
         const QString where = files.size() == 1 ? files.first() : options().target;
+        m_written = files;
         m_summary = tr("Exported %n file(s) to %1", nullptr, int(files.size()))
                         .arg(QDir::toNativeSeparators(where));
         m_status->setText(m_summary);

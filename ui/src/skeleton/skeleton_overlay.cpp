@@ -98,7 +98,7 @@ void SkeletonOverlay::setShown(bool shown)
 
 void SkeletonOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
 {
-    const model::Frame *f = m_state->currentFrame();
+    const model::Frame *f = m_canvas->shownFrame();
     if (!m_shown || !f)
         return;
     for (const model::StrokeGroup &g : f->groups)

@@ -295,7 +295,7 @@ void BoneTool::press(const ToolEvent &event)
                                  "right-click a joint to delete it."));
     else
         canvas()->postMessage(tr("Drag a bone to turn it, a joint to pull it, the root to move "
-                                 "the object; Alt-click a joint to lock it; Shift-drag the "
+                                 "the object; press L over a joint to lock it; Shift-drag the "
                                  "root onto another part to join them."));
 }
 

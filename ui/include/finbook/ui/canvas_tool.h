@@ -70,6 +70,14 @@ public:
     virtual void secondaryClick(const ToolEvent &) {}
     // Keys while the canvas has focus; return true when consumed (e.g. Escape cancels).
     virtual bool keyPress(QKeyEvent *) { return false; }
+    // Whether the tool, in the middle of a gesture, claims `event`'s key before the window's
+    // shortcuts do (Return closes a cage rather than starting playback; Escape, Backspace and
+    // Delete act on the gesture). A claimed key reaches keyPress().
+    virtual bool claimsKey(const QKeyEvent &event) const
+    {
+        Q_UNUSED(event)
+        return false;
+    }
 
     // Paints on top of the frame. The painter is in WIDGET coordinates; use canvasToWidget to
     // map canvas points (or painter.setTransform(canvasToWidget, true) for canvas-space

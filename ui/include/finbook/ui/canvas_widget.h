@@ -79,6 +79,9 @@ public:
     // the document again. The document is never touched.
     void setPreviewFrame(std::optional<model::Frame> frame);
     bool hasPreviewFrame() const { return m_preview.has_value(); }
+    // The frame on show: the preview while there is one, else the current frame (null when
+    // there is none). Overlays draw the handles of this frame, so a preview shows its own pins.
+    const model::Frame *shownFrame() const;
     // Marks the cached frame and onion images stale (the repaint benchmark's cold case).
     void invalidateCache();
 
@@ -90,6 +93,7 @@ signals:
     void messagePosted(const QString &message);
 
 protected:
+    bool event(QEvent *event) override;
     void paintEvent(QPaintEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;

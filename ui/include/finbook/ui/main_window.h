@@ -108,7 +108,6 @@ protected:
     virtual RecoveryChoice askRecovery(const std::vector<model::RecoveryCopy> &copies);
     virtual QString askOpenPath();
     virtual QString askSavePath();
-    virtual QString askExportFolder();
 
 private:
     // recovery/main_window_recovery.cpp
@@ -155,7 +154,6 @@ private:
     bool save();
     bool saveAs();
     bool openRecovering(const QString &path);
-    void exportFrames();
     void addRecentFile(const QString &path);
     void rebuildRecentMenu();
     void setFilePath(const QString &path);
