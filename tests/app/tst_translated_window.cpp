@@ -271,6 +271,15 @@ void TestTranslatedWindow::controlsFitTheirTextAtTheDefaultSize()
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QCoreApplication::processEvents();
     QStringList cut;
+    // The part of a widget its window and the docks and panels around it show.
+    const auto visible = [&window](const QWidget *w) {
+        QRect r(w->mapTo(&window, QPoint(0, 0)), w->size());
+        for (const QWidget *p = w->parentWidget(); p && p != &window; p = p->parentWidget())
+            r &= QRect(p->mapTo(&window, QPoint(0, 0)), p->size());
+        return r & window.rect();
+    };
+    const auto shown = [&](const QWidget *w) { return visible(w).size() == w->size(); };
+    const auto visibleWidth = [&](const QWidget *w) { return visible(w).width(); };
     const auto describe = [](const QWidget *w, const QString &text, int has, int needs) {
         return QStringLiteral("%1 \"%2\": %3 px of %4")
             .arg(w->objectName(), text)
@@ -288,12 +297,16 @@ void TestTranslatedWindow::controlsFitTheirTextAtTheDefaultSize()
             needs += tool->style()->pixelMetric(QStyle::PM_MenuButtonIndicator, nullptr, tool);
         if (b->width() < needs)
             cut << describe(b, b->text(), b->width(), needs);
+        else if (!shown(b))
+            cut << describe(b, b->text(), visibleWidth(b), b->width());
     }
     for (const QLabel *l : window.findChildren<QLabel *>()) {
         if (!l->isVisible() || l->text().isEmpty() || l->parent() == window.statusBar())
             continue;
-        if (l->wordWrap() ? l->height() < l->heightForWidth(l->width())
-                          : l->width() < l->sizeHint().width())
+        if (!shown(l))
+            cut << describe(l, l->text(), visibleWidth(l), l->width());
+        else if (l->wordWrap() ? l->height() < l->heightForWidth(l->width())
+                               : l->width() < l->sizeHint().width())
             cut << describe(l, l->text(), l->wordWrap() ? l->height() : l->width(),
                             l->wordWrap() ? l->heightForWidth(l->width()) : l->sizeHint().width());
     }

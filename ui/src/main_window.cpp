@@ -61,10 +61,13 @@ MainWindow::MainWindow(QWidget *parent)
     arrangeToolBars();
     readSettings();
     rememberEditor();
-    // The saved window state may show the eraser's bar; it stands only beside the eraser.
+    // The saved window state may show either bar; the eraser's shows only with the eraser.
+    const bool erasing =
+        m_canvas->currentTool() && m_canvas->currentTool()->id() == QLatin1String("tool.eraser");
     if (auto *eraserBar = findChild<EraserToolBar *>())
-        eraserBar->setVisible(m_canvas->currentTool() &&
-                              m_canvas->currentTool()->id() == QLatin1String("tool.eraser"));
+        eraserBar->setVisible(erasing);
+    if (auto *brush = findChild<BrushToolBar *>())
+        brush->setVisible(!erasing);
     connect(m_doc->undoStack(), &QUndoStack::cleanChanged, this,
             [this](bool clean) { setWindowModified(!clean); });
     createRecovery();
@@ -101,13 +104,16 @@ void MainWindow::createCanvasAndTools()
     addTool(std::make_unique<HandTool>());
     auto *brush = new BrushToolBar(m_pen, this);
     addToolBar(Qt::TopToolBarArea, brush);
-    // The eraser's mode and size stand beside the brush while the eraser is in hand.
+    // The eraser's mode and size take the brush's place while the eraser is in hand: both at
+    // once would push the cage controls into the top row's overflow menu at 1280 px.
     auto *eraserBar = new EraserToolBar(eraserTool, this);
-    addToolBar(Qt::TopToolBarArea, eraserBar);
+    insertToolBar(brush, eraserBar);
     eraserBar->setVisible(false);
-    connect(
-        m_canvas, &CanvasWidget::currentToolChanged, eraserBar,
-        [eraserBar, eraserTool](CanvasTool *tool) { eraserBar->setVisible(tool == eraserTool); });
+    connect(m_canvas, &CanvasWidget::currentToolChanged, eraserBar,
+            [eraserBar, brush, eraserTool](CanvasTool *tool) {
+                eraserBar->setVisible(tool == eraserTool);
+                brush->setVisible(tool != eraserTool);
+            });
     m_docksMenu->addAction(m_toolsBar->toggleViewAction());
     m_docksMenu->addAction(brush->toggleViewAction());
 }

@@ -23,19 +23,28 @@ ObjectsPanel::ObjectsPanel(EditorState *state, ObjectActions *actions, QWidget *
 {
     setObjectName(QStringLiteral("objects"));
     m_view->setObjectName(QStringLiteral("objects.view"));
-    // Plain buttons rather than a QToolBar: they never fold into an overflow menu.
-    auto *buttons = new QHBoxLayout;
+    // Plain buttons rather than a QToolBar: they never fold into an overflow menu. Two rows:
+    // in one, "Move To" ran past the dock's edge at the default window size (German and
+    // French labels are longer still).
+    auto *buttons = new QVBoxLayout;
     buttons->setContentsMargins(2, 2, 2, 2);
     buttons->setSpacing(0);
-    for (QAction *action : {actions->newObject(), actions->remove(), actions->raise(),
-                            actions->lower(), actions->merge(), actions->moveSelection()}) {
-        auto *button = new QToolButton(this);
-        button->setObjectName(action->objectName() + QStringLiteral(".button"));
-        button->setDefaultAction(action);
-        button->setAutoRaise(true);
-        buttons->addWidget(button);
+    const std::initializer_list<QAction *> rows[] = {
+        {actions->newObject(), actions->remove(), actions->raise(), actions->lower()},
+        {actions->merge(), actions->moveSelection()}};
+    for (const auto &row : rows) {
+        auto *line = new QHBoxLayout;
+        line->setSpacing(0);
+        for (QAction *action : row) {
+            auto *button = new QToolButton(this);
+            button->setObjectName(action->objectName() + QStringLiteral(".button"));
+            button->setDefaultAction(action);
+            button->setAutoRaise(true);
+            line->addWidget(button);
+        }
+        line->addStretch(1);
+        buttons->addLayout(line);
     }
-    buttons->addStretch(1);
     // The style draws a menu button's arrow over its text ("Move To" lost its last letters in
     // every language): give the arrow room of its own.
     QToolButton *move = button(actions->moveSelection());
