@@ -2,10 +2,10 @@
 // unique in the translations, toolbar buttons show no Japanese "(X)" mnemonic, and the
 // Keyboard Shortcuts dialog and the Preferences shortcut editor show each action and shortcut
 // in full (translations run longer than English: "Dokumenteinstellungen..." was elided).
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/preferences_dialog.h>
-#include <finbook/ui/shortcut_editor.h>
-#include <finbook/ui/shortcuts_dialog.h>
+#include <finbook/ui/dialogs/preferences_dialog.h>
+#include <finbook/ui/dialogs/shortcut_editor.h>
+#include <finbook/ui/dialogs/shortcuts_dialog.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QAbstractButton>
 #include <QHeaderView>

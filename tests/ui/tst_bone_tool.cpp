@@ -3,14 +3,14 @@
 #include <finbook/model/commands.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/deform_actions.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/object_actions.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/panels/object_actions.h>
+#include <finbook/ui/rig/deform_actions.h>
 #include <finbook/ui/skeleton/skeleton_overlay.h>
 #include <finbook/ui/skeleton/tool_bone.h>
-#include <finbook/ui/stroke_editing.h>
-#include <finbook/ui/tool_eraser.h>
+#include <finbook/ui/tools/stroke_editing.h>
+#include <finbook/ui/tools/tool_eraser.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QElapsedTimer>
 #include <QMenu>

@@ -5,9 +5,9 @@
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/ui/cage/cage_actions.h>
 #include <finbook/ui/cage/tool_cage.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/deform_actions.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/rig/deform_actions.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QAbstractButton>
 #include <QMessageBox>

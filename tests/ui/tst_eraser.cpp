@@ -8,8 +8,8 @@
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/tool_eraser.h>
+#include <finbook/ui/tools/tool_eraser.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QPainter>
 #include <QtTest>

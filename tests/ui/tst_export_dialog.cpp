@@ -8,7 +8,7 @@
 #include <finbook/ui/export/export_dialog.h>
 #include <finbook/ui/export/export_done.h>
 #include <finbook/ui/export/export_job.h>
-#include <finbook/ui/main_window.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QApplication>
 #include <QCheckBox>

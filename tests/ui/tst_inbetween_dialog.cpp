@@ -5,11 +5,11 @@
 #include "tst_tools_support.h"
 
 #include <finbook/model/finbook_file.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/inbetween/inbetween_dialog.h>
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/timeline_view.h>
+#include <finbook/ui/timeline/timeline_view.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QApplication>
 #include <QComboBox>

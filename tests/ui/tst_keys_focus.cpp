@@ -5,13 +5,13 @@
 #include "tst_window_support.h"
 
 #include <finbook/model/object_list_model.h>
-#include <finbook/ui/canvas_tool.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/objects_panel.h>
-#include <finbook/ui/playback_controller.h>
-#include <finbook/ui/timeline_view.h>
-#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/panels/objects_panel.h>
+#include <finbook/ui/timeline/playback_controller.h>
+#include <finbook/ui/timeline/timeline_view.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QAbstractItemModel>
 #include <QDoubleSpinBox>

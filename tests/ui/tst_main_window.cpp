@@ -3,11 +3,11 @@
 #include "tst_tools_support.h"
 
 #include <finbook/model/finbook_file.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/shortcut_registry.h>
-#include <finbook/ui/shortcuts_dialog.h>
-#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/dialogs/shortcuts_dialog.h>
+#include <finbook/ui/keys/shortcut_registry.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QDir>
 #include <QFile>

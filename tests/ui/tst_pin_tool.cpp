@@ -1,12 +1,12 @@
 // The Pin tool driven by real mouse events on the real canvas: add, drag, remove, undo.
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/deform_actions.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/mesh_overlay.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/canvas/mesh_overlay.h>
 #include <finbook/ui/pins/tool_pin.h>
-#include <finbook/ui/stroke_editing.h>
+#include <finbook/ui/rig/deform_actions.h>
+#include <finbook/ui/tools/stroke_editing.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QSignalSpy>
 #include <QTest>

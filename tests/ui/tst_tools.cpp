@@ -1,12 +1,12 @@
 // Pen, eraser and select tools driven with real mouse events on a real canvas.
 #include "tst_tools_support.h"
 
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/stroke_editing.h>
-#include <finbook/ui/tool_eraser.h>
-#include <finbook/ui/tool_hand.h>
-#include <finbook/ui/tool_pen.h>
-#include <finbook/ui/tool_select.h>
+#include <finbook/ui/tools/stroke_editing.h>
+#include <finbook/ui/tools/tool_eraser.h>
+#include <finbook/ui/tools/tool_hand.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/tools/tool_select.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QSignalSpy>
 #include <QtTest>

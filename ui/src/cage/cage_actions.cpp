@@ -5,8 +5,8 @@
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/ui/cage/cage_actions.h>
 #include <finbook/ui/cage/tool_cage.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QApplication>
 #include <QPainter>

@@ -4,8 +4,8 @@
 #include <finbook/model/cage/cage_commands.h>
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/ui/cage/tool_cage.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QKeyEvent>
 #include <QPainter>

@@ -2,11 +2,11 @@
 // InsertInbetweensCommand. The dialog stands beside the page it previews on, or where the
 // user last put it.
 #include <finbook/model/inbetween/inbetween_commands.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/deform_actions.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/inbetween/inbetween_dialog.h>
-#include <finbook/ui/main_window.h>
+#include <finbook/ui/rig/deform_actions.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QGuiApplication>
 #include <QScreen>

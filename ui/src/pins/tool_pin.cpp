@@ -1,12 +1,12 @@
 #include "../rig/rig_prompt.h"
-#include "../stroke_hit.h"
+#include "../tools/stroke_hit.h"
 
 #include <finbook/deform/nearest_vertex.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/pins/tool_pin.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QPainter>
 #include <QPainterPath>

@@ -1,7 +1,7 @@
 #include <finbook/model/cage/cage_commands.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
-#include <finbook/ui/editor_state.h>
 #include <finbook/ui/skeleton/skeleton_follow.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <algorithm>
 

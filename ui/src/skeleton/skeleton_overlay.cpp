@@ -1,6 +1,6 @@
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/skeleton/skeleton_overlay.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QPainter>
 

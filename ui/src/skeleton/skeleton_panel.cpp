@@ -1,6 +1,6 @@
 #include <finbook/model/skeleton/skeleton_commands.h>
-#include <finbook/ui/editor_state.h>
 #include <finbook/ui/skeleton/skeleton_panel.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QEvent>
 #include <QFormLayout>

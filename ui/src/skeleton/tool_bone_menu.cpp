@@ -3,9 +3,9 @@
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
 #include <finbook/model/skeleton/skeleton_joint_edit.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/skeleton/tool_bone.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QKeyEvent>
 #include <QMenu>

@@ -20,7 +20,7 @@
 
 #include <finbook/deform/skeleton/skeleton.h>
 #include <finbook/model/deform_controller.h>
-#include <finbook/ui/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_tool.h>
 
 #include <functional>
 
