@@ -7,7 +7,7 @@
 #include "translations.h"
 
 #include <finbook/model/io/printable_text.h>
-#include <finbook/ui/main_window.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -11,7 +11,7 @@
 //                               discarded)
 #pragma once
 
-#include <finbook/ui/main_window.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <memory>
 

@@ -30,6 +30,15 @@ QString installTranslations(QCoreApplication &app, const QString &language)
             return finbook->language();
         }
     }
+    // No catalogue for the language: English, with English plural forms ("2 frames", not the
+    // source text's "2 frame(s)").
+    for (const QString &folder : folders) {
+        if (finbook->load(QLocale(QLocale::English), QStringLiteral("finbook"), QStringLiteral("_"),
+                          folder)) {
+            QCoreApplication::installTranslator(finbook);
+            return {};
+        }
+    }
     delete finbook;
     return {};
 }

@@ -812,79 +812,97 @@
     </message>
 </context>
 <context>
+    <name>ExportDone</name>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="26"/>
+        <source>Export Finished</source>
+        <translation>Export abgeschlossen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="31"/>
+        <source>Show in Folder</source>
+        <translation>Im Ordner zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="38"/>
+        <source>Open in Browser</source>
+        <translation>Im Browser öffnen</translation>
+    </message>
+</context>
+<context>
     <name>FileMessages</name>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="17"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="17"/>
         <source>The file is not there any more: it may have been moved, renamed or deleted.</source>
         <translation>Die Datei ist nicht mehr vorhanden: Sie wurde möglicherweise verschoben, umbenannt oder gelöscht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="21"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="21"/>
         <source>This is a folder, not an animation. Choose a file ending in .finbook.</source>
         <translation>Dies ist ein Ordner, keine Animation. Wählen Sie eine Datei mit der Endung .finbook.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="23"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="23"/>
         <source>This is a device or a pipe, not an animation. Choose a file ending in .finbook.</source>
         <translation>Dies ist ein Gerät oder eine Pipe, keine Animation. Wählen Sie eine Datei mit der Endung .finbook.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="26"/>
         <source>You are not allowed to read this file. Ask whoever owns it to share it with you, or open a copy of it.</source>
         <translation>Sie dürfen diese Datei nicht lesen. Bitten Sie die Person, der sie gehört, sie für Sie freizugeben, oder öffnen Sie eine Kopie davon.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="29"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="29"/>
         <source>The disk could not read the file. If it is on a removable drive or a network folder, check that it is still connected.</source>
         <translation>Die Datei konnte nicht vom Datenträger gelesen werden. Wenn sie auf einem Wechseldatenträger oder in einem Netzwerkordner liegt, prüfen Sie, ob dieser noch verbunden ist.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="33"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="33"/>
         <source>The file is empty: there is no drawing in it.</source>
         <translation>Die Datei ist leer: Sie enthält keine Zeichnung.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="34"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="34"/>
         <source>This is not a Finbook animation. Choose a file ending in .finbook.</source>
         <translation>Dies ist keine Finbook-Animation. Wählen Sie eine Datei mit der Endung .finbook.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="37"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="37"/>
         <source>It was saved by a newer version of Finbook. Install that version to open it.</source>
         <translation>Sie wurde mit einer neueren Finbook-Version gespeichert. Installieren Sie diese Version, um sie zu öffnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="40"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="40"/>
         <source>The file is damaged near the end: it looks cut off. Perhaps a copy or a save was interrupted.</source>
         <translation>Die Datei ist gegen Ende beschädigt: Sie scheint abgeschnitten zu sein. Vielleicht wurde ein Kopier- oder Speichervorgang unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="43"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="43"/>
         <source>The file is damaged, or too large for this computer: it asks for more memory than Finbook can use.</source>
         <translation>Die Datei ist beschädigt oder zu groß für diesen Computer: Sie benötigt mehr Arbeitsspeicher, als Finbook nutzen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="46"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="46"/>
         <source>The file is damaged: some of it changed after it was saved. Finbook can open what is still readable.</source>
         <translation>Die Datei ist beschädigt: Ein Teil davon wurde nach dem Speichern verändert. Finbook kann öffnen, was noch lesbar ist.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="50"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="50"/>
         <source>This computer has not enough free memory to open the file. Close other programs or documents and try again.</source>
         <translation>Dieser Computer hat nicht genug freien Arbeitsspeicher, um die Datei zu öffnen. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="57"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="57"/>
         <source>The file is damaged: part of it cannot be read.</source>
         <translation>Die Datei ist beschädigt: Ein Teil davon kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="64"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="64"/>
         <source>Finbook cannot open “%1”.</source>
         <translation>Finbook kann „%1“ nicht öffnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="68"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="68"/>
         <source>Finbook kept the version saved before it as “%1” in the same folder: open that one to get your work back.</source>
         <translation>Finbook hat die zuvor gespeicherte Version als „%1“ im selben Ordner aufbewahrt: Öffnen Sie diese, um Ihre Arbeit wiederherzustellen.</translation>
     </message>
@@ -1274,277 +1292,283 @@
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
         <source>the frame list</source>
         <translation>die Einzelbildliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
         <source>a frame</source>
         <translation>ein Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>das Einzelbild ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
         <source>%1; the frame is left out</source>
         <translation>%1; das Einzelbild wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>a frame id</source>
         <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>the frame</source>
         <translation>das Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>a frame hold</source>
         <translation>eine Haltedauer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the object list</source>
         <translation>die Objektliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>das Objekt ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
         <source>%1; the object is left out</source>
         <translation>%1; das Objekt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="111"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
         <source>a chunk header</source>
         <translation>ein Blockkopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>a chunk</source>
         <translation>ein Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
         <source>chunk</source>
         <translation>Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
         <source>an object id</source>
         <translation>eine Objekt-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>the object</source>
         <translation>das Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>the object flags</source>
         <translation>die Objektattribute</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>the mesh density</source>
         <translation>die Netzdichte</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="147"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
         <source>the object name</source>
         <translation>der Objektname</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
         <source>the stroke list</source>
         <translation>die Strichliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
         <source>a stroke id</source>
         <translation>eine Strich-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>the stroke</source>
         <translation>der Strich</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <source>its pose has %n stroke(s) but the object has %1</source>
+        <translation>
+            <numerusform>seine Pose hat %n Strich, das Objekt aber %1</numerusform>
+            <numerusform>seine Pose hat %n Striche, das Objekt aber %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <source>stroke %1 has %n point(s) but its pose has %2</source>
+        <translation>
+            <numerusform>Strich %1 hat %n Punkt, seine Pose aber %2</numerusform>
+            <numerusform>Strich %1 hat %n Punkte, seine Pose aber %2</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
         <source>a stroke reference</source>
         <translation>ein Strichverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="39"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 gibt %2 Einträge an; die %3, die hineinpassen, werden gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
         <source>an unknown chunk is left out</source>
         <translation>ein unbekannter Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>Block %1 kommt doppelt oder mit einem anderen Rig vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
         <source>%1; the chunk is left out</source>
         <translation>%1; der Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="251"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="252"/>
         <source>the skeleton&apos;s join</source>
         <translation>die Verbindung des Skeletts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
         <source>a join comes without a skeleton</source>
         <translation>eine Verbindung steht ohne Skelett</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>die Verbindung des Skeletts ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="275"/>
         <source>the pin list</source>
         <translation>die Pin-Liste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>a pin id</source>
         <translation>eine Pin-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
         <source>pin %1</source>
         <translation>Pin %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="284"/>
         <source>a pin position</source>
         <translation>eine Pin-Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
         <source>pin %1 has a non-finite position</source>
         <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
         <source>the cage corner list</source>
         <translation>die Käfigeckenliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>der Käfig hat weniger als 3 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
         <source>a cage corner</source>
         <translation>eine Käfigecke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>Käfigecke %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
         <source>a pose reference</source>
         <translation>ein Posenverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="325"/>
         <source>its pose: %1</source>
         <translation>seine Pose: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="328"/>
-        <source>its pose has %1 strokes but the object has %2</source>
-        <translation>seine Pose hat %1 Striche, das Objekt aber %2</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
-        <source>stroke %1 has %2 points but its pose has %3</source>
-        <translation>Strich %1 hat %2 Punkte, seine Pose aber %3</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>%1 has no id</source>
         <translation>%1 hat keine ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 hat die ID %2, die größer ist als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="356"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="357"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
@@ -1769,47 +1793,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="86"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="86"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="89"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="89"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="92"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="92"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="114"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="114"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="153"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="153"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="174"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="174"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="222"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="222"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="298"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="298"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="305"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="305"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -1869,10 +1893,13 @@
 </context>
 <context>
     <name>finbook::model::FrameListModel</name>
-    <message>
+    <message numerus="yes">
         <location filename="../model/src/frame_list_model.cpp" line="132"/>
-        <source>Frame %1, held for %2 frames</source>
-        <translation>Einzelbild %1, %2 Einzelbilder lang gehalten</translation>
+        <source>Frame %1, held for %n frame(s)</source>
+        <translation>
+            <numerusform>Einzelbild %1, %n Einzelbild lang gehalten</numerusform>
+            <numerusform>Einzelbild %1, %n Einzelbilder lang gehalten</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../model/src/frame_list_model.cpp" line="133"/>
@@ -1883,7 +1910,7 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="39"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="40"/>
         <source>Bone</source>
         <translation>Knochen</translation>
     </message>
@@ -1915,8 +1942,8 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
-        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
-        <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um es zu ziehen, die Wurzel, um das Objekt zu verschieben; Alt-Klick auf ein Gelenk sperrt es; die Wurzel mit Umschalt auf ein anderes Teil ziehen verbindet beide.</translation>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
+        <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um es zu ziehen, die Wurzel, um das Objekt zu verschieben; L über einem Gelenk sperrt es; die Wurzel mit Umschalt auf ein anderes Teil ziehen verbindet beide.</translation>
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
@@ -1929,73 +1956,73 @@
         <translation>%1 hängt bereits an diesem Teil und kann daher nicht umgekehrt daran hängen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="85"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="115"/>
         <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
         <translation>Gelenke bearbeiten: Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="100"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="130"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>Setzen Sie die Pose zurück oder wenden Sie sie auf die Zeichnung an, bevor Sie Gelenke bearbeiten.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="192"/>
         <source>Unlock Joint</source>
         <translation>Gelenk entsperren</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="192"/>
         <source>Lock Joint</source>
         <translation>Gelenk sperren</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="164"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="197"/>
         <source>Reset Bone Pose</source>
         <translation>Knochenpose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="200"/>
         <source>Edit Joints</source>
         <translation>Gelenke bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="172"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="205"/>
         <source>Insert Joint Here</source>
         <translation>Gelenk hier einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="174"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="207"/>
         <source>Delete Joint</source>
         <translation>Gelenk löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="178"/>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="230"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="211"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="263"/>
         <source>Make Root Joint</source>
         <translation>Zum Wurzelgelenk machen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="187"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="220"/>
         <source>Detach from %1</source>
         <translation>Von %1 lösen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="190"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="223"/>
         <source>Make Character Root</source>
         <translation>Zur Wurzel der Figur machen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="224"/>
         <source>Join Overlapping Parts</source>
         <translation>Überlappende Teile verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="242"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="275"/>
         <source>No part overlaps another part&apos;s skeleton.</source>
         <translation>Kein Teil überlappt das Skelett eines anderen Teils.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="246"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="279"/>
         <source>Joined %n part(s).</source>
         <translation>
             <numerusform>%n Teil verbunden.</numerusform>
@@ -2006,32 +2033,32 @@
 <context>
     <name>finbook::ui::BrushToolBar</name>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="15"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="15"/>
         <source>Brush</source>
         <translation>Pinsel</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="29"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="29"/>
         <source>Width:</source>
         <translation>Breite:</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="34"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="34"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="36"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="36"/>
         <source>Smoothing:</source>
         <translation>Glättung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="39"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="39"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>Wie stark ein Strich beim Absetzen des Stifts geglättet wird</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="84"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="84"/>
         <source>Pen colour %1</source>
         <translation>Stiftfarbe %1</translation>
     </message>
@@ -2039,42 +2066,42 @@
 <context>
     <name>finbook::ui::CageActions</name>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="32"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="33"/>
         <source>&amp;Fit Cage</source>
         <translation>Käfig an&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="34"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
         <source>Put a coarse cage around the current object in one step</source>
         <translation>Einen groben Käfig in einem Schritt um das aktuelle Objekt legen</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
         <source>Shift+C</source>
         <translation>Shift+C</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="37"/>
         <source>Edit Cage &amp;Shape</source>
         <translation>Käfig&amp;form bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="40"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="41"/>
         <source>Change the cage itself (move, add or delete corners) instead of posing with it</source>
         <translation>Den Käfig selbst ändern (Ecken verschieben, hinzufügen oder löschen), statt damit zu posieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="66"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
         <source>Corners </source>
         <translation>Ecken </translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="68"/>
         <source>About how many corners Fit Cage gives the cage</source>
         <translation>Ungefähr wie viele Ecken „Käfig anpassen“ dem Käfig gibt</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="81"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="82"/>
         <source>Choose an unlocked object with strokes to fit a cage to.</source>
         <translation>Wählen Sie ein nicht gesperrtes Objekt mit Strichen, um einen Käfig daran anzupassen.</translation>
     </message>
@@ -2087,12 +2114,12 @@
         <translation>Käfig</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="127"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="139"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>Wählen Sie zuerst ein Objekt: Der Käfig wird darum gelegt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="249"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="265"/>
         <source>A cage needs at least three corners.</source>
         <translation>Ein Käfig braucht mindestens drei Ecken.</translation>
     </message>
@@ -2100,12 +2127,12 @@
 <context>
     <name>finbook::ui::ColorButton</name>
     <message>
-        <location filename="../ui/src/color_button.cpp" line="13"/>
+        <location filename="../ui/src/widgets/color_button.cpp" line="13"/>
         <source>Choose a colour</source>
         <translation>Eine Farbe wählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/color_button.cpp" line="31"/>
+        <location filename="../ui/src/widgets/color_button.cpp" line="31"/>
         <source>Choose Colour</source>
         <translation>Farbe wählen</translation>
     </message>
@@ -2113,72 +2140,72 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="22"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="22"/>
         <source>&amp;Reset Pose</source>
         <translation>Pose &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="26"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="26"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung &amp;anwenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="25"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="25"/>
         <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
         <translation>Die Pins, Käfigecken oder Knochen des aktuellen Objekts in ihre Ruhepositionen zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="28"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="28"/>
         <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
         <translation>Die posierte Zeichnung zu den neuen Strichen des Objekts machen; die Pins, der Käfig oder das Skelett bleiben, wo sie sind</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="30"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="30"/>
         <source>Remo&amp;ve Rig</source>
         <translation>Rig &amp;entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="33"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="33"/>
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>Die Pins, den Käfig oder das Skelett vom aktuellen Objekt entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="51"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="51"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="61"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
         <source>R&amp;igidity</source>
         <translation>&amp;Steifigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="75"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="75"/>
         <source>Converged (Most Rigid)</source>
         <translation>Konvergiert (am starrsten)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="76"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="76"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Wie in der Veröffentlichung (zwei Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="77"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="77"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Steifer (+1 Durchgang)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="78"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="78"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Am steifsten (+3 Durchgänge)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="111"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="111"/>
         <source>Mesh density </source>
         <translation>Netzdichte </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="112"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="112"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Wie fein das Verformungsnetz des aktuellen Objekts ist (1 = Standard)</translation>
     </message>
@@ -2186,64 +2213,120 @@
 <context>
     <name>finbook::ui::DocumentSettingsDialog</name>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="26"/>
         <source>Start again after the last frame</source>
         <translation>Nach dem letzten Einzelbild wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="30"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="30"/>
         <source>Document Settings</source>
         <translation>Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="32"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="32"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="35"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="35"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="40"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="40"/>
         <source>Last</source>
         <translation>Letztes</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="50"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="50"/>
         <source>to</source>
         <translation>bis</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="54"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="54"/>
         <source>&amp;Frame rate:</source>
         <translation>&amp;Bildrate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="55"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="55"/>
         <source>Canvas size:</source>
         <translation>Leinwandgröße:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="56"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="56"/>
         <source>&amp;Background:</source>
         <translation>&amp;Hintergrund:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="57"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="57"/>
         <source>Loop:</source>
         <translation>Endlosschleife:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="58"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="58"/>
         <source>Play frames:</source>
         <translation>Einzelbilder abspielen:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="125"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="125"/>
         <source>Background Colour</source>
         <translation>Hintergrundfarbe</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_eraser.h" line="29"/>
+        <source>Eraser</source>
+        <translation>Radierer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eraser.cpp" line="158"/>
+        <source>Erase</source>
+        <translation>Radieren</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserToolBar</name>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="11"/>
+        <source>Eraser</source>
+        <translation>Radierer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="13"/>
+        <source>Cut Lines</source>
+        <translation>Linien schneiden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="14"/>
+        <source>Whole Strokes</source>
+        <translation>Ganze Striche</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="25"/>
+        <source>Erase the part of a line under the eraser (the rest is split into pieces)</source>
+        <translation>Radiert den Teil einer Linie unter dem Radierer (der Rest wird in Stücke geteilt)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="28"/>
+        <source>Erase every stroke the eraser touches (or hold Shift when you start rubbing)</source>
+        <translation>Radiert jeden Strich, den der Radierer berührt (oder Umschalt beim Beginn gedrückt halten)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="31"/>
+        <source>Size:</source>
+        <translation>Größe:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="35"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="36"/>
+        <source>The eraser&apos;s diameter on the canvas</source>
+        <translation>Der Durchmesser des Radierers auf der Zeichenfläche</translation>
     </message>
 </context>
 <context>
@@ -2431,7 +2514,7 @@
         <translation>Wird abgebrochen...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="86"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 exportiert</numerusform>
@@ -2439,17 +2522,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="96"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="97"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="121"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>„%1“ ist bereits vorhanden. Ersetzen?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="123"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n Datei am Ziel ist bereits vorhanden: „%1“. Ersetzen?</numerusform>
@@ -2457,22 +2540,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="125"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="126"/>
         <source>Replace Files?</source>
         <translation>Dateien ersetzen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="132"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="133"/>
         <source>Export Anyway?</source>
         <translation>Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="134"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="135"/>
         <source>It may take a long time and a lot of disk space. Export anyway?</source>
         <translation>Das kann lange dauern und viel Speicherplatz belegen. Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="142"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="143"/>
         <source>Cannot Export</source>
         <translation>Export nicht möglich</translation>
     </message>
@@ -2493,57 +2576,57 @@
 <context>
     <name>finbook::ui::FrameActions</name>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="13"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="13"/>
         <source>Insert Frame &amp;Before</source>
         <translation>Einzelbild &amp;davor einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="15"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="15"/>
         <source>&amp;Insert Frame After</source>
         <translation>Einzelbild da&amp;nach einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="17"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="17"/>
         <source>&amp;Duplicate Frame</source>
         <translation>Einzelbild d&amp;uplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="19"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="19"/>
         <source>Generate In-be&amp;tweens…</source>
         <translation>&amp;Zwischenbilder erzeugen…</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="21"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="21"/>
         <source>Delete Fra&amp;me</source>
         <translation>Einzelbild &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="24"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="24"/>
         <source>Move Frame &amp;Left</source>
         <translation>Einzelbild nach l&amp;inks verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="26"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="26"/>
         <source>Move Frame &amp;Right</source>
         <translation>Einzelbild nach &amp;rechts verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="29"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="29"/>
         <source>Hold Lon&amp;ger</source>
         <translation>Län&amp;ger halten</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="31"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="31"/>
         <source>Hold &amp;Shorter</source>
         <translation>&amp;Kürzer halten</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="34"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="34"/>
         <source>&amp;Previous Frame</source>
         <translation>&amp;Vorheriges Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="37"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="37"/>
         <source>&amp;Next Frame</source>
         <translation>Nä&amp;chstes Einzelbild</translation>
     </message>
@@ -2551,7 +2634,7 @@
 <context>
     <name>finbook::ui::HandTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_hand.h" line="16"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="16"/>
         <source>Hand</source>
         <translation>Hand</translation>
     </message>
@@ -2609,72 +2692,72 @@
         <translation>Links wird das erste Schlüsselbild bevorzugt, rechts das zweite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
         <source>F&amp;avour:</source>
         <translation>&amp;Gewichtung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="95"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="96"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Pins und Käfigecken auf &amp;Bögen bewegen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="98"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="99"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Ein zwischen den Schlüsselbildern geschwungenes Glied behält seine Länge. Ohne diese Option bewegt sich jeder Zielpunkt geradlinig.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="128"/>
         <source>(unnamed)</source>
         <translation>(unbenannt)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="130"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
         <source>%1: interpolated</source>
         <translation>%1: interpoliert</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="133"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (keine Pins, kein Käfig und kein Skelett)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (Pins, Käfig oder Skelett unterscheiden sich zwischen den Schlüsselbildern)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="139"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: nur im ersten Schlüsselbild, in der ersten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: nur im zweiten Schlüsselbild, in der zweiten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="150"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
         <source>Select two different frames as keys.</source>
         <translation>Wählen Sie zwei verschiedene Einzelbilder als Schlüsselbilder aus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="160"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="161"/>
         <source>Posing the preview…</source>
         <translation>Die Vorschau wird berechnet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="192"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="193"/>
         <source>The preview could not be posed: %1</source>
         <translation>Die Vorschau konnte nicht posiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="197"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Kein Objekt hat in beiden Schlüsselbildern passende Pins oder einen passenden Käfig: Die Zwischenbilder halten nur die Zeichnungen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="199"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="200"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Die Leinwand zeigt das mittlere Zwischenbild.</translation>
     </message>
@@ -2682,452 +2765,403 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window.cpp" line="144"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window.cpp" line="168"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="149"/>
+        <location filename="../ui/src/window/main_window.cpp" line="169"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window.cpp" line="172"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="153"/>
+        <location filename="../ui/src/window/main_window.cpp" line="173"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="189"/>
+        <location filename="../ui/src/window/main_window.cpp" line="209"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window.cpp" line="220"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window.cpp" line="221"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="206"/>
-        <location filename="../ui/src/main_window_files.cpp" line="303"/>
+        <location filename="../ui/src/window/main_window.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="237"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window.cpp" line="227"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="30"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="26"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook-Animationen (*.finbook);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="41"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="76"/>
-        <location filename="../ui/src/main_window_files.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="72"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="89"/>
         <source>Cannot Open File</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="124"/>
         <source>Cannot Save File</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="161"/>
-        <source>The folder %1 does not exist; choose an existing folder and export again.</source>
-        <translation>Der Ordner %1 existiert nicht; wählen Sie einen vorhandenen Ordner und exportieren Sie erneut.</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="175"/>
-        <source>Replace Files?</source>
-        <translation>Dateien ersetzen?</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="176"/>
-        <source>%1 already holds exported frames. Replace them?</source>
-        <translation>%1 enthält bereits exportierte Einzelbilder. Ersetzen?</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Exporting frames...</source>
-        <translation>Einzelbilder werden exportiert...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="160"/>
-        <location filename="../ui/src/main_window_files.cpp" line="206"/>
-        <source>Cannot Export Frames</source>
-        <translation>Einzelbilder können nicht exportiert werden</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="100"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="96"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Problem behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Probleme behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="209"/>
-        <source>Exported %n frame(s) to %1</source>
-        <translation>
-            <numerusform>%n Einzelbild nach %1 exportiert</numerusform>
-            <numerusform>%n Einzelbilder nach %1 exportiert</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="180"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="189"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="199"/>
         <source>Cannot Import Mesh</source>
         <translation>Netz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="269"/>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="291"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
         <source>Damaged File</source>
         <translation>Beschädigte Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="292"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="295"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
         <source>Open Anyway</source>
         <translation>Trotzdem öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="305"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="239"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="306"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="312"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="246"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="325"/>
-        <source>Export Frames to Folder</source>
-        <translation>Einzelbilder in Ordner exportieren</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="44"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="45"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="56"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="59"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="60"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="63"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="86"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="85"/>
-        <source>&amp;Export Frames...</source>
-        <translation>Einzelbilder &amp;exportieren...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="117"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="119"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="121"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="131"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="140"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="178"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="181"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="185"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="196"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="211"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="224"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="35"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="35"/>
         <source>&amp;Deform</source>
         <translation>&amp;Verformen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="50"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="50"/>
         <source>Deform</source>
         <translation>Verformen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="66"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="66"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="39"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="41"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="45"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="45"/>
         <source>Apply Pose</source>
         <translation>Pose anwenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="47"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="47"/>
         <source>Remove Rig</source>
         <translation>Rig entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="49"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="49"/>
         <source>Reset</source>
         <translation>Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="51"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="51"/>
         <source>Shape</source>
         <translation>Form</translation>
     </message>
@@ -3230,92 +3264,92 @@
 <context>
     <name>finbook::ui::ObjectActions</name>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="28"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="28"/>
         <source>&amp;New Object</source>
         <translation>&amp;Neues Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="30"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="30"/>
         <source>&amp;Delete Object</source>
         <translation>Objekt &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="31"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="31"/>
         <source>&amp;Merge Objects</source>
         <translation>Objekte &amp;zusammenführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="34"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="34"/>
         <source>Move &amp;Selection to Object</source>
         <translation>&amp;Auswahl in Objekt verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="35"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="35"/>
         <source>Bring &amp;Forward</source>
         <translation>Nach &amp;vorne bringen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="37"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="37"/>
         <source>Send &amp;Backward</source>
         <translation>Nach &amp;hinten stellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="39"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="39"/>
         <source>&amp;Visible</source>
         <translation>&amp;Sichtbar</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="40"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="40"/>
         <source>&amp;Locked</source>
         <translation>&amp;Gesperrt</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="43"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="43"/>
         <source>New object above the current one</source>
         <translation>Neues Objekt über dem aktuellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="44"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="44"/>
         <source>Merge the selected objects, or the current one into the one below</source>
         <translation>Die ausgewählten Objekte zusammenführen oder das aktuelle mit dem darunterliegenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="45"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="45"/>
         <source>Move the selected strokes to another object</source>
         <translation>Die ausgewählten Striche in ein anderes Objekt verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="47"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="47"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="48"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="48"/>
         <source>Delete</source>
         <translation>Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="49"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="49"/>
         <source>Merge</source>
         <translation>Zusammenführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="50"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="50"/>
         <source>Move To</source>
         <translation>Verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="119"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="119"/>
         <source>Object %1</source>
         <translation>Objekt %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="171"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="171"/>
         <source>Merge Objects</source>
         <translation>Objekte zusammenführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="193"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="193"/>
         <source>Move Strokes to Object</source>
         <translation>Striche in Objekt verschieben</translation>
     </message>
@@ -3323,37 +3357,37 @@
 <context>
     <name>finbook::ui::OnionSkinEditor</name>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="14"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="14"/>
         <source>Show onion skin</source>
         <translation>Zwiebelhaut anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="24"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="24"/>
         <source> %</source>
         <translation> %</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="27"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="27"/>
         <source>Frames before:</source>
         <translation>Einzelbilder davor:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="28"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="28"/>
         <source>Frames after:</source>
         <translation>Einzelbilder danach:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="29"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="29"/>
         <source>Opacity of the nearest frame:</source>
         <translation>Deckkraft des nächsten Einzelbilds:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="30"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="30"/>
         <source>Tint before:</source>
         <translation>Tönung davor:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="31"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="31"/>
         <source>Tint after:</source>
         <translation>Tönung danach:</translation>
     </message>
@@ -3361,12 +3395,12 @@
 <context>
     <name>finbook::ui::PenTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_pen.h" line="30"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="30"/>
         <source>Pen</source>
         <translation>Stift</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_pen.cpp" line="88"/>
+        <location filename="../ui/src/tools/tool_pen.cpp" line="88"/>
         <source>Draw Stroke</source>
         <translation>Strich zeichnen</translation>
     </message>
@@ -3374,12 +3408,12 @@
 <context>
     <name>finbook::ui::PinTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="19"/>
         <source>Pin</source>
         <translation>Pin</translation>
     </message>
     <message>
-        <location filename="../ui/src/pins/tool_pin.cpp" line="156"/>
+        <location filename="../ui/src/pins/tool_pin.cpp" line="162"/>
         <source>Click on a visible, unlocked drawing to pin it.</source>
         <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um einen Pin zu setzen.</translation>
     </message>
@@ -3387,28 +3421,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="64"/>
-        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="64"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
         <source>Pl&amp;ay</source>
         <translation>Abs&amp;pielen</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="68"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="68"/>
         <source>Play or pause the animation</source>
         <translation>Animation abspielen oder anhalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="76"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="76"/>
         <source>L&amp;oop</source>
         <translation>&amp;Endlosschleife</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="80"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="80"/>
         <source>Start again at the end of the play range</source>
         <translation>Am Ende des Wiedergabebereichs wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
         <source>P&amp;ause</source>
         <translation>&amp;Pause</translation>
     </message>
@@ -3416,77 +3450,77 @@
 <context>
     <name>finbook::ui::PreferencesDialog</name>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="21"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="21"/>
         <source>Preferences</source>
         <translation>Einstellungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="25"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="25"/>
         <source>New Documents</source>
         <translation>Neue Dokumente</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="26"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="27"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="27"/>
         <source>Keyboard Shortcuts</source>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="42"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="42"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="48"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="48"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="55"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="55"/>
         <source> min</source>
         <translation> min</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="56"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="56"/>
         <source>Never</source>
         <translation>Nie</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="57"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="57"/>
         <source>How often Finbook keeps a recovery copy of unsaved changes, offered at the next start if Finbook did not close normally.</source>
         <translation>Wie oft Finbook eine Wiederherstellungskopie ungespeicherter Änderungen anlegt; sie wird beim nächsten Start angeboten, falls Finbook nicht normal beendet wurde.</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="61"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="61"/>
         <source>Frame rate:</source>
         <translation>Bildrate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="62"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="62"/>
         <source>Canvas width:</source>
         <translation>Leinwandbreite:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="63"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="63"/>
         <source>Canvas height:</source>
         <translation>Leinwandhöhe:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="64"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="64"/>
         <source>Autosave every:</source>
         <translation>Automatisch speichern alle:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="86"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="86"/>
         <source>Conflicting Shortcuts</source>
         <translation>Kollidierende Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="87"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="87"/>
         <source>Two or more actions share a shortcut. Change or clear the shortcuts marked in red, then press OK again.</source>
         <translation>Mehrere Aktionen teilen sich ein Tastenkürzel. Ändern oder löschen Sie die rot markierten Kürzel und drücken Sie erneut OK.</translation>
     </message>
@@ -3550,27 +3584,27 @@
 <context>
     <name>finbook::ui::SelectTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_select.h" line="28"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="28"/>
         <source>Select</source>
         <translation>Auswahl</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="264"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="264"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>So weit lassen sich die Striche nicht umformen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="273"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="273"/>
         <source>Move Strokes</source>
         <translation>Striche verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="274"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="274"/>
         <source>Rotate Strokes</source>
         <translation>Striche drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="275"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="275"/>
         <source>Scale Strokes</source>
         <translation>Striche skalieren</translation>
     </message>
@@ -3578,32 +3612,32 @@
 <context>
     <name>finbook::ui::ShortcutEditor</name>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="31"/>
         <source>Action</source>
         <translation>Aktion</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="31"/>
         <source>Shortcut</source>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="31"/>
         <source>Alternative</source>
         <translation>Alternative</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="72"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="72"/>
         <source>Restore Defaults</source>
         <translation>Standardwerte wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="132"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="132"/>
         <source>%1 is used by: %2</source>
         <translation>%1 wird verwendet von: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="143"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="143"/>
         <source>Conflicting shortcuts:</source>
         <translation>Kollidierende Tastenkürzel:</translation>
     </message>
@@ -3611,42 +3645,42 @@
 <context>
     <name>finbook::ui::ShortcutsDialog</name>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="20"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="20"/>
         <source>Keyboard Shortcuts</source>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="26"/>
         <source>Pan the view</source>
         <translation>Ansicht verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="26"/>
         <source>Space + drag, or middle button drag</source>
         <translation>Leertaste + Ziehen oder Ziehen mit mittlerer Maustaste</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="27"/>
         <source>Zoom about the cursor</source>
         <translation>Um den Mauszeiger zoomen</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="27"/>
         <source>Mouse wheel</source>
         <translation>Mausrad</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="31"/>
         <source>Action</source>
         <translation>Aktion</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="31"/>
         <source>Shortcut</source>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="53"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="53"/>
         <source>Filter</source>
         <translation>Filter</translation>
     </message>
@@ -3654,98 +3688,85 @@
 <context>
     <name>finbook::ui::SkeletonPanel</name>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
         <source>Bone complexity</source>
         <translation>Knochenanzahl</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
         <source>Merge junctions</source>
         <translation>Verzweigungen zusammenführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
         <source>Prune branches</source>
         <translation>Äste beschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="22"/>
         <source>Collapse short bones</source>
         <translation>Kurze Knochen zusammenfassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="23"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
         <source>More bones follow the shape more closely</source>
         <translation>Mehr Knochen folgen der Form genauer</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Junctions closer than this become one</source>
         <translation>Verzweigungen, die näher beieinander liegen, werden zu einer</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
         <source>Remove side branches shorter than this</source>
         <translation>Seitenäste entfernen, die kürzer sind</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
         <source>Collapse inner bones shorter than this into one joint</source>
         <translation>Innere Knochen, die kürzer sind, zu einem Gelenk zusammenfassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="42"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="43"/>
         <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
         <translation>Wählen Sie das Werkzeug Knochen (K) und klicken Sie auf ein Objekt, um ihm ein Skelett zu geben.</translation>
     </message>
 </context>
 <context>
-    <name>finbook::ui::StrokeEraserTool</name>
-    <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
-        <source>Stroke Eraser</source>
-        <translation>Strich-Radierer</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
-        <source>Erase</source>
-        <translation>Radieren</translation>
-    </message>
-</context>
-<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="68"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="68"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="69"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="69"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>Benachbarte Einzelbilder beim Zeichnen blass anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
         <source>Before:</source>
         <translation>Davor:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="86"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="86"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>Wie viele vorherige Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="87"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="87"/>
         <source>After:</source>
         <translation>Danach:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="88"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="88"/>
         <source>How many later frames the onion skin shows</source>
         <translation>Wie viele folgende Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="119"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="119"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Einzelbild %1 von %2 · %3 fps</translation>
     </message>

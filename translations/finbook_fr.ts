@@ -812,79 +812,97 @@
     </message>
 </context>
 <context>
+    <name>ExportDone</name>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="26"/>
+        <source>Export Finished</source>
+        <translation>Exportation terminée</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="31"/>
+        <source>Show in Folder</source>
+        <translation>Afficher dans le dossier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="38"/>
+        <source>Open in Browser</source>
+        <translation>Ouvrir dans le navigateur</translation>
+    </message>
+</context>
+<context>
     <name>FileMessages</name>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="17"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="17"/>
         <source>The file is not there any more: it may have been moved, renamed or deleted.</source>
         <translation>Le fichier n&apos;est plus là&#xa0;: il a peut-être été déplacé, renommé ou supprimé.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="21"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="21"/>
         <source>This is a folder, not an animation. Choose a file ending in .finbook.</source>
         <translation>Ceci est un dossier, pas une animation. Choisissez un fichier se terminant par .finbook.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="23"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="23"/>
         <source>This is a device or a pipe, not an animation. Choose a file ending in .finbook.</source>
         <translation>Ceci est un périphérique ou un tube, pas une animation. Choisissez un fichier se terminant par .finbook.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="26"/>
         <source>You are not allowed to read this file. Ask whoever owns it to share it with you, or open a copy of it.</source>
         <translation>Vous n&apos;avez pas le droit de lire ce fichier. Demandez à son propriétaire de le partager avec vous, ou ouvrez-en une copie.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="29"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="29"/>
         <source>The disk could not read the file. If it is on a removable drive or a network folder, check that it is still connected.</source>
         <translation>Le disque n&apos;a pas pu lire le fichier. S&apos;il se trouve sur un support amovible ou dans un dossier réseau, vérifiez qu&apos;il est toujours connecté.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="33"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="33"/>
         <source>The file is empty: there is no drawing in it.</source>
         <translation>Le fichier est vide&#xa0;: il ne contient aucun dessin.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="34"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="34"/>
         <source>This is not a Finbook animation. Choose a file ending in .finbook.</source>
         <translation>Ce n&apos;est pas une animation Finbook. Choisissez un fichier se terminant par .finbook.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="37"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="37"/>
         <source>It was saved by a newer version of Finbook. Install that version to open it.</source>
         <translation>Il a été enregistré par une version plus récente de Finbook. Installez cette version pour l&apos;ouvrir.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="40"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="40"/>
         <source>The file is damaged near the end: it looks cut off. Perhaps a copy or a save was interrupted.</source>
         <translation>Le fichier est endommagé vers la fin&#xa0;: il semble tronqué. Une copie ou un enregistrement a peut-être été interrompu.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="43"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="43"/>
         <source>The file is damaged, or too large for this computer: it asks for more memory than Finbook can use.</source>
         <translation>Le fichier est endommagé, ou trop volumineux pour cet ordinateur&#xa0;: il demande plus de mémoire que Finbook ne peut en utiliser.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="46"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="46"/>
         <source>The file is damaged: some of it changed after it was saved. Finbook can open what is still readable.</source>
         <translation>Le fichier est endommagé&#xa0;: une partie a changé après son enregistrement. Finbook peut ouvrir ce qui reste lisible.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="50"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="50"/>
         <source>This computer has not enough free memory to open the file. Close other programs or documents and try again.</source>
         <translation>Cet ordinateur n&apos;a pas assez de mémoire libre pour ouvrir le fichier. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="57"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="57"/>
         <source>The file is damaged: part of it cannot be read.</source>
         <translation>Le fichier est endommagé&#xa0;: une partie ne peut pas être lue.</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="64"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="64"/>
         <source>Finbook cannot open “%1”.</source>
         <translation>Finbook ne peut pas ouvrir «&#xa0;%1&#xa0;».</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="68"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="68"/>
         <source>Finbook kept the version saved before it as “%1” in the same folder: open that one to get your work back.</source>
         <translation>Finbook a conservé la version enregistrée précédemment sous le nom «&#xa0;%1&#xa0;», dans le même dossier&#xa0;: ouvrez-la pour récupérer votre travail.</translation>
     </message>
@@ -1274,277 +1292,283 @@
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
         <source>the frame list</source>
         <translation>la liste des images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
         <source>a frame</source>
         <translation>une image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
         <source>%1; the frame is left out</source>
         <translation>%1&#xa0;; l&apos;image est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>a frame id</source>
         <translation>un identifiant d&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>the frame</source>
         <translation>l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>a frame hold</source>
         <translation>une durée d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the object list</source>
         <translation>la liste des objets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
         <source>an object</source>
         <translation>un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
         <source>%1; the object is left out</source>
         <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="111"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
         <source>a chunk header</source>
         <translation>un en-tête de bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>a chunk</source>
         <translation>un bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
         <source>chunk</source>
         <translation>bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
         <source>an object id</source>
         <translation>un identifiant d&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>the object</source>
         <translation>l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>the object flags</source>
         <translation>les attributs de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>the mesh density</source>
         <translation>la densité du maillage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="147"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
         <source>the object name</source>
         <translation>le nom de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
         <source>the stroke list</source>
         <translation>la liste des traits</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
         <source>a stroke id</source>
         <translation>un identifiant de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>the stroke</source>
         <translation>le trait</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <source>its pose has %n stroke(s) but the object has %1</source>
+        <translation>
+            <numerusform>sa pose a %n trait, mais l&apos;objet en a %1</numerusform>
+            <numerusform>sa pose a %n traits, mais l&apos;objet en a %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <source>stroke %1 has %n point(s) but its pose has %2</source>
+        <translation>
+            <numerusform>le trait %1 a %n point, mais sa pose en a %2</numerusform>
+            <numerusform>le trait %1 a %n points, mais sa pose en a %2</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
         <source>a stroke reference</source>
         <translation>une référence de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="39"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
         <source>an unknown chunk is left out</source>
         <translation>un bloc inconnu est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
         <source>%1; the chunk is left out</source>
         <translation>%1&#xa0;; le bloc est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="251"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="252"/>
         <source>the skeleton&apos;s join</source>
         <translation>la jonction du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
         <source>a join comes without a skeleton</source>
         <translation>une jonction est présente sans squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>la jonction du squelette est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="275"/>
         <source>the pin list</source>
         <translation>la liste des épingles</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>a pin id</source>
         <translation>un identifiant d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
         <source>pin %1</source>
         <translation>l&apos;épingle %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="284"/>
         <source>a pin position</source>
         <translation>une position d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
         <source>pin %1 has a non-finite position</source>
         <translation>l&apos;épingle %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
         <source>the cage corner list</source>
         <translation>la liste des coins de la cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>la cage a moins de 3 coins</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
         <source>a cage corner</source>
         <translation>un coin de cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>le coin de cage %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
         <source>a pose reference</source>
         <translation>une référence de pose</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="325"/>
         <source>its pose: %1</source>
         <translation>sa pose&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="328"/>
-        <source>its pose has %1 strokes but the object has %2</source>
-        <translation>sa pose a %1 traits, mais l&apos;objet en a %2</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
-        <source>stroke %1 has %2 points but its pose has %3</source>
-        <translation>le trait %1 a %2 points, mais sa pose en a %3</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>%1 has no id</source>
         <translation>%1 n&apos;a pas d&apos;identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="356"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="357"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
@@ -1769,47 +1793,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="86"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="86"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="89"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="89"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="92"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="92"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="114"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="114"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="153"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="153"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="174"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="174"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="222"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="222"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="298"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="298"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="305"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="305"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -1869,10 +1893,13 @@
 </context>
 <context>
     <name>finbook::model::FrameListModel</name>
-    <message>
+    <message numerus="yes">
         <location filename="../model/src/frame_list_model.cpp" line="132"/>
-        <source>Frame %1, held for %2 frames</source>
-        <translation>Image %1, exposée pendant %2 images</translation>
+        <source>Frame %1, held for %n frame(s)</source>
+        <translation>
+            <numerusform>Image %1, exposée pendant %n image</numerusform>
+            <numerusform>Image %1, exposée pendant %n images</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../model/src/frame_list_model.cpp" line="133"/>
@@ -1883,7 +1910,7 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="39"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="40"/>
         <source>Bone</source>
         <translation>Os</translation>
     </message>
@@ -1915,8 +1942,8 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
-        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
-        <translation>Faites glisser un os pour le tourner, une articulation pour la tirer, la racine pour déplacer l’objet ; Alt-clic sur une articulation la verrouille ; faites glisser la racine avec Maj sur une autre partie pour les joindre.</translation>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
+        <translation>Faites glisser un os pour le tourner, une articulation pour la tirer, la racine pour déplacer l’objet ; L sur une articulation la verrouille ; faites glisser la racine avec Maj sur une autre partie pour les joindre.</translation>
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
@@ -1929,73 +1956,73 @@
         <translation>%1 est déjà suspendu à cette partie ; elle ne peut donc pas être suspendue à lui en retour.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="85"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="115"/>
         <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
         <translation>Modifier les articulations : faites glisser une articulation pour la déplacer, cliquez sur un os pour insérer une articulation.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="100"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="130"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>Réinitialisez la pose ou appliquez-la au dessin avant de modifier les articulations.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="192"/>
         <source>Unlock Joint</source>
         <translation>Déverrouiller l’articulation</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="192"/>
         <source>Lock Joint</source>
         <translation>Verrouiller l’articulation</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="164"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="197"/>
         <source>Reset Bone Pose</source>
         <translation>Réinitialiser la pose de l’os</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="200"/>
         <source>Edit Joints</source>
         <translation>Modifier les articulations</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="172"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="205"/>
         <source>Insert Joint Here</source>
         <translation>Insérer une articulation ici</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="174"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="207"/>
         <source>Delete Joint</source>
         <translation>Supprimer l’articulation</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="178"/>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="230"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="211"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="263"/>
         <source>Make Root Joint</source>
         <translation>Faire l’articulation racine</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="187"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="220"/>
         <source>Detach from %1</source>
         <translation>Détacher de %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="190"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="223"/>
         <source>Make Character Root</source>
         <translation>Faire la racine du personnage</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="224"/>
         <source>Join Overlapping Parts</source>
         <translation>Joindre les parties qui se chevauchent</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="242"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="275"/>
         <source>No part overlaps another part&apos;s skeleton.</source>
         <translation>Aucune partie ne chevauche le squelette d’une autre partie.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="246"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="279"/>
         <source>Joined %n part(s).</source>
         <translation>
             <numerusform>%n partie jointe.</numerusform>
@@ -2006,32 +2033,32 @@
 <context>
     <name>finbook::ui::BrushToolBar</name>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="15"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="15"/>
         <source>Brush</source>
         <translation>Pinceau</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="29"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="29"/>
         <source>Width:</source>
         <translation>Épaisseur&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="34"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="34"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="36"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="36"/>
         <source>Smoothing:</source>
         <translation>Lissage&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="39"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="39"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>Force du lissage appliqué au trait quand le stylet se lève</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="84"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="84"/>
         <source>Pen colour %1</source>
         <translation>Couleur du stylo&#xa0;: %1</translation>
     </message>
@@ -2039,42 +2066,42 @@
 <context>
     <name>finbook::ui::CageActions</name>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="32"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="33"/>
         <source>&amp;Fit Cage</source>
         <translation>Ajuster une &amp;cage</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="34"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
         <source>Put a coarse cage around the current object in one step</source>
         <translation>Placer en une seule étape une cage grossière autour de l&apos;objet courant</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
         <source>Shift+C</source>
         <translation>Shift+C</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="37"/>
         <source>Edit Cage &amp;Shape</source>
         <translation>Modifier la &amp;forme de la cage</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="40"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="41"/>
         <source>Change the cage itself (move, add or delete corners) instead of posing with it</source>
         <translation>Modifier la cage elle-même (déplacer, ajouter ou supprimer des coins) au lieu de poser avec elle</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="66"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
         <source>Corners </source>
         <translation>Coins </translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="68"/>
         <source>About how many corners Fit Cage gives the cage</source>
         <translation>Nombre approximatif de coins que «&#xa0;Ajuster une cage&#xa0;» donne à la cage</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="81"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="82"/>
         <source>Choose an unlocked object with strokes to fit a cage to.</source>
         <translation>Choisissez un objet déverrouillé contenant des traits pour y ajuster une cage.</translation>
     </message>
@@ -2087,12 +2114,12 @@
         <translation>Cage</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="127"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="139"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>Choisissez d&apos;abord un objet&#xa0;: la cage se place autour de lui.</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="249"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="265"/>
         <source>A cage needs at least three corners.</source>
         <translation>Une cage doit avoir au moins trois coins.</translation>
     </message>
@@ -2100,12 +2127,12 @@
 <context>
     <name>finbook::ui::ColorButton</name>
     <message>
-        <location filename="../ui/src/color_button.cpp" line="13"/>
+        <location filename="../ui/src/widgets/color_button.cpp" line="13"/>
         <source>Choose a colour</source>
         <translation>Choisir une couleur</translation>
     </message>
     <message>
-        <location filename="../ui/src/color_button.cpp" line="31"/>
+        <location filename="../ui/src/widgets/color_button.cpp" line="31"/>
         <source>Choose Colour</source>
         <translation>Choisir une couleur</translation>
     </message>
@@ -2113,72 +2140,72 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="22"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="22"/>
         <source>&amp;Reset Pose</source>
         <translation>&amp;Réinitialiser la pose</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="26"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="26"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>&amp;Appliquer la pose au dessin</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="25"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="25"/>
         <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
         <translation>Ramener les épingles, les coins de cage ou les os de l&apos;objet courant à leur position de repos</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="28"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="28"/>
         <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
         <translation>Faire du dessin posé les nouveaux traits de l&apos;objet&#xa0;; les épingles, la cage ou le squelette restent en place</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="30"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="30"/>
         <source>Remo&amp;ve Rig</source>
         <translation>Re&amp;tirer l&apos;armature</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="33"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="33"/>
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>Retirer les épingles, la cage ou le squelette de l&apos;objet courant</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="51"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="51"/>
         <source>Preparing the deformation…</source>
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="61"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
         <source>R&amp;igidity</source>
         <translation>R&amp;igidité</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="75"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="75"/>
         <source>Converged (Most Rigid)</source>
         <translation>Convergence (rigidité maximale)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="76"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="76"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Comme dans l&apos;article (deux étapes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="77"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="77"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Plus rigide (+1 passe)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="78"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="78"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Le plus rigide (+3 passes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="111"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="111"/>
         <source>Mesh density </source>
         <translation>Densité du maillage </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="112"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="112"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Finesse du maillage de déformation de l&apos;objet courant (1 = par défaut)</translation>
     </message>
@@ -2186,64 +2213,120 @@
 <context>
     <name>finbook::ui::DocumentSettingsDialog</name>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="26"/>
         <source>Start again after the last frame</source>
         <translation>Recommencer après la dernière image</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="30"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="30"/>
         <source>Document Settings</source>
         <translation>Paramètres du document</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="32"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="32"/>
         <source> fps</source>
         <translation> i/s</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="35"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="35"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="40"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="40"/>
         <source>Last</source>
         <translation>Dernière</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="50"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="50"/>
         <source>to</source>
         <translation>à</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="54"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="54"/>
         <source>&amp;Frame rate:</source>
         <translation>&amp;Fréquence d&apos;images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="55"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="55"/>
         <source>Canvas size:</source>
         <translation>Taille du canevas&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="56"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="56"/>
         <source>&amp;Background:</source>
         <translation>Arrière-&amp;plan&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="57"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="57"/>
         <source>Loop:</source>
         <translation>Boucle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="58"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="58"/>
         <source>Play frames:</source>
         <translation>Images à lire&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="125"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="125"/>
         <source>Background Colour</source>
         <translation>Couleur d&apos;arrière-plan</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_eraser.h" line="29"/>
+        <source>Eraser</source>
+        <translation>Gomme</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eraser.cpp" line="158"/>
+        <source>Erase</source>
+        <translation>Effacer</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserToolBar</name>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="11"/>
+        <source>Eraser</source>
+        <translation>Gomme</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="13"/>
+        <source>Cut Lines</source>
+        <translation>Couper les traits</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="14"/>
+        <source>Whole Strokes</source>
+        <translation>Traits entiers</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="25"/>
+        <source>Erase the part of a line under the eraser (the rest is split into pieces)</source>
+        <translation>Efface la partie d’un trait sous la gomme (le reste est coupé en morceaux)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="28"/>
+        <source>Erase every stroke the eraser touches (or hold Shift when you start rubbing)</source>
+        <translation>Efface chaque trait que touche la gomme (ou maintenez Maj en commençant à gommer)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="31"/>
+        <source>Size:</source>
+        <translation>Taille&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="35"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="36"/>
+        <source>The eraser&apos;s diameter on the canvas</source>
+        <translation>Le diamètre de la gomme sur la toile</translation>
     </message>
 </context>
 <context>
@@ -2431,7 +2514,7 @@
         <translation>Annulation...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="86"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n fichier exporté dans %1</numerusform>
@@ -2439,17 +2522,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="96"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="97"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export annulé&#xa0;; rien n&apos;a été écrit.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="121"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>«&#xa0;%1&#xa0;» existe déjà. Le remplacer&#xa0;?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="123"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n fichier existe déjà à la destination&#xa0;: «&#xa0;%1&#xa0;». Le remplacer&#xa0;?</numerusform>
@@ -2457,22 +2540,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="125"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="126"/>
         <source>Replace Files?</source>
         <translation>Remplacer les fichiers&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="132"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="133"/>
         <source>Export Anyway?</source>
         <translation>Exporter quand même ?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="134"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="135"/>
         <source>It may take a long time and a lot of disk space. Export anyway?</source>
         <translation>Cela peut prendre longtemps et beaucoup d’espace disque. Exporter quand même ?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="142"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="143"/>
         <source>Cannot Export</source>
         <translation>Impossible d&apos;exporter</translation>
     </message>
@@ -2493,57 +2576,57 @@
 <context>
     <name>finbook::ui::FrameActions</name>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="13"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="13"/>
         <source>Insert Frame &amp;Before</source>
         <translation>Insérer une image ava&amp;nt</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="15"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="15"/>
         <source>&amp;Insert Frame After</source>
         <translation>&amp;Insérer une image après</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="17"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="17"/>
         <source>&amp;Duplicate Frame</source>
         <translation>&amp;Dupliquer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="19"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="19"/>
         <source>Generate In-be&amp;tweens…</source>
         <translation>Générer des in&amp;tervalles…</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="21"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="21"/>
         <source>Delete Fra&amp;me</source>
         <translation>&amp;Supprimer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="24"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="24"/>
         <source>Move Frame &amp;Left</source>
         <translation>Déplacer l&apos;image vers la &amp;gauche</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="26"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="26"/>
         <source>Move Frame &amp;Right</source>
         <translation>Déplacer l&apos;image vers la d&amp;roite</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="29"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="29"/>
         <source>Hold Lon&amp;ger</source>
         <translation>&amp;Allonger l&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="31"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="31"/>
         <source>Hold &amp;Shorter</source>
         <translation>Ra&amp;ccourcir l&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="34"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="34"/>
         <source>&amp;Previous Frame</source>
         <translation>Image &amp;précédente</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="37"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="37"/>
         <source>&amp;Next Frame</source>
         <translation>Image sui&amp;vante</translation>
     </message>
@@ -2551,7 +2634,7 @@
 <context>
     <name>finbook::ui::HandTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_hand.h" line="16"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="16"/>
         <source>Hand</source>
         <translation>Main</translation>
     </message>
@@ -2609,72 +2692,72 @@
         <translation>À gauche, la première clé est favorisée&#xa0;; à droite, la seconde.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
         <source>F&amp;avour:</source>
         <translation>Fa&amp;voriser&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="95"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="96"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Déplacer les épingles et les coins de cage en &amp;arcs</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="98"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="99"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Un membre qui pivote entre les clés garde sa longueur. Si la case est décochée, chaque cible se déplace en ligne droite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="128"/>
         <source>(unnamed)</source>
         <translation>(sans nom)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="130"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
         <source>%1: interpolated</source>
         <translation>%1&#xa0;: interpolé</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="133"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ni épingles, ni cage, ni squelette)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ses épingles, sa cage ou son squelette diffèrent entre les clés)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="139"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1&#xa0;: seulement dans la première clé, maintenu pendant la première moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1&#xa0;: seulement dans la seconde clé, maintenu pendant la seconde moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="150"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
         <source>Select two different frames as keys.</source>
         <translation>Sélectionnez deux images différentes comme clés.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="160"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="161"/>
         <source>Posing the preview…</source>
         <translation>Calcul de l’aperçu…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="192"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="193"/>
         <source>The preview could not be posed: %1</source>
         <translation>Impossible de poser l&apos;aperçu&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="197"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Aucun objet n&apos;a d&apos;épingles ou de cage correspondantes dans les deux clés&#xa0;: les intervalles ne feront que maintenir les dessins.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="199"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="200"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Le canevas montre l&apos;intervalle du milieu.</translation>
     </message>
@@ -2682,452 +2765,403 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window.cpp" line="144"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window.cpp" line="168"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="149"/>
+        <location filename="../ui/src/window/main_window.cpp" line="169"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window.cpp" line="172"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="153"/>
+        <location filename="../ui/src/window/main_window.cpp" line="173"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="189"/>
+        <location filename="../ui/src/window/main_window.cpp" line="209"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window.cpp" line="220"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window.cpp" line="221"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="206"/>
-        <location filename="../ui/src/main_window_files.cpp" line="303"/>
+        <location filename="../ui/src/window/main_window.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="237"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window.cpp" line="227"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="35"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="35"/>
         <source>&amp;Deform</source>
         <translation>Défor&amp;mer</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="50"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="50"/>
         <source>Deform</source>
         <translation>Déformation</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="66"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="66"/>
         <source>Preparing the deformation…</source>
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="30"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="26"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Animations Finbook (*.finbook);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="41"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="76"/>
-        <location filename="../ui/src/main_window_files.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="72"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="89"/>
         <source>Cannot Open File</source>
         <translation>Impossible d&apos;ouvrir le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="124"/>
         <source>Cannot Save File</source>
         <translation>Impossible d&apos;enregistrer le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="161"/>
-        <source>The folder %1 does not exist; choose an existing folder and export again.</source>
-        <translation>Le dossier %1 n&apos;existe pas&#xa0;; choisissez un dossier existant et exportez à nouveau.</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="175"/>
-        <source>Replace Files?</source>
-        <translation>Remplacer les fichiers&#xa0;?</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="176"/>
-        <source>%1 already holds exported frames. Replace them?</source>
-        <translation>%1 contient déjà des images exportées. Les remplacer&#xa0;?</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Exporting frames...</source>
-        <translation>Exportation des images...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Cancel</source>
-        <translation>Annuler</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="160"/>
-        <location filename="../ui/src/main_window_files.cpp" line="206"/>
-        <source>Cannot Export Frames</source>
-        <translation>Impossible d&apos;exporter les images</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="100"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="96"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problème réparé)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problèmes réparés)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="209"/>
-        <source>Exported %n frame(s) to %1</source>
-        <translation>
-            <numerusform>%n image exportée dans %1</numerusform>
-            <numerusform>%n images exportées dans %1</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="180"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="189"/>
         <source>No recent files</source>
         <translation>Aucun fichier récent</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="199"/>
         <source>Cannot Import Mesh</source>
         <translation>Impossible d&apos;importer le maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="269"/>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="291"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
         <source>Damaged File</source>
         <translation>Fichier endommagé</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="292"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="295"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
         <source>Open Anyway</source>
         <translation>Ouvrir quand même</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="305"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="239"/>
         <source>Unsaved Changes</source>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="306"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="312"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="246"/>
         <source>Open Animation</source>
         <translation>Ouvrir une animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
         <source>Save Animation</source>
         <translation>Enregistrer l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
         <source>untitled.finbook</source>
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="325"/>
-        <source>Export Frames to Folder</source>
-        <translation>Exporter les images dans un dossier</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="44"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="45"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="56"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="59"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="60"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="63"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="86"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="85"/>
-        <source>&amp;Export Frames...</source>
-        <translation>E&amp;xporter les images...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="117"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="119"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="121"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="131"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="140"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="178"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="181"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="185"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="196"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="211"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="224"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="39"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="41"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="45"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="45"/>
         <source>Apply Pose</source>
         <translation>Appliquer la pose</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="47"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="47"/>
         <source>Remove Rig</source>
         <translation>Retirer l&apos;armature</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="49"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="49"/>
         <source>Reset</source>
         <translation>Réinitialiser</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="51"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="51"/>
         <source>Shape</source>
         <translation>Forme</translation>
     </message>
@@ -3230,92 +3264,92 @@
 <context>
     <name>finbook::ui::ObjectActions</name>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="28"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="28"/>
         <source>&amp;New Object</source>
         <translation>&amp;Nouvel objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="30"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="30"/>
         <source>&amp;Delete Object</source>
         <translation>&amp;Supprimer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="31"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="31"/>
         <source>&amp;Merge Objects</source>
         <translation>&amp;Fusionner les objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="34"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="34"/>
         <source>Move &amp;Selection to Object</source>
         <translation>&amp;Déplacer la sélection vers un objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="35"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="35"/>
         <source>Bring &amp;Forward</source>
         <translation>&amp;Monter</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="37"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="37"/>
         <source>Send &amp;Backward</source>
         <translation>D&amp;escendre</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="39"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="39"/>
         <source>&amp;Visible</source>
         <translation>&amp;Visible</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="40"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="40"/>
         <source>&amp;Locked</source>
         <translation>Ve&amp;rrouillé</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="43"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="43"/>
         <source>New object above the current one</source>
         <translation>Nouvel objet au-dessus de l&apos;objet courant</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="44"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="44"/>
         <source>Merge the selected objects, or the current one into the one below</source>
         <translation>Fusionner les objets sélectionnés, ou l&apos;objet courant avec celui du dessous</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="45"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="45"/>
         <source>Move the selected strokes to another object</source>
         <translation>Déplacer les traits sélectionnés vers un autre objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="47"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="47"/>
         <source>New</source>
         <translation>Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="48"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="48"/>
         <source>Delete</source>
         <translation>Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="49"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="49"/>
         <source>Merge</source>
         <translation>Fusionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="50"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="50"/>
         <source>Move To</source>
         <translation>Déplacer vers</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="119"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="119"/>
         <source>Object %1</source>
         <translation>Objet %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="171"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="171"/>
         <source>Merge Objects</source>
         <translation>Fusionner les objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="193"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="193"/>
         <source>Move Strokes to Object</source>
         <translation>Déplacer les traits vers un objet</translation>
     </message>
@@ -3323,37 +3357,37 @@
 <context>
     <name>finbook::ui::OnionSkinEditor</name>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="14"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="14"/>
         <source>Show onion skin</source>
         <translation>Afficher la pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="24"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="24"/>
         <source> %</source>
         <translation>&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="27"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="27"/>
         <source>Frames before:</source>
         <translation>Images avant&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="28"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="28"/>
         <source>Frames after:</source>
         <translation>Images après&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="29"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="29"/>
         <source>Opacity of the nearest frame:</source>
         <translation>Opacité de l&apos;image la plus proche&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="30"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="30"/>
         <source>Tint before:</source>
         <translation>Teinte avant&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="31"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="31"/>
         <source>Tint after:</source>
         <translation>Teinte après&#xa0;:</translation>
     </message>
@@ -3361,12 +3395,12 @@
 <context>
     <name>finbook::ui::PenTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_pen.h" line="30"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="30"/>
         <source>Pen</source>
         <translation>Stylo</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_pen.cpp" line="88"/>
+        <location filename="../ui/src/tools/tool_pen.cpp" line="88"/>
         <source>Draw Stroke</source>
         <translation>Tracer un trait</translation>
     </message>
@@ -3374,12 +3408,12 @@
 <context>
     <name>finbook::ui::PinTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="19"/>
         <source>Pin</source>
         <translation>Épingle</translation>
     </message>
     <message>
-        <location filename="../ui/src/pins/tool_pin.cpp" line="156"/>
+        <location filename="../ui/src/pins/tool_pin.cpp" line="162"/>
         <source>Click on a visible, unlocked drawing to pin it.</source>
         <translation>Cliquez sur un dessin visible et non verrouillé pour y poser une épingle.</translation>
     </message>
@@ -3387,28 +3421,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="64"/>
-        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="64"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
         <source>Pl&amp;ay</source>
         <translation>&amp;Lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="68"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="68"/>
         <source>Play or pause the animation</source>
         <translation>Lire l&apos;animation ou la mettre en pause</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="76"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="76"/>
         <source>L&amp;oop</source>
         <translation>Lecture en &amp;boucle</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="80"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="80"/>
         <source>Start again at the end of the play range</source>
         <translation>Recommencer au début à la fin de la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;use</translation>
     </message>
@@ -3416,77 +3450,77 @@
 <context>
     <name>finbook::ui::PreferencesDialog</name>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="21"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="21"/>
         <source>Preferences</source>
         <translation>Préférences</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="25"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="25"/>
         <source>New Documents</source>
         <translation>Nouveaux documents</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="26"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="27"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="27"/>
         <source>Keyboard Shortcuts</source>
         <translation>Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="42"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="42"/>
         <source> fps</source>
         <translation> i/s</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="48"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="48"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="55"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="55"/>
         <source> min</source>
         <translation> min</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="56"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="56"/>
         <source>Never</source>
         <translation>Jamais</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="57"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="57"/>
         <source>How often Finbook keeps a recovery copy of unsaved changes, offered at the next start if Finbook did not close normally.</source>
         <translation>Fréquence à laquelle Finbook conserve une copie de récupération des modifications non enregistrées, proposée au démarrage suivant si Finbook ne s&apos;est pas fermé normalement.</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="61"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="61"/>
         <source>Frame rate:</source>
         <translation>Fréquence d&apos;images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="62"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="62"/>
         <source>Canvas width:</source>
         <translation>Largeur du canevas&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="63"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="63"/>
         <source>Canvas height:</source>
         <translation>Hauteur du canevas&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="64"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="64"/>
         <source>Autosave every:</source>
         <translation>Enregistrement automatique&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="86"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="86"/>
         <source>Conflicting Shortcuts</source>
         <translation>Raccourcis en conflit</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="87"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="87"/>
         <source>Two or more actions share a shortcut. Change or clear the shortcuts marked in red, then press OK again.</source>
         <translation>Plusieurs actions partagent un raccourci. Modifiez ou effacez les raccourcis marqués en rouge, puis appuyez à nouveau sur OK.</translation>
     </message>
@@ -3550,27 +3584,27 @@
 <context>
     <name>finbook::ui::SelectTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_select.h" line="28"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="28"/>
         <source>Select</source>
         <translation>Sélection</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="264"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="264"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>Les traits ne peuvent pas être transformés à ce point.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="273"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="273"/>
         <source>Move Strokes</source>
         <translation>Déplacer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="274"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="274"/>
         <source>Rotate Strokes</source>
         <translation>Faire pivoter les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="275"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="275"/>
         <source>Scale Strokes</source>
         <translation>Redimensionner les traits</translation>
     </message>
@@ -3578,32 +3612,32 @@
 <context>
     <name>finbook::ui::ShortcutEditor</name>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="31"/>
         <source>Action</source>
         <translation>Action</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="31"/>
         <source>Shortcut</source>
         <translation>Raccourci</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="31"/>
         <source>Alternative</source>
         <translation>Secondaire</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="72"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="72"/>
         <source>Restore Defaults</source>
         <translation>Rétablir les valeurs par défaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="132"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="132"/>
         <source>%1 is used by: %2</source>
         <translation>%1 est utilisé par&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="143"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="143"/>
         <source>Conflicting shortcuts:</source>
         <translation>Raccourcis en conflit&#xa0;:</translation>
     </message>
@@ -3611,42 +3645,42 @@
 <context>
     <name>finbook::ui::ShortcutsDialog</name>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="20"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="20"/>
         <source>Keyboard Shortcuts</source>
         <translation>Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="26"/>
         <source>Pan the view</source>
         <translation>Faire défiler la vue</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="26"/>
         <source>Space + drag, or middle button drag</source>
         <translation>Espace + glisser, ou glisser avec le bouton du milieu</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="27"/>
         <source>Zoom about the cursor</source>
         <translation>Zoomer autour du curseur</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="27"/>
         <source>Mouse wheel</source>
         <translation>Molette de la souris</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="31"/>
         <source>Action</source>
         <translation>Action</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="31"/>
         <source>Shortcut</source>
         <translation>Raccourci</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="53"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="53"/>
         <source>Filter</source>
         <translation>Filtrer</translation>
     </message>
@@ -3654,98 +3688,85 @@
 <context>
     <name>finbook::ui::SkeletonPanel</name>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
         <source>Bone complexity</source>
         <translation>Complexité des os</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
         <source>Merge junctions</source>
         <translation>Fusionner les jonctions</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
         <source>Prune branches</source>
         <translation>Élaguer les branches</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="22"/>
         <source>Collapse short bones</source>
         <translation>Réduire les os courts</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="23"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
         <source>More bones follow the shape more closely</source>
         <translation>Plus il y a d&apos;os, plus ils suivent fidèlement la forme</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Junctions closer than this become one</source>
         <translation>Les jonctions plus proches que cette distance n&apos;en forment plus qu&apos;une</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
         <source>Remove side branches shorter than this</source>
         <translation>Supprimer les branches latérales plus courtes que cette longueur</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
         <source>Collapse inner bones shorter than this into one joint</source>
         <translation>Réduire en une seule articulation les os internes plus courts que cette longueur</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="42"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="43"/>
         <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
         <translation>Choisissez l&apos;outil Os (K) et cliquez sur un objet pour lui donner un squelette.</translation>
     </message>
 </context>
 <context>
-    <name>finbook::ui::StrokeEraserTool</name>
-    <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
-        <source>Stroke Eraser</source>
-        <translation>Gomme à traits</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
-        <source>Erase</source>
-        <translation>Effacer</translation>
-    </message>
-</context>
-<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="68"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="68"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="69"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="69"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>Afficher les images voisines en transparence pendant le dessin</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
         <source>Before:</source>
         <translation>Avant&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="86"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="86"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>Nombre d&apos;images précédentes que montre la pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="87"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="87"/>
         <source>After:</source>
         <translation>Après&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="88"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="88"/>
         <source>How many later frames the onion skin shows</source>
         <translation>Nombre d&apos;images suivantes que montre la pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="119"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="119"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Image %1 sur %2 · %3 i/s</translation>
     </message>

@@ -810,79 +810,97 @@
     </message>
 </context>
 <context>
+    <name>ExportDone</name>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="26"/>
+        <source>Export Finished</source>
+        <translation>書き出し完了</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="31"/>
+        <source>Show in Folder</source>
+        <translation>フォルダーで表示</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_done.cpp" line="38"/>
+        <source>Open in Browser</source>
+        <translation>ブラウザーで開く</translation>
+    </message>
+</context>
+<context>
     <name>FileMessages</name>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="17"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="17"/>
         <source>The file is not there any more: it may have been moved, renamed or deleted.</source>
         <translation>ファイルがもうありません。移動、名前の変更、または削除された可能性があります。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="21"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="21"/>
         <source>This is a folder, not an animation. Choose a file ending in .finbook.</source>
         <translation>これはアニメーションではなくフォルダーです。末尾が .finbook のファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="23"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="23"/>
         <source>This is a device or a pipe, not an animation. Choose a file ending in .finbook.</source>
         <translation>これはアニメーションではなく、デバイスまたはパイプです。末尾が .finbook のファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="26"/>
         <source>You are not allowed to read this file. Ask whoever owns it to share it with you, or open a copy of it.</source>
         <translation>このファイルを読み取る権限がありません。所有者に共有を依頼するか、ファイルのコピーを開いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="29"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="29"/>
         <source>The disk could not read the file. If it is on a removable drive or a network folder, check that it is still connected.</source>
         <translation>ディスクからファイルを読み取れませんでした。リムーバブルドライブやネットワークフォルダー上にある場合は、まだ接続されているか確認してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="33"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="33"/>
         <source>The file is empty: there is no drawing in it.</source>
         <translation>ファイルが空です。絵が何も入っていません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="34"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="34"/>
         <source>This is not a Finbook animation. Choose a file ending in .finbook.</source>
         <translation>これは Finbook のアニメーションではありません。末尾が .finbook のファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="37"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="37"/>
         <source>It was saved by a newer version of Finbook. Install that version to open it.</source>
         <translation>より新しいバージョンの Finbook で保存されています。開くにはそのバージョンをインストールしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="40"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="40"/>
         <source>The file is damaged near the end: it looks cut off. Perhaps a copy or a save was interrupted.</source>
         <translation>ファイルの末尾付近が破損しています。途中で切れているようです。コピーや保存が中断された可能性があります。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="43"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="43"/>
         <source>The file is damaged, or too large for this computer: it asks for more memory than Finbook can use.</source>
         <translation>ファイルが破損しているか、このコンピューターには大きすぎます。Finbook が使用できる以上のメモリを必要としています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="46"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="46"/>
         <source>The file is damaged: some of it changed after it was saved. Finbook can open what is still readable.</source>
         <translation>ファイルが破損しています。保存後に一部が変更されています。Finbook は、まだ読み取れる部分を開くことができます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="50"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="50"/>
         <source>This computer has not enough free memory to open the file. Close other programs or documents and try again.</source>
         <translation>このコンピューターには、ファイルを開くのに十分な空きメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="57"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="57"/>
         <source>The file is damaged: part of it cannot be read.</source>
         <translation>ファイルが破損しています。一部を読み取れません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="64"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="64"/>
         <source>Finbook cannot open “%1”.</source>
         <translation>Finbook は「%1」を開けません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/file_messages.cpp" line="68"/>
+        <location filename="../ui/src/dialogs/file_messages.cpp" line="68"/>
         <source>Finbook kept the version saved before it as “%1” in the same folder: open that one to get your work back.</source>
         <translation>Finbook は、その前に保存されていたバージョンを同じフォルダーに「%1」として残しています。作業内容を取り戻すには、そちらを開いてください。</translation>
     </message>
@@ -1272,277 +1290,281 @@
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
         <source>the frame list</source>
         <translation>フレーム一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
         <source>a frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>フレームが途中で切れているため、以降のフレームとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
         <source>%1; the frame is left out</source>
         <translation>%1。このフレームは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
         <source>a frame id</source>
         <translation>フレーム ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>the frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>a frame hold</source>
         <translation>フレームの表示時間</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>表示時間 %1 が 1～%2 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the object list</source>
         <translation>オブジェクト一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
         <source>an object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>オブジェクトが途中で切れているため、以降のオブジェクトとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
         <source>%1; the object is left out</source>
         <translation>%1。このオブジェクトは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="111"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="199"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
         <source>a chunk header</source>
         <translation>チャンクヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>a chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
         <source>chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
         <source>an object id</source>
         <translation>オブジェクト ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>the object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>the object flags</source>
         <translation>オブジェクトのフラグ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>オブジェクトのフラグ 0x%1 は不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>the mesh density</source>
         <translation>メッシュ密度</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>メッシュ密度 %1 が 0～1000 の数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="147"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
         <source>the object name</source>
         <translation>オブジェクト名</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>オブジェクト名が %1 バイトあります（最大 %2 バイト）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>オブジェクト名が有効な UTF-8 テキストではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
         <source>the stroke list</source>
         <translation>ストローク一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
         <source>a stroke id</source>
         <translation>ストローク ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>the stroke</source>
         <translation>ストローク</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <source>its pose has %n stroke(s) but the object has %1</source>
+        <translation>
+            <numerusform>ポーズのストローク数は %n ですが、オブジェクトのストローク数は %1 です</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <source>stroke %1 has %n point(s) but its pose has %2</source>
+        <translation>
+            <numerusform>ストローク %1 の点の数は %n ですが、ポーズでは %2 です</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
         <source>a stroke reference</source>
         <translation>ストロークの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="39"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 には %2 個の項目があるはずですが、収まっている %3 個を読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>ストロークデータ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
         <source>an unknown chunk is left out</source>
         <translation>不明なチャンクを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>チャンク %1 が 2 回、または別のリグと一緒に現れます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
         <source>%1; the chunk is left out</source>
         <translation>%1。このチャンクは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="251"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="252"/>
         <source>the skeleton&apos;s join</source>
         <translation>スケルトンの接続</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
         <source>a join comes without a skeleton</source>
         <translation>スケルトンのない接続があります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>スケルトンの接続が壊れています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="275"/>
         <source>the pin list</source>
         <translation>ピン一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>a pin id</source>
         <translation>ピン ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
         <source>pin %1</source>
         <translation>ピン %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="284"/>
         <source>a pin position</source>
         <translation>ピンの位置</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
         <source>pin %1 has a non-finite position</source>
         <translation>ピン %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
         <source>the cage corner list</source>
         <translation>ケージの頂点一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>ケージの頂点が 3 個未満です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
         <source>a cage corner</source>
         <translation>ケージの頂点</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>ケージの頂点 %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
         <source>a pose reference</source>
         <translation>ポーズの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>ポーズがポーズ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="325"/>
         <source>its pose: %1</source>
         <translation>ポーズ: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="328"/>
-        <source>its pose has %1 strokes but the object has %2</source>
-        <translation>ポーズのストローク数は %1 ですが、オブジェクトのストローク数は %2 です</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
-        <source>stroke %1 has %2 points but its pose has %3</source>
-        <translation>ストローク %1 の点の数は %2 ですが、ポーズでは %3 です</translation>
-    </message>
-    <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
         <source>%1 has no id</source>
         <translation>%1 に ID がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 の ID %2 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="356"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="357"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
@@ -1764,47 +1786,47 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="86"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="86"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="89"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="89"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="92"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="92"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="114"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="114"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="153"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="153"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="174"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="174"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="222"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="222"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="298"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="298"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/stroke_editing.cpp" line="305"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="305"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -1864,10 +1886,12 @@
 </context>
 <context>
     <name>finbook::model::FrameListModel</name>
-    <message>
+    <message numerus="yes">
         <location filename="../model/src/frame_list_model.cpp" line="132"/>
-        <source>Frame %1, held for %2 frames</source>
-        <translation>フレーム %1（%2 フレーム分表示）</translation>
+        <source>Frame %1, held for %n frame(s)</source>
+        <translation>
+            <numerusform>フレーム %1（%n フレーム分表示）</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../model/src/frame_list_model.cpp" line="133"/>
@@ -1878,7 +1902,7 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="39"/>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="40"/>
         <source>Bone</source>
         <translation>ボーン</translation>
     </message>
@@ -1910,8 +1934,8 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
-        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; Alt-click a joint to lock it; Shift-drag the root onto another part to join them.</source>
-        <translation>ボーンをドラッグすると回転、関節をドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。Alt クリックで関節をロックします。ルートを Shift キーを押しながら別のパーツへドラッグすると接続します。</translation>
+        <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
+        <translation>ボーンをドラッグすると回転、関節をドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。関節の上で L キーを押すとロックします。ルートを Shift キーを押しながら別のパーツへドラッグすると接続します。</translation>
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
@@ -1924,73 +1948,73 @@
         <translation>%1 はすでにこのパーツにぶら下がっているため、逆にぶら下げることはできません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="85"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="115"/>
         <source>Edit Joints: drag a joint to move it, click a bone to insert a joint.</source>
         <translation>関節を編集：関節をドラッグで移動、ボーンをクリックで関節を挿入します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="100"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="130"/>
         <source>Reset the pose or apply it to the drawing before editing joints.</source>
         <translation>関節を編集する前に、ポーズをリセットするか絵に適用してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="192"/>
         <source>Unlock Joint</source>
         <translation>関節のロックを解除</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="162"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="192"/>
         <source>Lock Joint</source>
         <translation>関節をロック</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="164"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="197"/>
         <source>Reset Bone Pose</source>
         <translation>ボーンのポーズをリセット</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="167"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="200"/>
         <source>Edit Joints</source>
         <translation>関節を編集</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="172"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="205"/>
         <source>Insert Joint Here</source>
         <translation>ここに関節を挿入</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="174"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="207"/>
         <source>Delete Joint</source>
         <translation>関節を削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="178"/>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="230"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="211"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="263"/>
         <source>Make Root Joint</source>
         <translation>ルート関節にする</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="187"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="220"/>
         <source>Detach from %1</source>
         <translation>%1 から切り離す</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="190"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="223"/>
         <source>Make Character Root</source>
         <translation>キャラクターのルートにする</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="191"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="224"/>
         <source>Join Overlapping Parts</source>
         <translation>重なるパーツを接続</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="242"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="275"/>
         <source>No part overlaps another part&apos;s skeleton.</source>
         <translation>他のパーツのスケルトンに重なるパーツはありません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="246"/>
+        <location filename="../ui/src/skeleton/tool_bone_menu.cpp" line="279"/>
         <source>Joined %n part(s).</source>
         <translation>
             <numerusform>%n 個のパーツを接続しました。</numerusform>
@@ -2000,32 +2024,32 @@
 <context>
     <name>finbook::ui::BrushToolBar</name>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="15"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="15"/>
         <source>Brush</source>
         <translation>ブラシ</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="29"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="29"/>
         <source>Width:</source>
         <translation>太さ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="34"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="34"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="36"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="36"/>
         <source>Smoothing:</source>
         <translation>スムージング:</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="39"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="39"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>ペンを離したときにストロークをどれだけ滑らかにするか</translation>
     </message>
     <message>
-        <location filename="../ui/src/brush_tool_bar.cpp" line="84"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="84"/>
         <source>Pen colour %1</source>
         <translation>ペンの色: %1</translation>
     </message>
@@ -2033,42 +2057,42 @@
 <context>
     <name>finbook::ui::CageActions</name>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="32"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="33"/>
         <source>&amp;Fit Cage</source>
         <translation>ケージをフィット(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="34"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
         <source>Put a coarse cage around the current object in one step</source>
         <translation>現在のオブジェクトの周りに粗いケージを一度に配置</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="35"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
         <source>Shift+C</source>
         <translation>Shift+C</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="36"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="37"/>
         <source>Edit Cage &amp;Shape</source>
         <translation>ケージの形状を編集(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="40"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="41"/>
         <source>Change the cage itself (move, add or delete corners) instead of posing with it</source>
         <translation>ケージでポーズを付ける代わりに、ケージ自体を変更（頂点を移動・追加・削除）</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="66"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
         <source>Corners </source>
         <translation>頂点数 </translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="67"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="68"/>
         <source>About how many corners Fit Cage gives the cage</source>
         <translation>「ケージをフィット」で作成するケージのおおよその頂点数</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/cage_actions.cpp" line="81"/>
+        <location filename="../ui/src/cage/cage_actions.cpp" line="82"/>
         <source>Choose an unlocked object with strokes to fit a cage to.</source>
         <translation>ケージを合わせる、ストロークのあるロックされていないオブジェクトを選んでください。</translation>
     </message>
@@ -2081,12 +2105,12 @@
         <translation>ケージ</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="127"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="139"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>先にオブジェクトを選んでください。ケージはその周りに配置されます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="249"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="265"/>
         <source>A cage needs at least three corners.</source>
         <translation>ケージには少なくとも 3 つの頂点が必要です。</translation>
     </message>
@@ -2094,12 +2118,12 @@
 <context>
     <name>finbook::ui::ColorButton</name>
     <message>
-        <location filename="../ui/src/color_button.cpp" line="13"/>
+        <location filename="../ui/src/widgets/color_button.cpp" line="13"/>
         <source>Choose a colour</source>
         <translation>色を選択</translation>
     </message>
     <message>
-        <location filename="../ui/src/color_button.cpp" line="31"/>
+        <location filename="../ui/src/widgets/color_button.cpp" line="31"/>
         <source>Choose Colour</source>
         <translation>色の選択</translation>
     </message>
@@ -2107,72 +2131,72 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="22"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="22"/>
         <source>&amp;Reset Pose</source>
         <translation>ポーズをリセット(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="26"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="26"/>
         <source>&amp;Apply Pose to Drawing</source>
         <translation>ポーズを絵に適用(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="25"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="25"/>
         <source>Move the current object&apos;s pins, cage corners or bones back to their rest positions</source>
         <translation>現在のオブジェクトのピン、ケージの頂点、またはボーンを元の位置に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="28"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="28"/>
         <source>Make the posed drawing the object&apos;s new strokes; the pins, cage or skeleton stay where they are</source>
         <translation>ポーズを付けた絵をオブジェクトの新しいストロークにする（ピン、ケージ、スケルトンはその位置のまま）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="30"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="30"/>
         <source>Remo&amp;ve Rig</source>
         <translation>リグを削除(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="33"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="33"/>
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>現在のオブジェクトからピン、ケージ、またはスケルトンを外す</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="51"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="51"/>
         <source>Preparing the deformation…</source>
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="61"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
         <source>R&amp;igidity</source>
         <translation>剛性(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="75"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="75"/>
         <source>Converged (Most Rigid)</source>
         <translation>収束まで（最も硬く）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="76"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="76"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>論文どおり（2 段階）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="77"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="77"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>より硬く（+1 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="78"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="78"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>最も硬く（+3 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="111"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="111"/>
         <source>Mesh density </source>
         <translation>メッシュ密度 </translation>
     </message>
     <message>
-        <location filename="../ui/src/deform_actions.cpp" line="112"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="112"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>現在のオブジェクトの変形メッシュの細かさ（1 = 標準）</translation>
     </message>
@@ -2180,64 +2204,120 @@
 <context>
     <name>finbook::ui::DocumentSettingsDialog</name>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="26"/>
         <source>Start again after the last frame</source>
         <translation>最後のフレームの後、最初から再生する</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="30"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="30"/>
         <source>Document Settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="32"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="32"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="35"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="35"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="40"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="40"/>
         <source>Last</source>
         <translation>最後</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="50"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="50"/>
         <source>to</source>
         <translation>～</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="54"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="54"/>
         <source>&amp;Frame rate:</source>
         <translation>フレームレート(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="55"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="55"/>
         <source>Canvas size:</source>
         <translation>キャンバスサイズ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="56"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="56"/>
         <source>&amp;Background:</source>
         <translation>背景(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="57"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="57"/>
         <source>Loop:</source>
         <translation>ループ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="58"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="58"/>
         <source>Play frames:</source>
         <translation>再生するフレーム:</translation>
     </message>
     <message>
-        <location filename="../ui/src/document_settings_dialog.cpp" line="125"/>
+        <location filename="../ui/src/dialogs/document_settings_dialog.cpp" line="125"/>
         <source>Background Colour</source>
         <translation>背景色</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_eraser.h" line="29"/>
+        <source>Eraser</source>
+        <translation>消しゴム</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eraser.cpp" line="158"/>
+        <source>Erase</source>
+        <translation>消去</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::EraserToolBar</name>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="11"/>
+        <source>Eraser</source>
+        <translation>消しゴム</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="13"/>
+        <source>Cut Lines</source>
+        <translation>線を切る</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="14"/>
+        <source>Whole Strokes</source>
+        <translation>ストローク全体</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="25"/>
+        <source>Erase the part of a line under the eraser (the rest is split into pieces)</source>
+        <translation>消しゴムの下の線の部分を消します（残りは分割されます）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="28"/>
+        <source>Erase every stroke the eraser touches (or hold Shift when you start rubbing)</source>
+        <translation>消しゴムが触れたストロークを丸ごと消します（または消し始めるときに Shift キーを押したまま）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="31"/>
+        <source>Size:</source>
+        <translation>サイズ:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="35"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/eraser_tool_bar.cpp" line="36"/>
+        <source>The eraser&apos;s diameter on the canvas</source>
+        <translation>キャンバス上での消しゴムの直径</translation>
     </message>
 </context>
 <context>
@@ -2425,46 +2505,46 @@
         <translation>キャンセルしています...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="86"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>%n 個のファイルを %1 に書き出しました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="96"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="97"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>書き出しをキャンセルしました。何も書き込まれていません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="121"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>「%1」はすでに存在します。置き換えますか？</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="123"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>書き出し先には「%1」など %n 個のファイルがすでに存在します。置き換えますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="125"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="126"/>
         <source>Replace Files?</source>
         <translation>ファイルを置き換えますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="132"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="133"/>
         <source>Export Anyway?</source>
         <translation>それでも書き出しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="134"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="135"/>
         <source>It may take a long time and a lot of disk space. Export anyway?</source>
         <translation>長い時間と多くのディスク容量が必要になることがあります。それでも書き出しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="142"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="143"/>
         <source>Cannot Export</source>
         <translation>書き出せません</translation>
     </message>
@@ -2485,57 +2565,57 @@
 <context>
     <name>finbook::ui::FrameActions</name>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="13"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="13"/>
         <source>Insert Frame &amp;Before</source>
         <translation>前にフレームを挿入(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="15"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="15"/>
         <source>&amp;Insert Frame After</source>
         <translation>後ろにフレームを挿入(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="17"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="17"/>
         <source>&amp;Duplicate Frame</source>
         <translation>フレームを複製(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="19"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="19"/>
         <source>Generate In-be&amp;tweens…</source>
         <translation>中割りを生成(&amp;T)…</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="21"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="21"/>
         <source>Delete Fra&amp;me</source>
         <translation>フレームを削除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="24"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="24"/>
         <source>Move Frame &amp;Left</source>
         <translation>フレームを左へ移動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="26"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="26"/>
         <source>Move Frame &amp;Right</source>
         <translation>フレームを右へ移動(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="29"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="29"/>
         <source>Hold Lon&amp;ger</source>
         <translation>表示時間を延ばす(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="31"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="31"/>
         <source>Hold &amp;Shorter</source>
         <translation>表示時間を縮める(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="34"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="34"/>
         <source>&amp;Previous Frame</source>
         <translation>前のフレーム(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/frame_actions.cpp" line="37"/>
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="37"/>
         <source>&amp;Next Frame</source>
         <translation>次のフレーム(&amp;N)</translation>
     </message>
@@ -2543,7 +2623,7 @@
 <context>
     <name>finbook::ui::HandTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_hand.h" line="16"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="16"/>
         <source>Hand</source>
         <translation>手のひら</translation>
     </message>
@@ -2601,72 +2681,72 @@
         <translation>左にすると最初のキー側に、右にすると 2 番目のキー側に詰めます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
         <source>F&amp;avour:</source>
         <translation>詰め(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="95"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="96"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>ピンとケージの頂点を弧に沿って移動(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="98"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="99"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>キーの間で振られた手足は長さを保ちます。オフにすると、すべての対象が直線的に移動します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="128"/>
         <source>(unnamed)</source>
         <translation>（名前なし）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="130"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
         <source>%1: interpolated</source>
         <translation>%1: 補間</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="133"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: 最初のキーを保持（ピン、ケージ、スケルトンがありません）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: 最初のキーを保持（キーの間でピン、ケージ、またはスケルトンが異なります）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="139"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: 最初のキーにのみ存在、前半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: 2 番目のキーにのみ存在、後半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="150"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
         <source>Select two different frames as keys.</source>
         <translation>キーとして異なる 2 つのフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="160"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="161"/>
         <source>Posing the preview…</source>
         <translation>プレビューを計算中…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="192"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="193"/>
         <source>The preview could not be posed: %1</source>
         <translation>プレビューのポーズを計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="197"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>両方のキーで一致するピンまたはケージを持つオブジェクトがありません。中割りでは絵が保持されるだけです。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="199"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="200"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>キャンバスには中央の中割りが表示されています。</translation>
     </message>
@@ -2674,450 +2754,402 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window.cpp" line="144"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window.cpp" line="168"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="149"/>
+        <location filename="../ui/src/window/main_window.cpp" line="169"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window.cpp" line="172"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="153"/>
+        <location filename="../ui/src/window/main_window.cpp" line="173"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="189"/>
+        <location filename="../ui/src/window/main_window.cpp" line="209"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window.cpp" line="220"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window.cpp" line="221"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="206"/>
-        <location filename="../ui/src/main_window_files.cpp" line="303"/>
+        <location filename="../ui/src/window/main_window.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="237"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window.cpp" line="227"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="35"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="35"/>
         <source>&amp;Deform</source>
         <translation>変形(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="50"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="50"/>
         <source>Deform</source>
         <translation>変形</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_deform.cpp" line="66"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="66"/>
         <source>Preparing the deformation…</source>
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="30"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="26"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook アニメーション (*.finbook);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="41"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="76"/>
-        <location filename="../ui/src/main_window_files.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="72"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="89"/>
         <source>Cannot Open File</source>
         <translation>ファイルを開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="124"/>
         <source>Cannot Save File</source>
         <translation>ファイルを保存できません</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
         <source>Saved %1</source>
         <translation>%1 を保存しました</translation>
     </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="161"/>
-        <source>The folder %1 does not exist; choose an existing folder and export again.</source>
-        <translation>フォルダー %1 が存在しません。既存のフォルダーを選んで、もう一度書き出してください。</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="175"/>
-        <source>Replace Files?</source>
-        <translation>ファイルを置き換えますか？</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="176"/>
-        <source>%1 already holds exported frames. Replace them?</source>
-        <translation>%1 にはすでに書き出したフレームがあります。置き換えますか？</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Exporting frames...</source>
-        <translation>フレームを書き出しています...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="184"/>
-        <source>Cancel</source>
-        <translation>キャンセル</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_files.cpp" line="160"/>
-        <location filename="../ui/src/main_window_files.cpp" line="206"/>
-        <source>Cannot Export Frames</source>
-        <translation>フレームを書き出せません</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="100"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="96"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>%1 の読み取れた部分を開きました（%n 件の問題を修復）。新しい名前で保存してください。</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/src/main_window_files.cpp" line="209"/>
-        <source>Exported %n frame(s) to %1</source>
-        <translation>
-            <numerusform>%n フレームを %1 に書き出しました</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="180"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="189"/>
         <source>No recent files</source>
         <translation>最近使ったファイルはありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="199"/>
         <source>Cannot Import Mesh</source>
         <translation>メッシュをインポートできません</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="269"/>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="291"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
         <source>Damaged File</source>
         <translation>破損したファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="292"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>「このまま開く」を選ぶと、まだ読み取れる部分を未保存の新しいアニメーションとして表示します。破損したファイルは変更されません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="295"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
         <source>Open Anyway</source>
         <translation>このまま開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="305"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="239"/>
         <source>Unsaved Changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="306"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>「%1」には保存されていない変更があります。続ける前に保存しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="312"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="246"/>
         <source>Open Animation</source>
         <translation>アニメーションを開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
         <source>Save Animation</source>
         <translation>アニメーションを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
         <source>untitled.finbook</source>
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_files.cpp" line="325"/>
-        <source>Export Frames to Folder</source>
-        <translation>フレームをフォルダーに書き出す</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="44"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="45"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="56"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="59"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="60"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="63"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="86"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="85"/>
-        <source>&amp;Export Frames...</source>
-        <translation>フレームを書き出す(&amp;E)...</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="117"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="119"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="121"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="131"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="140"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="178"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="181"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="178"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="185"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="196"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="211"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="224"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="39"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="41"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>やり直す</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="45"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="45"/>
         <source>Apply Pose</source>
         <translation>ポーズを適用</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="47"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="47"/>
         <source>Remove Rig</source>
         <translation>リグを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="49"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="49"/>
         <source>Reset</source>
         <translation>リセット</translation>
     </message>
     <message>
-        <location filename="../ui/src/main_window_toolbars.cpp" line="51"/>
+        <location filename="../ui/src/window/main_window_toolbars.cpp" line="51"/>
         <source>Shape</source>
         <translation>形状</translation>
     </message>
@@ -3220,92 +3252,92 @@
 <context>
     <name>finbook::ui::ObjectActions</name>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="28"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="28"/>
         <source>&amp;New Object</source>
         <translation>新規オブジェクト(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="30"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="30"/>
         <source>&amp;Delete Object</source>
         <translation>オブジェクトを削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="31"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="31"/>
         <source>&amp;Merge Objects</source>
         <translation>オブジェクトを結合(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="34"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="34"/>
         <source>Move &amp;Selection to Object</source>
         <translation>選択範囲をオブジェクトへ移動(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="35"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="35"/>
         <source>Bring &amp;Forward</source>
         <translation>前面へ(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="37"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="37"/>
         <source>Send &amp;Backward</source>
         <translation>背面へ(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="39"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="39"/>
         <source>&amp;Visible</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="40"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="40"/>
         <source>&amp;Locked</source>
         <translation>ロック(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="43"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="43"/>
         <source>New object above the current one</source>
         <translation>現在のオブジェクトの上に新しいオブジェクトを作成</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="44"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="44"/>
         <source>Merge the selected objects, or the current one into the one below</source>
         <translation>選択したオブジェクトを結合します。選択がなければ現在のオブジェクトを下のオブジェクトに結合します</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="45"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="45"/>
         <source>Move the selected strokes to another object</source>
         <translation>選択したストロークを別のオブジェクトへ移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="47"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="47"/>
         <source>New</source>
         <translation>新規</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="48"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="48"/>
         <source>Delete</source>
         <translation>削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="49"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="49"/>
         <source>Merge</source>
         <translation>結合</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="50"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="50"/>
         <source>Move To</source>
         <translation>移動先</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="119"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="119"/>
         <source>Object %1</source>
         <translation>オブジェクト %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="171"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="171"/>
         <source>Merge Objects</source>
         <translation>オブジェクトを結合</translation>
     </message>
     <message>
-        <location filename="../ui/src/object_actions.cpp" line="193"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="193"/>
         <source>Move Strokes to Object</source>
         <translation>ストロークをオブジェクトへ移動</translation>
     </message>
@@ -3313,37 +3345,37 @@
 <context>
     <name>finbook::ui::OnionSkinEditor</name>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="14"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="14"/>
         <source>Show onion skin</source>
         <translation>オニオンスキンを表示</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="24"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="24"/>
         <source> %</source>
         <translation>%</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="27"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="27"/>
         <source>Frames before:</source>
         <translation>前のフレーム数:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="28"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="28"/>
         <source>Frames after:</source>
         <translation>後のフレーム数:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="29"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="29"/>
         <source>Opacity of the nearest frame:</source>
         <translation>最も近いフレームの不透明度:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="30"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="30"/>
         <source>Tint before:</source>
         <translation>前のフレームの色:</translation>
     </message>
     <message>
-        <location filename="../ui/src/onion_skin_editor.cpp" line="31"/>
+        <location filename="../ui/src/timeline/onion_skin_editor.cpp" line="31"/>
         <source>Tint after:</source>
         <translation>後のフレームの色:</translation>
     </message>
@@ -3351,12 +3383,12 @@
 <context>
     <name>finbook::ui::PenTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_pen.h" line="30"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="30"/>
         <source>Pen</source>
         <translation>ペン</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_pen.cpp" line="88"/>
+        <location filename="../ui/src/tools/tool_pen.cpp" line="88"/>
         <source>Draw Stroke</source>
         <translation>ストロークを描画</translation>
     </message>
@@ -3364,12 +3396,12 @@
 <context>
     <name>finbook::ui::PinTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="17"/>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="19"/>
         <source>Pin</source>
         <translation>ピン</translation>
     </message>
     <message>
-        <location filename="../ui/src/pins/tool_pin.cpp" line="156"/>
+        <location filename="../ui/src/pins/tool_pin.cpp" line="162"/>
         <source>Click on a visible, unlocked drawing to pin it.</source>
         <translation>表示されていてロックされていない絵をクリックすると、ピンを置けます。</translation>
     </message>
@@ -3377,28 +3409,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="64"/>
-        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="64"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
         <source>Pl&amp;ay</source>
         <translation>再生(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="68"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="68"/>
         <source>Play or pause the animation</source>
         <translation>アニメーションを再生または一時停止</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="76"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="76"/>
         <source>L&amp;oop</source>
         <translation>ループ再生(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="80"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="80"/>
         <source>Start again at the end of the play range</source>
         <translation>再生範囲の最後まで来たら最初から再生</translation>
     </message>
     <message>
-        <location filename="../ui/src/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
         <source>P&amp;ause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>
@@ -3406,77 +3438,77 @@
 <context>
     <name>finbook::ui::PreferencesDialog</name>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="21"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="21"/>
         <source>Preferences</source>
         <translation>環境設定</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="25"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="25"/>
         <source>New Documents</source>
         <translation>新規ドキュメント</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="26"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="27"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="27"/>
         <source>Keyboard Shortcuts</source>
         <translation>キーボードショートカット</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="42"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="42"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="48"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="48"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="55"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="55"/>
         <source> min</source>
         <translation> 分</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="56"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="56"/>
         <source>Never</source>
         <translation>しない</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="57"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="57"/>
         <source>How often Finbook keeps a recovery copy of unsaved changes, offered at the next start if Finbook did not close normally.</source>
         <translation>Finbook が未保存の変更から復元用のコピーを作成する間隔です。Finbook が正常に終了しなかった場合、次回の起動時に復元を提案します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="61"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="61"/>
         <source>Frame rate:</source>
         <translation>フレームレート:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="62"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="62"/>
         <source>Canvas width:</source>
         <translation>キャンバスの幅:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="63"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="63"/>
         <source>Canvas height:</source>
         <translation>キャンバスの高さ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="64"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="64"/>
         <source>Autosave every:</source>
         <translation>自動保存の間隔:</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="86"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="86"/>
         <source>Conflicting Shortcuts</source>
         <translation>ショートカットの競合</translation>
     </message>
     <message>
-        <location filename="../ui/src/preferences_dialog.cpp" line="87"/>
+        <location filename="../ui/src/dialogs/preferences_dialog.cpp" line="87"/>
         <source>Two or more actions share a shortcut. Change or clear the shortcuts marked in red, then press OK again.</source>
         <translation>複数の操作に同じショートカットが割り当てられています。赤で示されたショートカットを変更または消去してから、もう一度 OK を押してください。</translation>
     </message>
@@ -3539,27 +3571,27 @@
 <context>
     <name>finbook::ui::SelectTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tool_select.h" line="28"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="28"/>
         <source>Select</source>
         <translation>選択</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="264"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="264"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>ストロークをそこまで変形することはできません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="273"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="273"/>
         <source>Move Strokes</source>
         <translation>ストロークを移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="274"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="274"/>
         <source>Rotate Strokes</source>
         <translation>ストロークを回転</translation>
     </message>
     <message>
-        <location filename="../ui/src/tool_select.cpp" line="275"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="275"/>
         <source>Scale Strokes</source>
         <translation>ストロークを拡大・縮小</translation>
     </message>
@@ -3567,32 +3599,32 @@
 <context>
     <name>finbook::ui::ShortcutEditor</name>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="31"/>
         <source>Action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="31"/>
         <source>Shortcut</source>
         <translation>ショートカット</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="31"/>
         <source>Alternative</source>
         <translation>代替</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="72"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="72"/>
         <source>Restore Defaults</source>
         <translation>既定値に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="132"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="132"/>
         <source>%1 is used by: %2</source>
         <translation>%1 の割り当て先: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcut_editor.cpp" line="143"/>
+        <location filename="../ui/src/dialogs/shortcut_editor.cpp" line="143"/>
         <source>Conflicting shortcuts:</source>
         <translation>競合しているショートカット:</translation>
     </message>
@@ -3600,42 +3632,42 @@
 <context>
     <name>finbook::ui::ShortcutsDialog</name>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="20"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="20"/>
         <source>Keyboard Shortcuts</source>
         <translation>キーボードショートカット</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="26"/>
         <source>Pan the view</source>
         <translation>表示をスクロール</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="26"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="26"/>
         <source>Space + drag, or middle button drag</source>
         <translation>Space + ドラッグ、または中ボタンでドラッグ</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="27"/>
         <source>Zoom about the cursor</source>
         <translation>カーソルを中心にズーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="27"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="27"/>
         <source>Mouse wheel</source>
         <translation>マウスホイール</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="31"/>
         <source>Action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="31"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="31"/>
         <source>Shortcut</source>
         <translation>ショートカット</translation>
     </message>
     <message>
-        <location filename="../ui/src/shortcuts_dialog.cpp" line="53"/>
+        <location filename="../ui/src/dialogs/shortcuts_dialog.cpp" line="53"/>
         <source>Filter</source>
         <translation>フィルター</translation>
     </message>
@@ -3643,98 +3675,85 @@
 <context>
     <name>finbook::ui::SkeletonPanel</name>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
         <source>Bone complexity</source>
         <translation>ボーンの細かさ</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
         <source>Merge junctions</source>
         <translation>分岐点の統合</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="20"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
         <source>Prune branches</source>
         <translation>枝の刈り込み</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="22"/>
         <source>Collapse short bones</source>
         <translation>短いボーンをまとめる</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="23"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
         <source>More bones follow the shape more closely</source>
         <translation>ボーンが多いほど形状に忠実になります</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Junctions closer than this become one</source>
         <translation>これより近い分岐点は 1 つにまとめます</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
         <source>Remove side branches shorter than this</source>
         <translation>これより短い側枝を削除します</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
         <source>Collapse inner bones shorter than this into one joint</source>
         <translation>これより短い内側のボーンを 1 つのジョイントにまとめます</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="42"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="43"/>
         <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
         <translation>ボーンツール（K）を選んでオブジェクトをクリックすると、スケルトンを作成できます。</translation>
     </message>
 </context>
 <context>
-    <name>finbook::ui::StrokeEraserTool</name>
-    <message>
-        <location filename="../ui/include/finbook/ui/tool_eraser.h" line="20"/>
-        <source>Stroke Eraser</source>
-        <translation>ストローク消しゴム</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/tool_eraser.cpp" line="98"/>
-        <source>Erase</source>
-        <translation>消去</translation>
-    </message>
-</context>
-<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="68"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="68"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="69"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="69"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>描画中に前後のフレームを薄く表示</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
         <source>Before:</source>
         <translation>前:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="86"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="86"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>オニオンスキンで表示する前のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="87"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="87"/>
         <source>After:</source>
         <translation>後:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="88"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="88"/>
         <source>How many later frames the onion skin shows</source>
         <translation>オニオンスキンで表示する後のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline_widget.cpp" line="119"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="119"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>フレーム %1 / %2 · %3 fps</translation>
     </message>

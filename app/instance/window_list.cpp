@@ -1,7 +1,7 @@
 #include "window_list.h"
 
 #include <finbook/model/document.h>
-#include <finbook/ui/main_window.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QFileInfo>
 #include <QUndoStack>

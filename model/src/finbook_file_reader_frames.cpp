@@ -9,6 +9,7 @@
 #include <QStringDecoder>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 namespace finbook::model::file_format {
@@ -325,16 +326,16 @@ DeformedStrokesPtr Reader::readPoseRef(Cursor &c, const StrokeGroup &g)
     const std::vector<quint32> &sizes = m_poseSizes[index];
     if (sizes.size() != g.strokes.size())
         c.fail(FileErrorCode::BadValue,
-               FinbookFile::tr("its pose has %1 strokes but the object has %2")
-                   .arg(sizes.size())
+               FinbookFile::tr("its pose has %n stroke(s) but the object has %1", nullptr,
+                               int(std::min<std::size_t>(sizes.size(), INT_MAX)))
                    .arg(g.strokes.size()));
     for (std::size_t i = 0; i < g.strokes.size(); ++i) {
         const quint32 rest = m_strokeDataSizes[m_strokeRefs[i]];
         if (sizes[i] != rest)
             c.fail(FileErrorCode::BadValue,
-                   FinbookFile::tr("stroke %1 has %2 points but its pose has %3")
+                   FinbookFile::tr("stroke %1 has %n point(s) but its pose has %2", nullptr,
+                                   int(std::min<quint32>(rest, INT_MAX)))
                        .arg(i + 1)
-                       .arg(rest)
                        .arg(sizes[i]));
     }
     return m_poses[index];

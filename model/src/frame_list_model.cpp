@@ -129,7 +129,7 @@ QVariant FrameListModel::data(const QModelIndex &index, int role) const
         return row >= m_doc->playFirst() && row <= m_doc->playLast();
     case Qt::ToolTipRole:
     case Qt::AccessibleTextRole:
-        return f->hold > 1 ? tr("Frame %1, held for %2 frames").arg(row + 1).arg(f->hold)
+        return f->hold > 1 ? tr("Frame %1, held for %n frame(s)", nullptr, f->hold).arg(row + 1)
                            : tr("Frame %1").arg(row + 1);
     default:
         return {};

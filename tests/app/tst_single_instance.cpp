@@ -7,7 +7,7 @@
 #include <finbook/model/commands.h>
 #include <finbook/model/document.h>
 #include <finbook/model/finbook_file.h>
-#include <finbook/ui/main_window.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QApplication>
 #include <QFile>

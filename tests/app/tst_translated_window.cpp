@@ -2,15 +2,18 @@
 // unique in the translations, toolbar buttons show no Japanese "(X)" mnemonic, and the
 // Keyboard Shortcuts dialog and the Preferences shortcut editor show each action and shortcut
 // in full (translations run longer than English: "Dokumenteinstellungen..." was elided).
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/preferences_dialog.h>
-#include <finbook/ui/shortcut_editor.h>
-#include <finbook/ui/shortcuts_dialog.h>
+#include <finbook/ui/dialogs/preferences_dialog.h>
+#include <finbook/ui/dialogs/shortcut_editor.h>
+#include <finbook/ui/dialogs/shortcuts_dialog.h>
+#include <finbook/ui/window/main_window.h>
 
+#include <QAbstractButton>
 #include <QHeaderView>
+#include <QLabel>
 #include <QLibraryInfo>
 #include <QMenuBar>
 #include <QSettings>
+#include <QStatusBar>
 #include <QStyle>
 #include <QTabBar>
 #include <QTabWidget>
@@ -148,6 +151,8 @@ private slots:
     void shortcutListShowsEveryTextInFull();
     void preferencesShowEveryTextInFull_data() { languages(true); }
     void preferencesShowEveryTextInFull();
+    void controlsFitTheirTextAtTheDefaultSize_data() { languages(true); }
+    void controlsFitTheirTextAtTheDefaultSize();
 
 private:
     static void languages(bool withEnglish);
@@ -250,6 +255,62 @@ void TestTranslatedWindow::preferencesShowEveryTextInFull()
              qPrintable(QStringLiteral("key column %1 px").arg(table->columnWidth(1))));
     const QStringList elided = elidedCells(table);
     QVERIFY2(elided.isEmpty(), qPrintable(elided.join(QLatin1Char('\n'))));
+}
+
+// Issue 22, item 8: "Move To…" was cut off in every language and the Skeleton panel's hint at
+// the default window size. Every button and label the window shows at 1280×840 gets the room
+// its text asks for (a menu button also the room of its arrow, which the style draws over the
+// text otherwise).
+void TestTranslatedWindow::controlsFitTheirTextAtTheDefaultSize()
+{
+    QFETCH(QString, language);
+    Language installed(language);
+    ui::MainWindow window;
+    window.resize(1280, 840);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QCoreApplication::processEvents();
+    QStringList cut;
+    // The part of a widget its window and the docks and panels around it show.
+    const auto visible = [&window](const QWidget *w) {
+        QRect r(w->mapTo(&window, QPoint(0, 0)), w->size());
+        for (const QWidget *p = w->parentWidget(); p && p != &window; p = p->parentWidget())
+            r &= QRect(p->mapTo(&window, QPoint(0, 0)), p->size());
+        return r & window.rect();
+    };
+    const auto shown = [&](const QWidget *w) { return visible(w).size() == w->size(); };
+    const auto visibleWidth = [&](const QWidget *w) { return visible(w).width(); };
+    const auto describe = [](const QWidget *w, const QString &text, int has, int needs) {
+        return QStringLiteral("%1 \"%2\": %3 px of %4")
+            .arg(w->objectName(), text)
+            .arg(has)
+            .arg(needs);
+    };
+    for (const QAbstractButton *b : window.findChildren<QAbstractButton *>()) {
+        if (!b->isVisible() || b->text().isEmpty())
+            continue;
+        int needs = b->sizeHint().width();
+        if (const auto *tool = qobject_cast<const QToolButton *>(b);
+            tool && tool->popupMode() == QToolButton::InstantPopup &&
+            (tool->toolButtonStyle() != Qt::ToolButtonIconOnly || tool->icon().isNull()) &&
+            (tool->menu() || (tool->defaultAction() && tool->defaultAction()->menu())))
+            needs += tool->style()->pixelMetric(QStyle::PM_MenuButtonIndicator, nullptr, tool);
+        if (b->width() < needs)
+            cut << describe(b, b->text(), b->width(), needs);
+        else if (!shown(b))
+            cut << describe(b, b->text(), visibleWidth(b), b->width());
+    }
+    for (const QLabel *l : window.findChildren<QLabel *>()) {
+        if (!l->isVisible() || l->text().isEmpty() || l->parent() == window.statusBar())
+            continue;
+        if (!shown(l))
+            cut << describe(l, l->text(), visibleWidth(l), l->width());
+        else if (l->wordWrap() ? l->height() < l->heightForWidth(l->width())
+                               : l->width() < l->sizeHint().width())
+            cut << describe(l, l->text(), l->wordWrap() ? l->height() : l->width(),
+                            l->wordWrap() ? l->heightForWidth(l->width()) : l->sizeHint().width());
+    }
+    QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QLatin1Char('\n'))));
 }
 
 QTEST_MAIN(TestTranslatedWindow)

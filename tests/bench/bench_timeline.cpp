@@ -6,12 +6,12 @@
 
 #include <finbook/model/commands.h>
 #include <finbook/model/finbook_file.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/frame_actions.h>
-#include <finbook/ui/playback_controller.h>
-#include <finbook/ui/thumbnail_cache.h>
-#include <finbook/ui/timeline_view.h>
-#include <finbook/ui/timeline_widget.h>
+#include <finbook/ui/timeline/frame_actions.h>
+#include <finbook/ui/timeline/playback_controller.h>
+#include <finbook/ui/timeline/thumbnail_cache.h>
+#include <finbook/ui/timeline/timeline_view.h>
+#include <finbook/ui/timeline/timeline_widget.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -6,9 +6,9 @@
 #include "bench.h"
 
 #include <finbook/model/document.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -4,14 +4,14 @@
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/skeleton/skeleton_carry.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/deform_actions.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/object_actions.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/panels/object_actions.h>
+#include <finbook/ui/rig/deform_actions.h>
 #include <finbook/ui/skeleton/skeleton_overlay.h>
 #include <finbook/ui/skeleton/tool_bone.h>
-#include <finbook/ui/stroke_editing.h>
-#include <finbook/ui/tool_eraser.h>
+#include <finbook/ui/tools/stroke_editing.h>
+#include <finbook/ui/tools/tool_eraser.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QElapsedTimer>
 #include <QMenu>
@@ -150,6 +150,7 @@ private slots:
     void dragJointPullsTheChain();
     void dragRootMovesTheObject();
     void altClickLocksAJoint();
+    void keyLLocksTheJointUnderTheMouse();
     void showSkeletonPaints();
     void lockedJointsLookLocked();
     void contextMenuResetsOneBone();
@@ -279,6 +280,35 @@ void TestBoneTool::altClickLocksAJoint()
     QVERIFY(fx.skeleton().locked.empty());
     fx.doc.undoStack()->undo();
     QVERIFY(fx.tool->isLocked(fx.group, parent));
+}
+
+// Issue 22, bug 5: many Linux window managers take Alt-click; L over a joint locks it there.
+void TestBoneTool::keyLLocksTheJointUnderTheMouse()
+{
+    Fixture fx;
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    QVERIFY(fx.waitReady());
+    const int bone = fx.tipBone();
+    const int parent = fx.skeleton().parent[std::size_t(bone)];
+    const QPointF p = fx.skeleton().joints[std::size_t(parent)];
+    const int count = fx.doc.undoStack()->count();
+    // Away from every joint, L does nothing (and is left to the window).
+    const auto hover = [&fx](QPointF canvasPos) {
+        QMouseEvent move(QEvent::MouseMove, fx.at(canvasPos),
+                         fx.canvas.mapToGlobal(fx.at(canvasPos)), Qt::NoButton, Qt::NoButton, {});
+        QApplication::sendEvent(&fx.canvas, &move);
+    };
+    hover({700, 80});
+    QTest::keyClick(&fx.canvas, Qt::Key_L);
+    QVERIFY(fx.skeleton().locked.empty());
+    hover(p);
+    QTest::keyClick(&fx.canvas, Qt::Key_L);
+    QVERIFY(fx.skeleton().isLocked(parent));
+    QCOMPARE(fx.doc.undoStack()->count(), count + 1);
+    QTest::keyClick(&fx.canvas, Qt::Key_L);
+    QVERIFY(!fx.skeleton().isLocked(parent));
+    fx.doc.undoStack()->undo();
+    QVERIFY(fx.skeleton().isLocked(parent));
 }
 
 void TestBoneTool::showSkeletonPaints()
@@ -580,7 +610,8 @@ void TestBoneTool::erasingALimbRebuildsTheSkeleton()
     QVERIFY(lowest() > 400); // the forearm has bones
     const QByteArray start = serializeFinbook(fx.doc);
     const int count = fx.doc.undoStack()->count();
-    auto *eraser = fx.canvas.addTool(std::make_unique<StrokeEraserTool>());
+    auto *eraser = static_cast<EraserTool *>(fx.canvas.addTool(std::make_unique<EraserTool>()));
+    eraser->setMode(EraserMode::WholeStrokes);
     fx.canvas.setCurrentTool(eraser->id());
     fx.drag({380, 420}, {490, 420}); // across every forearm stroke
     QCOMPARE(fx.object().strokes.size(), std::size_t(7));

@@ -1,12 +1,13 @@
 // The Cage tool and Fit Cage driven by real mouse and key events on the real canvas.
+#include <finbook/model/cage/cage_commands.h>
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/ui/cage/cage_actions.h>
 #include <finbook/ui/cage/tool_cage.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/deform_actions.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/rig/deform_actions.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QAbstractButton>
 #include <QMessageBox>
@@ -121,6 +122,7 @@ private slots:
     void editShapeMovesTheRestCage();
     void fitCageWrapsTheObject();
     void replacingPosedPinsAsksFirst();
+    void aNewCageStartsWithNothingSelected();
 };
 
 void TestCageTool::clicksAndReturnPlaceACage()
@@ -250,6 +252,31 @@ void TestCageTool::replacingPosedPinsAsksFirst()
     stack->undo();
     QCOMPARE(fx.object().rig.kind(), RigKind::Pins);
     QCOMPARE(fx.object().rig.pins[1].target, QPointF(580, 360));
+}
+
+// Issue 22, bug 3: after Remove Rig a new cage came up with the old cage's corners selected,
+// and dragging one moved them all.
+void TestCageTool::aNewCageStartsWithNothingSelected()
+{
+    Fixture fx;
+    const std::vector<QPointF> corners{{180, 270}, {400, 250}, {620, 270}, {620, 340}, {180, 340}};
+    for (QPointF p : corners)
+        fx.click(p);
+    QTest::keyClick(&fx.canvas, Qt::Key_Return);
+    fx.drag({160, 200}, {700, 400}); // a box around every corner
+    QCOMPARE(fx.tool->selectedCorners().size(), std::size_t(5));
+    fx.doc.undoStack()->push(new RemoveRigCommand(&fx.doc, fx.group));
+    QVERIFY(fx.object().rig.empty());
+    for (QPointF p : corners)
+        fx.click(p);
+    QTest::keyClick(&fx.canvas, Qt::Key_Return);
+    QCOMPARE(fx.object().rig.cage.rest.size(), std::size_t(5));
+    QVERIFY(fx.tool->selectedCorners().empty());
+    fx.drag({620, 270}, {650, 250});
+    const CageRig &cage = fx.object().rig.cage;
+    QVERIFY(near(cage.posed[2], QPointF(650, 250)));
+    for (std::size_t i : {0, 1, 3, 4})
+        QCOMPARE(cage.posed[i], cage.rest[i]);
 }
 
 QTEST_MAIN(TestCageTool)

@@ -2,8 +2,8 @@
 #include "tst_tools_support.h"
 
 #include <finbook/model/render.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QtTest>
 

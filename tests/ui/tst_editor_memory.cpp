@@ -3,10 +3,10 @@
 // there in the next window. Settings live in a temporary folder (IsolatedSettings).
 #include "tst_window_support.h"
 
-#include <finbook/ui/canvas_tool.h>
-#include <finbook/ui/editor_memory.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_memory.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QDoubleSpinBox>
 #include <QSettings>

@@ -6,8 +6,9 @@
 
 #include <finbook/model/document.h>
 #include <finbook/ui/export/export_dialog.h>
+#include <finbook/ui/export/export_done.h>
 #include <finbook/ui/export/export_job.h>
-#include <finbook/ui/main_window.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QApplication>
 #include <QCheckBox>
@@ -17,6 +18,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QMessageBox>
+#include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -78,6 +81,7 @@ private slots:
     void cancelLeavesNothing();
     void failureIsShown();
     void fileMenuOpensTheDialog();
+    void finishedExportShowsWhereItWent();
 
 private:
     std::unique_ptr<IsolatedSettings> m_settings;
@@ -291,8 +295,20 @@ void TestExportDialog::failureIsShown()
 void TestExportDialog::fileMenuOpensTheDialog()
 {
     ui::MainWindow window;
-    QAction *action = window.action(QStringLiteral("file.exportAnimation"));
+    QAction *action = window.action(QStringLiteral("file.export"));
     QVERIFY(action);
+    // Issue 22, item 9: one export entry in the File menu (it was "Export..." and "Export
+    // Frames..."), with the shortcut Export Frames had.
+    QCOMPARE(action->shortcut(), QKeySequence(QStringLiteral("Ctrl+Shift+E")));
+    const QMenu *file = nullptr;
+    for (QObject *o : action->associatedObjects())
+        if (auto *menu = qobject_cast<QMenu *>(o))
+            file = menu;
+    QVERIFY(file);
+    int exports = 0;
+    for (const QAction *a : file->actions())
+        exports += a->text().remove(QLatin1Char('&')).startsWith(QLatin1String("Export"));
+    QCOMPARE(exports, 1);
     bool opened = false;
     QTimer::singleShot(0, this, [&] {
         auto *dialog = qobject_cast<ui::ExportDialog *>(QApplication::activeModalWidget());
@@ -302,6 +318,35 @@ void TestExportDialog::fileMenuOpensTheDialog()
     });
     action->trigger();
     QVERIFY(opened);
+}
+
+// Issue 22, item 9: a finished export says where the files went and opens their folder (and an
+// HTML page in the browser) on request.
+void TestExportDialog::finishedExportShowsWhereItWent()
+{
+    QWidget parent;
+    QList<QUrl> opened;
+    const auto open = [&opened](const QUrl &url) {
+        opened << url;
+        return true;
+    };
+    const QString page = m_dir.filePath(QStringLiteral("walk.html"));
+    QPointer<QMessageBox> box = ui::showExportDone(
+        &parent, QStringLiteral("Exported 1 file to ") + page, {page}, page, open);
+    QVERIFY(box && box->isVisible());
+    QVERIFY(!box->isModal());
+    QVERIFY(box->text().contains(page));
+    auto *browse = box->findChild<QPushButton *>(QStringLiteral("export.openBrowser"));
+    QVERIFY(browse);
+    browse->click();
+    QCOMPARE(opened, QList<QUrl>{QUrl::fromLocalFile(page)});
+    // Frames: no browser, the folder they fill.
+    const QStringList frames{m_dir.filePath(QStringLiteral("f/frame_0001.png")),
+                             m_dir.filePath(QStringLiteral("f/frame_0002.png"))};
+    box = ui::showExportDone(&parent, QStringLiteral("Exported 2 files"), frames, {}, open);
+    QVERIFY(!box->findChild<QPushButton *>(QStringLiteral("export.openBrowser")));
+    box->findChild<QPushButton *>(QStringLiteral("export.showFolder"))->click();
+    QCOMPARE(opened.last(), QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("f"))));
 }
 
 QTEST_MAIN(TestExportDialog)

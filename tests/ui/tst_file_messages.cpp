@@ -4,7 +4,7 @@
 #include "tst_window_support.h"
 
 #include <finbook/model/finbook_file.h>
-#include <finbook/ui/file_messages.h>
+#include <finbook/ui/dialogs/file_messages.h>
 
 #include <QDir>
 #include <QFile>

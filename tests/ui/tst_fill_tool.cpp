@@ -3,11 +3,11 @@
 #include "tst_window_support.h"
 
 #include <finbook/model/fill/fill_regions.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/fill/tool_fill.h>
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/window/main_window.h>
+#include <finbook/ui/tools/tool_pen.h>
 
 #include <QMenuBar>
 #include <QSpinBox>

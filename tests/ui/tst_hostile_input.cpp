@@ -1,8 +1,8 @@
 // Numbers from a tablet: positions and pressures that are NaN, infinite or 1e30 never reach
 // the document, the view or the status bar as NaN or as garbage, and never crash the editor.
 #include <finbook/model/document.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/main_window.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QApplication>
 #include <QLabel>

@@ -5,11 +5,11 @@
 #include "tst_tools_support.h"
 
 #include <finbook/model/finbook_file.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/inbetween/inbetween_dialog.h>
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/timeline_view.h>
+#include <finbook/ui/timeline/timeline_view.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QApplication>
 #include <QComboBox>
@@ -17,6 +17,7 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QSlider>
 #include <QSpinBox>
 #include <QTimer>
 #include <QtTest>
@@ -36,6 +37,7 @@ private slots:
     void ctrlClickPicksTwoKeys();
     void okInsertsOneUndoStep();
     void cancelLeavesNothing();
+    void dialogShowsThePreviewAndRemembersItsPlace();
 
 private:
     void pickKeys();
@@ -182,6 +184,46 @@ void TestInbetweenDialog::cancelLeavesNothing()
     QCOMPARE(doc->frameCount(), 2);
     QCOMPARE(doc->undoStack()->count(), 0);
     QCOMPARE(model::serializeFinbook(*doc), before);
+}
+
+// Issue 22, item 6: the dialog does not cover the page it previews on, the canvas shows the
+// preview's own pins, Favour shows only when chosen, and the dialog comes back where the user
+// put it.
+void TestInbetweenDialog::dialogShowsThePreviewAndRemembersItsPlace()
+{
+    pickKeys();
+    ui::CanvasWidget *canvas = m_window->canvas();
+    const QSize page = m_window->document()->settings().canvasSize;
+    const QPoint pageCentre = canvas->mapToGlobal(
+        canvas->mapFromCanvas(QPointF(page.width() / 2.0, page.height() / 2.0)).toPoint());
+    QPoint movedTo;
+    bool driven = runDialog([&](ui::InbetweenDialog *dialog) {
+        QVERIFY2(!dialog->frameGeometry().contains(pageCentre), "the dialog covers the preview");
+        auto *favour = dialog->findChild<QSlider *>(QStringLiteral("inbetweenFavour"));
+        QVERIFY(!favour->isVisibleTo(dialog));
+        auto *spacing = dialog->findChild<QComboBox *>(QStringLiteral("inbetweenSpacing"));
+        spacing->setCurrentIndex(spacing->findData(int(model::SpacingKind::Favour)));
+        QVERIFY(favour->isVisibleTo(dialog));
+        QTRY_VERIFY(!dialog->posing());
+        QTRY_VERIFY(canvas->hasPreviewFrame());
+        // The overlays draw the frame on show: the in-between's pins, not the second key's.
+        const model::Pin &shown = canvas->shownFrame()->groups[0].rig.pins[1];
+        QCOMPARE(shown.target, dialog->previewFrame()->groups[0].rig.pins[1].target);
+        QVERIFY(shown.target !=
+                m_window->editorState()->currentFrame()->groups[0].rig.pins[1].target);
+        movedTo = dialog->pos() + QPoint(-37, 23);
+        dialog->move(movedTo);
+        dialog->reject();
+    });
+    QVERIFY(driven);
+    QVERIFY(!canvas->hasPreviewFrame());
+    QCOMPARE(canvas->shownFrame(), m_window->editorState()->currentFrame());
+    pickKeys();
+    driven = runDialog([&](ui::InbetweenDialog *dialog) {
+        QCOMPARE(dialog->pos(), movedTo);
+        dialog->reject();
+    });
+    QVERIFY(driven);
 }
 
 QTEST_MAIN(TestInbetweenDialog)

@@ -5,13 +5,13 @@
 #include "tst_window_support.h"
 
 #include <finbook/model/object_list_model.h>
-#include <finbook/ui/canvas_tool.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/objects_panel.h>
-#include <finbook/ui/playback_controller.h>
-#include <finbook/ui/timeline_view.h>
-#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/panels/objects_panel.h>
+#include <finbook/ui/timeline/playback_controller.h>
+#include <finbook/ui/timeline/timeline_view.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QAbstractItemModel>
 #include <QDoubleSpinBox>
@@ -37,6 +37,7 @@ private slots:
     void renameCommitsOnReturnAndCancelsOnEscape();
     void toolKeysWorkAfterTouchingControls();
     void typingStaysInTheFieldUntilConfirmed();
+    void aToolInAGestureGetsItsKeysFirst();
 
 private:
     QString tool() const { return m_window->canvas()->currentTool()->id(); }
@@ -263,6 +264,48 @@ void TestKeysFocus::typingStaysInTheFieldUntilConfirmed()
     QVERIFY(canvasHasFocus());
     typeKey(Qt::Key_Backspace); // on the canvas Backspace deletes the selection
     QVERIFY(m_window->editorState()->selectedStrokes().empty());
+}
+
+// Issue 22, bug 1: Return while placing a cage closed the cage only on the keypad; the main
+// Return started playback (Play's window-wide shortcut fires before the tool). A tool in the
+// middle of a gesture gets Return, Escape, Backspace and Delete first.
+void TestKeysFocus::aToolInAGestureGetsItsKeysFirst()
+{
+    ui::CanvasWidget *canvas = m_window->canvas();
+    const model::Id object = m_window->document()->frameAt(0).groups[0].id;
+    m_window->editorState()->setCurrentGroupId(object);
+    typeKey(Qt::Key_C);
+    QCOMPARE(tool(), QStringLiteral("tool.cage"));
+    const auto click = [canvas](QPointF p) {
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, canvas->mapFromCanvas(p).toPoint());
+    };
+    // Both objects' lines run from (50, 50) to (200, 120): a cage around them, with a stray
+    // corner that Backspace and Delete take back.
+    for (QPointF p : {QPointF(30, 30), QPointF(220, 30), QPointF(220, 140), QPointF(30, 140),
+                      QPointF(10, 200), QPointF(10, 210)})
+        click(p);
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_Backspace);
+    typeKey(Qt::Key_Delete);
+    QCOMPARE(m_window->document()->frameAt(0).groups[1].strokes.size(), std::size_t(1));
+    typeKey(Qt::Key_Return);
+    QVERIFY2(!playing(), "Return while placing a cage started playback");
+    const model::StrokeGroup *g = m_window->document()->group(object);
+    QCOMPARE(g->rig.kind(), model::RigKind::Cage);
+    QCOMPARE(g->rig.cage.rest.size(), std::size_t(4));
+    // With no gesture under way Return is Play again.
+    typeKey(Qt::Key_Return);
+    QVERIFY(playing());
+    typeKey(Qt::Key_Return);
+    QVERIFY(!playing());
+    // Escape cancels a cage being placed (around the other object), Return then plays.
+    m_window->editorState()->setCurrentGroupId(m_window->document()->frameAt(0).groups[1].id);
+    click({30, 30});
+    click({220, 30});
+    typeKey(Qt::Key_Escape);
+    QVERIFY(!playing());
+    typeKey(Qt::Key_Return);
+    QVERIFY(playing());
 }
 
 QTEST_MAIN(TestKeysFocus)

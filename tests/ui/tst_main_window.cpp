@@ -3,11 +3,11 @@
 #include "tst_tools_support.h"
 
 #include <finbook/model/finbook_file.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/shortcut_registry.h>
-#include <finbook/ui/shortcuts_dialog.h>
-#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/dialogs/shortcuts_dialog.h>
+#include <finbook/ui/keys/shortcut_registry.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QDir>
 #include <QFile>
@@ -25,7 +25,6 @@ public:
     int prompts = 0;
     QMessageBox::StandardButton answer = QMessageBox::Cancel;
     QString savePath;
-    QString exportFolder;
 
 protected:
     void reportError(const QString &, const QString &message) override
@@ -40,7 +39,6 @@ protected:
     }
     QString askSavePath() override { return savePath; }
     QString askOpenPath() override { return {}; }
-    QString askExportFolder() override { return exportFolder; }
 };
 
 } // namespace
@@ -64,7 +62,6 @@ private slots:
     void toolShortcutsSwitchTools();
     void userShortcutPersists();
     void editActionsFollowSelection();
-    void exportFramesWritesPngs();
 
 private:
     void drawStroke()
@@ -279,26 +276,6 @@ void TestMainWindow::editActionsFollowSelection()
     m_window->action(QStringLiteral("edit.paste"))->trigger();
     QCOMPARE(strokeCount(), 1);
     QCOMPARE(m_window->editorState()->selectedStrokes().size(), std::size_t(1));
-}
-
-void TestMainWindow::exportFramesWritesPngs()
-{
-    m_window->action(QStringLiteral("file.export"))->trigger(); // no folder chosen: nothing
-    QVERIFY(m_window->errors.isEmpty());
-    drawStroke();
-    m_window->action(QStringLiteral("frame.duplicate"))->trigger();
-    QCOMPARE(m_window->document()->frameCount(), 2);
-    m_window->exportFolder = m_dir.filePath(QStringLiteral("png"));
-    QVERIFY(QDir().mkpath(m_window->exportFolder));
-    m_window->action(QStringLiteral("file.export"))->trigger();
-    QVERIFY(m_window->errors.isEmpty());
-    const QImage first(QDir(m_window->exportFolder).filePath(QStringLiteral("frame_0001.png")));
-    const QImage second(QDir(m_window->exportFolder).filePath(QStringLiteral("frame_0002.png")));
-    QCOMPARE(first.size(), m_window->document()->settings().canvasSize);
-    QCOMPARE(second.size(), first.size());
-    m_window->exportFolder = m_dir.filePath(QStringLiteral("no/such/folder"));
-    m_window->action(QStringLiteral("file.export"))->trigger();
-    QCOMPARE(m_window->errors.size(), 1); // a sentence, not a crash
 }
 
 QTEST_MAIN(TestMainWindow)

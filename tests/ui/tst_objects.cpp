@@ -3,9 +3,9 @@
 // exactly the frame it started from. Driven through the real widgets where a user would click.
 #include <finbook/model/commands.h>
 #include <finbook/model/object_list_model.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/object_actions.h>
-#include <finbook/ui/objects_panel.h>
+#include <finbook/ui/panels/object_actions.h>
+#include <finbook/ui/panels/objects_panel.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QDir>
 #include <QLineEdit>

@@ -4,9 +4,9 @@
 // select tool's box around them.
 #include "tst_window_support.h"
 
-#include <finbook/ui/canvas_tool.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/stroke_editing.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/tools/stroke_editing.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QtTest>
 

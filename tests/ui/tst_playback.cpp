@@ -2,9 +2,9 @@
 // the frames' holds), loops or stops at the end of the play range, and the settings it
 // depends on change only through undoable commands.
 #include <finbook/model/commands.h>
-#include <finbook/ui/document_settings_dialog.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/playback_controller.h>
+#include <finbook/ui/dialogs/document_settings_dialog.h>
+#include <finbook/ui/timeline/playback_controller.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QCheckBox>
 #include <QSignalSpy>

@@ -6,8 +6,8 @@
 #include <finbook/model/document.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/recovery/autosaver.h>
-#include <finbook/ui/main_window.h>
 #include <finbook/ui/recovery/recovery_dialog.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QDir>
 #include <QFile>

@@ -3,12 +3,12 @@
 // editor, saved and read back; Apply Pose to Drawing has a shortcut of its own.
 #include "tst_window_support.h"
 
-#include <finbook/ui/canvas_tool.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/preferences_dialog.h>
-#include <finbook/ui/shortcut_editor.h>
-#include <finbook/ui/shortcut_registry.h>
-#include <finbook/ui/shortcuts_dialog.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/dialogs/preferences_dialog.h>
+#include <finbook/ui/dialogs/shortcut_editor.h>
+#include <finbook/ui/dialogs/shortcuts_dialog.h>
+#include <finbook/ui/keys/shortcut_registry.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QKeySequenceEdit>
 #include <QSettings>

@@ -4,11 +4,11 @@
 #include <finbook/model/commands.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/frame_list_model.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/frame_actions.h>
-#include <finbook/ui/thumbnail_cache.h>
-#include <finbook/ui/timeline_view.h>
-#include <finbook/ui/timeline_widget.h>
+#include <finbook/ui/timeline/frame_actions.h>
+#include <finbook/ui/timeline/thumbnail_cache.h>
+#include <finbook/ui/timeline/timeline_view.h>
+#include <finbook/ui/timeline/timeline_widget.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QDir>
 #include <QFileInfo>

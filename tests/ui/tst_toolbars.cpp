@@ -3,8 +3,8 @@
 // more tools (Cage, Bone) and more deformation actions than today.
 #include "tst_window_support.h"
 
-#include <finbook/ui/canvas_tool.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QToolBar>
 #include <QToolButton>

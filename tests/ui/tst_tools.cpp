@@ -1,12 +1,12 @@
 // Pen, eraser and select tools driven with real mouse events on a real canvas.
 #include "tst_tools_support.h"
 
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/stroke_editing.h>
-#include <finbook/ui/tool_eraser.h>
-#include <finbook/ui/tool_hand.h>
-#include <finbook/ui/tool_pen.h>
-#include <finbook/ui/tool_select.h>
+#include <finbook/ui/tools/stroke_editing.h>
+#include <finbook/ui/tools/tool_eraser.h>
+#include <finbook/ui/tools/tool_hand.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/tools/tool_select.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QSignalSpy>
 #include <QtTest>
@@ -65,7 +65,9 @@ void TestTools::init()
     m_state = std::make_unique<ui::EditorState>(m_doc.get());
     m_canvas = std::make_unique<ui::CanvasWidget>(m_state.get());
     m_canvas->addTool(std::make_unique<ui::PenTool>());
-    m_canvas->addTool(std::make_unique<ui::StrokeEraserTool>());
+    // These tests keep the whole-stroke mode; tst_eraser covers cutting.
+    static_cast<ui::EraserTool *>(m_canvas->addTool(std::make_unique<ui::EraserTool>()))
+        ->setMode(ui::EraserMode::WholeStrokes);
     m_canvas->addTool(std::make_unique<ui::SelectTool>());
     m_canvas->addTool(std::make_unique<ui::HandTool>());
     m_canvas->resize(600, 500);

@@ -3,7 +3,7 @@
 
 #include <finbook/model/commands.h>
 #include <finbook/model/document.h>
-#include <finbook/ui/canvas_widget.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 
 #include <QApplication>
 #include <QMouseEvent>

@@ -5,9 +5,9 @@
 
 #include <finbook/model/frame_list_model.h>
 #include <finbook/model/object_list_model.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/objects_panel.h>
-#include <finbook/ui/timeline_view.h>
+#include <finbook/ui/panels/objects_panel.h>
+#include <finbook/ui/timeline/timeline_view.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QTranslator>
 #include <QtTest>

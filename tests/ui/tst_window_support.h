@@ -4,7 +4,7 @@
 
 #include "tst_tools_support.h"
 
-#include <finbook/ui/main_window.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QAbstractSpinBox>
 #include <QLineEdit>

@@ -5,7 +5,8 @@
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/ui/cage/cage_actions.h>
 #include <finbook/ui/cage/tool_cage.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QApplication>
 #include <QPainter>
@@ -107,7 +108,8 @@ CageOverlay::CageOverlay(EditorState *state, CageTool *tool)
 
 void CageOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
 {
-    const model::Frame *f = m_state->currentFrame();
+    const model::Frame *f =
+        m_tool->canvas() ? m_tool->canvas()->shownFrame() : m_state->currentFrame();
     if (!f)
         return;
     painter.save();

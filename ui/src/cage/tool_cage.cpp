@@ -4,8 +4,8 @@
 #include <finbook/model/cage/cage_commands.h>
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/ui/cage/tool_cage.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QKeyEvent>
 #include <QPainter>
@@ -48,6 +48,18 @@ QIcon CageTool::icon() const
 
 void CageTool::activate()
 {
+    if (!m_watching) {
+        // A selection belongs to one cage: when that cage goes (Remove Rig, pins, undo of its
+        // placing, another document) its corner numbers mean nothing for the next one.
+        m_watching = true;
+        model::Document *doc = state()->document();
+        connect(doc, &model::Document::constraintsChanged, this, [this, doc](model::Id id) {
+            const model::StrokeGroup *g = doc->group(id);
+            if (id == m_selectionOf && (!g || g->rig.kind() != model::RigKind::Cage))
+                m_selected.clear();
+        });
+        connect(doc, &model::Document::documentReset, this, [this] { m_selected.clear(); });
+    }
     if (const model::StrokeGroup *g = cagedObject())
         m_controller->prepare(g->id);
 }
@@ -133,6 +145,10 @@ void CageTool::press(const ToolEvent &event)
 
 void CageTool::pressOnCage(const model::StrokeGroup &g, const ToolEvent &event)
 {
+    if (g.id != m_selectionOf) {
+        m_selected.clear();
+        m_selectionOf = g.id;
+    }
     const int corner = cornerAt(g, event.widgetPos);
     const bool toggle = event.modifiers & Qt::ControlModifier;
     if (m_editShape && (event.modifiers & Qt::AltModifier) && corner < 0)
@@ -315,12 +331,22 @@ bool CageTool::keyPress(QKeyEvent *event)
         cancelPending();
         return true;
     case Qt::Key_Backspace:
+    case Qt::Key_Delete:
         m_pending.pop_back();
         canvas()->update();
         return true;
     default:
         return false;
     }
+}
+
+bool CageTool::claimsKey(const QKeyEvent &event) const
+{
+    // While corners are being placed, these keys belong to the cage, not to the window.
+    static constexpr int kKeys[] = {Qt::Key_Return, Qt::Key_Enter, Qt::Key_Escape,
+                                    Qt::Key_Backspace, Qt::Key_Delete};
+    return !m_pending.empty() &&
+           std::find(std::begin(kKeys), std::end(kKeys), event.key()) != std::end(kKeys);
 }
 
 bool CageTool::closePendingCage()
@@ -335,6 +361,8 @@ bool CageTool::closePendingCage()
     if (!confirmDiscardingPose(canvas()->window(), *g))
         return false;
     model::Document *doc = state()->document();
+    m_selected.clear(); // a new cage starts with nothing selected
+    m_selectionOf = g->id;
     doc->undoStack()->push(new model::PlaceCageCommand(doc, g->id, m_pending));
     m_controller->prepare(g->id);
     cancelPending();
@@ -364,7 +392,7 @@ void CageTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidget)
     if (const model::StrokeGroup *g = cagedObject()) {
         const QPolygonF corners = mappedPolygon(canvasToWidget, shownCorners(*g));
         for (int i = 0; i < corners.size(); ++i) {
-            const bool selected = m_selected.count(i);
+            const bool selected = g->id == m_selectionOf && m_selected.count(i);
             painter.setPen(QPen(Qt::white, 1));
             painter.setBrush(selected ? QColor(230, 60, 40) : QColor(40, 40, 40));
             const qreal s = kCornerSize;

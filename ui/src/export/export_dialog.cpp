@@ -2,9 +2,9 @@
 #include <finbook/model/document.h>
 #include <finbook/model/export/export_plan.h>
 #include <finbook/model/export/exporter.h>
-#include <finbook/ui/color_button.h>
 #include <finbook/ui/export/export_dialog.h>
 #include <finbook/ui/export/export_job.h>
+#include <finbook/ui/widgets/color_button.h>
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -81,6 +81,7 @@ void ExportDialog::jobFinished(bool ok, const model::ExportError &error, const Q
     setRunning(false);
     if (ok) {
         const QString where = files.size() == 1 ? files.first() : options().target;
+        m_written = files;
         const qint64 count = m_job ? m_job->fileCount() : files.size();
         m_summary = tr("Exported %n file(s) to %1", nullptr, int(std::min<qint64>(count, INT_MAX)))
                         .arg(QDir::toNativeSeparators(where));

@@ -1,13 +1,13 @@
 // The main window's fill parts: the Fill tool (F), the Fill toolbar with "Close gaps", and
 // Object → Fill All Enclosed Regions.
 #include <finbook/model/fill/fill_commands.h>
-#include <finbook/ui/canvas_tool.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/fill/tool_fill.h>
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/shortcut_registry.h>
-#include <finbook/ui/tool_pen.h>
+#include <finbook/ui/window/main_window.h>
+#include <finbook/ui/keys/shortcut_registry.h>
+#include <finbook/ui/tools/tool_pen.h>
 
 #include <QMenu>
 #include <QMenuBar>

@@ -90,8 +90,9 @@ QWidget *InbetweenDialog::buildControls()
     m_favour->setObjectName(QStringLiteral("inbetweenFavour"));
     m_favour->setRange(-kFavourSteps, kFavourSteps);
     m_favour->setToolTip(tr("Left favours the first key, right the second."));
-    m_favour->setEnabled(false);
     form->addRow(tr("F&avour:"), m_favour);
+    // Shown only with Favour chosen: a disabled slider still looks like one to drag.
+    form->setRowVisible(m_favour, false);
     m_arcs = new QCheckBox(tr("Move pins and cage corners along &arcs"), box);
     m_arcs->setObjectName(QStringLiteral("inbetweenArcs"));
     m_arcs->setChecked(true);
@@ -99,8 +100,8 @@ QWidget *InbetweenDialog::buildControls()
                           "target moves in a straight line."));
     form->addRow(m_arcs);
     connect(m_count, &QSpinBox::valueChanged, this, &InbetweenDialog::updatePlan);
-    connect(m_spacing, &QComboBox::currentIndexChanged, this, [this] {
-        m_favour->setEnabled(options().spacing.kind == model::SpacingKind::Favour);
+    connect(m_spacing, &QComboBox::currentIndexChanged, this, [this, form] {
+        form->setRowVisible(m_favour, options().spacing.kind == model::SpacingKind::Favour);
         updatePlan();
     });
     connect(m_favour, &QSlider::valueChanged, this, &InbetweenDialog::updatePlan);

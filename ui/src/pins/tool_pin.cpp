@@ -1,10 +1,12 @@
 #include "../rig/rig_prompt.h"
+#include "../tools/stroke_hit.h"
 
+#include <finbook/deform/nearest_vertex.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/pins/tool_pin.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QPainter>
 #include <QPainterPath>
@@ -91,20 +93,22 @@ bool PinTool::objectHit(const model::StrokeGroup &group, const ToolEvent &event)
                 return true;
     }
     // Inside the object's (posed) mesh counts too: a pin in the middle of a filled shape.
-    if (const model::DeformSetup *setup = m_controller->setup(group.id)) {
-        const Eigen::MatrixX2d &U = *m_controller->poseVertices(group.id);
-        const Eigen::MatrixX3i &F = setup->meshTriangles();
-        const QPointF p = event.pos;
-        for (Eigen::Index t = 0; t < F.rows(); ++t) {
-            const QPointF a(U(F(t, 0), 0), U(F(t, 0), 1)), b(U(F(t, 1), 0), U(F(t, 1), 1)),
-                c(U(F(t, 2), 0), U(F(t, 2), 1));
-            auto side = [&p](QPointF u, QPointF v) {
-                return (v.x() - u.x()) * (p.y() - u.y()) - (v.y() - u.y()) * (p.x() - u.x());
-            };
-            const qreal s1 = side(a, b), s2 = side(b, c), s3 = side(c, a);
-            if ((s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0))
-                return true;
-        }
+    // Before the first pin there is no mesh yet: the silhouette it will be built from answers.
+    const model::DeformSetup *setup = m_controller->setup(group.id);
+    if (!setup || !m_controller->poseVertices(group.id))
+        return insideShape(group, event.pos);
+    const Eigen::MatrixX2d &U = *m_controller->poseVertices(group.id);
+    const Eigen::MatrixX3i &F = setup->meshTriangles();
+    const QPointF p = event.pos;
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        const QPointF a(U(F(t, 0), 0), U(F(t, 0), 1)), b(U(F(t, 1), 0), U(F(t, 1), 1)),
+            c(U(F(t, 2), 0), U(F(t, 2), 1));
+        auto side = [&p](QPointF u, QPointF v) {
+            return (v.x() - u.x()) * (p.y() - u.y()) - (v.y() - u.y()) * (p.x() - u.x());
+        };
+        const qreal s1 = side(a, b), s2 = side(b, c), s3 = side(c, a);
+        if ((s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0))
+            return true;
     }
     return false;
 }
@@ -140,6 +144,8 @@ void PinTool::startDrag(const PinRef &pin)
 void PinTool::press(const ToolEvent &event)
 {
     m_pressPos = event.pos;
+    m_pressWidgetPos = event.widgetPos;
+    m_dragStarted = false;
     const bool removing =
         event.button == Qt::RightButton || (event.modifiers & Qt::ControlModifier);
     if (const PinRef hit = pinAt(event); hit.isValid()) {
@@ -161,13 +167,33 @@ void PinTool::press(const ToolEvent &event)
     if (const model::StrokeGroup *g = doc->group(groupId);
         g->rig.kind() == model::RigKind::Cage && !confirmDiscardingPose(canvas()->window(), *g))
         return;
-    // On a posed object the click is on the posed drawing; the pin belongs where that point
-    // is on the rest drawing.
-    const QPointF rest = m_controller->restPointFor(groupId, event.pos);
-    auto *add = new model::AddPinCommand(doc, groupId, rest, event.pos);
+    const auto [rest, target] = newPin(groupId, event.pos);
+    auto *add = new model::AddPinCommand(doc, groupId, rest, target);
     const PinRef added{groupId, add->pinId()};
     doc->undoStack()->push(add);
     startDrag(added);
+}
+
+std::pair<QPointF, QPointF> PinTool::newPin(model::Id groupId, QPointF shown) const
+{
+    const model::StrokeGroup *g = state()->document()->group(groupId);
+    // Unposed (or about to lose a cage's pose): what is shown is the rest drawing, and a pin
+    // whose target is its rest position leaves the object unposed.
+    if (!g || g->rig.kind() != model::RigKind::Pins || !g->rig.isPosed())
+        return {shown, shown};
+    // On a posed object the click is on the posed drawing; the pin belongs where that point
+    // is on the rest drawing, and its target keeps the vertex it snaps to where the pose has
+    // it now, so adding the pin does not move the drawing.
+    const QPointF rest = m_controller->restPointFor(groupId, shown);
+    const model::DeformSetup *setup = m_controller->setup(groupId);
+    const Eigen::MatrixX2d *U = m_controller->poseVertices(groupId);
+    if (!setup || !U || !setup->matches(*g))
+        return {rest, shown};
+    const Eigen::MatrixX2d &V = setup->meshVertices();
+    const int v = deform::nearestVertex(V, Eigen::Vector2d(rest.x(), rest.y()));
+    if (v < 0 || v >= U->rows() || v >= V.rows())
+        return {rest, shown};
+    return {rest, rest + QPointF((*U)(v, 0) - V(v, 0), (*U)(v, 1) - V(v, 1))};
 }
 
 void PinTool::secondaryClick(const ToolEvent &event)
@@ -178,9 +204,15 @@ void PinTool::secondaryClick(const ToolEvent &event)
 
 void PinTool::move(const ToolEvent &event)
 {
-    // A click without movement must not leave a "Move Pin" step behind.
+    // A click must not leave a "Move Pin" step behind, nor a hand's tremble a pose: the pin
+    // moves once the pointer has gone a few screen pixels (then it follows it exactly).
     if (!m_drag.isValid() || event.pos == m_pressPos)
         return;
+    if (!m_dragStarted) {
+        if (QLineF(event.widgetPos, m_pressWidgetPos).length() < kDragThreshold)
+            return;
+        m_dragStarted = true;
+    }
     model::Document *doc = state()->document();
     doc->undoStack()->push(
         new model::MovePinCommand(doc, m_drag.groupId, m_drag.pinId, event.pos, m_dragSerial));
@@ -204,7 +236,7 @@ void PinTool::hover(const ToolEvent &event)
 
 void PinTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidget)
 {
-    const model::Frame *f = state()->currentFrame();
+    const model::Frame *f = canvas()->shownFrame();
     if (!f)
         return;
     painter.save();

@@ -2,14 +2,14 @@
 // Deform → Reset Bone Pose and Edit Joints (both act through the Bone tool), and
 // Deform → Skinning (rigid or linear blend for the current object).
 #include <finbook/model/skeleton/skeleton_commands.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/deform_actions.h>
-#include <finbook/ui/editor_state.h>
-#include <finbook/ui/main_window.h>
-#include <finbook/ui/shortcut_registry.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/keys/shortcut_registry.h>
+#include <finbook/ui/rig/deform_actions.h>
 #include <finbook/ui/skeleton/skeleton_overlay.h>
 #include <finbook/ui/skeleton/skeleton_panel.h>
 #include <finbook/ui/skeleton/tool_bone.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QActionGroup>
 #include <QDockWidget>

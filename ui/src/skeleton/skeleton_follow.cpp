@@ -1,8 +1,8 @@
 #include <finbook/model/cage/cage_commands.h>
 #include <finbook/model/skeleton/skeleton_carry.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
-#include <finbook/ui/editor_state.h>
 #include <finbook/ui/skeleton/skeleton_follow.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/skeleton/skeleton_overlay.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QPainter>
 
@@ -98,7 +98,7 @@ void SkeletonOverlay::setShown(bool shown)
 
 void SkeletonOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
 {
-    const model::Frame *f = m_state->currentFrame();
+    const model::Frame *f = m_canvas->shownFrame();
     if (!m_shown || !f)
         return;
     for (const model::StrokeGroup &g : f->groups)

@@ -1,7 +1,8 @@
 #include <finbook/model/skeleton/skeleton_commands.h>
-#include <finbook/ui/editor_state.h>
 #include <finbook/ui/skeleton/skeleton_panel.h>
+#include <finbook/ui/window/editor_state.h>
 
+#include <QEvent>
 #include <QFormLayout>
 #include <QLabel>
 #include <QSlider>
@@ -41,12 +42,26 @@ SkeletonPanel::SkeletonPanel(EditorState *state, QWidget *parent)
     m_hint =
         new QLabel(tr("Pick the Bone tool (K) and click an object to give it a skeleton."), this);
     m_hint->setWordWrap(true);
+    m_hint->installEventFilter(this);
     form->addRow(m_hint);
     connect(state, &EditorState::currentGroupChanged, this, &SkeletonPanel::sync);
     connect(state, &EditorState::currentFrameChanged, this, &SkeletonPanel::sync);
     connect(state->document(), &model::Document::constraintsChanged, this, &SkeletonPanel::sync);
     connect(state->document(), &model::Document::documentReset, this, &SkeletonPanel::sync);
     sync();
+}
+
+bool SkeletonPanel::eventFilter(QObject *watched, QEvent *event)
+{
+    // A dock does not ask a wrapped label how tall it gets at its width: say it as the minimum
+    // height, or the hint is cut off at the default window size (German, French, Japanese
+    // run longer still).
+    if (watched == m_hint && event->type() == QEvent::Resize) {
+        const int needed = m_hint->heightForWidth(m_hint->width());
+        if (needed > 0 && needed != m_hint->minimumHeight())
+            m_hint->setMinimumHeight(needed);
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void SkeletonPanel::sync()

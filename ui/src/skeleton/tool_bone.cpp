@@ -5,10 +5,10 @@
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
 #include <finbook/model/skeleton/skeleton_setup.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/skeleton/skeleton_overlay.h>
 #include <finbook/ui/skeleton/tool_bone.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QMessageBox>
 #include <QPainter>
@@ -295,7 +295,7 @@ void BoneTool::press(const ToolEvent &event)
                                  "right-click a joint to delete it."));
     else
         canvas()->postMessage(tr("Drag a bone to turn it, a joint to pull it, the root to move "
-                                 "the object; Alt-click a joint to lock it; Shift-drag the "
+                                 "the object; press L over a joint to lock it; Shift-drag the "
                                  "root onto another part to join them."));
 }
 

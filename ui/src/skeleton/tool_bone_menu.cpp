@@ -3,10 +3,11 @@
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
 #include <finbook/model/skeleton/skeleton_joint_edit.h>
-#include <finbook/ui/canvas_widget.h>
-#include <finbook/ui/editor_state.h>
+#include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/skeleton/tool_bone.h>
+#include <finbook/ui/window/editor_state.h>
 
+#include <QKeyEvent>
 #include <QMenu>
 
 namespace finbook::ui {
@@ -52,6 +53,35 @@ void BoneTool::toggleLock(const Hit &hit)
     model::Document *doc = state()->document();
     push(new model::SetJointLockCommand(doc, hit.groupId, hit.joint,
                                         !isLocked(hit.groupId, hit.joint)));
+}
+
+BoneTool::Hit BoneTool::lockTarget() const
+{
+    if (m_editJoints)
+        return {};
+    if (m_hover.part == Part::Joint && state()->document()->group(m_hover.groupId))
+        return m_hover;
+    const Hit selected = selection();
+    return selected.part == Part::Joint ? selected : Hit{};
+}
+
+bool BoneTool::claimsKey(const QKeyEvent &event) const
+{
+    // L locks the joint under the mouse (or the joint last clicked): Alt-click is taken by
+    // many Linux window managers for moving windows. Claimed only over a joint, so L stays
+    // free for a window shortcut the user may give it elsewhere.
+    return event.key() == kLockKey &&
+           !(event.modifiers() & ~Qt::KeyboardModifiers(Qt::KeypadModifier)) &&
+           lockTarget().part == Part::Joint;
+}
+
+bool BoneTool::keyPress(QKeyEvent *event)
+{
+    if (!claimsKey(*event))
+        return false;
+    if (!event->isAutoRepeat())
+        toggleLock(lockTarget());
+    return true;
 }
 
 bool BoneTool::canResetSelectedBone() const
@@ -158,9 +188,12 @@ void BoneTool::secondaryClick(const ToolEvent &event)
         return a;
     };
     QAction *lock = nullptr;
-    if (hit.part == Part::Joint)
+    if (hit.part == Part::Joint) {
         lock = add(isLocked(hit.groupId, hit.joint) ? tr("Unlock Joint") : tr("Lock Joint"),
                    "bone.lock");
+        lock->setShortcut(QKeySequence(kLockKey)); // shown only: keyPress() does the work
+        lock->setShortcutContext(Qt::WidgetShortcut);
+    }
     QAction *reset = add(tr("Reset Bone Pose"), "bone.resetBone");
     reset->setEnabled(canResetSelectedBone());
     menu.addSeparator();

@@ -5,7 +5,7 @@
 #pragma once
 
 #include <finbook/model/deform_controller.h>
-#include <finbook/ui/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_tool.h>
 
 #include <QAction>
 #include <QObject>

@@ -8,7 +8,7 @@
 #pragma once
 
 #include <finbook/model/deform_controller.h>
-#include <finbook/ui/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_tool.h>
 
 #include <set>
 
@@ -32,6 +32,7 @@ public:
     void hover(const ToolEvent &event) override;
     void secondaryClick(const ToolEvent &event) override;
     bool keyPress(QKeyEvent *event) override;
+    bool claimsKey(const QKeyEvent &event) const override;
     void paintOverlay(QPainter &painter, const QTransform &canvasToWidget) override;
 
     // Edit Shape: gestures change the rest cage rather than pose it.
@@ -63,6 +64,8 @@ private:
     std::vector<QPointF> m_pending;
     QPointF m_hoverPos;
     std::set<int> m_selected;
+    model::Id m_selectionOf = model::kNoId; // the object whose cage m_selected indexes
+    bool m_watching = false;
     // Drag state: where it started, the corners it moves and their positions then.
     bool m_dragging = false;
     bool m_rubberBand = false;

@@ -49,6 +49,8 @@ public:
     void setTarget(const QString &path);
     bool isExporting() const;
     QString summary() const { return m_summary; }
+    // The files the finished export wrote (empty before that).
+    const QStringList &writtenFiles() const { return m_written; }
 
     QComboBox *formatBox() const { return m_format; }
     QLineEdit *targetEdit() const { return m_target; }
@@ -114,6 +116,7 @@ private:
     QPushButton *m_closeButton = nullptr;
     std::unique_ptr<ExportJob> m_job;
     QString m_summary;
+    QStringList m_written;
 };
 
 } // namespace finbook::ui

@@ -6,7 +6,7 @@
 #pragma once
 
 #include <finbook/model/types.h>
-#include <finbook/ui/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_tool.h>
 
 #include <QPainterPath>
 

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <finbook/model/deform_controller.h>
-#include <finbook/ui/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+
+#include <utility>
 
 namespace finbook::ui {
 
@@ -37,16 +39,22 @@ public:
     PinRef pinAt(const ToolEvent &event) const;
     // The object a click at `pos` pins: the current object when hit, else the topmost.
     model::Id objectAt(const ToolEvent &event) const;
+    // Screen pixels the pointer must travel before a press on a pin becomes a drag.
+    static constexpr qreal kDragThreshold = 3.0;
 
 private:
     bool objectHit(const model::StrokeGroup &group, const ToolEvent &event) const;
     void removePin(const PinRef &pin);
     void startDrag(const PinRef &pin);
+    // Rest position and target of a pin added where `shown` is clicked.
+    std::pair<QPointF, QPointF> newPin(model::Id groupId, QPointF shown) const;
 
     model::DeformController *m_controller;
     PinRef m_drag;
     PinRef m_hover;
     QPointF m_pressPos;
+    QPointF m_pressWidgetPos;
+    bool m_dragStarted = false;
     int m_dragSerial = 0;
 };
 

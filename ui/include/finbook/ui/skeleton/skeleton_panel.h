@@ -26,6 +26,9 @@ public:
 signals:
     void messagePosted(const QString &message);
 
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 private:
     void sync();
     void changed();

@@ -1,8 +1,9 @@
 // The Bone tool (K): poses objects by their skeletons. Click an object without a skeleton to
 // build one; drag a bone to turn it about its parent joint (forward kinematics); drag a joint
 // to pull it and the chain above it, up to the nearest locked joint or the root (inverse
-// kinematics); drag the root to move the whole object. Alt-click a joint to lock or unlock it
-// (locks are saved with the skeleton). Right-click a joint or bone for its menu: Lock Joint,
+// kinematics); drag the root to move the whole object. L over a joint (or Alt-click it, where
+// the window manager leaves Alt to the application) locks or unlocks it (locks are saved with
+// the skeleton). Right-click a joint or bone for its menu: Lock Joint,
 // Reset Bone Pose, Edit Joints and, while editing, Insert Joint Here and Delete Joint.
 //
 // Characters (issue 9): a skeleton built on a drawing that overlaps another part's skeleton
@@ -19,7 +20,7 @@
 
 #include <finbook/deform/skeleton/skeleton.h>
 #include <finbook/model/deform_controller.h>
-#include <finbook/ui/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_tool.h>
 
 #include <functional>
 
@@ -47,7 +48,11 @@ public:
     void release(const ToolEvent &event) override;
     void hover(const ToolEvent &event) override;
     void secondaryClick(const ToolEvent &event) override;
+    bool keyPress(QKeyEvent *event) override;
+    bool claimsKey(const QKeyEvent &event) const override;
     void paintOverlay(QPainter &painter, const QTransform &canvasToWidget) override;
+
+    static constexpr Qt::Key kLockKey = Qt::Key_L; // locks the joint under the mouse
 
     enum class Part { None, Joint, Bone };
     struct Hit {
@@ -98,6 +103,8 @@ private:
     static bool insideShape(const model::StrokeGroup &g, QPointF pos);
     void build(model::Id groupId);
     void toggleLock(const Hit &hit);
+    // The joint L locks: the one under the mouse, else the one last clicked.
+    Hit lockTarget() const;
     bool startDrag(const Hit &hit, QPointF at);
     void pressEditing(const Hit &hit, QPointF at);
     void select(const Hit &hit);

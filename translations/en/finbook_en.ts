@@ -1,0 +1,124 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en">
+<context>
+    <name>Deformation</name>
+    <message numerus="yes">
+        <location filename="../../model/src/cage/cage_setup.cpp" line="40"/>
+        <source>%n stroke point(s) lie outside the cage; move its corners out so it encloses the drawing.</source>
+        <translation>
+            <numerusform>%n stroke point lies outside the cage; move its corners out so it encloses the drawing.</numerusform>
+            <numerusform>%n stroke points lie outside the cage; move its corners out so it encloses the drawing.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>FinbookFile</name>
+    <message numerus="yes">
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <source>its pose has %n stroke(s) but the object has %1</source>
+        <translation>
+            <numerusform>its pose has %n stroke but the object has %1</numerusform>
+            <numerusform>its pose has %n strokes but the object has %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <source>stroke %1 has %n point(s) but its pose has %2</source>
+        <translation>
+            <numerusform>stroke %1 has %n point but its pose has %2</numerusform>
+            <numerusform>stroke %1 has %n points but its pose has %2</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../model/src/finbook_file_reader_tables.cpp" line="48"/>
+        <source>%n point(s) with a non-finite coordinate are left out</source>
+        <translation>
+            <numerusform>%n point with a non-finite coordinate is left out</numerusform>
+            <numerusform>%n points with a non-finite coordinate are left out</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../model/src/finbook_file_recover.cpp" line="85"/>
+        <source>%n missing or repeated id(s) were replaced by new ones</source>
+        <translation>
+            <numerusform>%n missing or repeated id was replaced by a new one</numerusform>
+            <numerusform>%n missing or repeated ids were replaced by new ones</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ObjectListModel</name>
+    <message numerus="yes">
+        <location filename="../../model/src/object_list_model.cpp" line="160"/>
+        <source>%1: %n stroke(s)</source>
+        <translation>
+            <numerusform>%1: %n stroke</numerusform>
+            <numerusform>%1: %n strokes</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::model::FrameListModel</name>
+    <message numerus="yes">
+        <location filename="../../model/src/frame_list_model.cpp" line="132"/>
+        <source>Frame %1, held for %n frame(s)</source>
+        <translation>
+            <numerusform>Frame %1, held for %n frame</numerusform>
+            <numerusform>Frame %1, held for %n frames</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::BoneTool</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/skeleton/tool_bone_menu.cpp" line="278"/>
+        <source>Joined %n part(s).</source>
+        <translation>
+            <numerusform>Joined %n part.</numerusform>
+            <numerusform>Joined %n parts.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ExportDialog</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/export/export_dialog_run.cpp" line="92"/>
+        <source>Exported %n file(s) to %1</source>
+        <translation>
+            <numerusform>Exported %n file to %1</numerusform>
+            <numerusform>Exported %n files to %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../ui/src/export/export_dialog_run.cpp" line="129"/>
+        <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
+        <translation>
+            <numerusform>%n file at the target already exists, &quot;%1&quot;. Replace it?</numerusform>
+            <numerusform>%n files at the target already exist, such as &quot;%1&quot;. Replace them?</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::MainWindow</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/main_window_files.cpp" line="96"/>
+        <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
+        <translation>
+            <numerusform>Opened what was readable of %1 (%n problem repaired); save it under a new name.</numerusform>
+            <numerusform>Opened what was readable of %1 (%n problems repaired); save it under a new name.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::RecoveryDialog</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/recovery/recovery_dialog.cpp" line="58"/>
+        <source>%1 — %2 — %n frame(s)</source>
+        <translation>
+            <numerusform>%1 — %2 — %n frame</numerusform>
+            <numerusform>%1 — %2 — %n frames</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,157 @@
+// The drawing surface: shows the current frame (with onion skin) and routes pointer input to
+// the current CanvasTool in canvas coordinates.
+//
+// Speed: the current frame and the onion-skin neighbours are each rendered once into an image
+// the size of the widget and reused until the document, the view or the settings change
+// (Document::frameChanged for that frame, zoom, pan, resize, onion settings). A repaint with
+// a warm cache is two image blits plus the tool's overlay, whatever the frame holds. The
+// layers are drawn by a capsule rasterizer (stroke_raster.h) that gives QPainter's round-join
+// stroke shape at a fraction of its cost, so a cold repaint stays fast too.
+//
+// View: the wheel zooms about the cursor (Krita's convention); the middle button, Space-drag
+// and the hand tool pan. Until the user zooms or pans, the page is kept fitted to the widget.
+#pragma once
+
+#include <finbook/model/types.h>
+
+#include <QImage>
+#include <QWidget>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace finbook::model {
+class Document;
+}
+
+namespace finbook::ui {
+
+class CanvasOverlay;
+class CanvasTool;
+class StrokeRaster;
+class EditorState;
+struct ToolEvent;
+
+class CanvasWidget : public QWidget {
+    Q_OBJECT
+public:
+    static constexpr qreal kMinZoom = 0.05;
+    static constexpr qreal kMaxZoom = 32.0;
+
+    explicit CanvasWidget(EditorState *state, QWidget *parent = nullptr);
+    ~CanvasWidget() override;
+
+    EditorState *state() const { return m_state; }
+    model::Document *document() const;
+
+    // --- tools: the canvas owns them; the first one added becomes current.
+    CanvasTool *addTool(std::unique_ptr<CanvasTool> tool);
+    const std::vector<CanvasTool *> &tools() const { return m_toolList; }
+    CanvasTool *tool(const QString &id) const;
+    CanvasTool *currentTool() const { return m_tool; }
+    void setCurrentTool(const QString &id);
+    void addOverlay(std::unique_ptr<CanvasOverlay> overlay);
+
+    // --- view
+    qreal zoom() const { return m_zoom; }
+    QTransform canvasToWidget() const;
+    QPointF mapToCanvas(const QPointF &widgetPos) const;
+    QPointF mapFromCanvas(const QPointF &canvasPos) const;
+    // Zooms so that the canvas point under `widgetAnchor` stays under it.
+    void setZoom(qreal zoom, const QPointF &widgetAnchor);
+    void zoomIn();
+    void zoomOut();
+    void fitToView();  // whole page visible, centred; kept fitted on resize
+    void actualSize(); // 100 %, centred
+    void panBy(const QPointF &widgetDelta);
+    // The canvas point under the mouse while the mouse is over the canvas (paste lands there).
+    std::optional<QPointF> cursorPos() const;
+
+    // --- for tools
+    // Strokes left out of the cached frame while a tool draws them itself (transform preview).
+    void setSuppressedStrokes(std::vector<model::Id> strokeIds);
+    // Repaints the widget area covering `canvasRect` (an empty rect repaints everything).
+    void updateCanvasRect(const QRectF &canvasRect = {});
+    void postMessage(const QString &message);
+    // A frame shown instead of the current one (a dialog's live preview); std::nullopt shows
+    // the document again. The document is never touched.
+    void setPreviewFrame(std::optional<model::Frame> frame);
+    bool hasPreviewFrame() const { return m_preview.has_value(); }
+    // The frame on show: the preview while there is one, else the current frame (null when
+    // there is none). Overlays draw the handles of this frame, so a preview shows its own pins.
+    const model::Frame *shownFrame() const;
+    // Marks the cached frame and onion images stale (the repaint benchmark's cold case).
+    void invalidateCache();
+
+signals:
+    void toolAdded(finbook::ui::CanvasTool *tool);
+    void currentToolChanged(finbook::ui::CanvasTool *tool);
+    void zoomChanged(qreal zoom);
+    void cursorMoved(const QPointF &canvasPos);
+    void messagePosted(const QString &message);
+
+protected:
+    bool event(QEvent *event) override;
+    void paintEvent(QPaintEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void tabletEvent(QTabletEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void keyReleaseEvent(QKeyEvent *event) override;
+    void focusOutEvent(QFocusEvent *event) override;
+    void leaveEvent(QEvent *event) override;
+
+private:
+    enum class Drag { None, Tool, Pan };
+
+    void connectDocument();
+    void frameEdited(model::Id frameId);
+    void invalidateFrameLayer();
+    void invalidateOnionLayer();
+    void ensureLayers();
+    QImage renderFrameLayer(QImage recycled) const;
+    QImage renderOnionLayer(QImage recycled) const;
+    QImage newLayerImage(QImage recycled) const;
+    void rasterize(QImage &image, const std::function<void(StrokeRaster &)> &draw) const;
+    QRectF pageRect() const; // the page in widget coordinates
+    void paintPage(QPainter &painter) const;
+    void clampPan();
+    void setPanning(bool spaceHeld);
+    void updateCursor();
+    void beginDrag(const ToolEvent &event, bool pan);
+    void continueDrag(const ToolEvent &event);
+    void endDrag(const ToolEvent &event);
+    ToolEvent toolEvent(const QPointF &widgetPos, qreal pressure) const;
+
+    EditorState *m_state;
+    std::vector<std::unique_ptr<CanvasTool>> m_ownedTools;
+    std::vector<CanvasTool *> m_toolList;
+    CanvasTool *m_tool = nullptr;
+    std::vector<std::unique_ptr<CanvasOverlay>> m_overlays;
+
+    qreal m_zoom = 1.0;
+    QPointF m_offset; // widget position of the canvas origin
+    bool m_fitted = true;
+
+    Drag m_drag = Drag::None;
+    QPointF m_lastPanPos;
+    std::optional<QPointF> m_hover; // widget position of the mouse, while over the canvas
+    bool m_spaceHeld = false;
+    bool m_tabletDown = false;
+
+    std::vector<model::Id> m_suppressed;
+    std::optional<model::Frame> m_preview;
+    QImage m_frameLayer; // current frame, strokes only, transparent elsewhere
+    QImage m_onionLayer; // tinted neighbours
+    bool m_frameLayerValid = false;
+    bool m_onionLayerValid = false;
+    QTransform m_layerTransform; // the view the layers were rendered for
+    QSize m_layerSize;
+};
+
+} // namespace finbook::ui

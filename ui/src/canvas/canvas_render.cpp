@@ -1,0 +1,279 @@
+// CanvasWidget painting: the page, the cached frame and onion-skin layers, overlays.
+#include "stroke_raster.h"
+
+#include <finbook/model/render.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/window/editor_state.h>
+
+#include <QPaintEvent>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+namespace finbook::ui {
+
+namespace {
+
+const QColor kDeskColor(0x70, 0x70, 0x70);
+const QColor kBorderColor(0x30, 0x30, 0x30);
+
+// A copy of `frame` without `hidden` strokes. Copies share stroke data, so this costs
+// pointers; a deformed pose is filtered alongside so displayedPoints() stays aligned.
+model::Frame withoutStrokes(const model::Frame &frame, const std::vector<model::Id> &hidden)
+{
+    model::Frame copy = frame;
+    for (model::StrokeGroup &g : copy.groups) {
+        const bool deformed = g.isDeformed() && g.deformed->strokes.size() == g.strokes.size();
+        model::DeformedStrokes pose;
+        std::vector<model::Stroke> kept;
+        for (std::size_t i = 0; i < g.strokes.size(); ++i) {
+            if (std::find(hidden.begin(), hidden.end(), g.strokes[i].id) != hidden.end())
+                continue;
+            kept.push_back(g.strokes[i]);
+            if (deformed)
+                pose.strokes.push_back(g.deformed->strokes[i]);
+        }
+        if (kept.size() == g.strokes.size())
+            continue;
+        g.strokes = std::move(kept);
+        g.deformed =
+            deformed ? std::make_shared<const model::DeformedStrokes>(std::move(pose)) : nullptr;
+    }
+    return copy;
+}
+
+} // namespace
+
+void CanvasWidget::connectDocument()
+{
+    model::Document *doc = document();
+    const auto all = [this] {
+        invalidateFrameLayer();
+        invalidateOnionLayer();
+    };
+    connect(doc, &model::Document::documentReset, this, [this, all] {
+        all();
+        m_suppressed.clear();
+        fitToView();
+    });
+    connect(doc, &model::Document::framesInserted, this, all);
+    connect(doc, &model::Document::framesRemoved, this, all);
+    connect(doc, &model::Document::frameMoved, this, all);
+    connect(doc, &model::Document::settingsChanged, this, [this, all] {
+        all();
+        if (m_fitted)
+            fitToView();
+    });
+    connect(doc, &model::Document::frameChanged, this, &CanvasWidget::frameEdited);
+    connect(m_state, &EditorState::currentFrameChanged, this, all);
+    connect(m_state, &EditorState::onionSkinChanged, this, &CanvasWidget::invalidateOnionLayer);
+    connect(m_state, &EditorState::playingChanged, this, qOverload<>(&QWidget::update));
+    connect(m_state, &EditorState::showMeshChanged, this, qOverload<>(&QWidget::update));
+    connect(m_state, &EditorState::selectionChanged, this, qOverload<>(&QWidget::update));
+}
+
+void CanvasWidget::frameEdited(model::Id frameId)
+{
+    const int index = document()->frameIndex(frameId);
+    const int current = m_state->currentFrameIndex();
+    if (index == current)
+        invalidateFrameLayer();
+    const OnionSkin &onion = m_state->onionSkin();
+    if (index != current && index >= current - onion.before && index <= current + onion.after)
+        invalidateOnionLayer();
+}
+
+void CanvasWidget::invalidateFrameLayer()
+{
+    m_frameLayerValid = false;
+    update();
+}
+
+void CanvasWidget::invalidateOnionLayer()
+{
+    m_onionLayerValid = false;
+    update();
+}
+
+void CanvasWidget::invalidateCache()
+{
+    m_frameLayerValid = false;
+    m_onionLayerValid = false;
+}
+
+void CanvasWidget::setSuppressedStrokes(std::vector<model::Id> strokeIds)
+{
+    if (strokeIds == m_suppressed)
+        return;
+    m_suppressed = std::move(strokeIds);
+    invalidateFrameLayer();
+}
+
+void CanvasWidget::setPreviewFrame(std::optional<model::Frame> frame)
+{
+    m_preview = std::move(frame);
+    invalidateFrameLayer();
+}
+
+void CanvasWidget::updateCanvasRect(const QRectF &canvasRect)
+{
+    if (canvasRect.isNull()) {
+        update();
+        return;
+    }
+    // Clipped to the widget in floating point first: a stroke at 1e30 px (a tablet or a file
+    // can give one) must not overflow QRect's int coordinates.
+    const QRectF mapped = canvasToWidget().mapRect(canvasRect);
+    if (!std::isfinite(mapped.left()) || !std::isfinite(mapped.top()) ||
+        !std::isfinite(mapped.width()) || !std::isfinite(mapped.height())) {
+        update();
+        return;
+    }
+    const QRectF visible = mapped.adjusted(-2, -2, 2, 2) & QRectF(rect());
+    if (!visible.isEmpty())
+        update(visible.toAlignedRect());
+}
+
+QRectF CanvasWidget::pageRect() const
+{
+    return canvasToWidget().mapRect(
+        QRectF(QPointF(0, 0), QSizeF(document()->settings().canvasSize)));
+}
+
+QImage CanvasWidget::newLayerImage(QImage recycled) const
+{
+    // Reusing the old layer's buffer spares a 4 MB allocation and its page faults per render.
+    const qreal dpr = devicePixelRatioF();
+    const QSize size = (QSizeF(this->size()) * dpr).toSize();
+    QImage image = recycled.size() == size && recycled.isDetached()
+                       ? std::move(recycled)
+                       : QImage(size, QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(dpr);
+    image.fill(Qt::transparent);
+    return image;
+}
+
+void CanvasWidget::rasterize(QImage &image, const std::function<void(StrokeRaster &)> &draw) const
+{
+    // The view is scale + translate only, so the rasterizer takes it as two numbers.
+    const qreal dpr = image.devicePixelRatio();
+    const QRectF page = pageRect();
+    const QRect clip(
+        QPoint(int(std::floor(page.left() * dpr)), int(std::floor(page.top() * dpr))),
+        QPoint(int(std::ceil(page.right() * dpr)) - 1, int(std::ceil(page.bottom() * dpr)) - 1));
+    StrokeRaster::drawParallel(&image, clip, m_zoom * dpr, m_offset * dpr, draw);
+}
+
+QImage CanvasWidget::renderFrameLayer(QImage recycled) const
+{
+    QImage image = newLayerImage(std::move(recycled));
+    const model::Frame *frame = m_preview ? &*m_preview : m_state->currentFrame();
+    if (!frame)
+        return image;
+    model::RenderOptions options;
+    options.paintBackground = false;
+    const model::Frame shown =
+        m_suppressed.empty() ? model::Frame{} : withoutStrokes(*frame, m_suppressed);
+    const model::Frame &drawn = m_suppressed.empty() ? *frame : shown;
+    const double closeGap = document()->settings().closeGap;
+    StrokeRaster::prepareFills(drawn, options, closeGap);
+    rasterize(image, [&](StrokeRaster &raster) { raster.drawFrame(drawn, options, closeGap); });
+    return image;
+}
+
+QImage CanvasWidget::renderOnionLayer(QImage recycled) const
+{
+    QImage image = newLayerImage(std::move(recycled));
+    const OnionSkin &onion = m_state->onionSkin();
+    const int current = m_state->currentFrameIndex();
+    const model::Document *doc = document();
+    // Farthest first so nearer neighbours lie on top; opacity falls off linearly with distance.
+    std::vector<std::pair<int, model::RenderOptions>> layers;
+    const auto addSide = [&](int count, int direction, const QColor &tint) {
+        for (int k = count; k >= 1; --k) {
+            const int index = current + direction * k;
+            if (index < 0 || index >= doc->frameCount())
+                continue;
+            model::RenderOptions options;
+            options.paintBackground = false;
+            options.tint = tint;
+            options.opacity = onion.opacity * qreal(count - k + 1) / qreal(count);
+            layers.emplace_back(index, options);
+        }
+    };
+    addSide(onion.before, -1, onion.beforeTint);
+    addSide(onion.after, +1, onion.afterTint);
+    const double closeGap = doc->settings().closeGap;
+    for (const auto &[index, options] : layers)
+        StrokeRaster::prepareFills(doc->frameAt(index), options, closeGap);
+    if (!layers.empty())
+        rasterize(image, [&](StrokeRaster &raster) {
+            for (const auto &[index, options] : layers)
+                raster.drawFrame(doc->frameAt(index), options, closeGap);
+        });
+    return image;
+}
+
+void CanvasWidget::ensureLayers()
+{
+    const QTransform view = canvasToWidget();
+    const QSize layerSize = (QSizeF(size()) * devicePixelRatioF()).toSize();
+    if (view != m_layerTransform || layerSize != m_layerSize) {
+        m_layerTransform = view;
+        m_layerSize = layerSize;
+        m_frameLayerValid = false;
+        m_onionLayerValid = false;
+    }
+    if (!m_frameLayerValid) {
+        m_frameLayer = renderFrameLayer(std::move(m_frameLayer));
+        m_frameLayerValid = true;
+    }
+    const bool onionShown = m_state->onionSkin().enabled && !m_state->isPlaying();
+    if (onionShown && !m_onionLayerValid) {
+        m_onionLayer = renderOnionLayer(std::move(m_onionLayer));
+        m_onionLayerValid = true;
+    }
+}
+
+void CanvasWidget::paintPage(QPainter &painter) const
+{
+    const QRectF page = pageRect();
+    painter.fillRect(page.translated(3, 3), QColor(0, 0, 0, 60));
+    painter.fillRect(page, QColor::fromRgba(document()->settings().background));
+}
+
+void CanvasWidget::paintEvent(QPaintEvent *event)
+{
+    ensureLayers();
+    QPainter painter(this);
+    const QRect dirty = event->rect();
+    painter.fillRect(dirty, kDeskColor);
+    paintPage(painter);
+    const qreal dpr = devicePixelRatioF();
+    const QRectF source(QPointF(dirty.topLeft()) * dpr, QSizeF(dirty.size()) * dpr);
+    if (m_state->onionSkin().enabled && !m_state->isPlaying() && !m_onionLayer.isNull())
+        painter.drawImage(QRectF(dirty), m_onionLayer, source);
+    painter.drawImage(QRectF(dirty), m_frameLayer, source);
+    painter.setPen(QPen(kBorderColor, 1));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(pageRect().adjusted(-0.5, -0.5, 0.5, 0.5));
+
+    // Playback shows the animation, not the editing handles (pins, cages, bones, the mesh, the
+    // tool's cursor); scrubbing is not playing, so they stay while the timeline is dragged.
+    if (m_state->isPlaying())
+        return;
+    const QTransform view = canvasToWidget();
+    for (const std::unique_ptr<CanvasOverlay> &overlay : m_overlays) {
+        painter.save();
+        overlay->paint(painter, view);
+        painter.restore();
+    }
+    if (m_tool) {
+        painter.setRenderHint(QPainter::Antialiasing, true);
+        m_tool->paintOverlay(painter, view);
+    }
+}
+
+} // namespace finbook::ui

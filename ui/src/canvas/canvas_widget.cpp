@@ -1,0 +1,402 @@
+// CanvasWidget: tools, pointer input and the view transform. Painting and the layer cache
+// are in canvas_render.cpp.
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/window/editor_state.h>
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QTabletEvent>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace finbook::ui {
+
+namespace {
+constexpr qreal kZoomStep = 1.25;
+constexpr qreal kFitMargin = 24.0;
+} // namespace
+
+EditorState *CanvasTool::state() const
+{
+    return m_canvas ? m_canvas->state() : nullptr;
+}
+
+CanvasWidget::CanvasWidget(EditorState *state, QWidget *parent)
+    : QWidget(parent)
+    , m_state(state)
+{
+    setObjectName(QStringLiteral("canvas"));
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setAttribute(Qt::WA_TabletTracking);
+    setMinimumSize(200, 150);
+    connectDocument();
+}
+
+CanvasWidget::~CanvasWidget()
+{
+    if (m_tool)
+        m_tool->deactivate();
+}
+
+model::Document *CanvasWidget::document() const
+{
+    return m_state->document();
+}
+
+CanvasTool *CanvasWidget::addTool(std::unique_ptr<CanvasTool> tool)
+{
+    CanvasTool *t = tool.get();
+    t->m_canvas = this;
+    m_ownedTools.push_back(std::move(tool));
+    m_toolList.push_back(t);
+    emit toolAdded(t);
+    if (!m_tool)
+        setCurrentTool(t->id());
+    return t;
+}
+
+CanvasTool *CanvasWidget::tool(const QString &id) const
+{
+    for (CanvasTool *t : m_toolList)
+        if (t->id() == id)
+            return t;
+    return nullptr;
+}
+
+void CanvasWidget::setCurrentTool(const QString &id)
+{
+    CanvasTool *next = tool(id);
+    if (!next || next == m_tool)
+        return;
+    // deactivate() finishes the old tool's drag, so its release must not reach the new one.
+    if (m_drag == Drag::Tool)
+        m_drag = Drag::None;
+    if (m_tool)
+        m_tool->deactivate();
+    m_tool = next;
+    m_tool->activate();
+    updateCursor();
+    update();
+    emit currentToolChanged(m_tool);
+}
+
+void CanvasWidget::addOverlay(std::unique_ptr<CanvasOverlay> overlay)
+{
+    m_overlays.push_back(std::move(overlay));
+    update();
+}
+
+// --- view --------------------------------------------------------------------------------
+
+QTransform CanvasWidget::canvasToWidget() const
+{
+    return QTransform(m_zoom, 0, 0, m_zoom, m_offset.x(), m_offset.y());
+}
+
+QPointF CanvasWidget::mapToCanvas(const QPointF &widgetPos) const
+{
+    return (widgetPos - m_offset) / m_zoom;
+}
+
+QPointF CanvasWidget::mapFromCanvas(const QPointF &canvasPos) const
+{
+    return canvasPos * m_zoom + m_offset;
+}
+
+void CanvasWidget::setZoom(qreal zoom, const QPointF &widgetAnchor)
+{
+    if (!std::isfinite(zoom))
+        return;
+    zoom = std::clamp(zoom, kMinZoom, kMaxZoom);
+    const QPointF anchorCanvas = mapToCanvas(widgetAnchor);
+    m_zoom = zoom;
+    m_offset = widgetAnchor - anchorCanvas * m_zoom;
+    m_fitted = false;
+    update();
+    emit zoomChanged(m_zoom);
+}
+
+void CanvasWidget::zoomIn()
+{
+    setZoom(m_zoom * kZoomStep, QRectF(rect()).center());
+}
+void CanvasWidget::zoomOut()
+{
+    setZoom(m_zoom / kZoomStep, QRectF(rect()).center());
+}
+
+void CanvasWidget::fitToView()
+{
+    const QSizeF page(document()->settings().canvasSize);
+    if (page.isEmpty())
+        return;
+    const qreal w = std::max(1.0, width() - 2 * kFitMargin);
+    const qreal h = std::max(1.0, height() - 2 * kFitMargin);
+    m_zoom = std::clamp(std::min(w / page.width(), h / page.height()), kMinZoom, kMaxZoom);
+    m_offset = QRectF(rect()).center() - QPointF(page.width(), page.height()) * m_zoom / 2;
+    m_fitted = true;
+    update();
+    emit zoomChanged(m_zoom);
+}
+
+void CanvasWidget::actualSize()
+{
+    const QSizeF page(document()->settings().canvasSize);
+    m_zoom = 1.0;
+    m_offset = QRectF(rect()).center() - QPointF(page.width(), page.height()) / 2;
+    m_fitted = false;
+    update();
+    emit zoomChanged(m_zoom);
+}
+
+std::optional<QPointF> CanvasWidget::cursorPos() const
+{
+    if (!m_hover)
+        return std::nullopt;
+    return mapToCanvas(*m_hover); // through the view as it is now, zoomed or panned since
+}
+
+void CanvasWidget::panBy(const QPointF &widgetDelta)
+{
+    if (widgetDelta.isNull())
+        return;
+    m_offset += widgetDelta;
+    m_fitted = false;
+    update();
+}
+
+void CanvasWidget::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    if (m_fitted)
+        fitToView();
+}
+
+// --- input -------------------------------------------------------------------------------
+
+ToolEvent CanvasWidget::toolEvent(const QPointF &widgetPos, qreal pressure) const
+{
+    ToolEvent e;
+    e.widgetPos = widgetPos;
+    e.pos = mapToCanvas(widgetPos);
+    e.pressure = std::isfinite(pressure) ? std::clamp(pressure, 0.0, 1.0) : 1.0;
+    return e;
+}
+
+void CanvasWidget::beginDrag(const ToolEvent &event, bool pan)
+{
+    if (pan) {
+        m_drag = Drag::Pan;
+        m_lastPanPos = event.widgetPos;
+        setCursor(Qt::ClosedHandCursor);
+        return;
+    }
+    if (!m_tool)
+        return;
+    m_drag = Drag::Tool;
+    m_tool->press(event);
+}
+
+void CanvasWidget::continueDrag(const ToolEvent &event)
+{
+    m_hover = event.widgetPos;
+    emit cursorMoved(event.pos);
+    switch (m_drag) {
+    case Drag::Pan:
+        panBy(event.widgetPos - m_lastPanPos);
+        m_lastPanPos = event.widgetPos;
+        break;
+    case Drag::Tool:
+        m_tool->move(event);
+        break;
+    case Drag::None:
+        if (m_tool)
+            m_tool->hover(event);
+        break;
+    }
+}
+
+void CanvasWidget::endDrag(const ToolEvent &event)
+{
+    const Drag was = m_drag;
+    m_drag = Drag::None;
+    if (was == Drag::Tool && m_tool)
+        m_tool->release(event);
+    updateCursor();
+}
+
+void CanvasWidget::mousePressEvent(QMouseEvent *event)
+{
+    setFocus(Qt::MouseFocusReason);
+    if (m_drag != Drag::None || m_tabletDown)
+        return;
+    ToolEvent e = toolEvent(event->position(), 1.0);
+    e.button = event->button();
+    e.buttons = event->buttons();
+    e.modifiers = event->modifiers();
+    if (event->button() == Qt::MiddleButton || (event->button() == Qt::LeftButton && m_spaceHeld))
+        beginDrag(e, true);
+    else if (event->button() == Qt::LeftButton)
+        beginDrag(e, false);
+    else if (event->button() == Qt::RightButton && m_tool)
+        m_tool->secondaryClick(e);
+}
+
+void CanvasWidget::mouseMoveEvent(QMouseEvent *event)
+{
+    if (m_tabletDown)
+        return;
+    ToolEvent e = toolEvent(event->position(), 1.0);
+    e.buttons = event->buttons();
+    e.modifiers = event->modifiers();
+    continueDrag(e);
+}
+
+void CanvasWidget::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (m_tabletDown || m_drag == Drag::None)
+        return;
+    const bool panButton = event->button() == Qt::MiddleButton || event->button() == Qt::LeftButton;
+    if ((m_drag == Drag::Pan && !panButton) ||
+        (m_drag == Drag::Tool && event->button() != Qt::LeftButton))
+        return;
+    ToolEvent e = toolEvent(event->position(), 1.0);
+    e.button = event->button();
+    e.buttons = event->buttons();
+    e.modifiers = event->modifiers();
+    endDrag(e);
+}
+
+void CanvasWidget::tabletEvent(QTabletEvent *event)
+{
+    // Accepting keeps Qt from synthesising mouse events for the same motion.
+    event->accept();
+    // A tablet driver can report a position that is not a number: such an event is dropped
+    // before it can move the view or a tool (a NaN pan offset would blank the canvas).
+    if (!std::isfinite(event->position().x()) || !std::isfinite(event->position().y()))
+        return;
+    ToolEvent e = toolEvent(event->position(), event->pressure());
+    e.button = event->button();
+    e.buttons = event->buttons();
+    e.modifiers = event->modifiers();
+    e.tablet = true;
+    switch (event->type()) {
+    case QEvent::TabletPress:
+        if (m_drag != Drag::None)
+            return;
+        m_tabletDown = true;
+        setFocus(Qt::MouseFocusReason);
+        beginDrag(e, m_spaceHeld || event->button() == Qt::MiddleButton);
+        break;
+    case QEvent::TabletMove:
+        continueDrag(e);
+        break;
+    case QEvent::TabletRelease:
+        m_tabletDown = false;
+        if (m_drag != Drag::None)
+            endDrag(e);
+        break;
+    default:
+        break;
+    }
+}
+
+void CanvasWidget::wheelEvent(QWheelEvent *event)
+{
+    const QPoint angle = event->angleDelta();
+    if (angle.y() != 0) {
+        setZoom(m_zoom * std::pow(kZoomStep, angle.y() / 120.0), event->position());
+    } else if (angle.x() != 0) {
+        panBy(QPointF(angle.x() / 2.0, 0));
+    }
+    event->accept();
+}
+
+const model::Frame *CanvasWidget::shownFrame() const
+{
+    return m_preview ? &*m_preview : m_state->currentFrame();
+}
+
+bool CanvasWidget::event(QEvent *event)
+{
+    // A shortcut override accepted here turns the key into a key press for the tool instead
+    // of a window shortcut.
+    if (event->type() == QEvent::ShortcutOverride && m_tool &&
+        m_tool->claimsKey(*static_cast<QKeyEvent *>(event))) {
+        event->accept();
+        return true;
+    }
+    return QWidget::event(event);
+}
+
+void CanvasWidget::keyPressEvent(QKeyEvent *event)
+{
+    if (event->key() == Qt::Key_Space && event->modifiers() == Qt::NoModifier) {
+        if (!event->isAutoRepeat())
+            setPanning(true);
+        event->accept();
+        return;
+    }
+    if (m_tool && m_tool->keyPress(event)) {
+        event->accept();
+        return;
+    }
+    QWidget::keyPressEvent(event);
+}
+
+void CanvasWidget::keyReleaseEvent(QKeyEvent *event)
+{
+    if (event->key() == Qt::Key_Space && !event->isAutoRepeat()) {
+        setPanning(false);
+        event->accept();
+        return;
+    }
+    QWidget::keyReleaseEvent(event);
+}
+
+void CanvasWidget::focusOutEvent(QFocusEvent *event)
+{
+    setPanning(false);
+    QWidget::focusOutEvent(event);
+}
+
+void CanvasWidget::leaveEvent(QEvent *event)
+{
+    m_hover.reset();
+    if (m_tool && m_drag == Drag::None)
+        update();
+    QWidget::leaveEvent(event);
+}
+
+void CanvasWidget::setPanning(bool spaceHeld)
+{
+    if (m_spaceHeld == spaceHeld)
+        return;
+    m_spaceHeld = spaceHeld;
+    if (m_drag != Drag::Pan)
+        updateCursor();
+}
+
+void CanvasWidget::updateCursor()
+{
+    if (m_drag == Drag::Pan)
+        setCursor(Qt::ClosedHandCursor);
+    else if (m_spaceHeld)
+        setCursor(Qt::OpenHandCursor);
+    else if (m_tool)
+        setCursor(m_tool->cursor());
+    else
+        unsetCursor();
+}
+
+void CanvasWidget::postMessage(const QString &message)
+{
+    emit messagePosted(message);
+}
+
+} // namespace finbook::ui

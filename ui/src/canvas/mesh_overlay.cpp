@@ -1,0 +1,86 @@
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/canvas/mesh_overlay.h>
+#include <finbook/ui/window/editor_state.h>
+
+#include <QPainter>
+
+namespace finbook::ui {
+
+MeshOverlay::MeshOverlay(EditorState *state, model::DeformController *controller,
+                         CanvasWidget *canvas)
+    : QObject(canvas)
+    , m_state(state)
+    , m_controller(controller)
+    , m_canvas(canvas)
+{
+    auto repaint = [this] {
+        if (m_state->showMesh())
+            m_canvas->update();
+    };
+    connect(m_controller, &model::DeformController::meshChanged, this, repaint);
+    connect(m_controller, &model::DeformController::poseSolved, this, repaint);
+    connect(m_state, &EditorState::showMeshChanged, this, [this] {
+        requestMissing();
+        m_canvas->update();
+    });
+    connect(m_state, &EditorState::currentFrameChanged, this, [this] { requestMissing(); });
+    connect(m_state->document(), &model::Document::strokesChanged, this,
+            [this] { requestMissing(); });
+}
+
+void MeshOverlay::requestMissing()
+{
+    const model::Frame *f = m_state->currentFrame();
+    if (!m_state->showMesh() || !f)
+        return;
+    for (const model::StrokeGroup &g : f->groups) {
+        const model::DeformSetup *setup = m_controller->setup(g.id);
+        const bool current = setup && setup->key == model::MeshKey::of(g);
+        if (g.visible && !g.strokes.empty() && !current && !m_controller->isWaiting(g.id))
+            m_controller->requestMesh(g.id);
+    }
+}
+
+void MeshOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
+{
+    const model::Frame *f = m_state->currentFrame();
+    // A preview frame (the in-between dialog's) is not meshed: its pose is not the document's.
+    if (!m_state->showMesh() || !f || m_canvas->hasPreviewFrame())
+        return;
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    const model::Id current = m_state->currentGroupId();
+    for (const model::StrokeGroup &g : f->groups) {
+        const model::DeformSetup *setup = m_controller->setup(g.id);
+        if (!g.visible || !setup)
+            continue;
+        const Eigen::MatrixX2d &U = *m_controller->poseVertices(g.id);
+        QColor colour = g.id == current ? QColor(20, 140, 200, 150) : QColor(120, 120, 120, 110);
+        painter.setPen(QPen(colour, 0.8));
+        if (!setup->meshed) { // a cage's interior mesh: triangles only
+            const Eigen::MatrixX3i &F = setup->meshTriangles();
+            QVector<QLineF> lines;
+            lines.reserve(int(F.rows() * 3));
+            for (Eigen::Index t = 0; t < F.rows(); ++t)
+                for (int k = 0; k < 3; ++k) {
+                    const int a = F(t, k), b = F(t, (k + 1) % 3);
+                    lines.append(canvasToWidget.map(QLineF(U(a, 0), U(a, 1), U(b, 0), U(b, 1))));
+                }
+            painter.drawLines(lines);
+            continue;
+        }
+        const geometry::TriMesh &mesh = setup->meshed->mesh.mesh;
+        // Each edge once (the OpenMesh mesh's vertex i is row i of V), so shared edges are not
+        // drawn twice — half the work on every repaint while a pin is dragged.
+        QVector<QLineF> lines;
+        lines.reserve(int(mesh.n_edges()));
+        for (const auto edge : mesh.edges()) {
+            const int a = edge.v0().idx(), b = edge.v1().idx();
+            lines.append(canvasToWidget.map(QLineF(U(a, 0), U(a, 1), U(b, 0), U(b, 1))));
+        }
+        painter.drawLines(lines);
+    }
+    painter.restore();
+}
+
+} // namespace finbook::ui

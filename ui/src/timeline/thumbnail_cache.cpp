@@ -1,0 +1,129 @@
+#include <finbook/model/render.h>
+#include <finbook/ui/timeline/thumbnail_cache.h>
+
+#include <QElapsedTimer>
+
+#include <algorithm>
+
+namespace finbook::ui {
+
+namespace {
+// One slice of rendering per event-loop turn stays well under a frame at 60 Hz.
+constexpr qint64 kSliceNs = 8'000'000;
+} // namespace
+
+ThumbnailCache::ThumbnailCache(model::Document *document, QObject *parent)
+    : QObject(parent)
+    , m_doc(document)
+    , m_canvasSize(document->settings().canvasSize)
+    , m_background(document->settings().background)
+    , m_closeGap(document->settings().closeGap)
+{
+    m_timer.setSingleShot(true);
+    m_timer.setInterval(0);
+    connect(&m_timer, &QTimer::timeout, this, &ThumbnailCache::renderSlice);
+    connect(m_doc, &model::Document::frameChanged, this,
+            [this](model::Id frameId) { m_revisions[frameId] += 1; });
+    connect(m_doc, &model::Document::documentReset, this, [this] {
+        m_cache.clear();
+        m_revisions.clear();
+        m_pending.clear();
+        emit thumbnailsInvalidated();
+    });
+    connect(m_doc, &model::Document::settingsChanged, this, [this] {
+        const model::DocumentSettings &s = m_doc->settings();
+        if (s.canvasSize == m_canvasSize && s.background == m_background &&
+            s.closeGap == m_closeGap)
+            return; // fps, loop and range do not show in a thumbnail
+        m_canvasSize = s.canvasSize;
+        m_background = s.background;
+        m_closeGap = s.closeGap;
+        ++m_generation;
+        emit thumbnailsInvalidated();
+    });
+}
+
+void ThumbnailCache::setThumbnailSize(QSize size, qreal devicePixelRatio)
+{
+    size = size.expandedTo(QSize(1, 1));
+    if (size == m_size && qFuzzyCompare(devicePixelRatio, m_dpr))
+        return;
+    m_size = size;
+    m_dpr = devicePixelRatio;
+    invalidateAll();
+}
+
+void ThumbnailCache::invalidateAll()
+{
+    m_cache.clear();
+    m_pending.clear();
+    emit thumbnailsInvalidated();
+}
+
+void ThumbnailCache::setVisibilityFilter(std::function<bool(model::Id)> isVisible)
+{
+    m_isVisible = std::move(isVisible);
+}
+
+quint64 ThumbnailCache::currentRevision(model::Id frameId) const
+{
+    // The generation in the high bits: a settings change makes every entry stale at once.
+    return (m_generation << 40) + m_revisions.value(frameId, 0);
+}
+
+bool ThumbnailCache::isCurrent(model::Id frameId) const
+{
+    const Entry *e = m_cache.object(frameId);
+    return e && e->revision == currentRevision(frameId);
+}
+
+QPixmap ThumbnailCache::thumbnail(model::Id frameId)
+{
+    const Entry *e = m_cache.object(frameId); // also marks it most recently used
+    if (e && e->revision == currentRevision(frameId))
+        return e->pixmap;
+    if (std::find(m_pending.begin(), m_pending.end(), frameId) == m_pending.end())
+        m_pending.push_back(frameId);
+    if (!m_timer.isActive())
+        m_timer.start();
+    return e ? e->pixmap : QPixmap();
+}
+
+bool ThumbnailCache::renderOne(model::Id frameId)
+{
+    if (isCurrent(frameId) || (m_isVisible && !m_isVisible(frameId)))
+        return false;
+    const model::Frame *frame = m_doc->frame(frameId);
+    if (!frame)
+        return false;
+    const QSize device = (QSizeF(m_size) * m_dpr).toSize().expandedTo(QSize(1, 1));
+    QImage image = model::renderFrame(*frame, m_doc->settings(), device);
+    image.setDevicePixelRatio(m_dpr);
+    m_cache.insert(frameId,
+                   new Entry{QPixmap::fromImage(std::move(image)), currentRevision(frameId)});
+    ++m_rendered;
+    emit thumbnailRendered(frameId);
+    return true;
+}
+
+void ThumbnailCache::renderSlice()
+{
+    QElapsedTimer clock;
+    clock.start();
+    std::size_t done = 0;
+    while (done < m_pending.size() && clock.nsecsElapsed() < kSliceNs)
+        renderOne(m_pending[done++]);
+    m_pending.erase(m_pending.begin(), m_pending.begin() + long(done));
+    if (!m_pending.empty())
+        m_timer.start();
+}
+
+void ThumbnailCache::renderPending()
+{
+    std::vector<model::Id> queue;
+    queue.swap(m_pending);
+    for (model::Id id : queue)
+        renderOne(id);
+}
+
+} // namespace finbook::ui

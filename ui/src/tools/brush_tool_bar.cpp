@@ -1,0 +1,105 @@
+#include <finbook/ui/tools/brush_tool_bar.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/widgets/color_button.h>
+
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QPainter>
+#include <QSpinBox>
+#include <QToolButton>
+
+namespace finbook::ui {
+
+BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
+    : QToolBar(tr("Brush"), parent)
+    , m_pen(pen)
+    , m_color(new ColorButton(Qt::black, this))
+    , m_width(new QDoubleSpinBox(this))
+    , m_smoothing(new QSpinBox(this))
+{
+    setObjectName(QStringLiteral("brushToolBar"));
+    addWidget(createSwatches(
+        {QColor(Qt::black), QColor(0x80, 0x80, 0x80), QColor(Qt::white), QColor(0x90, 0x40, 0xb0),
+         QColor(0x30, 0x60, 0xd0), QColor(0xd0, 0x30, 0x30), QColor(0xf0, 0x90, 0x20),
+         QColor(0xe8, 0xd0, 0x20), QColor(0x30, 0xa0, 0x40), QColor(0x8a, 0x5a, 0x30)}));
+    m_color->setObjectName(QStringLiteral("penColor"));
+    addWidget(m_color);
+    addSeparator();
+    addWidget(new QLabel(tr("Width:"), this));
+    m_width->setObjectName(QStringLiteral("penWidth"));
+    m_width->setRange(PenTool::kMinWidth, PenTool::kMaxWidth);
+    m_width->setDecimals(1);
+    m_width->setSingleStep(0.5);
+    m_width->setSuffix(tr(" px"));
+    addWidget(m_width);
+    addWidget(new QLabel(tr("Smoothing:"), this));
+    m_smoothing->setObjectName(QStringLiteral("penSmoothing"));
+    m_smoothing->setRange(0, PenTool::kMaxSmoothing);
+    m_smoothing->setToolTip(tr("How much a stroke is smoothed when the pen lifts"));
+    addWidget(m_smoothing);
+    showSettings();
+
+    connect(m_color, &ColorButton::colorChanged, this, [this](const QColor &c) {
+        PenSettings s = m_pen->settings();
+        s.color = c;
+        m_pen->setSettings(s);
+    });
+    connect(m_width, &QDoubleSpinBox::valueChanged, this, [this](double w) {
+        PenSettings s = m_pen->settings();
+        s.width = w;
+        m_pen->setSettings(s);
+    });
+    connect(m_smoothing, &QSpinBox::valueChanged, this, [this](int v) {
+        PenSettings s = m_pen->settings();
+        s.smoothing = v;
+        m_pen->setSettings(s);
+    });
+    connect(m_pen, &PenTool::settingsChanged, this, &BrushToolBar::showSettings);
+}
+
+QWidget *BrushToolBar::createSwatches(const QList<QColor> &colors)
+{
+    // Two rows of small swatches: a one-row strip took a fifth of a 1280 px window, and the
+    // top row must leave room for the deformation tools.
+    constexpr int kColumns = 5;
+    constexpr int kCell = 14;
+    auto *grid = new QWidget(this);
+    grid->setObjectName(QStringLiteral("penSwatches"));
+    auto *layout = new QGridLayout(grid);
+    layout->setContentsMargins(2, 0, 2, 0);
+    layout->setSpacing(1);
+    for (int i = 0; i < int(colors.size()); ++i) {
+        const QColor color = colors[i];
+        QPixmap pixmap(kCell - 2, kCell - 2);
+        pixmap.fill(color);
+        QPainter(&pixmap).drawRect(pixmap.rect().adjusted(0, 0, -1, -1));
+        auto *swatch = new QToolButton(grid);
+        swatch->setObjectName(QStringLiteral("swatch") + color.name());
+        swatch->setAutoRaise(true);
+        swatch->setFocusPolicy(Qt::NoFocus);
+        swatch->setIcon(QIcon(pixmap));
+        swatch->setIconSize(pixmap.size());
+        swatch->setFixedSize(kCell, kCell);
+        swatch->setToolTip(tr("Pen colour %1").arg(color.name()));
+        connect(swatch, &QToolButton::clicked, m_color,
+                [this, color] { m_color->setColor(color); });
+        layout->addWidget(swatch, i / kColumns, i % kColumns);
+    }
+    return grid;
+}
+
+void BrushToolBar::showSettings()
+{
+    const PenSettings &s = m_pen->settings();
+    const QSignalBlocker b1(m_color), b2(m_width), b3(m_smoothing);
+    m_color->setColor(s.color);
+    // Only when different: setValue() rewrites the text, and while the user types "2.5" the
+    // pen already follows "2" (keyboard tracking), so "2" would become "2.0 px" mid-typing.
+    if (m_width->value() != s.width)
+        m_width->setValue(s.width);
+    if (m_smoothing->value() != s.smoothing)
+        m_smoothing->setValue(s.smoothing);
+}
+
+} // namespace finbook::ui

@@ -1,0 +1,312 @@
+#include "stroke_hit.h"
+
+#include <finbook/model/commands.h>
+#include <finbook/model/pins/pin_commands.h>
+#include <finbook/model/render.h>
+#include <finbook/model/skeleton/skeleton_join_commands.h>
+#include <finbook/ui/skeleton/skeleton_follow.h>
+#include <finbook/ui/tools/stroke_editing.h>
+#include <finbook/ui/window/editor_state.h>
+
+#include <QApplication>
+#include <QClipboard>
+#include <QDataStream>
+#include <QIODevice>
+
+#include <cmath>
+
+namespace finbook::ui {
+
+namespace {
+constexpr quint32 kClipMagic = 0x46534b31; // "FSK1"
+constexpr quint32 kClipVersion = 1;
+constexpr quint32 kMaxClipStrokes = 1'000'000;
+constexpr quint64 kMaxClipPoints = 20'000'000;
+
+bool finite(float v)
+{
+    return std::isfinite(v);
+}
+} // namespace
+
+QByteArray encodeStrokes(const std::vector<model::StrokeDataPtr> &strokes)
+{
+    QByteArray bytes;
+    QDataStream out(&bytes, QIODevice::WriteOnly);
+    out.setVersion(QDataStream::Qt_6_4);
+    out.setFloatingPointPrecision(QDataStream::SinglePrecision);
+    out << kClipMagic << kClipVersion << quint32(strokes.size());
+    for (const model::StrokeDataPtr &s : strokes) {
+        out << quint32(s->color) << s->width << quint32(s->points.size());
+        for (const model::StrokePoint &p : s->points)
+            out << p.x << p.y << p.pressure;
+    }
+    return bytes;
+}
+
+std::optional<std::vector<model::StrokeDataPtr>> decodeStrokes(const QByteArray &bytes)
+{
+    QDataStream in(bytes);
+    in.setVersion(QDataStream::Qt_6_4);
+    in.setFloatingPointPrecision(QDataStream::SinglePrecision);
+    quint32 magic = 0, version = 0, count = 0;
+    in >> magic >> version >> count;
+    if (in.status() != QDataStream::Ok || magic != kClipMagic || version != kClipVersion ||
+        count > kMaxClipStrokes)
+        return std::nullopt;
+    std::vector<model::StrokeDataPtr> strokes;
+    quint64 total = 0;
+    for (quint32 i = 0; i < count; ++i) {
+        auto s = std::make_shared<model::StrokeData>();
+        quint32 color = 0, n = 0;
+        in >> color >> s->width >> n;
+        total += n;
+        // Each point takes 12 bytes: refuse counts the remaining bytes cannot hold.
+        if (in.status() != QDataStream::Ok || n == 0 || total > kMaxClipPoints ||
+            quint64(n) * 12 > quint64(bytes.size()) || !finite(s->width) || s->width < 0)
+            return std::nullopt;
+        s->color = color;
+        s->points.resize(n);
+        for (model::StrokePoint &p : s->points) {
+            in >> p.x >> p.y >> p.pressure;
+            if (!finite(p.x) || !finite(p.y) || !finite(p.pressure))
+                return std::nullopt;
+            p.pressure = std::clamp(p.pressure, 0.0f, 1.0f);
+        }
+        if (in.status() != QDataStream::Ok)
+            return std::nullopt;
+        strokes.push_back(std::move(s));
+    }
+    return strokes;
+}
+
+QString StrokeEditing::targetProblem(const EditorState &state)
+{
+    if (!state.currentFrame())
+        return tr("There is no frame to draw on. Insert a frame first.");
+    const model::StrokeGroup *g = state.currentGroup();
+    if (g && g->locked)
+        return tr("The object \"%1\" is locked. Unlock it in the Objects panel to draw on it.")
+            .arg(g->name);
+    if (g && !g->visible)
+        return tr("The object \"%1\" is hidden. Show it in the Objects panel to draw on it.")
+            .arg(g->name);
+    return {};
+}
+
+std::optional<std::vector<model::Id>>
+StrokeEditing::addStrokes(EditorState &state, const std::vector<model::StrokeDataPtr> &strokes,
+                          const QString &text, QString *problem)
+{
+    if (const QString why = targetProblem(state); !why.isEmpty()) {
+        if (problem)
+            *problem = why;
+        return std::nullopt;
+    }
+    model::Document *doc = state.document();
+    QUndoStack *stack = doc->undoStack();
+    model::Id groupId = state.currentGroupId();
+    // New strokes are drawn on the posed object as shown; as rest strokes they would be bent
+    // again by the rig and land elsewhere.
+    const std::vector<model::Id> following = skeletonsFollowing(state, {groupId});
+    beginRestEdit(doc, text, {groupId});
+    if (groupId == model::kNoId) {
+        auto *add = new model::AddObjectCommand(doc, state.currentFrameId(), -1, tr("Object"));
+        groupId = add->groupId();
+        stack->push(add);
+        state.setCurrentGroupId(groupId);
+    }
+    std::vector<model::Id> ids;
+    for (const model::StrokeDataPtr &data : strokes) {
+        auto *cmd = new model::AddStrokeCommand(doc, groupId, data);
+        ids.push_back(cmd->strokeId());
+        stack->push(cmd);
+    }
+    endRestEdit(state, following);
+    return ids;
+}
+
+namespace {
+bool isPosed(const model::Document *doc, model::Id id)
+{
+    const model::StrokeGroup *g = doc->group(id);
+    return g && g->isDeformed() && g->rig.isPosed();
+}
+} // namespace
+
+bool StrokeEditing::applyPoses(model::Document *doc, const std::vector<model::Id> &groupIds)
+{
+    bool applied = false;
+    for (model::Id id : groupIds)
+        if (isPosed(doc, id)) {
+            doc->undoStack()->push(model::makeApplyPoseCommand(doc, id));
+            applied = true;
+        }
+    return applied;
+}
+
+void StrokeEditing::beginRestEdit(model::Document *doc, const QString &text,
+                                  const std::vector<model::Id> &groupIds)
+{
+    const bool posed = std::any_of(groupIds.begin(), groupIds.end(),
+                                   [doc](model::Id id) { return isPosed(doc, id); });
+    doc->undoStack()->beginMacro(posed ? tr("%1 (pose applied)").arg(text) : text);
+    applyPoses(doc, groupIds);
+}
+
+void StrokeEditing::endRestEdit(EditorState &state, const std::vector<model::Id> &following)
+{
+    followDrawing(state, following);
+    state.document()->undoStack()->endMacro();
+}
+
+bool StrokeEditing::deleteSelection(EditorState &state)
+{
+    const std::vector<model::Id> ids = state.selectedStrokes();
+    if (ids.empty())
+        return false;
+    model::Document *doc = state.document();
+    std::vector<model::Id> groups;
+    for (model::Id id : ids)
+        if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
+            groups.push_back(doc->frameAt(at.frame).groups[std::size_t(at.group)].id);
+    const std::vector<model::Id> following = skeletonsFollowing(state, groups);
+    beginRestEdit(doc, tr("Delete Strokes"), groups);
+    for (model::Id id : ids)
+        doc->undoStack()->push(new model::RemoveStrokeCommand(doc, id));
+    endRestEdit(state, following);
+    state.setSelectedStrokes({});
+    return true;
+}
+
+void StrokeEditing::selectAll(EditorState &state)
+{
+    std::vector<model::Id> ids;
+    if (const model::Frame *f = state.currentFrame())
+        for (const model::StrokeGroup &g : f->groups)
+            if (isEditable(g))
+                for (const model::Stroke &s : g.strokes)
+                    ids.push_back(s.id);
+    state.setSelectedStrokes(std::move(ids));
+}
+
+std::vector<model::StrokeDataPtr> StrokeEditing::selectedData(const EditorState &state)
+{
+    std::vector<model::StrokeDataPtr> data;
+    const std::vector<model::Id> &selected = state.selectedStrokes();
+    // Drawing order, not selection order, so a paste stacks strokes as they were.
+    if (const model::Frame *f = state.currentFrame())
+        for (const model::StrokeGroup &g : f->groups)
+            for (const model::Stroke &s : g.strokes)
+                if (std::find(selected.begin(), selected.end(), s.id) != selected.end())
+                    data.push_back(s.data);
+    return data;
+}
+
+bool StrokeEditing::copySelection(const EditorState &state)
+{
+    const std::vector<model::StrokeDataPtr> data = selectedData(state);
+    if (data.empty())
+        return false;
+    auto *mime = new QMimeData;
+    mime->setData(QString::fromLatin1(kStrokesMimeType), encodeStrokes(data));
+    QApplication::clipboard()->setMimeData(mime);
+    return true;
+}
+
+bool StrokeEditing::cutSelection(EditorState &state)
+{
+    if (!copySelection(state))
+        return false;
+    model::Document *doc = state.document();
+    doc->undoStack()->beginMacro(tr("Cut"));
+    deleteSelection(state);
+    doc->undoStack()->endMacro();
+    return true;
+}
+
+bool StrokeEditing::clipboardHasStrokes()
+{
+    const QMimeData *mime = QApplication::clipboard()->mimeData();
+    return mime && mime->hasFormat(QString::fromLatin1(kStrokesMimeType));
+}
+
+namespace {
+QRectF bounds(const std::vector<model::StrokeDataPtr> &strokes)
+{
+    qreal left = 0, top = 0, right = 0, bottom = 0;
+    bool first = true;
+    for (const model::StrokeDataPtr &s : strokes)
+        for (const model::StrokePoint &p : s->points) {
+            left = first ? p.x : std::min<qreal>(left, p.x);
+            right = first ? p.x : std::max<qreal>(right, p.x);
+            top = first ? p.y : std::min<qreal>(top, p.y);
+            bottom = first ? p.y : std::max<qreal>(bottom, p.y);
+            first = false;
+        }
+    return QRectF(QPointF(left, top), QPointF(right, bottom));
+}
+
+model::StrokeDataPtr shifted(const model::StrokeData &data, QPointF by)
+{
+    auto moved = std::make_shared<model::StrokeData>(data);
+    for (model::StrokePoint &p : moved->points) {
+        p.x += float(by.x());
+        p.y += float(by.y());
+    }
+    return moved;
+}
+
+bool frameHas(const model::Frame &frame, const model::StrokeData &data)
+{
+    for (const model::StrokeGroup &g : frame.groups)
+        for (const model::Stroke &s : g.strokes)
+            if (s.data->points == data.points)
+                return true;
+    return false;
+}
+} // namespace
+
+QPointF StrokeEditing::pasteShift(const model::Frame *frame,
+                                  const std::vector<model::StrokeDataPtr> &strokes,
+                                  std::optional<QPointF> at)
+{
+    if (strokes.empty())
+        return {};
+    if (at && std::isfinite(at->x()) && std::isfinite(at->y()))
+        return *at - bounds(strokes).center();
+    // In place when the original is not in this frame (pasting into another frame keeps the
+    // drawing in register); else one step past the original and the copies already pasted
+    // (the first stroke tells where each one is).
+    constexpr int kMaxSteps = 100;
+    for (int step = 0; frame && step < kMaxSteps; ++step) {
+        const QPointF by(kPasteStep * step, kPasteStep * step);
+        if (!frameHas(*frame, *shifted(*strokes.front(), by)))
+            return by;
+    }
+    return {kPasteStep, kPasteStep};
+}
+
+bool StrokeEditing::paste(EditorState &state, QString *problem, std::optional<QPointF> at)
+{
+    const QMimeData *mime = QApplication::clipboard()->mimeData();
+    if (!mime || !mime->hasFormat(QString::fromLatin1(kStrokesMimeType)))
+        return false;
+    const auto strokes = decodeStrokes(mime->data(QString::fromLatin1(kStrokesMimeType)));
+    if (!strokes || strokes->empty()) {
+        if (problem)
+            *problem = tr("The clipboard holds strokes this version of Finbook cannot read.");
+        return false;
+    }
+    const QPointF by = pasteShift(state.currentFrame(), *strokes, at);
+    std::vector<model::StrokeDataPtr> placed;
+    for (const model::StrokeDataPtr &data : *strokes)
+        placed.push_back(shifted(*data, by));
+    const auto ids = addStrokes(state, placed, tr("Paste"), problem);
+    if (!ids)
+        return false;
+    state.setSelectedStrokes(*ids);
+    return true;
+}
+
+} // namespace finbook::ui

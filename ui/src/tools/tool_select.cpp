@@ -1,0 +1,353 @@
+#include "stroke_hit.h"
+
+#include <finbook/model/commands.h>
+#include <finbook/model/render.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/tools/stroke_editing.h>
+#include <finbook/ui/tools/tool_select.h>
+#include <finbook/ui/window/editor_state.h>
+
+#include <QKeyEvent>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+namespace finbook::ui {
+
+namespace {
+
+bool contains(const std::vector<model::Id> &ids, model::Id id)
+{
+    return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+// Calls fn(group, strokeIndex) for every stroke of the current frame listed in `ids`.
+void forStrokes(const EditorState &state, const std::vector<model::Id> &ids,
+                const std::function<void(const model::StrokeGroup &, std::size_t)> &fn)
+{
+    if (const model::Frame *f = state.currentFrame())
+        for (const model::StrokeGroup &g : f->groups)
+            for (std::size_t i = 0; i < g.strokes.size(); ++i)
+                if (contains(ids, g.strokes[i].id))
+                    fn(g, i);
+}
+
+} // namespace
+
+SelectTool::SelectTool(QObject *parent)
+    : CanvasTool(parent)
+{}
+
+QIcon SelectTool::icon() const
+{
+    return QIcon::fromTheme(QStringLiteral("edit-select-lasso"),
+                            QIcon(QStringLiteral(":/icons/tool_select.svg")));
+}
+
+QRectF SelectTool::selectionBounds() const
+{
+    QRectF bounds;
+    forStrokes(*state(), state()->selectedStrokes(),
+               [&](const model::StrokeGroup &g, std::size_t i) {
+                   bounds |= strokeBounds(model::displayedPoints(g, i), g.strokes[i].data->width);
+               });
+    return bounds;
+}
+
+SelectTool::Handle SelectTool::handleAt(const QPointF &widgetPos) const
+{
+    const QRectF box = canvas()->canvasToWidget().mapRect(selectionBounds());
+    if (box.isNull())
+        return Handle::None;
+    const auto near = [&](const QPointF &p) {
+        return std::abs(p.x() - widgetPos.x()) <= kHandleSize &&
+               std::abs(p.y() - widgetPos.y()) <= kHandleSize;
+    };
+    if (near(QPointF(box.center().x(), box.top() - kRotateOffset)))
+        return Handle::Rotate;
+    if (near(box.topLeft()))
+        return Handle::TopLeft;
+    if (near(box.topRight()))
+        return Handle::TopRight;
+    if (near(box.bottomRight()))
+        return Handle::BottomRight;
+    if (near(box.bottomLeft()))
+        return Handle::BottomLeft;
+    return box.contains(widgetPos) ? Handle::Inside : Handle::None;
+}
+
+QCursor SelectTool::cursorFor(Handle handle) const
+{
+    switch (handle) {
+    case Handle::Inside:
+        return Qt::SizeAllCursor;
+    case Handle::Rotate:
+        return Qt::PointingHandCursor;
+    case Handle::TopLeft:
+    case Handle::BottomRight:
+        return Qt::SizeFDiagCursor;
+    case Handle::TopRight:
+    case Handle::BottomLeft:
+        return Qt::SizeBDiagCursor;
+    case Handle::None:
+        break;
+    }
+    return cursor();
+}
+
+void SelectTool::press(const ToolEvent &event)
+{
+    m_start = event.pos;
+    m_transform.reset();
+    const Handle h = state()->selectedStrokes().empty() ? Handle::None : handleAt(event.widgetPos);
+    if (h == Handle::None) {
+        m_mode = Mode::Lasso;
+        m_lasso = QPolygonF{event.pos};
+        return;
+    }
+    m_dragged.clear();
+    forStrokes(*state(), state()->selectedStrokes(),
+               [&](const model::StrokeGroup &g, std::size_t i) {
+                   if (isEditable(g))
+                       m_dragged.push_back(g.strokes[i].id);
+               });
+    if (m_dragged.empty())
+        return;
+    m_startBounds = selectionBounds();
+    const QRectF b = m_startBounds;
+    switch (h) {
+    case Handle::Inside:
+        m_mode = Mode::Move;
+        break;
+    case Handle::Rotate:
+        m_mode = Mode::Rotate;
+        break;
+    default:
+        m_mode = Mode::Scale;
+        m_grabbed = h == Handle::TopLeft       ? b.topLeft()
+                    : h == Handle::TopRight    ? b.topRight()
+                    : h == Handle::BottomRight ? b.bottomRight()
+                                               : b.bottomLeft();
+        m_anchor = b.center() * 2 - m_grabbed;
+        break;
+    }
+    canvas()->setSuppressedStrokes(m_dragged);
+}
+
+void SelectTool::move(const ToolEvent &event)
+{
+    switch (m_mode) {
+    case Mode::Idle:
+        return;
+    case Mode::Lasso:
+        if (QLineF(m_lasso.back(), event.pos).length() * canvas()->zoom() >= 1.0)
+            m_lasso << event.pos;
+        break;
+    default:
+        m_transform = dragTransform(event);
+        break;
+    }
+    canvas()->updateCanvasRect();
+}
+
+void SelectTool::release(const ToolEvent &event)
+{
+    const Mode mode = m_mode;
+    if (mode == Mode::Lasso) {
+        m_lasso << event.pos;
+        finishLasso(event);
+    } else if (mode != Mode::Idle) {
+        m_transform = dragTransform(event);
+        commitTransform();
+    }
+    cancelDrag();
+}
+
+void SelectTool::hover(const ToolEvent &event)
+{
+    const Handle h = state()->selectedStrokes().empty() ? Handle::None : handleAt(event.widgetPos);
+    canvas()->setCursor(cursorFor(h));
+}
+
+QTransform SelectTool::dragTransform(const ToolEvent &event) const
+{
+    const bool shift = event.modifiers & Qt::ShiftModifier;
+    QTransform t;
+    if (m_mode == Mode::Move) {
+        QPointF d = event.pos - m_start;
+        if (shift) // constrain to the dominant axis
+            d = std::abs(d.x()) >= std::abs(d.y()) ? QPointF(d.x(), 0) : QPointF(0, d.y());
+        t.translate(d.x(), d.y());
+    } else if (m_mode == Mode::Rotate) {
+        const QPointF c = m_startBounds.center();
+        const QPointF a = m_start - c, b = event.pos - c;
+        qreal degrees =
+            (std::atan2(b.y(), b.x()) - std::atan2(a.y(), a.x())) * 180 / std::numbers::pi;
+        if (shift)
+            degrees = std::round(degrees / 15) * 15;
+        t.translate(c.x(), c.y());
+        t.rotate(degrees);
+        t.translate(-c.x(), -c.y());
+    } else if (m_mode == Mode::Scale) {
+        const QPointF base = m_grabbed - m_anchor, now = event.pos - m_anchor;
+        qreal sx = std::abs(base.x()) > 1e-6 ? now.x() / base.x() : 1.0;
+        qreal sy = std::abs(base.y()) > 1e-6 ? now.y() / base.y() : 1.0;
+        if (shift) {
+            const qreal s = std::max(std::abs(sx), std::abs(sy));
+            sx = std::copysign(s, sx);
+            sy = std::copysign(s, sy);
+        }
+        // Never collapse to zero: a flat stroke cannot be scaled back.
+        sx = std::abs(sx) < 0.01 ? std::copysign(0.01, sx) : sx;
+        sy = std::abs(sy) < 0.01 ? std::copysign(0.01, sy) : sy;
+        t.translate(m_anchor.x(), m_anchor.y());
+        t.scale(sx, sy);
+        t.translate(-m_anchor.x(), -m_anchor.y());
+    }
+    return t;
+}
+
+void SelectTool::finishLasso(const ToolEvent &event)
+{
+    const bool add = event.modifiers & Qt::ShiftModifier;
+    std::vector<model::Id> picked = add ? state()->selectedStrokes() : std::vector<model::Id>{};
+    const model::Frame *frame = state()->currentFrame();
+    if (!frame) {
+        state()->setSelectedStrokes({});
+        return;
+    }
+    const QRectF extent = canvas()->canvasToWidget().mapRect(m_lasso.boundingRect());
+    if (extent.width() < 3 && extent.height() < 3) {
+        const model::Id hit = strokeAt(*frame, event.pos, kClickTolerance / canvas()->zoom());
+        if (hit != model::kNoId && !contains(picked, hit))
+            picked.push_back(hit);
+        state()->setSelectedStrokes(std::move(picked));
+        return;
+    }
+    for (const model::StrokeGroup &g : frame->groups) {
+        if (!isEditable(g))
+            continue;
+        for (std::size_t i = 0; i < g.strokes.size(); ++i)
+            if (!contains(picked, g.strokes[i].id) &&
+                fractionInside(model::displayedPoints(g, i), m_lasso) >= kLassoShare)
+                picked.push_back(g.strokes[i].id);
+    }
+    state()->setSelectedStrokes(std::move(picked));
+}
+
+void SelectTool::commitTransform()
+{
+    if (m_transform.isIdentity() || m_dragged.empty())
+        return;
+    model::Document *doc = state()->document();
+    const qreal widthScale = std::sqrt(std::abs(m_transform.determinant()));
+    std::vector<model::Id> ids;
+    std::vector<model::Id> groups;
+    std::vector<model::StrokeDataPtr> data;
+    // The transform was made on the strokes as shown, so it applies to the shown points (the
+    // pose of a posed object), and such an object's pose becomes its drawing first.
+    for (model::Id id : m_dragged) {
+        const model::StrokeLocation at = doc->locateStroke(id);
+        if (!at.isValid())
+            continue;
+        const model::StrokeGroup &g = doc->frameAt(at.frame).groups[std::size_t(at.group)];
+        auto moved = std::make_shared<model::StrokeData>(*g.strokes[std::size_t(at.stroke)].data);
+        moved->points = model::displayedPoints(g, std::size_t(at.stroke));
+        for (model::StrokePoint &p : moved->points) {
+            const QPointF q = m_transform.map(QPointF(p.x, p.y));
+            p.x = float(q.x());
+            p.y = float(q.y());
+            if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+                canvas()->postMessage(tr("The strokes cannot be transformed that far."));
+                return;
+            }
+        }
+        moved->width = float(std::max(0.1, moved->width * widthScale));
+        ids.push_back(id);
+        groups.push_back(g.id);
+        data.push_back(std::move(moved));
+    }
+    const QString text = m_mode == Mode::Move     ? tr("Move Strokes")
+                         : m_mode == Mode::Rotate ? tr("Rotate Strokes")
+                                                  : tr("Scale Strokes");
+    StrokeEditing::beginRestEdit(doc, text, groups);
+    doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, ids, data, text));
+    StrokeEditing::endRestEdit(*state(), groups); // a shown skeleton follows the moved lines
+}
+
+void SelectTool::cancelDrag()
+{
+    m_mode = Mode::Idle;
+    m_lasso.clear();
+    m_dragged.clear();
+    m_transform.reset();
+    if (canvas()) {
+        canvas()->setSuppressedStrokes({});
+        canvas()->updateCanvasRect();
+    }
+}
+
+void SelectTool::deactivate()
+{
+    cancelDrag();
+}
+
+bool SelectTool::keyPress(QKeyEvent *event)
+{
+    if (event->key() != Qt::Key_Escape)
+        return false;
+    if (m_mode != Mode::Idle)
+        cancelDrag();
+    else if (!state()->selectedStrokes().empty())
+        state()->setSelectedStrokes({});
+    else
+        return false;
+    return true;
+}
+
+void SelectTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidget)
+{
+    const bool transforming =
+        m_mode == Mode::Move || m_mode == Mode::Rotate || m_mode == Mode::Scale;
+    if (transforming) {
+        painter.save();
+        painter.setTransform(m_transform * canvasToWidget, true);
+        forStrokes(*state(), m_dragged, [&](const model::StrokeGroup &g, std::size_t i) {
+            const model::StrokeData &d = *g.strokes[i].data;
+            model::paintStroke(painter, model::displayedPoints(g, i), d.color, d.width);
+        });
+        painter.restore();
+    }
+    QPen dark(QColor(20, 20, 20), 1, Qt::DashLine);
+    QPen light(QColor(255, 255, 255), 1);
+    const auto outline = [&](const QPolygonF &shape, bool closed) {
+        painter.setBrush(Qt::NoBrush);
+        painter.setPen(light);
+        closed ? painter.drawPolygon(shape) : painter.drawPolyline(shape);
+        painter.setPen(dark);
+        closed ? painter.drawPolygon(shape) : painter.drawPolyline(shape);
+    };
+    if (m_mode == Mode::Lasso && m_lasso.size() > 1)
+        outline(canvasToWidget.map(m_lasso), true);
+    const QRectF bounds = transforming ? m_startBounds : selectionBounds();
+    if (bounds.isNull() || m_mode == Mode::Lasso)
+        return;
+    const QPolygonF box = canvasToWidget.map(m_transform.map(QPolygonF(bounds)));
+    outline(box, true);
+    if (transforming)
+        return;
+    const QRectF r = box.boundingRect();
+    const QPointF rotate(r.center().x(), r.top() - kRotateOffset);
+    painter.setPen(QPen(QColor(20, 20, 20), 1));
+    painter.drawLine(QPointF(r.center().x(), r.top()), rotate);
+    painter.setBrush(Qt::white);
+    painter.drawEllipse(rotate, kHandleSize / 2, kHandleSize / 2);
+    for (const QPointF &corner : {r.topLeft(), r.topRight(), r.bottomRight(), r.bottomLeft()})
+        painter.drawRect(QRectF(corner - QPointF(kHandleSize, kHandleSize) / 2,
+                                QSizeF(kHandleSize, kHandleSize)));
+}
+
+} // namespace finbook::ui

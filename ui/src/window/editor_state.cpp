@@ -1,0 +1,204 @@
+#include <finbook/ui/window/editor_state.h>
+
+#include <algorithm>
+
+namespace finbook::ui {
+
+EditorState::EditorState(model::Document *document, QObject *parent)
+    : QObject(parent)
+    , m_doc(document)
+{
+    // Keep the current frame on the same drawing when frames move around it, and valid
+    // when frames go away.
+    connect(m_doc, &model::Document::documentReset, this, [this] {
+        m_groupId = model::kNoId;
+        m_frameIndex = -1;
+        setCurrentFrameIndex(0);
+    });
+    connect(m_doc, &model::Document::framesInserted, this, [this](int first, int count) {
+        if (first <= m_frameIndex && m_frameIndex >= 0)
+            m_frameIndex += count;
+        clampToDocument();
+        emit currentFrameChanged(m_frameIndex);
+    });
+    connect(m_doc, &model::Document::framesRemoved, this, [this](int first, int count) {
+        if (m_frameIndex >= first + count)
+            m_frameIndex -= count;
+        clampToDocument();
+        emit currentFrameChanged(m_frameIndex);
+    });
+    connect(m_doc, &model::Document::frameMoved, this, [this](int from, int to) {
+        if (m_frameIndex == from)
+            m_frameIndex = to;
+        else if (from < m_frameIndex && to >= m_frameIndex)
+            --m_frameIndex;
+        else if (from > m_frameIndex && to <= m_frameIndex)
+            ++m_frameIndex;
+        emit currentFrameChanged(m_frameIndex);
+    });
+    // A selection never outlives its strokes (erased, undone, moved to another frame).
+    connect(m_doc, &model::Document::frameChanged, this, [this] {
+        std::vector<model::Id> kept;
+        for (model::Id id : m_selection) {
+            const model::StrokeLocation at = m_doc->locateStroke(id);
+            if (at.isValid() && at.frame == m_frameIndex)
+                kept.push_back(id);
+        }
+        if (kept != m_selection)
+            setSelectedStrokes(std::move(kept));
+    });
+    connect(this, &EditorState::currentFrameChanged, this, [this] {
+        if (!m_selection.empty())
+            setSelectedStrokes({});
+        const model::Id current = currentFrameId();
+        if (!m_frameSelection.empty() && std::find(m_frameSelection.begin(), m_frameSelection.end(),
+                                                   current) == m_frameSelection.end())
+            setSelectedFrames({});
+    });
+    connect(m_doc, &model::Document::framesRemoved, this, &EditorState::frameSelectionChanged);
+    connect(m_doc, &model::Document::documentReset, this, [this] { setSelectedFrames({}); });
+    clampToDocument();
+}
+
+std::vector<int> EditorState::selectedFrames() const
+{
+    std::vector<int> rows;
+    for (model::Id id : m_frameSelection)
+        if (const int row = m_doc->frameIndex(id); row >= 0)
+            rows.push_back(row);
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    if (rows.empty() && currentFrame())
+        rows.push_back(m_frameIndex);
+    return rows;
+}
+
+void EditorState::setSelectedFrames(std::vector<model::Id> frameIds)
+{
+    if (frameIds == m_frameSelection)
+        return;
+    m_frameSelection = std::move(frameIds);
+    emit frameSelectionChanged();
+}
+
+model::Id EditorState::currentFrameId() const
+{
+    const model::Frame *f = currentFrame();
+    return f ? f->id : model::kNoId;
+}
+
+const model::Frame *EditorState::currentFrame() const
+{
+    if (m_frameIndex < 0 || m_frameIndex >= m_doc->frameCount())
+        return nullptr;
+    return &m_doc->frameAt(m_frameIndex);
+}
+
+model::Id EditorState::currentGroupId() const
+{
+    const model::Frame *f = currentFrame();
+    if (!f || f->groups.empty())
+        return model::kNoId;
+    for (const model::StrokeGroup &g : f->groups)
+        if (g.id == m_groupId)
+            return g.id;
+    return f->groups.back().id;
+}
+
+const model::StrokeGroup *EditorState::currentGroup() const
+{
+    const model::Id id = currentGroupId();
+    return id == model::kNoId ? nullptr : m_doc->group(id);
+}
+
+void EditorState::setCurrentFrameIndex(int index)
+{
+    index = std::clamp(index, 0, std::max(0, m_doc->frameCount() - 1));
+    if (index == m_frameIndex)
+        return;
+    // Carry the object choice to the same z-position in the new frame, so drawing continues
+    // on "the arm" after a duplicate or a frame step.
+    const model::Frame *before = currentFrame();
+    int slot = -1;
+    if (before)
+        for (int i = 0; i < int(before->groups.size()); ++i)
+            if (before->groups[std::size_t(i)].id == currentGroupId())
+                slot = i;
+    m_frameIndex = index;
+    if (const model::Frame *after = currentFrame();
+        after && slot >= 0 && slot < int(after->groups.size()))
+        m_groupId = after->groups[std::size_t(slot)].id;
+    emit currentFrameChanged(m_frameIndex);
+    emit currentGroupChanged(currentGroupId());
+}
+
+void EditorState::setCurrentGroupId(model::Id groupId)
+{
+    const model::GroupLocation at = m_doc->locateGroup(groupId);
+    if (!at.isValid())
+        return;
+    if (at.frame != m_frameIndex)
+        setCurrentFrameIndex(at.frame);
+    if (m_groupId == groupId)
+        return;
+    m_groupId = groupId;
+    emit currentGroupChanged(groupId);
+}
+
+void EditorState::setSelectedStrokes(std::vector<model::Id> strokeIds)
+{
+    if (strokeIds == m_selection)
+        return;
+    m_selection = std::move(strokeIds);
+    emit selectionChanged();
+}
+
+void EditorState::setOnionSkin(const OnionSkin &onion)
+{
+    OnionSkin o = onion;
+    o.before = std::clamp(o.before, 0, 5);
+    o.after = std::clamp(o.after, 0, 5);
+    o.opacity = std::clamp(o.opacity, 0.0, 1.0);
+    if (o == m_onion)
+        return;
+    m_onion = o;
+    emit onionSkinChanged();
+}
+
+void EditorState::setPlaying(bool playing)
+{
+    if (playing == m_playing)
+        return;
+    m_playing = playing;
+    emit playingChanged(playing);
+}
+
+void EditorState::setShowMesh(bool show)
+{
+    if (show == m_showMesh)
+        return;
+    m_showMesh = show;
+    emit showMeshChanged(show);
+}
+
+void EditorState::setShowSkeleton(bool show)
+{
+    m_showSkeleton = show;
+}
+
+void EditorState::nextFrame()
+{
+    setCurrentFrameIndex(m_frameIndex + 1);
+}
+void EditorState::previousFrame()
+{
+    setCurrentFrameIndex(m_frameIndex - 1);
+}
+
+void EditorState::clampToDocument()
+{
+    const int last = std::max(0, m_doc->frameCount() - 1);
+    m_frameIndex = std::clamp(m_frameIndex, 0, last);
+}
+
+} // namespace finbook::ui

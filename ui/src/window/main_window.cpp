@@ -1,0 +1,297 @@
+// MainWindow: construction, docks, status bar, title and settings. Menus are in
+// main_window_menus.cpp, file handling in main_window_files.cpp.
+#include <finbook/model/document.h>
+#include <finbook/model/recovery/autosaver.h>
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/i18n/action_text.h>
+#include <finbook/ui/keys/canvas_focus.h>
+#include <finbook/ui/keys/shortcut_registry.h>
+#include <finbook/ui/panels/object_actions.h>
+#include <finbook/ui/panels/objects_panel.h>
+#include <finbook/ui/timeline/frame_actions.h>
+#include <finbook/ui/timeline/playback_controller.h>
+#include <finbook/ui/timeline/timeline_widget.h>
+#include <finbook/ui/tools/brush_tool_bar.h>
+#include <finbook/ui/tools/eraser_tool_bar.h>
+#include <finbook/ui/tools/tool_eraser.h>
+#include <finbook/ui/tools/tool_hand.h>
+#include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/tools/tool_select.h>
+#include <finbook/ui/window/editor_memory.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
+
+#include <QActionGroup>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenu>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QUndoView>
+
+#include <cmath>
+
+namespace finbook::ui {
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent)
+    , m_doc(new model::Document(this))
+    , m_state(new EditorState(m_doc, this))
+    , m_shortcuts(new ShortcutRegistry(this))
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    {
+        QSettings settings;
+        m_prefs = Preferences::load(settings);
+    }
+    m_state->setOnionSkin(m_prefs.onionSkin);
+    newDocument();
+    m_canvas = new CanvasWidget(m_state, this);
+    setCentralWidget(m_canvas);
+    new CanvasFocus(this, m_canvas);
+    createActions();
+    createCanvasAndTools();
+    createDeformation();
+    createFill();
+    createDocks();
+    createStatusBar();
+    arrangeToolBars();
+    readSettings();
+    rememberEditor();
+    // The saved window state may show either bar; the eraser's shows only with the eraser.
+    const bool erasing =
+        m_canvas->currentTool() && m_canvas->currentTool()->id() == QLatin1String("tool.eraser");
+    if (auto *eraserBar = findChild<EraserToolBar *>())
+        eraserBar->setVisible(erasing);
+    if (auto *brush = findChild<BrushToolBar *>())
+        brush->setVisible(!erasing);
+    connect(m_doc->undoStack(), &QUndoStack::cleanChanged, this,
+            [this](bool clean) { setWindowModified(!clean); });
+    createRecovery();
+    updateTitle();
+    // Toolbar buttons and tooltips show texts Qt derives from the actions' texts, which keep a
+    // Japanese "(&S)" as "(S)".
+    keepIconTextsPlain(this);
+    m_canvas->setFocus();
+}
+
+MainWindow::~MainWindow()
+{
+    // Before the document (a child, deleted later by QObject) clears its undo stack, which
+    // says "clean" and would discard the copy that quitting with unsaved changes must keep.
+    delete m_autosaver;
+    m_autosaver = nullptr;
+}
+
+void MainWindow::createCanvasAndTools()
+{
+    connect(m_canvas, &CanvasWidget::toolAdded, this, &MainWindow::toolAdded);
+    connect(m_canvas, &CanvasWidget::currentToolChanged, this, [this](CanvasTool *tool) {
+        if (QAction *a = action(tool->id()))
+            a->setChecked(true);
+        updateStatus();
+    });
+    auto pen = std::make_unique<PenTool>();
+    m_pen = pen.get();
+    addTool(std::move(pen));
+    auto eraser = std::make_unique<EraserTool>();
+    EraserTool *eraserTool = eraser.get();
+    addTool(std::move(eraser));
+    addTool(std::make_unique<SelectTool>());
+    addTool(std::make_unique<HandTool>());
+    auto *brush = new BrushToolBar(m_pen, this);
+    addToolBar(Qt::TopToolBarArea, brush);
+    // The eraser's mode and size take the brush's place while the eraser is in hand: both at
+    // once would push the cage controls into the top row's overflow menu at 1280 px.
+    auto *eraserBar = new EraserToolBar(eraserTool, this);
+    insertToolBar(brush, eraserBar);
+    eraserBar->setVisible(false);
+    connect(m_canvas, &CanvasWidget::currentToolChanged, eraserBar,
+            [eraserBar, brush, eraserTool](CanvasTool *tool) {
+                eraserBar->setVisible(tool == eraserTool);
+                brush->setVisible(tool != eraserTool);
+            });
+    m_docksMenu->addAction(m_toolsBar->toggleViewAction());
+    m_docksMenu->addAction(brush->toggleViewAction());
+}
+
+QAction *MainWindow::addTool(std::unique_ptr<CanvasTool> tool)
+{
+    const QString id = tool->id();
+    m_canvas->addTool(std::move(tool));
+    return action(id);
+}
+
+void MainWindow::toolAdded(CanvasTool *tool)
+{
+    auto *a = new QAction(tool->icon(), tool->name(), this);
+    a->setObjectName(tool->id());
+    a->setCheckable(true);
+    a->setShortcut(tool->defaultShortcut());
+    a->setToolTip(tool->name());
+    m_toolGroup->addAction(a);
+    m_toolsMenu->addAction(a);
+    m_toolsBar->addAction(a);
+    m_shortcuts->registerAction(a);
+    const QString id = tool->id();
+    connect(a, &QAction::triggered, m_canvas, [this, id] { m_canvas->setCurrentTool(id); });
+    connect(m_shortcuts, &ShortcutRegistry::shortcutsChanged, a, [a, tool] {
+        const QString keys = a->shortcut().toString(QKeySequence::NativeText);
+        a->setToolTip(keys.isEmpty() ? tool->name() : tr("%1 (%2)").arg(tool->name(), keys));
+    });
+    if (m_canvas->currentTool() == tool)
+        a->setChecked(true);
+}
+
+QAction *MainWindow::action(const QString &objectName) const
+{
+    return m_shortcuts->action(objectName);
+}
+
+void MainWindow::createDocks()
+{
+    const auto dock = [this](QWidget *content, const QString &name, const QString &title,
+                             Qt::DockWidgetArea area) {
+        auto *d = new QDockWidget(title, this);
+        d->setObjectName(name);
+        content->setParent(d);
+        d->setWidget(content);
+        addDockWidget(area, d);
+        m_docksMenu->addAction(d->toggleViewAction());
+        return d;
+    };
+    dock(new TimelineWidget(m_state, m_frameActions, m_playback), QStringLiteral("timelineDock"),
+         tr("Timeline"), Qt::BottomDockWidgetArea);
+    dock(new ObjectsPanel(m_state, m_objectActions), QStringLiteral("objectsDock"), tr("Objects"),
+         Qt::RightDockWidgetArea);
+    auto *history = new QUndoView(m_doc->undoStack());
+    history->setEmptyLabel(tr("<opened document>"));
+    dock(history, QStringLiteral("historyDock"), tr("Undo History"), Qt::RightDockWidgetArea);
+}
+
+void MainWindow::createStatusBar()
+{
+    m_toolLabel = new QLabel(this);
+    m_frameLabel = new QLabel(this);
+    m_zoomLabel = new QLabel(this);
+    m_cursorLabel = new QLabel(this);
+    m_cursorLabel->setMinimumWidth(110);
+    for (QLabel *label : {m_toolLabel, m_frameLabel, m_zoomLabel, m_cursorLabel}) {
+        label->setContentsMargins(8, 0, 8, 0);
+        label->setAlignment(Qt::AlignCenter);
+        statusBar()->addPermanentWidget(label);
+    }
+    m_zoomLabel->setMinimumWidth(60);
+    connectStatus();
+    updateStatus();
+}
+
+void MainWindow::connectStatus()
+{
+    connect(m_canvas, &CanvasWidget::zoomChanged, this, &MainWindow::updateStatus);
+    connect(m_state, &EditorState::currentFrameChanged, this, &MainWindow::updateStatus);
+    connect(m_doc, &model::Document::framesInserted, this, &MainWindow::updateStatus);
+    connect(m_doc, &model::Document::framesRemoved, this, &MainWindow::updateStatus);
+    connect(m_doc, &model::Document::documentReset, this, &MainWindow::updateStatus);
+    connect(m_canvas, &CanvasWidget::messagePosted, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 6000); });
+    connect(m_canvas, &CanvasWidget::cursorMoved, this, [this](const QPointF &p) {
+        // lround is undefined past what a long holds: a position a tablet reports far away
+        // (or not at all) shows as nothing rather than as a garbage number.
+        const auto shown = [](qreal v) { return std::isfinite(v) && std::abs(v) < 1e9; };
+        if (!shown(p.x()) || !shown(p.y()))
+            m_cursorLabel->clear();
+        else
+            m_cursorLabel->setText(tr("%1, %2 px").arg(std::lround(p.x())).arg(std::lround(p.y())));
+    });
+}
+
+void MainWindow::updateStatus()
+{
+    if (!m_toolLabel)
+        return;
+    const CanvasTool *tool = m_canvas->currentTool();
+    m_toolLabel->setText(tool ? tool->name() : QString());
+    m_frameLabel->setText(
+        tr("Frame %1 / %2").arg(m_state->currentFrameIndex() + 1).arg(m_doc->frameCount()));
+    m_zoomLabel->setText(tr("%1 %").arg(std::lround(m_canvas->zoom() * 100)));
+}
+
+void MainWindow::updateTitle()
+{
+    const QString name = m_path.isEmpty() ? tr("Untitled") : QFileInfo(m_path).fileName();
+    setWindowTitle(tr("%1[*] - Finbook").arg(name));
+    setWindowModified(!m_doc->undoStack()->isClean());
+    if (m_autosaver)
+        m_autosaver->setDocumentInfo(name, m_path);
+}
+
+void MainWindow::readSettings()
+{
+    QSettings settings;
+    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
+        resize(defaultSize());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    m_shortcuts->load(settings);
+}
+
+void MainWindow::writeSettings() const
+{
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    m_shortcuts->save(settings);
+    m_prefs.save(settings);
+}
+
+void MainWindow::setPreferences(const Preferences &preferences)
+{
+    m_prefs = preferences;
+    QSettings settings;
+    m_prefs.save(settings);
+    m_state->setOnionSkin(m_prefs.onionSkin); // the Onion Skin page edits the current one
+    applyAutosaveInterval();
+}
+
+void MainWindow::rememberEditor()
+{
+    {
+        QSettings settings;
+        const EditorMemory memory = EditorMemory::load(settings);
+        m_pen->setSettings(memory.pen);
+        if (!memory.tool.isEmpty())
+            m_canvas->setCurrentTool(memory.tool); // an unknown id keeps the first tool
+    }
+    // Saved as they change, so a crash or a kill loses nothing either.
+    const auto savePenAndTool = [this] {
+        EditorMemory memory{m_pen->settings(), {}};
+        if (const CanvasTool *tool = m_canvas->currentTool())
+            memory.tool = tool->id();
+        QSettings settings;
+        memory.save(settings);
+    };
+    connect(m_pen, &PenTool::settingsChanged, this, savePenAndTool);
+    connect(m_canvas, &CanvasWidget::currentToolChanged, this, savePenAndTool);
+    connect(m_state, &EditorState::onionSkinChanged, this, [this] {
+        m_prefs.onionSkin = m_state->onionSkin();
+        QSettings settings;
+        m_prefs.save(settings);
+    });
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    writeSettings();
+    m_autosaver->discard(); // closed on purpose: nothing to recover
+    event->accept();
+}
+
+} // namespace finbook::ui

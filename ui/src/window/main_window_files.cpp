@@ -1,0 +1,257 @@
+// MainWindow: new, open, save and the recent-files list (File → Export is export/).
+#include <finbook/model/commands.h>
+#include <finbook/model/document.h>
+#include <finbook/model/finbook_file.h>
+#include <finbook/model/import/mesh_import.h>
+#include <finbook/ui/dialogs/file_messages.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGuiApplication>
+#include <QMenu>
+#include <QPushButton>
+#include <QSettings>
+#include <QStatusBar>
+
+namespace finbook::ui {
+
+namespace {
+const QString kRecentKey = QStringLiteral("recentFiles");
+
+QString fileFilter()
+{
+    return MainWindow::tr("Finbook animations (*.finbook);;All files (*)");
+}
+} // namespace
+
+void MainWindow::newDocument()
+{
+    // Built directly rather than through InsertFrameCommand: a new document has nothing to undo.
+    model::Frame frame;
+    frame.id = 1;
+    model::StrokeGroup group;
+    group.id = 2;
+    group.name = tr("Object");
+    frame.groups.push_back(std::move(group));
+    model::DocumentSettings settings;
+    settings.canvasSize = m_prefs.canvasSize;
+    settings.fps = m_prefs.frameRate;
+    std::vector<model::Frame> frames;
+    frames.push_back(std::move(frame));
+    m_doc->reset(std::move(frames), model::sanitizedSettings(settings), 3);
+    setFilePath(QString());
+}
+
+void MainWindow::newFile()
+{
+    if (maybeSave())
+        newDocument();
+}
+
+void MainWindow::open()
+{
+    if (!maybeSave())
+        return;
+    const QString path = askOpenPath();
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+bool MainWindow::openFile(const QString &path)
+{
+    auto loaded = model::loadFinbook(path);
+    if (!loaded) {
+        const FileProblem problem = FileMessages::openProblem(path, loaded.error());
+        m_errorDetails = problem.details;
+        const bool anyway =
+            model::isRecoverable(loaded.error().code) && askOpenAnyway(problem.text);
+        if (!model::isRecoverable(loaded.error().code))
+            reportError(tr("Cannot Open File"), problem.text);
+        m_errorDetails.clear();
+        return anyway && openRecovering(path);
+    }
+    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    setFilePath(QFileInfo(path).absoluteFilePath());
+    addRecentFile(m_path);
+    return true;
+}
+
+// "Open anyway": what is readable of a damaged file, as a new unsaved document, so saving it
+// can never replace the damaged file (or its backup) without the user choosing where.
+bool MainWindow::openRecovering(const QString &path)
+{
+    QStringList problems;
+    auto loaded = model::loadFinbookRecovering(path, &problems);
+    if (!loaded) {
+        reportError(tr("Cannot Open File"), loaded.error().message);
+        return false;
+    }
+    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    setFilePath(QString());
+    m_doc->undoStack()->resetClean(); // unsaved until the user saves it somewhere
+    statusBar()->showMessage(
+        tr("Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.",
+           nullptr, int(problems.size()))
+            .arg(QFileInfo(path).fileName()),
+        10000);
+    emit recoveredProblems(problems);
+    return true;
+}
+bool MainWindow::save()
+{
+    if (m_path.isEmpty())
+        return saveAs();
+    return saveFile(m_path);
+}
+
+bool MainWindow::saveAs()
+{
+    QString path = askSavePath();
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".finbook");
+    return saveFile(path);
+}
+
+bool MainWindow::saveFile(const QString &path)
+{
+    settlePoses(); // a saved pose is the converged one
+    if (const auto error = model::saveFinbook(*m_doc, path)) {
+        reportError(tr("Cannot Save File"), error->message);
+        return false;
+    }
+    m_doc->undoStack()->setClean();
+    setFilePath(QFileInfo(path).absoluteFilePath());
+    addRecentFile(m_path);
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(m_path)), 4000);
+    return true;
+}
+
+bool MainWindow::maybeSave()
+{
+    if (m_doc->undoStack()->isClean())
+        return true;
+    switch (askToSave()) {
+    case QMessageBox::Save:
+        return save();
+    case QMessageBox::Discard:
+        return true;
+    default:
+        return false;
+    }
+}
+
+void MainWindow::setFilePath(const QString &path)
+{
+    m_path = path;
+    updateTitle();
+}
+
+QStringList MainWindow::recentFiles() const
+{
+    QStringList files = QSettings().value(kRecentKey).toStringList();
+    files.erase(std::remove_if(files.begin(), files.end(),
+                               [](const QString &f) { return !QFileInfo::exists(f); }),
+                files.end());
+    return files.mid(0, kMaxRecentFiles);
+}
+
+void MainWindow::addRecentFile(const QString &path)
+{
+    QStringList files = recentFiles();
+    files.removeAll(path);
+    files.prepend(path);
+    QSettings().setValue(kRecentKey, files.mid(0, kMaxRecentFiles));
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList files = recentFiles();
+    QSettings().setValue(kRecentKey, files); // prune the missing ones for good
+    for (int i = 0; i < int(files.size()); ++i) {
+        const QString path = files[i];
+        QAction *a =
+            m_recentMenu->addAction(tr("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()));
+        a->setToolTip(QDir::toNativeSeparators(path));
+        a->setStatusTip(QDir::toNativeSeparators(path));
+        connect(a, &QAction::triggered, this, [this, path] {
+            if (maybeSave())
+                openFile(path);
+        });
+    }
+    if (files.isEmpty())
+        m_recentMenu->addAction(tr("No recent files"))->setEnabled(false);
+    m_recentMenu->setEnabled(true);
+}
+
+// --- the interactive parts tests override ---------------------------------------------------
+
+bool MainWindow::importMesh(const QString &path)
+{
+    auto strokes = model::importMeshStrokes(path, m_doc->settings().canvasSize);
+    if (!strokes) {
+        reportError(tr("Cannot Import Mesh"), strokes.error());
+        return false;
+    }
+    QUndoStack *stack = m_doc->undoStack();
+    stack->beginMacro(tr("Import Mesh"));
+    auto *add = new model::AddObjectCommand(m_doc, m_state->currentFrameId(), -1,
+                                            QFileInfo(path).completeBaseName());
+    const model::Id groupId = add->groupId();
+    stack->push(add);
+    for (const model::StrokeDataPtr &stroke : *strokes)
+        stack->push(new model::AddStrokeCommand(m_doc, groupId, stroke));
+    stack->endMacro();
+    m_state->setCurrentGroupId(groupId);
+    return true;
+}
+
+void MainWindow::reportError(const QString &title, const QString &message)
+{
+    emit errorReported(message);
+    QMessageBox box(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+    box.setDetailedText(m_errorDetails); // empty: no "Show Details..." button
+    box.exec();
+}
+
+bool MainWindow::askOpenAnyway(const QString &message)
+{
+    QMessageBox box(QMessageBox::Warning, tr("Damaged File"), message, QMessageBox::Cancel, this);
+    box.setInformativeText(tr("Open anyway shows what is still readable as a new, unsaved "
+                              "animation; the damaged file is not changed."));
+    box.setDetailedText(m_errorDetails);
+    QPushButton *open = box.addButton(tr("Open Anyway"), QMessageBox::AcceptRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    return box.clickedButton() == open;
+}
+
+QMessageBox::StandardButton MainWindow::askToSave()
+{
+    const QString name = m_path.isEmpty() ? tr("Untitled") : QFileInfo(m_path).fileName();
+    return QMessageBox::warning(
+        this, tr("Unsaved Changes"),
+        tr("\"%1\" has changes that are not saved. Save them before going on?").arg(name),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+}
+
+QString MainWindow::askOpenPath()
+{
+    return QFileDialog::getOpenFileName(this, tr("Open Animation"), QFileInfo(m_path).path(),
+                                        fileFilter());
+}
+
+QString MainWindow::askSavePath()
+{
+    return QFileDialog::getSaveFileName(this, tr("Save Animation"),
+                                        m_path.isEmpty() ? tr("untitled.finbook") : m_path,
+                                        fileFilter());
+}
+
+} // namespace finbook::ui
