@@ -4,10 +4,10 @@
 
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/ui/canvas/canvas_widget.h>
-#include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/fill/tool_fill.h>
-#include <finbook/ui/window/main_window.h>
 #include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QMenuBar>
 #include <QSpinBox>

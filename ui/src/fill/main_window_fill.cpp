@@ -3,11 +3,11 @@
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/ui/canvas/canvas_tool.h>
 #include <finbook/ui/canvas/canvas_widget.h>
-#include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/fill/tool_fill.h>
-#include <finbook/ui/window/main_window.h>
 #include <finbook/ui/keys/shortcut_registry.h>
 #include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/main_window.h>
 
 #include <QMenu>
 #include <QMenuBar>

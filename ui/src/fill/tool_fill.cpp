@@ -2,9 +2,9 @@
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_resolve.h>
 #include <finbook/ui/canvas/canvas_widget.h>
-#include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/fill/tool_fill.h>
 #include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/window/editor_state.h>
 
 #include <QPainter>
 #include <QPixmap>
