@@ -275,39 +275,41 @@
   finbook info FILE            print a JSON summary of FILE
   finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
   finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
-  finbook export FILE... --format F --out-dir DIR   export several files</source>
+  finbook export FILE... --format F --out-dir DIR   export several files
+  finbook thumbnail FILE OUT.png SIZE   write the first frame as a PNG of at most SIZE px</source>
         <translation>Finbook, un éditeur d&apos;animation en folioscope.
 
   finbook [FILE]               ouvrir FILE dans l&apos;éditeur
   finbook info FILE            afficher un résumé JSON de FILE
   finbook export FILE OUTDIR   rendre chaque image dans OUTDIR/frame_0001.png ...
   finbook export FILE OUT      exporter vers OUT.gif, .mp4, .webm, .apng ou .html
-  finbook export FILE... --format F --out-dir DIR   exporter plusieurs fichiers</translation>
+  finbook export FILE... --format F --out-dir DIR   exporter plusieurs fichiers
+  finbook thumbnail FILE OUT.png SIZE   écrire la première image en PNG d&apos;au plus SIZE px</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="51"/>
+        <location filename="../app/main.cpp" line="52"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>Utiliser la langue LANGUAGE (par ex. de, en, fr, ja) au lieu de celle du système.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="57"/>
+        <location filename="../app/main.cpp" line="58"/>
         <source>FILE, or a command.</source>
         <translation>FILE, ou une commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="69"/>
+        <location filename="../app/main.cpp" line="70"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>voir finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="76"/>
+        <location filename="../app/main.cpp" line="77"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1 ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="112"/>
+        <location filename="../app/main.cpp" line="113"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Commande inconnue « %1 » ; %2.</translation>
     </message>
