@@ -1,5 +1,6 @@
+#include "../tools/stroke_hit.h"
+
 #include <finbook/deform/skeleton/inverse_kinematics.h>
-#include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/region.h>
 #include <finbook/model/render.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
@@ -145,36 +146,6 @@ model::Id BoneTool::objectAt(const ToolEvent &event) const
         if (&*it != current && editable(*it) && insideShape(*it, event.pos))
             return it->id;
     return model::kNoId;
-}
-
-bool BoneTool::insideShape(const model::StrokeGroup &g, QPointF pos)
-{
-    std::vector<geometry::StrokeInput> inputs;
-    double left = HUGE_VAL, top = HUGE_VAL, right = -HUGE_VAL, bottom = -HUGE_VAL;
-    for (std::size_t s = 0; s < g.strokes.size(); ++s) {
-        const auto &points = model::displayedPoints(g, s);
-        if (points.empty())
-            continue;
-        geometry::StrokeInput in;
-        in.points.resize(Eigen::Index(points.size()), 2);
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            in.points.row(Eigen::Index(i)) << points[i].x, points[i].y;
-            left = std::min(left, double(points[i].x));
-            right = std::max(right, double(points[i].x));
-            top = std::min(top, double(points[i].y));
-            bottom = std::max(bottom, double(points[i].y));
-        }
-        const double width = g.strokes[s].data->width;
-        in.width = std::isfinite(width) && width > 0 ? width : 1.0;
-        inputs.push_back(std::move(in));
-    }
-    // Cheap refusal first: the shape never reaches far beyond the points.
-    const double reach = 32.0;
-    if (inputs.empty() || !(pos.x() >= left - reach && pos.x() <= right + reach &&
-                            pos.y() >= top - reach && pos.y() <= bottom + reach))
-        return false;
-    const auto region = geometry::objectShape(inputs);
-    return region && geometry::regionContains(*region, pos.x(), pos.y());
 }
 
 void BoneTool::build(model::Id groupId)

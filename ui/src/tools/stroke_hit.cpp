@@ -1,7 +1,7 @@
 #include "stroke_hit.h"
 
+#include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/region.h>
-#include <finbook/geometry/silhouette.h>
 #include <finbook/model/render.h>
 
 #include <algorithm>
@@ -128,12 +128,12 @@ bool insideShape(const model::StrokeGroup &g, QPointF pos)
         in.width = std::isfinite(width) && width > 0 ? width : 1.0;
         inputs.push_back(std::move(in));
     }
-    // Cheap refusal first: the silhouette never reaches far beyond the points.
+    // Cheap refusal first: the shape never reaches far beyond the points.
     const double reach = 32.0;
     if (inputs.empty() || !(pos.x() >= left - reach && pos.x() <= right + reach &&
                             pos.y() >= top - reach && pos.y() <= bottom + reach))
         return false;
-    const auto region = geometry::silhouette(inputs);
+    const auto region = geometry::objectShape(inputs);
     return region && geometry::regionContains(*region, pos.x(), pos.y());
 }
 

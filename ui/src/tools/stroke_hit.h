@@ -32,8 +32,9 @@ inline bool isEditable(const model::StrokeGroup &group)
     return group.visible && !group.locked;
 }
 
-// Whether `pos` lies inside the object's shape as shown: the filled silhouette of its strokes
-// (geometry/silhouette.h), so a click in the middle of an outline counts before any mesh exists.
+// Whether `pos` lies inside the object's shape as shown: its closed regions and ink
+// (geometry/object_shape.h), so a click in the middle of an outline counts before any mesh
+// exists, even where the outline was left slightly open. The Pin and Bone tools both ask this.
 bool insideShape(const model::StrokeGroup &group, QPointF pos);
 
 // The topmost stroke of an editable object within `tolerance` of `p`, or kNoId.

@@ -99,8 +99,6 @@ private:
     };
 
     model::Id objectAt(const ToolEvent &event) const;
-    // Whether `pos` lies inside the filled silhouette of what the object shows.
-    static bool insideShape(const model::StrokeGroup &g, QPointF pos);
     void build(model::Id groupId);
     void toggleLock(const Hit &hit);
     // The joint L locks: the one under the mouse, else the one last clicked.
