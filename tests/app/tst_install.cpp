@@ -135,6 +135,8 @@ void TestInstall::treeHoldsEverything()
         QStringLiteral("share/finbook/translations/finbook_de.qm"),
         QStringLiteral("share/finbook/translations/finbook_fr.qm"),
         QStringLiteral("share/finbook/translations/finbook_ja.qm"),
+        // English plural forms ("1 frame", "2 frames"), as the source texts have one form only.
+        QStringLiteral("share/finbook/translations/finbook_en.qm"),
         QStringLiteral("share/doc/finbook/copyright"),
         QStringLiteral("share/doc/finbook/COPYING"),
         QStringLiteral("share/doc/finbook/changelog.gz"),

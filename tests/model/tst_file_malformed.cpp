@@ -163,9 +163,11 @@ void TestFileMalformed::newerVersionIsRefused()
     QCOMPARE(errorOf(bytes), FileErrorCode::Damaged);
 }
 
-// One flipped bit in the version word: 3 may be a newer Finbook's file; 0, 6, 10, …, 2^31 + 2
-// are not versions any Finbook writes, so the word is damaged. That is said as damage (with
-// "open anyway", which reads the file as the version its checksums show), not as "update".
+// One flipped bit in the version word: the next version or the one after may be a newer
+// Finbook's file; a word that is no version any Finbook writes (say 7, 11, …, 2^31 + 3) is
+// damaged. A flip onto an older version that exists is refused by its layout. That is said as
+// damage (with "open anyway", which reads the file as the version its checksums show), not as
+// "update".
 void TestFileMalformed::flippedVersionBitsAreDamage()
 {
     const QByteArray valid = validBytes();
@@ -181,6 +183,12 @@ void TestFileMalformed::flippedVersionBitsAreDamage()
             ++newer;
             continue;
         }
+        if (version >= 1 && version < kFinbookFormatVersion) {
+            // An older version that exists: the sections are then read by the older layout,
+            // which the newer content does not fit, so the file is refused, never opened wrong.
+            QVERIFY2(code != FileErrorCode::NewerVersion, qPrintable(message));
+            continue;
+        }
         QCOMPARE(code, FileErrorCode::Damaged);
         QVERIFY(isRecoverable(code));
         QVERIFY2(message.contains(QLatin1String("damaged")) &&
@@ -192,7 +200,7 @@ void TestFileMalformed::flippedVersionBitsAreDamage()
         QCOMPARE(recovered->frames.size(), readFinbook(valid)->frames.size());
         QCOMPARE(problems.size(), 1);
     }
-    QCOMPARE(newer, 1);
+    QVERIFY(newer <= 2); // only the next two versions are plausible (none for version 3)
     // From disk too: File > Open refuses it after its header; Open Anyway reads past it.
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("flipped.finbook"));

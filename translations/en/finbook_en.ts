@@ -13,6 +13,17 @@
     </message>
 </context>
 <context>
+    <name>Export</name>
+    <message numerus="yes">
+        <location filename="../../model/src/export/ffmpeg_encoder.cpp" line="222"/>
+        <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
+        <translation>
+            <numerusform>ffmpeg made no progress for %n second and was stopped; nothing was written. Check that ffmpeg works, then export again.</numerusform>
+            <numerusform>ffmpeg made no progress for %n seconds and was stopped; nothing was written. Check that ffmpeg works, then export again.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>FinbookFile</name>
     <message numerus="yes">
         <location filename="../../model/src/finbook_file_reader_frames.cpp" line="329"/>
@@ -72,7 +83,7 @@
 <context>
     <name>finbook::ui::BoneTool</name>
     <message numerus="yes">
-        <location filename="../../ui/src/skeleton/tool_bone_menu.cpp" line="278"/>
+        <location filename="../../ui/src/skeleton/tool_bone_menu.cpp" line="279"/>
         <source>Joined %n part(s).</source>
         <translation>
             <numerusform>Joined %n part.</numerusform>
@@ -83,7 +94,7 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/src/export/export_dialog_run.cpp" line="92"/>
+        <location filename="../../ui/src/export/export_dialog_run.cpp" line="86"/>
         <source>Exported %n file(s) to %1</source>
         <translation>
             <numerusform>Exported %n file to %1</numerusform>
@@ -91,7 +102,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/src/export/export_dialog_run.cpp" line="129"/>
+        <location filename="../../ui/src/export/export_dialog_run.cpp" line="123"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n file at the target already exists, &quot;%1&quot;. Replace it?</numerusform>
@@ -102,7 +113,7 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../ui/src/main_window_files.cpp" line="96"/>
+        <location filename="../../ui/src/window/main_window_files.cpp" line="96"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Opened what was readable of %1 (%n problem repaired); save it under a new name.</numerusform>
