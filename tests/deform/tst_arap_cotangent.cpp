@@ -4,6 +4,7 @@
 // does not depend on how the shape was triangulated, negative cotangent weights are handled,
 // a stored pose has no flips the unrepaired optimum does not have and keeps the ones pins
 // force (and says so), and rest pins still give the rest pose.
+#include "arap_test_support.h"
 #include "grid_mesh.h"
 
 #include <finbook/deform/arap.h>
@@ -14,30 +15,10 @@
 
 using namespace finbook::deform;
 using finbook::test::GridMesh;
+using finbook::test::precompute;
+using finbook::test::solved;
 
 namespace {
-
-std::shared_ptr<const ArapPrecompute> precompute(const Eigen::MatrixX2d &V,
-                                                 const Eigen::MatrixX3i &F,
-                                                 const Eigen::VectorXi &b, ArapOptions options = {})
-{
-    auto result = arapPrecompute(V, F, b, options);
-    if (!result)
-        qWarning("precompute failed: %s", result.error().message.c_str());
-    return result ? *result : nullptr;
-}
-
-Eigen::MatrixX2d solved(const ArapPrecompute &data, const Eigen::MatrixX2d &bc, ArapStage stage,
-                        ArapSolveReport *report = nullptr)
-{
-    Eigen::MatrixX2d U;
-    auto result = arapSolve(data, bc, U, stage);
-    if (!result)
-        qWarning("solve failed: %s", result.error().message.c_str());
-    if (result && report)
-        *report = *result;
-    return result ? U : Eigen::MatrixX2d();
-}
 
 double maxRowDistance(const Eigen::MatrixX2d &A, const Eigen::MatrixX2d &B)
 {

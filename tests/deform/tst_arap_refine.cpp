@@ -3,6 +3,7 @@
 // are the cotangent ARAP energy the refined method minimises), rigid pin motions
 // stay rigid in every mode, flipped triangles the optimum does not have are repaired, an
 // unpinned component follows the nearest pinned one, and degenerate pins never give NaN.
+#include "arap_test_support.h"
 #include "grid_mesh.h"
 
 #include <finbook/deform/arap.h>
@@ -14,6 +15,8 @@
 
 using namespace finbook::deform;
 using finbook::test::GridMesh;
+using finbook::test::precompute;
+using finbook::test::solved;
 
 namespace {
 
@@ -21,28 +24,6 @@ struct Mode {
     ArapMethod method;
     ArapStage stage;
 };
-
-std::shared_ptr<const ArapPrecompute> precompute(const Eigen::MatrixX2d &V,
-                                                 const Eigen::MatrixX3i &F,
-                                                 const Eigen::VectorXi &b, ArapOptions options = {})
-{
-    auto result = arapPrecompute(V, F, b, options);
-    if (!result)
-        qWarning("precompute failed: %s", result.error().message.c_str());
-    return result ? *result : nullptr;
-}
-
-Eigen::MatrixX2d solved(const ArapPrecompute &data, const Eigen::MatrixX2d &bc, ArapStage stage,
-                        ArapSolveReport *report = nullptr)
-{
-    Eigen::MatrixX2d U;
-    auto result = arapSolve(data, bc, U, stage);
-    if (!result)
-        qWarning("solve failed: %s", result.error().message.c_str());
-    if (result && report)
-        *report = *result;
-    return result ? U : Eigen::MatrixX2d();
-}
 
 bool sameBits(const Eigen::MatrixX2d &A, const Eigen::MatrixX2d &B)
 {
