@@ -1737,7 +1737,12 @@
         <translation>der Startpunkt einer Füllung ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="38"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="41"/>
+        <source>a fill names the stroke id %1, which no stroke can have</source>
+        <translation>eine Füllung nennt die Strich-ID %1, die kein Strich haben kann</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>die Strich-IDs einer Füllung sind nicht geordnet</translation>
     </message>
@@ -1917,43 +1922,43 @@
         <translation>Knochen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="54"/>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="194"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="165"/>
         <source>Build Skeleton</source>
         <translation>Skelett erstellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="56"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>Das Objekt ist mit einem anderen Verformer posiert. Beim Erstellen eines Skeletts wird diese Pose verworfen. Trotzdem erstellen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="212"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="183"/>
         <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
         <translation>Mit %1 verbunden. Ziehen Sie die Wurzel mit Umschalt an eine andere Stelle, um es dort zu verbinden; Rechtsklick darauf löst es.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="287"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="258"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um ihr ein Skelett zu geben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="294"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="265"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen; Rechtsklick auf ein Gelenk löscht es.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
         <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um es zu ziehen, die Wurzel, um das Objekt zu verschieben; L über einem Gelenk sperrt es; die Wurzel mit Umschalt auf ein anderes Teil ziehen verbindet beide.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="361"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>Legen Sie die Wurzel auf einem Knochen eines anderen Teils ab, um beide zu verbinden.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="398"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="369"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 hängt bereits an diesem Teil und kann daher nicht umgekehrt daran hängen.</translation>
     </message>

@@ -1737,7 +1737,12 @@
         <translation>le point de départ d&apos;un remplissage n&apos;est pas un nombre</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="38"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="41"/>
+        <source>a fill names the stroke id %1, which no stroke can have</source>
+        <translation>un remplissage désigne l’identifiant de trait %1, qu’aucun trait ne peut avoir</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>les identifiants de traits d&apos;un remplissage ne sont pas dans l&apos;ordre</translation>
     </message>
@@ -1917,43 +1922,43 @@
         <translation>Os</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="54"/>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="194"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="165"/>
         <source>Build Skeleton</source>
         <translation>Construire le squelette</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="56"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>L&apos;objet est posé avec un autre déformateur. Construire un squelette abandonne cette pose. Le construire quand même&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="212"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="183"/>
         <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
         <translation>Joint à %1. Faites glisser sa racine avec Maj pour le joindre ailleurs ; clic droit dessus pour le détacher.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="287"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="258"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Cliquez sur un dessin visible et déverrouillé pour lui donner un squelette.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="294"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="265"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>Faites glisser une articulation pour la déplacer, cliquez sur un os pour insérer une articulation ; clic droit sur une articulation pour la supprimer.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
         <translation>Faites glisser un os pour le tourner, une articulation pour la tirer, la racine pour déplacer l’objet ; L sur une articulation la verrouille ; faites glisser la racine avec Maj sur une autre partie pour les joindre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="361"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>Déposez la racine sur un os d’une autre partie pour les joindre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="398"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="369"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 est déjà suspendu à cette partie ; elle ne peut donc pas être suspendue à lui en retour.</translation>
     </message>

@@ -1731,7 +1731,12 @@
         <translation>塗りの基準点が数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="38"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="41"/>
+        <source>a fill names the stroke id %1, which no stroke can have</source>
+        <translation>塗りつぶしが、どのストロークにも付けられない ID %1 を参照しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>塗りのストロークIDが順に並んでいません</translation>
     </message>
@@ -1909,43 +1914,43 @@
         <translation>ボーン</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="54"/>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="194"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="165"/>
         <source>Build Skeleton</source>
         <translation>スケルトンを作成</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="56"/>
         <source>The object is posed with another deformer. Building a skeleton discards that pose. Build it anyway?</source>
         <translation>このオブジェクトには別の変形方法によるポーズが付いています。スケルトンを作成すると、そのポーズは破棄されます。作成しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="212"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="183"/>
         <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
         <translation>%1 に接続しました。ルートを Shift キーを押しながらドラッグすると別の場所に接続し、右クリックで切り離します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="287"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="258"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>表示されていてロックされていない絵をクリックすると、スケルトンを作成できます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="294"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="265"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>関節をドラッグで移動、ボーンをクリックで関節を挿入、関節を右クリックで削除します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="297"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
         <translation>ボーンをドラッグすると回転、関節をドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。関節の上で L キーを押すとロックします。ルートを Shift キーを押しながら別のパーツへドラッグすると接続します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="390"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="361"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>ルートを別のパーツのボーンにドロップすると接続します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="398"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="369"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 はすでにこのパーツにぶら下がっているため、逆にぶら下げることはできません。</translation>
     </message>

@@ -65,6 +65,9 @@ inline void roundTrip(LoadedDocument &doc, const char *what)
     d.reset(std::move(doc.frames), doc.settings, doc.nextId);
     const QByteArray again = serializeFinbook(d);
     auto reread = readFinbook(again);
+    if (!reread)
+        std::fprintf(stderr, "finbook-fuzz: the saved copy does not open: %s\n",
+                     qPrintable(reread.error().message));
     check(bool(reread), what);
     Document e;
     e.reset(std::move(reread->frames), reread->settings, reread->nextId);

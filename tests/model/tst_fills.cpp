@@ -158,6 +158,7 @@ private slots:
     void saveLoadRoundTrip();
     void olderFilesOpenWithoutFills();
     void damagedFillChunkIsRefused();
+    void fillIdNoStrokeCanHaveIsRefusedAndRecovered();
 };
 
 void TestFills::fillRecolourRemoveEachOneUndoStep()
@@ -448,6 +449,45 @@ void TestFills::damagedFillChunkIsRefused()
     QVERIFY(!loaded);
     QVERIFY2(loaded.error().message.contains(QStringLiteral("fill")),
              qPrintable(loaded.error().message));
+}
+
+void TestFills::fillIdNoStrokeCanHaveIsRefusedAndRecovered()
+{
+    // A fill naming an id above kMaxId (found by the fuzzer): the writer counts fill ids
+    // towards the next free id, so once loaded such a file saved as one no Finbook could open.
+    Document doc;
+    const Id g = squareDocument(doc);
+    push(doc, fillRegionCommand(&doc, g, QPointF(150, 150), kRed));
+    std::vector<Fill> fills = doc.group(g)->fills;
+    QVERIFY(!fills.at(0).strokes.empty());
+    const std::vector<Id> kept = fills[0].strokes;
+    fills[0].strokes.push_back(kMaxId + 7);
+    doc.setFills(g, fills);
+    const QByteArray bytes = serializeFinbook(doc.frames(), doc.settings());
+    QVERIFY(!readFinbook(bytes));
+
+    QStringList problems;
+    auto recovered = recoverFinbook(bytes, &problems);
+    QVERIFY2(recovered, recovered ? "" : qPrintable(recovered.error().message));
+    QVERIFY2(problems.join(u'\n').contains(QStringLiteral("fill")),
+             qPrintable(problems.join(u'\n')));
+    QCOMPARE(recovered->frames.at(0).groups.at(0).fills.at(0).strokes, kept);
+    QVERIFY(recovered->nextId <= kMaxId + 1);
+    Document again;
+    again.reset(std::move(recovered->frames), recovered->settings, recovered->nextId);
+    auto reread = readFinbook(serializeFinbook(again));
+    QVERIFY2(reread, reread ? "" : qPrintable(reread.error().message));
+
+    // A valid id above every stroke's still counts: the next free id is past it.
+    Document valid;
+    const Id h = squareDocument(valid);
+    push(valid, fillRegionCommand(&valid, h, QPointF(150, 150), kRed));
+    std::vector<Fill> far = valid.group(h)->fills;
+    far[0].strokes.push_back(Id(1) << 40);
+    valid.setFills(h, far);
+    auto loaded = readFinbook(serializeFinbook(valid.frames(), valid.settings()));
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    QVERIFY(loaded->nextId > (Id(1) << 40));
 }
 
 QTEST_MAIN(TestFills)

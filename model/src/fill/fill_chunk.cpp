@@ -2,7 +2,7 @@
 // against the bytes left before anything is allocated, seeds must be finite, and a fill's
 // stroke ids come sorted and unique (the writer's canonical form). The ids need not name
 // strokes that still exist: a fill remembers the strokes that bounded its region when it was
-// made, and some of them may have been erased since.
+// made, and some of them may have been erased since; but they are ids a stroke could have.
 #include "../finbook_file_reader.h"
 
 #include <algorithm>
@@ -32,6 +32,19 @@ void Reader::readFillsChunk(Cursor &c, StrokeGroup &g)
         f.strokes.resize(ids);
         for (Id &id : f.strokes)
             id = c.u64(what);
+        // Ids no stroke can have: refused (recovering, dropped). The others count towards
+        // the largest id, as the writer counts them, so new strokes never take them.
+        const auto invalid = [](Id id) { return id == kNoId || id > kMaxId; };
+        for (Id id : f.strokes) {
+            if (invalid(id))
+                problem(c, FileErrorCode::BadValue,
+                        FinbookFile::tr("a fill names the stroke id %1, which no stroke can have")
+                            .arg(id));
+            else
+                m_maxId = std::max(m_maxId, id);
+        }
+        f.strokes.erase(std::remove_if(f.strokes.begin(), f.strokes.end(), invalid),
+                        f.strokes.end());
         if (std::adjacent_find(f.strokes.begin(), f.strokes.end(), std::greater_equal<Id>()) !=
             f.strokes.end())
             c.fail(FileErrorCode::BadValue,
