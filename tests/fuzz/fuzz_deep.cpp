@@ -8,7 +8,7 @@
 //   input := u8 shape  u8 sizeExponent  u16 sizeMantissa  u16 parts  u8 flags  u32 seed
 //            (u32 offset  u8 xor)*          flags: 1 posed, 2 reversed, 4 star, 8 fix checksums
 //
-// Run: build/fuzz/bin/finbook-fuzz-deep -rss_limit_mb=4096 -timeout=60 -max_len=256 CORPUS
+// Run: build/fuzz/bin/finbook-fuzz-deep -rss_limit_mb=4096 -timeout=300 -max_len=256 CORPUS
 #include "../model/deep_structures.h"
 #include "fuzz_checks.h"
 
