@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "cli_terminal.h"
 #include "native_names.h"
+#include "native_target.h"
 
 #include <finbook/model/export/exporter.h>
 #include <finbook/model/finbook_file.h>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <optional>
+#include <sys/stat.h>
 
 namespace finbook::app {
 
@@ -136,7 +138,10 @@ std::optional<QString> parseFormat(const QCommandLineParser &p, Request &r)
     }
     const QString suffix = QFileInfo(r.output).suffix();
     const auto named = model::exportFormatForPath(r.output);
-    if (!r.format && QFileInfo(r.output).isDir()) { // an existing folder: PNG frames into it
+    struct stat status {}; // by its bytes: the text of a name that is not UTF-8 names another
+    const bool isFolder =
+        ::stat(argumentBytes(r.output).constData(), &status) == 0 && S_ISDIR(status.st_mode);
+    if (!r.format && isFolder) { // an existing folder: PNG frames into it
         // ... unless its name asks for one file: "anim.gif/" receiving PNGs surprises.
         if (named && !model::exportsSequence(*named))
             return CommandLine::tr("\"%1\" is a folder, not a %2 file; give a file name, or "
@@ -197,14 +202,39 @@ QString targetFor(const Request &r, const QString &input)
                                    model::exportFormatSuffix(r.options.format));
 }
 
+// targetFor as bytes: the names given on the command line as they were given, so that an
+// output or input named by bytes that are not UTF-8 gives its bytes to the output.
+QByteArray targetBytes(const Request &r, const QString &input)
+{
+    if (r.outDir.isEmpty())
+        return argumentBytes(r.output);
+    QByteArray name = argumentBytes(input);
+    name = name.mid(name.lastIndexOf('/') + 1);
+    if (name.contains('.'))
+        name.truncate(name.lastIndexOf('.'));
+    if (!model::exportsSequence(r.options.format))
+        name += '.' + model::exportFormatSuffix(r.options.format).toLatin1();
+    QByteArray folder = argumentBytes(r.outDir);
+    return folder.endsWith('/') ? folder + name : folder + '/' + name;
+}
+
 // The files written, one a line: a long sequence's names are made again one at a time.
 void printWrittenFiles(const model::ExportResult &result, const model::ExportOptions &options,
-                       const model::ExportSource &source, QTextStream &out)
+                       const model::ExportSource &source, const NativeTarget &native,
+                       QTextStream &out)
 {
-    // Written as they are for a program reading them; on a terminal harmless, as ls does.
+    // Written as they are for a program reading them (the bytes of a name that is not UTF-8
+    // too); on a terminal harmless, as ls does.
     const bool terminal = stdoutIsTerminal();
     const auto print = [&](const QString &path) {
-        out << (terminal ? model::printableText(path) : path) << '\n';
+        const QByteArray bytes = native.bytes(path);
+        if (terminal || isValidFileName(bytes) || !out.device()) {
+            const QString text = QFile::decodeName(bytes);
+            out << (terminal ? model::printableText(text) : text) << '\n';
+            return;
+        }
+        out.flush();
+        out.device()->write(bytes + '\n');
     };
     if (result.fileCount <= result.files.size())
         std::for_each(result.files.begin(), result.files.end(), print);
@@ -248,16 +278,18 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
         return fail(err, QString(loaded.error().message).replace(openable, input));
     model::ExportOptions options = request.options;
     options.target = targetFor(request, input);
-    // Qt would write the name with U+FFFD in place of the bytes that are not UTF-8: another
-    // name than the one given. Say so instead.
-    if (isLossyArgument(request.output) || isLossyArgument(request.outDir))
-        return fail(err, CommandLine::tr("\"%1\" is not a valid UTF-8 file name, which Finbook "
-                                         "writes; choose a name in UTF-8.")
-                             .arg(request.outDir.isEmpty() ? request.output : request.outDir));
+    NativeTarget native; // a name that is not UTF-8 is written by its bytes
+    QString reason;
+    if (!native.prepare(targetBytes(request, input), model::exportsSequence(options.format),
+                        options, &reason))
+        return fail(err,
+                    CommandLine::tr("Could not write \"%1\": %2. Nothing was exported.")
+                        .arg(options.target, reason),
+                    ExitCode::Failure);
     options.title = QFileInfo(input).completeBaseName();
     const model::ExportSource source{std::move(loaded->frames), loaded->settings};
     const auto result = model::exportAnimation(
-        source, options, exportProgress(QFileInfo(options.target).fileName()));
+        source, options, exportProgress(QFileInfo(native.shown(options.target)).fileName()));
     clearProgressLine();
     if (!result) {
         const model::ExportErrorCode code = result.error().code;
@@ -267,14 +299,15 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
         const bool badInput = code == model::ExportErrorCode::BadOptions ||
                               code == model::ExportErrorCode::TargetExists ||
                               code == model::ExportErrorCode::TooLarge;
-        QString message = result.error().message;
+        QString message = native.shown(result.error().message);
         if (code == model::ExportErrorCode::TargetExists)
             message += QLatin1Char(' ') + CommandLine::tr("Use --overwrite to replace it.");
         if (code == model::ExportErrorCode::TooLarge)
             message += QLatin1Char(' ') + CommandLine::tr("Use --max-frames N to allow N frames.");
         return fail(err, message, badInput ? ExitCode::BadInput : ExitCode::Failure);
     }
-    printWrittenFiles(*result, options, source, out);
+    native.keep();
+    printWrittenFiles(*result, options, source, native, out);
     return int(ExitCode::Ok);
 }
 } // namespace

@@ -27,9 +27,9 @@ void rememberRawArguments(int argc, char **argv)
     }
 }
 
-bool isLossyArgument(const QString &argument)
+QByteArray argumentBytes(const QString &argument)
 {
-    return rawArguments().contains(argument);
+    return rawArguments().value(argument, QFile::encodeName(argument));
 }
 
 QString openablePath(const QString &argument)

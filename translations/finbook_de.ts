@@ -314,137 +314,137 @@
         <translation>Unbekannter Befehl „%1“; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="36"/>
+        <location filename="../app/cli_export.cpp" line="38"/>
         <source>export: png, svg, gif, mp4, webm, apng or html.</source>
         <translation>export: png, svg, gif, mp4, webm, apng oder html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
+        <location filename="../app/cli_export.cpp" line="40"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: Einzelbilder A bis B (Standard: der Wiedergabebereich).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="39"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: die Leinwandgröße mit S multiplizieren.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="41"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: N Bilder pro Sekunde (Standard: die des Dokuments).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="45"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: diese Hintergrundfarbe (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="44"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export: no background.</source>
         <translation>export: kein Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="46"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: eine Datei pro Zeichnung plus ein Timing-Sheet.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="49"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="51"/>
+        <location filename="../app/cli_export.cpp" line="53"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="82"/>
+        <location filename="../app/cli_export.cpp" line="84"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="97"/>
+        <location filename="../app/cli_export.cpp" line="99"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="103"/>
+        <location filename="../app/cli_export.cpp" line="105"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="111"/>
+        <location filename="../app/cli_export.cpp" line="113"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="117"/>
+        <location filename="../app/cli_export.cpp" line="119"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="129"/>
+        <location filename="../app/cli_export.cpp" line="131"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
         <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng oder html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="142"/>
+        <location filename="../app/cli_export.cpp" line="147"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="149"/>
+        <location filename="../app/cli_export.cpp" line="154"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
         <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng oder .html enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="153"/>
+        <location filename="../app/cli_export.cpp" line="158"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="169"/>
+        <location filename="../app/cli_export.cpp" line="174"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="173"/>
+        <location filename="../app/cli_export.cpp" line="178"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="183"/>
+        <location filename="../app/cli_export.cpp" line="188"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="185"/>
+        <location filename="../app/cli_export.cpp" line="190"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="254"/>
-        <source>&quot;%1&quot; is not a valid UTF-8 file name, which Finbook writes; choose a name in UTF-8.</source>
-        <translation>„%1“ ist kein gültiger UTF-8-Dateiname, wie Finbook ihn schreibt; wählen Sie einen Namen in UTF-8.</translation>
+        <location filename="../app/cli_export.cpp" line="286"/>
+        <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
+        <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="265"/>
+        <location filename="../app/cli_export.cpp" line="297"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Unterbrochen; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="272"/>
+        <location filename="../app/cli_export.cpp" line="304"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="274"/>
+        <location filename="../app/cli_export.cpp" line="306"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
@@ -611,20 +611,21 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="35"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="36"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="197"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>es ist nicht genug Speicher vorhanden, um es zu rendern</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="57"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="58"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
         <source>its folder cannot be created</source>
         <translation>ihr Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="90"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="106"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="118"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg wurde beendet, ohne die Ausgabe als %1 zu schreiben; es wurde nichts exportiert.</translation>
     </message>
@@ -725,52 +726,52 @@
         <translation>der Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="21"/>
+        <location filename="../model/src/export/exporter.cpp" line="22"/>
         <source>&quot;%1&quot; already exists; nothing was exported.</source>
         <translation>„%1“ ist bereits vorhanden; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="28"/>
+        <location filename="../model/src/export/exporter.cpp" line="29"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und exportieren Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="36"/>
+        <location filename="../model/src/export/exporter.cpp" line="37"/>
         <source>The export was cancelled; nothing was written.</source>
         <translation>Der Export wurde abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="42"/>
+        <location filename="../model/src/export/exporter.cpp" line="43"/>
         <source>Another export is writing to &quot;%1&quot;; wait until it has finished, or choose another target.</source>
         <translation>Ein anderer Export schreibt gerade nach „%1“; warten Sie, bis er fertig ist, oder wählen Sie ein anderes Ziel.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="61"/>
+        <location filename="../model/src/export/exporter.cpp" line="73"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>„%1“ ist ein Ordner; geben Sie einen Dateinamen an, der auf .%2 endet.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="174"/>
+        <location filename="../model/src/export/exporter.cpp" line="189"/>
         <source>Choose where to export the animation to.</source>
         <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="37"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="63"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="74"/>
         <source>MP4 video</source>
         <translation>MP4-Video</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="81"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="92"/>
         <source>WebM video</source>
         <translation>WebM-Video</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="95"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="106"/>
         <source>animated PNG</source>
         <translation>animiertes PNG</translation>
     </message>
@@ -803,12 +804,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="245"/>
+        <location filename="../model/src/export/pending_output.cpp" line="262"/>
         <source>a folder cannot be created in it</source>
         <translation>darin kann kein Ordner angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="251"/>
+        <location filename="../model/src/export/pending_output.cpp" line="268"/>
         <source>&quot;%1&quot; is a folder where a file should go</source>
         <translation>„%1“ ist ein Ordner, wo eine Datei hingehört</translation>
     </message>

@@ -314,137 +314,137 @@
         <translation>Commande inconnue « %1 » ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="36"/>
+        <location filename="../app/cli_export.cpp" line="38"/>
         <source>export: png, svg, gif, mp4, webm, apng or html.</source>
         <translation>export : png, svg, gif, mp4, webm, apng ou html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
+        <location filename="../app/cli_export.cpp" line="40"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export : images A à B (par défaut : la plage de lecture).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="39"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export : multiplier la taille du canevas par S.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="41"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export : N images par seconde (par défaut : celle du document).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="45"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export : cette couleur d&apos;arrière-plan (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="44"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export: no background.</source>
         <translation>export : pas d&apos;arrière-plan.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="46"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg : un fichier par dessin, plus une feuille d&apos;exposition.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="49"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="51"/>
+        <location filename="../app/cli_export.cpp" line="53"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="82"/>
+        <location filename="../app/cli_export.cpp" line="84"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="97"/>
+        <location filename="../app/cli_export.cpp" line="99"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="103"/>
+        <location filename="../app/cli_export.cpp" line="105"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="111"/>
+        <location filename="../app/cli_export.cpp" line="113"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="117"/>
+        <location filename="../app/cli_export.cpp" line="119"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="129"/>
+        <location filename="../app/cli_export.cpp" line="131"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
         <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng ou html.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="142"/>
+        <location filename="../app/cli_export.cpp" line="147"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="149"/>
+        <location filename="../app/cli_export.cpp" line="154"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
         <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng ou .html, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="153"/>
+        <location filename="../app/cli_export.cpp" line="158"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="169"/>
+        <location filename="../app/cli_export.cpp" line="174"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="173"/>
+        <location filename="../app/cli_export.cpp" line="178"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="183"/>
+        <location filename="../app/cli_export.cpp" line="188"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="185"/>
+        <location filename="../app/cli_export.cpp" line="190"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="254"/>
-        <source>&quot;%1&quot; is not a valid UTF-8 file name, which Finbook writes; choose a name in UTF-8.</source>
-        <translation>« %1 » n’est pas un nom de fichier UTF-8 valide, comme Finbook les écrit ; choisissez un nom en UTF-8.</translation>
+        <location filename="../app/cli_export.cpp" line="286"/>
+        <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
+        <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="265"/>
+        <location filename="../app/cli_export.cpp" line="297"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="272"/>
+        <location filename="../app/cli_export.cpp" line="304"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="274"/>
+        <location filename="../app/cli_export.cpp" line="306"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -611,20 +611,21 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="35"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="36"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="197"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>la mémoire est insuffisante pour en faire le rendu</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="57"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="58"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
         <source>its folder cannot be created</source>
         <translation>son dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="90"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="106"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="118"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg s&apos;est terminé sans écrire le fichier %1&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
@@ -725,52 +726,52 @@
         <translation>le dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="21"/>
+        <location filename="../model/src/export/exporter.cpp" line="22"/>
         <source>&quot;%1&quot; already exists; nothing was exported.</source>
         <translation>«&#xa0;%1&#xa0;» existe déjà&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="28"/>
+        <location filename="../model/src/export/exporter.cpp" line="29"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis exportez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="36"/>
+        <location filename="../model/src/export/exporter.cpp" line="37"/>
         <source>The export was cancelled; nothing was written.</source>
         <translation>L&apos;export a été annulé&#xa0;; rien n&apos;a été écrit.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="42"/>
+        <location filename="../model/src/export/exporter.cpp" line="43"/>
         <source>Another export is writing to &quot;%1&quot;; wait until it has finished, or choose another target.</source>
         <translation>Un autre export écrit dans « %1 » ; attendez qu’il soit terminé, ou choisissez une autre destination.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="61"/>
+        <location filename="../model/src/export/exporter.cpp" line="73"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>«&#xa0;%1&#xa0;» est un dossier&#xa0;; indiquez un nom de fichier se terminant par .%2.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="174"/>
+        <location filename="../model/src/export/exporter.cpp" line="189"/>
         <source>Choose where to export the animation to.</source>
         <translation>Choisissez où exporter l&apos;animation.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="37"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="63"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="74"/>
         <source>MP4 video</source>
         <translation>vidéo MP4</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="81"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="92"/>
         <source>WebM video</source>
         <translation>vidéo WebM</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="95"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="106"/>
         <source>animated PNG</source>
         <translation>PNG animé</translation>
     </message>
@@ -803,12 +804,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="245"/>
+        <location filename="../model/src/export/pending_output.cpp" line="262"/>
         <source>a folder cannot be created in it</source>
         <translation>aucun dossier ne peut y être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="251"/>
+        <location filename="../model/src/export/pending_output.cpp" line="268"/>
         <source>&quot;%1&quot; is a folder where a file should go</source>
         <translation>« %1 » est un dossier là où un fichier doit aller</translation>
     </message>

@@ -314,137 +314,137 @@
         <translation>不明なコマンド「%1」です。%2。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="36"/>
+        <location filename="../app/cli_export.cpp" line="38"/>
         <source>export: png, svg, gif, mp4, webm, apng or html.</source>
         <translation>export: png、svg、gif、mp4、webm、apng、html のいずれか。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
+        <location filename="../app/cli_export.cpp" line="40"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: フレーム A～B（既定: 再生範囲）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="39"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: キャンバスサイズを S 倍にする。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="41"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: 毎秒 N フレーム（既定: ドキュメントの設定）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="45"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: この背景色（#rrggbb）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="44"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export: no background.</source>
         <translation>export: 背景なし。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="46"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: 絵ごとに 1 ファイルとタイムシートを書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="49"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="51"/>
+        <location filename="../app/cli_export.cpp" line="53"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="82"/>
+        <location filename="../app/cli_export.cpp" line="84"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="97"/>
+        <location filename="../app/cli_export.cpp" line="99"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="103"/>
+        <location filename="../app/cli_export.cpp" line="105"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="111"/>
+        <location filename="../app/cli_export.cpp" line="113"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="117"/>
+        <location filename="../app/cli_export.cpp" line="119"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="129"/>
+        <location filename="../app/cli_export.cpp" line="131"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
         <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="142"/>
+        <location filename="../app/cli_export.cpp" line="147"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="149"/>
+        <location filename="../app/cli_export.cpp" line="154"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
         <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="153"/>
+        <location filename="../app/cli_export.cpp" line="158"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="169"/>
+        <location filename="../app/cli_export.cpp" line="174"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="173"/>
+        <location filename="../app/cli_export.cpp" line="178"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="183"/>
+        <location filename="../app/cli_export.cpp" line="188"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="185"/>
+        <location filename="../app/cli_export.cpp" line="190"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="254"/>
-        <source>&quot;%1&quot; is not a valid UTF-8 file name, which Finbook writes; choose a name in UTF-8.</source>
-        <translation>「%1」は Finbook が書き込める有効な UTF-8 のファイル名ではありません。UTF-8 の名前を選んでください。</translation>
+        <location filename="../app/cli_export.cpp" line="286"/>
+        <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
+        <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="265"/>
+        <location filename="../app/cli_export.cpp" line="297"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="272"/>
+        <location filename="../app/cli_export.cpp" line="304"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="274"/>
+        <location filename="../app/cli_export.cpp" line="306"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -610,20 +610,21 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="35"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="36"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="197"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>描画に必要なメモリが足りません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="57"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="58"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
         <source>its folder cannot be created</source>
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="90"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="106"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="118"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
     </message>
@@ -724,52 +725,52 @@
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="21"/>
+        <location filename="../model/src/export/exporter.cpp" line="22"/>
         <source>&quot;%1&quot; already exists; nothing was exported.</source>
         <translation>「%1」はすでに存在するため、何も書き出しませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="28"/>
+        <location filename="../model/src/export/exporter.cpp" line="29"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度書き出してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="36"/>
+        <location filename="../model/src/export/exporter.cpp" line="37"/>
         <source>The export was cancelled; nothing was written.</source>
         <translation>書き出しはキャンセルされました。何も書き込まれていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="42"/>
+        <location filename="../model/src/export/exporter.cpp" line="43"/>
         <source>Another export is writing to &quot;%1&quot;; wait until it has finished, or choose another target.</source>
         <translation>別の書き出しが「%1」に書き込み中です。終わるまで待つか、別の書き出し先を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="61"/>
+        <location filename="../model/src/export/exporter.cpp" line="73"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>「%1」はフォルダーです。末尾が .%2 のファイル名を指定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="174"/>
+        <location filename="../model/src/export/exporter.cpp" line="189"/>
         <source>Choose where to export the animation to.</source>
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="37"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="63"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="74"/>
         <source>MP4 video</source>
         <translation>MP4 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="81"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="92"/>
         <source>WebM video</source>
         <translation>WebM 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="95"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="106"/>
         <source>animated PNG</source>
         <translation>アニメーション PNG</translation>
     </message>
@@ -801,12 +802,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="245"/>
+        <location filename="../model/src/export/pending_output.cpp" line="262"/>
         <source>a folder cannot be created in it</source>
         <translation>その中にフォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="251"/>
+        <location filename="../model/src/export/pending_output.cpp" line="268"/>
         <source>&quot;%1&quot; is a folder where a file should go</source>
         <translation>ファイルを置くべき場所に「%1」というフォルダーがあります</translation>
     </message>

@@ -10,11 +10,15 @@
 #include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLockFile>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <cstdio>
+#include <dirent.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace finbook;
 using namespace finbook::test;
@@ -484,14 +488,37 @@ void TestCliExport::tooLargeNeedsMaxFrames()
     QCOMPARE(run.out.count('\n'), 18);
 }
 
+// The entries of a folder named by bytes, as the system has them (QDir would decode them).
+QList<QByteArray> rawEntries(const QByteArray &folder)
+{
+    QList<QByteArray> names;
+    if (DIR *dir = ::opendir(folder.constData())) {
+        while (const dirent *entry = ::readdir(dir))
+            if (qstrcmp(entry->d_name, ".") != 0 && qstrcmp(entry->d_name, "..") != 0)
+                names << QByteArray(entry->d_name);
+        ::closedir(dir);
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+bool isRegularFile(const QByteArray &path)
+{
+    struct stat status {};
+    return ::stat(path.constData(), &status) == 0 && S_ISREG(status.st_mode) && status.st_size > 0;
+}
+
 // A Latin-1 file name ("caf\xe9.finbook") could not be opened: Qt read it as "caf\uFFFD".
-// Now it opens (info and export); an output with such a name is refused, where it used to be
-// written under the name with U+FFFD.
+// Now it opens (info and export). An output so named was refused, and before that written
+// under the name with U+FFFD; now every kind of output is written under exactly the bytes
+// given, for a file, a sequence's folder, a folder on the way and --out-dir alike, with the
+// usual refusals, lock and cleaning of leftovers.
 void TestCliExport::namesThatAreNotUtf8()
 {
     const QString folder = m_dir.filePath(QStringLiteral("latin1"));
     QVERIFY(QDir().mkpath(folder));
-    const QByteArray raw = QFile::encodeName(folder) + "/caf\xe9.finbook";
+    const QByteArray here = QFile::encodeName(folder) + '/';
+    const QByteArray raw = here + "caf\xe9.finbook";
     QFile source(m_held);
     QVERIFY(source.open(QIODevice::ReadOnly));
     const QByteArray bytes = source.readAll();
@@ -501,7 +528,7 @@ void TestCliExport::namesThatAreNotUtf8()
              std::size_t(bytes.size()));
     std::fclose(copy);
     const auto shell = [&](const QString &arguments) {
-        // printf makes the byte 0xE9; QProcess could only pass UTF-8 arguments.
+        // printf makes the bytes 0xE9 (\351) and 0xFF (\377); QProcess passes only UTF-8.
         return runProgram(
             QStringLiteral("/bin/sh"),
             {QStringLiteral("-c"), QStringLiteral("cd %1 && exec %2 %3")
@@ -513,11 +540,100 @@ void TestCliExport::namesThatAreNotUtf8()
     run = shell(QStringLiteral("export \"$(printf 'caf\\351.finbook')\" out.html"));
     QVERIFY2(run.code == 0, run.err.constData());
     QVERIFY(QFileInfo(QDir(folder).filePath(QStringLiteral("out.html"))).size() > 1000);
-    run = shell(
-        QStringLiteral("export \"$(printf 'caf\\351.finbook')\" \"$(printf 'x\\351.html')\""));
+
+    // Every kind of output, under the bytes given; stdout names it by them too.
+    struct Kind {
+        const char *name; // as printf writes it
+        QByteArray bytes;
+        bool folder;
+        bool ffmpeg;
+    };
+    const Kind kinds[] = {{"x\\377.html", "x\xff.html", false, false},
+                          {"x\\377.gif", "x\xff.gif", false, true},
+                          {"x\\377.mp4", "x\xff.mp4", false, true},
+                          {"x\\377.webm", "x\xff.webm", false, true},
+                          {"x\\377.apng", "x\xff.apng", false, true},
+                          {"png\\377 --format png", "png\xff", true, false},
+                          {"svg\\377 --format svg", "svg\xff", true, false}};
+    for (const Kind &kind : kinds) {
+        if (kind.ffmpeg && !haveFfmpeg())
+            continue;
+        const QString name = QString::fromLatin1(kind.name);
+        const QString printed = name.section(QLatin1Char(' '), 0, 0);
+        const QString options = name.section(QLatin1Char(' '), 1);
+        run = shell(QStringLiteral("export \"$(printf 'caf\\351.finbook')\" \"$(printf '%1')\" "
+                                   "--scale=0.25 %2")
+                        .arg(printed, options));
+        QVERIFY2(run.code == 0, (QByteArray(kind.name) + ": " + run.err).constData());
+        if (kind.folder) {
+            QCOMPARE(run.out.count('\n'), 18);
+            QVERIFY2(run.out.startsWith(kind.bytes + "/frame_0001."), run.out.constData());
+            const QList<QByteArray> frames = rawEntries(here + kind.bytes);
+            QCOMPARE(frames.size(), 18); // no lock, no staging folder left
+            QVERIFY(isRegularFile(here + kind.bytes + '/' + frames.first()));
+        } else {
+            QCOMPARE(run.out, kind.bytes + '\n');
+            QVERIFY2(isRegularFile(here + kind.bytes), kind.name);
+        }
+    }
+    if (haveFfmpeg()) {
+        // ffprobe is given a UTF-8 name for it: a link.
+        QString error;
+        const QString link = QDir(folder).filePath(QStringLiteral("link.gif"));
+        QVERIFY(::symlink("x\xff.gif", QFile::encodeName(link).constData()) == 0);
+        const QJsonObject stream = probe(link, &error);
+        QVERIFY2(!stream.isEmpty(), qPrintable(error));
+        QCOMPARE(stream[QStringLiteral("nb_read_frames")].toString().toInt(), 12);
+        QCOMPARE(stream[QStringLiteral("width")].toInt(), 320);
+        QFile::remove(link);
+    }
+    // Nothing was written under the name with U+FFFD, and no temporary stayed.
+    for (const QByteArray &entry : rawEntries(QFile::encodeName(folder))) {
+        QVERIFY2(!entry.contains("\xef\xbf\xbd"), entry.constData());
+        QVERIFY2(!entry.startsWith('.'), entry.constData());
+    }
+
+    // An existing file is kept without --overwrite and replaced with it; the leftover of a
+    // killed export to it (its temporary has the valid name, with U+FFFD) is cleaned.
+    const QString html = QStringLiteral("export \"$(printf 'caf\\351.finbook')\" "
+                                        "\"$(printf 'x\\377.html')\" --scale=0.25");
+    run = shell(html);
     QCOMPARE(run.code, 2);
-    QVERIFY2(isOneLine(run.err) && run.err.contains("UTF-8"), run.err.constData());
-    QVERIFY(!QFileInfo::exists(QDir(folder).filePath(QStringLiteral("x\uFFFD.html"))));
+    QVERIFY2(isOneLine(run.err) && run.err.contains("--overwrite"), run.err.constData());
+    const QString leftover = QDir(folder).filePath(QStringLiteral(".x\uFFFD.html.Ab12Cd.part"));
+    QVERIFY(QFile(leftover).open(QIODevice::WriteOnly));
+    run = shell(html + QStringLiteral(" --overwrite"));
+    QVERIFY2(run.code == 0, run.err.constData());
+    QVERIFY(!QFileInfo::exists(leftover));
+    // The lock is taken on that name too: an export holding it makes the next one wait.
+    {
+        QLockFile lock(QDir(folder).filePath(QStringLiteral(".x\uFFFD.html.export-lock")));
+        lock.setStaleLockTime(0);
+        QVERIFY(lock.tryLock(0));
+        run = shell(html + QStringLiteral(" --overwrite"));
+        QCOMPARE(run.code, 1);
+        QVERIFY2(isOneLine(run.err) && run.err.contains("Another export"), run.err.constData());
+    }
+
+    // Folders on the way named by such bytes are made, and removed again after a failure.
+    run = shell(QStringLiteral("export \"$(printf 'caf\\351.finbook')\" "
+                               "\"$(printf 'd\\351/e\\351/y\\377.html')\" --scale=0.25"));
+    QVERIFY2(run.code == 0, run.err.constData());
+    QCOMPARE(run.out, QByteArray("d\xe9/e\xe9/y\xff.html\n"));
+    QVERIFY(isRegularFile(here + "d\xe9/e\xe9/y\xff.html"));
+    run = shell(QStringLiteral("export \"$(printf 'caf\\351.finbook')\" "
+                               "\"$(printf 'n\\351/m\\351')\" --scale=0.25 --range=1-2 "
+                               "--max-frames=1"));
+    QCOMPARE(run.code, 2);
+    QVERIFY(!rawEntries(QFile::encodeName(folder)).contains("n\xe9"));
+    // --out-dir: the output is named after the input by its bytes.
+    run = shell(QStringLiteral("export \"$(printf 'caf\\351.finbook')\" "
+                               "--out-dir \"$(printf 'o\\351')\" --format html --scale=0.25"));
+    QVERIFY2(run.code == 0, run.err.constData());
+    QCOMPARE(run.out, QByteArray("o\xe9/caf\xe9.html\n"));
+    QVERIFY(isRegularFile(here + "o\xe9/caf\xe9.html"));
+    // QTemporaryDir cannot name these entries to remove them.
+    runProgram(QStringLiteral("/bin/rm"), {QStringLiteral("-rf"), folder});
 }
 
 QTEST_GUILESS_MAIN(TestCliExport)

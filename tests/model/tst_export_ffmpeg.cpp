@@ -2,6 +2,7 @@
 // frame counts with holds, durations, sizes, pixel formats, loop flags, transparency, and the
 // failures (no ffmpeg, a failing encoder, a full disk, a cancel) that must leave nothing.
 // Skips when ffmpeg or ffprobe is missing (.ci/setup installs them).
+#include "../../model/src/export/ffmpeg_arguments.h"
 #include "export_support.h"
 
 #include <finbook/model/export/export_plan.h>
@@ -128,6 +129,8 @@ private slots:
     void fullDiskLeavesNothing();
     void cancelLeavesNothing();
     void stuckEncoderIsStopped();
+    void gifRunsKeepNoFrames();
+    void longGifInBoundedMemory();
 
 private:
     QString exportTo(ExportFormat format, const QString &name,
@@ -477,6 +480,97 @@ void TestExportFfmpeg::stuckEncoderIsStopped()
         QCOMPARE(filesIn(folder), QStringList());
     }
     qunsetenv("FINBOOK_ENCODER_TIMEOUT");
+}
+
+// A GIF used to be one ffmpeg run whose graph split the frames into palettegen and paletteuse:
+// every frame stayed buffered until palettegen had seen the last (2.4 GB for 2,000 frames at
+// 640×480). Now a first run only writes the palette and a second reads it: neither graph
+// splits the stream, and each names the palette on its side.
+void TestExportFfmpeg::gifRunsKeepNoFrames()
+{
+    for (const bool holds : {true, false}) {
+        model::ExportSource source = m_source;
+        if (!holds)
+            for (model::Frame &frame : source.frames)
+                frame.hold = 1;
+        const auto plan = model::planExport(source, optionsFor(ExportFormat::Gif, QString()));
+        QVERIFY(plan);
+        const QString palette = QStringLiteral("/tmp/.anim.gif.abcdef.part");
+        const model::FfmpegJob job =
+            model::ffmpegJob(ExportFormat::Gif, *plan, QStringLiteral("file:/tmp/out"), palette);
+        const QString first = job.paletteArguments.join(QLatin1Char(' '));
+        const QString second = job.arguments.join(QLatin1Char(' '));
+        for (const QString &run : {first, second}) {
+            QVERIFY2(!run.contains(QLatin1String("split")), qPrintable(run));
+            QVERIFY2(run.contains(QLatin1String("-i pipe:0")), qPrintable(run));
+        }
+        QVERIFY2(first.contains(QLatin1String("palettegen")) &&
+                     !first.contains(QLatin1String("paletteuse")),
+                 qPrintable(first));
+        QVERIFY2(second.contains(QLatin1String("paletteuse")) &&
+                     !second.contains(QLatin1String("palettegen")),
+                 qPrintable(second));
+        QCOMPARE(job.paletteArguments.last(), QStringLiteral("file:") + palette);
+        QVERIFY2(second.contains(QStringLiteral("-i file:") + palette), qPrintable(second));
+        QCOMPARE(job.arguments.last(), QStringLiteral("file:/tmp/out"));
+        // Holds become timestamps in the second run only; the palette does not need them.
+        QCOMPARE(second.contains(QLatin1String("gt(N")), holds);
+        QVERIFY(!first.contains(QLatin1String("setpts")));
+    }
+    // The other formats are one run.
+    const auto plan = model::planExport(m_source, optionsFor(ExportFormat::Mp4, QString()));
+    QVERIFY(plan);
+    QVERIFY(
+        model::ffmpegJob(ExportFormat::Mp4, *plan, QStringLiteral("x")).paletteArguments.isEmpty());
+}
+
+// 1,000 drawings at 640×480 with ffmpeg limited to 600 MB of address space: the frames alone
+// are 1.2 GB, so the single run that buffered them failed; the two runs succeed and the GIF
+// holds every frame at its size.
+void TestExportFfmpeg::longGifInBoundedMemory()
+{
+    if (program("ffmpeg").isEmpty() || program("ffprobe").isEmpty())
+        QSKIP("ffmpeg/ffprobe not installed");
+    const QString limited = writeScript(m_dir, QStringLiteral("ffmpeg-600mb"),
+                                        "ulimit -v 600000 || exit 9\nexec ffmpeg \"$@\"\n");
+    model::ExportSource source{{}, m_source.settings};
+    source.settings.canvasSize = QSize(640, 480);
+    for (int i = 0; i < 1000; ++i) {
+        source.frames.push_back(m_source.frames[std::size_t(i) % m_source.frames.size()]);
+        source.frames.back().hold = 1;
+    }
+    model::ExportOptions o =
+        optionsFor(ExportFormat::Gif, m_dir.filePath(QStringLiteral("long.gif")));
+    o.scale = 1;
+    o.firstFrame = 0;
+    o.lastFrame = 999;
+    qint64 lastDone = 0, lastTotal = 0;
+    Expected<model::ExportResult, model::ExportError> result =
+        unexpected(model::ExportError{model::ExportErrorCode::BadOptions, {}, {}});
+    {
+        FfmpegOverride override(limited);
+        result = model::exportAnimation(source, o, [&](qint64 done, qint64 total) {
+            lastDone = done;
+            lastTotal = total;
+            return true;
+        });
+    }
+    QVERIFY2(result, result ? ""
+                            : qPrintable(result.error().message + QLatin1Char('\n') +
+                                         result.error().detail));
+    // Progress runs over both passes, to its end.
+    QCOMPARE(lastTotal, qint64(2000));
+    QCOMPARE(lastDone, qint64(2000));
+    QString error;
+    const QJsonObject stream = probe(o.target, &error);
+    QVERIFY2(!stream.isEmpty(), qPrintable(error));
+    QCOMPARE(stream[QStringLiteral("codec_name")].toString(), QStringLiteral("gif"));
+    QCOMPARE(stream[QStringLiteral("width")].toInt(), 640);
+    QCOMPARE(stream[QStringLiteral("height")].toInt(), 480);
+    QCOMPARE(stream[QStringLiteral("nb_read_frames")].toString().toInt(), 1000);
+    // Neither the palette nor the output's temporary stays beside it.
+    for (const QString &file : filesIn(m_dir.path()))
+        QVERIFY2(!file.endsWith(QLatin1String(".part")), qPrintable(file));
 }
 
 QTEST_GUILESS_MAIN(TestExportFfmpeg)

@@ -9,6 +9,10 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <dirent.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 using namespace finbook;
 using namespace finbook::test;
 using model::ExportFormat;
@@ -73,6 +77,7 @@ private slots:
     void leftoversOfKilledExportsAreRemoved();
     void othersFilesAreNotLeftovers();
     void rootFolderIsRefused();
+    void nativeNameIsTheFinalName();
 
 private:
     model::ExportSource m_source; // 12 drawings, 18 ticks
@@ -258,6 +263,51 @@ void TestExportTarget::rootFolderIsRefused()
         m_twelve, optionsFor(ExportFormat::PngSequence, QStringLiteral("/")));
     QVERIFY(!result);
     QCOMPARE(result.error().code, model::ExportErrorCode::BadOptions);
+}
+
+// A file whose name is not valid UTF-8 ("x\xff.html", given on the command line): target
+// names it with U+FFFD, nativeName holds its bytes. The file is written, looked for and
+// replaced under the bytes; the name with U+FFFD is never written.
+void TestExportTarget::nativeNameIsTheFinalName()
+{
+    const QString folder = m_dir.filePath(QStringLiteral("native"));
+    QVERIFY(QDir().mkpath(folder));
+    const QByteArray bytes = QFile::encodeName(folder) + "/x\xff.html";
+    const auto exists = [](const QByteArray &path) {
+        struct stat status {};
+        return ::stat(path.constData(), &status) == 0 && status.st_size > 0;
+    };
+    model::ExportOptions o =
+        optionsFor(ExportFormat::Html, QDir(folder).filePath(QStringLiteral("x\uFFFD.html")));
+    o.nativeName = "x\xff.html";
+    o.scale = 0.25;
+    auto result = model::exportAnimation(m_source, o);
+    QVERIFY2(result, result ? "" : qPrintable(result.error().message));
+    QVERIFY(exists(bytes));
+    const auto entries = [&] {
+        QList<QByteArray> names;
+        if (DIR *dir = ::opendir(QFile::encodeName(folder).constData())) {
+            while (const dirent *entry = ::readdir(dir))
+                if (qstrcmp(entry->d_name, ".") != 0 && qstrcmp(entry->d_name, "..") != 0)
+                    names << QByteArray(entry->d_name); // hidden ones too: no lock, no temporary
+            ::closedir(dir);
+        }
+        return names;
+    };
+    QCOMPARE(entries(), QList<QByteArray>{"x\xff.html"});
+    // There now: kept without overwrite, replaced with it.
+    result = model::exportAnimation(m_source, o);
+    QVERIFY(!result);
+    QCOMPARE(result.error().code, model::ExportErrorCode::TargetExists);
+    QCOMPARE(model::existingExportTargets(m_source, o), QStringList{o.target});
+    ::truncate(bytes.constData(), 1);
+    o.overwrite = true;
+    result = model::exportAnimation(m_source, o);
+    QVERIFY(result);
+    struct stat status {};
+    QVERIFY(::stat(bytes.constData(), &status) == 0 && status.st_size > 1000);
+    QCOMPARE(entries(), QList<QByteArray>{"x\xff.html"});
+    QVERIFY(::unlink(bytes.constData()) == 0);
 }
 
 QTEST_GUILESS_MAIN(TestExportTarget)

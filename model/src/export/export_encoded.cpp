@@ -1,5 +1,6 @@
 // GIF, MP4, WebM and APNG through ffmpeg: rendered frames are piped raw to its standard input
-// and it writes a temporary file beside the target, renamed over the target on success.
+// and it writes a temporary file beside the target, renamed over the target on success. GIF
+// takes two runs, the first writing the palette to another temporary beside the target.
 #include "export_formats.h"
 #include "export_text.h"
 #include "ffmpeg_arguments.h"
@@ -65,21 +66,48 @@ ExportOutcome exportEncoded(const ExportContext &context)
         return unexpected(writeFailed(target, openFailure));
     pending.file().close(); // ffmpeg writes it; the name stays reserved until commit or cleanup
 
+    // GIF's palette, written by a first ffmpeg run: a temporary like the output's, so the
+    // same cleaning removes it (on failure, on a signal, and after a killed export).
+    PendingFile palette(target);
+    const bool gif = context.options.format == ExportFormat::Gif;
+    if (gif) {
+        if (!palette.open(&openFailure))
+            return unexpected(writeFailed(target, openFailure));
+        palette.file().close();
+    }
+
     const ExportPlan &plan = context.plan;
     // "file:" keeps ffmpeg from reading a colon in the folder name as a protocol.
-    const FfmpegJob job =
-        ffmpegJob(context.options.format, plan, QStringLiteral("file:") + pending.path());
-    const qint64 total = job.perTick ? plan.ticks : qint64(plan.frames.size());
+    const FfmpegJob job = ffmpegJob(context.options.format, plan,
+                                    QStringLiteral("file:") + pending.path(), palette.path());
+    // A GIF's frames are rendered and piped twice, once per run: slower, but ffmpeg keeps
+    // none of them.
+    const int runs = job.paletteArguments.isEmpty() ? 1 : 2;
+    const qint64 total = (job.perTick ? plan.ticks : qint64(plan.frames.size())) * runs;
     qint64 done = 0;
     const auto cancelled = [&] { return context.cancelled(done, total); };
 
-    // ffmpeg names the temporary file in its errors; the user knows the target.
+    // ffmpeg names the temporary files in its errors; the user knows the target.
     const auto failed = [&](ExportError error) {
         for (QString *text : {&error.message, &error.detail})
-            text->replace(QStringLiteral("file:") + pending.path(), target)
-                .replace(pending.path(), target);
+            for (const QString &path : {pending.path(), palette.path()})
+                if (!path.isEmpty())
+                    text->replace(QStringLiteral("file:") + path, target).replace(path, target);
         return unexpected(error);
     };
+    if (runs == 2) {
+        FfmpegEncoder first(job.what, palette.path());
+        if (auto error = first.start(job.paletteArguments))
+            return failed(*error);
+        if (auto error = pipeFrames(context, first, job.perTick, done, cancelled))
+            return failed(*error);
+        if (QFileInfo(palette.path()).size() <= 0)
+            return failed(exportError(ExportErrorCode::EncoderFailed,
+                                      Export::tr("ffmpeg finished without writing the %1; "
+                                                 "nothing was exported.")
+                                          .arg(job.what),
+                                      first.errorTail()));
+    }
     FfmpegEncoder encoder(job.what, pending.path());
     if (auto error = encoder.start(job.arguments))
         return failed(*error);
@@ -98,7 +126,7 @@ ExportOutcome exportEncoded(const ExportContext &context)
     ExportResult result;
     result.files << target;
     result.fileCount = 1;
-    result.images = done;
+    result.images = done / runs;
     result.ticks = plan.ticks;
     result.size = plan.size;
     return result;

@@ -57,6 +57,9 @@ private:
 };
 QString exposureSheetName(const ExportOptions &options);
 
+// The file target as the system names it: options.target encoded, or its folder and
+// options.nativeName.
+QByteArray nativeTargetPath(const ExportOptions &options);
 // Refuses a target that is a folder, or an existing file without options.overwrite.
 std::optional<ExportError> checkFileTarget(const ExportOptions &options);
 ExportError targetExists(const QString &path);

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <sys/stat.h>
 
 namespace finbook::model {
 
@@ -44,23 +45,34 @@ ExportError targetBusy(const QString &path)
                            .arg(QDir::toNativeSeparators(path)));
 }
 
+QByteArray nativeTargetPath(const ExportOptions &options)
+{
+    if (options.nativeName.isEmpty())
+        return QFile::encodeName(options.target);
+    return QFile::encodeName(QFileInfo(options.target).path()) + '/' + options.nativeName;
+}
+
 std::optional<ExportError> commitFile(PendingFile &pending, const ExportOptions &options)
 {
     bool appeared = false;
-    if (auto reason = pending.commit(options.overwrite, &appeared))
+    if (auto reason = pending.commit(nativeTargetPath(options), options.overwrite, &appeared))
         return appeared ? targetExists(options.target) : writeFailed(options.target, *reason);
     return std::nullopt;
 }
 
 std::optional<ExportError> checkFileTarget(const ExportOptions &options)
 {
-    const QFileInfo info(options.target);
-    if (info.isDir())
+    // By its bytes: the name as text may stand for another file (nativeName).
+    const QByteArray path = nativeTargetPath(options);
+    struct stat link {
+    }, followed{};
+    const bool exists = ::lstat(path.constData(), &link) == 0;
+    if (exists && ::stat(path.constData(), &followed) == 0 && S_ISDIR(followed.st_mode))
         return exportError(
             ExportErrorCode::BadOptions,
             Export::tr("\"%1\" is a folder; give a file name ending in .%2.")
                 .arg(QDir::toNativeSeparators(options.target), exportFormatSuffix(options.format)));
-    if ((info.exists() || info.isSymLink()) && !options.overwrite)
+    if (exists && !options.overwrite)
         return targetExists(options.target);
     return std::nullopt;
 }
@@ -146,8 +158,11 @@ void forEachExportTarget(const ExportSource &source, const ExportOptions &option
 
 QStringList existingExportTargets(const ExportSource &source, const ExportOptions &options)
 {
+    struct stat file {};
     if (!exportsSequence(options.format))
-        return QFileInfo::exists(options.target) ? QStringList{options.target} : QStringList();
+        return ::stat(nativeTargetPath(options).constData(), &file) == 0
+                   ? QStringList{options.target}
+                   : QStringList();
     const auto plan = planExport(source, options);
     if (!plan || !QFileInfo(options.target).isDir())
         return {};

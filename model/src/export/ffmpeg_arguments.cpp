@@ -31,26 +31,37 @@ QStringList inputArguments(const ExportPlan &plan)
             QStringLiteral("pipe:0")};
 }
 
-FfmpegJob gifJob(const ExportPlan &plan)
+// Two runs over the same frames, so that memory does not grow with their number: one
+// filter graph splitting the stream into palettegen and paletteuse would hold every frame
+// until palettegen has seen the last one (2.4 GB for 2,000 frames at 640×480). The first run
+// only counts colours into the palette (a PNG); the second maps each frame to it as it comes.
+FfmpegJob gifJob(const ExportPlan &plan, const QString &palette)
 {
     FfmpegJob job;
     job.what = Export::tr("GIF");
     const QString timestamps = holdTimestamps(plan.holds);
     job.perTick = timestamps.isEmpty();
+    job.paletteArguments << QStringLiteral("-vf")
+                         << QStringLiteral("palettegen=stats_mode=full:reserve_transparent=%1")
+                                .arg(plan.transparent ? 1 : 0)
+                         << QStringLiteral("-update") << QStringLiteral("1")
+                         << QStringLiteral("-c:v") << QStringLiteral("png") << QStringLiteral("-f")
+                         << QStringLiteral("image2") << QStringLiteral("-y")
+                         << QStringLiteral("file:") + palette;
     const QString setpts =
-        job.perTick ? QString() : QStringLiteral("setpts=(%1)/(FR*TB),").arg(timestamps);
-    // One pass: split keeps the frames while palettegen sees them all, then paletteuse maps
-    // each to the shared 256 (255 + transparent) colours.
+        job.perTick ? QString() : QStringLiteral("setpts=(%1)/(FR*TB)").arg(timestamps);
+    // The frames are input 0 (from inputArguments), the palette input 1.
     const QString graph =
-        QStringLiteral("[0:v]%1split[a][b];[a]palettegen=stats_mode=full:reserve_transparent=%2[p];"
-                       "[b][p]paletteuse=dither=sierra2_4a:diff_mode=rectangle:alpha_threshold=128")
-            .arg(setpts)
-            .arg(plan.transparent ? 1 : 0);
+        (setpts.isEmpty() ? QStringLiteral("[0:v]")
+                          : QStringLiteral("[0:v]%1[v];[v]").arg(setpts)) +
+        QStringLiteral("[1:v]paletteuse=dither=sierra2_4a:diff_mode=rectangle:alpha_threshold=128");
     // GIF delays are centiseconds; the last drawing's hold is not known to ffmpeg otherwise.
     const int lastTicks = job.perTick ? 1 : plan.holds.back();
     const int finalDelay = int(std::lround(lastTicks * 100.0 / plan.fps));
-    job.arguments << QStringLiteral("-filter_complex") << graph << QStringLiteral("-fps_mode")
-                  << QStringLiteral("passthrough") << QStringLiteral("-loop")
+    job.arguments << QStringLiteral("-f") << QStringLiteral("png_pipe") << QStringLiteral("-i")
+                  << QStringLiteral("file:") + palette << QStringLiteral("-filter_complex") << graph
+                  << QStringLiteral("-fps_mode") << QStringLiteral("passthrough")
+                  << QStringLiteral("-loop")
                   << (plan.loop ? QStringLiteral("0") : QStringLiteral("-1"))
                   << QStringLiteral("-final_delay") << QString::number(finalDelay)
                   << QStringLiteral("-f") << QStringLiteral("gif");
@@ -117,12 +128,13 @@ QString holdTimestamps(const std::vector<int> &holds)
     return expression;
 }
 
-FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &output)
+FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &output,
+                    const QString &palette)
 {
     FfmpegJob job;
     switch (format) {
     case ExportFormat::Gif:
-        job = gifJob(plan);
+        job = gifJob(plan, palette);
         break;
     case ExportFormat::Mp4:
         job = mp4Job();
@@ -135,6 +147,8 @@ FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &
         break;
     }
     job.arguments = inputArguments(plan) + job.arguments;
+    if (!job.paletteArguments.isEmpty())
+        job.paletteArguments = inputArguments(plan) + job.paletteArguments;
     job.arguments << QStringLiteral("-y") << output;
     return job;
 }

@@ -9,13 +9,18 @@ namespace finbook::model {
 
 struct FfmpegJob {
     QStringList arguments;
+    // GIF: a first run over the same frames that only writes the palette (palettegen), read
+    // by the second run (`arguments`, paletteuse). Empty for the other formats.
+    QStringList paletteArguments;
     // True: every playback tick is piped (held drawings repeated), for constant-rate video.
     // False: each drawing is piped once and ffmpeg stretches it over its hold (GIF delays).
     bool perTick = true;
     QString what; // names the output in messages
 };
 
-FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &output);
+// `palette`: where the GIF's first run writes its palette (a PNG) and the second reads it.
+FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &output,
+                    const QString &palette = QString());
 
 // setpts expression that starts drawing N at its first tick: N plus the extra ticks of the
 // drawings held before it. Empty when it would be too long for one command-line argument.

@@ -13,6 +13,7 @@
 
 #ifdef Q_OS_UNIX
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #endif
 
@@ -56,10 +57,8 @@ void syncFolder(const QString &folder)
 // Temporary files are private (0600); the export gets what a new file gets (0666 less the
 // umask), or the permissions of the file it replaces. The umask is read from /proc rather
 // than with umask(), which would change it for every thread for a moment.
-QFileDevice::Permissions outputPermissions(const QString &target)
+QFileDevice::Permissions outputPermissions(const QByteArray &target)
 {
-    if (QFileInfo::exists(target))
-        return QFile::permissions(target);
     uint mask = 022;
     QFile status(QStringLiteral("/proc/self/status"));
     if (status.open(QIODevice::ReadOnly)) {
@@ -70,7 +69,14 @@ QFileDevice::Permissions outputPermissions(const QString &target)
                 mask = value;
         }
     }
-    const uint mode = 0666u & ~mask;
+    uint mode = 0666u & ~mask;
+#ifdef Q_OS_UNIX
+    struct stat replaced {};
+    if (::stat(target.constData(), &replaced) == 0)
+        mode = replaced.st_mode & 0777u;
+#else
+    Q_UNUSED(target);
+#endif
     QFileDevice::Permissions permissions;
     const std::pair<uint, QFileDevice::Permission> bits[] = {
         {0400, QFileDevice::ReadOwner}, {0200, QFileDevice::WriteOwner},
@@ -89,9 +95,8 @@ QFileDevice::Permissions outputPermissions(const QString &target)
 
 // Renames `from` to `to` unless `to` exists (then EEXIST): renameat2's RENAME_NOREPLACE, or a
 // hard link and an unlink where the file system has no such rename.
-bool renameNoReplace(const QString &from, const QString &to)
+bool renameNoReplace(const QByteArray &a, const QByteArray &b)
 {
-    const QByteArray a = QFile::encodeName(from), b = QFile::encodeName(to);
 #if defined(Q_OS_LINUX)
     if (::renameat2(AT_FDCWD, a.constData(), AT_FDCWD, b.constData(), RENAME_NOREPLACE) == 0)
         return true;
@@ -104,16 +109,26 @@ bool renameNoReplace(const QString &from, const QString &to)
     ::unlink(a.constData());
     return true;
 #else
-    return QFile::rename(from, to);
+    return QFile::rename(QFile::decodeName(a), QFile::decodeName(b));
 #endif
+}
+
+bool renameNoReplace(const QString &from, const QString &to)
+{
+    return renameNoReplace(QFile::encodeName(from), QFile::encodeName(to));
+}
+
+std::optional<QString> renameOver(const QByteArray &from, const QByteArray &to)
+{
+    // std::rename replaces an existing target atomically on POSIX (QFile::rename refuses to).
+    if (std::rename(from.constData(), to.constData()) != 0)
+        return systemError();
+    return std::nullopt;
 }
 
 std::optional<QString> renameOver(const QString &from, const QString &to)
 {
-    // std::rename replaces an existing target atomically on POSIX (QFile::rename refuses to).
-    if (std::rename(QFile::encodeName(from).constData(), QFile::encodeName(to).constData()) != 0)
-        return systemError();
-    return std::nullopt;
+    return renameOver(QFile::encodeName(from), QFile::encodeName(to));
 }
 } // namespace
 
@@ -192,7 +207,8 @@ bool PendingFile::open(QString *reason)
     return false;
 }
 
-std::optional<QString> PendingFile::commit(bool replace, bool *appeared)
+std::optional<QString> PendingFile::commit(const QByteArray &destination, bool replace,
+                                           bool *appeared)
 {
     if (!m_file)
         return QStringLiteral("no file");
@@ -203,14 +219,15 @@ std::optional<QString> PendingFile::commit(bool replace, bool *appeared)
     if (!syncDescriptor(written.handle()))
         return systemError();
     written.close();
-    QFile::setPermissions(m_file->fileName(), outputPermissions(m_target));
-    if (!replace && !renameNoReplace(m_file->fileName(), m_target)) {
+    QFile::setPermissions(m_file->fileName(), outputPermissions(destination));
+    const QByteArray from = QFile::encodeName(m_file->fileName());
+    if (!replace && !renameNoReplace(from, destination)) {
         if (appeared)
             *appeared = errno == EEXIST;
         return systemError();
     }
     if (replace)
-        if (auto reason = renameOver(m_file->fileName(), m_target))
+        if (auto reason = renameOver(from, destination))
             return reason;
     m_file->setAutoRemove(false);
     syncFolder(QFileInfo(m_target).path());

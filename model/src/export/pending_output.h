@@ -44,9 +44,12 @@ public:
     bool open(QString *reason); // creates the temporary (open for writing)
     QString path() const { return m_file ? m_file->fileName() : QString(); }
     QFile &file() { return *m_file; }
-    // Syncs what is in the temporary (written here or by another program) and renames it.
-    // Unless `replace`, a target that appeared meanwhile stays and `*appeared` is set.
-    std::optional<QString> commit(bool replace = true, bool *appeared = nullptr);
+    // Syncs what is in the temporary (written here or by another program) and renames it to
+    // `destination` (the target's path as the system names it: the encoded target, or other
+    // bytes when its name is not valid in the file name encoding). Unless `replace`, a file
+    // that appeared there meanwhile stays and `*appeared` is set.
+    std::optional<QString> commit(const QByteArray &destination, bool replace = true,
+                                  bool *appeared = nullptr);
 
 private:
     QString m_target;

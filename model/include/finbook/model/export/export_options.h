@@ -30,6 +30,11 @@ enum class ExportFormat {
 struct ExportOptions {
     ExportFormat format = ExportFormat::PngSequence;
     QString target; // the file, or the folder of a PNG/SVG sequence (created when missing)
+    // A file target's own name as bytes, when they are not valid in the file name encoding
+    // (a Latin-1 name given on the command line): `target` then names the file with U+FFFD
+    // for messages, the lock and the temporaries beside it, and the finished file is put
+    // under these bytes. Empty: the name `target` encodes.
+    QByteArray nativeName;
     // Document frame indices, inclusive. Both -1: the document's play range.
     int firstFrame = -1;
     int lastFrame = -1;
