@@ -6,6 +6,12 @@
 // segment becomes its capsule (the hull of the pen's circles at both ends, which is what a
 // round-capped, round-joined pen covers), cut to the visible rectangle before it is filled,
 // so the rasterizer only sees what can be seen.
+//
+// That outline fill still costs about k² on a row that k capsule outlines cross: a 200-pixel
+// pen scribbling 20,000 points over a 1920 x 1080 frame took 97 s. When that estimate is large
+// next to the frame's pixels, the union is rasterized by scanlines into a coverage mask instead
+// (capsule_coverage.h), whose cost is bounded by the frame whatever the pen, and the mask is
+// painted as an image. Each segment keeps its own width on both paths.
 #pragma once
 
 #include <QPainter>
@@ -23,9 +29,23 @@ struct WideSegment {
     qreal width = 0; // logical units, like the pen's
 };
 
+enum class WidePenFill {
+    Automatic, // the coverage mask where the outline fill is estimated to cost much more
+    Outline,   // QPainter fills the capsules' outlines
+    Coverage,  // scanline coverage mask (needs a transform without shear; else Outline)
+};
+
+// What a fill handed on: outline vertices to QPainter, or work of the coverage mask.
+struct WidePenWork {
+    WidePenFill used = WidePenFill::Outline;
+    qint64 outlineVertices = 0;
+    qint64 coverageWork = 0; // CoverageWork::total()
+};
+
 // Fills the union of the segments' capsules in the painter's brush, each capsule cut to
 // `visible` (logical coordinates) first. `scale` is the painter's device pixels per unit.
-void fillWideSegments(QPainter &painter, const std::vector<WideSegment> &segments,
-                      const QRectF &visible, qreal scale);
+WidePenWork fillWideSegments(QPainter &painter, const std::vector<WideSegment> &segments,
+                             const QRectF &visible, qreal scale,
+                             WidePenFill fill = WidePenFill::Automatic);
 
 } // namespace finbook::model
