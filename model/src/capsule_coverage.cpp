@@ -12,6 +12,9 @@ struct Prepared {
     double ax, ay, bx, by, r;
     double ux, uy, length; // unit direction a→b (0 when a = b)
     double top, bottom;
+    // Between these heights a row meets neither end disk: the crossing is the centre line's
+    // x there ± halfWidth (empty range when the segment is not that tall).
+    double middleTop, middleBottom, slope, halfWidth;
 };
 
 // x - ax within [lo, hi] / k, intersected into [from, to]; false when nothing is left.
@@ -32,6 +35,12 @@ bool cutLinear(double k, double lo, double hi, double &from, double &to)
 // so its crossing is the hull of theirs.
 void rowSpan(const Prepared &c, double y, double &lo, double &hi)
 {
+    if (c.middleTop < y && y < c.middleBottom) {
+        const double x = c.ax + (y - c.ay) * c.slope;
+        lo = std::min(lo, x - c.halfWidth);
+        hi = std::max(hi, x + c.halfWidth);
+        return;
+    }
     const double r2 = c.r * c.r;
     for (const auto &[x, cy] : {std::pair{c.ax, c.ay}, std::pair{c.bx, c.by}}) {
         const double dy = y - cy;
@@ -61,7 +70,7 @@ bool prepare(const Capsule &in, int width, int height, Prepared &out)
     if (!std::isfinite(in.ax) || !std::isfinite(in.ay) || !std::isfinite(in.bx) ||
         !std::isfinite(in.by) || !std::isfinite(r) || !(r > 0.0))
         return false;
-    out = {in.ax, in.ay, in.bx, in.by, r, 0, 0, 0, 0, 0};
+    out = {in.ax, in.ay, in.bx, in.by, r, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     out.top = std::min(in.ay, in.by) - r;
     out.bottom = std::max(in.ay, in.by) + r;
     if (out.bottom < 0.0 || out.top > height || std::max(in.ax, in.bx) + r < 0.0 ||
@@ -73,6 +82,13 @@ bool prepare(const Capsule &in, int width, int height, Prepared &out)
         out.ux = dx / length;
         out.uy = dy / length;
         out.length = length;
+    }
+    // Rows strictly between the end disks cross the rectangle only, both its long sides.
+    if (std::abs(dy) > 2 * r && std::isfinite(dx / dy)) {
+        out.middleTop = std::min(in.ay, in.by) + r;
+        out.middleBottom = std::max(in.ay, in.by) - r;
+        out.slope = dx / dy;
+        out.halfWidth = r / std::abs(out.uy);
     }
     return true;
 }

@@ -99,18 +99,12 @@ std::vector<Capsule> deviceCapsules(const std::vector<WideSegment> &segments, co
     return capsules;
 }
 
-// Estimated work of both fills, in comparable units. QPainter's rasterizer keeps each row's
-// outline cells in a sorted list, so a row crossed k times costs about k²: at least
-// (Σ rows crossed)² / rows. Measured 2.8 ns a unit (200-px pen, 2,000 points, 640 x 360:
-// 3.1 s); the coverage mask costs a few ns per sample and per capsule row.
 bool coverageIsCheaper(const std::vector<Capsule> &capsules, int rows, qint64 pixels)
 {
     double crossed = 0;
     for (const Capsule &c : capsules)
         crossed += std::min(double(rows), std::abs(c.by - c.ay) + 2 * c.radius);
-    const double outline = crossed * crossed / std::max(1, rows);
-    const double coverage = kCoverageSamples * (kCoverageSamples * double(pixels) + crossed);
-    return outline > 4 * coverage;
+    return outlineFillIsCrowded(crossed, rows, double(pixels));
 }
 
 WidePenWork paintCoverage(QPainter &painter, const std::vector<Capsule> &capsules,
@@ -143,6 +137,16 @@ WidePenWork paintCoverage(QPainter &painter, const std::vector<Capsule> &capsule
     return work;
 }
 } // namespace
+
+// Measured: 2.8 ns a unit of (Σ rows crossed)² / rows for QPainter (200-px pen, 2,000 points,
+// 640 x 360: 3.1 s), a few ns a sample and a capsule row for the mask: the mask is chosen where
+// the outline fill is estimated at four times its work or more.
+bool outlineFillIsCrowded(double rowsCrossed, double rows, double pixels)
+{
+    const double outline = rowsCrossed * rowsCrossed / std::max(1.0, rows);
+    const double coverage = kCoverageSamples * (kCoverageSamples * pixels + rowsCrossed);
+    return outline > 4 * coverage;
+}
 
 WidePenWork fillWideSegments(QPainter &painter, const std::vector<WideSegment> &segments,
                              const QRectF &visible, qreal scale, WidePenFill fill)

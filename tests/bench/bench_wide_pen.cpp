@@ -66,6 +66,10 @@ int widePen(const QStringList &args)
         {"pen16384_points2000_640x360", finbook::model::kMaxStrokeWidth, 2000, 640, 360, 1.0},
         {"pen2000_points400_640x360_scale4", 2000, 400, 640, 360, 4.0},
         {"pen2000_points20000_1920x1080", 2000, 20000, 1920, 1080, 1.0},
+        {"pen200_points200000_1920x1080", 200, 200000, 1920, 1080, 1.0},
+        {"pen40_points20000_1920x1080", 40, 20000, 1920, 1080, 1.0},
+        {"pen10_points20000_1920x1080", 10, 20000, 1920, 1080, 1.0},
+        {"pen60_points20000_1920x1080", 60, 20000, 1920, 1080, 1.0},
     };
     for (const Case &c : cases) {
         const QByteArray bytes = scribbleFile(c);
