@@ -4,7 +4,8 @@
 // (QPainter's stroker builds the whole outline of a segment whatever the clip), and one
 // stroke referenced thousands of times (each reference painted again). So segments are
 // clipped to what the painter can show before QPainter sees them, and references to the
-// same points in one frame are painted once (paintList).
+// same points in one frame are painted once (paintList). Wide pens and long scribbles, whose
+// outlines QPainter fills at a cost growing with their overlap, go through render_wide_pen.h.
 #include "render_wide_pen.h"
 
 #include <finbook/model/fill/fill_render.h>
@@ -104,6 +105,29 @@ QRectF paintableRect(const QPainter &painter)
     return rect;
 }
 
+// Whether the stroke's outlines cross the visible rows so often that QPainter would spend far
+// more on them than a coverage mask of the frame (a long scribble: render_wide_pen.h).
+bool crowdsTheRows(const std::vector<StrokePoint> &points, float width, const QRectF &paintable,
+                   qreal scale)
+{
+    const double rows = paintable.height() * scale;
+    const double pixels = paintable.width() * scale * rows;
+    if (!outlineFillIsCrowded(double(points.size()) * rows, rows, pixels))
+        return false; // even if every segment crossed every row
+    double crossed = 0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const StrokePoint &from = points[i - 1], &to = points[i];
+        if (!isFinite(from) || !isFinite(to))
+            continue;
+        const double reach = std::max(0.25, widthBucket(width, to.pressure) / 4.0) / 2;
+        const double top = std::max(paintable.top(), double(std::min(from.y, to.y)) - reach);
+        const double bottom = std::min(paintable.bottom(), double(std::max(from.y, to.y)) + reach);
+        if (top < bottom)
+            crossed += (bottom - top) * scale;
+    }
+    return outlineFillIsCrowded(crossed, rows, pixels);
+}
+
 // The alpha that `coats` layers of `alpha` (0..1) give when painted over each other.
 qreal coatedAlpha(qreal alpha, int coats)
 {
@@ -190,7 +214,8 @@ void paintStroke(QPainter &painter, const std::vector<StrokePoint> &points, QRgb
             paintDot(painter, at, std::max(0.5f, width * std::clamp(p.pressure, 0.0f, 1.0f)));
         return;
     }
-    if (widestPen(points, width) * scale >= kWidePenPixels) {
+    if (widestPen(points, width) * scale >= kWidePenPixels ||
+        crowdsTheRows(points, width, paintable, scale)) {
         std::vector<WideSegment> segments;
         for (std::size_t i = 1; i < points.size(); ++i) {
             const StrokePoint &from = points[i - 1], &to = points[i];

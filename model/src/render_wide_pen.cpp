@@ -1,5 +1,9 @@
 #include "render_wide_pen.h"
 
+#include "capsule_coverage.h"
+
+#include <QImage>
+#include <QPaintDevice>
 #include <QPainterPath>
 #include <QPolygonF>
 
@@ -59,11 +63,108 @@ QPolygonF capsule(QPointF a, QPointF b, qreal r, int steps)
         }
     return polygon;
 }
+
+// A similarity (scale, rotation, mirror, translation) maps each capsule onto a capsule.
+bool isSimilarity(const QTransform &t)
+{
+    if (t.type() == QTransform::TxProject)
+        return false;
+    const qreal sx = std::hypot(t.m11(), t.m12()), sy = std::hypot(t.m21(), t.m22());
+    const qreal dot = t.m11() * t.m21() + t.m12() * t.m22();
+    return sx > 0 && std::isfinite(sx) && std::abs(sx - sy) <= 1e-9 * sx &&
+           std::abs(dot) <= 1e-9 * sx * sy;
+}
+
+// Device pixels (of the painter's coordinates before the device pixel ratio) it may change.
+QRect deviceArea(const QPainter &painter)
+{
+    const QPaintDevice *device = painter.device();
+    QRect area(0, 0, device->width(), device->height());
+    if (painter.hasClipping())
+        area &= painter.combinedTransform().mapRect(painter.clipBoundingRect()).toAlignedRect();
+    return area;
+}
+
+// The segments as capsules in the raster pixels of `area` (scaled by the pixel ratio).
+std::vector<Capsule> deviceCapsules(const std::vector<WideSegment> &segments, const QTransform &t,
+                                    const QRect &area, qreal ratio, qreal scale)
+{
+    std::vector<Capsule> capsules;
+    capsules.reserve(segments.size());
+    for (const WideSegment &s : segments) {
+        const QPointF a = (t.map(s.a) - area.topLeft()) * ratio;
+        const QPointF b = (t.map(s.b) - area.topLeft()) * ratio;
+        capsules.push_back({a.x(), a.y(), b.x(), b.y(), s.width / 2 * scale * ratio});
+    }
+    return capsules;
+}
+
+bool coverageIsCheaper(const std::vector<Capsule> &capsules, int rows, qint64 pixels)
+{
+    double crossed = 0;
+    for (const Capsule &c : capsules)
+        crossed += std::min(double(rows), std::abs(c.by - c.ay) + 2 * c.radius);
+    return outlineFillIsCrowded(crossed, rows, double(pixels));
+}
+
+WidePenWork paintCoverage(QPainter &painter, const std::vector<Capsule> &capsules,
+                          const QRect &area, qreal ratio)
+{
+    const QSize raster = (QSizeF(area.size()) * ratio).toSize();
+    std::vector<std::uint8_t> alpha;
+    WidePenWork work;
+    work.used = WidePenFill::Coverage;
+    work.coverageWork = capsuleCoverage(capsules, raster.width(), raster.height(), alpha).total();
+    QImage image(raster, QImage::Format_ARGB32_Premultiplied);
+    if (image.isNull())
+        return work;
+    const QRgb ink = qPremultiply(painter.brush().color().rgba());
+    const auto times = [](int channel, int a) { return (channel * a + 127) / 255; };
+    for (int y = 0; y < raster.height(); ++y) {
+        auto *line = reinterpret_cast<QRgb *>(image.scanLine(y));
+        const std::uint8_t *cover = alpha.data() + std::size_t(y) * std::size_t(raster.width());
+        for (int x = 0; x < raster.width(); ++x) {
+            const int a = cover[x];
+            line[x] = qRgba(times(qRed(ink), a), times(qGreen(ink), a), times(qBlue(ink), a),
+                            times(qAlpha(ink), a));
+        }
+    }
+    image.setDevicePixelRatio(ratio);
+    painter.save();
+    painter.resetTransform();
+    painter.drawImage(QPointF(area.topLeft()), image);
+    painter.restore();
+    return work;
+}
 } // namespace
 
-void fillWideSegments(QPainter &painter, const std::vector<WideSegment> &segments,
-                      const QRectF &visible, qreal scale)
+// Measured: 2.8 ns a unit of (Σ rows crossed)² / rows for QPainter (200-px pen, 2,000 points,
+// 640 x 360: 3.1 s), a few ns a sample and a capsule row for the mask: the mask is chosen where
+// the outline fill is estimated at four times its work or more.
+bool outlineFillIsCrowded(double rowsCrossed, double rows, double pixels)
 {
+    const double outline = rowsCrossed * rowsCrossed / std::max(1.0, rows);
+    const double coverage = kCoverageSamples * (kCoverageSamples * pixels + rowsCrossed);
+    return outline > 4 * coverage;
+}
+
+WidePenWork fillWideSegments(QPainter &painter, const std::vector<WideSegment> &segments,
+                             const QRectF &visible, qreal scale, WidePenFill fill)
+{
+    const QTransform toDevice = painter.combinedTransform();
+    if (fill != WidePenFill::Outline && !segments.empty() && painter.device() &&
+        isSimilarity(toDevice)) {
+        const QRect area = deviceArea(painter);
+        const qreal ratio = std::max(1.0, painter.device()->devicePixelRatio());
+        const std::vector<Capsule> capsules =
+            deviceCapsules(segments, toDevice, area, ratio, scale);
+        if (!area.isEmpty() &&
+            (fill == WidePenFill::Coverage ||
+             coverageIsCheaper(capsules, int(area.height() * ratio),
+                               qint64(area.width() * ratio) * qint64(area.height() * ratio))))
+            return paintCoverage(painter, capsules, area, ratio);
+    }
+    WidePenWork work;
     QPainterPath path;
     path.setFillRule(Qt::WindingFill);
     for (const WideSegment &s : segments) {
@@ -72,15 +173,18 @@ void fillWideSegments(QPainter &painter, const std::vector<WideSegment> &segment
         if (!reach.intersects(visible))
             continue;
         const QPolygonF cut = clipToRect(capsule(s.a, s.b, r, arcSteps(r * scale)), visible);
-        if (cut.size() >= 3)
+        if (cut.size() >= 3) {
             path.addPolygon(cut);
+            work.outlineVertices += cut.size();
+        }
     }
     if (path.isEmpty())
-        return;
+        return work;
     painter.save();
     painter.setPen(Qt::NoPen);
     painter.drawPath(path);
     painter.restore();
+    return work;
 }
 
 } // namespace finbook::model

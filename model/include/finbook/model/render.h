@@ -28,7 +28,10 @@ bool clipSegment(QPointF &a, QPointF &b, const QRectF &r, double *t0 = nullptr,
 // to the same quarter pixel are drawn as one polyline, which keeps 50k-point frames fast.
 // Only what the painter can show is drawn: segments are clipped to the device (and the
 // painter's clip) plus the pen's reach, so a point far off the canvas costs no more than
-// one on it. Non-finite points and widths are skipped.
+// one on it. Pens several dozen device pixels wide are filled as the union of their segments'
+// capsules, and a long scribble whose outlines would crowd QPainter's rows (any pen) as a
+// coverage mask of the device, so its cost is bounded by the frame, not by its overlap.
+// Non-finite points and widths are skipped.
 void paintStroke(QPainter &painter, const std::vector<StrokePoint> &points, QRgb color,
                  float width);
 
