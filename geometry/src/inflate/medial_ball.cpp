@@ -1,0 +1,189 @@
+#include "medial_ball.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace finbook::geometry::inflate_detail {
+namespace {
+
+// Slack on an edge's parameter (0 at its start, 1 at its end) for a contact on its end.
+constexpr double kParameterSlack = 1e-9;
+
+struct Foot {
+    Eigen::RowVector2d point;     // b
+    Eigen::RowVector2d direction; // from b toward p (or the outline's normal when p is on it)
+    double distance = 0.0;
+    Eigen::Index edge = -1; // the edge whose inside holds b, −1 at a corner
+    double lambda = 0.0;    // b's parameter on that edge
+};
+
+// Nearest outline point of an interior vertex, and the direction from it to the vertex. A
+// vertex (numerically) on the outline takes the edge's normal or the corner's bisector.
+Foot nearestFoot(const MeshOutline &outline, const Eigen::RowVector2d &p, double tolerance)
+{
+    double best = std::numeric_limits<double>::infinity();
+    Eigen::Index bestEdge = 0;
+    double bestParameter = 0.0;
+    for (Eigen::Index i = 0; i < outline.edgeCount(); ++i) {
+        const Eigen::RowVector2d a = outline.a.row(i), e = outline.e.row(i);
+        const double lambda = std::clamp((p - a).dot(e) * outline.invLength2(i), 0.0, 1.0);
+        const double distance2 = (p - a - lambda * e).squaredNorm();
+        if (distance2 < best) {
+            best = distance2;
+            bestEdge = i;
+            bestParameter = lambda;
+        }
+    }
+    Foot foot;
+    foot.point = outline.a.row(bestEdge) + bestParameter * outline.e.row(bestEdge);
+    foot.distance = std::sqrt(best);
+    foot.lambda = bestParameter;
+    const bool inside = bestParameter > 0.0 && bestParameter < 1.0;
+    if (inside)
+        foot.edge = bestEdge;
+    if (foot.distance > tolerance) {
+        foot.direction = (p - foot.point) / foot.distance;
+    } else if (inside) {
+        foot.direction = outline.inward.row(bestEdge);
+        foot.distance = 0.0;
+    } else {
+        foot.direction = outline.bisector.row(outline.ends(bestEdge, bestParameter > 0.5 ? 1 : 0));
+        foot.distance = 0.0;
+    }
+    return foot;
+}
+
+// The direction the ball grows in. On an edge, its normal, blended over the half of the edge
+// next to a corner that turns less than the contact angle into that corner's bisector (as
+// Phong normals do): the outline is then read as the smooth curve it samples, whose normals
+// turn continuously. Straight normals would miss a sampled circle's centre by up to half an
+// edge, and the radius and the normals would ripple with the sampling. Reflex corners need
+// nothing: there the corner's own wedge already turns the direction from edge to edge, and
+// sharp convex corners keep their crease.
+Eigen::RowVector2d growthDirection(const MeshOutline &outline, const Foot &foot,
+                                   double minContactCos)
+{
+    if (foot.edge < 0)
+        return foot.direction;
+    Eigen::RowVector2d n = outline.inward.row(foot.edge);
+    const auto smoothCorner = [&](int k) {
+        return outline.convex(k) && outline.turnCos(k) > minContactCos;
+    };
+    const int start = outline.ends(foot.edge, 0), end = outline.ends(foot.edge, 1);
+    if (foot.lambda < 0.5 && smoothCorner(start))
+        n += (1.0 - 2.0 * foot.lambda) * (outline.bisector.row(start) - n);
+    else if (foot.lambda > 0.5 && smoothCorner(end))
+        n += (2.0 * foot.lambda - 1.0) * (outline.bisector.row(end) - n);
+    return n / n.norm();
+}
+
+// A disc growing from b along n that meets edge i's line already at b (b lies on that line):
+// is it blocked there, i.e. does the edge run from b into the half-plane n points to? That is
+// a convex corner (or b inside the edge); at a reflex corner the edge falls away behind b.
+bool blockedAtStart(const MeshOutline &outline, Eigen::Index i, const Eigen::RowVector2d &b,
+                    const Eigen::RowVector2d &n)
+{
+    const Eigen::RowVector2d e = outline.e.row(i);
+    const double lambda = (b - outline.a.row(i)).dot(e) * outline.invLength2(i);
+    if (lambda > kParameterSlack && lambda < 1.0 - kParameterSlack)
+        return true;
+    if (std::abs(lambda) <= kParameterSlack)
+        return n.dot(e) > 0.0;
+    if (std::abs(lambda - 1.0) <= kParameterSlack)
+        return n.dot(e) < 0.0;
+    return false;
+}
+
+// Smallest t ≥ 0 at which the disc of radius t centred at b + t·n touches the outline:
+// tangent to an edge's inner side within the edge, or through an outline vertex. The edge
+// that b lies inside never stops the disc.
+//
+// A contact stops the disc only if it is at least the contact angle away from b: an edge
+// whose normal turns that far from the outline's normal at b (`tangent`), a vertex seen from
+// the centre at that angle from b. A polygon has a medial-axis branch at every convex vertex,
+// however slight its turn: on a 128-gon the largest disc touching a chord near a vertex has a
+// radius of a few percent of the circle's, and the height would ripple with the sampling.
+// Ignoring the near contacts reads the outline as the smooth curve it samples (in the spirit
+// of the λ-medial axis), while sharp corners and real opposite sides still stop the ball.
+// Without any such contact the nearest one of all is taken.
+double firstContact(const MeshOutline &outline, const Foot &foot, const Eigen::RowVector2d &n,
+                    const Eigen::RowVector2d &tangent, double tolerance, double minContactCos)
+{
+    const Eigen::RowVector2d b = foot.point;
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    double radius = kNone, anyRadius = kNone;
+    for (Eigen::Index i = 0; i < outline.edgeCount(); ++i) {
+        if (i == foot.edge || outline.invLength2(i) == 0.0)
+            continue;
+        const Eigen::RowVector2d u = outline.inward.row(i);
+        const bool significant = u.dot(tangent) <= minContactCos;
+        // Signed distance of the centre to the edge's line, u·(b − a) + t·(u·n), equals t.
+        const double offset = u.dot(b - outline.a.row(i));
+        const double closing = 1.0 - u.dot(n);
+        if (closing <= 1e-12)
+            continue; // the edge is parallel to the disc's growth
+        if (std::abs(offset) <= tolerance) {
+            if (blockedAtStart(outline, i, b, n)) {
+                if (significant)
+                    return 0.0;
+                anyRadius = 0.0;
+            }
+            continue;
+        }
+        const double t = offset / closing;
+        if (t <= 0.0 || t >= radius)
+            continue;
+        const Eigen::RowVector2d contact = b + t * (n - u);
+        const double lambda =
+            (contact - outline.a.row(i)).dot(outline.e.row(i)) * outline.invLength2(i);
+        if (lambda < -kParameterSlack || lambda > 1.0 + kParameterSlack)
+            continue;
+        if (significant)
+            radius = t;
+        anyRadius = std::min(anyRadius, t);
+    }
+    const double tolerance2 = tolerance * tolerance;
+    const double chordFactor = 2.0 * (1.0 - minContactCos); // |q − b|² ≥ this × t²
+    for (Eigen::Index k = 0; k < outline.points.rows(); ++k) {
+        // |b + t·n − q|² = t²  ⇔  t = |q − b|² / (2 n·(q − b)).
+        const Eigen::RowVector2d w = outline.points.row(k) - b;
+        const double w2 = w.squaredNorm();
+        const double along = n.dot(w);
+        if (w2 <= tolerance2 || along <= 0.0)
+            continue;
+        const double t = w2 / (2.0 * along);
+        if (t >= radius)
+            continue;
+        anyRadius = std::min(anyRadius, t);
+        if (w2 >= chordFactor * t * t)
+            radius = t;
+    }
+    return radius < kNone ? radius : anyRadius;
+}
+
+} // namespace
+
+MedialBall medialBall(const MeshOutline &outline, const Eigen::RowVector2d &p, int slot,
+                      double tolerance, double minContactCos)
+{
+    Foot foot;
+    if (slot >= 0) {
+        foot.point = p;
+        foot.direction = outline.bisector.row(slot);
+    } else {
+        foot = nearestFoot(outline, p, tolerance);
+    }
+    MedialBall ball;
+    ball.direction = growthDirection(outline, foot, minContactCos);
+    ball.depth = foot.distance;
+    const Eigen::RowVector2d tangent =
+        foot.edge >= 0 ? Eigen::RowVector2d(outline.inward.row(foot.edge)) : foot.direction;
+    const double radius =
+        firstContact(outline, foot, ball.direction, tangent, tolerance, minContactCos);
+    ball.radius = std::isfinite(radius) ? radius : ball.depth;
+    ball.centre = foot.point + ball.radius * ball.direction;
+    return ball;
+}
+
+} // namespace finbook::geometry::inflate_detail

@@ -1,0 +1,25 @@
+// The medial ball through a point of the shape: from the nearest outline point b, the disc
+// that touches the outline at b and grows along the outline's inward normal there until it
+// meets the outline elsewhere. Internal to geometry/src/inflate; see inflation.h.
+#pragma once
+
+#include "mesh_outline.h"
+
+#include <Eigen/Core>
+
+namespace finbook::geometry::inflate_detail {
+
+struct MedialBall {
+    Eigen::RowVector2d centre;    // m = b + r·n
+    Eigen::RowVector2d direction; // n, unit, into the shape
+    double depth = 0.0;           // d = |p − b|
+    double radius = 0.0;          // r ≥ 0
+};
+
+// p is a mesh vertex; slot is its row in outline.points or −1 (meshOutline). `tolerance` is
+// a length (px) below which points coincide, relative to the drawing's size.
+// `minContactCos`: cos of the contact angle (InflateOptions::contactAngleDegrees).
+MedialBall medialBall(const MeshOutline &outline, const Eigen::RowVector2d &p, int slot,
+                      double tolerance, double minContactCos);
+
+} // namespace finbook::geometry::inflate_detail
