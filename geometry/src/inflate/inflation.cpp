@@ -1,5 +1,6 @@
 #include "medial_ball.h"
 #include "mesh_outline.h"
+#include "outline_grid.h"
 
 #include <finbook/geometry/inflate/inflation.h>
 
@@ -68,6 +69,7 @@ Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &V, const 
     if (outline.edgeCount() == 0)
         return failure(GeometryErrorCode::DegenerateRegion,
                        "The mesh has no outline, so it cannot be inflated.");
+    const inflate_detail::OutlineGrid grid(outline);
     const double size = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
     const double tolerance = kRelativeTolerance * std::max(size, 1e-300);
 
@@ -83,7 +85,7 @@ Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &V, const 
     for (Eigen::Index i = 0; i < n; ++i) {
         const int slot = outline.slot[std::size_t(i)];
         const inflate_detail::MedialBall ball =
-            inflate_detail::medialBall(outline, V.row(i), slot, tolerance, minContactCos);
+            inflate_detail::medialBall(outline, grid, V.row(i), slot, tolerance, minContactCos);
         const double r = ball.radius;
         result.depth(i) = ball.depth;
         result.radius(i) = r;

@@ -1,5 +1,7 @@
 #include "medial_ball.h"
 
+#include "outline_grid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,21 +22,23 @@ struct Foot {
 
 // Nearest outline point of an interior vertex, and the direction from it to the vertex. A
 // vertex (numerically) on the outline takes the edge's normal or the corner's bisector.
-Foot nearestFoot(const MeshOutline &outline, const Eigen::RowVector2d &p, double tolerance)
+Foot nearestFoot(const MeshOutline &outline, const OutlineGrid &grid, const Eigen::RowVector2d &p,
+                 double tolerance)
 {
     double best = std::numeric_limits<double>::infinity();
     Eigen::Index bestEdge = 0;
     double bestParameter = 0.0;
-    for (Eigen::Index i = 0; i < outline.edgeCount(); ++i) {
+    const auto visit = [&](Eigen::Index i) {
         const Eigen::RowVector2d a = outline.a.row(i), e = outline.e.row(i);
         const double lambda = std::clamp((p - a).dot(e) * outline.invLength2(i), 0.0, 1.0);
         const double distance2 = (p - a - lambda * e).squaredNorm();
-        if (distance2 < best) {
+        if (distance2 < best || (distance2 == best && i < bestEdge)) {
             best = distance2;
             bestEdge = i;
             bestParameter = lambda;
         }
-    }
+    };
+    grid.visitNear(p, visit, [&] { return std::sqrt(best); });
     Foot foot;
     foot.point = outline.a.row(bestEdge) + bestParameter * outline.e.row(bestEdge);
     foot.distance = std::sqrt(best);
@@ -107,72 +111,81 @@ bool blockedAtStart(const MeshOutline &outline, Eigen::Index i, const Eigen::Row
 // Ignoring the near contacts reads the outline as the smooth curve it samples (in the spirit
 // of the λ-medial axis), while sharp corners and real opposite sides still stop the ball.
 // Without any such contact the nearest one of all is taken.
-double firstContact(const MeshOutline &outline, const Foot &foot, const Eigen::RowVector2d &n,
-                    const Eigen::RowVector2d &tangent, double tolerance, double minContactCos)
+double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const Foot &foot,
+                    const Eigen::RowVector2d &n, const Eigen::RowVector2d &tangent,
+                    double tolerance, double minContactCos)
 {
     const Eigen::RowVector2d b = foot.point;
     constexpr double kNone = std::numeric_limits<double>::infinity();
     double radius = kNone, anyRadius = kNone;
-    for (Eigen::Index i = 0; i < outline.edgeCount(); ++i) {
+    bool blocked = false;
+    const double tolerance2 = tolerance * tolerance;
+    const double chordFactor = 2.0 * (1.0 - minContactCos); // |q − b|² ≥ this × t²
+    const auto throughVertex = [&](int k) {
+        // |b + t·n − q|² = t²  ⇔  t = |q − b|² / (2 n·(q − b)).
+        const Eigen::RowVector2d w = outline.points.row(k) - b;
+        const double w2 = w.squaredNorm();
+        const double along = n.dot(w);
+        if (w2 <= tolerance2 || along <= 0.0)
+            return;
+        const double t = w2 / (2.0 * along);
+        if (t >= radius)
+            return;
+        anyRadius = std::min(anyRadius, t);
+        if (w2 >= chordFactor * t * t)
+            radius = t;
+    };
+    const auto visit = [&](Eigen::Index i) {
+        if (blocked)
+            return;
+        throughVertex(outline.ends(i, 0));
+        throughVertex(outline.ends(i, 1));
         if (i == foot.edge || outline.invLength2(i) == 0.0)
-            continue;
+            return;
         const Eigen::RowVector2d u = outline.inward.row(i);
         const bool significant = u.dot(tangent) <= minContactCos;
         // Signed distance of the centre to the edge's line, u·(b − a) + t·(u·n), equals t.
         const double offset = u.dot(b - outline.a.row(i));
         const double closing = 1.0 - u.dot(n);
         if (closing <= 1e-12)
-            continue; // the edge is parallel to the disc's growth
+            return; // the edge is parallel to the disc's growth
         if (std::abs(offset) <= tolerance) {
             if (blockedAtStart(outline, i, b, n)) {
-                if (significant)
-                    return 0.0;
+                blocked = significant;
                 anyRadius = 0.0;
             }
-            continue;
+            return;
         }
         const double t = offset / closing;
         if (t <= 0.0 || t >= radius)
-            continue;
+            return;
         const Eigen::RowVector2d contact = b + t * (n - u);
         const double lambda =
             (contact - outline.a.row(i)).dot(outline.e.row(i)) * outline.invLength2(i);
         if (lambda < -kParameterSlack || lambda > 1.0 + kParameterSlack)
-            continue;
+            return;
         if (significant)
             radius = t;
         anyRadius = std::min(anyRadius, t);
-    }
-    const double tolerance2 = tolerance * tolerance;
-    const double chordFactor = 2.0 * (1.0 - minContactCos); // |q − b|² ≥ this × t²
-    for (Eigen::Index k = 0; k < outline.points.rows(); ++k) {
-        // |b + t·n − q|² = t²  ⇔  t = |q − b|² / (2 n·(q − b)).
-        const Eigen::RowVector2d w = outline.points.row(k) - b;
-        const double w2 = w.squaredNorm();
-        const double along = n.dot(w);
-        if (w2 <= tolerance2 || along <= 0.0)
-            continue;
-        const double t = w2 / (2.0 * along);
-        if (t >= radius)
-            continue;
-        anyRadius = std::min(anyRadius, t);
-        if (w2 >= chordFactor * t * t)
-            radius = t;
-    }
+    };
+    // Any point of a disc through b lies within its diameter of b.
+    grid.visitNear(b, visit, [&] { return blocked ? -1.0 : 2.0 * radius; });
+    if (blocked)
+        return 0.0;
     return radius < kNone ? radius : anyRadius;
 }
 
 } // namespace
 
-MedialBall medialBall(const MeshOutline &outline, const Eigen::RowVector2d &p, int slot,
-                      double tolerance, double minContactCos)
+MedialBall medialBall(const MeshOutline &outline, const OutlineGrid &grid,
+                      const Eigen::RowVector2d &p, int slot, double tolerance, double minContactCos)
 {
     Foot foot;
     if (slot >= 0) {
         foot.point = p;
         foot.direction = outline.bisector.row(slot);
     } else {
-        foot = nearestFoot(outline, p, tolerance);
+        foot = nearestFoot(outline, grid, p, tolerance);
     }
     MedialBall ball;
     ball.direction = growthDirection(outline, foot, minContactCos);
@@ -180,7 +193,7 @@ MedialBall medialBall(const MeshOutline &outline, const Eigen::RowVector2d &p, i
     const Eigen::RowVector2d tangent =
         foot.edge >= 0 ? Eigen::RowVector2d(outline.inward.row(foot.edge)) : foot.direction;
     const double radius =
-        firstContact(outline, foot, ball.direction, tangent, tolerance, minContactCos);
+        firstContact(outline, grid, foot, ball.direction, tangent, tolerance, minContactCos);
     ball.radius = std::isfinite(radius) ? radius : ball.depth;
     ball.centre = foot.point + ball.radius * ball.direction;
     return ball;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "mesh_outline.h"
+#include "outline_grid.h"
 
 #include <Eigen/Core>
 
@@ -16,10 +17,11 @@ struct MedialBall {
     double radius = 0.0;          // r ≥ 0
 };
 
-// p is a mesh vertex; slot is its row in outline.points or −1 (meshOutline). `tolerance` is
-// a length (px) below which points coincide, relative to the drawing's size.
-// `minContactCos`: cos of the contact angle (InflateOptions::contactAngleDegrees).
-MedialBall medialBall(const MeshOutline &outline, const Eigen::RowVector2d &p, int slot,
-                      double tolerance, double minContactCos);
+// p is a mesh vertex; grid is built on outline; slot is its row in outline.points or −1
+// (meshOutline). `tolerance` is a length (px) below which points coincide, relative to the
+// drawing's size. `minContactCos`: cos of the contact angle (InflateOptions::contactAngleDegrees).
+MedialBall medialBall(const MeshOutline &outline, const OutlineGrid &grid,
+                      const Eigen::RowVector2d &p, int slot, double tolerance,
+                      double minContactCos);
 
 } // namespace finbook::geometry::inflate_detail
