@@ -138,8 +138,8 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
     const auto visit = [&](Eigen::Index i) {
         if (blocked)
             return;
+        // Every outline vertex starts one edge, and that edge is filed in the vertex's cell.
         throughVertex(outline.ends(i, 0));
-        throughVertex(outline.ends(i, 1));
         if (i == foot.edge || outline.invLength2(i) == 0.0)
             return;
         const Eigen::RowVector2d u = outline.inward.row(i);
@@ -190,6 +190,10 @@ MedialBall medialBall(const MeshOutline &outline, const OutlineGrid &grid,
     MedialBall ball;
     ball.direction = growthDirection(outline, foot, minContactCos);
     ball.depth = foot.distance;
+    if (slot >= 0) {
+        ball.centre = p;
+        return ball; // on the outline the height is 0 and the normal −n, whatever the radius
+    }
     const Eigen::RowVector2d tangent =
         foot.edge >= 0 ? Eigen::RowVector2d(outline.inward.row(foot.edge)) : foot.direction;
     const double radius =

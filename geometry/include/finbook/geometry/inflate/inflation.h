@@ -51,8 +51,8 @@ struct InflateOptions {
 //   normal   n×3  unit; columns x, y along the canvas axes, z the height axis, toward the
 //                 viewer (so the frame (x, y, z) is left-handed; flip y for a right-handed one)
 //   depth    n    d, distance to the outline (0 on it)
-//   radius   n    r, medial radius of the ball through the vertex (r ≥ d; 0 only at a convex
-//                 outline corner, where the normal is the horizontal bisector)
+//   radius   n    r, radius of the ball through the vertex; 0 on the outline (the height is
+//                 0 and the normal horizontal there whatever r is, so it is not searched)
 //   outline  n    1 for vertices on the mesh outline (on a boundary edge), else 0
 struct Inflation {
     Eigen::MatrixX2d V;
