@@ -122,6 +122,7 @@ class TestInflateObj : public QObject {
 private slots:
     void solidIsClosedAndOutward_data();
     void solidIsClosedAndOutward();
+    void chordsAreSplit();
     void severalObjectsShareOneFile();
     void numbersIgnoreTheLocale();
 };
@@ -187,6 +188,28 @@ void TestInflateObj::solidIsClosedAndOutward()
     QVERIFY(std::abs(volume - 2.0 * inflatedVolume(inflation)) <= 1e-9 * volume);
     QVERIFY(std::abs(signedVolume(solid) - volume) <= 1e-9 * volume);
     QCOMPARE(agreeing, long(obj.f.size()));
+}
+
+void TestInflateObj::chordsAreSplit()
+{
+    // A square of two triangles: the diagonal joins two outline vertices. Unsplit, the solid
+    // would pinch to a line there with four triangles on it.
+    const Eigen::MatrixX2d V = rows({{0, 0}, {10, 0}, {10, 10}, {0, 10}});
+    Eigen::MatrixX3i F(2, 3);
+    F << 0, 1, 2, 0, 2, 3;
+    const auto inflation = inflateMesh(V, F);
+    QVERIFY(inflation.hasValue());
+    QCOMPARE(inflation->V.rows(), Eigen::Index(5));
+    QCOMPARE(Eigen::MatrixX2d(inflation->V.topRows(4)), V);
+    QCOMPARE(inflation->V.row(4), Eigen::RowVector2d(5, 5));
+    QCOMPARE(inflation->outline.sum(), 4);
+    QVERIFY(inflation->height(4) > 4.0); // the square's inscribed circle has radius 5
+    QVERIFY(std::abs(inflation->normal(4, 2) - 1.0) <= 1e-9);
+    QCOMPARE(inflation->F.rows(), Eigen::Index(4));
+    const ParsedObj obj = parseObj(objText({{"square", inflatedSolid(*inflation)}}));
+    QCOMPARE(obj.v.size(), std::size_t(6));
+    QVERIFY(isClosedAndOriented(obj.f));
+    QCOMPARE(eulerCharacteristic(obj), 2L);
 }
 
 void TestInflateObj::severalObjectsShareOneFile()

@@ -1,6 +1,7 @@
 #include "medial_ball.h"
 #include "mesh_outline.h"
 #include "outline_grid.h"
+#include "split_chords.h"
 
 #include <finbook/geometry/inflate/inflation.h>
 
@@ -56,15 +57,19 @@ std::optional<GeometryError> checkInput(const Eigen::MatrixX2d &V, const Eigen::
 
 } // namespace
 
-Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &input,
+                                               const Eigen::MatrixX3i &inputF,
                                                const InflateOptions &options)
 {
     if (!(options.contactAngleDegrees > 0.0 && options.contactAngleDegrees < 180.0))
         return failure(GeometryErrorCode::InvalidOptions,
                        "The inflation's contact angle must lie between 0 and 180 degrees.");
-    if (auto error = checkInput(V, F))
+    if (auto error = checkInput(input, inputF))
         return unexpected(*error);
     const double minContactCos = std::cos(options.contactAngleDegrees * M_PI / 180.0);
+    Eigen::MatrixX2d V = input;
+    Eigen::MatrixX3i F = inputF;
+    inflate_detail::splitOutlineChords(V, F);
     const inflate_detail::MeshOutline outline = inflate_detail::meshOutline(V, F);
     if (outline.edgeCount() == 0)
         return failure(GeometryErrorCode::DegenerateRegion,

@@ -44,9 +44,13 @@ struct InflateOptions {
     double contactAngleDegrees = 60.0; // in (0, 180)
 };
 
-// One value per vertex of the inflated mesh (n rows), V and F as given.
-//   V        n×2  canvas px (x right, y down)
-//   F        m×3  triangles, positive shoelace area (object_mesh.h)
+// One value per vertex of the inflated mesh (n rows): the given mesh with every chord (an
+// interior edge joining two outline vertices, across a part one triangle wide) split at its
+// midpoint, so the surface does not pinch to height 0 along it.
+//   V        n×2  canvas px (x right, y down): the given vertices in their order, then one
+//                 per chord (n = the given count when there is no chord)
+//   F        m×3  triangles, positive shoelace area (object_mesh.h); the given ones where no
+//                 chord was split
 //   height   n    h ≥ 0, exactly 0 on the outline, ≤ radius
 //   normal   n×3  unit; columns x, y along the canvas axes, z the height axis, toward the
 //                 viewer (so the frame (x, y, z) is left-handed; flip y for a right-handed one)
