@@ -55,6 +55,16 @@ std::optional<GeometryError> checkInput(const Eigen::MatrixX2d &V, const Eigen::
     return std::nullopt;
 }
 
+// Mean length of the triangles' edges (interior ones counted twice): the mesh's resolution.
+double meanEdgeLength(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
+{
+    double sum = 0.0;
+    for (Eigen::Index f = 0; f < F.rows(); ++f)
+        for (int k = 0; k < 3; ++k)
+            sum += (V.row(F(f, k)) - V.row(F(f, (k + 1) % 3))).norm();
+    return sum / double(3 * F.rows());
+}
+
 } // namespace
 
 Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &input,
@@ -64,16 +74,21 @@ Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &input,
     if (!(options.contactAngleDegrees > 0.0 && options.contactAngleDegrees < 180.0))
         return failure(GeometryErrorCode::InvalidOptions,
                        "The inflation's contact angle must lie between 0 and 180 degrees.");
+    if (!(options.outlineSmoothing >= 0.0 && options.outlineSmoothing <= 100.0))
+        return failure(GeometryErrorCode::InvalidOptions,
+                       "The inflation's outline smoothing must lie between 0 and 100.");
     if (auto error = checkInput(input, inputF))
         return unexpected(*error);
     const double minContactCos = std::cos(options.contactAngleDegrees * M_PI / 180.0);
     Eigen::MatrixX2d V = input;
     Eigen::MatrixX3i F = inputF;
     inflate_detail::splitOutlineChords(V, F);
-    const inflate_detail::MeshOutline outline = inflate_detail::meshOutline(V, F);
+    inflate_detail::MeshOutline outline = inflate_detail::meshOutline(V, F);
     if (outline.edgeCount() == 0)
         return failure(GeometryErrorCode::DegenerateRegion,
                        "The mesh has no outline, so it cannot be inflated.");
+    inflate_detail::smoothOutlineNormals(outline,
+                                         options.outlineSmoothing * meanEdgeLength(input, inputF));
     const inflate_detail::OutlineGrid grid(outline);
     const double size = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
     const double tolerance = kRelativeTolerance * std::max(size, 1e-300);
@@ -102,7 +117,7 @@ Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &input,
             continue;
         }
         const Eigen::RowVector2d fromCentre = V.row(i) - ball.centre;
-        const double h = std::sqrt(std::max(0.0, r * r - fromCentre.squaredNorm()));
+        const double h = ball.height;
         result.height(i) = h;
         const Eigen::RowVector3d normal(fromCentre.x(), fromCentre.y(), h);
         const double length = normal.norm();

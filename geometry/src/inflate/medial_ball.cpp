@@ -11,17 +11,21 @@ namespace {
 
 // Slack on an edge's parameter (0 at its start, 1 at its end) for a contact on its end.
 constexpr double kParameterSlack = 1e-9;
+// Beyond this angle (cos of 2°) between the smoothed direction and the exact ray through the
+// vertex, the ball along the exact ray is grown too (see medialBall).
+constexpr double kExactCos = 0.99939;
 
 struct Foot {
     Eigen::RowVector2d point;     // b
     Eigen::RowVector2d direction; // from b toward p (or the outline's normal when p is on it)
     double distance = 0.0;
-    Eigen::Index edge = -1; // the edge whose inside holds b, −1 at a corner
-    double lambda = 0.0;    // b's parameter on that edge
+    Eigen::Index edge = -1;       // the edge whose inside holds b, −1 at a corner
+    Eigen::Index nearestEdge = 0; // the edge b was found on, at parameter lambda
+    double lambda = 0.0;
 };
 
 // Nearest outline point of an interior vertex, and the direction from it to the vertex. A
-// vertex (numerically) on the outline takes the edge's normal or the corner's bisector.
+// vertex (numerically) on the outline takes the edge's or the corner's normal.
 Foot nearestFoot(const MeshOutline &outline, const OutlineGrid &grid, const Eigen::RowVector2d &p,
                  double tolerance)
 {
@@ -42,6 +46,7 @@ Foot nearestFoot(const MeshOutline &outline, const OutlineGrid &grid, const Eige
     Foot foot;
     foot.point = outline.a.row(bestEdge) + bestParameter * outline.e.row(bestEdge);
     foot.distance = std::sqrt(best);
+    foot.nearestEdge = bestEdge;
     foot.lambda = bestParameter;
     const bool inside = bestParameter > 0.0 && bestParameter < 1.0;
     if (inside)
@@ -52,34 +57,22 @@ Foot nearestFoot(const MeshOutline &outline, const OutlineGrid &grid, const Eige
         foot.direction = outline.inward.row(bestEdge);
         foot.distance = 0.0;
     } else {
-        foot.direction = outline.bisector.row(outline.ends(bestEdge, bestParameter > 0.5 ? 1 : 0));
+        foot.direction = outline.normal.row(outline.ends(bestEdge, bestParameter > 0.5 ? 1 : 0));
         foot.distance = 0.0;
     }
     return foot;
 }
 
-// The direction the ball grows in. On an edge, its normal, blended over the half of the edge
-// next to a corner that turns less than the contact angle into that corner's bisector (as
-// Phong normals do): the outline is then read as the smooth curve it samples, whose normals
-// turn continuously. Straight normals would miss a sampled circle's centre by up to half an
-// edge, and the radius and the normals would ripple with the sampling. Reflex corners need
-// nothing: there the corner's own wedge already turns the direction from edge to edge, and
-// sharp convex corners keep their crease.
-Eigen::RowVector2d growthDirection(const MeshOutline &outline, const Foot &foot,
-                                   double minContactCos)
+// The direction the ball grows in: the outline's smoothed normal, interpolated along the edge
+// (like a Phong normal), so it turns continuously along the outline; at a corner, whatever
+// side of it the point lies on, the corner's own normal.
+Eigen::RowVector2d growthDirection(const MeshOutline &outline, const Foot &foot)
 {
-    if (foot.edge < 0)
-        return foot.direction;
-    Eigen::RowVector2d n = outline.inward.row(foot.edge);
-    const auto smoothCorner = [&](int k) {
-        return outline.convex(k) && outline.turnCos(k) > minContactCos;
-    };
-    const int start = outline.ends(foot.edge, 0), end = outline.ends(foot.edge, 1);
-    if (foot.lambda < 0.5 && smoothCorner(start))
-        n += (1.0 - 2.0 * foot.lambda) * (outline.bisector.row(start) - n);
-    else if (foot.lambda > 0.5 && smoothCorner(end))
-        n += (2.0 * foot.lambda - 1.0) * (outline.bisector.row(end) - n);
-    return n / n.norm();
+    const Eigen::Index i = foot.nearestEdge;
+    const Eigen::RowVector2d n = (1.0 - foot.lambda) * outline.normal.row(outline.ends(i, 0)) +
+                                 foot.lambda * outline.normal.row(outline.ends(i, 1));
+    const double length = n.norm();
+    return length > 1e-12 ? Eigen::RowVector2d(n / length) : foot.direction;
 }
 
 // A disc growing from b along n that meets edge i's line already at b (b lies on that line):
@@ -104,7 +97,7 @@ bool blockedAtStart(const MeshOutline &outline, Eigen::Index i, const Eigen::Row
 // that b lies inside never stops the disc.
 //
 // A contact stops the disc only if it is at least the contact angle away from b: an edge
-// whose normal turns that far from the outline's normal at b (`tangent`), a vertex seen from
+// whose normal turns that far from the disc's growth direction n, a vertex seen from
 // the centre at that angle from b. A polygon has a medial-axis branch at every convex vertex,
 // however slight its turn: on a 128-gon the largest disc touching a chord near a vertex has a
 // radius of a few percent of the circle's, and the height would ripple with the sampling.
@@ -112,8 +105,7 @@ bool blockedAtStart(const MeshOutline &outline, Eigen::Index i, const Eigen::Row
 // of the λ-medial axis), while sharp corners and real opposite sides still stop the ball.
 // Without any such contact the nearest one of all is taken.
 double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const Foot &foot,
-                    const Eigen::RowVector2d &n, const Eigen::RowVector2d &tangent,
-                    double tolerance, double minContactCos)
+                    const Eigen::RowVector2d &n, double tolerance, double minContactCos)
 {
     const Eigen::RowVector2d b = foot.point;
     constexpr double kNone = std::numeric_limits<double>::infinity();
@@ -143,7 +135,7 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
         if (i == foot.edge || outline.invLength2(i) == 0.0)
             return;
         const Eigen::RowVector2d u = outline.inward.row(i);
-        const bool significant = u.dot(tangent) <= minContactCos;
+        const bool significant = u.dot(n) <= minContactCos;
         // Signed distance of the centre to the edge's line, u·(b − a) + t·(u·n), equals t.
         const double offset = u.dot(b - outline.a.row(i));
         const double closing = 1.0 - u.dot(n);
@@ -180,26 +172,36 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
 MedialBall medialBall(const MeshOutline &outline, const OutlineGrid &grid,
                       const Eigen::RowVector2d &p, int slot, double tolerance, double minContactCos)
 {
-    Foot foot;
     if (slot >= 0) {
-        foot.point = p;
-        foot.direction = outline.bisector.row(slot);
-    } else {
-        foot = nearestFoot(outline, grid, p, tolerance);
-    }
-    MedialBall ball;
-    ball.direction = growthDirection(outline, foot, minContactCos);
-    ball.depth = foot.distance;
-    if (slot >= 0) {
+        MedialBall ball;
+        ball.direction = outline.normal.row(slot);
         ball.centre = p;
         return ball; // on the outline the height is 0 and the normal −n, whatever the radius
     }
-    const Eigen::RowVector2d tangent =
-        foot.edge >= 0 ? Eigen::RowVector2d(outline.inward.row(foot.edge)) : foot.direction;
-    const double radius =
-        firstContact(outline, grid, foot, ball.direction, tangent, tolerance, minContactCos);
-    ball.radius = std::isfinite(radius) ? radius : ball.depth;
-    ball.centre = foot.point + ball.radius * ball.direction;
+    const Foot foot = nearestFoot(outline, grid, p, tolerance);
+    const auto grow = [&](const Eigen::RowVector2d &n, bool throughP) {
+        MedialBall ball;
+        ball.direction = n;
+        ball.depth = foot.distance;
+        const double radius = firstContact(outline, grid, foot, n, tolerance, minContactCos);
+        ball.radius = std::isfinite(radius) ? radius : foot.distance;
+        if (throughP) // p lies on the ray and the disc of radius d around it is empty
+            ball.radius = std::max(ball.radius, foot.distance);
+        ball.centre = foot.point + ball.radius * n;
+        ball.height =
+            std::sqrt(std::max(0.0, ball.radius * ball.radius - (p - ball.centre).squaredNorm()));
+        return ball;
+    };
+    // The smoothed direction misses p where the outline bends sharply (a reflex corner's
+    // wedge, a notch between fingers): its ball, stopped by the wall it leans toward, may not
+    // reach p. The ball along the exact ray from b through p always does; of the two the
+    // higher one wins, as in a union of balls.
+    MedialBall ball = grow(growthDirection(outline, foot), false);
+    if (foot.distance > tolerance && ball.direction.dot(foot.direction) < kExactCos) {
+        MedialBall exact = grow(foot.direction, true);
+        if (exact.height > ball.height)
+            ball = exact;
+    }
     return ball;
 }
 

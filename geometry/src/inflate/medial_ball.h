@@ -15,6 +15,7 @@ struct MedialBall {
     Eigen::RowVector2d direction; // n, unit, into the shape
     double depth = 0.0;           // d = |p − b|
     double radius = 0.0;          // r ≥ 0; 0 for outline vertices (not searched)
+    double height = 0.0;          // sqrt(r² − |p − m|²), 0 on the outline
 };
 
 // p is a mesh vertex; grid is built on outline; slot is its row in outline.points or −1

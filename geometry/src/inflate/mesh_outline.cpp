@@ -52,9 +52,9 @@ MeshOutline meshOutline(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
                 outline.slot[std::size_t(v)] = K++;
     outline.points.resize(K, 2);
     outline.bisector.setZero(K, 2);
-    // Per outline vertex: edges in and out, and the turn (cross product of in and out).
+    outline.edgeIn.setConstant(K, -1);
+    outline.edgeOut.setConstant(K, -1);
     Eigen::VectorXi edgesAt = Eigen::VectorXi::Zero(K);
-    Eigen::MatrixX2d in = Eigen::MatrixX2d::Zero(K, 2), out = Eigen::MatrixX2d::Zero(K, 2);
     for (Eigen::Index i = 0; i < B; ++i) {
         const auto [from, to] = edges[std::size_t(i)];
         const Eigen::RowVector2d e = V.row(to) - V.row(from);
@@ -70,18 +70,12 @@ MeshOutline meshOutline(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
             outline.bisector.row(k) += outline.inward.row(i);
             ++edgesAt(k);
         }
-        out.row(outline.slot[std::size_t(from)]) = e;
-        in.row(outline.slot[std::size_t(to)]) = e;
+        outline.edgeOut(outline.ends(i, 0)) = int(i);
+        outline.edgeIn(outline.ends(i, 1)) = int(i);
     }
-    outline.convex.resize(K);
-    outline.turnCos.resize(K);
-    for (int k = 0; k < K; ++k) {
-        const double lengths = in.row(k).norm() * out.row(k).norm();
-        outline.turnCos(k) =
-            edgesAt(k) == 2 && lengths > 0.0 ? in.row(k).dot(out.row(k)) / lengths : -1.0;
-        outline.convex(k) =
-            edgesAt(k) == 2 && in(k, 0) * out(k, 1) - in(k, 1) * out(k, 0) > 0.0 ? 1 : 0;
-    }
+    for (int k = 0; k < K; ++k)
+        if (edgesAt(k) != 2)
+            outline.edgeIn(k) = outline.edgeOut(k) = -1;
     // Normals of the two edges at a vertex sum to its inward bisector. A hairpin (edges folding
     // back) cancels them: then any edge's normal is the best guess, and the vertex is a tip.
     for (Eigen::Index i = 0; i < B; ++i) {
@@ -105,7 +99,38 @@ MeshOutline meshOutline(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
         else
             outline.bisector.row(k) << 1.0, 0.0;
     }
+    outline.normal = outline.bisector;
     return outline;
+}
+
+void smoothOutlineNormals(MeshOutline &outline, double window)
+{
+    const Eigen::Index K = outline.points.rows(), B = outline.edgeCount();
+    const Eigen::VectorXd lengths = outline.e.rowwise().norm();
+    for (Eigen::Index k = 0; k < K; ++k) {
+        if (outline.edgeIn(k) < 0 || outline.edgeOut(k) < 0)
+            continue; // pinched: keep the bisector
+        Eigen::RowVector2d sum = Eigen::RowVector2d::Zero();
+        // Forward along the edges leaving k, then backward along those entering it.
+        for (const bool forward : {true, false}) {
+            int edge = forward ? outline.edgeOut(k) : outline.edgeIn(k);
+            double distance = 0.0;
+            for (Eigen::Index step = 0; edge >= 0 && step < B; ++step) {
+                const double weight = window > 0.0 ? 1.0 - distance / window : 0.0;
+                if (step > 0 && weight <= 0.0)
+                    break;
+                sum += (step == 0 ? 1.0 : weight) * lengths(edge) * outline.inward.row(edge);
+                distance += lengths(edge);
+                const int next = outline.ends(edge, forward ? 1 : 0);
+                if (next == int(k))
+                    break; // around a whole small loop
+                edge = forward ? outline.edgeOut(next) : outline.edgeIn(next);
+            }
+        }
+        const double norm = sum.norm();
+        if (norm > 1e-12 * std::max(1.0, lengths.maxCoeff()))
+            outline.normal.row(k) = sum / norm;
+    }
 }
 
 } // namespace finbook::geometry::inflate_detail

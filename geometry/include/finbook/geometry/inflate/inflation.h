@@ -18,12 +18,14 @@
 // cannot be round for both a disc and a strip (their aspect ratios differ by √2) and needs a
 // sparse solve; this one is per vertex, needs no solver and cannot fail to converge.
 //
-// The outline is a polygon sampling a drawn curve, and a polygon's medial axis has a branch
-// at every convex vertex: read literally, the balls near each vertex shrink and the surface
-// ripples with the sampling. So (InflateOptions::contactAngleDegrees) a corner that turns
-// less than the contact angle is read as smooth: the disc ignores contacts that close to b,
-// and n is blended toward that corner's bisector like a Phong normal. Sharper corners keep
-// their medial branch and give a crease, as in any union of balls.
+// The outline is a polygon sampling a drawn curve (pixel steps, pen jitter, the mesher's
+// splits), and a polygon's medial axis has a branch at every convex vertex: read literally,
+// the balls near each vertex shrink and the surface ripples with the sampling. So n is the
+// outline's normal smoothed over about one mesh edge (InflateOptions::outlineSmoothing) and
+// interpolated along each edge like a Phong normal, and a contact stops the ball only if it
+// lies at least the contact angle away from b (InflateOptions::contactAngleDegrees), in the
+// spirit of the λ-medial axis: real opposite sides and corners sharper than the angle at the
+// smoothing's scale still stop it. A sharp corner gives a crease, as in any union of balls.
 //
 // Cost: O(n · B) for n vertices and B outline edges (≈ 1500 × 300 at the default mesh size).
 // Overlapping regions of one object are not layered here: inflate each region's mesh.
@@ -42,6 +44,9 @@ struct InflateOptions {
     // (degrees, seen from the ball's centre) from the point the ball grows from. Corners that
     // turn less are read as a smoothly sampled curve, sharper ones keep their medial branch.
     double contactAngleDegrees = 60.0; // in (0, 180)
+    // Length along the outline over which its normals are averaged, in mean mesh edge lengths:
+    // detail below the mesh's resolution is not shape. 0 keeps the corners' bisectors.
+    double outlineSmoothing = 1.0; // in [0, 100]
 };
 
 // One value per vertex of the inflated mesh (n rows): the given mesh with every chord (an
@@ -73,7 +78,7 @@ struct Inflation {
 // Errors: EmptyInput (no vertex or no triangle), NonFiniteInput (NaN or infinite coordinate),
 // CoordinateOutOfRange (beyond kMaxCoordinate), InvalidIndex (a triangle names a missing
 // vertex or repeats one), DegenerateRegion (a triangle of zero or negative area, or no
-// outline), InvalidOptions (contactAngleDegrees outside (0, 180)). Promise: every value finite,
+// outline), InvalidOptions (an option outside its range). Promise: every value finite,
 // normals unit.
 Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                                const InflateOptions &options = {});
