@@ -72,6 +72,7 @@ private slots:
     void discNormalsMatchTheSurface();
     void capsuleCrossSectionIsRound();
     void annulusInflatesToATube();
+    void pixelStaircaseInflatesLikeItsLine();
     void outlineIsFlatAndVertical();
     void scalesWithTheDrawing();
     void singleTriangleStaysFinite();
@@ -177,6 +178,47 @@ void TestInflate::annulusInflatesToATube()
     QVERIFY(stats.vertices >= 128 + 64);
     QCOMPARE(stats.flat, stats.vertices);
     QCOMPARE(stats.vertical, stats.vertices);
+}
+
+void TestInflate::pixelStaircaseInflatesLikeItsLine()
+{
+    // A diagonal band traced in 1 px steps, as a bitmap's contour is: between the staircases
+    // along y = x − c and y = x + c. It must inflate like the smooth band (a round tube of
+    // half-width c/√2), not ribbed by a medial branch at every step.
+    const int steps = 160;
+    const double c = 30.0;
+    std::vector<std::pair<double, double>> points;
+    for (int i = 0; i < steps; ++i) {
+        points.emplace_back(i, i - c);
+        points.emplace_back(i + 1, i - c);
+    }
+    for (int i = steps; i > 0; --i) {
+        points.emplace_back(i, i + c);
+        points.emplace_back(i - 1, i + c);
+    }
+    Eigen::MatrixX2d ring(Eigen::Index(points.size()), 2);
+    for (std::size_t i = 0; i < points.size(); ++i)
+        ring.row(Eigen::Index(i)) << points[i].first, points[i].second;
+    const Inflation band = inflated(Region{Polygon{ring, {}}});
+    // The steps' mean line lies half a step outside each staircase's corners.
+    const double halfWidth = (c + 0.5) / std::sqrt(2.0);
+    std::vector<double> errors;
+    for (Eigen::Index i = 0; i < band.V.rows(); ++i) {
+        const double along = (band.V(i, 0) + band.V(i, 1)) / std::sqrt(2.0);
+        if (band.outline(i) || std::abs(along - steps / std::sqrt(2.0)) > steps / 4.0)
+            continue; // inside (the steps' corners are half a step off the line), off the ends
+        const double across = (band.V(i, 1) - band.V(i, 0)) / std::sqrt(2.0);
+        const double expected = std::sqrt(std::max(0.0, halfWidth * halfWidth - across * across));
+        errors.push_back(std::abs(band.height(i) - expected) / halfWidth);
+    }
+    std::sort(errors.begin(), errors.end());
+    qInfo("staircase band: %zu vertices, |h - tube| median %.2f%%, p90 %.2f%%, max %.2f%% of the "
+          "half-width",
+          errors.size(), 100.0 * errors[errors.size() / 2], 100.0 * errors[errors.size() * 9 / 10],
+          100.0 * errors.back());
+    QVERIFY(errors.size() > 100);
+    QVERIFY(errors[errors.size() / 2] <= 0.03);
+    QVERIFY(errors[errors.size() * 9 / 10] <= 0.08);
 }
 
 void TestInflate::outlineIsFlatAndVertical()

@@ -79,7 +79,6 @@ Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &input,
                        "The inflation's outline smoothing must lie between 0 and 100.");
     if (auto error = checkInput(input, inputF))
         return unexpected(*error);
-    const double minContactCos = std::cos(options.contactAngleDegrees * M_PI / 180.0);
     Eigen::MatrixX2d V = input;
     Eigen::MatrixX3i F = inputF;
     inflate_detail::splitOutlineChords(V, F);
@@ -87,8 +86,12 @@ Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &input,
     if (outline.edgeCount() == 0)
         return failure(GeometryErrorCode::DegenerateRegion,
                        "The mesh has no outline, so it cannot be inflated.");
-    inflate_detail::smoothOutlineNormals(outline,
-                                         options.outlineSmoothing * meanEdgeLength(input, inputF));
+    // Outline detail below the smoothing length is not shape: it neither turns the normals
+    // nor stops a ball (unless across from it).
+    const double smoothing = options.outlineSmoothing * meanEdgeLength(input, inputF);
+    inflate_detail::smoothOutlineNormals(outline, smoothing);
+    const inflate_detail::ContactRule rule{std::cos(options.contactAngleDegrees * M_PI / 180.0),
+                                           smoothing};
     const inflate_detail::OutlineGrid grid(outline);
     const double size = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
     const double tolerance = kRelativeTolerance * std::max(size, 1e-300);
@@ -105,7 +108,7 @@ Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &input,
     for (Eigen::Index i = 0; i < n; ++i) {
         const int slot = outline.slot[std::size_t(i)];
         const inflate_detail::MedialBall ball =
-            inflate_detail::medialBall(outline, grid, V.row(i), slot, tolerance, minContactCos);
+            inflate_detail::medialBall(outline, grid, V.row(i), slot, tolerance, rule);
         const double r = ball.radius;
         result.depth(i) = ball.depth;
         result.radius(i) = r;

@@ -105,14 +105,18 @@ bool blockedAtStart(const MeshOutline &outline, Eigen::Index i, const Eigen::Row
 // of the λ-medial axis), while sharp corners and real opposite sides still stop the ball.
 // Without any such contact the nearest one of all is taken.
 double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const Foot &foot,
-                    const Eigen::RowVector2d &n, double tolerance, double minContactCos)
+                    const Eigen::RowVector2d &n, double tolerance, const ContactRule &rule)
 {
     const Eigen::RowVector2d b = foot.point;
     constexpr double kNone = std::numeric_limits<double>::infinity();
     double radius = kNone, anyRadius = kNone;
     bool blocked = false;
     const double tolerance2 = tolerance * tolerance;
-    const double chordFactor = 2.0 * (1.0 - minContactCos); // |q − b|² ≥ this × t²
+    const double minChord2 = rule.minChord * rule.minChord;
+    // cosAngle: of the angle at the centre between b and the contact; chord2: their distance².
+    const auto stops = [&](double cosAngle, double chord2) {
+        return cosAngle <= kOppositeCos || (cosAngle <= rule.minCos && chord2 >= minChord2);
+    };
     const auto throughVertex = [&](int k) {
         // |b + t·n − q|² = t²  ⇔  t = |q − b|² / (2 n·(q − b)).
         const Eigen::RowVector2d w = outline.points.row(k) - b;
@@ -124,7 +128,8 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
         if (t >= radius)
             return;
         anyRadius = std::min(anyRadius, t);
-        if (w2 >= chordFactor * t * t)
+        // |q − b|² = 2t²(1 − cos) for two points on a circle of radius t.
+        if (stops(1.0 - w2 / (2.0 * t * t), w2))
             radius = t;
     };
     const auto visit = [&](Eigen::Index i) {
@@ -135,7 +140,8 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
         if (i == foot.edge || outline.invLength2(i) == 0.0)
             return;
         const Eigen::RowVector2d u = outline.inward.row(i);
-        const bool significant = u.dot(n) <= minContactCos;
+        // Seen from the centre, b lies along −n and a tangent contact along −u.
+        const double cosAngle = u.dot(n);
         // Signed distance of the centre to the edge's line, u·(b − a) + t·(u·n), equals t.
         const double offset = u.dot(b - outline.a.row(i));
         const double closing = 1.0 - u.dot(n);
@@ -143,7 +149,7 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
             return; // the edge is parallel to the disc's growth
         if (std::abs(offset) <= tolerance) {
             if (blockedAtStart(outline, i, b, n)) {
-                blocked = significant;
+                blocked = stops(cosAngle, 0.0);
                 anyRadius = 0.0;
             }
             return;
@@ -156,7 +162,7 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
             (contact - outline.a.row(i)).dot(outline.e.row(i)) * outline.invLength2(i);
         if (lambda < -kParameterSlack || lambda > 1.0 + kParameterSlack)
             return;
-        if (significant)
+        if (stops(cosAngle, t * t * (n - u).squaredNorm()))
             radius = t;
         anyRadius = std::min(anyRadius, t);
     };
@@ -170,7 +176,8 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
 } // namespace
 
 MedialBall medialBall(const MeshOutline &outline, const OutlineGrid &grid,
-                      const Eigen::RowVector2d &p, int slot, double tolerance, double minContactCos)
+                      const Eigen::RowVector2d &p, int slot, double tolerance,
+                      const ContactRule &rule)
 {
     if (slot >= 0) {
         MedialBall ball;
@@ -183,7 +190,7 @@ MedialBall medialBall(const MeshOutline &outline, const OutlineGrid &grid,
         MedialBall ball;
         ball.direction = n;
         ball.depth = foot.distance;
-        const double radius = firstContact(outline, grid, foot, n, tolerance, minContactCos);
+        const double radius = firstContact(outline, grid, foot, n, tolerance, rule);
         ball.radius = std::isfinite(radius) ? radius : foot.distance;
         if (throughP) // p lies on the ray and the disc of radius d around it is empty
             ball.radius = std::max(ball.radius, foot.distance);

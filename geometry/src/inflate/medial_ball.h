@@ -18,11 +18,21 @@ struct MedialBall {
     double height = 0.0;          // sqrt(r² − |p − m|²), 0 on the outline
 };
 
+// When a point where a growing ball touches the outline stops it: if, seen from the ball's
+// centre, it lies at least the contact angle from b (cos ≤ minCos) and at least minChord (px)
+// from b, or if it lies across from b (cos ≤ kOppositeCos: a thin part's other side, a
+// spike's), however near.
+struct ContactRule {
+    double minCos = 0.5;
+    double minChord = 0.0;
+};
+inline constexpr double kOppositeCos = -0.7071; // 135°
+
 // p is a mesh vertex; grid is built on outline; slot is its row in outline.points or −1
 // (meshOutline). `tolerance` is a length (px) below which points coincide, relative to the
-// drawing's size. `minContactCos`: cos of the contact angle (InflateOptions::contactAngleDegrees).
+// drawing's size. `rule`: from InflateOptions (contactAngleDegrees, outlineSmoothing).
 MedialBall medialBall(const MeshOutline &outline, const OutlineGrid &grid,
                       const Eigen::RowVector2d &p, int slot, double tolerance,
-                      double minContactCos);
+                      const ContactRule &rule);
 
 } // namespace finbook::geometry::inflate_detail
