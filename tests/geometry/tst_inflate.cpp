@@ -293,6 +293,16 @@ void TestInflate::degenerateInputGivesErrors()
     Eigen::MatrixX3i repeated(1, 3);
     repeated << 0, 1, 1;
     expectError(rows({{0, 0}, {1, 0}, {0, 1}}), repeated, GeometryErrorCode::InvalidIndex);
+    const Eigen::MatrixX2d triangle = rows({{0, 0}, {1, 0}, {0, 1}});
+    for (const auto &[angle, smoothing] : std::vector<std::pair<double, double>>{
+             {0.0, 1.0}, {180.0, 1.0}, {nan, 1.0}, {60.0, -1.0}, {60.0, nan}, {60.0, 1e3}}) {
+        InflateOptions options;
+        options.contactAngleDegrees = angle;
+        options.outlineSmoothing = smoothing;
+        const auto result = inflateMesh(triangle, one, options);
+        QVERIFY(!result.hasValue());
+        QCOMPARE(int(result.error().code), int(GeometryErrorCode::InvalidOptions));
+    }
     // Through the region overload: an empty or zero-area region is refused by the mesher.
     QVERIFY(!inflateRegion(Region{}).hasValue());
     QVERIFY(!inflateRegion(Region{Polygon{rows({{0, 0}, {1, 1}, {2, 2}}), {}}}).hasValue());

@@ -22,13 +22,17 @@
 // splits), and a polygon's medial axis has a branch at every convex vertex: read literally,
 // the balls near each vertex shrink and the surface ripples with the sampling. So n is the
 // outline's normal smoothed over about one mesh edge (InflateOptions::outlineSmoothing) and
-// interpolated along each edge like a Phong normal, and a contact stops the ball only if it
-// lies at least the contact angle away from b (InflateOptions::contactAngleDegrees), in the
-// spirit of the λ-medial axis: real opposite sides and corners sharper than the angle at the
-// smoothing's scale still stop it. A sharp corner gives a crease, as in any union of balls.
+// interpolated along each edge like a Phong normal, and a contact stops the ball only if,
+// seen from its centre, it lies at least the contact angle (InflateOptions::
+// contactAngleDegrees) and the smoothing length away from b, or across from b (≥ 135°: a
+// thin part's other side), in the spirit of the λ-medial axis. Where the smoothed direction
+// misses p (a reflex corner's wedge, a notch), the ball along the exact ray from b through p
+// is grown too and the higher of the two kept, as in a union of balls. Corners sharper than
+// the angle at the smoothing's scale keep their crease.
 //
-// Cost: O(n · B) for n vertices and B outline edges (≈ 1500 × 300 at the default mesh size).
-// Overlapping regions of one object are not layered here: inflate each region's mesh.
+// Cost: per vertex, the outline edges within 2r of b (a uniform grid finds them nearest
+// first): O(n · B) at worst, for n vertices and B outline edges; the grid makes thin parts
+// cheap. Overlapping regions of one object are not layered here: inflate each region's mesh.
 #pragma once
 
 #include <finbook/geometry/expected.h>
@@ -41,11 +45,13 @@ namespace finbook::geometry {
 
 struct InflateOptions {
     // A point where the ball touches the outline stops it only if it lies at least this angle
-    // (degrees, seen from the ball's centre) from the point the ball grows from. Corners that
-    // turn less are read as a smoothly sampled curve, sharper ones keep their medial branch.
+    // (degrees, seen from the ball's centre) from the point the ball grows from (and at least
+    // the smoothing length, unless across from it). Corners that turn less are read as a
+    // smoothly sampled curve, sharper ones keep their medial branch.
     double contactAngleDegrees = 60.0; // in (0, 180)
-    // Length along the outline over which its normals are averaged, in mean mesh edge lengths:
-    // detail below the mesh's resolution is not shape. 0 keeps the corners' bisectors.
+    // Length along the outline over which its normals are averaged, and below which contacts
+    // are ignored, in mean mesh edge lengths: detail below the mesh's resolution is not shape.
+    // 0 reads the polygon literally (corners' bisectors, every contact).
     double outlineSmoothing = 1.0; // in [0, 100]
 };
 
