@@ -76,6 +76,7 @@ private slots:
     void outlineIsFlatAndVertical();
     void scalesWithTheDrawing();
     void singleTriangleStaysFinite();
+    void lobesTouchingAtAPointStayFinite();
     void degenerateInputGivesErrors();
     void realShapes_data();
     void realShapes();
@@ -263,6 +264,33 @@ void TestInflate::singleTriangleStaysFinite()
     checkInflation(*result);
     QCOMPARE(result->height.maxCoeff(), 0.0);
     QCOMPARE(inflatedVolume(*result), 0.0);
+}
+
+void TestInflate::lobesTouchingAtAPointStayFinite()
+{
+    // Two discs meshed apart and joined at one shared vertex (a region "simple up to touching
+    // points"): that vertex has four outline edges and no single inward direction.
+    const Inflation left = inflated(Region{Polygon{circle(48, 40.0, {-40.0, 0.0}), {}}});
+    Eigen::MatrixX2d V(2 * left.V.rows(), 2);
+    V.topRows(left.V.rows()) = left.V;
+    V.bottomRows(left.V.rows()) = -left.V; // the mirror image touches at the origin
+    Eigen::MatrixX3i F(2 * left.F.rows(), 3);
+    F.topRows(left.F.rows()) = left.F;
+    F.bottomRows(left.F.rows()) = left.F.array() + int(left.V.rows());
+    // Weld the mirrored copy of the touching vertex (the one at the origin) to the original.
+    Eigen::Index touch = 0;
+    left.V.rowwise().squaredNorm().minCoeff(&touch);
+    QVERIFY(left.V.row(touch).norm() < 1e-9);
+    for (Eigen::Index i = 0; i < F.size(); ++i)
+        if (F.data()[i] == int(left.V.rows() + touch))
+            F.data()[i] = int(touch);
+    V.row(left.V.rows() + touch) << 100.0, 100.0; // now unused, far away
+    Eigen::MatrixX3i used = F;
+    const auto result = inflateMesh(V, used);
+    QVERIFY2(result.hasValue(), result.hasValue() ? "" : result.error().message.c_str());
+    checkInflation(*result);
+    QCOMPARE(result->height(touch), 0.0);
+    QVERIFY(std::abs(result->height.maxCoeff() - 40.0) <= 0.03 * 40.0);
 }
 
 void TestInflate::degenerateInputGivesErrors()

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace finbook::geometry {
 namespace {
@@ -105,8 +106,17 @@ Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &input,
     result.depth.resize(n);
     result.radius.resize(n);
     result.outline.resize(n);
+    std::vector<char> used(std::size_t(n), 0);
+    for (Eigen::Index i = 0; i < F.size(); ++i)
+        used[std::size_t(F.data()[i])] = 1;
     for (Eigen::Index i = 0; i < n; ++i) {
         const int slot = outline.slot[std::size_t(i)];
+        if (!used[std::size_t(i)]) { // not part of the shape: flat, facing the viewer
+            result.height(i) = result.depth(i) = result.radius(i) = 0.0;
+            result.outline(i) = 0;
+            result.normal.row(i) << 0.0, 0.0, 1.0;
+            continue;
+        }
         const inflate_detail::MedialBall ball =
             inflate_detail::medialBall(outline, grid, V.row(i), slot, tolerance, rule);
         const double r = ball.radius;

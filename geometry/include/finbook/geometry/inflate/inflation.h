@@ -69,6 +69,8 @@ struct InflateOptions {
 //   radius   n    r, radius of the ball through the vertex; 0 on the outline (the height is
 //                 0 and the normal horizontal there whatever r is, so it is not searched)
 //   outline  n    1 for vertices on the mesh outline (on a boundary edge), else 0
+// A vertex no triangle uses is not part of the shape: height, depth and radius 0, normal
+// (0, 0, 1).
 struct Inflation {
     Eigen::MatrixX2d V;
     Eigen::MatrixX3i F;
