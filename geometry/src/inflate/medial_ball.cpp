@@ -120,9 +120,11 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
     const auto throughVertex = [&](int k) {
         // |b + t·n − q|² = t²  ⇔  t = |q − b|² / (2 n·(q − b)).
         const Eigen::RowVector2d w = outline.points.row(k) - b;
-        const double w2 = w.squaredNorm();
         const double along = n.dot(w);
-        if (w2 <= tolerance2 || along <= 0.0)
+        if (along <= 0.0)
+            return; // behind the disc's growth: never on it
+        const double w2 = w.squaredNorm();
+        if (w2 <= tolerance2)
             return;
         const double t = w2 / (2.0 * along);
         if (t >= radius)
@@ -140,13 +142,15 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
         if (i == foot.edge || outline.invLength2(i) == 0.0)
             return;
         const Eigen::RowVector2d u = outline.inward.row(i);
-        // Seen from the centre, b lies along −n and a tangent contact along −u.
-        const double cosAngle = u.dot(n);
         // Signed distance of the centre to the edge's line, u·(b − a) + t·(u·n), equals t.
         const double offset = u.dot(b - outline.a.row(i));
-        const double closing = 1.0 - u.dot(n);
-        if (closing <= 1e-12)
-            return; // the edge is parallel to the disc's growth
+        if (offset < -tolerance)
+            return; // b lies outside the edge's line: t would be negative
+        // Seen from the centre, b lies along −n and a tangent contact along −u.
+        const double cosAngle = u.dot(n);
+        const double closing = 1.0 - cosAngle;
+        if (closing <= 1e-12 || offset >= radius * closing)
+            return; // parallel to the disc's growth, or no nearer than the contact found
         if (std::abs(offset) <= tolerance) {
             if (blockedAtStart(outline, i, b, n)) {
                 blocked = stops(cosAngle, 0.0);
@@ -155,8 +159,6 @@ double firstContact(const MeshOutline &outline, const OutlineGrid &grid, const F
             return;
         }
         const double t = offset / closing;
-        if (t <= 0.0 || t >= radius)
-            return;
         const Eigen::RowVector2d contact = b + t * (n - u);
         const double lambda =
             (contact - outline.a.row(i)).dot(outline.e.row(i)) * outline.invLength2(i);
