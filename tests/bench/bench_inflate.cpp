@@ -1,4 +1,5 @@
-// finbook-bench inflate [--sheet OUT.png] [--obj OUT.obj] FILE...: inflation of each drawing's
+// finbook-bench inflate [--sheet OUT.png] [--obj OUT.obj] [--smoothing S] [--contact-angle A]
+// FILE...: inflation of each drawing's
 // shape (one object per file, shapes as tst_inflate reads them): time per object, inflated volume,
 // and the outline's share of zero heights and horizontal normals. One JSON object per file, then a
 // summary line. --sheet renders the normals of every file lit from the upper left, smooth and in
@@ -50,8 +51,8 @@ struct Totals {
     long outline = 0, flat = 0, vertical = 0;
 };
 
-QJsonObject measure(const QString &path, Totals &totals, finbook::bench::InflateSheet *sheet,
-                    bool keepSolid)
+QJsonObject measure(const QString &path, const InflateOptions &options, Totals &totals,
+                    finbook::bench::InflateSheet *sheet, bool keepSolid)
 {
     QJsonObject row{{QStringLiteral("file"), QFileInfo(path).fileName()}};
     QFile file(path);
@@ -77,7 +78,7 @@ QJsonObject measure(const QString &path, Totals &totals, finbook::bench::Inflate
     for (int run = 0; run < kRuns; ++run) {
         start = Clock::now();
         const double cpuStart = threadCpuMs();
-        auto result = inflateObjectMesh(*mesh);
+        auto result = inflateObjectMesh(*mesh, options);
         cpuMs.push_back(threadCpuMs() - cpuStart);
         inflateMs.push_back(msSince(start));
         if (!result) {
@@ -129,23 +130,34 @@ int benchInflate(const QStringList &arguments)
     };
     const QString sheetPath = option(QStringLiteral("--sheet"));
     const QString objPath = option(QStringLiteral("--obj"));
+    InflateOptions options;
+    const QString smoothing = option(QStringLiteral("--smoothing"));
+    const QString angle = option(QStringLiteral("--contact-angle"));
+    if (!smoothing.isEmpty())
+        options.outlineSmoothing = smoothing.toDouble();
+    if (!angle.isEmpty())
+        options.contactAngleDegrees = angle.toDouble();
     if (args.isEmpty()) {
-        std::fprintf(stderr,
-                     "usage: finbook-bench inflate [--sheet OUT.png] [--obj OUT.obj] FILE...\n");
+        std::fprintf(
+            stderr,
+            "usage: finbook-bench inflate [--sheet OUT.png] [--obj OUT.obj] [--smoothing S] "
+            "[--contact-angle A] FILE...\n");
         return 2;
     }
     finbook::bench::InflateSheet sheet;
     Totals totals;
     int failures = 0;
     for (const QString &path : args) {
-        const QJsonObject row =
-            measure(path, totals, sheetPath.isEmpty() ? nullptr : &sheet, !objPath.isEmpty());
+        const QJsonObject row = measure(path, options, totals,
+                                        sheetPath.isEmpty() ? nullptr : &sheet, !objPath.isEmpty());
         failures += row.contains(QStringLiteral("error")) ? 1 : 0;
         std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
         std::fflush(stdout);
     }
     const QJsonObject summary{
         {QStringLiteral("summary"), QStringLiteral("inflate")},
+        {QStringLiteral("outline_smoothing"), options.outlineSmoothing},
+        {QStringLiteral("contact_angle_deg"), options.contactAngleDegrees},
         {QStringLiteral("objects"), qint64(totals.inflateMs.size())},
         {QStringLiteral("failures"), failures},
         {QStringLiteral("inflate_ms_median"), median(totals.inflateMs)},
@@ -177,5 +189,7 @@ int benchInflate(const QStringList &arguments)
 
 } // namespace
 
-FINBOOK_BENCH("inflate", "[--sheet OUT.png] [--obj OUT.obj] FILE... (strokes or contours as JSON)",
+FINBOOK_BENCH("inflate",
+              "[--sheet OUT.png] [--obj OUT.obj] [--smoothing S] [--contact-angle A] FILE... "
+              "(strokes or contours as JSON)",
               benchInflate);
