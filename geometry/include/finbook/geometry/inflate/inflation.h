@@ -87,7 +87,8 @@ struct Inflation {
 // CoordinateOutOfRange (beyond kMaxCoordinate), InvalidIndex (a triangle names a missing
 // vertex or repeats one), DegenerateRegion (a triangle of zero or negative area, or no
 // outline), InvalidOptions (an option outside its range). Promise: every value finite,
-// normals unit.
+// normals unit. A pure function of its arguments (no shared state): safe to run on a worker
+// thread and concurrently.
 Expected<Inflation, GeometryError> inflateMesh(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                                const InflateOptions &options = {});
 
