@@ -1,0 +1,48 @@
+// The inflated shape as a closed 3D solid, and its OBJ text (issue 27's 3D export, RealSkel's
+// own output): the height field on top, its mirror image below the drawing's plane, joined
+// along the outline where the height is 0, so the surface is closed and encloses a volume.
+#pragma once
+
+#include <finbook/geometry/inflate/inflation.h>
+
+#include <Eigen/Core>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace finbook::geometry {
+
+// Right-handed, y up, as OBJ readers (Blender) expect: a canvas point (x, y) with height h
+// becomes (x, −y, h) on top and (x, −y, −h) below; units stay canvas px.
+//   V  k×3  vertices: the n inflation vertices (top), then one bottom copy of every vertex off
+//           the outline (outline vertices are shared by both halves)
+//   N  k×3  unit outward normals, per vertex
+//   F  2m×3 triangles, counter-clockwise seen from outside: the m top ones, then the m bottom
+// Promise: every edge is shared by exactly two triangles, once in each direction (closed
+// and consistently oriented), and the signed volume is 2 × inflatedVolume(inflation) ≥ 0.
+struct InflatedSolid {
+    Eigen::MatrixX3d V;
+    Eigen::MatrixX3d N;
+    Eigen::MatrixX3i F;
+};
+
+InflatedSolid inflatedSolid(const Inflation &inflation);
+
+// Σ det(a, b, c) / 6 over the triangles: the enclosed volume, positive for outward faces.
+double signedVolume(const InflatedSolid &solid);
+
+// One object of an OBJ file: its name (an "o" line) and its solid.
+struct ObjObject {
+    std::string name;
+    InflatedSolid solid;
+};
+
+// Writes Wavefront OBJ text: a comment, then per object "o name", its "v" and "vn" lines and
+// its faces as "f a//a b//b c//c" (1-based, positions and normals share indices). Numbers
+// are written in the shortest form that reads back exactly, independent of the locale; line
+// breaks and other control characters in names become '_'. Returns false if the stream
+// failed.
+bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects);
+
+} // namespace finbook::geometry

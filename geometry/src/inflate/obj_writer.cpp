@@ -1,0 +1,68 @@
+#include <finbook/geometry/inflate/inflated_solid.h>
+
+#include <Eigen/Geometry>
+
+#include <charconv>
+
+namespace finbook::geometry {
+namespace {
+
+// Shortest text that reads back to the same number, with no digit grouping and '.' as the
+// decimal point whatever locale the stream carries.
+template <class Number> void writeNumber(std::ostream &out, Number value)
+{
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    out.write(buffer, result.ptr - buffer);
+}
+
+void writeRow(std::ostream &out, const char *tag, const Eigen::RowVector3d &row)
+{
+    out << tag;
+    for (int c = 0; c < 3; ++c) {
+        out << ' ';
+        writeNumber(out, row(c));
+    }
+    out << '\n';
+}
+
+std::string safeName(const std::string &name)
+{
+    std::string safe = name.empty() ? std::string("object") : name;
+    for (char &c : safe)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            c = '_';
+    return safe;
+}
+
+} // namespace
+
+bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects)
+{
+    out << "# Finbook inflated drawing: y up, canvas pixels, closed outward-facing solids\n";
+    long offset = 1; // OBJ indices are 1-based and run on across objects
+    for (const ObjObject &object : objects) {
+        const InflatedSolid &solid = object.solid;
+        out << "o " << safeName(object.name) << '\n';
+        for (Eigen::Index i = 0; i < solid.V.rows(); ++i)
+            writeRow(out, "v", solid.V.row(i));
+        for (Eigen::Index i = 0; i < solid.N.rows(); ++i)
+            writeRow(out, "vn", solid.N.row(i));
+        for (Eigen::Index f = 0; f < solid.F.rows(); ++f) {
+            out << 'f';
+            for (int c = 0; c < 3; ++c) {
+                const long index = offset + solid.F(f, c);
+                out << ' ';
+                writeNumber(out, index);
+                out << "//";
+                writeNumber(out, index);
+            }
+            out << '\n';
+        }
+        offset += long(solid.V.rows());
+    }
+    out.flush();
+    return bool(out);
+}
+
+} // namespace finbook::geometry
