@@ -374,7 +374,11 @@ void TestDeformService::guiStaysResponsiveDuringBigPrecompute()
     QCOMPARE(ready.count(), 1);
     qInfo("worker precompute: p99 lateness %.2f ms over %zu ticks", p99(lateness), lateness.size());
     QVERIFY(lateness.size() > 20);
-    QVERIFY2(p99(lateness) <= 50.0, qPrintable(QString::number(p99(lateness))));
+    // Relative, not a wall-clock bound (a busy machine delays any tick now and then): the GUI
+    // thread is never held for anything like the precompute, as it is in the control.
+    const double worst = *std::max_element(lateness.begin(), lateness.end());
+    QVERIFY2(worst < blockedWorst / 2,
+             qPrintable(QStringLiteral("worst %1 ms, control %2 ms").arg(worst).arg(blockedWorst)));
 }
 
 void TestDeformService::unpinnedPartFollowsThePinnedOne()
