@@ -88,6 +88,7 @@ private slots:
     void closedCircleIsOneFace();
     void gapJustUnderThresholdCloses();
     void gapJustOverThresholdStaysOpen();
+    void outlineOfSeveralShortStrokesCloses();
     void automaticGapClosesSmallOpening();
     void fingersSideBySideStayApart();
     void fingersInOneOutlineStayApart();
@@ -138,6 +139,30 @@ void TestRegions::gapJustOverThresholdStaysOpen()
     QVERIFY(r.closures.empty());
     QVERIFY(r.faces.empty());
     QCOMPARE(faceAt(r, 0, 0), -1);
+}
+
+void TestRegions::outlineOfSeveralShortStrokesCloses()
+{
+    // A head drawn as four arcs that each stop 6 px short of the next (the cat in
+    // ../shared/data/sketches): no one closure closes anything, the four together do.
+    std::vector<StrokeInput> strokes;
+    const double r = 50, gapAngle = 6.0 / r;
+    for (int k = 0; k < 4; ++k) {
+        const double from = k * M_PI / 2 + gapAngle / 2;
+        strokes.push_back({arc(20, r, {0, 0}, from, from + M_PI / 2 - gapAngle), 3.0});
+    }
+    const Regions r4 = regionsOf(strokes, 10.0);
+    checkRegions(r4, 4);
+    QCOMPARE(r4.freeEnds, 8);
+    QCOMPARE(int(r4.closures.size()), 4);
+    QCOMPARE(int(r4.faces.size()), 1);
+    QVERIFY(r4.faces[0].area > 0.95 * M_PI * r * r);
+    QCOMPARE(faceAt(r4, 0, 0), 0);
+    // One of the four gaps wider than the threshold: the ring stays open.
+    strokes[0] = {arc(20, r, {0, 0}, 0.4, M_PI / 2 - gapAngle / 2), 3.0};
+    const Regions open = regionsOf(strokes, 10.0);
+    checkRegions(open, 4);
+    QVERIFY(open.faces.empty());
 }
 
 void TestRegions::automaticGapClosesSmallOpening()

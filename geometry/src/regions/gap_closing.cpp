@@ -15,8 +15,9 @@ constexpr double kLoopArcFactor = 2.5;
 constexpr double kTurnWeight = 0.35;
 // Closures only start this far from the ends they join (numerical contact slack, px).
 constexpr double kContactSlack = 0.05;
-// Passes of accept-and-reconnect (each may connect parts that let further closures close).
-constexpr int kMaxPasses = 8;
+// Passes of accept-and-reconnect (each may connect parts that let further closures close;
+// a pass with nothing else to do accepts one pair or ring).
+constexpr int kMaxPasses = 24;
 
 // A link ending on a stroke's interior runs this far past it: the rounded point on the
 // segment misses it in exact arithmetic, the overshoot crosses it (a dangling tip that no face
@@ -246,6 +247,65 @@ bool acceptPairs(Closer &closer, const std::vector<Candidate> &deferred, UnionFi
     return false;
 }
 
+// A ring of parts, each joined to the next by one short closure (an outline drawn in several
+// strokes that all stop short of each other): no closure closes anything alone and no two join
+// the same two parts. The best usable closures between parts grow a forest over the parts,
+// each free end used once; the first closure that would join two parts already joined in it
+// closes a ring of three or more parts, and the ring's closures are accepted together.
+bool acceptRing(Closer &closer, const std::vector<Candidate> &deferred, UnionFind &parts,
+                const std::vector<End> &ends, int strokeCount)
+{
+    UnionFind forest(strokeCount);
+    std::vector<bool> endTaken(ends.size(), false);
+    std::map<int, std::vector<std::pair<int, const Candidate *>>> links;
+    const auto pathBetween = [&](int from, int to) {
+        std::map<int, std::pair<int, const Candidate *>> cameFrom{{from, {from, nullptr}}};
+        std::vector<int> queue{from};
+        for (std::size_t q = 0; q < queue.size() && !cameFrom.count(to); ++q)
+            for (const auto &[next, c] : links[queue[q]])
+                if (cameFrom.emplace(next, std::make_pair(queue[q], c)).second)
+                    queue.push_back(next);
+        std::vector<const Candidate *> path;
+        for (int at = to; at != from; at = cameFrom.at(at).first)
+            path.push_back(cameFrom.at(at).second);
+        return path;
+    };
+    const auto crossesEachOther = [&](const std::vector<const Candidate *> &ring) {
+        for (std::size_t i = 0; i < ring.size(); ++i)
+            for (std::size_t j = i + 1; j < ring.size(); ++j)
+                if (segmentsCross(ends[std::size_t(ring[i]->from)].point, ring[i]->to,
+                                  ends[std::size_t(ring[j]->from)].point, ring[j]->to,
+                                  kContactSlack))
+                    return true;
+        return false;
+    };
+    for (const Candidate &c : deferred) {
+        const int a = parts.find(ends[std::size_t(c.from)].stroke), b = parts.find(c.toStroke);
+        if (a == b || endTaken[std::size_t(c.from)] ||
+            (c.toEnd >= 0 && endTaken[std::size_t(c.toEnd)]) || !closer.usable(c))
+            continue;
+        if (forest.find(a) != forest.find(b)) {
+            forest.join(a, b);
+            links[a].emplace_back(b, &c);
+            links[b].emplace_back(a, &c);
+            endTaken[std::size_t(c.from)] = true;
+            if (c.toEnd >= 0)
+                endTaken[std::size_t(c.toEnd)] = true;
+            continue;
+        }
+        std::vector<const Candidate *> ring = pathBetween(a, b);
+        if (ring.size() < 2) // two parts: acceptPairs' rule (and its slot test) decides
+            continue;
+        ring.push_back(&c);
+        if (crossesEachOther(ring))
+            continue;
+        for (const Candidate *link : ring)
+            closer.accept(*link);
+        return true;
+    }
+    return false;
+}
+
 } // namespace
 
 GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, PlanarMap &map)
@@ -286,7 +346,8 @@ GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, PlanarMap &m
                 deferred.push_back(c);
             }
         }
-        if (!changed && !acceptPairs(closer, deferred, parts, ends, closeGap))
+        if (!changed && !acceptPairs(closer, deferred, parts, ends, closeGap) &&
+            !acceptRing(closer, deferred, parts, ends, strokeCount))
             break;
     }
     result.closures = std::move(closer.closures);
