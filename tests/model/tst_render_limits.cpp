@@ -1,6 +1,7 @@
 // Rendering costs what the canvas shows: a point millions of pixels away is clipped before
 // QPainter strokes it, one stroke referenced thousands of times is painted once, a huge
 // canvas exports band by band (its memory is measured in app/tst_limits).
+#include "engine_device.h"
 #include "tst_file_sample.h"
 
 #include <finbook/model/export/export_plan.h>
@@ -62,42 +63,7 @@ public:
     QRectF extent;
 };
 
-class RecordingDevice : public QPaintDevice {
-public:
-    explicit RecordingDevice(QSize size)
-        : m_size(size)
-    {}
-    QPaintEngine *paintEngine() const override { return &m_engine; }
-    RecordingEngine &engine() { return m_engine; }
-
-protected:
-    int metric(PaintDeviceMetric metric) const override
-    {
-        switch (metric) {
-        case PdmWidth:
-            return m_size.width();
-        case PdmHeight:
-            return m_size.height();
-        case PdmDpiX:
-        case PdmDpiY:
-        case PdmPhysicalDpiX:
-        case PdmPhysicalDpiY:
-            return 96;
-        case PdmDevicePixelRatio:
-            return 1;
-        case PdmDevicePixelRatioScaled:
-            return int(QPaintDevice::devicePixelRatioFScale());
-        case PdmDepth:
-            return 32;
-        default:
-            return 0;
-        }
-    }
-
-private:
-    QSize m_size;
-    mutable RecordingEngine m_engine;
-};
+using RecordingDevice = engine_test::EngineDevice<RecordingEngine>;
 
 Frame frameWith(std::vector<StrokeDataPtr> strokes)
 {

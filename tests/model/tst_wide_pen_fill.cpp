@@ -4,6 +4,7 @@
 // the outline fill, and ordinary wide strokes must keep the outline fill.
 #include "../../model/src/capsule_coverage.h"
 #include "../../model/src/render_wide_pen.h"
+#include "engine_device.h"
 
 #include <finbook/model/render.h>
 
@@ -40,42 +41,7 @@ public:
     qint64 imagePixels = 0;
 };
 
-class CountingDevice : public QPaintDevice {
-public:
-    explicit CountingDevice(QSize size)
-        : m_size(size)
-    {}
-    QPaintEngine *paintEngine() const override { return &m_engine; }
-    CountingEngine &engine() { return m_engine; }
-
-protected:
-    int metric(PaintDeviceMetric metric) const override
-    {
-        switch (metric) {
-        case PdmWidth:
-            return m_size.width();
-        case PdmHeight:
-            return m_size.height();
-        case PdmDpiX:
-        case PdmDpiY:
-        case PdmPhysicalDpiX:
-        case PdmPhysicalDpiY:
-            return 96;
-        case PdmDevicePixelRatio:
-            return 1;
-        case PdmDevicePixelRatioScaled:
-            return int(QPaintDevice::devicePixelRatioFScale());
-        case PdmDepth:
-            return 32;
-        default:
-            return 0;
-        }
-    }
-
-private:
-    QSize m_size;
-    mutable CountingEngine m_engine;
-};
+using CountingDevice = engine_test::EngineDevice<CountingEngine>;
 
 // `count` points spread at random over w × h (a fixed sequence), pressures in [minPressure, 1].
 std::vector<StrokePoint> scribble(int count, int w, int h, float minPressure = 1.0f)

@@ -93,32 +93,29 @@ ExportOutcome exportEncoded(const ExportContext &context)
             for (const QString &path : {pending.path(), palette.path()})
                 if (!path.isEmpty())
                     text->replace(QStringLiteral("file:") + path, target).replace(path, target);
-        return unexpected(error);
+        return error;
     };
-    if (runs == 2) {
-        FfmpegEncoder first(job.what, palette.path());
-        if (auto error = first.start(job.paletteArguments))
+    // One ffmpeg run: frames piped in, and something must have been written to `written`.
+    const auto run = [&](const QStringList &arguments,
+                         const QString &written) -> std::optional<ExportError> {
+        FfmpegEncoder encoder(job.what, written);
+        if (auto error = encoder.start(arguments))
             return failed(*error);
-        if (auto error = pipeFrames(context, first, job.perTick, done, cancelled))
+        if (auto error = pipeFrames(context, encoder, job.perTick, done, cancelled))
             return failed(*error);
-        if (QFileInfo(palette.path()).size() <= 0)
+        if (QFileInfo(written).size() <= 0)
             return failed(exportError(ExportErrorCode::EncoderFailed,
                                       Export::tr("ffmpeg finished without writing the %1; "
                                                  "nothing was exported.")
                                           .arg(job.what),
-                                      first.errorTail()));
-    }
-    FfmpegEncoder encoder(job.what, pending.path());
-    if (auto error = encoder.start(job.arguments))
-        return failed(*error);
-    if (auto error = pipeFrames(context, encoder, job.perTick, done, cancelled))
-        return failed(*error);
-    if (QFileInfo(pending.path()).size() <= 0)
-        return unexpected(exportError(ExportErrorCode::EncoderFailed,
-                                      Export::tr("ffmpeg finished without writing the %1; "
-                                                 "nothing was exported.")
-                                          .arg(job.what),
                                       encoder.errorTail()));
+        return std::nullopt;
+    };
+    if (runs == 2)
+        if (auto error = run(job.paletteArguments, palette.path()))
+            return unexpected(*error);
+    if (auto error = run(job.arguments, pending.path()))
+        return unexpected(*error);
     if (auto error = commitFile(pending, context.options))
         return unexpected(*error);
     guard.keep();
