@@ -8,8 +8,9 @@
 // free end is joined to a point of a stroke or to another free end by a straight closure when
 // the closure is at most closeGap long, crosses no stroke and no other closure, runs through
 // no region that is already closed, and closes a new face (its two ends are already connected
-// through the drawing, or a second closure connects the same two parts); closures that
-// continue the end's direction are preferred. Faces thinner than a pen width (slivers from
+// through the drawing, or a second closure connects the same two parts, or it completes a
+// ring of closures through three or more parts: an outline drawn in several strokes that
+// each stop short of the next); closures that continue the end's direction are preferred. Faces thinner than a pen width (slivers from
 // overshoots) are merged into their neighbour.
 #pragma once
 
