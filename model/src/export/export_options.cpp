@@ -1,6 +1,7 @@
 #include <finbook/model/document.h>
 #include <finbook/model/export/export_options.h>
 
+#include <QDir>
 #include <QFileInfo>
 
 #include <array>
@@ -21,6 +22,7 @@ constexpr std::array kFormats{
     FormatInfo{ExportFormat::WebM, "webm", "webm"},
     FormatInfo{ExportFormat::Apng, "apng", "apng"},
     FormatInfo{ExportFormat::Html, "html", "html"},
+    FormatInfo{ExportFormat::Obj, "obj", "obj"},
 };
 
 const FormatInfo &info(ExportFormat format)
@@ -64,6 +66,13 @@ QString exportFormatName(ExportFormat format)
 QString exportFormatSuffix(ExportFormat format)
 {
     return QString::fromLatin1(info(format).suffix);
+}
+
+QString objMaterialPath(const QString &objTarget)
+{
+    const QFileInfo info(objTarget);
+    const QString name = info.suffix().isEmpty() ? info.fileName() : info.completeBaseName();
+    return QDir(info.path()).filePath(name + QStringLiteral(".mtl"));
 }
 
 bool exportsSequence(ExportFormat format)
