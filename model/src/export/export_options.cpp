@@ -1,7 +1,6 @@
 #include <finbook/model/document.h>
 #include <finbook/model/export/export_options.h>
 
-#include <QDir>
 #include <QFileInfo>
 
 #include <array>
@@ -70,9 +69,11 @@ QString exportFormatSuffix(ExportFormat format)
 
 QString objMaterialPath(const QString &objTarget)
 {
-    const QFileInfo info(objTarget);
-    const QString name = info.suffix().isEmpty() ? info.fileName() : info.completeBaseName();
-    return QDir(info.path()).filePath(name + QStringLiteral(".mtl"));
+    // The name's own text with its suffix replaced: "walk.obj" stays relative, "a.b/c" gets
+    // "a.b/c.mtl".
+    const QString suffix = QFileInfo(objTarget).suffix();
+    const QString stem = suffix.isEmpty() ? objTarget : objTarget.chopped(suffix.size() + 1);
+    return stem + QStringLiteral(".mtl");
 }
 
 bool exportsSequence(ExportFormat format)
