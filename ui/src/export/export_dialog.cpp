@@ -254,21 +254,20 @@ model::ExportOptions ExportDialog::options() const
     model::ExportOptions o;
     o.format = ExportFormat(m_format->currentData().toInt());
     o.target = QDir::fromNativeSeparators(m_target->text().trimmed());
-    if (o.format == ExportFormat::Obj)
+    switch (Range(m_range->currentData().toInt())) {
+    case Range::AllFrames:
+        o.firstFrame = 0;
+        o.lastFrame = std::max(0, m_doc.frameCount() - 1);
+        break;
+    case Range::Custom:
+        o.firstFrame = m_first->value() - 1;
+        o.lastFrame = m_last->value() - 1;
+        break;
+    default:
+        break;
+    }
+    if (o.format == ExportFormat::Obj) // whatever the (disabled) range says
         o.firstFrame = o.lastFrame = m_currentFrame;
-    else
-        switch (Range(m_range->currentData().toInt())) {
-        case Range::AllFrames:
-            o.firstFrame = 0;
-            o.lastFrame = std::max(0, m_doc.frameCount() - 1);
-            break;
-        case Range::Custom:
-            o.firstFrame = m_first->value() - 1;
-            o.lastFrame = m_last->value() - 1;
-            break;
-        default:
-            break;
-        }
     o.scale = m_scale->value();
     const auto background = Background(m_background->currentData().toInt());
     o.transparent = background == Background::Transparent;
