@@ -35,9 +35,13 @@ struct OptionSpec {
 // QT_TRANSLATE_NOOP: the help texts are translated when --help prints them.
 const OptionSpec kOptions[] = {
     {"format", "FORMAT",
-     QT_TRANSLATE_NOOP("CommandLine", "export: png, svg, gif, mp4, webm, apng or html.")},
+     QT_TRANSLATE_NOOP("CommandLine", "export: png, svg, gif, mp4, webm, apng, html or obj.")},
     {"range", "A-B",
      QT_TRANSLATE_NOOP("CommandLine", "export: frames A to B (default: the play range).")},
+    {"frame", "N",
+     QT_TRANSLATE_NOOP("CommandLine",
+                       "export: frame N only; a 3D model (obj) is one frame, by default the "
+                       "first of the play range.")},
     {"scale", "S", QT_TRANSLATE_NOOP("CommandLine", "export: multiply the canvas size by S.")},
     {"fps", "N",
      QT_TRANSLATE_NOOP("CommandLine", "export: N frames per second (default: the document's).")},
@@ -93,6 +97,15 @@ std::optional<QString> parseNumbers(const QCommandLineParser &p, model::ExportOp
         if (auto error = parseRange(p.value(QStringLiteral("range")), options))
             return error;
     bool ok = true;
+    if (p.isSet(QStringLiteral("frame"))) {
+        if (p.isSet(QStringLiteral("range")))
+            return CommandLine::tr("--frame and --range cannot be used together.");
+        const int frame = p.value(QStringLiteral("frame")).trimmed().toInt(&ok);
+        if (!ok || frame < 1)
+            return CommandLine::tr("--frame needs a frame number from 1, not \"%1\".")
+                .arg(p.value(QStringLiteral("frame")));
+        options.firstFrame = options.lastFrame = frame - 1;
+    }
     if (p.isSet(QStringLiteral("scale"))) {
         options.scale = p.value(QStringLiteral("scale")).toDouble(&ok);
         if (!ok || !(options.scale > 0))
@@ -129,7 +142,7 @@ std::optional<QString> parseFormat(const QCommandLineParser &p, Request &r)
         r.format = model::exportFormatFromName(p.value(QStringLiteral("format")));
         if (!r.format)
             return CommandLine::tr("Unknown export format \"%1\"; use png, svg, gif, mp4, webm, "
-                                   "apng or html.")
+                                   "apng, html or obj.")
                 .arg(p.value(QStringLiteral("format")));
     }
     if (!r.outDir.isEmpty()) {
@@ -152,7 +165,8 @@ std::optional<QString> parseFormat(const QCommandLineParser &p, Request &r)
     }
     if (!r.format && !suffix.isEmpty() && (!named || model::exportsSequence(*named)))
         return CommandLine::tr("Cannot tell the format from \"%1\": end it in .gif, .mp4, .webm, "
-                               ".apng or .html, give a folder for PNG frames, or use --format.")
+                               ".apng, .html or .obj, give a folder for PNG frames, or use "
+                               "--format.")
             .arg(r.output);
     if (r.format && named && !model::exportsSequence(*r.format) && *named != *r.format)
         return CommandLine::tr("--format %1 does not match \"%2\".")
@@ -308,6 +322,8 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
     }
     native.keep();
     printWrittenFiles(*result, options, source, native, out);
+    if (!result->note.isEmpty()) // stdout lists the files only, for scripts
+        err << model::printableText(result->note) << Qt::endl;
     return int(ExitCode::Ok);
 }
 } // namespace

@@ -1,12 +1,12 @@
-// `finbook export`: one or more .finbook files to PNG/SVG sequences, GIF, MP4, WebM, APNG or
-// an HTML flipbook.
+// `finbook export`: one or more .finbook files to PNG/SVG sequences, GIF, MP4, WebM, APNG, an
+// HTML flipbook, or one frame as a 3D model (OBJ + MTL).
 //
 //   finbook export FILE OUT                 format from OUT's suffix (.gif .mp4 .webm .apng
-//                                           .html), or a folder of PNGs when OUT has none
+//                                           .html .obj), or a folder of PNGs when OUT has none
 //   finbook export FILE... --out-dir DIR    each FILE to DIR/<name>.<suffix> (DIR/<name>/ for
 //                                           sequences)
-//   options: --format F, --range A-B, --scale S, --fps N, --transparent, --background COLOR,
-//            --one-per-drawing, --overwrite
+//   options: --format F, --range A-B, --frame N, --scale S, --fps N, --transparent,
+//            --background COLOR, --one-per-drawing, --overwrite
 #pragma once
 
 #include <QCommandLineParser>

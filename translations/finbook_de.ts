@@ -275,6 +275,7 @@
   finbook info FILE            print a JSON summary of FILE
   finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
   finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
+  finbook export FILE OUT.obj --frame N   frame N as a 3D model (OUT.obj, OUT.mtl)
   finbook export FILE... --format F --out-dir DIR   export several files
   finbook thumbnail FILE OUT.png SIZE   write the first frame as a PNG of at most SIZE px</source>
         <translation>Finbook, ein Daumenkino-Animationseditor.
@@ -283,40 +284,41 @@
   finbook info FILE            eine JSON-Zusammenfassung von FILE ausgeben
   finbook export FILE OUTDIR   jedes Einzelbild nach OUTDIR/frame_0001.png ... rendern
   finbook export FILE OUT      nach OUT.gif, .mp4, .webm, .apng oder .html exportieren
+  finbook export FILE OUT.obj --frame N   Einzelbild N als 3D-Modell (OUT.obj, OUT.mtl)
   finbook export FILE... --format F --out-dir DIR   mehrere Dateien exportieren
   finbook thumbnail FILE OUT.png SIZE   das erste Einzelbild als PNG von höchstens SIZE px schreiben</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="52"/>
+        <location filename="../app/main.cpp" line="54"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>LANGUAGE (z. B. de, en, fr, ja) statt der Systemsprache verwenden.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="58"/>
+        <location filename="../app/main.cpp" line="60"/>
         <source>FILE, or a command.</source>
         <translation>FILE oder ein Befehl.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="70"/>
+        <location filename="../app/main.cpp" line="72"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>siehe finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="77"/>
+        <location filename="../app/main.cpp" line="79"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="113"/>
+        <location filename="../app/main.cpp" line="115"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Unbekannter Befehl „%1“; %2.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="38"/>
-        <source>export: png, svg, gif, mp4, webm, apng or html.</source>
-        <translation>export: png, svg, gif, mp4, webm, apng oder html.</translation>
+        <source>export: png, svg, gif, mp4, webm, apng, html or obj.</source>
+        <translation>export: png, svg, gif, mp4, webm, apng, html oder obj.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="40"/>
@@ -324,127 +326,142 @@
         <translation>export: Einzelbilder A bis B (Standard: der Wiedergabebereich).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="41"/>
+        <location filename="../app/cli_export.cpp" line="42"/>
+        <source>export: frame N only; a 3D model (obj) is one frame, by default the first of the play range.</source>
+        <translation>export: nur Einzelbild N; ein 3D-Modell (obj) ist ein Einzelbild, standardmäßig das erste des Abspielbereichs.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="45"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: die Leinwandgröße mit S multiplizieren.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="47"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: N Bilder pro Sekunde (Standard: die des Dokuments).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="49"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: diese Hintergrundfarbe (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="46"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: no background.</source>
         <translation>export: kein Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="52"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: eine Datei pro Zeichnung plus ein Timing-Sheet.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="54"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="51"/>
+        <location filename="../app/cli_export.cpp" line="55"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="53"/>
+        <location filename="../app/cli_export.cpp" line="57"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="84"/>
+        <location filename="../app/cli_export.cpp" line="88"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="99"/>
+        <location filename="../app/cli_export.cpp" line="102"/>
+        <source>--frame and --range cannot be used together.</source>
+        <translation>--frame und --range können nicht zusammen verwendet werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="105"/>
+        <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
+        <translation>--frame braucht eine Bildnummer ab 1, nicht „%1“.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="112"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="105"/>
+        <location filename="../app/cli_export.cpp" line="118"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="113"/>
+        <location filename="../app/cli_export.cpp" line="126"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="119"/>
+        <location filename="../app/cli_export.cpp" line="132"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="131"/>
-        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
-        <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng oder html.</translation>
+        <location filename="../app/cli_export.cpp" line="144"/>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html or obj.</source>
+        <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html oder obj.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="147"/>
+        <location filename="../app/cli_export.cpp" line="167"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html or .obj, give a folder for PNG frames, or use --format.</source>
+        <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html oder .obj enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="160"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="154"/>
-        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
-        <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng oder .html enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="158"/>
+        <location filename="../app/cli_export.cpp" line="172"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="174"/>
+        <location filename="../app/cli_export.cpp" line="188"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="178"/>
+        <location filename="../app/cli_export.cpp" line="192"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="188"/>
+        <location filename="../app/cli_export.cpp" line="202"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="190"/>
+        <location filename="../app/cli_export.cpp" line="204"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="286"/>
+        <location filename="../app/cli_export.cpp" line="300"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="297"/>
+        <location filename="../app/cli_export.cpp" line="311"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Unterbrochen; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="304"/>
+        <location filename="../app/cli_export.cpp" line="318"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="306"/>
+        <location filename="../app/cli_export.cpp" line="320"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
@@ -620,12 +637,12 @@
     <message>
         <location filename="../model/src/export/export_encoded.cpp" line="58"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
+        <location filename="../model/src/export/export_obj.cpp" line="123"/>
         <source>its folder cannot be created</source>
         <translation>ihr Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="106"/>
-        <location filename="../model/src/export/export_encoded.cpp" line="118"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="108"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg wurde beendet, ohne die Ausgabe als %1 zu schreiben; es wurde nichts exportiert.</translation>
     </message>
@@ -671,37 +688,42 @@
         <translation>Die Leinwand hat keine Größe; legen Sie eine in den Dokumenteinstellungen fest.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="101"/>
+        <location filename="../model/src/export/export_plan.cpp" line="90"/>
+        <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
+        <translation>Ein 3D-Modell enthält ein Einzelbild, nicht die Bilder %1–%2; wählen Sie ein einzelnes Bild.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="110"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>Die Skalierung %1 ergibt keine mögliche Bildgröße; wählen Sie eine Skalierung, die 1 bis %2 Pixel pro Seite ergibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="105"/>
+        <location filename="../model/src/export/export_plan.cpp" line="114"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>Die Skalierung %1 ergäbe ein Bild mit %2 × %3 Pixeln; wählen Sie eine Skalierung, die 1 bis %4 Pixel pro Seite ergibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="118"/>
+        <location filename="../model/src/export/export_plan.cpp" line="127"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>Die Bildrate %1 ist nicht möglich; wählen Sie %2 bis %3 Bilder pro Sekunde.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="126"/>
+        <location filename="../model/src/export/export_plan.cpp" line="135"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>%1-Videos können nicht transparent sein; wählen Sie WebM, APNG, GIF oder PNG für einen transparenten Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="150"/>
+        <location filename="../model/src/export/export_plan.cpp" line="159"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Dieser Export würde %1 Einzelbilder schreiben, mehr als die erlaubten %2; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="157"/>
+        <location filename="../model/src/export/export_plan.cpp" line="166"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Dateien schreiben (%2 Wiedergabeschritte), mehr als %3 ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="165"/>
+        <location filename="../model/src/export/export_plan.cpp" line="174"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Stunden Animation ergeben (%2 Einzelbilder), mehr als %3 Stunden ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
@@ -751,7 +773,7 @@
         <translation>„%1“ ist ein Ordner; geben Sie einen Dateinamen an, der auf .%2 endet.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="189"/>
+        <location filename="../model/src/export/exporter.cpp" line="201"/>
         <source>Choose where to export the animation to.</source>
         <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
     </message>
@@ -812,6 +834,29 @@
         <location filename="../model/src/export/pending_output.cpp" line="268"/>
         <source>&quot;%1&quot; is a folder where a file should go</source>
         <translation>„%1“ ist ein Ordner, wo eine Datei hingehört</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_obj.cpp" line="89"/>
+        <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
+        <translation>Einzelbild %1 zeigt keine Zeichnung, aus der sich ein 3D-Modell machen ließe; wählen Sie ein anderes Bild.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_obj.cpp" line="94"/>
+        <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
+        <translation>Kein Objekt von Einzelbild %1 lässt sich in 3D umwandeln: Jedes ist ein Punkt oder eine gerade Linie ohne Fläche zum Aufblasen. Es wurde nichts exportiert; zeichnen Sie eine Form oder wählen Sie ein anderes Bild.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_obj.cpp" line="115"/>
+        <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
+        <translation>„%1“ würde von seiner eigenen Materialdatei überschrieben; geben Sie einen Dateinamen an, der auf .obj endet.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/export_obj.cpp" line="168"/>
+        <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
+        <translation>
+            <numerusform>%n Objekt von Einzelbild %1 ließ sich nicht in 3D umwandeln (ein Punkt oder eine gerade Linie hat keine Fläche zum Aufblasen) und wurde weggelassen.</numerusform>
+            <numerusform>%n Objekte von Einzelbild %1 ließen sich nicht in 3D umwandeln (ein Punkt oder eine gerade Linie hat keine Fläche zum Aufblasen) und wurden weggelassen.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2340,169 +2385,179 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="56"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="64"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="281"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="76"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
         <source>Animated GIF</source>
         <translation>Animiertes GIF</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
         <source>MP4 video (H.264)</source>
         <translation>MP4-Video (H.264)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>WebM video (VP9)</source>
         <translation>WebM-Video (VP9)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>Animated PNG (APNG)</source>
         <translation>Animiertes PNG (APNG)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>HTML flipbook (one file)</source>
         <translation>HTML-Daumenkino (eine Datei)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>PNG images (a folder)</source>
         <translation>PNG-Bilder (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>SVG vector images (a folder)</source>
         <translation>SVG-Vektorbilder (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <source>3D model (OBJ), the current frame</source>
+        <translation>3D-Modell (OBJ), das aktuelle Einzelbild</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
         <source>&amp;Browse...</source>
         <translation>&amp;Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
         <source>Play range</source>
         <translation>Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>All frames</source>
         <translation>Alle Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>Frames</source>
         <translation>Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="105"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
         <source>Document background</source>
         <translation>Dokumenthintergrund</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="106"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source>Start again after the last frame</source>
         <translation>Nach dem letzten Einzelbild wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Eine Datei pro Zeichnung, mit Timing-Sheet</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="132"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="134"/>
         <source>to</source>
         <translation>bis</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="147"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="148"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
         <source>&amp;Save to:</source>
         <translation>&amp;Speichern in:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
         <source>F&amp;rames:</source>
         <translation>Einzel&amp;bilder:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
         <source>Sc&amp;ale:</source>
         <translation>S&amp;kalierung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
         <source>&amp;Background:</source>
         <translation>&amp;Hintergrund:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>Frame ra&amp;te:</source>
         <translation>Bild&amp;rate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>Loop:</source>
         <translation>Endlosschleife:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>Cancel Export</source>
         <translation>Export abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="225"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="238"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 × %2 Pixel</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="228"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="241"/>
+        <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
+        <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, mit einer .mtl-Datei daneben. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="246"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Dieses Format benötigt das Programm ffmpeg, das nicht gefunden wurde; installieren Sie es zuerst (unter Debian: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="290"/>
         <source>Export to Folder</source>
         <translation>In Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="273"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="294"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>
@@ -2530,17 +2585,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="97"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="99"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="124"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>„%1“ ist bereits vorhanden. Ersetzen?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="123"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="125"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n Datei am Ziel ist bereits vorhanden: „%1“. Ersetzen?</numerusform>
@@ -2548,22 +2603,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="126"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
         <source>Replace Files?</source>
         <translation>Dateien ersetzen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="133"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="135"/>
         <source>Export Anyway?</source>
         <translation>Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="135"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="137"/>
         <source>It may take a long time and a lot of disk space. Export anyway?</source>
         <translation>Das kann lange dauern und viel Speicherplatz belegen. Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="143"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="145"/>
         <source>Cannot Export</source>
         <translation>Export nicht möglich</translation>
     </message>
@@ -2874,7 +2929,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
@@ -2959,172 +3014,172 @@
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="86"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="153"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="178"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="180"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="181"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="182"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="211"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="300"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>

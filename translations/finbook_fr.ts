@@ -275,6 +275,7 @@
   finbook info FILE            print a JSON summary of FILE
   finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
   finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
+  finbook export FILE OUT.obj --frame N   frame N as a 3D model (OUT.obj, OUT.mtl)
   finbook export FILE... --format F --out-dir DIR   export several files
   finbook thumbnail FILE OUT.png SIZE   write the first frame as a PNG of at most SIZE px</source>
         <translation>Finbook, un éditeur d&apos;animation en folioscope.
@@ -283,40 +284,41 @@
   finbook info FILE            afficher un résumé JSON de FILE
   finbook export FILE OUTDIR   rendre chaque image dans OUTDIR/frame_0001.png ...
   finbook export FILE OUT      exporter vers OUT.gif, .mp4, .webm, .apng ou .html
+  finbook export FILE OUT.obj --frame N   l&apos;image N en modèle 3D (OUT.obj, OUT.mtl)
   finbook export FILE... --format F --out-dir DIR   exporter plusieurs fichiers
   finbook thumbnail FILE OUT.png SIZE   écrire la première image en PNG d&apos;au plus SIZE px</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="52"/>
+        <location filename="../app/main.cpp" line="54"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>Utiliser la langue LANGUAGE (par ex. de, en, fr, ja) au lieu de celle du système.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="58"/>
+        <location filename="../app/main.cpp" line="60"/>
         <source>FILE, or a command.</source>
         <translation>FILE, ou une commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="70"/>
+        <location filename="../app/main.cpp" line="72"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>voir finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="77"/>
+        <location filename="../app/main.cpp" line="79"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1 ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="113"/>
+        <location filename="../app/main.cpp" line="115"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Commande inconnue « %1 » ; %2.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="38"/>
-        <source>export: png, svg, gif, mp4, webm, apng or html.</source>
-        <translation>export : png, svg, gif, mp4, webm, apng ou html.</translation>
+        <source>export: png, svg, gif, mp4, webm, apng, html or obj.</source>
+        <translation>export : png, svg, gif, mp4, webm, apng, html ou obj.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="40"/>
@@ -324,127 +326,142 @@
         <translation>export : images A à B (par défaut : la plage de lecture).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="41"/>
+        <location filename="../app/cli_export.cpp" line="42"/>
+        <source>export: frame N only; a 3D model (obj) is one frame, by default the first of the play range.</source>
+        <translation>export : l&apos;image N seulement ; un modèle 3D (obj) est une seule image, par défaut la première de la plage de lecture.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="45"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export : multiplier la taille du canevas par S.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="47"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export : N images par seconde (par défaut : celle du document).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="49"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export : cette couleur d&apos;arrière-plan (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="46"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: no background.</source>
         <translation>export : pas d&apos;arrière-plan.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="52"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg : un fichier par dessin, plus une feuille d&apos;exposition.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="54"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="51"/>
+        <location filename="../app/cli_export.cpp" line="55"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="53"/>
+        <location filename="../app/cli_export.cpp" line="57"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="84"/>
+        <location filename="../app/cli_export.cpp" line="88"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="99"/>
+        <location filename="../app/cli_export.cpp" line="102"/>
+        <source>--frame and --range cannot be used together.</source>
+        <translation>--frame et --range ne peuvent pas être utilisés ensemble.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="105"/>
+        <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
+        <translation>--frame attend un numéro d&apos;image à partir de 1, pas « %1 ».</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="112"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="105"/>
+        <location filename="../app/cli_export.cpp" line="118"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="113"/>
+        <location filename="../app/cli_export.cpp" line="126"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="119"/>
+        <location filename="../app/cli_export.cpp" line="132"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="131"/>
-        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
-        <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng ou html.</translation>
+        <location filename="../app/cli_export.cpp" line="144"/>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html or obj.</source>
+        <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html ou obj.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="147"/>
+        <location filename="../app/cli_export.cpp" line="167"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html or .obj, give a folder for PNG frames, or use --format.</source>
+        <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html ou .obj, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="160"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="154"/>
-        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
-        <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng ou .html, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="158"/>
+        <location filename="../app/cli_export.cpp" line="172"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="174"/>
+        <location filename="../app/cli_export.cpp" line="188"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="178"/>
+        <location filename="../app/cli_export.cpp" line="192"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="188"/>
+        <location filename="../app/cli_export.cpp" line="202"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="190"/>
+        <location filename="../app/cli_export.cpp" line="204"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="286"/>
+        <location filename="../app/cli_export.cpp" line="300"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="297"/>
+        <location filename="../app/cli_export.cpp" line="311"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="304"/>
+        <location filename="../app/cli_export.cpp" line="318"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="306"/>
+        <location filename="../app/cli_export.cpp" line="320"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -620,12 +637,12 @@
     <message>
         <location filename="../model/src/export/export_encoded.cpp" line="58"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
+        <location filename="../model/src/export/export_obj.cpp" line="123"/>
         <source>its folder cannot be created</source>
         <translation>son dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="106"/>
-        <location filename="../model/src/export/export_encoded.cpp" line="118"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="108"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg s&apos;est terminé sans écrire le fichier %1&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
@@ -671,37 +688,42 @@
         <translation>Le canevas n&apos;a pas de taille&#xa0;; définissez-en une dans Paramètres du document.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="101"/>
+        <location filename="../model/src/export/export_plan.cpp" line="90"/>
+        <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
+        <translation>Un modèle 3D contient une seule image, pas les images %1 à %2 ; choisissez une seule image.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="110"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>L&apos;échelle %1 ne donne pas une taille d&apos;image possible&#xa0;; choisissez une échelle qui donne de 1 à %2 pixels de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="105"/>
+        <location filename="../model/src/export/export_plan.cpp" line="114"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>L&apos;échelle %1 donnerait une image de %2 x %3 pixels&#xa0;; choisissez une échelle qui donne de 1 à %4 pixels de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="118"/>
+        <location filename="../model/src/export/export_plan.cpp" line="127"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>La fréquence d&apos;images %1 n&apos;est pas possible&#xa0;; choisissez de %2 à %3 images par seconde.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="126"/>
+        <location filename="../model/src/export/export_plan.cpp" line="135"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>Une vidéo %1 ne peut pas être transparente&#xa0;; choisissez WebM, APNG, GIF ou PNG pour un arrière-plan transparent.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="150"/>
+        <location filename="../model/src/export/export_plan.cpp" line="159"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Cet export écrirait %1 images, plus que les %2 autorisées ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="157"/>
+        <location filename="../model/src/export/export_plan.cpp" line="166"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Cet export écrirait %1 fichiers (%2 pas de lecture), plus de %3 sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="165"/>
+        <location filename="../model/src/export/export_plan.cpp" line="174"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Cet export produirait %1 heures d’animation (%2 images), plus de %3 heures sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
@@ -751,7 +773,7 @@
         <translation>«&#xa0;%1&#xa0;» est un dossier&#xa0;; indiquez un nom de fichier se terminant par .%2.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="189"/>
+        <location filename="../model/src/export/exporter.cpp" line="201"/>
         <source>Choose where to export the animation to.</source>
         <translation>Choisissez où exporter l&apos;animation.</translation>
     </message>
@@ -812,6 +834,29 @@
         <location filename="../model/src/export/pending_output.cpp" line="268"/>
         <source>&quot;%1&quot; is a folder where a file should go</source>
         <translation>« %1 » est un dossier là où un fichier doit aller</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_obj.cpp" line="89"/>
+        <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
+        <translation>L&apos;image %1 ne montre aucun dessin dont faire un modèle 3D ; choisissez une autre image.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_obj.cpp" line="94"/>
+        <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
+        <translation>Aucun objet de l&apos;image %1 ne peut être mis en 3D : chacun est un point ou une ligne droite, sans surface à gonfler. Rien n&apos;a été exporté ; dessinez une forme ou choisissez une autre image.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_obj.cpp" line="115"/>
+        <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
+        <translation>« %1 » serait écrasé par son propre fichier de matériaux ; donnez un nom de fichier terminé par .obj.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/export_obj.cpp" line="168"/>
+        <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
+        <translation>
+            <numerusform>%n objet de l&apos;image %1 n&apos;a pas pu être mis en 3D (un point ou une ligne droite n&apos;a pas de surface à gonfler) et a été omis.</numerusform>
+            <numerusform>%n objets de l&apos;image %1 n&apos;ont pas pu être mis en 3D (un point ou une ligne droite n&apos;a pas de surface à gonfler) et ont été omis.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2340,169 +2385,179 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="56"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
         <source>Export Animation</source>
         <translation>Exporter l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="64"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="281"/>
         <source>untitled</source>
         <translation>sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="76"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
         <source>Animated GIF</source>
         <translation>GIF animé</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
         <source>MP4 video (H.264)</source>
         <translation>Vidéo MP4 (H.264)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>WebM video (VP9)</source>
         <translation>Vidéo WebM (VP9)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>Animated PNG (APNG)</source>
         <translation>PNG animé (APNG)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>HTML flipbook (one file)</source>
         <translation>Folioscope HTML (un seul fichier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>PNG images (a folder)</source>
         <translation>Images PNG (un dossier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>SVG vector images (a folder)</source>
         <translation>Images vectorielles SVG (un dossier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <source>3D model (OBJ), the current frame</source>
+        <translation>Modèle 3D (OBJ), l&apos;image courante</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
         <source>&amp;Browse...</source>
         <translation>Parc&amp;ourir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
         <source>Play range</source>
         <translation>Plage de lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>All frames</source>
         <translation>Toutes les images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>Frames</source>
         <translation>Images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="105"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
         <source>Document background</source>
         <translation>Arrière-plan du document</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="106"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Colour</source>
         <translation>Couleur</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
         <source> fps</source>
         <translation> i/s</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source>Start again after the last frame</source>
         <translation>Recommencer après la dernière image</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Un fichier par dessin, avec une feuille d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="132"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="134"/>
         <source>to</source>
         <translation>à</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="147"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="148"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
         <source>&amp;Save to:</source>
         <translation>Enregistrer &amp;dans&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
         <source>F&amp;rames:</source>
         <translation>&amp;Images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
         <source>Sc&amp;ale:</source>
         <translation>É&amp;chelle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
         <source>&amp;Background:</source>
         <translation>Arrière-&amp;plan&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>Frame ra&amp;te:</source>
         <translation>Fré&amp;quence d&apos;images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>Loop:</source>
         <translation>Boucle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>&amp;Export</source>
         <translation>&amp;Exporter</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>Cancel Export</source>
         <translation>Annuler l&apos;export</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="225"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="238"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 x %2 pixels</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="228"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="241"/>
+        <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
+        <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, avec un fichier .mtl à côté. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="246"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Ce format nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le d&apos;abord (sous Debian&#xa0;: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="290"/>
         <source>Export to Folder</source>
         <translation>Exporter dans un dossier</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="273"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="294"/>
         <source>%1 files (*.%2)</source>
         <translation>Fichiers %1 (*.%2)</translation>
     </message>
@@ -2530,17 +2585,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="97"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="99"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export annulé&#xa0;; rien n&apos;a été écrit.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="124"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>«&#xa0;%1&#xa0;» existe déjà. Le remplacer&#xa0;?</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="123"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="125"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n fichier existe déjà à la destination&#xa0;: «&#xa0;%1&#xa0;». Le remplacer&#xa0;?</numerusform>
@@ -2548,22 +2603,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="126"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
         <source>Replace Files?</source>
         <translation>Remplacer les fichiers&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="133"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="135"/>
         <source>Export Anyway?</source>
         <translation>Exporter quand même ?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="135"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="137"/>
         <source>It may take a long time and a lot of disk space. Export anyway?</source>
         <translation>Cela peut prendre longtemps et beaucoup d’espace disque. Exporter quand même ?</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="143"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="145"/>
         <source>Cannot Export</source>
         <translation>Impossible d&apos;exporter</translation>
     </message>
@@ -2889,7 +2944,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
@@ -2974,172 +3029,172 @@
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="86"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="153"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="178"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="180"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="181"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="182"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="211"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="300"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>

@@ -275,6 +275,7 @@
   finbook info FILE            print a JSON summary of FILE
   finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
   finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
+  finbook export FILE OUT.obj --frame N   frame N as a 3D model (OUT.obj, OUT.mtl)
   finbook export FILE... --format F --out-dir DIR   export several files
   finbook thumbnail FILE OUT.png SIZE   write the first frame as a PNG of at most SIZE px</source>
         <translation>Finbook: パラパラ漫画のアニメーションエディター。
@@ -283,40 +284,41 @@
   finbook info FILE            FILE の概要を JSON で出力する
   finbook export FILE OUTDIR   すべてのフレームを OUTDIR/frame_0001.png ... に描き出す
   finbook export FILE OUT      OUT.gif、.mp4、.webm、.apng、.html に書き出す
+  finbook export FILE OUT.obj --frame N   フレーム N を 3D モデル (OUT.obj、OUT.mtl) に書き出す
   finbook export FILE... --format F --out-dir DIR   複数のファイルを書き出す
   finbook thumbnail FILE OUT.png SIZE   最初のフレームを最大 SIZE px の PNG に書き出す</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="52"/>
+        <location filename="../app/main.cpp" line="54"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>システムの言語の代わりに LANGUAGE（例: de, en, fr, ja）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="58"/>
+        <location filename="../app/main.cpp" line="60"/>
         <source>FILE, or a command.</source>
         <translation>FILE、またはコマンド。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="70"/>
+        <location filename="../app/main.cpp" line="72"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>finbook --help を参照してください</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="77"/>
+        <location filename="../app/main.cpp" line="79"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1。%2。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="113"/>
+        <location filename="../app/main.cpp" line="115"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>不明なコマンド「%1」です。%2。</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="38"/>
-        <source>export: png, svg, gif, mp4, webm, apng or html.</source>
-        <translation>export: png、svg、gif、mp4、webm、apng、html のいずれか。</translation>
+        <source>export: png, svg, gif, mp4, webm, apng, html or obj.</source>
+        <translation>export: png、svg、gif、mp4、webm、apng、html、obj のいずれか。</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="40"/>
@@ -324,127 +326,142 @@
         <translation>export: フレーム A～B（既定: 再生範囲）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="41"/>
+        <location filename="../app/cli_export.cpp" line="42"/>
+        <source>export: frame N only; a 3D model (obj) is one frame, by default the first of the play range.</source>
+        <translation>export: フレーム N のみ。3D モデル (obj) は 1 フレームで、既定では再生範囲の最初のフレーム。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="45"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: キャンバスサイズを S 倍にする。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="47"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: 毎秒 N フレーム（既定: ドキュメントの設定）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="49"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: この背景色（#rrggbb）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="46"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: no background.</source>
         <translation>export: 背景なし。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="52"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: 絵ごとに 1 ファイルとタイムシートを書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="54"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="51"/>
+        <location filename="../app/cli_export.cpp" line="55"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="53"/>
+        <location filename="../app/cli_export.cpp" line="57"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="84"/>
+        <location filename="../app/cli_export.cpp" line="88"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="99"/>
+        <location filename="../app/cli_export.cpp" line="102"/>
+        <source>--frame and --range cannot be used together.</source>
+        <translation>--frame と --range は同時に使えません。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="105"/>
+        <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
+        <translation>--frame には 1 以上のフレーム番号を指定してください (「%1」ではなく)。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="112"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="105"/>
+        <location filename="../app/cli_export.cpp" line="118"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="113"/>
+        <location filename="../app/cli_export.cpp" line="126"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="119"/>
+        <location filename="../app/cli_export.cpp" line="132"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="131"/>
-        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng or html.</source>
-        <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html のいずれかを使ってください。</translation>
+        <location filename="../app/cli_export.cpp" line="144"/>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html or obj.</source>
+        <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="147"/>
+        <location filename="../app/cli_export.cpp" line="167"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html or .obj, give a folder for PNG frames, or use --format.</source>
+        <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="160"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="154"/>
-        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng or .html, give a folder for PNG frames, or use --format.</source>
-        <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="158"/>
+        <location filename="../app/cli_export.cpp" line="172"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="174"/>
+        <location filename="../app/cli_export.cpp" line="188"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="178"/>
+        <location filename="../app/cli_export.cpp" line="192"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="188"/>
+        <location filename="../app/cli_export.cpp" line="202"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="190"/>
+        <location filename="../app/cli_export.cpp" line="204"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="286"/>
+        <location filename="../app/cli_export.cpp" line="300"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="297"/>
+        <location filename="../app/cli_export.cpp" line="311"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="304"/>
+        <location filename="../app/cli_export.cpp" line="318"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="306"/>
+        <location filename="../app/cli_export.cpp" line="320"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -619,12 +636,12 @@
     <message>
         <location filename="../model/src/export/export_encoded.cpp" line="58"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
+        <location filename="../model/src/export/export_obj.cpp" line="123"/>
         <source>its folder cannot be created</source>
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="106"/>
-        <location filename="../model/src/export/export_encoded.cpp" line="118"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="108"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
     </message>
@@ -670,37 +687,42 @@
         <translation>キャンバスのサイズがありません。ドキュメント設定で設定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="101"/>
+        <location filename="../model/src/export/export_plan.cpp" line="90"/>
+        <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
+        <translation>3D モデルに入るのは 1 フレームだけで、フレーム %1-%2 は入りません。フレームを 1 つ選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="110"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>倍率 %1 は画像のサイズとして使えません。一辺が 1～%2 ピクセルになる倍率を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="105"/>
+        <location filename="../model/src/export/export_plan.cpp" line="114"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>倍率 %1 では %2×%3 ピクセルの画像になります。一辺が 1～%4 ピクセルになる倍率を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="118"/>
+        <location filename="../model/src/export/export_plan.cpp" line="127"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>フレームレート %1 は使用できません。毎秒 %2～%3 フレームの範囲で選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="126"/>
+        <location filename="../model/src/export/export_plan.cpp" line="135"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>%1 動画は透明にできません。背景を透明にするには WebM、APNG、GIF、PNG のいずれかを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="150"/>
+        <location filename="../model/src/export/export_plan.cpp" line="159"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>この書き出しは %1 フレームを書き込みます。許可された %2 を超えるため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="157"/>
+        <location filename="../model/src/export/export_plan.cpp" line="166"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 個のファイル（再生ティック %2）を書き込みます。明示的な許可なしに %3 を超えることはできないため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="165"/>
+        <location filename="../model/src/export/export_plan.cpp" line="174"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 時間のアニメーション（%2 フレーム）になります。明示的な許可なしに %3 時間を超えることはできないため、何も書き出していません。</translation>
     </message>
@@ -750,7 +772,7 @@
         <translation>「%1」はフォルダーです。末尾が .%2 のファイル名を指定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="189"/>
+        <location filename="../model/src/export/exporter.cpp" line="201"/>
         <source>Choose where to export the animation to.</source>
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
@@ -810,6 +832,28 @@
         <location filename="../model/src/export/pending_output.cpp" line="268"/>
         <source>&quot;%1&quot; is a folder where a file should go</source>
         <translation>ファイルを置くべき場所に「%1」というフォルダーがあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_obj.cpp" line="89"/>
+        <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
+        <translation>フレーム %1 には 3D モデルにできる絵がありません。別のフレームを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_obj.cpp" line="94"/>
+        <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
+        <translation>フレーム %1 のオブジェクトはどれも 3D にできません。どれも点か直線で、膨らませる面がありません。何も書き出していません。形を描くか、別のフレームを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_obj.cpp" line="115"/>
+        <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
+        <translation>「%1」は自身のマテリアルファイルで上書きされてしまいます。末尾が .obj のファイル名を指定してください。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/export_obj.cpp" line="168"/>
+        <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
+        <translation>
+            <numerusform>フレーム %1 の %n 個のオブジェクトは 3D にできなかったため (点や直線には膨らませる面がありません)、省きました。</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2331,169 +2375,179 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="56"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
         <source>Export Animation</source>
         <translation>アニメーションの書き出し</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="64"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="281"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="76"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
         <source>Animated GIF</source>
         <translation>アニメーション GIF</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
         <source>MP4 video (H.264)</source>
         <translation>MP4 動画（H.264）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>WebM video (VP9)</source>
         <translation>WebM 動画（VP9）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>Animated PNG (APNG)</source>
         <translation>アニメーション PNG（APNG）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>HTML flipbook (one file)</source>
         <translation>HTML パラパラ漫画（1 ファイル）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>PNG images (a folder)</source>
         <translation>PNG 画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>SVG vector images (a folder)</source>
         <translation>SVG ベクター画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <source>3D model (OBJ), the current frame</source>
+        <translation>3D モデル (OBJ)、現在のフレーム</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
         <source>&amp;Browse...</source>
         <translation>参照(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
         <source>Play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>All frames</source>
         <translation>すべてのフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>Frames</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="105"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
         <source>Document background</source>
         <translation>ドキュメントの背景</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="106"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
         <source>Transparent</source>
         <translation>透明</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Colour</source>
         <translation>色</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source>Start again after the last frame</source>
         <translation>最後のフレームの後、最初から再生する</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>絵ごとに 1 ファイル（タイムシート付き）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="132"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="134"/>
         <source>to</source>
         <translation>～</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="147"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="148"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
         <source>&amp;Save to:</source>
         <translation>保存先(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
         <source>F&amp;rames:</source>
         <translation>フレーム(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
         <source>Sc&amp;ale:</source>
         <translation>倍率(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
         <source>&amp;Background:</source>
         <translation>背景(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>Frame ra&amp;te:</source>
         <translation>フレームレート(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>Loop:</source>
         <translation>ループ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>&amp;Export</source>
         <translation>書き出し(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>Cancel Export</source>
         <translation>書き出しをキャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="225"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="238"/>
         <source>%1 x %2 pixels</source>
         <translation>%1×%2 ピクセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="228"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="241"/>
+        <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
+        <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、隣に .mtl ファイルを置きます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="246"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>この形式には ffmpeg プログラムが必要ですが、見つかりませんでした。先にインストールしてください（Debian の場合: apt install ffmpeg）。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="290"/>
         <source>Export to Folder</source>
         <translation>フォルダーに書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="273"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="294"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>
@@ -2520,39 +2574,39 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="97"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="99"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>書き出しをキャンセルしました。何も書き込まれていません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="122"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="124"/>
         <source>&quot;%1&quot; already exists. Replace it?</source>
         <translation>「%1」はすでに存在します。置き換えますか？</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="123"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="125"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>書き出し先には「%1」など %n 個のファイルがすでに存在します。置き換えますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="126"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="128"/>
         <source>Replace Files?</source>
         <translation>ファイルを置き換えますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="133"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="135"/>
         <source>Export Anyway?</source>
         <translation>それでも書き出しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="135"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="137"/>
         <source>It may take a long time and a lot of disk space. Export anyway?</source>
         <translation>長い時間と多くのディスク容量が必要になることがあります。それでも書き出しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog_run.cpp" line="143"/>
+        <location filename="../ui/src/export/export_dialog_run.cpp" line="145"/>
         <source>Cannot Export</source>
         <translation>書き出せません</translation>
     </message>
@@ -2877,7 +2931,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
@@ -2962,172 +3016,172 @@
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="86"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="153"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="178"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="180"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="181"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="182"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="211"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="300"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>

@@ -316,6 +316,7 @@ void TestCliExport::fullDiskFailsCleanly_data()
     QTest::newRow("html") << "walk.html" << false;
     QTest::newRow("gif") << "walk.gif" << true;
     QTest::newRow("mp4") << "walk.mp4" << true;
+    QTest::newRow("obj") << "walk.obj" << false;
 }
 
 // Files cannot grow past 8 KiB (ulimit -f; SIGXFSZ ignored so writes fail with EFBIG), as

@@ -82,6 +82,7 @@ private slots:
     void failureIsShown();
     void fileMenuOpensTheDialog();
     void finishedExportShowsWhereItWent();
+    void objExportsTheCurrentFrame();
 
 private:
     std::unique_ptr<IsolatedSettings> m_settings;
@@ -347,6 +348,56 @@ void TestExportDialog::finishedExportShowsWhereItWent()
     QVERIFY(!box->findChild<QPushButton *>(QStringLiteral("export.openBrowser")));
     box->findChild<QPushButton *>(QStringLiteral("export.showFolder"))->click();
     QCOMPARE(opened.last(), QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("f"))));
+}
+
+// Issue 27: the 3D model (OBJ) is the current frame; the fields that do not apply to it are
+// disabled and the dialog says why. It writes what `finbook export --frame` writes.
+void TestExportDialog::objExportsTheCurrentFrame()
+{
+    model::Document doc;
+    loadInto(doc, 1);
+    ScriptedDialog dialog(doc, QStringLiteral("/films/walk.finbook"));
+    dialog.setCurrentFrame(4);
+    dialog.setFormat(ExportFormat::Obj);
+    QCOMPARE(dialog.options().target, QStringLiteral("/films/walk.obj"));
+    QCOMPARE(dialog.options().firstFrame, 4);
+    QCOMPARE(dialog.options().lastFrame, 4);
+    const QList<QWidget *> unused{dialog.rangeBox(), dialog.firstFrameBox(), dialog.lastFrameBox(),
+                                  dialog.scaleBox(), dialog.backgroundBox(), dialog.fpsBox(),
+                                  dialog.loopBox(),  dialog.perDrawingBox()};
+    for (QWidget *field : unused)
+        QVERIFY(!field->isEnabled());
+    bool explained = false;
+    for (QLabel *label : dialog.findChildren<QLabel *>())
+        explained |= label->text().contains(QLatin1String("current frame (5)"));
+    QVERIFY(explained);
+    dialog.setFormat(ExportFormat::Gif);
+    QVERIFY(dialog.rangeBox()->isEnabled() && dialog.scaleBox()->isEnabled() &&
+            dialog.fpsBox()->isEnabled());
+    QCOMPARE(dialog.options().firstFrame, -1);
+
+    dialog.setFormat(ExportFormat::Obj);
+    const QString target = m_dir.filePath(QStringLiteral("frame5.obj"));
+    dialog.setTarget(target);
+    QSignalSpy finished(&dialog, &ui::ExportDialog::exportFinished);
+    QTest::mouseClick(dialog.exportButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(),
+             qPrintable(dialog.failures.join(QLatin1Char('\n'))));
+    const QString mtl = m_dir.filePath(QStringLiteral("frame5.mtl"));
+    QCOMPARE(dialog.writtenFiles(), QStringList({target, mtl}));
+    QVERIFY2(dialog.summary().contains(QLatin1String("2")), qPrintable(dialog.summary()));
+
+    // The same bytes as the model's export of frame 5.
+    QTemporaryDir other;
+    model::ExportOptions options;
+    options.format = ExportFormat::Obj;
+    options.target = other.filePath(QStringLiteral("frame5.obj"));
+    options.firstFrame = options.lastFrame = 4;
+    QVERIFY(model::exportAnimation(model::exportSource(doc), options));
+    QFile a(target), b(options.target);
+    QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+    QCOMPARE(a.readAll(), b.readAll());
 }
 
 QTEST_MAIN(TestExportDialog)

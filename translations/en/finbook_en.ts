@@ -22,6 +22,14 @@
             <numerusform>ffmpeg made no progress for %n seconds and was stopped; nothing was written. Check that ffmpeg works, then export again.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../../model/src/export/export_obj.cpp" line="168"/>
+        <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
+        <translation>
+            <numerusform>%n object of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and was left out.</numerusform>
+            <numerusform>%n objects of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>FinbookFile</name>
@@ -102,7 +110,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/src/export/export_dialog_run.cpp" line="123"/>
+        <location filename="../../ui/src/export/export_dialog_run.cpp" line="125"/>
         <source>%n file(s) at the target already exist, such as &quot;%1&quot;. Replace them?</source>
         <translation>
             <numerusform>%n file at the target already exists, &quot;%1&quot;. Replace it?</numerusform>

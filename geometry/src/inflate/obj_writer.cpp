@@ -37,13 +37,21 @@ std::string safeName(const std::string &name)
 
 } // namespace
 
-bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects)
+bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects,
+              const ObjMaterials &materials)
 {
     out << "# Finbook inflated drawing: y up, canvas pixels, closed outward-facing solids\n";
+    const bool library = !materials.library.empty();
+    if (library)
+        out << "mtllib " << safeName(materials.library) << '\n';
     long offset = 1; // OBJ indices are 1-based and run on across objects
-    for (const ObjObject &object : objects) {
+    for (std::size_t o = 0; o < objects.size(); ++o) {
+        const ObjObject &object = objects[o];
         const InflatedSolid &solid = object.solid;
         out << "o " << safeName(object.name) << '\n';
+        if (library && o < materials.materials.size() && !materials.materials[o].empty())
+            out << "g " << safeName(object.name) << "\nusemtl " << safeName(materials.materials[o])
+                << '\n';
         for (Eigen::Index i = 0; i < solid.V.rows(); ++i)
             writeRow(out, "v", solid.V.row(i));
         for (Eigen::Index i = 0; i < solid.N.rows(); ++i)
@@ -60,6 +68,23 @@ bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects)
             out << '\n';
         }
         offset += long(solid.V.rows());
+    }
+    out.flush();
+    return bool(out);
+}
+
+bool writeMtl(std::ostream &out, const std::vector<MtlMaterial> &materials)
+{
+    out << "# Finbook materials: flat fill colours\n";
+    for (const MtlMaterial &material : materials) {
+        const Eigen::RowVector3d colour(material.red, material.green, material.blue);
+        out << "\nnewmtl " << safeName(material.name) << '\n';
+        writeRow(out, "Kd", colour);
+        writeRow(out, "Ka", colour);
+        writeRow(out, "Ks", Eigen::RowVector3d::Zero());
+        out << "d ";
+        writeNumber(out, material.opacity);
+        out << "\nillum 1\n";
     }
     out.flush();
     return bool(out);

@@ -38,6 +38,7 @@ using ExportOutcome = Expected<ExportResult, ExportError>;
 ExportOutcome exportSequence(const ExportContext &context);
 ExportOutcome exportEncoded(const ExportContext &context);
 ExportOutcome exportFlipbook(const ExportContext &context);
+ExportOutcome exportObj(const ExportContext &context);
 
 // The files of a sequence in writing order: one image per tick (or one per drawing plus the
 // exposure sheet, last). Names are made when asked for: a sequence may hold millions.

@@ -21,6 +21,7 @@ constexpr std::array kFormats{
     FormatInfo{ExportFormat::WebM, "webm", "webm"},
     FormatInfo{ExportFormat::Apng, "apng", "apng"},
     FormatInfo{ExportFormat::Html, "html", "html"},
+    FormatInfo{ExportFormat::Obj, "obj", "obj"},
 };
 
 const FormatInfo &info(ExportFormat format)
@@ -64,6 +65,15 @@ QString exportFormatName(ExportFormat format)
 QString exportFormatSuffix(ExportFormat format)
 {
     return QString::fromLatin1(info(format).suffix);
+}
+
+QString objMaterialPath(const QString &objTarget)
+{
+    // The name's own text with its suffix replaced: "walk.obj" stays relative, "a.b/c" gets
+    // "a.b/c.mtl".
+    const QString suffix = QFileInfo(objTarget).suffix();
+    const QString stem = suffix.isEmpty() ? objTarget : objTarget.chopped(suffix.size() + 1);
+    return stem + QStringLiteral(".mtl");
 }
 
 bool exportsSequence(ExportFormat format)

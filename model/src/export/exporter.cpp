@@ -126,6 +126,8 @@ bool SequenceFiles::contains(const QString &fileName) const
 
 QStringList exportTargetFiles(const ExportSource &source, const ExportOptions &options)
 {
+    if (options.format == ExportFormat::Obj)
+        return {options.target, objMaterialPath(options.target)};
     if (!exportsSequence(options.format))
         return {options.target};
     const auto plan = planExport(source, options);
@@ -145,6 +147,8 @@ void forEachExportTarget(const ExportSource &source, const ExportOptions &option
 {
     if (!exportsSequence(options.format)) {
         visit(options.target);
+        if (options.format == ExportFormat::Obj)
+            visit(objMaterialPath(options.target));
         return;
     }
     const auto plan = planExport(source, options);
@@ -159,6 +163,14 @@ void forEachExportTarget(const ExportSource &source, const ExportOptions &option
 QStringList existingExportTargets(const ExportSource &source, const ExportOptions &options)
 {
     struct stat file {};
+    if (options.format == ExportFormat::Obj) {
+        QStringList existing;
+        if (::stat(nativeTargetPath(options).constData(), &file) == 0)
+            existing << options.target;
+        if (::stat(QFile::encodeName(objMaterialPath(options.target)).constData(), &file) == 0)
+            existing << objMaterialPath(options.target);
+        return existing;
+    }
     if (!exportsSequence(options.format))
         return ::stat(nativeTargetPath(options).constData(), &file) == 0
                    ? QStringList{options.target}
@@ -197,6 +209,8 @@ Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
         return exportSequence(context);
     if (options.format == ExportFormat::Html)
         return exportFlipbook(context);
+    if (options.format == ExportFormat::Obj)
+        return exportObj(context);
     return exportEncoded(context);
 }
 

@@ -23,6 +23,7 @@
 #include <QStandardItemModel>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace finbook::ui {
@@ -79,7 +80,8 @@ void ExportDialog::buildForm()
         {ExportFormat::Apng, tr("Animated PNG (APNG)")},
         {ExportFormat::Html, tr("HTML flipbook (one file)")},
         {ExportFormat::PngSequence, tr("PNG images (a folder)")},
-        {ExportFormat::SvgSequence, tr("SVG vector images (a folder)")}};
+        {ExportFormat::SvgSequence, tr("SVG vector images (a folder)")},
+        {ExportFormat::Obj, tr("3D model (OBJ), the current frame")}};
     for (const auto &[format, label] : formats)
         m_format->addItem(label, int(format));
     m_target = new QLineEdit(this);
@@ -192,6 +194,12 @@ void ExportDialog::setTarget(const QString &path)
     m_target->setText(QDir::toNativeSeparators(path));
 }
 
+void ExportDialog::setCurrentFrame(int index)
+{
+    m_currentFrame = std::clamp(index, 0, std::max(0, m_doc.frameCount() - 1));
+    updateFields();
+}
+
 void ExportDialog::formatChanged()
 {
     const auto format = ExportFormat(m_format->currentData().toInt());
@@ -210,10 +218,14 @@ void ExportDialog::updateFields()
     if (!model::exportSupportsTransparency(format) &&
         m_background->currentData().toInt() == int(Background::Transparent))
         m_background->setCurrentIndex(int(Background::Document));
+    // A 3D model is the current frame, in canvas units, without background or rate.
+    const bool flat = format != ExportFormat::Obj;
     const bool custom = m_range->currentData().toInt() == int(Range::Custom);
-    m_first->setEnabled(custom);
-    m_last->setEnabled(custom);
-    m_colour->setEnabled(m_background->currentData().toInt() == int(Background::Colour));
+    for (QWidget *field : std::initializer_list<QWidget *>{m_range, m_scale, m_background, m_fps})
+        field->setEnabled(flat);
+    m_first->setEnabled(flat && custom);
+    m_last->setEnabled(flat && custom);
+    m_colour->setEnabled(flat && m_background->currentData().toInt() == int(Background::Colour));
     m_loop->setEnabled(model::exportSupportsLoop(format));
     m_perDrawing->setEnabled(model::exportsSequence(format));
     // The size only depends on the canvas, scale and format: plan it for one blank frame.
@@ -222,9 +234,15 @@ void ExportDialog::updateFields()
     model::ExportOptions sizing = options();
     sizing.firstFrame = sizing.lastFrame = -1;
     const auto plan = model::planExport(probe, sizing);
-    m_pixels->setText(plan ? tr("%1 x %2 pixels").arg(plan->size.width()).arg(plan->size.height())
-                           : QString());
-    if (model::exportNeedsFfmpeg(format) && model::ffmpegProgram().isEmpty())
+    m_pixels->setText(plan && flat
+                          ? tr("%1 x %2 pixels").arg(plan->size.width()).arg(plan->size.height())
+                          : QString());
+    if (!flat && !isExporting())
+        m_status->setText(tr("A 3D model holds the current frame (%1) only: its objects inflated, "
+                             "in their fill colours, with a .mtl file beside it. The frames, "
+                             "scale, background and frame rate do not apply.")
+                              .arg(m_currentFrame + 1));
+    else if (model::exportNeedsFfmpeg(format) && model::ffmpegProgram().isEmpty())
         m_status->setText(tr("This format needs the ffmpeg program, which was not found; "
                              "install it (on Debian: apt install ffmpeg) first."));
     else if (!isExporting())
@@ -248,6 +266,8 @@ model::ExportOptions ExportDialog::options() const
     default:
         break;
     }
+    if (o.format == ExportFormat::Obj) // whatever the (disabled) range says
+        o.firstFrame = o.lastFrame = m_currentFrame;
     o.scale = m_scale->value();
     const auto background = Background(m_background->currentData().toInt());
     o.transparent = background == Background::Transparent;

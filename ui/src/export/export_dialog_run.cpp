@@ -85,6 +85,8 @@ void ExportDialog::jobFinished(bool ok, const model::ExportError &error, const Q
         const qint64 count = m_job ? m_job->fileCount() : files.size();
         m_summary = tr("Exported %n file(s) to %1", nullptr, int(std::min<qint64>(count, INT_MAX)))
                         .arg(QDir::toNativeSeparators(where));
+        if (m_job && !m_job->note().isEmpty())
+            m_summary += QLatin1Char(' ') + m_job->note();
         m_status->setText(m_summary);
         emit exportFinished(true);
         accept();

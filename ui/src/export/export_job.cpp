@@ -40,8 +40,10 @@ void ExportJob::run()
             emit progressed(done, total);
             return !m_cancel.load();
         });
-    if (result)
+    if (result) {
         m_fileCount = result->fileCount;
+        m_note = result->note;
+    }
     if (result)
         emit finished(true, model::ExportError{}, result->files);
     else

@@ -75,6 +75,7 @@ void MainWindow::createFileMenu()
     connect(exportAnimation, &QAction::triggered, this, [this] {
         settlePoses();
         ExportDialog dialog(*m_doc, m_path, this);
+        dialog.setCurrentFrame(m_state->currentFrameIndex());
         if (dialog.exec() != QDialog::Accepted)
             return;
         statusBar()->showMessage(dialog.summary());

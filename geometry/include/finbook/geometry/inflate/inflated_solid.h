@@ -38,11 +38,33 @@ struct ObjObject {
     InflatedSolid solid;
 };
 
+// Materials of an OBJ file (all optional). With a library, the file names it ("mtllib"), and
+// each object with a material (materials[i] for objects[i], non-empty) is also a group of
+// that name ("g") drawn in that material ("usemtl"), as Blender and other readers expect.
+struct ObjMaterials {
+    std::string library;                // the .mtl file's name, relative to the .obj
+    std::vector<std::string> materials; // per object; empty or shorter: no material
+};
+
 // Writes Wavefront OBJ text: a comment, then per object "o name", its "v" and "vn" lines and
 // its faces as "f a//a b//b c//c" (1-based, positions and normals share indices). Numbers
 // are written in the shortest form that reads back exactly, independent of the locale; line
 // breaks and other control characters in names become '_'. Returns false if the stream
 // failed.
-bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects);
+bool writeObj(std::ostream &out, const std::vector<ObjObject> &objects,
+              const ObjMaterials &materials = {});
+
+// One material of an MTL file: a flat diffuse colour, components in [0, 1] (as stored, sRGB),
+// and its opacity.
+struct MtlMaterial {
+    std::string name;
+    double red = 0.0, green = 0.0, blue = 0.0;
+    double opacity = 1.0;
+};
+
+// Writes the MTL text for `materials`: per material "newmtl", its diffuse and ambient colour
+// ("Kd", "Ka"), no specular highlight, its opacity ("d") and "illum 1". Names as in writeObj.
+// Returns false if the stream failed.
+bool writeMtl(std::ostream &out, const std::vector<MtlMaterial> &materials);
 
 } // namespace finbook::geometry

@@ -25,6 +25,7 @@ enum class ExportFormat {
     WebM,        // ffmpeg VP9, with alpha when transparent
     Apng,        // ffmpeg animated PNG
     Html,        // one self-contained page that plays the animation
+    Obj,         // one frame's objects inflated to 3D: a Wavefront OBJ file and its .mtl
 };
 
 struct ExportOptions {
@@ -35,7 +36,8 @@ struct ExportOptions {
     // for messages, the lock and the temporaries beside it, and the finished file is put
     // under these bytes. Empty: the name `target` encodes.
     QByteArray nativeName;
-    // Document frame indices, inclusive. Both -1: the document's play range.
+    // Document frame indices, inclusive. Both -1: the document's play range. A 3D model (Obj)
+    // holds one frame: first == last, or both -1 for the play range's first frame.
     int firstFrame = -1;
     int lastFrame = -1;
     double scale = 1.0;             // output pixels = canvas size × scale, at least 1×1
@@ -69,6 +71,9 @@ struct ExportResult {
     qint64 images = 0; // frames rendered and encoded
     qint64 ticks = 0;  // playback ticks covered (holds included)
     QSize size;        // pixel size of the output
+    // A sentence about what was left out, for the user (a 3D model's objects that could not
+    // be made 3D); empty when nothing was.
+    QString note;
 };
 
 enum class ExportErrorCode {
@@ -95,7 +100,7 @@ constexpr qsizetype kListedExportFiles = 1000;
 
 using ExportProgress = std::function<bool(qint64 done, qint64 total)>;
 
-// "png", "svg", "gif", "mp4", "webm", "apng", "html" (also "htm"), case-insensitive.
+// "png", "svg", "gif", "mp4", "webm", "apng", "html" (also "htm"), "obj", case-insensitive.
 std::optional<ExportFormat> exportFormatFromName(const QString &name);
 // The format a path's suffix names (".png" names the PNG sequence); empty for no or an
 // unknown suffix.
@@ -103,6 +108,8 @@ std::optional<ExportFormat> exportFormatForPath(const QString &path);
 QString exportFormatName(ExportFormat format);
 // The file suffix of the output (of each file, for sequences).
 QString exportFormatSuffix(ExportFormat format);
+// The material file an OBJ export writes beside `objTarget`: its name with the suffix .mtl.
+QString objMaterialPath(const QString &objTarget);
 bool exportsSequence(ExportFormat format);
 bool exportNeedsFfmpeg(ExportFormat format);
 bool exportSupportsTransparency(ExportFormat format);

@@ -1,4 +1,5 @@
-// Exporting an animation: PNG/SVG sequences, GIF, MP4, WebM, APNG and a one-file HTML flipbook.
+// Exporting an animation: PNG/SVG sequences, GIF, MP4, WebM, APNG and a one-file HTML flipbook;
+// and one frame as a 3D model (OBJ + MTL, its objects inflated: frame_solids.h).
 //
 // GIF and the videos are encoded by the ffmpeg program (QProcess; frames piped raw to its
 // standard input, no temporary images). $FINBOOK_FFMPEG names another ffmpeg executable.
@@ -20,13 +21,14 @@ Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
                                                     const ExportProgress &progress = {});
 
 // The files a sequence export would write into its folder (names only, in order), so callers
-// can ask before overwriting; for single-file formats, the target itself. Empty when the
-// options cannot be exported or the export is larger than allowed (checkExportSize).
+// can ask before overwriting; for single-file formats, the target itself (a 3D model: the
+// .obj and its .mtl). Empty when the options cannot be exported or the export is larger than
+// allowed (checkExportSize).
 QStringList exportTargetFiles(const ExportSource &source, const ExportOptions &options);
 
 // Calls `visit` with the path of every file the export writes, in order (the target itself
-// for single-file formats); nothing when the options cannot be exported. Names are made one
-// at a time however long the sequence.
+// for single-file formats, then a 3D model's .mtl); nothing when the options cannot be
+// exported. Names are made one at a time however long the sequence.
 void forEachExportTarget(const ExportSource &source, const ExportOptions &options,
                          const std::function<void(const QString &path)> &visit);
 

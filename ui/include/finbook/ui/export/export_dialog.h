@@ -5,6 +5,8 @@
 // replaced only after confirmOverwrite() says yes; failures reach the user through
 // showFailure() with ffmpeg's last lines as details. Both are virtual so tests can answer.
 // A successful export closes the dialog (accepted); summary() then says what was written.
+// The 3D model (OBJ) exports the current frame only (setCurrentFrame): the range, scale,
+// background and rate fields are disabled for it, and the status line says so.
 #pragma once
 
 #include <finbook/model/export/export_options.h>
@@ -47,6 +49,8 @@ public:
     model::ExportOptions options() const;
     void setFormat(model::ExportFormat format);
     void setTarget(const QString &path);
+    // The frame the editor shows (document index): what a 3D model export writes.
+    void setCurrentFrame(int index);
     bool isExporting() const;
     QString summary() const { return m_summary; }
     // The files the finished export wrote (empty before that).
@@ -95,6 +99,7 @@ private:
 
     const model::Document &m_doc;
     QString m_documentPath;
+    int m_currentFrame = 0;
     QComboBox *m_format = nullptr;
     QLineEdit *m_target = nullptr;
     QPushButton *m_browse = nullptr;

@@ -29,6 +29,9 @@ public:
     const model::ExportOptions &options() const { return m_options; }
     // Files the finished export wrote (`files` lists only the first of a long sequence).
     qint64 fileCount() const { return m_fileCount; }
+    // What the finished export left out, in a sentence (ExportResult::note); read after
+    // finished().
+    QString note() const { return m_note; }
 
 signals:
     void progressed(qint64 done, qint64 total);
@@ -42,6 +45,7 @@ private:
     model::ExportOptions m_options;
     std::atomic<bool> m_cancel{false};
     std::atomic<qint64> m_fileCount{0};
+    QString m_note; // written by the worker before finished() is emitted
     bool m_running = false;
     QThread *m_thread = nullptr;
 };

@@ -1,0 +1,46 @@
+// A frame's objects as 3D solids (issue 27's 3D export, RealSkel's own output): each visible
+// object's shape as it shows now (posed where it is posed), meshed, inflated and closed
+// (geometry/inflate), with the colour it is exported in.
+#pragma once
+
+#include <finbook/geometry/inflate/inflated_solid.h>
+#include <finbook/model/types.h>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace finbook::model {
+
+struct ObjectSolid {
+    Id groupId = kNoId;
+    QString name; // the object's name as the user gave it (may be empty or repeated)
+    QRgb color = 0xff000000;
+    geometry::InflatedSolid solid; // y up, canvas px (inflated_solid.h)
+};
+
+struct FrameSolids {
+    std::vector<ObjectSolid> objects; // back to front, as the frame holds them
+    int candidates = 0;               // visible objects with at least one stroke point
+    // Of those, the ones that are a dot or a straight line (every point within one pen width
+    // of a line) or whose shape could not be meshed or inflated.
+    int skipped = 0;
+};
+
+// The colour an object is exported in: its largest fill's (by the rest area of the regions it
+// shows on) when a fill shows, else its first stroke's; opaque black for an empty object.
+QRgb objectExportColor(const StrokeGroup &group, double closeGap);
+
+// Called after each object with (objects done, candidates); returning false cancels.
+using SolidsProgress = std::function<bool(int done, int total)>;
+
+// Every visible object of `frame` with strokes, shaped from its displayed strokes
+// (posedStrokes) as meshing sees them (its mesh density, the document's gap closing), meshed
+// (geometry::buildObjectMesh), inflated and closed. A dot or a straight line (its pen band
+// would only make a bead or a rod), or an object that cannot be meshed or inflated, is
+// counted in `skipped`, never an error. nullopt only when `progress` cancelled.
+// Reads only its arguments: safe on a worker thread.
+std::optional<FrameSolids> frameSolids(const Frame &frame, const DocumentSettings &settings,
+                                       const SolidsProgress &progress = {});
+
+} // namespace finbook::model

@@ -1,0 +1,175 @@
+// The 3D model export: one frame's objects inflated to closed solids (frame_solids.h), written
+// as a Wavefront OBJ file with one object (and group) per drawing object and a material file
+// beside it (NAME.mtl) holding each object's colour, as Blender imports them. Both files go
+// through the same safe path as the other single-file formats: locked, written beside the
+// target, synced and renamed into place only when complete.
+#include "export_formats.h"
+#include "export_text.h"
+#include "pending_output.h"
+#include "target_lock.h"
+
+#include <finbook/model/export/frame_solids.h>
+
+#include <QColor>
+#include <QFileInfo>
+
+#include <set>
+#include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace finbook::model {
+
+namespace {
+// OBJ and MTL names end at white space for many readers: letters, digits, '-', '_' and '.'
+// are kept (UTF-8), anything else becomes '_'. Repeated names get _2, _3, ...
+std::vector<std::string> objectNames(const std::vector<ObjectSolid> &objects)
+{
+    std::vector<std::string> names;
+    std::set<QString> used;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        QString name = objects[i].name.trimmed();
+        for (QChar &c : name)
+            if (!c.isLetterOrNumber() && c != QLatin1Char('-') && c != QLatin1Char('_') &&
+                c != QLatin1Char('.'))
+                c = QLatin1Char('_');
+        if (name.isEmpty())
+            name = QStringLiteral("object_%1").arg(i + 1);
+        QString unique = name;
+        for (int n = 2; used.count(unique); ++n)
+            unique = QStringLiteral("%1_%2").arg(name).arg(n);
+        used.insert(unique);
+        names.push_back(unique.toStdString());
+    }
+    return names;
+}
+
+struct ObjFiles {
+    QByteArray obj, mtl;
+};
+
+ObjFiles objFiles(const FrameSolids &solids, const QString &materialFile)
+{
+    const std::vector<std::string> names = objectNames(solids.objects);
+    std::vector<geometry::ObjObject> objects;
+    std::vector<geometry::MtlMaterial> materials;
+    geometry::ObjMaterials links{QFileInfo(materialFile).fileName().toStdString(), names};
+    for (std::size_t i = 0; i < solids.objects.size(); ++i) {
+        const ObjectSolid &object = solids.objects[i];
+        objects.push_back({names[i], object.solid});
+        const QColor colour = QColor::fromRgba(object.color);
+        materials.push_back(
+            {names[i], colour.redF(), colour.greenF(), colour.blueF(), colour.alphaF()});
+    }
+    std::ostringstream obj, mtl;
+    geometry::writeObj(obj, objects, links);
+    geometry::writeMtl(mtl, materials);
+    return {QByteArray::fromStdString(obj.str()), QByteArray::fromStdString(mtl.str())};
+}
+
+// The material file's options: its path (and bytes, when the target is named by bytes).
+ExportOptions materialOptions(const ExportOptions &options)
+{
+    ExportOptions mtl = options;
+    mtl.target = objMaterialPath(options.target);
+    if (!options.nativeName.isEmpty()) {
+        QByteArray name = options.nativeName;
+        const qsizetype dot = name.lastIndexOf('.');
+        if (dot > 0)
+            name.truncate(dot);
+        mtl.nativeName = name + ".mtl";
+    }
+    return mtl;
+}
+
+ExportError nothingToExport(int frameNumber, const FrameSolids &solids)
+{
+    if (solids.candidates == 0)
+        return exportError(ExportErrorCode::BadOptions,
+                           Export::tr("Frame %1 shows no drawing to make a 3D model of; choose "
+                                      "another frame.")
+                               .arg(frameNumber));
+    return exportError(
+        ExportErrorCode::BadOptions,
+        Export::tr("No object of frame %1 can be made 3D: each is a dot or a straight line, "
+                   "with no area to inflate. Nothing was exported; draw a shape or choose "
+                   "another frame.")
+            .arg(frameNumber));
+}
+
+bool exists(const QByteArray &path)
+{
+    struct stat status {};
+    return ::lstat(path.constData(), &status) == 0;
+}
+} // namespace
+
+ExportOutcome exportObj(const ExportContext &context)
+{
+    const ExportOptions &options = context.options;
+    const ExportOptions mtlOptions = materialOptions(options);
+    const QString target = options.target;
+    if (QFileInfo(target).suffix().compare(QLatin1String("mtl"), Qt::CaseInsensitive) == 0)
+        return unexpected(exportError(
+            ExportErrorCode::BadOptions,
+            Export::tr("\"%1\" would be overwritten by its own material file; give a file name "
+                       "ending in .obj.")
+                .arg(target)));
+    for (const ExportOptions *file : {&options, &mtlOptions})
+        if (auto error = checkFileTarget(*file))
+            return unexpected(*error);
+    FolderGuard guard(QFileInfo(target).path());
+    if (!guard.ok())
+        return unexpected(writeFailed(target, Export::tr("its folder cannot be created")));
+    TargetLock lock(target, false), mtlLock(mtlOptions.target, false);
+    if (!lock.tryLock() || !mtlLock.tryLock())
+        return unexpected(targetBusy(target));
+    lock.removeLeftovers();
+    mtlLock.removeLeftovers();
+
+    const int frameIndex = context.plan.frames.front();
+    const auto solids =
+        frameSolids(context.frame(0), context.source.settings,
+                    [&context](int done, int total) { return !context.cancelled(done, total); });
+    if (!solids)
+        return unexpected(cancelledError());
+    if (solids->objects.empty())
+        return unexpected(nothingToExport(frameIndex + 1, *solids));
+    const ObjFiles files = objFiles(*solids, mtlOptions.target);
+
+    PendingFile pendingObj(target), pendingMtl(mtlOptions.target);
+    QString reason;
+    if (!pendingObj.open(&reason) || !pendingMtl.open(&reason))
+        return unexpected(writeFailed(target, reason));
+    if (auto failed = writeSynced(pendingObj.file(), files.obj))
+        return unexpected(writeFailed(target, *failed));
+    if (auto failed = writeSynced(pendingMtl.file(), files.mtl))
+        return unexpected(writeFailed(mtlOptions.target, *failed));
+    // The materials first: an OBJ file in place always finds its colours. Should the OBJ
+    // then fail, a material file this export added goes again.
+    const QByteArray mtlPath = nativeTargetPath(mtlOptions);
+    const bool hadMtl = exists(mtlPath);
+    if (auto error = commitFile(pendingMtl, mtlOptions))
+        return unexpected(*error);
+    if (auto error = commitFile(pendingObj, options)) {
+        if (!hadMtl)
+            ::unlink(mtlPath.constData());
+        return unexpected(*error);
+    }
+    guard.keep();
+
+    ExportResult result;
+    result.files << target << mtlOptions.target;
+    result.fileCount = 2;
+    result.images = 1;
+    result.ticks = context.plan.ticks;
+    result.size = context.plan.size;
+    if (solids->skipped > 0)
+        result.note = Export::tr("%n object(s) of frame %1 could not be made 3D (a dot or a "
+                                 "straight line has no area to inflate) and were left out.",
+                                 nullptr, solids->skipped)
+                          .arg(frameIndex + 1);
+    return result;
+}
+
+} // namespace finbook::model

@@ -1,0 +1,126 @@
+#include <finbook/geometry/inflate/inflation.h>
+#include <finbook/geometry/object_mesh.h>
+#include <finbook/model/deform_setup.h>
+#include <finbook/model/export/frame_solids.h>
+#include <finbook/model/fill/fill_regions.h>
+#include <finbook/model/fill/fill_resolve.h>
+#include <finbook/model/render.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace finbook::model {
+
+namespace {
+bool hasPoints(const StrokeGroup &group)
+{
+    return std::any_of(group.strokes.begin(), group.strokes.end(),
+                       [](const Stroke &s) { return s.data && !s.data->points.empty(); });
+}
+
+// Whether every point lies within the widest pen of one straight line: a dot or a straight
+// line. Its pen band would mesh, but only as a bead or a rod one pen wide, not a body the
+// drawing shows (principal axes of the points; their spread across the main one).
+bool isDotOrStraightLine(const std::vector<StrokeDataPtr> &strokes)
+{
+    std::vector<Eigen::Vector2d> points;
+    double widest = 0.0;
+    for (const StrokeDataPtr &data : strokes) {
+        if (!data)
+            continue;
+        if (std::isfinite(data->width))
+            widest = std::max(widest, double(data->width));
+        for (const StrokePoint &p : data->points)
+            if (std::isfinite(p.x) && std::isfinite(p.y))
+                points.emplace_back(p.x, p.y);
+    }
+    if (points.empty())
+        return true;
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (const Eigen::Vector2d &p : points)
+        mean += p;
+    mean /= double(points.size());
+    Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+    for (const Eigen::Vector2d &p : points)
+        covariance += (p - mean) * (p - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> axes(covariance);
+    const Eigen::Vector2d across = axes.eigenvectors().col(0); // the smaller eigenvalue's
+    double low = 0.0, high = 0.0;
+    for (const Eigen::Vector2d &p : points) {
+        const double t = across.dot(p - mean);
+        low = std::min(low, t);
+        high = std::max(high, t);
+    }
+    return high - low <= std::max(widest, 2.0);
+}
+
+// The object's shape as it shows now: its displayed strokes, meshed as the deformers mesh
+// its rest drawing (same density), with the gaps closed as its fills see them.
+std::optional<geometry::InflatedSolid> solidOf(const StrokeGroup &group, double closeGap)
+{
+    MeshKey key;
+    key.density = group.meshDensity;
+    for (const Stroke &s : posedStrokes(group))
+        key.strokes.push_back(s.data);
+    if (isDotOrStraightLine(key.strokes))
+        return std::nullopt;
+    geometry::MeshOptions options;
+    options.density = group.meshDensity;
+    options.regions = regionsOptions(closeGap);
+    const auto mesh = geometry::buildObjectMesh(strokeInputs(key), options);
+    if (!mesh)
+        return std::nullopt;
+    const auto inflation = geometry::inflateObjectMesh(*mesh);
+    if (!inflation)
+        return std::nullopt;
+    geometry::InflatedSolid solid = geometry::inflatedSolid(*inflation);
+    if (solid.F.rows() == 0 || !solid.V.allFinite() || !solid.N.allFinite() ||
+        !(geometry::signedVolume(solid) > 0.0))
+        return std::nullopt;
+    return solid;
+}
+} // namespace
+
+QRgb objectExportColor(const StrokeGroup &group, double closeGap)
+{
+    if (!group.fills.empty()) {
+        const ObjectRegionsPtr regions = objectRegions(group, closeGap);
+        const std::vector<int> shown = faceFills(*regions, group.fills);
+        std::vector<double> area(group.fills.size(), 0.0);
+        for (std::size_t face = 0; face < shown.size(); ++face)
+            if (shown[face] >= 0)
+                area[std::size_t(shown[face])] += regions->regions().faces[face].area;
+        const auto largest = std::max_element(area.begin(), area.end());
+        if (*largest > 0.0)
+            return group.fills[std::size_t(largest - area.begin())].color;
+    }
+    for (const Stroke &s : group.strokes)
+        if (s.data)
+            return s.data->color;
+    return 0xff000000;
+}
+
+std::optional<FrameSolids> frameSolids(const Frame &frame, const DocumentSettings &settings,
+                                       const SolidsProgress &progress)
+{
+    FrameSolids out;
+    for (const StrokeGroup &group : frame.groups)
+        out.candidates += group.visible && hasPoints(group) ? 1 : 0;
+    int done = 0;
+    for (const StrokeGroup &group : frame.groups) {
+        if (!group.visible || !hasPoints(group))
+            continue;
+        if (auto solid = solidOf(group, settings.closeGap))
+            out.objects.push_back({group.id, group.name,
+                                   objectExportColor(group, settings.closeGap), std::move(*solid)});
+        else
+            ++out.skipped;
+        if (progress && !progress(++done, out.candidates))
+            return std::nullopt;
+    }
+    return out;
+}
+
+} // namespace finbook::model

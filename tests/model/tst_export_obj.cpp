@@ -1,0 +1,438 @@
+// The 3D model export (OBJ + MTL): a generated frame and the bundled example, read back by a
+// small independent parser. Every object is a closed, consistently oriented solid of positive
+// volume in its own material of the right colour; posed objects are exported as they show;
+// objects that cannot be inflated are left out and counted; the files reach the target as the
+// other formats' do (refused when in the way, nothing written on an error or a cancel).
+#include "export_support.h"
+#include "fill_support.h"
+
+#include <finbook/model/deform_setup.h>
+#include <finbook/model/export/frame_solids.h>
+#include <finbook/model/fill/fill_commands.h>
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <array>
+#include <map>
+
+using namespace finbook;
+using namespace finbook::model;
+using namespace finbook::test;
+
+namespace {
+constexpr QRgb kBlue = 0xff2040e0;
+constexpr QRgb kRed = 0xffe03020;
+constexpr QRgb kGreen = 0xff20a040;
+const QPointF kShift(300, 50); // where the pins move the posed object
+
+struct ParsedObject {
+    std::string name, group, material;
+    std::vector<std::array<int, 3>> faces; // 0-based, into ParsedObj::v
+    int firstVertex = 0, vertices = 0;
+};
+
+struct ParsedObj {
+    std::string library;
+    std::vector<std::array<double, 3>> v;
+    long normals = 0;
+    std::vector<ParsedObject> objects;
+    QString problem;
+};
+
+ParsedObj parseObj(const QByteArray &text)
+{
+    ParsedObj obj;
+    for (const QByteArray &raw : text.split('\n')) {
+        const QByteArray line = raw.trimmed();
+        if (line.isEmpty() || line.startsWith('#'))
+            continue;
+        const QList<QByteArray> words = line.split(' ');
+        const QByteArray tag = words.front();
+        const std::string rest = line.mid(tag.size() + 1).toStdString();
+        if (tag == "mtllib") {
+            obj.library = rest;
+        } else if (tag == "o") {
+            obj.objects.push_back({rest, {}, {}, {}, int(obj.v.size()), 0});
+        } else if (obj.objects.empty()) {
+            obj.problem = QString::fromUtf8(line);
+        } else if (tag == "g") {
+            obj.objects.back().group = rest;
+        } else if (tag == "usemtl") {
+            obj.objects.back().material = rest;
+        } else if (tag == "v" && words.size() == 4) {
+            obj.v.push_back({words[1].toDouble(), words[2].toDouble(), words[3].toDouble()});
+            ++obj.objects.back().vertices;
+        } else if (tag == "vn" && words.size() == 4) {
+            ++obj.normals;
+        } else if (tag == "f" && words.size() == 4) {
+            std::array<int, 3> f{};
+            for (int c = 0; c < 3; ++c)
+                f[std::size_t(c)] = words[c + 1].split('/').front().toInt() - 1;
+            obj.objects.back().faces.push_back(f);
+        } else {
+            obj.problem = QString::fromUtf8(line);
+        }
+    }
+    return obj;
+}
+
+// newmtl name → Kd and d.
+std::map<std::string, std::array<double, 4>> parseMtl(const QByteArray &text)
+{
+    std::map<std::string, std::array<double, 4>> materials;
+    std::string current;
+    for (const QByteArray &raw : text.split('\n')) {
+        const QList<QByteArray> words = raw.trimmed().split(' ');
+        if (words.front() == "newmtl" && words.size() == 2) {
+            current = words[1].toStdString();
+            materials[current] = {-1, -1, -1, 1};
+        } else if (words.front() == "Kd" && words.size() == 4) {
+            for (int c = 0; c < 3; ++c)
+                materials[current][std::size_t(c)] = words[c + 1].toDouble();
+        } else if (words.front() == "d" && words.size() == 2) {
+            materials[current][3] = words[1].toDouble();
+        }
+    }
+    return materials;
+}
+
+bool closedAndOriented(const std::vector<std::array<int, 3>> &faces)
+{
+    std::map<std::pair<int, int>, int> directed;
+    for (const auto &f : faces)
+        for (int c = 0; c < 3; ++c)
+            ++directed[{f[std::size_t(c)], f[std::size_t((c + 1) % 3)]}];
+    for (const auto &[edge, count] : directed) {
+        const auto reverse = directed.find({edge.second, edge.first});
+        if (count != 1 || reverse == directed.end() || reverse->second != 1)
+            return false;
+    }
+    return !faces.empty();
+}
+
+double volumeOf(const ParsedObj &obj, const ParsedObject &object)
+{
+    double volume = 0;
+    for (const auto &f : object.faces) {
+        const auto &a = obj.v[std::size_t(f[0])], &b = obj.v[std::size_t(f[1])],
+                   &c = obj.v[std::size_t(f[2])];
+        volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                   a[2] * (b[0] * c[1] - b[1] * c[0])) /
+                  6.0;
+    }
+    return volume;
+}
+
+bool faceIndicesInside(const ParsedObject &object)
+{
+    for (const auto &f : object.faces)
+        for (int i : f)
+            if (i < object.firstVertex || i >= object.firstVertex + object.vertices)
+                return false;
+    return true;
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+StrokeDataPtr circleStroke(QPointF centre, double radius, QRgb color)
+{
+    QPolygonF ring;
+    for (int i = 0; i <= 48; ++i)
+        ring << centre + radius * QPointF(std::cos(i * M_PI / 24), std::sin(i * M_PI / 24));
+    return testing::polylineStroke(ring, 4.0, 3.0f, color);
+}
+
+Id addObject(Document &doc, const QString &name)
+{
+    auto *add =
+        new AddObjectCommand(&doc, doc.frameAt(0).id, int(doc.frameAt(0).groups.size()), name);
+    doc.undoStack()->push(add);
+    return add->groupId();
+}
+
+// One frame, back to front:
+//   "Body": a square with a smaller square inside, the inner one filled red (first fill), the
+//           ring around it blue (larger): exported blue;
+//   "Left arm": a green circle without fills: exported in its stroke colour, green;
+//   "Body" again: a black circle posed by pins kShift away: exported where it shows;
+//   "Hidden": a circle in a hidden object; "Dot": one point; "Line": a straight line;
+//   "Empty": no stroke.
+ExportSource generatedSource(Id *posed = nullptr)
+{
+    Document doc;
+    const Id body = testing::squareDocument(doc, QRectF(100, 100, 200, 200));
+    doc.undoStack()->push(new RenameObjectCommand(&doc, body, QStringLiteral("Body")));
+    doc.undoStack()->push(new AddStrokeCommand(
+        &doc, body, testing::polylineStroke(testing::squareCorners(QRectF(150, 150, 60, 60)))));
+    doc.undoStack()->push(fillRegionCommand(&doc, body, QPointF(180, 180), kRed).release());
+    doc.undoStack()->push(fillRegionCommand(&doc, body, QPointF(120, 250), kBlue).release());
+
+    const Id arm = addObject(doc, QStringLiteral("Left arm"));
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, arm, circleStroke(QPointF(500, 200), 60, kGreen)));
+
+    const Id moved = addObject(doc, QStringLiteral("Body"));
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, moved, circleStroke(QPointF(200, 500), 50, 0xff000000)));
+    Rig rig;
+    rig.pins = {{1, QPointF(150, 450), QPointF(150, 450) + kShift},
+                {2, QPointF(250, 550), QPointF(250, 550) + kShift}};
+    doc.setRig(moved, rig);
+    DeformJob job;
+    job.groupId = moved;
+    job.key = MeshKey::of(*doc.group(moved));
+    job.rig = rig.atRest();
+    if (const auto setup = buildDeformSetup(job))
+        if (const auto pose = solvePose(**setup, *doc.group(moved)))
+            doc.setDeformed(moved, pose->strokes);
+    if (posed)
+        *posed = moved;
+
+    const Id hidden = addObject(doc, QStringLiteral("Hidden"));
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, hidden, circleStroke(QPointF(700, 500), 40, kRed)));
+    doc.undoStack()->push(new SetObjectFlagCommand(&doc, hidden, ObjectFlag::Visible, false));
+
+    const Id dot = addObject(doc, QStringLiteral("Dot"));
+    auto point = std::make_shared<StrokeData>();
+    point->points = {{600.0f, 600.0f, 1.0f}};
+    doc.undoStack()->push(new AddStrokeCommand(&doc, dot, point));
+    const Id line = addObject(doc, QStringLiteral("Line"));
+    doc.undoStack()->push(new AddStrokeCommand(
+        &doc, line, testing::polylineStroke({QPointF(400, 650), QPointF(700, 640)})));
+    addObject(doc, QStringLiteral("Empty"));
+
+    DocumentSettings s = doc.settings();
+    s.canvasSize = QSize(800, 700);
+    return ExportSource{doc.frames(), s};
+}
+
+ExportOptions objOptions(const QString &target)
+{
+    ExportOptions o;
+    o.format = ExportFormat::Obj;
+    o.target = target;
+    return o;
+}
+
+bool nearColour(const std::array<double, 4> &kd, QRgb expected)
+{
+    return std::abs(kd[0] - qRed(expected) / 255.0) < 1e-6 &&
+           std::abs(kd[1] - qGreen(expected) / 255.0) < 1e-6 &&
+           std::abs(kd[2] - qBlue(expected) / 255.0) < 1e-6;
+}
+} // namespace
+
+class TestExportObj : public QObject {
+    Q_OBJECT
+private slots:
+    void generatedFrameRoundTrips();
+    void exampleFrameIsClosedSolids();
+    void frameOptionPicksTheDrawing();
+    void nothingMeshableWritesNothing();
+    void existingFilesAreRefusedWithoutOverwrite();
+    void cancelLeavesNothing();
+};
+
+void TestExportObj::generatedFrameRoundTrips()
+{
+    QTemporaryDir dir;
+    Id posedId = kNoId;
+    const ExportSource source = generatedSource(&posedId);
+    QVERIFY(source.frames.front().groups.size() == 7);
+    QVERIFY(source.frames.front().groups[2].isDeformed());
+    const QString target = dir.filePath(QStringLiteral("scene.obj"));
+    const auto result = exportAnimation(source, objOptions(target));
+    QVERIFY2(result, result ? "" : qPrintable(result.error().message));
+    QCOMPARE(result->files, QStringList({target, dir.filePath(QStringLiteral("scene.mtl"))}));
+    QCOMPARE(result->fileCount, qint64(2));
+    // The dot and the line are left out and said so; the hidden and the empty object are not
+    // counted.
+    QVERIFY2(result->note.contains(QLatin1String("2 object")), qPrintable(result->note));
+    QCOMPARE(filesIn(dir.path()), QStringList({"scene.mtl", "scene.obj"}));
+
+    const ParsedObj obj = parseObj(readAll(target));
+    QVERIFY2(obj.problem.isEmpty(), qPrintable(obj.problem));
+    QCOMPARE(obj.library, std::string("scene.mtl"));
+    QCOMPARE(obj.objects.size(), std::size_t(3));
+    QCOMPARE(obj.objects[0].name, std::string("Body"));
+    QCOMPARE(obj.objects[1].name, std::string("Left_arm"));
+    QCOMPARE(obj.objects[2].name, std::string("Body_2"));
+    QCOMPARE(obj.normals, long(obj.v.size()));
+
+    // The counts are those of the solids the model makes for the frame.
+    const auto solids = frameSolids(source.frames.front(), source.settings);
+    QVERIFY(solids);
+    QCOMPARE(solids->candidates, 5);
+    QCOMPARE(solids->skipped, 2);
+    for (std::size_t i = 0; i < obj.objects.size(); ++i) {
+        const ParsedObject &object = obj.objects[i];
+        QCOMPARE(object.group, object.name);
+        QCOMPARE(object.material, object.name);
+        QCOMPARE(long(object.vertices), long(solids->objects[i].solid.V.rows()));
+        QCOMPARE(long(object.faces.size()), long(solids->objects[i].solid.F.rows()));
+        QVERIFY(faceIndicesInside(object));
+        QVERIFY2(closedAndOriented(object.faces), object.name.c_str());
+        QVERIFY2(volumeOf(obj, object) > 0.0, object.name.c_str());
+    }
+
+    // y up: canvas y becomes −y. The posed circle lies where it shows, kShift from its rest.
+    const auto bounds = [&obj](const ParsedObject &object) {
+        QRectF box;
+        for (int i = object.firstVertex; i < object.firstVertex + object.vertices; ++i) {
+            const auto &p = obj.v[std::size_t(i)];
+            box |= QRectF(p[0], p[1], 1e-9, 1e-9);
+        }
+        return box;
+    };
+    const QRectF body = bounds(obj.objects[0]), posed = bounds(obj.objects[2]);
+    // (The shape includes the pen's band around the outline: a few px.)
+    QVERIFY2(std::abs(body.left() - 100) < 5 && std::abs(body.right() - 300) < 5 &&
+                 std::abs(body.top() + 300) < 5 && std::abs(body.bottom() + 100) < 5,
+             qPrintable(QStringLiteral("%1 %2 %3 %4")
+                            .arg(body.left())
+                            .arg(body.right())
+                            .arg(body.top())
+                            .arg(body.bottom())));
+    QVERIFY(std::abs(posed.center().x() - (200 + kShift.x())) < 5);
+    QVERIFY(std::abs(posed.center().y() + (500 + kShift.y())) < 5);
+
+    const auto materials = parseMtl(readAll(dir.filePath(QStringLiteral("scene.mtl"))));
+    QCOMPARE(materials.size(), std::size_t(3));
+    QVERIFY(nearColour(materials.at("Body"), kBlue)); // the larger fill, not the first
+    QVERIFY(nearColour(materials.at("Left_arm"), kGreen));
+    QVERIFY(nearColour(materials.at("Body_2"), 0xff000000));
+    QCOMPARE(materials.at("Body")[3], 1.0);
+}
+
+void TestExportObj::exampleFrameIsClosedSolids()
+{
+    const ExportSource source = loadExample();
+    QVERIFY(!source.frames.empty());
+    QTemporaryDir dir;
+    const QString target = dir.filePath(QStringLiteral("walk.obj"));
+    const auto result = exportAnimation(source, objOptions(target));
+    QVERIFY2(result, result ? "" : qPrintable(result.error().message));
+    const ParsedObj obj = parseObj(readAll(target));
+    QVERIFY2(obj.problem.isEmpty(), qPrintable(obj.problem));
+    const auto materials = parseMtl(readAll(objMaterialPath(target)));
+    const Frame &frame = source.frames[std::size_t(std::max(0, source.settings.playStart))];
+    const auto solids = frameSolids(frame, source.settings);
+    QVERIFY(solids && !solids->objects.empty());
+    QCOMPARE(obj.objects.size(), solids->objects.size());
+    QCOMPARE(materials.size(), obj.objects.size());
+    long vertices = 0;
+    for (std::size_t i = 0; i < obj.objects.size(); ++i) {
+        const ParsedObject &object = obj.objects[i];
+        vertices += object.vertices;
+        QVERIFY(faceIndicesInside(object));
+        QVERIFY2(closedAndOriented(object.faces), object.name.c_str());
+        QVERIFY2(volumeOf(obj, object) > 0.0, object.name.c_str());
+        QVERIFY(materials.count(object.material));
+        const Id id = solids->objects[i].groupId;
+        const auto group = std::find_if(frame.groups.begin(), frame.groups.end(),
+                                        [id](const StrokeGroup &g) { return g.id == id; });
+        QVERIFY(nearColour(materials.at(object.material),
+                           objectExportColor(*group, source.settings.closeGap)));
+    }
+    QCOMPARE(vertices, long(obj.v.size()));
+    qInfo("walk.finbook frame 1: %zu objects, %zu vertices, %ld skipped", obj.objects.size(),
+          obj.v.size(), long(solids->skipped));
+}
+
+void TestExportObj::frameOptionPicksTheDrawing()
+{
+    ExportSource source = generatedSource();
+    Frame second = source.frames.front();
+    second.groups.erase(second.groups.begin() + 1, second.groups.end()); // only "Body"
+    source.frames.push_back(second);
+    QTemporaryDir dir;
+    ExportOptions options = objOptions(dir.filePath(QStringLiteral("two.obj")));
+    options.firstFrame = options.lastFrame = 1;
+    const auto result = exportAnimation(source, options);
+    QVERIFY2(result, result ? "" : qPrintable(result.error().message));
+    QVERIFY(result->note.isEmpty());
+    QCOMPARE(parseObj(readAll(options.target)).objects.size(), std::size_t(1));
+
+    // A range of several frames is no 3D model.
+    options.firstFrame = 0;
+    options.overwrite = true;
+    const auto range = exportAnimation(source, options);
+    QVERIFY(!range);
+    QCOMPARE(range.error().code, ExportErrorCode::BadOptions);
+    QVERIFY2(range.error().message.contains(QLatin1String("one frame")),
+             qPrintable(range.error().message));
+}
+
+void TestExportObj::nothingMeshableWritesNothing()
+{
+    ExportSource source = generatedSource();
+    Frame &frame = source.frames.front();
+    // Keep the hidden circle, the dot, the line and the empty object only.
+    frame.groups.erase(frame.groups.begin(), frame.groups.begin() + 3);
+    QCOMPARE(frame.groups.size(), std::size_t(4));
+    QTemporaryDir dir;
+    const QString folder = dir.filePath(QStringLiteral("out"));
+    const auto result = exportAnimation(source, objOptions(folder + QStringLiteral("/dot.obj")));
+    QVERIFY(!result);
+    QCOMPARE(result.error().code, ExportErrorCode::BadOptions);
+    QVERIFY2(result.error().message.contains(QLatin1String("can be made 3D")),
+             qPrintable(result.error().message));
+    QVERIFY(!QFileInfo::exists(folder)); // not even the folder it would have made
+
+    frame.groups.erase(frame.groups.begin() + 1, frame.groups.begin() + 3); // hidden, empty
+    const auto empty = exportAnimation(source, objOptions(dir.filePath(QStringLiteral("e.obj"))));
+    QVERIFY(!empty);
+    QVERIFY2(empty.error().message.contains(QLatin1String("no drawing")),
+             qPrintable(empty.error().message));
+    QCOMPARE(filesIn(dir.path()), QStringList());
+}
+
+void TestExportObj::existingFilesAreRefusedWithoutOverwrite()
+{
+    const ExportSource source = generatedSource();
+    QTemporaryDir dir;
+    const QString target = dir.filePath(QStringLiteral("scene.obj"));
+    const QString mtl = dir.filePath(QStringLiteral("scene.mtl"));
+    for (const QString &inTheWay : {target, mtl}) {
+        for (const QString &path : {target, mtl})
+            QFile::remove(path);
+        QFile old(inTheWay);
+        QVERIFY(old.open(QIODevice::WriteOnly));
+        old.write("old");
+        old.close();
+        const auto refused = exportAnimation(source, objOptions(target));
+        QVERIFY(!refused);
+        QCOMPARE(refused.error().code, ExportErrorCode::TargetExists);
+        QCOMPARE(readAll(inTheWay), QByteArray("old"));
+        QCOMPARE(filesIn(dir.path()), QStringList({QFileInfo(inTheWay).fileName()}));
+        QCOMPARE(existingExportTargets(source, objOptions(target)), QStringList({inTheWay}));
+
+        ExportOptions overwrite = objOptions(target);
+        overwrite.overwrite = true;
+        QVERIFY(exportAnimation(source, overwrite));
+        QVERIFY(readAll(target).startsWith("# Finbook"));
+        QVERIFY(readAll(mtl).startsWith("# Finbook"));
+        QCOMPARE(filesIn(dir.path()), QStringList({"scene.mtl", "scene.obj"}));
+    }
+}
+
+void TestExportObj::cancelLeavesNothing()
+{
+    const ExportSource source = generatedSource();
+    QTemporaryDir dir;
+    int calls = 0;
+    const auto result = exportAnimation(source, objOptions(dir.filePath(QStringLiteral("c.obj"))),
+                                        [&calls](qint64, qint64) { return ++calls < 2; });
+    QVERIFY(!result);
+    QCOMPARE(result.error().code, ExportErrorCode::Cancelled);
+    QCOMPARE(filesIn(dir.path()), QStringList());
+}
+
+QTEST_GUILESS_MAIN(TestExportObj)
+#include "tst_export_obj.moc"
