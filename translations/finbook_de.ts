@@ -2386,13 +2386,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="292"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="281"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="280"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
@@ -2552,12 +2552,12 @@
         <translation>Dieses Format benötigt das Programm ffmpeg, das nicht gefunden wurde; installieren Sie es zuerst (unter Debian: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="290"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
         <source>Export to Folder</source>
         <translation>In Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="294"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>

@@ -2386,13 +2386,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="292"/>
         <source>Export Animation</source>
         <translation>Exporter l&apos;animation</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="281"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="280"/>
         <source>untitled</source>
         <translation>sans titre</translation>
     </message>
@@ -2552,12 +2552,12 @@
         <translation>Ce format nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le d&apos;abord (sous Debian&#xa0;: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="290"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
         <source>Export to Folder</source>
         <translation>Exporter dans un dossier</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="294"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
         <source>%1 files (*.%2)</source>
         <translation>Fichiers %1 (*.%2)</translation>
     </message>
