@@ -1,6 +1,7 @@
 // The `finbook` command line, run as a real process: info and export on the bundled example,
 // and every bad file or argument ends in exit code 2 with exactly one line on stderr.
 #include "cli.h"
+#include "cli_run.h"
 
 #include <finbook/model/finbook_file.h>
 
@@ -19,36 +20,11 @@
 #include <unordered_set>
 
 using namespace finbook;
+using namespace cli_run;
 
 namespace {
 
 const QString kExample = QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook");
-
-struct Run {
-    int code = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runFinbook(const QStringList &arguments,
-               const QProcessEnvironment &environment = QProcessEnvironment::systemEnvironment())
-{
-    QProcess process;
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(FINBOOK_BINARY_DIR "/bin/finbook"), arguments);
-    Run run;
-    if (!process.waitForFinished(120000) || process.exitStatus() != QProcess::NormalExit)
-        return run; // a crash or a hang: code -1 fails every check below
-    run.code = process.exitCode();
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
-}
-
-bool isOneLine(const QByteArray &text)
-{
-    return text.size() > 1 && text.endsWith('\n') && text.count('\n') == 1;
-}
 
 QByteArray exampleBytes()
 {

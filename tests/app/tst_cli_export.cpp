@@ -2,6 +2,7 @@
 // (with holds added), the options, several files at once, and every refusal or failure ending
 // in one line on stderr, the promised exit code and nothing at the target.
 #include "../model/export_support.h"
+#include "cli_run.h"
 
 #include <finbook/model/document.h>
 #include <finbook/model/finbook_file.h>
@@ -22,41 +23,11 @@
 
 using namespace finbook;
 using namespace finbook::test;
+using namespace cli_run;
 
 namespace {
 
 const QString kFinbook = QStringLiteral(FINBOOK_BINARY_DIR "/bin/finbook");
-
-struct Run {
-    int code = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runProgram(const QString &program, const QStringList &arguments,
-               const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
-{
-    QProcess process;
-    process.setProcessEnvironment(env);
-    process.start(program, arguments);
-    Run run;
-    if (!process.waitForFinished(300000) || process.exitStatus() != QProcess::NormalExit)
-        return run;
-    run.code = process.exitCode();
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
-}
-
-Run runFinbook(const QStringList &arguments)
-{
-    return runProgram(kFinbook, arguments);
-}
-
-bool isOneLine(const QByteArray &text)
-{
-    return text.size() > 1 && text.endsWith('\n') && text.count('\n') == 1;
-}
 
 QString shellQuote(const QString &s)
 {

@@ -3,6 +3,7 @@
 // --overwrite, and a frame with nothing that can be made 3D; each refusal one line on stderr,
 // the README's exit code and nothing at the target.
 #include "../model/export_support.h"
+#include "cli_run.h"
 
 #include <finbook/model/document.h>
 #include <finbook/model/finbook_file.h>
@@ -14,34 +15,11 @@
 
 using namespace finbook;
 using namespace finbook::test;
+using namespace cli_run;
 
 namespace {
 
 const QString kFinbook = QStringLiteral(FINBOOK_BINARY_DIR "/bin/finbook");
-
-struct Run {
-    int code = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runFinbook(const QStringList &arguments)
-{
-    QProcess process;
-    process.start(kFinbook, arguments);
-    Run run;
-    if (!process.waitForFinished(300000) || process.exitStatus() != QProcess::NormalExit)
-        return run;
-    run.code = process.exitCode();
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
-}
-
-bool isOneLine(const QByteArray &text)
-{
-    return text.size() > 1 && text.endsWith('\n') && text.count('\n') == 1;
-}
 
 QByteArray readAll(const QString &path)
 {
