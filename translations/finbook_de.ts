@@ -469,27 +469,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="76"/>
+        <location filename="../model/src/deform_setup.cpp" line="71"/>
         <source>The object has no strokes to deform.</source>
         <translation>Das Objekt hat keine Striche, die sich verformen ließen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="81"/>
+        <location filename="../model/src/deform_setup.cpp" line="76"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Für diese Zeichnung lässt sich kein Verformungsnetz erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="113"/>
+        <location filename="../model/src/deform_setup.cpp" line="108"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="157"/>
+        <location filename="../model/src/deform_setup.cpp" line="152"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>Der Käfig wurde geändert, während er vorbereitet wurde.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="165"/>
+        <location filename="../model/src/deform_setup.cpp" line="160"/>
         <source>The object has no mesh to deform.</source>
         <translation>Das Objekt hat kein Netz, das sich verformen ließe.</translation>
     </message>
@@ -504,7 +504,7 @@
         <translation>Die Pins konnten nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="185"/>
+        <location filename="../model/src/deform_setup.cpp" line="180"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
     </message>
@@ -629,20 +629,18 @@
     <name>Export</name>
     <message>
         <location filename="../model/src/export/export_encoded.cpp" line="36"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="197"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>es ist nicht genug Speicher vorhanden, um es zu rendern</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="58"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
-        <location filename="../model/src/export/export_obj.cpp" line="123"/>
+        <location filename="../model/src/export/exporter.cpp" line="53"/>
         <source>its folder cannot be created</source>
         <translation>ihr Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="108"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="105"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg wurde beendet, ohne die Ausgabe als %1 zu schreiben; es wurde nichts exportiert.</translation>
     </message>
@@ -748,32 +746,32 @@
         <translation>der Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="22"/>
+        <location filename="../model/src/export/exporter.cpp" line="23"/>
         <source>&quot;%1&quot; already exists; nothing was exported.</source>
         <translation>„%1“ ist bereits vorhanden; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="29"/>
+        <location filename="../model/src/export/exporter.cpp" line="30"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und exportieren Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="37"/>
+        <location filename="../model/src/export/exporter.cpp" line="38"/>
         <source>The export was cancelled; nothing was written.</source>
         <translation>Der Export wurde abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="43"/>
+        <location filename="../model/src/export/exporter.cpp" line="44"/>
         <source>Another export is writing to &quot;%1&quot;; wait until it has finished, or choose another target.</source>
         <translation>Ein anderer Export schreibt gerade nach „%1“; warten Sie, bis er fertig ist, oder wählen Sie ein anderes Ziel.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="73"/>
+        <location filename="../model/src/export/exporter.cpp" line="87"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>„%1“ ist ein Ordner; geben Sie einen Dateinamen an, der auf .%2 endet.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="201"/>
+        <location filename="../model/src/export/exporter.cpp" line="215"/>
         <source>Choose where to export the animation to.</source>
         <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
     </message>
@@ -851,7 +849,7 @@
         <translation>„%1“ würde von seiner eigenen Materialdatei überschrieben; geben Sie einen Dateinamen an, der auf .obj endet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_obj.cpp" line="168"/>
+        <location filename="../model/src/export/export_obj.cpp" line="164"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>%n Objekt von Einzelbild %1 ließ sich nicht in 3D umwandeln (ein Punkt oder eine gerade Linie hat keine Fläche zum Aufblasen) und wurde weggelassen.</numerusform>

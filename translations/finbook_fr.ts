@@ -469,27 +469,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="76"/>
+        <location filename="../model/src/deform_setup.cpp" line="71"/>
         <source>The object has no strokes to deform.</source>
         <translation>L&apos;objet n&apos;a aucun trait à déformer.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="81"/>
+        <location filename="../model/src/deform_setup.cpp" line="76"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Impossible de mailler ce dessin pour le déformer&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="113"/>
+        <location filename="../model/src/deform_setup.cpp" line="108"/>
         <source>Cancelled.</source>
         <translation>Annulé.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="157"/>
+        <location filename="../model/src/deform_setup.cpp" line="152"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>La cage a changé pendant sa préparation.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="165"/>
+        <location filename="../model/src/deform_setup.cpp" line="160"/>
         <source>The object has no mesh to deform.</source>
         <translation>L&apos;objet n&apos;a pas de maillage à déformer.</translation>
     </message>
@@ -504,7 +504,7 @@
         <translation>Le calcul de la déformation par les épingles a échoué&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="185"/>
+        <location filename="../model/src/deform_setup.cpp" line="180"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>La déformation a produit des points invalides&#xa0;; elle n&apos;a pas été appliquée.</translation>
     </message>
@@ -629,20 +629,18 @@
     <name>Export</name>
     <message>
         <location filename="../model/src/export/export_encoded.cpp" line="36"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="197"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>la mémoire est insuffisante pour en faire le rendu</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="58"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
-        <location filename="../model/src/export/export_obj.cpp" line="123"/>
+        <location filename="../model/src/export/exporter.cpp" line="53"/>
         <source>its folder cannot be created</source>
         <translation>son dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="108"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="105"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg s&apos;est terminé sans écrire le fichier %1&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
@@ -748,32 +746,32 @@
         <translation>le dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="22"/>
+        <location filename="../model/src/export/exporter.cpp" line="23"/>
         <source>&quot;%1&quot; already exists; nothing was exported.</source>
         <translation>«&#xa0;%1&#xa0;» existe déjà&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="29"/>
+        <location filename="../model/src/export/exporter.cpp" line="30"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis exportez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="37"/>
+        <location filename="../model/src/export/exporter.cpp" line="38"/>
         <source>The export was cancelled; nothing was written.</source>
         <translation>L&apos;export a été annulé&#xa0;; rien n&apos;a été écrit.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="43"/>
+        <location filename="../model/src/export/exporter.cpp" line="44"/>
         <source>Another export is writing to &quot;%1&quot;; wait until it has finished, or choose another target.</source>
         <translation>Un autre export écrit dans « %1 » ; attendez qu’il soit terminé, ou choisissez une autre destination.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="73"/>
+        <location filename="../model/src/export/exporter.cpp" line="87"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>«&#xa0;%1&#xa0;» est un dossier&#xa0;; indiquez un nom de fichier se terminant par .%2.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="201"/>
+        <location filename="../model/src/export/exporter.cpp" line="215"/>
         <source>Choose where to export the animation to.</source>
         <translation>Choisissez où exporter l&apos;animation.</translation>
     </message>
@@ -851,7 +849,7 @@
         <translation>« %1 » serait écrasé par son propre fichier de matériaux ; donnez un nom de fichier terminé par .obj.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_obj.cpp" line="168"/>
+        <location filename="../model/src/export/export_obj.cpp" line="164"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>%n objet de l&apos;image %1 n&apos;a pas pu être mis en 3D (un point ou une ligne droite n&apos;a pas de surface à gonfler) et a été omis.</numerusform>

@@ -469,27 +469,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="76"/>
+        <location filename="../model/src/deform_setup.cpp" line="71"/>
         <source>The object has no strokes to deform.</source>
         <translation>このオブジェクトには変形できるストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="81"/>
+        <location filename="../model/src/deform_setup.cpp" line="76"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>この絵から変形用のメッシュを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="113"/>
+        <location filename="../model/src/deform_setup.cpp" line="108"/>
         <source>Cancelled.</source>
         <translation>キャンセルしました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="157"/>
+        <location filename="../model/src/deform_setup.cpp" line="152"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>準備中にケージが変更されました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="165"/>
+        <location filename="../model/src/deform_setup.cpp" line="160"/>
         <source>The object has no mesh to deform.</source>
         <translation>このオブジェクトには変形できるメッシュがありません。</translation>
     </message>
@@ -504,7 +504,7 @@
         <translation>ピンによる変形を計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="185"/>
+        <location filename="../model/src/deform_setup.cpp" line="180"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>変形によって無効な点が生じたため、適用しませんでした。</translation>
     </message>
@@ -628,20 +628,18 @@
     <name>Export</name>
     <message>
         <location filename="../model/src/export/export_encoded.cpp" line="36"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="197"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>描画に必要なメモリが足りません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="58"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="184"/>
-        <location filename="../model/src/export/export_obj.cpp" line="123"/>
+        <location filename="../model/src/export/exporter.cpp" line="53"/>
         <source>its folder cannot be created</source>
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="108"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="105"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
     </message>
@@ -747,32 +745,32 @@
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="22"/>
+        <location filename="../model/src/export/exporter.cpp" line="23"/>
         <source>&quot;%1&quot; already exists; nothing was exported.</source>
         <translation>「%1」はすでに存在するため、何も書き出しませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="29"/>
+        <location filename="../model/src/export/exporter.cpp" line="30"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported; free some disk space or choose another folder, then export again.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度書き出してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="37"/>
+        <location filename="../model/src/export/exporter.cpp" line="38"/>
         <source>The export was cancelled; nothing was written.</source>
         <translation>書き出しはキャンセルされました。何も書き込まれていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="43"/>
+        <location filename="../model/src/export/exporter.cpp" line="44"/>
         <source>Another export is writing to &quot;%1&quot;; wait until it has finished, or choose another target.</source>
         <translation>別の書き出しが「%1」に書き込み中です。終わるまで待つか、別の書き出し先を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="73"/>
+        <location filename="../model/src/export/exporter.cpp" line="87"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>「%1」はフォルダーです。末尾が .%2 のファイル名を指定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="201"/>
+        <location filename="../model/src/export/exporter.cpp" line="215"/>
         <source>Choose where to export the animation to.</source>
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
@@ -849,7 +847,7 @@
         <translation>「%1」は自身のマテリアルファイルで上書きされてしまいます。末尾が .obj のファイル名を指定してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_obj.cpp" line="168"/>
+        <location filename="../model/src/export/export_obj.cpp" line="164"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>フレーム %1 の %n 個のオブジェクトは 3D にできなかったため (点や直線には膨らませる面がありません)、省きました。</numerusform>

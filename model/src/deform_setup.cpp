@@ -7,6 +7,7 @@
 #include <finbook/model/pins/pin_setup.h>
 #include <finbook/model/rig/rig_commands.h>
 #include <finbook/model/skeleton/skeleton_setup.h>
+#include <finbook/model/stroke_input.h>
 
 #include <cmath>
 
@@ -19,13 +20,7 @@ std::vector<geometry::StrokeInput> strokeInputs(const MeshKey &key)
     for (const StrokeDataPtr &data : key.strokes) {
         if (!data || data->points.empty()) // nothing to outline
             continue;
-        geometry::StrokeInput in;
-        in.points.resize(Eigen::Index(data->points.size()), 2);
-        for (std::size_t i = 0; i < data->points.size(); ++i)
-            in.points.row(Eigen::Index(i)) << data->points[i].x, data->points[i].y;
-        // A width the pen cannot have (NaN, 0 or less, from a damaged file) outlines as 1 px.
-        in.width = std::isfinite(data->width) && data->width > 0 ? data->width : 1.0;
-        inputs.push_back(std::move(in));
+        inputs.push_back(strokeInput(data->points, data->width));
     }
     return inputs;
 }

@@ -54,12 +54,9 @@ ExportOutcome exportEncoded(const ExportContext &context)
     if (auto error = checkFileTarget(context.options))
         return unexpected(*error);
     FolderGuard guard(QFileInfo(target).path());
-    if (!guard.ok())
-        return unexpected(writeFailed(target, Export::tr("its folder cannot be created")));
     TargetLock lock(target, false);
-    if (!lock.tryLock())
-        return unexpected(targetBusy(target));
-    lock.removeLeftovers();
+    if (auto error = claimFileTarget(target, guard, {&lock}))
+        return unexpected(*error);
     PendingFile pending(target);
     QString openFailure;
     if (!pending.open(&openFailure))

@@ -6,6 +6,8 @@
 #include <QByteArray>
 #include <QImage>
 
+#include <initializer_list>
+
 namespace finbook::model {
 
 struct ExportContext {
@@ -67,6 +69,13 @@ ExportError targetExists(const QString &path);
 ExportError writeFailed(const QString &path, const QString &reason);
 ExportError cancelledError();
 ExportError targetBusy(const QString &path);
+
+class FolderGuard;
+class TargetLock;
+// The start of a file export, once its target is checked: the target's folder made (by
+// `guard`) and every lock taken, the leftovers of killed exports to them removed.
+std::optional<ExportError> claimFileTarget(const QString &target, const FolderGuard &guard,
+                                           std::initializer_list<TargetLock *> locks);
 
 class PendingFile;
 // Renames the finished file over the target: replacing it only with options.overwrite, so a

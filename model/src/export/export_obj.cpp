@@ -119,13 +119,9 @@ ExportOutcome exportObj(const ExportContext &context)
         if (auto error = checkFileTarget(*file))
             return unexpected(*error);
     FolderGuard guard(QFileInfo(target).path());
-    if (!guard.ok())
-        return unexpected(writeFailed(target, Export::tr("its folder cannot be created")));
     TargetLock lock(target, false), mtlLock(mtlOptions.target, false);
-    if (!lock.tryLock() || !mtlLock.tryLock())
-        return unexpected(targetBusy(target));
-    lock.removeLeftovers();
-    mtlLock.removeLeftovers();
+    if (auto error = claimFileTarget(target, guard, {&lock, &mtlLock}))
+        return unexpected(*error);
 
     const int frameIndex = context.plan.frames.front();
     const auto solids =

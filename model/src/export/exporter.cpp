@@ -1,6 +1,7 @@
 #include "export_formats.h"
 #include "export_text.h"
 #include "pending_output.h"
+#include "target_lock.h"
 
 #include <finbook/model/export/exporter.h>
 
@@ -43,6 +44,19 @@ ExportError targetBusy(const QString &path)
                        Export::tr("Another export is writing to \"%1\"; wait until it has "
                                   "finished, or choose another target.")
                            .arg(QDir::toNativeSeparators(path)));
+}
+
+std::optional<ExportError> claimFileTarget(const QString &target, const FolderGuard &guard,
+                                           std::initializer_list<TargetLock *> locks)
+{
+    if (!guard.ok())
+        return writeFailed(target, Export::tr("its folder cannot be created"));
+    for (TargetLock *lock : locks)
+        if (!lock->tryLock())
+            return targetBusy(target);
+    for (TargetLock *lock : locks)
+        lock->removeLeftovers();
+    return std::nullopt;
 }
 
 QByteArray nativeTargetPath(const ExportOptions &options)

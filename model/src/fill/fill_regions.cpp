@@ -1,6 +1,7 @@
 // Regions of an object, cached by the content of its rest strokes, and their outlines as shown.
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/render.h>
+#include <finbook/model/stroke_input.h>
 
 #include <algorithm>
 #include <cmath>
@@ -218,12 +219,7 @@ ObjectRegionsPtr compute(const StrokeGroup &group, double closeGap)
         const StrokeDataPtr &data = group.strokes[s].data;
         if (!data || data->points.empty())
             continue;
-        geometry::StrokeInput in;
-        in.points.resize(Eigen::Index(data->points.size()), 2);
-        for (std::size_t i = 0; i < data->points.size(); ++i)
-            in.points.row(Eigen::Index(i)) << data->points[i].x, data->points[i].y;
-        in.width = std::isfinite(data->width) && data->width > 0 ? data->width : 1.0;
-        inputs.push_back(std::move(in));
+        inputs.push_back(strokeInput(data->points, data->width));
         ids.push_back(group.strokes[s].id);
         index.push_back(int(s));
     }

@@ -3,6 +3,7 @@
 #include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/region.h>
 #include <finbook/model/render.h>
+#include <finbook/model/stroke_input.h>
 
 #include <algorithm>
 #include <cmath>
@@ -115,18 +116,13 @@ bool insideShape(const model::StrokeGroup &g, QPointF pos)
         const auto &points = model::displayedPoints(g, s);
         if (points.empty())
             continue;
-        geometry::StrokeInput in;
-        in.points.resize(Eigen::Index(points.size()), 2);
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            in.points.row(Eigen::Index(i)) << points[i].x, points[i].y;
-            left = std::min(left, double(points[i].x));
-            right = std::max(right, double(points[i].x));
-            top = std::min(top, double(points[i].y));
-            bottom = std::max(bottom, double(points[i].y));
+        for (const model::StrokePoint &p : points) {
+            left = std::min(left, double(p.x));
+            right = std::max(right, double(p.x));
+            top = std::min(top, double(p.y));
+            bottom = std::max(bottom, double(p.y));
         }
-        const double width = g.strokes[s].data->width;
-        in.width = std::isfinite(width) && width > 0 ? width : 1.0;
-        inputs.push_back(std::move(in));
+        inputs.push_back(model::strokeInput(points, g.strokes[s].data->width));
     }
     // Cheap refusal first: the shape never reaches far beyond the points.
     const double reach = 32.0;
