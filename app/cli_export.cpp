@@ -35,12 +35,12 @@ struct OptionSpec {
 // QT_TRANSLATE_NOOP: the help texts are translated when --help prints them.
 const OptionSpec kOptions[] = {
     {"format", "FORMAT",
-     QT_TRANSLATE_NOOP("CommandLine", "export: png, svg, gif, mp4, webm, apng, html or obj.")},
+     QT_TRANSLATE_NOOP("CommandLine", "export: png, svg, gif, mp4, webm, apng, html, obj or glb.")},
     {"range", "A-B",
      QT_TRANSLATE_NOOP("CommandLine", "export: frames A to B (default: the play range).")},
     {"frame", "N",
      QT_TRANSLATE_NOOP("CommandLine",
-                       "export: frame N only; a 3D model (obj) is one frame, by default the "
+                       "export: frame N only; a 3D model (obj, glb) is one frame, by default the "
                        "first of the play range.")},
     {"scale", "S", QT_TRANSLATE_NOOP("CommandLine", "export: multiply the canvas size by S.")},
     {"fps", "N",
@@ -142,7 +142,7 @@ std::optional<QString> parseFormat(const QCommandLineParser &p, Request &r)
         r.format = model::exportFormatFromName(p.value(QStringLiteral("format")));
         if (!r.format)
             return CommandLine::tr("Unknown export format \"%1\"; use png, svg, gif, mp4, webm, "
-                                   "apng, html or obj.")
+                                   "apng, html, obj or glb.")
                 .arg(p.value(QStringLiteral("format")));
     }
     if (!r.outDir.isEmpty()) {
@@ -165,8 +165,8 @@ std::optional<QString> parseFormat(const QCommandLineParser &p, Request &r)
     }
     if (!r.format && !suffix.isEmpty() && (!named || model::exportsSequence(*named)))
         return CommandLine::tr("Cannot tell the format from \"%1\": end it in .gif, .mp4, .webm, "
-                               ".apng, .html or .obj, give a folder for PNG frames, or use "
-                               "--format.")
+                               ".apng, .html, .obj or .glb, give a folder for PNG frames, or "
+                               "use --format.")
             .arg(r.output);
     if (r.format && named && !model::exportsSequence(*r.format) && *named != *r.format)
         return CommandLine::tr("--format %1 does not match \"%2\".")

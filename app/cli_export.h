@@ -1,8 +1,8 @@
 // `finbook export`: one or more .finbook files to PNG/SVG sequences, GIF, MP4, WebM, APNG, an
-// HTML flipbook, or one frame as a 3D model (OBJ + MTL).
+// HTML flipbook, or one frame as a 3D model (OBJ + MTL, or glTF binary).
 //
 //   finbook export FILE OUT                 format from OUT's suffix (.gif .mp4 .webm .apng
-//                                           .html .obj), or a folder of PNGs when OUT has none
+//                                           .html .obj .glb), or a folder of PNGs when OUT has none
 //   finbook export FILE... --out-dir DIR    each FILE to DIR/<name>.<suffix> (DIR/<name>/ for
 //                                           sequences)
 //   options: --format F, --range A-B, --frame N, --scale S, --fps N, --transparent,

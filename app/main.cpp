@@ -44,6 +44,7 @@ int parseCommandLine(const QStringList &arguments, Options &options, bool print 
         "  finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...\n"
         "  finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html\n"
         "  finbook export FILE OUT.obj --frame N   frame N as a 3D model (OUT.obj, OUT.mtl)\n"
+        "  finbook export FILE OUT.glb --frame N   frame N as a 3D model (glTF binary)\n"
         "  finbook export FILE... --format F --out-dir DIR   export several files\n"
         "  finbook thumbnail FILE OUT.png SIZE   write the first frame as a PNG of at most SIZE "
         "px"));

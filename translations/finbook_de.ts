@@ -276,6 +276,7 @@
   finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
   finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
   finbook export FILE OUT.obj --frame N   frame N as a 3D model (OUT.obj, OUT.mtl)
+  finbook export FILE OUT.glb --frame N   frame N as a 3D model (glTF binary)
   finbook export FILE... --format F --out-dir DIR   export several files
   finbook thumbnail FILE OUT.png SIZE   write the first frame as a PNG of at most SIZE px</source>
         <translation>Finbook, ein Daumenkino-Animationseditor.
@@ -285,40 +286,36 @@
   finbook export FILE OUTDIR   jedes Einzelbild nach OUTDIR/frame_0001.png ... rendern
   finbook export FILE OUT      nach OUT.gif, .mp4, .webm, .apng oder .html exportieren
   finbook export FILE OUT.obj --frame N   Einzelbild N als 3D-Modell (OUT.obj, OUT.mtl)
+  finbook export FILE OUT.glb --frame N   Einzelbild N als 3D-Modell (glTF binär)
   finbook export FILE... --format F --out-dir DIR   mehrere Dateien exportieren
   finbook thumbnail FILE OUT.png SIZE   das erste Einzelbild als PNG von höchstens SIZE px schreiben</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="54"/>
+        <location filename="../app/main.cpp" line="55"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>LANGUAGE (z. B. de, en, fr, ja) statt der Systemsprache verwenden.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="60"/>
+        <location filename="../app/main.cpp" line="61"/>
         <source>FILE, or a command.</source>
         <translation>FILE oder ein Befehl.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="72"/>
+        <location filename="../app/main.cpp" line="73"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>siehe finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="79"/>
+        <location filename="../app/main.cpp" line="80"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="115"/>
+        <location filename="../app/main.cpp" line="116"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Unbekannter Befehl „%1“; %2.</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
-        <source>export: png, svg, gif, mp4, webm, apng, html or obj.</source>
-        <translation>export: png, svg, gif, mp4, webm, apng, html oder obj.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="40"/>
@@ -326,9 +323,14 @@
         <translation>export: Einzelbilder A bis B (Standard: der Wiedergabebereich).</translation>
     </message>
     <message>
+        <location filename="../app/cli_export.cpp" line="38"/>
+        <source>export: png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
+        <translation>export: png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
+    </message>
+    <message>
         <location filename="../app/cli_export.cpp" line="42"/>
-        <source>export: frame N only; a 3D model (obj) is one frame, by default the first of the play range.</source>
-        <translation>export: nur Einzelbild N; ein 3D-Modell (obj) ist ein Einzelbild, standardmäßig das erste des Abspielbereichs.</translation>
+        <source>export: frame N only; a 3D model (obj, glb) is one frame, by default the first of the play range.</source>
+        <translation>export: nur Einzelbild N; ein 3D-Modell (obj, glb) ist ein Einzelbild, standardmäßig das erste des Abspielbereichs.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="45"/>
@@ -407,18 +409,18 @@
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="144"/>
-        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html or obj.</source>
-        <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html oder obj.</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="167"/>
-        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html or .obj, give a folder for PNG frames, or use --format.</source>
-        <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html oder .obj enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
+        <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="160"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="167"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
+        <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html, .obj oder .glb enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="172"/>
@@ -834,27 +836,32 @@
         <translation>„%1“ ist ein Ordner, wo eine Datei hingehört</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="89"/>
+        <location filename="../model/src/export/export_model.cpp" line="21"/>
         <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
         <translation>Einzelbild %1 zeigt keine Zeichnung, aus der sich ein 3D-Modell machen ließe; wählen Sie ein anderes Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="94"/>
+        <location filename="../model/src/export/export_model.cpp" line="25"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>Kein Objekt von Einzelbild %1 lässt sich in 3D umwandeln: Jedes ist ein Punkt oder eine gerade Linie ohne Fläche zum Aufblasen. Es wurde nichts exportiert; zeichnen Sie eine Form oder wählen Sie ein anderes Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="115"/>
+        <location filename="../model/src/export/export_obj.cpp" line="100"/>
         <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
         <translation>„%1“ würde von seiner eigenen Materialdatei überschrieben; geben Sie einen Dateinamen an, der auf .obj endet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_obj.cpp" line="164"/>
+        <location filename="../model/src/export/export_model.cpp" line="35"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>%n Objekt von Einzelbild %1 ließ sich nicht in 3D umwandeln (ein Punkt oder eine gerade Linie hat keine Fläche zum Aufblasen) und wurde weggelassen.</numerusform>
             <numerusform>%n Objekte von Einzelbild %1 ließen sich nicht in 3D umwandeln (ein Punkt oder eine gerade Linie hat keine Fläche zum Aufblasen) und wurden weggelassen.</numerusform>
         </translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_glb.cpp" line="53"/>
+        <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
+        <translation>Einzelbild %1 ergibt ein 3D-Modell, das größer ist, als eine glTF-Datei fassen kann (4 GiB); exportieren Sie es stattdessen als OBJ.</translation>
     </message>
 </context>
 <context>
@@ -2384,13 +2391,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="292"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="298"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="280"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="286"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
@@ -2435,127 +2442,146 @@
         <translation>3D-Modell (OBJ), das aktuelle Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <source>3D model (glTF binary), the current frame</source>
+        <translation>Finbook, ein Daumenkino-Animationseditor.
+
+  finbook [FILE]               FILE im Editor öffnen
+  finbook info FILE            eine JSON-Zusammenfassung von FILE ausgeben
+  finbook export FILE OUTDIR   jedes Einzelbild nach OUTDIR/frame_0001.png ... rendern
+  finbook export FILE OUT      nach OUT.gif, .mp4, .webm, .apng oder .html exportieren
+  finbook export FILE OUT.obj --frame N   Einzelbild N als 3D-Modell (OUT.obj, OUT.mtl)
+  finbook export FILE OUT.glb --frame N   Einzelbild N als 3D-Modell (glTF binär)
+  finbook export FILE... --format F --out-dir DIR   mehrere Dateien exportieren
+  finbook thumbnail FILE OUT.png SIZE   das erste Einzelbild als PNG von höchstens SIZE px schreiben</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
         <source>&amp;Browse...</source>
         <translation>&amp;Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>Play range</source>
         <translation>Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>All frames</source>
         <translation>Alle Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>Frames</source>
         <translation>Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
         <source>Document background</source>
         <translation>Dokumenthintergrund</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source>Start again after the last frame</source>
         <translation>Nach dem letzten Einzelbild wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Eine Datei pro Zeichnung, mit Timing-Sheet</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="134"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="135"/>
         <source>to</source>
         <translation>bis</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
         <source>&amp;Save to:</source>
         <translation>&amp;Speichern in:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
         <source>F&amp;rames:</source>
         <translation>Einzel&amp;bilder:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
         <source>Sc&amp;ale:</source>
         <translation>S&amp;kalierung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>&amp;Background:</source>
         <translation>&amp;Hintergrund:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>Frame ra&amp;te:</source>
         <translation>Bild&amp;rate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>Loop:</source>
         <translation>Endlosschleife:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>Cancel Export</source>
         <translation>Export abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="238"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="239"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 × %2 Pixel</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="241"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="242"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, mit einer .mtl-Datei daneben. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="246"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
+        <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
+        <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, alles in einer Datei. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Dieses Format benötigt das Programm ffmpeg, das nicht gefunden wurde; installieren Sie es zuerst (unter Debian: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
         <source>Export to Folder</source>
         <translation>In Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="299"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>

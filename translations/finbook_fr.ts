@@ -276,6 +276,7 @@
   finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
   finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
   finbook export FILE OUT.obj --frame N   frame N as a 3D model (OUT.obj, OUT.mtl)
+  finbook export FILE OUT.glb --frame N   frame N as a 3D model (glTF binary)
   finbook export FILE... --format F --out-dir DIR   export several files
   finbook thumbnail FILE OUT.png SIZE   write the first frame as a PNG of at most SIZE px</source>
         <translation>Finbook, un éditeur d&apos;animation en folioscope.
@@ -285,40 +286,36 @@
   finbook export FILE OUTDIR   rendre chaque image dans OUTDIR/frame_0001.png ...
   finbook export FILE OUT      exporter vers OUT.gif, .mp4, .webm, .apng ou .html
   finbook export FILE OUT.obj --frame N   l&apos;image N en modèle 3D (OUT.obj, OUT.mtl)
+  finbook export FILE OUT.glb --frame N   l&apos;image N en modèle 3D (glTF binaire)
   finbook export FILE... --format F --out-dir DIR   exporter plusieurs fichiers
   finbook thumbnail FILE OUT.png SIZE   écrire la première image en PNG d&apos;au plus SIZE px</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="54"/>
+        <location filename="../app/main.cpp" line="55"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>Utiliser la langue LANGUAGE (par ex. de, en, fr, ja) au lieu de celle du système.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="60"/>
+        <location filename="../app/main.cpp" line="61"/>
         <source>FILE, or a command.</source>
         <translation>FILE, ou une commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="72"/>
+        <location filename="../app/main.cpp" line="73"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>voir finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="79"/>
+        <location filename="../app/main.cpp" line="80"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1 ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="115"/>
+        <location filename="../app/main.cpp" line="116"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Commande inconnue « %1 » ; %2.</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
-        <source>export: png, svg, gif, mp4, webm, apng, html or obj.</source>
-        <translation>export : png, svg, gif, mp4, webm, apng, html ou obj.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="40"/>
@@ -326,9 +323,14 @@
         <translation>export : images A à B (par défaut : la plage de lecture).</translation>
     </message>
     <message>
+        <location filename="../app/cli_export.cpp" line="38"/>
+        <source>export: png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
+        <translation>export : png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
+    </message>
+    <message>
         <location filename="../app/cli_export.cpp" line="42"/>
-        <source>export: frame N only; a 3D model (obj) is one frame, by default the first of the play range.</source>
-        <translation>export : l&apos;image N seulement ; un modèle 3D (obj) est une seule image, par défaut la première de la plage de lecture.</translation>
+        <source>export: frame N only; a 3D model (obj, glb) is one frame, by default the first of the play range.</source>
+        <translation>export : l&apos;image N seulement ; un modèle 3D (obj, glb) est une seule image, par défaut la première de la plage de lecture.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="45"/>
@@ -407,18 +409,18 @@
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="144"/>
-        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html or obj.</source>
-        <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html ou obj.</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="167"/>
-        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html or .obj, give a folder for PNG frames, or use --format.</source>
-        <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html ou .obj, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
+        <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="160"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="167"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
+        <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html, .obj ou .glb, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="172"/>
@@ -834,27 +836,32 @@
         <translation>« %1 » est un dossier là où un fichier doit aller</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="89"/>
+        <location filename="../model/src/export/export_model.cpp" line="21"/>
         <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
         <translation>L&apos;image %1 ne montre aucun dessin dont faire un modèle 3D ; choisissez une autre image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="94"/>
+        <location filename="../model/src/export/export_model.cpp" line="25"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>Aucun objet de l&apos;image %1 ne peut être mis en 3D : chacun est un point ou une ligne droite, sans surface à gonfler. Rien n&apos;a été exporté ; dessinez une forme ou choisissez une autre image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="115"/>
+        <location filename="../model/src/export/export_obj.cpp" line="100"/>
         <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
         <translation>« %1 » serait écrasé par son propre fichier de matériaux ; donnez un nom de fichier terminé par .obj.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_obj.cpp" line="164"/>
+        <location filename="../model/src/export/export_model.cpp" line="35"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>%n objet de l&apos;image %1 n&apos;a pas pu être mis en 3D (un point ou une ligne droite n&apos;a pas de surface à gonfler) et a été omis.</numerusform>
             <numerusform>%n objets de l&apos;image %1 n&apos;ont pas pu être mis en 3D (un point ou une ligne droite n&apos;a pas de surface à gonfler) et ont été omis.</numerusform>
         </translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_glb.cpp" line="53"/>
+        <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
+        <translation>L&apos;image %1 donne un modèle 3D plus grand que ce qu&apos;un fichier glTF peut contenir (4 Gio) ; exportez-la plutôt en OBJ.</translation>
     </message>
 </context>
 <context>
@@ -2384,13 +2391,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="292"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="298"/>
         <source>Export Animation</source>
         <translation>Exporter l&apos;animation</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="280"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="286"/>
         <source>untitled</source>
         <translation>sans titre</translation>
     </message>
@@ -2435,127 +2442,146 @@
         <translation>Modèle 3D (OBJ), l&apos;image courante</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <source>3D model (glTF binary), the current frame</source>
+        <translation>Finbook, un éditeur d&apos;animation en folioscope.
+
+  finbook [FILE]               ouvrir FILE dans l&apos;éditeur
+  finbook info FILE            afficher un résumé JSON de FILE
+  finbook export FILE OUTDIR   rendre chaque image dans OUTDIR/frame_0001.png ...
+  finbook export FILE OUT      exporter vers OUT.gif, .mp4, .webm, .apng ou .html
+  finbook export FILE OUT.obj --frame N   l&apos;image N en modèle 3D (OUT.obj, OUT.mtl)
+  finbook export FILE OUT.glb --frame N   l&apos;image N en modèle 3D (glTF binaire)
+  finbook export FILE... --format F --out-dir DIR   exporter plusieurs fichiers
+  finbook thumbnail FILE OUT.png SIZE   écrire la première image en PNG d&apos;au plus SIZE px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
         <source>&amp;Browse...</source>
         <translation>Parc&amp;ourir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>Play range</source>
         <translation>Plage de lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>All frames</source>
         <translation>Toutes les images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>Frames</source>
         <translation>Images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
         <source>Document background</source>
         <translation>Arrière-plan du document</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Colour</source>
         <translation>Couleur</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source> fps</source>
         <translation> i/s</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source>Start again after the last frame</source>
         <translation>Recommencer après la dernière image</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Un fichier par dessin, avec une feuille d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="134"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="135"/>
         <source>to</source>
         <translation>à</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
         <source>&amp;Save to:</source>
         <translation>Enregistrer &amp;dans&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
         <source>F&amp;rames:</source>
         <translation>&amp;Images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
         <source>Sc&amp;ale:</source>
         <translation>É&amp;chelle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>&amp;Background:</source>
         <translation>Arrière-&amp;plan&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>Frame ra&amp;te:</source>
         <translation>Fré&amp;quence d&apos;images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>Loop:</source>
         <translation>Boucle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>&amp;Export</source>
         <translation>&amp;Exporter</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>Cancel Export</source>
         <translation>Annuler l&apos;export</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="238"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="239"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 x %2 pixels</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="241"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="242"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, avec un fichier .mtl à côté. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="246"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
+        <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
+        <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, le tout dans un seul fichier. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Ce format nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le d&apos;abord (sous Debian&#xa0;: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
         <source>Export to Folder</source>
         <translation>Exporter dans un dossier</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="299"/>
         <source>%1 files (*.%2)</source>
         <translation>Fichiers %1 (*.%2)</translation>
     </message>

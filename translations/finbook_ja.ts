@@ -276,6 +276,7 @@
   finbook export FILE OUTDIR   render every frame to OUTDIR/frame_0001.png ...
   finbook export FILE OUT      export to OUT.gif, .mp4, .webm, .apng or .html
   finbook export FILE OUT.obj --frame N   frame N as a 3D model (OUT.obj, OUT.mtl)
+  finbook export FILE OUT.glb --frame N   frame N as a 3D model (glTF binary)
   finbook export FILE... --format F --out-dir DIR   export several files
   finbook thumbnail FILE OUT.png SIZE   write the first frame as a PNG of at most SIZE px</source>
         <translation>Finbook: パラパラ漫画のアニメーションエディター。
@@ -285,40 +286,36 @@
   finbook export FILE OUTDIR   すべてのフレームを OUTDIR/frame_0001.png ... に描き出す
   finbook export FILE OUT      OUT.gif、.mp4、.webm、.apng、.html に書き出す
   finbook export FILE OUT.obj --frame N   フレーム N を 3D モデル (OUT.obj、OUT.mtl) に書き出す
+  finbook export FILE OUT.glb --frame N   フレーム N を 3D モデル (glTF バイナリ) に書き出す
   finbook export FILE... --format F --out-dir DIR   複数のファイルを書き出す
   finbook thumbnail FILE OUT.png SIZE   最初のフレームを最大 SIZE px の PNG に書き出す</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="54"/>
+        <location filename="../app/main.cpp" line="55"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>システムの言語の代わりに LANGUAGE（例: de, en, fr, ja）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="60"/>
+        <location filename="../app/main.cpp" line="61"/>
         <source>FILE, or a command.</source>
         <translation>FILE、またはコマンド。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="72"/>
+        <location filename="../app/main.cpp" line="73"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>finbook --help を参照してください</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="79"/>
+        <location filename="../app/main.cpp" line="80"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1。%2。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="115"/>
+        <location filename="../app/main.cpp" line="116"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>不明なコマンド「%1」です。%2。</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
-        <source>export: png, svg, gif, mp4, webm, apng, html or obj.</source>
-        <translation>export: png、svg、gif、mp4、webm、apng、html、obj のいずれか。</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="40"/>
@@ -326,9 +323,14 @@
         <translation>export: フレーム A～B（既定: 再生範囲）。</translation>
     </message>
     <message>
+        <location filename="../app/cli_export.cpp" line="38"/>
+        <source>export: png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
+        <translation>export: png、svg、gif、mp4、webm、apng、html、obj、glb のいずれか。</translation>
+    </message>
+    <message>
         <location filename="../app/cli_export.cpp" line="42"/>
-        <source>export: frame N only; a 3D model (obj) is one frame, by default the first of the play range.</source>
-        <translation>export: フレーム N のみ。3D モデル (obj) は 1 フレームで、既定では再生範囲の最初のフレーム。</translation>
+        <source>export: frame N only; a 3D model (obj, glb) is one frame, by default the first of the play range.</source>
+        <translation>export: フレーム N のみ。3D モデル (obj、glb) は 1 フレームで、既定では再生範囲の最初のフレーム。</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="45"/>
@@ -407,18 +409,18 @@
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="144"/>
-        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html or obj.</source>
-        <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj のいずれかを使ってください。</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="167"/>
-        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html or .obj, give a folder for PNG frames, or use --format.</source>
-        <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
+        <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj、glb のいずれかを使ってください。</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="160"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="167"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
+        <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj、.glb にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="172"/>
@@ -832,26 +834,31 @@
         <translation>ファイルを置くべき場所に「%1」というフォルダーがあります</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="89"/>
+        <location filename="../model/src/export/export_model.cpp" line="21"/>
         <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
         <translation>フレーム %1 には 3D モデルにできる絵がありません。別のフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="94"/>
+        <location filename="../model/src/export/export_model.cpp" line="25"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>フレーム %1 のオブジェクトはどれも 3D にできません。どれも点か直線で、膨らませる面がありません。何も書き出していません。形を描くか、別のフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="115"/>
+        <location filename="../model/src/export/export_obj.cpp" line="100"/>
         <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
         <translation>「%1」は自身のマテリアルファイルで上書きされてしまいます。末尾が .obj のファイル名を指定してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_obj.cpp" line="164"/>
+        <location filename="../model/src/export/export_model.cpp" line="35"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>フレーム %1 の %n 個のオブジェクトは 3D にできなかったため (点や直線には膨らませる面がありません)、省きました。</numerusform>
         </translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_glb.cpp" line="53"/>
+        <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
+        <translation>フレーム %1 の 3D モデルは glTF ファイルに収まる大きさ (4 GiB) を超えます。代わりに OBJ で書き出してください。</translation>
     </message>
 </context>
 <context>
@@ -2374,13 +2381,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="292"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="298"/>
         <source>Export Animation</source>
         <translation>アニメーションの書き出し</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="280"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="286"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
@@ -2425,127 +2432,146 @@
         <translation>3D モデル (OBJ)、現在のフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <source>3D model (glTF binary), the current frame</source>
+        <translation>Finbook: パラパラ漫画のアニメーションエディター。
+
+  finbook [FILE]               FILE をエディターで開く
+  finbook info FILE            FILE の概要を JSON で出力する
+  finbook export FILE OUTDIR   すべてのフレームを OUTDIR/frame_0001.png ... に描き出す
+  finbook export FILE OUT      OUT.gif、.mp4、.webm、.apng、.html に書き出す
+  finbook export FILE OUT.obj --frame N   フレーム N を 3D モデル (OUT.obj、OUT.mtl) に書き出す
+  finbook export FILE OUT.glb --frame N   フレーム N を 3D モデル (glTF バイナリ) に書き出す
+  finbook export FILE... --format F --out-dir DIR   複数のファイルを書き出す
+  finbook thumbnail FILE OUT.png SIZE   最初のフレームを最大 SIZE px の PNG に書き出す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
         <source>&amp;Browse...</source>
         <translation>参照(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>Play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>All frames</source>
         <translation>すべてのフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>Frames</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
         <source>Document background</source>
         <translation>ドキュメントの背景</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Transparent</source>
         <translation>透明</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Colour</source>
         <translation>色</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source>Start again after the last frame</source>
         <translation>最後のフレームの後、最初から再生する</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>絵ごとに 1 ファイル（タイムシート付き）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="134"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="135"/>
         <source>to</source>
         <translation>～</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
         <source>&amp;Save to:</source>
         <translation>保存先(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
         <source>F&amp;rames:</source>
         <translation>フレーム(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
         <source>Sc&amp;ale:</source>
         <translation>倍率(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>&amp;Background:</source>
         <translation>背景(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>Frame ra&amp;te:</source>
         <translation>フレームレート(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>Loop:</source>
         <translation>ループ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>&amp;Export</source>
         <translation>書き出し(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>Cancel Export</source>
         <translation>書き出しをキャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="238"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="239"/>
         <source>%1 x %2 pixels</source>
         <translation>%1×%2 ピクセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="241"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="242"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、隣に .mtl ファイルを置きます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="246"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
+        <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
+        <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、1 つのファイルにまとめます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>この形式には ffmpeg プログラムが必要ですが、見つかりませんでした。先にインストールしてください（Debian の場合: apt install ffmpeg）。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
         <source>Export to Folder</source>
         <translation>フォルダーに書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="299"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>

@@ -1,5 +1,5 @@
 // `finbook export FILE OUT.obj` as a user runs it: the 3D model of one frame (the .obj and its
-// .mtl), chosen by the suffix or --format obj, --frame N, a target in the way without
+// .mtl, or one .glb), chosen by the suffix or --format obj, --frame N, a target in the way without
 // --overwrite, and a frame with nothing that can be made 3D; each refusal one line on stderr,
 // the README's exit code and nothing at the target.
 #include "../model/export_support.h"
@@ -98,6 +98,7 @@ private slots:
     void initTestCase();
     void suffixChoosesObj();
     void formatOptionChoosesObj();
+    void glbIsOneFile();
     void frameOptionPicksTheDrawing();
     void existingTargetNeedsOverwrite();
     void nothingMeshableExitsTwo_data();
@@ -146,6 +147,27 @@ void TestCliExportObj::formatOptionChoosesObj()
                                   QStringLiteral("--format=obj")});
     QCOMPARE(clash.code, 2);
     QVERIFY2(isOneLine(clash.err), clash.err.constData());
+}
+
+void TestCliExportObj::glbIsOneFile()
+{
+    // By suffix, frame 4: one file, the closed triangle "Ring" only (the line is left out).
+    const QString out = m_dir.filePath(QStringLiteral("glb/ring.glb"));
+    const Run run =
+        runFinbook({QStringLiteral("export"), m_file, out, QStringLiteral("--frame=4")});
+    QCOMPARE(run.code, 0);
+    QCOMPARE(run.out, (out + QLatin1Char('\n')).toLocal8Bit());
+    QCOMPARE(filesIn(QFileInfo(out).path()), QStringList({"ring.glb"}));
+    const QByteArray bytes = readAll(out);
+    QVERIFY(bytes.startsWith("glTF"));
+    QVERIFY(bytes.contains(R"("nodes":[{"name":"Ring","mesh":0}])"));
+    // By --format, on a name without a suffix.
+    const QString plain = m_dir.filePath(QStringLiteral("glb/model"));
+    QCOMPARE(runFinbook({QStringLiteral("export"), m_file, plain, QStringLiteral("--format"),
+                         QStringLiteral("glb")})
+                 .code,
+             0);
+    QVERIFY(readAll(plain).startsWith("glTF"));
 }
 
 void TestCliExportObj::frameOptionPicksTheDrawing()

@@ -3,12 +3,9 @@
 // volume in its own material of the right colour; posed objects are exported as they show;
 // objects that cannot be inflated are left out and counted; the files reach the target as the
 // other formats' do (refused when in the way, nothing written on an error or a cancel).
-#include "export_support.h"
-#include "fill_support.h"
+#include "solid_export_support.h"
 
-#include <finbook/model/deform_setup.h>
 #include <finbook/model/export/frame_solids.h>
-#include <finbook/model/fill/fill_commands.h>
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -21,11 +18,6 @@ using namespace finbook::model;
 using namespace finbook::test;
 
 namespace {
-constexpr QRgb kBlue = 0xff2040e0;
-constexpr QRgb kRed = 0xffe03020;
-constexpr QRgb kGreen = 0xff20a040;
-const QPointF kShift(300, 50); // where the pins move the posed object
-
 struct ParsedObject {
     std::string name, group, material;
     std::vector<std::array<int, 3>> faces; // 0-based, into ParsedObj::v
@@ -97,20 +89,6 @@ std::map<std::string, std::array<double, 4>> parseMtl(const QByteArray &text)
     return materials;
 }
 
-bool closedAndOriented(const std::vector<std::array<int, 3>> &faces)
-{
-    std::map<std::pair<int, int>, int> directed;
-    for (const auto &f : faces)
-        for (int c = 0; c < 3; ++c)
-            ++directed[{f[std::size_t(c)], f[std::size_t((c + 1) % 3)]}];
-    for (const auto &[edge, count] : directed) {
-        const auto reverse = directed.find({edge.second, edge.first});
-        if (count != 1 || reverse == directed.end() || reverse->second != 1)
-            return false;
-    }
-    return !faces.empty();
-}
-
 double volumeOf(const ParsedObj &obj, const ParsedObject &object)
 {
     double volume = 0;
@@ -131,85 +109,6 @@ bool faceIndicesInside(const ParsedObject &object)
             if (i < object.firstVertex || i >= object.firstVertex + object.vertices)
                 return false;
     return true;
-}
-
-QByteArray readAll(const QString &path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-StrokeDataPtr circleStroke(QPointF centre, double radius, QRgb color)
-{
-    QPolygonF ring;
-    for (int i = 0; i <= 48; ++i)
-        ring << centre + radius * QPointF(std::cos(i * M_PI / 24), std::sin(i * M_PI / 24));
-    return testing::polylineStroke(ring, 4.0, 3.0f, color);
-}
-
-Id addObject(Document &doc, const QString &name)
-{
-    auto *add =
-        new AddObjectCommand(&doc, doc.frameAt(0).id, int(doc.frameAt(0).groups.size()), name);
-    doc.undoStack()->push(add);
-    return add->groupId();
-}
-
-// One frame, back to front:
-//   "Body": a square with a smaller square inside, the inner one filled red (first fill), the
-//           ring around it blue (larger): exported blue;
-//   "Left arm": a green circle without fills: exported in its stroke colour, green;
-//   "Body" again: a black circle posed by pins kShift away: exported where it shows;
-//   "Hidden": a circle in a hidden object; "Dot": one point; "Line": a straight line;
-//   "Empty": no stroke.
-ExportSource generatedSource(Id *posed = nullptr)
-{
-    Document doc;
-    const Id body = testing::squareDocument(doc, QRectF(100, 100, 200, 200));
-    doc.undoStack()->push(new RenameObjectCommand(&doc, body, QStringLiteral("Body")));
-    doc.undoStack()->push(new AddStrokeCommand(
-        &doc, body, testing::polylineStroke(testing::squareCorners(QRectF(150, 150, 60, 60)))));
-    doc.undoStack()->push(fillRegionCommand(&doc, body, QPointF(180, 180), kRed).release());
-    doc.undoStack()->push(fillRegionCommand(&doc, body, QPointF(120, 250), kBlue).release());
-
-    const Id arm = addObject(doc, QStringLiteral("Left arm"));
-    doc.undoStack()->push(
-        new AddStrokeCommand(&doc, arm, circleStroke(QPointF(500, 200), 60, kGreen)));
-
-    const Id moved = addObject(doc, QStringLiteral("Body"));
-    doc.undoStack()->push(
-        new AddStrokeCommand(&doc, moved, circleStroke(QPointF(200, 500), 50, 0xff000000)));
-    Rig rig;
-    rig.pins = {{1, QPointF(150, 450), QPointF(150, 450) + kShift},
-                {2, QPointF(250, 550), QPointF(250, 550) + kShift}};
-    doc.setRig(moved, rig);
-    DeformJob job;
-    job.groupId = moved;
-    job.key = MeshKey::of(*doc.group(moved));
-    job.rig = rig.atRest();
-    if (const auto setup = buildDeformSetup(job))
-        if (const auto pose = solvePose(**setup, *doc.group(moved)))
-            doc.setDeformed(moved, pose->strokes);
-    if (posed)
-        *posed = moved;
-
-    const Id hidden = addObject(doc, QStringLiteral("Hidden"));
-    doc.undoStack()->push(
-        new AddStrokeCommand(&doc, hidden, circleStroke(QPointF(700, 500), 40, kRed)));
-    doc.undoStack()->push(new SetObjectFlagCommand(&doc, hidden, ObjectFlag::Visible, false));
-
-    const Id dot = addObject(doc, QStringLiteral("Dot"));
-    auto point = std::make_shared<StrokeData>();
-    point->points = {{600.0f, 600.0f, 1.0f}};
-    doc.undoStack()->push(new AddStrokeCommand(&doc, dot, point));
-    const Id line = addObject(doc, QStringLiteral("Line"));
-    doc.undoStack()->push(new AddStrokeCommand(
-        &doc, line, testing::polylineStroke({QPointF(400, 650), QPointF(700, 640)})));
-    addObject(doc, QStringLiteral("Empty"));
-
-    DocumentSettings s = doc.settings();
-    s.canvasSize = QSize(800, 700);
-    return ExportSource{doc.frames(), s};
 }
 
 ExportOptions objOptions(const QString &target)

@@ -23,7 +23,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/export/export_obj.cpp" line="168"/>
+        <location filename="../../model/src/export/export_model.cpp" line="35"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>%n object of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and was left out.</numerusform>

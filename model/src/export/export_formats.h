@@ -2,9 +2,11 @@
 #pragma once
 
 #include <finbook/model/export/export_plan.h>
+#include <finbook/model/export/frame_solids.h>
 
 #include <QByteArray>
 #include <QImage>
+#include <QStringList>
 
 #include <initializer_list>
 
@@ -41,6 +43,16 @@ ExportOutcome exportSequence(const ExportContext &context);
 ExportOutcome exportEncoded(const ExportContext &context);
 ExportOutcome exportFlipbook(const ExportContext &context);
 ExportOutcome exportObj(const ExportContext &context);
+ExportOutcome exportGlb(const ExportContext &context);
+
+// The 3D formats' shared part (export_model.cpp): the plan's frame as solids, or why not (the
+// export was cancelled, or the frame has nothing to inflate).
+Expected<FrameSolids, ExportError> exportedSolids(const ExportContext &context);
+// The sentence for ExportResult::note about the objects left out, empty when none were.
+QString skippedSolidsNote(const ExportContext &context, const FrameSolids &solids);
+// An ExportResult for a 3D model written to `files`.
+ExportResult modelResult(const ExportContext &context, const QStringList &files,
+                         const FrameSolids &solids);
 
 // The files of a sequence in writing order: one image per tick (or one per drawing plus the
 // exposure sheet, last). Names are made when asked for: a sequence may hold millions.

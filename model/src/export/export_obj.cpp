@@ -82,21 +82,6 @@ ExportOptions materialOptions(const ExportOptions &options)
     return mtl;
 }
 
-ExportError nothingToExport(int frameNumber, const FrameSolids &solids)
-{
-    if (solids.candidates == 0)
-        return exportError(ExportErrorCode::BadOptions,
-                           Export::tr("Frame %1 shows no drawing to make a 3D model of; choose "
-                                      "another frame.")
-                               .arg(frameNumber));
-    return exportError(
-        ExportErrorCode::BadOptions,
-        Export::tr("No object of frame %1 can be made 3D: each is a dot or a straight line, "
-                   "with no area to inflate. Nothing was exported; draw a shape or choose "
-                   "another frame.")
-            .arg(frameNumber));
-}
-
 bool exists(const QByteArray &path)
 {
     struct stat status {};
@@ -123,14 +108,9 @@ ExportOutcome exportObj(const ExportContext &context)
     if (auto error = claimFileTarget(target, guard, {&lock, &mtlLock}))
         return unexpected(*error);
 
-    const int frameIndex = context.plan.frames.front();
-    const auto solids =
-        frameSolids(context.frame(0), context.source.settings,
-                    [&context](int done, int total) { return !context.cancelled(done, total); });
+    const auto solids = exportedSolids(context);
     if (!solids)
-        return unexpected(cancelledError());
-    if (solids->objects.empty())
-        return unexpected(nothingToExport(frameIndex + 1, *solids));
+        return unexpected(solids.error());
     const ObjFiles files = objFiles(*solids, mtlOptions.target);
 
     PendingFile pendingObj(target), pendingMtl(mtlOptions.target);
@@ -154,18 +134,7 @@ ExportOutcome exportObj(const ExportContext &context)
     }
     guard.keep();
 
-    ExportResult result;
-    result.files << target << mtlOptions.target;
-    result.fileCount = 2;
-    result.images = 1;
-    result.ticks = context.plan.ticks;
-    result.size = context.plan.size;
-    if (solids->skipped > 0)
-        result.note = Export::tr("%n object(s) of frame %1 could not be made 3D (a dot or a "
-                                 "straight line has no area to inflate) and were left out.",
-                                 nullptr, solids->skipped)
-                          .arg(frameIndex + 1);
-    return result;
+    return modelResult(context, {target, mtlOptions.target}, *solids);
 }
 
 } // namespace finbook::model

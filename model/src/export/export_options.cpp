@@ -22,6 +22,7 @@ constexpr std::array kFormats{
     FormatInfo{ExportFormat::Apng, "apng", "apng"},
     FormatInfo{ExportFormat::Html, "html", "html"},
     FormatInfo{ExportFormat::Obj, "obj", "obj"},
+    FormatInfo{ExportFormat::Glb, "glb", "glb"},
 };
 
 const FormatInfo &info(ExportFormat format)
@@ -79,6 +80,11 @@ QString objMaterialPath(const QString &objTarget)
 bool exportsSequence(ExportFormat format)
 {
     return format == ExportFormat::PngSequence || format == ExportFormat::SvgSequence;
+}
+
+bool exportsModel(ExportFormat format)
+{
+    return format == ExportFormat::Obj || format == ExportFormat::Glb;
 }
 
 bool exportNeedsFfmpeg(ExportFormat format)

@@ -84,7 +84,7 @@ Expected<ExportPlan, ExportError> planExport(const ExportSource &source,
     int first = 0, last = 0;
     if (auto error = resolveRange(source, options, first, last))
         return unexpected(*error);
-    if (options.format == ExportFormat::Obj) {
+    if (exportsModel(options.format)) {
         // A 3D model is one drawing: the play range's first, or the one frame asked for.
         if (options.firstFrame != -1 && first != last)
             return badOptions(Export::tr("A 3D model holds one frame, not the frames %1-%2; "

@@ -225,6 +225,8 @@ Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
         return exportFlipbook(context);
     if (options.format == ExportFormat::Obj)
         return exportObj(context);
+    if (options.format == ExportFormat::Glb)
+        return exportGlb(context);
     return exportEncoded(context);
 }
 

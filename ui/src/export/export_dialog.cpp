@@ -81,7 +81,8 @@ void ExportDialog::buildForm()
         {ExportFormat::Html, tr("HTML flipbook (one file)")},
         {ExportFormat::PngSequence, tr("PNG images (a folder)")},
         {ExportFormat::SvgSequence, tr("SVG vector images (a folder)")},
-        {ExportFormat::Obj, tr("3D model (OBJ), the current frame")}};
+        {ExportFormat::Obj, tr("3D model (OBJ), the current frame")},
+        {ExportFormat::Glb, tr("3D model (glTF binary), the current frame")}};
     for (const auto &[format, label] : formats)
         m_format->addItem(label, int(format));
     m_target = new QLineEdit(this);
@@ -219,7 +220,7 @@ void ExportDialog::updateFields()
         m_background->currentData().toInt() == int(Background::Transparent))
         m_background->setCurrentIndex(int(Background::Document));
     // A 3D model is the current frame, in canvas units, without background or rate.
-    const bool flat = format != ExportFormat::Obj;
+    const bool flat = !model::exportsModel(format);
     const bool custom = m_range->currentData().toInt() == int(Range::Custom);
     for (QWidget *field : std::initializer_list<QWidget *>{m_range, m_scale, m_background, m_fps})
         field->setEnabled(flat);
@@ -237,10 +238,15 @@ void ExportDialog::updateFields()
     m_pixels->setText(plan && flat
                           ? tr("%1 x %2 pixels").arg(plan->size.width()).arg(plan->size.height())
                           : QString());
-    if (!flat && !isExporting())
+    if (format == ExportFormat::Obj && !isExporting())
         m_status->setText(tr("A 3D model holds the current frame (%1) only: its objects inflated, "
                              "in their fill colours, with a .mtl file beside it. The frames, "
                              "scale, background and frame rate do not apply.")
+                              .arg(m_currentFrame + 1));
+    else if (!flat && !isExporting())
+        m_status->setText(tr("A 3D model holds the current frame (%1) only: its objects inflated, "
+                             "in their fill colours, all in one file. The frames, scale, "
+                             "background and frame rate do not apply.")
                               .arg(m_currentFrame + 1));
     else if (model::exportNeedsFfmpeg(format) && model::ffmpegProgram().isEmpty())
         m_status->setText(tr("This format needs the ffmpeg program, which was not found; "
@@ -266,7 +272,7 @@ model::ExportOptions ExportDialog::options() const
     default:
         break;
     }
-    if (o.format == ExportFormat::Obj) // whatever the (disabled) range says
+    if (model::exportsModel(o.format)) // whatever the (disabled) range says
         o.firstFrame = o.lastFrame = m_currentFrame;
     o.scale = m_scale->value();
     const auto background = Background(m_background->currentData().toInt());

@@ -26,6 +26,7 @@ enum class ExportFormat {
     Apng,        // ffmpeg animated PNG
     Html,        // one self-contained page that plays the animation
     Obj,         // one frame's objects inflated to 3D: a Wavefront OBJ file and its .mtl
+    Glb,         // the same 3D model as one glTF 2.0 binary file
 };
 
 struct ExportOptions {
@@ -36,7 +37,7 @@ struct ExportOptions {
     // for messages, the lock and the temporaries beside it, and the finished file is put
     // under these bytes. Empty: the name `target` encodes.
     QByteArray nativeName;
-    // Document frame indices, inclusive. Both -1: the document's play range. A 3D model (Obj)
+    // Document frame indices, inclusive. Both -1: the document's play range. A 3D model (Obj, Glb)
     // holds one frame: first == last, or both -1 for the play range's first frame.
     int firstFrame = -1;
     int lastFrame = -1;
@@ -100,7 +101,8 @@ constexpr qsizetype kListedExportFiles = 1000;
 
 using ExportProgress = std::function<bool(qint64 done, qint64 total)>;
 
-// "png", "svg", "gif", "mp4", "webm", "apng", "html" (also "htm"), "obj", case-insensitive.
+// "png", "svg", "gif", "mp4", "webm", "apng", "html" (also "htm"), "obj", "glb",
+// case-insensitive.
 std::optional<ExportFormat> exportFormatFromName(const QString &name);
 // The format a path's suffix names (".png" names the PNG sequence); empty for no or an
 // unknown suffix.
@@ -111,6 +113,8 @@ QString exportFormatSuffix(ExportFormat format);
 // The material file an OBJ export writes beside `objTarget`: its name with the suffix .mtl.
 QString objMaterialPath(const QString &objTarget);
 bool exportsSequence(ExportFormat format);
+// OBJ and glTF: one frame's objects as 3D solids, not pictures (no scale, background or rate).
+bool exportsModel(ExportFormat format);
 bool exportNeedsFfmpeg(ExportFormat format);
 bool exportSupportsTransparency(ExportFormat format);
 // GIF, APNG and HTML repeat or stop at the end; the videos just end.

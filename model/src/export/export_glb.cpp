@@ -1,0 +1,69 @@
+// The 3D model export as glTF 2.0 binary: one frame's objects inflated to closed solids
+// (frame_solids.h), each a named node and mesh in its export colour, in one self-contained
+// .glb file (geometry/inflate/glb_writer.h). Written the safe way the other single files are:
+// locked, written beside the target, synced and renamed into place only when complete.
+#include "export_formats.h"
+#include "export_text.h"
+#include "pending_output.h"
+#include "target_lock.h"
+
+#include <finbook/geometry/inflate/glb_writer.h>
+
+#include <QColor>
+#include <QFileInfo>
+
+namespace finbook::model {
+
+namespace {
+QByteArray glbFile(const FrameSolids &solids)
+{
+    std::vector<geometry::GlbObject> objects;
+    objects.reserve(solids.objects.size());
+    for (std::size_t i = 0; i < solids.objects.size(); ++i) {
+        const ObjectSolid &object = solids.objects[i];
+        const QString name = object.name.trimmed().isEmpty()
+                                 ? QStringLiteral("object_%1").arg(i + 1)
+                                 : object.name.trimmed();
+        const QColor colour = QColor::fromRgba(object.color);
+        objects.push_back({name.toStdString(), object.solid, colour.redF(), colour.greenF(),
+                           colour.blueF(), colour.alphaF()});
+    }
+    return QByteArray::fromStdString(geometry::glbBytes(objects));
+}
+} // namespace
+
+ExportOutcome exportGlb(const ExportContext &context)
+{
+    const ExportOptions &options = context.options;
+    const QString target = options.target;
+    if (auto error = checkFileTarget(options))
+        return unexpected(*error);
+    FolderGuard guard(QFileInfo(target).path());
+    TargetLock lock(target, false);
+    if (auto error = claimFileTarget(target, guard, {&lock}))
+        return unexpected(*error);
+
+    const auto solids = exportedSolids(context);
+    if (!solids)
+        return unexpected(solids.error());
+    const QByteArray bytes = glbFile(*solids);
+    if (bytes.isEmpty())
+        return unexpected(exportError(
+            ExportErrorCode::BadOptions,
+            Export::tr("Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); "
+                       "export it as OBJ instead.")
+                .arg(context.plan.frames.front() + 1)));
+
+    PendingFile pending(target);
+    QString reason;
+    if (!pending.open(&reason))
+        return unexpected(writeFailed(target, reason));
+    if (auto failed = writeSynced(pending.file(), bytes))
+        return unexpected(writeFailed(target, *failed));
+    if (auto error = commitFile(pending, options))
+        return unexpected(*error);
+    guard.keep();
+    return modelResult(context, {target}, *solids);
+}
+
+} // namespace finbook::model
