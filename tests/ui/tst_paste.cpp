@@ -1,9 +1,11 @@
 // Paste never hides: through the Edit menu's action it lands offset from the original (one
 // more step for each copy already there), in another frame in place; with Ctrl+V and the
 // mouse over the canvas it lands under the mouse. The pasted strokes are selected, with the
-// select tool's box around them.
+// select tool's box around them. Fills whose region the copied strokes bound travel with
+// them, and the paste with its fills is one undo step.
 #include "tst_window_support.h"
 
+#include <finbook/model/fill/fill_commands.h>
 #include <finbook/ui/canvas/canvas_tool.h>
 #include <finbook/ui/tools/stroke_editing.h>
 #include <finbook/ui/window/editor_state.h>
@@ -34,6 +36,7 @@ private slots:
     void menuPasteLandsOffsetAndSelected();
     void pasteIntoAnotherFrameKeepsRegister();
     void ctrlVOverTheCanvasLandsAtTheMouse();
+    void fillsTravelWithTheStrokesAroundThem();
 
 private:
     ui::EditorState *state() const { return m_window->editorState(); }
@@ -123,6 +126,61 @@ void TestPaste::ctrlVOverTheCanvasLandsAtTheMouse()
     QVERIFY(stroke);
     QVERIFY(QLineF(boundsOf(*stroke->data).center(), target).length() < 1e-3);
     QCOMPARE(m_window->canvas()->currentTool()->id(), QStringLiteral("tool.select"));
+}
+
+void TestPaste::fillsTravelWithTheStrokesAroundThem()
+{
+    // A closed square (one stroke) filled red, and a line beside it, in frame 1.
+    const model::Id group = doc()->frameAt(0).groups[0].id;
+    auto square = std::make_shared<model::StrokeData>();
+    const QPointF corners[] = {{300, 100}, {400, 100}, {400, 200}, {300, 200}, {300, 100}};
+    for (int side = 0; side < 4; ++side)
+        for (int k = 0; k < 10; ++k) {
+            const QPointF p = corners[side] + (corners[side + 1] - corners[side]) * (k / 10.0);
+            square->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        }
+    square->points.push_back(square->points.front());
+    const model::Id box = addStroke(*doc(), group, square);
+    doc()->undoStack()->push(
+        model::fillRegionCommand(doc(), group, QPointF(350, 150), 0xffd03030).release());
+    QCOMPARE(doc()->frameAt(0).groups[0].fills.size(), std::size_t(1));
+
+    // Copying the line alone carries no fill; copying the square carries its fill.
+    state()->setSelectedStrokes({m_original});
+    QVERIFY(ui::StrokeEditing::selectedFills(*state()).empty());
+    state()->setSelectedStrokes({m_original, box});
+    QCOMPARE(ui::StrokeEditing::selectedFills(*state()).size(), std::size_t(1));
+    m_window->action(QStringLiteral("edit.copy"))->trigger();
+
+    // Into frame 2, in place: the square comes back filled, bounded by the pasted stroke.
+    mouseAway();
+    state()->setCurrentFrameIndex(1);
+    const int steps = doc()->undoStack()->count();
+    m_window->action(QStringLiteral("edit.paste"))->trigger();
+    QCOMPARE(doc()->undoStack()->count(), steps + 1);
+    const model::StrokeGroup &target = doc()->frameAt(1).groups[0];
+    QCOMPARE(target.strokes.size(), std::size_t(2));
+    QCOMPARE(target.fills.size(), std::size_t(1));
+    QCOMPARE(target.fills[0].color, QRgb(0xffd03030));
+    const QPointF seed = doc()->frameAt(0).groups[0].fills[0].seed; // inside, near the click
+    QCOMPARE(target.fills[0].seed, seed);
+    QCOMPARE(target.fills[0].strokes, std::vector<model::Id>{target.strokes[1].id});
+
+    // In the same frame, under the mouse below the original: so does its fill.
+    state()->setCurrentFrameIndex(0);
+    QVERIFY(ui::StrokeEditing::paste(*state(), nullptr, QPointF(250, 450))); // bounds' centre
+    const model::StrokeGroup &same = doc()->frameAt(0).groups[0];
+    QCOMPARE(same.fills.size(), std::size_t(2));
+    QCOMPARE(same.fills[1].seed, seed + QPointF(0, 300));
+    QCOMPARE(same.fills[1].strokes, std::vector<model::Id>{same.strokes.back().id});
+
+    // One undo takes the strokes and the fill away together, exactly.
+    doc()->undoStack()->undo();
+    QCOMPARE(doc()->frameAt(0).groups[0].fills.size(), std::size_t(1));
+    QCOMPARE(doc()->frameAt(0).groups[0].strokes.size(), std::size_t(2));
+    doc()->undoStack()->undo();
+    QVERIFY(doc()->frameAt(1).groups[0].fills.empty());
+    QVERIFY(doc()->frameAt(1).groups[0].strokes.empty());
 }
 
 QTEST_MAIN(TestPaste)

@@ -9,7 +9,11 @@
 #include <finbook/ui/window/editor_state.h>
 
 #include <QSignalSpy>
+#include <QtEndian>
 #include <QtTest>
+
+#include <cmath>
+#include <cstring>
 
 using namespace finbook;
 using namespace finbook::test;
@@ -364,6 +368,31 @@ void TestTools::clipboardRefusesMalformedData()
     QByteArray huge = good;
     huge[8] = char(0x7f); // stroke count far beyond the bytes
     QVERIFY(!ui::decodeStrokes(huge).has_value());
+
+    // Fills travel after the strokes (version 2) and come back as they went.
+    const std::vector<ui::ClipboardFill> fills{{0xffd03030, QPointF(5, 2.5)},
+                                               {0x80102030, QPointF(-1e6, 1e-3)}};
+    const QByteArray filled = ui::encodeStrokes({line({0, 0}, {10, 10})}, fills);
+    const auto back = ui::decodeStrokes(filled);
+    QVERIFY(back.has_value());
+    QCOMPARE(back->strokes.size(), std::size_t(1));
+    QVERIFY(back->fills == fills);
+    QVERIFY(!ui::decodeStrokes(filled.left(filled.size() - 1)).has_value());
+    QByteArray manyFills = filled;
+    manyFills[good.size() - 4] = char(0x7f); // the fill count, far beyond the bytes
+    QVERIFY(!ui::decodeStrokes(manyFills).has_value());
+    QByteArray notFinite = filled;
+    quint64 nan = 0;
+    const double value = std::nan("");
+    std::memcpy(&nan, &value, 8);
+    nan = qToBigEndian(nan);                                  // QDataStream's byte order
+    std::memcpy(notFinite.data() + good.size() + 4, &nan, 8); // the first seed's x
+    QVERIFY(!ui::decodeStrokes(notFinite).has_value());
+    // Version 1 (a Finbook of before fills on the clipboard): strokes, no fill count.
+    QByteArray version1 = good.left(good.size() - 4);
+    version1[7] = char(1);
+    const auto old = ui::decodeStrokes(version1);
+    QVERIFY(old.has_value() && old->strokes.size() == 1 && old->fills.empty());
 }
 
 void TestTools::handToolPans()

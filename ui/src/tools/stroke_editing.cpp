@@ -1,6 +1,7 @@
 #include "stroke_hit.h"
 
 #include <finbook/model/commands.h>
+#include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
@@ -19,8 +20,9 @@ namespace finbook::ui {
 
 namespace {
 constexpr quint32 kClipMagic = 0x46534b31; // "FSK1"
-constexpr quint32 kClipVersion = 1;
+constexpr quint32 kClipVersion = 2;        // 1: strokes only; 2: then the fills
 constexpr quint32 kMaxClipStrokes = 1'000'000;
+constexpr quint32 kMaxClipFills = 1'000'000;
 constexpr quint64 kMaxClipPoints = 20'000'000;
 
 bool finite(float v)
@@ -29,7 +31,8 @@ bool finite(float v)
 }
 } // namespace
 
-QByteArray encodeStrokes(const std::vector<model::StrokeDataPtr> &strokes)
+QByteArray encodeStrokes(const std::vector<model::StrokeDataPtr> &strokes,
+                         const std::vector<ClipboardFill> &fills)
 {
     QByteArray bytes;
     QDataStream out(&bytes, QIODevice::WriteOnly);
@@ -41,20 +44,48 @@ QByteArray encodeStrokes(const std::vector<model::StrokeDataPtr> &strokes)
         for (const model::StrokePoint &p : s->points)
             out << p.x << p.y << p.pressure;
     }
+    out.setFloatingPointPrecision(QDataStream::DoublePrecision);
+    out << quint32(fills.size());
+    for (const ClipboardFill &f : fills)
+        out << quint32(f.color) << f.seed.x() << f.seed.y();
     return bytes;
 }
 
-std::optional<std::vector<model::StrokeDataPtr>> decodeStrokes(const QByteArray &bytes)
+namespace {
+// Version 2's fills, after the strokes: each a colour and a finite seed point.
+bool decodeFills(QDataStream &in, std::vector<ClipboardFill> &fills)
+{
+    in.setFloatingPointPrecision(QDataStream::DoublePrecision);
+    quint32 count = 0;
+    in >> count;
+    // Each fill takes 20 bytes: refuse counts the remaining bytes cannot hold.
+    if (in.status() != QDataStream::Ok || count > kMaxClipFills ||
+        quint64(count) * 20 > quint64(in.device()->bytesAvailable()))
+        return false;
+    for (quint32 i = 0; i < count; ++i) {
+        quint32 color = 0;
+        double x = 0, y = 0;
+        in >> color >> x >> y;
+        if (in.status() != QDataStream::Ok || !std::isfinite(x) || !std::isfinite(y))
+            return false;
+        fills.push_back({color, QPointF(x, y)});
+    }
+    return true;
+}
+} // namespace
+
+std::optional<ClipboardContent> decodeStrokes(const QByteArray &bytes)
 {
     QDataStream in(bytes);
     in.setVersion(QDataStream::Qt_6_4);
     in.setFloatingPointPrecision(QDataStream::SinglePrecision);
     quint32 magic = 0, version = 0, count = 0;
     in >> magic >> version >> count;
-    if (in.status() != QDataStream::Ok || magic != kClipMagic || version != kClipVersion ||
-        count > kMaxClipStrokes)
+    if (in.status() != QDataStream::Ok || magic != kClipMagic || version < 1 ||
+        version > kClipVersion || count > kMaxClipStrokes)
         return std::nullopt;
-    std::vector<model::StrokeDataPtr> strokes;
+    ClipboardContent content;
+    std::vector<model::StrokeDataPtr> &strokes = content.strokes;
     quint64 total = 0;
     for (quint32 i = 0; i < count; ++i) {
         auto s = std::make_shared<model::StrokeData>();
@@ -77,7 +108,9 @@ std::optional<std::vector<model::StrokeDataPtr>> decodeStrokes(const QByteArray 
             return std::nullopt;
         strokes.push_back(std::move(s));
     }
-    return strokes;
+    if (version >= 2 && !decodeFills(in, content.fills))
+        return std::nullopt;
+    return content;
 }
 
 QString StrokeEditing::targetProblem(const EditorState &state)
@@ -203,13 +236,29 @@ std::vector<model::StrokeDataPtr> StrokeEditing::selectedData(const EditorState 
     return data;
 }
 
+std::vector<ClipboardFill> StrokeEditing::selectedFills(const EditorState &state)
+{
+    std::vector<ClipboardFill> fills;
+    const std::vector<model::Id> &selected = state.selectedStrokes();
+    const auto isSelected = [&selected](model::Id id) {
+        return std::find(selected.begin(), selected.end(), id) != selected.end();
+    };
+    if (const model::Frame *f = state.currentFrame())
+        for (const model::StrokeGroup &g : f->groups)
+            for (const model::Fill &fill : g.fills)
+                if (!fill.strokes.empty() &&
+                    std::all_of(fill.strokes.begin(), fill.strokes.end(), isSelected))
+                    fills.push_back({fill.color, fill.seed});
+    return fills;
+}
+
 bool StrokeEditing::copySelection(const EditorState &state)
 {
     const std::vector<model::StrokeDataPtr> data = selectedData(state);
     if (data.empty())
         return false;
     auto *mime = new QMimeData;
-    mime->setData(QString::fromLatin1(kStrokesMimeType), encodeStrokes(data));
+    mime->setData(QString::fromLatin1(kStrokesMimeType), encodeStrokes(data, selectedFills(state)));
     QApplication::clipboard()->setMimeData(mime);
     return true;
 }
@@ -292,17 +341,30 @@ bool StrokeEditing::paste(EditorState &state, QString *problem, std::optional<QP
     const QMimeData *mime = QApplication::clipboard()->mimeData();
     if (!mime || !mime->hasFormat(QString::fromLatin1(kStrokesMimeType)))
         return false;
-    const auto strokes = decodeStrokes(mime->data(QString::fromLatin1(kStrokesMimeType)));
-    if (!strokes || strokes->empty()) {
+    const auto clip = decodeStrokes(mime->data(QString::fromLatin1(kStrokesMimeType)));
+    if (!clip || clip->strokes.empty()) {
         if (problem)
             *problem = tr("The clipboard holds strokes this version of Finbook cannot read.");
         return false;
     }
-    const QPointF by = pasteShift(state.currentFrame(), *strokes, at);
+    const QPointF by = pasteShift(state.currentFrame(), clip->strokes, at);
     std::vector<model::StrokeDataPtr> placed;
-    for (const model::StrokeDataPtr &data : *strokes)
+    for (const model::StrokeDataPtr &data : clip->strokes)
         placed.push_back(shifted(*data, by));
+    model::Document *doc = state.document();
+    const bool withFills = !clip->fills.empty() && targetProblem(state).isEmpty();
+    if (withFills) // the strokes and their fills: one undo step
+        doc->undoStack()->beginMacro(tr("Paste"));
     const auto ids = addStrokes(state, placed, tr("Paste"), problem);
+    // The pasted strokes make the copied regions again (addStrokes left the object at rest,
+    // as the seeds are); a region the target's own strokes cut differently gets what lies at
+    // the seed, as a click of the Fill tool there would.
+    for (const ClipboardFill &fill : ids ? clip->fills : std::vector<ClipboardFill>{})
+        if (auto command =
+                model::fillRegionCommand(doc, state.currentGroupId(), fill.seed + by, fill.color))
+            doc->undoStack()->push(command.release());
+    if (withFills)
+        doc->undoStack()->endMacro();
     if (!ids)
         return false;
     state.setSelectedStrokes(*ids);

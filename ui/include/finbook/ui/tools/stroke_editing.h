@@ -17,12 +17,28 @@ namespace finbook::ui {
 
 class EditorState;
 
-// MIME type of strokes on the clipboard: a versioned QDataStream of points, colour, width.
+// MIME type of strokes on the clipboard: a versioned QDataStream of points, colour, width,
+// then (version 2) the fills that travel with them.
 inline constexpr char kStrokesMimeType[] = "application/x-finbook-strokes";
 
-QByteArray encodeStrokes(const std::vector<model::StrokeDataPtr> &strokes);
+// A fill copied with the strokes around its region: its colour and a point inside the region
+// (rest canvas pixels, as the strokes are copied). Pasted, it fills the region there again.
+struct ClipboardFill {
+    QRgb color = 0xff000000;
+    QPointF seed;
+    friend bool operator==(const ClipboardFill &, const ClipboardFill &) = default;
+};
+
+struct ClipboardContent {
+    std::vector<model::StrokeDataPtr> strokes;
+    std::vector<ClipboardFill> fills;
+};
+
+QByteArray encodeStrokes(const std::vector<model::StrokeDataPtr> &strokes,
+                         const std::vector<ClipboardFill> &fills = {});
 // Refuses (nullopt) anything malformed: wrong magic, absurd counts, non-finite values.
-std::optional<std::vector<model::StrokeDataPtr>> decodeStrokes(const QByteArray &bytes);
+// Reads version 1 (strokes only) too.
+std::optional<ClipboardContent> decodeStrokes(const QByteArray &bytes);
 
 class StrokeEditing {
     Q_DECLARE_TR_FUNCTIONS(StrokeEditing)
@@ -58,9 +74,13 @@ public:
     static void selectAll(EditorState &state);
 
     static std::vector<model::StrokeDataPtr> selectedData(const EditorState &state);
+    // The fills of the current frame whose region is bounded by selected strokes only: the
+    // ones a copy of the selection carries.
+    static std::vector<ClipboardFill> selectedFills(const EditorState &state);
     static bool copySelection(const EditorState &state);
     static bool cutSelection(EditorState &state);
-    // Pastes clipboard strokes into the current object and selects them. They land centred
+    // Pastes clipboard strokes (and the fills copied with them, in the regions they make
+    // again) into the current object and selects them. They land centred
     // on `at` (canvas pixels, the mouse over the canvas) when given; else where they were
     // copied if the original is not in this frame (another frame: the drawing stays in
     // register), or offset down and right from it, one more step for each copy already
