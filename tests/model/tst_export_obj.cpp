@@ -136,6 +136,8 @@ private slots:
     void nothingMeshableWritesNothing();
     void existingFilesAreRefusedWithoutOverwrite();
     void cancelLeavesNothing();
+    void materialFileName_data();
+    void materialFileName();
 };
 
 void TestExportObj::generatedFrameRoundTrips()
@@ -331,6 +333,29 @@ void TestExportObj::cancelLeavesNothing()
     QVERIFY(!result);
     QCOMPARE(result.error().code, ExportErrorCode::Cancelled);
     QCOMPARE(filesIn(dir.path()), QStringList());
+}
+
+void TestExportObj::materialFileName_data()
+{
+    QTest::addColumn<QString>("target");
+    QTest::addColumn<QString>("material");
+    QTest::newRow("suffix") << "walk.obj"
+                            << "walk.mtl";
+    QTest::newRow("folder with a dot") << "a.b/c"
+                                       << "a.b/c.mtl";
+    QTest::newRow("trailing dot") << "out/walk."
+                                  << "out/walk.mtl";
+    QTest::newRow("two dots") << "walk.v2.obj"
+                              << "walk.v2.mtl";
+    QTest::newRow("hidden") << "dir/.obj"
+                            << "dir/.mtl";
+}
+
+void TestExportObj::materialFileName()
+{
+    QFETCH(QString, target);
+    QFETCH(QString, material);
+    QCOMPARE(objMaterialPath(target), material);
 }
 
 QTEST_GUILESS_MAIN(TestExportObj)

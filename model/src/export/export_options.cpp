@@ -72,8 +72,11 @@ QString objMaterialPath(const QString &objTarget)
 {
     // The name's own text with its suffix replaced: "walk.obj" stays relative, "a.b/c" gets
     // "a.b/c.mtl".
+    // A name ending in a dot ("walk.") has an empty suffix: "walk.mtl", not "walk..mtl".
     const QString suffix = QFileInfo(objTarget).suffix();
-    const QString stem = suffix.isEmpty() ? objTarget : objTarget.chopped(suffix.size() + 1);
+    QString stem = objTarget.chopped(suffix.size());
+    if (stem.endsWith(QLatin1Char('.')))
+        stem.chop(1);
     return stem + QStringLiteral(".mtl");
 }
 
