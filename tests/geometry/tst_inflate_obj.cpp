@@ -1,6 +1,7 @@
 // The inflated shape as a closed solid and its OBJ text (inflate/inflated_solid.h): the file is
 // read back by an independent little parser and checked for its vertex count, a closed
 // consistently oriented surface, outward normals and the enclosed volume.
+#include "closed_surface.h"
 #include "geometry_test_support.h"
 #include "inflate_test_support.h"
 
@@ -89,21 +90,6 @@ Inflation inflated(const Region &region)
     return std::move(*result);
 }
 
-// Closed and consistently oriented: every directed edge once, and its reverse once.
-bool isClosedAndOriented(const std::vector<std::array<int, 3>> &faces)
-{
-    std::map<std::pair<int, int>, int> directed;
-    for (const auto &f : faces)
-        for (int c = 0; c < 3; ++c)
-            ++directed[{f[std::size_t(c)], f[std::size_t((c + 1) % 3)]}];
-    for (const auto &[edge, count] : directed) {
-        const auto reverse = directed.find({edge.second, edge.first});
-        if (count != 1 || reverse == directed.end() || reverse->second != 1)
-            return false;
-    }
-    return true;
-}
-
 long eulerCharacteristic(const ParsedObj &obj)
 {
     std::map<std::pair<int, int>, int> edges;
@@ -161,7 +147,7 @@ void TestInflateObj::solidIsClosedAndOutward()
             QCOMPARE(obj.fn[i][std::size_t(c)], obj.f[i][std::size_t(c)]);
         }
 
-    QVERIFY(isClosedAndOriented(obj.f));
+    QVERIFY(closedAndOriented(obj.f));
     QCOMPARE(eulerCharacteristic(obj), euler);
 
     // Outward: positive enclosed volume, twice the height field's, and the written normals on
@@ -208,7 +194,7 @@ void TestInflateObj::chordsAreSplit()
     QCOMPARE(inflation->F.rows(), Eigen::Index(4));
     const ParsedObj obj = parseObj(objText({{"square", inflatedSolid(*inflation)}}));
     QCOMPARE(obj.v.size(), std::size_t(6));
-    QVERIFY(isClosedAndOriented(obj.f));
+    QVERIFY(closedAndOriented(obj.f));
     QCOMPARE(eulerCharacteristic(obj), 2L);
 }
 
@@ -229,7 +215,7 @@ void TestInflateObj::severalObjectsShareOneFile()
     QVERIFY(std::all_of(firstOfB, obj.f.end(), [&](const auto &f) {
         return *std::min_element(f.begin(), f.end()) >= int(a.V.rows());
     }));
-    QVERIFY(isClosedAndOriented(obj.f));
+    QVERIFY(closedAndOriented(obj.f));
 }
 
 void TestInflateObj::numbersIgnoreTheLocale()

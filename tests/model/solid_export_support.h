@@ -3,6 +3,7 @@
 // must pass, written against plain index triples so each test reads its own format.
 #pragma once
 
+#include "../geometry/closed_surface.h"
 #include "export_support.h"
 #include "fill_support.h"
 
@@ -22,21 +23,6 @@ inline constexpr QRgb kBlue = 0xff2040e0;
 inline constexpr QRgb kRed = 0xffe03020;
 inline constexpr QRgb kGreen = 0xff20a040;
 inline const QPointF kShift(300, 50); // where the pins move the posed object
-
-// Every edge is used exactly once in each direction: closed and consistently oriented.
-inline bool closedAndOriented(const std::vector<std::array<int, 3>> &faces)
-{
-    std::map<std::pair<int, int>, int> directed;
-    for (const auto &f : faces)
-        for (int c = 0; c < 3; ++c)
-            ++directed[{f[std::size_t(c)], f[std::size_t((c + 1) % 3)]}];
-    for (const auto &[edge, count] : directed) {
-        const auto reverse = directed.find({edge.second, edge.first});
-        if (count != 1 || reverse == directed.end() || reverse->second != 1)
-            return false;
-    }
-    return !faces.empty();
-}
 
 inline QByteArray readAll(const QString &path)
 {

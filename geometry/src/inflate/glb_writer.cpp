@@ -165,22 +165,14 @@ void addMeshAndNode(Parts &parts, int index, const std::string &name, int firstA
         parts.meshes += ',';
         parts.nodes += ',';
     }
-    parts.meshes += "{\"name\":";
-    appendString(parts.meshes, name);
-    parts.meshes += ",\"primitives\":[{\"attributes\":{\"POSITION\":";
-    appendNumber(parts.meshes, firstAccessor);
-    parts.meshes += ",\"NORMAL\":";
-    appendNumber(parts.meshes, firstAccessor + 1);
-    parts.meshes += "},\"indices\":";
-    appendNumber(parts.meshes, firstAccessor + 2);
-    parts.meshes += ",\"material\":";
-    appendNumber(parts.meshes, index);
-    parts.meshes += ",\"mode\":4}]}";
-    parts.nodes += "{\"name\":";
-    appendString(parts.nodes, name);
-    parts.nodes += ",\"mesh\":";
-    appendNumber(parts.nodes, index);
-    parts.nodes += '}';
+    std::string quoted;
+    appendString(quoted, name);
+    parts.meshes += "{\"name\":" + quoted + ",\"primitives\":[{\"attributes\":{\"POSITION\":" +
+                    std::to_string(firstAccessor) +
+                    ",\"NORMAL\":" + std::to_string(firstAccessor + 1) +
+                    "},\"indices\":" + std::to_string(firstAccessor + 2) +
+                    ",\"material\":" + std::to_string(index) + ",\"mode\":4}]}";
+    parts.nodes += "{\"name\":" + quoted + ",\"mesh\":" + std::to_string(index) + '}';
 }
 
 std::string json(const Parts &parts, int objects, std::size_t binLength)
