@@ -24,8 +24,20 @@ QString instanceSocketPath()
     if (!overridden.isEmpty())
         return overridden;
     // The runtime folder is the user's own (mode 0700): no other user can reach the socket.
+    // One Finbook per display: a file opened on one screen session (an X display, a Wayland
+    // socket) never lands in a window shown on another.
+    QString display = qEnvironmentVariable("WAYLAND_DISPLAY");
+    if (display.isEmpty())
+        display = qEnvironmentVariable("DISPLAY");
+    QString suffix;
+    for (const QChar c : display)
+        if (c.isLetterOrNumber() || c == QLatin1Char('.') || c == QLatin1Char('-'))
+            suffix += c;
+        else if (c == QLatin1Char(':'))
+            suffix += QLatin1Char('_');
     return QStandardPaths::writableLocation(QStandardPaths::RuntimeLocation) +
-           QStringLiteral("/finbook-instance");
+           QStringLiteral("/finbook-instance") +
+           (suffix.isEmpty() ? QString() : QLatin1Char('-') + suffix);
 }
 
 bool forwardToRunningInstance(const QStringList &files, int timeoutMs)

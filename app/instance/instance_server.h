@@ -1,11 +1,12 @@
-// One Finbook per user session: a second `finbook FILE` (a double-click in a file manager)
+// One Finbook per user and display: a second `finbook FILE` (a double-click in a file manager)
 // hands FILE to the Finbook already running and exits, and the running one opens it in a new
 // window of its own (window_list.h) — or brings forward the window that already shows it, so
 // the same file is never edited in two places. No window's document is replaced, so no
 // unsaved work is at risk.
 //
 // The running Finbook listens on a local socket ($FINBOOK_INSTANCE_SOCKET, else
-// "finbook-instance" in the user's runtime folder, $XDG_RUNTIME_DIR). A request is one line of
+// "finbook-instance-DISPLAY" in the user's runtime folder, $XDG_RUNTIME_DIR, where DISPLAY is
+// $WAYLAND_DISPLAY or else $DISPLAY with ':' as '_': "finbook-instance-_0" on X display :0). A request is one line of
 // JSON, {"files": [absolute paths]}; the answer "ok\n" comes once the request is taken.
 // A Finbook that does not answer within the timeout (hung, or being shut down) is not waited
 // for: the new one opens its own window.

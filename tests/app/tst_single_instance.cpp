@@ -73,6 +73,7 @@ class TestSingleInstance : public QObject {
 private slots:
     void secondFinbookHandsItsFileOver();
     void noRunningFinbook();
+    void oneFinbookPerDisplay();
     void staleSocketIsTakenOver();
     void junkRequestsAreDropped();
     void requestsNeverReplaceADocument();
@@ -115,6 +116,35 @@ void TestSingleInstance::noRunningFinbook()
     qputenv("FINBOOK_INSTANCE_SOCKET", QFile::encodeName(dir.filePath(QStringLiteral("none"))));
     QVERIFY(!app::forwardToRunningInstance({kExample}, 2000));
     qunsetenv("FINBOOK_INSTANCE_SOCKET");
+}
+
+// Two X displays (or Wayland sessions) of one user each have their own Finbook: a file opened
+// on one never lands in a window on the other.
+void TestSingleInstance::oneFinbookPerDisplay()
+{
+    const QByteArray display = qgetenv("DISPLAY"), wayland = qgetenv("WAYLAND_DISPLAY"),
+                     socket = qgetenv("FINBOOK_INSTANCE_SOCKET");
+    qunsetenv("FINBOOK_INSTANCE_SOCKET");
+    qunsetenv("WAYLAND_DISPLAY");
+    qputenv("DISPLAY", ":42");
+    const QString on42 = app::instanceSocketPath();
+    qputenv("DISPLAY", ":43.0");
+    const QString on43 = app::instanceSocketPath();
+    qputenv("WAYLAND_DISPLAY", "wayland-1");
+    const QString onWayland = app::instanceSocketPath();
+    qunsetenv("DISPLAY");
+    qunsetenv("WAYLAND_DISPLAY");
+    const QString headless = app::instanceSocketPath();
+    for (const auto &[name, value] :
+         {std::pair{"DISPLAY", display}, std::pair{"WAYLAND_DISPLAY", wayland},
+          std::pair{"FINBOOK_INSTANCE_SOCKET", socket}})
+        if (!value.isNull())
+            qputenv(name, value);
+    QVERIFY2(on42.endsWith(QLatin1String("/finbook-instance-_42")), qPrintable(on42));
+    QVERIFY2(on43.endsWith(QLatin1String("/finbook-instance-_43.0")), qPrintable(on43));
+    QVERIFY2(onWayland.endsWith(QLatin1String("/finbook-instance-wayland-1")),
+             qPrintable(onWayland));
+    QVERIFY2(headless.endsWith(QLatin1String("/finbook-instance")), qPrintable(headless));
 }
 
 // A Finbook that crashed leaves its socket file: the next one takes it over. A live one keeps
