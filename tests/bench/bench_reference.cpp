@@ -10,6 +10,7 @@
 #include <finbook/model/reference/reference_commands.h>
 #include <finbook/model/reference/reference_layer.h>
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -142,6 +143,30 @@ int run(const QStringList &args)
     phase("forward", forward);
     phase("backward", backward);
     phase("random", random);
+    // What the canvas does: it asks without waiting (the GUI thread's cost) and a worker
+    // decodes; measured over fresh random jumps, with the time until the frame is ready.
+    {
+        ReferenceLayer &canvasLayer = doc.referenceLayer();
+        std::vector<double> asking, ready;
+        for (int i = 0; i < 30; ++i) {
+            const int frame = int(rng.bounded(count));
+            QElapsedTimer t;
+            t.start();
+            canvasLayer.pictureWithoutWaiting(frame);
+            asking.push_back(t.nsecsElapsed() / 1e6);
+            const qint64 want = canvasLayer.videoFrameAt(frame);
+            while (canvasLayer.media()->cachedFrame(want).isNull())
+                QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+            ready.push_back(t.nsecsElapsed() / 1e6);
+        }
+        QJsonObject o{{QStringLiteral("bench"), QStringLiteral("reference")},
+                      {QStringLiteral("phase"), QStringLiteral("canvasRandom")},
+                      {QStringLiteral("guiMedianMs"), finbook::bench::median(asking)},
+                      {QStringLiteral("guiP99Ms"), finbook::bench::percentile(asking, 0.99)},
+                      {QStringLiteral("readyMedianMs"), finbook::bench::median(ready)},
+                      {QStringLiteral("readyP99Ms"), finbook::bench::percentile(ready, 0.99)}};
+        std::printf("%s\n", QJsonDocument(o).toJson(QJsonDocument::Compact).constData());
+    }
     QJsonObject summary{
         {QStringLiteral("bench"), QStringLiteral("reference")},
         {QStringLiteral("phase"), QStringLiteral("setup")},
