@@ -51,6 +51,10 @@ const OptionSpec kOptions[] = {
     {"one-per-drawing", nullptr,
      QT_TRANSLATE_NOOP("CommandLine",
                        "export png/svg: one file per drawing plus an exposure sheet.")},
+    {"include-reference", nullptr,
+     QT_TRANSLATE_NOOP("CommandLine",
+                       "export: paint the document's reference picture or video under the "
+                       "drawing.")},
     {"overwrite", nullptr, QT_TRANSLATE_NOOP("CommandLine", "export: replace existing files.")},
     {"out-dir", "DIR", QT_TRANSLATE_NOOP("CommandLine", "export: write each FILE into DIR.")},
     {"max-frames", "N",
@@ -197,6 +201,7 @@ std::optional<QString> parseRequest(const QStringList &arguments, Request &r)
         return error;
     r.options.transparent = p.isSet(QStringLiteral("transparent"));
     r.options.onePerDrawing = p.isSet(QStringLiteral("one-per-drawing"));
+    r.options.includeReference = p.isSet(QStringLiteral("include-reference"));
     r.options.overwrite = p.isSet(QStringLiteral("overwrite"));
     if (r.options.transparent && r.options.background)
         return CommandLine::tr("--transparent and --background cannot be used together.");
@@ -301,7 +306,8 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
                         .arg(options.target, reason),
                     ExitCode::Failure);
     options.title = QFileInfo(input).completeBaseName();
-    const model::ExportSource source{std::move(loaded->frames), loaded->settings};
+    const model::ExportSource source{std::move(loaded->frames), loaded->settings,
+                                     std::move(loaded->reference)};
     const auto result = model::exportAnimation(
         source, options, exportProgress(QFileInfo(native.shown(options.target)).fileName()));
     clearProgressLine();

@@ -358,112 +358,117 @@
         <translation>export png/svg: eine Datei pro Zeichnung plus ein Timing-Sheet.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="54"/>
+        <location filename="../app/cli_export.cpp" line="55"/>
+        <source>export: paint the document&apos;s reference picture or video under the drawing.</source>
+        <translation>export: das Referenzbild oder -video des Dokuments unter die Zeichnung malen.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="58"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="55"/>
+        <location filename="../app/cli_export.cpp" line="59"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="57"/>
+        <location filename="../app/cli_export.cpp" line="61"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="88"/>
+        <location filename="../app/cli_export.cpp" line="92"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="102"/>
+        <location filename="../app/cli_export.cpp" line="106"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame und --range können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="105"/>
+        <location filename="../app/cli_export.cpp" line="109"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame braucht eine Bildnummer ab 1, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="112"/>
+        <location filename="../app/cli_export.cpp" line="116"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="118"/>
+        <location filename="../app/cli_export.cpp" line="122"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="126"/>
+        <location filename="../app/cli_export.cpp" line="130"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="132"/>
+        <location filename="../app/cli_export.cpp" line="136"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="144"/>
+        <location filename="../app/cli_export.cpp" line="148"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="160"/>
+        <location filename="../app/cli_export.cpp" line="164"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="167"/>
+        <location filename="../app/cli_export.cpp" line="171"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html, .obj oder .glb enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="176"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="188"/>
+        <location filename="../app/cli_export.cpp" line="192"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="192"/>
+        <location filename="../app/cli_export.cpp" line="196"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="202"/>
+        <location filename="../app/cli_export.cpp" line="207"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="204"/>
+        <location filename="../app/cli_export.cpp" line="209"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="300"/>
+        <location filename="../app/cli_export.cpp" line="305"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="311"/>
+        <location filename="../app/cli_export.cpp" line="317"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Unterbrochen; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="318"/>
+        <location filename="../app/cli_export.cpp" line="324"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="320"/>
+        <location filename="../app/cli_export.cpp" line="326"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
@@ -673,57 +678,57 @@
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="45"/>
+        <location filename="../model/src/export/export_plan.cpp" line="46"/>
         <source>The frame range %1-%2 is not within the animation&apos;s frames 1-%3; choose a range inside it.</source>
         <translation>Der Einzelbildbereich %1–%2 liegt nicht innerhalb der Einzelbilder 1–%3 der Animation; wählen Sie einen Bereich darin.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="80"/>
+        <location filename="../model/src/export/export_plan.cpp" line="81"/>
         <source>The animation has no frames to export.</source>
         <translation>Die Animation hat keine Einzelbilder, die sich exportieren ließen.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="82"/>
+        <location filename="../model/src/export/export_plan.cpp" line="83"/>
         <source>The canvas has no size; set one in Document Settings.</source>
         <translation>Die Leinwand hat keine Größe; legen Sie eine in den Dokumenteinstellungen fest.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="90"/>
+        <location filename="../model/src/export/export_plan.cpp" line="91"/>
         <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
         <translation>Ein 3D-Modell enthält ein Einzelbild, nicht die Bilder %1–%2; wählen Sie ein einzelnes Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="110"/>
+        <location filename="../model/src/export/export_plan.cpp" line="111"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>Die Skalierung %1 ergibt keine mögliche Bildgröße; wählen Sie eine Skalierung, die 1 bis %2 Pixel pro Seite ergibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="114"/>
+        <location filename="../model/src/export/export_plan.cpp" line="115"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>Die Skalierung %1 ergäbe ein Bild mit %2 × %3 Pixeln; wählen Sie eine Skalierung, die 1 bis %4 Pixel pro Seite ergibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="127"/>
+        <location filename="../model/src/export/export_plan.cpp" line="128"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>Die Bildrate %1 ist nicht möglich; wählen Sie %2 bis %3 Bilder pro Sekunde.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="135"/>
+        <location filename="../model/src/export/export_plan.cpp" line="136"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>%1-Videos können nicht transparent sein; wählen Sie WebM, APNG, GIF oder PNG für einen transparenten Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="159"/>
+        <location filename="../model/src/export/export_plan.cpp" line="160"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Dieser Export würde %1 Einzelbilder schreiben, mehr als die erlaubten %2; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="166"/>
+        <location filename="../model/src/export/export_plan.cpp" line="167"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Dateien schreiben (%2 Wiedergabeschritte), mehr als %3 ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="174"/>
+        <location filename="../model/src/export/export_plan.cpp" line="175"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Stunden Animation ergeben (%2 Einzelbilder), mehr als %3 Stunden ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
@@ -1019,27 +1024,27 @@
         <translation>%1 hat am Ende %2 unerwartete Bytes</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="32"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="33"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist unvollständig (vielleicht wurde ein Kopier- oder Speichervorgang unterbrochen); falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="38"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="39"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist beschädigt; falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="44"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 Die Datei ist beschädigt; Finbook kann öffnen, was davon noch lesbar ist, oder Sie öffnen die Sicherungskopie mit demselben Namen und angehängtem ~, falls es eine gibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="49"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="72"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
@@ -1069,43 +1074,43 @@
         <translation>der Ordner „%1“ existiert nicht</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="77"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="78"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="88"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>„%1“ kann nicht geöffnet werden: %2. Prüfen Sie, ob die Datei existiert und ob Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="129"/>
         <source>it is a folder</source>
         <translation>es ist ein Ordner</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="162"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>„%1“ kann nicht gelesen werden: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="142"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="172"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="143"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="173"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>„%1“ kann nicht geöffnet werden. %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="133"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>„%1“ kann nicht geöffnet werden: Es ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie eine .finbook-Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="152"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>„%1“ kann nicht geöffnet werden: Für die %2 MB der Datei ist nicht genug Arbeitsspeicher vorhanden. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
@@ -1227,7 +1232,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
@@ -1242,105 +1247,105 @@
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="184"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="186"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1626,22 +1631,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="355"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -1763,12 +1768,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="154"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="155"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>Die automatische Sicherung konnte keine Wiederherstellungskopie schreiben: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="38"/>
         <source>there is not enough memory</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden</translation>
     </message>
@@ -1796,6 +1801,47 @@
         <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>die Strich-IDs einer Füllung sind nicht geordnet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="32"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="34"/>
+        <source>the reference layer</source>
+        <translation>die Referenzebene</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="36"/>
+        <source>the section is repeated</source>
+        <translation>der Abschnitt kommt doppelt vor</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="41"/>
+        <source>the reference is of an unknown kind (%1)</source>
+        <translation>die Referenz ist von unbekannter Art (%1)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="45"/>
+        <source>the reference has unknown flags</source>
+        <translation>die Referenz hat unbekannte Kennzeichen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="60"/>
+        <source>the reference&apos;s place, scale, rotation, opacity or rate is not a number or out of range</source>
+        <translation>Lage, Maßstab, Drehung, Deckkraft oder Rate der Referenz ist keine Zahl oder außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="64"/>
+        <source>the reference&apos;s name is too long</source>
+        <translation>der Name der Referenz ist zu lang</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="70"/>
+        <source>the reference claims %1 bytes but only %2 remain</source>
+        <translation>die Referenz gibt %1 Bytes an, es bleiben aber nur %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="83"/>
+        <source>the reference layer is left out: %1</source>
+        <translation>die Referenzebene wird weggelassen: %1</translation>
     </message>
 </context>
 <context>
@@ -1836,6 +1882,122 @@
     </message>
 </context>
 <context>
+    <name>Reference</name>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="16"/>
+        <source>Import Reference</source>
+        <translation>Referenz importieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="18"/>
+        <source>Reference Opacity</source>
+        <translation>Deckkraft der Referenz</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="20"/>
+        <source>Show or Hide Reference</source>
+        <translation>Referenz ein- oder ausblenden</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="22"/>
+        <source>Lock or Unlock Reference</source>
+        <translation>Referenz sperren oder entsperren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="24"/>
+        <source>Move Reference</source>
+        <translation>Referenz verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="26"/>
+        <source>Scale Reference</source>
+        <translation>Referenz skalieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="28"/>
+        <source>Rotate Reference</source>
+        <translation>Referenz drehen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="30"/>
+        <source>Reference Frame Rate</source>
+        <translation>Bildrate der Referenz</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="91"/>
+        <source>Remove Reference</source>
+        <translation>Referenz entfernen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="33"/>
+        <source>“%1” cannot be used as a reference: %2</source>
+        <translation>„%1“ kann nicht als Referenz verwendet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="38"/>
+        <source>It cannot be read (is it there, and may Finbook read it?).</source>
+        <translation>Sie lässt sich nicht lesen (gibt es sie, und darf Finbook sie lesen?).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="41"/>
+        <source>It is larger than %1 MB.</source>
+        <translation>Sie ist größer als %1 MB.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="45"/>
+        <source>It is empty.</source>
+        <translation>Sie ist leer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_media.cpp" line="72"/>
+        <source>The file is empty.</source>
+        <translation>Die Datei ist leer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_media.cpp" line="84"/>
+        <source>Its picture cannot be decoded.</source>
+        <translation>Ihr Bild lässt sich nicht dekodieren.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="178"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="183"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="187"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="211"/>
+        <source>There is not enough memory to read it.</source>
+        <translation>Zum Lesen reicht der Speicher nicht.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="191"/>
+        <source>It is not a picture or a video Finbook can read, or it is damaged.</source>
+        <translation>Es ist kein Bild oder Video, das Finbook lesen kann, oder es ist beschädigt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="194"/>
+        <source>It is damaged: its streams cannot be read.</source>
+        <translation>Es ist beschädigt: seine Datenströme lassen sich nicht lesen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="198"/>
+        <source>It holds no picture Finbook can decode.</source>
+        <translation>Es enthält kein Bild, das Finbook dekodieren kann.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="203"/>
+        <source>Its pictures are empty or larger than 16384 pixels a side.</source>
+        <translation>Seine Bilder sind leer oder größer als 16384 Pixel je Seite.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="214"/>
+        <source>Its pictures cannot be decoded.</source>
+        <translation>Seine Bilder lassen sich nicht dekodieren.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
+        <source>Its first picture cannot be decoded.</source>
+        <translation>Sein erstes Bild lässt sich nicht dekodieren.</translation>
+    </message>
+</context>
+<context>
     <name>RigPrompt</name>
     <message>
         <location filename="../ui/src/rig/rig_prompt.cpp" line="18"/>
@@ -1851,47 +2013,48 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="86"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="119"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="89"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="92"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="114"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="147"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="153"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="186"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="174"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="207"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="222"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="271"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="298"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="347"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="305"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="357"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="358"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -2390,59 +2553,59 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="298"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="307"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="286"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
         <source>Animated GIF</source>
         <translation>Animiertes GIF</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>MP4 video (H.264)</source>
         <translation>MP4-Video (H.264)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>WebM video (VP9)</source>
         <translation>WebM-Video (VP9)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>Animated PNG (APNG)</source>
         <translation>Animiertes PNG (APNG)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>HTML flipbook (one file)</source>
         <translation>HTML-Daumenkino (eine Datei)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>PNG images (a folder)</source>
         <translation>PNG-Bilder (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
         <source>SVG vector images (a folder)</source>
         <translation>SVG-Vektorbilder (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>3D-Modell (OBJ), das aktuelle Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
         <source>3D model (glTF binary), the current frame</source>
         <translation>Finbook, ein Daumenkino-Animationseditor.
 
@@ -2456,132 +2619,142 @@
   finbook thumbnail FILE OUT.png SIZE   das erste Einzelbild als PNG von höchstens SIZE px schreiben</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
         <source>&amp;Browse...</source>
         <translation>&amp;Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>Play range</source>
         <translation>Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>All frames</source>
         <translation>Alle Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
         <source>Frames</source>
         <translation>Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Document background</source>
         <translation>Dokumenthintergrund</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source>Start again after the last frame</source>
         <translation>Nach dem letzten Einzelbild wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Eine Datei pro Zeichnung, mit Timing-Sheet</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="135"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
+        <source>Include refere&amp;nce</source>
+        <translation>Refere&amp;nz einschließen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="120"/>
+        <source>Paint the reference picture or video under the drawing (not in SVG or 3D)</source>
+        <translation>Das Referenzbild oder -video unter die Zeichnung malen (nicht bei SVG oder 3D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="139"/>
         <source>to</source>
         <translation>bis</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>&amp;Save to:</source>
         <translation>&amp;Speichern in:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>F&amp;rames:</source>
         <translation>Einzel&amp;bilder:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
         <source>Sc&amp;ale:</source>
         <translation>S&amp;kalierung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
         <source>&amp;Background:</source>
         <translation>&amp;Hintergrund:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>Frame ra&amp;te:</source>
         <translation>Bild&amp;rate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>Loop:</source>
         <translation>Endlosschleife:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="165"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="166"/>
         <source>Cancel Export</source>
         <translation>Export abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="239"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 × %2 Pixel</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="242"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="250"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, mit einer .mtl-Datei daneben. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="255"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, alles in einer Datei. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Dieses Format benötigt das Programm ffmpeg, das nicht gefunden wurde; installieren Sie es zuerst (unter Debian: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="304"/>
         <source>Export to Folder</source>
         <translation>In Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="299"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="308"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>
@@ -2852,84 +3025,89 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window.cpp" line="146"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="168"/>
+        <location filename="../ui/src/window/main_window.cpp" line="170"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window.cpp" line="171"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window.cpp" line="174"/>
+        <source>Reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="182"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="183"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="219"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window.cpp" line="230"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window.cpp" line="231"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="226"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window.cpp" line="237"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="26"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="27"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook-Animationen (*.finbook);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="38"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="72"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="73"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="91"/>
         <source>Cannot Open File</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="127"/>
         <source>Cannot Save File</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="133"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="96"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="99"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Problem behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
@@ -2937,273 +3115,288 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="183"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="189"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="192"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="202"/>
         <source>Cannot Import Mesh</source>
         <translation>Netz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="206"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="228"/>
         <source>Damaged File</source>
         <translation>Beschädigte Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="232"/>
         <source>Open Anyway</source>
         <translation>Trotzdem öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="242"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="243"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="249"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="255"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="256"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="45"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="46"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="59"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="60"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="61"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="96"/>
+        <source>Import Re&amp;ference...</source>
+        <translation>&amp;Referenz importieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
+        <source>Import Reference</source>
+        <translation>Referenz importieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
+        <source>Cannot Import Reference</source>
+        <translation>Referenz kann nicht importiert werden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="121"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="149"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="153"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="168"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="182"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="196"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="211"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="264"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="287"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="311"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="300"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="312"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -3298,12 +3491,12 @@
         <translation>&amp;Lineare Überblendung</translation>
     </message>
     <message>
-        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="62"/>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="63"/>
         <source>Cannot Recover</source>
         <translation>Wiederherstellung nicht möglich</translation>
     </message>
     <message>
-        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="71"/>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="73"/>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
         <translation>%1 mit dem Stand vom %2 wiederhergestellt; speichern Sie die Animation, um sie zu behalten.</translation>
     </message>
@@ -3666,6 +3859,100 @@
             <numerusform>%1 — %2 — %n Einzelbild</numerusform>
             <numerusform>%1 — %2 — %n Einzelbilder</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ReferencePanel</name>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="36"/>
+        <source>&amp;Visible</source>
+        <translation>&amp;Sichtbar</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="37"/>
+        <source>Loc&amp;ked</source>
+        <translation>&amp;Gesperrt</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="40"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="41"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="42"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="43"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="44"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="45"/>
+        <source>Document rate</source>
+        <translation>Rate des Dokuments</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="46"/>
+        <source>Video frames shown per second of animation</source>
+        <translation>Videobilder je Sekunde Animation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="47"/>
+        <source>&amp;Remove Reference</source>
+        <translation>Referenz &amp;entfernen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="53"/>
+        <source>Opacity:</source>
+        <translation>Deckkraft:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="54"/>
+        <source>Centre X:</source>
+        <translation>Mitte X:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="55"/>
+        <source>Centre Y:</source>
+        <translation>Mitte Y:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
+        <source>Scale:</source>
+        <translation>Maßstab:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
+        <source>Rotation:</source>
+        <translation>Drehung:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
+        <source>Video rate:</source>
+        <translation>Videorate:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="86"/>
+        <source>No reference. File → Import Reference… puts a picture or a video under the drawing.</source>
+        <translation>Keine Referenz. Datei → Referenz importieren… legt ein Bild oder Video unter die Zeichnung.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="148"/>
+        <source>The reference could not be placed on the canvas.</source>
+        <translation>Die Referenz ließ sich nicht auf der Leinwand platzieren.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="155"/>
+        <source>Pictures and videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;All files (*)</source>
+        <translation>Bilder und Videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>

@@ -358,112 +358,117 @@
         <translation>export png/svg : un fichier par dessin, plus une feuille d&apos;exposition.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="54"/>
+        <location filename="../app/cli_export.cpp" line="55"/>
+        <source>export: paint the document&apos;s reference picture or video under the drawing.</source>
+        <translation>export : peindre l’image ou la vidéo de référence du document sous le dessin.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="58"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="55"/>
+        <location filename="../app/cli_export.cpp" line="59"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="57"/>
+        <location filename="../app/cli_export.cpp" line="61"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="88"/>
+        <location filename="../app/cli_export.cpp" line="92"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="102"/>
+        <location filename="../app/cli_export.cpp" line="106"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame et --range ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="105"/>
+        <location filename="../app/cli_export.cpp" line="109"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame attend un numéro d&apos;image à partir de 1, pas « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="112"/>
+        <location filename="../app/cli_export.cpp" line="116"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="118"/>
+        <location filename="../app/cli_export.cpp" line="122"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="126"/>
+        <location filename="../app/cli_export.cpp" line="130"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="132"/>
+        <location filename="../app/cli_export.cpp" line="136"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="144"/>
+        <location filename="../app/cli_export.cpp" line="148"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="160"/>
+        <location filename="../app/cli_export.cpp" line="164"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="167"/>
+        <location filename="../app/cli_export.cpp" line="171"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html, .obj ou .glb, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="176"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="188"/>
+        <location filename="../app/cli_export.cpp" line="192"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="192"/>
+        <location filename="../app/cli_export.cpp" line="196"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="202"/>
+        <location filename="../app/cli_export.cpp" line="207"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="204"/>
+        <location filename="../app/cli_export.cpp" line="209"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="300"/>
+        <location filename="../app/cli_export.cpp" line="305"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="311"/>
+        <location filename="../app/cli_export.cpp" line="317"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="318"/>
+        <location filename="../app/cli_export.cpp" line="324"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="320"/>
+        <location filename="../app/cli_export.cpp" line="326"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -673,57 +678,57 @@
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="45"/>
+        <location filename="../model/src/export/export_plan.cpp" line="46"/>
         <source>The frame range %1-%2 is not within the animation&apos;s frames 1-%3; choose a range inside it.</source>
         <translation>La plage d&apos;images %1-%2 n&apos;est pas comprise dans les images 1-%3 de l&apos;animation&#xa0;; choisissez une plage à l&apos;intérieur.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="80"/>
+        <location filename="../model/src/export/export_plan.cpp" line="81"/>
         <source>The animation has no frames to export.</source>
         <translation>L&apos;animation n&apos;a aucune image à exporter.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="82"/>
+        <location filename="../model/src/export/export_plan.cpp" line="83"/>
         <source>The canvas has no size; set one in Document Settings.</source>
         <translation>Le canevas n&apos;a pas de taille&#xa0;; définissez-en une dans Paramètres du document.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="90"/>
+        <location filename="../model/src/export/export_plan.cpp" line="91"/>
         <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
         <translation>Un modèle 3D contient une seule image, pas les images %1 à %2 ; choisissez une seule image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="110"/>
+        <location filename="../model/src/export/export_plan.cpp" line="111"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>L&apos;échelle %1 ne donne pas une taille d&apos;image possible&#xa0;; choisissez une échelle qui donne de 1 à %2 pixels de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="114"/>
+        <location filename="../model/src/export/export_plan.cpp" line="115"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>L&apos;échelle %1 donnerait une image de %2 x %3 pixels&#xa0;; choisissez une échelle qui donne de 1 à %4 pixels de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="127"/>
+        <location filename="../model/src/export/export_plan.cpp" line="128"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>La fréquence d&apos;images %1 n&apos;est pas possible&#xa0;; choisissez de %2 à %3 images par seconde.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="135"/>
+        <location filename="../model/src/export/export_plan.cpp" line="136"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>Une vidéo %1 ne peut pas être transparente&#xa0;; choisissez WebM, APNG, GIF ou PNG pour un arrière-plan transparent.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="159"/>
+        <location filename="../model/src/export/export_plan.cpp" line="160"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Cet export écrirait %1 images, plus que les %2 autorisées ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="166"/>
+        <location filename="../model/src/export/export_plan.cpp" line="167"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Cet export écrirait %1 fichiers (%2 pas de lecture), plus de %3 sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="174"/>
+        <location filename="../model/src/export/export_plan.cpp" line="175"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Cet export produirait %1 heures d’animation (%2 images), plus de %3 heures sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
@@ -1019,27 +1024,27 @@
         <translation>%1 se termine par %2 octets inattendus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="32"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="33"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Le fichier est incomplet (copie ou enregistrement interrompu&#xa0;?)&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="38"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="39"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Le fichier est endommagé&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="44"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 Le fichier est endommagé&#xa0;; Finbook peut en ouvrir ce qui reste lisible, ou vous pouvez ouvrir la sauvegarde du même nom terminée par ~, s&apos;il en existe une.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="49"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="72"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
@@ -1069,43 +1074,43 @@
         <translation>le dossier «&#xa0;%1&#xa0;» n&apos;existe pas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="77"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="78"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="88"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: %2. Vérifiez que le fichier existe et que vous avez le droit de le lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="129"/>
         <source>it is a folder</source>
         <translation>c&apos;est un dossier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="162"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>Impossible de lire «&#xa0;%1&#xa0;»&#xa0;: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="142"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="172"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="143"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="173"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;». %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="133"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: c&apos;est un périphérique, un tube ou un socket, pas un fichier. Choisissez un fichier .finbook.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="152"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante pour ses %2&#xa0;Mo. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
@@ -1227,7 +1232,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
@@ -1242,105 +1247,105 @@
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="184"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="186"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1626,22 +1631,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="355"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -1763,12 +1768,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="154"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="155"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>L&apos;enregistrement automatique n&apos;a pas pu écrire de copie de récupération&#xa0;: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="38"/>
         <source>there is not enough memory</source>
         <translation>la mémoire est insuffisante</translation>
     </message>
@@ -1796,6 +1801,47 @@
         <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>les identifiants de traits d&apos;un remplissage ne sont pas dans l&apos;ordre</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="32"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="34"/>
+        <source>the reference layer</source>
+        <translation>le calque de référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="36"/>
+        <source>the section is repeated</source>
+        <translation>la section est répétée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="41"/>
+        <source>the reference is of an unknown kind (%1)</source>
+        <translation>la référence est d’un type inconnu (%1)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="45"/>
+        <source>the reference has unknown flags</source>
+        <translation>la référence a des indicateurs inconnus</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="60"/>
+        <source>the reference&apos;s place, scale, rotation, opacity or rate is not a number or out of range</source>
+        <translation>la position, l’échelle, la rotation, l’opacité ou la cadence de la référence n’est pas un nombre ou est hors limites</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="64"/>
+        <source>the reference&apos;s name is too long</source>
+        <translation>le nom de la référence est trop long</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="70"/>
+        <source>the reference claims %1 bytes but only %2 remain</source>
+        <translation>la référence annonce %1 octets mais il n’en reste que %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="83"/>
+        <source>the reference layer is left out: %1</source>
+        <translation>le calque de référence est laissé de côté : %1</translation>
     </message>
 </context>
 <context>
@@ -1836,6 +1882,122 @@
     </message>
 </context>
 <context>
+    <name>Reference</name>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="16"/>
+        <source>Import Reference</source>
+        <translation>Importer une référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="18"/>
+        <source>Reference Opacity</source>
+        <translation>Opacité de la référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="20"/>
+        <source>Show or Hide Reference</source>
+        <translation>Afficher ou masquer la référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="22"/>
+        <source>Lock or Unlock Reference</source>
+        <translation>Verrouiller ou déverrouiller la référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="24"/>
+        <source>Move Reference</source>
+        <translation>Déplacer la référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="26"/>
+        <source>Scale Reference</source>
+        <translation>Mettre la référence à l’échelle</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="28"/>
+        <source>Rotate Reference</source>
+        <translation>Faire pivoter la référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="30"/>
+        <source>Reference Frame Rate</source>
+        <translation>Cadence de la référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="91"/>
+        <source>Remove Reference</source>
+        <translation>Retirer la référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="33"/>
+        <source>“%1” cannot be used as a reference: %2</source>
+        <translation>« %1 » ne peut pas servir de référence : %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="38"/>
+        <source>It cannot be read (is it there, and may Finbook read it?).</source>
+        <translation>Il ne peut pas être lu (existe-t-il, et Finbook a-t-il le droit de le lire ?).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="41"/>
+        <source>It is larger than %1 MB.</source>
+        <translation>Il dépasse %1 Mo.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="45"/>
+        <source>It is empty.</source>
+        <translation>Il est vide.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_media.cpp" line="72"/>
+        <source>The file is empty.</source>
+        <translation>Le fichier est vide.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_media.cpp" line="84"/>
+        <source>Its picture cannot be decoded.</source>
+        <translation>Son image ne peut pas être décodée.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="178"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="183"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="187"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="211"/>
+        <source>There is not enough memory to read it.</source>
+        <translation>Il n’y a pas assez de mémoire pour la lire.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="191"/>
+        <source>It is not a picture or a video Finbook can read, or it is damaged.</source>
+        <translation>Ce n’est pas une image ou une vidéo que Finbook sait lire, ou elle est endommagée.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="194"/>
+        <source>It is damaged: its streams cannot be read.</source>
+        <translation>Elle est endommagée : ses flux ne peuvent pas être lus.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="198"/>
+        <source>It holds no picture Finbook can decode.</source>
+        <translation>Elle ne contient aucune image que Finbook sait décoder.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="203"/>
+        <source>Its pictures are empty or larger than 16384 pixels a side.</source>
+        <translation>Ses images sont vides ou font plus de 16384 pixels de côté.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="214"/>
+        <source>Its pictures cannot be decoded.</source>
+        <translation>Ses images ne peuvent pas être décodées.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
+        <source>Its first picture cannot be decoded.</source>
+        <translation>Sa première image ne peut pas être décodée.</translation>
+    </message>
+</context>
+<context>
     <name>RigPrompt</name>
     <message>
         <location filename="../ui/src/rig/rig_prompt.cpp" line="18"/>
@@ -1851,47 +2013,48 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="86"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="119"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="89"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="92"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="114"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="147"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="153"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="186"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="174"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="207"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="222"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="271"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="298"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="347"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="305"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="357"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="358"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -2390,59 +2553,59 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="298"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="307"/>
         <source>Export Animation</source>
         <translation>Exporter l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="286"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
         <source>untitled</source>
         <translation>sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
         <source>Animated GIF</source>
         <translation>GIF animé</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>MP4 video (H.264)</source>
         <translation>Vidéo MP4 (H.264)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>WebM video (VP9)</source>
         <translation>Vidéo WebM (VP9)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>Animated PNG (APNG)</source>
         <translation>PNG animé (APNG)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>HTML flipbook (one file)</source>
         <translation>Folioscope HTML (un seul fichier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>PNG images (a folder)</source>
         <translation>Images PNG (un dossier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
         <source>SVG vector images (a folder)</source>
         <translation>Images vectorielles SVG (un dossier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>Modèle 3D (OBJ), l&apos;image courante</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
         <source>3D model (glTF binary), the current frame</source>
         <translation>Finbook, un éditeur d&apos;animation en folioscope.
 
@@ -2456,132 +2619,142 @@
   finbook thumbnail FILE OUT.png SIZE   écrire la première image en PNG d&apos;au plus SIZE px</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
         <source>&amp;Browse...</source>
         <translation>Parc&amp;ourir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>Play range</source>
         <translation>Plage de lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>All frames</source>
         <translation>Toutes les images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
         <source>Frames</source>
         <translation>Images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Document background</source>
         <translation>Arrière-plan du document</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
         <source>Colour</source>
         <translation>Couleur</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source> fps</source>
         <translation> i/s</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source>Start again after the last frame</source>
         <translation>Recommencer après la dernière image</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Un fichier par dessin, avec une feuille d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="135"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
+        <source>Include refere&amp;nce</source>
+        <translation>Inclure la référe&amp;nce</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="120"/>
+        <source>Paint the reference picture or video under the drawing (not in SVG or 3D)</source>
+        <translation>Peindre l’image ou la vidéo de référence sous le dessin (pas en SVG ni en 3D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="139"/>
         <source>to</source>
         <translation>à</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>&amp;Save to:</source>
         <translation>Enregistrer &amp;dans&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>F&amp;rames:</source>
         <translation>&amp;Images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
         <source>Sc&amp;ale:</source>
         <translation>É&amp;chelle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
         <source>&amp;Background:</source>
         <translation>Arrière-&amp;plan&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>Frame ra&amp;te:</source>
         <translation>Fré&amp;quence d&apos;images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>Loop:</source>
         <translation>Boucle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="165"/>
         <source>&amp;Export</source>
         <translation>&amp;Exporter</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="166"/>
         <source>Cancel Export</source>
         <translation>Annuler l&apos;export</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="239"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 x %2 pixels</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="242"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="250"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, avec un fichier .mtl à côté. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="255"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, le tout dans un seul fichier. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Ce format nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le d&apos;abord (sous Debian&#xa0;: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="304"/>
         <source>Export to Folder</source>
         <translation>Exporter dans un dossier</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="299"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="308"/>
         <source>%1 files (*.%2)</source>
         <translation>Fichiers %1 (*.%2)</translation>
     </message>
@@ -2852,53 +3025,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window.cpp" line="146"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="168"/>
+        <location filename="../ui/src/window/main_window.cpp" line="170"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window.cpp" line="171"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window.cpp" line="174"/>
+        <source>Reference</source>
+        <translation>Référence</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="182"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="183"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="219"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window.cpp" line="230"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window.cpp" line="231"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="226"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window.cpp" line="237"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -2918,33 +3096,33 @@
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="26"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="27"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Animations Finbook (*.finbook);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="38"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="72"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="73"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="91"/>
         <source>Cannot Open File</source>
         <translation>Impossible d&apos;ouvrir le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="127"/>
         <source>Cannot Save File</source>
         <translation>Impossible d&apos;enregistrer le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="133"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="96"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="99"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problème réparé)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
@@ -2952,273 +3130,288 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="183"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="189"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="192"/>
         <source>No recent files</source>
         <translation>Aucun fichier récent</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="202"/>
         <source>Cannot Import Mesh</source>
         <translation>Impossible d&apos;importer le maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="206"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="228"/>
         <source>Damaged File</source>
         <translation>Fichier endommagé</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="232"/>
         <source>Open Anyway</source>
         <translation>Ouvrir quand même</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="242"/>
         <source>Unsaved Changes</source>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="243"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="249"/>
         <source>Open Animation</source>
         <translation>Ouvrir une animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="255"/>
         <source>Save Animation</source>
         <translation>Enregistrer l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="256"/>
         <source>untitled.finbook</source>
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="45"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="46"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="59"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="60"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="61"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="96"/>
+        <source>Import Re&amp;ference...</source>
+        <translation>Importer une ré&amp;férence...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
+        <source>Import Reference</source>
+        <translation>Importer une référence</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
+        <source>Cannot Import Reference</source>
+        <translation>Impossible d’importer la référence</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="121"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="149"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="153"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="168"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="182"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="196"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="211"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="264"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="287"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="311"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="300"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="312"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
@@ -3298,12 +3491,12 @@
         <translation>Mélange &amp;linéaire</translation>
     </message>
     <message>
-        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="62"/>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="63"/>
         <source>Cannot Recover</source>
         <translation>Impossible de récupérer le travail</translation>
     </message>
     <message>
-        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="71"/>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="73"/>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
         <translation>%1 récupéré tel qu&apos;il était le %2&#xa0;; enregistrez-le pour le conserver.</translation>
     </message>
@@ -3666,6 +3859,100 @@
             <numerusform>%1 — %2 — %n image</numerusform>
             <numerusform>%1 — %2 — %n images</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ReferencePanel</name>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="36"/>
+        <source>&amp;Visible</source>
+        <translation>&amp;Visible</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="37"/>
+        <source>Loc&amp;ked</source>
+        <translation>&amp;Verrouillée</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="40"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="41"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="42"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="43"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="44"/>
+        <source> fps</source>
+        <translation> i/s</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="45"/>
+        <source>Document rate</source>
+        <translation>Cadence du document</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="46"/>
+        <source>Video frames shown per second of animation</source>
+        <translation>Images vidéo montrées par seconde d’animation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="47"/>
+        <source>&amp;Remove Reference</source>
+        <translation>&amp;Retirer la référence</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="53"/>
+        <source>Opacity:</source>
+        <translation>Opacité :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="54"/>
+        <source>Centre X:</source>
+        <translation>Centre X :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="55"/>
+        <source>Centre Y:</source>
+        <translation>Centre Y :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
+        <source>Scale:</source>
+        <translation>Échelle :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
+        <source>Rotation:</source>
+        <translation>Rotation :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
+        <source>Video rate:</source>
+        <translation>Cadence vidéo :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="86"/>
+        <source>No reference. File → Import Reference… puts a picture or a video under the drawing.</source>
+        <translation>Aucune référence. Fichier → Importer une référence… place une image ou une vidéo sous le dessin.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="148"/>
+        <source>The reference could not be placed on the canvas.</source>
+        <translation>La référence n’a pas pu être placée sur la toile.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="155"/>
+        <source>Pictures and videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;All files (*)</source>
+        <translation>Images et vidéos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;Tous les fichiers (*)</translation>
     </message>
 </context>
 <context>

@@ -358,112 +358,117 @@
         <translation>export png/svg: 絵ごとに 1 ファイルとタイムシートを書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="54"/>
+        <location filename="../app/cli_export.cpp" line="55"/>
+        <source>export: paint the document&apos;s reference picture or video under the drawing.</source>
+        <translation>export: 文書の参照画像または参照動画を絵の下に描きます。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="58"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="55"/>
+        <location filename="../app/cli_export.cpp" line="59"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="57"/>
+        <location filename="../app/cli_export.cpp" line="61"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="88"/>
+        <location filename="../app/cli_export.cpp" line="92"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="102"/>
+        <location filename="../app/cli_export.cpp" line="106"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame と --range は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="105"/>
+        <location filename="../app/cli_export.cpp" line="109"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame には 1 以上のフレーム番号を指定してください (「%1」ではなく)。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="112"/>
+        <location filename="../app/cli_export.cpp" line="116"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="118"/>
+        <location filename="../app/cli_export.cpp" line="122"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="126"/>
+        <location filename="../app/cli_export.cpp" line="130"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="132"/>
+        <location filename="../app/cli_export.cpp" line="136"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="144"/>
+        <location filename="../app/cli_export.cpp" line="148"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj、glb のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="160"/>
+        <location filename="../app/cli_export.cpp" line="164"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="167"/>
+        <location filename="../app/cli_export.cpp" line="171"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj、.glb にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="176"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="188"/>
+        <location filename="../app/cli_export.cpp" line="192"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="192"/>
+        <location filename="../app/cli_export.cpp" line="196"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="202"/>
+        <location filename="../app/cli_export.cpp" line="207"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="204"/>
+        <location filename="../app/cli_export.cpp" line="209"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="300"/>
+        <location filename="../app/cli_export.cpp" line="305"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="311"/>
+        <location filename="../app/cli_export.cpp" line="317"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="318"/>
+        <location filename="../app/cli_export.cpp" line="324"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="320"/>
+        <location filename="../app/cli_export.cpp" line="326"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -672,57 +677,57 @@
         <translation>一時停止</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="45"/>
+        <location filename="../model/src/export/export_plan.cpp" line="46"/>
         <source>The frame range %1-%2 is not within the animation&apos;s frames 1-%3; choose a range inside it.</source>
         <translation>フレーム範囲 %1～%2 がアニメーションのフレーム 1～%3 に収まっていません。その範囲内で選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="80"/>
+        <location filename="../model/src/export/export_plan.cpp" line="81"/>
         <source>The animation has no frames to export.</source>
         <translation>アニメーションに書き出すフレームがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="82"/>
+        <location filename="../model/src/export/export_plan.cpp" line="83"/>
         <source>The canvas has no size; set one in Document Settings.</source>
         <translation>キャンバスのサイズがありません。ドキュメント設定で設定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="90"/>
+        <location filename="../model/src/export/export_plan.cpp" line="91"/>
         <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
         <translation>3D モデルに入るのは 1 フレームだけで、フレーム %1-%2 は入りません。フレームを 1 つ選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="110"/>
+        <location filename="../model/src/export/export_plan.cpp" line="111"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>倍率 %1 は画像のサイズとして使えません。一辺が 1～%2 ピクセルになる倍率を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="114"/>
+        <location filename="../model/src/export/export_plan.cpp" line="115"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>倍率 %1 では %2×%3 ピクセルの画像になります。一辺が 1～%4 ピクセルになる倍率を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="127"/>
+        <location filename="../model/src/export/export_plan.cpp" line="128"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>フレームレート %1 は使用できません。毎秒 %2～%3 フレームの範囲で選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="135"/>
+        <location filename="../model/src/export/export_plan.cpp" line="136"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>%1 動画は透明にできません。背景を透明にするには WebM、APNG、GIF、PNG のいずれかを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="159"/>
+        <location filename="../model/src/export/export_plan.cpp" line="160"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>この書き出しは %1 フレームを書き込みます。許可された %2 を超えるため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="166"/>
+        <location filename="../model/src/export/export_plan.cpp" line="167"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 個のファイル（再生ティック %2）を書き込みます。明示的な許可なしに %3 を超えることはできないため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="174"/>
+        <location filename="../model/src/export/export_plan.cpp" line="175"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 時間のアニメーション（%2 フレーム）になります。明示的な許可なしに %3 時間を超えることはできないため、何も書き出していません。</translation>
     </message>
@@ -1016,27 +1021,27 @@
         <translation>%1 の末尾に予期しない %2 バイトがあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="32"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="33"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが不完全です（コピーや保存が中断された可能性があります）。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="38"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="39"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが破損しています。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="44"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 ファイルが破損しています。Finbook でまだ読み取れる部分を開くか、同じ名前で末尾に ~ が付いたバックアップがあれば、そちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="49"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="72"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
@@ -1066,43 +1071,43 @@
         <translation>フォルダー「%1」が存在しません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="77"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="78"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="88"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>「%1」を開けません: %2。ファイルが存在し、読み取る権限があることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="129"/>
         <source>it is a folder</source>
         <translation>フォルダーです</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="162"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>「%1」を読み込めません: %2。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="142"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="172"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="143"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="173"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>「%1」を開けません。%2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="133"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>「%1」を開けません: ファイルではなく、デバイス、パイプ、またはソケットです。.finbook ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="152"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
@@ -1224,7 +1229,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
@@ -1239,105 +1244,105 @@
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="184"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="186"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1621,22 +1626,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="355"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -1756,12 +1761,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="154"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="155"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>自動保存で復元用のコピーを書き込めませんでした: %1。</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="38"/>
         <source>there is not enough memory</source>
         <translation>メモリが足りません</translation>
     </message>
@@ -1789,6 +1794,47 @@
         <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>塗りのストロークIDが順に並んでいません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="32"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="34"/>
+        <source>the reference layer</source>
+        <translation>参照レイヤー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="36"/>
+        <source>the section is repeated</source>
+        <translation>セクションが重複しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="41"/>
+        <source>the reference is of an unknown kind (%1)</source>
+        <translation>参照の種類が不明です (%1)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="45"/>
+        <source>the reference has unknown flags</source>
+        <translation>参照に不明なフラグがあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="60"/>
+        <source>the reference&apos;s place, scale, rotation, opacity or rate is not a number or out of range</source>
+        <translation>参照の位置・拡大率・回転・不透明度・レートが数値でないか範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="64"/>
+        <source>the reference&apos;s name is too long</source>
+        <translation>参照の名前が長すぎます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="70"/>
+        <source>the reference claims %1 bytes but only %2 remain</source>
+        <translation>参照は %1 バイトと記していますが、残りは %2 バイトしかありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="83"/>
+        <source>the reference layer is left out: %1</source>
+        <translation>参照レイヤーは除外されます: %1</translation>
     </message>
 </context>
 <context>
@@ -1828,6 +1874,122 @@
     </message>
 </context>
 <context>
+    <name>Reference</name>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="16"/>
+        <source>Import Reference</source>
+        <translation>参照を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="18"/>
+        <source>Reference Opacity</source>
+        <translation>参照の不透明度</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="20"/>
+        <source>Show or Hide Reference</source>
+        <translation>参照の表示/非表示</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="22"/>
+        <source>Lock or Unlock Reference</source>
+        <translation>参照のロック/ロック解除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="24"/>
+        <source>Move Reference</source>
+        <translation>参照を移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="26"/>
+        <source>Scale Reference</source>
+        <translation>参照を拡大縮小</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="28"/>
+        <source>Rotate Reference</source>
+        <translation>参照を回転</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="30"/>
+        <source>Reference Frame Rate</source>
+        <translation>参照のフレームレート</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_commands.cpp" line="91"/>
+        <source>Remove Reference</source>
+        <translation>参照を削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="33"/>
+        <source>“%1” cannot be used as a reference: %2</source>
+        <translation>「%1」は参照として使えません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="38"/>
+        <source>It cannot be read (is it there, and may Finbook read it?).</source>
+        <translation>読み込めません (ファイルは存在し、Finbook に読み取り権限がありますか?)。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="41"/>
+        <source>It is larger than %1 MB.</source>
+        <translation>%1 MB を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_import.cpp" line="45"/>
+        <source>It is empty.</source>
+        <translation>空です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_media.cpp" line="72"/>
+        <source>The file is empty.</source>
+        <translation>ファイルが空です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_media.cpp" line="84"/>
+        <source>Its picture cannot be decoded.</source>
+        <translation>画像をデコードできません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="178"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="183"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="187"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="211"/>
+        <source>There is not enough memory to read it.</source>
+        <translation>読み込むためのメモリが足りません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="191"/>
+        <source>It is not a picture or a video Finbook can read, or it is damaged.</source>
+        <translation>Finbook が読める画像や動画ではないか、壊れています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="194"/>
+        <source>It is damaged: its streams cannot be read.</source>
+        <translation>壊れています: ストリームを読み込めません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="198"/>
+        <source>It holds no picture Finbook can decode.</source>
+        <translation>Finbook がデコードできる画像が含まれていません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="203"/>
+        <source>Its pictures are empty or larger than 16384 pixels a side.</source>
+        <translation>画像が空か、一辺が 16384 ピクセルを超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="214"/>
+        <source>Its pictures cannot be decoded.</source>
+        <translation>画像をデコードできません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
+        <source>Its first picture cannot be decoded.</source>
+        <translation>最初の画像をデコードできません。</translation>
+    </message>
+</context>
+<context>
     <name>RigPrompt</name>
     <message>
         <location filename="../ui/src/rig/rig_prompt.cpp" line="18"/>
@@ -1843,47 +2005,48 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="86"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="119"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="89"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="92"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="114"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="147"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="153"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="186"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="174"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="207"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="222"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="271"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="298"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="347"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="305"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="357"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="358"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -2380,59 +2543,59 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="298"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="307"/>
         <source>Export Animation</source>
         <translation>アニメーションの書き出し</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="286"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
         <source>Animated GIF</source>
         <translation>アニメーション GIF</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>MP4 video (H.264)</source>
         <translation>MP4 動画（H.264）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>WebM video (VP9)</source>
         <translation>WebM 動画（VP9）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>Animated PNG (APNG)</source>
         <translation>アニメーション PNG（APNG）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>HTML flipbook (one file)</source>
         <translation>HTML パラパラ漫画（1 ファイル）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>PNG images (a folder)</source>
         <translation>PNG 画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
         <source>SVG vector images (a folder)</source>
         <translation>SVG ベクター画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>3D モデル (OBJ)、現在のフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
         <source>3D model (glTF binary), the current frame</source>
         <translation>Finbook: パラパラ漫画のアニメーションエディター。
 
@@ -2446,132 +2609,142 @@
   finbook thumbnail FILE OUT.png SIZE   最初のフレームを最大 SIZE px の PNG に書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
         <source>&amp;Browse...</source>
         <translation>参照(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>Play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>All frames</source>
         <translation>すべてのフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
         <source>Frames</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Document background</source>
         <translation>ドキュメントの背景</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Transparent</source>
         <translation>透明</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
         <source>Colour</source>
         <translation>色</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source>Start again after the last frame</source>
         <translation>最後のフレームの後、最初から再生する</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>絵ごとに 1 ファイル（タイムシート付き）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="135"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
+        <source>Include refere&amp;nce</source>
+        <translation>参照を含める(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="120"/>
+        <source>Paint the reference picture or video under the drawing (not in SVG or 3D)</source>
+        <translation>参照画像または参照動画を絵の下に描きます (SVG と 3D を除く)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="139"/>
         <source>to</source>
         <translation>～</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>&amp;Save to:</source>
         <translation>保存先(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>F&amp;rames:</source>
         <translation>フレーム(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
         <source>Sc&amp;ale:</source>
         <translation>倍率(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
         <source>&amp;Background:</source>
         <translation>背景(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>Frame ra&amp;te:</source>
         <translation>フレームレート(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>Loop:</source>
         <translation>ループ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="165"/>
         <source>&amp;Export</source>
         <translation>書き出し(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="166"/>
         <source>Cancel Export</source>
         <translation>書き出しをキャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="239"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
         <source>%1 x %2 pixels</source>
         <translation>%1×%2 ピクセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="242"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="250"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、隣に .mtl ファイルを置きます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="255"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、1 つのファイルにまとめます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>この形式には ffmpeg プログラムが必要ですが、見つかりませんでした。先にインストールしてください（Debian の場合: apt install ffmpeg）。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="304"/>
         <source>Export to Folder</source>
         <translation>フォルダーに書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="299"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="308"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>
@@ -2840,53 +3013,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window.cpp" line="146"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="168"/>
+        <location filename="../ui/src/window/main_window.cpp" line="170"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window.cpp" line="171"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window.cpp" line="174"/>
+        <source>Reference</source>
+        <translation>参照</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="182"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="183"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="219"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window.cpp" line="230"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window.cpp" line="231"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="226"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window.cpp" line="237"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -2906,306 +3084,321 @@
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="26"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="27"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook アニメーション (*.finbook);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="37"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="38"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="72"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="73"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="91"/>
         <source>Cannot Open File</source>
         <translation>ファイルを開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="124"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="127"/>
         <source>Cannot Save File</source>
         <translation>ファイルを保存できません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="133"/>
         <source>Saved %1</source>
         <translation>%1 を保存しました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="96"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="99"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>%1 の読み取れた部分を開きました（%n 件の問題を修復）。新しい名前で保存してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="183"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="189"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="192"/>
         <source>No recent files</source>
         <translation>最近使ったファイルはありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="202"/>
         <source>Cannot Import Mesh</source>
         <translation>メッシュをインポートできません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="206"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="228"/>
         <source>Damaged File</source>
         <translation>破損したファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>「このまま開く」を選ぶと、まだ読み取れる部分を未保存の新しいアニメーションとして表示します。破損したファイルは変更されません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="232"/>
         <source>Open Anyway</source>
         <translation>このまま開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="242"/>
         <source>Unsaved Changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="243"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>「%1」には保存されていない変更があります。続ける前に保存しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="249"/>
         <source>Open Animation</source>
         <translation>アニメーションを開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="255"/>
         <source>Save Animation</source>
         <translation>アニメーションを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="256"/>
         <source>untitled.finbook</source>
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="45"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="46"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="59"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="60"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="61"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="96"/>
+        <source>Import Re&amp;ference...</source>
+        <translation>参照を読み込む(&amp;F)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
+        <source>Import Reference</source>
+        <translation>参照を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
+        <source>Cannot Import Reference</source>
+        <translation>参照を読み込めません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="121"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="149"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="153"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="168"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="182"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="196"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="211"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="264"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="287"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="311"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="300"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="312"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
@@ -3285,12 +3478,12 @@
         <translation>線形ブレンド(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="62"/>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="63"/>
         <source>Cannot Recover</source>
         <translation>復元できません</translation>
     </message>
     <message>
-        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="71"/>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="73"/>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
         <translation>%1 を %2 時点の状態に復元しました。残しておくには保存してください。</translation>
     </message>
@@ -3652,6 +3845,100 @@
         <translation>
             <numerusform>%1 — %2 — %n フレーム</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ReferencePanel</name>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="36"/>
+        <source>&amp;Visible</source>
+        <translation>表示(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="37"/>
+        <source>Loc&amp;ked</source>
+        <translation>ロック(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="40"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="41"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="42"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="43"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="44"/>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="45"/>
+        <source>Document rate</source>
+        <translation>文書のレート</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="46"/>
+        <source>Video frames shown per second of animation</source>
+        <translation>アニメーション 1 秒あたりに表示する動画のフレーム数</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="47"/>
+        <source>&amp;Remove Reference</source>
+        <translation>参照を削除(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="53"/>
+        <source>Opacity:</source>
+        <translation>不透明度:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="54"/>
+        <source>Centre X:</source>
+        <translation>中心 X:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="55"/>
+        <source>Centre Y:</source>
+        <translation>中心 Y:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
+        <source>Scale:</source>
+        <translation>拡大率:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
+        <source>Rotation:</source>
+        <translation>回転:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
+        <source>Video rate:</source>
+        <translation>動画のレート:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="86"/>
+        <source>No reference. File → Import Reference… puts a picture or a video under the drawing.</source>
+        <translation>参照はありません。ファイル → 参照を読み込む… で画像や動画を絵の下に置けます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="148"/>
+        <source>The reference could not be placed on the canvas.</source>
+        <translation>参照をキャンバスに配置できませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="155"/>
+        <source>Pictures and videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;All files (*)</source>
+        <translation>画像と動画 (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;すべてのファイル (*)</translation>
     </message>
 </context>
 <context>

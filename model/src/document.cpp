@@ -1,4 +1,5 @@
 #include <finbook/model/document.h>
+#include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/skeleton/skeleton_join.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@ namespace finbook::model {
 
 Document::Document(QObject *parent)
     : QObject(parent)
+    , m_reference(new ReferenceLayer(this))
 {}
 
 Document::~Document()
@@ -96,6 +98,7 @@ void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings
         resolveJoins(f);
     m_settings = settings;
     m_nextId = std::max<Id>(nextId, 1);
+    m_reference->setReference({});
     emit documentReset();
 }
 

@@ -33,6 +33,13 @@
 //
 // An object carries at most one rig chunk (PINS, CAGE or SKEL).
 //
+//   "refr"  := u8 kind u8 flags f64 mediaWidth f64 mediaHeight f64 centerX f64 centerY
+//              f64 scale f64 rotation f64 opacity f64 rate u32 nameBytes utf8[nameBytes]
+//              u64 mediaBytes byte[mediaBytes]   (reference/reference.h; flags as an object's)
+//              The reference layer: the imported file's original bytes, once. Ancillary, at
+//              most once, between FRAM and FEND: a Finbook that does not know it opens the
+//              drawing without its reference.
+//
 // Everything is little-endian. Sections come in the order above, each exactly once; ancillary
 // sections may come between FRAM and FEND. Records and chunks are length-prefixed so later
 // formats can add state as new chunks: an object chunk is one row in the reader's and the
@@ -79,6 +86,7 @@ constexpr quint32 kTagCage = tag("CAGE");
 constexpr quint32 kTagSkeleton = tag("SKEL");
 constexpr quint32 kTagJoin = tag("JOIN");
 constexpr quint32 kTagFills = tag("FILL");
+constexpr quint32 kTagReference = tag("refr");
 
 inline bool isAncillary(quint32 t)
 {
@@ -103,6 +111,7 @@ constexpr std::size_t kSkeletonTailBytes = 4 + 6 * 8 + 1;
 constexpr std::size_t kFrameFixedBytes = 8 + 4 + 4;
 constexpr std::size_t kObjectFixedBytes = 8 + 1 + 8 + 4 + 4;
 constexpr std::size_t kMaxNameBytes = 4096;
+constexpr std::size_t kReferenceFixedBytes = 1 + 1 + 8 * 8 + 4 + 8;
 
 constexpr quint8 kFlagVisible = 0x01;
 constexpr quint8 kFlagLocked = 0x02;

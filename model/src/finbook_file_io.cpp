@@ -6,6 +6,7 @@
 #include "finbook_file_cursor.h"
 
 #include <finbook/model/io/atomic_file.h>
+#include <finbook/model/reference/reference_layer.h>
 
 #include <QFile>
 #include <QFileInfo>
@@ -203,6 +204,7 @@ std::optional<FileError> openFinbook(Document &document, const QString &path)
     if (!loaded)
         return loaded.error();
     document.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    document.referenceLayer().setReference(std::move(loaded->reference));
     return std::nullopt;
 }
 

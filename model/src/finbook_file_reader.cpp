@@ -175,6 +175,10 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
         }
         return false;
     }
+    if (t == kTagReference && next == std::size(kOrder)) {
+        readReferenceSection(body);
+        return !cut;
+    }
     if (known == std::end(kOrder)) {
         if (recovering() && !isAncillary(t))
             problem(c, FileErrorCode::BadValue, FinbookFile::tr("an unknown section is left out"));

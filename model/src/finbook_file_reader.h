@@ -93,6 +93,7 @@ private:
     void readJoinChunk(Cursor &c, StrokeGroup &g);
     void readPoseChunk(Cursor &c, StrokeGroup &g);
     void readFillsChunk(Cursor &c, StrokeGroup &g); // fill/fill_chunk.cpp
+    void readReferenceSection(Cursor &c);           // reference/reference_section.cpp
     std::vector<Pin> readPins(Cursor &c);
     CageRig readCage(Cursor &c);
     SkeletonRig readSkeleton(Cursor &c); // skeleton/skeleton_chunk.cpp

@@ -3,6 +3,9 @@
 // Speed matters here (10M points in well under a second): the output is sized up front and
 // filled through a raw pointer, points stroke by stroke in one tight loop.
 #include "finbook_file_byte_writer.h"
+#include "reference/reference_section.h"
+
+#include <finbook/model/reference/reference_layer.h>
 
 #include <algorithm>
 #include <unordered_map>
@@ -259,7 +262,10 @@ template <class WriteBody> void writeSection(ByteWriter &w, quint32 sectionTag, 
 
 QByteArray serializeFinbook(const Document &document)
 {
-    return serializeFinbook(document.frames(), document.settings());
+    std::vector<AncillarySection> extra;
+    if (!document.referenceLayer().isEmpty())
+        extra.push_back(referenceSection(document.referenceLayer().reference()));
+    return serializeFinbook(document.frames(), document.settings(), extra);
 }
 
 QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSettings &settings,

@@ -237,8 +237,13 @@ void TestLimits::outOfMemoryIsSaidAsSuch()
     doc.reset(std::move(frames), model::DocumentSettings(), 200);
     const QString path =
         writeFile(m_dir, QStringLiteral("hundred.finbook"), model::serializeFinbook(doc));
+    // Below what the program's shared libraries map (FFmpeg's codecs take ~150 MiB of address
+    // space) the loader stops it before main() (exit 127): the sweep starts where it starts.
+    long first = 100;
+    while (first < 1000 && runMeasured({QStringLiteral("--version")}, first).code != 0)
+        first += 25;
     int outOfMemory = 0, opened = 0;
-    for (long cap = 100; cap <= 1000; cap += 25) {
+    for (long cap = first; cap <= 1000; cap += 25) {
         const Measured run = runMeasured({QStringLiteral("info"), path}, cap);
         if (run.code == 0) {
             ++opened;

@@ -6,6 +6,7 @@
 #include "../../model/src/io/crc32c.h"
 
 #include <finbook/model/finbook_file.h>
+#include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/render.h>
 
 #include <QtEndian>
@@ -63,6 +64,7 @@ inline void roundTrip(LoadedDocument &doc, const char *what)
 {
     Document d;
     d.reset(std::move(doc.frames), doc.settings, doc.nextId);
+    d.referenceLayer().setReference(std::move(doc.reference));
     const QByteArray again = serializeFinbook(d);
     auto reread = readFinbook(again);
     if (!reread)
@@ -71,6 +73,7 @@ inline void roundTrip(LoadedDocument &doc, const char *what)
     check(bool(reread), what);
     Document e;
     e.reset(std::move(reread->frames), reread->settings, reread->nextId);
+    e.referenceLayer().setReference(std::move(reread->reference));
     check(serializeFinbook(e) == again, "save -> open -> save is byte-identical");
 }
 

@@ -5,6 +5,7 @@
 #include "tst_file_sample.h"
 
 #include <finbook/model/recovery/recovery_store.h>
+#include <finbook/model/reference/reference_layer.h>
 
 #include <QDir>
 
@@ -73,6 +74,25 @@ void cageAndSkeleton(Document &doc)
     doc.reset(std::move(frames), settings, next + 2000);
 }
 
+// The sample with a reference layer (a "refr" section): a 4×3 PNG, placed, rotated and locked.
+void withReference(Document &doc)
+{
+    buildSample(doc);
+    Reference r;
+    r.kind = ReferenceKind::Image;
+    r.name = QStringLiteral("tiny.png");
+    r.bytes =
+        QByteArray::fromBase64("iVBORw0KGgoAAAANSUhEUgAAAAQAAAADCAIAAAA7ljmRAAAAEklEQVR42mP4zwAE/"
+                               "yEkA04OAOk9C/W9S6VLAAAAAElFTkSuQmCC");
+    r.mediaSize = QSizeF(4, 3);
+    r.center = QPointF(50, 40);
+    r.scale = 10.0;
+    r.rotation = 15.0;
+    r.opacity = 0.25;
+    r.locked = true;
+    doc.referenceLayer().setReference(r);
+}
+
 // Every seed by name.
 std::vector<std::pair<QString, QByteArray>> seeds()
 {
@@ -80,9 +100,12 @@ std::vector<std::pair<QString, QByteArray>> seeds()
     buildSample(sample);
     Document rigs;
     cageAndSkeleton(rigs);
+    Document referenced;
+    withReference(referenced);
     std::vector<std::pair<QString, QByteArray>> all{
         {QStringLiteral("sample.finbook"), serializeFinbook(sample)},
         {QStringLiteral("cage_skeleton.finbook"), serializeFinbook(rigs)},
+        {QStringLiteral("reference.finbook"), serializeFinbook(referenced)},
         {QStringLiteral("recovery_copy.finbook"),
          recoveryCopyBytes(rigs.frames(), rigs.settings(),
                            {QStringLiteral("rigs.finbook"), QStringLiteral("/tmp/rigs.finbook"),
@@ -147,7 +170,7 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
     for (const char *tag : {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE",
-                            "SKEL", "JOIN", "DEFM", "FILL"})
+                            "SKEL", "JOIN", "DEFM", "FILL", "refr"})
         QVERIFY2(tags.count(tag), tag);
 }
 

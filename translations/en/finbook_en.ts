@@ -121,7 +121,7 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../ui/src/window/main_window_files.cpp" line="96"/>
+        <location filename="../../ui/src/window/main_window_files.cpp" line="99"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Opened what was readable of %1 (%n problem repaired); save it under a new name.</numerusform>

@@ -1,6 +1,8 @@
 // Internal: the writer of each kind of output, and what they share.
 #pragma once
 
+#include "../reference/reference_export.h"
+
 #include <finbook/model/export/export_plan.h>
 #include <finbook/model/export/frame_solids.h>
 
@@ -17,6 +19,7 @@ struct ExportContext {
     const ExportOptions &options;
     const ExportPlan &plan;
     const ExportProgress &progress;
+    const ExportReference &reference;
 
     // Reports progress; true when the caller asked to stop.
     bool cancelled(qint64 done, qint64 total) const { return progress && !progress(done, total); }
@@ -26,11 +29,14 @@ struct ExportContext {
     }
     QImage render(std::size_t planIndex) const
     {
-        return renderExportFrame(frame(planIndex), source.settings, plan);
+        return renderBand(planIndex, 0, plan.size.height());
     }
     QImage renderBand(std::size_t planIndex, int top, int rows) const
     {
-        return renderExportBand(frame(planIndex), source.settings, plan, top, rows);
+        if (reference.isEmpty())
+            return renderExportBand(frame(planIndex), source.settings, plan, top, rows);
+        return renderExportBand(frame(planIndex), source.settings, plan, top, rows,
+                                &reference.reference(), reference.picture(plan.frames[planIndex]));
     }
     // The frame as PNG bytes, rendered and compressed band by band: memory stays at one band
     // plus the compressed bytes whatever the picture's size. Empty when out of memory.

@@ -1,5 +1,6 @@
 #include <finbook/model/document.h>
 #include <finbook/model/export/export_options.h>
+#include <finbook/model/reference/reference_layer.h>
 
 #include <QFileInfo>
 
@@ -36,7 +37,8 @@ const FormatInfo &info(ExportFormat format)
 
 ExportSource exportSource(const Document &document)
 {
-    return ExportSource{document.frames(), document.settings()};
+    return ExportSource{document.frames(), document.settings(),
+                        document.referenceLayer().reference()};
 }
 
 std::optional<ExportFormat> exportFormatFromName(const QString &name)

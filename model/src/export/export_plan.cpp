@@ -1,6 +1,7 @@
 #include "export_text.h"
 
 #include <finbook/model/export/export_plan.h>
+#include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/render.h>
 
 #include <QPainter>
@@ -181,13 +182,14 @@ std::optional<ExportError> checkExportSize(const ExportPlan &plan, const ExportO
 }
 
 QImage renderExportFrame(const Frame &frame, const DocumentSettings &settings,
-                         const ExportPlan &plan)
+                         const ExportPlan &plan, const Reference *reference, const QImage &picture)
 {
-    return renderExportBand(frame, settings, plan, 0, plan.size.height());
+    return renderExportBand(frame, settings, plan, 0, plan.size.height(), reference, picture);
 }
 
 QImage renderExportBand(const Frame &frame, const DocumentSettings &settings,
-                        const ExportPlan &plan, int top, int rows)
+                        const ExportPlan &plan, int top, int rows, const Reference *reference,
+                        const QImage &picture)
 {
     QImage image(QSize(plan.size.width(), std::max(0, rows)), QImage::Format_ARGB32_Premultiplied);
     if (image.isNull())
@@ -201,6 +203,12 @@ QImage renderExportBand(const Frame &frame, const DocumentSettings &settings,
         painter.translate((plan.size.width() - canvas.width() * scale) / 2,
                           (plan.size.height() - canvas.height() * scale) / 2 - top);
         painter.scale(scale, scale);
+        if (reference) {
+            painter.save();
+            painter.setClipRect(QRectF(QPointF(0, 0), canvas));
+            paintReference(painter, *reference, picture);
+            painter.restore();
+        }
         RenderOptions options;
         options.paintBackground = false;
         paintFrame(painter, frame, settings, options);

@@ -218,7 +218,8 @@ Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
         return unexpected(plan.error());
     if (auto error = checkExportSize(*plan, options))
         return unexpected(*error);
-    const ExportContext context{source, options, *plan, progress};
+    const ExportReference reference(source, options);
+    const ExportContext context{source, options, *plan, progress, reference};
     if (exportsSequence(options.format))
         return exportSequence(context);
     if (options.format == ExportFormat::Html)

@@ -1,4 +1,6 @@
 // Recovery copies on disk: their bytes, their description, the session locks.
+#include "../reference/reference_section.h"
+
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/recovery/recovery_store.h>
 #include <finbook/model/render.h>
@@ -60,7 +62,7 @@ std::unique_ptr<QLockFile> lockFor(const QString &path)
 } // namespace
 
 QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
-                             const RecoveryInfo &info)
+                             const RecoveryInfo &info, const Reference &reference)
 {
     const QJsonObject description{
         {QStringLiteral("title"), info.title},
@@ -72,6 +74,8 @@ QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSet
     const QByteArray thumbnail = thumbnailPng(frames, settings);
     if (!thumbnail.isEmpty())
         extra.push_back({"thmb", thumbnail});
+    if (!reference.isEmpty())
+        extra.push_back(file_format::referenceSection(reference));
     return serializeFinbook(frames, settings, extra);
 }
 

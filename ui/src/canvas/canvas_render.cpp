@@ -1,6 +1,7 @@
 // CanvasWidget painting: the page, the cached frame and onion-skin layers, overlays.
 #include "stroke_raster.h"
 
+#include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/render.h>
 #include <finbook/ui/canvas/canvas_tool.h>
 #include <finbook/ui/canvas/canvas_widget.h>
@@ -67,6 +68,10 @@ void CanvasWidget::connectDocument()
             fitToView();
     });
     connect(doc, &model::Document::frameChanged, this, &CanvasWidget::frameEdited);
+    connect(&doc->referenceLayer(), &model::ReferenceLayer::referenceChanged, this,
+            qOverload<>(&QWidget::update));
+    connect(&doc->referenceLayer(), &model::ReferenceLayer::pictureReady, this,
+            qOverload<>(&QWidget::update));
     connect(m_state, &EditorState::currentFrameChanged, this, all);
     connect(m_state, &EditorState::onionSkinChanged, this, &CanvasWidget::invalidateOnionLayer);
     connect(m_state, &EditorState::playingChanged, this, qOverload<>(&QWidget::update));
@@ -251,6 +256,18 @@ void CanvasWidget::paintEvent(QPaintEvent *event)
     const QRect dirty = event->rect();
     painter.fillRect(dirty, kDeskColor);
     paintPage(painter);
+    // The reference lies under the onion skin and the drawing, clipped to the page.
+    model::ReferenceLayer &reference = document()->referenceLayer();
+    if (!reference.isEmpty()) {
+        const QImage picture = reference.pictureWithoutWaiting(m_state->currentFrameIndex());
+        if (!picture.isNull()) {
+            painter.save();
+            painter.setClipRect(pageRect() & QRectF(dirty));
+            painter.setTransform(canvasToWidget());
+            model::paintReference(painter, reference.reference(), picture);
+            painter.restore();
+        }
+    }
     const qreal dpr = devicePixelRatioF();
     const QRectF source(QPointF(dirty.topLeft()) * dpr, QSizeF(dirty.size()) * dpr);
     if (m_state->onionSkin().enabled && !m_state->isPlaying() && !m_onionLayer.isNull())

@@ -2,6 +2,7 @@
 #include <finbook/model/document.h>
 #include <finbook/model/export/export_plan.h>
 #include <finbook/model/export/exporter.h>
+#include <finbook/model/reference/reference_layer.h>
 #include <finbook/ui/export/export_dialog.h>
 #include <finbook/ui/export/export_job.h>
 #include <finbook/ui/widgets/color_button.h>
@@ -114,6 +115,9 @@ void ExportDialog::buildForm()
     m_fps->setSuffix(tr(" fps"));
     m_loop = new QCheckBox(tr("Start again after the last frame"), this);
     m_perDrawing = new QCheckBox(tr("One file per drawing, with an exposure sheet"), this);
+    m_includeReference = new QCheckBox(tr("Include refere&nce"), this);
+    m_includeReference->setToolTip(
+        tr("Paint the reference picture or video under the drawing (not in SVG or 3D)"));
     m_progress = new QProgressBar(this);
     m_progress->setRange(0, 1);
     m_progress->setValue(0);
@@ -155,6 +159,7 @@ void ExportDialog::layOut()
     form->addRow(label(tr("Frame ra&te:"), m_fps), m_fps);
     form->addRow(tr("Loop:"), m_loop);
     form->addRow(QString(), m_perDrawing);
+    form->addRow(QString(), m_includeReference);
 
     m_buttons = new QDialogButtonBox(this);
     m_exportButton = m_buttons->addButton(tr("&Export"), QDialogButtonBox::AcceptRole);
@@ -229,6 +234,9 @@ void ExportDialog::updateFields()
     m_colour->setEnabled(flat && m_background->currentData().toInt() == int(Background::Colour));
     m_loop->setEnabled(model::exportSupportsLoop(format));
     m_perDrawing->setEnabled(model::exportsSequence(format));
+    m_includeReference->setEnabled(!m_doc.referenceLayer().isEmpty() &&
+                                   format != ExportFormat::SvgSequence &&
+                                   format != ExportFormat::Obj);
     // The size only depends on the canvas, scale and format: plan it for one blank frame.
     model::ExportSource probe{{}, m_doc.settings()};
     probe.frames.resize(1);
@@ -282,6 +290,7 @@ model::ExportOptions ExportDialog::options() const
     o.fps = m_fps->value();
     o.loop = m_loop->isChecked();
     o.onePerDrawing = m_perDrawing->isChecked() && model::exportsSequence(o.format);
+    o.includeReference = m_includeReference->isEnabled() && m_includeReference->isChecked();
     o.title =
         m_documentPath.isEmpty() ? tr("untitled") : QFileInfo(m_documentPath).completeBaseName();
     return o;

@@ -2,6 +2,7 @@
 #include <finbook/model/document.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/recovery/autosaver.h>
+#include <finbook/model/reference/reference_layer.h>
 #include <finbook/ui/recovery/recovery_dialog.h>
 #include <finbook/ui/window/main_window.h>
 
@@ -63,6 +64,7 @@ bool MainWindow::restoreRecovery(const model::RecoveryCopy &copy)
         return false;
     }
     m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    m_doc->referenceLayer().setReference(std::move(loaded->reference));
     const QString original = copy.info.originalPath;
     setFilePath(QFileInfo::exists(original) ? QFileInfo(original).absoluteFilePath() : QString());
     m_doc->undoStack()->resetClean();

@@ -1,3 +1,4 @@
+#include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/render.h>
 #include <finbook/ui/timeline/thumbnail_cache.h>
 
@@ -30,6 +31,8 @@ ThumbnailCache::ThumbnailCache(model::Document *document, QObject *parent)
         m_pending.clear();
         emit thumbnailsInvalidated();
     });
+    connect(&m_doc->referenceLayer(), &model::ReferenceLayer::referenceChanged, this,
+            &ThumbnailCache::invalidateAll);
     connect(m_doc, &model::Document::settingsChanged, this, [this] {
         const model::DocumentSettings &s = m_doc->settings();
         if (s.canvasSize == m_canvasSize && s.background == m_background &&
@@ -97,7 +100,13 @@ bool ThumbnailCache::renderOne(model::Id frameId)
     if (!frame)
         return false;
     const QSize device = (QSizeF(m_size) * m_dpr).toSize().expandedTo(QSize(1, 1));
-    QImage image = model::renderFrame(*frame, m_doc->settings(), device);
+    const model::ReferenceLayer &reference = m_doc->referenceLayer();
+    const QImage picture =
+        reference.isEmpty() ? QImage() : reference.pictureAt(m_doc->frameIndex(frameId));
+    QImage image = picture.isNull()
+                       ? model::renderFrame(*frame, m_doc->settings(), device)
+                       : model::renderFrameWithReference(*frame, m_doc->settings(), device,
+                                                         reference.reference(), picture);
     image.setDevicePixelRatio(m_dpr);
     m_cache.insert(frameId,
                    new Entry{QPixmap::fromImage(std::move(image)), currentRevision(frameId)});

@@ -2,6 +2,7 @@
 // main_window_menus.cpp, file handling in main_window_files.cpp.
 #include <finbook/model/document.h>
 #include <finbook/model/recovery/autosaver.h>
+#include <finbook/model/reference/reference_layer.h>
 #include <finbook/ui/canvas/canvas_tool.h>
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/i18n/action_text.h>
@@ -9,6 +10,7 @@
 #include <finbook/ui/keys/shortcut_registry.h>
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/panels/objects_panel.h>
+#include <finbook/ui/reference/reference_panel.h>
 #include <finbook/ui/timeline/frame_actions.h>
 #include <finbook/ui/timeline/playback_controller.h>
 #include <finbook/ui/timeline/timeline_widget.h>
@@ -168,6 +170,14 @@ void MainWindow::createDocks()
          tr("Timeline"), Qt::BottomDockWidgetArea);
     dock(new ObjectsPanel(m_state, m_objectActions), QStringLiteral("objectsDock"), tr("Objects"),
          Qt::RightDockWidgetArea);
+    QDockWidget *reference = dock(new ReferencePanel(m_doc), QStringLiteral("referenceDock"),
+                                  tr("Reference"), Qt::RightDockWidgetArea);
+    reference->hide(); // File → Import Reference shows it
+    connect(&m_doc->referenceLayer(), &model::ReferenceLayer::referenceChanged, reference,
+            [this, reference] {
+                if (!m_doc->referenceLayer().isEmpty() && !reference->isVisible())
+                    reference->show();
+            });
     auto *history = new QUndoView(m_doc->undoStack());
     history->setEmptyLabel(tr("<opened document>"));
     dock(history, QStringLiteral("historyDock"), tr("Undo History"), Qt::RightDockWidgetArea);

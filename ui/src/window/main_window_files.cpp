@@ -3,6 +3,7 @@
 #include <finbook/model/document.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/import/mesh_import.h>
+#include <finbook/model/reference/reference_layer.h>
 #include <finbook/ui/dialogs/file_messages.h>
 #include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/window/main_window.h>
@@ -74,6 +75,7 @@ bool MainWindow::openFile(const QString &path)
         return anyway && openRecovering(path);
     }
     m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    m_doc->referenceLayer().setReference(std::move(loaded->reference));
     setFilePath(QFileInfo(path).absoluteFilePath());
     addRecentFile(m_path);
     return true;
@@ -90,6 +92,7 @@ bool MainWindow::openRecovering(const QString &path)
         return false;
     }
     m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    m_doc->referenceLayer().setReference(std::move(loaded->reference));
     setFilePath(QString());
     m_doc->undoStack()->resetClean(); // unsaved until the user saves it somewhere
     statusBar()->showMessage(

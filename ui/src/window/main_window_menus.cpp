@@ -8,6 +8,7 @@
 #include <finbook/ui/export/export_done.h>
 #include <finbook/ui/keys/shortcut_registry.h>
 #include <finbook/ui/panels/object_actions.h>
+#include <finbook/ui/reference/reference_panel.h>
 #include <finbook/ui/timeline/frame_actions.h>
 #include <finbook/ui/timeline/onion_skin_editor.h>
 #include <finbook/ui/timeline/playback_controller.h>
@@ -91,6 +92,16 @@ void MainWindow::createFileMenu()
         if (!path.isEmpty())
             importMesh(path);
     });
+    QAction *referenceAction =
+        makeAction(QStringLiteral("file.importReference"), tr("Import Re&ference..."));
+    connect(referenceAction, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Import Reference"), QFileInfo(m_path).path(), referenceFileFilter());
+        if (path.isEmpty())
+            return;
+        if (const auto error = importReference(*m_doc, path))
+            reportError(tr("Cannot Import Reference"), *error);
+    });
     QAction *quitAction = makeAction(QStringLiteral("file.quit"), tr("&Quit"));
     quitAction->setMenuRole(QAction::QuitRole);
     connect(quitAction, &QAction::triggered, this, &QWidget::close);
@@ -98,6 +109,7 @@ void MainWindow::createFileMenu()
     m_fileMenu->addAction(saveAsAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(importAction);
+    m_fileMenu->addAction(referenceAction);
     m_fileMenu->addAction(exportAnimation);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(quitAction);

@@ -19,6 +19,7 @@ enum class CommandId : int {
     SetMeshDensity,
     SetSkeletonSettings,
     MoveJoint,
+    EditReference,
 };
 
 class DocumentCommand : public QUndoCommand {

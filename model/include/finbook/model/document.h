@@ -14,6 +14,8 @@
 
 namespace finbook::model {
 
+class ReferenceLayer;
+
 struct GroupLocation {
     int frame = -1;
     int group = -1;
@@ -35,6 +37,9 @@ public:
 
     QUndoStack *undoStack() { return &m_undoStack; }
     const QUndoStack *undoStack() const { return &m_undoStack; }
+    // The picture or video under every frame (reference/reference_layer.h). reset() empties it.
+    ReferenceLayer &referenceLayer() { return *m_reference; }
+    const ReferenceLayer &referenceLayer() const { return *m_reference; }
 
     // --- reading
     const DocumentSettings &settings() const { return m_settings; }
@@ -114,6 +119,7 @@ private:
     DocumentSettings m_settings;
     Id m_nextId = 1;
     QUndoStack m_undoStack;
+    ReferenceLayer *m_reference; // a child QObject
 };
 
 } // namespace finbook::model

@@ -13,6 +13,7 @@
 #include <finbook/geometry/expected.h>
 #include <finbook/model/document.h>
 #include <finbook/model/io/atomic_file.h>
+#include <finbook/model/reference/reference.h>
 
 #include <QByteArray>
 #include <QString>
@@ -61,6 +62,7 @@ struct LoadedDocument {
     std::vector<Frame> frames;
     DocumentSettings settings;
     Id nextId = 1;
+    Reference reference; // the reference layer (empty when the file has none)
     quint32 formatVersion = kFinbookFormatVersion;
 };
 

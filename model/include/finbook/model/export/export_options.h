@@ -4,6 +4,7 @@
 // Export dialog and `finbook export` only fill them in.
 #pragma once
 
+#include <finbook/model/reference/reference.h>
 #include <finbook/model/types.h>
 
 #include <QString>
@@ -50,6 +51,7 @@ struct ExportOptions {
     bool overwrite = false;         // replace files already at the target
     QString baseName = QStringLiteral("frame"); // sequences: <baseName>_0001.png, ...
     QString title;                              // HTML: the page title
+    bool includeReference = false;              // paint the reference layer under the drawing
     // Frames the user allowed this export to write (see exportFrameCount). 0: the default
     // limits, kMaxSequenceFiles files or kMaxVideoSeconds of video (export_plan.h); a larger
     // export is refused with TooLarge until the user sets this to at least its frame count.
@@ -61,6 +63,7 @@ struct ExportOptions {
 struct ExportSource {
     std::vector<Frame> frames;
     DocumentSettings settings;
+    Reference reference = {}; // the reference layer (its media bytes shared, not copied)
 };
 ExportSource exportSource(const Document &document);
 

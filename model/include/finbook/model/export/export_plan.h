@@ -48,8 +48,10 @@ std::optional<ExportError> checkExportSize(const ExportPlan &plan, const ExportO
 
 // The frame as it is exported: plan.size pixels, QImage::Format_ARGB32 (straight alpha), the
 // canvas scaled to fit and centred, over the plan's background unless it is transparent.
+// `reference` (optional) is painted under the drawing with `picture` as its media.
 QImage renderExportFrame(const Frame &frame, const DocumentSettings &settings,
-                         const ExportPlan &plan);
+                         const ExportPlan &plan, const Reference *reference = nullptr,
+                         const QImage &picture = {});
 
 // Pixels rendered at once by exports that go band by band: a 16384-pixel-wide picture
 // renders 256 rows (16 MiB) at a time instead of 1 GiB for the whole frame.
@@ -58,7 +60,8 @@ constexpr qint64 kExportBandPixels = qint64(1) << 22;
 // Rows [top, top + rows) of renderExportFrame (the same pixels); a null image when even the
 // band cannot be allocated.
 QImage renderExportBand(const Frame &frame, const DocumentSettings &settings,
-                        const ExportPlan &plan, int top, int rows);
+                        const ExportPlan &plan, int top, int rows,
+                        const Reference *reference = nullptr, const QImage &picture = {});
 
 // The rows of one band for plan.size: kExportBandPixels / width, at least 1, at most the
 // height (a picture of up to kExportBandPixels pixels is one band).

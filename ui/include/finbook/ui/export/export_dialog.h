@@ -67,6 +67,7 @@ public:
     QSpinBox *fpsBox() const { return m_fps; }
     QCheckBox *loopBox() const { return m_loop; }
     QCheckBox *perDrawingBox() const { return m_perDrawing; }
+    QCheckBox *includeReferenceBox() const { return m_includeReference; }
     QProgressBar *progressBar() const { return m_progress; }
     QPushButton *exportButton() const { return m_exportButton; }
     QPushButton *cancelButton() const { return m_cancelButton; }
@@ -113,6 +114,7 @@ private:
     QSpinBox *m_fps = nullptr;
     QCheckBox *m_loop = nullptr;
     QCheckBox *m_perDrawing = nullptr;
+    QCheckBox *m_includeReference = nullptr;
     QProgressBar *m_progress = nullptr;
     QLabel *m_status = nullptr;
     QDialogButtonBox *m_buttons = nullptr;

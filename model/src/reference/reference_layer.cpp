@@ -1,0 +1,156 @@
+// ReferenceLayer: the reference value, its media opened lazily, and its picture per frame.
+#include "reference_decode_worker.h"
+
+#include <finbook/model/document.h>
+#include <finbook/model/reference/reference_layer.h>
+#include <finbook/model/render.h>
+
+#include <QPainter>
+
+#include <algorithm>
+
+namespace finbook::model {
+
+ReferenceLayer::ReferenceLayer(Document *document)
+    : QObject(document)
+    , m_doc(document)
+{}
+
+ReferenceLayer::~ReferenceLayer()
+{
+    if (m_thread) {
+        m_worker->latest = -1; // what is queued is dropped; a decode under way finishes
+        m_thread->quit();
+        m_thread->wait();
+        delete m_worker;
+    }
+}
+
+QImage ReferenceLayer::pictureWithoutWaiting(int frameIndex)
+{
+    if (m_reference.isEmpty() || !m_reference.visible || m_reference.opacity <= 0.0)
+        return {};
+    const auto m = media();
+    if (!m)
+        return {};
+    const qint64 index = videoFrameAt(frameIndex);
+    if (QImage ready = m->cachedFrame(index); !ready.isNull()) {
+        m_lastShown = ready;
+        return ready;
+    }
+    if (!m_thread) {
+        m_thread = new QThread(this);
+        m_thread->setObjectName(QStringLiteral("reference decoder"));
+        m_worker = new reference_detail::ReferenceDecodeWorker;
+        m_worker->moveToThread(m_thread);
+        connect(m_worker, &reference_detail::ReferenceDecodeWorker::decoded, this,
+                &ReferenceLayer::pictureReady);
+        m_thread->start(QThread::LowPriority);
+    }
+    if (m_worker->latest.exchange(index) != index) {
+        auto *worker = m_worker;
+        QMetaObject::invokeMethod(
+            worker, [worker, m, index] { worker->decode(m, index); }, Qt::QueuedConnection);
+    }
+    return m_lastShown;
+}
+
+void ReferenceLayer::setReference(Reference reference)
+{
+    if (reference == m_reference)
+        return;
+    if (reference.kind != m_reference.kind || reference.bytes != m_reference.bytes) {
+        m_lastShown = QImage();
+        if (m_worker)
+            m_worker->latest = -1;
+        m_media.reset();
+        m_mediaOpened = false;
+        m_mediaError.clear();
+    }
+    m_reference = std::move(reference);
+    emit referenceChanged();
+}
+
+std::shared_ptr<ReferenceMedia> ReferenceLayer::media() const
+{
+    if (!m_mediaOpened && !m_reference.isEmpty()) {
+        m_mediaOpened = true;
+        auto opened = ReferenceMedia::open(m_reference.kind, m_reference.bytes);
+        if (opened)
+            m_media = *opened;
+        else
+            m_mediaError = opened.error();
+    }
+    return m_media;
+}
+
+qint64 ReferenceLayer::tickOfFrame(int frameIndex) const
+{
+    qint64 tick = 0;
+    const int end = std::min(frameIndex, m_doc->frameCount());
+    for (int i = 0; i < end; ++i)
+        tick += std::max(1, m_doc->frameAt(i).hold);
+    return tick;
+}
+
+qint64 ReferenceLayer::videoFrameAt(int frameIndex) const
+{
+    const auto m = media();
+    if (!m)
+        return 0;
+    return m->frameIndex(
+        referenceSeconds(m_reference, tickOfFrame(frameIndex), m_doc->settings().fps));
+}
+
+QImage ReferenceLayer::pictureAt(int frameIndex, bool decode) const
+{
+    if (m_reference.isEmpty() || !m_reference.visible || m_reference.opacity <= 0.0)
+        return {};
+    const auto m = media();
+    if (!m)
+        return {};
+    const qint64 index = videoFrameAt(frameIndex);
+    return decode ? m->frame(index) : m->cachedFrame(index);
+}
+
+void paintReference(QPainter &painter, const Reference &reference, const QImage &picture)
+{
+    if (picture.isNull() || reference.isEmpty() || !reference.visible)
+        return;
+    painter.save();
+    painter.setOpacity(painter.opacity() * reference.opacity);
+    painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
+    painter.setTransform(referenceTransform(reference), true);
+    // A video frame may come at another size than the one recorded at import: fit it.
+    painter.drawImage(QRectF(QPointF(0, 0), reference.mediaSize), picture);
+    painter.restore();
+}
+
+QImage renderFrameWithReference(const Frame &frame, const DocumentSettings &settings, QSize size,
+                                const Reference &reference, const QImage &picture)
+{
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    if (image.isNull())
+        return image;
+    image.fill(Qt::transparent);
+    const QSizeF canvas(settings.canvasSize);
+    if (size.isEmpty() || canvas.isEmpty())
+        return image;
+    QPainter painter(&image);
+    const qreal scale = std::min(size.width() / canvas.width(), size.height() / canvas.height());
+    painter.translate((size.width() - canvas.width() * scale) / 2,
+                      (size.height() - canvas.height() * scale) / 2);
+    painter.scale(scale, scale);
+    const QRectF page(QPointF(0, 0), canvas);
+    painter.fillRect(page, QColor::fromRgba(settings.background));
+    painter.save();
+    painter.setClipRect(page);
+    paintReference(painter, reference, picture);
+    painter.restore();
+    RenderOptions options;
+    options.paintBackground = false;
+    paintFrame(painter, frame, settings, options);
+    return image;
+}
+
+} // namespace finbook::model

@@ -1,0 +1,111 @@
+// The reference layer in the window: File → Import Reference, the Reference panel's edits
+// (undoable, lock), the canvas showing it under the drawing and the pen ignoring it.
+#include "../model/reference_support.h"
+#include "tst_window_support.h"
+
+#include <finbook/model/reference/reference_layer.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/reference/reference_panel.h>
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QSlider>
+#include <QTest>
+
+using namespace finbook;
+using namespace finbook::test;
+
+class TestReferenceLayer : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { m_settings = std::make_unique<IsolatedSettings>(); }
+
+    void panelEditsAreUndoable()
+    {
+        model::Document doc;
+        doc.reset({model::Frame{doc.allocateId(), 1, {}}}, model::DocumentSettings(), doc.nextId());
+        ui::ReferencePanel panel(&doc);
+        QVERIFY(!panel.opacitySlider()->isEnabled());
+        QVERIFY(!ui::importReference(doc, writeTwoColourPng(m_dir.path())));
+        QVERIFY(panel.opacitySlider()->isEnabled());
+        const model::Reference imported = doc.referenceLayer().reference();
+        panel.opacitySlider()->setValue(80);
+        QCOMPARE(doc.referenceLayer().reference().opacity, 0.8);
+        panel.rotationBox()->setValue(30.0);
+        QCOMPARE(doc.referenceLayer().reference().rotation, 30.0);
+        panel.lockedBox()->setChecked(true);
+        QVERIFY(!panel.xBox()->isEnabled());
+        QVERIFY(!panel.rotationBox()->isEnabled());
+        doc.undoStack()->undo(); // lock
+        doc.undoStack()->undo(); // rotation
+        doc.undoStack()->undo(); // opacity
+        QCOMPARE(doc.referenceLayer().reference(), imported);
+        QCOMPARE(panel.opacitySlider()->value(), 50);
+        QVERIFY(panel.xBox()->isEnabled());
+    }
+
+    void refusedFileChangesNothing()
+    {
+        model::Document doc;
+        QFile png(writeTwoColourPng(m_dir.path()));
+        QVERIFY(png.open(QIODevice::ReadOnly));
+        const QString cut = m_dir.filePath(QStringLiteral("half.png"));
+        QFile out(cut);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(png.readAll().left(30));
+        out.close();
+        const auto error = ui::importReference(doc, cut);
+        QVERIFY(error);
+        QVERIFY(error->contains(QStringLiteral("half.png")));
+        QVERIFY(doc.referenceLayer().isEmpty());
+        QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
+    void canvasShowsItUnderTheDrawing()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        QVERIFY(window.action(QStringLiteral("file.importReference")));
+        model::Document *doc = window.document();
+        QVERIFY(!ui::importReference(*doc, writeTwoColourPng(m_dir.path())));
+        ui::CanvasWidget *canvas = window.canvas();
+        const QSize page = doc->settings().canvasSize;
+        const auto pixelAt = [&](QPointF canvasPoint) {
+            const QImage shot = canvas->grab().toImage();
+            const QPointF p = canvas->canvasToWidget().map(canvasPoint) * shot.devicePixelRatio();
+            return QColor(shot.pixel(p.toPoint()));
+        };
+        // The left half of the picture is red at half opacity over the white page.
+        const QColor left = pixelAt(QPointF(page.width() * 0.25, page.height() * 0.5));
+        QVERIFY2(left.red() > 200 && left.green() < 180 && left.blue() < 180,
+                 qPrintable(left.name()));
+        const QColor right = pixelAt(QPointF(page.width() * 0.75, page.height() * 0.5));
+        QVERIFY2(right.blue() > 200 && right.red() < 180, qPrintable(right.name()));
+        // A stroke drawn over it goes into the drawing's object; the reference is unchanged.
+        const model::Reference before = doc->referenceLayer().reference();
+        const std::size_t objects = doc->frameAt(0).groups.size();
+        canvas->setCurrentTool(QStringLiteral("tool.pen"));
+        dragCanvas(canvas, QPointF(page.width() * 0.2, page.height() * 0.5),
+                   QPointF(page.width() * 0.3, page.height() * 0.5), 8);
+        QCOMPARE(doc->frameAt(0).groups.size(), objects);
+        QCOMPARE(doc->frameAt(0).groups.front().strokes.size(), std::size_t(1));
+        QCOMPARE(doc->referenceLayer().reference(), before);
+        const QColor stroke = pixelAt(QPointF(page.width() * 0.25, page.height() * 0.5));
+        QVERIFY2(stroke.lightness() < 100, qPrintable(stroke.name()));
+        // Hidden: the page is white again there.
+        model::Reference hidden = before;
+        hidden.visible = false;
+        doc->undoStack()->push(
+            model::editReferenceCommand(doc, hidden, model::ReferenceEdit::Visible).release());
+        const QColor gone = pixelAt(QPointF(page.width() * 0.75, page.height() * 0.5));
+        QCOMPARE(gone, QColor(Qt::white));
+    }
+
+private:
+    std::unique_ptr<IsolatedSettings> m_settings;
+    QTemporaryDir m_dir;
+};
+
+QTEST_MAIN(TestReferenceLayer)
+#include "tst_reference_layer.moc"
