@@ -1,5 +1,6 @@
 #include <finbook/model/document.h>
 #include <finbook/model/skeleton/skeleton_join.h>
+#include <finbook/model/sound/soundtrack.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,6 +9,7 @@ namespace finbook::model {
 
 Document::Document(QObject *parent)
     : QObject(parent)
+    , m_soundtrack(std::make_unique<Soundtrack>())
 {}
 
 Document::~Document()
@@ -96,6 +98,7 @@ void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings
         resolveJoins(f);
     m_settings = settings;
     m_nextId = std::max<Id>(nextId, 1);
+    m_soundtrack->reset({});
     emit documentReset();
 }
 

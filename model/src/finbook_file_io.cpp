@@ -6,6 +6,7 @@
 #include "finbook_file_cursor.h"
 
 #include <finbook/model/io/atomic_file.h>
+#include <finbook/model/sound/soundtrack.h>
 
 #include <QFile>
 #include <QFileInfo>
@@ -202,8 +203,14 @@ std::optional<FileError> openFinbook(Document &document, const QString &path)
     auto loaded = loadFinbook(path);
     if (!loaded)
         return loaded.error();
-    document.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    adoptLoadedDocument(document, std::move(*loaded));
     return std::nullopt;
+}
+
+void adoptLoadedDocument(Document &document, LoadedDocument loaded)
+{
+    document.reset(std::move(loaded.frames), loaded.settings, loaded.nextId);
+    document.soundtrack().reset(std::move(loaded.sound));
 }
 
 std::optional<FileError> saveFinbook(const Document &document, const QString &path,

@@ -5,6 +5,7 @@
 #include <finbook/model/document.h>
 #include <finbook/model/io/atomic_file.h>
 #include <finbook/model/recovery/autosaver.h>
+#include <finbook/model/sound/soundtrack.h>
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -92,7 +93,7 @@ void Autosaver::autosaveNow()
     RecoveryWriter::Snapshot snapshot{
         m_doc->frames(), m_doc->settings(),
         RecoveryInfo{m_title, m_originalPath, QDateTime::currentDateTimeUtc(), m_doc->frameCount()},
-        copyPath()};
+        copyPath(), m_doc->soundtrack().clips()};
     QMetaObject::invokeMethod(
         m_writer, [writer = m_writer, s = std::move(snapshot)] { writer->write(s); },
         Qt::QueuedConnection);

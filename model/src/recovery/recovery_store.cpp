@@ -60,7 +60,7 @@ std::unique_ptr<QLockFile> lockFor(const QString &path)
 } // namespace
 
 QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
-                             const RecoveryInfo &info)
+                             const RecoveryInfo &info, const std::vector<SoundClip> &sound)
 {
     const QJsonObject description{
         {QStringLiteral("title"), info.title},
@@ -72,7 +72,7 @@ QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSet
     const QByteArray thumbnail = thumbnailPng(frames, settings);
     if (!thumbnail.isEmpty())
         extra.push_back({"thmb", thumbnail});
-    return serializeFinbook(frames, settings, extra);
+    return serializeFinbook(frames, settings, extra, sound);
 }
 
 QString recoveryFolder()

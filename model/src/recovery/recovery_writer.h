@@ -23,14 +23,15 @@ public:
         DocumentSettings settings;
         RecoveryInfo info;
         QString path;
+        std::vector<SoundClip> sound;
     };
 
     void write(const Snapshot &snapshot)
     {
         QString error;
         try {
-            const QByteArray bytes =
-                recoveryCopyBytes(snapshot.frames, snapshot.settings, snapshot.info);
+            const QByteArray bytes = recoveryCopyBytes(snapshot.frames, snapshot.settings,
+                                                       snapshot.info, snapshot.sound);
             if (const auto failure = writeFileAtomically(snapshot.path, bytes))
                 error = describeWriteFailure(*failure, QFileInfo(snapshot.path).absolutePath());
         } catch (const std::bad_alloc &) {

@@ -62,7 +62,7 @@ bool MainWindow::restoreRecovery(const model::RecoveryCopy &copy)
         reportError(tr("Cannot Recover"), loaded.error().message);
         return false;
     }
-    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    model::adoptLoadedDocument(*m_doc, std::move(*loaded));
     const QString original = copy.info.originalPath;
     setFilePath(QFileInfo::exists(original) ? QFileInfo(original).absoluteFilePath() : QString());
     m_doc->undoStack()->resetClean();

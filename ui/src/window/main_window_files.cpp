@@ -73,7 +73,7 @@ bool MainWindow::openFile(const QString &path)
         m_errorDetails.clear();
         return anyway && openRecovering(path);
     }
-    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    model::adoptLoadedDocument(*m_doc, std::move(*loaded));
     setFilePath(QFileInfo(path).absoluteFilePath());
     addRecentFile(m_path);
     return true;
@@ -89,7 +89,7 @@ bool MainWindow::openRecovering(const QString &path)
         reportError(tr("Cannot Open File"), loaded.error().message);
         return false;
     }
-    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    model::adoptLoadedDocument(*m_doc, std::move(*loaded));
     setFilePath(QString());
     m_doc->undoStack()->resetClean(); // unsaved until the user saves it somewhere
     statusBar()->showMessage(

@@ -10,9 +10,12 @@
 #include <QObject>
 #include <QUndoStack>
 
+#include <memory>
 #include <vector>
 
 namespace finbook::model {
+
+class Soundtrack; // sound/soundtrack.h
 
 struct GroupLocation {
     int frame = -1;
@@ -35,6 +38,9 @@ public:
 
     QUndoStack *undoStack() { return &m_undoStack; }
     const QUndoStack *undoStack() const { return &m_undoStack; }
+    // The sound clips (sound/soundtrack.h); reset() empties it, the loader fills it after.
+    Soundtrack &soundtrack() { return *m_soundtrack; }
+    const Soundtrack &soundtrack() const { return *m_soundtrack; }
 
     // --- reading
     const DocumentSettings &settings() const { return m_settings; }
@@ -113,6 +119,7 @@ private:
     std::vector<Frame> m_frames;
     DocumentSettings m_settings;
     Id m_nextId = 1;
+    std::unique_ptr<Soundtrack> m_soundtrack;
     QUndoStack m_undoStack;
 };
 

@@ -8,6 +8,7 @@
 // running Finbooks therefore never list, take or delete each other's copies.
 #pragma once
 
+#include <finbook/model/sound/sound_clip.h>
 #include <finbook/model/types.h>
 
 #include <QDateTime>
@@ -37,9 +38,9 @@ struct RecoveryCopy {
 };
 
 // The bytes of a recovery copy: the document (a snapshot; any thread) with its description and
-// a thumbnail rendered here.
+// a thumbnail rendered here, and the sound clips `sound`.
 QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
-                             const RecoveryInfo &info);
+                             const RecoveryInfo &info, const std::vector<SoundClip> &sound = {});
 // Copies larger than this are not listed (nor read): a recovery copy is an autosave of a
 // drawing that had to fit in memory.
 constexpr qint64 kMaxRecoveryCopyBytes = qint64(4) << 30;
