@@ -301,7 +301,8 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
                         .arg(options.target, reason),
                     ExitCode::Failure);
     options.title = QFileInfo(input).completeBaseName();
-    const model::ExportSource source{std::move(loaded->frames), loaded->settings};
+    const model::ExportSource source{std::move(loaded->frames), loaded->settings,
+                                     std::move(loaded->sound)};
     const auto result = model::exportAnimation(
         source, options, exportProgress(QFileInfo(native.shown(options.target)).fileName()));
     clearProgressLine();

@@ -209,7 +209,7 @@ ExportSource generatedSource(Id *posed = nullptr)
 
     DocumentSettings s = doc.settings();
     s.canvasSize = QSize(800, 700);
-    return ExportSource{doc.frames(), s};
+    return ExportSource{doc.frames(), s, {}};
 }
 
 ExportOptions objOptions(const QString &target)

@@ -6,9 +6,11 @@
 #include "../model/sound_support.h"
 
 #include <finbook/model/commands.h>
+#include <finbook/model/export/exporter.h>
 #include <finbook/model/sound/sound_cache.h>
 #include <finbook/model/sound/sound_mix.h>
 #include <finbook/model/sound/soundtrack.h>
+#include <finbook/ui/export/export_dialog.h>
 #include <finbook/ui/sound/sound_controller.h>
 #include <finbook/ui/sound/sound_player.h>
 #include <finbook/ui/sound/sound_row.h>
@@ -17,6 +19,7 @@
 #include <finbook/ui/timeline/timeline_widget.h>
 #include <finbook/ui/window/editor_state.h>
 
+#include <QLabel>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -84,6 +87,7 @@ private slots:
     void clipActionsAreUndoable();
     void playbackFollowsTheSoundClockSilently();
     void steppingPlaysTheSliceUnderTheFrame();
+    void exportDialogSaysWhichFormatsHaveSound();
 };
 
 void TestSoundRow::importAddsOneUndoableClipAtTheCurrentFrame()
@@ -207,6 +211,27 @@ void TestSoundRow::steppingPlaysTheSliceUnderTheFrame()
     QCOMPARE(ui::startTickOfFrame(f.doc, 2), qint64(4));
     // The silent player still runs the slice through its source: it stands at its start.
     QCOMPARE(f.sound->player()->sourcePosition(), model::sampleOfTick(4.0, 12));
+}
+
+void TestSoundRow::exportDialogSaysWhichFormatsHaveSound()
+{
+    Fixture f(4);
+    const auto status = [&f](model::ExportFormat format) {
+        ui::ExportDialog dialog(f.doc, QString());
+        dialog.setFormat(format);
+        return dialog.findChild<QLabel *>(QStringLiteral("export.status"))->text();
+    };
+    QVERIFY(!status(model::ExportFormat::Gif).contains(QStringLiteral("sound")));
+    f.import(f.write(QStringLiteral("beat.wav"), sound_test::sineWav(0.5)));
+    if (model::ffmpegProgram().isEmpty())
+        QSKIP("the dialog speaks of ffmpeg first");
+    for (auto format :
+         {model::ExportFormat::Gif, model::ExportFormat::Apng, model::ExportFormat::PngSequence,
+          model::ExportFormat::SvgSequence, model::ExportFormat::Html})
+        QVERIFY2(status(format).contains(QStringLiteral("no sound")), qPrintable(status(format)));
+    for (auto format : {model::ExportFormat::Mp4, model::ExportFormat::WebM})
+        QVERIFY2(status(format).contains(QStringLiteral("carries the soundtrack")),
+                 qPrintable(status(format)));
 }
 
 QTEST_MAIN(TestSoundRow)

@@ -1,5 +1,6 @@
 #include <finbook/model/document.h>
 #include <finbook/model/export/export_options.h>
+#include <finbook/model/sound/soundtrack.h>
 
 #include <QFileInfo>
 
@@ -35,7 +36,7 @@ const FormatInfo &info(ExportFormat format)
 
 ExportSource exportSource(const Document &document)
 {
-    return ExportSource{document.frames(), document.settings()};
+    return ExportSource{document.frames(), document.settings(), document.soundtrack().clips()};
 }
 
 std::optional<ExportFormat> exportFormatFromName(const QString &name)

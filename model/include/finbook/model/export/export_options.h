@@ -4,6 +4,7 @@
 // Export dialog and `finbook export` only fill them in.
 #pragma once
 
+#include <finbook/model/sound/sound_clip.h>
 #include <finbook/model/types.h>
 
 #include <QString>
@@ -60,6 +61,7 @@ struct ExportOptions {
 struct ExportSource {
     std::vector<Frame> frames;
     DocumentSettings settings;
+    std::vector<SoundClip> sound; // the soundtrack: MP4 and WebM carry its mix
 };
 ExportSource exportSource(const Document &document);
 
