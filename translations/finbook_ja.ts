@@ -249,6 +249,36 @@
         <source>Close Gaps</source>
         <translation>隙間を閉じる</translation>
     </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="18"/>
+        <source>Import Sound</source>
+        <translation>サウンドのインポート</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="37"/>
+        <source>Delete Sound</source>
+        <translation>サウンドの削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="77"/>
+        <source>Move Sound</source>
+        <translation>サウンドの移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="79"/>
+        <source>Change Sound Volume</source>
+        <translation>サウンドの音量変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
+        <source>Mute Sound</source>
+        <translation>サウンドをミュート</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
+        <source>Unmute Sound</source>
+        <translation>サウンドのミュート解除</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -451,17 +481,17 @@
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="311"/>
+        <location filename="../app/cli_export.cpp" line="312"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="318"/>
+        <location filename="../app/cli_export.cpp" line="319"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="320"/>
+        <location filename="../app/cli_export.cpp" line="321"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -627,7 +657,7 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="36"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="37"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
@@ -639,7 +669,7 @@
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="105"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="117"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
     </message>
@@ -775,22 +805,22 @@
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="42"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="74"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="75"/>
         <source>MP4 video</source>
         <translation>MP4 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="92"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="93"/>
         <source>WebM video</source>
         <translation>WebM 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="106"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="107"/>
         <source>animated PNG</source>
         <translation>アニメーション PNG</translation>
     </message>
@@ -1009,27 +1039,27 @@
         <translation>%1 の末尾に予期しない %2 バイトがあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="32"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="33"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが不完全です（コピーや保存が中断された可能性があります）。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="38"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="39"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが破損しています。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="44"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 ファイルが破損しています。Finbook でまだ読み取れる部分を開くか、同じ名前で末尾に ~ が付いたバックアップがあれば、そちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="49"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="72"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
@@ -1059,43 +1089,43 @@
         <translation>フォルダー「%1」が存在しません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="77"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="78"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="88"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>「%1」を開けません: %2。ファイルが存在し、読み取る権限があることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="129"/>
         <source>it is a folder</source>
         <translation>フォルダーです</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="162"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>「%1」を読み込めません: %2。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="142"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="172"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="143"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="173"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>「%1」を開けません。%2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="133"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>「%1」を開けません: ファイルではなく、デバイス、パイプ、またはソケットです。.finbook ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="152"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="223"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
@@ -1176,161 +1206,166 @@
         <translation>セクション %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
         <source>the file&apos;s end is damaged</source>
         <translation>ファイルの終端が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>長さ（%1 バイト）がファイルの終わりを超えています（残り %2 バイト）が、ファイルは終端マーカーで終わっています。長さの値が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
         <source>a section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
         <source>a section checksum</source>
         <translation>セクションのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="194"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
         <source>the end marker</source>
         <translation>終端マーカー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
         <source>the file</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="183"/>
+        <source>a sound clip comes before the frames</source>
+        <translation>サウンドクリップがフレームより前にあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="191"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="229"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="231"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="240"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1614,22 +1649,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="355"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="378"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -1732,29 +1767,29 @@
         <translation>スケルトンの関節 %1 のロック状態が不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
         <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
         <translation>破損した %1 バイトを読み取れませんでした。セクション %2 から読み込みを続けます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="56"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="57"/>
         <source>the last %1 bytes of the file are damaged and could not be read</source>
         <translation>ファイルの最後の %1 バイトが破損していて読み取れませんでした</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_recover.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="88"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>欠落または重複していた ID %n 個を新しい ID に置き換えました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="154"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="155"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>自動保存で復元用のコピーを書き込めませんでした: %1。</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="37"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="38"/>
         <source>there is not enough memory</source>
         <translation>メモリが足りません</translation>
     </message>
@@ -1782,6 +1817,63 @@
         <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>塗りのストロークIDが順に並んでいません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="17"/>
+        <source>sound clip %1</source>
+        <translation>サウンドクリップ %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="20"/>
+        <location filename="../model/src/sound/sound_section.cpp" line="34"/>
+        <location filename="../model/src/sound/sound_section.cpp" line="79"/>
+        <source>the sound clip</source>
+        <translation>サウンドクリップ</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="24"/>
+        <source>%1; the sound clip is left out</source>
+        <translation>%1。サウンドクリップは除外されます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="32"/>
+        <source>the file holds more than %1 sound clips</source>
+        <translation>ファイルに %1 個を超えるサウンドクリップがあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="39"/>
+        <source>the sound starts at %1, outside 0 to %2</source>
+        <translation>サウンドの開始位置 %1 が 0〜%2 の範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="46"/>
+        <source>the sound&apos;s volume %1 is outside 0 to %2</source>
+        <translation>サウンドの音量 %1 が 0〜%2 の範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="54"/>
+        <source>the sound flags 0x%1 are unknown</source>
+        <translation>サウンドのフラグ 0x%1 が不明です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="58"/>
+        <source>the sound&apos;s name is %1 bytes long (at most %2)</source>
+        <translation>サウンドの名前が %1 バイトあります(最大 %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="68"/>
+        <source>the sound&apos;s name is not valid UTF-8 text</source>
+        <translation>サウンドの名前が有効な UTF-8 テキストではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="72"/>
+        <source>the sound is %1 MB long (at most %2 MB)</source>
+        <translation>サウンドが %1 MB あります(最大 %2 MB)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="76"/>
+        <source>the sound clip holds no sound</source>
+        <translation>サウンドクリップに音声がありません</translation>
     </message>
 </context>
 <context>
@@ -1831,6 +1923,52 @@
         <location filename="../ui/src/rig/rig_prompt.cpp" line="19"/>
         <source>&quot;%1&quot; is posed. Replacing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
         <translation>「%1」にはポーズが付いています。リグを置き換えると、絵は元の状態に戻ります（先に「ポーズを絵に適用」を実行すれば、ポーズを残せます）。</translation>
+    </message>
+</context>
+<context>
+    <name>Sound</name>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="90"/>
+        <source>The file is not a sound Finbook can read (WAV, FLAC, MP3, Ogg, Opus, AAC or M4A), or it is damaged.</source>
+        <translation>このファイルは Finbook が読めるサウンド(WAV、FLAC、MP3、Ogg、Opus、AAC、M4A)ではないか、破損しています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="137"/>
+        <source>The file is empty.</source>
+        <translation>ファイルが空です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="139"/>
+        <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
+        <translation>ファイルが不完全です。サウンドデータが途中で切れています。完全なファイルをインポートしてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="147"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="151"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="155"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="181"/>
+        <source>There is not enough memory to read the sound.</source>
+        <translation>サウンドを読み込むためのメモリが足りません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="165"/>
+        <source>The file holds no sound Finbook can play.</source>
+        <translation>ファイルに Finbook が再生できるサウンドがありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="214"/>
+        <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
+        <translation>サウンドが Finbook で再生できる最長の %1 分を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="218"/>
+        <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
+        <translation>ファイルに Finbook が再生できるサウンドがありません(音声をデコードできませんでした)。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
+        <translation>ファイルが不完全です。%1 秒のサウンドと記されていますが、%2 秒しかありません。完全なファイルをインポートしてください。</translation>
     </message>
 </context>
 <context>
@@ -2373,179 +2511,189 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="57"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="292"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="300"/>
         <source>Export Animation</source>
         <translation>アニメーションの書き出し</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="65"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="280"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="288"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="77"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
         <source>Animated GIF</source>
         <translation>アニメーション GIF</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>MP4 video (H.264)</source>
         <translation>MP4 動画（H.264）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>WebM video (VP9)</source>
         <translation>WebM 動画（VP9）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>Animated PNG (APNG)</source>
         <translation>アニメーション PNG（APNG）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>HTML flipbook (one file)</source>
         <translation>HTML パラパラ漫画（1 ファイル）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>PNG images (a folder)</source>
         <translation>PNG 画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
         <source>SVG vector images (a folder)</source>
         <translation>SVG ベクター画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>3D モデル (OBJ)、現在のフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
         <source>&amp;Browse...</source>
         <translation>参照(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>Play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
         <source>All frames</source>
         <translation>すべてのフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>Frames</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="107"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
         <source>Document background</source>
         <translation>ドキュメントの背景</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="108"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
         <source>Transparent</source>
         <translation>透明</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Colour</source>
         <translation>色</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
         <source>Start again after the last frame</source>
         <translation>最後のフレームの後、最初から再生する</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>絵ごとに 1 ファイル（タイムシート付き）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="134"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="136"/>
         <source>to</source>
         <translation>～</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="149"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="150"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
         <source>&amp;Save to:</source>
         <translation>保存先(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="151"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
         <source>F&amp;rames:</source>
         <translation>フレーム(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="152"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
         <source>Sc&amp;ale:</source>
         <translation>倍率(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="153"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
         <source>&amp;Background:</source>
         <translation>背景(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>Frame ra&amp;te:</source>
         <translation>フレームレート(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
         <source>Loop:</source>
         <translation>ループ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>&amp;Export</source>
         <translation>書き出し(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
         <source>Cancel Export</source>
         <translation>書き出しをキャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="238"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="240"/>
         <source>%1 x %2 pixels</source>
         <translation>%1×%2 ピクセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="241"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="243"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、隣に .mtl ファイルを置きます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="246"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="248"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>この形式には ffmpeg プログラムが必要ですが、見つかりませんでした。先にインストールしてください（Debian の場合: apt install ffmpeg）。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <source>The video carries the soundtrack, trimmed to the frames exported.</source>
+        <translation>動画には書き出すフレームに合わせて切り出したサウンドトラックが入ります。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="254"/>
+        <source>This format has no sound: the soundtrack is left out (MP4 and WebM carry it).</source>
+        <translation>この形式には音声がありません。サウンドトラックは含まれません(MP4 と WebM には入ります)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="297"/>
         <source>Export to Folder</source>
         <translation>フォルダーに書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="301"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>
@@ -2814,53 +2962,53 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window.cpp" line="145"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="168"/>
+        <location filename="../ui/src/window/main_window.cpp" line="170"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window.cpp" line="171"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window.cpp" line="174"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="175"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="211"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window.cpp" line="222"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window.cpp" line="223"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window.cpp" line="228"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="237"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window.cpp" line="229"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -2929,7 +3077,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="203"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="96"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
@@ -2974,212 +3122,212 @@
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="45"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="51"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="63"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="60"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="66"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="96"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="116"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="118"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="121"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="140"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="153"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="153"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="187"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="182"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="189"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="193"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="211"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="211"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="218"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="217"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="224"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="237"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="248"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="259"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="306"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="300"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="307"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
@@ -3469,28 +3617,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="64"/>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
         <source>Pl&amp;ay</source>
         <translation>再生(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="68"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
         <source>Play or pause the animation</source>
         <translation>アニメーションを再生または一時停止</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="76"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="85"/>
         <source>L&amp;oop</source>
         <translation>ループ再生(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="80"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="89"/>
         <source>Start again at the end of the play range</source>
         <translation>再生範囲の最後まで来たら最初から再生</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
         <source>P&amp;ause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>
@@ -3781,39 +3929,170 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::SoundController</name>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="40"/>
+        <source>Import Soun&amp;d...</source>
+        <translation>サウンドをインポート(&amp;D)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
+        <source>Add a sound file to the soundtrack, starting at the current frame</source>
+        <translation>現在のフレームから始まるサウンドファイルをサウンドトラックに追加します</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="45"/>
+        <source>Import Sound</source>
+        <translation>サウンドのインポート</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="46"/>
+        <source>Sound files (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;All files (*)</source>
+        <translation>サウンドファイル (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="57"/>
+        <source>The sound &quot;%1&quot; cannot be played: %2</source>
+        <translation>サウンド「%1」を再生できません: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="118"/>
+        <source>Cannot Import Sound</source>
+        <translation>サウンドをインポートできません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>「%1」をインポートできません: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="81"/>
+        <source>it is not a file.</source>
+        <translation>ファイルではありません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="85"/>
+        <source>it is larger than %1 MB.</source>
+        <translation>%1 MB を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="94"/>
+        <source>Reading &quot;%1&quot;…</source>
+        <translation>「%1」を読み込み中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="119"/>
+        <source>Cannot import &quot;%1&quot;: %2 Nothing was changed.</source>
+        <translation>「%1」をインポートできません: %2 何も変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="132"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="134"/>
+        <source>Imported &quot;%1&quot; (%2 s).</source>
+        <translation>「%1」をインポートしました(%2 秒)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <source>Sound Volume</source>
+        <translation>サウンドの音量</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <source>Volume of &quot;%1&quot; (%):</source>
+        <translation>「%1」の音量 (%):</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SoundPlayer</name>
+    <message>
+        <location filename="../ui/src/sound/sound_player.cpp" line="65"/>
+        <source>No audio output was found: playing without sound.</source>
+        <translation>音声出力が見つかりません。音なしで再生します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_player.cpp" line="76"/>
+        <source>The audio output failed: playing without sound.</source>
+        <translation>音声出力に失敗しました。音なしで再生します。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SoundRow</name>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="36"/>
+        <source>The soundtrack: drag a sound to move it, right click for its volume</source>
+        <translation>サウンドトラック: サウンドをドラッグして移動、右クリックで音量</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="130"/>
+        <source>No sound: File → Import Sound…</source>
+        <translation>サウンドなし: ファイル → サウンドをインポート…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="186"/>
+        <source>%1 (cannot be played)</source>
+        <translation>%1(再生できません)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="188"/>
+        <source>%1 (reading…)</source>
+        <translation>%1(読み込み中…)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="190"/>
+        <source>%1 (muted)</source>
+        <translation>%1(ミュート)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="266"/>
+        <source>&amp;Mute</source>
+        <translation>ミュート(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="271"/>
+        <source>&amp;Volume...</source>
+        <translation>音量(&amp;V)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="273"/>
+        <source>Delete &amp;Sound</source>
+        <translation>サウンドを削除(&amp;S)</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="68"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="74"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="69"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="75"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>描画中に前後のフレームを薄く表示</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
         <source>Before:</source>
         <translation>前:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="86"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>オニオンスキンで表示する前のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="87"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="93"/>
         <source>After:</source>
         <translation>後:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="88"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="94"/>
         <source>How many later frames the onion skin shows</source>
         <translation>オニオンスキンで表示する後のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="119"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="125"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>フレーム %1 / %2 · %3 fps</translation>
     </message>

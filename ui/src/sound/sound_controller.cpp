@@ -37,7 +37,7 @@ SoundController::SoundController(EditorState *state, PlaybackController *playbac
     , m_cache(new model::SoundCache(state->document(), this))
     , m_player(new SoundPlayer(state->document(), m_cache, this))
 {
-    m_import = new QAction(tr("Import &Sound..."), this);
+    m_import = new QAction(tr("Import Soun&d..."), this);
     m_import->setObjectName(QStringLiteral("file.importSound"));
     m_import->setToolTip(tr("Add a sound file to the soundtrack, starting at the current frame"));
     connect(m_import, &QAction::triggered, this, [this] {

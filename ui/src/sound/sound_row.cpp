@@ -270,7 +270,7 @@ void SoundRow::contextMenuEvent(QContextMenuEvent *event)
                 [this, id](bool on) { m_controller->setMuted(id, on); });
         connect(menu.addAction(tr("&Volume...")), &QAction::triggered, this,
                 [this, id] { m_controller->askVolume(id); });
-        connect(menu.addAction(tr("&Delete Sound")), &QAction::triggered, this,
+        connect(menu.addAction(tr("Delete &Sound")), &QAction::triggered, this,
                 [this, id] { m_controller->remove(id); });
         menu.addSeparator();
     }
