@@ -659,7 +659,7 @@
     <name>Export</name>
     <message>
         <location filename="../model/src/export/export_encoded.cpp" line="37"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>es ist nicht genug Speicher vorhanden, um es zu rendern</translation>
@@ -675,28 +675,28 @@
         <translation>ffmpeg wurde beendet, ohne die Ausgabe als %1 zu schreiben; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="152"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="168"/>
         <source>Flipbook</source>
         <translation>Daumenkino</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="162"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="180"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="191"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="164"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="182"/>
         <source>Loop</source>
         <translation>Endlosschleife</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="167"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="185"/>
         <source>Frame</source>
         <translation>Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="171"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="192"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -2522,13 +2522,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="300"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="303"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="288"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
@@ -2688,22 +2688,27 @@
         <translation>Dieses Format benötigt das Programm ffmpeg, das nicht gefunden wurde; installieren Sie es zuerst (unter Debian: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="253"/>
         <source>The video carries the soundtrack, trimmed to the frames exported.</source>
         <translation>Das Video enthält die Tonspur, zugeschnitten auf die exportierten Bilder.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="254"/>
-        <source>This format has no sound: the soundtrack is left out (MP4 and WebM carry it).</source>
-        <translation>Dieses Format hat keinen Ton: die Tonspur wird weggelassen (MP4 und WebM enthalten sie).</translation>
+        <location filename="../ui/src/export/export_dialog.cpp" line="255"/>
+        <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
+        <translation>Die Seite enthält die Tonspur; sie läuft mit den Bildern, sobald der Betrachter auf Abspielen klickt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="297"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="257"/>
+        <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
+        <translation>Dieses Format hat keinen Ton: die Tonspur wird weggelassen (MP4, WebM und HTML enthalten sie).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="300"/>
         <source>Export to Folder</source>
         <translation>In Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="301"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="304"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>

@@ -659,7 +659,7 @@
     <name>Export</name>
     <message>
         <location filename="../model/src/export/export_encoded.cpp" line="37"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>la mémoire est insuffisante pour en faire le rendu</translation>
@@ -675,28 +675,28 @@
         <translation>ffmpeg s&apos;est terminé sans écrire le fichier %1&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="152"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="168"/>
         <source>Flipbook</source>
         <translation>Folioscope</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="162"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="180"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="191"/>
         <source>Play</source>
         <translation>Lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="164"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="182"/>
         <source>Loop</source>
         <translation>Boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="167"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="185"/>
         <source>Frame</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="171"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="192"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -2522,13 +2522,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="300"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="303"/>
         <source>Export Animation</source>
         <translation>Exporter l&apos;animation</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="288"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
         <source>untitled</source>
         <translation>sans titre</translation>
     </message>
@@ -2688,22 +2688,27 @@
         <translation>Ce format nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le d&apos;abord (sous Debian&#xa0;: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="253"/>
         <source>The video carries the soundtrack, trimmed to the frames exported.</source>
         <translation>La vidéo porte la bande son, coupée aux images exportées.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="254"/>
-        <source>This format has no sound: the soundtrack is left out (MP4 and WebM carry it).</source>
-        <translation>Ce format n&apos;a pas de son : la bande son est laissée de côté (MP4 et WebM la portent).</translation>
+        <location filename="../ui/src/export/export_dialog.cpp" line="255"/>
+        <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
+        <translation>La page porte la bande son ; elle joue avec les images dès que le spectateur appuie sur Lecture.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="297"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="257"/>
+        <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
+        <translation>Ce format n'a pas de son : la bande son est laissée de côté (MP4, WebM et HTML la portent).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="300"/>
         <source>Export to Folder</source>
         <translation>Exporter dans un dossier</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="301"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="304"/>
         <source>%1 files (*.%2)</source>
         <translation>Fichiers %1 (*.%2)</translation>
     </message>

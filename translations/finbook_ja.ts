@@ -658,7 +658,7 @@
     <name>Export</name>
     <message>
         <location filename="../model/src/export/export_encoded.cpp" line="37"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>描画に必要なメモリが足りません</translation>
@@ -674,28 +674,28 @@
         <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="152"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="168"/>
         <source>Flipbook</source>
         <translation>パラパラ漫画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="162"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="180"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="191"/>
         <source>Play</source>
         <translation>再生</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="164"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="182"/>
         <source>Loop</source>
         <translation>ループ</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="167"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="185"/>
         <source>Frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="171"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="192"/>
         <source>Pause</source>
         <translation>一時停止</translation>
     </message>
@@ -2512,13 +2512,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="300"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="303"/>
         <source>Export Animation</source>
         <translation>アニメーションの書き出し</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="288"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
@@ -2678,22 +2678,27 @@
         <translation>この形式には ffmpeg プログラムが必要ですが、見つかりませんでした。先にインストールしてください（Debian の場合: apt install ffmpeg）。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="253"/>
         <source>The video carries the soundtrack, trimmed to the frames exported.</source>
         <translation>動画には書き出すフレームに合わせて切り出したサウンドトラックが入ります。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="254"/>
-        <source>This format has no sound: the soundtrack is left out (MP4 and WebM carry it).</source>
-        <translation>この形式には音声がありません。サウンドトラックは含まれません(MP4 と WebM には入ります)。</translation>
+        <location filename="../ui/src/export/export_dialog.cpp" line="255"/>
+        <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
+        <translation>ページにはサウンドトラックが入ります。閲覧者が再生を押すとフレームと一緒に再生されます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="297"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="257"/>
+        <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
+        <translation>この形式には音声がありません。サウンドトラックは含まれません(MP4、WebM、HTML には入ります)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="300"/>
         <source>Export to Folder</source>
         <translation>フォルダーに書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="301"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="304"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>

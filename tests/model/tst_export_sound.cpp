@@ -46,6 +46,7 @@ private slots:
     void videoCarriesTheRangesSound_data();
     void videoCarriesTheRangesSound();
     void noAudioWithoutSound();
+    void flipbookEmbedsTheSound();
 
 private:
     QString exportTo(ExportFormat format, const QString &name, int first, int last);
@@ -141,6 +142,35 @@ void TestExportSound::noAudioWithoutSound()
     // No temporaries are left beside the target.
     for (const QString &file : test::filesIn(m_dir.path()))
         QVERIFY2(!file.startsWith(QLatin1Char('.')), qPrintable(file));
+}
+
+void TestExportSound::flipbookEmbedsTheSound()
+{
+    const QString page = exportTo(ExportFormat::Html, QStringLiteral("a.html"), 2, 9);
+    QVERIFY(!page.isEmpty());
+    QFile f(page);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray html = f.readAll();
+    QVERIFY(html.contains("media-src data:"));
+    const QByteArray marker = "<audio id=\"sound\" preload=\"auto\" src=\"data:audio/wav;base64,";
+    const qsizetype at = html.indexOf(marker);
+    QVERIFY(at > 0);
+    const qsizetype end = html.indexOf('"', at + marker.size());
+    auto sound = model::decodeSound(
+        QByteArray::fromBase64(html.mid(at + marker.size(), end - at - marker.size())));
+    QVERIFY(sound);
+    QVERIFY(std::abs(sound->seconds() - 8.0 / 12) < 0.01);
+    QVERIFY(peak(*sound, 0.02, 0.3) < 0.02f);
+    QVERIFY(peak(*sound, 0.36, 0.64) > 0.2f);
+    // Muted: no sound, no media source allowed.
+    m_source.sound[0].muted = true;
+    const QString silent = exportTo(ExportFormat::Html, QStringLiteral("muted.html"), 2, 9);
+    m_source.sound[0].muted = false;
+    QFile g(silent);
+    QVERIFY(g.open(QIODevice::ReadOnly));
+    const QByteArray quiet = g.readAll();
+    QVERIFY(!quiet.contains("<audio"));
+    QVERIFY(!quiet.contains("media-src"));
 }
 
 QTEST_GUILESS_MAIN(TestExportSound)

@@ -37,7 +37,32 @@ bool exportHasSound(const ExportSource &source, const ExportOptions &options)
                        [](const SoundClip &c) { return !c.muted && c.volume > 0.0; });
 }
 
+bool flipbookHasSound(const ExportSource &source)
+{
+    return std::any_of(source.sound.begin(), source.sound.end(),
+                       [](const SoundClip &c) { return !c.muted && c.volume > 0.0; });
+}
+
+namespace {
+std::vector<float> rangeMix(const ExportSource &source, const ExportPlan &plan);
+} // namespace
+
 QByteArray exportSoundtrackWav(const ExportSource &source, const ExportPlan &plan)
+{
+    return wavBytes(rangeMix(source, plan), kSoundRate, kSoundChannels);
+}
+
+QByteArray flipbookSoundtrackWav(const ExportSource &source, const ExportPlan &plan)
+{
+    const std::vector<float> mix = rangeMix(source, plan);
+    std::vector<float> small(mix.size() / 4);
+    for (std::size_t i = 0; i < small.size(); ++i)
+        small[i] = 0.25f * (mix[4 * i] + mix[4 * i + 1] + mix[4 * i + 2] + mix[4 * i + 3]);
+    return wavBytes(small, kSoundRate / 2, 1);
+}
+
+namespace {
+std::vector<float> rangeMix(const ExportSource &source, const ExportPlan &plan)
 {
     const auto [from, count] = sampleRange(source, plan);
     std::unordered_map<Id, DecodedSoundPtr> sounds;
@@ -54,8 +79,11 @@ QByteArray exportSoundtrackWav(const ExportSource &source, const ExportPlan &pla
         const auto it = sounds.find(id);
         return it == sounds.end() ? nullptr : it->second;
     };
-    return mixToWav(source.sound, lookup, source.settings.fps, from, count);
+    std::vector<float> mix(std::size_t(std::max<qint64>(0, count)) * kSoundChannels, 0.0f);
+    mixSoundtrack(source.sound, lookup, source.settings.fps, from, count, mix.data());
+    return mix;
 }
+} // namespace
 
 QStringList soundInputArguments(const QString &wavPath)
 {

@@ -19,6 +19,11 @@ bool exportHasSound(const ExportSource &source, const ExportOptions &options);
 // not decode are left silent.
 QByteArray exportSoundtrackWav(const ExportSource &source, const ExportPlan &plan);
 
+// Whether an HTML flipbook of `source` carries sound (an unmuted clip).
+bool flipbookHasSound(const ExportSource &source);
+// The same mix, smaller for embedding in a page: mono at half the rate (24 kHz, 48 KB a second).
+QByteArray flipbookSoundtrackWav(const ExportSource &source, const ExportPlan &plan);
+
 // ffmpeg arguments for the sound input at `wavPath` (after the frames' input) and for its
 // encoding into `format`'s audio codec (before the output).
 QStringList soundInputArguments(const QString &wavPath);

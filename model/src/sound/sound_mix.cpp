@@ -78,7 +78,12 @@ QByteArray mixToWav(const std::vector<SoundClip> &clips, const SoundLookup &look
     count = std::max<qint64>(0, count);
     std::vector<float> mix(std::size_t(count) * kSoundChannels, 0.0f);
     mixSoundtrack(clips, lookup, fps, from, count, mix.data());
-    const quint32 dataBytes = quint32(mix.size() * 2);
+    return wavBytes(mix, kSoundRate, kSoundChannels);
+}
+
+QByteArray wavBytes(const std::vector<float> &samples, int rate, int channels)
+{
+    const quint32 dataBytes = quint32(samples.size() * 2);
     QByteArray wav(44 + qsizetype(dataBytes), '\0');
     char *p = wav.data();
     const auto u32 = [&p](quint32 v) {
@@ -99,14 +104,14 @@ QByteArray mixToWav(const std::vector<SoundClip> &clips, const SoundLookup &look
     text("fmt ");
     u32(16);
     u16(1); // PCM
-    u16(kSoundChannels);
-    u32(kSoundRate);
-    u32(kSoundRate * kSoundChannels * 2);
-    u16(kSoundChannels * 2);
+    u16(quint16(channels));
+    u32(quint32(rate));
+    u32(quint32(rate * channels * 2));
+    u16(quint16(channels * 2));
     u16(16);
     text("data");
     u32(dataBytes);
-    for (float s : mix)
+    for (float s : samples)
         u16(quint16(qint16(std::lround(std::clamp(s, -1.0f, 1.0f) * 32767.0f))));
     return wav;
 }

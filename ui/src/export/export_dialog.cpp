@@ -248,11 +248,14 @@ void ExportDialog::updateFields()
         m_status->setText(tr("This format needs the ffmpeg program, which was not found; "
                              "install it (on Debian: apt install ffmpeg) first."));
     else if (!m_doc.soundtrack().isEmpty() && !isExporting())
-        m_status->setText(format == ExportFormat::Mp4 || format == ExportFormat::WebM
-                              ? tr("The video carries the soundtrack, trimmed to the frames "
-                                   "exported.")
-                              : tr("This format has no sound: the soundtrack is left out (MP4 "
-                                   "and WebM carry it)."));
+        m_status->setText(
+            format == ExportFormat::Mp4 || format == ExportFormat::WebM
+                ? tr("The video carries the soundtrack, trimmed to the frames exported.")
+            : format == ExportFormat::Html
+                ? tr("The page carries the soundtrack; it plays with the frames once the viewer "
+                     "presses Play.")
+                : tr("This format has no sound: the soundtrack is left out (MP4, WebM and HTML "
+                     "carry it)."));
     else if (!isExporting())
         m_status->clear();
 }

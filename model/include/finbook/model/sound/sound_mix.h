@@ -27,6 +27,9 @@ void mixSoundtrack(const std::vector<SoundClip> &clips, const SoundLookup &looku
 QByteArray mixToWav(const std::vector<SoundClip> &clips, const SoundLookup &lookup, int fps,
                     qint64 from, qint64 count);
 
+// A 16-bit WAV file of `samples` (interleaved, `channels` per frame, -1 … 1) at `rate` Hz.
+QByteArray wavBytes(const std::vector<float> &samples, int rate, int channels);
+
 // Whether any unmuted clip sounds anywhere in samples [from, from + count).
 bool soundtrackSoundsIn(const std::vector<SoundClip> &clips, const SoundLookup &lookup, int fps,
                         qint64 from, qint64 count);
