@@ -62,7 +62,7 @@ inline void renderSome(const LoadedDocument &doc)
 inline void roundTrip(LoadedDocument &doc, const char *what)
 {
     Document d;
-    d.reset(std::move(doc.frames), doc.settings, doc.nextId);
+    adoptLoadedDocument(d, std::move(doc)); // the sound clips too
     const QByteArray again = serializeFinbook(d);
     auto reread = readFinbook(again);
     if (!reread)
@@ -70,7 +70,7 @@ inline void roundTrip(LoadedDocument &doc, const char *what)
                      qPrintable(reread.error().message));
     check(bool(reread), what);
     Document e;
-    e.reset(std::move(reread->frames), reread->settings, reread->nextId);
+    adoptLoadedDocument(e, std::move(*reread));
     check(serializeFinbook(e) == again, "save -> open -> save is byte-identical");
 }
 
