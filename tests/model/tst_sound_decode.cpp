@@ -180,6 +180,9 @@ void TestSoundDecode::cacheDecodesOffTheGuiThread()
     delete gone;
     cache.waitForIdle();
     QVERIFY(cache.sound(later));
+    // A new document drops what the old one's clips needed.
+    doc.reset({}, DocumentSettings(), 1);
+    QVERIFY(!cache.sound(good) && !cache.sound(later));
 }
 
 QTEST_GUILESS_MAIN(TestSoundDecode)

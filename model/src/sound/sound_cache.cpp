@@ -13,6 +13,11 @@ SoundCache::SoundCache(Document *document, QObject *parent)
 {
     m_pool.setMaxThreadCount(1);
     connect(&document->soundtrack(), &Soundtrack::clipsChanged, this, &SoundCache::requestAll);
+    connect(document, &Document::documentReset, this, [this] {
+        for (auto it = m_entries.begin(); it != m_entries.end();)
+            it = it->pending || m_doc->soundtrack().clip(it.key()) ? std::next(it)
+                                                                   : m_entries.erase(it);
+    });
     requestAll();
 }
 

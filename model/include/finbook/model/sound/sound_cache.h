@@ -1,5 +1,6 @@
 // SoundCache: decoded PCM and waveforms of the soundtrack's clips, computed once per clip on a
-// worker thread and kept until the clip leaves the document for good.
+// worker thread. A deleted clip stays cached (undo may bring it back) until the document is
+// reset (New, Open), which clears the undo history.
 //
 // A clip's bytes never change under its id, so the id is the cache key. The GUI thread asks
 // (request) and is told when the work is done (soundReady / soundFailed); it never waits.
