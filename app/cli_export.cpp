@@ -307,7 +307,7 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
                     ExitCode::Failure);
     options.title = QFileInfo(input).completeBaseName();
     const model::ExportSource source{std::move(loaded->frames), loaded->settings,
-                                     std::move(loaded->reference)};
+                                     std::move(loaded->reference), std::move(loaded->sound)};
     const auto result = model::exportAnimation(
         source, options, exportProgress(QFileInfo(native.shown(options.target)).fileName()));
     clearProgressLine();

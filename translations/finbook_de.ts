@@ -249,6 +249,36 @@
         <source>Close Gaps</source>
         <translation>Lücken schließen</translation>
     </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="18"/>
+        <source>Import Sound</source>
+        <translation>Ton importieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="37"/>
+        <source>Delete Sound</source>
+        <translation>Ton löschen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="77"/>
+        <source>Move Sound</source>
+        <translation>Ton verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="79"/>
+        <source>Change Sound Volume</source>
+        <translation>Lautstärke ändern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
+        <source>Mute Sound</source>
+        <translation>Ton stummschalten</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
+        <source>Unmute Sound</source>
+        <translation>Stummschaltung aufheben</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -635,8 +665,8 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="36"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="37"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>es ist nicht genug Speicher vorhanden, um es zu rendern</translation>
@@ -647,33 +677,33 @@
         <translation>ihr Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="105"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="117"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg wurde beendet, ohne die Ausgabe als %1 zu schreiben; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="152"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="168"/>
         <source>Flipbook</source>
         <translation>Daumenkino</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="162"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="180"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="191"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="164"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="182"/>
         <source>Loop</source>
         <translation>Endlosschleife</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="167"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="185"/>
         <source>Frame</source>
         <translation>Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="171"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="192"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -783,22 +813,22 @@
         <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="42"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="74"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="75"/>
         <source>MP4 video</source>
         <translation>MP4-Video</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="92"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="93"/>
         <source>WebM video</source>
         <translation>WebM-Video</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="106"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="107"/>
         <source>animated PNG</source>
         <translation>animiertes PNG</translation>
     </message>
@@ -1024,27 +1054,27 @@
         <translation>%1 hat am Ende %2 unerwartete Bytes</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="33"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="34"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist unvollständig (vielleicht wurde ein Kopier- oder Speichervorgang unterbrochen); falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="39"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="40"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist beschädigt; falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="44"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="45"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 Die Datei ist beschädigt; Finbook kann öffnen, was davon noch lesbar ist, oder Sie öffnen die Sicherungskopie mit demselben Namen und angehängtem ~, falls es eine gibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="50"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="73"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
@@ -1074,43 +1104,43 @@
         <translation>der Ordner „%1“ existiert nicht</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="78"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="79"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="89"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>„%1“ kann nicht geöffnet werden: %2. Prüfen Sie, ob die Datei existiert und ob Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="130"/>
         <source>it is a folder</source>
         <translation>es ist ein Ordner</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="163"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>„%1“ kann nicht gelesen werden: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="143"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="144"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="174"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>„%1“ kann nicht geöffnet werden. %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="134"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>„%1“ kann nicht geöffnet werden: Es ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie eine .finbook-Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="152"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="153"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>„%1“ kann nicht geöffnet werden: Für die %2 MB der Datei ist nicht genug Arbeitsspeicher vorhanden. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="225"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
@@ -1191,161 +1221,166 @@
         <translation>Abschnitt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
         <source>the file&apos;s end is damaged</source>
         <translation>das Ende der Datei ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>ihre Länge (%1 Bytes) reicht über das Dateiende hinaus (%2 Bytes übrig), obwohl die Datei mit ihrer Endmarke endet; die Längenangabe ist also beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>die Datei endet mitten in diesem Abschnitt; sein vorhandener Inhalt wird gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
         <source>a section</source>
         <translation>ein Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>die Datei endet vor der Prüfsumme dieses Abschnitts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
         <source>a section checksum</source>
         <translation>eine Abschnittsprüfsumme</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>seine Prüfsumme stimmt nicht, seine Bytes wurden also nach dem Speichern verändert</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
         <source>the end marker</source>
         <translation>die Endmarke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
         <source>the file</source>
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="184"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <source>a sound clip comes before the frames</source>
+        <translation>ein Tonclip steht vor den Bildern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="195"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="258"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1631,22 +1666,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="368"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="382"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -1750,17 +1785,17 @@
         <translation>Skelettgelenk %1 hat einen unbekannten Sperrzustand</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
         <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
         <translation>%1 beschädigte Bytes konnten nicht gelesen werden; das Lesen wird mit Abschnitt %2 fortgesetzt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="56"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="57"/>
         <source>the last %1 bytes of the file are damaged and could not be read</source>
         <translation>die letzten %1 Bytes der Datei sind beschädigt und konnten nicht gelesen werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_recover.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="88"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>%n fehlende oder doppelte ID wurde durch eine neue ersetzt</numerusform>
@@ -1768,12 +1803,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="155"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="156"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>Die automatische Sicherung konnte keine Wiederherstellungskopie schreiben: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="38"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="40"/>
         <source>there is not enough memory</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden</translation>
     </message>
@@ -1842,6 +1877,63 @@
         <location filename="../model/src/reference/reference_section.cpp" line="83"/>
         <source>the reference layer is left out: %1</source>
         <translation>die Referenzebene wird weggelassen: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="17"/>
+        <source>sound clip %1</source>
+        <translation>Tonclip %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="20"/>
+        <location filename="../model/src/sound/sound_section.cpp" line="34"/>
+        <location filename="../model/src/sound/sound_section.cpp" line="79"/>
+        <source>the sound clip</source>
+        <translation>der Tonclip</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="24"/>
+        <source>%1; the sound clip is left out</source>
+        <translation>%1; der Tonclip wird weggelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="32"/>
+        <source>the file holds more than %1 sound clips</source>
+        <translation>die Datei enthält mehr als %1 Tonclips</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="39"/>
+        <source>the sound starts at %1, outside 0 to %2</source>
+        <translation>der Ton beginnt bei %1, außerhalb von 0 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="46"/>
+        <source>the sound&apos;s volume %1 is outside 0 to %2</source>
+        <translation>die Lautstärke %1 des Tons liegt außerhalb von 0 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="54"/>
+        <source>the sound flags 0x%1 are unknown</source>
+        <translation>die Ton-Flags 0x%1 sind unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="58"/>
+        <source>the sound&apos;s name is %1 bytes long (at most %2)</source>
+        <translation>der Name des Tons ist %1 Byte lang (höchstens %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="68"/>
+        <source>the sound&apos;s name is not valid UTF-8 text</source>
+        <translation>der Name des Tons ist kein gültiger UTF-8-Text</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="72"/>
+        <source>the sound is %1 MB long (at most %2 MB)</source>
+        <translation>der Ton ist %1 MB groß (höchstens %2 MB)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="76"/>
+        <source>the sound clip holds no sound</source>
+        <translation>der Tonclip enthält keinen Ton</translation>
     </message>
 </context>
 <context>
@@ -2011,6 +2103,52 @@
     </message>
 </context>
 <context>
+    <name>Sound</name>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="90"/>
+        <source>The file is not a sound Finbook can read (WAV, FLAC, MP3, Ogg, Opus, AAC or M4A), or it is damaged.</source>
+        <translation>Die Datei ist kein Ton, den Finbook lesen kann (WAV, FLAC, MP3, Ogg, Opus, AAC oder M4A), oder sie ist beschädigt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="137"/>
+        <source>The file is empty.</source>
+        <translation>Die Datei ist leer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="139"/>
+        <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
+        <translation>Die Datei ist unvollständig: ihre Tondaten brechen ab. Importieren Sie die vollständige Datei.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="147"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="151"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="155"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="181"/>
+        <source>There is not enough memory to read the sound.</source>
+        <translation>Zum Lesen des Tons ist nicht genug Speicher vorhanden.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="165"/>
+        <source>The file holds no sound Finbook can play.</source>
+        <translation>Die Datei enthält keinen Ton, den Finbook abspielen kann.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="214"/>
+        <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
+        <translation>Der Ton ist länger als %1 Minuten, die längste Dauer, die Finbook abspielt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="218"/>
+        <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
+        <translation>Die Datei enthält keinen Ton, den Finbook abspielen kann (es ließ sich kein Ton daraus dekodieren).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
+        <translation>Die Datei ist unvollständig: sie kündigt %1 s Ton an, enthält aber nur %2 s. Importieren Sie die vollständige Datei.</translation>
+    </message>
+</context>
+<context>
     <name>StrokeEditing</name>
     <message>
         <location filename="../ui/src/tools/stroke_editing.cpp" line="119"/>
@@ -2067,22 +2205,22 @@
         <translation>es ist keine gewöhnliche Datei</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="326"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="329"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Für „%1“ kann keine Vorschau erstellt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="349"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>eine Prüfsumme stimmt nicht, die Datei ist also beschädigt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>sie enthält Daten, die diese Version von Finbook nicht kennt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="354"/>
         <source>the file is damaged or incomplete.</source>
         <translation>die Datei ist beschädigt oder unvollständig.</translation>
     </message>
@@ -2553,59 +2691,59 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="307"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="59"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="318"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="67"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="306"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>Animated GIF</source>
         <translation>Animiertes GIF</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>MP4 video (H.264)</source>
         <translation>MP4-Video (H.264)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>WebM video (VP9)</source>
         <translation>WebM-Video (VP9)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>Animated PNG (APNG)</source>
         <translation>Animiertes PNG (APNG)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>HTML flipbook (one file)</source>
         <translation>HTML-Daumenkino (eine Datei)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
         <source>PNG images (a folder)</source>
         <translation>PNG-Bilder (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
         <source>SVG vector images (a folder)</source>
         <translation>SVG-Vektorbilder (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>3D-Modell (OBJ), das aktuelle Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="87"/>
         <source>3D model (glTF binary), the current frame</source>
         <translation>Finbook, ein Daumenkino-Animationseditor.
 
@@ -2619,142 +2757,157 @@
   finbook thumbnail FILE OUT.png SIZE   das erste Einzelbild als PNG von höchstens SIZE px schreiben</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>&amp;Browse...</source>
         <translation>&amp;Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>Play range</source>
         <translation>Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
         <source>All frames</source>
         <translation>Alle Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="95"/>
         <source>Frames</source>
         <translation>Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Document background</source>
         <translation>Dokumenthintergrund</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
         <source>Start again after the last frame</source>
         <translation>Nach dem letzten Einzelbild wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Eine Datei pro Zeichnung, mit Timing-Sheet</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="119"/>
         <source>Include refere&amp;nce</source>
         <translation>Refere&amp;nz einschließen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="120"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="121"/>
         <source>Paint the reference picture or video under the drawing (not in SVG or 3D)</source>
         <translation>Das Referenzbild oder -video unter die Zeichnung malen (nicht bei SVG oder 3D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="139"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="141"/>
         <source>to</source>
         <translation>bis</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
         <source>&amp;Save to:</source>
         <translation>&amp;Speichern in:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
         <source>F&amp;rames:</source>
         <translation>Einzel&amp;bilder:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>Sc&amp;ale:</source>
         <translation>S&amp;kalierung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>&amp;Background:</source>
         <translation>&amp;Hintergrund:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>Frame ra&amp;te:</source>
         <translation>Bild&amp;rate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
         <source>Loop:</source>
         <translation>Endlosschleife:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="165"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="167"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="166"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="168"/>
         <source>Cancel Export</source>
         <translation>Export abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="249"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 × %2 Pixel</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="250"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, mit einer .mtl-Datei daneben. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="255"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="257"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, alles in einer Datei. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="262"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Dieses Format benötigt das Programm ffmpeg, das nicht gefunden wurde; installieren Sie es zuerst (unter Debian: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="304"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="267"/>
+        <source>The video carries the soundtrack, trimmed to the frames exported.</source>
+        <translation>Das Video enthält die Tonspur, zugeschnitten auf die exportierten Bilder.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
+        <translation>Die Seite enthält die Tonspur; sie läuft mit den Bildern, sobald der Betrachter auf Abspielen klickt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
+        <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
+        <translation>Dieses Format hat keinen Ton: die Tonspur wird weggelassen (MP4, WebM und HTML enthalten sie).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="315"/>
         <source>Export to Folder</source>
         <translation>In Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="308"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="319"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>
@@ -3025,58 +3178,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window.cpp" line="147"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="170"/>
+        <location filename="../ui/src/window/main_window.cpp" line="172"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window.cpp" line="173"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window.cpp" line="176"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="182"/>
+        <location filename="../ui/src/window/main_window.cpp" line="184"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window.cpp" line="185"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="219"/>
+        <location filename="../ui/src/window/main_window.cpp" line="221"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window.cpp" line="232"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="231"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="236"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window.cpp" line="239"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -3092,22 +3245,22 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="73"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="91"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="90"/>
         <source>Cannot Open File</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="125"/>
         <source>Cannot Save File</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="133"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="131"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="99"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Problem behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
@@ -3115,288 +3268,288 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="181"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="190"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="200"/>
         <source>Cannot Import Mesh</source>
         <translation>Netz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="206"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="228"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
         <source>Damaged File</source>
         <translation>Beschädigte Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="227"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
         <source>Open Anyway</source>
         <translation>Trotzdem öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="243"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="241"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="247"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="254"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="46"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="52"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="59"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="61"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="96"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="102"/>
         <source>Import Re&amp;ference...</source>
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
         <source>Import Reference</source>
         <translation>Referenz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="121"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="142"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="149"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="168"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="175"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="196"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="221"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="264"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="287"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="311"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="312"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -3496,7 +3649,7 @@
         <translation>Wiederherstellung nicht möglich</translation>
     </message>
     <message>
-        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="73"/>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="72"/>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
         <translation>%1 mit dem Stand vom %2 wiederhergestellt; speichern Sie die Animation, um sie zu behalten.</translation>
     </message>
@@ -3701,28 +3854,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="64"/>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
         <source>Pl&amp;ay</source>
         <translation>Abs&amp;pielen</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="68"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
         <source>Play or pause the animation</source>
         <translation>Animation abspielen oder anhalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="76"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="85"/>
         <source>L&amp;oop</source>
         <translation>&amp;Endlosschleife</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="80"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="89"/>
         <source>Start again at the end of the play range</source>
         <translation>Am Ende des Wiedergabebereichs wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
         <source>P&amp;ause</source>
         <translation>&amp;Pause</translation>
     </message>
@@ -4108,39 +4261,170 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::SoundController</name>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="40"/>
+        <source>Import Soun&amp;d...</source>
+        <translation>&amp;Ton importieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
+        <source>Add a sound file to the soundtrack, starting at the current frame</source>
+        <translation>Eine Tondatei zur Tonspur hinzufügen, beginnend beim aktuellen Bild</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="45"/>
+        <source>Import Sound</source>
+        <translation>Ton importieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="46"/>
+        <source>Sound files (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;All files (*)</source>
+        <translation>Tondateien (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="57"/>
+        <source>The sound &quot;%1&quot; cannot be played: %2</source>
+        <translation>Der Ton „%1“ kann nicht abgespielt werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="118"/>
+        <source>Cannot Import Sound</source>
+        <translation>Ton kann nicht importiert werden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>„%1“ kann nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="81"/>
+        <source>it is not a file.</source>
+        <translation>es ist keine Datei.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="85"/>
+        <source>it is larger than %1 MB.</source>
+        <translation>sie ist größer als %1 MB.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="94"/>
+        <source>Reading &quot;%1&quot;…</source>
+        <translation>„%1“ wird gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="119"/>
+        <source>Cannot import &quot;%1&quot;: %2 Nothing was changed.</source>
+        <translation>„%1“ kann nicht importiert werden: %2 Es wurde nichts geändert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="132"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="134"/>
+        <source>Imported &quot;%1&quot; (%2 s).</source>
+        <translation>„%1“ importiert (%2 s).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <source>Sound Volume</source>
+        <translation>Lautstärke</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <source>Volume of &quot;%1&quot; (%):</source>
+        <translation>Lautstärke von „%1“ (%):</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SoundPlayer</name>
+    <message>
+        <location filename="../ui/src/sound/sound_player.cpp" line="65"/>
+        <source>No audio output was found: playing without sound.</source>
+        <translation>Keine Audioausgabe gefunden: Wiedergabe ohne Ton.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_player.cpp" line="76"/>
+        <source>The audio output failed: playing without sound.</source>
+        <translation>Die Audioausgabe ist fehlgeschlagen: Wiedergabe ohne Ton.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SoundRow</name>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="36"/>
+        <source>The soundtrack: drag a sound to move it, right click for its volume</source>
+        <translation>Die Tonspur: einen Ton ziehen, um ihn zu verschieben, Rechtsklick für seine Lautstärke</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="130"/>
+        <source>No sound: File → Import Sound…</source>
+        <translation>Kein Ton: Datei → Ton importieren…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="186"/>
+        <source>%1 (cannot be played)</source>
+        <translation>%1 (nicht abspielbar)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="188"/>
+        <source>%1 (reading…)</source>
+        <translation>%1 (wird gelesen…)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="190"/>
+        <source>%1 (muted)</source>
+        <translation>%1 (stumm)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="266"/>
+        <source>&amp;Mute</source>
+        <translation>&amp;Stumm</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="271"/>
+        <source>&amp;Volume...</source>
+        <translation>&amp;Lautstärke...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="273"/>
+        <source>Delete &amp;Sound</source>
+        <translation>Ton &amp;löschen</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="68"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="74"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="69"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="75"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>Benachbarte Einzelbilder beim Zeichnen blass anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
         <source>Before:</source>
         <translation>Davor:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="86"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>Wie viele vorherige Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="87"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="93"/>
         <source>After:</source>
         <translation>Danach:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="88"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="94"/>
         <source>How many later frames the onion skin shows</source>
         <translation>Wie viele folgende Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="119"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="125"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Einzelbild %1 von %2 · %3 fps</translation>
     </message>

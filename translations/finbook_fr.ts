@@ -249,6 +249,36 @@
         <source>Close Gaps</source>
         <translation>Fermer les trous</translation>
     </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="18"/>
+        <source>Import Sound</source>
+        <translation>Importer un son</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="37"/>
+        <source>Delete Sound</source>
+        <translation>Supprimer le son</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="77"/>
+        <source>Move Sound</source>
+        <translation>Déplacer le son</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="79"/>
+        <source>Change Sound Volume</source>
+        <translation>Changer le volume du son</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
+        <source>Mute Sound</source>
+        <translation>Couper le son</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
+        <source>Unmute Sound</source>
+        <translation>Rétablir le son</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -635,8 +665,8 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="36"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="37"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>la mémoire est insuffisante pour en faire le rendu</translation>
@@ -647,33 +677,33 @@
         <translation>son dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="105"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="117"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg s&apos;est terminé sans écrire le fichier %1&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="152"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="168"/>
         <source>Flipbook</source>
         <translation>Folioscope</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="162"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="180"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="191"/>
         <source>Play</source>
         <translation>Lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="164"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="182"/>
         <source>Loop</source>
         <translation>Boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="167"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="185"/>
         <source>Frame</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="171"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="192"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -783,22 +813,22 @@
         <translation>Choisissez où exporter l&apos;animation.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="42"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="74"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="75"/>
         <source>MP4 video</source>
         <translation>vidéo MP4</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="92"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="93"/>
         <source>WebM video</source>
         <translation>vidéo WebM</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="106"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="107"/>
         <source>animated PNG</source>
         <translation>PNG animé</translation>
     </message>
@@ -1024,27 +1054,27 @@
         <translation>%1 se termine par %2 octets inattendus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="33"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="34"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Le fichier est incomplet (copie ou enregistrement interrompu&#xa0;?)&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="39"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="40"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Le fichier est endommagé&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="44"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="45"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 Le fichier est endommagé&#xa0;; Finbook peut en ouvrir ce qui reste lisible, ou vous pouvez ouvrir la sauvegarde du même nom terminée par ~, s&apos;il en existe une.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="50"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="73"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
@@ -1074,43 +1104,43 @@
         <translation>le dossier «&#xa0;%1&#xa0;» n&apos;existe pas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="78"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="79"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="89"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: %2. Vérifiez que le fichier existe et que vous avez le droit de le lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="130"/>
         <source>it is a folder</source>
         <translation>c&apos;est un dossier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="163"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>Impossible de lire «&#xa0;%1&#xa0;»&#xa0;: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="143"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="144"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="174"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;». %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="134"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: c&apos;est un périphérique, un tube ou un socket, pas un fichier. Choisissez un fichier .finbook.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="152"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="153"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante pour ses %2&#xa0;Mo. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="225"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
@@ -1191,161 +1221,166 @@
         <translation>section %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
         <source>the file&apos;s end is damaged</source>
         <translation>la fin du fichier est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>sa longueur (%1 octets) dépasse la fin du fichier (%2 octets restants), alors que le fichier se termine par sa marque de fin&#xa0;: la longueur est donc endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>le fichier s&apos;arrête au milieu de cette section (%1 octets annoncés, %2 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>le fichier s&apos;arrête au milieu de cette section&#xa0;; ce qu&apos;elle contient est lu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
         <source>a section</source>
         <translation>une section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>le fichier s&apos;arrête avant la somme de contrôle de cette section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
         <source>a section checksum</source>
         <translation>une somme de contrôle de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>sa somme de contrôle ne correspond pas, ses octets ont donc changé après l&apos;enregistrement</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
         <source>the end marker</source>
         <translation>le marqueur de fin</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
         <source>the file</source>
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="184"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <source>a sound clip comes before the frames</source>
+        <translation>un extrait sonore précède les images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="195"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="258"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1631,22 +1666,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="368"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="382"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -1750,17 +1785,17 @@
         <translation>l’articulation %1 du squelette a un état de verrouillage inconnu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
         <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
         <translation>%1 octets endommagés n&apos;ont pas pu être lus&#xa0;; la lecture reprend à la section %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="56"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="57"/>
         <source>the last %1 bytes of the file are damaged and could not be read</source>
         <translation>les %1 derniers octets du fichier sont endommagés et n&apos;ont pas pu être lus</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_recover.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="88"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>%n identifiant manquant ou en double a été remplacé par un nouveau</numerusform>
@@ -1768,12 +1803,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="155"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="156"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>L&apos;enregistrement automatique n&apos;a pas pu écrire de copie de récupération&#xa0;: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="38"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="40"/>
         <source>there is not enough memory</source>
         <translation>la mémoire est insuffisante</translation>
     </message>
@@ -1842,6 +1877,63 @@
         <location filename="../model/src/reference/reference_section.cpp" line="83"/>
         <source>the reference layer is left out: %1</source>
         <translation>le calque de référence est laissé de côté : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="17"/>
+        <source>sound clip %1</source>
+        <translation>extrait sonore %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="20"/>
+        <location filename="../model/src/sound/sound_section.cpp" line="34"/>
+        <location filename="../model/src/sound/sound_section.cpp" line="79"/>
+        <source>the sound clip</source>
+        <translation>l&apos;extrait sonore</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="24"/>
+        <source>%1; the sound clip is left out</source>
+        <translation>%1 ; l&apos;extrait sonore est laissé de côté</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="32"/>
+        <source>the file holds more than %1 sound clips</source>
+        <translation>le fichier contient plus de %1 extraits sonores</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="39"/>
+        <source>the sound starts at %1, outside 0 to %2</source>
+        <translation>le son commence à %1, hors de 0 à %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="46"/>
+        <source>the sound&apos;s volume %1 is outside 0 to %2</source>
+        <translation>le volume %1 du son est hors de 0 à %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="54"/>
+        <source>the sound flags 0x%1 are unknown</source>
+        <translation>les indicateurs du son 0x%1 sont inconnus</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="58"/>
+        <source>the sound&apos;s name is %1 bytes long (at most %2)</source>
+        <translation>le nom du son fait %1 octets (au plus %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="68"/>
+        <source>the sound&apos;s name is not valid UTF-8 text</source>
+        <translation>le nom du son n&apos;est pas un texte UTF-8 valide</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="72"/>
+        <source>the sound is %1 MB long (at most %2 MB)</source>
+        <translation>le son fait %1 Mo (au plus %2 Mo)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="76"/>
+        <source>the sound clip holds no sound</source>
+        <translation>l&apos;extrait sonore ne contient aucun son</translation>
     </message>
 </context>
 <context>
@@ -2011,6 +2103,52 @@
     </message>
 </context>
 <context>
+    <name>Sound</name>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="90"/>
+        <source>The file is not a sound Finbook can read (WAV, FLAC, MP3, Ogg, Opus, AAC or M4A), or it is damaged.</source>
+        <translation>Le fichier n&apos;est pas un son que Finbook sait lire (WAV, FLAC, MP3, Ogg, Opus, AAC ou M4A), ou il est endommagé.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="137"/>
+        <source>The file is empty.</source>
+        <translation>Le fichier est vide.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="139"/>
+        <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
+        <translation>Le fichier est incomplet : ses données sonores sont tronquées. Importez le fichier complet.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="147"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="151"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="155"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="181"/>
+        <source>There is not enough memory to read the sound.</source>
+        <translation>La mémoire est insuffisante pour lire le son.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="165"/>
+        <source>The file holds no sound Finbook can play.</source>
+        <translation>Le fichier ne contient aucun son que Finbook sait lire.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="214"/>
+        <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
+        <translation>Le son dure plus de %1 minutes, la plus longue durée que Finbook lit.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="218"/>
+        <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
+        <translation>Le fichier ne contient aucun son que Finbook sait lire (aucun son n&apos;a pu en être décodé).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
+        <translation>Le fichier est incomplet : il annonce %1 s de son mais n’en contient que %2 s. Importez le fichier complet.</translation>
+    </message>
+</context>
+<context>
     <name>StrokeEditing</name>
     <message>
         <location filename="../ui/src/tools/stroke_editing.cpp" line="119"/>
@@ -2067,22 +2205,22 @@
         <translation>ce n&apos;est pas un fichier ordinaire</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="326"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="329"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="349"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>une somme de contrôle ne correspond pas, le fichier est donc endommagé.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>il contient des données que cette version de Finbook ne connaît pas.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="354"/>
         <source>the file is damaged or incomplete.</source>
         <translation>le fichier est endommagé ou incomplet.</translation>
     </message>
@@ -2553,59 +2691,59 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="307"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="59"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="318"/>
         <source>Export Animation</source>
         <translation>Exporter l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="67"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="306"/>
         <source>untitled</source>
         <translation>sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>Animated GIF</source>
         <translation>GIF animé</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>MP4 video (H.264)</source>
         <translation>Vidéo MP4 (H.264)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>WebM video (VP9)</source>
         <translation>Vidéo WebM (VP9)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>Animated PNG (APNG)</source>
         <translation>PNG animé (APNG)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>HTML flipbook (one file)</source>
         <translation>Folioscope HTML (un seul fichier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
         <source>PNG images (a folder)</source>
         <translation>Images PNG (un dossier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
         <source>SVG vector images (a folder)</source>
         <translation>Images vectorielles SVG (un dossier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>Modèle 3D (OBJ), l&apos;image courante</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="87"/>
         <source>3D model (glTF binary), the current frame</source>
         <translation>Finbook, un éditeur d&apos;animation en folioscope.
 
@@ -2619,142 +2757,157 @@
   finbook thumbnail FILE OUT.png SIZE   écrire la première image en PNG d&apos;au plus SIZE px</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>&amp;Browse...</source>
         <translation>Parc&amp;ourir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>Play range</source>
         <translation>Plage de lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
         <source>All frames</source>
         <translation>Toutes les images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="95"/>
         <source>Frames</source>
         <translation>Images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Document background</source>
         <translation>Arrière-plan du document</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
         <source>Colour</source>
         <translation>Couleur</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source> fps</source>
         <translation> i/s</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
         <source>Start again after the last frame</source>
         <translation>Recommencer après la dernière image</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Un fichier par dessin, avec une feuille d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="119"/>
         <source>Include refere&amp;nce</source>
         <translation>Inclure la référe&amp;nce</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="120"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="121"/>
         <source>Paint the reference picture or video under the drawing (not in SVG or 3D)</source>
         <translation>Peindre l’image ou la vidéo de référence sous le dessin (pas en SVG ni en 3D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="139"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="141"/>
         <source>to</source>
         <translation>à</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
         <source>&amp;Save to:</source>
         <translation>Enregistrer &amp;dans&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
         <source>F&amp;rames:</source>
         <translation>&amp;Images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>Sc&amp;ale:</source>
         <translation>É&amp;chelle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>&amp;Background:</source>
         <translation>Arrière-&amp;plan&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>Frame ra&amp;te:</source>
         <translation>Fré&amp;quence d&apos;images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
         <source>Loop:</source>
         <translation>Boucle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="165"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="167"/>
         <source>&amp;Export</source>
         <translation>&amp;Exporter</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="166"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="168"/>
         <source>Cancel Export</source>
         <translation>Annuler l&apos;export</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="249"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 x %2 pixels</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="250"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, avec un fichier .mtl à côté. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="255"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="257"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, le tout dans un seul fichier. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="262"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Ce format nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le d&apos;abord (sous Debian&#xa0;: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="304"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="267"/>
+        <source>The video carries the soundtrack, trimmed to the frames exported.</source>
+        <translation>La vidéo porte la bande son, coupée aux images exportées.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
+        <translation>La page porte la bande son ; elle joue avec les images dès que le spectateur appuie sur Lecture.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
+        <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
+        <translation>Ce format n'a pas de son : la bande son est laissée de côté (MP4, WebM et HTML la portent).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="315"/>
         <source>Export to Folder</source>
         <translation>Exporter dans un dossier</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="308"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="319"/>
         <source>%1 files (*.%2)</source>
         <translation>Fichiers %1 (*.%2)</translation>
     </message>
@@ -3025,58 +3178,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window.cpp" line="147"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="170"/>
+        <location filename="../ui/src/window/main_window.cpp" line="172"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window.cpp" line="173"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window.cpp" line="176"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="182"/>
+        <location filename="../ui/src/window/main_window.cpp" line="184"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window.cpp" line="185"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="219"/>
+        <location filename="../ui/src/window/main_window.cpp" line="221"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window.cpp" line="232"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="231"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="236"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window.cpp" line="239"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -3107,22 +3260,22 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="73"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="91"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="90"/>
         <source>Cannot Open File</source>
         <translation>Impossible d&apos;ouvrir le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="125"/>
         <source>Cannot Save File</source>
         <translation>Impossible d&apos;enregistrer le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="133"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="131"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="99"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problème réparé)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
@@ -3130,288 +3283,288 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="181"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="190"/>
         <source>No recent files</source>
         <translation>Aucun fichier récent</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="200"/>
         <source>Cannot Import Mesh</source>
         <translation>Impossible d&apos;importer le maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="206"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="228"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
         <source>Damaged File</source>
         <translation>Fichier endommagé</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="227"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
         <source>Open Anyway</source>
         <translation>Ouvrir quand même</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>Unsaved Changes</source>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="243"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="241"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="247"/>
         <source>Open Animation</source>
         <translation>Ouvrir une animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
         <source>Save Animation</source>
         <translation>Enregistrer l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="254"/>
         <source>untitled.finbook</source>
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="46"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="52"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="59"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="61"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="96"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="102"/>
         <source>Import Re&amp;ference...</source>
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
         <source>Import Reference</source>
         <translation>Importer une référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="121"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="142"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="149"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="168"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="175"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="196"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="221"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="264"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="287"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="311"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="312"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
@@ -3496,7 +3649,7 @@
         <translation>Impossible de récupérer le travail</translation>
     </message>
     <message>
-        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="73"/>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="72"/>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
         <translation>%1 récupéré tel qu&apos;il était le %2&#xa0;; enregistrez-le pour le conserver.</translation>
     </message>
@@ -3701,28 +3854,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="64"/>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
         <source>Pl&amp;ay</source>
         <translation>&amp;Lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="68"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
         <source>Play or pause the animation</source>
         <translation>Lire l&apos;animation ou la mettre en pause</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="76"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="85"/>
         <source>L&amp;oop</source>
         <translation>Lecture en &amp;boucle</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="80"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="89"/>
         <source>Start again at the end of the play range</source>
         <translation>Recommencer au début à la fin de la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;use</translation>
     </message>
@@ -4108,39 +4261,170 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::SoundController</name>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="40"/>
+        <source>Import Soun&amp;d...</source>
+        <translation>Impor&amp;ter un son...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
+        <source>Add a sound file to the soundtrack, starting at the current frame</source>
+        <translation>Ajouter un fichier son à la bande son, à partir de l&apos;image actuelle</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="45"/>
+        <source>Import Sound</source>
+        <translation>Importer un son</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="46"/>
+        <source>Sound files (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;All files (*)</source>
+        <translation>Fichiers son (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="57"/>
+        <source>The sound &quot;%1&quot; cannot be played: %2</source>
+        <translation>Le son « %1 » ne peut pas être lu : %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="118"/>
+        <source>Cannot Import Sound</source>
+        <translation>Impossible d’importer le son</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>Impossible d’importer « %1 » : %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="81"/>
+        <source>it is not a file.</source>
+        <translation>ce n&apos;est pas un fichier.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="85"/>
+        <source>it is larger than %1 MB.</source>
+        <translation>il dépasse %1 Mo.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="94"/>
+        <source>Reading &quot;%1&quot;…</source>
+        <translation>Lecture de « %1 »…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="119"/>
+        <source>Cannot import &quot;%1&quot;: %2 Nothing was changed.</source>
+        <translation>Impossible d’importer « %1 » : %2 Rien n’a été modifié.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="132"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="134"/>
+        <source>Imported &quot;%1&quot; (%2 s).</source>
+        <translation>« %1 » importé (%2 s).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <source>Sound Volume</source>
+        <translation>Volume du son</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <source>Volume of &quot;%1&quot; (%):</source>
+        <translation>Volume de « %1 » (%) :</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SoundPlayer</name>
+    <message>
+        <location filename="../ui/src/sound/sound_player.cpp" line="65"/>
+        <source>No audio output was found: playing without sound.</source>
+        <translation>Aucune sortie audio trouvée : lecture sans son.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_player.cpp" line="76"/>
+        <source>The audio output failed: playing without sound.</source>
+        <translation>La sortie audio a échoué : lecture sans son.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SoundRow</name>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="36"/>
+        <source>The soundtrack: drag a sound to move it, right click for its volume</source>
+        <translation>La bande son : faites glisser un son pour le déplacer, clic droit pour son volume</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="130"/>
+        <source>No sound: File → Import Sound…</source>
+        <translation>Aucun son : Fichier → Importer un son…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="186"/>
+        <source>%1 (cannot be played)</source>
+        <translation>%1 (illisible)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="188"/>
+        <source>%1 (reading…)</source>
+        <translation>%1 (lecture…)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="190"/>
+        <source>%1 (muted)</source>
+        <translation>%1 (coupé)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="266"/>
+        <source>&amp;Mute</source>
+        <translation>&amp;Couper le son</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="271"/>
+        <source>&amp;Volume...</source>
+        <translation>&amp;Volume...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="273"/>
+        <source>Delete &amp;Sound</source>
+        <translation>&amp;Supprimer le son</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="68"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="74"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="69"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="75"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>Afficher les images voisines en transparence pendant le dessin</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
         <source>Before:</source>
         <translation>Avant&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="86"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>Nombre d&apos;images précédentes que montre la pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="87"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="93"/>
         <source>After:</source>
         <translation>Après&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="88"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="94"/>
         <source>How many later frames the onion skin shows</source>
         <translation>Nombre d&apos;images suivantes que montre la pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="119"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="125"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Image %1 sur %2 · %3 i/s</translation>
     </message>

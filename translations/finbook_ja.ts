@@ -249,6 +249,36 @@
         <source>Close Gaps</source>
         <translation>隙間を閉じる</translation>
     </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="18"/>
+        <source>Import Sound</source>
+        <translation>サウンドのインポート</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="37"/>
+        <source>Delete Sound</source>
+        <translation>サウンドの削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="77"/>
+        <source>Move Sound</source>
+        <translation>サウンドの移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="79"/>
+        <source>Change Sound Volume</source>
+        <translation>サウンドの音量変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
+        <source>Mute Sound</source>
+        <translation>サウンドをミュート</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
+        <source>Unmute Sound</source>
+        <translation>サウンドのミュート解除</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
@@ -634,8 +664,8 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="36"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="194"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="37"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
         <location filename="../model/src/export/export_sequence.cpp" line="93"/>
         <source>there is not enough memory to render it</source>
         <translation>描画に必要なメモリが足りません</translation>
@@ -646,33 +676,33 @@
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="105"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="117"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="152"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="168"/>
         <source>Flipbook</source>
         <translation>パラパラ漫画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="162"/>
-        <location filename="../model/src/export/export_flipbook.cpp" line="170"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="180"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="191"/>
         <source>Play</source>
         <translation>再生</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="164"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="182"/>
         <source>Loop</source>
         <translation>ループ</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="167"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="185"/>
         <source>Frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_flipbook.cpp" line="171"/>
+        <location filename="../model/src/export/export_flipbook.cpp" line="192"/>
         <source>Pause</source>
         <translation>一時停止</translation>
     </message>
@@ -782,22 +812,22 @@
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="42"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="74"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="75"/>
         <source>MP4 video</source>
         <translation>MP4 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="92"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="93"/>
         <source>WebM video</source>
         <translation>WebM 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="106"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="107"/>
         <source>animated PNG</source>
         <translation>アニメーション PNG</translation>
     </message>
@@ -1021,27 +1051,27 @@
         <translation>%1 の末尾に予期しない %2 バイトがあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="33"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="34"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが不完全です（コピーや保存が中断された可能性があります）。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="39"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="40"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが破損しています。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="44"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="45"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 ファイルが破損しています。Finbook でまだ読み取れる部分を開くか、同じ名前で末尾に ~ が付いたバックアップがあれば、そちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="49"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="50"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="73"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
@@ -1071,43 +1101,43 @@
         <translation>フォルダー「%1」が存在しません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="78"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="79"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="89"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>「%1」を開けません: %2。ファイルが存在し、読み取る権限があることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="130"/>
         <source>it is a folder</source>
         <translation>フォルダーです</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="163"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>「%1」を読み込めません: %2。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="143"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="144"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="174"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>「%1」を開けません。%2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="134"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>「%1」を開けません: ファイルではなく、デバイス、パイプ、またはソケットです。.finbook ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="152"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="153"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="225"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
@@ -1188,161 +1218,166 @@
         <translation>セクション %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
         <source>the file&apos;s end is damaged</source>
         <translation>ファイルの終端が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="139"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>長さ（%1 バイト）がファイルの終わりを超えています（残り %2 バイト）が、ファイルは終端マーカーで終わっています。長さの値が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="147"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
         <source>a section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
         <source>a section checksum</source>
         <translation>セクションのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="171"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="198"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
         <source>the end marker</source>
         <translation>終端マーカー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
         <source>the file</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="184"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <source>a sound clip comes before the frames</source>
+        <translation>サウンドクリップがフレームより前にあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="195"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="238"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="239"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="243"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="258"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="266"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1626,22 +1661,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="368"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="364"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="382"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -1744,29 +1779,29 @@
         <translation>スケルトンの関節 %1 のロック状態が不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="48"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
         <source>%1 damaged bytes could not be read; reading goes on with section %2</source>
         <translation>破損した %1 バイトを読み取れませんでした。セクション %2 から読み込みを続けます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_recover.cpp" line="56"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="57"/>
         <source>the last %1 bytes of the file are damaged and could not be read</source>
         <translation>ファイルの最後の %1 バイトが破損していて読み取れませんでした</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_recover.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="88"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>欠落または重複していた ID %n 個を新しい ID に置き換えました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="155"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="156"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>自動保存で復元用のコピーを書き込めませんでした: %1。</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="38"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="40"/>
         <source>there is not enough memory</source>
         <translation>メモリが足りません</translation>
     </message>
@@ -1835,6 +1870,63 @@
         <location filename="../model/src/reference/reference_section.cpp" line="83"/>
         <source>the reference layer is left out: %1</source>
         <translation>参照レイヤーは除外されます: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="17"/>
+        <source>sound clip %1</source>
+        <translation>サウンドクリップ %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="20"/>
+        <location filename="../model/src/sound/sound_section.cpp" line="34"/>
+        <location filename="../model/src/sound/sound_section.cpp" line="79"/>
+        <source>the sound clip</source>
+        <translation>サウンドクリップ</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="24"/>
+        <source>%1; the sound clip is left out</source>
+        <translation>%1。サウンドクリップは除外されます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="32"/>
+        <source>the file holds more than %1 sound clips</source>
+        <translation>ファイルに %1 個を超えるサウンドクリップがあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="39"/>
+        <source>the sound starts at %1, outside 0 to %2</source>
+        <translation>サウンドの開始位置 %1 が 0〜%2 の範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="46"/>
+        <source>the sound&apos;s volume %1 is outside 0 to %2</source>
+        <translation>サウンドの音量 %1 が 0〜%2 の範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="54"/>
+        <source>the sound flags 0x%1 are unknown</source>
+        <translation>サウンドのフラグ 0x%1 が不明です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="58"/>
+        <source>the sound&apos;s name is %1 bytes long (at most %2)</source>
+        <translation>サウンドの名前が %1 バイトあります(最大 %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="68"/>
+        <source>the sound&apos;s name is not valid UTF-8 text</source>
+        <translation>サウンドの名前が有効な UTF-8 テキストではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="72"/>
+        <source>the sound is %1 MB long (at most %2 MB)</source>
+        <translation>サウンドが %1 MB あります(最大 %2 MB)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_section.cpp" line="76"/>
+        <source>the sound clip holds no sound</source>
+        <translation>サウンドクリップに音声がありません</translation>
     </message>
 </context>
 <context>
@@ -2003,6 +2095,52 @@
     </message>
 </context>
 <context>
+    <name>Sound</name>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="90"/>
+        <source>The file is not a sound Finbook can read (WAV, FLAC, MP3, Ogg, Opus, AAC or M4A), or it is damaged.</source>
+        <translation>このファイルは Finbook が読めるサウンド(WAV、FLAC、MP3、Ogg、Opus、AAC、M4A)ではないか、破損しています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="137"/>
+        <source>The file is empty.</source>
+        <translation>ファイルが空です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="139"/>
+        <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
+        <translation>ファイルが不完全です。サウンドデータが途中で切れています。完全なファイルをインポートしてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="147"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="151"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="155"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="181"/>
+        <source>There is not enough memory to read the sound.</source>
+        <translation>サウンドを読み込むためのメモリが足りません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="165"/>
+        <source>The file holds no sound Finbook can play.</source>
+        <translation>ファイルに Finbook が再生できるサウンドがありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="214"/>
+        <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
+        <translation>サウンドが Finbook で再生できる最長の %1 分を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="218"/>
+        <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
+        <translation>ファイルに Finbook が再生できるサウンドがありません(音声をデコードできませんでした)。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
+        <translation>ファイルが不完全です。%1 秒のサウンドと記されていますが、%2 秒しかありません。完全なファイルをインポートしてください。</translation>
+    </message>
+</context>
+<context>
     <name>StrokeEditing</name>
     <message>
         <location filename="../ui/src/tools/stroke_editing.cpp" line="119"/>
@@ -2059,22 +2197,22 @@
         <translation>通常のファイルではありません</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="326"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="329"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>「%1」のサムネイルを作成できません: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="349"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>チェックサムが一致しないため、ファイルが破損しています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>このバージョンの Finbook が知らないデータが含まれています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="354"/>
         <source>the file is damaged or incomplete.</source>
         <translation>ファイルが破損しているか不完全です。</translation>
     </message>
@@ -2543,59 +2681,59 @@
 <context>
     <name>finbook::ui::ExportDialog</name>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="58"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="307"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="59"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="318"/>
         <source>Export Animation</source>
         <translation>アニメーションの書き出し</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="66"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="295"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="67"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="306"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="78"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
         <source>Animated GIF</source>
         <translation>アニメーション GIF</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="79"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
         <source>MP4 video (H.264)</source>
         <translation>MP4 動画（H.264）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="80"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
         <source>WebM video (VP9)</source>
         <translation>WebM 動画（VP9）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="81"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
         <source>Animated PNG (APNG)</source>
         <translation>アニメーション PNG（APNG）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="82"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
         <source>HTML flipbook (one file)</source>
         <translation>HTML パラパラ漫画（1 ファイル）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="83"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
         <source>PNG images (a folder)</source>
         <translation>PNG 画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
         <source>SVG vector images (a folder)</source>
         <translation>SVG ベクター画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>3D モデル (OBJ)、現在のフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="87"/>
         <source>3D model (glTF binary), the current frame</source>
         <translation>Finbook: パラパラ漫画のアニメーションエディター。
 
@@ -2609,142 +2747,157 @@
   finbook thumbnail FILE OUT.png SIZE   最初のフレームを最大 SIZE px の PNG に書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="90"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
         <source>&amp;Browse...</source>
         <translation>参照(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="92"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>Play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
         <source>All frames</source>
         <translation>すべてのフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="95"/>
         <source>Frames</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="109"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
         <source>Document background</source>
         <translation>ドキュメントの背景</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
         <source>Transparent</source>
         <translation>透明</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
         <source>Colour</source>
         <translation>色</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="115"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
         <source>Start again after the last frame</source>
         <translation>最後のフレームの後、最初から再生する</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>絵ごとに 1 ファイル（タイムシート付き）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="119"/>
         <source>Include refere&amp;nce</source>
         <translation>参照を含める(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="120"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="121"/>
         <source>Paint the reference picture or video under the drawing (not in SVG or 3D)</source>
         <translation>参照画像または参照動画を絵の下に描きます (SVG と 3D を除く)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="139"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="141"/>
         <source>to</source>
         <translation>～</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="154"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="155"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
         <source>&amp;Save to:</source>
         <translation>保存先(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
         <source>F&amp;rames:</source>
         <translation>フレーム(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>Sc&amp;ale:</source>
         <translation>倍率(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>&amp;Background:</source>
         <translation>背景(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>Frame ra&amp;te:</source>
         <translation>フレームレート(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
         <source>Loop:</source>
         <translation>ループ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="165"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="167"/>
         <source>&amp;Export</source>
         <translation>書き出し(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="166"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="168"/>
         <source>Cancel Export</source>
         <translation>書き出しをキャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="247"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="249"/>
         <source>%1 x %2 pixels</source>
         <translation>%1×%2 ピクセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="250"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、隣に .mtl ファイルを置きます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="255"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="257"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、1 つのファイルにまとめます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="260"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="262"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>この形式には ffmpeg プログラムが必要ですが、見つかりませんでした。先にインストールしてください（Debian の場合: apt install ffmpeg）。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="304"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="267"/>
+        <source>The video carries the soundtrack, trimmed to the frames exported.</source>
+        <translation>動画には書き出すフレームに合わせて切り出したサウンドトラックが入ります。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
+        <translation>ページにはサウンドトラックが入ります。閲覧者が再生を押すとフレームと一緒に再生されます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
+        <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
+        <translation>この形式には音声がありません。サウンドトラックは含まれません(MP4、WebM、HTML には入ります)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="315"/>
         <source>Export to Folder</source>
         <translation>フォルダーに書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="308"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="319"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>
@@ -3013,58 +3166,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window.cpp" line="147"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="170"/>
+        <location filename="../ui/src/window/main_window.cpp" line="172"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window.cpp" line="173"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window.cpp" line="176"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="182"/>
+        <location filename="../ui/src/window/main_window.cpp" line="184"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window.cpp" line="185"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="219"/>
+        <location filename="../ui/src/window/main_window.cpp" line="221"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window.cpp" line="232"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="231"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="236"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window.cpp" line="239"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -3095,310 +3248,310 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="73"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="91"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="90"/>
         <source>Cannot Open File</source>
         <translation>ファイルを開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="125"/>
         <source>Cannot Save File</source>
         <translation>ファイルを保存できません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="133"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="131"/>
         <source>Saved %1</source>
         <translation>%1 を保存しました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="99"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>%1 の読み取れた部分を開きました（%n 件の問題を修復）。新しい名前で保存してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="181"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="190"/>
         <source>No recent files</source>
         <translation>最近使ったファイルはありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="200"/>
         <source>Cannot Import Mesh</source>
         <translation>メッシュをインポートできません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="206"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="228"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
         <source>Damaged File</source>
         <translation>破損したファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="227"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>「このまま開く」を選ぶと、まだ読み取れる部分を未保存の新しいアニメーションとして表示します。破損したファイルは変更されません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
         <source>Open Anyway</source>
         <translation>このまま開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>Unsaved Changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="243"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="241"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>「%1」には保存されていない変更があります。続ける前に保存しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="247"/>
         <source>Open Animation</source>
         <translation>アニメーションを開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
         <source>Save Animation</source>
         <translation>アニメーションを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="254"/>
         <source>untitled.finbook</source>
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="46"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="52"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="58"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="59"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="61"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="91"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="96"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="102"/>
         <source>Import Re&amp;ference...</source>
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="99"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
         <source>Import Reference</source>
         <translation>参照を読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="121"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="123"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="126"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="142"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="149"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="168"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="175"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="196"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="221"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="216"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="264"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="287"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="311"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="312"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
@@ -3483,7 +3636,7 @@
         <translation>復元できません</translation>
     </message>
     <message>
-        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="73"/>
+        <location filename="../ui/src/recovery/main_window_recovery.cpp" line="72"/>
         <source>Recovered %1 as it was at %2; save it to keep it.</source>
         <translation>%1 を %2 時点の状態に復元しました。残しておくには保存してください。</translation>
     </message>
@@ -3688,28 +3841,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="64"/>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
         <source>Pl&amp;ay</source>
         <translation>再生(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="68"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
         <source>Play or pause the animation</source>
         <translation>アニメーションを再生または一時停止</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="76"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="85"/>
         <source>L&amp;oop</source>
         <translation>ループ再生(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="80"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="89"/>
         <source>Start again at the end of the play range</source>
         <translation>再生範囲の最後まで来たら最初から再生</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="206"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
         <source>P&amp;ause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>
@@ -4094,39 +4247,170 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::SoundController</name>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="40"/>
+        <source>Import Soun&amp;d...</source>
+        <translation>サウンドをインポート(&amp;D)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
+        <source>Add a sound file to the soundtrack, starting at the current frame</source>
+        <translation>現在のフレームから始まるサウンドファイルをサウンドトラックに追加します</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="45"/>
+        <source>Import Sound</source>
+        <translation>サウンドのインポート</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="46"/>
+        <source>Sound files (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;All files (*)</source>
+        <translation>サウンドファイル (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="57"/>
+        <source>The sound &quot;%1&quot; cannot be played: %2</source>
+        <translation>サウンド「%1」を再生できません: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="118"/>
+        <source>Cannot Import Sound</source>
+        <translation>サウンドをインポートできません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <source>Cannot import &quot;%1&quot;: %2</source>
+        <translation>「%1」をインポートできません: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="81"/>
+        <source>it is not a file.</source>
+        <translation>ファイルではありません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="85"/>
+        <source>it is larger than %1 MB.</source>
+        <translation>%1 MB を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="94"/>
+        <source>Reading &quot;%1&quot;…</source>
+        <translation>「%1」を読み込み中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="119"/>
+        <source>Cannot import &quot;%1&quot;: %2 Nothing was changed.</source>
+        <translation>「%1」をインポートできません: %2 何も変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="132"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="134"/>
+        <source>Imported &quot;%1&quot; (%2 s).</source>
+        <translation>「%1」をインポートしました(%2 秒)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <source>Sound Volume</source>
+        <translation>サウンドの音量</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <source>Volume of &quot;%1&quot; (%):</source>
+        <translation>「%1」の音量 (%):</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SoundPlayer</name>
+    <message>
+        <location filename="../ui/src/sound/sound_player.cpp" line="65"/>
+        <source>No audio output was found: playing without sound.</source>
+        <translation>音声出力が見つかりません。音なしで再生します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_player.cpp" line="76"/>
+        <source>The audio output failed: playing without sound.</source>
+        <translation>音声出力に失敗しました。音なしで再生します。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SoundRow</name>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="36"/>
+        <source>The soundtrack: drag a sound to move it, right click for its volume</source>
+        <translation>サウンドトラック: サウンドをドラッグして移動、右クリックで音量</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="130"/>
+        <source>No sound: File → Import Sound…</source>
+        <translation>サウンドなし: ファイル → サウンドをインポート…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="186"/>
+        <source>%1 (cannot be played)</source>
+        <translation>%1(再生できません)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="188"/>
+        <source>%1 (reading…)</source>
+        <translation>%1(読み込み中…)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="190"/>
+        <source>%1 (muted)</source>
+        <translation>%1(ミュート)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="266"/>
+        <source>&amp;Mute</source>
+        <translation>ミュート(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="271"/>
+        <source>&amp;Volume...</source>
+        <translation>音量(&amp;V)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="273"/>
+        <source>Delete &amp;Sound</source>
+        <translation>サウンドを削除(&amp;S)</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="68"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="74"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="69"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="75"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>描画中に前後のフレームを薄く表示</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
         <source>Before:</source>
         <translation>前:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="86"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>オニオンスキンで表示する前のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="87"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="93"/>
         <source>After:</source>
         <translation>後:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="88"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="94"/>
         <source>How many later frames the onion skin shows</source>
         <translation>オニオンスキンで表示する後のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="119"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="125"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>フレーム %1 / %2 · %3 fps</translation>
     </message>

@@ -265,6 +265,9 @@ Layout readLayout(FileReader &file, qint64 wholeSectionBytes)
                     throw Broken{FileErrorCode::BadValue};
                 break;
             }
+        } else if (t == kTagSound && next == std::size(order)) {
+            // A sound clip (after the frames, as the reader wants it): a thumbnail needs no
+            // sound, so its bytes are skipped unread.
         } else if (t == kTagEnd || known || !isAncillary(t)) {
             // A section missing, repeated or out of order, or one a newer Finbook wrote: the
             // model's reader would refuse the file.

@@ -1,6 +1,7 @@
 #include <finbook/model/document.h>
 #include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/skeleton/skeleton_join.h>
+#include <finbook/model/sound/soundtrack.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -9,6 +10,7 @@ namespace finbook::model {
 
 Document::Document(QObject *parent)
     : QObject(parent)
+    , m_soundtrack(std::make_unique<Soundtrack>())
     , m_reference(new ReferenceLayer(this))
 {}
 
@@ -99,6 +101,7 @@ void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings
     m_settings = settings;
     m_nextId = std::max<Id>(nextId, 1);
     m_reference->setReference({});
+    m_soundtrack->reset({});
     emit documentReset();
 }
 

@@ -30,6 +30,13 @@
 //   "JOIN"  := u64 parentObjectId f64 childAtX f64 childAtY f64 parentAtX f64 parentAtY
 //              (skeleton/skeleton_rig.h SkeletonJoin): the object's skeleton hangs from
 //              another object's skeleton in the same frame. Only after SKEL.
+//   "SOND"  := u64 id i64 start f64 volume u8 flags u32 nameBytes utf8[nameBytes]
+//              u64 dataBytes bytes[dataBytes]
+//              (sound/sound_clip.h): one section per sound clip of the soundtrack, after FRAM,
+//              in soundtrack order. flags: 1 = muted. The bytes are the imported file as it
+//              was (WAV, MP3, …). Written only when the document has sound, so a file without
+//              sound is a plain format-3 file; a Finbook that does not know SOND refuses a file
+//              with sound as made by a newer Finbook (it would drop the sound on saving).
 //
 // An object carries at most one rig chunk (PINS, CAGE or SKEL).
 //
@@ -87,6 +94,7 @@ constexpr quint32 kTagSkeleton = tag("SKEL");
 constexpr quint32 kTagJoin = tag("JOIN");
 constexpr quint32 kTagFills = tag("FILL");
 constexpr quint32 kTagReference = tag("refr");
+constexpr quint32 kTagSound = tag("SOND");
 
 inline bool isAncillary(quint32 t)
 {
@@ -112,6 +120,8 @@ constexpr std::size_t kFrameFixedBytes = 8 + 4 + 4;
 constexpr std::size_t kObjectFixedBytes = 8 + 1 + 8 + 4 + 4;
 constexpr std::size_t kMaxNameBytes = 4096;
 constexpr std::size_t kReferenceFixedBytes = 1 + 1 + 8 * 8 + 4 + 8;
+constexpr std::size_t kSoundFixedBytes = 8 + 8 + 8 + 1 + 4 + 8;
+constexpr quint8 kSoundFlagMuted = 0x01;
 
 constexpr quint8 kFlagVisible = 0x01;
 constexpr quint8 kFlagLocked = 0x02;

@@ -7,6 +7,7 @@
 
 #include <finbook/model/io/atomic_file.h>
 #include <finbook/model/reference/reference_layer.h>
+#include <finbook/model/sound/soundtrack.h>
 
 #include <QFile>
 #include <QFileInfo>
@@ -203,9 +204,15 @@ std::optional<FileError> openFinbook(Document &document, const QString &path)
     auto loaded = loadFinbook(path);
     if (!loaded)
         return loaded.error();
-    document.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
-    document.referenceLayer().setReference(std::move(loaded->reference));
+    adoptLoadedDocument(document, std::move(*loaded));
     return std::nullopt;
+}
+
+void adoptLoadedDocument(Document &document, LoadedDocument loaded)
+{
+    document.reset(std::move(loaded.frames), loaded.settings, loaded.nextId);
+    document.referenceLayer().setReference(std::move(loaded.reference));
+    document.soundtrack().reset(std::move(loaded.sound));
 }
 
 std::optional<FileError> saveFinbook(const Document &document, const QString &path,

@@ -120,8 +120,10 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
     const quint64 length = c.u64(QT_TRANSLATE_NOOP("FinbookFile", "a section header"));
     m_where.section = FinbookFile::tr("section %1").arg(tagName(t));
     const auto *known = std::find(std::begin(kOrder), std::end(kOrder), t);
-    const bool expected = t == kTagEnd || (known != std::end(kOrder) &&
-                                           std::size_t(known - std::begin(kOrder)) >= next);
+    const bool sound = t == kTagSound;
+    const bool expected =
+        t == kTagEnd || sound ||
+        (known != std::end(kOrder) && std::size_t(known - std::begin(kOrder)) >= next);
     const bool text = !tagName(t).startsWith(QLatin1String("0x"));
     if (recovering() && (!text || (!expected && !isAncillary(t)))) {
         // Damage in a section header: look for the next section that reads.
@@ -177,6 +179,13 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
     }
     if (t == kTagReference && next == std::size(kOrder)) {
         readReferenceSection(body);
+        return !cut;
+    }
+    if (sound) {
+        if (next < std::size(kOrder))
+            problem(c, FileErrorCode::BadValue,
+                    FinbookFile::tr("a sound clip comes before the frames"));
+        readSoundSection(body);
         return !cut;
     }
     if (known == std::end(kOrder)) {

@@ -99,6 +99,9 @@ private:
     SkeletonRig readSkeleton(Cursor &c); // skeleton/skeleton_chunk.cpp
     DeformedStrokesPtr readPoseRef(Cursor &c, const StrokeGroup &group);
     void claimId(Cursor &c, Id id, const QString &owner);
+    // sound/sound_section.cpp: one "SOND" section, a clip of the soundtrack.
+    void readSoundSection(Cursor &body);
+    void readSoundClip(Cursor &c);
     // finbook_file_recover.cpp
     bool findNextSection(Cursor &c, std::size_t next);
     void renumberClashingIds();

@@ -11,7 +11,8 @@ namespace finbook::model {
 namespace file_format {
 
 namespace {
-constexpr quint32 kSectionTags[] = {kTagDocument, kTagStrokes, kTagPoses, kTagFrames, kTagEnd};
+constexpr quint32 kSectionTags[] = {kTagDocument, kTagStrokes, kTagPoses,
+                                    kTagFrames,   kTagSound,   kTagEnd};
 
 // Whether a section that reads starts at `p`: a tag from `tags`, a length that fits and, from
 // format 2 on, a checksum that matches.
@@ -81,6 +82,8 @@ void Reader::renumberClashingIds()
                 fix(p.id);
         }
     }
+    for (SoundClip &clip : m_doc.sound)
+        fix(clip.id);
     if (renumbered > 0)
         m_problems << FinbookFile::tr("%n missing or repeated id(s) were replaced by new ones",
                                       nullptr, renumbered);

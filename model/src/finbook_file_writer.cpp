@@ -7,6 +7,8 @@
 
 #include <finbook/model/reference/reference_layer.h>
 
+#include <finbook/model/sound/soundtrack.h>
+
 #include <algorithm>
 #include <unordered_map>
 
@@ -248,6 +250,20 @@ void writeFrames(ByteWriter &w, const std::vector<Frame> &frames, const Tables &
     }
 }
 
+// One "SOND" section's payload (sound/sound_section.cpp reads it).
+void writeSoundClip(ByteWriter &w, const SoundClip &clip)
+{
+    w.u64(clip.id);
+    w.u64(quint64(clip.start));
+    w.f64(clip.volume);
+    w.u8(clip.muted ? kSoundFlagMuted : 0);
+    const QByteArray name = clip.name.toUtf8();
+    w.u32(quint32(name.size()));
+    w.raw(name.constData(), std::size_t(name.size()));
+    w.u64(quint64(clip.bytes.size()));
+    w.raw(clip.bytes.constData(), std::size_t(clip.bytes.size()));
+}
+
 // A section and, from format 2 on, the CRC-32C of its tag, length and payload.
 template <class WriteBody> void writeSection(ByteWriter &w, quint32 sectionTag, WriteBody body)
 {
@@ -265,23 +281,33 @@ QByteArray serializeFinbook(const Document &document)
     std::vector<AncillarySection> extra;
     if (!document.referenceLayer().isEmpty())
         extra.push_back(referenceSection(document.referenceLayer().reference()));
-    return serializeFinbook(document.frames(), document.settings(), extra);
+    return serializeFinbook(document.frames(), document.settings(), extra,
+                            document.soundtrack().clips());
 }
 
 QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSettings &settings,
-                            const std::vector<AncillarySection> &ancillary)
+                            const std::vector<AncillarySection> &ancillary,
+                            const std::vector<SoundClip> &sound)
 {
     const Tables tables(frames);
     qsizetype extra = 0;
     for (const AncillarySection &a : ancillary)
         extra += qsizetype(kSectionHeaderBytes + kSectionCrcBytes) + a.payload.size();
+    for (const SoundClip &clip : sound)
+        extra += qsizetype(kSectionHeaderBytes + kSectionCrcBytes + kSoundFixedBytes) +
+                 clip.name.size() * 3 + clip.bytes.size();
     ByteWriter w(tables.expectedBytes + extra);
     w.raw(kMagic, sizeof(kMagic));
     w.u32(kFinbookFormatVersion);
-    writeSection(w, kTagDocument, [&] { writeDocumentSection(w, settings, tables.maxId); });
+    Id maxId = tables.maxId;
+    for (const SoundClip &clip : sound)
+        maxId = std::max(maxId, clip.id);
+    writeSection(w, kTagDocument, [&] { writeDocumentSection(w, settings, maxId); });
     writeSection(w, kTagStrokes, [&] { writeStrokeTable(w, tables); });
     writeSection(w, kTagPoses, [&] { writePoseTable(w, tables); });
     writeSection(w, kTagFrames, [&] { writeFrames(w, frames, tables); });
+    for (const SoundClip &clip : sound)
+        writeSection(w, kTagSound, [&] { writeSoundClip(w, clip); });
     for (const AncillarySection &a : ancillary)
         writeSection(w, tag(a.tag),
                      [&] { w.raw(a.payload.constData(), std::size_t(a.payload.size())); });

@@ -60,7 +60,7 @@ int benchExport(const QStringList &args)
         std::fprintf(stderr, "%s\n", qPrintable(loaded.error().message));
         return 2;
     }
-    model::ExportSource source{{}, loaded->settings};
+    model::ExportSource source{{}, loaded->settings, {}};
     for (int r = 0; r < repeat; ++r)
         source.frames.insert(source.frames.end(), loaded->frames.begin(), loaded->frames.end());
     source.settings.playStart = 0;

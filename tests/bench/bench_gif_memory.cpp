@@ -35,7 +35,7 @@ int benchGifMemory(const QStringList &args)
         std::fprintf(stderr, "%s\n", qPrintable(loaded.error().message));
         return 2;
     }
-    model::ExportSource source{{}, loaded->settings};
+    model::ExportSource source{{}, loaded->settings, {}};
     source.settings.canvasSize = QSize(640, 480);
     source.settings.playStart = 0;
     source.settings.playEnd = -1;

@@ -63,8 +63,7 @@ inline void renderSome(const LoadedDocument &doc)
 inline void roundTrip(LoadedDocument &doc, const char *what)
 {
     Document d;
-    d.reset(std::move(doc.frames), doc.settings, doc.nextId);
-    d.referenceLayer().setReference(std::move(doc.reference));
+    adoptLoadedDocument(d, std::move(doc)); // the sound clips too
     const QByteArray again = serializeFinbook(d);
     auto reread = readFinbook(again);
     if (!reread)
@@ -72,8 +71,7 @@ inline void roundTrip(LoadedDocument &doc, const char *what)
                      qPrintable(reread.error().message));
     check(bool(reread), what);
     Document e;
-    e.reset(std::move(reread->frames), reread->settings, reread->nextId);
-    e.referenceLayer().setReference(std::move(reread->reference));
+    adoptLoadedDocument(e, std::move(*reread));
     check(serializeFinbook(e) == again, "save -> open -> save is byte-identical");
 }
 

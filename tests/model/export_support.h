@@ -26,7 +26,7 @@ inline model::ExportSource loadExample()
     auto loaded = model::loadFinbook(examplePath());
     if (!loaded)
         return {};
-    return model::ExportSource{std::move(loaded->frames), loaded->settings};
+    return model::ExportSource{std::move(loaded->frames), loaded->settings, {}};
 }
 
 // The example with some drawings held: frame 3 for 3 ticks, frame 8 for 2, the last for 4.

@@ -533,7 +533,7 @@ void TestExportFfmpeg::longGifInBoundedMemory()
         QSKIP("ffmpeg/ffprobe not installed");
     const QString limited = writeScript(m_dir, QStringLiteral("ffmpeg-600mb"),
                                         "ulimit -v 600000 || exit 9\nexec ffmpeg \"$@\"\n");
-    model::ExportSource source{{}, m_source.settings};
+    model::ExportSource source{{}, m_source.settings, {}};
     source.settings.canvasSize = QSize(640, 480);
     for (int i = 0; i < 1000; ++i) {
         source.frames.push_back(m_source.frames[std::size_t(i) % m_source.frames.size()]);

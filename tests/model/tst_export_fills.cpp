@@ -44,7 +44,7 @@ ExportSource filledSource()
             doc.setDeformed(copy, pose->strokes);
     DocumentSettings s = doc.settings();
     s.canvasSize = QSize(400, 300);
-    return ExportSource{doc.frames(), s};
+    return ExportSource{doc.frames(), s, {}};
 }
 
 bool nearColor(QRgb a, QRgb b, int tolerance = 24)

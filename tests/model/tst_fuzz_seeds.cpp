@@ -2,6 +2,7 @@
 // section and every object chunk of the format, so mutations start from each of them. The
 // test checks the seeds are what today's Finbook writes and that they cover the format;
 // FINBOOK_WRITE_SEEDS=DIR writes them anew (after a format change).
+#include "sound_support.h"
 #include "tst_file_sample.h"
 
 #include <finbook/model/recovery/recovery_store.h>
@@ -102,10 +103,19 @@ std::vector<std::pair<QString, QByteArray>> seeds()
     cageAndSkeleton(rigs);
     Document referenced;
     withReference(referenced);
+    // Two sound clips (SOND sections): a tiny WAV, and a muted, quieter one further on.
+    Document sound;
+    buildSample(sound);
+    sound_test::importClip(sound, sound_test::sineWav(0.01, 8000), QStringLiteral("beat.wav"), 2);
+    const Id quiet = sound_test::importClip(sound, sound_test::sineWav(0.005, 8000, 880),
+                                            QStringLiteral("voice.wav"), 30);
+    sound.undoStack()->push(soundClipMutedCommand(&sound, quiet, true).release());
+    sound.undoStack()->push(soundClipVolumeCommand(&sound, quiet, 0.5).release());
     std::vector<std::pair<QString, QByteArray>> all{
         {QStringLiteral("sample.finbook"), serializeFinbook(sample)},
         {QStringLiteral("cage_skeleton.finbook"), serializeFinbook(rigs)},
         {QStringLiteral("reference.finbook"), serializeFinbook(referenced)},
+        {QStringLiteral("sound.finbook"), serializeFinbook(sound)},
         {QStringLiteral("recovery_copy.finbook"),
          recoveryCopyBytes(rigs.frames(), rigs.settings(),
                            {QStringLiteral("rigs.finbook"), QStringLiteral("/tmp/rigs.finbook"),
@@ -170,7 +180,7 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
     for (const char *tag : {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE",
-                            "SKEL", "JOIN", "DEFM", "FILL", "refr"})
+                            "SKEL", "JOIN", "DEFM", "FILL", "refr", "SOND"})
         QVERIFY2(tags.count(tag), tag);
 }
 

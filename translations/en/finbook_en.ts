@@ -58,7 +58,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_recover.cpp" line="85"/>
+        <location filename="../../model/src/finbook_file_recover.cpp" line="88"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>%n missing or repeated id was replaced by a new one</numerusform>
@@ -121,7 +121,7 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../ui/src/window/main_window_files.cpp" line="99"/>
+        <location filename="../../ui/src/window/main_window_files.cpp" line="97"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Opened what was readable of %1 (%n problem repaired); save it under a new name.</numerusform>

@@ -2,6 +2,7 @@
 // and it writes a temporary file beside the target, renamed over the target on success. GIF
 // takes two runs, the first writing the palette to another temporary beside the target.
 #include "export_formats.h"
+#include "export_sound.h"
 #include "export_text.h"
 #include "ffmpeg_arguments.h"
 #include "ffmpeg_encoder.h"
@@ -74,9 +75,20 @@ ExportOutcome exportEncoded(const ExportContext &context)
     }
 
     const ExportPlan &plan = context.plan;
+    // The soundtrack's mix of the range (MP4, WebM): a temporary beside the target too.
+    PendingFile sound(target);
+    if (exportHasSound(context.source, context.options)) {
+        if (!sound.open(&openFailure))
+            return unexpected(writeFailed(target, openFailure));
+        const QByteArray wav = exportSoundtrackWav(context.source, plan);
+        if (sound.file().write(wav) != wav.size() || !sound.file().flush())
+            return unexpected(writeFailed(target, sound.file().errorString()));
+        sound.file().close();
+    }
     // "file:" keeps ffmpeg from reading a colon in the folder name as a protocol.
-    const FfmpegJob job = ffmpegJob(context.options.format, plan,
-                                    QStringLiteral("file:") + pending.path(), palette.path());
+    const FfmpegJob job =
+        ffmpegJob(context.options.format, plan, QStringLiteral("file:") + pending.path(),
+                  palette.path(), sound.path());
     // A GIF's frames are rendered and piped twice, once per run: slower, but ffmpeg keeps
     // none of them.
     const int runs = job.paletteArguments.isEmpty() ? 1 : 2;
@@ -87,7 +99,7 @@ ExportOutcome exportEncoded(const ExportContext &context)
     // ffmpeg names the temporary files in its errors; the user knows the target.
     const auto failed = [&](ExportError error) {
         for (QString *text : {&error.message, &error.detail})
-            for (const QString &path : {pending.path(), palette.path()})
+            for (const QString &path : {pending.path(), palette.path(), sound.path()})
                 if (!path.isEmpty())
                     text->replace(QStringLiteral("file:") + path, target).replace(path, target);
         return error;

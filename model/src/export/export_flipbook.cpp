@@ -2,7 +2,11 @@
 // once as a PNG data URL with its hold; a small inline script plays them at the document's
 // rate with play/pause, loop and a scrubber over the ticks. A Content-Security-Policy forbids
 // any network access, so the page works offline and cannot load anything it does not hold.
+// A soundtrack is embedded as a WAV data URL (export_sound.h) and plays with the frames once
+// the viewer presses Play (browsers refuse sound before a click); it is silent while paused or
+// scrubbed, and starts again where the frames are whenever playing (re)starts or loops.
 #include "export_formats.h"
+#include "export_sound.h"
 #include "export_text.h"
 #include "pending_output.h"
 #include "target_lock.h"
@@ -51,7 +55,15 @@ constexpr char kScript[] = R"JS(
       shown = f;
     }
   }
-  function restart() { baseTick = tick; origin = performance.now(); }
+  const sound = document.getElementById("sound");
+  function syncSound() {
+    if (!sound) return;
+    if (!playing) { sound.pause(); return; }
+    sound.currentTime = tick / fps;
+    const started = sound.play();
+    if (started) started.catch(() => {});
+  }
+  function restart() { baseTick = tick; origin = performance.now(); syncSound(); }
   function step() {
     clearTimeout(timer);
     if (!playing) return;
@@ -60,6 +72,8 @@ constexpr char kScript[] = R"JS(
     if (t >= total) {
       if (!loopBox.checked) { show(total - 1); setPlaying(false); return; }
       t %= total;
+      // The sound starts again with the frames: so does the clock.
+      if (sound) { show(t); restart(); timer = setTimeout(step, 1000 / fps); return; }
     }
     show(t);
     const due = origin + (elapsed + 1) * 1000 / fps;
@@ -75,6 +89,7 @@ constexpr char kScript[] = R"JS(
       step();
     } else {
       clearTimeout(timer);
+      syncSound();
     }
   }
   button.addEventListener("click", () => setPlaying(!playing));
@@ -93,6 +108,7 @@ constexpr char kScript[] = R"JS(
   window.flipbook = {
     get tick() { return tick; }, get frame() { return frameAt(tick); },
     get shown() { return shown; }, get playing() { return playing; }, ticks: total,
+    get sound() { return sound ? { time: sound.currentTime, paused: sound.paused, duration: sound.duration } : null; },
     play: () => setPlaying(true), pause: () => setPlaying(false), seek: (t) => { show(t); restart(); }
   };
   show(0);
@@ -138,7 +154,7 @@ QByteArray styleSheet(const ExportPlan &plan)
 } // namespace
 
 QByteArray flipbookHtml(const std::vector<QByteArray> &pngs, const ExportPlan &plan,
-                        const QString &title)
+                        const QString &title, const QByteArray &soundWav)
 {
     QByteArray frames = "[";
     for (std::size_t i = 0; i < pngs.size(); ++i)
@@ -153,7 +169,9 @@ QByteArray flipbookHtml(const std::vector<QByteArray> &pngs, const ExportPlan &p
 
     QByteArray html = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">\n";
     html += "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "
-            "img-src data:; style-src 'unsafe-inline'; script-src 'unsafe-inline'\">\n";
+            "img-src data:; " +
+            QByteArray(soundWav.isEmpty() ? "" : "media-src data:; ") +
+            "style-src 'unsafe-inline'; script-src 'unsafe-inline'\">\n";
     html += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
     html += "<meta name=\"generator\" content=\"Finbook\">\n";
     html += "<title>" + escaped(name) + "</title>\n<style>" + styleSheet(plan) + "</style>\n";
@@ -166,6 +184,9 @@ QByteArray flipbookHtml(const std::vector<QByteArray> &pngs, const ExportPlan &p
             "aria-label=\"" +
             escaped(Export::tr("Frame")) + "\">\n<output id=\"counter\">1 / " +
             QByteArray::number(qulonglong(pngs.size())) + "</output></div>\n";
+    if (!soundWav.isEmpty())
+        html += "<audio id=\"sound\" preload=\"auto\" src=\"data:audio/wav;base64," +
+                soundWav.toBase64() + "\"></audio>\n";
     html += "<script>\nconst fps = " + QByteArray::number(plan.fps) + ";\nconst holds = " + holds +
             ";\nconst labels = {play: " + jsString(Export::tr("Play")) +
             ", pause: " + jsString(Export::tr("Pause")) + "};\nconst frames = " + frames + ";\n";
@@ -195,7 +216,10 @@ ExportOutcome exportFlipbook(const ExportContext &context)
         if (context.cancelled(qint64(i) + 1, total))
             return unexpected(cancelledError());
     }
-    const QByteArray html = flipbookHtml(pngs, plan, context.options.title);
+    const QByteArray html =
+        flipbookHtml(pngs, plan, context.options.title,
+                     flipbookHasSound(context.source) ? flipbookSoundtrackWav(context.source, plan)
+                                                      : QByteArray());
     PendingFile pending(target);
     QString reason;
     if (!pending.open(&reason))

@@ -105,6 +105,6 @@ std::optional<ExportError> commitFile(PendingFile &pending, const ExportOptions 
 QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const ExportPlan &plan);
 // The self-contained HTML page for the drawings' PNG images (in plan order).
 QByteArray flipbookHtml(const std::vector<QByteArray> &pngs, const ExportPlan &plan,
-                        const QString &title);
+                        const QString &title, const QByteArray &soundWav = {});
 
 } // namespace finbook::model

@@ -1,6 +1,7 @@
 #include <finbook/model/document.h>
 #include <finbook/model/export/export_options.h>
 #include <finbook/model/reference/reference_layer.h>
+#include <finbook/model/sound/soundtrack.h>
 
 #include <QFileInfo>
 
@@ -38,7 +39,7 @@ const FormatInfo &info(ExportFormat format)
 ExportSource exportSource(const Document &document)
 {
     return ExportSource{document.frames(), document.settings(),
-                        document.referenceLayer().reference()};
+                        document.referenceLayer().reference(), document.soundtrack().clips()};
 }
 
 std::optional<ExportFormat> exportFormatFromName(const QString &name)

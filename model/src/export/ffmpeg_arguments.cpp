@@ -1,5 +1,6 @@
 #include "ffmpeg_arguments.h"
 
+#include "export_sound.h"
 #include "export_text.h"
 
 #include <cmath>
@@ -129,7 +130,7 @@ QString holdTimestamps(const std::vector<int> &holds)
 }
 
 FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &output,
-                    const QString &palette)
+                    const QString &palette, const QString &soundWav)
 {
     FfmpegJob job;
     switch (format) {
@@ -146,7 +147,11 @@ FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &
         job = apngJob(plan);
         break;
     }
-    job.arguments = inputArguments(plan) + job.arguments;
+    if (!soundWav.isEmpty() && (format == ExportFormat::Mp4 || format == ExportFormat::WebM))
+        job.arguments = inputArguments(plan) + soundInputArguments(soundWav) +
+                        soundOutputArguments(format) + job.arguments;
+    else
+        job.arguments = inputArguments(plan) + job.arguments;
     if (!job.paletteArguments.isEmpty())
         job.paletteArguments = inputArguments(plan) + job.paletteArguments;
     job.arguments << QStringLiteral("-y") << output;

@@ -19,8 +19,9 @@ struct FfmpegJob {
 };
 
 // `palette`: where the GIF's first run writes its palette (a PNG) and the second reads it.
+// `soundWav`: MP4 and WebM only, a WAV file (export_sound.h) encoded as the audio stream.
 FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &output,
-                    const QString &palette = QString());
+                    const QString &palette = QString(), const QString &soundWav = QString());
 
 // setpts expression that starts drawing N at its first tick: N plus the extra ticks of the
 // drawings held before it. Empty when it would be too long for one command-line argument.

@@ -6,6 +6,7 @@
 #include <finbook/model/io/atomic_file.h>
 #include <finbook/model/recovery/autosaver.h>
 #include <finbook/model/reference/reference_layer.h>
+#include <finbook/model/sound/soundtrack.h>
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -93,7 +94,7 @@ void Autosaver::autosaveNow()
     RecoveryWriter::Snapshot snapshot{
         m_doc->frames(), m_doc->settings(),
         RecoveryInfo{m_title, m_originalPath, QDateTime::currentDateTimeUtc(), m_doc->frameCount()},
-        copyPath(), m_doc->referenceLayer().reference()};
+        copyPath(), m_doc->referenceLayer().reference(), m_doc->soundtrack().clips()};
     QMetaObject::invokeMethod(
         m_writer, [writer = m_writer, s = std::move(snapshot)] { writer->write(s); },
         Qt::QueuedConnection);

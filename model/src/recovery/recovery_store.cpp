@@ -62,7 +62,8 @@ std::unique_ptr<QLockFile> lockFor(const QString &path)
 } // namespace
 
 QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
-                             const RecoveryInfo &info, const Reference &reference)
+                             const RecoveryInfo &info, const Reference &reference,
+                             const std::vector<SoundClip> &sound)
 {
     const QJsonObject description{
         {QStringLiteral("title"), info.title},
@@ -76,7 +77,7 @@ QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSet
         extra.push_back({"thmb", thumbnail});
     if (!reference.isEmpty())
         extra.push_back(file_format::referenceSection(reference));
-    return serializeFinbook(frames, settings, extra);
+    return serializeFinbook(frames, settings, extra, sound);
 }
 
 QString recoveryFolder()

@@ -24,6 +24,7 @@ public:
         RecoveryInfo info;
         QString path;
         Reference reference; // the reference layer (its media bytes shared)
+        std::vector<SoundClip> sound;
     };
 
     void write(const Snapshot &snapshot)
@@ -31,7 +32,8 @@ public:
         QString error;
         try {
             const QByteArray bytes = recoveryCopyBytes(snapshot.frames, snapshot.settings,
-                                                       snapshot.info, snapshot.reference);
+                                                       snapshot.info, snapshot.reference,
+                                                       snapshot.sound);
             if (const auto failure = writeFileAtomically(snapshot.path, bytes))
                 error = describeWriteFailure(*failure, QFileInfo(snapshot.path).absolutePath());
         } catch (const std::bad_alloc &) {

@@ -3,6 +3,7 @@
 #include <finbook/model/export/export_plan.h>
 #include <finbook/model/export/exporter.h>
 #include <finbook/model/reference/reference_layer.h>
+#include <finbook/model/sound/soundtrack.h>
 #include <finbook/ui/export/export_dialog.h>
 #include <finbook/ui/export/export_job.h>
 #include <finbook/ui/widgets/color_button.h>
@@ -122,6 +123,7 @@ void ExportDialog::buildForm()
     m_progress->setRange(0, 1);
     m_progress->setValue(0);
     m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("export.status"));
     m_status->setWordWrap(true);
 
     layOut();
@@ -238,7 +240,7 @@ void ExportDialog::updateFields()
                                    format != ExportFormat::SvgSequence &&
                                    format != ExportFormat::Obj);
     // The size only depends on the canvas, scale and format: plan it for one blank frame.
-    model::ExportSource probe{{}, m_doc.settings()};
+    model::ExportSource probe{{}, m_doc.settings(), {}};
     probe.frames.resize(1);
     model::ExportOptions sizing = options();
     sizing.firstFrame = sizing.lastFrame = -1;
@@ -259,6 +261,15 @@ void ExportDialog::updateFields()
     else if (model::exportNeedsFfmpeg(format) && model::ffmpegProgram().isEmpty())
         m_status->setText(tr("This format needs the ffmpeg program, which was not found; "
                              "install it (on Debian: apt install ffmpeg) first."));
+    else if (!m_doc.soundtrack().isEmpty() && !isExporting())
+        m_status->setText(
+            format == ExportFormat::Mp4 || format == ExportFormat::WebM
+                ? tr("The video carries the soundtrack, trimmed to the frames exported.")
+            : format == ExportFormat::Html
+                ? tr("The page carries the soundtrack; it plays with the frames once the viewer "
+                     "presses Play.")
+                : tr("This format has no sound: the soundtrack is left out (MP4, WebM and HTML "
+                     "carry it)."));
     else if (!isExporting())
         m_status->clear();
 }

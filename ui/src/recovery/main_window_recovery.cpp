@@ -63,8 +63,7 @@ bool MainWindow::restoreRecovery(const model::RecoveryCopy &copy)
         reportError(tr("Cannot Recover"), loaded.error().message);
         return false;
     }
-    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
-    m_doc->referenceLayer().setReference(std::move(loaded->reference));
+    model::adoptLoadedDocument(*m_doc, std::move(*loaded));
     const QString original = copy.info.originalPath;
     setFilePath(QFileInfo::exists(original) ? QFileInfo(original).absoluteFilePath() : QString());
     m_doc->undoStack()->resetClean();

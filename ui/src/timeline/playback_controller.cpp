@@ -1,4 +1,5 @@
 #include <finbook/model/commands.h>
+#include <finbook/ui/timeline/playback_clock.h>
 #include <finbook/ui/timeline/playback_controller.h>
 #include <finbook/ui/window/editor_state.h>
 
@@ -24,6 +25,14 @@ qint64 playRangeTicks(const model::Document &doc)
     for (int i = doc.playFirst(); i <= doc.playLast(); ++i)
         total += holdOf(doc, i);
     return total;
+}
+
+qint64 firstTickOfRange(const model::Document &doc)
+{
+    qint64 ticks = 0;
+    for (int i = 0; i < doc.playFirst() && i < doc.frameCount(); ++i)
+        ticks += holdOf(doc, i);
+    return ticks;
 }
 
 qint64 tickOfFrame(const model::Document &doc, int frameIndex)
@@ -129,6 +138,8 @@ void PlaybackController::pause()
     m_timer.stop();
     if (!m_playing)
         return;
+    if (m_external)
+        m_external->stop();
     m_playing = false;
     m_state->setPlaying(false);
     updateActions();
@@ -148,7 +159,16 @@ void PlaybackController::rebase(qint64 tick)
     m_startTick = tick;
     m_fps = m_state->document()->settings().fps;
     m_clock.start();
+    if (m_external) {
+        const model::Document &doc = *m_state->document();
+        m_external->startAt(firstTickOfRange(doc) + tick, m_fps);
+    }
     scheduleTick(1);
+}
+
+qint64 PlaybackController::clockNs() const
+{
+    return m_external ? m_external->nsecsElapsed() : m_clock.nsecsElapsed();
 }
 
 void PlaybackController::settingsChanged()
@@ -157,7 +177,7 @@ void PlaybackController::settingsChanged()
     if (!m_playing)
         return;
     // A new rate applies from the tick we are in now; a new range may have moved past us.
-    const qint64 now = m_startTick + m_clock.nsecsElapsed() * m_fps / kNsPerSecond;
+    const qint64 now = m_startTick + clockNs() * m_fps / kNsPerSecond;
     rebase(now);
     tick();
 }
@@ -170,11 +190,18 @@ void PlaybackController::tick()
     const bool loop = doc.settings().loop;
     // One clock reading decides both the frame and the next boundary: reading it twice could
     // straddle a boundary and sleep through a whole tick.
-    const qint64 ticks = m_clock.nsecsElapsed() * m_fps / kNsPerSecond;
+    const qint64 ticks = clockNs() * m_fps / kNsPerSecond;
     const qint64 now = m_startTick + ticks;
     if (!loop && now >= playRangeTicks(doc)) {
         show(doc.playLast());
         pause();
+        return;
+    }
+    if (m_external && loop && now >= playRangeTicks(doc)) {
+        // The sound starts again with the range: the clock restarts there too.
+        const qint64 wrapped = now % std::max<qint64>(1, playRangeTicks(doc));
+        show(frameAtTick(doc, wrapped, loop));
+        rebase(wrapped);
         return;
     }
     show(frameAtTick(doc, now, loop));
@@ -187,7 +214,7 @@ void PlaybackController::scheduleTick(qint64 ticksSinceStart)
     // timeout finds the same frame and re-arms for the sub-millisecond rest, so changes land
     // within a fraction of a millisecond instead of up to one late.
     const qint64 dueNs = (ticksSinceStart * kNsPerSecond + m_fps - 1) / m_fps;
-    const qint64 waitMs = (dueNs - m_clock.nsecsElapsed()) / kNsPerMs;
+    const qint64 waitMs = (dueNs - clockNs()) / kNsPerMs;
     m_timer.start(int(std::clamp<qint64>(waitMs, 0, 1000)));
 }
 

@@ -44,6 +44,12 @@ TimelineWidget::TimelineWidget(EditorState *state, FrameActions *frameActions,
     showCounter();
 }
 
+void TimelineWidget::addBelowFrames(QWidget *row)
+{
+    row->setParent(this);
+    layout()->addWidget(row);
+}
+
 QWidget *TimelineWidget::createHeader(PlaybackController *playback)
 {
     auto *header = new QWidget(this);

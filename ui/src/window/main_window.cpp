@@ -11,6 +11,7 @@
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/panels/objects_panel.h>
 #include <finbook/ui/reference/reference_panel.h>
+#include <finbook/ui/sound/sound_row.h>
 #include <finbook/ui/timeline/frame_actions.h>
 #include <finbook/ui/timeline/playback_controller.h>
 #include <finbook/ui/timeline/timeline_widget.h>
@@ -166,8 +167,9 @@ void MainWindow::createDocks()
         m_docksMenu->addAction(d->toggleViewAction());
         return d;
     };
-    dock(new TimelineWidget(m_state, m_frameActions, m_playback), QStringLiteral("timelineDock"),
-         tr("Timeline"), Qt::BottomDockWidgetArea);
+    auto *timeline = new TimelineWidget(m_state, m_frameActions, m_playback);
+    timeline->addBelowFrames(new SoundRow(m_sound, timeline->view()));
+    dock(timeline, QStringLiteral("timelineDock"), tr("Timeline"), Qt::BottomDockWidgetArea);
     dock(new ObjectsPanel(m_state, m_objectActions), QStringLiteral("objectsDock"), tr("Objects"),
          Qt::RightDockWidgetArea);
     QDockWidget *reference = dock(new ReferencePanel(m_doc), QStringLiteral("referenceDock"),

@@ -74,8 +74,7 @@ bool MainWindow::openFile(const QString &path)
         m_errorDetails.clear();
         return anyway && openRecovering(path);
     }
-    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
-    m_doc->referenceLayer().setReference(std::move(loaded->reference));
+    model::adoptLoadedDocument(*m_doc, std::move(*loaded));
     setFilePath(QFileInfo(path).absoluteFilePath());
     addRecentFile(m_path);
     return true;
@@ -91,8 +90,7 @@ bool MainWindow::openRecovering(const QString &path)
         reportError(tr("Cannot Open File"), loaded.error().message);
         return false;
     }
-    m_doc->reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
-    m_doc->referenceLayer().setReference(std::move(loaded->reference));
+    model::adoptLoadedDocument(*m_doc, std::move(*loaded));
     setFilePath(QString());
     m_doc->undoStack()->resetClean(); // unsaved until the user saves it somewhere
     statusBar()->showMessage(

@@ -9,6 +9,7 @@
 #include <finbook/ui/keys/shortcut_registry.h>
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/reference/reference_panel.h>
+#include <finbook/ui/sound/sound_controller.h>
 #include <finbook/ui/timeline/frame_actions.h>
 #include <finbook/ui/timeline/onion_skin_editor.h>
 #include <finbook/ui/timeline/playback_controller.h>
@@ -43,6 +44,11 @@ void MainWindow::createActions()
     m_frameActions = new FrameActions(m_state, this);
     m_objectActions = new ObjectActions(m_state, this);
     m_playback = new PlaybackController(m_state, this);
+    m_sound = new SoundController(m_state, m_playback, this, this);
+    m_shortcuts->registerAction(m_sound->importAction());
+    connect(m_sound, &SoundController::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 6000); });
+    connect(m_sound, &SoundController::importFailed, this, &MainWindow::reportError);
     m_fileBar = addToolBar(tr("File"));
     m_fileBar->setObjectName(QStringLiteral("fileToolBar"));
     createFileMenu();
@@ -110,6 +116,7 @@ void MainWindow::createFileMenu()
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(importAction);
     m_fileMenu->addAction(referenceAction);
+    m_fileMenu->addAction(m_sound->importAction());
     m_fileMenu->addAction(exportAnimation);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(quitAction);

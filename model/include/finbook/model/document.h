@@ -10,11 +10,13 @@
 #include <QObject>
 #include <QUndoStack>
 
+#include <memory>
 #include <vector>
 
 namespace finbook::model {
 
 class ReferenceLayer;
+class Soundtrack; // sound/soundtrack.h
 
 struct GroupLocation {
     int frame = -1;
@@ -40,6 +42,9 @@ public:
     // The picture or video under every frame (reference/reference_layer.h). reset() empties it.
     ReferenceLayer &referenceLayer() { return *m_reference; }
     const ReferenceLayer &referenceLayer() const { return *m_reference; }
+    // The sound clips (sound/soundtrack.h); reset() empties it, the loader fills it after.
+    Soundtrack &soundtrack() { return *m_soundtrack; }
+    const Soundtrack &soundtrack() const { return *m_soundtrack; }
 
     // --- reading
     const DocumentSettings &settings() const { return m_settings; }
@@ -118,6 +123,7 @@ private:
     std::vector<Frame> m_frames;
     DocumentSettings m_settings;
     Id m_nextId = 1;
+    std::unique_ptr<Soundtrack> m_soundtrack;
     QUndoStack m_undoStack;
     ReferenceLayer *m_reference; // a child QObject
 };

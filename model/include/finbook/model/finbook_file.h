@@ -14,6 +14,7 @@
 #include <finbook/model/document.h>
 #include <finbook/model/io/atomic_file.h>
 #include <finbook/model/reference/reference.h>
+#include <finbook/model/sound/sound_clip.h>
 
 #include <QByteArray>
 #include <QString>
@@ -64,7 +65,11 @@ struct LoadedDocument {
     Id nextId = 1;
     Reference reference; // the reference layer (empty when the file has none)
     quint32 formatVersion = kFinbookFormatVersion;
+    std::vector<SoundClip> sound; // the soundtrack's clips ("SOND" sections)
 };
+
+// Puts what was loaded into `document` (Document::reset, then its soundtrack).
+void adoptLoadedDocument(Document &document, LoadedDocument loaded);
 
 Expected<LoadedDocument, FileError> readFinbook(const QByteArray &bytes);
 // Reads the file at `path`: only a regular file (a pipe or a device is refused unread), only
@@ -90,10 +95,12 @@ struct AncillarySection {
     char tag[5]; // four letters, the first lower case
     QByteArray payload;
 };
-// The same bytes serializeFinbook(document) gives for a document holding `frames` and
-// `settings` (a snapshot; safe on any thread), plus `ancillary` sections before the end.
+// The same bytes serializeFinbook(document) gives for a document holding `frames`,
+// `settings` and the sound clips `sound` (a snapshot; safe on any thread), plus `ancillary`
+// sections before the end.
 QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSettings &settings,
-                            const std::vector<AncillarySection> &ancillary = {});
+                            const std::vector<AncillarySection> &ancillary = {},
+                            const std::vector<SoundClip> &sound = {});
 // The payload of the ancillary section `tag` of a file, if it has one with a correct checksum.
 std::optional<QByteArray> readAncillarySection(const QByteArray &bytes, const char (&tag)[5]);
 // Refuses to replace a file with bytes that would not open again (a document holding NaN or

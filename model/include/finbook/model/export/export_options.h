@@ -5,6 +5,7 @@
 #pragma once
 
 #include <finbook/model/reference/reference.h>
+#include <finbook/model/sound/sound_clip.h>
 #include <finbook/model/types.h>
 
 #include <QString>
@@ -64,6 +65,7 @@ struct ExportSource {
     std::vector<Frame> frames;
     DocumentSettings settings;
     Reference reference = {}; // the reference layer (its media bytes shared, not copied)
+    std::vector<SoundClip> sound = {}; // the soundtrack: MP4 and WebM carry its mix
 };
 ExportSource exportSource(const Document &document);
 

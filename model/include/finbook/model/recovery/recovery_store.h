@@ -9,6 +9,7 @@
 #pragma once
 
 #include <finbook/model/reference/reference.h>
+#include <finbook/model/sound/sound_clip.h>
 #include <finbook/model/types.h>
 
 #include <QDateTime>
@@ -38,9 +39,10 @@ struct RecoveryCopy {
 };
 
 // The bytes of a recovery copy: the document (a snapshot; any thread) with its description and
-// a thumbnail rendered here, and the reference layer when there is one.
+// a thumbnail rendered here, the reference layer when there is one and the sound clips `sound`.
 QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
-                             const RecoveryInfo &info, const Reference &reference = {});
+                             const RecoveryInfo &info, const Reference &reference = {},
+                             const std::vector<SoundClip> &sound = {});
 // Copies larger than this are not listed (nor read): a recovery copy is an autosave of a
 // drawing that had to fit in memory.
 constexpr qint64 kMaxRecoveryCopyBytes = qint64(4) << 30;

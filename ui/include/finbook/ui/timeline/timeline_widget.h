@@ -38,6 +38,8 @@ public:
     QToolButton *onionToggle() const { return m_onion; }
     QSpinBox *onionBefore() const { return m_before; }
     QSpinBox *onionAfter() const { return m_after; }
+    // Adds a row under the frame strip (the sound row), reparented to this widget.
+    void addBelowFrames(QWidget *row);
 
     QSize sizeHint() const override { return {800, 120}; }
     QSize minimumSizeHint() const override { return {200, 90}; }

@@ -41,6 +41,7 @@ class EditorState;
 class FrameActions;
 class ObjectActions;
 class PenTool;
+class SoundController;
 class PlaybackController;
 class ShortcutRegistry;
 
@@ -167,6 +168,7 @@ private:
     FrameActions *m_frameActions = nullptr;
     ObjectActions *m_objectActions = nullptr;
     PlaybackController *m_playback = nullptr;
+    SoundController *m_sound = nullptr;
     DeformActions *m_deform = nullptr;
     CageActions *m_cage = nullptr;
     Preferences m_prefs;

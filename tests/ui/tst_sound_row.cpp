@@ -1,0 +1,238 @@
+// The soundtrack in the window: File → Import Sound decodes off the GUI thread and adds one
+// undoable clip at the current frame (a file that is not sound is refused with a message and
+// changes nothing); the sound row draws it under the frames and a drag moves it; playback
+// follows the sound player's clock and, with no audio output, runs silently and says so once;
+// stepping plays the slice under the frame.
+#include "../model/sound_support.h"
+
+#include <finbook/model/commands.h>
+#include <finbook/model/export/exporter.h>
+#include <finbook/model/sound/sound_cache.h>
+#include <finbook/model/sound/sound_mix.h>
+#include <finbook/model/sound/soundtrack.h>
+#include <finbook/ui/export/export_dialog.h>
+#include <finbook/ui/sound/sound_controller.h>
+#include <finbook/ui/sound/sound_player.h>
+#include <finbook/ui/sound/sound_row.h>
+#include <finbook/ui/timeline/playback_controller.h>
+#include <finbook/ui/timeline/timeline_view.h>
+#include <finbook/ui/timeline/timeline_widget.h>
+#include <finbook/ui/window/editor_state.h>
+
+#include <QLabel>
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace finbook;
+using model::Document;
+using model::Id;
+
+namespace {
+struct Fixture {
+    Document doc;
+    std::unique_ptr<ui::EditorState> state;
+    std::unique_ptr<ui::PlaybackController> playback;
+    std::unique_ptr<ui::TimelineWidget> timeline;
+    ui::SoundController *sound = nullptr;
+    ui::SoundRow *row = nullptr;
+    QTemporaryDir dir;
+
+    explicit Fixture(int frames, int fps = 12)
+    {
+        for (int i = 0; i < frames; ++i)
+            doc.undoStack()->push(new model::InsertFrameCommand(&doc, i));
+        model::DocumentSettings s = doc.settings();
+        s.fps = fps;
+        doc.undoStack()->push(new model::ChangeSettingsCommand(&doc, s));
+        doc.undoStack()->clear();
+        state = std::make_unique<ui::EditorState>(&doc);
+        playback = std::make_unique<ui::PlaybackController>(state.get());
+        timeline = std::make_unique<ui::TimelineWidget>(state.get(), nullptr, playback.get());
+        sound =
+            new ui::SoundController(state.get(), playback.get(), timeline.get(), timeline.get());
+        sound->player()->setAudioOutputAllowed(false); // as on CI: no audio device
+        row = new ui::SoundRow(sound, timeline->view());
+        timeline->addBelowFrames(row);
+        timeline->resize(1600, 140);
+        timeline->show();
+        QVERIFY(QTest::qWaitForWindowExposed(timeline.get()));
+        QCoreApplication::processEvents();
+    }
+
+    QString write(const QString &name, const QByteArray &bytes)
+    {
+        QFile f(dir.filePath(name));
+        if (f.open(QIODevice::WriteOnly))
+            f.write(bytes);
+        return f.fileName();
+    }
+
+    Id import(const QString &path)
+    {
+        QSignalSpy done(sound, &ui::SoundController::importFinished);
+        sound->importSound(path);
+        if (!done.wait(20000))
+            return model::kNoId;
+        return done.first().first().value<Id>();
+    }
+};
+} // namespace
+
+class TestSoundRow : public QObject {
+    Q_OBJECT
+private slots:
+    void importAddsOneUndoableClipAtTheCurrentFrame();
+    void importRefusesWhatIsNotSound();
+    void rowDrawsTheClipAndDragMovesIt();
+    void clipActionsAreUndoable();
+    void playbackFollowsTheSoundClockSilently();
+    void steppingPlaysTheSliceUnderTheFrame();
+    void exportDialogSaysWhichFormatsHaveSound();
+};
+
+void TestSoundRow::importAddsOneUndoableClipAtTheCurrentFrame()
+{
+    Fixture f(10);
+    f.state->setCurrentFrameIndex(3);
+    const Id id = f.import(f.write(QStringLiteral("beat.wav"), sound_test::sineWav(1.0)));
+    QVERIFY(id != model::kNoId);
+    const model::SoundClip *clip = f.doc.soundtrack().clip(id);
+    QVERIFY(clip);
+    QCOMPARE(clip->start, qint64(3));
+    QCOMPARE(clip->name, QStringLiteral("beat.wav"));
+    QCOMPARE(clip->bytes, sound_test::sineWav(1.0)); // the file's bytes, as they were
+    QVERIFY(f.sound->cache()->waveform(id));         // decoded once, at import
+    QCOMPARE(f.doc.undoStack()->count(), 1);
+    f.doc.undoStack()->undo();
+    QVERIFY(f.doc.soundtrack().isEmpty());
+    f.doc.undoStack()->redo();
+    QVERIFY(f.doc.soundtrack().clip(id));
+}
+
+void TestSoundRow::importRefusesWhatIsNotSound()
+{
+    Fixture f(4);
+    QSignalSpy failed(f.sound, &ui::SoundController::importFailed);
+    QByteArray cut = sound_test::sineWav(3.0);
+    cut.truncate(cut.size() / 2);
+    for (const QByteArray &bytes : {QByteArray("not a sound at all"), cut}) {
+        failed.clear();
+        f.sound->importSound(f.write(QStringLiteral("bad.wav"), bytes));
+        QVERIFY(failed.wait(20000));
+        const QString message = failed.first().at(1).toString();
+        QVERIFY2(message.contains(QStringLiteral("bad.wav")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("Nothing was changed")), qPrintable(message));
+    }
+    f.sound->importSound(f.dir.filePath(QStringLiteral("missing.wav")));
+    QCOMPARE(failed.count(), 2);
+    QVERIFY(f.doc.soundtrack().isEmpty());
+    QCOMPARE(f.doc.undoStack()->count(), 0);
+}
+
+void TestSoundRow::rowDrawsTheClipAndDragMovesIt()
+{
+    Fixture f(12);
+    const Id id = f.import(f.write(QStringLiteral("beat.wav"), sound_test::sineWav(0.5)));
+    QVERIFY(id != model::kNoId);
+    // Half a second at 12 fps covers ticks 0 … 6: the clip is under frame 3, not frame 8.
+    const int x2 = f.row->xOfTick(2.5);
+    const int x9 = f.row->xOfTick(7.5);
+    QVERIFY(x2 > 0 && x9 > x2);
+    QCOMPARE(f.row->clipAt(x2), id);
+    QCOMPARE(f.row->clipAt(x9), model::kNoId);
+    const QImage shot = f.row->grab().toImage();
+    const int y = f.row->height() / 2;
+    QVERIFY(shot.pixelColor(x2, y) != shot.pixelColor(x9, y)); // waveform vs empty row
+    // Drag from tick 2.5 to tick 6.5: four ticks later, one command.
+    QTest::mousePress(f.row, Qt::LeftButton, {}, QPoint(x2, y));
+    QTest::mouseMove(f.row, QPoint((x2 + x9) / 2, y));
+    QTest::mouseMove(f.row, QPoint(f.row->xOfTick(6.5), y));
+    QCOMPARE(f.row->dragTicks(), qint64(4));
+    QCOMPARE(f.doc.soundtrack().clip(id)->start, qint64(0)); // nothing pushed while dragging
+    QTest::mouseRelease(f.row, Qt::LeftButton, {}, QPoint(f.row->xOfTick(6.5), y));
+    QCOMPARE(f.doc.soundtrack().clip(id)->start, qint64(4));
+    QCOMPARE(f.doc.undoStack()->text(f.doc.undoStack()->index() - 1), QStringLiteral("Move Sound"));
+    f.doc.undoStack()->undo();
+    QCOMPARE(f.doc.soundtrack().clip(id)->start, qint64(0));
+    // Escape cancels a drag.
+    QTest::mousePress(f.row, Qt::LeftButton, {}, QPoint(x2, y));
+    QTest::mouseMove(f.row, QPoint(f.row->xOfTick(8.5), y));
+    QTest::keyClick(f.row, Qt::Key_Escape);
+    QTest::mouseRelease(f.row, Qt::LeftButton, {}, QPoint(f.row->xOfTick(8.5), y));
+    QCOMPARE(f.doc.soundtrack().clip(id)->start, qint64(0));
+}
+
+void TestSoundRow::clipActionsAreUndoable()
+{
+    Fixture f(4);
+    const Id id = f.import(f.write(QStringLiteral("beat.wav"), sound_test::sineWav(0.5)));
+    f.sound->setMuted(id, true);
+    f.sound->setVolume(id, 0.25);
+    f.sound->remove(id);
+    QVERIFY(f.doc.soundtrack().isEmpty());
+    QCOMPARE(f.doc.undoStack()->count(), 4);
+    f.doc.undoStack()->undo();
+    QVERIFY(f.doc.soundtrack().clip(id)->muted);
+    QCOMPARE(f.doc.soundtrack().clip(id)->volume, 0.25);
+    f.doc.undoStack()->setIndex(1);
+    QVERIFY(!f.doc.soundtrack().clip(id)->muted);
+    QCOMPARE(f.doc.soundtrack().clip(id)->volume, 1.0);
+}
+
+void TestSoundRow::playbackFollowsTheSoundClockSilently()
+{
+    Fixture f(24, 24);
+    f.import(f.write(QStringLiteral("beat.wav"), sound_test::sineWav(1.0)));
+    QSignalSpy silent(f.sound->player(), &ui::SoundPlayer::silent);
+    f.state->setCurrentFrameIndex(6);
+    f.playback->play();
+    QVERIFY(!f.sound->player()->isAudible());
+    QCOMPARE(silent.count(), 1); // said once...
+    // The player started at frame 7's tick: its source is at that sample.
+    QCOMPARE(f.sound->player()->sourcePosition(), model::sampleOfTick(6.0, 24));
+    QTRY_VERIFY(f.state->currentFrameIndex() >= 9);
+    // The clock the frames follow is the player's (two reads a moment apart).
+    const qint64 player = f.sound->player()->nsecsElapsed();
+    QVERIFY(player > 0);
+    QVERIFY(std::abs(f.playback->elapsedNs() - player) < 1'000'000'000);
+    f.playback->pause();
+    f.playback->play();
+    f.playback->pause();
+    QCOMPARE(silent.count(), 1); // ...not again
+}
+
+void TestSoundRow::steppingPlaysTheSliceUnderTheFrame()
+{
+    Fixture f(12);
+    const Id id = f.import(f.write(QStringLiteral("beat.wav"), sound_test::sineWav(1.0)));
+    QVERIFY(id != model::kNoId);
+    f.doc.undoStack()->push(new model::SetFrameHoldCommand(&f.doc, f.doc.frameAt(0).id, 3));
+    f.state->setCurrentFrameIndex(2); // starts at tick 3 + 1
+    QCOMPARE(ui::startTickOfFrame(f.doc, 2), qint64(4));
+    // The silent player still runs the slice through its source: it stands at its start.
+    QCOMPARE(f.sound->player()->sourcePosition(), model::sampleOfTick(4.0, 12));
+}
+
+void TestSoundRow::exportDialogSaysWhichFormatsHaveSound()
+{
+    Fixture f(4);
+    const auto status = [&f](model::ExportFormat format) {
+        ui::ExportDialog dialog(f.doc, QString());
+        dialog.setFormat(format);
+        return dialog.findChild<QLabel *>(QStringLiteral("export.status"))->text();
+    };
+    QVERIFY(!status(model::ExportFormat::Gif).contains(QStringLiteral("sound")));
+    f.import(f.write(QStringLiteral("beat.wav"), sound_test::sineWav(0.5)));
+    if (model::ffmpegProgram().isEmpty())
+        QSKIP("the dialog speaks of ffmpeg first");
+    for (auto format : {model::ExportFormat::Gif, model::ExportFormat::Apng,
+                        model::ExportFormat::PngSequence, model::ExportFormat::SvgSequence})
+        QVERIFY2(status(format).contains(QStringLiteral("no sound")), qPrintable(status(format)));
+    for (auto format : {model::ExportFormat::Mp4, model::ExportFormat::WebM})
+        QVERIFY2(status(format).contains(QStringLiteral("carries the soundtrack")),
+                 qPrintable(status(format)));
+    QVERIFY(status(model::ExportFormat::Html).contains(QStringLiteral("presses Play")));
+}
+
+QTEST_MAIN(TestSoundRow)
+#include "tst_sound_row.moc"
