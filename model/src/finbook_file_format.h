@@ -27,9 +27,16 @@
 //              at the mode) open with no locks.
 //   "FILL"  := u32 count (u32 color f64 seedX f64 seedY u32 n u64 strokeId[n])[count]
 //              (format 3 on; types.h Fill): fills, drawn under the strokes in this order.
+//   "shad"  := u32 count (u8 ramp u8 rim)[count]   (ancillary; types.h FillShading): how each
+//              fill of the object is shaded, one entry per fill of its FILL chunk, after it.
+//              Written only when a fill is shaded; a reader that skips it shows flat fills.
 //   "JOIN"  := u64 parentObjectId f64 childAtX f64 childAtY f64 parentAtX f64 parentAtY
 //              (skeleton/skeleton_rig.h SkeletonJoin): the object's skeleton hangs from
 //              another object's skeleton in the same frame. Only after SKEL.
+//
+// Ancillary sections (between FRAM and FEND):
+//   "lite"  := f64 azimuth f64 elevation   (degrees; DocumentSettings' light for shaded fills),
+//              written only when the light is not the default.
 //
 // An object carries at most one rig chunk (PINS, CAGE or SKEL).
 //
@@ -79,6 +86,8 @@ constexpr quint32 kTagCage = tag("CAGE");
 constexpr quint32 kTagSkeleton = tag("SKEL");
 constexpr quint32 kTagJoin = tag("JOIN");
 constexpr quint32 kTagFills = tag("FILL");
+constexpr quint32 kTagShading = tag("shad");
+constexpr quint32 kTagLight = tag("lite");
 
 inline bool isAncillary(quint32 t)
 {

@@ -175,6 +175,18 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
         }
         return false;
     }
+    if (t == kTagLight && next == std::size(kOrder)) {
+        if (recovering()) {
+            try {
+                readLightSection(body);
+            } catch (const ReadFailure &failure) {
+                m_problems << failure.what;
+            }
+        } else {
+            readLightSection(body);
+        }
+        return !cut;
+    }
     if (known == std::end(kOrder)) {
         if (recovering() && !isAncillary(t))
             problem(c, FileErrorCode::BadValue, FinbookFile::tr("an unknown section is left out"));

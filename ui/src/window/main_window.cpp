@@ -57,6 +57,7 @@ MainWindow::MainWindow(QWidget *parent)
     createCanvasAndTools();
     createDeformation();
     createFill();
+    createShading();
     createDocks();
     createStatusBar();
     arrangeToolBars();

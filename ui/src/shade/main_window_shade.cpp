@@ -1,0 +1,21 @@
+// The main window's shading part: the Shading dock (issue 27).
+#include "shading_panel.h"
+
+#include <finbook/ui/window/main_window.h>
+
+#include <QDockWidget>
+#include <QMenu>
+
+namespace finbook::ui {
+
+void MainWindow::createShading()
+{
+    auto *panel = new ShadingPanel(m_state);
+    auto *dock = new QDockWidget(tr("Shading"), this);
+    dock->setObjectName(QStringLiteral("shadingDock"));
+    dock->setWidget(panel);
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    m_docksMenu->addAction(dock->toggleViewAction());
+}
+
+} // namespace finbook::ui
