@@ -23,8 +23,8 @@ PoseWeights poseWeights(const Eigen::MatrixX2d &points, const Eigen::MatrixX2d &
     const int kk = std::min<int>(k, int(finite.size()));
     PoseWeights w;
     w.rest = controls;
-    w.index = Eigen::MatrixXi::Constant(points.rows(), std::max(kk, 1), -1);
-    w.weight = Eigen::MatrixXd::Zero(points.rows(), std::max(kk, 1));
+    w.index = Eigen::MatrixXi::Constant(std::max(kk, 1), points.rows(), -1);
+    w.weight = Eigen::MatrixXd::Zero(std::max(kk, 1), points.rows());
     w.offset = Eigen::MatrixX2d::Zero(points.rows(), 2);
     using Near = std::pair<double, int>; // squared distance, control; max-heap keeps the k best
     std::vector<Near> heap;
@@ -52,13 +52,13 @@ PoseWeights poseWeights(const Eigen::MatrixX2d &points, const Eigen::MatrixX2d &
         Eigen::RowVector2d centroid = Eigen::RowVector2d::Zero();
         for (int j = 0; j < int(heap.size()); ++j) {
             const double weight = 1.0 / (heap[std::size_t(j)].first + epsilon * epsilon);
-            w.index(i, j) = heap[std::size_t(j)].second;
-            w.weight(i, j) = weight;
+            w.index(j, i) = heap[std::size_t(j)].second;
+            w.weight(j, i) = weight;
             total += weight;
         }
         for (int j = 0; j < int(heap.size()); ++j) {
-            w.weight(i, j) /= total;
-            centroid += w.weight(i, j) * controls.row(w.index(i, j));
+            w.weight(j, i) /= total;
+            centroid += w.weight(j, i) * controls.row(w.index(j, i));
         }
         w.offset.row(i) = p - centroid;
     }
@@ -68,45 +68,50 @@ PoseWeights poseWeights(const Eigen::MatrixX2d &points, const Eigen::MatrixX2d &
 PosedPoints applyPose(const PoseWeights &weights, const Eigen::MatrixX2d &posed)
 {
     const Eigen::Index n = weights.offset.rows();
+    const Eigen::Index k = weights.index.rows();
+    // Each control as shown (its rest place where the pose has none), read once.
+    Eigen::MatrixX2d shown = weights.rest;
+    for (Eigen::Index c = 0; c < shown.rows() && c < posed.rows(); ++c)
+        if (std::isfinite(posed(c, 0)) && std::isfinite(posed(c, 1)))
+            shown.row(c) = posed.row(c);
     PosedPoints out;
     out.V.resize(n, 2);
     out.angle = Eigen::VectorXd::Zero(n);
+    out.turn.resize(n, 2);
     for (Eigen::Index i = 0; i < n; ++i) {
-        Eigen::Vector2d restCentroid = Eigen::Vector2d::Zero(), shownCentroid = restCentroid;
+        // One pass: with weights summing to 1, Σw (p − p*)·(q − q*) = Σw p·q − p*·q*, and the
+        // same for the cross product.
+        double px = 0.0, py = 0.0, qx = 0.0, qy = 0.0, dot = 0.0, cross = 0.0;
         bool any = false;
-        const auto shown = [&](int c) -> Eigen::Vector2d {
-            const bool ok = c < posed.rows() && posed.row(c).allFinite();
-            return ok ? Eigen::Vector2d(posed.row(c).transpose())
-                      : Eigen::Vector2d(weights.rest.row(c).transpose());
-        };
-        for (Eigen::Index j = 0; j < weights.index.cols(); ++j) {
-            const int c = weights.index(i, j);
+        for (Eigen::Index j = 0; j < k; ++j) {
+            const int c = weights.index(j, i);
             if (c < 0)
                 continue;
             any = true;
-            restCentroid += weights.weight(i, j) * weights.rest.row(c).transpose();
-            shownCentroid += weights.weight(i, j) * shown(c);
+            const double w = weights.weight(j, i);
+            const double rx = weights.rest(c, 0), ry = weights.rest(c, 1);
+            const double sx = shown(c, 0), sy = shown(c, 1);
+            px += w * rx;
+            py += w * ry;
+            qx += w * sx;
+            qy += w * sy;
+            dot += w * (rx * sx + ry * sy);
+            cross += w * (rx * sy - ry * sx);
         }
-        const Eigen::Vector2d offset = weights.offset.row(i).transpose();
+        const double ox = weights.offset(i, 0), oy = weights.offset(i, 1);
         if (!any) {
-            out.V.row(i) = offset.transpose(); // no control: the offset is the point itself
+            out.V.row(i) << ox, oy; // no control: the offset is the point itself
+            out.turn.row(i) << 1.0, 0.0;
             continue;
         }
-        double a = 0.0, b = 0.0;
-        for (Eigen::Index j = 0; j < weights.index.cols(); ++j) {
-            const int c = weights.index(i, j);
-            if (c < 0)
-                continue;
-            const Eigen::Vector2d p = weights.rest.row(c).transpose() - restCentroid;
-            const Eigen::Vector2d q = shown(c) - shownCentroid;
-            a += weights.weight(i, j) * p.dot(q);
-            b += weights.weight(i, j) * (p.x() * q.y() - p.y() * q.x());
-        }
-        const double angle = (a == 0.0 && b == 0.0) ? 0.0 : std::atan2(b, a);
-        const double cs = std::cos(angle), sn = std::sin(angle);
-        out.angle(i) = angle;
-        out.V(i, 0) = shownCentroid.x() + cs * offset.x() - sn * offset.y();
-        out.V(i, 1) = shownCentroid.y() + sn * offset.x() + cs * offset.y();
+        const double a = dot - (px * qx + py * qy);
+        const double b = cross - (px * qy - py * qx);
+        const double length = std::sqrt(a * a + b * b);
+        const double cs = length > 0.0 ? a / length : 1.0, sn = length > 0.0 ? b / length : 0.0;
+        out.angle(i) = std::atan2(sn, cs);
+        out.turn.row(i) << cs, sn;
+        out.V(i, 0) = qx + cs * ox - sn * oy;
+        out.V(i, 1) = qy + sn * ox + cs * oy;
     }
     return out;
 }
@@ -116,6 +121,17 @@ Eigen::MatrixX3d rotateNormals(const Eigen::MatrixX3d &normals, const Eigen::Vec
     Eigen::MatrixX3d out = normals;
     for (Eigen::Index i = 0; i < normals.rows() && i < angle.size(); ++i) {
         const double cs = std::cos(angle(i)), sn = std::sin(angle(i));
+        out(i, 0) = cs * normals(i, 0) - sn * normals(i, 1);
+        out(i, 1) = sn * normals(i, 0) + cs * normals(i, 1);
+    }
+    return out;
+}
+
+Eigen::MatrixX3d rotateNormals(const Eigen::MatrixX3d &normals, const Eigen::MatrixX2d &turn)
+{
+    Eigen::MatrixX3d out = normals;
+    for (Eigen::Index i = 0; i < normals.rows() && i < turn.rows(); ++i) {
+        const double cs = turn(i, 0), sn = turn(i, 1);
         out(i, 0) = cs * normals(i, 0) - sn * normals(i, 1);
         out(i, 1) = sn * normals(i, 0) + cs * normals(i, 1);
     }

@@ -26,6 +26,7 @@ QPainterPath pathOf(const geometry::Pieces &pieces)
 {
     QPainterPath path;
     path.setFillRule(Qt::WindingFill);
+    path.reserve(int(pieces.points.size()) + 2 * pieces.count());
     for (int k = 0; k < pieces.count(); ++k) {
         const int begin = pieces.starts[std::size_t(k)], end = pieces.starts[std::size_t(k) + 1];
         const auto at = [&](int i) {
@@ -76,7 +77,7 @@ std::vector<ToneItem> computeTones(const StrokeGroup &group, const RestShade &re
         }
         const geometry::PosedPoints posed = geometry::applyPose(rest.weights, shown);
         V = posed.V;
-        normals = geometry::rotateNormals(normals, posed.angle);
+        normals = geometry::rotateNormals(normals, posed.turn);
     }
     const Eigen::Vector3d light =
         geometry::lightDirection(settings.lightAzimuth, settings.lightElevation);

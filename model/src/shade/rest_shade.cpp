@@ -52,7 +52,7 @@ RestShadePtr compute(const StrokeGroup &group, const ObjectRegions &regions, int
                                    .data->points[std::size_t(shade->controls[c].second)];
         controls.row(Eigen::Index(c)) << p.x, p.y;
     }
-    shade->weights = geometry::poseWeights(shade->inflation.V, controls);
+    shade->weights = geometry::poseWeights(shade->inflation.V, controls, kShadePoseNeighbours);
     return shade;
 }
 } // namespace

@@ -23,6 +23,8 @@ using RestShadePtr = std::shared_ptr<const RestShade>;
 constexpr int kMaxShadeControls = 1500;
 // The shading mesh is coarser than the deformers' (tones need no more).
 constexpr int kShadeTargetVertices = 600;
+// Stroke points that pose each shading vertex (the nearest; poseWeights).
+constexpr int kShadePoseNeighbours = 8;
 
 // Null when the face cannot be meshed or inflated.
 RestShadePtr restShade(const StrokeGroup &group, const ObjectRegionsPtr &regions, int face);

@@ -13,9 +13,10 @@
 
 namespace finbook::geometry {
 
-// Rest data for applyPose: for each of the n points its k nearest controls and their weights.
-//   index   n×k  control rows (−1 = unused when there are fewer than k controls)
-//   weight  n×k  normalized weights (each row sums to 1 when it has a control)
+// Rest data for applyPose: for each of the n points its k nearest controls and their weights,
+// one column per point (the layout applyPose walks).
+//   index   k×n  control rows (−1 = unused when there are fewer than k controls)
+//   weight  k×n  normalized weights (each column sums to 1 when it has a control)
 //   offset  n×2  the point minus the weighted rest centroid of its controls
 //   rest    m×2  the rest controls (their weighted centroid and spread are re-read per pose)
 struct PoseWeights {
@@ -32,15 +33,19 @@ PoseWeights poseWeights(const Eigen::MatrixX2d &points, const Eigen::MatrixX2d &
                         int k = 16, double epsilon = 1.0);
 
 // The posed points and the local rotation (radians, in canvas axes: the angle that turns x
-// toward y) for the controls shown at `posed` (m×2, rows of weights.rest). A posed control
-// that is not finite counts as not moved. Promise: finite output for finite input.
+// toward y; `turn` holds its cosine and sine) for the controls shown at `posed` (m×2, rows of
+// weights.rest). A posed control that is not finite counts as not moved. Promise: finite
+// output for finite input.
 struct PosedPoints {
     Eigen::MatrixX2d V;
     Eigen::VectorXd angle;
+    Eigen::MatrixX2d turn; // n×2: cos, sin of angle
 };
 PosedPoints applyPose(const PoseWeights &weights, const Eigen::MatrixX2d &posed);
 
 // The normals (n×3) turned in the drawing's plane by the angles (n): x, y rotate, z stays.
 Eigen::MatrixX3d rotateNormals(const Eigen::MatrixX3d &normals, const Eigen::VectorXd &angle);
+// The same with the cosines and sines given (PosedPoints::turn, n×2).
+Eigen::MatrixX3d rotateNormals(const Eigen::MatrixX3d &normals, const Eigen::MatrixX2d &turn);
 
 } // namespace finbook::geometry
