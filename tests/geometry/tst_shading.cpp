@@ -265,6 +265,12 @@ void TestShading::degenerateInputStaysFinite()
     shown.row(1) << nan, nan;
     const PosedPoints posed = applyPose(poseWeights(points, controls), shown);
     QVERIFY(posed.V.allFinite() && posed.angle.allFinite());
+    // Controls so far away that the squared distance overflows: the points stay put.
+    Eigen::MatrixX2d far(2, 2);
+    far << 1e200, 0, 0, -1e200;
+    const PosedPoints away = applyPose(poseWeights(points, far), far * 0.5);
+    QVERIFY(away.V.topRows(2).isApprox(points.topRows(2)));
+    QVERIFY(away.V.allFinite() && away.angle.allFinite());
     // Pieces skip triangles with a NaN corner or a bad index.
     Eigen::MatrixX3i F(2, 3);
     F << 0, 1, 2, 0, 1, 7;

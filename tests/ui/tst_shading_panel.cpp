@@ -60,7 +60,10 @@ void TestShadingPanel::rampShadesTheCurrentObjectsFills()
     const Id g = filledSquare(*doc);
     auto *dock = window.findChild<QDockWidget *>(QStringLiteral("shadingDock"));
     QVERIFY(dock);
-    dock->show();
+    QVERIFY(window.tabifiedDockWidgets(dock).contains(
+        window.findChild<QDockWidget *>(QStringLiteral("skeletonDock"))));
+    dock->raise(); // its tab to the front
+    QTRY_VERIFY(dock->widget()->isVisible());
     auto *ramp = window.findChild<QComboBox *>(QStringLiteral("shade.ramp"));
     auto *rim = window.findChild<QCheckBox *>(QStringLiteral("shade.rim"));
     auto *azimuth = window.findChild<QSpinBox *>(QStringLiteral("shade.azimuth"));

@@ -56,6 +56,12 @@ PoseWeights poseWeights(const Eigen::MatrixX2d &points, const Eigen::MatrixX2d &
             w.weight(j, i) = weight;
             total += weight;
         }
+        if (!(total > 0.0) || !std::isfinite(total)) { // distances beyond double's range
+            w.index.col(i).setConstant(-1);
+            w.weight.col(i).setZero();
+            w.offset.row(i) = p;
+            continue;
+        }
         for (int j = 0; j < int(heap.size()); ++j) {
             w.weight(j, i) /= total;
             centroid += w.weight(j, i) * controls.row(w.index(j, i));

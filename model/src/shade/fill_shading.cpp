@@ -55,7 +55,8 @@ struct PosedEntry {
     std::weak_ptr<const ObjectRegions> alive;
     std::vector<ToneItem> tones;
 };
-constexpr std::size_t kPosedEntries = 512;
+// A few hundred kB a face (its tone polygons): enough for playing a short scene from memory.
+constexpr std::size_t kPosedEntries = 160;
 std::mutex g_posedMutex;
 std::list<PosedEntry> g_posed;
 

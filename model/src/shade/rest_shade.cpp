@@ -16,7 +16,7 @@ struct Entry {
     double density = 0.0;
     RestShadePtr shade; // null: tried and failed
 };
-constexpr std::size_t kEntries = 256;
+constexpr std::size_t kEntries = 128; // about 100 kB each
 std::mutex g_mutex;
 std::list<Entry> g_cache;
 
