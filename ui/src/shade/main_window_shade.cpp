@@ -1,4 +1,4 @@
-// The main window's shading part: the Shading dock (issue 27), a tab beside the Skeleton's.
+// The main window's shading part: the Shading dock (issue 27), shown from View → Panels.
 #include "shading_panel.h"
 
 #include <finbook/ui/window/main_window.h>
@@ -14,15 +14,10 @@ void MainWindow::createShading()
     auto *dock = new QDockWidget(tr("Shading"), this);
     dock->setObjectName(QStringLiteral("shadingDock"));
     dock->setWidget(panel);
-    // A tab beside the Skeleton panel: the right side keeps its height for the object list
-    // and the undo history, and the Skeleton tab stays in front.
-    auto *skeleton = findChild<QDockWidget *>(QStringLiteral("skeletonDock"));
-    if (skeleton) {
-        tabifyDockWidget(skeleton, dock);
-        skeleton->raise();
-    } else {
-        addDockWidget(Qt::RightDockWidgetArea, dock);
-    }
+    // Hidden until asked for (View → Panels): the right side keeps its height for the
+    // Skeleton panel, the object list and the undo history.
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    dock->hide();
     m_docksMenu->addAction(dock->toggleViewAction());
 }
 
