@@ -4,92 +4,92 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="23"/>
+        <location filename="../model/src/commands.cpp" line="24"/>
         <source>Draw Stroke</source>
         <translation>Strich zeichnen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="47"/>
+        <location filename="../model/src/commands.cpp" line="48"/>
         <source>Erase Stroke</source>
         <translation>Strich radieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="76"/>
+        <location filename="../model/src/commands.cpp" line="77"/>
         <source>Move Strokes to Object</source>
         <translation>Striche in Objekt verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="173"/>
+        <location filename="../model/src/commands.cpp" line="174"/>
         <source>New Object</source>
         <translation>Neues Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="201"/>
+        <location filename="../model/src/commands.cpp" line="202"/>
         <source>Delete Object</source>
         <translation>Objekt löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="230"/>
+        <location filename="../model/src/commands.cpp" line="231"/>
         <source>Rename Object</source>
         <translation>Objekt umbenennen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="255"/>
+        <location filename="../model/src/commands.cpp" line="256"/>
         <source>Reorder Object</source>
         <translation>Objekt umsortieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Show Object</source>
         <translation>Objekt einblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Hide Object</source>
         <translation>Objekt ausblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="288"/>
+        <location filename="../model/src/commands.cpp" line="289"/>
         <source>Lock Object</source>
         <translation>Objekt sperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="288"/>
+        <location filename="../model/src/commands.cpp" line="289"/>
         <source>Unlock Object</source>
         <translation>Objekt entsperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="321"/>
+        <location filename="../model/src/commands.cpp" line="322"/>
         <source>Insert Frame</source>
         <translation>Einzelbild einfügen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="325"/>
+        <location filename="../model/src/commands.cpp" line="326"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="344"/>
+        <location filename="../model/src/commands.cpp" line="345"/>
         <source>Duplicate Frame</source>
         <translation>Einzelbild duplizieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="394"/>
+        <location filename="../model/src/commands.cpp" line="395"/>
         <source>Delete Frame</source>
         <translation>Einzelbild löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="420"/>
+        <location filename="../model/src/commands.cpp" line="421"/>
         <source>Move Frame</source>
         <translation>Einzelbild verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="443"/>
+        <location filename="../model/src/commands.cpp" line="444"/>
         <source>Change Frame Exposure</source>
         <translation>Haltedauer des Einzelbilds ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="482"/>
+        <location filename="../model/src/commands.cpp" line="488"/>
         <source>Change Document Settings</source>
         <translation>Dokumenteinstellungen ändern</translation>
     </message>
@@ -278,6 +278,21 @@
         <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
         <source>Unmute Sound</source>
         <translation>Stummschaltung aufheben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <source>Shade Fills</source>
+        <translation>Füllungen schattieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <source>Unshade Fills</source>
+        <translation>Schattierung der Füllungen entfernen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_commands.cpp" line="34"/>
+        <source>Move Light</source>
+        <translation>Licht verschieben</translation>
     </message>
 </context>
 <context>
@@ -1262,7 +1277,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="219"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
@@ -1277,260 +1292,260 @@
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="199"/>
         <source>a sound clip comes before the frames</source>
         <translation>ein Tonclip steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="195"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="258"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="52"/>
         <source>the frame list</source>
         <translation>die Einzelbildliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="60"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
         <source>a frame</source>
         <translation>ein Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="63"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>das Einzelbild ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
         <source>%1; the frame is left out</source>
         <translation>%1; das Einzelbild wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>a frame id</source>
         <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>the frame</source>
         <translation>das Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
         <source>a frame hold</source>
         <translation>eine Haltedauer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>the object list</source>
         <translation>die Objektliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="99"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>das Objekt ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
         <source>%1; the object is left out</source>
         <translation>%1; das Objekt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
         <source>a chunk header</source>
         <translation>ein Blockkopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
         <source>a chunk</source>
         <translation>ein Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
         <source>chunk</source>
         <translation>Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>an object id</source>
         <translation>eine Objekt-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>the object</source>
         <translation>das Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
         <source>the object flags</source>
         <translation>die Objektattribute</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>the mesh density</source>
         <translation>die Netzdichte</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="155"/>
         <source>the object name</source>
         <translation>der Objektname</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="152"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="163"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="170"/>
         <source>the stroke list</source>
         <translation>die Strichliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
         <source>a stroke id</source>
         <translation>eine Strich-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
         <source>the stroke</source>
         <translation>der Strich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>seine Pose hat %n Strich, das Objekt aber %1</numerusform>
@@ -1538,7 +1553,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="337"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>Strich %1 hat %n Punkt, seine Pose aber %2</numerusform>
@@ -1546,142 +1561,142 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
         <source>a stroke reference</source>
         <translation>ein Strichverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="41"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 gibt %2 Einträge an; die %3, die hineinpassen, werden gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
         <source>an unknown chunk is left out</source>
         <translation>ein unbekannter Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="216"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>Block %1 kommt doppelt oder mit einem anderen Rig vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
         <source>%1; the chunk is left out</source>
         <translation>%1; der Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="252"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
         <source>the skeleton&apos;s join</source>
         <translation>die Verbindung des Skeletts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="255"/>
         <source>a join comes without a skeleton</source>
         <translation>eine Verbindung steht ohne Skelett</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>die Verbindung des Skeletts ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="276"/>
         <source>the pin list</source>
         <translation>die Pin-Liste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
         <source>a pin id</source>
         <translation>eine Pin-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
         <source>pin %1</source>
         <translation>Pin %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
         <source>a pin position</source>
         <translation>eine Pin-Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="288"/>
         <source>pin %1 has a non-finite position</source>
         <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
         <source>the cage corner list</source>
         <translation>die Käfigeckenliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>der Käfig hat weniger als 3 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
         <source>a cage corner</source>
         <translation>eine Käfigecke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>Käfigecke %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
         <source>a pose reference</source>
         <translation>ein Posenverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="322"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
         <source>its pose: %1</source>
         <translation>seine Pose: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
         <source>%1 has no id</source>
         <translation>%1 hat keine ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 hat die ID %2, die größer ist als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="357"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="362"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="368"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="380"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="382"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="394"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -1934,6 +1949,31 @@
         <location filename="../model/src/sound/sound_section.cpp" line="76"/>
         <source>the sound clip holds no sound</source>
         <translation>der Tonclip enthält keinen Ton</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="11"/>
+        <source>the fill shading list</source>
+        <translation>die Liste der Füllungsschattierungen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="15"/>
+        <source>the object shades %1 fills but has %2</source>
+        <translation>das Objekt schattiert %1 Füllungen, hat aber %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="22"/>
+        <source>a fill&apos;s shading (%1, %2) is not one Finbook knows</source>
+        <translation>die Schattierung einer Füllung (%1, %2) kennt Finbook nicht</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="34"/>
+        <source>the light</source>
+        <translation>das Licht</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="40"/>
+        <source>the light&apos;s direction (%1°, %2°) is outside 0 to 360° and 0 to 90°</source>
+        <translation>die Richtung des Lichts (%1°, %2°) liegt außerhalb von 0 bis 360° und 0 bis 90°</translation>
     </message>
 </context>
 <context>
@@ -2205,22 +2245,22 @@
         <translation>es ist keine gewöhnliche Datei</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="329"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Für „%1“ kann keine Vorschau erstellt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="349"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="366"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>eine Prüfsumme stimmt nicht, die Datei ist also beschädigt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="368"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>sie enthält Daten, die diese Version von Finbook nicht kennt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="354"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="371"/>
         <source>the file is damaged or incomplete.</source>
         <translation>die Datei ist beschädigt oder unvollständig.</translation>
     </message>
@@ -3178,58 +3218,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window.cpp" line="148"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window.cpp" line="173"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="174"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window.cpp" line="177"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window.cpp" line="185"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window.cpp" line="186"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window.cpp" line="222"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="234"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window.cpp" line="239"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window.cpp" line="240"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -3693,6 +3733,11 @@
         <source>Fill</source>
         <translation>Füllen</translation>
     </message>
+    <message>
+        <location filename="../ui/src/shade/main_window_shade.cpp" line="14"/>
+        <source>Shading</source>
+        <translation>Schattierung</translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::ObjectActions</name>
@@ -4134,6 +4179,74 @@
         <location filename="../ui/src/tools/tool_select.cpp" line="275"/>
         <source>Scale Strokes</source>
         <translation>Striche skalieren</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ShadingPanel</name>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="25"/>
+        <source>Flat</source>
+        <translation>Flach</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="26"/>
+        <source>Cel, two tones</source>
+        <translation>Cel, zwei Töne</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="27"/>
+        <source>Cel, three tones</source>
+        <translation>Cel, drei Töne</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="28"/>
+        <source>Smooth</source>
+        <translation>Weich</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="29"/>
+        <source>Shade the current object&apos;s fills from its rounded shape</source>
+        <translation>Die Füllungen des aktuellen Objekts nach seiner gerundeten Form schattieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="30"/>
+        <source>Fills:</source>
+        <translation>Füllungen:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="31"/>
+        <source>Rim light</source>
+        <translation>Randlicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="33"/>
+        <source>A light edge on the side away from the light</source>
+        <translation>Ein heller Rand auf der vom Licht abgewandten Seite</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="41"/>
+        <source>Where the light comes from on screen: 0° from the right, 90° from above, 180° from the left</source>
+        <translation>Woher das Licht auf dem Bildschirm kommt: 0° von rechts, 90° von oben, 180° von links</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="43"/>
+        <source>Light direction:</source>
+        <translation>Lichtrichtung:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="49"/>
+        <source>How high the light stands above the drawing: 0° grazes it, 90° shines from the viewer</source>
+        <translation>Wie hoch das Licht über der Zeichnung steht: 0° streift sie, 90° scheint vom Betrachter her</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="51"/>
+        <source>Light height:</source>
+        <translation>Lichthöhe:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="88"/>
+        <source>Fill regions of the current object with the Fill tool to shade them.</source>
+        <translation>Füllen Sie Bereiche des aktuellen Objekts mit dem Füllwerkzeug, um sie zu schattieren.</translation>
     </message>
 </context>
 <context>

@@ -4,92 +4,92 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="23"/>
+        <location filename="../model/src/commands.cpp" line="24"/>
         <source>Draw Stroke</source>
         <translation>Tracer un trait</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="47"/>
+        <location filename="../model/src/commands.cpp" line="48"/>
         <source>Erase Stroke</source>
         <translation>Effacer un trait</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="76"/>
+        <location filename="../model/src/commands.cpp" line="77"/>
         <source>Move Strokes to Object</source>
         <translation>Déplacer les traits vers un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="173"/>
+        <location filename="../model/src/commands.cpp" line="174"/>
         <source>New Object</source>
         <translation>Nouvel objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="201"/>
+        <location filename="../model/src/commands.cpp" line="202"/>
         <source>Delete Object</source>
         <translation>Supprimer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="230"/>
+        <location filename="../model/src/commands.cpp" line="231"/>
         <source>Rename Object</source>
         <translation>Renommer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="255"/>
+        <location filename="../model/src/commands.cpp" line="256"/>
         <source>Reorder Object</source>
         <translation>Réordonner l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Show Object</source>
         <translation>Afficher l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Hide Object</source>
         <translation>Masquer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="288"/>
+        <location filename="../model/src/commands.cpp" line="289"/>
         <source>Lock Object</source>
         <translation>Verrouiller l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="288"/>
+        <location filename="../model/src/commands.cpp" line="289"/>
         <source>Unlock Object</source>
         <translation>Déverrouiller l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="321"/>
+        <location filename="../model/src/commands.cpp" line="322"/>
         <source>Insert Frame</source>
         <translation>Insérer une image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="325"/>
+        <location filename="../model/src/commands.cpp" line="326"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="344"/>
+        <location filename="../model/src/commands.cpp" line="345"/>
         <source>Duplicate Frame</source>
         <translation>Dupliquer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="394"/>
+        <location filename="../model/src/commands.cpp" line="395"/>
         <source>Delete Frame</source>
         <translation>Supprimer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="420"/>
+        <location filename="../model/src/commands.cpp" line="421"/>
         <source>Move Frame</source>
         <translation>Déplacer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="443"/>
+        <location filename="../model/src/commands.cpp" line="444"/>
         <source>Change Frame Exposure</source>
         <translation>Modifier l&apos;exposition de l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="482"/>
+        <location filename="../model/src/commands.cpp" line="488"/>
         <source>Change Document Settings</source>
         <translation>Modifier les paramètres du document</translation>
     </message>
@@ -278,6 +278,21 @@
         <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
         <source>Unmute Sound</source>
         <translation>Rétablir le son</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <source>Shade Fills</source>
+        <translation>Ombrer les remplissages</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <source>Unshade Fills</source>
+        <translation>Retirer l’ombrage des remplissages</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_commands.cpp" line="34"/>
+        <source>Move Light</source>
+        <translation>Déplacer la lumière</translation>
     </message>
 </context>
 <context>
@@ -1262,7 +1277,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="219"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
@@ -1277,260 +1292,260 @@
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="199"/>
         <source>a sound clip comes before the frames</source>
         <translation>un extrait sonore précède les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="195"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="258"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="52"/>
         <source>the frame list</source>
         <translation>la liste des images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="60"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
         <source>a frame</source>
         <translation>une image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="63"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
         <source>%1; the frame is left out</source>
         <translation>%1&#xa0;; l&apos;image est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>a frame id</source>
         <translation>un identifiant d&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>the frame</source>
         <translation>l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
         <source>a frame hold</source>
         <translation>une durée d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>the object list</source>
         <translation>la liste des objets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
         <source>an object</source>
         <translation>un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="99"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
         <source>%1; the object is left out</source>
         <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
         <source>a chunk header</source>
         <translation>un en-tête de bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
         <source>a chunk</source>
         <translation>un bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
         <source>chunk</source>
         <translation>bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>an object id</source>
         <translation>un identifiant d&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>the object</source>
         <translation>l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
         <source>the object flags</source>
         <translation>les attributs de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>the mesh density</source>
         <translation>la densité du maillage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="155"/>
         <source>the object name</source>
         <translation>le nom de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="152"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="163"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="170"/>
         <source>the stroke list</source>
         <translation>la liste des traits</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
         <source>a stroke id</source>
         <translation>un identifiant de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
         <source>the stroke</source>
         <translation>le trait</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>sa pose a %n trait, mais l&apos;objet en a %1</numerusform>
@@ -1538,7 +1553,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="337"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>le trait %1 a %n point, mais sa pose en a %2</numerusform>
@@ -1546,142 +1561,142 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
         <source>a stroke reference</source>
         <translation>une référence de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="41"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
         <source>an unknown chunk is left out</source>
         <translation>un bloc inconnu est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="216"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
         <source>%1; the chunk is left out</source>
         <translation>%1&#xa0;; le bloc est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="252"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
         <source>the skeleton&apos;s join</source>
         <translation>la jonction du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="255"/>
         <source>a join comes without a skeleton</source>
         <translation>une jonction est présente sans squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>la jonction du squelette est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="276"/>
         <source>the pin list</source>
         <translation>la liste des épingles</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
         <source>a pin id</source>
         <translation>un identifiant d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
         <source>pin %1</source>
         <translation>l&apos;épingle %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
         <source>a pin position</source>
         <translation>une position d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="288"/>
         <source>pin %1 has a non-finite position</source>
         <translation>l&apos;épingle %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
         <source>the cage corner list</source>
         <translation>la liste des coins de la cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>la cage a moins de 3 coins</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
         <source>a cage corner</source>
         <translation>un coin de cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>le coin de cage %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
         <source>a pose reference</source>
         <translation>une référence de pose</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="322"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
         <source>its pose: %1</source>
         <translation>sa pose&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
         <source>%1 has no id</source>
         <translation>%1 n&apos;a pas d&apos;identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="357"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="362"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="368"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="380"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="382"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="394"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -1934,6 +1949,31 @@
         <location filename="../model/src/sound/sound_section.cpp" line="76"/>
         <source>the sound clip holds no sound</source>
         <translation>l&apos;extrait sonore ne contient aucun son</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="11"/>
+        <source>the fill shading list</source>
+        <translation>la liste des ombrages de remplissage</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="15"/>
+        <source>the object shades %1 fills but has %2</source>
+        <translation>l’objet ombre %1 remplissages mais en a %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="22"/>
+        <source>a fill&apos;s shading (%1, %2) is not one Finbook knows</source>
+        <translation>l’ombrage d’un remplissage (%1, %2) est inconnu de Finbook</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="34"/>
+        <source>the light</source>
+        <translation>la lumière</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="40"/>
+        <source>the light&apos;s direction (%1°, %2°) is outside 0 to 360° and 0 to 90°</source>
+        <translation>la direction de la lumière (%1°, %2°) sort de 0 à 360° et de 0 à 90°</translation>
     </message>
 </context>
 <context>
@@ -2205,22 +2245,22 @@
         <translation>ce n&apos;est pas un fichier ordinaire</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="329"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="349"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="366"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>une somme de contrôle ne correspond pas, le fichier est donc endommagé.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="368"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>il contient des données que cette version de Finbook ne connaît pas.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="354"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="371"/>
         <source>the file is damaged or incomplete.</source>
         <translation>le fichier est endommagé ou incomplet.</translation>
     </message>
@@ -2899,7 +2939,7 @@
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
         <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
-        <translation>Ce format n'a pas de son : la bande son est laissée de côté (MP4, WebM et HTML la portent).</translation>
+        <translation>Ce format n&apos;a pas de son : la bande son est laissée de côté (MP4, WebM et HTML la portent).</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="315"/>
@@ -3178,58 +3218,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window.cpp" line="148"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window.cpp" line="173"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="174"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window.cpp" line="177"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window.cpp" line="185"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window.cpp" line="186"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window.cpp" line="222"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="234"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window.cpp" line="239"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window.cpp" line="240"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -3693,6 +3733,11 @@
         <source>Fill</source>
         <translation>Remplissage</translation>
     </message>
+    <message>
+        <location filename="../ui/src/shade/main_window_shade.cpp" line="14"/>
+        <source>Shading</source>
+        <translation>Ombrage</translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::ObjectActions</name>
@@ -4134,6 +4179,74 @@
         <location filename="../ui/src/tools/tool_select.cpp" line="275"/>
         <source>Scale Strokes</source>
         <translation>Redimensionner les traits</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ShadingPanel</name>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="25"/>
+        <source>Flat</source>
+        <translation>Aplat</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="26"/>
+        <source>Cel, two tones</source>
+        <translation>Cel, deux tons</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="27"/>
+        <source>Cel, three tones</source>
+        <translation>Cel, trois tons</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="28"/>
+        <source>Smooth</source>
+        <translation>Lisse</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="29"/>
+        <source>Shade the current object&apos;s fills from its rounded shape</source>
+        <translation>Ombrer les remplissages de l’objet courant d’après sa forme arrondie</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="30"/>
+        <source>Fills:</source>
+        <translation>Remplissages&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="31"/>
+        <source>Rim light</source>
+        <translation>Lumière de contour</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="33"/>
+        <source>A light edge on the side away from the light</source>
+        <translation>Un bord clair du côté opposé à la lumière</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="41"/>
+        <source>Where the light comes from on screen: 0° from the right, 90° from above, 180° from the left</source>
+        <translation>D’où vient la lumière à l’écran&#xa0;: 0° de la droite, 90° du haut, 180° de la gauche</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="43"/>
+        <source>Light direction:</source>
+        <translation>Direction de la lumière&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="49"/>
+        <source>How high the light stands above the drawing: 0° grazes it, 90° shines from the viewer</source>
+        <translation>Hauteur de la lumière au-dessus du dessin&#xa0;: 0° la rase, 90° éclaire depuis le spectateur</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="51"/>
+        <source>Light height:</source>
+        <translation>Hauteur de la lumière&#xa0;:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="88"/>
+        <source>Fill regions of the current object with the Fill tool to shade them.</source>
+        <translation>Remplissez des zones de l’objet courant avec l’outil Remplissage pour les ombrer.</translation>
     </message>
 </context>
 <context>

@@ -4,92 +4,92 @@
 <context>
     <name>Command</name>
     <message>
-        <location filename="../model/src/commands.cpp" line="23"/>
+        <location filename="../model/src/commands.cpp" line="24"/>
         <source>Draw Stroke</source>
         <translation>ストロークを描画</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="47"/>
+        <location filename="../model/src/commands.cpp" line="48"/>
         <source>Erase Stroke</source>
         <translation>ストロークを消去</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="76"/>
+        <location filename="../model/src/commands.cpp" line="77"/>
         <source>Move Strokes to Object</source>
         <translation>ストロークをオブジェクトへ移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="173"/>
+        <location filename="../model/src/commands.cpp" line="174"/>
         <source>New Object</source>
         <translation>新規オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="201"/>
+        <location filename="../model/src/commands.cpp" line="202"/>
         <source>Delete Object</source>
         <translation>オブジェクトを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="230"/>
+        <location filename="../model/src/commands.cpp" line="231"/>
         <source>Rename Object</source>
         <translation>オブジェクト名を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="255"/>
+        <location filename="../model/src/commands.cpp" line="256"/>
         <source>Reorder Object</source>
         <translation>オブジェクトの順序を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Show Object</source>
         <translation>オブジェクトを表示</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="286"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Hide Object</source>
         <translation>オブジェクトを非表示</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="288"/>
+        <location filename="../model/src/commands.cpp" line="289"/>
         <source>Lock Object</source>
         <translation>オブジェクトをロック</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="288"/>
+        <location filename="../model/src/commands.cpp" line="289"/>
         <source>Unlock Object</source>
         <translation>オブジェクトのロックを解除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="321"/>
+        <location filename="../model/src/commands.cpp" line="322"/>
         <source>Insert Frame</source>
         <translation>フレームを挿入</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="325"/>
+        <location filename="../model/src/commands.cpp" line="326"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="344"/>
+        <location filename="../model/src/commands.cpp" line="345"/>
         <source>Duplicate Frame</source>
         <translation>フレームを複製</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="394"/>
+        <location filename="../model/src/commands.cpp" line="395"/>
         <source>Delete Frame</source>
         <translation>フレームを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="420"/>
+        <location filename="../model/src/commands.cpp" line="421"/>
         <source>Move Frame</source>
         <translation>フレームを移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="443"/>
+        <location filename="../model/src/commands.cpp" line="444"/>
         <source>Change Frame Exposure</source>
         <translation>フレームの表示時間を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="482"/>
+        <location filename="../model/src/commands.cpp" line="488"/>
         <source>Change Document Settings</source>
         <translation>ドキュメント設定を変更</translation>
     </message>
@@ -278,6 +278,21 @@
         <location filename="../model/src/sound/sound_commands.cpp" line="83"/>
         <source>Unmute Sound</source>
         <translation>サウンドのミュート解除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <source>Shade Fills</source>
+        <translation>塗りに陰影を付ける</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <source>Unshade Fills</source>
+        <translation>塗りの陰影を外す</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_commands.cpp" line="34"/>
+        <source>Move Light</source>
+        <translation>光源を動かす</translation>
     </message>
 </context>
 <context>
@@ -1259,7 +1274,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="219"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
@@ -1274,409 +1289,409 @@
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="199"/>
         <source>a sound clip comes before the frames</source>
         <translation>サウンドクリップがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="193"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="195"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="248"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="252"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="258"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="49"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="52"/>
         <source>the frame list</source>
         <translation>フレーム一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="65"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="60"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
         <source>a frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="62"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="63"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>フレームが途中で切れているため、以降のフレームとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="71"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
         <source>%1; the frame is left out</source>
         <translation>%1。このフレームは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="80"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
         <source>a frame id</source>
         <translation>フレーム ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>the frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
         <source>a frame hold</source>
         <translation>フレームの表示時間</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>表示時間 %1 が 1～%2 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>the object list</source>
         <translation>オブジェクト一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="101"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
         <source>an object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="98"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="99"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>オブジェクトが途中で切れているため、以降のオブジェクトとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="107"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
         <source>%1; the object is left out</source>
         <translation>%1。このオブジェクトは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="200"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
         <source>a chunk header</source>
         <translation>チャンクヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
         <source>a chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
         <source>chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
         <source>an object id</source>
         <translation>オブジェクト ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>the object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
         <source>the object flags</source>
         <translation>オブジェクトのフラグ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>オブジェクトのフラグ 0x%1 は不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>the mesh density</source>
         <translation>メッシュ密度</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>メッシュ密度 %1 が 0～1000 の数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="148"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="155"/>
         <source>the object name</source>
         <translation>オブジェクト名</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="152"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>オブジェクト名が %1 バイトあります（最大 %2 バイト）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="163"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>オブジェクト名が有効な UTF-8 テキストではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="169"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="170"/>
         <source>the stroke list</source>
         <translation>ストローク一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
         <source>a stroke id</source>
         <translation>ストローク ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
         <source>the stroke</source>
         <translation>ストローク</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>ポーズのストローク数は %n ですが、オブジェクトのストローク数は %1 です</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="337"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>ストローク %1 の点の数は %n ですが、ポーズでは %2 です</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
         <source>a stroke reference</source>
         <translation>ストロークの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="41"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 には %2 個の項目があるはずですが、収まっている %3 個を読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>ストロークデータ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="208"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
         <source>an unknown chunk is left out</source>
         <translation>不明なチャンクを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="216"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>チャンク %1 が 2 回、または別のリグと一緒に現れます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
         <source>%1; the chunk is left out</source>
         <translation>%1。このチャンクは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="252"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
         <source>the skeleton&apos;s join</source>
         <translation>スケルトンの接続</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="255"/>
         <source>a join comes without a skeleton</source>
         <translation>スケルトンのない接続があります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>スケルトンの接続が壊れています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="276"/>
         <source>the pin list</source>
         <translation>ピン一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
         <source>a pin id</source>
         <translation>ピン ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
         <source>pin %1</source>
         <translation>ピン %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
         <source>a pin position</source>
         <translation>ピンの位置</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="288"/>
         <source>pin %1 has a non-finite position</source>
         <translation>ピン %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
         <source>the cage corner list</source>
         <translation>ケージの頂点一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>ケージの頂点が 3 個未満です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
         <source>a cage corner</source>
         <translation>ケージの頂点</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>ケージの頂点 %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
         <source>a pose reference</source>
         <translation>ポーズの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="322"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>ポーズがポーズ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
         <source>its pose: %1</source>
         <translation>ポーズ: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
         <source>%1 has no id</source>
         <translation>%1 に ID がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 の ID %2 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="357"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="362"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="368"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="380"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="373"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="382"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="394"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -1927,6 +1942,31 @@
         <location filename="../model/src/sound/sound_section.cpp" line="76"/>
         <source>the sound clip holds no sound</source>
         <translation>サウンドクリップに音声がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="11"/>
+        <source>the fill shading list</source>
+        <translation>塗りの陰影リスト</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="15"/>
+        <source>the object shades %1 fills but has %2</source>
+        <translation>オブジェクトは %1 個の塗りに陰影を付けていますが、塗りは %2 個です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="22"/>
+        <source>a fill&apos;s shading (%1, %2) is not one Finbook knows</source>
+        <translation>塗りの陰影 (%1, %2) は Finbook の知らないものです</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="34"/>
+        <source>the light</source>
+        <translation>光源</translation>
+    </message>
+    <message>
+        <location filename="../model/src/shade/shade_chunk.cpp" line="40"/>
+        <source>the light&apos;s direction (%1°, %2°) is outside 0 to 360° and 0 to 90°</source>
+        <translation>光源の向き (%1°, %2°) が 0〜360° と 0〜90° の範囲外です</translation>
     </message>
 </context>
 <context>
@@ -2197,22 +2237,22 @@
         <translation>通常のファイルではありません</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="329"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>「%1」のサムネイルを作成できません: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="349"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="366"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>チェックサムが一致しないため、ファイルが破損しています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="351"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="368"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>このバージョンの Finbook が知らないデータが含まれています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="354"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="371"/>
         <source>the file is damaged or incomplete.</source>
         <translation>ファイルが破損しているか不完全です。</translation>
     </message>
@@ -3166,58 +3206,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window.cpp" line="148"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window.cpp" line="173"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="174"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window.cpp" line="177"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="184"/>
+        <location filename="../ui/src/window/main_window.cpp" line="185"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window.cpp" line="186"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window.cpp" line="222"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="234"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window.cpp" line="239"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window.cpp" line="240"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -3680,6 +3720,11 @@
         <source>Fill</source>
         <translation>塗りつぶし</translation>
     </message>
+    <message>
+        <location filename="../ui/src/shade/main_window_shade.cpp" line="14"/>
+        <source>Shading</source>
+        <translation>陰影</translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::ObjectActions</name>
@@ -4120,6 +4165,74 @@
         <location filename="../ui/src/tools/tool_select.cpp" line="275"/>
         <source>Scale Strokes</source>
         <translation>ストロークを拡大・縮小</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ShadingPanel</name>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="25"/>
+        <source>Flat</source>
+        <translation>フラット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="26"/>
+        <source>Cel, two tones</source>
+        <translation>セル、2 階調</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="27"/>
+        <source>Cel, three tones</source>
+        <translation>セル、3 階調</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="28"/>
+        <source>Smooth</source>
+        <translation>なめらか</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="29"/>
+        <source>Shade the current object&apos;s fills from its rounded shape</source>
+        <translation>現在のオブジェクトの塗りに、丸みを帯びた形から陰影を付けます</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="30"/>
+        <source>Fills:</source>
+        <translation>塗り:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="31"/>
+        <source>Rim light</source>
+        <translation>リムライト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="33"/>
+        <source>A light edge on the side away from the light</source>
+        <translation>光源と反対側の縁を明るくします</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="41"/>
+        <source>Where the light comes from on screen: 0° from the right, 90° from above, 180° from the left</source>
+        <translation>画面上で光の来る方向: 0° は右から、90° は上から、180° は左から</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="43"/>
+        <source>Light direction:</source>
+        <translation>光の方向:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="49"/>
+        <source>How high the light stands above the drawing: 0° grazes it, 90° shines from the viewer</source>
+        <translation>光源の高さ: 0° は絵をかすめ、90° は見る人の側から照らします</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="51"/>
+        <source>Light height:</source>
+        <translation>光の高さ:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="88"/>
+        <source>Fill regions of the current object with the Fill tool to shade them.</source>
+        <translation>塗りつぶしツールで現在のオブジェクトの領域を塗ると、陰影を付けられます。</translation>
     </message>
 </context>
 <context>

@@ -215,6 +215,7 @@ QByteArray poseEntry(SectionReader &in)
 struct Layout {
     quint32 version = 0;
     Section document, strokes, poses, frames;
+    Section light; // "lite" (shaded fills' light), when the file has one
 };
 
 // The section list up to the frames: the header checked, each section's bounds checked,
@@ -268,6 +269,20 @@ Layout readLayout(FileReader &file, qint64 wholeSectionBytes)
         } else if (t == kTagSound && next == std::size(order)) {
             // A sound clip (after the frames, as the reader wants it): a thumbnail needs no
             // sound, so its bytes are skipped unread.
+        } else if (t == kTagLight && next == std::size(order) && length <= 64) {
+            // The light of shaded fills: the thumbnail is lit as the opened file is. Read
+            // whole (16 bytes) and checked as the model's reader checks it; the last one
+            // counts, as there.
+            QByteArray bytes = file.read(payload, end - payload);
+            if (hasCrc &&
+                u32At(bytes, qint64(length)) !=
+                    model::io::crc32c(model::io::crc32c(0, header.constData(), header.size()),
+                                      bytes.constData(), std::size_t(length)))
+                throw Broken{FileErrorCode::Damaged};
+            bytes.truncate(qint64(length));
+            layout.light.payload = payload;
+            layout.light.length = qint64(length);
+            layout.light.whole = bytes;
         } else if (t == kTagEnd || known || !isAncillary(t)) {
             // A section missing, repeated or out of order, or one a newer Finbook wrote: the
             // model's reader would refuse the file.
@@ -320,6 +335,8 @@ QByteArray firstFrameFile(FileReader &file, qint64 wholeSectionBytes)
     writeSection(w, kTagStrokes, strokes, crc);
     writeSection(w, kTagPoses, poses, crc);
     writeSection(w, kTagFrames, frameList, crc);
+    if (!layout.light.whole.isNull())
+        writeSection(w, kTagLight, layout.light.whole, crc);
     writeSection(w, kTagEnd, QByteArray(), crc);
     return w.take();
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 
 namespace finbook::model {
 
@@ -470,6 +471,11 @@ DocumentSettings sanitizedSettings(DocumentSettings s)
     if (s.playEnd >= 0 && s.playEnd < s.playStart)
         std::swap(s.playStart, s.playEnd);
     s.closeGap = s.closeGap >= 0 ? std::min(s.closeGap, kMaxCloseGap) : -1.0; // NaN: automatic
+    s.lightAzimuth = std::isfinite(s.lightAzimuth) ? std::fmod(s.lightAzimuth, 360.0) : 135.0;
+    if (s.lightAzimuth < 0.0)
+        s.lightAzimuth += 360.0;
+    s.lightElevation =
+        std::isfinite(s.lightElevation) ? std::clamp(s.lightElevation, 0.0, 90.0) : 45.0;
     return s;
 }
 

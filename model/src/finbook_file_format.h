@@ -27,6 +27,9 @@
 //              at the mode) open with no locks.
 //   "FILL"  := u32 count (u32 color f64 seedX f64 seedY u32 n u64 strokeId[n])[count]
 //              (format 3 on; types.h Fill): fills, drawn under the strokes in this order.
+//   "shad"  := u32 count (u8 ramp u8 rim)[count]   (ancillary; types.h FillShading): how each
+//              fill of the object is shaded, one entry per fill of its FILL chunk, after it.
+//              Written only when a fill is shaded; a reader that skips it shows flat fills.
 //   "JOIN"  := u64 parentObjectId f64 childAtX f64 childAtY f64 parentAtX f64 parentAtY
 //              (skeleton/skeleton_rig.h SkeletonJoin): the object's skeleton hangs from
 //              another object's skeleton in the same frame. Only after SKEL.
@@ -37,6 +40,10 @@
 //              was (WAV, MP3, …). Written only when the document has sound, so a file without
 //              sound is a plain format-3 file; a Finbook that does not know SOND refuses a file
 //              with sound as made by a newer Finbook (it would drop the sound on saving).
+//
+// Ancillary sections (between FRAM and FEND):
+//   "lite"  := f64 azimuth f64 elevation   (degrees; DocumentSettings' light for shaded fills),
+//              written only when the light is not the default.
 //
 // An object carries at most one rig chunk (PINS, CAGE or SKEL).
 //
@@ -95,6 +102,8 @@ constexpr quint32 kTagJoin = tag("JOIN");
 constexpr quint32 kTagFills = tag("FILL");
 constexpr quint32 kTagReference = tag("refr");
 constexpr quint32 kTagSound = tag("SOND");
+constexpr quint32 kTagShading = tag("shad");
+constexpr quint32 kTagLight = tag("lite");
 
 inline bool isAncillary(quint32 t)
 {

@@ -181,6 +181,18 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
         readReferenceSection(body);
         return !cut;
     }
+    if (t == kTagLight && next == std::size(kOrder)) {
+        if (recovering()) {
+            try {
+                readLightSection(body);
+            } catch (const ReadFailure &failure) {
+                m_problems << failure.what;
+            }
+        } else {
+            readLightSection(body);
+        }
+        return !cut;
+    }
     if (sound) {
         if (next < std::size(kOrder))
             problem(c, FileErrorCode::BadValue,

@@ -92,8 +92,10 @@ private:
     void readSkeletonChunk(Cursor &c, StrokeGroup &g);
     void readJoinChunk(Cursor &c, StrokeGroup &g);
     void readPoseChunk(Cursor &c, StrokeGroup &g);
-    void readFillsChunk(Cursor &c, StrokeGroup &g); // fill/fill_chunk.cpp
-    void readReferenceSection(Cursor &c);           // reference/reference_section.cpp
+    void readFillsChunk(Cursor &c, StrokeGroup &g);   // fill/fill_chunk.cpp
+    void readShadingChunk(Cursor &c, StrokeGroup &g); // shade/shade_chunk.cpp
+    void readLightSection(Cursor &c);                 // shade/shade_chunk.cpp
+    void readReferenceSection(Cursor &c);             // reference/reference_section.cpp
     std::vector<Pin> readPins(Cursor &c);
     CageRig readCage(Cursor &c);
     SkeletonRig readSkeleton(Cursor &c); // skeleton/skeleton_chunk.cpp

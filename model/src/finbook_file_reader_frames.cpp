@@ -26,6 +26,7 @@ const Reader::ObjectChunk Reader::kObjectChunks[] = {
     {kTagPins, true, &Reader::readPinsChunk},         {kTagCage, true, &Reader::readCageChunk},
     {kTagSkeleton, true, &Reader::readSkeletonChunk}, {kTagJoin, false, &Reader::readJoinChunk},
     {kTagDeformed, false, &Reader::readPoseChunk},    {kTagFills, false, &Reader::readFillsChunk},
+    {kTagShading, false, &Reader::readShadingChunk},
 };
 
 quint32 Reader::count(Cursor &c, std::size_t recordBytes, const char *what)

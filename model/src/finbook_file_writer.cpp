@@ -65,7 +65,7 @@ struct Tables {
         for (const Pin &p : g.rig.pins)
             noteId(p.id);
         for (const Fill &f : g.fills) {
-            expectedBytes += qsizetype(kFillFixedBytes + 8 * f.strokes.size());
+            expectedBytes += qsizetype(kFillFixedBytes + 2 + 8 * f.strokes.size()); // + "shad"
             for (Id id : f.strokes)
                 noteId(id);
         }
@@ -205,6 +205,18 @@ const ObjectChunkWriter kObjectChunkWriters[] = {
                  w.u64(id);
          }
      }},
+    {kTagShading,
+     [](const StrokeGroup &g) {
+         return std::any_of(g.fills.begin(), g.fills.end(),
+                            [](const Fill &f) { return f.shading != FillShading(); });
+     },
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &) {
+         w.u32(quint32(g.fills.size()));
+         for (const Fill &f : g.fills) {
+             w.u8(quint8(f.shading.ramp));
+             w.u8(f.shading.rim ? 1 : 0);
+         }
+     }},
     {kTagDeformed, poseMatches,
      [](ByteWriter &w, const StrokeGroup &g, const Tables &tables) {
          w.u32(tables.poseIndex.at(g.deformed.get()));
@@ -308,6 +320,13 @@ QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSett
     writeSection(w, kTagFrames, [&] { writeFrames(w, frames, tables); });
     for (const SoundClip &clip : sound)
         writeSection(w, kTagSound, [&] { writeSoundClip(w, clip); });
+    const DocumentSettings defaults;
+    if (settings.lightAzimuth != defaults.lightAzimuth ||
+        settings.lightElevation != defaults.lightElevation)
+        writeSection(w, kTagLight, [&] {
+            w.f64(settings.lightAzimuth);
+            w.f64(settings.lightElevation);
+        });
     for (const AncillarySection &a : ancillary)
         writeSection(w, tag(a.tag),
                      [&] { w.raw(a.payload.constData(), std::size_t(a.payload.size())); });

@@ -354,8 +354,8 @@ void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &s
         return;
     }
     for (const StrokeGroup &group : frame.groups) {
-        for (const FillItem &fill : fillList(group, settings.closeGap, options))
-            painter.fillPath(fill.path, QColor::fromRgba(fill.color));
+        for (const FillItem &fill : fillList(group, settings, options))
+            paintFill(painter, fill);
         for (const PaintItem &item : paintList(group, options))
             paintStroke(painter, *item.points, item.color, item.width);
     }

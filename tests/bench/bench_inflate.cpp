@@ -4,10 +4,13 @@
 // and the outline's share of zero heights and horizontal normals. One JSON object per file, then a
 // summary line. --sheet renders the normals of every file lit from the upper left, smooth and in
 // three cel tones, into one contact sheet; --obj writes every shape as a closed solid into one OBJ
-// file (one object per input file).
+// file (one object per input file). Then the GUI-thread cost of re-shading the posed frame of a
+// document (--reshade, default the bundled example; shade_bench.h), and with --shaded-sheet a
+// contact sheet of the sketch files filled, shaded, at rest and posed by their skeletons.
 #include "../geometry/inflate_test_support.h"
 #include "bench.h"
 #include "inflate_sheet.h"
+#include "shade_bench.h"
 
 #include <finbook/geometry/inflate/inflated_solid.h>
 #include <finbook/geometry/inflate/inflation.h>
@@ -130,6 +133,10 @@ int benchInflate(const QStringList &arguments)
     };
     const QString sheetPath = option(QStringLiteral("--sheet"));
     const QString objPath = option(QStringLiteral("--obj"));
+    const QString shadedPath = option(QStringLiteral("--shaded-sheet"));
+    QString reshade = option(QStringLiteral("--reshade"));
+    if (reshade.isEmpty())
+        reshade = QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook");
     InflateOptions options;
     const QString smoothing = option(QStringLiteral("--smoothing"));
     const QString angle = option(QStringLiteral("--contact-angle"));
@@ -141,7 +148,7 @@ int benchInflate(const QStringList &arguments)
         std::fprintf(
             stderr,
             "usage: finbook-bench inflate [--sheet OUT.png] [--obj OUT.obj] [--smoothing S] "
-            "[--contact-angle A] FILE...\n");
+            "[--contact-angle A] [--reshade DOC.finbook] [--shaded-sheet OUT.png] FILE...\n");
         return 2;
     }
     finbook::bench::InflateSheet sheet;
@@ -173,6 +180,14 @@ int benchInflate(const QStringList &arguments)
          totals.outline ? double(totals.vertical) / double(totals.outline) : 0.0},
     };
     std::printf("%s\n", QJsonDocument(summary).toJson(QJsonDocument::Compact).constData());
+    // Shaded fills: the GUI-thread cost of re-shading a posed frame, and the contact sheet.
+    const QJsonObject shade = finbook::bench::reshadeCost(reshade);
+    failures += shade.contains(QStringLiteral("error")) ? 1 : 0;
+    std::printf("%s\n", QJsonDocument(shade).toJson(QJsonDocument::Compact).constData());
+    if (!shadedPath.isEmpty() && !finbook::bench::shadedSheet(args, shadedPath)) {
+        std::fprintf(stderr, "cannot write %s\n", qPrintable(shadedPath));
+        return 1;
+    }
     if (!sheetPath.isEmpty() && !sheet.save(sheetPath)) {
         std::fprintf(stderr, "cannot write %s\n", qPrintable(sheetPath));
         return 1;
@@ -190,6 +205,7 @@ int benchInflate(const QStringList &arguments)
 } // namespace
 
 FINBOOK_BENCH("inflate",
-              "[--sheet OUT.png] [--obj OUT.obj] [--smoothing S] [--contact-angle A] FILE... "
-              "(strokes or contours as JSON)",
+              "[--sheet OUT.png] [--obj OUT.obj] [--smoothing S] [--contact-angle A] "
+              "[--reshade DOC.finbook] [--shaded-sheet OUT.png] FILE... (strokes or contours as "
+              "JSON; re-shading times the example's posed frame)",
               benchInflate);

@@ -29,8 +29,8 @@ StrokeGroup rigged(Id &next, const QString &name, float x0)
 }
 
 // Two frames, each with a caged object and a boned one, both posed, and a part joined to the
-// boned one; the second frame's skeleton has a locked joint; the caged object has fills, and
-// the document its own close-gap setting.
+// boned one; the second frame's skeleton has a locked joint; the caged object has fills (one
+// shaded), and the document its own close-gap setting and light.
 void cageAndSkeleton(Document &doc)
 {
     std::vector<Frame> frames(2);
@@ -64,14 +64,20 @@ void cageAndSkeleton(Document &doc)
         h.angles = {0.0, 0.3};
         h.join = {boned.id, QPointF(142, 82), QPointF(139, 79)};
         hand.deformed = shiftedPose(hand, 1.0f);
-        // Fills (a FILL chunk): one naming both strokes, one naming a stroke erased since.
-        caged.fills = {{0xffe0c040, QPointF(30, 45), {caged.strokes[0].id, caged.strokes[1].id}},
-                       {0x80304050, QPointF(12, 70), {caged.strokes[1].id, next + 1000}}};
+        // Fills (a FILL chunk): one naming both strokes, one naming a stroke erased since;
+        // the first shaded (a "shad" chunk).
+        caged.fills = {{0xffe0c040,
+                        QPointF(30, 45),
+                        {caged.strokes[0].id, caged.strokes[1].id},
+                        {ShadeRamp::ThreeTones, true}},
+                       {0x80304050, QPointF(12, 70), {caged.strokes[1].id, next + 1000}, {}}};
         f.groups = {caged, boned, hand};
     }
     DocumentSettings settings;
     settings.canvasSize = QSize(320, 200);
     settings.closeGap = 14.0;
+    settings.lightAzimuth = 200.0; // a "lite" section
+    settings.lightElevation = 30.0;
     doc.reset(std::move(frames), settings, next + 2000);
 }
 
@@ -137,7 +143,7 @@ void collectTags(const QByteArray &bytes, std::set<QByteArray> &tags)
     }
     // Object chunks: look for their tags followed by a plausible length (good enough for
     // files this small, whose points never spell these letters).
-    for (const char *chunk : {"PINS", "CAGE", "SKEL", "JOIN", "DEFM", "FILL"})
+    for (const char *chunk : {"PINS", "CAGE", "SKEL", "JOIN", "DEFM", "FILL", "shad"})
         if (bytes.contains(chunk))
             tags.insert(chunk);
 }
@@ -180,7 +186,7 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
     for (const char *tag : {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE",
-                            "SKEL", "JOIN", "DEFM", "FILL", "refr", "SOND"})
+                            "SKEL", "JOIN", "DEFM", "FILL", "refr", "SOND", "shad", "lite"})
         QVERIFY2(tags.count(tag), tag);
 }
 

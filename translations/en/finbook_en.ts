@@ -34,7 +34,7 @@
 <context>
     <name>FinbookFile</name>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>its pose has %n stroke but the object has %1</numerusform>
@@ -42,7 +42,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="336"/>
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="337"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>stroke %1 has %n point but its pose has %2</numerusform>

@@ -151,10 +151,29 @@ QByteArray fillPath(const QPainterPath &path)
     return d;
 }
 
+// A shaded fill's tones as a few filled regions: the mesh pieces of each tone merged into
+// their outlines (QPainterPath::simplified), so a tone is one path of a few polygons.
+void appendTones(QByteArray &svg, const FillItem &fill, Id groupId, int k)
+{
+    int t = 0;
+    for (const ToneItem &tone : fill.tones) {
+        const QByteArray d = fillPath(tone.path.simplified());
+        ++t;
+        if (d.isEmpty())
+            continue;
+        svg += "<path id=\"tone-" + QByteArray::number(groupId) + '-' + QByteArray::number(k) +
+               '-' + QByteArray::number(t) + "\" class=\"tone\" fill=\"" + colour(tone.color) + '"';
+        const int alpha = qAlpha(tone.color);
+        if (alpha < 255)
+            svg += " fill-opacity=\"" + QByteArray::number(alpha / 255.0, 'g', 3) + '"';
+        svg += " fill-rule=\"nonzero\" d=\"" + d + "\"/>\n";
+    }
+}
+
 void appendFills(QByteArray &svg, const StrokeGroup &group, const DocumentSettings &settings)
 {
     int k = 0;
-    for (const FillItem &fill : fillList(group, settings.closeGap)) {
+    for (const FillItem &fill : fillList(group, settings)) {
         const QByteArray d = fillPath(fill.path);
         ++k;
         if (d.isEmpty())
@@ -165,6 +184,7 @@ void appendFills(QByteArray &svg, const StrokeGroup &group, const DocumentSettin
         if (alpha < 255)
             svg += " fill-opacity=\"" + QByteArray::number(alpha / 255.0, 'g', 3) + '"';
         svg += " fill-rule=\"nonzero\" d=\"" + d + "\"/>\n";
+        appendTones(svg, fill, group.id, k);
     }
 }
 } // namespace

@@ -8,8 +8,9 @@
 
 namespace finbook::model {
 
-std::vector<FillItem> fillList(const StrokeGroup &group, double closeGap,
-                               const RenderOptions &options)
+namespace {
+std::vector<FillItem> fillItems(const StrokeGroup &group, double closeGap,
+                                const DocumentSettings *shade, const RenderOptions &options)
 {
     if (group.fills.empty() || (!group.visible && !options.showHidden))
         return {};
@@ -21,6 +22,11 @@ std::vector<FillItem> fillList(const StrokeGroup &group, double closeGap,
         if (fill < 0)
             continue;
         items[std::size_t(fill)].path.addPath(regions->displayedPath(group, f));
+        const Fill &source = group.fills[std::size_t(fill)];
+        if (shade && !options.tint && source.shading.shaded())
+            for (ToneItem &tone :
+                 faceTones(group, regions, f, source.shading, source.color, *shade))
+                items[std::size_t(fill)].tones.push_back(std::move(tone));
     }
     std::vector<FillItem> out;
     for (std::size_t i = 0; i < items.size(); ++i) {
@@ -28,6 +34,8 @@ std::vector<FillItem> fillList(const StrokeGroup &group, double closeGap,
             continue;
         items[i].path.setFillRule(Qt::WindingFill);
         QRgb color = group.fills[i].color;
+        if (!items[i].tones.empty())
+            color = baseTone(color, group.fills[i].shading);
         if (options.tint) {
             const QColor t = *options.tint;
             color =
@@ -37,6 +45,26 @@ std::vector<FillItem> fillList(const StrokeGroup &group, double closeGap,
         out.push_back(std::move(items[i]));
     }
     return out;
+}
+} // namespace
+
+std::vector<FillItem> fillList(const StrokeGroup &group, double closeGap,
+                               const RenderOptions &options)
+{
+    return fillItems(group, closeGap, nullptr, options);
+}
+
+std::vector<FillItem> fillList(const StrokeGroup &group, const DocumentSettings &settings,
+                               const RenderOptions &options)
+{
+    return fillItems(group, settings.closeGap, &settings, options);
+}
+
+void paintFill(QPainter &painter, const FillItem &fill)
+{
+    painter.fillPath(fill.path, QColor::fromRgba(fill.color));
+    for (const ToneItem &tone : fill.tones)
+        painter.fillPath(tone.path, QColor::fromRgba(tone.color));
 }
 
 bool frameHasFills(const Frame &frame, const RenderOptions &options)

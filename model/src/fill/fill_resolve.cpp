@@ -100,7 +100,7 @@ std::vector<int> faceFills(const ObjectRegions &regions, const std::vector<Fill>
 Fill fillOfFace(const ObjectRegions &regions, int face, QRgb color)
 {
     const auto &seed = regions.regions().faces[std::size_t(face)].seed;
-    return Fill{color, QPointF(seed.x(), seed.y()), regions.faceStrokeIds(face)};
+    return Fill{color, QPointF(seed.x(), seed.y()), regions.faceStrokeIds(face), {}};
 }
 
 std::optional<std::vector<Fill>> fillsWithFace(const ObjectRegions &regions,
@@ -112,6 +112,9 @@ std::optional<std::vector<Fill>> fillsWithFace(const ObjectRegions &regions,
     std::vector<Fill> out = fills;
     if (shown < 0) {
         out.push_back(fillOfFace(regions, face, color));
+        // A new fill is shaded as the object's others are (the Shading panel sets them all).
+        if (!fills.empty())
+            out.back().shading = fills.back().shading;
         return out;
     }
     if (fills[std::size_t(shown)].color == color)
@@ -146,8 +149,11 @@ std::optional<std::vector<Fill>> fillsWithAllFaces(const ObjectRegions &regions,
     const std::vector<int> shown = faceFills(regions, fills);
     std::vector<Fill> out = fills;
     for (int f = 0; f < regions.faceCount(); ++f)
-        if (shown[std::size_t(f)] < 0)
+        if (shown[std::size_t(f)] < 0) {
             out.push_back(fillOfFace(regions, f, color));
+            if (!fills.empty())
+                out.back().shading = fills.back().shading;
+        }
     if (out.size() == fills.size())
         return std::nullopt;
     return out;

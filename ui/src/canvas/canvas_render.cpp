@@ -182,9 +182,9 @@ QImage CanvasWidget::renderFrameLayer(QImage recycled) const
     const model::Frame shown =
         m_suppressed.empty() ? model::Frame{} : withoutStrokes(*frame, m_suppressed);
     const model::Frame &drawn = m_suppressed.empty() ? *frame : shown;
-    const double closeGap = document()->settings().closeGap;
-    StrokeRaster::prepareFills(drawn, options, closeGap);
-    rasterize(image, [&](StrokeRaster &raster) { raster.drawFrame(drawn, options, closeGap); });
+    const model::DocumentSettings &settings = document()->settings();
+    StrokeRaster::prepareFills(drawn, options, settings);
+    rasterize(image, [&](StrokeRaster &raster) { raster.drawFrame(drawn, options, settings); });
     return image;
 }
 
@@ -210,13 +210,13 @@ QImage CanvasWidget::renderOnionLayer(QImage recycled) const
     };
     addSide(onion.before, -1, onion.beforeTint);
     addSide(onion.after, +1, onion.afterTint);
-    const double closeGap = doc->settings().closeGap;
+    const model::DocumentSettings &settings = doc->settings();
     for (const auto &[index, options] : layers)
-        StrokeRaster::prepareFills(doc->frameAt(index), options, closeGap);
+        StrokeRaster::prepareFills(doc->frameAt(index), options, settings);
     if (!layers.empty())
         rasterize(image, [&](StrokeRaster &raster) {
             for (const auto &[index, options] : layers)
-                raster.drawFrame(doc->frameAt(index), options, closeGap);
+                raster.drawFrame(doc->frameAt(index), options, settings);
         });
     return image;
 }

@@ -137,7 +137,7 @@ void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal sc
 }
 
 void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptions &options,
-                             double closeGap)
+                             const model::DocumentSettings &settings)
 {
     // paintList folds repeated references of one stroke into one item, as paintFrame does.
     if (!model::frameHasFills(frame, options)) {
@@ -146,18 +146,21 @@ void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptio
         return;
     }
     for (const model::StrokeGroup &group : frame.groups) {
-        for (const model::FillItem &fill : model::fillList(group, closeGap, options))
+        for (const model::FillItem &fill : model::fillList(group, settings, options)) {
             drawFill(fill.path, fill.color, options.opacity);
+            for (const model::ToneItem &tone : fill.tones)
+                drawFill(tone.path, tone.color, options.opacity);
+        }
         for (const model::PaintItem &item : model::paintList(group, options))
             drawStroke(*item.points, item.color, item.width, options.opacity);
     }
 }
 
 void StrokeRaster::prepareFills(const model::Frame &frame, const model::RenderOptions &options,
-                                double closeGap)
+                                const model::DocumentSettings &settings)
 {
     for (const model::StrokeGroup &group : frame.groups)
-        model::fillList(group, closeGap, options);
+        model::fillList(group, settings, options);
 }
 
 void StrokeRaster::drawFill(const QPainterPath &path, QRgb color, qreal opacity)

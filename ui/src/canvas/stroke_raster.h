@@ -34,12 +34,14 @@ public:
     void drawFill(const QPainterPath &path, QRgb color, qreal opacity);
     // paintFrame()'s rules: hidden objects skipped unless options.showHidden, the tint
     // replaces every colour, options.opacity applies per stroke and fill, each object's fills
-    // under its strokes (regions closed with `closeGap`, DocumentSettings). No background.
-    void drawFrame(const model::Frame &frame, const model::RenderOptions &options, double closeGap);
+    // under its strokes (regions closed with settings.closeGap; shaded fills lit by its light).
+    // No background.
+    void drawFrame(const model::Frame &frame, const model::RenderOptions &options,
+                   const model::DocumentSettings &settings);
     // Computes what drawFrame needs of the frame's fills once, on this thread, so the bands
     // of drawParallel find it cached instead of each computing it.
     static void prepareFills(const model::Frame &frame, const model::RenderOptions &options,
-                             double closeGap);
+                             const model::DocumentSettings &settings);
 
     // Runs `draw` once per horizontal band of the clip, one band per core (up to 4), each on
     // its own rasterizer: bands share no pixel, so the result equals one rasterizer's. Blocks

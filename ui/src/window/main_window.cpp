@@ -60,6 +60,7 @@ MainWindow::MainWindow(QWidget *parent)
     createCanvasAndTools();
     createDeformation();
     createFill();
+    createShading();
     createDocks();
     createStatusBar();
     arrangeToolBars();

@@ -105,6 +105,19 @@ struct DeformedStrokes {
 };
 using DeformedStrokesPtr = std::shared_ptr<const DeformedStrokes>;
 
+// How a fill is shaded from its object's inflated shape (shade/fill_shading.h): not at all, a
+// cel ramp of two or three tones (the animator's usual look), or a smooth ramp; with an
+// optional rim light on the side away from the light.
+enum class ShadeRamp : quint8 { Off = 0, TwoTones = 1, ThreeTones = 2, Smooth = 3 };
+constexpr quint8 kLastShadeRamp = 3;
+
+struct FillShading {
+    ShadeRamp ramp = ShadeRamp::Off;
+    bool rim = false;
+    bool shaded() const { return ramp != ShadeRamp::Off; }
+    friend bool operator==(const FillShading &, const FillShading &) = default;
+};
+
 // A fill: a colour on one region of its object (fill/fill_regions.h), tied to the region by a
 // point inside it on the rest drawing and the ids of the strokes that bounded it when it was
 // made, not by pixels: when the strokes change, the region that still holds the seed (or, when
@@ -113,6 +126,7 @@ struct Fill {
     QRgb color = 0xff000000; // ARGB
     QPointF seed;            // rest canvas pixels
     std::vector<Id> strokes; // sorted, unique
+    FillShading shading;
     friend bool operator==(const Fill &, const Fill &) = default;
 };
 
@@ -150,6 +164,10 @@ struct DocumentSettings {
     int playEnd = -1;  // last frame index, -1 = the last frame
     // Gaps up to this many canvas pixels close the regions that fills use; < 0 = automatic.
     double closeGap = -1.0;
+    // The light of shaded fills, fixed in screen space (geometry::lightDirection): degrees
+    // counter-clockwise from the right, and above the drawing's plane. Default: upper left.
+    double lightAzimuth = 135.0;  // [0, 360)
+    double lightElevation = 45.0; // [0, 90]
     friend bool operator==(const DocumentSettings &, const DocumentSettings &) = default;
 };
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <finbook/model/render.h>
+#include <finbook/model/shade/fill_shading.h>
 
 #include <QPainterPath>
 
@@ -12,11 +13,21 @@ namespace finbook::model {
 struct FillItem {
     QPainterPath path; // canvas pixels, non-zero (winding) rule
     QRgb color = 0;    // after options: the onion-skin tint, lighter than the strokes'
+    // A shaded fill's tone regions (shade/fill_shading.h), drawn over `path` in this order.
+    // They follow the fill's faces and end on its outline, under the ink.
+    std::vector<ToneItem> tones;
 };
 
-// The fills of one object, back to front. Empty for an object without fills.
+// The fills of one object, back to front, flat. Empty for an object without fills.
 std::vector<FillItem> fillList(const StrokeGroup &group, double closeGap,
                                const RenderOptions &options = {});
+// The same with shaded fills' tones lit by the document's light (settings.closeGap decides
+// the regions). Tinted fills (onion skin) stay flat.
+std::vector<FillItem> fillList(const StrokeGroup &group, const DocumentSettings &settings,
+                               const RenderOptions &options = {});
+
+// Paints one item: its path, then its tones (the canvas raster draws its own way).
+void paintFill(QPainter &painter, const FillItem &fill);
 
 // Whether any object of the frame that `options` shows has fills.
 bool frameHasFills(const Frame &frame, const RenderOptions &options = {});

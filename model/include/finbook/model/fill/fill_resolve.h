@@ -19,17 +19,18 @@ namespace finbook::model {
 // For each face, the index of the fill it shows, or -1.
 std::vector<int> faceFills(const ObjectRegions &regions, const std::vector<Fill> &fills);
 
-// A fill of `face` in `color`: its seed, its bounding strokes.
+// A fill of `face` in `color`: its seed, its bounding strokes (flat).
 Fill fillOfFace(const ObjectRegions &regions, int face, QRgb color);
 
 // The object's fills after the edits the Fill tool makes on `face`; nullopt when nothing would
 // change. Filling a face that shows a fill recolours that fill (and ties it to the face as it is
-// now); removing drops every fill that shows on the face.
+// now); removing drops every fill that shows on the face. New fills are shaded as the object's
+// last fill is.
 std::optional<std::vector<Fill>>
 fillsWithFace(const ObjectRegions &regions, const std::vector<Fill> &fills, int face, QRgb color);
 std::optional<std::vector<Fill>> fillsWithoutFace(const ObjectRegions &regions,
                                                   const std::vector<Fill> &fills, int face);
-// Every face that shows no fill gets one in `color`.
+// Every face that shows no fill gets one in `color` (shaded as the object's last fill).
 std::optional<std::vector<Fill>> fillsWithAllFaces(const ObjectRegions &regions,
                                                    const std::vector<Fill> &fills, QRgb color);
 

@@ -121,6 +121,7 @@ private:
     void settlePoses();
     void createSkeleton(QMenu *deformMenu); // skeleton/main_window_skeleton.cpp
     void createFill();                      // fill/main_window_fill.cpp
+    void createShading();                   // shade/main_window_shade.cpp
     void createDocks();
     void createStatusBar();
     void connectStatus();

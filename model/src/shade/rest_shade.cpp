@@ -1,0 +1,80 @@
+// Inflating a face at rest and weighing its stroke controls (rest_shade.h).
+#include "rest_shade.h"
+
+#include <finbook/geometry/object_mesh.h>
+
+#include <list>
+#include <mutex>
+
+namespace finbook::model {
+
+namespace {
+struct Entry {
+    const ObjectRegions *regions = nullptr;
+    std::weak_ptr<const ObjectRegions> alive;
+    int face = -1;
+    double density = 0.0;
+    RestShadePtr shade; // null: tried and failed
+};
+constexpr std::size_t kEntries = 128; // about 100 kB each
+std::mutex g_mutex;
+std::list<Entry> g_cache;
+
+RestShadePtr compute(const StrokeGroup &group, const ObjectRegions &regions, int face)
+{
+    geometry::MeshOptions options;
+    options.density = group.meshDensity > 0.0 ? std::min(group.meshDensity, 100.0) : 1.0;
+    options.targetVertices = kShadeTargetVertices;
+    const auto mesh = geometry::buildObjectMesh(
+        geometry::Region{regions.regions().faces[std::size_t(face)].polygon}, options);
+    if (!mesh)
+        return nullptr;
+    auto inflation = geometry::inflateObjectMesh(*mesh);
+    if (!inflation)
+        return nullptr;
+    auto shade = std::make_shared<RestShade>();
+    shade->inflation = std::move(*inflation);
+    std::size_t total = 0;
+    for (const Stroke &s : group.strokes)
+        total += s.data ? s.data->points.size() : 0;
+    const std::size_t stride = std::max<std::size_t>(1, total / kMaxShadeControls + 1);
+    std::size_t k = 0;
+    for (std::size_t s = 0; s < group.strokes.size(); ++s) {
+        if (!group.strokes[s].data)
+            continue;
+        for (std::size_t p = 0; p < group.strokes[s].data->points.size(); ++p, ++k)
+            if (k % stride == 0)
+                shade->controls.emplace_back(int(s), int(p));
+    }
+    Eigen::MatrixX2d controls(Eigen::Index(shade->controls.size()), 2);
+    for (std::size_t c = 0; c < shade->controls.size(); ++c) {
+        const StrokePoint &p = group.strokes[std::size_t(shade->controls[c].first)]
+                                   .data->points[std::size_t(shade->controls[c].second)];
+        controls.row(Eigen::Index(c)) << p.x, p.y;
+    }
+    shade->weights = geometry::poseWeights(shade->inflation.V, controls, kShadePoseNeighbours);
+    return shade;
+}
+} // namespace
+
+RestShadePtr restShade(const StrokeGroup &group, const ObjectRegionsPtr &regions, int face)
+{
+    {
+        std::lock_guard lock(g_mutex);
+        for (auto it = g_cache.begin(); it != g_cache.end(); ++it)
+            if (it->regions == regions.get() && it->face == face &&
+                it->density == group.meshDensity && !it->alive.expired()) {
+                g_cache.splice(g_cache.begin(), g_cache, it);
+                return g_cache.front().shade;
+            }
+    }
+    // Computed outside the lock, as objectRegions does.
+    RestShadePtr shade = compute(group, *regions, face);
+    std::lock_guard lock(g_mutex);
+    g_cache.push_front({regions.get(), regions, face, group.meshDensity, shade});
+    if (g_cache.size() > kEntries)
+        g_cache.pop_back();
+    return shade;
+}
+
+} // namespace finbook::model

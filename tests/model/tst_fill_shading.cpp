@@ -1,0 +1,280 @@
+// Shaded fills (shade/fill_shading.h, shade/shade_commands.h): one undo step each, a disc lit
+// from the left is bright on its left and shadowed on its right in every renderer, the tones
+// follow a pose while the light stays on screen, onion skin stays flat, SVG gets tone paths,
+// and the file keeps the shading and the light.
+#include "../../model/src/export/export_formats.h"
+#include "fill_support.h"
+
+#include <finbook/model/deform_setup.h>
+#include <finbook/model/export/export_plan.h>
+#include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_render.h>
+#include <finbook/model/finbook_file.h>
+#include <finbook/model/shade/fill_shading.h>
+#include <finbook/model/shade/shade_commands.h>
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace finbook::model;
+using finbook::testing::polylineStroke;
+
+namespace {
+
+constexpr QRgb kRed = 0xffe03020;
+const QPointF kCentre(200, 200);
+constexpr double kRadius = 100.0;
+
+void push(Document &doc, std::unique_ptr<QUndoCommand> command)
+{
+    QVERIFY(command);
+    doc.undoStack()->push(command.release());
+}
+
+// A document whose one object is a circle outline (one closed stroke), filled red.
+Id discDocument(Document &doc)
+{
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    QPolygonF circle;
+    for (int i = 0; i <= 96; ++i)
+        circle << kCentre +
+                      kRadius * QPointF(std::cos(2 * M_PI * i / 96), std::sin(2 * M_PI * i / 96));
+    doc.undoStack()->push(new AddStrokeCommand(&doc, g, polylineStroke(circle)));
+    push(doc, fillRegionCommand(&doc, g, kCentre, kRed));
+    DocumentSettings settings = doc.settings();
+    settings.canvasSize = QSize(400, 400);
+    doc.undoStack()->push(new ChangeSettingsCommand(&doc, settings));
+    doc.undoStack()->clear();
+    return g;
+}
+
+// The area-weighted centre of a tone's path (its pieces are triangles and quads).
+QPointF centreOf(const QPainterPath &path)
+{
+    double area = 0.0;
+    QPointF sum;
+    for (const QPolygonF &ring : path.toSubpathPolygons()) {
+        for (qsizetype i = 1; i + 1 < ring.size(); ++i) {
+            const QPointF a = ring[0], b = ring[i], c = ring[i + 1];
+            const double w =
+                0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
+            area += w;
+            sum += w * (a + b + c) / 3.0;
+        }
+    }
+    return area != 0.0 ? sum / area : QPointF();
+}
+
+int brightness(QRgb c)
+{
+    return qRed(c) + qGreen(c) + qBlue(c);
+}
+
+} // namespace
+
+class TestFillShading : public QObject {
+    Q_OBJECT
+private slots:
+    void shadingIsOneUndoStep();
+    void lightIsOneUndoStepAndSanitized();
+    void newFillsAreShadedAsTheObjectsOthers();
+    void discLitFromTheLeftIsBrighterOnItsLeft();
+    void everyRampAndRimGivesTones();
+    void tonesFollowThePoseLightStaysOnScreen();
+    void onionSkinStaysFlat();
+    void svgWritesToneRegionsNotRaster();
+    void fileKeepsShadingAndLight();
+    void fileWithoutShadingOpensFlat();
+};
+
+void TestFillShading::shadingIsOneUndoStep()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    const std::vector<Fill> before = doc.group(g)->fills;
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, true}));
+    QCOMPARE(doc.undoStack()->count(), 1);
+    QCOMPARE(doc.group(g)->fills[0].shading.ramp, ShadeRamp::ThreeTones);
+    QVERIFY(doc.group(g)->fills[0].shading.rim);
+    QVERIFY(!shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, true})); // unchanged
+    doc.undoStack()->undo();
+    QCOMPARE(doc.group(g)->fills, before);
+    doc.undoStack()->redo();
+    QCOMPARE(doc.group(g)->fills[0].shading, (FillShading{ShadeRamp::ThreeTones, true}));
+    QVERIFY(!shadeFillsCommand(&doc, 999999, {ShadeRamp::TwoTones, false})); // no such object
+    // Recolouring keeps the shading.
+    push(doc, fillRegionCommand(&doc, g, kCentre, 0xff2040e0));
+    QCOMPARE(doc.group(g)->fills[0].shading.ramp, ShadeRamp::ThreeTones);
+}
+
+void TestFillShading::lightIsOneUndoStepAndSanitized()
+{
+    Document doc;
+    discDocument(doc);
+    push(doc, setLightCommand(&doc, 180.0, 30.0));
+    QCOMPARE(doc.settings().lightAzimuth, 180.0);
+    QCOMPARE(doc.settings().lightElevation, 30.0);
+    push(doc, setLightCommand(&doc, -90.0, 200.0));
+    QCOMPARE(doc.settings().lightAzimuth, 270.0);
+    QCOMPARE(doc.settings().lightElevation, 90.0);
+    push(doc, setLightCommand(&doc, std::nan(""), std::nan("")));
+    QCOMPARE(doc.settings().lightAzimuth, DocumentSettings().lightAzimuth);
+    QVERIFY(
+        !setLightCommand(&doc, DocumentSettings().lightAzimuth, DocumentSettings().lightElevation));
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    QCOMPARE(doc.settings().lightAzimuth, 180.0);
+    doc.undoStack()->undo();
+    QCOMPARE(doc.settings().lightAzimuth, DocumentSettings().lightAzimuth);
+}
+
+void TestFillShading::newFillsAreShadedAsTheObjectsOthers()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::Smooth, true}));
+    // A second, separate outline in the same object: filling it shades it the same way.
+    QPolygonF square{QPointF(320, 20), QPointF(380, 20), QPointF(380, 80), QPointF(320, 80),
+                     QPointF(320, 20)};
+    doc.undoStack()->push(new AddStrokeCommand(&doc, g, polylineStroke(square)));
+    push(doc, fillRegionCommand(&doc, g, QPointF(350, 50), 0xff2040e0));
+    QCOMPARE(doc.group(g)->fills.size(), std::size_t(2));
+    QCOMPARE(doc.group(g)->fills[1].shading, (FillShading{ShadeRamp::Smooth, true}));
+}
+
+void TestFillShading::discLitFromTheLeftIsBrighterOnItsLeft()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, setLightCommand(&doc, 180.0, 30.0));
+    const QImage flat = renderFrame(doc.frameAt(0), doc.settings(), QSize(400, 400));
+    QCOMPARE(flat.pixel(130, 200), kRed);
+    QCOMPARE(flat.pixel(270, 200), kRed);
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::TwoTones, false}));
+    const QImage shaded = renderFrame(doc.frameAt(0), doc.settings(), QSize(400, 400));
+    QCOMPARE(shaded.pixel(130, 200), kRed);             // lit side: the fill's own colour
+    QCOMPARE(shaded.pixel(270, 200), shadowTone(kRed)); // far side: the shadow
+    QVERIFY(brightness(shaded.pixel(130, 200)) > brightness(shaded.pixel(270, 200)));
+    QCOMPARE(shaded.pixel(200, 200), kRed);
+    // Undo: flat again, pixel for pixel.
+    doc.undoStack()->undo();
+    QCOMPARE(renderFrame(doc.frameAt(0), doc.settings(), QSize(400, 400)), flat);
+}
+
+void TestFillShading::everyRampAndRimGivesTones()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    const auto tones = [&] { return fillList(*doc.group(g), doc.settings()).at(0).tones; };
+    QVERIFY(tones().empty());
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::TwoTones, false}));
+    QCOMPARE(tones().size(), std::size_t(1));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, false}));
+    QCOMPARE(tones().size(), std::size_t(2));
+    QCOMPARE(tones()[1].color, highlightTone(kRed));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::Smooth, true}));
+    QVERIFY(tones().size() >= std::size_t(kSmoothLevels - 2));
+    QCOMPARE(tones().back().color, rimTone(kRed));
+    QCOMPARE(fillList(*doc.group(g), doc.settings()).at(0).color, shadowTone(kRed));
+    // The highlight faces the light (upper left by default), the rim is across from it.
+    const QPointF rim = centreOf(tones().back().path) - kCentre;
+    QVERIFY(rim.x() > 20 && rim.y() > 20);
+}
+
+void TestFillShading::tonesFollowThePoseLightStaysOnScreen()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, setLightCommand(&doc, 180.0, 30.0));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::TwoTones, false}));
+    const QPointF restShadow = centreOf(fillList(*doc.group(g), doc.settings())[0].tones[0].path);
+    QVERIFY(restShadow.x() > kCentre.x() + 30); // across from the light
+    // A cage turns the disc half a turn about its centre and moves it: the shadow stays on the
+    // side away from the light (right), moved with the disc.
+    Rig rig;
+    rig.cage.rest = {{80, 80}, {320, 80}, {320, 320}, {80, 320}};
+    const QPointF by(-40, 30);
+    for (const QPointF &p : rig.cage.rest)
+        rig.cage.posed.push_back(2 * kCentre - p + by);
+    doc.setRig(g, rig);
+    DeformJob job;
+    job.groupId = g;
+    job.key = MeshKey::of(*doc.group(g));
+    job.rig = rig.atRest();
+    const auto setup = buildDeformSetup(job);
+    QVERIFY(setup);
+    const auto solved = solvePose(**setup, *doc.group(g));
+    QVERIFY(solved);
+    doc.setDeformed(g, solved->strokes);
+    const QPointF posedShadow = centreOf(fillList(*doc.group(g), doc.settings())[0].tones[0].path);
+    qInfo("shadow centre at rest (%.1f, %.1f), turned half a turn and moved (%.1f, %.1f)",
+          restShadow.x(), restShadow.y(), posedShadow.x(), posedShadow.y());
+    QVERIFY(std::abs((posedShadow - by - restShadow).x()) < 3.0);
+    QVERIFY(std::abs((posedShadow - by - restShadow).y()) < 3.0);
+}
+
+void TestFillShading::onionSkinStaysFlat()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, true}));
+    RenderOptions onion;
+    onion.tint = QColor(0, 200, 0);
+    const auto items = fillList(*doc.group(g), doc.settings(), onion);
+    QCOMPARE(items.size(), std::size_t(1));
+    QVERIFY(items[0].tones.empty());
+}
+
+void TestFillShading::svgWritesToneRegionsNotRaster()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, false}));
+    ExportPlan plan;
+    plan.background = doc.settings().background;
+    const QByteArray svg = frameSvg(doc.frameAt(0), doc.settings(), plan);
+    QCOMPARE(svg.count("class=\"tone\""), 2);
+    QVERIFY(!svg.contains("<image"));
+    QVERIFY(svg.contains(QColor::fromRgb(shadowTone(kRed)).name().toLatin1()));
+    // A few polygons per tone, not one per mesh triangle.
+    const qsizetype start = svg.indexOf("class=\"tone\"");
+    const qsizetype end = svg.indexOf("/>", start);
+    QVERIFY(svg.mid(start, end - start).count('M') <= 4);
+}
+
+void TestFillShading::fileKeepsShadingAndLight()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::Smooth, true}));
+    push(doc, setLightCommand(&doc, 200.0, 20.0));
+    const QByteArray bytes = serializeFinbook(doc);
+    QVERIFY(bytes.contains("shad") && bytes.contains("lite"));
+    auto loaded = readFinbook(bytes);
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    QCOMPARE(loaded->formatVersion, kFinbookFormatVersion);
+    QCOMPARE(loaded->settings.lightAzimuth, 200.0);
+    QCOMPARE(loaded->settings.lightElevation, 20.0);
+    QCOMPARE(loaded->frames.at(0).groups.at(0).fills, doc.group(g)->fills);
+    Document reopened;
+    reopened.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    QCOMPARE(serializeFinbook(reopened), bytes);
+}
+
+void TestFillShading::fileWithoutShadingOpensFlat()
+{
+    // Flat fills and the default light write neither the chunk nor the section: files that
+    // do not use shading are the bytes they were.
+    Document doc;
+    const Id g = discDocument(doc);
+    const QByteArray flat = serializeFinbook(doc);
+    QVERIFY(!flat.contains("shad") && !flat.contains("lite"));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::TwoTones, false}));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::Off, false}));
+    QCOMPARE(serializeFinbook(doc), flat);
+}
+
+QTEST_MAIN(TestFillShading)
+#include "tst_fill_shading.moc"
