@@ -6,10 +6,10 @@
 //
 // The running Finbook listens on a local socket ($FINBOOK_INSTANCE_SOCKET, else
 // "finbook-instance-DISPLAY" in the user's runtime folder, $XDG_RUNTIME_DIR, where DISPLAY is
-// $WAYLAND_DISPLAY or else $DISPLAY with ':' as '_': "finbook-instance-_0" on X display :0). A request is one line of
-// JSON, {"files": [absolute paths]}; the answer "ok\n" comes once the request is taken.
-// A Finbook that does not answer within the timeout (hung, or being shut down) is not waited
-// for: the new one opens its own window.
+// $WAYLAND_DISPLAY or else $DISPLAY with ':' as '_': "finbook-instance-_0" on X display :0). A
+// request is one line of JSON, {"files": [absolute paths]}; the answer "ok\n" comes once the
+// request is taken. A Finbook that does not answer within the timeout (hung, or being shut down) is
+// not waited for: the new one opens its own window.
 #pragma once
 
 #include <QObject>

@@ -6,7 +6,6 @@
 #include "reference/reference_section.h"
 
 #include <finbook/model/reference/reference_layer.h>
-
 #include <finbook/model/sound/soundtrack.h>
 
 #include <algorithm>

@@ -92,9 +92,12 @@ void Autosaver::autosaveNow()
     QElapsedTimer clock;
     clock.start();
     RecoveryWriter::Snapshot snapshot{
-        m_doc->frames(), m_doc->settings(),
+        m_doc->frames(),
+        m_doc->settings(),
         RecoveryInfo{m_title, m_originalPath, QDateTime::currentDateTimeUtc(), m_doc->frameCount()},
-        copyPath(), m_doc->referenceLayer().reference(), m_doc->soundtrack().clips()};
+        copyPath(),
+        m_doc->referenceLayer().reference(),
+        m_doc->soundtrack().clips()};
     QMetaObject::invokeMethod(
         m_writer, [writer = m_writer, s = std::move(snapshot)] { writer->write(s); },
         Qt::QueuedConnection);

@@ -31,9 +31,9 @@ public:
     {
         QString error;
         try {
-            const QByteArray bytes = recoveryCopyBytes(snapshot.frames, snapshot.settings,
-                                                       snapshot.info, snapshot.reference,
-                                                       snapshot.sound);
+            const QByteArray bytes =
+                recoveryCopyBytes(snapshot.frames, snapshot.settings, snapshot.info,
+                                  snapshot.reference, snapshot.sound);
             if (const auto failure = writeFileAtomically(snapshot.path, bytes))
                 error = describeWriteFailure(*failure, QFileInfo(snapshot.path).absolutePath());
         } catch (const std::bad_alloc &) {

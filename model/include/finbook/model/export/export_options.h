@@ -64,7 +64,7 @@ struct ExportOptions {
 struct ExportSource {
     std::vector<Frame> frames;
     DocumentSettings settings;
-    Reference reference = {}; // the reference layer (its media bytes shared, not copied)
+    Reference reference = {};          // the reference layer (its media bytes shared, not copied)
     std::vector<SoundClip> sound = {}; // the soundtrack: MP4 and WebM carry its mix
 };
 ExportSource exportSource(const Document &document);
