@@ -36,6 +36,10 @@ TimelineView::TimelineView(EditorState *state, model::FrameListModel *model,
     setFocusPolicy(Qt::StrongFocus);
     setItemDelegate(new TimelineDelegate(this));
     setModel(model);
+    // Rows added under the frames (the sound row) and a short dock never squeeze the
+    // thumbnails below a readable size: the dock grows instead.
+    setMinimumHeight(kMinimumCellHeight + 2 * spacing() + 2 * frameWidth() +
+                     horizontalScrollBar()->sizeHint().height());
 
     m_thumbnails->setVisibilityFilter([this](model::Id id) { return isFrameVisible(id); });
     connect(m_thumbnails, &ThumbnailCache::thumbnailRendered, this, [this](model::Id id) {
@@ -92,7 +96,7 @@ std::vector<int> TimelineView::visibleRows() const
 
 void TimelineView::updateCellSize()
 {
-    const int height = std::max(40, viewport()->height() - 2 * spacing());
+    const int height = std::max(kMinimumCellHeight, viewport()->height() - 2 * spacing());
     const QSize canvas = m_model->document()->settings().canvasSize;
     const double aspect =
         std::clamp(double(canvas.width()) / std::max(1, canvas.height()), 0.25, 4.0);

@@ -175,11 +175,23 @@ void MainWindow::createDocks()
          Qt::RightDockWidgetArea);
     QDockWidget *reference = dock(new ReferencePanel(m_doc), QStringLiteral("referenceDock"),
                                   tr("Reference"), Qt::RightDockWidgetArea);
+    // The panels shown only when wanted (Reference, Shading) share the Skeleton panel's place
+    // as tabs: the right side keeps its height for the object list and the undo history, and
+    // the timeline its height for the thumbnails and the sound row, even on a small screen.
+    if (auto *skeleton = findChild<QDockWidget *>(QStringLiteral("skeletonDock")))
+        for (const char *name : {"shadingDock", "referenceDock"})
+            if (auto *tab = findChild<QDockWidget *>(QString::fromLatin1(name))) {
+                const bool hidden = tab->isHidden();
+                tabifyDockWidget(skeleton, tab);
+                tab->setHidden(hidden);
+            }
     reference->hide(); // File → Import Reference shows it
     connect(&m_doc->referenceLayer(), &model::ReferenceLayer::referenceChanged, reference,
             [this, reference] {
-                if (!m_doc->referenceLayer().isEmpty() && !reference->isVisible())
+                if (!m_doc->referenceLayer().isEmpty() && !reference->isVisible()) {
                     reference->show();
+                    reference->raise();
+                }
             });
     auto *history = new QUndoView(m_doc->undoStack());
     history->setEmptyLabel(tr("<opened document>"));

@@ -28,6 +28,8 @@ class TimelineView : public QListView {
 public:
     static constexpr int kBandHeight = 16;
     static constexpr int kPadding = 3;
+    // A cell is never lower than this: its number band and a thumbnail of 40 px.
+    static constexpr int kMinimumCellHeight = kBandHeight + 2 * kPadding + 40;
 
     TimelineView(EditorState *state, model::FrameListModel *model, ThumbnailCache *thumbnails,
                  QWidget *parent = nullptr);
