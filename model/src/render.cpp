@@ -343,9 +343,15 @@ void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &s
 {
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
+    const QRectF page(QPointF(0, 0), QSizeF(settings.canvasSize));
     if (options.paintBackground)
-        painter.fillRect(QRectF(QPointF(0, 0), QSizeF(settings.canvasSize)),
-                         QColor::fromRgba(settings.background));
+        painter.fillRect(page, QColor::fromRgba(settings.background));
+    if (options.underlay) {
+        painter.save();
+        painter.setClipRect(page, Qt::IntersectClip);
+        options.underlay(painter);
+        painter.restore();
+    }
     painter.setOpacity(options.opacity);
     if (!frameHasFills(frame, options)) {
         for (const PaintItem &item : paintList(frame, options))

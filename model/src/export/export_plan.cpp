@@ -203,14 +203,10 @@ QImage renderExportBand(const Frame &frame, const DocumentSettings &settings,
         painter.translate((plan.size.width() - canvas.width() * scale) / 2,
                           (plan.size.height() - canvas.height() * scale) / 2 - top);
         painter.scale(scale, scale);
-        if (reference) {
-            painter.save();
-            painter.setClipRect(QRectF(QPointF(0, 0), canvas));
-            paintReference(painter, *reference, picture);
-            painter.restore();
-        }
         RenderOptions options;
         options.paintBackground = false;
+        if (reference)
+            options.underlay = [&](QPainter &p) { paintReference(p, *reference, picture); };
         paintFrame(painter, frame, settings, options);
     }
     // Opaque pixels are the same premultiplied or not: skip the conversion pass.

@@ -129,28 +129,9 @@ void paintReference(QPainter &painter, const Reference &reference, const QImage 
 QImage renderFrameWithReference(const Frame &frame, const DocumentSettings &settings, QSize size,
                                 const Reference &reference, const QImage &picture)
 {
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    if (image.isNull())
-        return image;
-    image.fill(Qt::transparent);
-    const QSizeF canvas(settings.canvasSize);
-    if (size.isEmpty() || canvas.isEmpty())
-        return image;
-    QPainter painter(&image);
-    const qreal scale = std::min(size.width() / canvas.width(), size.height() / canvas.height());
-    painter.translate((size.width() - canvas.width() * scale) / 2,
-                      (size.height() - canvas.height() * scale) / 2);
-    painter.scale(scale, scale);
-    const QRectF page(QPointF(0, 0), canvas);
-    painter.fillRect(page, QColor::fromRgba(settings.background));
-    painter.save();
-    painter.setClipRect(page);
-    paintReference(painter, reference, picture);
-    painter.restore();
     RenderOptions options;
-    options.paintBackground = false;
-    paintFrame(painter, frame, settings, options);
-    return image;
+    options.underlay = [&](QPainter &painter) { paintReference(painter, reference, picture); };
+    return renderFrame(frame, settings, size, options);
 }
 
 } // namespace finbook::model

@@ -7,6 +7,7 @@
 #include <QImage>
 #include <QPainter>
 
+#include <functional>
 #include <optional>
 
 namespace finbook::model {
@@ -16,6 +17,9 @@ struct RenderOptions {
     qreal opacity = 1.0;
     std::optional<QColor> tint; // onion skin: every stroke in this colour
     bool showHidden = false;
+    // Painted on the page after its background, clipped to it, under the drawing (the
+    // reference picture of thumbnails and exports). Empty: nothing.
+    std::function<void(QPainter &)> underlay;
 };
 
 // Liang–Barsky: cuts segment a→b to the part inside `r`; false when none of it is (or it is
