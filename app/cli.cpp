@@ -31,15 +31,46 @@ int fail(QTextStream &err, const QString &message, ExitCode code = ExitCode::Bad
     return int(code);
 }
 
+const char *referenceKindName(model::ReferenceKind kind)
+{
+    switch (kind) {
+    case model::ReferenceKind::None:
+        return "none";
+    case model::ReferenceKind::Image:
+        return "image";
+    case model::ReferenceKind::Video:
+        return "video";
+    }
+    return "none";
+}
+
+// The soundtrack and the reference: what a script checking a file before export wants to know.
+void summariseMedia(const model::LoadedDocument &doc, QJsonObject &o)
+{
+    qint64 soundBytes = 0, audible = 0;
+    for (const model::SoundClip &clip : doc.sound) {
+        soundBytes += clip.bytes.size();
+        audible += clip.muted ? 0 : 1;
+    }
+    o[QStringLiteral("sound_clips")] = qint64(doc.sound.size());
+    o[QStringLiteral("sound_clips_audible")] = audible;
+    o[QStringLiteral("sound_bytes")] = soundBytes;
+    const model::Reference &ref = doc.reference;
+    o[QStringLiteral("reference")] =
+        QLatin1String(referenceKindName(ref.isEmpty() ? model::ReferenceKind::None : ref.kind));
+    o[QStringLiteral("reference_bytes")] = qint64(ref.isEmpty() ? 0 : ref.bytes.size());
+}
+
 QJsonObject summary(const model::LoadedDocument &doc)
 {
-    qint64 objects = 0, strokes = 0, points = 0, pins = 0;
+    qint64 objects = 0, strokes = 0, points = 0, pins = 0, fills = 0;
     std::unordered_set<const model::StrokeData *> distinct;
     for (const model::Frame &f : doc.frames) {
         objects += qint64(f.groups.size());
         for (const model::StrokeGroup &g : f.groups) {
             strokes += qint64(g.strokes.size());
             pins += qint64(g.rig.pins.size());
+            fills += qint64(g.fills.size());
             for (const model::Stroke &s : g.strokes) {
                 if (!s.data)
                     continue;
@@ -56,6 +87,7 @@ QJsonObject summary(const model::LoadedDocument &doc)
     o[QStringLiteral("points")] = points;
     o[QStringLiteral("stroke_data")] = qint64(distinct.size());
     o[QStringLiteral("pins")] = pins;
+    o[QStringLiteral("fills")] = fills;
     o[QStringLiteral("fps")] = doc.settings.fps;
     o[QStringLiteral("canvas_width")] = doc.settings.canvasSize.width();
     o[QStringLiteral("canvas_height")] = doc.settings.canvasSize.height();
@@ -63,6 +95,7 @@ QJsonObject summary(const model::LoadedDocument &doc)
     const qint64 ticks = model::playbackTicks(doc.frames, doc.settings);
     o[QStringLiteral("ticks")] = ticks;
     o[QStringLiteral("duration_s")] = double(ticks) / std::max(1, doc.settings.fps);
+    summariseMedia(doc, o);
     return o;
 }
 

@@ -155,12 +155,13 @@ void TestCli::infoMatchesTheFile()
 
     auto loaded = model::loadFinbook(kExample);
     QVERIFY(loaded);
-    qint64 objects = 0, strokes = 0, points = 0;
+    qint64 objects = 0, strokes = 0, points = 0, fills = 0;
     std::unordered_set<const model::StrokeData *> distinct;
     for (const model::Frame &f : loaded->frames) {
         objects += qint64(f.groups.size());
         for (const model::StrokeGroup &g : f.groups) {
             strokes += qint64(g.strokes.size());
+            fills += qint64(g.fills.size());
             for (const model::Stroke &s : g.strokes) {
                 points += qint64(s.data->points.size());
                 distinct.insert(s.data.get());
@@ -173,6 +174,7 @@ void TestCli::infoMatchesTheFile()
     QCOMPARE(info[QStringLiteral("strokes")].toInteger(), strokes);
     QCOMPARE(info[QStringLiteral("points")].toInteger(), points);
     QCOMPARE(info[QStringLiteral("stroke_data")].toInteger(), qint64(distinct.size()));
+    QCOMPARE(info[QStringLiteral("fills")].toInteger(-1), fills);
     QCOMPARE(info[QStringLiteral("fps")].toInt(), loaded->settings.fps);
     QCOMPARE(info[QStringLiteral("canvas_width")].toInt(), loaded->settings.canvasSize.width());
     QCOMPARE(info[QStringLiteral("canvas_height")].toInt(), loaded->settings.canvasSize.height());

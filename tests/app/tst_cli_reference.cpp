@@ -1,11 +1,14 @@
 // `finbook export --include-reference`: the reference is painted under the drawing only when
 // asked for, from a saved .finbook as a user runs the command.
 #include "../model/reference_support.h"
+#include "../model/sound_support.h"
 #include "cli_run.h"
 
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/reference/reference_commands.h>
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTest>
 
 using namespace finbook;
@@ -44,6 +47,50 @@ private slots:
         QCOMPARE(a.pixel(40, 60), qRgb(255, 255, 255));
         QCOMPARE(b.pixel(40, 60), qRgb(255, 0, 0));
         QCOMPARE(b.pixel(120, 60), qRgb(0, 0, 255));
+    }
+
+    // `finbook info` says what media a file carries: a script can check a file has its sound
+    // before exporting a video.
+    void infoCountsSoundAndReference()
+    {
+        QTemporaryDir dir;
+        model::Document doc;
+        model::DocumentSettings settings;
+        settings.canvasSize = QSize(160, 120);
+        const model::Id frame = doc.allocateId(); // before nextId() is read
+        doc.reset({model::Frame{frame, 1, {}}}, settings, doc.nextId());
+        const QString bare = dir.filePath(QStringLiteral("bare.finbook"));
+        QVERIFY(!model::saveFinbook(doc, bare));
+
+        const QByteArray beat = sound_test::sineWav(0.3);
+        const QByteArray voice = sound_test::sineWav(0.2, 22050, 880);
+        sound_test::importClip(doc, beat, QStringLiteral("beat.wav"));
+        const model::Id muted = sound_test::importClip(doc, voice, QStringLiteral("voice.wav"), 4);
+        doc.undoStack()->push(model::soundClipMutedCommand(&doc, muted, true).release());
+        auto reference =
+            model::importReferenceFile(writeTwoColourPng(dir.path()), QSizeF(160, 120));
+        QVERIFY(reference);
+        doc.referenceLayer().setReference(*reference);
+        const QString full = dir.filePath(QStringLiteral("full.finbook"));
+        const auto saved = model::saveFinbook(doc, full);
+        QVERIFY2(!saved, saved ? qPrintable(saved->message) : "");
+
+        const auto info = [](const QString &file) {
+            const Run run = runFinbook({QStringLiteral("info"), file});
+            return run.code == 0 ? QJsonDocument::fromJson(run.out).object() : QJsonObject{};
+        };
+        const QJsonObject none = info(bare);
+        QCOMPARE(none[QStringLiteral("sound_clips")].toInteger(-1), 0);
+        QCOMPARE(none[QStringLiteral("sound_bytes")].toInteger(-1), 0);
+        QCOMPARE(none[QStringLiteral("reference")].toString(), QStringLiteral("none"));
+        QCOMPARE(none[QStringLiteral("reference_bytes")].toInteger(-1), 0);
+
+        const QJsonObject both = info(full);
+        QCOMPARE(both[QStringLiteral("sound_clips")].toInteger(), 2);
+        QCOMPARE(both[QStringLiteral("sound_clips_audible")].toInteger(), 1);
+        QCOMPARE(both[QStringLiteral("sound_bytes")].toInteger(), beat.size() + voice.size());
+        QCOMPARE(both[QStringLiteral("reference")].toString(), QStringLiteral("image"));
+        QCOMPARE(both[QStringLiteral("reference_bytes")].toInteger(), reference->bytes.size());
     }
 };
 
