@@ -135,6 +135,7 @@ private slots:
     void frameOptionPicksTheDrawing();
     void nothingMeshableWritesNothing();
     void existingFilesAreRefusedWithoutOverwrite();
+    void failedObjPutsTheOldMaterialsBack();
     void cancelLeavesNothing();
     void materialFileName_data();
     void materialFileName();
@@ -321,6 +322,49 @@ void TestExportObj::existingFilesAreRefusedWithoutOverwrite()
         QVERIFY(readAll(mtl).startsWith("# Finbook"));
         QCOMPARE(filesIn(dir.path()), QStringList({"scene.mtl", "scene.obj"}));
     }
+}
+
+// The OBJ's rename fails after the new materials are in place (here: its target became a
+// folder while the solids were built): the material file it replaced is back, byte for byte,
+// and no hidden copy is left beside it.
+void TestExportObj::failedObjPutsTheOldMaterialsBack()
+{
+    const ExportSource source = generatedSource();
+    QTemporaryDir dir;
+    const QString target = dir.filePath(QStringLiteral("scene.obj"));
+    const QString mtl = dir.filePath(QStringLiteral("scene.mtl"));
+    for (const QString &path : {target, mtl}) {
+        QFile old(path);
+        QVERIFY(old.open(QIODevice::WriteOnly));
+        old.write("old " + path.toUtf8());
+        old.close();
+    }
+    ExportOptions overwrite = objOptions(target);
+    overwrite.overwrite = true;
+    bool blocked = false;
+    const auto blockTheObj = [&blocked, &target](qint64, qint64) {
+        if (!blocked) {
+            QFile::remove(target);
+            blocked = QDir().mkdir(target);
+        }
+        return true;
+    };
+    const auto failed = exportAnimation(source, overwrite, blockTheObj);
+    QVERIFY(blocked);
+    QVERIFY(!failed);
+    QCOMPARE(readAll(mtl), "old " + mtl.toUtf8());
+    QVERIFY(QFileInfo(target).isDir());
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden | QDir::System),
+             QStringList({QStringLiteral("scene.mtl")}));
+
+    // Without an old material file, the one the export added goes again.
+    QVERIFY(QFile::remove(mtl));
+    QVERIFY(QDir().rmdir(target));
+    blocked = false;
+    const auto again = exportAnimation(source, overwrite, blockTheObj);
+    QVERIFY(blocked);
+    QVERIFY(!again);
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden | QDir::System), QStringList());
 }
 
 void TestExportObj::cancelLeavesNothing()

@@ -13,6 +13,7 @@
 #include <QColor>
 #include <QFileInfo>
 
+#include <cerrno>
 #include <set>
 #include <sstream>
 #include <sys/stat.h>
@@ -87,6 +88,53 @@ bool exists(const QByteArray &path)
     struct stat status {};
     return ::lstat(path.constData(), &status) == 0;
 }
+
+// The material file an export replaces, kept by a hidden hard link beside it until the OBJ is
+// in place, so that a failed OBJ rename can put the old materials back (and a material file
+// the export added can go again). Where the file system has no hard links the old file cannot
+// be kept: restore() then only removes a file the export added.
+class MaterialSetAside {
+public:
+    explicit MaterialSetAside(QByteArray path)
+        : m_path(std::move(path))
+        , m_existed(exists(m_path))
+    {
+        if (!m_existed)
+            return;
+        const qsizetype slash = m_path.lastIndexOf('/');
+        const QByteArray folder = slash < 0 ? QByteArray(".") : m_path.left(slash);
+        const QByteArray name = m_path.mid(slash + 1);
+        for (int attempt = 0; attempt < 64 && m_kept.isEmpty(); ++attempt) {
+            const QByteArray candidate = folder + "/.finbook-" + name + "-" +
+                                         QByteArray::number(qint64(::getpid())) + "-" +
+                                         QByteArray::number(attempt);
+            if (::link(m_path.constData(), candidate.constData()) == 0)
+                m_kept = candidate;
+            else if (errno != EEXIST)
+                break;
+        }
+    }
+    ~MaterialSetAside()
+    {
+        if (!m_kept.isEmpty())
+            ::unlink(m_kept.constData());
+    }
+    MaterialSetAside(const MaterialSetAside &) = delete;
+    MaterialSetAside &operator=(const MaterialSetAside &) = delete;
+
+    void restore()
+    {
+        if (!m_kept.isEmpty() && ::rename(m_kept.constData(), m_path.constData()) == 0)
+            m_kept.clear();
+        else if (!m_existed)
+            ::unlink(m_path.constData());
+    }
+
+private:
+    QByteArray m_path;
+    bool m_existed;
+    QByteArray m_kept;
+};
 } // namespace
 
 ExportOutcome exportObj(const ExportContext &context)
@@ -122,14 +170,12 @@ ExportOutcome exportObj(const ExportContext &context)
     if (auto failed = writeSynced(pendingMtl.file(), files.mtl))
         return unexpected(writeFailed(mtlOptions.target, *failed));
     // The materials first: an OBJ file in place always finds its colours. Should the OBJ
-    // then fail, a material file this export added goes again.
-    const QByteArray mtlPath = nativeTargetPath(mtlOptions);
-    const bool hadMtl = exists(mtlPath);
+    // then fail, the material file is put back as it was (or goes again if this export added it).
+    MaterialSetAside oldMaterials(nativeTargetPath(mtlOptions));
     if (auto error = commitFile(pendingMtl, mtlOptions))
         return unexpected(*error);
     if (auto error = commitFile(pendingObj, options)) {
-        if (!hadMtl)
-            ::unlink(mtlPath.constData());
+        oldMaterials.restore();
         return unexpected(*error);
     }
     guard.keep();
