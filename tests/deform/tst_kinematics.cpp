@@ -72,6 +72,7 @@ private slots:
     void unreachableTargetsStretchTowardsCursor();
     void ikIsContinuousInTheTarget();
     void locksAreRespected();
+    void limbsTurnAtTheirBase();
     void rootDragTranslates();
     void rotateBoneFollowsTheCursor();
     void badDragInputGivesTypedErrors();
@@ -299,12 +300,19 @@ void TestKinematics::locksAreRespected()
 {
     const Skeleton s = character();
     std::vector<bool> locked(9, false);
-    // Hand (3) of the left arm: chain = forearm, upper arm, spine up to the root.
-    QCOMPARE(ikChain(s, 3, locked), Eigen::Vector3i(3, 2, 1));
-    QCOMPARE(ikChain(s, 3, locked, 2), Eigen::Vector2i(3, 2));
+    // Hand (3) of the left arm: chain = forearm, upper arm (which starts at the chest, a
+    // branch point, so the spine stays).
+    QCOMPARE(ikChain(s, 3, locked), Eigen::Vector2i(3, 2));
+    QCOMPARE(ikChain(s, 3, locked, 1), Eigen::VectorXi::Constant(1, 3));
     QCOMPARE(ikChain(s, 9, locked).size(), Eigen::Index(0));
     QCOMPARE(ikChain(s, 3, std::vector<bool>(4, false)).size(), Eigen::Index(0));
-    // Locking the other hand stops the chain below the chest: turning the spine would move it.
+    // Along an unbranched chain a lock stops the chain below it.
+    const Skeleton tail = chain(5);
+    std::vector<bool> tailLocks(6, false);
+    QCOMPARE(ikChain(tail, 5, tailLocks), (Eigen::VectorXi(5) << 5, 4, 3, 2, 1).finished());
+    tailLocks[2] = true;
+    QCOMPARE(ikChain(tail, 5, tailLocks), Eigen::Vector3i(5, 4, 3));
+    // Locking the other hand keeps the chest (and so the spine) still.
     locked[5] = true;
     QCOMPARE(ikChain(s, 3, locked), Eigen::Vector2i(3, 2));
     const Eigen::MatrixX2d rest = s.joints;
@@ -329,6 +337,32 @@ void TestKinematics::locksAreRespected()
     // With a lock anywhere, dragging the root moves nothing.
     result = solveIk(s, restPose(s), 0, Eigen::Vector2d(0, 0), locked);
     QVERIFY((posedJoints(s, result->pose) - rest).cwiseAbs().maxCoeff() < 1e-9);
+}
+
+// An automatic rig's arm: the body's centre (a branch point: the arm, the head and the legs
+// leave it), a bone inside the body to the shoulder, then the upper arm and the forearm.
+// Dragging the hand turns the arm at the shoulder; the shoulder and the body stay.
+void TestKinematics::limbsTurnAtTheirBase()
+{
+    Eigen::MatrixX2d joints(6, 2);
+    joints << 300, 300, 380, 280, 460, 260, 540, 240, 300, 180, 300, 420;
+    Eigen::VectorXi parent(6);
+    parent << -1, 0, 1, 2, 0, 0;
+    const Skeleton s = *makeSkeleton(joints, parent);
+    const std::vector<bool> none(6, false);
+    QCOMPARE(ikChain(s, 3, none), Eigen::Vector2i(3, 2));
+    // The elbow alone has one bone below the branch point: it takes the inner bone too.
+    QCOMPARE(ikChain(s, 2, none), Eigen::Vector2i(2, 1));
+    QCOMPARE(ikChain(s, 4, none), Eigen::VectorXi::Constant(1, 4));
+
+    const auto result = solveIk(s, restPose(s), 3, Eigen::Vector2d(420, 160));
+    QVERIFY(result.hasValue());
+    const Eigen::MatrixX2d P = posedJoints(s, result->pose);
+    for (const int j : {0, 1, 4, 5})
+        QVERIFY((P.row(j) - s.joints.row(j)).norm() < 1e-9);
+    QVERIFY(result->distance < 0.5);
+    QVERIFY(std::abs(boneLength(P, s, 2) - boneLength(s.joints, s, 2)) < 1e-9);
+    QVERIFY(std::abs(boneLength(P, s, 3) - boneLength(s.joints, s, 3)) < 1e-9);
 }
 
 void TestKinematics::rootDragTranslates()

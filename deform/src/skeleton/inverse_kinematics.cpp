@@ -233,12 +233,24 @@ Eigen::VectorXi ikChain(const Skeleton &skeleton, int joint, const std::vector<b
     }
     const int longest =
         maxChainBones > 0 ? std::min(maxChainBones, kMaxIkChainBones) : kMaxIkChainBones;
+    // A branch point (a joint with two or more children: the chest, the hips) ends the limb: a
+    // bone that starts there turns only when the chain has no two bones of its own, so a
+    // dragged hand turns the arm at its shoulder, not a bone from the body's centre.
+    std::vector<int> children(static_cast<std::size_t>(count), 0);
+    for (Eigen::Index j = 0; j < count; ++j)
+        if (!skeleton.isRoot(j))
+            ++children[static_cast<std::size_t>(skeleton.parent(j))];
     std::vector<int> chain;
     for (int j = joint; j >= 0 && !skeleton.isRoot(j) && !lockedBelow[static_cast<std::size_t>(j)];
          j = skeleton.parent(j)) {
         if (static_cast<int>(chain.size()) >= longest)
             break;
+        const bool fromBranch = children[static_cast<std::size_t>(skeleton.parent(j))] >= 2;
+        if (fromBranch && chain.size() >= 2)
+            break;
         chain.push_back(j);
+        if (fromBranch)
+            break;
     }
     return Eigen::Map<const Eigen::VectorXi>(chain.data(), Eigen::Index(chain.size()));
 }

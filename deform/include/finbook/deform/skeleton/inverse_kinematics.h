@@ -5,8 +5,11 @@
 //
 // Locks: a locked joint never moves when another joint is dragged. The IK chain of a joint is
 // its bone, its parent's bone, … upwards, stopping below the first bone whose turning would
-// move a locked joint (the nearest locked ancestor, or a locked joint on a side branch) or at
-// a root. Roots are never turned by IK; dragging a root translates the whole skeleton.
+// move a locked joint (the nearest locked ancestor, or a locked joint on a side branch), at a
+// root, or at a branch point (a joint with two or more children): a bone starting at a branch
+// point is the last of the chain, and is left out when the chain already has two bones, so a
+// limb turns at its own base joint and not about the body's centre. Roots are never turned by
+// IK; dragging a root translates the whole skeleton.
 #pragma once
 
 #include <finbook/deform/deform_error.h>
