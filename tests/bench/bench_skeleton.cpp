@@ -13,7 +13,7 @@
 // length traces the pen line instead of the body. Each row says whether the skeleton is one
 // now (wire_after) and whether the one from the silhouette alone, before regions, was
 // (wire_before); the last line counts both.
-// Thin parts (issue 21): thin_tips counts the ends of protrusions at most 4 % of the diagonal
+// Thin parts (issue 21): thin_tips counts the ends of protrusions at most 6 % of the diagonal
 // wide (thin_tips.h), thin_tips_reached those a bone comes within that width of (drawn as
 // magenta rings, filled when reached); outside_px is the bones' length outside the shape. The
 // last line totals them: outside_share = outside_px / bone_px over all files.
@@ -365,8 +365,7 @@ QJsonObject measure(const QString &path, const Input &input, const QString &pngD
     from.conservativeResize(bones, 2);
     to.conservativeResize(bones, 2);
     std::vector<std::pair<Eigen::RowVector2d, bool>> tips;
-    for (const Eigen::RowVector2d &tip : finbook::bench::thinTips(
-             shape, [&shape](const Eigen::RowVector2d &p) { return insideRegion(shape, p); }))
+    for (const Eigen::RowVector2d &tip : finbook::bench::thinTips(shape))
         tips.emplace_back(tip, finbook::bench::tipReached(
                                    tip, from, to, finbook::bench::kTipWidth * (hi - lo).norm()));
     const auto reached = std::count_if(tips.begin(), tips.end(), [](auto &t) { return t.second; });

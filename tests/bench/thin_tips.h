@@ -2,7 +2,8 @@
 // kTipWidth of the shape's diagonal wide (tentacle tips, antennae, tines, pen-line ends),
 // found on the drawn outline itself, independent of any skeleton. A tip is an outline point
 // whose outline, kArmFactor widths along either way, comes back to within one width of itself
-// (a hairpin) around an inside area; one point per hairpin (the farthest out).
+// (a hairpin) turning the ring's way (a protrusion, not a slit between two parts); one point
+// per hairpin (the farthest out).
 #pragma once
 
 #include <finbook/geometry/region.h>
@@ -11,12 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <vector>
 
 namespace finbook::bench {
 
-constexpr double kTipWidth = 0.04; // of the diagonal
+constexpr double kTipWidth = 0.06; // of the diagonal
 constexpr double kArmFactor = 3.0; // arm length along the outline, in widths
 
 // The ring resampled every `spacing` along its length (closed).
@@ -38,10 +38,8 @@ inline Eigen::MatrixX2d resampleRing(const Eigen::MatrixX2d &ring, double spacin
     return m;
 }
 
-// Tip points of every ring of `shape`; `inside` is the shape's inside test.
-inline std::vector<Eigen::RowVector2d>
-thinTips(const geometry::Region &shape,
-         const std::function<bool(const Eigen::RowVector2d &)> &inside)
+// Tip points of every ring of `shape` (rings oriented as region.h says).
+inline std::vector<Eigen::RowVector2d> thinTips(const geometry::Region &shape)
 {
     Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(1e300), hi = -lo;
     for (const Eigen::MatrixX2d &ring : geometry::regionRings(shape)) {
@@ -59,6 +57,11 @@ thinTips(const geometry::Region &shape,
     for (const Eigen::MatrixX2d &source : geometry::regionRings(shape)) {
         const Eigen::MatrixX2d ring = resampleRing(source, spacing);
         const int n = int(ring.rows());
+        double area = 0.0; // twice the signed area
+        for (int i = 0; i < n; ++i) {
+            const Eigen::RowVector2d a = ring.row(i), b = ring.row((i + 1) % n);
+            area += a.x() * b.y() - b.x() * a.y();
+        }
         if (n < 2 * arm + 3)
             continue;
         std::vector<double> reach(std::size_t(n), 0.0); // 0: not a tip candidate
@@ -66,8 +69,9 @@ thinTips(const geometry::Region &shape,
             const Eigen::RowVector2d a = ring.row((i - arm + n) % n), b = ring.row((i + arm) % n);
             const Eigen::RowVector2d mid = 0.5 * (a + b), p = ring.row(i);
             const double out = (p - mid).norm();
+            const Eigen::RowVector2d u = p - a, v = b - p;
             if ((a - b).norm() <= width && out >= 0.7 * kArmFactor * width &&
-                inside(0.5 * (p + mid)))
+                (u.x() * v.y() - u.y() * v.x()) * area > 0.0)
                 reach[std::size_t(i)] = out;
         }
         // One tip per run of candidates: its farthest point.
