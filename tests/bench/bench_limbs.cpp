@@ -7,14 +7,19 @@
 // of rest), how far the rest of the body moved (max over vertices outside that disk whose nearest
 // bone is not the limb's, % of the shape's diagonal) and the solve time; then one summary line per
 // scheme and angle over all limbs of all files (clean: no fold and no flip). Schemes: rigid and lbs
-// (plain bone boundary conditions) and rigid_zones and lbs_zones (joint zones of
-// deform::kDefaultJointFree radii left to the solve). --before: the skeleton without the animator
-// rig (RefineOptions::animatorRig off).
+// (plain bone boundary conditions), rigid_zones and lbs_zones (joint zones of
+// deform::kDefaultJointFree radii left to the solve; rigid_zones is the app's Rigid mode), and two
+// candidates that lost (skin_alternatives.h): rigid_pieces (whatever one bone dominates moves
+// exactly with it, only blended flesh is left to ARAP) and cutout (every vertex follows its
+// dominant bone alone: a cut-out puppet on the uncut mesh). --before: the skeleton without the
+// animator rig (RefineOptions::animatorRig off). --joint-free X, --dominance X: sweep the zones'
+// factor and rigid_pieces' dominance.
 // --png DIR: one contact sheet of every ±60° pose per file, DIR/poses_*.png (flipped
 // triangles red, pivots as red dots), of the scheme --scheme NAME (default rigid_zones).
 #include "../deform/skin_test_support.h"
 #include "bench.h"
 #include "limb_measures.h"
+#include "skin_alternatives.h"
 
 #include <finbook/deform/skeleton/linear_blend_skinning.h>
 #include <finbook/deform/skeleton/rigid_skinning.h>
@@ -50,11 +55,15 @@ struct Scheme {
     const char *name;
     bool rigid;
     double jointFree;
+    double dominance = 2.0; // ≤ 1: rigid pieces (bench::rigidPieces)
+    bool hardCut = false;   // linear blend with one-hot weights (bench::hardCut)
 };
 constexpr Scheme kSchemes[] = {{"rigid", true, 0.0},
                                {"lbs", false, 0.0},
                                {"rigid_zones", true, deform::kDefaultJointFree},
-                               {"lbs_zones", false, deform::kDefaultJointFree}};
+                               {"lbs_zones", false, deform::kDefaultJointFree},
+                               {"rigid_pieces", true, deform::kDefaultJointFree, 0.9},
+                               {"cutout", false, 0.0, 2.0, true}};
 
 struct Sample {
     int folds = 0, crossings = 0, flips = 0;
@@ -67,6 +76,13 @@ struct Skinned {
     std::shared_ptr<const deform::RigidSkinning> rigid;
 };
 
+// --joint-free and --dominance: the zone factor of the *_zones and rigid_pieces schemes and
+// rigid_pieces' dominance, for sweeps (negative: the schemes' own).
+struct Tuning {
+    double jointFree = -1.0, dominance = -1.0;
+};
+Tuning tuning;
+
 std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::Skeleton &skeleton,
                                const geometry::Skeleton &s, const Scheme &scheme)
 {
@@ -74,14 +90,23 @@ std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::S
     // (deform::withJointZones); lbs_zones puts them in the weights' boundary.
     deform::SkinningOptions options;
     options.jointRadius = s.radius;
-    options.jointFree = scheme.rigid ? 0.0 : scheme.jointFree;
+    const double free =
+        tuning.jointFree >= 0.0 && scheme.jointFree > 0.0 ? tuning.jointFree : scheme.jointFree;
+    options.jointFree = scheme.rigid ? 0.0 : free;
+    const double dominance =
+        tuning.dominance >= 0.0 && scheme.dominance <= 1.0 ? tuning.dominance : scheme.dominance;
     auto weights = deform::computeSkinningWeights(mesh.V, mesh.F, skeleton, options);
     if (!weights)
         return std::nullopt;
-    Skinned out{*weights, deform::bindVertices(**weights, mesh.V), nullptr};
+    Skinned out{
+        *weights,
+        deform::bindVertices(scheme.hardCut ? bench::hardCut(**weights) : **weights, mesh.V),
+        nullptr};
     if (scheme.rigid) {
         const deform::SkinningWeights pins =
-            deform::withJointZones(**weights, mesh.V, skeleton, s.radius, scheme.jointFree);
+            scheme.dominance <= 1.0
+                ? bench::rigidPieces(**weights, mesh.V, skeleton, s.radius, free, dominance)
+                : deform::withJointZones(**weights, mesh.V, skeleton, s.radius, free);
         auto rigid = deform::rigidSkinPrecompute(mesh.V, mesh.F, pins);
         if (!rigid)
             return std::nullopt;
@@ -210,6 +235,12 @@ int benchLimbs(const QStringList &arguments)
             for (int k = 0; k < int(std::size(kSchemes)); ++k)
                 pngScheme = args[1] == QLatin1String(kSchemes[k].name) ? k : pngScheme;
             args = args.mid(2);
+        } else if ((args.front() == QStringLiteral("--joint-free") ||
+                    args.front() == QStringLiteral("--dominance")) &&
+                   args.size() >= 2) {
+            (args.front() == QStringLiteral("--joint-free") ? tuning.jointFree : tuning.dominance) =
+                args[1].toDouble();
+            args = args.mid(2);
         } else if (args.front() == QStringLiteral("--png") && args.size() >= 2) {
             pngDir = args[1];
             args = args.mid(2);
@@ -219,7 +250,8 @@ int benchLimbs(const QStringList &arguments)
         }
     }
     if (args.isEmpty()) {
-        std::fprintf(stderr, "usage: finbook-bench limbs [--before] [--png DIR] FILE...\n");
+        std::fprintf(stderr, "usage: finbook-bench limbs [--before] [--png DIR] [--scheme NAME] "
+                             "[--joint-free X] [--dominance X] FILE...\n");
         return 2;
     }
     std::map<std::pair<int, int>, Summary> summary; // (scheme, angle index)
@@ -344,5 +376,6 @@ int benchLimbs(const QStringList &arguments)
 
 FINBOOK_BENCH(
     "limbs",
-    "[--before] [--png DIR] [--scheme NAME] FILE... (every limb turned ±60°/±100° at its base)",
+    "[--before] [--png DIR] [--scheme NAME] [--joint-free X] [--dominance X] FILE... (every "
+    "limb turned ±60°/±100° at its base)",
     benchLimbs);
