@@ -15,7 +15,8 @@
 // exactly with it, only blended flesh is left to ARAP) and cutout (every vertex follows its
 // dominant bone alone: a cut-out puppet on the uncut mesh). --before: the skeleton without the
 // animator rig (RefineOptions::animatorRig off). --joint-free X, --dominance X: sweep the zones'
-// factor and rigid_pieces' dominance.
+// factor and rigid_pieces' dominance; --reach X: the bones' boundary reach
+// (SkinningOptions::reach).
 // --png DIR: one contact sheet of every ±60° pose per file, DIR/poses_*.png (flipped
 // triangles red, pivots as red dots), of the scheme --scheme NAME (default rigid_zones).
 #include "../deform/skin_test_support.h"
@@ -52,8 +53,9 @@ constexpr double kDegrees[] = {60.0, -60.0, 100.0, -100.0};
 constexpr double kJointDisk = 1.5; // joint radii around the pivot
 constexpr int kCell = 320;         // px per pose on the contact sheet
 constexpr double kFoldDisk = 3.0;  // joint radii: outline crossings nearer than this are folds
-constexpr double kPassDisk =
-    6.0; // joint radii: a cut-out limb crossing the body this near passes over it
+// Joint radii: a limb cut off and turned rigidly that crosses the body this near the pivot
+// passes over it (passesOver).
+constexpr double kPassDisk = 6.0;
 
 struct Scheme {
     const char *name;
@@ -80,10 +82,11 @@ struct Skinned {
     std::shared_ptr<const deform::RigidSkinning> rigid;
 };
 
-// --joint-free and --dominance: the zone factor of the *_zones and rigid_pieces schemes and
-// rigid_pieces' dominance, for sweeps (negative: the schemes' own).
+// --joint-free, --dominance and --reach: the zone factor of the *_zones and rigid_pieces
+// schemes, rigid_pieces' dominance and SkinningOptions::reach of every scheme, for sweeps
+// (negative: the schemes' own).
 struct Tuning {
-    double jointFree = -1.0, dominance = -1.0;
+    double jointFree = -1.0, dominance = -1.0, reach = -1.0;
 };
 Tuning tuning;
 
@@ -94,6 +97,8 @@ std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::S
     // (deform::withJointZones); lbs_zones puts them in the weights' boundary.
     deform::SkinningOptions options;
     options.jointRadius = s.radius;
+    if (tuning.reach >= 0.0)
+        options.reach = tuning.reach;
     const double free =
         tuning.jointFree >= 0.0 && scheme.jointFree > 0.0 ? tuning.jointFree : scheme.jointFree;
     options.jointFree = scheme.rigid ? 0.0 : free;
@@ -270,10 +275,13 @@ int benchLimbs(const QStringList &arguments)
                 pngScheme = args[1] == QLatin1String(kSchemes[k].name) ? k : pngScheme;
             args = args.mid(2);
         } else if ((args.front() == QStringLiteral("--joint-free") ||
-                    args.front() == QStringLiteral("--dominance")) &&
+                    args.front() == QStringLiteral("--dominance") ||
+                    args.front() == QStringLiteral("--reach")) &&
                    args.size() >= 2) {
-            (args.front() == QStringLiteral("--joint-free") ? tuning.jointFree : tuning.dominance) =
-                args[1].toDouble();
+            double &knob = args.front() == QStringLiteral("--joint-free")  ? tuning.jointFree
+                           : args.front() == QStringLiteral("--dominance") ? tuning.dominance
+                                                                           : tuning.reach;
+            knob = args[1].toDouble();
             args = args.mid(2);
         } else if (args.front() == QStringLiteral("--png") && args.size() >= 2) {
             pngDir = args[1];
@@ -285,7 +293,7 @@ int benchLimbs(const QStringList &arguments)
     }
     if (args.isEmpty()) {
         std::fprintf(stderr, "usage: finbook-bench limbs [--before] [--png DIR] [--scheme NAME] "
-                             "[--joint-free X] [--dominance X] FILE...\n");
+                             "[--joint-free X] [--dominance X] [--reach X] FILE...\n");
         return 2;
     }
     std::map<std::pair<int, int>, Summary> summary; // (scheme, angle index)
@@ -416,8 +424,8 @@ int benchLimbs(const QStringList &arguments)
 
 } // namespace
 
-FINBOOK_BENCH(
-    "limbs",
-    "[--before] [--png DIR] [--scheme NAME] [--joint-free X] [--dominance X] FILE... (every "
-    "limb turned ±60°/±100° at its base)",
-    benchLimbs);
+FINBOOK_BENCH("limbs",
+              "[--before] [--png DIR] [--scheme NAME] [--joint-free X] [--dominance X] [--reach X] "
+              "FILE... (every "
+              "limb turned ±60°/±100° at its base)",
+              benchLimbs);
