@@ -6,15 +6,23 @@
 // limb passing over the body), flipped triangles, the area within 1.5 joint radii of the pivot (%
 // of rest), how far the rest of the body moved (max over vertices outside that disk whose nearest
 // bone is not the limb's, % of the shape's diagonal) and the solve time; then one summary line per
-// scheme and angle over all limbs of all files (clean: no fold and no flip). Schemes: rigid and lbs
-// (plain bone boundary conditions) and rigid_zones and lbs_zones (joint zones of
-// deform::kDefaultJointFree radii left to the solve). --before: the skeleton without the animator
-// rig (RefineOptions::animatorRig off).
+// scheme and angle over all limbs of all files (clean: no fold and no flip; clean or passing
+// over: no flip, and any fold is where the limb cut off and turned rigidly, as a cut-out puppet,
+// would cross the body's outline near the joint too: passes_over). Schemes: rigid and lbs
+// (plain bone boundary conditions), rigid_zones and lbs_zones (joint zones of
+// deform::kDefaultJointFree radii left to the solve; rigid_zones is the app's Rigid mode), and two
+// candidates that lost (skin_alternatives.h): rigid_pieces (whatever one bone dominates moves
+// exactly with it, only blended flesh is left to ARAP) and cutout (every vertex follows its
+// dominant bone alone: a cut-out puppet on the uncut mesh). --before: the skeleton without the
+// animator rig (RefineOptions::animatorRig off). --joint-free X, --dominance X: sweep the zones'
+// factor and rigid_pieces' dominance; --reach X: the bones' boundary reach
+// (SkinningOptions::reach).
 // --png DIR: one contact sheet of every ±60° pose per file, DIR/poses_*.png (flipped
 // triangles red, pivots as red dots), of the scheme --scheme NAME (default rigid_zones).
 #include "../deform/skin_test_support.h"
 #include "bench.h"
 #include "limb_measures.h"
+#include "skin_alternatives.h"
 
 #include <finbook/deform/skeleton/linear_blend_skinning.h>
 #include <finbook/deform/skeleton/rigid_skinning.h>
@@ -45,16 +53,23 @@ constexpr double kDegrees[] = {60.0, -60.0, 100.0, -100.0};
 constexpr double kJointDisk = 1.5; // joint radii around the pivot
 constexpr int kCell = 320;         // px per pose on the contact sheet
 constexpr double kFoldDisk = 3.0;  // joint radii: outline crossings nearer than this are folds
+// Joint radii: a limb cut off and turned rigidly that crosses the body this near the pivot
+// passes over it (passesOver).
+constexpr double kPassDisk = 6.0;
 
 struct Scheme {
     const char *name;
     bool rigid;
     double jointFree;
+    double dominance = 2.0; // ≤ 1: rigid pieces (bench::rigidPieces)
+    bool hardCut = false;   // linear blend with one-hot weights (bench::hardCut)
 };
 constexpr Scheme kSchemes[] = {{"rigid", true, 0.0},
                                {"lbs", false, 0.0},
                                {"rigid_zones", true, deform::kDefaultJointFree},
-                               {"lbs_zones", false, deform::kDefaultJointFree}};
+                               {"lbs_zones", false, deform::kDefaultJointFree},
+                               {"rigid_pieces", true, deform::kDefaultJointFree, 0.9},
+                               {"cutout", false, 0.0, 2.0, true}};
 
 struct Sample {
     int folds = 0, crossings = 0, flips = 0;
@@ -67,6 +82,14 @@ struct Skinned {
     std::shared_ptr<const deform::RigidSkinning> rigid;
 };
 
+// --joint-free, --dominance and --reach: the zone factor of the *_zones and rigid_pieces
+// schemes, rigid_pieces' dominance and SkinningOptions::reach of every scheme, for sweeps
+// (negative: the schemes' own).
+struct Tuning {
+    double jointFree = -1.0, dominance = -1.0, reach = -1.0;
+};
+Tuning tuning;
+
 std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::Skeleton &skeleton,
                                const geometry::Skeleton &s, const Scheme &scheme)
 {
@@ -74,14 +97,25 @@ std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::S
     // (deform::withJointZones); lbs_zones puts them in the weights' boundary.
     deform::SkinningOptions options;
     options.jointRadius = s.radius;
-    options.jointFree = scheme.rigid ? 0.0 : scheme.jointFree;
+    if (tuning.reach >= 0.0)
+        options.reach = tuning.reach;
+    const double free =
+        tuning.jointFree >= 0.0 && scheme.jointFree > 0.0 ? tuning.jointFree : scheme.jointFree;
+    options.jointFree = scheme.rigid ? 0.0 : free;
+    const double dominance =
+        tuning.dominance >= 0.0 && scheme.dominance <= 1.0 ? tuning.dominance : scheme.dominance;
     auto weights = deform::computeSkinningWeights(mesh.V, mesh.F, skeleton, options);
     if (!weights)
         return std::nullopt;
-    Skinned out{*weights, deform::bindVertices(**weights, mesh.V), nullptr};
+    Skinned out{
+        *weights,
+        deform::bindVertices(scheme.hardCut ? bench::hardCut(**weights) : **weights, mesh.V),
+        nullptr};
     if (scheme.rigid) {
         const deform::SkinningWeights pins =
-            deform::withJointZones(**weights, mesh.V, skeleton, s.radius, scheme.jointFree);
+            scheme.dominance <= 1.0
+                ? bench::rigidPieces(**weights, mesh.V, skeleton, s.radius, free, dominance)
+                : deform::withJointZones(**weights, mesh.V, skeleton, s.radius, free);
         auto rigid = deform::rigidSkinPrecompute(mesh.V, mesh.F, pins);
         if (!rigid)
             return std::nullopt;
@@ -92,9 +126,11 @@ std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::S
 
 // Vertices that belong to neither the limb nor the joint disk: their nearest bone is not one
 // of the limb's.
+// onLimb gets, for every vertex, whether its nearest bone is one of the limb's.
 std::vector<int> bodyVertices(const geometry::ObjectMesh &mesh, const geometry::Skeleton &s,
-                              const Limb &limb)
+                              const Limb &limb, std::vector<char> &onLimb)
 {
+    onLimb.assign(std::size_t(mesh.V.rows()), 0);
     std::vector<char> inLimb(std::size_t(s.jointCount()), 0);
     for (int j : limb.joints)
         inLimb[std::size_t(j)] = 1;
@@ -103,8 +139,6 @@ std::vector<int> bodyVertices(const geometry::ObjectMesh &mesh, const geometry::
     std::vector<int> body;
     for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
         const Eigen::Vector2d p = mesh.V.row(v).transpose();
-        if ((p - pivot).norm() <= disk)
-            continue;
         double best = INFINITY;
         int owner = -1;
         for (int j = 0; j < s.jointCount(); ++j) {
@@ -122,10 +156,39 @@ std::vector<int> bodyVertices(const geometry::ObjectMesh &mesh, const geometry::
                 owner = j;
             }
         }
-        if (owner < 0 || !inLimb[std::size_t(owner)])
+        onLimb[std::size_t(v)] = owner >= 0 && inLimb[std::size_t(owner)];
+        if (!onLimb[std::size_t(v)] && (p - pivot).norm() > disk)
             body.push_back(int(v));
     }
     return body;
+}
+
+// Whether the limb, cut off and turned rigidly by T over an unmoved body (a cut-out puppet's
+// pose), crosses the body's outline near the joint: then a crossing there is the limb passing
+// over the body, which no skinning can avoid, rather than a fold. Only crossings of an outline
+// edge of the limb with one of the body count (edges across the cut are stretched there).
+bool passesOver(const geometry::ObjectMesh &mesh, const std::vector<std::pair<int, int>> &outline,
+                const std::vector<char> &onLimb, const deform::BoneTransform &T,
+                const Eigen::Vector2d &pivot, double foldRadius)
+{
+    Eigen::MatrixX2d R = mesh.V;
+    for (Eigen::Index v = 0; v < R.rows(); ++v) {
+        if (onLimb[std::size_t(v)])
+            R.row(v) = deform::transformPoint(T, mesh.V.row(v).transpose()).transpose();
+    }
+    const auto side = [&](int edge) {
+        const auto &[a, b] = outline[std::size_t(edge)];
+        return onLimb[std::size_t(a)] == onLimb[std::size_t(b)] ? int(onLimb[std::size_t(a)]) : -1;
+    };
+    const auto near = [&](int edge) {
+        return (mesh.V.row(outline[std::size_t(edge)].first).transpose() - pivot).norm() <=
+               foldRadius;
+    };
+    for (const auto &[e, f] : bench::outlineCrossings(R, outline)) {
+        if (side(e) >= 0 && side(f) >= 0 && side(e) != side(f) && near(e) && near(f))
+            return true;
+    }
+    return false;
 }
 
 Sample measurePose(const geometry::ObjectMesh &mesh, const Eigen::MatrixX2d &U,
@@ -165,7 +228,8 @@ Sample measurePose(const geometry::ObjectMesh &mesh, const Eigen::MatrixX2d &U,
 
 struct Summary {
     std::vector<double> folds, crossings, flips, jointArea, bodyMoved, ms;
-    int clean = 0; // poses with no fold and no flip
+    int clean = 0;       // poses with no fold and no flip
+    int cleanOrOver = 0; // no flip, and no fold or the limb passes over the body (passesOver)
 };
 
 void drawPose(QPainter &painter, const geometry::ObjectMesh &mesh, const Eigen::MatrixX2d &U,
@@ -210,6 +274,15 @@ int benchLimbs(const QStringList &arguments)
             for (int k = 0; k < int(std::size(kSchemes)); ++k)
                 pngScheme = args[1] == QLatin1String(kSchemes[k].name) ? k : pngScheme;
             args = args.mid(2);
+        } else if ((args.front() == QStringLiteral("--joint-free") ||
+                    args.front() == QStringLiteral("--dominance") ||
+                    args.front() == QStringLiteral("--reach")) &&
+                   args.size() >= 2) {
+            double &knob = args.front() == QStringLiteral("--joint-free")  ? tuning.jointFree
+                           : args.front() == QStringLiteral("--dominance") ? tuning.dominance
+                                                                           : tuning.reach;
+            knob = args[1].toDouble();
+            args = args.mid(2);
         } else if (args.front() == QStringLiteral("--png") && args.size() >= 2) {
             pngDir = args[1];
             args = args.mid(2);
@@ -219,7 +292,8 @@ int benchLimbs(const QStringList &arguments)
         }
     }
     if (args.isEmpty()) {
-        std::fprintf(stderr, "usage: finbook-bench limbs [--before] [--png DIR] FILE...\n");
+        std::fprintf(stderr, "usage: finbook-bench limbs [--before] [--png DIR] [--scheme NAME] "
+                             "[--joint-free X] [--dominance X] [--reach X] FILE...\n");
         return 2;
     }
     std::map<std::pair<int, int>, Summary> summary; // (scheme, angle index)
@@ -266,7 +340,8 @@ int benchLimbs(const QStringList &arguments)
             }
             for (std::size_t l = 0; l < limbs.size(); ++l) {
                 const Limb &limb = limbs[l];
-                const std::vector<int> body = bodyVertices(*mesh, *s, limb);
+                std::vector<char> onLimb;
+                const std::vector<int> body = bodyVertices(*mesh, *s, limb, onLimb);
                 const Eigen::Vector2d pivot = s->joints.row(limb.base).transpose();
                 for (int a = 0; a < int(std::size(kDegrees)); ++a) {
                     deform::SkeletonPose pose = deform::restPose(*skeleton);
@@ -283,7 +358,12 @@ int benchLimbs(const QStringList &arguments)
                     Sample m = measurePose(*mesh, U, outline, pivot,
                                            kJointDisk * s->radius(limb.base), body, diagonal);
                     m.ms = ms;
+                    const bool over =
+                        m.folds > 0 && passesOver(*mesh, outline, onLimb,
+                                                  posed->transforms[std::size_t(limb.first)], pivot,
+                                                  kPassDisk * s->radius(limb.base));
                     Summary &sum = summary[{k, a}];
+                    sum.cleanOrOver += m.flips == 0 && (m.folds == 0 || over) ? 1 : 0;
                     sum.folds.push_back(m.folds);
                     sum.crossings.push_back(m.crossings);
                     sum.flips.push_back(m.flips);
@@ -293,10 +373,10 @@ int benchLimbs(const QStringList &arguments)
                     sum.clean += m.folds == 0 && m.flips == 0 ? 1 : 0;
                     std::printf("{\"file\":\"%s\",\"limb\":%d,\"tip\":%d,\"base\":%d,"
                                 "\"scheme\":\"%s\",\"degrees\":%g,\"folds\":%d,\"overlaps\":%d,"
-                                "\"flips\":%d,"
+                                "\"flips\":%d,\"passes_over\":%d,"
                                 "\"joint_area_pct\":%.1f,\"body_moved_pct\":%.2f,\"ms\":%.2f}\n",
                                 qPrintable(name), int(l), limb.tip, limb.base, scheme.name,
-                                kDegrees[a], m.folds, m.crossings, m.flips, m.jointArea,
+                                kDegrees[a], m.folds, m.crossings, m.flips, int(over), m.jointArea,
                                 m.bodyMoved, ms);
                     if (!pngDir.isEmpty() && k == pngScheme && a < 2)
                         drawPose(
@@ -317,12 +397,14 @@ int benchLimbs(const QStringList &arguments)
         const int n = int(sum.flips.size());
         std::printf(
             "{\"summary\":true,\"scheme\":\"%s\",\"degrees\":%g,\"limbs\":%d,"
-            "\"clean_pct\":%.1f,\"no_overlap_pct\":%.1f,\"median_flips\":%g,"
+            "\"clean_pct\":%.1f,\"clean_or_passing_over_pct\":%.1f,\"no_overlap_pct\":%.1f,"
+            "\"median_flips\":%g,"
             "\"median_folds\":%g,\"median_overlaps\":%g,"
             "\"joint_area_pct_p5\":%.1f,\"joint_area_pct_median\":%.1f,"
             "\"joint_area_pct_p95\":%.1f,\"body_moved_pct_median\":%.2f,"
             "\"body_moved_pct_p95\":%.2f,\"body_moved_le1_pct\":%.1f,\"median_ms\":%.2f}\n",
             kSchemes[key.first].name, kDegrees[key.second], n, n ? 100.0 * sum.clean / n : 0.0,
+            n ? 100.0 * sum.cleanOrOver / n : 0.0,
             n ? 100.0 * double(std::count(sum.crossings.begin(), sum.crossings.end(), 0.0)) / n
               : 0.0,
             median(sum.flips), median(sum.folds), median(sum.crossings),
@@ -342,7 +424,8 @@ int benchLimbs(const QStringList &arguments)
 
 } // namespace
 
-FINBOOK_BENCH(
-    "limbs",
-    "[--before] [--png DIR] [--scheme NAME] FILE... (every limb turned ±60°/±100° at its base)",
-    benchLimbs);
+FINBOOK_BENCH("limbs",
+              "[--before] [--png DIR] [--scheme NAME] [--joint-free X] [--dominance X] [--reach X] "
+              "FILE... (every "
+              "limb turned ±60°/±100° at its base)",
+              benchLimbs);

@@ -13,8 +13,13 @@
 // length traces the pen line instead of the body. Each row says whether the skeleton is one
 // now (wire_after) and whether the one from the silhouette alone, before regions, was
 // (wire_before); the last line counts both.
+// Thin parts (issue 21): thin_tips counts the ends of protrusions at most 6 % of the diagonal
+// wide (thin_tips.h), thin_tips_reached those a bone comes within that width of (drawn as
+// magenta rings, filled when reached); outside_px is the bones' length outside the shape. The
+// last line totals them: outside_share = outside_px / bone_px over all files.
 #include "../geometry/geometry_test_support.h"
 #include "bench.h"
+#include "thin_tips.h"
 
 #include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/silhouette.h>
@@ -127,7 +132,7 @@ bool insideRegion(const Region &region, const Eigen::RowVector2d &p)
 
 // Fraction of the bones' total length inside the region (even-odd), sampled every
 // kSampleSpacing px; 1 for a skeleton without bones.
-double bonesInside(const Skeleton &s, const Region &region)
+double bonesInside(const Skeleton &s, const Region &region, double *boneLength = nullptr)
 {
     double inside = 0.0, total = 0.0;
     for (int j = 0; j < s.jointCount(); ++j) {
@@ -142,8 +147,16 @@ double bonesInside(const Skeleton &s, const Region &region)
             inside += insideRegion(region, a + t * (b - a)) ? length / samples : 0.0;
         }
     }
+    if (boneLength)
+        *boneLength = total;
     return total > 0.0 ? inside / total : 1.0;
 }
+
+struct Totals {
+    int wiresBefore = 0, wiresAfter = 0, tips = 0, reached = 0;
+    double bonePx = 0.0, outsidePx = 0.0;
+    std::vector<double> cpuMs;
+};
 
 double distanceToLines(const std::vector<Eigen::MatrixX2d> &lines, const Eigen::RowVector2d &p)
 {
@@ -193,7 +206,8 @@ std::optional<bool> isWire(const Region &shape, const std::vector<Eigen::MatrixX
 }
 
 void writePicture(const QString &dir, const QString &name, const Region &shape,
-                  const RawSkeleton &raw, const Skeleton &s)
+                  const RawSkeleton &raw, const Skeleton &s,
+                  const std::vector<std::pair<Eigen::RowVector2d, bool>> &tips)
 {
     Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(1e300), hi = -lo;
     for (const Eigen::MatrixX2d &ring : regionRings(shape)) {
@@ -235,6 +249,11 @@ void writePicture(const QString &dir, const QString &name, const Region &shape,
     for (int j = 0; j < s.jointCount(); ++j) {
         painter.setPen(QPen(j == s.root ? Qt::red : QColor(0, 120, 0), 1.0 / scale));
         painter.drawEllipse(QPointF(s.joints(j, 0), s.joints(j, 1)), s.radius(j), s.radius(j));
+    }
+    painter.setPen(QPen(Qt::magenta, 2.0 / scale));
+    for (const auto &[tip, reached] : tips) {
+        painter.setBrush(reached ? QBrush(Qt::magenta) : QBrush());
+        painter.drawEllipse(QPointF(tip.x(), tip.y()), 5.0 / scale, 5.0 / scale);
     }
     painter.end();
     image.save(QDir(dir).filePath(name + QStringLiteral(".png")));
@@ -278,7 +297,7 @@ double shortestBone(const Skeleton &s)
 }
 
 QJsonObject measure(const QString &path, const Input &input, const QString &pngDir, bool before,
-                    int &wiresBefore, int &wiresAfter)
+                    Totals &totals)
 {
     const Region &shape = input.after;
     QJsonObject row{{QStringLiteral("file"), QFileInfo(path).fileName()}};
@@ -322,12 +341,38 @@ QJsonObject measure(const QString &path, const Input &input, const QString &pngD
                qint64(std::count(kinds.begin(), kinds.end(), JointKind::Junction)));
     row.insert(QStringLiteral("terminals"),
                qint64(std::count(kinds.begin(), kinds.end(), JointKind::Terminal)));
-    row.insert(QStringLiteral("bones_inside"), bonesInside(*skeleton, shape));
+    double bonePx = 0.0;
+    const double inside = bonesInside(*skeleton, shape, &bonePx);
+    row.insert(QStringLiteral("bones_inside"), inside);
+    row.insert(QStringLiteral("bone_px"), bonePx);
+    row.insert(QStringLiteral("outside_px"), (1.0 - inside) * bonePx);
+    totals.bonePx += bonePx;
+    totals.outsidePx += (1.0 - inside) * bonePx;
+    totals.cpuMs.push_back(median(cpuMs));
     Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(1e300), hi = -lo;
     for (const Eigen::MatrixX2d &ring : regionRings(shape)) {
         lo = lo.cwiseMin(ring.colwise().minCoeff());
         hi = hi.cwiseMax(ring.colwise().maxCoeff());
     }
+    Eigen::MatrixX2d from(skeleton->jointCount(), 2), to(skeleton->jointCount(), 2);
+    Eigen::Index bones = 0;
+    for (int j = 0; j < skeleton->jointCount(); ++j) {
+        if (skeleton->parent(j) < 0)
+            continue;
+        from.row(bones) = skeleton->joints.row(skeleton->parent(j));
+        to.row(bones++) = skeleton->joints.row(j);
+    }
+    from.conservativeResize(bones, 2);
+    to.conservativeResize(bones, 2);
+    std::vector<std::pair<Eigen::RowVector2d, bool>> tips;
+    for (const Eigen::RowVector2d &tip : finbook::bench::thinTips(shape))
+        tips.emplace_back(tip, finbook::bench::tipReached(
+                                   tip, from, to, finbook::bench::kTipWidth * (hi - lo).norm()));
+    const auto reached = std::count_if(tips.begin(), tips.end(), [](auto &t) { return t.second; });
+    row.insert(QStringLiteral("thin_tips"), qint64(tips.size()));
+    row.insert(QStringLiteral("thin_tips_reached"), qint64(reached));
+    totals.tips += int(tips.size());
+    totals.reached += int(reached);
     row.insert(QStringLiteral("shortest_bone_rel"), shortestBone(*skeleton) / (hi - lo).norm());
     row.insert(QStringLiteral("root_is_terminal"),
                skeleton->root >= 0 && jointDegrees(*skeleton)(skeleton->root) == 1);
@@ -339,10 +384,10 @@ QJsonObject measure(const QString &path, const Input &input, const QString &pngD
     const std::optional<bool> wireAfter = isWire(input.after, input.lines);
     row.insert(QStringLiteral("wire_before"), wireBefore.value_or(false));
     row.insert(QStringLiteral("wire_after"), wireAfter.value_or(false));
-    wiresBefore += wireBefore.value_or(false) ? 1 : 0;
-    wiresAfter += wireAfter.value_or(false) ? 1 : 0;
+    totals.wiresBefore += wireBefore.value_or(false) ? 1 : 0;
+    totals.wiresAfter += wireAfter.value_or(false) ? 1 : 0;
     if (!pngDir.isEmpty())
-        writePicture(pngDir, QFileInfo(path).baseName(), shape, *raw, *skeleton);
+        writePicture(pngDir, QFileInfo(path).baseName(), shape, *raw, *skeleton, tips);
     return row;
 }
 
@@ -367,13 +412,14 @@ int benchSkeleton(const QStringList &arguments)
         std::fprintf(stderr, "usage: finbook-bench skeleton [--png DIR] FILE...\n");
         return 2;
     }
-    int failures = 0, wiresBefore = 0, wiresAfter = 0;
+    int failures = 0;
+    Totals totals;
     QStringList names;
     for (const QString &path : args) {
         QString problem;
         const std::optional<Input> input = readShape(path, problem);
         const QJsonObject row =
-            input ? measure(path, *input, pngDir, before, wiresBefore, wiresAfter)
+            input ? measure(path, *input, pngDir, before, totals)
                   : QJsonObject{{QStringLiteral("file"), QFileInfo(path).fileName()},
                                 {QStringLiteral("error"), problem}};
         failures += row.contains(QStringLiteral("error")) ? 1 : 0;
@@ -386,8 +432,16 @@ int benchSkeleton(const QStringList &arguments)
     const QJsonObject summary{{QStringLiteral("summary"), true},
                               {QStringLiteral("files"), qint64(args.size())},
                               {QStringLiteral("failures"), failures},
-                              {QStringLiteral("wires_before"), wiresBefore},
-                              {QStringLiteral("wires_after"), wiresAfter}};
+                              {QStringLiteral("wires_before"), totals.wiresBefore},
+                              {QStringLiteral("wires_after"), totals.wiresAfter},
+                              {QStringLiteral("bone_px"), totals.bonePx},
+                              {QStringLiteral("outside_px"), totals.outsidePx},
+                              {QStringLiteral("outside_share"),
+                               totals.bonePx > 0.0 ? totals.outsidePx / totals.bonePx : 0.0},
+                              {QStringLiteral("thin_tips"), totals.tips},
+                              {QStringLiteral("thin_tips_reached"), totals.reached},
+                              {QStringLiteral("median_skeleton_cpu_ms"),
+                               totals.cpuMs.empty() ? 0.0 : finbook::bench::median(totals.cpuMs)}};
     std::printf("%s\n", QJsonDocument(summary).toJson(QJsonDocument::Compact).constData());
     return failures == 0 ? 0 : 1;
 }

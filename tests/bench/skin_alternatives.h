@@ -1,7 +1,8 @@
 // The skinning weights the notes compare harmonic weights with, for `finbook-bench skin
 // --compare` only: Synfig/Moho-style inverse-square distance falloff and unconstrained
 // biharmonic weights (the bounded variant, BBW, needs a QP solver; its cost is in the notes),
-// plus a measure of weight that crosses gaps in the shape.
+// plus a measure of weight that crosses gaps in the shape; and the skinning candidates of
+// `finbook-bench limbs` (issue 21) that lost to the app's joint zones (README).
 #pragma once
 
 #include "../deform/skin_test_support.h"
@@ -171,6 +172,51 @@ inline double crossGapWeight(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &
         }
     }
     return sum / double(std::max<std::size_t>(bestCount, 1));
+}
+
+// Rigid pieces, soft joints: the joint zones of deform::withJointZones, and besides the bones'
+// own vertices every vertex one bone clearly dominates (its weight ≥ dominance) is held by that
+// bone alone (its W row one-hot) outside the zones: bodies and limbs move as pieces exactly with
+// their bones, and the rigid mode's ARAP solve places only the flesh where weights blend. For
+// rigidSkinPrecompute.
+inline finbook::deform::SkinningWeights rigidPieces(const finbook::deform::SkinningWeights &weights,
+                                                    const Eigen::MatrixX2d &V,
+                                                    const finbook::deform::Skeleton &skeleton,
+                                                    const Eigen::VectorXd &radius, double jointFree,
+                                                    double dominance)
+{
+    finbook::deform::SkinningWeights held = weights;
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        Eigen::Index best = 0;
+        if (held.owner(v) < 0 && weights.W.row(v).maxCoeff(&best) >= dominance)
+            held.owner(v) = int(best);
+    }
+    finbook::deform::SkinningWeights out =
+        finbook::deform::withJointZones(held, V, skeleton, radius, jointFree);
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        if (out.owner(v) >= 0 && weights.owner(v) < 0) {
+            out.W.row(v).setZero();
+            out.W(v, out.owner(v)) = 1.0;
+        }
+    }
+    return out;
+}
+
+// A cut-out puppet on the uncut mesh: every vertex follows only the bone with its largest
+// weight (W one-hot), so the shape is cut into pieces where the harmonic weights cross over
+// (at the narrowest part between bones) and each piece turns rigidly with its bone. The body
+// beyond a limb's base does not move at all; the triangles across a cut stretch, and flip on
+// the inner side of a bend (a real cut-out would split them and draw the limb over the body).
+inline finbook::deform::SkinningWeights hardCut(const finbook::deform::SkinningWeights &weights)
+{
+    finbook::deform::SkinningWeights out = weights;
+    for (Eigen::Index v = 0; v < out.W.rows(); ++v) {
+        Eigen::Index best = 0;
+        out.W.row(v).maxCoeff(&best);
+        out.W.row(v).setZero();
+        out.W(v, best) = 1.0;
+    }
+    return out;
 }
 
 } // namespace finbook::bench

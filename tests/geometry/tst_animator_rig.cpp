@@ -82,6 +82,7 @@ private slots:
     void drawnRectangleHasOneBone();
     void plusSignHasFourLimbsFromOneJunction();
     void limbBaseJointSitsWhereWidthDrops();
+    void limbBaseBelowALongChest();
     void rootIsAtThickestPart();
     void bentArmGetsAnElbow();
     void longStraightArmGetsAMiddleJoint();
@@ -155,6 +156,22 @@ void TestAnimatorRig::limbBaseJointSitsWhereWidthDrops()
         QVERIFY(plain.joints.row(plainChain.back()).norm() < 60.0 ||
                 plain.joints.row(plainChain.back()).norm() > 110.0);
     }
+}
+
+void TestAnimatorRig::limbBaseBelowALongChest()
+{
+    // A horse's foreleg: the junction of back, neck and chest sits high, the chest (radius 60)
+    // runs 180 px down from it and the leg (radius 12) only then leaves the body. The leg's
+    // base belongs at the bottom of the chest, not one body radius below the junction.
+    const Region shape = shapeOf({{rows({{0, 0}, {300, 0}}), 120.0},
+                                  {rows({{0, 0}, {-80, -200}}), 80.0},
+                                  {rows({{0, 0}, {0, 180}}), 120.0},
+                                  {rows({{0, 180}, {0, 430}}), 24.0}});
+    const Skeleton s = rigOf(shape);
+    QVERIFY(bonesInside(s, shape) >= 0.99);
+    const std::vector<int> chain = limbChain(s, tipNearest(s, Eigen::RowVector2d(0, 440)));
+    const double baseY = s.joints(chain.back(), 1);
+    QVERIFY2(baseY > 150.0 && baseY < 260.0, qPrintable(QString::number(baseY)));
 }
 
 void TestAnimatorRig::rootIsAtThickestPart()

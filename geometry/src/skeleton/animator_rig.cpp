@@ -18,6 +18,11 @@ constexpr double kBaseDrop = 0.1;
 // A limb is narrower than the body when its typical radius is below this fraction of the
 // junction's; otherwise the junction itself is the base (a plus sign's arms).
 constexpr double kNarrower = 0.8;
+// The base is searched this many of the body's radii along the branch from the junction: the
+// junction can sit deep in a long body (a horse's withers above its chest and foreleg), so the
+// width drops well beyond its own disk. Measured with `finbook-bench limbs` (1: the base often
+// in the chest, 3: at the top of the leg; README).
+constexpr double kBaseReach = 3.0;
 // A limb longer than this many of its radii from its base gets a middle joint.
 constexpr double kLongLimb = 6.0;
 
@@ -210,7 +215,7 @@ std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nod
         const double level = limb + kBaseDrop * (body - limb);
         for (int i = 1; i + 1 < m; ++i) {
             if (g.clearance[std::size_t(nodes[std::size_t(i)])] <= level ||
-                s[std::size_t(i)] >= body) {
+                s[std::size_t(i)] >= kBaseReach * body) {
                 base = i;
                 break;
             }

@@ -1,5 +1,7 @@
 #include "contour_simplify.h"
 
+#include "local_width.h"
+
 #include <finbook/geometry/polyline.h>
 #include <finbook/geometry/simplicity.h>
 
@@ -15,6 +17,13 @@ namespace {
 constexpr int kMaxSteps = 40;
 constexpr double kStep = 1.25;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The smallest local half-width the adaptive budget resolves, in starting tolerances.
+constexpr double kMinScale = 4.0;
+// Outline detail within this many starting tolerances of a vertex (pixel steps) does not make
+// the vertex's neighbourhood thin.
+constexpr double kIgnoreScale = 6.0;
+// The adaptive budget starts from at most this many vertex budgets of the plain outline.
+constexpr long kBaseBudgets = 2;
 
 double distanceToSegment(const Eigen::RowVector2d &p, const Eigen::RowVector2d &a,
                          const Eigen::RowVector2d &b)
@@ -29,9 +38,10 @@ double distanceToSegment(const Eigen::RowVector2d &p, const Eigen::RowVector2d &
 
 // Ranks the open stretch first..last of `points` (indices taken modulo the ring size) with
 // the same splits as douglasPeucker: a vertex's value is its own distance, capped by the
-// value of the split that exposed it.
+// value of the split that exposed it. With `scale`, distances are divided by the vertex's
+// scale (a Douglas–Peucker whose tolerance varies along the ring).
 void rankStretch(const Eigen::MatrixX2d &points, Eigen::Index first, Eigen::Index last,
-                 std::vector<double> &rank)
+                 std::vector<double> &rank, const std::vector<double> *scale = nullptr)
 {
     const Eigen::Index n = points.rows();
     struct Task {
@@ -46,7 +56,8 @@ void rankStretch(const Eigen::MatrixX2d &points, Eigen::Index first, Eigen::Inde
         Eigen::Index worstAt = -1;
         for (Eigen::Index i = task.a + 1; i < task.b; ++i) {
             const double d = distanceToSegment(points.row(i % n), points.row(task.a % n),
-                                               points.row(task.b % n));
+                                               points.row(task.b % n)) /
+                             (scale ? (*scale)[std::size_t(i % n)] : 1.0);
             if (d > worst) {
                 worst = d;
                 worstAt = i;
@@ -113,9 +124,59 @@ bool strictlySimple(const Polygon &polygon)
     return isSimple(Region{polygon}, Touching::Forbidden);
 }
 
+// One ring of the adaptive outline: the vertices the uniform tolerance keeps, plus those of
+// the thinned ring (indices `base` into it) whose scaled rank exceeds the fraction.
+struct AdaptiveRing {
+    const Eigen::MatrixX2d &ring;
+    std::vector<double> plain;      // keepTolerances(ring)
+    std::vector<Eigen::Index> base; // indices into ring: the thinned ring
+    std::vector<double> scaled;     // per base vertex: rank in local half-widths
+
+    AdaptiveRing(const Eigen::MatrixX2d &r, double floor)
+        : ring(r)
+        , plain(keepTolerances(r))
+    {
+        for (Eigen::Index i = 0; i < ring.rows(); ++i) {
+            if (plain[std::size_t(i)] > floor)
+                base.push_back(i);
+        }
+    }
+
+    Eigen::MatrixX2d baseRing() const
+    {
+        Eigen::MatrixX2d out(Eigen::Index(base.size()), 2);
+        for (std::size_t k = 0; k < base.size(); ++k)
+            out.row(Eigen::Index(k)) = ring.row(base[k]);
+        return out;
+    }
+
+    std::vector<char> kept(double uniform, double fraction) const
+    {
+        std::vector<char> keep(std::size_t(ring.rows()), 0);
+        for (Eigen::Index i = 0; i < ring.rows(); ++i)
+            keep[std::size_t(i)] = plain[std::size_t(i)] > uniform;
+        for (std::size_t k = 0; k < base.size(); ++k)
+            keep[std::size_t(base[k])] |= scaled[k] > fraction;
+        return keep;
+    }
+
+    Eigen::MatrixX2d at(double uniform, double fraction, double start) const
+    {
+        const std::vector<char> keep = kept(uniform, fraction);
+        Eigen::MatrixX2d out(ring.rows(), 2);
+        Eigen::Index count = 0;
+        for (Eigen::Index i = 0; i < ring.rows(); ++i) {
+            if (keep[std::size_t(i)])
+                out.row(count++) = ring.row(i);
+        }
+        out.conservativeResize(count, 2);
+        return cleanPolyline(out, 0.02 * start, true);
+    }
+};
+
 } // namespace
 
-std::vector<double> keepTolerances(const Eigen::MatrixX2d &ring)
+std::vector<double> keepTolerances(const Eigen::MatrixX2d &ring, const std::vector<double> *scale)
 {
     const Eigen::Index n = ring.rows();
     std::vector<double> rank(std::size_t(n), 0.0);
@@ -127,8 +188,8 @@ std::vector<double> keepTolerances(const Eigen::MatrixX2d &ring)
             far = i;
     }
     rank[0] = rank[std::size_t(far)] = kInfinity;
-    rankStretch(ring, 0, far, rank);
-    rankStretch(ring, far, n, rank);
+    rankStretch(ring, 0, far, rank, scale);
+    rankStretch(ring, far, n, rank, scale);
     return rank;
 }
 
@@ -167,6 +228,64 @@ Polygon simplifyToBudget(const Polygon &polygon, double start, double cap, int t
         }
     }
     return {};
+}
+
+Polygon simplifyAdaptive(const Polygon &polygon, double start, double fraction, int target,
+                         int budget, double &used)
+{
+    const double cap = std::max(start, fraction * thickness(polygon));
+    RankedPolygon plain{polygon, keepTolerances(polygon.outer), {}};
+    for (const Eigen::MatrixX2d &hole : polygon.holes)
+        plain.holes.push_back(keepTolerances(hole));
+    // The uniform tolerance simplifyToBudget would pick: every vertex it keeps stays.
+    const double forTarget = std::max(start, plain.toleranceFor(target));
+    const double uniform =
+        forTarget <= cap ? forTarget : std::max(cap, std::max(start, plain.toleranceFor(budget)));
+    // The thinned outline the extra vertices come from: no pixel noise, a few budgets at most.
+    const double floor = std::max(start, plain.toleranceFor(kBaseBudgets * long(budget)));
+    if (!(floor < uniform))
+        return simplifyToBudget(polygon, start, cap, target, budget, used);
+    std::vector<AdaptiveRing> rings;
+    rings.emplace_back(polygon.outer, floor);
+    for (const Eigen::MatrixX2d &hole : polygon.holes)
+        rings.emplace_back(hole, floor);
+    Polygon base;
+    base.outer = rings[0].baseRing();
+    for (std::size_t h = 1; h < rings.size(); ++h)
+        base.holes.push_back(rings[h].baseRing());
+    std::vector<std::vector<double>> scale = localHalfWidths(base, kIgnoreScale * start);
+    const double widest = std::max(kMinScale * start, thickness(polygon));
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+        for (double &w : scale[r])
+            w = std::clamp(w, kMinScale * start, widest);
+        const Eigen::MatrixX2d ring = r == 0 ? base.outer : base.holes[r - 1];
+        rings[r].scaled = keepTolerances(ring, &scale[r]);
+    }
+    auto at = [&](double f) {
+        Polygon out;
+        out.outer = rings[0].at(uniform, f, start);
+        for (std::size_t h = 1; h < rings.size(); ++h) {
+            Eigen::MatrixX2d ring = rings[h].at(uniform, f, start);
+            if (ring.rows() >= 3 && std::abs(signedArea(ring)) > start * start)
+                out.holes.push_back(std::move(ring));
+        }
+        return out;
+    };
+    // The smallest fraction ≥ `fraction` whose extra vertices fit the budget, then finer
+    // (thin parts that touch once simplified want more vertices) as long as they fit.
+    double f = fraction;
+    for (int step = 0; step < kMaxSteps && regionVertexCount(Region{at(f)}) > budget; ++step)
+        f *= kStep;
+    for (int step = 0; step < kMaxSteps; ++step, f /= kStep) {
+        Polygon candidate = at(f);
+        if (regionVertexCount(Region{candidate}) > budget)
+            break;
+        if (strictlySimple(candidate)) {
+            used = uniform;
+            return candidate;
+        }
+    }
+    return simplifyToBudget(polygon, start, cap, target, budget, used);
 }
 
 } // namespace finbook::geometry::detail

@@ -16,8 +16,9 @@
 namespace finbook::geometry::detail {
 namespace {
 
-// The simplification may move the outline by at most this fraction of a polygon's mean
-// half-width once the vertex target is missed but the budget holds.
+// The simplification may move the outline by at most this fraction of the polygon's mean
+// half-width once the vertex target is missed but the budget holds, and by at most this
+// fraction of the local half-width where the budget allows (simplifyAdaptive).
 constexpr double kThicknessFraction = 0.25;
 
 GeometryError cancelledError()
@@ -154,10 +155,9 @@ Expected<PreparedContour, GeometryError> prepareContour(const Region &region,
     for (const Polygon &polygon : *eroded) {
         if (options.cancelled && options.cancelled())
             return unexpected(cancelledError());
-        const double cap = std::max(start, kThicknessFraction * thickness(polygon));
         double used = start;
-        Polygon simple = simplifyToBudget(polygon, start, cap, options.targetVertices,
-                                          options.maxVertices, used);
+        Polygon simple = simplifyAdaptive(polygon, start, kThicknessFraction,
+                                          options.targetVertices, options.maxVertices, used);
         if (simple.outer.rows() < 3)
             continue;
         // Over the cap only when the budget forced it: the outline has more detail than

@@ -36,7 +36,9 @@ struct SkeletonOptions {
     // tolerance grows from simplifyTolerance until a polygon has at most targetVertices, but
     // not past a quarter of the polygon's mean half-width (area / perimeter), so thin parts
     // and detailed shapes keep their outline, unless it would then have more than
-    // maxVertices: the hard bound.
+    // maxVertices: the hard bound. Within maxVertices, vertices whose removal would move the
+    // outline by more than a quarter of the local half-width are kept too (tentacle tips,
+    // antennae, thin wavy limbs: issue 21).
     // 8 ≤ targetVertices ≤ maxVertices ≤ 1000.
     int targetVertices = 64;
     int maxVertices = 150;
