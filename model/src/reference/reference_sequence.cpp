@@ -28,10 +28,6 @@ bool splitNumbered(const QString &fileName, QString *prefix, QString *digits, QS
     return true;
 }
 
-QString translate(const char *text)
-{
-    return QCoreApplication::translate("Reference", text);
-}
 } // namespace
 
 QStringList numberedSequence(const QString &path)
@@ -75,11 +71,13 @@ Expected<Reference, QString> importReferenceSequence(const QStringList &paths, Q
     if (paths.size() == 1)
         return importReferenceFile(paths.front(), canvas);
     if (paths.isEmpty())
-        return unexpected(translate("No picture was chosen."));
+        return unexpected(QCoreApplication::translate("Reference", "No picture was chosen."));
     if (paths.size() > kMaxReferencePictures)
-        return unexpected(translate("A sequence of more than %1 pictures cannot be used as a "
-                                    "reference.")
-                              .arg(kMaxReferencePictures));
+        return unexpected(
+            QCoreApplication::translate("Reference",
+                                        "A sequence of more than %1 pictures cannot be used as a "
+                                        "reference.")
+                .arg(kMaxReferencePictures));
     Reference reference;
     reference.kind = ReferenceKind::Sequence;
     reference.name = QFileInfo(paths.front()).fileName();
@@ -93,14 +91,16 @@ Expected<Reference, QString> importReferenceSequence(const QStringList &paths, Q
         };
         QFile file(path);
         if (!QFileInfo(path).isFile() || !file.open(QIODevice::ReadOnly))
-            return refuse(translate("It cannot be read (is it there, and may Finbook read it?)."));
+            return refuse(QCoreApplication::translate(
+                "Reference", "It cannot be read (is it there, and may Finbook read it?)."));
         total += file.size();
         if (total > kMaxReferenceBytes)
-            return refuse(translate("The pictures together are larger than %1 MB.")
+            return refuse(QCoreApplication::translate(
+                              "Reference", "The pictures together are larger than %1 MB.")
                               .arg(kMaxReferenceBytes >> 20));
         const QByteArray bytes = file.readAll();
         if (bytes.isEmpty())
-            return refuse(translate("It is empty."));
+            return refuse(QCoreApplication::translate("Reference", "It is empty."));
         // Each picture is decoded once now (and dropped): one that would not decode later
         // is refused before the document changes, not shown as a gap.
         const auto media = ReferenceMedia::open(ReferenceKind::Image, bytes);
@@ -111,10 +111,10 @@ Expected<Reference, QString> importReferenceSequence(const QStringList &paths, Q
         reference.pictures << bytes;
     }
     reference.bytes = reference.pictures.front();
-    //: %1 is the first file's name, %2 how many pictures follow it
-    reference.name =
-        QCoreApplication::translate("Reference", "%1 and %n more", nullptr, int(paths.size() - 1))
-            .arg(reference.name);
+    const int more = int(paths.size()) - 1;
+    //: %1 is the first file's name, %n how many pictures follow it
+    reference.name = QCoreApplication::translate("Reference", "%1 and %n more", nullptr, more)
+                         .arg(reference.name);
     fitReferenceToCanvas(reference, canvas);
     return reference;
 }
