@@ -1277,7 +1277,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
@@ -1292,110 +1292,110 @@
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="199"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
         <source>a sound clip comes before the frames</source>
         <translation>ein Tonclip steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="209"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="218"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="301"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1681,22 +1681,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="362"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="380"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="384"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="389"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="394"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="398"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -1818,7 +1818,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="156"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="159"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>Die automatische Sicherung konnte keine Wiederherstellungskopie schreiben: %1.</translation>
     </message>
@@ -1853,45 +1853,71 @@
         <translation>die Strich-IDs einer Füllung sind nicht geordnet</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="32"/>
-        <location filename="../model/src/reference/reference_section.cpp" line="34"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="48"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="50"/>
         <source>the reference layer</source>
         <translation>die Referenzebene</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="36"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="52"/>
         <source>the section is repeated</source>
         <translation>der Abschnitt kommt doppelt vor</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="41"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="57"/>
         <source>the reference is of an unknown kind (%1)</source>
         <translation>die Referenz ist von unbekannter Art (%1)</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="45"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="61"/>
         <source>the reference has unknown flags</source>
         <translation>die Referenz hat unbekannte Kennzeichen</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="60"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="76"/>
         <source>the reference&apos;s place, scale, rotation, opacity or rate is not a number or out of range</source>
         <translation>Lage, Maßstab, Drehung, Deckkraft oder Rate der Referenz ist keine Zahl oder außerhalb des Bereichs</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="64"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="80"/>
         <source>the reference&apos;s name is too long</source>
         <translation>der Name der Referenz ist zu lang</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="70"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="86"/>
         <source>the reference claims %1 bytes but only %2 remain</source>
         <translation>die Referenz gibt %1 Bytes an, es bleiben aber nur %2</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="83"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="99"/>
         <source>the reference layer is left out: %1</source>
         <translation>die Referenzebene wird weggelassen: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="106"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="108"/>
+        <source>the reference&apos;s picture sequence</source>
+        <translation>die Bildfolge der Referenz</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="112"/>
+        <source>it does not follow a reference picture, or is repeated</source>
+        <translation>er folgt keinem Referenzbild oder ist wiederholt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="115"/>
+        <source>it claims %1 pictures</source>
+        <translation>er gibt %1 Bilder an</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="123"/>
+        <source>picture %1 claims %2 bytes but only %3 remain</source>
+        <translation>Bild %1 gibt %2 Bytes an, aber nur %3 sind übrig</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="142"/>
+        <source>the reference&apos;s further pictures are left out: %1</source>
+        <translation>die weiteren Bilder der Referenz werden weggelassen: %1</translation>
     </message>
     <message>
         <location filename="../model/src/sound/sound_section.cpp" line="17"/>
@@ -2036,16 +2062,19 @@
         <translation>Referenz sperren oder entsperren</translation>
     </message>
     <message>
+        <location filename="../ui/src/reference/tool_reference.cpp" line="26"/>
         <location filename="../model/src/reference/reference_commands.cpp" line="24"/>
         <source>Move Reference</source>
         <translation>Referenz verschieben</translation>
     </message>
     <message>
+        <location filename="../ui/src/reference/tool_reference.cpp" line="22"/>
         <location filename="../model/src/reference/reference_commands.cpp" line="26"/>
         <source>Scale Reference</source>
         <translation>Referenz skalieren</translation>
     </message>
     <message>
+        <location filename="../ui/src/reference/tool_reference.cpp" line="24"/>
         <location filename="../model/src/reference/reference_commands.cpp" line="28"/>
         <source>Rotate Reference</source>
         <translation>Referenz drehen</translation>
@@ -2062,11 +2091,13 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="33"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="89"/>
         <source>“%1” cannot be used as a reference: %2</source>
         <translation>„%1“ kann nicht als Referenz verwendet werden: %2</translation>
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="38"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="94"/>
         <source>It cannot be read (is it there, and may Finbook read it?).</source>
         <translation>Sie lässt sich nicht lesen (gibt es sie, und darf Finbook sie lesen?).</translation>
     </message>
@@ -2077,16 +2108,18 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="45"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="103"/>
         <source>It is empty.</source>
         <translation>Sie ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="72"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="90"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="114"/>
         <source>The file is empty.</source>
         <translation>Die Datei ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="84"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="50"/>
         <source>Its picture cannot be decoded.</source>
         <translation>Ihr Bild lässt sich nicht dekodieren.</translation>
     </message>
@@ -2127,6 +2160,30 @@
         <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
         <source>Its first picture cannot be decoded.</source>
         <translation>Sein erstes Bild lässt sich nicht dekodieren.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="74"/>
+        <source>No picture was chosen.</source>
+        <translation>Es wurde kein Bild gewählt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="77"/>
+        <source>A sequence of more than %1 pictures cannot be used as a reference.</source>
+        <translation>Eine Folge von mehr als %1 Bildern kann nicht als Referenz dienen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="98"/>
+        <source>The pictures together are larger than %1 MB.</source>
+        <translation>Die Bilder sind zusammen größer als %1 MB.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/reference/reference_sequence.cpp" line="116"/>
+        <source>%1 and %n more</source>
+        <extracomment>%1 is the first file&apos;s name, %n how many pictures follow it</extracomment>
+        <translation>
+            <numerusform>%1 und %n weiteres</numerusform>
+            <numerusform>%1 und %n weitere</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3218,58 +3275,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window.cpp" line="150"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="175"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window.cpp" line="176"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="177"/>
+        <location filename="../ui/src/window/main_window.cpp" line="179"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window.cpp" line="199"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window.cpp" line="200"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="222"/>
+        <location filename="../ui/src/window/main_window.cpp" line="236"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="247"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="234"/>
+        <location filename="../ui/src/window/main_window.cpp" line="248"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window.cpp" line="253"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window.cpp" line="254"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -3424,172 +3481,167 @@
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
-        <source>Import Reference</source>
-        <translation>Referenz importieren</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="142"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="175"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="197"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="222"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="235"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="248"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="259"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -4062,95 +4114,123 @@
 <context>
     <name>finbook::ui::ReferencePanel</name>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="36"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="39"/>
         <source>&amp;Visible</source>
         <translation>&amp;Sichtbar</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="37"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="40"/>
         <source>Loc&amp;ked</source>
         <translation>&amp;Gesperrt</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="40"/>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="41"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="43"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="44"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="42"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="45"/>
         <source> %</source>
         <translation> %</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="43"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="46"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="44"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="47"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="45"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="48"/>
         <source>Document rate</source>
         <translation>Rate des Dokuments</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="46"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="49"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="107"/>
         <source>Video frames shown per second of animation</source>
         <translation>Videobilder je Sekunde Animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="47"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="50"/>
         <source>&amp;Remove Reference</source>
         <translation>Referenz &amp;entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="53"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
         <source>Opacity:</source>
         <translation>Deckkraft:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="54"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
         <source>Centre X:</source>
         <translation>Mitte X:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="55"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
         <source>Centre Y:</source>
         <translation>Mitte Y:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="59"/>
         <source>Scale:</source>
         <translation>Maßstab:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="60"/>
         <source>Rotation:</source>
         <translation>Drehung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="61"/>
         <source>Video rate:</source>
         <translation>Videorate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="86"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="89"/>
         <source>No reference. File → Import Reference… puts a picture or a video under the drawing.</source>
         <translation>Keine Referenz. Datei → Referenz importieren… legt ein Bild oder Video unter die Zeichnung.</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="148"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="106"/>
+        <source>Pictures shown per second of animation</source>
+        <translation>Pro Sekunde Animation gezeigte Bilder</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="159"/>
         <source>The reference could not be placed on the canvas.</source>
         <translation>Die Referenz ließ sich nicht auf der Leinwand platzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="155"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="167"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="174"/>
+        <source>Import Reference</source>
+        <translation>Referenz importieren</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/reference/reference_panel.cpp" line="175"/>
+        <source>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</source>
+        <translation>
+            <numerusform>„%1“ ist eines von %n nummerierten Bildern (%2 … %3). Alle als Folge importieren, ein Bild pro Frame?</numerusform>
+            <numerusform>„%1“ ist eines von %n nummerierten Bildern (%2 … %3). Alle als Folge importieren, ein Bild pro Frame?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="188"/>
         <source>Pictures and videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;All files (*)</source>
         <translation>Bilder und Videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ReferenceTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="20"/>
+        <source>Move Reference</source>
+        <translation>Referenz verschieben</translation>
     </message>
 </context>
 <context>
@@ -4451,12 +4531,12 @@
 <context>
     <name>finbook::ui::SoundPlayer</name>
     <message>
-        <location filename="../ui/src/sound/sound_player.cpp" line="65"/>
+        <location filename="../ui/src/sound/sound_player.cpp" line="69"/>
         <source>No audio output was found: playing without sound.</source>
         <translation>Keine Audioausgabe gefunden: Wiedergabe ohne Ton.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_player.cpp" line="76"/>
+        <location filename="../ui/src/sound/sound_player.cpp" line="80"/>
         <source>The audio output failed: playing without sound.</source>
         <translation>Die Audioausgabe ist fehlgeschlagen: Wiedergabe ohne Ton.</translation>
     </message>

@@ -1277,7 +1277,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
@@ -1292,110 +1292,110 @@
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="199"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
         <source>a sound clip comes before the frames</source>
         <translation>un extrait sonore précède les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="209"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="218"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="301"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1681,22 +1681,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="362"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="380"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="384"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="389"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="394"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="398"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -1818,7 +1818,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="156"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="159"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>L&apos;enregistrement automatique n&apos;a pas pu écrire de copie de récupération&#xa0;: %1.</translation>
     </message>
@@ -1853,45 +1853,71 @@
         <translation>les identifiants de traits d&apos;un remplissage ne sont pas dans l&apos;ordre</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="32"/>
-        <location filename="../model/src/reference/reference_section.cpp" line="34"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="48"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="50"/>
         <source>the reference layer</source>
         <translation>le calque de référence</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="36"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="52"/>
         <source>the section is repeated</source>
         <translation>la section est répétée</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="41"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="57"/>
         <source>the reference is of an unknown kind (%1)</source>
         <translation>la référence est d’un type inconnu (%1)</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="45"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="61"/>
         <source>the reference has unknown flags</source>
         <translation>la référence a des indicateurs inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="60"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="76"/>
         <source>the reference&apos;s place, scale, rotation, opacity or rate is not a number or out of range</source>
         <translation>la position, l’échelle, la rotation, l’opacité ou la cadence de la référence n’est pas un nombre ou est hors limites</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="64"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="80"/>
         <source>the reference&apos;s name is too long</source>
         <translation>le nom de la référence est trop long</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="70"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="86"/>
         <source>the reference claims %1 bytes but only %2 remain</source>
         <translation>la référence annonce %1 octets mais il n’en reste que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="83"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="99"/>
         <source>the reference layer is left out: %1</source>
         <translation>le calque de référence est laissé de côté : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="106"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="108"/>
+        <source>the reference&apos;s picture sequence</source>
+        <translation>la séquence d’images de la référence</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="112"/>
+        <source>it does not follow a reference picture, or is repeated</source>
+        <translation>elle ne suit aucune image de référence, ou est répétée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="115"/>
+        <source>it claims %1 pictures</source>
+        <translation>elle annonce %1 images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="123"/>
+        <source>picture %1 claims %2 bytes but only %3 remain</source>
+        <translation>l’image %1 annonce %2 octets mais il n’en reste que %3</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="142"/>
+        <source>the reference&apos;s further pictures are left out: %1</source>
+        <translation>les images suivantes de la référence sont laissées de côté : %1</translation>
     </message>
     <message>
         <location filename="../model/src/sound/sound_section.cpp" line="17"/>
@@ -2036,16 +2062,19 @@
         <translation>Verrouiller ou déverrouiller la référence</translation>
     </message>
     <message>
+        <location filename="../ui/src/reference/tool_reference.cpp" line="26"/>
         <location filename="../model/src/reference/reference_commands.cpp" line="24"/>
         <source>Move Reference</source>
         <translation>Déplacer la référence</translation>
     </message>
     <message>
+        <location filename="../ui/src/reference/tool_reference.cpp" line="22"/>
         <location filename="../model/src/reference/reference_commands.cpp" line="26"/>
         <source>Scale Reference</source>
         <translation>Mettre la référence à l’échelle</translation>
     </message>
     <message>
+        <location filename="../ui/src/reference/tool_reference.cpp" line="24"/>
         <location filename="../model/src/reference/reference_commands.cpp" line="28"/>
         <source>Rotate Reference</source>
         <translation>Faire pivoter la référence</translation>
@@ -2062,11 +2091,13 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="33"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="89"/>
         <source>“%1” cannot be used as a reference: %2</source>
         <translation>« %1 » ne peut pas servir de référence : %2</translation>
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="38"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="94"/>
         <source>It cannot be read (is it there, and may Finbook read it?).</source>
         <translation>Il ne peut pas être lu (existe-t-il, et Finbook a-t-il le droit de le lire ?).</translation>
     </message>
@@ -2077,16 +2108,18 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="45"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="103"/>
         <source>It is empty.</source>
         <translation>Il est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="72"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="90"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="114"/>
         <source>The file is empty.</source>
         <translation>Le fichier est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="84"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="50"/>
         <source>Its picture cannot be decoded.</source>
         <translation>Son image ne peut pas être décodée.</translation>
     </message>
@@ -2127,6 +2160,30 @@
         <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
         <source>Its first picture cannot be decoded.</source>
         <translation>Sa première image ne peut pas être décodée.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="74"/>
+        <source>No picture was chosen.</source>
+        <translation>Aucune image n’a été choisie.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="77"/>
+        <source>A sequence of more than %1 pictures cannot be used as a reference.</source>
+        <translation>Une séquence de plus de %1 images ne peut pas servir de référence.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="98"/>
+        <source>The pictures together are larger than %1 MB.</source>
+        <translation>Les images dépassent ensemble %1 Mo.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/reference/reference_sequence.cpp" line="116"/>
+        <source>%1 and %n more</source>
+        <extracomment>%1 is the first file&apos;s name, %n how many pictures follow it</extracomment>
+        <translation>
+            <numerusform>%1 et %n autre</numerusform>
+            <numerusform>%1 et %n autres</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3218,58 +3275,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window.cpp" line="150"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="175"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window.cpp" line="176"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="177"/>
+        <location filename="../ui/src/window/main_window.cpp" line="179"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window.cpp" line="199"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window.cpp" line="200"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="222"/>
+        <location filename="../ui/src/window/main_window.cpp" line="236"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="247"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="234"/>
+        <location filename="../ui/src/window/main_window.cpp" line="248"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window.cpp" line="253"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window.cpp" line="254"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -3439,172 +3496,167 @@
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
-        <source>Import Reference</source>
-        <translation>Importer une référence</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="142"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="175"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="197"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="222"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="235"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="248"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="259"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
@@ -4062,95 +4114,123 @@
 <context>
     <name>finbook::ui::ReferencePanel</name>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="36"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="39"/>
         <source>&amp;Visible</source>
         <translation>&amp;Visible</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="37"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="40"/>
         <source>Loc&amp;ked</source>
         <translation>&amp;Verrouillée</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="40"/>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="41"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="43"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="44"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="42"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="45"/>
         <source> %</source>
         <translation> %</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="43"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="46"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="44"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="47"/>
         <source> fps</source>
         <translation> i/s</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="45"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="48"/>
         <source>Document rate</source>
         <translation>Cadence du document</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="46"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="49"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="107"/>
         <source>Video frames shown per second of animation</source>
         <translation>Images vidéo montrées par seconde d’animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="47"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="50"/>
         <source>&amp;Remove Reference</source>
         <translation>&amp;Retirer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="53"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
         <source>Opacity:</source>
         <translation>Opacité :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="54"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
         <source>Centre X:</source>
         <translation>Centre X :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="55"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
         <source>Centre Y:</source>
         <translation>Centre Y :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="59"/>
         <source>Scale:</source>
         <translation>Échelle :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="60"/>
         <source>Rotation:</source>
         <translation>Rotation :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="61"/>
         <source>Video rate:</source>
         <translation>Cadence vidéo :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="86"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="89"/>
         <source>No reference. File → Import Reference… puts a picture or a video under the drawing.</source>
         <translation>Aucune référence. Fichier → Importer une référence… place une image ou une vidéo sous le dessin.</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="148"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="106"/>
+        <source>Pictures shown per second of animation</source>
+        <translation>Images affichées par seconde d’animation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="159"/>
         <source>The reference could not be placed on the canvas.</source>
         <translation>La référence n’a pas pu être placée sur la toile.</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="155"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="167"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="174"/>
+        <source>Import Reference</source>
+        <translation>Importer une référence</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/reference/reference_panel.cpp" line="175"/>
+        <source>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</source>
+        <translation>
+            <numerusform>« %1 » fait partie de %n image numérotée (%2 … %3). Les importer toutes en séquence, une image par trame ?</numerusform>
+            <numerusform>« %1 » fait partie de %n images numérotées (%2 … %3). Les importer toutes en séquence, une image par trame ?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="188"/>
         <source>Pictures and videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;All files (*)</source>
         <translation>Images et vidéos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;Tous les fichiers (*)</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ReferenceTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="20"/>
+        <source>Move Reference</source>
+        <translation>Déplacer la référence</translation>
     </message>
 </context>
 <context>
@@ -4451,12 +4531,12 @@
 <context>
     <name>finbook::ui::SoundPlayer</name>
     <message>
-        <location filename="../ui/src/sound/sound_player.cpp" line="65"/>
+        <location filename="../ui/src/sound/sound_player.cpp" line="69"/>
         <source>No audio output was found: playing without sound.</source>
         <translation>Aucune sortie audio trouvée : lecture sans son.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_player.cpp" line="76"/>
+        <location filename="../ui/src/sound/sound_player.cpp" line="80"/>
         <source>The audio output failed: playing without sound.</source>
         <translation>La sortie audio a échoué : lecture sans son.</translation>
     </message>

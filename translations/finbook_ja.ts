@@ -1274,7 +1274,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="219"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
@@ -1289,110 +1289,110 @@
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="199"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
         <source>a sound clip comes before the frames</source>
         <translation>サウンドクリップがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="209"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="218"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="246"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="270"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="271"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="301"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1676,22 +1676,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="362"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="380"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="384"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="389"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="394"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="398"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -1811,7 +1811,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="156"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="159"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>自動保存で復元用のコピーを書き込めませんでした: %1。</translation>
     </message>
@@ -1846,45 +1846,71 @@
         <translation>塗りのストロークIDが順に並んでいません</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="32"/>
-        <location filename="../model/src/reference/reference_section.cpp" line="34"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="48"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="50"/>
         <source>the reference layer</source>
         <translation>参照レイヤー</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="36"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="52"/>
         <source>the section is repeated</source>
         <translation>セクションが重複しています</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="41"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="57"/>
         <source>the reference is of an unknown kind (%1)</source>
         <translation>参照の種類が不明です (%1)</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="45"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="61"/>
         <source>the reference has unknown flags</source>
         <translation>参照に不明なフラグがあります</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="60"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="76"/>
         <source>the reference&apos;s place, scale, rotation, opacity or rate is not a number or out of range</source>
         <translation>参照の位置・拡大率・回転・不透明度・レートが数値でないか範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="64"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="80"/>
         <source>the reference&apos;s name is too long</source>
         <translation>参照の名前が長すぎます</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="70"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="86"/>
         <source>the reference claims %1 bytes but only %2 remain</source>
         <translation>参照は %1 バイトと記していますが、残りは %2 バイトしかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_section.cpp" line="83"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="99"/>
         <source>the reference layer is left out: %1</source>
         <translation>参照レイヤーは除外されます: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="106"/>
+        <location filename="../model/src/reference/reference_section.cpp" line="108"/>
+        <source>the reference&apos;s picture sequence</source>
+        <translation>参照の連番画像</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="112"/>
+        <source>it does not follow a reference picture, or is repeated</source>
+        <translation>参照画像の後にないか、繰り返されています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="115"/>
+        <source>it claims %1 pictures</source>
+        <translation>%1 枚の画像があるとしています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="123"/>
+        <source>picture %1 claims %2 bytes but only %3 remain</source>
+        <translation>画像 %1 は %2 バイトあるとしていますが、残りは %3 バイトだけです</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_section.cpp" line="142"/>
+        <source>the reference&apos;s further pictures are left out: %1</source>
+        <translation>参照の2枚目以降の画像は除外されます: %1</translation>
     </message>
     <message>
         <location filename="../model/src/sound/sound_section.cpp" line="17"/>
@@ -2028,16 +2054,19 @@
         <translation>参照のロック/ロック解除</translation>
     </message>
     <message>
+        <location filename="../ui/src/reference/tool_reference.cpp" line="26"/>
         <location filename="../model/src/reference/reference_commands.cpp" line="24"/>
         <source>Move Reference</source>
         <translation>参照を移動</translation>
     </message>
     <message>
+        <location filename="../ui/src/reference/tool_reference.cpp" line="22"/>
         <location filename="../model/src/reference/reference_commands.cpp" line="26"/>
         <source>Scale Reference</source>
         <translation>参照を拡大縮小</translation>
     </message>
     <message>
+        <location filename="../ui/src/reference/tool_reference.cpp" line="24"/>
         <location filename="../model/src/reference/reference_commands.cpp" line="28"/>
         <source>Rotate Reference</source>
         <translation>参照を回転</translation>
@@ -2054,11 +2083,13 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="33"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="89"/>
         <source>“%1” cannot be used as a reference: %2</source>
         <translation>「%1」は参照として使えません: %2</translation>
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="38"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="94"/>
         <source>It cannot be read (is it there, and may Finbook read it?).</source>
         <translation>読み込めません (ファイルは存在し、Finbook に読み取り権限がありますか?)。</translation>
     </message>
@@ -2069,16 +2100,18 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="45"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="103"/>
         <source>It is empty.</source>
         <translation>空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="72"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="90"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="114"/>
         <source>The file is empty.</source>
         <translation>ファイルが空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="84"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="50"/>
         <source>Its picture cannot be decoded.</source>
         <translation>画像をデコードできません。</translation>
     </message>
@@ -2119,6 +2152,29 @@
         <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
         <source>Its first picture cannot be decoded.</source>
         <translation>最初の画像をデコードできません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="74"/>
+        <source>No picture was chosen.</source>
+        <translation>画像が選ばれていません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="77"/>
+        <source>A sequence of more than %1 pictures cannot be used as a reference.</source>
+        <translation>%1 枚を超える連番画像は参照に使えません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="98"/>
+        <source>The pictures together are larger than %1 MB.</source>
+        <translation>画像の合計が %1 MB を超えています。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/reference/reference_sequence.cpp" line="116"/>
+        <source>%1 and %n more</source>
+        <extracomment>%1 is the first file&apos;s name, %n how many pictures follow it</extracomment>
+        <translation>
+            <numerusform>%1 ほか %n 枚</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3206,58 +3262,58 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window.cpp" line="150"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="173"/>
+        <location filename="../ui/src/window/main_window.cpp" line="175"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window.cpp" line="176"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="177"/>
+        <location filename="../ui/src/window/main_window.cpp" line="179"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="185"/>
+        <location filename="../ui/src/window/main_window.cpp" line="199"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window.cpp" line="200"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="222"/>
+        <location filename="../ui/src/window/main_window.cpp" line="236"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="247"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="234"/>
+        <location filename="../ui/src/window/main_window.cpp" line="248"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window.cpp" line="253"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window.cpp" line="254"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -3426,172 +3482,167 @@
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
-        <source>Import Reference</source>
-        <translation>参照を読み込む</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="142"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="175"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="197"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="221"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="222"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="235"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="248"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="259"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
@@ -4048,95 +4099,122 @@
 <context>
     <name>finbook::ui::ReferencePanel</name>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="36"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="39"/>
         <source>&amp;Visible</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="37"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="40"/>
         <source>Loc&amp;ked</source>
         <translation>ロック(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="40"/>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="41"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="43"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="44"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="42"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="45"/>
         <source> %</source>
         <translation> %</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="43"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="46"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="44"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="47"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="45"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="48"/>
         <source>Document rate</source>
         <translation>文書のレート</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="46"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="49"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="107"/>
         <source>Video frames shown per second of animation</source>
         <translation>アニメーション 1 秒あたりに表示する動画のフレーム数</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="47"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="50"/>
         <source>&amp;Remove Reference</source>
         <translation>参照を削除(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="53"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
         <source>Opacity:</source>
         <translation>不透明度:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="54"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
         <source>Centre X:</source>
         <translation>中心 X:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="55"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
         <source>Centre Y:</source>
         <translation>中心 Y:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="59"/>
         <source>Scale:</source>
         <translation>拡大率:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="60"/>
         <source>Rotation:</source>
         <translation>回転:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="61"/>
         <source>Video rate:</source>
         <translation>動画のレート:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="86"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="89"/>
         <source>No reference. File → Import Reference… puts a picture or a video under the drawing.</source>
         <translation>参照はありません。ファイル → 参照を読み込む… で画像や動画を絵の下に置けます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="148"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="106"/>
+        <source>Pictures shown per second of animation</source>
+        <translation>アニメーション1秒あたりに表示する画像の数</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="159"/>
         <source>The reference could not be placed on the canvas.</source>
         <translation>参照をキャンバスに配置できませんでした。</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="155"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="167"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="174"/>
+        <source>Import Reference</source>
+        <translation>参照を読み込む</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/reference/reference_panel.cpp" line="175"/>
+        <source>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</source>
+        <translation>
+            <numerusform>「%1」は %n 枚の連番画像（%2 … %3）の1枚です。すべてを連番として、1フレームに1枚ずつ読み込みますか？</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="188"/>
         <source>Pictures and videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;All files (*)</source>
         <translation>画像と動画 (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;すべてのファイル (*)</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ReferenceTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="20"/>
+        <source>Move Reference</source>
+        <translation>参照を移動</translation>
     </message>
 </context>
 <context>
@@ -4437,12 +4515,12 @@
 <context>
     <name>finbook::ui::SoundPlayer</name>
     <message>
-        <location filename="../ui/src/sound/sound_player.cpp" line="65"/>
+        <location filename="../ui/src/sound/sound_player.cpp" line="69"/>
         <source>No audio output was found: playing without sound.</source>
         <translation>音声出力が見つかりません。音なしで再生します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_player.cpp" line="76"/>
+        <location filename="../ui/src/sound/sound_player.cpp" line="80"/>
         <source>The audio output failed: playing without sound.</source>
         <translation>音声出力に失敗しました。音なしで再生します。</translation>
     </message>

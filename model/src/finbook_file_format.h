@@ -53,6 +53,10 @@
 //              The reference layer: the imported file's original bytes, once. Ancillary, at
 //              most once, between FRAM and FEND: a Finbook that does not know it opens the
 //              drawing without its reference.
+//   "rseq"  := u32 count { u64 pictureBytes byte[pictureBytes] }[count]
+//              A sequence reference's pictures after the first (the first is refr's media,
+//              written there as kind Image so that a Finbook that does not know rseq shows it
+//              as a still). Ancillary, at most once, right after refr.
 //
 // Everything is little-endian. Sections come in the order above, each exactly once; ancillary
 // sections may come between FRAM and FEND. Records and chunks are length-prefixed so later
@@ -101,6 +105,7 @@ constexpr quint32 kTagSkeleton = tag("SKEL");
 constexpr quint32 kTagJoin = tag("JOIN");
 constexpr quint32 kTagFills = tag("FILL");
 constexpr quint32 kTagReference = tag("refr");
+constexpr quint32 kTagReferenceSequence = tag("rseq");
 constexpr quint32 kTagSound = tag("SOND");
 constexpr quint32 kTagShading = tag("shad");
 constexpr quint32 kTagLight = tag("lite");

@@ -181,6 +181,10 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
         readReferenceSection(body);
         return !cut;
     }
+    if (t == kTagReferenceSequence && next == std::size(kOrder)) {
+        readReferenceSequenceSection(body);
+        return !cut;
+    }
     if (t == kTagLight && next == std::size(kOrder)) {
         if (recovering()) {
             try {

@@ -96,6 +96,7 @@ private:
     void readShadingChunk(Cursor &c, StrokeGroup &g); // shade/shade_chunk.cpp
     void readLightSection(Cursor &c);                 // shade/shade_chunk.cpp
     void readReferenceSection(Cursor &c);             // reference/reference_section.cpp
+    void readReferenceSequenceSection(Cursor &c);     // reference/reference_section.cpp
     std::vector<Pin> readPins(Cursor &c);
     CageRig readCage(Cursor &c);
     SkeletonRig readSkeleton(Cursor &c); // skeleton/skeleton_chunk.cpp

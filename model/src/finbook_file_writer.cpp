@@ -291,7 +291,8 @@ QByteArray serializeFinbook(const Document &document)
 {
     std::vector<AncillarySection> extra;
     if (!document.referenceLayer().isEmpty())
-        extra.push_back(referenceSection(document.referenceLayer().reference()));
+        for (AncillarySection &section : referenceSections(document.referenceLayer().reference()))
+            extra.push_back(std::move(section));
     return serializeFinbook(document.frames(), document.settings(), extra,
                             document.soundtrack().clips());
 }

@@ -3,7 +3,9 @@
 // while the sound cache decodes it on its worker (a 2 ms timer's lateness, p99 and max); and,
 // playing for --play seconds, how far the clock playback follows (the sound player's: the
 // audio device's, or its elapsed timer when there is none) drifts from a reference clock, and
-// how many frames the frame shown is off from the frame the reference clock calls for.
+// how many frames the frame shown is off from the frame the reference clock calls for; with
+// a real output (e.g. a PulseAudio null sink) the offset the output takes to start is told apart
+// from the drift once it runs, and its underruns are counted.
 #include "bench.h"
 
 #include <finbook/model/commands.h>
@@ -149,10 +151,22 @@ int benchSound(const QStringList &args)
     reference.start();
     int worstFramesOff = 0;
     QTimer check;
+    QByteArray series = "["; // the sound clock's drift every 5 s, in ms
+    int checks = 0;
+    // An audio output takes a while to start (the frames wait for it, as the sound does):
+    // that offset, then how far the clock drifts once it runs.
+    double firstDriftMs = 0.0, lastDriftMs = 0.0;
     QObject::connect(&check, &QTimer::timeout, [&] {
         // The frame the reference clock calls for, against the frame shown.
-        const qint64 tick = reference.nsecsElapsed() * settings.fps / 1'000'000'000;
+        const qint64 referenceNow = reference.nsecsElapsed();
+        const qint64 tick = referenceNow * settings.fps / 1'000'000'000;
         worstFramesOff = std::max(worstFramesOff, int(std::abs(state.currentFrameIndex() - tick)));
+        if (++checks % 20 == 0) {
+            lastDriftMs = double(sound.player()->nsecsElapsed() - referenceNow) / 1e6;
+            if (checks == 20)
+                firstDriftMs = lastDriftMs;
+            series += (checks > 20 ? "," : "") + QByteArray::number(lastDriftMs, 'f', 1);
+        }
     });
     check.start(250);
     QEventLoop wait;
@@ -162,16 +176,19 @@ int benchSound(const QStringList &args)
     const qint64 referenceNs = reference.nsecsElapsed();
     playback.pause();
 
-    std::printf("{\"bench\":\"sound\",\"format\":\"%s\",\"track_seconds\":%d,\"bytes\":%lld,"
-                "\"decode_ms\":%.1f,\"waveform_ms\":%.1f,\"waveform_buckets\":%zu,"
-                "\"cache_decode_ms\":%.1f,\"gui_stall_p99_ms\":%.3f,\"gui_stall_max_ms\":%.3f,"
-                "\"gui_ticks\":%zu,\"audible\":%s,\"play_seconds\":%.2f,"
-                "\"clock_drift_ms\":%.3f,\"worst_frames_off\":%d}\n",
-                format, seconds, static_cast<long long>(track.size()), decodeMs, waveformMs,
-                waveform.peaks.size(), cacheMs, bench::percentile(lateMs, 0.99),
-                lateMs.empty() ? 0.0 : *std::max_element(lateMs.begin(), lateMs.end()),
-                lateMs.size(), sound.player()->isAudible() ? "true" : "false",
-                double(referenceNs) / 1e9, double(played - referenceNs) / 1e6, worstFramesOff);
+    std::printf(
+        "{\"bench\":\"sound\",\"format\":\"%s\",\"track_seconds\":%d,\"bytes\":%lld,"
+        "\"decode_ms\":%.1f,\"waveform_ms\":%.1f,\"waveform_buckets\":%zu,"
+        "\"cache_decode_ms\":%.1f,\"gui_stall_p99_ms\":%.3f,\"gui_stall_max_ms\":%.3f,"
+        "\"gui_ticks\":%zu,\"audible\":%s,\"play_seconds\":%.2f,"
+        "\"clock_drift_ms\":%.3f,\"worst_frames_off\":%d,\"underruns\":%d,"
+        "\"start_offset_ms\":%.1f,\"drift_after_start_ms\":%.1f,\"drift_every_5s_ms\":%s]}\n",
+        format, seconds, static_cast<long long>(track.size()), decodeMs, waveformMs,
+        waveform.peaks.size(), cacheMs, bench::percentile(lateMs, 0.99),
+        lateMs.empty() ? 0.0 : *std::max_element(lateMs.begin(), lateMs.end()), lateMs.size(),
+        sound.player()->isAudible() ? "true" : "false", double(referenceNs) / 1e9,
+        double(played - referenceNs) / 1e6, worstFramesOff, sound.player()->underruns(),
+        firstDriftMs, lastDriftMs - firstDriftMs, series.constData());
     return 0;
 }
 

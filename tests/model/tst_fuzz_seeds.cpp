@@ -100,6 +100,28 @@ void withReference(Document &doc)
     doc.referenceLayer().setReference(r);
 }
 
+// The sample with a sequence reference (refr and "rseq"): three 2×2 PNGs, held two ticks each.
+void withSequence(Document &doc)
+{
+    buildSample(doc);
+    Reference r;
+    r.kind = ReferenceKind::Sequence;
+    r.name = QStringLiteral("dot_01.png and 2 more");
+    for (const char *png : {"iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAEElEQVR42mP4z8AARAwQCg"
+                            "Af7gP9Y167WwAAAABJRU5ErkJggg==",
+                            "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAD0lEQVR42mNg+"
+                            "M8AQhAKABvyA/3ULwSAAAAAAElFTkSuQmCC",
+                            "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAD0lEQVR42mNgYPgPRmAKAB"
+                            "f2A/3HkIu0AAAAAElFTkSuQmCC"})
+        r.pictures << QByteArray::fromBase64(png);
+    r.bytes = r.pictures.front();
+    r.mediaSize = QSizeF(2, 2);
+    r.center = QPointF(60, 50);
+    r.scale = 20.0;
+    r.rate = 12.0;
+    doc.referenceLayer().setReference(r);
+}
+
 // Every seed by name.
 std::vector<std::pair<QString, QByteArray>> seeds()
 {
@@ -109,6 +131,8 @@ std::vector<std::pair<QString, QByteArray>> seeds()
     cageAndSkeleton(rigs);
     Document referenced;
     withReference(referenced);
+    Document sequence;
+    withSequence(sequence);
     // Two sound clips (SOND sections): a tiny WAV, and a muted, quieter one further on.
     Document sound;
     buildSample(sound);
@@ -121,6 +145,7 @@ std::vector<std::pair<QString, QByteArray>> seeds()
         {QStringLiteral("sample.finbook"), serializeFinbook(sample)},
         {QStringLiteral("cage_skeleton.finbook"), serializeFinbook(rigs)},
         {QStringLiteral("reference.finbook"), serializeFinbook(referenced)},
+        {QStringLiteral("reference_sequence.finbook"), serializeFinbook(sequence)},
         {QStringLiteral("sound.finbook"), serializeFinbook(sound)},
         {QStringLiteral("recovery_copy.finbook"),
          recoveryCopyBytes(rigs.frames(), rigs.settings(),
@@ -186,7 +211,7 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
     for (const char *tag : {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE",
-                            "SKEL", "JOIN", "DEFM", "FILL", "refr", "SOND", "shad", "lite"})
+                            "SKEL", "JOIN", "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite"})
         QVERIFY2(tags.count(tag), tag);
 }
 

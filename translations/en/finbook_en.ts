@@ -78,6 +78,17 @@
     </message>
 </context>
 <context>
+    <name>Reference</name>
+    <message numerus="yes">
+        <location filename="../../model/src/reference/reference_sequence.cpp" line="116"/>
+        <source>%1 and %n more</source>
+        <translation>
+            <numerusform>%1 and %n more</numerusform>
+            <numerusform>%1 and %n more</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>finbook::model::FrameListModel</name>
     <message numerus="yes">
         <location filename="../../model/src/frame_list_model.cpp" line="132"/>
@@ -137,6 +148,17 @@
         <translation>
             <numerusform>%1 — %2 — %n frame</numerusform>
             <numerusform>%1 — %2 — %n frames</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ReferencePanel</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/reference/reference_panel.cpp" line="177"/>
+        <source>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</source>
+        <translation>
+            <numerusform>“%1” is one of %n numbered picture (%2 … %3). Import it as a sequence, one picture per frame?</numerusform>
+            <numerusform>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</numerusform>
         </translation>
     </message>
 </context>

@@ -76,7 +76,8 @@ QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSet
     if (!thumbnail.isEmpty())
         extra.push_back({"thmb", thumbnail});
     if (!reference.isEmpty())
-        extra.push_back(file_format::referenceSection(reference));
+        for (AncillarySection &section : file_format::referenceSections(reference))
+            extra.push_back(std::move(section));
     return serializeFinbook(frames, settings, extra, sound);
 }
 

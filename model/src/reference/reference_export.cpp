@@ -11,7 +11,7 @@ ExportReference::ExportReference(const ExportSource &source, const ExportOptions
     if (!options.includeReference || m_reference.isEmpty() || !m_reference.visible ||
         m_reference.opacity <= 0.0)
         return;
-    auto media = ReferenceMedia::open(m_reference.kind, m_reference.bytes);
+    auto media = ReferenceMedia::open(m_reference);
     if (!media)
         return;
     m_media = *media;
@@ -29,9 +29,8 @@ QImage ExportReference::picture(int frameIndex) const
 {
     if (!m_media || frameIndex < 0 || std::size_t(frameIndex) >= m_startTicks.size())
         return {};
-    const double seconds =
-        referenceSeconds(m_reference, m_startTicks[std::size_t(frameIndex)], m_fps);
-    return m_media->frame(m_media->frameIndex(seconds));
+    return m_media->frame(
+        m_media->frameAtTick(m_reference, m_startTicks[std::size_t(frameIndex)], m_fps));
 }
 
 } // namespace finbook::model

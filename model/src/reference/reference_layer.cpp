@@ -59,7 +59,8 @@ void ReferenceLayer::setReference(Reference reference)
 {
     if (reference == m_reference)
         return;
-    if (reference.kind != m_reference.kind || reference.bytes != m_reference.bytes) {
+    if (reference.kind != m_reference.kind || reference.bytes != m_reference.bytes ||
+        reference.pictures != m_reference.pictures) {
         m_lastShown = QImage();
         if (m_worker)
             m_worker->latest = -1;
@@ -75,7 +76,7 @@ std::shared_ptr<ReferenceMedia> ReferenceLayer::media() const
 {
     if (!m_mediaOpened && !m_reference.isEmpty()) {
         m_mediaOpened = true;
-        auto opened = ReferenceMedia::open(m_reference.kind, m_reference.bytes);
+        auto opened = ReferenceMedia::open(m_reference);
         if (opened)
             m_media = *opened;
         else
@@ -98,8 +99,7 @@ qint64 ReferenceLayer::videoFrameAt(int frameIndex) const
     const auto m = media();
     if (!m)
         return 0;
-    return m->frameIndex(
-        referenceSeconds(m_reference, tickOfFrame(frameIndex), m_doc->settings().fps));
+    return m->frameAtTick(m_reference, tickOfFrame(frameIndex), m_doc->settings().fps);
 }
 
 QImage ReferenceLayer::pictureAt(int frameIndex, bool decode) const

@@ -35,6 +35,24 @@ QImage readWithQt(const QByteArray &bytes)
         return {};
     return reader.read();
 }
+
+// One still picture in the cache's format; null with `error` set when none decodes.
+QImage decodeStill(const QByteArray &bytes, QString *error)
+{
+    QImage image = readWithQt(bytes);
+    if (image.isNull()) {
+        auto decoder = reference_detail::VideoDecoder::open(bytes, error);
+        if (!decoder)
+            return {};
+        image = decoder->frameAt(0.0);
+    }
+    if (image.isNull()) {
+        *error = QCoreApplication::translate("Reference", "Its picture cannot be decoded.");
+        return {};
+    }
+    return image.convertToFormat(image.hasAlphaChannel() ? QImage::Format_ARGB32_Premultiplied
+                                                         : QImage::Format_RGB32);
+}
 } // namespace
 
 struct ReferenceMedia::Cache {
@@ -71,20 +89,11 @@ Expected<std::shared_ptr<ReferenceMedia>, QString> ReferenceMedia::open(Referenc
     if (bytes.isEmpty() || kind == ReferenceKind::None)
         return unexpected(QCoreApplication::translate("Reference", "The file is empty."));
     if (kind == ReferenceKind::Image) {
-        QImage image = readWithQt(bytes);
-        if (image.isNull()) {
-            QString error;
-            auto decoder = reference_detail::VideoDecoder::open(bytes, &error);
-            if (!decoder)
-                return unexpected(error);
-            image = decoder->frameAt(0.0);
-        }
-        if (image.isNull())
-            return unexpected(
-                QCoreApplication::translate("Reference", "Its picture cannot be decoded."));
-        media->m_still = image.convertToFormat(
-            image.hasAlphaChannel() ? QImage::Format_ARGB32_Premultiplied : QImage::Format_RGB32);
-        media->m_size = image.size();
+        QString error;
+        media->m_still = decodeStill(bytes, &error);
+        if (media->m_still.isNull())
+            return unexpected(error);
+        media->m_size = media->m_still.size();
         return media;
     }
     QString error;
@@ -97,8 +106,40 @@ Expected<std::shared_ptr<ReferenceMedia>, QString> ReferenceMedia::open(Referenc
     return media;
 }
 
+Expected<std::shared_ptr<ReferenceMedia>, QString> ReferenceMedia::open(const Reference &reference)
+{
+    if (reference.kind != ReferenceKind::Sequence)
+        return open(reference.kind, reference.bytes);
+    if (reference.pictures.isEmpty() || reference.pictures.front().isEmpty())
+        return unexpected(QCoreApplication::translate("Reference", "The file is empty."));
+    std::shared_ptr<ReferenceMedia> media(new ReferenceMedia());
+    media->m_kind = ReferenceKind::Sequence;
+    QString error;
+    const QImage first = decodeStill(reference.pictures.front(), &error);
+    if (first.isNull())
+        return unexpected(error);
+    media->m_size = first.size();
+    media->m_pictures = reference.pictures;
+    std::lock_guard lock(media->m_cache->mutex);
+    media->m_cache->order.emplace_front(0, first);
+    media->m_cache->index[0] = media->m_cache->order.begin();
+    media->m_cache->bytes = first.sizeInBytes();
+    return media;
+}
+
+qint64 ReferenceMedia::frameAtTick(const Reference &reference, qint64 tick, int fps) const
+{
+    if (m_kind != ReferenceKind::Sequence)
+        return frameIndex(referenceSeconds(reference, tick, fps));
+    const double perTick = reference.rate > 0.0 ? reference.rate / double(std::max(1, fps)) : 1.0;
+    const double at = double(std::max<qint64>(0, tick)) * perTick;
+    return std::clamp<qint64>(qint64(std::floor(at + 1e-6)), 0, frameCount() - 1);
+}
+
 qint64 ReferenceMedia::frameCount() const
 {
+    if (m_kind == ReferenceKind::Sequence)
+        return std::max<qint64>(1, m_pictures.size());
     if (m_kind != ReferenceKind::Video)
         return 1;
     return std::max<qint64>(1, qint64(std::ceil(m_duration * m_frameRate - 1e-6)));
@@ -113,7 +154,7 @@ qint64 ReferenceMedia::frameIndex(double seconds) const
 
 QImage ReferenceMedia::cachedFrame(qint64 index) const
 {
-    if (m_kind != ReferenceKind::Video)
+    if (m_kind != ReferenceKind::Video && m_kind != ReferenceKind::Sequence)
         return m_still;
     std::lock_guard lock(m_cache->mutex);
     const auto it = m_cache->index.find(index);
@@ -122,7 +163,7 @@ QImage ReferenceMedia::cachedFrame(qint64 index) const
 
 QImage ReferenceMedia::frame(qint64 index)
 {
-    if (m_kind != ReferenceKind::Video)
+    if (m_kind != ReferenceKind::Video && m_kind != ReferenceKind::Sequence)
         return m_still;
     index = std::clamp<qint64>(index, 0, frameCount() - 1);
     Cache &c = *m_cache;
@@ -148,6 +189,13 @@ QImage ReferenceMedia::frame(qint64 index)
         c.bytes += image.sizeInBytes();
         c.trim();
     };
+    if (m_kind == ReferenceKind::Sequence) {
+        QString error;
+        const QImage image = decodeStill(m_pictures[qsizetype(index)], &error);
+        if (!image.isNull())
+            insert(index, image);
+        return image;
+    }
     // A seek decodes from the keyframe before: the frames just before `index` come on the
     // way, and keeping some (half the cache at most) makes scrubbing backwards cheap.
     const qint64 frameBytes = qint64(m_size.width()) * m_size.height() * 4;

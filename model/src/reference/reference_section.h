@@ -5,7 +5,7 @@
 
 namespace finbook::model::file_format {
 
-// The reference as an ancillary section for serializeFinbook.
-AncillarySection referenceSection(const Reference &reference);
+// The reference as ancillary sections for serializeFinbook: refr, and for a sequence rseq.
+std::vector<AncillarySection> referenceSections(const Reference &reference);
 
 } // namespace finbook::model::file_format

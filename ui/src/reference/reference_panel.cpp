@@ -5,8 +5,11 @@
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSlider>
 
@@ -98,7 +101,10 @@ void ReferencePanel::refresh()
         w->setEnabled(has);
     for (QWidget *w : std::initializer_list<QWidget *>{m_x, m_y, m_scale, m_rotation})
         w->setEnabled(has && !r.locked);
-    m_rate->setEnabled(has && r.kind == model::ReferenceKind::Video);
+    const bool sequence = r.kind == model::ReferenceKind::Sequence;
+    m_rate->setEnabled(has && (r.kind == model::ReferenceKind::Video || sequence));
+    m_rate->setToolTip(sequence ? tr("Pictures shown per second of animation")
+                                : tr("Video frames shown per second of animation"));
 }
 
 void ReferencePanel::edit(model::ReferenceEdit edit)
@@ -140,7 +146,12 @@ void ReferencePanel::edit(model::ReferenceEdit edit)
 
 std::optional<QString> importReference(model::Document &document, const QString &path)
 {
-    auto reference = model::importReferenceFile(path, QSizeF(document.settings().canvasSize));
+    return importReference(document, QStringList{path});
+}
+
+std::optional<QString> importReference(model::Document &document, const QStringList &paths)
+{
+    auto reference = model::importReferenceSequence(paths, QSizeF(document.settings().canvasSize));
     if (!reference)
         return reference.error();
     auto command = model::importReferenceCommand(&document, std::move(*reference));
@@ -148,6 +159,28 @@ std::optional<QString> importReference(model::Document &document, const QString 
         return ReferencePanel::tr("The reference could not be placed on the canvas.");
     document.undoStack()->push(command.release());
     return std::nullopt;
+}
+
+QStringList chooseReferenceFiles(QWidget *parent, const QString &folder)
+{
+    QStringList paths = QFileDialog::getOpenFileNames(
+        parent, ReferencePanel::tr("Import Reference"), folder, referenceFileFilter());
+    if (paths.size() != 1)
+        return paths;
+    const QStringList run = model::numberedSequence(paths.front());
+    if (run.size() < 2)
+        return paths;
+    const auto answer = QMessageBox::question(
+        parent, ReferencePanel::tr("Import Reference"),
+        ReferencePanel::tr("“%1” is one of %n numbered pictures (%2 … %3). Import them all as "
+                           "a sequence, one picture per frame?",
+                           nullptr, int(run.size()))
+            .arg(QFileInfo(paths.front()).fileName(), QFileInfo(run.front()).fileName(),
+                 QFileInfo(run.back()).fileName()),
+        QMessageBox::Yes | QMessageBox::No | QMessageBox::Cancel, QMessageBox::Yes);
+    if (answer == QMessageBox::Cancel)
+        return {};
+    return answer == QMessageBox::Yes ? run : paths;
 }
 
 QString referenceFileFilter()

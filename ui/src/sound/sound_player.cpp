@@ -45,6 +45,10 @@ bool SoundPlayer::openSink()
         return false;
     m_sink = new QAudioSink(device, format, this);
     m_sink->setBufferSize(model::kSoundRate * model::kSoundChannels * int(sizeof(float)) / 10);
+    connect(m_sink, &QAudioSink::stateChanged, this, [this](QAudio::State state) {
+        if (state == QAudio::IdleState && m_sink && m_sink->error() == QAudio::UnderrunError)
+            ++m_underruns;
+    });
     return true;
 }
 

@@ -11,6 +11,7 @@
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/panels/objects_panel.h>
 #include <finbook/ui/reference/reference_panel.h>
+#include <finbook/ui/reference/tool_reference.h>
 #include <finbook/ui/sound/sound_row.h>
 #include <finbook/ui/timeline/frame_actions.h>
 #include <finbook/ui/timeline/playback_controller.h>
@@ -107,6 +108,7 @@ void MainWindow::createCanvasAndTools()
     addTool(std::move(eraser));
     addTool(std::make_unique<SelectTool>());
     addTool(std::make_unique<HandTool>());
+    addTool(std::make_unique<ReferenceTool>());
     auto *brush = new BrushToolBar(m_pen, this);
     addToolBar(Qt::TopToolBarArea, brush);
     // The eraser's mode and size take the brush's place while the eraser is in hand: both at

@@ -101,11 +101,10 @@ void MainWindow::createFileMenu()
     QAction *referenceAction =
         makeAction(QStringLiteral("file.importReference"), tr("Import Re&ference..."));
     connect(referenceAction, &QAction::triggered, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(
-            this, tr("Import Reference"), QFileInfo(m_path).path(), referenceFileFilter());
-        if (path.isEmpty())
+        const QStringList paths = chooseReferenceFiles(this, QFileInfo(m_path).path());
+        if (paths.isEmpty())
             return;
-        if (const auto error = importReference(*m_doc, path))
+        if (const auto error = importReference(*m_doc, paths))
             reportError(tr("Cannot Import Reference"), *error);
     });
     QAction *quitAction = makeAction(QStringLiteral("file.quit"), tr("&Quit"));

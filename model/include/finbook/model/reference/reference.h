@@ -7,6 +7,7 @@
 #pragma once
 
 #include <QByteArray>
+#include <QList>
 #include <QPointF>
 #include <QSizeF>
 #include <QString>
@@ -18,11 +19,17 @@ enum class ReferenceKind : quint8 {
     None = 0,
     Image = 1, // one picture (PNG, JPEG, WebP, ... whatever Qt's readers or FFmpeg decode)
     Video = 2, // one video frame per animation tick at `rate`
+    // Several pictures, one per animation tick (or `rate` pictures per second of animation);
+    // saved as the picture `bytes` (the first, which an older Finbook shows as a still) and the
+    // others after it in their own section.
+    Sequence = 3,
 };
 
 struct Reference {
     ReferenceKind kind = ReferenceKind::None;
     QByteArray bytes; // the file as imported (implicitly shared: copies cost a pointer)
+    // A sequence: every picture's bytes in order, the first being `bytes`; empty otherwise.
+    QList<QByteArray> pictures;
     QString name;     // the imported file's name, shown to the user
     QSizeF mediaSize; // pixels of the picture / of a video frame, known at import
     QPointF center;   // where the media's centre lies, in canvas coordinates
@@ -31,7 +38,9 @@ struct Reference {
     double opacity = 0.5;
     bool visible = true;
     bool locked = false;
-    double rate = 0.0; // video: frames of the video per second of animation; 0 = document fps
+    // Video: the animation ticks per second of video (0 = the document's fps: real time).
+    // Sequence: pictures per second of animation (0 = one per tick).
+    double rate = 0.0;
 
     bool isEmpty() const { return kind == ReferenceKind::None || bytes.isEmpty(); }
     bool operator==(const Reference &) const = default;
@@ -51,6 +60,7 @@ constexpr qint64 kMaxReferenceBytes = qint64(2) << 30;
 constexpr double kMinReferenceScale = 1e-3;
 constexpr double kMaxReferenceScale = 1e3;
 constexpr double kMaxReferenceRate = 1000.0;
+constexpr qsizetype kMaxReferencePictures = 100000; // pictures in one sequence
 constexpr double kMaxReferenceCoordinate = 1e7;
 
 // Whether the numbers of `reference` are ones a reference may have (finite, in range).

@@ -5,7 +5,10 @@
 
 #include <finbook/model/reference/reference_commands.h>
 
+#include <QStringList>
 #include <QWidget>
+
+#include <optional>
 
 class QCheckBox;
 class QDoubleSpinBox;
@@ -54,6 +57,14 @@ private:
 // Reads `path` and pushes the command that imports it as the document's reference. The
 // sentence to show when the file is refused (the document is then unchanged).
 std::optional<QString> importReference(model::Document &document, const QString &path);
+// The same for several pictures, imported as one sequence (one picture per frame) in the
+// order given; one path is importReference(document, path).
+std::optional<QString> importReference(model::Document &document, const QStringList &paths);
+
+// Asks for the files to import as a reference (File → Import Reference…): one picture or
+// video, several pictures, or one picture of a numbered run (shot_0001.png …), which offers
+// the whole run. Empty when cancelled.
+QStringList chooseReferenceFiles(QWidget *parent, const QString &folder);
 
 // The file-dialog filter of what importReference reads.
 QString referenceFileFilter();

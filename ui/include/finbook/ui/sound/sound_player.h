@@ -39,6 +39,9 @@ public:
     bool isAudible() const { return m_sink != nullptr; }
     // The sample the next read would mix (for tests and the bench).
     qint64 sourcePosition() const;
+    // How often the audio output ran dry since the player was made (each one a gap in the
+    // sound, and the sound clock, hence the frames, held back by it; for the bench).
+    int underruns() const { return m_underruns; }
     // For tests: behave as on a machine without audio output.
     void setAudioOutputAllowed(bool allowed) { m_allowed = allowed; }
 
@@ -58,6 +61,7 @@ private:
     bool m_allowed = true;
     bool m_triedSink = false;
     bool m_saidSilent = false;
+    int m_underruns = 0;
 };
 
 } // namespace finbook::ui
