@@ -40,6 +40,8 @@ const char *referenceKindName(model::ReferenceKind kind)
         return "image";
     case model::ReferenceKind::Video:
         return "video";
+    case model::ReferenceKind::Sequence:
+        return "sequence";
     }
     return "none";
 }
@@ -58,7 +60,15 @@ void summariseMedia(const model::LoadedDocument &doc, QJsonObject &o)
     const model::Reference &ref = doc.reference;
     o[QStringLiteral("reference")] =
         QLatin1String(referenceKindName(ref.isEmpty() ? model::ReferenceKind::None : ref.kind));
-    o[QStringLiteral("reference_bytes")] = qint64(ref.isEmpty() ? 0 : ref.bytes.size());
+    qint64 referenceBytes = ref.isEmpty() ? 0 : ref.bytes.size();
+    if (!ref.isEmpty() && ref.kind == model::ReferenceKind::Sequence) {
+        referenceBytes = 0; // `bytes` is the first of the pictures
+        for (const QByteArray &picture : ref.pictures)
+            referenceBytes += picture.size();
+    }
+    o[QStringLiteral("reference_bytes")] = referenceBytes;
+    o[QStringLiteral("reference_pictures")] =
+        qint64(ref.kind == model::ReferenceKind::Sequence ? ref.pictures.size() : 0);
 }
 
 QJsonObject summary(const model::LoadedDocument &doc)

@@ -6,7 +6,9 @@
 
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/reference/reference_commands.h>
+#include <finbook/model/reference/reference_media.h>
 
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTest>
@@ -91,6 +93,25 @@ private slots:
         QCOMPARE(both[QStringLiteral("sound_bytes")].toInteger(), beat.size() + voice.size());
         QCOMPARE(both[QStringLiteral("reference")].toString(), QStringLiteral("image"));
         QCOMPARE(both[QStringLiteral("reference_bytes")].toInteger(), reference->bytes.size());
+        QCOMPARE(both[QStringLiteral("reference_pictures")].toInteger(-1), 0);
+
+        // A sequence counts every picture's bytes.
+        QTemporaryDir small;
+        const QString first = writeTwoColourPng(small.path(), QSize(40, 30));
+        const QString second = small.filePath(QStringLiteral("two_b.png"));
+        QImage green(QSize(50, 30), QImage::Format_RGB32);
+        green.fill(Qt::green);
+        QVERIFY(green.save(second));
+        auto sequence = model::importReferenceSequence({first, second}, QSizeF(160, 120));
+        QVERIFY2(sequence, sequence ? "" : qPrintable(sequence.error()));
+        doc.referenceLayer().setReference(*sequence);
+        const QString sequenced = dir.filePath(QStringLiteral("sequence.finbook"));
+        QVERIFY(!model::saveFinbook(doc, sequenced));
+        const QJsonObject pictures = info(sequenced);
+        QCOMPARE(pictures[QStringLiteral("reference")].toString(), QStringLiteral("sequence"));
+        QCOMPARE(pictures[QStringLiteral("reference_pictures")].toInteger(), 2);
+        QCOMPARE(pictures[QStringLiteral("reference_bytes")].toInteger(),
+                 QFileInfo(first).size() + QFileInfo(second).size());
     }
 };
 
