@@ -211,9 +211,9 @@ std::optional<StrokeGroup> sketchObject(const QString &path, QSize &canvas)
 }
 } // namespace
 
-bool shadedSheet(const QStringList &files, const QString &out)
+bool shadedSheet(const QStringList &files, const QString &out, int cell)
 {
-    constexpr int kCell = 200;
+    const int kCell = std::clamp(cell, 50, 2000);
     constexpr int kPairsPerRow = 4;
     std::vector<std::pair<QImage, QImage>> pairs;
     std::vector<QString> labels;

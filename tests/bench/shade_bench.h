@@ -17,7 +17,8 @@ QJsonObject reshadeCost(const QString &finbook);
 
 // A contact sheet: each drawing (shared/data sketch JSON) filled, shaded in three tones with a
 // rim, lit from the upper left, at rest and posed by its automatic skeleton (every bone bent).
-// One JSON object per drawing on stdout; false if the sheet cannot be written.
-bool shadedSheet(const QStringList &files, const QString &out);
+// `cell` px a picture. One JSON object per drawing on stdout; false if the sheet cannot be
+// written.
+bool shadedSheet(const QStringList &files, const QString &out, int cell = 200);
 
 } // namespace finbook::bench

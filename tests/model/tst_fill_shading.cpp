@@ -83,6 +83,7 @@ private slots:
     void discLitFromTheLeftIsBrighterOnItsLeft();
     void everyRampAndRimGivesTones();
     void tonesFollowThePoseLightStaysOnScreen();
+    void tonesStayInsideTheFillWhenPosed();
     void onionSkinStaysFlat();
     void svgWritesToneRegionsNotRaster();
     void fileKeepsShadingAndLight();
@@ -213,6 +214,47 @@ void TestFillShading::tonesFollowThePoseLightStaysOnScreen()
           restShadow.x(), restShadow.y(), posedShadow.x(), posedShadow.y());
     QVERIFY(std::abs((posedShadow - by - restShadow).x()) < 3.0);
     QVERIFY(std::abs((posedShadow - by - restShadow).y()) < 3.0);
+}
+
+void TestFillShading::tonesStayInsideTheFillWhenPosed()
+{
+    // A cage squashes the disc unevenly (one corner pulled in): the shading mesh and the fill's
+    // outline are posed by different maps, yet no tone shows past the fill.
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, setLightCommand(&doc, 180.0, 30.0));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, true}));
+    Rig rig;
+    rig.cage.rest = {{80, 80}, {320, 80}, {320, 320}, {80, 320}};
+    rig.cage.posed = {{140, 80}, {260, 80}, {330, 330}, {70, 330}};
+    doc.setRig(g, rig);
+    DeformJob job;
+    job.groupId = g;
+    job.key = MeshKey::of(*doc.group(g));
+    job.rig = rig.atRest();
+    const auto setup = buildDeformSetup(job);
+    QVERIFY(setup);
+    const auto solved = solvePose(**setup, *doc.group(g));
+    QVERIFY(solved);
+    doc.setDeformed(g, solved->strokes);
+    const std::vector<FillItem> items = fillList(*doc.group(g), doc.settings());
+    QCOMPARE(items.size(), std::size_t(1));
+    QVERIFY(items[0].tones.size() >= 3);
+    // Sampled every px: a tone point outside the fill would show past its outline.
+    int inTones = 0, outside = 0;
+    for (int y = 60; y < 340; ++y)
+        for (int x = 40; x < 340; ++x) {
+            const QPointF p(x + 0.5, y + 0.5);
+            for (const ToneItem &tone : items[0].tones)
+                if (tone.path.contains(p)) {
+                    ++inTones;
+                    if (!items[0].path.contains(p))
+                        ++outside;
+                }
+        }
+    qInfo("posed disc: %d tone samples, %d outside the fill", inTones, outside);
+    QVERIFY(inTones > 1000);
+    QCOMPARE(outside, 0);
 }
 
 void TestFillShading::onionSkinStaysFlat()

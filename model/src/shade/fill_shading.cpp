@@ -3,6 +3,7 @@
 
 #include <finbook/geometry/shade/pose.h>
 #include <finbook/geometry/shade/shading.h>
+#include <finbook/geometry/shade/tone_region.h>
 #include <finbook/model/render.h>
 #include <finbook/model/shade/fill_shading.h>
 
@@ -60,9 +61,22 @@ constexpr std::size_t kPosedEntries = 160;
 std::mutex g_posedMutex;
 std::list<PosedEntry> g_posed;
 
+// The face's rings as shown (the tones are clipped to them).
+std::vector<Eigen::MatrixX2d> ringsOf(const QPainterPath &path)
+{
+    std::vector<Eigen::MatrixX2d> rings;
+    for (const QPolygonF &polygon : path.toSubpathPolygons()) {
+        Eigen::MatrixX2d ring(polygon.size(), 2);
+        for (qsizetype i = 0; i < polygon.size(); ++i)
+            ring.row(Eigen::Index(i)) << polygon[i].x(), polygon[i].y();
+        rings.push_back(std::move(ring));
+    }
+    return rings;
+}
+
 std::vector<ToneItem> computeTones(const StrokeGroup &group, const RestShade &rest,
-                                   const FillShading &shading, QRgb color,
-                                   const DocumentSettings &settings)
+                                   const QPainterPath &facePath, const FillShading &shading,
+                                   QRgb color, const DocumentSettings &settings)
 {
     const geometry::Inflation &inflation = rest.inflation;
     Eigen::MatrixX2d V = inflation.V;
@@ -83,9 +97,11 @@ std::vector<ToneItem> computeTones(const StrokeGroup &group, const RestShade &re
     const Eigen::Vector3d light =
         geometry::lightDirection(settings.lightAzimuth, settings.lightElevation);
     const Eigen::VectorXd lit = geometry::diffuseTerm(normals, light);
+    const std::vector<Eigen::MatrixX2d> clip = ringsOf(facePath);
     std::vector<ToneItem> tones;
     const auto add = [&](const Eigen::VectorXd &value, double from, QRgb tone) {
-        QPainterPath path = pathOf(geometry::superLevelPieces(V, inflation.F, value, from));
+        QPainterPath path =
+            pathOf(geometry::toneRegion(V, inflation.F, rest.edges, value, from, clip));
         if (!path.isEmpty())
             tones.push_back({std::move(path), tone});
     };
@@ -135,8 +151,8 @@ QRgb baseTone(QRgb color, const FillShading &shading)
 }
 
 std::vector<ToneItem> faceTones(const StrokeGroup &group, const ObjectRegionsPtr &regions, int face,
-                                const FillShading &shading, QRgb color,
-                                const DocumentSettings &settings)
+                                const QPainterPath &facePath, const FillShading &shading,
+                                QRgb color, const DocumentSettings &settings)
 {
     if (!shading.shaded() || !regions || face < 0 || face >= regions->faceCount())
         return {};
@@ -154,7 +170,7 @@ std::vector<ToneItem> faceTones(const StrokeGroup &group, const ObjectRegionsPtr
     const RestShadePtr rest = restShade(group, regions, face);
     if (!rest)
         return {};
-    std::vector<ToneItem> tones = computeTones(group, *rest, shading, color, settings);
+    std::vector<ToneItem> tones = computeTones(group, *rest, facePath, shading, color, settings);
     std::lock_guard lock(g_posedMutex);
     g_posed.push_front({std::move(key), regions, tones});
     if (g_posed.size() > kPosedEntries)

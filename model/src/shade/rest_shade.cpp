@@ -34,6 +34,7 @@ RestShadePtr compute(const StrokeGroup &group, const ObjectRegions &regions, int
         return nullptr;
     auto shade = std::make_shared<RestShade>();
     shade->inflation = std::move(*inflation);
+    shade->edges = geometry::meshEdges(shade->inflation.F);
     std::size_t total = 0;
     for (const Stroke &s : group.strokes)
         total += s.data ? s.data->points.size() : 0;

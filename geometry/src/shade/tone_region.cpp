@@ -1,0 +1,261 @@
+// Tone regions traced as contours, smoothed and clipped (shade/tone_region.h).
+#include "../clipper_bridge.h"
+
+#include <finbook/geometry/shade/tone_region.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace finbook::geometry {
+
+namespace {
+// Taubin's pair: a smoothing step, then a slightly larger inflating one.
+constexpr double kLambda = 0.5;
+constexpr double kMu = -0.53;
+
+struct Ring {
+    std::vector<Eigen::Vector2d> points;
+    std::vector<char> movable; // a contour vertex inside the mesh
+};
+
+void smoothRing(Ring &ring, int steps)
+{
+    const std::size_t n = ring.points.size();
+    if (n < 3 || steps <= 0)
+        return;
+    std::vector<Eigen::Vector2d> next(n);
+    for (int step = 0; step < 2 * steps; ++step) {
+        const double w = step % 2 == 0 ? kLambda : kMu;
+        for (std::size_t i = 0; i < n; ++i) {
+            const Eigen::Vector2d &p = ring.points[i];
+            if (!ring.movable[i]) {
+                next[i] = p;
+                continue;
+            }
+            const Eigen::Vector2d &a = ring.points[(i + n - 1) % n], &b = ring.points[(i + 1) % n];
+            next[i] = p + w * (0.5 * (a + b) - p);
+        }
+        ring.points.swap(next);
+    }
+}
+
+Pieces toPieces(const std::vector<Ring> &rings)
+{
+    Pieces out;
+    for (const Ring &ring : rings) {
+        out.points.insert(out.points.end(), ring.points.begin(), ring.points.end());
+        out.starts.push_back(int(out.points.size()));
+    }
+    return out;
+}
+
+Pieces clipRings(const std::vector<Ring> &rings, const std::vector<Eigen::MatrixX2d> &clip)
+{
+    Eigen::RowVector2d lo(std::numeric_limits<double>::infinity(),
+                          std::numeric_limits<double>::infinity());
+    for (const Ring &ring : rings)
+        for (const Eigen::Vector2d &p : ring.points)
+            lo = lo.cwiseMin(p.transpose());
+    for (const Eigen::MatrixX2d &ring : clip)
+        for (Eigen::Index i = 0; i < ring.rows(); ++i)
+            if (ring.row(i).allFinite())
+                lo = lo.cwiseMin(ring.row(i));
+    const detail::ClipperFrame frame = detail::frameFor(lo);
+    ClipperLib::Paths subject, window, solution;
+    subject.reserve(rings.size());
+    for (const Ring &ring : rings) {
+        Eigen::MatrixX2d m(Eigen::Index(ring.points.size()), 2);
+        for (std::size_t i = 0; i < ring.points.size(); ++i)
+            m.row(Eigen::Index(i)) = ring.points[i].transpose();
+        subject.push_back(frame.toPath(m));
+    }
+    for (const Eigen::MatrixX2d &ring : clip)
+        window.push_back(frame.toPath(ring));
+    try {
+        ClipperLib::Clipper clipper;
+        clipper.AddPaths(subject, ClipperLib::ptSubject, true);
+        clipper.AddPaths(window, ClipperLib::ptClip, true);
+        clipper.Execute(ClipperLib::ctIntersection, solution, ClipperLib::pftNonZero,
+                        ClipperLib::pftNonZero);
+    } catch (const std::exception &) {
+        return {}; // nothing rather than a tone past its fill
+    }
+    Pieces out;
+    for (const ClipperLib::Path &path : solution) {
+        if (path.size() < 3)
+            continue;
+        const Eigen::MatrixX2d ring = frame.toRing(path);
+        for (Eigen::Index i = 0; i < ring.rows(); ++i)
+            out.points.emplace_back(ring(i, 0), ring(i, 1));
+        out.starts.push_back(int(out.points.size()));
+    }
+    return out;
+}
+} // namespace
+
+MeshEdges meshEdges(const Eigen::MatrixX3i &F)
+{
+    MeshEdges out;
+    const Eigen::Index m = F.rows();
+    out.edge.resize(m, 3);
+    out.neighbour.setConstant(m, 3, -1);
+    // Half-edges sorted by their undirected key: the two sides of an edge end up adjacent.
+    std::vector<std::pair<std::uint64_t, int>> halves;
+    halves.reserve(std::size_t(3 * m));
+    for (Eigen::Index f = 0; f < m; ++f)
+        for (int k = 0; k < 3; ++k) {
+            const auto a = std::uint32_t(F(f, k)), b = std::uint32_t(F(f, (k + 1) % 3));
+            const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+            halves.emplace_back(key, int(3 * f + k));
+        }
+    std::sort(halves.begin(), halves.end());
+    int count = 0;
+    for (std::size_t i = 0; i < halves.size();) {
+        std::size_t j = i + 1;
+        while (j < halves.size() && halves[j].first == halves[i].first)
+            ++j;
+        for (std::size_t h = i; h < j; ++h)
+            out.edge(halves[h].second / 3, halves[h].second % 3) = count;
+        if (j - i == 2) { // a manifold interior edge; more sides than two count as outline
+            const int p = halves[i].second, q = halves[i + 1].second;
+            out.neighbour(p / 3, p % 3) = q / 3;
+            out.neighbour(q / 3, q % 3) = p / 3;
+        }
+        ++count;
+        i = j;
+    }
+    out.edgeCount = count;
+    return out;
+}
+
+Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const MeshEdges &edges,
+                  const Eigen::VectorXd &value, double threshold,
+                  const std::vector<Eigen::MatrixX2d> &clip, const ToneOptions &options)
+{
+    const Eigen::Index n = V.rows(), m = F.rows();
+    if (edges.edge.rows() != m || edges.neighbour.rows() != m || value.size() < n)
+        return {};
+    std::vector<char> valid(std::size_t(m), 0);
+    for (Eigen::Index f = 0; f < m; ++f) {
+        bool ok = true;
+        for (int k = 0; k < 3 && ok; ++k) {
+            const int v = F(f, k);
+            ok = v >= 0 && v < n && std::isfinite(V(v, 0)) && std::isfinite(V(v, 1)) &&
+                 std::isfinite(value(v));
+        }
+        valid[std::size_t(f)] = ok ? 1 : 0;
+    }
+    // Points: vertex v is v, the crossing on edge e is n + e.
+    const int edgeCount = edges.edgeCount;
+    std::vector<Eigen::Vector2d> crossing(static_cast<std::size_t>(edgeCount));
+    std::vector<char> crossed(std::size_t(edgeCount), 0), inside(std::size_t(edgeCount), 0);
+    std::vector<std::pair<int, int>> segments; // boundary segments (from, to)
+    segments.reserve(std::size_t(n));
+    int items[6], label[6];
+    for (Eigen::Index f = 0; f < m; ++f) {
+        if (!valid[std::size_t(f)])
+            continue;
+        bool in[3];
+        int above = 0;
+        for (int k = 0; k < 3; ++k) {
+            in[k] = value(F(f, k)) >= threshold;
+            above += in[k] ? 1 : 0;
+        }
+        if (above == 0)
+            continue;
+        int count = 0;
+        for (int k = 0; k < 3; ++k) {
+            const int next = (k + 1) % 3;
+            if (in[k]) {
+                items[count] = F(f, k);
+                label[count++] = k; // along edge k
+            }
+            if (in[k] != in[next]) {
+                const int e = edges.edge(f, k);
+                if (!crossed[std::size_t(e)]) {
+                    // The same point from both sides: interpolate from the lower vertex.
+                    const int a = std::min(F(f, k), F(f, next)), b = std::max(F(f, k), F(f, next));
+                    const double t = (threshold - value(a)) / (value(b) - value(a));
+                    crossing[std::size_t(e)] =
+                        (V.row(a) + std::clamp(t, 0.0, 1.0) * (V.row(b) - V.row(a))).transpose();
+                    crossed[std::size_t(e)] = 1;
+                    const int across = edges.neighbour(f, k);
+                    inside[std::size_t(e)] = across >= 0 && valid[std::size_t(across)] ? 1 : 0;
+                }
+                items[count] = int(n) + e;
+                label[count++] = in[next] ? k : -1; // entering: along edge k; leaving: contour
+            }
+        }
+        for (int i = 0; i < count; ++i) {
+            const int along = label[i];
+            const int across = along >= 0 ? edges.neighbour(f, along) : -1;
+            if (along < 0 || across < 0 || !valid[std::size_t(across)])
+                segments.emplace_back(items[i], items[(i + 1) % count]);
+        }
+    }
+    if (segments.empty())
+        return {};
+    // Chain the segments into rings: each point's outgoing segments, in compressed rows.
+    const std::size_t points = std::size_t(n) + std::size_t(edgeCount);
+    std::vector<int> first(points + 1, 0), out(segments.size());
+    for (const auto &s : segments)
+        ++first[std::size_t(s.first) + 1];
+    for (std::size_t p = 0; p < points; ++p)
+        first[p + 1] += first[p];
+    {
+        std::vector<int> fill(first.begin(), first.end() - 1);
+        for (std::size_t s = 0; s < segments.size(); ++s)
+            out[std::size_t(fill[std::size_t(segments[s].first)]++)] = int(s);
+    }
+    std::vector<char> used(segments.size(), 0);
+    const auto position = [&](int id) -> Eigen::Vector2d {
+        return id < n ? Eigen::Vector2d(V(id, 0), V(id, 1)) : crossing[std::size_t(id - n)];
+    };
+    std::vector<Ring> rings;
+    for (std::size_t s0 = 0; s0 < segments.size(); ++s0) {
+        if (used[s0])
+            continue;
+        Ring ring;
+        std::size_t s = s0;
+        while (true) {
+            used[s] = 1;
+            const int from = segments[s].first;
+            ring.points.push_back(position(from));
+            ring.movable.push_back(from >= n && inside[std::size_t(from - n)] ? 1 : 0);
+            const int to = segments[s].second;
+            std::size_t nextSegment = segments.size();
+            for (int o = first[std::size_t(to)]; o < first[std::size_t(to) + 1]; ++o)
+                if (!used[std::size_t(out[std::size_t(o)])]) {
+                    nextSegment = std::size_t(out[std::size_t(o)]);
+                    break;
+                }
+            if (nextSegment == segments.size())
+                break;
+            s = nextSegment;
+        }
+        if (ring.points.size() >= 3) {
+            smoothRing(ring, options.smoothingSteps);
+            rings.push_back(std::move(ring));
+        }
+    }
+    if (clip.empty())
+        return toPieces(rings);
+    return clipRings(rings, clip);
+}
+
+double ringsArea(const Pieces &rings)
+{
+    double area = 0.0;
+    for (int k = 0; k < rings.count(); ++k) {
+        const int begin = rings.starts[std::size_t(k)], end = rings.starts[std::size_t(k) + 1];
+        for (int i = begin; i < end; ++i) {
+            const Eigen::Vector2d &a = rings.points[std::size_t(i)];
+            const Eigen::Vector2d &b = rings.points[std::size_t(i + 1 < end ? i + 1 : begin)];
+            area += 0.5 * (a.x() * b.y() - b.x() * a.y());
+        }
+    }
+    return area;
+}
+
+} // namespace finbook::geometry
