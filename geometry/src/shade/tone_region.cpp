@@ -24,7 +24,8 @@ void smoothRing(Ring &ring, int steps)
     const std::size_t n = ring.points.size();
     if (n < 3 || steps <= 0)
         return;
-    std::vector<Eigen::Vector2d> next(n);
+    thread_local std::vector<Eigen::Vector2d> next;
+    next.resize(n);
     for (int step = 0; step < 2 * steps; ++step) {
         const double w = step % 2 == 0 ? kLambda : kMu;
         for (std::size_t i = 0; i < n; ++i) {
@@ -65,10 +66,15 @@ Pieces clipRings(const std::vector<Ring> &rings, const std::vector<Eigen::Matrix
     ClipperLib::Paths subject, window, solution;
     subject.reserve(rings.size());
     for (const Ring &ring : rings) {
-        Eigen::MatrixX2d m(Eigen::Index(ring.points.size()), 2);
-        for (std::size_t i = 0; i < ring.points.size(); ++i)
-            m.row(Eigen::Index(i)) = ring.points[i].transpose();
-        subject.push_back(frame.toPath(m));
+        ClipperLib::Path path;
+        path.reserve(ring.points.size());
+        for (const Eigen::Vector2d &p : ring.points) {
+            const ClipperLib::IntPoint q(frame.units(p.x() - frame.origin.x()),
+                                         frame.units(p.y() - frame.origin.y()));
+            if (path.empty() || !(path.back() == q))
+                path.push_back(q);
+        }
+        subject.push_back(std::move(path));
     }
     for (const Eigen::MatrixX2d &ring : clip)
         window.push_back(frame.toPath(ring));
@@ -136,7 +142,12 @@ Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Me
     const Eigen::Index n = V.rows(), m = F.rows();
     if (edges.edge.rows() != m || edges.neighbour.rows() != m || value.size() < n)
         return {};
-    std::vector<char> valid(std::size_t(m), 0);
+    // Scratch kept per thread: re-shading calls this a few times per fill and frame.
+    thread_local std::vector<char> valid, crossed, inside, used;
+    thread_local std::vector<Eigen::Vector2d> crossing;
+    thread_local std::vector<std::pair<int, int>> segments; // boundary segments (from, to)
+    thread_local std::vector<int> first, out, fill;
+    valid.assign(std::size_t(m), 0);
     for (Eigen::Index f = 0; f < m; ++f) {
         bool ok = true;
         for (int k = 0; k < 3 && ok; ++k) {
@@ -148,10 +159,10 @@ Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Me
     }
     // Points: vertex v is v, the crossing on edge e is n + e.
     const int edgeCount = edges.edgeCount;
-    std::vector<Eigen::Vector2d> crossing(static_cast<std::size_t>(edgeCount));
-    std::vector<char> crossed(std::size_t(edgeCount), 0), inside(std::size_t(edgeCount), 0);
-    std::vector<std::pair<int, int>> segments; // boundary segments (from, to)
-    segments.reserve(std::size_t(n));
+    crossing.resize(std::size_t(edgeCount));
+    crossed.assign(std::size_t(edgeCount), 0);
+    inside.assign(std::size_t(edgeCount), 0);
+    segments.clear();
     int items[6], label[6];
     for (Eigen::Index f = 0; f < m; ++f) {
         if (!valid[std::size_t(f)])
@@ -198,17 +209,18 @@ Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Me
         return {};
     // Chain the segments into rings: each point's outgoing segments, in compressed rows.
     const std::size_t points = std::size_t(n) + std::size_t(edgeCount);
-    std::vector<int> first(points + 1, 0), out(segments.size());
+    first.assign(points + 1, 0);
+    out.resize(segments.size());
     for (const auto &s : segments)
         ++first[std::size_t(s.first) + 1];
     for (std::size_t p = 0; p < points; ++p)
         first[p + 1] += first[p];
     {
-        std::vector<int> fill(first.begin(), first.end() - 1);
+        fill.assign(first.begin(), first.end() - 1);
         for (std::size_t s = 0; s < segments.size(); ++s)
             out[std::size_t(fill[std::size_t(segments[s].first)]++)] = int(s);
     }
-    std::vector<char> used(segments.size(), 0);
+    used.assign(segments.size(), 0);
     const auto position = [&](int id) -> Eigen::Vector2d {
         return id < n ? Eigen::Vector2d(V(id, 0), V(id, 1)) : crossing[std::size_t(id - n)];
     };
