@@ -84,6 +84,7 @@ private slots:
     void everyRampAndRimGivesTones();
     void tonesFollowThePoseLightStaysOnScreen();
     void tonesStayInsideTheFillWhenPosed();
+    void armOverTheBodyIsShadedAsTheArm();
     void onionSkinStaysFlat();
     void svgWritesToneRegionsNotRaster();
     void fileKeepsShadingAndLight();
@@ -255,6 +256,48 @@ void TestFillShading::tonesStayInsideTheFillWhenPosed()
     qInfo("posed disc: %d tone samples, %d outside the fill", inTones, outside);
     QVERIFY(inTones > 1000);
     QCOMPARE(outside, 0);
+}
+
+void TestFillShading::armOverTheBodyIsShadedAsTheArm()
+{
+    // A body (disc, r 100) and an arm drawn over it (disc, r 60, 110 px right), filled in two
+    // colours, lit from the left. Just inside the body's right edge, on the arm, the arm's
+    // dome faces left (lit); the body's, or the lens-shaped piece inflated alone, face right
+    // (in shadow).
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    const auto disc = [](QPointF centre, double radius) {
+        QPolygonF ring;
+        for (int i = 0; i <= 120; ++i)
+            ring << centre + radius * QPointF(std::cos(2 * M_PI * i / 120),
+                                              std::sin(2 * M_PI * i / 120));
+        return ring;
+    };
+    const QPointF body(150, 200), arm(260, 200);
+    doc.undoStack()->push(new AddStrokeCommand(&doc, g, polylineStroke(disc(body, 100))));
+    doc.undoStack()->push(new AddStrokeCommand(&doc, g, polylineStroke(disc(arm, 60))));
+    DocumentSettings settings = doc.settings();
+    settings.canvasSize = QSize(400, 400);
+    settings.closeGap = 0.0;
+    doc.undoStack()->push(new ChangeSettingsCommand(&doc, settings));
+    push(doc, fillRegionCommand(&doc, g, body - QPointF(50, 0), kRed));
+    push(doc, fillRegionCommand(&doc, g, arm + QPointF(30, 0), 0xff3060e0));
+    push(doc, fillRegionCommand(&doc, g, QPointF(240, 200), 0xff3060e0));
+    push(doc, setLightCommand(&doc, 180.0, 30.0));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::TwoTones, false}));
+    const std::vector<FillItem> items = fillList(*doc.group(g), doc.settings());
+    QVERIFY(items.size() >= 2);
+    const auto shaded = [&](QPointF p) {
+        for (const FillItem &item : items)
+            for (const ToneItem &tone : item.tones)
+                if (tone.path.contains(p))
+                    return true;
+        return false;
+    };
+    QVERIFY(!shaded(QPointF(245, 200))); // on the arm over the body, near the body's edge
+    QVERIFY(shaded(QPointF(315, 200)));  // the arm's own right side
+    QVERIFY(shaded(QPointF(210, 150)));  // the body right of its middle, beside the arm
 }
 
 void TestFillShading::onionSkinStaysFlat()
