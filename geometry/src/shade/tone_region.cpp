@@ -13,6 +13,8 @@ namespace {
 // Taubin's pair: a smoothing step, then a slightly larger inflating one.
 constexpr double kLambda = 0.5;
 constexpr double kMu = -0.53;
+// Outline runs of a ring that is clipped are thinned to this (px).
+constexpr double kOutlineTolerance = 0.25;
 
 struct Ring {
     std::vector<Eigen::Vector2d> points;
@@ -39,6 +41,81 @@ void smoothRing(Ring &ring, int steps)
         }
         ring.points.swap(next);
     }
+}
+
+// Thins the runs along the mesh's outline (the fixed vertices) to `tolerance` (Douglas–Peucker;
+// a run's ends stay), pushed out by as much first: Clipper's cost grows with the vertices it is
+// given, and where the tone meets the outline the fill's own outline (the clip) and the ink decide
+// what shows.
+void thinOutlineRuns(Ring &ring, double tolerance)
+{
+    const std::size_t n = ring.points.size();
+    std::size_t start = 0;
+    while (start < n && !ring.movable[start])
+        ++start;
+    if (start == n)
+        return; // no contour vertex: the ring is all outline; keep it
+    // Pushed out by the tolerance first (to the right of the way round: the set lies on the
+    // left), so the thinned run still holds the outline: the clip, not the thinning, cuts it.
+    thread_local std::vector<Eigen::Vector2d> pushed;
+    pushed = ring.points;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (ring.movable[k])
+            continue;
+        const Eigen::Vector2d d = ring.points[(k + 1) % n] - ring.points[(k + n - 1) % n];
+        const double length = d.norm();
+        if (length > 1e-12)
+            pushed[k] += tolerance / length * Eigen::Vector2d(d.y(), -d.x());
+    }
+    ring.points.swap(pushed);
+    thread_local std::vector<char> keep;
+    keep.assign(n, 1);
+    const auto thin = [&](auto &&self, std::size_t a, std::size_t b) -> void {
+        // Run a → b (indices mod n, b after a), both kept.
+        const Eigen::Vector2d &p = ring.points[a % n], &q = ring.points[b % n];
+        const Eigen::Vector2d d = q - p;
+        const double length = d.norm();
+        double worst = -1.0;
+        std::size_t at = a;
+        for (std::size_t i = a + 1; i < b; ++i) {
+            const Eigen::Vector2d r = ring.points[i % n] - p;
+            const double off =
+                length > 1e-12 ? std::abs(d.x() * r.y() - d.y() * r.x()) / length : r.norm();
+            if (off > worst) {
+                worst = off;
+                at = i;
+            }
+        }
+        if (worst <= tolerance) {
+            for (std::size_t i = a + 1; i < b; ++i)
+                keep[i % n] = 0;
+            return;
+        }
+        self(self, a, at);
+        self(self, at, b);
+    };
+    // Walk once round from a contour vertex; a run is the fixed vertices between two movable
+    // ones (the run's ends, where the contour meets the outline, are fixed and kept).
+    std::size_t i = start;
+    for (std::size_t step = 0; step < n;) {
+        std::size_t j = i + 1;
+        while (j < start + n && !ring.movable[j % n])
+            ++j;
+        // i and j are contour vertices (or j wrapped to start); the run is i + 1 … j − 1.
+        if (j - i > 3)
+            thin(thin, i + 1, j - 1);
+        step += j - i;
+        i = j;
+    }
+    std::size_t w = 0;
+    for (std::size_t k = 0; k < n; ++k)
+        if (keep[k]) {
+            ring.points[w] = ring.points[k];
+            ring.movable[w] = ring.movable[k];
+            ++w;
+        }
+    ring.points.resize(w);
+    ring.movable.resize(w);
 }
 
 Pieces toPieces(const std::vector<Ring> &rings)
@@ -253,6 +330,8 @@ Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Me
     }
     if (clip.empty())
         return toPieces(rings);
+    for (Ring &ring : rings)
+        thinOutlineRuns(ring, kOutlineTolerance);
     return clipRings(rings, clip);
 }
 
