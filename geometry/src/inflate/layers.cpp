@@ -44,11 +44,15 @@ int faceLayer(const std::vector<Layer> &layers, const Regions &regions, int face
 Region layerRegion(const std::vector<Layer> &layers, const Regions &regions, int face)
 {
     const int layer = faceLayer(layers, regions, face);
-    if (layer >= 0)
-        return layers[std::size_t(layer)].region;
     if (face < 0 || std::size_t(face) >= regions.faces.size())
         return {};
-    return Region{regions.faces[std::size_t(face)].polygon};
+    const Face &f = regions.faces[std::size_t(face)];
+    if (layer >= 0)
+        // A stroke that crosses itself closes several faces: the one around this face.
+        for (const Polygon &polygon : layers[std::size_t(layer)].region)
+            if (regionContains(Region{polygon}, f.seed.x(), f.seed.y()))
+                return Region{polygon};
+    return Region{f.polygon};
 }
 
 } // namespace finbook::geometry

@@ -50,7 +50,10 @@ RestShadePtr compute(const StrokeGroup &group, const ObjectRegions &regions, int
     geometry::MeshOptions options;
     options.density = group.meshDensity > 0.0 ? std::min(group.meshDensity, 100.0) : 1.0;
     options.targetVertices = kShadeTargetVertices;
-    const auto mesh = geometry::buildObjectMesh(layerOf(group, regions, face), options);
+    auto mesh = geometry::buildObjectMesh(layerOf(group, regions, face), options);
+    if (!mesh) // the face by itself, then
+        mesh = geometry::buildObjectMesh(
+            geometry::Region{regions.regions().faces[std::size_t(face)].polygon}, options);
     if (!mesh)
         return nullptr;
     auto inflation = geometry::inflateObjectMesh(*mesh);

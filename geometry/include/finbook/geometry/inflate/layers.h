@@ -33,7 +33,8 @@ std::vector<Layer> strokeLayers(const std::vector<StrokeInput> &strokes, double 
 // face is its own layer).
 int faceLayer(const std::vector<Layer> &layers, const Regions &regions, int face);
 
-// The region face `face` inflates as: its layer's region, or the face's own polygon.
+// The region face `face` inflates as: the polygon of its layer's region around it (a stroke
+// that crosses itself closes several), or the face's own polygon.
 Region layerRegion(const std::vector<Layer> &layers, const Regions &regions, int face);
 
 } // namespace finbook::geometry
