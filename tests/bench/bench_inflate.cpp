@@ -134,6 +134,7 @@ int benchInflate(const QStringList &arguments)
     const QString sheetPath = option(QStringLiteral("--sheet"));
     const QString objPath = option(QStringLiteral("--obj"));
     const QString shadedPath = option(QStringLiteral("--shaded-sheet"));
+    const QString shadedCell = option(QStringLiteral("--shaded-cell"));
     QString reshade = option(QStringLiteral("--reshade"));
     if (reshade.isEmpty())
         reshade = QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook");
@@ -148,7 +149,8 @@ int benchInflate(const QStringList &arguments)
         std::fprintf(
             stderr,
             "usage: finbook-bench inflate [--sheet OUT.png] [--obj OUT.obj] [--smoothing S] "
-            "[--contact-angle A] [--reshade DOC.finbook] [--shaded-sheet OUT.png] FILE...\n");
+            "[--contact-angle A] [--reshade DOC.finbook] [--shaded-sheet OUT.png] "
+            "[--shaded-cell PX] FILE...\n");
         return 2;
     }
     finbook::bench::InflateSheet sheet;
@@ -184,7 +186,9 @@ int benchInflate(const QStringList &arguments)
     const QJsonObject shade = finbook::bench::reshadeCost(reshade);
     failures += shade.contains(QStringLiteral("error")) ? 1 : 0;
     std::printf("%s\n", QJsonDocument(shade).toJson(QJsonDocument::Compact).constData());
-    if (!shadedPath.isEmpty() && !finbook::bench::shadedSheet(args, shadedPath)) {
+    if (!shadedPath.isEmpty() &&
+        !finbook::bench::shadedSheet(args, shadedPath,
+                                     shadedCell.isEmpty() ? 200 : shadedCell.toInt())) {
         std::fprintf(stderr, "cannot write %s\n", qPrintable(shadedPath));
         return 1;
     }
@@ -206,6 +210,7 @@ int benchInflate(const QStringList &arguments)
 
 FINBOOK_BENCH("inflate",
               "[--sheet OUT.png] [--obj OUT.obj] [--smoothing S] [--contact-angle A] "
-              "[--reshade DOC.finbook] [--shaded-sheet OUT.png] FILE... (strokes or contours as "
+              "[--reshade DOC.finbook] [--shaded-sheet OUT.png [--shaded-cell PX]] FILE... "
+              "(strokes or contours as "
               "JSON; re-shading times the example's posed frame)",
               benchInflate);

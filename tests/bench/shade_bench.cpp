@@ -133,7 +133,7 @@ QJsonObject reshadeCost(const QString &finbook)
     std::vector<double> wall, cpu, paint;
     QImage image(settings.canvasSize, QImage::Format_ARGB32_Premultiplied);
     for (int run = 0; run < 15; ++run) {
-        settings.lightAzimuth = 100.0 + run; // a new light misses every cached tone, as a pose
+        settings.lightAzimuth = 100.0 + run; // a new light: every fill re-lit and re-cut
         start = Clock::now();
         const double cpuStart = threadCpuMs();
         for (const StrokeGroup &g : frame.groups)
@@ -146,6 +146,19 @@ QJsonObject reshadeCost(const QString &finbook)
         painter.end();
         paint.push_back(msSince(start));
     }
+    // A new pose of every object (a new frame of an animation): posing, lighting and cutting
+    // every fill's tones again.
+    std::vector<double> allPosed;
+    for (int run = 0; run < 15; ++run) {
+        for (StrokeGroup &g : frame.groups)
+            if (g.isDeformed())
+                g.deformed = std::make_shared<const DeformedStrokes>(*g.deformed);
+        const double cpuStart = threadCpuMs();
+        for (const StrokeGroup &g : frame.groups)
+            fillList(g, settings);
+        allPosed.push_back(threadCpuMs() - cpuStart);
+    }
+    row.insert(QStringLiteral("reshade_new_pose_all_objects_cpu_ms_median"), median(allPosed));
     // A drag poses one object: only its tones are recomputed, the others come from the cache.
     std::size_t largest = 0;
     for (std::size_t i = 0; i < frame.groups.size(); ++i)
@@ -211,9 +224,9 @@ std::optional<StrokeGroup> sketchObject(const QString &path, QSize &canvas)
 }
 } // namespace
 
-bool shadedSheet(const QStringList &files, const QString &out)
+bool shadedSheet(const QStringList &files, const QString &out, int cell)
 {
-    constexpr int kCell = 200;
+    const int kCell = std::clamp(cell, 50, 2000);
     constexpr int kPairsPerRow = 4;
     std::vector<std::pair<QImage, QImage>> pairs;
     std::vector<QString> labels;

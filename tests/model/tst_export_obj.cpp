@@ -12,6 +12,7 @@
 
 #include <array>
 #include <map>
+#include <numeric>
 
 using namespace finbook;
 using namespace finbook::model;
@@ -134,6 +135,7 @@ private slots:
     void exampleFrameIsClosedSolids();
     void frameOptionPicksTheDrawing();
     void nothingMeshableWritesNothing();
+    void armOverTheBodyExportsAsTwoSolids();
     void existingFilesAreRefusedWithoutOverwrite();
     void failedObjPutsTheOldMaterialsBack();
     void cancelLeavesNothing();
@@ -293,6 +295,56 @@ void TestExportObj::nothingMeshableWritesNothing()
     QVERIFY2(empty.error().message.contains(QLatin1String("no drawing")),
              qPrintable(empty.error().message));
     QCOMPARE(filesIn(dir.path()), QStringList());
+}
+
+void TestExportObj::armOverTheBodyExportsAsTwoSolids()
+{
+    // One object: a body (circle r 100) and an arm drawn over it (circle r 60, 110 px right).
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = addObject(doc, QStringLiteral("Figure"));
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, g, circleStroke(QPointF(300, 300), 100, 0xff000000)));
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, g, circleStroke(QPointF(410, 300), 60, 0xff000000)));
+    const ExportSource source = exportSource(doc);
+    QTemporaryDir dir;
+    const QString target = dir.filePath(QStringLiteral("figure.obj"));
+    const auto result = exportAnimation(source, objOptions(target));
+    QVERIFY2(result, result ? "" : qPrintable(result.error().message));
+    const ParsedObj obj = parseObj(readAll(target));
+    QVERIFY2(obj.problem.isEmpty(), qPrintable(obj.problem));
+    QCOMPARE(obj.objects.size(), std::size_t(1));
+    const ParsedObject &figure = obj.objects.front();
+    QVERIFY(closedAndOriented(figure.faces));
+    // Its triangles form two separate closed shells, one over each circle.
+    std::vector<int> parent(obj.v.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    const auto root = [&](int v) {
+        while (parent[std::size_t(v)] != v)
+            v = parent[std::size_t(v)] = parent[std::size_t(parent[std::size_t(v)])];
+        return v;
+    };
+    for (const auto &f : figure.faces)
+        for (int k = 1; k < 3; ++k)
+            parent[std::size_t(root(f[std::size_t(k)]))] = root(f[0]);
+    std::map<int, std::pair<double, double>> shells; // root → x range
+    for (const auto &f : figure.faces)
+        for (int v : f) {
+            auto [it, added] =
+                shells.try_emplace(root(v), obj.v[std::size_t(v)][0], obj.v[std::size_t(v)][0]);
+            it->second.first = std::min(it->second.first, obj.v[std::size_t(v)][0]);
+            it->second.second = std::max(it->second.second, obj.v[std::size_t(v)][0]);
+        }
+    QCOMPARE(shells.size(), std::size_t(2));
+    std::vector<std::pair<double, double>> ranges;
+    for (const auto &[r, range] : shells)
+        ranges.push_back(range);
+    std::sort(ranges.begin(), ranges.end());
+    qInfo("shells span x %.0f…%.0f and %.0f…%.0f", ranges[0].first, ranges[0].second,
+          ranges[1].first, ranges[1].second);
+    QVERIFY(std::abs(ranges[0].first - 200) < 4 && std::abs(ranges[0].second - 400) < 4);
+    QVERIFY(std::abs(ranges[1].first - 350) < 4 && std::abs(ranges[1].second - 470) < 4);
 }
 
 void TestExportObj::existingFilesAreRefusedWithoutOverwrite()

@@ -83,6 +83,8 @@ private slots:
     void discLitFromTheLeftIsBrighterOnItsLeft();
     void everyRampAndRimGivesTones();
     void tonesFollowThePoseLightStaysOnScreen();
+    void tonesStayInsideTheFillWhenPosed();
+    void armOverTheBodyIsShadedAsTheArm();
     void onionSkinStaysFlat();
     void svgWritesToneRegionsNotRaster();
     void fileKeepsShadingAndLight();
@@ -213,6 +215,89 @@ void TestFillShading::tonesFollowThePoseLightStaysOnScreen()
           restShadow.x(), restShadow.y(), posedShadow.x(), posedShadow.y());
     QVERIFY(std::abs((posedShadow - by - restShadow).x()) < 3.0);
     QVERIFY(std::abs((posedShadow - by - restShadow).y()) < 3.0);
+}
+
+void TestFillShading::tonesStayInsideTheFillWhenPosed()
+{
+    // A cage squashes the disc unevenly (one corner pulled in): the shading mesh and the fill's
+    // outline are posed by different maps, yet no tone shows past the fill.
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, setLightCommand(&doc, 180.0, 30.0));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, true}));
+    Rig rig;
+    rig.cage.rest = {{80, 80}, {320, 80}, {320, 320}, {80, 320}};
+    rig.cage.posed = {{140, 80}, {260, 80}, {330, 330}, {70, 330}};
+    doc.setRig(g, rig);
+    DeformJob job;
+    job.groupId = g;
+    job.key = MeshKey::of(*doc.group(g));
+    job.rig = rig.atRest();
+    const auto setup = buildDeformSetup(job);
+    QVERIFY(setup);
+    const auto solved = solvePose(**setup, *doc.group(g));
+    QVERIFY(solved);
+    doc.setDeformed(g, solved->strokes);
+    const std::vector<FillItem> items = fillList(*doc.group(g), doc.settings());
+    QCOMPARE(items.size(), std::size_t(1));
+    QVERIFY(items[0].tones.size() >= 3);
+    // Sampled every px: a tone point outside the fill would show past its outline.
+    int inTones = 0, outside = 0;
+    for (int y = 60; y < 340; ++y)
+        for (int x = 40; x < 340; ++x) {
+            const QPointF p(x + 0.5, y + 0.5);
+            for (const ToneItem &tone : items[0].tones)
+                if (tone.path.contains(p)) {
+                    ++inTones;
+                    if (!items[0].path.contains(p))
+                        ++outside;
+                }
+        }
+    qInfo("posed disc: %d tone samples, %d outside the fill", inTones, outside);
+    QVERIFY(inTones > 1000);
+    QCOMPARE(outside, 0);
+}
+
+void TestFillShading::armOverTheBodyIsShadedAsTheArm()
+{
+    // A body (disc, r 100) and an arm drawn over it (disc, r 60, 110 px right), filled in two
+    // colours, lit from the left. Just inside the body's right edge, on the arm, the arm's
+    // dome faces left (lit); the body's, or the lens-shaped piece inflated alone, face right
+    // (in shadow).
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    const auto disc = [](QPointF centre, double radius) {
+        QPolygonF ring;
+        for (int i = 0; i <= 120; ++i)
+            ring << centre + radius * QPointF(std::cos(2 * M_PI * i / 120),
+                                              std::sin(2 * M_PI * i / 120));
+        return ring;
+    };
+    const QPointF body(150, 200), arm(260, 200);
+    doc.undoStack()->push(new AddStrokeCommand(&doc, g, polylineStroke(disc(body, 100))));
+    doc.undoStack()->push(new AddStrokeCommand(&doc, g, polylineStroke(disc(arm, 60))));
+    DocumentSettings settings = doc.settings();
+    settings.canvasSize = QSize(400, 400);
+    settings.closeGap = 0.0;
+    doc.undoStack()->push(new ChangeSettingsCommand(&doc, settings));
+    push(doc, fillRegionCommand(&doc, g, body - QPointF(50, 0), kRed));
+    push(doc, fillRegionCommand(&doc, g, arm + QPointF(30, 0), 0xff3060e0));
+    push(doc, fillRegionCommand(&doc, g, QPointF(240, 200), 0xff3060e0));
+    push(doc, setLightCommand(&doc, 180.0, 30.0));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::TwoTones, false}));
+    const std::vector<FillItem> items = fillList(*doc.group(g), doc.settings());
+    QVERIFY(items.size() >= 2);
+    const auto shaded = [&](QPointF p) {
+        for (const FillItem &item : items)
+            for (const ToneItem &tone : item.tones)
+                if (tone.path.contains(p))
+                    return true;
+        return false;
+    };
+    QVERIFY(!shaded(QPointF(245, 200))); // on the arm over the body, near the body's edge
+    QVERIFY(shaded(QPointF(315, 200)));  // the arm's own right side
+    QVERIFY(shaded(QPointF(210, 150)));  // the body right of its middle, beside the arm
 }
 
 void TestFillShading::onionSkinStaysFlat()

@@ -71,7 +71,7 @@ PoseWeights poseWeights(const Eigen::MatrixX2d &points, const Eigen::MatrixX2d &
     return w;
 }
 
-PosedPoints applyPose(const PoseWeights &weights, const Eigen::MatrixX2d &posed)
+PosedPoints applyPose(const PoseWeights &weights, const Eigen::MatrixX2d &posed, bool withAngle)
 {
     const Eigen::Index n = weights.offset.rows();
     const Eigen::Index k = weights.index.rows();
@@ -82,7 +82,8 @@ PosedPoints applyPose(const PoseWeights &weights, const Eigen::MatrixX2d &posed)
             shown.row(c) = posed.row(c);
     PosedPoints out;
     out.V.resize(n, 2);
-    out.angle = Eigen::VectorXd::Zero(n);
+    if (withAngle)
+        out.angle = Eigen::VectorXd::Zero(n);
     out.turn.resize(n, 2);
     for (Eigen::Index i = 0; i < n; ++i) {
         // One pass: with weights summing to 1, Σw (p − p*)·(q − q*) = Σw p·q − p*·q*, and the
@@ -114,7 +115,8 @@ PosedPoints applyPose(const PoseWeights &weights, const Eigen::MatrixX2d &posed)
         const double b = cross - (px * qy - py * qx);
         const double length = std::sqrt(a * a + b * b);
         const double cs = length > 0.0 ? a / length : 1.0, sn = length > 0.0 ? b / length : 0.0;
-        out.angle(i) = std::atan2(sn, cs);
+        if (withAngle)
+            out.angle(i) = std::atan2(sn, cs);
         out.turn.row(i) << cs, sn;
         out.V(i, 0) = qx + cs * ox - sn * oy;
         out.V(i, 1) = qy + sn * ox + cs * oy;

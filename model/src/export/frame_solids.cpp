@@ -1,4 +1,5 @@
 #include <finbook/geometry/inflate/inflation.h>
+#include <finbook/geometry/inflate/layers.h>
 #include <finbook/geometry/object_mesh.h>
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/export/frame_solids.h>
@@ -56,6 +57,48 @@ bool isDotOrStraightLine(const std::vector<StrokeDataPtr> &strokes)
     return high - low <= std::max(widest, 2.0);
 }
 
+bool usable(const geometry::InflatedSolid &solid)
+{
+    return solid.F.rows() > 0 && solid.V.allFinite() && solid.N.allFinite() &&
+           geometry::signedVolume(solid) > 0.0;
+}
+
+// An object whose every stroke closes a region by itself, two or more of them (a body and
+// an arm drawn over it): one closed solid per stroke's region (geometry/inflate/layers.h),
+// in one object, so the arm stays an arm in the 3D model instead of melting into the body.
+// nullopt for any other object (it exports as its silhouette) or when a layer fails.
+std::optional<geometry::InflatedSolid>
+layeredSolid(const std::vector<geometry::StrokeInput> &inputs, const geometry::MeshOptions &options)
+{
+    if (inputs.size() < 2)
+        return std::nullopt;
+    const double gap =
+        options.regions.closeGap >= 0.0 ? options.regions.closeGap : geometry::autoCloseGap(inputs);
+    const std::vector<geometry::Layer> layers = geometry::strokeLayers(inputs, gap);
+    if (layers.size() != inputs.size())
+        return std::nullopt;
+    geometry::InflatedSolid all;
+    for (const geometry::Layer &layer : layers) {
+        const auto mesh = geometry::buildObjectMesh(layer.region, options);
+        if (!mesh)
+            return std::nullopt;
+        const auto inflation = geometry::inflateObjectMesh(*mesh);
+        if (!inflation)
+            return std::nullopt;
+        const geometry::InflatedSolid solid = geometry::inflatedSolid(*inflation);
+        if (!usable(solid))
+            return std::nullopt;
+        const Eigen::Index v = all.V.rows(), f = all.F.rows();
+        all.V.conservativeResize(v + solid.V.rows(), 3);
+        all.N.conservativeResize(v + solid.N.rows(), 3);
+        all.F.conservativeResize(f + solid.F.rows(), 3);
+        all.V.bottomRows(solid.V.rows()) = solid.V;
+        all.N.bottomRows(solid.N.rows()) = solid.N;
+        all.F.bottomRows(solid.F.rows()) = solid.F.array() + int(v);
+    }
+    return all;
+}
+
 // The object's shape as it shows now: its displayed strokes, meshed as the deformers mesh
 // its rest drawing (same density), with the gaps closed as its fills see them.
 std::optional<geometry::InflatedSolid> solidOf(const StrokeGroup &group, double closeGap)
@@ -69,15 +112,17 @@ std::optional<geometry::InflatedSolid> solidOf(const StrokeGroup &group, double 
     geometry::MeshOptions options;
     options.density = group.meshDensity;
     options.regions = regionsOptions(closeGap);
-    const auto mesh = geometry::buildObjectMesh(strokeInputs(key), options);
+    const std::vector<geometry::StrokeInput> inputs = strokeInputs(key);
+    if (auto layered = layeredSolid(inputs, options))
+        return layered;
+    const auto mesh = geometry::buildObjectMesh(inputs, options);
     if (!mesh)
         return std::nullopt;
     const auto inflation = geometry::inflateObjectMesh(*mesh);
     if (!inflation)
         return std::nullopt;
     geometry::InflatedSolid solid = geometry::inflatedSolid(*inflation);
-    if (solid.F.rows() == 0 || !solid.V.allFinite() || !solid.N.allFinite() ||
-        !(geometry::signedVolume(solid) > 0.0))
+    if (!usable(solid))
         return std::nullopt;
     return solid;
 }

@@ -21,11 +21,12 @@ std::vector<FillItem> fillItems(const StrokeGroup &group, double closeGap,
         const int fill = shown[std::size_t(f)];
         if (fill < 0)
             continue;
-        items[std::size_t(fill)].path.addPath(regions->displayedPath(group, f));
+        const QPainterPath facePath = regions->displayedPath(group, f);
+        items[std::size_t(fill)].path.addPath(facePath);
         const Fill &source = group.fills[std::size_t(fill)];
         if (shade && !options.tint && source.shading.shaded())
             for (ToneItem &tone :
-                 faceTones(group, regions, f, source.shading, source.color, *shade))
+                 faceTones(group, regions, f, facePath, source.shading, source.color, *shade))
                 items[std::size_t(fill)].tones.push_back(std::move(tone));
     }
     std::vector<FillItem> out;

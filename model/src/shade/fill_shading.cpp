@@ -3,6 +3,7 @@
 
 #include <finbook/geometry/shade/pose.h>
 #include <finbook/geometry/shade/shading.h>
+#include <finbook/geometry/shade/tone_region.h>
 #include <finbook/model/render.h>
 #include <finbook/model/shade/fill_shading.h>
 
@@ -60,13 +61,48 @@ constexpr std::size_t kPosedEntries = 160;
 std::mutex g_posedMutex;
 std::list<PosedEntry> g_posed;
 
-std::vector<ToneItem> computeTones(const StrokeGroup &group, const RestShade &rest,
-                                   const FillShading &shading, QRgb color,
-                                   const DocumentSettings &settings)
+// The face's rings as shown (the tones are clipped to them).
+std::vector<Eigen::MatrixX2d> ringsOf(const QPainterPath &path)
 {
+    std::vector<Eigen::MatrixX2d> rings;
+    for (const QPolygonF &polygon : path.toSubpathPolygons()) {
+        Eigen::MatrixX2d ring(polygon.size(), 2);
+        for (qsizetype i = 0; i < polygon.size(); ++i)
+            ring.row(Eigen::Index(i)) << polygon[i].x(), polygon[i].y();
+        rings.push_back(std::move(ring));
+    }
+    return rings;
+}
+
+// A face's shading mesh as shown (posed vertices and turned normals) and its outline rings:
+// all that a pose decides, so a new light or ramp re-lights without posing again.
+struct PosedShape {
+    Eigen::MatrixX2d V;
+    Eigen::MatrixX3d normals;
+    std::vector<Eigen::MatrixX2d> clip;
+};
+using PosedShapePtr = std::shared_ptr<const PosedShape>;
+struct ShapeKey {
+    const ObjectRegions *regions = nullptr;
+    int face = -1;
+    double density = 0.0;
+    DeformedStrokesPtr pose;
+    bool operator==(const ShapeKey &) const = default;
+};
+struct ShapeEntry {
+    ShapeKey key;
+    std::weak_ptr<const ObjectRegions> alive;
+    PosedShapePtr shape;
+};
+constexpr std::size_t kShapeEntries = 96; // a face's mesh as shown: about 50 kB
+std::mutex g_shapeMutex;
+std::list<ShapeEntry> g_shapes;
+
+PosedShapePtr computeShape(const StrokeGroup &group, const RestShade &rest,
+                           const QPainterPath &facePath)
+{
+    auto shape = std::make_shared<PosedShape>();
     const geometry::Inflation &inflation = rest.inflation;
-    Eigen::MatrixX2d V = inflation.V;
-    Eigen::MatrixX3d normals = inflation.normal;
     if (group.isDeformed()) {
         Eigen::MatrixX2d shown(Eigen::Index(rest.controls.size()), 2);
         for (std::size_t c = 0; c < rest.controls.size(); ++c) {
@@ -76,16 +112,54 @@ std::vector<ToneItem> computeTones(const StrokeGroup &group, const RestShade &re
                 std::size_t(point) < points.size() ? points[std::size_t(point)] : StrokePoint{};
             shown.row(Eigen::Index(c)) << p.x, p.y;
         }
-        const geometry::PosedPoints posed = geometry::applyPose(rest.weights, shown);
-        V = posed.V;
-        normals = geometry::rotateNormals(normals, posed.turn);
+        geometry::PosedPoints posed = geometry::applyPose(rest.weights, shown, false);
+        shape->V = std::move(posed.V);
+        shape->normals = geometry::rotateNormals(inflation.normal, posed.turn);
+    } else {
+        shape->V = inflation.V;
+        shape->normals = inflation.normal;
     }
+    shape->clip = ringsOf(facePath);
+
+    return shape;
+}
+
+PosedShapePtr posedShape(const StrokeGroup &group, const ObjectRegionsPtr &regions, int face,
+                         const RestShade &rest, const QPainterPath &facePath)
+{
+    ShapeKey key{regions.get(), face, group.meshDensity,
+                 group.isDeformed() ? group.deformed : nullptr};
+    {
+        std::lock_guard lock(g_shapeMutex);
+        for (auto it = g_shapes.begin(); it != g_shapes.end(); ++it)
+            if (it->key == key && !it->alive.expired()) {
+                g_shapes.splice(g_shapes.begin(), g_shapes, it);
+                return g_shapes.front().shape;
+            }
+    }
+    PosedShapePtr shape = computeShape(group, rest, facePath);
+    std::lock_guard lock(g_shapeMutex);
+    g_shapes.push_front({std::move(key), regions, shape});
+    if (g_shapes.size() > kShapeEntries)
+        g_shapes.pop_back();
+    return shape;
+}
+
+std::vector<ToneItem> computeTones(const RestShade &rest, const PosedShape &shape,
+                                   const FillShading &shading, QRgb color,
+                                   const DocumentSettings &settings)
+{
+    const geometry::Inflation &inflation = rest.inflation;
+    const Eigen::MatrixX2d &V = shape.V;
+    const Eigen::MatrixX3d &normals = shape.normals;
+    const std::vector<Eigen::MatrixX2d> &clip = shape.clip;
     const Eigen::Vector3d light =
         geometry::lightDirection(settings.lightAzimuth, settings.lightElevation);
     const Eigen::VectorXd lit = geometry::diffuseTerm(normals, light);
     std::vector<ToneItem> tones;
     const auto add = [&](const Eigen::VectorXd &value, double from, QRgb tone) {
-        QPainterPath path = pathOf(geometry::superLevelPieces(V, inflation.F, value, from));
+        QPainterPath path =
+            pathOf(geometry::toneRegion(V, inflation.F, rest.edges, value, from, clip));
         if (!path.isEmpty())
             tones.push_back({std::move(path), tone});
     };
@@ -135,8 +209,8 @@ QRgb baseTone(QRgb color, const FillShading &shading)
 }
 
 std::vector<ToneItem> faceTones(const StrokeGroup &group, const ObjectRegionsPtr &regions, int face,
-                                const FillShading &shading, QRgb color,
-                                const DocumentSettings &settings)
+                                const QPainterPath &facePath, const FillShading &shading,
+                                QRgb color, const DocumentSettings &settings)
 {
     if (!shading.shaded() || !regions || face < 0 || face >= regions->faceCount())
         return {};
@@ -154,7 +228,8 @@ std::vector<ToneItem> faceTones(const StrokeGroup &group, const ObjectRegionsPtr
     const RestShadePtr rest = restShade(group, regions, face);
     if (!rest)
         return {};
-    std::vector<ToneItem> tones = computeTones(group, *rest, shading, color, settings);
+    const PosedShapePtr shape = posedShape(group, regions, face, *rest, facePath);
+    std::vector<ToneItem> tones = computeTones(*rest, *shape, shading, color, settings);
     std::lock_guard lock(g_posedMutex);
     g_posed.push_front({std::move(key), regions, tones});
     if (g_posed.size() > kPosedEntries)

@@ -1,7 +1,9 @@
 // Inflating a face at rest and weighing its stroke controls (rest_shade.h).
 #include "rest_shade.h"
 
+#include <finbook/geometry/inflate/layers.h>
 #include <finbook/geometry/object_mesh.h>
+#include <finbook/model/stroke_input.h>
 
 #include <list>
 #include <mutex>
@@ -20,13 +22,38 @@ constexpr std::size_t kEntries = 128; // about 100 kB each
 std::mutex g_mutex;
 std::list<Entry> g_cache;
 
+// The region the face inflates as (geometry/inflate/layers.h): the topmost single stroke's
+// loop around it (an arm over the body inflates as the arm, the body beside it as the whole
+// body), else the face itself. Only the strokes on the face's boundary are tried.
+geometry::Region layerOf(const StrokeGroup &group, const ObjectRegions &regions, int face)
+{
+    const geometry::Regions &all = regions.regions();
+    const geometry::Face &f = all.faces[std::size_t(face)];
+    // The regions' inputs are the object's non-empty strokes, in order.
+    std::vector<const StrokeData *> inputs;
+    for (const Stroke &s : group.strokes)
+        if (s.data && !s.data->points.empty())
+            inputs.push_back(s.data.get());
+    std::vector<geometry::StrokeInput> boundary;
+    for (const int input : f.strokes)
+        if (input >= 0 && std::size_t(input) < inputs.size())
+            boundary.push_back(
+                strokeInput(inputs[std::size_t(input)]->points, inputs[std::size_t(input)]->width));
+    std::vector<geometry::Layer> layers = geometry::strokeLayers(boundary, all.closeGap);
+    for (geometry::Layer &layer : layers)
+        layer.stroke = f.strokes[std::size_t(layer.stroke)];
+    return geometry::layerRegion(layers, all, face);
+}
+
 RestShadePtr compute(const StrokeGroup &group, const ObjectRegions &regions, int face)
 {
     geometry::MeshOptions options;
     options.density = group.meshDensity > 0.0 ? std::min(group.meshDensity, 100.0) : 1.0;
     options.targetVertices = kShadeTargetVertices;
-    const auto mesh = geometry::buildObjectMesh(
-        geometry::Region{regions.regions().faces[std::size_t(face)].polygon}, options);
+    auto mesh = geometry::buildObjectMesh(layerOf(group, regions, face), options);
+    if (!mesh) // the face by itself, then
+        mesh = geometry::buildObjectMesh(
+            geometry::Region{regions.regions().faces[std::size_t(face)].polygon}, options);
     if (!mesh)
         return nullptr;
     auto inflation = geometry::inflateObjectMesh(*mesh);
@@ -34,6 +61,7 @@ RestShadePtr compute(const StrokeGroup &group, const ObjectRegions &regions, int
         return nullptr;
     auto shade = std::make_shared<RestShade>();
     shade->inflation = std::move(*inflation);
+    shade->edges = geometry::meshEdges(shade->inflation.F);
     std::size_t total = 0;
     for (const Stroke &s : group.strokes)
         total += s.data ? s.data->points.size() : 0;

@@ -4,6 +4,7 @@
 
 #include <finbook/geometry/inflate/inflation.h>
 #include <finbook/geometry/shade/pose.h>
+#include <finbook/geometry/shade/tone_region.h>
 #include <finbook/model/fill/fill_regions.h>
 
 #include <memory>
@@ -14,6 +15,7 @@ namespace finbook::model {
 
 struct RestShade {
     geometry::Inflation inflation;
+    geometry::MeshEdges edges;                 // of inflation.F, for tracing the tones
     geometry::PoseWeights weights;             // controls: the rows of `controls`
     std::vector<std::pair<int, int>> controls; // (stroke index, point index) of each control
 };

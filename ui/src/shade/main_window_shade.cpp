@@ -1,12 +1,30 @@
-// The main window's shading part: the Shading dock (issue 27), shown from View → Panels.
+// The main window's shading part: the Shading dock (issue 27), shown from View → Panels,
+// and the light handle on the canvas while it shows.
 #include "shading_panel.h"
 
+#include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/shade/light_handle.h>
 #include <finbook/ui/window/main_window.h>
 
 #include <QDockWidget>
 #include <QMenu>
 
 namespace finbook::ui {
+
+namespace {
+// Paints the light handle over the frame (the handle itself is the canvas's child).
+class LightHandleOverlay : public CanvasOverlay {
+public:
+    explicit LightHandleOverlay(LightHandle *handle)
+        : m_handle(handle)
+    {}
+    void paint(QPainter &painter, const QTransform &) override { m_handle->paint(painter); }
+
+private:
+    LightHandle *m_handle;
+};
+} // namespace
 
 void MainWindow::createShading()
 {
@@ -19,6 +37,8 @@ void MainWindow::createShading()
     addDockWidget(Qt::RightDockWidgetArea, dock);
     dock->hide();
     m_docksMenu->addAction(dock->toggleViewAction());
+    // While the panel shows, a sun on the canvas shows the light and drags it.
+    m_canvas->addOverlay(std::make_unique<LightHandleOverlay>(new LightHandle(m_canvas, dock)));
 }
 
 } // namespace finbook::ui

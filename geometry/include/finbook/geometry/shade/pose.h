@@ -41,7 +41,9 @@ struct PosedPoints {
     Eigen::VectorXd angle;
     Eigen::MatrixX2d turn; // n×2: cos, sin of angle
 };
-PosedPoints applyPose(const PoseWeights &weights, const Eigen::MatrixX2d &posed);
+// `withAngle` false leaves `angle` empty (one atan2 a point saved; `turn` is always filled).
+PosedPoints applyPose(const PoseWeights &weights, const Eigen::MatrixX2d &posed,
+                      bool withAngle = true);
 
 // The normals (n×3) turned in the drawing's plane by the angles (n): x, y rotate, z stays.
 Eigen::MatrixX3d rotateNormals(const Eigen::MatrixX3d &normals, const Eigen::VectorXd &angle);

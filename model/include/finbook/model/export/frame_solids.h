@@ -36,10 +36,12 @@ using SolidsProgress = std::function<bool(int done, int total)>;
 
 // Every visible object of `frame` with strokes, shaped from its displayed strokes
 // (posedStrokes) as meshing sees them (its mesh density, the document's gap closing), meshed
-// (geometry::buildObjectMesh), inflated and closed. A dot or a straight line (its pen band
-// would only make a bead or a rod), or an object that cannot be meshed or inflated, is
-// counted in `skipped`, never an error. nullopt only when `progress` cancelled.
-// Reads only its arguments: safe on a worker thread.
+// (geometry::buildObjectMesh), inflated and closed; an object whose every stroke closes a
+// region by itself (two or more: a body and an arm drawn over it) gets one closed solid per
+// stroke's region instead (geometry/inflate/layers.h), all in its one solid. A dot or a straight
+// line (its pen band would only make a bead or a rod), or an object that cannot be meshed or
+// inflated, is counted in `skipped`, never an error. nullopt only when `progress` cancelled. Reads
+// only its arguments: safe on a worker thread.
 std::optional<FrameSolids> frameSolids(const Frame &frame, const DocumentSettings &settings,
                                        const SolidsProgress &progress = {});
 

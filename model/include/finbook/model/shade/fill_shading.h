@@ -39,10 +39,11 @@ QRgb rimTone(QRgb color);
 QRgb baseTone(QRgb color, const FillShading &shading);
 
 // The tones of face `face` of `group`'s regions as it shows now (back to front), for a fill
-// of `color` shaded as `shading`, under the light of `settings`. Empty when the shading is
-// off or the face cannot be inflated (then the fill shows flat).
+// of `color` shaded as `shading`, under the light of `settings`, clipped to `facePath` (the
+// face as shown: regions->displayedPath(group, face)). Empty when the shading is off or the
+// face cannot be inflated (then the fill shows flat).
 std::vector<ToneItem> faceTones(const StrokeGroup &group, const ObjectRegionsPtr &regions, int face,
-                                const FillShading &shading, QRgb color,
-                                const DocumentSettings &settings);
+                                const QPainterPath &facePath, const FillShading &shading,
+                                QRgb color, const DocumentSettings &settings);
 
 } // namespace finbook::model
