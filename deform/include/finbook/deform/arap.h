@@ -68,9 +68,10 @@ struct ArapOptions {
     // Used by ArapMethod::TwoStep and by the three-argument arapSolve.
     int extraPasses = 0;
     ArapMethod method = ArapMethod::Refined;
-    // Refined, Drag: per-event budget in ms (or twice the modelled two steps, if more). It
+    // Refined, Drag: per-event budget in ms (or 3× the modelled two steps, if more). It
     // becomes a pass count from the mesh size (a cost model, never a clock), so a drag pose
-    // is a deterministic function of the pins; see ArapPrecompute::dragPasses.
+    // is a deterministic function of the pins (and of the start, for arapSolveFrom); see
+    // ArapPrecompute::dragPasses.
     double dragBudgetMs = 4.0;
     // Refined, Drag: at least / at most this many passes (a coarse start counts as one). Below
     // 2 a drag pose is barely better than the paper's; 35–70 fit 4 ms at 2k vertices (thin
