@@ -26,6 +26,7 @@ struct Workspace {
     Eigen::MatrixXcd mappedSteps, residualSteps;                          // freeCount × history
     std::vector<int> region, mark;                                        // flip repair
     Eigen::VectorXcd coarseRotations, coarseCovariance, coarseHandleTerm; // K each
+    Eigen::VectorXcd handleTargets; // handles: a warm start's targets while step 1 moves it
 };
 
 Workspace &workspace();

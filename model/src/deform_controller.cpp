@@ -235,6 +235,9 @@ void DeformController::solve(Id groupId, std::shared_ptr<const DeformSetup> setu
 {
     State &state = m_states[groupId];
     const bool newMesh = !state.setup || &state.setup->meshVertices() != &setup->meshVertices();
+    // The pose shown belongs to this very setup (same mesh, same pinned vertices): a drag
+    // event continues from it. The converged pose that follows is solved from the pins alone.
+    const bool sameSetup = state.setup == setup && state.vertices.rows() > 0;
     state.waiting = false;
     state.setup = setup;
     const StrokeGroup *g = m_doc->group(groupId);
@@ -246,7 +249,7 @@ void DeformController::solve(Id groupId, std::shared_ptr<const DeformSetup> setu
         const PoseStage stage = !refines        ? PoseStage::Final
                                 : m_previewOnly ? PoseStage::Preview
                                                 : PoseStage::Drag;
-        auto pose = solvePose(*setup, *g, stage);
+        auto pose = solvePose(*setup, *g, stage, {}, sameSetup ? &state.vertices : nullptr);
         if (!pose) {
             state.error = pose.error();
             emit errorOccurred(groupId, state.error);

@@ -143,7 +143,8 @@ bool sameSolverOptions(const deform::ArapOptions &a, const deform::ArapOptions &
 }
 
 Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &group,
-                                  PoseStage stage, const std::function<bool()> &cancelled)
+                                  PoseStage stage, const std::function<bool()> &cancelled,
+                                  const Eigen::MatrixX2d *dragStart)
 {
     Pose pose;
     Eigen::MatrixX2d points;
@@ -160,7 +161,8 @@ Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &g
             return unexpected(Deformation::tr("The object has no mesh to deform."));
         const geometry::ObjectMesh &mesh = setup.meshed->mesh;
         if (setup.pins && group.rig.pins.size() == setup.rest.pins.size()) {
-            auto solved = solvePins(*setup.meshed, *setup.pins, group.rig.pins, stage, cancelled);
+            auto solved =
+                solvePins(*setup.meshed, *setup.pins, group.rig.pins, stage, cancelled, dragStart);
             if (!solved)
                 return unexpected(solved.error());
             pose.vertices = std::move(*solved);

@@ -18,7 +18,11 @@ namespace finbook::bench {
 // Columns: ratios of the cotangent ARAP energy (arapCotangentEnergy) to the reference's, area
 // change in %, flipped triangles (and those not flipped in the reference), times in ms
 // (fastest of several runs), passes run, drag_over_two_step (drag time over the two steps'),
-// the stored pose's last relative energy change.
+// the stored pose's last relative energy change. drag_* is one cold drag event to the bend's
+// targets (arapSolve, Drag: from step 1 or coarse rotations, what every event of a drag
+// would be without a warm start); warm_* the last event of the bend reached in 30 events,
+// each started from the previous event's pose (arapSolveFrom), warm_ms the median event and
+// warm_event_max_ms the slowest; fast_* the same in 3 events.
 // With a dumpDirectory, also writes the bend and the reference pose there as text (see dump
 // in arap_quality.cpp) for checking against another solver.
 QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees,

@@ -117,6 +117,7 @@ private slots:
     void pinCommandsUndoExactly();
     void onePinTranslates();
     void dragSolvesSynchronouslyAndMergesPerDrag();
+    void storedPoseIgnoresTheDragPath();
     void bakeMakesPoseTheRestAndUndoes();
     void duplicatedFrameSharesSetupButNotPins();
     void extraPassesReprepareAndStayStateless();
@@ -196,6 +197,39 @@ void TestDeformService::dragSolvesSynchronouslyAndMergesPerDrag()
             QVERIFY(std::isfinite(p.x) && std::isfinite(p.y));
     doc.undoStack()->undo(); // the whole drag at once
     QVERIFY(maxDistance(doc.group(g)->deformed->strokes[0], restPose->strokes[0]) < 1e-3);
+}
+
+// Drag events continue from the pose shown (issue 26), but the pose kept once the pins rest is
+// solved from the pins alone: two different drags to the same place store the same points.
+void TestDeformService::storedPoseIgnoresTheDragPath()
+{
+    Document doc;
+    const Id g = makeArm(doc);
+    DeformController controller(&doc);
+    controller.setSettleDelay(1000000); // settled only when asked
+    pinBothEnds(doc, g);
+    QVERIFY(waitSolved(controller, g));
+    const Id tip = doc.group(g)->rig.pins[1].id;
+    for (int step = 1; step <= 12; ++step)
+        doc.undoStack()->push(
+            new MovePinCommand(&doc, g, tip, QPointF(400 - 8 * step, 100 + 12 * step), 5));
+    QVERIFY(controller.isSettling(g));
+    const auto dragged = doc.group(g)->deformed;
+    controller.settle();
+    const auto stored = doc.group(g)->deformed;
+    QVERIFY(!controller.isSettling(g));
+    const auto direct = solvePose(*controller.setup(g), *doc.group(g), PoseStage::Final);
+    QVERIFY(direct);
+    QCOMPARE(*stored, *direct->strokes);
+    QVERIFY(maxDistance(dragged->strokes[0], stored->strokes[0]) < 5.0); // the drag was close
+    // Another way there: one jump far past the target, then back in two events.
+    doc.undoStack()->undo();
+    doc.undoStack()->push(new MovePinCommand(&doc, g, tip, {150, 380}, 6));
+    doc.undoStack()->push(new MovePinCommand(&doc, g, tip, {250, 300}, 6));
+    doc.undoStack()->push(new MovePinCommand(&doc, g, tip, {304, 244}, 6));
+    QVERIFY(controller.isSettling(g));
+    controller.settle();
+    QCOMPARE(*doc.group(g)->deformed, *stored);
 }
 
 void TestDeformService::bakeMakesPoseTheRestAndUndoes()
@@ -278,6 +312,8 @@ void TestDeformService::reopenedFileContinuesWhereItStopped()
         QVERIFY(waitSolved(controller, g));
         doc.undoStack()->push(
             new MovePinCommand(&doc, g, doc.group(g)->rig.pins[1].id, {380, 200}, 1));
+        // As the app saves: the converged pose (a drag pose depends on the drag's path).
+        controller.settle();
         QVERIFY(!saveFinbook(doc, path));
     }
     Document reopened;
@@ -286,10 +322,12 @@ void TestDeformService::reopenedFileContinuesWhereItStopped()
     QVERIFY(r && r->isDeformed());
     QCOMPARE(r->rig.pins, doc.group(g)->rig.pins);
     QCOMPARE(*r->deformed, *doc.group(g)->deformed); // shown at once, without solving
-    // Dragging on: the same solver gives the same pose for the same targets, then follows.
+    // Dragging on: the same solver gives the same converged pose for the same targets, then
+    // follows.
     DeformController controller(&reopened);
     controller.prepare(g);
     QVERIFY(waitSolved(controller, g));
+    controller.settle();
     QCOMPARE(*reopened.group(g)->deformed, *doc.group(g)->deformed);
     reopened.undoStack()->push(new MovePinCommand(&reopened, g, r->rig.pins[1].id, {380, 260}, 1));
     QVERIFY(reopened.group(g)->deformed->strokes[0].back().y > 230);

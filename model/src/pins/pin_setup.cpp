@@ -25,7 +25,8 @@ buildPinSetup(const MeshedObject &meshed, const std::vector<Pin> &pins,
 
 Expected<Eigen::MatrixX2d, QString> solvePins(const MeshedObject &meshed, const PinSetup &setup,
                                               const std::vector<Pin> &pins, PoseStage stage,
-                                              const std::function<bool()> &cancelled)
+                                              const std::function<bool()> &cancelled,
+                                              const Eigen::MatrixX2d *dragStart)
 {
     // A pin drags its vertex by the pin's own displacement, so a pin that did not land
     // exactly on a vertex still moves the drawing under it by what the user dragged.
@@ -37,8 +38,9 @@ Expected<Eigen::MatrixX2d, QString> solvePins(const MeshedObject &meshed, const 
             meshed.mesh.V.row(setup.pinVertex(row)) + Eigen::RowVector2d(delta.x(), delta.y());
     }
     Eigen::MatrixX2d U;
-    auto solved = stage == PoseStage::Preview
-                      ? deform::arapSolve(*setup.arap, bc, U)
+    auto solved = stage == PoseStage::Preview ? deform::arapSolve(*setup.arap, bc, U)
+                  : stage == PoseStage::Drag && dragStart
+                      ? deform::arapSolveFrom(*setup.arap, bc, *dragStart, U)
                       : deform::arapSolve(*setup.arap, bc, U,
                                           stage == PoseStage::Drag ? deform::ArapStage::Drag
                                                                    : deform::ArapStage::Final,

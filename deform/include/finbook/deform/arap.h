@@ -68,9 +68,10 @@ struct ArapOptions {
     // Used by ArapMethod::TwoStep and by the three-argument arapSolve.
     int extraPasses = 0;
     ArapMethod method = ArapMethod::Refined;
-    // Refined, Drag: per-event budget in ms (or twice the modelled two steps, if more). It
+    // Refined, Drag: per-event budget in ms (or 3× the modelled two steps, if more). It
     // becomes a pass count from the mesh size (a cost model, never a clock), so a drag pose
-    // is a deterministic function of the pins; see ArapPrecompute::dragPasses.
+    // is a deterministic function of the pins (and of the start, for arapSolveFrom); see
+    // ArapPrecompute::dragPasses.
     double dragBudgetMs = 4.0;
     // Refined, Drag: at least / at most this many passes (a coarse start counts as one). Below
     // 2 a drag pose is barely better than the paper's; 35–70 fit 4 ms at 2k vertices (thin
@@ -115,6 +116,9 @@ struct ArapPrecompute {
     // cost model below; estimatedPassMs is that model's cost of one pass on the reference
     // machine (the 2-core development machine): Final costs about that per pass it runs.
     int dragPasses = 0;
+    // Refined, Drag started from the previous event's pose (arapSolveFrom): no step 1 or
+    // coarse start to pay for, so the same budget holds more passes.
+    int warmDragPasses = 0;
     double estimatedPassMs = 0.0;
     double objectSize = 0.0;        // bounding-box diagonal of the solved components (rest)
     Eigen::Index pinEntryCount = 0; // rows of b as passed; bc must have as many rows
@@ -238,6 +242,18 @@ ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc
 ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
                           Eigen::MatrixX2d &U, ArapStage stage,
                           const std::function<bool()> &cancelled = {});
+
+// A drag event started from `start` (n×2: the pose the previous event of this drag returned, or
+// the stored pose the drag began from) instead of from step 1 or the coarse rotations: with
+// Refined, data.warmDragPasses accelerated passes from there, then the flip repair, as the Drag
+// stage. Each event then only corrects how far the pins moved since the last one, so along a
+// drag the pose stays close to the converged one, where a cold event's few passes on a large
+// mesh cannot reach it. The pose depends on the drag's path, so it is only for showing a
+// drag: the stored pose is the Final stage's, a pure function of the pins. With TwoStep, or a
+// start of the wrong size or with a non-finite or out-of-range coordinate, it is the Drag
+// stage's pose (start ignored). Errors as the three-argument form.
+ArapSolveResult arapSolveFrom(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
+                              const Eigen::MatrixX2d &start, Eigen::MatrixX2d &U);
 
 // Step 1 only (the similarity result v′ the paper starts step 2 from); same contract as
 // arapSolve. Exposed for tests and for showing what step 2 corrects.

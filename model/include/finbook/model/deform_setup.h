@@ -89,14 +89,18 @@ enum class PoseStage { Preview, Drag, Final };
 
 // Solves the pose for the rig's current targets: the deformed mesh vertices (n×2, rows of
 // meshVertices()) and the deformed strokes. A pure function of the setup, the targets and the
-// stage. `cancelled` is polled between refinement passes.
+// stage, and for a Drag pose of pins of `dragStart` when given: the pose the drag showed last
+// for this setup (meshVertices() rows), which the event continues from (deform::
+// arapSolveFrom); other stages and kinds ignore it. `cancelled` is polled between refinement
+// passes.
 struct Pose {
     Eigen::MatrixX2d vertices;
     DeformedStrokesPtr strokes;
 };
 Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &group,
                                   PoseStage stage = PoseStage::Final,
-                                  const std::function<bool()> &cancelled = {});
+                                  const std::function<bool()> &cancelled = {},
+                                  const Eigen::MatrixX2d *dragStart = nullptr);
 
 // Deformed strokes from one deformed position per rest point (rows in stroke order, as
 // MeshedObject::strokeOffsets counts them); pressures are the rest ones.

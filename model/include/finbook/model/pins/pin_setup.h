@@ -17,9 +17,11 @@ buildPinSetup(const MeshedObject &meshed, const std::vector<Pin> &pins,
               const deform::ArapOptions &options, const std::function<bool()> &cancelled);
 
 // Deformed mesh vertices (n×2) for the pins' targets. `pins` must match the setup's rest
-// definition (same count and order).
+// definition (same count and order). A Drag pose continues from `dragStart` when given (see
+// solvePose).
 Expected<Eigen::MatrixX2d, QString> solvePins(const MeshedObject &meshed, const PinSetup &setup,
                                               const std::vector<Pin> &pins, PoseStage stage,
-                                              const std::function<bool()> &cancelled = {});
+                                              const std::function<bool()> &cancelled = {},
+                                              const Eigen::MatrixX2d *dragStart = nullptr);
 
 } // namespace finbook::model

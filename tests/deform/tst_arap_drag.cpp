@@ -1,0 +1,231 @@
+// Warm-started drag events (issue 26): each event of a drag continues from the pose the one
+// before returned (arapSolveFrom), so along a drag the pose stays near the converged one where
+// a cold event's few passes on a large mesh cannot reach it; the stored pose stays a pure
+// function of the pins whatever the drag did, and bad or degenerate starts never give NaN.
+#include "arap_test_support.h"
+#include "grid_mesh.h"
+
+#include <finbook/deform/arap.h>
+
+#include <QTest>
+
+#include <cstring>
+#include <limits>
+
+using namespace finbook::deform;
+using finbook::test::GridMesh;
+using finbook::test::precompute;
+using finbook::test::solved;
+
+namespace {
+
+bool sameBits(const Eigen::MatrixX2d &A, const Eigen::MatrixX2d &B)
+{
+    return A.rows() == B.rows() && A.size() > 0 &&
+           std::memcmp(A.data(), B.data(), sizeof(double) * std::size_t(A.size())) == 0;
+}
+
+// Both end columns of a bar pinned, the right end turned by `angle` about the left end's
+// middle: a bend.
+struct Bend {
+    Eigen::VectorXi b;
+    Eigen::MatrixX2d bc;
+};
+
+Bend bendEnds(const GridMesh &g, double angle)
+{
+    Bend bend;
+    bend.b.resize(2 * (g.rows + 1));
+    for (int r = 0; r <= g.rows; ++r) {
+        bend.b(2 * r) = g.vertex(0, r);
+        bend.b(2 * r + 1) = g.vertex(g.columns, r);
+    }
+    bend.bc = finbook::test::rowsOf(g.V, bend.b);
+    const Eigen::RowVector2d pivot(0.0, 0.5);
+    Eigen::Matrix2d R;
+    R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+    for (Eigen::Index k = 1; k < bend.b.size(); k += 2)
+        bend.bc.row(k) = pivot + (bend.bc.row(k) - pivot) * R.transpose();
+    return bend;
+}
+
+// The bend reached in `events` warm events from the rest pose; the last event's pose.
+Eigen::MatrixX2d warmDrag(const ArapPrecompute &d, const GridMesh &g, double angle, int events,
+                          ArapSolveReport *report = nullptr)
+{
+    Eigen::MatrixX2d U = g.V;
+    for (int e = 1; e <= events; ++e) {
+        const Eigen::MatrixX2d start = U;
+        auto result = arapSolveFrom(d, bendEnds(g, angle * e / events).bc, start, U);
+        if (!result) {
+            qWarning("solve failed: %s", result.error().message.c_str());
+            return {};
+        }
+        if (report)
+            *report = *result;
+    }
+    return U;
+}
+
+ArapOptions convergedReference()
+{
+    ArapOptions o;
+    o.finalTolerance = 1e-11;
+    o.finalEnergyTolerance = 0.0;
+    o.finalPassCap = 20000;
+    o.fixFlips = false;
+    return o;
+}
+
+} // namespace
+
+class TestArapDrag : public QObject {
+    Q_OBJECT
+
+private slots:
+    void warmDragIsCloserThanColdEvents();
+    void storedPoseIgnoresTheDragPath();
+    void warmStartKeepsRigidMotionsRigid();
+    void badStartsFallBackToTheColdEvent();
+    void degenerateDragsStayFinite();
+};
+
+// 10k vertices: the budget holds a few passes, so a cold event starts from the clustered
+// rotations and stays above the optimum; after a drag of 20 events the warm pose is at
+// least as close, the pins hold, more passes fit an event than a cold one runs, and events
+// that keep the targets converge to the optimum.
+void TestArapDrag::warmDragIsCloserThanColdEvents()
+{
+    const GridMesh g = finbook::test::gridMesh(200, 50, 4.0, 1.0, 0.2);
+    const double angle = 1.0;
+    const Bend bend = bendEnds(g, angle);
+    const auto data = precompute(g.V, g.F, bend.b);
+    const auto reference = precompute(g.V, g.F, bend.b, convergedReference());
+    QVERIFY(data && reference);
+    QVERIFY(data->warmDragPasses > data->dragPasses);
+    const double optimum =
+        arapCotangentEnergy(g.V, g.F, solved(*reference, bend.bc, ArapStage::Final));
+    const double cold =
+        arapCotangentEnergy(g.V, g.F, solved(*data, bend.bc, ArapStage::Drag)) / optimum;
+    ArapSolveReport report;
+    const Eigen::MatrixX2d U = warmDrag(*data, g, angle, 20, &report);
+    QVERIFY(U.rows() == g.V.rows());
+    const double warm = arapCotangentEnergy(g.V, g.F, U) / optimum;
+    QVERIFY2(warm <= cold, qPrintable(QStringLiteral("warm %1, cold %2").arg(warm).arg(cold)));
+    QVERIFY(report.passes >= data->warmDragPasses);
+    QCOMPARE(finbook::test::rowsOf(U, bend.b), bend.bc);
+    // The mouse held still: events at the same targets converge (here from 1.095× in 20).
+    Eigen::MatrixX2d still = U;
+    for (int e = 0; e < 20; ++e) {
+        const Eigen::MatrixX2d start = still;
+        QVERIFY(arapSolveFrom(*data, bend.bc, start, still));
+    }
+    const double settled = arapCotangentEnergy(g.V, g.F, still) / optimum;
+    QVERIFY2(settled <= 1.01, qPrintable(QString::number(settled)));
+}
+
+// The stored (Final) pose after any drag is the same bits as without one: fast, slow, and a
+// drag that went far past the target and came back.
+void TestArapDrag::storedPoseIgnoresTheDragPath()
+{
+    const GridMesh g = finbook::test::gridMesh(40, 10, 4.0, 1.0, 0.2);
+    const Bend bend = bendEnds(g, 0.8);
+    const auto data = precompute(g.V, g.F, bend.b);
+    QVERIFY(data);
+    const Eigen::MatrixX2d direct = solved(*data, bend.bc, ArapStage::Final);
+    for (const int events : {1, 3, 25}) {
+        QVERIFY(warmDrag(*data, g, 0.8, events).rows() == g.V.rows());
+        QVERIFY(sameBits(solved(*data, bend.bc, ArapStage::Final), direct));
+    }
+    Eigen::MatrixX2d U = warmDrag(*data, g, 2.5, 10);
+    for (int e = 0; e < 5; ++e) {
+        const Eigen::MatrixX2d start = U;
+        QVERIFY(arapSolveFrom(*data, bendEnds(g, 2.5 - 1.7 * (e + 1) / 5).bc, start, U));
+    }
+    QVERIFY(sameBits(solved(*data, bend.bc, ArapStage::Final), direct));
+}
+
+// All pins moved by one rigid motion, event by event: every warm pose is that motion of the
+// rest shape (the start's correction by step 1 is rigid, and so is every pass from there).
+void TestArapDrag::warmStartKeepsRigidMotionsRigid()
+{
+    const GridMesh g = finbook::test::gridMesh(60, 15, 4.0, 1.0, 0.2);
+    const Bend rest = bendEnds(g, 0.0);
+    const auto data = precompute(g.V, g.F, rest.b);
+    QVERIFY(data);
+    Eigen::MatrixX2d U = g.V;
+    for (int e = 1; e <= 8; ++e) {
+        const Eigen::MatrixX2d expected =
+            finbook::test::rigidlyMoved(g.V, 0.4 * e, Eigen::Vector2d(15.0 * e, -4.0 * e));
+        const Eigen::MatrixX2d start = U;
+        QVERIFY(arapSolveFrom(*data, finbook::test::rowsOf(expected, rest.b), start, U));
+        const double error = (U - expected).rowwise().norm().maxCoeff();
+        QVERIFY2(error <= 1e-9 * 130.0, qPrintable(QString::number(error)));
+    }
+}
+
+// A start of the wrong size, with NaN or beyond the coordinate range is not used: the event
+// is the cold one, bit for bit; with the paper's method the start is ignored.
+void TestArapDrag::badStartsFallBackToTheColdEvent()
+{
+    const GridMesh g = finbook::test::gridMesh(40, 10, 4.0, 1.0, 0.2);
+    const Bend bend = bendEnds(g, 0.8);
+    const auto data = precompute(g.V, g.F, bend.b);
+    ArapOptions paper;
+    paper.method = ArapMethod::TwoStep;
+    paper.extraPasses = 1;
+    const auto exact = precompute(g.V, g.F, bend.b, paper);
+    QVERIFY(data && exact);
+    const Eigen::MatrixX2d cold = solved(*data, bend.bc, ArapStage::Drag);
+    Eigen::MatrixX2d withNaN = g.V, huge = g.V;
+    withNaN(3, 1) = std::numeric_limits<double>::quiet_NaN();
+    huge(5, 0) = 1e200;
+    for (const Eigen::MatrixX2d &start :
+         {Eigen::MatrixX2d(g.V.topRows(10)), Eigen::MatrixX2d(), withNaN, huge}) {
+        Eigen::MatrixX2d U;
+        QVERIFY(arapSolveFrom(*data, bend.bc, start, U));
+        QVERIFY(sameBits(U, cold));
+    }
+    Eigen::MatrixX2d U;
+    QVERIFY(arapSolveFrom(*exact, bend.bc, g.V, U));
+    QVERIFY(sameBits(U, solved(*exact, bend.bc, ArapStage::Drag)));
+    // Bad targets are reported as by arapSolve.
+    Eigen::MatrixX2d badTargets = bend.bc;
+    badTargets(0, 0) = std::numeric_limits<double>::infinity();
+    const auto result = arapSolveFrom(*data, badTargets, g.V, U);
+    QVERIFY(!result);
+    QCOMPARE(result.error().code, DeformErrorCode::NonFiniteInput);
+}
+
+// Pins dragged onto one point collapse the pose; dragging on from there (the start is a
+// point), and back out again, stays finite with the pins where they were put.
+void TestArapDrag::degenerateDragsStayFinite()
+{
+    for (const int columns : {40, 200}) { // plain passes; coarse rotations
+        const GridMesh g = finbook::test::gridMesh(columns, columns / 4, 4.0, 1.0, 0.2);
+        const Bend bend = bendEnds(g, 0.8);
+        const auto data = precompute(g.V, g.F, bend.b);
+        QVERIFY(data);
+        Eigen::MatrixX2d U = g.V;
+        const Eigen::MatrixX2d onePoint = Eigen::MatrixX2d::Constant(bend.b.size(), 2, 0.5);
+        const Eigen::MatrixX2d onLine = [&] {
+            Eigen::MatrixX2d m = bend.bc;
+            m.col(1).setConstant(0.5);
+            return m;
+        }();
+        for (const Eigen::MatrixX2d &bc :
+             {onePoint, onePoint, onLine, bend.bc, onePoint, bend.bc}) {
+            const Eigen::MatrixX2d start = U;
+            QVERIFY(arapSolveFrom(*data, bc, start, U));
+            QVERIFY(U.allFinite() && U.rows() == g.V.rows());
+            QCOMPARE(finbook::test::rowsOf(U, bend.b), bc);
+        }
+        // Starting from a pose collapsed to one point.
+        const Eigen::MatrixX2d point = Eigen::MatrixX2d::Constant(g.V.rows(), 2, 0.5);
+        QVERIFY(arapSolveFrom(*data, bend.bc, point, U));
+        QVERIFY(U.allFinite());
+    }
+}
+
+QTEST_APPLESS_MAIN(TestArapDrag)
+#include "tst_arap_drag.moc"
