@@ -1,5 +1,6 @@
 // importReferenceFile: reading a picture or video file into a Reference, refusing what does
 // not decode before anything in the document changes.
+#include "reference_files.h"
 #include "video_decoder.h"
 
 #include <finbook/model/reference/reference_media.h>
@@ -25,24 +26,48 @@ bool qtReadsStill(const QByteArray &bytes)
 }
 } // namespace
 
+namespace reference_detail {
+
+QString referenceRefusal(const QString &path, const QString &why)
+{
+    return QCoreApplication::translate("Reference", "“%1” cannot be used as a reference: %2")
+        .arg(QFileInfo(path).fileName(), why);
+}
+
+Expected<QByteArray, QString> readReferenceFile(const QString &path, qint64 limit,
+                                                const QString &tooLarge)
+{
+    QFile file(path);
+    if (!QFileInfo(path).isFile() || !file.open(QIODevice::ReadOnly))
+        return unexpected(referenceRefusal(
+            path, QCoreApplication::translate(
+                      "Reference", "It cannot be read (is it there, and may Finbook read it?).")));
+    if (file.size() > limit)
+        return unexpected(referenceRefusal(path, tooLarge));
+    QByteArray bytes = file.readAll();
+    if (bytes.size() > limit) // it grew while being read
+        return unexpected(referenceRefusal(path, tooLarge));
+    if (bytes.isEmpty())
+        return unexpected(
+            referenceRefusal(path, QCoreApplication::translate("Reference", "It is empty.")));
+    return bytes;
+}
+
+} // namespace reference_detail
+
 Expected<Reference, QString> importReferenceFile(const QString &path, QSizeF canvas)
 {
     const QString name = QFileInfo(path).fileName();
-    const auto refuse = [&name](const QString &why) {
-        return unexpected(
-            QCoreApplication::translate("Reference", "“%1” cannot be used as a reference: %2")
-                .arg(name, why));
+    const auto refuse = [&path](const QString &why) {
+        return unexpected(reference_detail::referenceRefusal(path, why));
     };
-    QFile file(path);
-    if (!QFileInfo(path).isFile() || !file.open(QIODevice::ReadOnly))
-        return refuse(QCoreApplication::translate(
-            "Reference", "It cannot be read (is it there, and may Finbook read it?)."));
-    if (file.size() > kMaxReferenceBytes)
-        return refuse(QCoreApplication::translate("Reference", "It is larger than %1 MB.")
-                          .arg(kMaxReferenceBytes >> 20));
-    const QByteArray bytes = file.readAll();
-    if (bytes.isEmpty())
-        return refuse(QCoreApplication::translate("Reference", "It is empty."));
+    const auto read = reference_detail::readReferenceFile(
+        path, kMaxReferenceBytes,
+        QCoreApplication::translate("Reference", "It is larger than %1 MB.")
+            .arg(kMaxReferenceBytes >> 20));
+    if (!read)
+        return unexpected(read.error());
+    const QByteArray &bytes = *read;
 
     Reference reference;
     reference.name = name;

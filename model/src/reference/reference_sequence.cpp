@@ -1,10 +1,11 @@
 // Image sequences as a reference: finding the numbered run a picture belongs to, and reading
 // several pictures into one Sequence reference, refusing before anything in the document changes.
+#include "reference_files.h"
+
 #include <finbook/model/reference/reference_media.h>
 
 #include <QCoreApplication>
 #include <QDir>
-#include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 
@@ -82,30 +83,21 @@ Expected<Reference, QString> importReferenceSequence(const QStringList &paths, Q
     reference.kind = ReferenceKind::Sequence;
     reference.name = QFileInfo(paths.front()).fileName();
     qint64 total = 0;
+    const QString tooLarge =
+        QCoreApplication::translate("Reference", "The pictures together are larger than %1 MB.")
+            .arg(kMaxReferenceBytes >> 20);
     for (const QString &path : paths) {
-        const QString name = QFileInfo(path).fileName();
-        const auto refuse = [&name](const QString &why) {
-            return unexpected(
-                QCoreApplication::translate("Reference", "“%1” cannot be used as a reference: %2")
-                    .arg(name, why));
-        };
-        QFile file(path);
-        if (!QFileInfo(path).isFile() || !file.open(QIODevice::ReadOnly))
-            return refuse(QCoreApplication::translate(
-                "Reference", "It cannot be read (is it there, and may Finbook read it?)."));
-        total += file.size();
-        if (total > kMaxReferenceBytes)
-            return refuse(QCoreApplication::translate(
-                              "Reference", "The pictures together are larger than %1 MB.")
-                              .arg(kMaxReferenceBytes >> 20));
-        const QByteArray bytes = file.readAll();
-        if (bytes.isEmpty())
-            return refuse(QCoreApplication::translate("Reference", "It is empty."));
+        const auto read =
+            reference_detail::readReferenceFile(path, kMaxReferenceBytes - total, tooLarge);
+        if (!read)
+            return unexpected(read.error());
+        const QByteArray &bytes = *read;
+        total += bytes.size();
         // Each picture is decoded once now (and dropped): one that would not decode later
         // is refused before the document changes, not shown as a gap.
         const auto media = ReferenceMedia::open(ReferenceKind::Image, bytes);
         if (!media)
-            return refuse(media.error());
+            return unexpected(reference_detail::referenceRefusal(path, media.error()));
         if (reference.pictures.isEmpty())
             reference.mediaSize = QSizeF((*media)->size());
         reference.pictures << bytes;
