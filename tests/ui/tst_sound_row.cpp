@@ -19,7 +19,9 @@
 #include <finbook/ui/timeline/timeline_widget.h>
 #include <finbook/ui/window/editor_state.h>
 
+#include <QDockWidget>
 #include <QLabel>
+#include <QMainWindow>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -88,6 +90,7 @@ private slots:
     void playbackFollowsTheSoundClockSilently();
     void steppingPlaysTheSliceUnderTheFrame();
     void exportDialogSaysWhichFormatsHaveSound();
+    void rowNeverCoversTheFrames();
 };
 
 void TestSoundRow::importAddsOneUndoableClipAtTheCurrentFrame()
@@ -232,6 +235,50 @@ void TestSoundRow::exportDialogSaysWhichFormatsHaveSound()
         QVERIFY2(status(format).contains(QStringLiteral("carries the soundtrack")),
                  qPrintable(status(format)));
     QVERIFY(status(model::ExportFormat::Html).contains(QStringLiteral("presses Play")));
+}
+
+// In a window as the app lays it out (a bottom dock under a canvas), the dock asks for the
+// header, a readable frame strip and the sound row: the row lies under the thumbnails, not
+// over them. The dock used to ask for a fixed 120 px, too little once the row was added, and
+// the row covered the thumbnails' lower part and the strip's scroll bar.
+void TestSoundRow::rowNeverCoversTheFrames()
+{
+    Document doc;
+    for (int i = 0; i < 12; ++i)
+        doc.undoStack()->push(new model::InsertFrameCommand(&doc, i));
+    ui::EditorState state(&doc);
+    ui::PlaybackController playback(&state);
+    QMainWindow window;
+    auto *canvas = new QWidget(&window);
+    canvas->setMinimumSize(200, 150);
+    window.setCentralWidget(canvas);
+    auto *timeline = new ui::TimelineWidget(&state, nullptr, &playback);
+    auto *sound = new ui::SoundController(&state, &playback, timeline, timeline);
+    sound->player()->setAudioOutputAllowed(false);
+    auto *row = new ui::SoundRow(sound, timeline->view());
+    timeline->addBelowFrames(row);
+    auto *dock = new QDockWidget(QStringLiteral("Timeline"), &window);
+    dock->setWidget(timeline);
+    window.addDockWidget(Qt::BottomDockWidgetArea, dock);
+    window.resize(1280, 860);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QCoreApplication::processEvents();
+
+    ui::TimelineView *view = timeline->view();
+    QVERIFY2(view->geometry().bottom() < row->geometry().top(),
+             qPrintable(QStringLiteral("strip ends at %1, the sound row starts at %2")
+                            .arg(view->geometry().bottom())
+                            .arg(row->geometry().top())));
+    QVERIFY(row->geometry().bottom() < timeline->height());
+    QVERIFY(view->height() >= view->minimumHeight());
+    // The cells fit the strip: no thumbnail is cut at the bottom.
+    const QRect cell = view->visualRect(view->model()->index(0, 0));
+    QVERIFY(cell.isValid());
+    QVERIFY2(cell.bottom() <= view->viewport()->height(),
+             qPrintable(QStringLiteral("cell ends at %1 in a viewport of %2")
+                            .arg(cell.bottom())
+                            .arg(view->viewport()->height())));
 }
 
 QTEST_MAIN(TestSoundRow)

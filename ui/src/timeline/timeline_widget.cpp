@@ -50,6 +50,16 @@ void TimelineWidget::addBelowFrames(QWidget *row)
     layout()->addWidget(row);
 }
 
+QSize TimelineWidget::minimumSizeHint() const
+{
+    return {200, layout()->minimumSize().height()};
+}
+
+QSize TimelineWidget::sizeHint() const
+{
+    return {800, minimumSizeHint().height() + 30};
+}
+
 QWidget *TimelineWidget::createHeader(PlaybackController *playback)
 {
     auto *header = new QWidget(this);

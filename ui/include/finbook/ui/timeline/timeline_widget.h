@@ -41,8 +41,10 @@ public:
     // Adds a row under the frame strip (the sound row), reparented to this widget.
     void addBelowFrames(QWidget *row);
 
-    QSize sizeHint() const override { return {800, 120}; }
-    QSize minimumSizeHint() const override { return {200, 90}; }
+    // The header, the frame strip at its least readable height and every row under it: the
+    // dock asks for that much, so rows added under the frames never cover the thumbnails.
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
 
 private:
     QWidget *createHeader(PlaybackController *playback);
