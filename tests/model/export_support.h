@@ -62,6 +62,15 @@ inline QString program(const char *name)
     return QStandardPaths::findExecutable(QString::fromLatin1(name));
 }
 
+// The headless browser the HTML flipbook tests open pages in; empty when none is installed.
+inline QString chromium()
+{
+    for (const char *name : {"chromium", "chromium-browser", "google-chrome"})
+        if (const QString path = program(name); !path.isEmpty())
+            return path;
+    return {};
+}
+
 // ffprobe's JSON for the first video stream and the container, frames counted by decoding.
 inline QJsonObject probe(const QString &path, QString *error = nullptr)
 {

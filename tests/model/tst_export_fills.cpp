@@ -91,14 +91,6 @@ double pathArea(const QString &d)
     }
     return std::abs(area) / 2;
 }
-
-QString chromium()
-{
-    for (const char *name : {"chromium", "chromium-browser", "google-chrome"})
-        if (const QString path = program(name); !path.isEmpty())
-            return path;
-    return {};
-}
 } // namespace
 
 class TestExportFills : public QObject {

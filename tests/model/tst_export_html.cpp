@@ -17,14 +17,6 @@ using namespace finbook::test;
 
 namespace {
 
-QString chromium()
-{
-    for (const char *name : {"chromium", "chromium-browser", "google-chrome"})
-        if (const QString path = program(name); !path.isEmpty())
-            return path;
-    return {};
-}
-
 // Runs headless Chromium on `url` for `virtualMs` of page time; returns its screenshot.
 QImage screenshot(const QString &url, int virtualMs, const QString &file)
 {

@@ -23,14 +23,6 @@ using namespace finbook::test;
 
 namespace {
 
-QString chromium()
-{
-    for (const char *name : {"chromium", "chromium-browser", "google-chrome"})
-        if (const QString path = program(name); !path.isEmpty())
-            return path;
-    return {};
-}
-
 // Drives the flipbook once its sound's length is known; each step's state goes into
 // <pre id="result"> as JSON. The page's own policy allows inline scripts only, as this is.
 constexpr char kProbe[] = R"JS(
