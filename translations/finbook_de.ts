@@ -298,17 +298,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="103"/>
+        <location filename="../app/cli.cpp" line="146"/>
         <source>No command given; see finbook --help.</source>
         <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="107"/>
+        <location filename="../app/cli.cpp" line="150"/>
         <source>Usage: finbook info FILE</source>
         <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="119"/>
+        <location filename="../app/cli.cpp" line="162"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
@@ -536,12 +536,12 @@
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="152"/>
+        <location filename="../model/src/deform_setup.cpp" line="153"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>Der Käfig wurde geändert, während er vorbereitet wurde.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="160"/>
+        <location filename="../model/src/deform_setup.cpp" line="161"/>
         <source>The object has no mesh to deform.</source>
         <translation>Das Objekt hat kein Netz, das sich verformen ließe.</translation>
     </message>
@@ -551,12 +551,12 @@
         <translation>Die Pins lassen sich auf dieser Zeichnung nicht berechnen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/pins/pin_setup.cpp" line="47"/>
+        <location filename="../model/src/pins/pin_setup.cpp" line="49"/>
         <source>The pins could not be solved: %1</source>
         <translation>Die Pins konnten nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="180"/>
+        <location filename="../model/src/deform_setup.cpp" line="182"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
     </message>
@@ -896,7 +896,7 @@
         <translation>Kein Objekt von Einzelbild %1 lässt sich in 3D umwandeln: Jedes ist ein Punkt oder eine gerade Linie ohne Fläche zum Aufblasen. Es wurde nichts exportiert; zeichnen Sie eine Form oder wählen Sie ein anderes Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="100"/>
+        <location filename="../model/src/export/export_obj.cpp" line="148"/>
         <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
         <translation>„%1“ würde von seiner eigenen Materialdatei überschrieben; geben Sie einen Dateinamen an, der auf .obj endet.</translation>
     </message>
@@ -2091,24 +2091,21 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="33"/>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="89"/>
         <source>“%1” cannot be used as a reference: %2</source>
         <translation>„%1“ kann nicht als Referenz verwendet werden: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="38"/>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="94"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="43"/>
         <source>It cannot be read (is it there, and may Finbook read it?).</source>
         <translation>Sie lässt sich nicht lesen (gibt es sie, und darf Finbook sie lesen?).</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="41"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="66"/>
         <source>It is larger than %1 MB.</source>
         <translation>Sie ist größer als %1 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="45"/>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="103"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="52"/>
         <source>It is empty.</source>
         <translation>Sie ist leer.</translation>
     </message>
@@ -2162,22 +2159,22 @@
         <translation>Sein erstes Bild lässt sich nicht dekodieren.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="74"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="75"/>
         <source>No picture was chosen.</source>
         <translation>Es wurde kein Bild gewählt.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="77"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="78"/>
         <source>A sequence of more than %1 pictures cannot be used as a reference.</source>
         <translation>Eine Folge von mehr als %1 Bildern kann nicht als Referenz dienen.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="98"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="87"/>
         <source>The pictures together are larger than %1 MB.</source>
         <translation>Die Bilder sind zusammen größer als %1 MB.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/reference/reference_sequence.cpp" line="116"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="108"/>
         <source>%1 and %n more</source>
         <extracomment>%1 is the first file&apos;s name, %n how many pictures follow it</extracomment>
         <translation>
@@ -3786,7 +3783,7 @@
         <translation>Füllen</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/main_window_shade.cpp" line="14"/>
+        <location filename="../ui/src/shade/main_window_shade.cpp" line="32"/>
         <source>Shading</source>
         <translation>Schattierung</translation>
     </message>
@@ -4150,69 +4147,73 @@
         <translation>Rate des Dokuments</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="49"/>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="107"/>
-        <source>Video frames shown per second of animation</source>
-        <translation>Videobilder je Sekunde Animation</translation>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="108"/>
+        <source>Picture rate:</source>
+        <translation>Bildrate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="50"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="110"/>
+        <source>Pictures per second of animation. At the document&apos;s rate every frame shows the next picture; a lower rate holds each picture for several frames.</source>
+        <translation>Bilder pro Sekunde Animation. Bei der Rate des Dokuments zeigt jedes Frame das nächste Bild; eine niedrigere Rate hält jedes Bild für mehrere Frames.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="112"/>
+        <source>Animation frames per second of video. At the document&apos;s rate the video plays in real time; a higher rate plays it slower, spreading each second over more frames.</source>
+        <translation>Animationsframes pro Sekunde Video. Bei der Rate des Dokuments läuft das Video in Echtzeit; eine höhere Rate spielt es langsamer ab und verteilt jede Sekunde auf mehr Frames.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="51"/>
         <source>&amp;Remove Reference</source>
         <translation>Referenz &amp;entfernen</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
         <source>Opacity:</source>
         <translation>Deckkraft:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
         <source>Centre X:</source>
         <translation>Mitte X:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="59"/>
         <source>Centre Y:</source>
         <translation>Mitte Y:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="59"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="60"/>
         <source>Scale:</source>
         <translation>Maßstab:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="60"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="61"/>
         <source>Rotation:</source>
         <translation>Drehung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="61"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="108"/>
         <source>Video rate:</source>
         <translation>Videorate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="89"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="90"/>
         <source>No reference. File → Import Reference… puts a picture or a video under the drawing.</source>
         <translation>Keine Referenz. Datei → Referenz importieren… legt ein Bild oder Video unter die Zeichnung.</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="106"/>
-        <source>Pictures shown per second of animation</source>
-        <translation>Pro Sekunde Animation gezeigte Bilder</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="159"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="167"/>
         <source>The reference could not be placed on the canvas.</source>
         <translation>Die Referenz ließ sich nicht auf der Leinwand platzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="167"/>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="174"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="175"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="182"/>
         <source>Import Reference</source>
         <translation>Referenz importieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/reference/reference_panel.cpp" line="175"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="183"/>
         <source>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</source>
         <translation>
             <numerusform>„%1“ ist eines von %n nummerierten Bildern (%2 … %3). Alle als Folge importieren, ein Bild pro Frame?</numerusform>
@@ -4220,7 +4221,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="188"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="196"/>
         <source>Pictures and videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;All files (*)</source>
         <translation>Bilder und Videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;Alle Dateien (*)</translation>
     </message>
@@ -4587,37 +4588,37 @@
 <context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="74"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="84"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="75"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>Benachbarte Einzelbilder beim Zeichnen blass anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="101"/>
         <source>Before:</source>
         <translation>Davor:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="102"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>Wie viele vorherige Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="93"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="103"/>
         <source>After:</source>
         <translation>Danach:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="94"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="104"/>
         <source>How many later frames the onion skin shows</source>
         <translation>Wie viele folgende Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="125"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="135"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Einzelbild %1 von %2 · %3 fps</translation>
     </message>

@@ -298,17 +298,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="103"/>
+        <location filename="../app/cli.cpp" line="146"/>
         <source>No command given; see finbook --help.</source>
         <translation>Aucune commande indiquée ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="107"/>
+        <location filename="../app/cli.cpp" line="150"/>
         <source>Usage: finbook info FILE</source>
         <translation>Utilisation : finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="119"/>
+        <location filename="../app/cli.cpp" line="162"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
@@ -536,12 +536,12 @@
         <translation>Annulé.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="152"/>
+        <location filename="../model/src/deform_setup.cpp" line="153"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>La cage a changé pendant sa préparation.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="160"/>
+        <location filename="../model/src/deform_setup.cpp" line="161"/>
         <source>The object has no mesh to deform.</source>
         <translation>L&apos;objet n&apos;a pas de maillage à déformer.</translation>
     </message>
@@ -551,12 +551,12 @@
         <translation>Impossible de calculer la déformation par les épingles sur ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/pins/pin_setup.cpp" line="47"/>
+        <location filename="../model/src/pins/pin_setup.cpp" line="49"/>
         <source>The pins could not be solved: %1</source>
         <translation>Le calcul de la déformation par les épingles a échoué&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="180"/>
+        <location filename="../model/src/deform_setup.cpp" line="182"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>La déformation a produit des points invalides&#xa0;; elle n&apos;a pas été appliquée.</translation>
     </message>
@@ -896,7 +896,7 @@
         <translation>Aucun objet de l&apos;image %1 ne peut être mis en 3D : chacun est un point ou une ligne droite, sans surface à gonfler. Rien n&apos;a été exporté ; dessinez une forme ou choisissez une autre image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="100"/>
+        <location filename="../model/src/export/export_obj.cpp" line="148"/>
         <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
         <translation>« %1 » serait écrasé par son propre fichier de matériaux ; donnez un nom de fichier terminé par .obj.</translation>
     </message>
@@ -2091,24 +2091,21 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="33"/>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="89"/>
         <source>“%1” cannot be used as a reference: %2</source>
         <translation>« %1 » ne peut pas servir de référence : %2</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="38"/>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="94"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="43"/>
         <source>It cannot be read (is it there, and may Finbook read it?).</source>
         <translation>Il ne peut pas être lu (existe-t-il, et Finbook a-t-il le droit de le lire ?).</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="41"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="66"/>
         <source>It is larger than %1 MB.</source>
         <translation>Il dépasse %1 Mo.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="45"/>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="103"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="52"/>
         <source>It is empty.</source>
         <translation>Il est vide.</translation>
     </message>
@@ -2162,22 +2159,22 @@
         <translation>Sa première image ne peut pas être décodée.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="74"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="75"/>
         <source>No picture was chosen.</source>
         <translation>Aucune image n’a été choisie.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="77"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="78"/>
         <source>A sequence of more than %1 pictures cannot be used as a reference.</source>
         <translation>Une séquence de plus de %1 images ne peut pas servir de référence.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="98"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="87"/>
         <source>The pictures together are larger than %1 MB.</source>
         <translation>Les images dépassent ensemble %1 Mo.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/reference/reference_sequence.cpp" line="116"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="108"/>
         <source>%1 and %n more</source>
         <extracomment>%1 is the first file&apos;s name, %n how many pictures follow it</extracomment>
         <translation>
@@ -3786,7 +3783,7 @@
         <translation>Remplissage</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/main_window_shade.cpp" line="14"/>
+        <location filename="../ui/src/shade/main_window_shade.cpp" line="32"/>
         <source>Shading</source>
         <translation>Ombrage</translation>
     </message>
@@ -4150,69 +4147,73 @@
         <translation>Cadence du document</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="49"/>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="107"/>
-        <source>Video frames shown per second of animation</source>
-        <translation>Images vidéo montrées par seconde d’animation</translation>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="108"/>
+        <source>Picture rate:</source>
+        <translation>Cadence des images :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="50"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="110"/>
+        <source>Pictures per second of animation. At the document&apos;s rate every frame shows the next picture; a lower rate holds each picture for several frames.</source>
+        <translation>Images par seconde d&apos;animation. À la cadence du document, chaque frame montre l&apos;image suivante ; une cadence plus basse garde chaque image pendant plusieurs frames.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="112"/>
+        <source>Animation frames per second of video. At the document&apos;s rate the video plays in real time; a higher rate plays it slower, spreading each second over more frames.</source>
+        <translation>Frames d&apos;animation par seconde de vidéo. À la cadence du document, la vidéo défile en temps réel ; une cadence plus haute la ralentit, en étalant chaque seconde sur plus de frames.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="51"/>
         <source>&amp;Remove Reference</source>
         <translation>&amp;Retirer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
         <source>Opacity:</source>
         <translation>Opacité :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
         <source>Centre X:</source>
         <translation>Centre X :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="59"/>
         <source>Centre Y:</source>
         <translation>Centre Y :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="59"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="60"/>
         <source>Scale:</source>
         <translation>Échelle :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="60"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="61"/>
         <source>Rotation:</source>
         <translation>Rotation :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="61"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="108"/>
         <source>Video rate:</source>
         <translation>Cadence vidéo :</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="89"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="90"/>
         <source>No reference. File → Import Reference… puts a picture or a video under the drawing.</source>
         <translation>Aucune référence. Fichier → Importer une référence… place une image ou une vidéo sous le dessin.</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="106"/>
-        <source>Pictures shown per second of animation</source>
-        <translation>Images affichées par seconde d’animation</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="159"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="167"/>
         <source>The reference could not be placed on the canvas.</source>
         <translation>La référence n’a pas pu être placée sur la toile.</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="167"/>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="174"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="175"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="182"/>
         <source>Import Reference</source>
         <translation>Importer une référence</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/reference/reference_panel.cpp" line="175"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="183"/>
         <source>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</source>
         <translation>
             <numerusform>« %1 » fait partie de %n image numérotée (%2 … %3). Les importer toutes en séquence, une image par trame ?</numerusform>
@@ -4220,7 +4221,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="188"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="196"/>
         <source>Pictures and videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;All files (*)</source>
         <translation>Images et vidéos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;Tous les fichiers (*)</translation>
     </message>
@@ -4587,37 +4588,37 @@
 <context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="74"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="84"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="75"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>Afficher les images voisines en transparence pendant le dessin</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="101"/>
         <source>Before:</source>
         <translation>Avant&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="102"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>Nombre d&apos;images précédentes que montre la pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="93"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="103"/>
         <source>After:</source>
         <translation>Après&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="94"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="104"/>
         <source>How many later frames the onion skin shows</source>
         <translation>Nombre d&apos;images suivantes que montre la pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="125"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="135"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Image %1 sur %2 · %3 i/s</translation>
     </message>

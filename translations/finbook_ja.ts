@@ -298,17 +298,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="103"/>
+        <location filename="../app/cli.cpp" line="146"/>
         <source>No command given; see finbook --help.</source>
         <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="107"/>
+        <location filename="../app/cli.cpp" line="150"/>
         <source>Usage: finbook info FILE</source>
         <translation>使い方: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="119"/>
+        <location filename="../app/cli.cpp" line="162"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
@@ -536,12 +536,12 @@
         <translation>キャンセルしました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="152"/>
+        <location filename="../model/src/deform_setup.cpp" line="153"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>準備中にケージが変更されました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="160"/>
+        <location filename="../model/src/deform_setup.cpp" line="161"/>
         <source>The object has no mesh to deform.</source>
         <translation>このオブジェクトには変形できるメッシュがありません。</translation>
     </message>
@@ -551,12 +551,12 @@
         <translation>この絵ではピンによる変形を計算できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/pins/pin_setup.cpp" line="47"/>
+        <location filename="../model/src/pins/pin_setup.cpp" line="49"/>
         <source>The pins could not be solved: %1</source>
         <translation>ピンによる変形を計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="180"/>
+        <location filename="../model/src/deform_setup.cpp" line="182"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>変形によって無効な点が生じたため、適用しませんでした。</translation>
     </message>
@@ -894,7 +894,7 @@
         <translation>フレーム %1 のオブジェクトはどれも 3D にできません。どれも点か直線で、膨らませる面がありません。何も書き出していません。形を描くか、別のフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_obj.cpp" line="100"/>
+        <location filename="../model/src/export/export_obj.cpp" line="148"/>
         <source>&quot;%1&quot; would be overwritten by its own material file; give a file name ending in .obj.</source>
         <translation>「%1」は自身のマテリアルファイルで上書きされてしまいます。末尾が .obj のファイル名を指定してください。</translation>
     </message>
@@ -2083,24 +2083,21 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_import.cpp" line="33"/>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="89"/>
         <source>“%1” cannot be used as a reference: %2</source>
         <translation>「%1」は参照として使えません: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="38"/>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="94"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="43"/>
         <source>It cannot be read (is it there, and may Finbook read it?).</source>
         <translation>読み込めません (ファイルは存在し、Finbook に読み取り権限がありますか?)。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="41"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="66"/>
         <source>It is larger than %1 MB.</source>
         <translation>%1 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="45"/>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="103"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="52"/>
         <source>It is empty.</source>
         <translation>空です。</translation>
     </message>
@@ -2154,22 +2151,22 @@
         <translation>最初の画像をデコードできません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="74"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="75"/>
         <source>No picture was chosen.</source>
         <translation>画像が選ばれていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="77"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="78"/>
         <source>A sequence of more than %1 pictures cannot be used as a reference.</source>
         <translation>%1 枚を超える連番画像は参照に使えません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_sequence.cpp" line="98"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="87"/>
         <source>The pictures together are larger than %1 MB.</source>
         <translation>画像の合計が %1 MB を超えています。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/reference/reference_sequence.cpp" line="116"/>
+        <location filename="../model/src/reference/reference_sequence.cpp" line="108"/>
         <source>%1 and %n more</source>
         <extracomment>%1 is the first file&apos;s name, %n how many pictures follow it</extracomment>
         <translation>
@@ -3772,7 +3769,7 @@
         <translation>塗りつぶし</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/main_window_shade.cpp" line="14"/>
+        <location filename="../ui/src/shade/main_window_shade.cpp" line="32"/>
         <source>Shading</source>
         <translation>陰影</translation>
     </message>
@@ -4135,76 +4132,80 @@
         <translation>文書のレート</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="49"/>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="107"/>
-        <source>Video frames shown per second of animation</source>
-        <translation>アニメーション 1 秒あたりに表示する動画のフレーム数</translation>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="108"/>
+        <source>Picture rate:</source>
+        <translation>画像レート:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="50"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="110"/>
+        <source>Pictures per second of animation. At the document&apos;s rate every frame shows the next picture; a lower rate holds each picture for several frames.</source>
+        <translation>アニメーション1秒あたりの画像数。ドキュメントのレートでは各フレームが次の画像を表示し、低いレートでは各画像を複数フレームにわたって表示します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="112"/>
+        <source>Animation frames per second of video. At the document&apos;s rate the video plays in real time; a higher rate plays it slower, spreading each second over more frames.</source>
+        <translation>ビデオ1秒あたりのアニメーションのフレーム数。ドキュメントのレートではビデオは実時間で再生され、高いレートでは各秒をより多くのフレームに広げてゆっくり再生します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="51"/>
         <source>&amp;Remove Reference</source>
         <translation>参照を削除(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="56"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
         <source>Opacity:</source>
         <translation>不透明度:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="57"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
         <source>Centre X:</source>
         <translation>中心 X:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="58"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="59"/>
         <source>Centre Y:</source>
         <translation>中心 Y:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="59"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="60"/>
         <source>Scale:</source>
         <translation>拡大率:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="60"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="61"/>
         <source>Rotation:</source>
         <translation>回転:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="61"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="108"/>
         <source>Video rate:</source>
         <translation>動画のレート:</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="89"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="90"/>
         <source>No reference. File → Import Reference… puts a picture or a video under the drawing.</source>
         <translation>参照はありません。ファイル → 参照を読み込む… で画像や動画を絵の下に置けます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="106"/>
-        <source>Pictures shown per second of animation</source>
-        <translation>アニメーション1秒あたりに表示する画像の数</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="159"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="167"/>
         <source>The reference could not be placed on the canvas.</source>
         <translation>参照をキャンバスに配置できませんでした。</translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="167"/>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="174"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="175"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="182"/>
         <source>Import Reference</source>
         <translation>参照を読み込む</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/reference/reference_panel.cpp" line="175"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="183"/>
         <source>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</source>
         <translation>
             <numerusform>「%1」は %n 枚の連番画像（%2 … %3）の1枚です。すべてを連番として、1フレームに1枚ずつ読み込みますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/reference/reference_panel.cpp" line="188"/>
+        <location filename="../ui/src/reference/reference_panel.cpp" line="196"/>
         <source>Pictures and videos (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;All files (*)</source>
         <translation>画像と動画 (*.png *.jpg *.jpeg *.webp *.bmp *.gif *.tif *.tiff *.mp4 *.m4v *.mov *.mkv *.webm *.avi);;すべてのファイル (*)</translation>
     </message>
@@ -4571,37 +4572,37 @@
 <context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="74"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="84"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="75"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>描画中に前後のフレームを薄く表示</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="101"/>
         <source>Before:</source>
         <translation>前:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="102"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>オニオンスキンで表示する前のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="93"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="103"/>
         <source>After:</source>
         <translation>後:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="94"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="104"/>
         <source>How many later frames the onion skin shows</source>
         <translation>オニオンスキンで表示する後のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="125"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="135"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>フレーム %1 / %2 · %3 fps</translation>
     </message>

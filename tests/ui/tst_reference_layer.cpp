@@ -10,6 +10,7 @@
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QLabel>
 #include <QSlider>
 #include <QTest>
 
@@ -43,6 +44,39 @@ private slots:
         QCOMPARE(doc.referenceLayer().reference(), imported);
         QCOMPARE(panel.opacitySlider()->value(), 50);
         QVERIFY(panel.xBox()->isEnabled());
+    }
+
+    // A video counts animation frames per second of footage, a sequence pictures per second of
+    // animation: the row says which, and a still has no rate at all.
+    void rateRowSaysWhatItCounts()
+    {
+        model::Document doc;
+        doc.reset({model::Frame{doc.allocateId(), 1, {}}}, model::DocumentSettings(), doc.nextId());
+        ui::ReferencePanel panel(&doc);
+        QVERIFY(!ui::importReference(doc, writeTwoColourPng(m_dir.path())));
+        QVERIFY(!panel.rateBox()->isEnabled());
+        QStringList pictures;
+        for (int i = 1; i <= 2; ++i) {
+            pictures << m_dir.filePath(QStringLiteral("shot_%1.png").arg(i));
+            QVERIFY(QFile::copy(writeTwoColourPng(m_dir.path()), pictures.back()));
+        }
+        QVERIFY(!ui::importReference(doc, pictures));
+        QCOMPARE(doc.referenceLayer().reference().kind, model::ReferenceKind::Sequence);
+        QVERIFY(panel.rateBox()->isEnabled());
+        QCOMPARE(panel.rateLabel()->text(), QStringLiteral("Picture rate:"));
+        QVERIFY(panel.rateBox()->toolTip().startsWith(QStringLiteral("Pictures per second")));
+        doc.undoStack()->undo();
+        QCOMPARE(panel.rateLabel()->text(), QStringLiteral("Video rate:"));
+        QVERIFY(!panel.rateBox()->isEnabled());
+        const QString video =
+            writeTestVideo(m_dir.path(), QStringLiteral("rate.mp4"), {64, 48}, 1, 12);
+        if (video.isEmpty())
+            QSKIP("ffmpeg could not write a test video");
+        QVERIFY(!ui::importReference(doc, video));
+        QVERIFY(panel.rateBox()->isEnabled());
+        QCOMPARE(panel.rateLabel()->text(), QStringLiteral("Video rate:"));
+        QVERIFY(
+            panel.rateBox()->toolTip().startsWith(QStringLiteral("Animation frames per second")));
     }
 
     void refusedFileChangesNothing()

@@ -46,7 +46,8 @@ ReferencePanel::ReferencePanel(model::Document *document, QWidget *parent)
     m_rotation = spinBox(-360.0, 360.0, 1, tr(" °"), this);
     m_rate = spinBox(0.0, model::kMaxReferenceRate, 2, tr(" fps"), this);
     m_rate->setSpecialValueText(tr("Document rate"));
-    m_rate->setToolTip(tr("Video frames shown per second of animation"));
+    m_rateLabel = new QLabel(this);
+    m_rateLabel->setBuddy(m_rate);
     m_remove = new QPushButton(tr("&Remove Reference"), this);
 
     auto *form = new QFormLayout(this);
@@ -58,7 +59,7 @@ ReferencePanel::ReferencePanel(model::Document *document, QWidget *parent)
     form->addRow(tr("Centre Y:"), m_y);
     form->addRow(tr("Scale:"), m_scale);
     form->addRow(tr("Rotation:"), m_rotation);
-    form->addRow(tr("Video rate:"), m_rate);
+    form->addRow(m_rateLabel, m_rate);
     form->addRow(m_remove);
 
     using model::ReferenceEdit;
@@ -103,8 +104,15 @@ void ReferencePanel::refresh()
         w->setEnabled(has && !r.locked);
     const bool sequence = r.kind == model::ReferenceKind::Sequence;
     m_rate->setEnabled(has && (r.kind == model::ReferenceKind::Video || sequence));
-    m_rate->setToolTip(sequence ? tr("Pictures shown per second of animation")
-                                : tr("Video frames shown per second of animation"));
+    // The two kinds count the other way round (reference.h): say which, on the label too.
+    m_rateLabel->setText(sequence ? tr("Picture rate:") : tr("Video rate:"));
+    m_rate->setToolTip(
+        sequence ? tr("Pictures per second of animation. At the document's rate every frame shows "
+                      "the next picture; a lower rate holds each picture for several frames.")
+                 : tr("Animation frames per second of video. At the document's rate the video "
+                      "plays in real time; a higher rate plays it slower, spreading each second "
+                      "over more frames."));
+    m_rateLabel->setToolTip(m_rate->toolTip());
 }
 
 void ReferencePanel::edit(model::ReferenceEdit edit)

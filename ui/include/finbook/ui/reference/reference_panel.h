@@ -35,6 +35,7 @@ public:
     QDoubleSpinBox *scaleBox() const { return m_scale; }
     QDoubleSpinBox *rotationBox() const { return m_rotation; }
     QDoubleSpinBox *rateBox() const { return m_rate; }
+    QLabel *rateLabel() const { return m_rateLabel; }
 
 private:
     void refresh();
@@ -50,6 +51,7 @@ private:
     QDoubleSpinBox *m_scale = nullptr;
     QDoubleSpinBox *m_rotation = nullptr;
     QDoubleSpinBox *m_rate = nullptr;
+    QLabel *m_rateLabel = nullptr;
     QPushButton *m_remove = nullptr;
     bool m_refreshing = false;
 };
