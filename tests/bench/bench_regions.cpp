@@ -1,4 +1,4 @@
-// finbook-bench regions [--png DIR] FILE...: the regions of each drawing (Quick, Draw!
+// finbook-bench regions [--png DIR] [--gap PX] FILE...: the regions of each drawing (Quick, Draw!
 // "strokes") or shape ("contours", each drawn as one closed stroke), in the formats of
 // shared/data/README.md, pen width 3 px. One JSON object per file per line: strokes, free
 // ends, gaps closed, regions, the area of the object's shape (objectShape) against the ink
@@ -129,7 +129,7 @@ double msSince(Clock::time_point start)
 }
 
 QJsonObject measure(const QString &path, const std::vector<StrokeInput> &strokes,
-                    const QString &pngDir, std::vector<double> &times, int &filled)
+                    const QString &pngDir, double gap, std::vector<double> &times, int &filled)
 {
     QJsonObject row{{QStringLiteral("file"), QFileInfo(path).fileName()}};
     std::vector<double> regionMs, shapeMs;
@@ -137,7 +137,7 @@ QJsonObject measure(const QString &path, const std::vector<StrokeInput> &strokes
     std::optional<Region> shape;
     for (int run = 0; run < kRuns; ++run) {
         auto start = Clock::now();
-        auto r = computeRegions(strokes);
+        auto r = computeRegions(strokes, RegionsOptions{gap});
         regionMs.push_back(msSince(start));
         start = Clock::now();
         auto s = objectShape(strokes);
@@ -189,13 +189,20 @@ int benchRegions(const QStringList &arguments)
 {
     QStringList args = arguments;
     QString pngDir;
-    if (args.size() >= 2 && args.front() == QStringLiteral("--png")) {
-        pngDir = args[1];
+    double gap = -1.0; // automatic, as the app's default
+    while (args.size() >= 2 && args.front().startsWith(QStringLiteral("--"))) {
+        if (args.front() == QStringLiteral("--png")) {
+            pngDir = args[1];
+            QDir().mkpath(pngDir);
+        } else if (args.front() == QStringLiteral("--gap")) {
+            gap = args[1].toDouble();
+        } else {
+            break;
+        }
         args = args.mid(2);
-        QDir().mkpath(pngDir);
     }
     if (args.isEmpty()) {
-        std::fprintf(stderr, "usage: finbook-bench regions [--png DIR] FILE...\n");
+        std::fprintf(stderr, "usage: finbook-bench regions [--png DIR] [--gap PX] FILE...\n");
         return 2;
     }
     int failures = 0, filled = 0;
@@ -203,7 +210,7 @@ int benchRegions(const QStringList &arguments)
     for (const QString &path : args) {
         const auto strokes = readStrokes(path);
         const QJsonObject row =
-            strokes ? measure(path, *strokes, pngDir, times, filled)
+            strokes ? measure(path, *strokes, pngDir, gap, times, filled)
                     : QJsonObject{{QStringLiteral("file"), QFileInfo(path).fileName()},
                                   {QStringLiteral("error"), QStringLiteral("unreadable")}};
         failures += row.contains(QStringLiteral("error")) ? 1 : 0;

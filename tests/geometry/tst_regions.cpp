@@ -100,6 +100,7 @@ private slots:
     void nestedFacesAreHoles();
     void overshootSliverIsMerged();
     void whiskerInsideClosedFaceIsNotJoined();
+    void barEndIsNotSpentOnItsOwnStem();
     void degenerateInput();
     void scribbleIsRefusedQuickly();
     void objectShapeOfTidyOutlineIsItsSilhouette();
@@ -337,6 +338,28 @@ void TestRegions::whiskerInsideClosedFaceIsNotJoined()
     checkRegions(r, 2);
     QVERIFY(r.closures.empty());
     QCOMPARE(int(r.faces.size()), 1);
+}
+
+void TestRegions::barEndIsNotSpentOnItsOwnStem()
+{
+    // A body drawn as an arch open at the bottom, and a leg drawn as a T whose bar nearly
+    // spans the opening (a cat's belly in a real sketch): 40 px open on the left, 50 px on the
+    // right. The bar's right end must close to the arch, not back along the bar onto the stem
+    // it crosses (that encloses nothing and would leave the belly open).
+    const std::vector<StrokeInput> strokes{
+        {polyline({{0, 200}, {0, 100}, {300, 100}, {300, 200}}), 3.0},
+        {polyline({{40, 200}, {145, 198}, {250, 203}}), 3.0},
+        {polyline({{215, 190}, {215, 260}}), 3.0}};
+    const Regions r = regionsOf(strokes, 60.0);
+    checkRegions(r, 3);
+    const int belly = faceAt(r, 150, 150);
+    QVERIFY(belly >= 0);
+    QVERIFY(std::abs(r.faces[std::size_t(belly)].area - 300.0 * 100.0) < 0.05 * 300.0 * 100.0);
+    const auto onBar = [](const Eigen::Vector2d &p) {
+        return std::abs(p.y() - 200.0) < 5.0 && p.x() > 35.0 && p.x() < 255.0;
+    };
+    for (const GapClosure &g : r.closures)
+        QVERIFY2(!(onBar(g.from) && onBar(g.to)), "a closure lies along the bar");
 }
 
 void TestRegions::degenerateInput()

@@ -174,6 +174,26 @@ public:
         for (double t : {0.25, 0.5, 0.75})
             if (m_map.inBoundedFace(p + t * (c.to - p)))
                 return false;
+        return !runsAlongOwnInk(c);
+    }
+
+    // A closure that doubles back along the stroke it starts from (a T's bar closed onto its
+    // own stem, lying on the bar) encloses nothing, but it would use up the end that a real
+    // gap further on needs.
+    bool runsAlongOwnInk(const Candidate &c) const
+    {
+        const End &e = m_ends[std::size_t(c.from)];
+        if (turnCost(e.direction, c.to - e.point) <= 1.0)
+            return false; // heads on, within 90° of the way the pen left: a real gap
+        const double w = m_soup.strokes()[std::size_t(e.stroke)].width;
+        if ((c.to - e.point).norm() < 4.0 * w + 2.0)
+            return false; // a hook's tip: too short to lie along anything
+        for (double t : {0.25, 0.5, 0.75}) {
+            const NearestPoint near = m_soup.nearestOnStroke(
+                e.stroke, e.point + t * (c.to - e.point), e.stroke, e.arc, 0.0, 2.0 * w + 0.5);
+            if (!(near.distance >= 0.0 && near.distance <= 2.0 * w + 1.0))
+                return false;
+        }
         return true;
     }
 
