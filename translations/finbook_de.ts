@@ -225,27 +225,27 @@
         <translation>Zur Wurzel der Figur machen</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
         <source>Recolour Fill</source>
         <translation>Füllung umfärben</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
         <source>Fill Region</source>
         <translation>Bereich füllen</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="83"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="84"/>
         <source>Remove Fill</source>
         <translation>Füllung entfernen</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="93"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="94"/>
         <source>Fill All Enclosed Regions</source>
         <translation>Alle geschlossenen Bereiche füllen</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="104"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="105"/>
         <source>Close Gaps</source>
         <translation>Lücken schließen</translation>
     </message>
@@ -3743,42 +3743,48 @@
         <translation>%1 mit dem Stand vom %2 wiederhergestellt; speichern Sie die Animation, um sie zu behalten.</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="28"/>
+        <location filename="../ui/src/fill/close_gap_box.cpp" line="27"/>
+        <location filename="../ui/src/fill/close_gap_box.cpp" line="35"/>
         <source>Close gaps: automatic</source>
         <translation>Lücken schließen: automatisch</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="29"/>
+        <location filename="../ui/src/fill/close_gap_box.cpp" line="34"/>
+        <source>Close gaps: automatic (%1 px)</source>
+        <translation>Lücken schließen: automatisch (%1 px)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="38"/>
         <source>Close gaps up to </source>
         <translation>Lücken schließen bis </translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="30"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="31"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
         <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
         <translation>Öffnungen im Umriss bis zu dieser Breite ergeben noch einen Bereich, den das Füllwerkzeug füllen kann (0 = nur geschlossene Umrisse)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="59"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
         <source>Fill All Enclosed Re&amp;gions</source>
         <translation>Alle geschlossenen Bereiche &amp;füllen</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="61"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="79"/>
         <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
         <translation>Jeden geschlossenen Bereich des aktuellen Objekts ohne Füllung in der Stiftfarbe füllen</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="68"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
         <source>The current object has no unfilled closed region</source>
         <translation>Das aktuelle Objekt hat keinen ungefüllten geschlossenen Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
         <source>Fill</source>
         <translation>Füllen</translation>
     </message>

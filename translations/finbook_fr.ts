@@ -225,27 +225,27 @@
         <translation>Faire la racine du personnage</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
         <source>Recolour Fill</source>
         <translation>Recolorer le remplissage</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
         <source>Fill Region</source>
         <translation>Remplir la zone</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="83"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="84"/>
         <source>Remove Fill</source>
         <translation>Retirer le remplissage</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="93"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="94"/>
         <source>Fill All Enclosed Regions</source>
         <translation>Remplir toutes les zones fermées</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="104"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="105"/>
         <source>Close Gaps</source>
         <translation>Fermer les trous</translation>
     </message>
@@ -3743,42 +3743,48 @@
         <translation>%1 récupéré tel qu&apos;il était le %2&#xa0;; enregistrez-le pour le conserver.</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="28"/>
+        <location filename="../ui/src/fill/close_gap_box.cpp" line="27"/>
+        <location filename="../ui/src/fill/close_gap_box.cpp" line="35"/>
         <source>Close gaps: automatic</source>
         <translation>Fermer les trous : automatique</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="29"/>
+        <location filename="../ui/src/fill/close_gap_box.cpp" line="34"/>
+        <source>Close gaps: automatic (%1 px)</source>
+        <translation>Fermer les trous : automatique (%1 px)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="38"/>
         <source>Close gaps up to </source>
         <translation>Fermer les trous jusqu&apos;à </translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="30"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="31"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
         <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
         <translation>Les ouvertures d&apos;un contour jusqu&apos;à cette largeur forment encore une zone que l&apos;outil Remplissage peut remplir (0 = contours fermés seulement)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="59"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
         <source>Fill All Enclosed Re&amp;gions</source>
         <translation>Remplir toutes les &amp;zones fermées</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="61"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="79"/>
         <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
         <translation>Remplir de la couleur du stylo chaque zone fermée de l&apos;objet courant qui n&apos;a pas de remplissage</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="68"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
         <source>The current object has no unfilled closed region</source>
         <translation>L&apos;objet courant n&apos;a aucune zone fermée sans remplissage</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
         <source>Fill</source>
         <translation>Remplissage</translation>
     </message>

@@ -225,27 +225,27 @@
         <translation>キャラクターのルートにする</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
         <source>Recolour Fill</source>
         <translation>塗りの色を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="74"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
         <source>Fill Region</source>
         <translation>領域を塗る</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="83"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="84"/>
         <source>Remove Fill</source>
         <translation>塗りを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="93"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="94"/>
         <source>Fill All Enclosed Regions</source>
         <translation>閉じた領域をすべて塗る</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="104"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="105"/>
         <source>Close Gaps</source>
         <translation>隙間を閉じる</translation>
     </message>
@@ -3729,42 +3729,48 @@
         <translation>%1 を %2 時点の状態に復元しました。残しておくには保存してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="28"/>
+        <location filename="../ui/src/fill/close_gap_box.cpp" line="27"/>
+        <location filename="../ui/src/fill/close_gap_box.cpp" line="35"/>
         <source>Close gaps: automatic</source>
         <translation>隙間を閉じる: 自動</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="29"/>
+        <location filename="../ui/src/fill/close_gap_box.cpp" line="34"/>
+        <source>Close gaps: automatic (%1 px)</source>
+        <translation>隙間を閉じる: 自動 (%1 px)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="38"/>
         <source>Close gaps up to </source>
         <translation>隙間を閉じる: 最大 </translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="30"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="31"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
         <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
         <translation>この幅までの輪郭の切れ目は、塗りつぶしツールで塗れる領域として扱います（0 = 閉じた輪郭のみ）</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="59"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
         <source>Fill All Enclosed Re&amp;gions</source>
         <translation>閉じた領域をすべて塗る(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="61"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="79"/>
         <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
         <translation>現在のオブジェクトの塗られていない閉じた領域をすべてペンの色で塗ります</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="68"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
         <source>The current object has no unfilled closed region</source>
         <translation>現在のオブジェクトに塗られていない閉じた領域はありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
         <source>Fill</source>
         <translation>塗りつぶし</translation>
     </message>

@@ -153,6 +153,7 @@ private slots:
     void applyPoseKeepsFills();
     void duplicateFrameCopiesFills();
     void closeGapSettingIsOneUndoStep();
+    void closeGapSessionIsOneStep();
     void renderPaintsFillUnderStrokes();
     void onionSkinTintsFills();
     void saveLoadRoundTrip();
@@ -346,6 +347,33 @@ void TestFills::duplicateFrameCopiesFills()
     // The copy's fill names the copy's strokes.
     QCOMPARE(copy.fills[0].strokes, std::vector<Id>{copy.strokes[0].id});
     QCOMPARE(filledFaces(doc, copy.id), 1);
+}
+
+// The Close gaps box's arrow clicks of one session are one step; a session that ends where it
+// began leaves none; the command changes no other setting.
+void TestFills::closeGapSessionIsOneStep()
+{
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    doc.undoStack()->clear();
+    for (double gap : {1.0, 2.0, 5.0, 10.0})
+        push(doc, setCloseGapCommand(&doc, gap, 1));
+    QCOMPARE(doc.undoStack()->count(), 1);
+    QCOMPARE(doc.settings().closeGap, 10.0);
+    push(doc, setCloseGapCommand(&doc, 20.0, 2));
+    push(doc, setCloseGapCommand(&doc, 10.0, 2)); // back where session 2 began
+    QCOMPARE(doc.undoStack()->count(), 1);
+    QCOMPARE(doc.settings().closeGap, 10.0);
+    DocumentSettings faster = doc.settings();
+    faster.fps = doc.settings().fps + 6;
+    doc.undoStack()->push(new ChangeSettingsCommand(&doc, faster));
+    push(doc, setCloseGapCommand(&doc, 30.0, 3));
+    doc.undoStack()->undo();
+    QCOMPARE(doc.settings(), faster);
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    QCOMPARE(doc.settings().closeGap, -1.0);
+    QCOMPARE(doc.settings().fps, faster.fps - 6);
 }
 
 void TestFills::closeGapSettingIsOneUndoStep()

@@ -13,6 +13,8 @@
 #include <QSpinBox>
 #include <QTest>
 
+#include <cmath>
+
 using namespace finbook;
 using namespace finbook::model;
 using namespace finbook::ui;
@@ -88,6 +90,7 @@ private slots:
     void hoverHighlightsTheRegion();
     void gapUnderTheSettingIsClosed();
     void mainWindowHasToolMenuAndCloseGaps();
+    void closeGapArrowsStartAtTheAutomaticGap();
 };
 
 void TestFillTool::clickFillsRecoloursAndRemoves()
@@ -177,6 +180,49 @@ void TestFillTool::mainWindowHasToolMenuAndCloseGaps()
     model::Document *doc = window.document();
     spin->setValue(20);
     QCOMPARE(doc->settings().closeGap, 20.0);
+    doc->undoStack()->undo();
+    QCOMPARE(doc->settings().closeGap, -1.0);
+    QCOMPARE(spin->value(), -1);
+}
+
+// Animators raise Close gaps with the arrows: the first step up leaves "automatic" at the gap it
+// closed (shown in its text), the steps grow with the value, and the whole session of clicks is
+// one undo step.
+void TestFillTool::closeGapArrowsStartAtTheAutomaticGap()
+{
+    ui::MainWindow window;
+    QVERIFY(test::showActive(window));
+    model::Document *doc = window.document();
+    const Id group = doc->frameAt(0).groups.at(0).id;
+    doc->undoStack()->push(new AddStrokeCommand(doc, group, outline(8.0)));
+    doc->undoStack()->clear();
+    const double automatic = objectRegions(*doc->group(group), -1.0)->regions().closeGap;
+    QVERIFY(automatic > 1.0);
+    window.findChild<QAction *>(QStringLiteral("tool.fill"))->trigger();
+    auto *spin = window.findChild<QSpinBox *>(QStringLiteral("fill.closeGap"));
+    QVERIFY(spin && spin->isVisible());
+    QCOMPARE(spin->text(),
+             QStringLiteral("Close gaps: automatic (%1 px)").arg(std::lround(automatic)));
+    spin->stepBy(1);
+    const int start = int(std::ceil(automatic));
+    QCOMPARE(spin->value(), start);
+    QCOMPARE(doc->settings().closeGap, double(start));
+    std::vector<int> seen;
+    for (int i = 0; i < 40 && spin->value() < 120; ++i) {
+        spin->stepBy(1);
+        seen.push_back(spin->value());
+    }
+    for (std::size_t i = 1; i < seen.size(); ++i) {
+        const int step = seen[i] - seen[i - 1];
+        QVERIFY2(step == (seen[i - 1] < 10   ? 1
+                          : seen[i - 1] < 50 ? 5
+                                             : 10),
+                 qPrintable(QStringLiteral("%1 -> %2").arg(seen[i - 1]).arg(seen[i])));
+    }
+    QVERIFY(seen.size() < 30); // 1 px steps would take over 100 clicks
+    QCOMPARE(doc->undoStack()->count(), 1);
+    spin->stepBy(-1); // back down by the finer step below 120
+    QCOMPARE(spin->value(), 110);
     doc->undoStack()->undo();
     QCOMPARE(doc->settings().closeGap, -1.0);
     QCOMPARE(spin->value(), -1);

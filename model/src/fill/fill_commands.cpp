@@ -4,6 +4,7 @@
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/fill/fill_resolve.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace finbook::model {
@@ -93,15 +94,50 @@ std::unique_ptr<QUndoCommand> fillAllRegionsCommand(Document *doc, Id groupId, Q
                       Command::tr("Fill All Enclosed Regions"));
 }
 
-std::unique_ptr<QUndoCommand> setCloseGapCommand(Document *doc, double closeGap)
+SetCloseGapCommand::SetCloseGapCommand(Document *doc, double closeGap, int editSerial,
+                                       QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+    , m_serial(editSerial)
+    , m_new(std::isfinite(closeGap) && closeGap >= 0 ? std::min(closeGap, kMaxCloseGap)
+                                                     : DocumentSettings().closeGap)
+    , m_old(doc->settings().closeGap)
 {
-    DocumentSettings settings = doc->settings();
-    settings.closeGap = std::isfinite(closeGap) && closeGap >= 0 ? std::min(closeGap, kMaxCloseGap)
-                                                                 : DocumentSettings().closeGap;
-    auto command = std::make_unique<ChangeSettingsCommand>(doc, settings);
+    setText(Command::tr("Close Gaps"));
+    setObsolete(m_new == m_old);
+}
+
+bool SetCloseGapCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *o = static_cast<const SetCloseGapCommand *>(other);
+    if (m_serial < 0 || o->m_serial != m_serial)
+        return false;
+    m_new = o->m_new;
+    setObsolete(m_new == m_old); // back where the session began: the stack drops the step
+    return true;
+}
+
+void SetCloseGapCommand::redo()
+{
+    apply(m_new);
+}
+
+void SetCloseGapCommand::undo()
+{
+    apply(m_old);
+}
+
+void SetCloseGapCommand::apply(double closeGap)
+{
+    DocumentSettings settings = m_doc->settings();
+    settings.closeGap = closeGap;
+    m_doc->setSettings(settings);
+}
+
+std::unique_ptr<QUndoCommand> setCloseGapCommand(Document *doc, double closeGap, int editSerial)
+{
+    auto command = std::make_unique<SetCloseGapCommand>(doc, closeGap, editSerial);
     if (command->isObsolete())
         return nullptr;
-    command->setText(Command::tr("Close Gaps"));
     return command;
 }
 

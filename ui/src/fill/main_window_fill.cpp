@@ -1,6 +1,9 @@
 // The main window's fill parts: the Fill tool (F), the Fill toolbar with "Close gaps", and
 // Object → Fill All Enclosed Regions.
+#include "close_gap_box.h"
+
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_regions.h>
 #include <finbook/ui/canvas/canvas_tool.h>
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/fill/tool_fill.h>
@@ -9,6 +12,7 @@
 #include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/window/main_window.h>
 
+#include <QElapsedTimer>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSpinBox>
@@ -16,16 +20,22 @@
 #include <QToolBar>
 
 #include <cmath>
+#include <memory>
 
 namespace finbook::ui {
 
 namespace {
-QSpinBox *createCloseGapSpinBox(model::Document *doc, QWidget *parent)
+QSpinBox *createCloseGapSpinBox(EditorState *state, QWidget *parent)
 {
-    auto *spin = new QSpinBox(parent);
+    model::Document *doc = state->document();
+    auto *spin = new CloseGapBox(
+        [state] {
+            const model::StrokeGroup *g = state->currentGroup();
+            return g ? model::objectRegions(*g, -1.0)->regions().closeGap : -1.0;
+        },
+        parent);
     spin->setObjectName(QStringLiteral("fill.closeGap"));
     spin->setRange(-1, int(model::kMaxCloseGap));
-    spin->setSpecialValueText(MainWindow::tr("Close gaps: automatic"));
     spin->setPrefix(MainWindow::tr("Close gaps up to "));
     spin->setSuffix(MainWindow::tr(" px"));
     spin->setToolTip(MainWindow::tr("Openings in an outline up to this wide still make a region "
@@ -33,13 +43,30 @@ QSpinBox *createCloseGapSpinBox(model::Document *doc, QWidget *parent)
     spin->setKeyboardTracking(false);
     const auto sync = [doc, spin] {
         const QSignalBlocker block(spin);
+        if (spin->isVisible()) // else when it shows: no regions while the pen draws
+            spin->refreshAutomatic();
         const double gap = doc->settings().closeGap;
         spin->setValue(gap < 0 ? -1 : int(std::lround(gap)));
     };
     QObject::connect(doc, &model::Document::settingsChanged, spin, sync);
     QObject::connect(doc, &model::Document::documentReset, spin, sync);
-    QObject::connect(spin, &QSpinBox::valueChanged, spin, [doc](int value) {
-        if (auto command = model::setCloseGapCommand(doc, value < 0 ? -1.0 : double(value)))
+    QObject::connect(doc, &model::Document::groupsChanged, spin, sync);
+    QObject::connect(state, &EditorState::currentGroupChanged, spin, sync);
+    QObject::connect(state, &EditorState::currentFrameChanged, spin, sync);
+    // One undo step per burst of arrow clicks (the canvas takes the focus back after each, so
+    // focus cannot mark the end of a session): a change more than 1.5 s after the last starts
+    // a new step.
+    struct Session {
+        int serial = 0;
+        QElapsedTimer sinceLast;
+    };
+    auto session = std::make_shared<Session>();
+    QObject::connect(spin, &QSpinBox::valueChanged, spin, [doc, session](int value) {
+        if (!session->sinceLast.isValid() || session->sinceLast.elapsed() > 1500)
+            ++session->serial;
+        session->sinceLast.start();
+        if (auto command =
+                model::setCloseGapCommand(doc, value < 0 ? -1.0 : double(value), session->serial))
             doc->undoStack()->push(command.release());
     });
     sync();
@@ -76,7 +103,7 @@ void MainWindow::createFill()
     // keeps its room for the pen and the deformers the rest of the time.
     auto *bar = new QToolBar(tr("Fill"), this);
     bar->setObjectName(QStringLiteral("fillToolBar"));
-    bar->addWidget(createCloseGapSpinBox(m_doc, bar));
+    bar->addWidget(createCloseGapSpinBox(m_state, bar));
     addToolBar(Qt::TopToolBarArea, bar);
     const auto showOptions = [bar](CanvasTool *current) {
         bar->setVisible(current && current->id() == QStringLiteral("tool.fill"));

@@ -20,6 +20,7 @@ enum class CommandId : int {
     SetSkeletonSettings,
     MoveJoint,
     EditReference,
+    SetCloseGap,
 };
 
 class DocumentCommand : public QUndoCommand {

@@ -31,7 +31,29 @@ std::unique_ptr<QUndoCommand> fillRegionCommand(Document *doc, Id groupId, QPoin
 std::unique_ptr<QUndoCommand> removeFillCommand(Document *doc, Id groupId, QPointF at);
 // Fills every enclosed region of the object that shows no fill. Null when there is none.
 std::unique_ptr<QUndoCommand> fillAllRegionsCommand(Document *doc, Id groupId, QRgb color);
-// Sets the document's close-gap distance (px; < 0 = automatic). Null when unchanged.
-std::unique_ptr<QUndoCommand> setCloseGapCommand(Document *doc, double closeGap);
+// Sets the document's close-gap distance (px; < 0 = automatic), touching no other setting.
+// Commands with the same `editSerial` merge into one undo step (one session of the Close gaps
+// box: every arrow click of it); a session that ends where it began leaves no step. A
+// negative serial never merges.
+class SetCloseGapCommand : public DocumentCommand {
+public:
+    SetCloseGapCommand(Document *doc, double closeGap, int editSerial = -1,
+                       QUndoCommand *parent = nullptr);
+    int id() const override { return int(CommandId::SetCloseGap); }
+    bool mergeWith(const QUndoCommand *other) override;
+    void redo() override;
+    void undo() override;
+
+private:
+    void apply(double closeGap);
+
+    int m_serial;
+    double m_new;
+    double m_old;
+};
+
+// One SetCloseGapCommand. Null when unchanged.
+std::unique_ptr<QUndoCommand> setCloseGapCommand(Document *doc, double closeGap,
+                                                 int editSerial = -1);
 
 } // namespace finbook::model
