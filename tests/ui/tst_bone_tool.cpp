@@ -1,6 +1,7 @@
 // The Bone tool driven by real mouse events on the real canvas: build a skeleton with a click,
 // turn a bone, pull a joint, move the root, lock a joint; every drag one exact undo step.
 #include <finbook/model/commands.h>
+#include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/skeleton/skeleton_carry.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
@@ -162,6 +163,7 @@ private slots:
     void erasingEverythingRemovesTheSkeleton();
     void erasingALimbRebuildsTheSkeleton();
     void clickInsideAnOutlineBuilds();
+    void clickOnAFillBuilds();
     void partsJoinWhenBuiltAndShiftDragReattaches();
     void movingStrokesAwayRebuildsTheShownSkeleton();
 };
@@ -652,6 +654,42 @@ void TestBoneTool::clickInsideAnOutlineBuilds()
     QCOMPARE(fx.object().rig.kind(), RigKind::Skeleton);
     QCOMPARE(fx.doc.undoStack()->count(), 1);
     QVERIFY(fx.skeleton().jointCount() >= 2);
+}
+
+// A body left wide open at the bottom (a sketched animal's belly between its legs), closed for
+// the Fill tool by raising Close gaps and filled: a click on the fill picks the object, though
+// the shape the skeleton is built from (automatic gap) leaves it open.
+void TestBoneTool::clickOnAFillBuilds()
+{
+    Fixture fx;
+    Frame f;
+    f.id = fx.doc.allocateId();
+    StrokeGroup g;
+    g.id = fx.doc.allocateId();
+    auto data = std::make_shared<StrokeData>();
+    const QPointF corners[] = {{260, 320}, {100, 320}, {100, 200},
+                               {600, 200}, {600, 320}, {440, 320}};
+    for (int c = 0; c < 5; ++c)
+        for (int i = 0; i < 40; ++i) {
+            const QPointF p = corners[c] + (corners[c + 1] - corners[c]) * (i / 40.0);
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        }
+    data->points.push_back({440.0f, 320.0f, 1.0f});
+    data->width = 3.0f;
+    g.strokes.push_back({fx.doc.allocateId(), data});
+    f.groups.push_back(g);
+    fx.group = g.id;
+    DocumentSettings settings = fx.doc.settings();
+    settings.closeGap = 200.0;
+    fx.doc.reset({f}, settings, fx.doc.nextId());
+    const QPointF middle(350, 300); // 20 px above the opening: off the ink, outside the shape
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at(middle));
+    QVERIFY(fx.object().rig.empty()); // nothing there until it is filled
+    fx.doc.undoStack()->push(
+        fillRegionCommand(&fx.doc, fx.group, QPointF(350, 260), qRgb(200, 120, 40)).release());
+    QCOMPARE(fx.object().fills.size(), std::size_t(1));
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at(middle));
+    QCOMPARE(fx.object().rig.kind(), RigKind::Skeleton);
 }
 
 void TestBoneTool::partsJoinWhenBuiltAndShiftDragReattaches()

@@ -139,11 +139,16 @@ model::Id BoneTool::objectAt(const ToolEvent &event) const
     // No line under the cursor: a click inside a shape counts too (the object's shape the
     // skeleton is built from: closed regions and the ink), topmost object first.
     // Each shape is computed once: the current object first, then the others.
+    // A fill shown there counts as well (cheap: the regions are cached for painting).
+    const double gap = state()->document()->settings().closeGap;
+    const auto inside = [&](const model::StrokeGroup &g) {
+        return onShownFill(g, gap, event.pos) || insideShape(g, event.pos);
+    };
     const model::StrokeGroup *current = state()->currentGroup();
-    if (current && editable(*current) && insideShape(*current, event.pos))
+    if (current && editable(*current) && inside(*current))
         return current->id;
     for (auto it = f->groups.rbegin(); it != f->groups.rend(); ++it)
-        if (&*it != current && editable(*it) && insideShape(*it, event.pos))
+        if (&*it != current && editable(*it) && inside(*it))
             return it->id;
     return model::kNoId;
 }

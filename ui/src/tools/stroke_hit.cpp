@@ -2,6 +2,8 @@
 
 #include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/region.h>
+#include <finbook/model/fill/fill_regions.h>
+#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/render.h>
 #include <finbook/model/stroke_input.h>
 
@@ -131,6 +133,15 @@ bool insideShape(const model::StrokeGroup &g, QPointF pos)
         return false;
     const auto region = geometry::objectShape(inputs);
     return region && geometry::regionContains(*region, pos.x(), pos.y());
+}
+
+bool onShownFill(const model::StrokeGroup &group, double closeGap, QPointF pos)
+{
+    if (group.fills.empty())
+        return false;
+    const model::ObjectRegionsPtr regions = model::objectRegions(group, closeGap);
+    const int face = model::displayedFaceAt(*regions, group, pos);
+    return face >= 0 && model::faceFills(*regions, group.fills)[std::size_t(face)] >= 0;
 }
 
 } // namespace finbook::ui
