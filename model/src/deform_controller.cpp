@@ -96,7 +96,7 @@ QPointF DeformController::restPointFor(Id groupId, QPointF shown) const
 {
     const StrokeGroup *g = m_doc->group(groupId);
     const DeformSetup *s = setup(groupId);
-    if (!g || !g->isDeformed() || !s || !s->matches(*g))
+    if (!g || !g->isDeformed() || !s || !s->matches(*g, m_doc->settings().closeGap))
         return shown; // undeformed (or not yet solved): shown is rest
     return model::restPointFor(*s, *poseVertices(groupId), shown);
 }
@@ -104,7 +104,8 @@ QPointF DeformController::restPointFor(Id groupId, QPointF shown) const
 std::shared_ptr<const DeformSetup> DeformController::cachedSetup(const StrokeGroup &group) const
 {
     const auto fits = [&](const std::shared_ptr<const DeformSetup> &s) {
-        return s && sameSolverOptions(s->options, m_options) && s->matches(group);
+        return s && sameSolverOptions(s->options, m_options) &&
+               s->matches(group, m_doc->settings().closeGap);
     };
     if (const auto it = m_states.find(group.id); it != m_states.end() && fits(it->second.setup))
         return it->second.setup;
@@ -182,7 +183,7 @@ void DeformController::refresh(Id groupId, bool wantMesh)
     if (g->strokes.empty())
         return;
     State &state = m_states[groupId];
-    const MeshKey key = MeshKey::of(*g);
+    const MeshKey key = MeshKey::of(*g, m_doc->settings().closeGap);
     // Targets moving while the precompute runs need no new one: it solves them on arrival.
     if (!(state.waiting && state.pendingKey == key &&
           sameRestDefinition(state.pendingRest, g->rig))) {
@@ -222,7 +223,7 @@ void DeformController::showPreview(const StrokeGroup &group)
     }
     const double c = norm > 0 ? dot / norm : 1.0, s = norm > 0 ? cross / norm : 0.0;
     std::vector<std::size_t> offsets;
-    Eigen::MatrixX2d points = restPoints(MeshKey::of(group), offsets);
+    Eigen::MatrixX2d points = restPoints(MeshKey::of(group, -1.0), offsets);
     for (Eigen::Index i = 0; i < points.rows(); ++i) {
         const double x = points(i, 0) - restCentre.x(), y = points(i, 1) - restCentre.y();
         points.row(i) << posedCentre.x() + c * x - s * y, posedCentre.y() + s * x + c * y;
@@ -323,7 +324,8 @@ void DeformController::settle()
     for (Id id : pending) {
         const StrokeGroup *g = m_doc->group(id);
         const auto it = m_states.find(id);
-        if (!g || it == m_states.end() || !it->second.setup || !it->second.setup->matches(*g))
+        if (!g || it == m_states.end() || !it->second.setup ||
+            !it->second.setup->matches(*g, m_doc->settings().closeGap))
             continue;
         ++m_settleGeneration[id]; // drops a converged solve still under way
         auto pose = solvePose(*it->second.setup, *g, PoseStage::Final);
@@ -342,7 +344,7 @@ void DeformController::setupReady(Id groupId, std::shared_ptr<const DeformSetup>
         return;
     // The pins may have changed while the worker ran: use the setup only if it still fits
     // (else the newer request is already on its way).
-    if (setup->matches(*g))
+    if (setup->matches(*g, m_doc->settings().closeGap))
         solve(groupId, std::move(setup));
 }
 

@@ -38,10 +38,11 @@ Eigen::MatrixX2d restPoints(const MeshKey &key, std::vector<std::size_t> &offset
     return points;
 }
 
-MeshKey MeshKey::of(const StrokeGroup &group)
+MeshKey MeshKey::of(const StrokeGroup &group, double closeGap)
 {
     MeshKey key;
     key.density = group.meshDensity;
+    key.closeGap = std::isfinite(closeGap) && closeGap >= 0.0 ? closeGap : -1.0;
     key.strokes.reserve(group.strokes.size());
     for (const Stroke &s : group.strokes)
         key.strokes.push_back(s.data);
@@ -58,11 +59,11 @@ const Eigen::MatrixX3i &DeformSetup::meshTriangles() const
     return cage ? cage->meshTriangles() : meshed->mesh.F;
 }
 
-bool DeformSetup::matches(const StrokeGroup &group) const
+bool DeformSetup::matches(const StrokeGroup &group, double closeGap) const
 {
     // Pins are compared by where they sit, not by id: a duplicated frame's pins have new ids
     // but the same rest positions, and may share this factorization.
-    return sameRestDefinition(rest, group.rig) && key == MeshKey::of(group);
+    return sameRestDefinition(rest, group.rig) && key == MeshKey::of(group, closeGap);
 }
 
 Expected<std::shared_ptr<const MeshedObject>, QString> meshObject(const MeshKey &key)
@@ -71,6 +72,7 @@ Expected<std::shared_ptr<const MeshedObject>, QString> meshObject(const MeshKey 
         return unexpected(Deformation::tr("The object has no strokes to deform."));
     geometry::MeshOptions options;
     options.density = key.density;
+    options.regions.closeGap = key.closeGap;
     auto mesh = geometry::buildObjectMesh(strokeInputs(key), options);
     if (!mesh)
         return unexpected(Deformation::tr("This drawing cannot be meshed for deformation: %1")

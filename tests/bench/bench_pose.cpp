@@ -45,7 +45,7 @@ int benchPose(const QStringList &args)
     g.meshDensity =
         args.size() >= 2 && args[0] == QLatin1String("--density") ? args[1].toDouble() : 1.0;
     DeformJob job;
-    job.key = MeshKey::of(g);
+    job.key = MeshKey::of(g, -1.0);
     job.rig = g.rig.atRest();
     const auto start = Clock::now();
     auto setup = buildDeformSetup(job);

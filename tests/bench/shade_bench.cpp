@@ -76,7 +76,7 @@ bool poseWithRig(StrokeGroup &group, const Rig &rig)
     group.rig = rig;
     DeformJob job;
     job.groupId = group.id;
-    job.key = MeshKey::of(group);
+    job.key = MeshKey::of(group, -1.0);
     job.rig = rig.atRest();
     const auto setup = buildDeformSetup(job);
     if (!setup)

@@ -76,7 +76,7 @@ inline model::ExportSource generatedSource(model::Id *posed = nullptr)
     doc.setRig(moved, rig);
     model::DeformJob job;
     job.groupId = moved;
-    job.key = model::MeshKey::of(*doc.group(moved));
+    job.key = model::MeshKey::of(*doc.group(moved), -1.0);
     job.rig = rig.atRest();
     if (const auto setup = model::buildDeformSetup(job))
         if (const auto pose = model::solvePose(**setup, *doc.group(moved)))

@@ -36,7 +36,7 @@ ExportSource filledSource()
     doc.setRig(copy, rig);
     DeformJob job;
     job.groupId = copy;
-    job.key = MeshKey::of(*doc.group(copy));
+    job.key = MeshKey::of(*doc.group(copy), -1.0);
     job.rig = rig.atRest();
     const auto setup = buildDeformSetup(job);
     if (setup)

@@ -203,7 +203,7 @@ void TestFillShading::tonesFollowThePoseLightStaysOnScreen()
     doc.setRig(g, rig);
     DeformJob job;
     job.groupId = g;
-    job.key = MeshKey::of(*doc.group(g));
+    job.key = MeshKey::of(*doc.group(g), -1.0);
     job.rig = rig.atRest();
     const auto setup = buildDeformSetup(job);
     QVERIFY(setup);
@@ -231,7 +231,7 @@ void TestFillShading::tonesStayInsideTheFillWhenPosed()
     doc.setRig(g, rig);
     DeformJob job;
     job.groupId = g;
-    job.key = MeshKey::of(*doc.group(g));
+    job.key = MeshKey::of(*doc.group(g), -1.0);
     job.rig = rig.atRest();
     const auto setup = buildDeformSetup(job);
     QVERIFY(setup);

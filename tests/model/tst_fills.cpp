@@ -126,7 +126,7 @@ bool pose(Document &doc, Id g, const Rig &rig)
     doc.setRig(g, rig);
     DeformJob job;
     job.groupId = g;
-    job.key = MeshKey::of(*doc.group(g));
+    job.key = MeshKey::of(*doc.group(g), -1.0);
     job.rig = rig.atRest();
     const auto setup = buildDeformSetup(job);
     if (!setup)

@@ -108,7 +108,7 @@ void TestHostileNumbers::deformersNeverCrash()
         g.rig = rigOf(kind);
         DeformJob job;
         job.groupId = g.id;
-        job.key = MeshKey::of(g);
+        job.key = MeshKey::of(g, -1.0);
         job.rig = g.rig.atRest();
         const auto setup = buildDeformSetup(job);
         if (!setup) {

@@ -72,7 +72,7 @@ bool waitSolved(DeformController &controller, const Document &doc, Id groupId)
     QSignalSpy failed(&controller, &DeformController::errorOccurred);
     const auto ready = [&] {
         const DeformSetup *s = controller.setup(groupId);
-        return s && s->matches(*doc.group(groupId)) && !controller.isWaiting(groupId) &&
+        return s && s->matches(*doc.group(groupId), -1.0) && !controller.isWaiting(groupId) &&
                doc.group(groupId)->deformed;
     };
     for (int i = 0; i < 400 && !ready() && failed.isEmpty(); ++i)
@@ -249,7 +249,7 @@ void TestSkeletonJoin::weightsIncludeTheJoinedBone()
     QVERIFY(own);
     QCOMPARE(own->jointCount(), Eigen::Index(arm.jointCount()));
 
-    auto meshed = meshObject(MeshKey::of(*doc.group(c.arm)));
+    auto meshed = meshObject(MeshKey::of(*doc.group(c.arm), -1.0));
     QVERIFY(meshed);
     auto weights = deform::computeSkinningWeights((*meshed)->mesh.V, (*meshed)->mesh.F, *skeleton);
     QVERIFY(weights);

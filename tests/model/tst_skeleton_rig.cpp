@@ -53,7 +53,7 @@ bool waitSolved(DeformController &controller, const Document &doc, Id groupId)
     QSignalSpy failed(&controller, &DeformController::errorOccurred);
     const auto ready = [&] {
         const DeformSetup *s = controller.setup(groupId);
-        return s && s->matches(*doc.group(groupId)) && !controller.isWaiting(groupId);
+        return s && s->matches(*doc.group(groupId), -1.0) && !controller.isWaiting(groupId);
     };
     for (int i = 0; i < 400 && !ready() && failed.isEmpty(); ++i)
         solved.wait(25);

@@ -1,6 +1,7 @@
 // The Bone tool driven by real mouse events on the real canvas: build a skeleton with a click,
 // turn a bone, pull a joint, move the root, lock a joint; every drag one exact undo step.
 #include <finbook/model/commands.h>
+#include <finbook/model/deform_setup.h>
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/skeleton/skeleton_carry.h>
@@ -100,7 +101,7 @@ struct Fixture {
         t.start();
         while (t.elapsed() < 10000) {
             const DeformSetup *s = actions.controller()->setup(group);
-            if (s && s->matches(object()) && !actions.controller()->isWaiting(group))
+            if (s && s->matches(object(), -1.0) && !actions.controller()->isWaiting(group))
                 return true;
             QTest::qWait(10);
         }
@@ -163,7 +164,7 @@ private slots:
     void erasingEverythingRemovesTheSkeleton();
     void erasingALimbRebuildsTheSkeleton();
     void clickInsideAnOutlineBuilds();
-    void clickOnAFillBuilds();
+    void bodyClosedForTheFillIsRigged();
     void partsJoinWhenBuiltAndShiftDragReattaches();
     void movingStrokesAwayRebuildsTheShownSkeleton();
 };
@@ -657,9 +658,9 @@ void TestBoneTool::clickInsideAnOutlineBuilds()
 }
 
 // A body left wide open at the bottom (a sketched animal's belly between its legs), closed for
-// the Fill tool by raising Close gaps and filled: a click on the fill picks the object, though
-// the shape the skeleton is built from (automatic gap) leaves it open.
-void TestBoneTool::clickOnAFillBuilds()
+// the Fill tool by raising Close gaps and filled: the rig sees the body the fill shows, not the
+// wire of its outline (which the automatic gap leaves).
+void TestBoneTool::bodyClosedForTheFillIsRigged()
 {
     Fixture fx;
     Frame f;
@@ -682,14 +683,38 @@ void TestBoneTool::clickOnAFillBuilds()
     DocumentSettings settings = fx.doc.settings();
     settings.closeGap = 200.0;
     fx.doc.reset({f}, settings, fx.doc.nextId());
-    const QPointF middle(350, 300); // 20 px above the opening: off the ink, outside the shape
-    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at(middle));
-    QVERIFY(fx.object().rig.empty()); // nothing there until it is filled
+    const QPointF middle(350, 300); // 20 px above the opening, off the ink
     fx.doc.undoStack()->push(
         fillRegionCommand(&fx.doc, fx.group, QPointF(350, 260), qRgb(200, 120, 40)).release());
     QCOMPARE(fx.object().fills.size(), std::size_t(1));
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at(middle));
     QCOMPARE(fx.object().rig.kind(), RigKind::Skeleton);
+    // Built from the body as closed for the fill, not from the wire of its outline: bones run
+    // through the middle, 60 px from the lines.
+    const SkeletonRig &rig = fx.skeleton();
+    int middleJoints = 0;
+    for (const QPointF &j : rig.joints)
+        middleJoints += j.y() > 235 && j.y() < 285 && j.x() > 120 && j.x() < 580 ? 1 : 0;
+    QVERIFY2(middleJoints >= 2, qPrintable(QStringLiteral("%1 joints, first at %2, %3")
+                                               .arg(rig.joints.size())
+                                               .arg(rig.joints[0].x())
+                                               .arg(rig.joints[0].y())));
+    // The mesh pins and bones deform is that body too.
+    const auto wire = meshObject(MeshKey::of(fx.object(), -1.0));
+    const auto body = meshObject(MeshKey::of(fx.object(), fx.doc.settings().closeGap));
+    QVERIFY(wire && body);
+    const auto area = [](const geometry::ObjectMesh &m) {
+        double a = 0.0;
+        for (Eigen::Index t = 0; t < m.F.rows(); ++t) {
+            const Eigen::Vector2d u = m.V.row(m.F(t, 1)) - m.V.row(m.F(t, 0)),
+                                  v = m.V.row(m.F(t, 2)) - m.V.row(m.F(t, 0));
+            a += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+        }
+        return a;
+    };
+    QVERIFY2(area((*body)->mesh) > 0.9 * 500 * 120,
+             qPrintable(QString::number(area((*body)->mesh))));
+    QVERIFY(area((*wire)->mesh) < 0.5 * 500 * 120);
 }
 
 void TestBoneTool::partsJoinWhenBuiltAndShiftDragReattaches()

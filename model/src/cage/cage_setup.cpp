@@ -70,7 +70,8 @@ std::optional<QString> cageProblem(const StrokeGroup &group, const std::vector<Q
     if (auto error = geometry::checkCage(cage))
         return Deformation::tr("This cage cannot be used: %1").arg(sentence(error->message));
     std::vector<std::size_t> offsets;
-    if (auto error = geometry::checkCageContains(cage, restPoints(MeshKey::of(group), offsets)))
+    if (auto error =
+            geometry::checkCageContains(cage, restPoints(MeshKey::of(group, -1.0), offsets)))
         return Deformation::tr("The cage must enclose the whole object: %1")
             .arg(sentence(error->message));
     return std::nullopt;
@@ -81,11 +82,14 @@ bool cageCrossesItself(const std::vector<QPointF> &corners)
     return corners.size() >= 3 && !geometry::isSimple(toMatrix(corners));
 }
 
-Expected<std::vector<QPointF>, QString> fitCage(const StrokeGroup &group, int corners)
+Expected<std::vector<QPointF>, QString> fitCage(const StrokeGroup &group, int corners,
+                                                double closeGap)
 {
     geometry::FitCageOptions options;
     options.corners = corners;
-    auto cage = geometry::fitCage(strokeInputs(MeshKey::of(group)), options);
+    const MeshKey key = MeshKey::of(group, closeGap);
+    options.regions.closeGap = key.closeGap;
+    auto cage = geometry::fitCage(strokeInputs(key), options);
     if (!cage)
         return unexpected(
             Deformation::tr("No cage fits this drawing: %1").arg(sentence(cage.error().message)));

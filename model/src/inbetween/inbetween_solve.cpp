@@ -4,15 +4,17 @@ namespace finbook::model {
 
 namespace {
 
-Expected<std::shared_ptr<const DeformSetup>, QString>
-setupFor(const StrokeGroup &g, const deform::ArapOptions &options, DeformSetupCache &cache)
+Expected<std::shared_ptr<const DeformSetup>, QString> setupFor(const StrokeGroup &g,
+                                                               const deform::ArapOptions &options,
+                                                               DeformSetupCache &cache,
+                                                               double closeGap)
 {
     for (const auto &s : cache)
-        if (s && sameSolverOptions(s->options, options) && s->matches(g))
+        if (s && sameSolverOptions(s->options, options) && s->matches(g, closeGap))
             return s;
     DeformJob job;
     job.groupId = g.id;
-    job.key = MeshKey::of(g);
+    job.key = MeshKey::of(g, closeGap);
     job.rig = g.rig.atRest();
     job.options = options;
     // Another rest definition on the same drawing reuses the mesh.
@@ -29,7 +31,7 @@ setupFor(const StrokeGroup &g, const deform::ArapOptions &options, DeformSetupCa
 
 Expected<int, QString> solveInbetweenPoses(std::vector<Frame> &frames,
                                            const deform::ArapOptions &options,
-                                           DeformSetupCache *cache)
+                                           DeformSetupCache *cache, double closeGap)
 {
     DeformSetupCache local;
     DeformSetupCache &setups = cache ? *cache : local;
@@ -38,7 +40,7 @@ Expected<int, QString> solveInbetweenPoses(std::vector<Frame> &frames,
         for (StrokeGroup &g : f.groups) {
             if (g.rig.empty() || g.deformed || g.strokes.empty())
                 continue;
-            auto setup = setupFor(g, options, setups);
+            auto setup = setupFor(g, options, setups, closeGap);
             if (!setup)
                 return unexpected(setup.error());
             auto pose = solvePose(**setup, g);

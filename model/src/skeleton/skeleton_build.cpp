@@ -46,12 +46,13 @@ QString sentence(const geometry::GeometryError &e)
 
 Expected<SkeletonRig, QString> buildSkeletonRig(const StrokeGroup &group,
                                                 const SkeletonSettings &settings,
-                                                std::optional<QPointF> rootNear)
+                                                std::optional<QPointF> rootNear, double closeGap)
 {
-    const auto inputs = strokeInputs(MeshKey::of(group));
+    const MeshKey key = MeshKey::of(group, closeGap);
+    const auto inputs = strokeInputs(key);
     if (inputs.empty())
         return unexpected(Deformation::tr("The object has no strokes to build a skeleton in."));
-    auto region = geometry::objectShape(inputs);
+    auto region = geometry::objectShape(inputs, {}, geometry::RegionsOptions{key.closeGap});
     if (!region)
         return unexpected(sentence(region.error()));
     auto raw = geometry::rawSkeleton(*region);

@@ -82,7 +82,7 @@ bool CageActions::fitCage()
         emit messagePosted(tr("Choose an unlocked object with strokes to fit a cage to."));
         return false;
     }
-    auto cage = model::fitCage(*g, m_corners);
+    auto cage = model::fitCage(*g, m_corners, m_state->document()->settings().closeGap);
     if (!cage) {
         emit messagePosted(cage.error());
         return false;

@@ -35,7 +35,8 @@ void MeshOverlay::requestMissing()
         return;
     for (const model::StrokeGroup &g : f->groups) {
         const model::DeformSetup *setup = m_controller->setup(g.id);
-        const bool current = setup && setup->key == model::MeshKey::of(g);
+        const bool current =
+            setup && setup->key == model::MeshKey::of(g, m_state->document()->settings().closeGap);
         if (g.visible && !g.strokes.empty() && !current && !m_controller->isWaiting(g.id))
             m_controller->requestMesh(g.id);
     }

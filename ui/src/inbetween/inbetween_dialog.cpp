@@ -58,6 +58,7 @@ struct InbetweenDialog::PreviewJob {
     std::vector<model::Frame> frames;
     model::DeformSetupCache setups;
     deform::ArapOptions options;
+    double closeGap = -1.0;
     int interpolated = 0;
     std::optional<Expected<int, QString>> solved;
 };
@@ -168,8 +169,10 @@ void InbetweenDialog::updatePlan()
     job->frames = std::move(plan.frames);
     job->setups = m_setups;
     job->options = m_arap;
+    job->closeGap = m_doc->settings().closeGap;
     m_worker = QThread::create([job] {
-        job->solved = model::solveInbetweenPoses(job->frames, job->options, &job->setups);
+        job->solved =
+            model::solveInbetweenPoses(job->frames, job->options, &job->setups, job->closeGap);
     });
     m_worker->setParent(this);
     connect(m_worker, &QThread::finished, this, [this, job] {

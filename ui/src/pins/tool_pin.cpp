@@ -96,7 +96,7 @@ bool PinTool::objectHit(const model::StrokeGroup &group, const ToolEvent &event)
     // Before the first pin there is no mesh yet: the silhouette it will be built from answers.
     const model::DeformSetup *setup = m_controller->setup(group.id);
     if (!setup || !m_controller->poseVertices(group.id))
-        return insideShape(group, event.pos);
+        return insideShape(group, state()->document()->settings().closeGap, event.pos);
     const Eigen::MatrixX2d &U = *m_controller->poseVertices(group.id);
     const Eigen::MatrixX3i &F = setup->meshTriangles();
     const QPointF p = event.pos;
@@ -187,7 +187,7 @@ std::pair<QPointF, QPointF> PinTool::newPin(model::Id groupId, QPointF shown) co
     const QPointF rest = m_controller->restPointFor(groupId, shown);
     const model::DeformSetup *setup = m_controller->setup(groupId);
     const Eigen::MatrixX2d *U = m_controller->poseVertices(groupId);
-    if (!setup || !U || !setup->matches(*g))
+    if (!setup || !U || !setup->matches(*g, state()->document()->settings().closeGap))
         return {rest, shown};
     const Eigen::MatrixX2d &V = setup->meshVertices();
     const int v = deform::nearestVertex(V, Eigen::Vector2d(rest.x(), rest.y()));

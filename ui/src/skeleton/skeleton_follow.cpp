@@ -40,7 +40,8 @@ void followDrawing(EditorState &state, const std::vector<model::Id> &groupIds)
             doc->undoStack()->push(new model::RemoveRigCommand(doc, id));
             continue;
         }
-        auto rebuilt = model::buildSkeletonRig(*g, old.settings, old.joints[std::size_t(old.root)]);
+        auto rebuilt = model::buildSkeletonRig(*g, old.settings, old.joints[std::size_t(old.root)],
+                                               doc->settings().closeGap);
         if (!rebuilt)
             continue; // e.g. a single dot: keep the bones the drawing had
         *rebuilt = model::carryHandEdits(old, *rebuilt); // hand moves and locks that still fit

@@ -90,7 +90,8 @@ void SkeletonPanel::changed()
     s.prune = m_sliders[2]->value() / double(kSteps);
     s.collapse = m_sliders[3]->value() / double(kSteps);
     const model::SkeletonRig &old = g->rig.skeleton;
-    auto rebuilt = model::buildSkeletonRig(*g, s, old.joints[std::size_t(old.root)]);
+    auto rebuilt = model::buildSkeletonRig(*g, s, old.joints[std::size_t(old.root)],
+                                           m_state->document()->settings().closeGap);
     if (!rebuilt) {
         emit messagePosted(rebuilt.error());
         return;

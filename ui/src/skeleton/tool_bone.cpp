@@ -139,11 +139,9 @@ model::Id BoneTool::objectAt(const ToolEvent &event) const
     // No line under the cursor: a click inside a shape counts too (the object's shape the
     // skeleton is built from: closed regions and the ink), topmost object first.
     // Each shape is computed once: the current object first, then the others.
-    // A fill shown there counts as well (cheap: the regions are cached for painting).
+    // Closed as the Fill tool closes it: a body filled after raising Close gaps counts.
     const double gap = state()->document()->settings().closeGap;
-    const auto inside = [&](const model::StrokeGroup &g) {
-        return onShownFill(g, gap, event.pos) || insideShape(g, event.pos);
-    };
+    const auto inside = [&](const model::StrokeGroup &g) { return insideShape(g, gap, event.pos); };
     const model::StrokeGroup *current = state()->currentGroup();
     if (current && editable(*current) && inside(*current))
         return current->id;
@@ -161,7 +159,7 @@ void BoneTool::build(model::Id groupId)
         return;
     if (g->isDeformed() && g->rig.isPosed() && !m_confirmDiscard())
         return;
-    auto rig = model::buildSkeletonRig(*g);
+    auto rig = model::buildSkeletonRig(*g, {}, {}, doc->settings().closeGap);
     if (!rig) {
         canvas()->postMessage(rig.error());
         return;

@@ -2,8 +2,6 @@
 
 #include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/region.h>
-#include <finbook/model/fill/fill_regions.h>
-#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/render.h>
 #include <finbook/model/stroke_input.h>
 
@@ -110,7 +108,7 @@ model::Id strokeAt(const model::Frame &frame, const QPointF &p, qreal tolerance)
     return model::kNoId;
 }
 
-bool insideShape(const model::StrokeGroup &g, QPointF pos)
+bool insideShape(const model::StrokeGroup &g, double closeGap, QPointF pos)
 {
     std::vector<geometry::StrokeInput> inputs;
     double left = HUGE_VAL, top = HUGE_VAL, right = -HUGE_VAL, bottom = -HUGE_VAL;
@@ -131,17 +129,9 @@ bool insideShape(const model::StrokeGroup &g, QPointF pos)
     if (inputs.empty() || !(pos.x() >= left - reach && pos.x() <= right + reach &&
                             pos.y() >= top - reach && pos.y() <= bottom + reach))
         return false;
-    const auto region = geometry::objectShape(inputs);
+    const auto region = geometry::objectShape(
+        inputs, {}, geometry::RegionsOptions{closeGap >= 0.0 ? closeGap : -1.0});
     return region && geometry::regionContains(*region, pos.x(), pos.y());
-}
-
-bool onShownFill(const model::StrokeGroup &group, double closeGap, QPointF pos)
-{
-    if (group.fills.empty())
-        return false;
-    const model::ObjectRegionsPtr regions = model::objectRegions(group, closeGap);
-    const int face = model::displayedFaceAt(*regions, group, pos);
-    return face >= 0 && model::faceFills(*regions, group.fills)[std::size_t(face)] >= 0;
 }
 
 } // namespace finbook::ui

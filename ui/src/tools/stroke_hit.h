@@ -32,15 +32,11 @@ inline bool isEditable(const model::StrokeGroup &group)
     return group.visible && !group.locked;
 }
 
-// Whether `pos` lies inside the object's shape as shown: its closed regions and ink
-// (geometry/object_shape.h), so a click in the middle of an outline counts before any mesh
-// exists, even where the outline was left slightly open. The Pin and Bone tools both ask this.
-bool insideShape(const model::StrokeGroup &group, QPointF pos);
-
-// Whether `pos` lies on one of the object's fills as shown (its regions closed at the
-// document's `closeGap`): a body filled after raising Close gaps is part of what the animator
-// clicks, even where the shape the rig is built from leaves it open.
-bool onShownFill(const model::StrokeGroup &group, double closeGap, QPointF pos);
+// Whether `pos` lies inside the object's shape as shown: its regions closed at `closeGap` (the
+// document's Close gaps) and ink (geometry/object_shape.h), so a click in the middle of an outline
+// counts before any mesh exists, even where the outline was left slightly open. The Pin and Bone
+// tools both ask this.
+bool insideShape(const model::StrokeGroup &group, double closeGap, QPointF pos);
 
 // The topmost stroke of an editable object within `tolerance` of `p`, or kNoId.
 model::Id strokeAt(const model::Frame &frame, const QPointF &p, qreal tolerance);

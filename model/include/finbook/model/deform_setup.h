@@ -18,13 +18,16 @@
 
 namespace finbook::model {
 
-// Identity of an object's rest drawing for meshing: its (immutable, shared) stroke data and
-// mesh density. Undo restores the same pointers, so it finds the same mesh again.
+// Identity of an object's rest drawing for meshing: its (immutable, shared) stroke data, mesh
+// density and the document's Close gaps distance (the shape is its regions closed as the Fill
+// tool closes them, and its ink). Undo restores the same pointers, so it finds the same mesh
+// again.
 struct MeshKey {
     std::vector<StrokeDataPtr> strokes;
     double density = kDefaultMeshDensity;
+    double closeGap = -1.0; // DocumentSettings::closeGap: < 0 automatic
     friend bool operator==(const MeshKey &, const MeshKey &) = default;
-    static MeshKey of(const StrokeGroup &group);
+    static MeshKey of(const StrokeGroup &group, double closeGap);
 };
 
 // An object's rest mesh with every rest stroke point embedded in it.
@@ -65,9 +68,9 @@ struct DeformSetup {
     const Eigen::MatrixX2d &meshVertices() const;
     const Eigen::MatrixX3i &meshTriangles() const;
 
-    // Whether this setup serves `group` as it is now: same drawing, same rest definition
-    // (pin ids may differ).
-    bool matches(const StrokeGroup &group) const;
+    // Whether this setup serves `group` as it is now: same drawing, same Close gaps, same rest
+    // definition (pin ids may differ).
+    bool matches(const StrokeGroup &group, double closeGap) const;
 };
 
 // Meshes and embeds the rest strokes. Errors are sentences for the user.

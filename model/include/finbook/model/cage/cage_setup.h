@@ -39,9 +39,11 @@ std::optional<QString> cageProblem(const StrokeGroup &group, const std::vector<Q
 // Whether a posed cage crosses itself (it still deforms; the editor tints it as a warning).
 bool cageCrossesItself(const std::vector<QPointF> &corners);
 
-// Fit Cage: the drawing's silhouette grown and simplified to about `corners` corners (8–24
-// by default), containing every stroke point.
-Expected<std::vector<QPointF>, QString> fitCage(const StrokeGroup &group, int corners);
+// Fit Cage: the drawing's shape (its ink and its regions closed at the document's `closeGap`)
+// grown and simplified to about `corners` corners (8–24 by default), containing every stroke
+// point.
+Expected<std::vector<QPointF>, QString> fitCage(const StrokeGroup &group, int corners,
+                                                double closeGap = -1.0);
 
 constexpr int kDefaultFitCageCorners = 16;
 constexpr int kMinFitCageCorners = 4;

@@ -16,9 +16,10 @@ using DeformSetupCache = std::vector<std::shared_ptr<const DeformSetup>>;
 // Solves every object of `frames` that has a rig and no pose (deformed == nullptr). `cache`
 // (optional) offers setups to reuse — e.g. the keys' — and receives the ones built here.
 // Returns how many objects were solved, or the first error (frames solved before it keep
-// their poses).
+// their poses). `closeGap`: the document's Close gaps (the shape the objects are meshed from).
 Expected<int, QString> solveInbetweenPoses(std::vector<Frame> &frames,
                                            const deform::ArapOptions &options = {},
-                                           DeformSetupCache *cache = nullptr);
+                                           DeformSetupCache *cache = nullptr,
+                                           double closeGap = -1.0);
 
 } // namespace finbook::model

@@ -15,9 +15,12 @@ namespace finbook::model {
 // refinement with `settings`), at rest. The root is the joint nearest `rootNear`, or the one
 // nearest the drawing's centre of mass. A few milliseconds for a typical object, so it runs
 // on the GUI thread. Errors: sentences for the user (no strokes, nothing to skeletonise).
+// The shape is the object's ink and its regions closed at `closeGap` (the document's Close
+// gaps), as its mesh is.
 Expected<SkeletonRig, QString> buildSkeletonRig(const StrokeGroup &group,
                                                 const SkeletonSettings &settings = {},
-                                                std::optional<QPointF> rootNear = {});
+                                                std::optional<QPointF> rootNear = {},
+                                                double closeGap = -1.0);
 
 // Gives an object `built` (from buildSkeletonRig), replacing any other rig and pose.
 class BuildSkeletonCommand : public SetRigCommand {
