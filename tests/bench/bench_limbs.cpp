@@ -1,4 +1,4 @@
-// finbook-bench limbs [--before] [--png DIR] FILE...: every limb of the automatic skeleton
+// finbook-bench limbs [options] FILE...: every limb of the automatic skeleton
 // (a branch ending in a tip, tests/bench/limb_measures.h) turned at its base joint by +60°,
 // −60°, +100° and −100° in each skinning scheme, on the mesh the app builds (about 1,500
 // vertices). Per limb, scheme and angle one JSON line: outline self-crossings near the joint
@@ -10,15 +10,23 @@
 // over: no flip, and any fold is where the limb cut off and turned rigidly, as a cut-out puppet,
 // would cross the body's outline near the joint too: passes_over). Schemes: rigid and lbs
 // (plain bone boundary conditions), rigid_zones and lbs_zones (joint zones of
-// deform::kDefaultJointFree radii left to the solve; rigid_zones is the app's Rigid mode), and two
+// deform::kDefaultJointFree radii left to the solve; rigid_zones is the app's Rigid mode), and
 // candidates that lost (skin_alternatives.h): rigid_pieces (whatever one bone dominates moves
-// exactly with it, only blended flesh is left to ARAP) and cutout (every vertex follows its
-// dominant bone alone: a cut-out puppet on the uncut mesh). --before: the skeleton without the
-// animator rig (RefineOptions::animatorRig off). --joint-free X, --dominance X: sweep the zones'
-// factor and rigid_pieces' dominance; --reach X: the bones' boundary reach
-// (SkinningOptions::reach).
+// exactly with it, only blended flesh is left to ARAP), cutout (every vertex follows its
+// dominant bone alone: a cut-out puppet on the uncut mesh), rigid_zones_drag (the app's pins
+// solved by the Refined method's Drag stage, with its flip repair, instead of the paper's two
+// steps) and skeleton-driven ARAP (bench::skeletonArapHolds: everything outside the joint
+// zones moves rigidly with its bone, the zones are solved) with the Drag stage
+// (skeleton_arap), the two steps (skeleton_arap_two_step) and the converged Final stage
+// (skeleton_arap_final).
+// --before: the skeleton without the animator rig (RefineOptions::animatorRig off). --only A,B:
+// just these schemes. Sweeps: --joint-free X (the zones' factor), --dominance X (rigid_pieces),
+// --reach X (SkinningOptions::reach), --child-zone X, --parent-zone X, --arap-dominance X,
+// --thinnest 0|1, --soft-limbs 0|1 (bench::SkeletonArapOptions).
 // --png DIR: one contact sheet of every ±60° pose per file, DIR/poses_*.png (flipped
-// triangles red, pivots as red dots), of the scheme --scheme NAME (default rigid_zones).
+// triangles red, pivots as red dots), of the scheme --scheme NAME (default rigid_zones);
+// --png-degrees 100: the ±100° poses instead (DIR/poses100_*.png); --zoom: each cell shows 8
+// joint radii around the pivot, with the ARAP pins as green dots.
 #include "../deform/skin_test_support.h"
 #include "bench.h"
 #include "limb_measures.h"
@@ -56,20 +64,35 @@ constexpr double kFoldDisk = 3.0;  // joint radii: outline crossings nearer than
 // Joint radii: a limb cut off and turned rigidly that crosses the body this near the pivot
 // passes over it (passesOver).
 constexpr double kPassDisk = 6.0;
+constexpr double kZoomRadii = 8.0; // --zoom: joint radii from the pivot to a cell's edge
 
 struct Scheme {
     const char *name;
     bool rigid;
     double jointFree;
-    double dominance = 2.0; // ≤ 1: rigid pieces (bench::rigidPieces)
-    bool hardCut = false;   // linear blend with one-hot weights (bench::hardCut)
+    double dominance = 2.0;    // ≤ 1: rigid pieces (bench::rigidPieces)
+    bool hardCut = false;      // linear blend with one-hot weights (bench::hardCut)
+    bool skeletonArap = false; // pins from deform::skeletonArapHolds
+    int stage = -1; // rigid schemes: −1 arapSolve's two steps, else ArapStage (Drag, Final)
 };
-constexpr Scheme kSchemes[] = {{"rigid", true, 0.0},
-                               {"lbs", false, 0.0},
-                               {"rigid_zones", true, deform::kDefaultJointFree},
-                               {"lbs_zones", false, deform::kDefaultJointFree},
-                               {"rigid_pieces", true, deform::kDefaultJointFree, 0.9},
-                               {"cutout", false, 0.0, 2.0, true}};
+constexpr Scheme kSchemes[] = {
+    {"rigid", true, 0.0},
+    {"lbs", false, 0.0},
+    {"rigid_zones", true, deform::kDefaultJointFree},
+    {"lbs_zones", false, deform::kDefaultJointFree},
+    {"rigid_pieces", true, deform::kDefaultJointFree, 0.9},
+    {"cutout", false, 0.0, 2.0, true},
+    {"rigid_zones_drag", true, deform::kDefaultJointFree, 2.0, false, false,
+     int(deform::ArapStage::Drag)},
+    {"skeleton_arap", true, 0.0, 2.0, false, true, int(deform::ArapStage::Drag)},
+    {"skeleton_arap_two_step", true, 0.0, 2.0, false, true, -1},
+    {"skeleton_arap_final", true, 0.0, 2.0, false, true, int(deform::ArapStage::Final)}};
+
+constexpr const char *kUsage =
+    "[--before] [--only A,B] [--png DIR] [--png-degrees 60|100] [--zoom] [--scheme NAME] "
+    "[--joint-free X] [--dominance X] [--reach X] [--child-zone X] [--parent-zone X] "
+    "[--arap-dominance X] [--thinnest 0|1] [--soft-limbs 0|1] FILE... (every limb turned "
+    "±60°/±100° at its base)";
 
 struct Sample {
     int folds = 0, crossings = 0, flips = 0;
@@ -87,6 +110,7 @@ struct Skinned {
 // (negative: the schemes' own).
 struct Tuning {
     double jointFree = -1.0, dominance = -1.0, reach = -1.0;
+    bench::SkeletonArapOptions arap;
 };
 Tuning tuning;
 
@@ -113,7 +137,9 @@ std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::S
         nullptr};
     if (scheme.rigid) {
         const deform::SkinningWeights pins =
-            scheme.dominance <= 1.0
+            scheme.skeletonArap
+                ? bench::skeletonArapHolds(**weights, mesh.V, skeleton, s.radius, tuning.arap)
+            : scheme.dominance <= 1.0
                 ? bench::rigidPieces(**weights, mesh.V, skeleton, s.radius, free, dominance)
                 : deform::withJointZones(**weights, mesh.V, skeleton, s.radius, free);
         auto rigid = deform::rigidSkinPrecompute(mesh.V, mesh.F, pins);
@@ -234,9 +260,10 @@ struct Summary {
 
 void drawPose(QPainter &painter, const geometry::ObjectMesh &mesh, const Eigen::MatrixX2d &U,
               const Eigen::Vector2d &pivot, const QRectF &cell, const Eigen::RowVector2d &lo,
-              double scale)
+              double scale, const Eigen::VectorXi &pins)
 {
     painter.save();
+    painter.setClipRect(cell);
     painter.translate(cell.topLeft());
     painter.scale(scale, scale);
     painter.translate(-lo.x(), -lo.y());
@@ -255,6 +282,9 @@ void drawPose(QPainter &painter, const geometry::ObjectMesh &mesh, const Eigen::
     for (const auto &[a, b] : bench::boundaryEdges(mesh.F))
         painter.drawLine(QPointF(U(a, 0), U(a, 1)), QPointF(U(b, 0), U(b, 1)));
     painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0, 120, 0));
+    for (const int v : pins)
+        painter.drawEllipse(QPointF(U(v, 0), U(v, 1)), 1.2 / scale, 1.2 / scale);
     painter.setBrush(Qt::red);
     painter.drawEllipse(QPointF(pivot.x(), pivot.y()), 3.0 / scale, 3.0 / scale);
     painter.restore();
@@ -266,22 +296,37 @@ int benchLimbs(const QStringList &arguments)
     bool before = false;
     QString pngDir;
     int pngScheme = 2;
+    bool zoom = false;
+    int pngDegrees = 60;
+    QStringList only; // --only A,B: just these schemes
+    double thinnest = tuning.arap.thinnest ? 1.0 : 0.0, softLimbs = tuning.arap.softLimbs;
+    double degrees = pngDegrees;
+    const std::map<QString, double *> knobs = {
+        {QStringLiteral("--joint-free"), &tuning.jointFree},
+        {QStringLiteral("--dominance"), &tuning.dominance},
+        {QStringLiteral("--reach"), &tuning.reach},
+        {QStringLiteral("--child-zone"), &tuning.arap.childZone},
+        {QStringLiteral("--parent-zone"), &tuning.arap.parentZone},
+        {QStringLiteral("--arap-dominance"), &tuning.arap.dominance},
+        {QStringLiteral("--thinnest"), &thinnest},
+        {QStringLiteral("--soft-limbs"), &softLimbs},
+        {QStringLiteral("--png-degrees"), &degrees}};
     while (!args.isEmpty() && args.front().startsWith(QStringLiteral("--"))) {
         if (args.front() == QStringLiteral("--before")) {
             before = true;
+            args.removeFirst();
+        } else if (args.front() == QStringLiteral("--only") && args.size() >= 2) {
+            only = args[1].split(QLatin1Char(','));
+            args = args.mid(2);
+        } else if (args.front() == QStringLiteral("--zoom")) {
+            zoom = true;
             args.removeFirst();
         } else if (args.front() == QStringLiteral("--scheme") && args.size() >= 2) {
             for (int k = 0; k < int(std::size(kSchemes)); ++k)
                 pngScheme = args[1] == QLatin1String(kSchemes[k].name) ? k : pngScheme;
             args = args.mid(2);
-        } else if ((args.front() == QStringLiteral("--joint-free") ||
-                    args.front() == QStringLiteral("--dominance") ||
-                    args.front() == QStringLiteral("--reach")) &&
-                   args.size() >= 2) {
-            double &knob = args.front() == QStringLiteral("--joint-free")  ? tuning.jointFree
-                           : args.front() == QStringLiteral("--dominance") ? tuning.dominance
-                                                                           : tuning.reach;
-            knob = args[1].toDouble();
+        } else if (args.size() >= 2 && knobs.count(args.front())) {
+            *knobs.at(args.front()) = args[1].toDouble();
             args = args.mid(2);
         } else if (args.front() == QStringLiteral("--png") && args.size() >= 2) {
             pngDir = args[1];
@@ -291,9 +336,11 @@ int benchLimbs(const QStringList &arguments)
             break;
         }
     }
+    tuning.arap.thinnest = thinnest != 0.0;
+    tuning.arap.softLimbs = softLimbs != 0.0;
+    pngDegrees = degrees >= 80.0 ? 100 : 60;
     if (args.isEmpty()) {
-        std::fprintf(stderr, "usage: finbook-bench limbs [--before] [--png DIR] [--scheme NAME] "
-                             "[--joint-free X] [--dominance X] [--reach X] FILE...\n");
+        std::fprintf(stderr, "usage: finbook-bench limbs %s\n", kUsage);
         return 2;
     }
     std::map<std::pair<int, int>, Summary> summary; // (scheme, angle index)
@@ -333,6 +380,8 @@ int benchLimbs(const QStringList &arguments)
         painter.setRenderHint(QPainter::Antialiasing);
         for (int k = 0; k < int(std::size(kSchemes)); ++k) {
             const Scheme &scheme = kSchemes[k];
+            if (!only.isEmpty() && !only.contains(QLatin1String(scheme.name)))
+                continue;
             const auto skinned = skinFor(*mesh, *skeleton, *s, scheme);
             if (!skinned) {
                 ++failures;
@@ -349,7 +398,12 @@ int benchLimbs(const QStringList &arguments)
                     const auto start = Clock::now();
                     const auto posed = deform::forwardKinematics(*skeleton, pose);
                     Eigen::MatrixX2d U = mesh->V;
-                    if (scheme.rigid)
+                    if (scheme.rigid && scheme.stage >= 0) {
+                        Eigen::MatrixX2d targets;
+                        deform::skin(skinned->rigid->pins, *posed, targets);
+                        (void)deform::arapSolve(*skinned->rigid->arap, targets, U,
+                                                deform::ArapStage(scheme.stage));
+                    } else if (scheme.rigid)
                         (void)deform::rigidSkinSolve(*skinned->rigid, *posed, U);
                     else
                         deform::skin(skinned->vertices, *posed, U);
@@ -378,17 +432,27 @@ int benchLimbs(const QStringList &arguments)
                                 qPrintable(name), int(l), limb.tip, limb.base, scheme.name,
                                 kDegrees[a], m.folds, m.crossings, m.flips, int(over), m.jointArea,
                                 m.bodyMoved, ms);
-                    if (!pngDir.isEmpty() && k == pngScheme && a < 2)
-                        drawPose(
-                            painter, *mesh, U, pivot,
-                            QRectF(double(l) * kCell + 5, a * kCell + 5, kCell - 10, kCell - 10),
-                            lo - 0.3 * (hi - lo), scale);
+                    if (!pngDir.isEmpty() && k == pngScheme &&
+                        std::abs(kDegrees[a]) == double(pngDegrees)) {
+                        // --zoom: 16 joint radii around the pivot per cell, pins drawn.
+                        const double r = kZoomRadii * s->radius(limb.base);
+                        drawPose(painter, *mesh, U, pivot,
+                                 QRectF(double(l) * kCell + 5, (a % 2) * kCell + 5, kCell - 10,
+                                        kCell - 10),
+                                 zoom ? Eigen::RowVector2d(pivot.transpose().array() - r)
+                                      : Eigen::RowVector2d(lo - 0.3 * (hi - lo)),
+                                 zoom ? (kCell - 10) / (2.0 * r) : scale,
+                                 zoom && skinned->rigid ? skinned->rigid->pinVertices
+                                                        : Eigen::VectorXi());
+                    }
                 }
             }
         }
         painter.end();
         if (!pngDir.isEmpty() && !limbs.empty())
-            sheet.save(QDir(pngDir).filePath(QStringLiteral("poses_%1.png").arg(name)));
+            sheet.save(QDir(pngDir).filePath(
+                QStringLiteral("poses%1_%2.png")
+                    .arg(pngDegrees == 60 ? QString() : QString::number(pngDegrees), name)));
         std::fflush(stdout);
     }
     using bench::median;
@@ -424,8 +488,4 @@ int benchLimbs(const QStringList &arguments)
 
 } // namespace
 
-FINBOOK_BENCH("limbs",
-              "[--before] [--png DIR] [--scheme NAME] [--joint-free X] [--dominance X] [--reach X] "
-              "FILE... (every "
-              "limb turned ±60°/±100° at its base)",
-              benchLimbs);
+FINBOOK_BENCH("limbs", kUsage, benchLimbs);

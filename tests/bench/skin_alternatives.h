@@ -219,4 +219,99 @@ inline finbook::deform::SkinningWeights hardCut(const finbook::deform::SkinningW
     return out;
 }
 
+// Skeleton-driven ARAP (issue 21, second pass): outside the joints the shape moves in rigid
+// pieces with its bones and only each joint's flesh is solved as rigidly as possible between
+// them. Held: every vertex whose largest weight is ≥ dominance (one bone clearly owns it) and
+// that lies outside every joint zone, a disk around a joint where bones meet of childZone radii
+// on the side of the bones leaving it (the limb that bends) and parentZone radii on the side of
+// the bone arriving (the body around a shoulder). thinnest: a joint's radius is the smallest of
+// its own and its neighbours' (a junction where a thin limb leaves gets the limb's joint, not
+// the body's width). softLimbs: the flesh of limb bones (a bone whose subtree is one chain to a
+// tip) is held only along the bone, outside 1 radius of its joints, as the app's rigid_zones
+// does; only the body is held in pieces. Held rows are one-hot, so each pin follows exactly its
+// bone. A bone left with nothing keeps what its boundary held.
+struct SkeletonArapOptions {
+    double childZone = 2.0, parentZone = 1.5, dominance = 0.5;
+    bool thinnest = false, softLimbs = false;
+};
+
+inline finbook::deform::SkinningWeights
+skeletonArapHolds(const finbook::deform::SkinningWeights &weights, const Eigen::MatrixX2d &V,
+                  const finbook::deform::Skeleton &skeleton, const Eigen::VectorXd &radius,
+                  const SkeletonArapOptions &options)
+{
+    finbook::deform::SkinningWeights out = weights;
+    const Eigen::Index J = skeleton.jointCount();
+    if (radius.size() != J || weights.W.cols() != J || weights.owner.size() != V.rows())
+        return out;
+    std::vector<int> degree(std::size_t(J), 0), childCount(std::size_t(J), 0);
+    for (Eigen::Index j = 0; j < J; ++j) {
+        if (skeleton.parent(j) >= 0) {
+            ++degree[std::size_t(j)];
+            ++degree[std::size_t(skeleton.parent(j))];
+            ++childCount[std::size_t(skeleton.parent(j))];
+        }
+    }
+    // chain[j]: the subtree below j is one chain of bones to a tip (children have larger
+    // indices than parents is not guaranteed, so iterate to a fixed point).
+    std::vector<char> chain(std::size_t(J), 0);
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (Eigen::Index j = 0; j < J; ++j) {
+            char c = childCount[std::size_t(j)] == 0 ? 1 : 0;
+            if (childCount[std::size_t(j)] == 1) {
+                for (Eigen::Index k = 0; k < J; ++k)
+                    if (skeleton.parent(k) == j)
+                        c = chain[std::size_t(k)];
+            }
+            if (c != chain[std::size_t(j)]) {
+                chain[std::size_t(j)] = c;
+                changed = true;
+            }
+        }
+    }
+    Eigen::VectorXd zone = radius;
+    for (Eigen::Index j = 0; options.thinnest && j < J; ++j) {
+        const int p = skeleton.parent(j);
+        if (p >= 0) {
+            zone(j) = std::min(zone(j), radius(p));
+            zone(p) = std::min(zone(p), radius(j));
+        }
+    }
+    std::vector<int> held(std::size_t(J), 0);
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        Eigen::Index best = 0;
+        const double w = weights.W.row(v).maxCoeff(&best);
+        int bone = weights.owner(v) >= 0 ? weights.owner(v) : int(best);
+        const bool soft = options.softLimbs && chain[std::size_t(bone)];
+        if (weights.owner(v) < 0 && (soft || !(w >= options.dominance)))
+            bone = -1;
+        for (Eigen::Index j = 0; bone >= 0 && j < J; ++j) {
+            if (degree[std::size_t(j)] < 2)
+                continue;
+            const double factor = soft                         ? 1.0
+                                  : skeleton.parent(bone) == j ? options.childZone
+                                                               : options.parentZone;
+            const double r = factor * (soft ? radius(j) : zone(j));
+            if ((V.row(v) - skeleton.joints.row(j)).squaredNorm() < r * r)
+                bone = -1;
+        }
+        out.owner(v) = bone;
+        if (bone >= 0)
+            ++held[std::size_t(bone)];
+    }
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        const int o = weights.owner(v);
+        if (o >= 0 && held[std::size_t(o)] == 0)
+            out.owner(v) = o;
+    }
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        if (out.owner(v) >= 0) {
+            out.W.row(v).setZero();
+            out.W(v, out.owner(v)) = 1.0;
+        }
+    }
+    return out;
+}
+
 } // namespace finbook::bench
