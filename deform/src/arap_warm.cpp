@@ -55,9 +55,12 @@ Expected<double, DeformError> warmStart(const ArapPrecompute &d, const Eigen::Ma
 // the next event needs about the same, so its start takes β·c on top of step 1's answer,
 // β the handles' move this time along the last one's, over the last one's (at most
 // kMaxMomentum; none for a reversed drag), kept only where it lowers the energy. With the
-// lag carried forward instead of built up again, 30 events of the quality bench's bend
-// ended at 1.02–1.6× the converged energy on 20k-vertex drawings that plain warm events
-// left at 1.2–3.0× (its thin sketches, budget 8 ms).
+// lag carried forward instead of built up again, on the 8 slowest 20k-vertex drawings of the
+// quality bench 30 events of its bend ended at 1.002–1.12× the converged energy (a tree
+// sketch 1.52×) with an 8 ms budget, where plain warm events left 1.11–2.96× at 4 ms and
+// 1.007–1.52× at 12 ms. Keeping the acceleration's history across events instead helped
+// less and diverged on thin sketches (15× at 4 ms) unless each pass paid a second
+// rotation fit to check it.
 constexpr double kMaxMomentum = 1.5;
 
 void addMomentum(const ArapPrecompute &d, Workspace &w)
