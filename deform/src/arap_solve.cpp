@@ -238,84 +238,6 @@ ArapSolveResult twoStepSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc
     return report;
 }
 
-// A usable warm start: the mesh's size, finite, within the coordinate range.
-bool usableStart(const ArapPrecompute &d, const Eigen::MatrixX2d &start)
-{
-    return start.rows() == d.rest.size() && start.allFinite() &&
-           (start.size() == 0 || start.cwiseAbs().maxCoeff() <= kMaxDeformCoordinate);
-}
-
-// A warm event whose handles moved further than this fraction of the object size since the
-// start (a jump: undo, redo, a fast flick, not a mouse move of a drag) also tries the cold
-// start, and takes it where its energy is below kColdShare of the warm start's. Undoing a
-// drag to the pins' rest so shows the rest pose at once (the cold start is exact there), as
-// before the drag. A mouse move during a 30-event drag of the quality bench's bend moves the
-// far pins about 2.6 % of the width; on its 3-event drags (about 25 % per event) taking the
-// cold start whenever its energy was lower left the 20k-vertex poses further from the optimum
-// than the warm start did (median 2.6× against 1.4×): its energy falls more slowly after.
-constexpr double kJump = 0.05;
-constexpr double kColdShare = 0.5;
-
-// The cold event's start (coarse rotations, or step 1) into w.positions.
-std::optional<DeformError> coldStart(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report)
-{
-    if (d.triangleCluster.size() > 0) {
-        detail::coarseStart(d, w);
-        return std::nullopt;
-    }
-    return detail::similarityStep(d, w, report, false);
-}
-
-// The first iterate of a warm event: the start moved by step 1's answer to how far the handles
-// moved since it (step 1 is linear in the handles), so a pin's jump spreads over the shape as
-// a similarity field instead of tearing the triangles next to the pin. Returns the handles'
-// largest move.
-Expected<double, DeformError> warmStart(const ArapPrecompute &d, const Eigen::MatrixX2d &start,
-                                        Workspace &w, ArapSolveReport &report)
-{
-    const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
-    auto q = w.positions.segment(nf, handles);
-    auto &targets = w.handleTargets;
-    targets = q;
-    double move = 0.0;
-    for (Eigen::Index c = 0; c < handles; ++c) {
-        const int v = d.order(nf + c);
-        q(c) -= detail::Complex(start(v, 0), start(v, 1));
-        move = std::max(move, detail::squaredMagnitude(q(c)));
-    }
-    const int *order = d.order.data();
-    const double *x = start.col(0).data(), *y = start.col(1).data();
-    detail::Complex *out = w.positions.data();
-    auto error = detail::similarityStep(d, w, report, false);
-    q = targets;
-    if (error)
-        return unexpected(std::move(*error));
-    for (Eigen::Index k = 0; k < nf; ++k)
-        out[k] += detail::Complex(x[order[k]], y[order[k]]);
-    return std::sqrt(move);
-}
-
-// The start of a warm event into w.positions, and how many passes follow it: the warm start
-// and data.warmDragPasses; after a jump (kJump) the warm or the cold start (kColdShare), and
-// the cold event's passes less one (the warm start and the comparison cost about that).
-Expected<int, DeformError> warmOrCold(const ArapPrecompute &d, const Eigen::MatrixX2d &start,
-                                      Workspace &w, ArapSolveReport &report)
-{
-    const auto move = warmStart(d, start, w, report);
-    if (!move)
-        return unexpected(move.error());
-    if (!(*move > kJump * d.objectSize) || d.freeCount == 0)
-        return d.warmDragPasses;
-    auto free = w.positions.head(d.freeCount);
-    const double warm = detail::fitRotations(d, w.positions, w.rotations, true);
-    w.iterate = free;
-    if (auto error = coldStart(d, w, report))
-        return unexpected(std::move(*error));
-    if (!(detail::fitRotations(d, w.positions, w.rotations, true) < kColdShare * warm))
-        free = w.iterate;
-    return std::max(1, d.dragPasses - 1);
-}
-
 // `start` non-null: a warm drag event (see arapSolveFrom), already checked by usableStart.
 ArapSolveResult refinedSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc,
                              Eigen::MatrixX2d &U, ArapStage stage,
@@ -331,12 +253,14 @@ ArapSolveResult refinedSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc
     // fields converge slowly, the pose after the same passes was closer to the optimum (the
     // worst of 8 from 1.010× to 1.005× the converged energy).
     int dragPasses = d.dragPasses;
+    // The event continues the last one on this thread: momentum applies.
+    const bool continued = start && detail::continuesDrag(d, w, *start);
     if (start) {
-        const auto passes = warmOrCold(d, *start, w, report);
+        const auto passes = detail::warmOrCold(d, *start, w, report, continued);
         if (!passes)
             return unexpected(passes.error());
         dragPasses = *passes;
-    } else if (auto error = coldStart(d, w, report)) {
+    } else if (auto error = detail::coldStart(d, w, report)) {
         return unexpected(std::move(*error));
     }
     const int passes = final ? std::max(1, d.options.finalPassCap) : dragPasses;
@@ -356,6 +280,8 @@ ArapSolveResult refinedSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc
         report.flippedTriangles = detail::countFlips(d, w.positions);
     detail::placeFollowers(d, w.positions);
     detail::scatterPositions(d, w.positions, U);
+    if (start)
+        detail::rememberDrag(d, w, U);
     return report;
 }
 
@@ -379,7 +305,7 @@ ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc
 ArapSolveResult arapSolveFrom(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
                               const Eigen::MatrixX2d &start, Eigen::MatrixX2d &U)
 {
-    if (data.options.method == ArapMethod::TwoStep || !usableStart(data, start))
+    if (data.options.method == ArapMethod::TwoStep || !detail::usableStart(data, start))
         return arapSolve(data, bc, U, ArapStage::Drag);
     return refinedSolve(data, bc, U, ArapStage::Drag, nullptr, &start);
 }

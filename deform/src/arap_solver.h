@@ -27,6 +27,13 @@ struct Workspace {
     std::vector<int> region, mark;                                        // flip repair
     Eigen::VectorXcd coarseRotations, coarseCovariance, coarseHandleTerm; // K each
     Eigen::VectorXcd handleTargets; // handles: a warm start's targets while step 1 moves it
+    // A drag's momentum (arap_solve.cpp): the precompute and the pose the last warm event on
+    // this thread returned; that event's start moved by step 1 (free vertices), its handles'
+    // move, and what its passes added to that start. warmPlain and handleMove are the current
+    // event's, before it ends.
+    const ArapPrecompute *dragOwner = nullptr;
+    Eigen::MatrixX2d dragPose;
+    Eigen::VectorXcd warmPlain, handleMove, lastCorrection, lastMove;
 };
 
 Workspace &workspace();
@@ -130,6 +137,19 @@ private:
 // Drag start with coarse rotations: solves the clustered problem from the handles in
 // w.positions, then one global step with those rotations into w.positions.head(freeCount).
 void coarseStart(const ArapPrecompute &d, Workspace &w);
+
+// Drag events from the previous pose (arap_warm.cpp). A start of the mesh's size, finite and in
+// range; the cold event's start (coarse rotations or step 1) into w.positions; the start of a
+// warm event into w.positions and the passes that follow it (with `continued`, the momentum
+// of the last event); whether `start` is the pose the last warm event on w returned for d;
+// and remembering this event's pose and correction for the next one.
+bool usableStart(const ArapPrecompute &d, const Eigen::MatrixX2d &start);
+std::optional<DeformError> coldStart(const ArapPrecompute &d, Workspace &w,
+                                     ArapSolveReport &report);
+Expected<int, DeformError> warmOrCold(const ArapPrecompute &d, const Eigen::MatrixX2d &start,
+                                      Workspace &w, ArapSolveReport &report, bool continued);
+bool continuesDrag(const ArapPrecompute &d, const Workspace &w, const Eigen::MatrixX2d &start);
+void rememberDrag(const ArapPrecompute &d, Workspace &w, const Eigen::MatrixX2d &U);
 
 // Writes internal-order positions into U (n×2, original order).
 void scatterPositions(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::MatrixX2d &U);

@@ -71,8 +71,11 @@ struct ArapOptions {
     // Refined, Drag: per-event budget in ms (or 3× the modelled two steps, if more). It
     // becomes a pass count from the mesh size (a cost model, never a clock), so a drag pose
     // is a deterministic function of the pins (and of the start, for arapSolveFrom); see
-    // ArapPrecompute::dragPasses.
-    double dragBudgetMs = 4.0;
+    // ArapPrecompute::dragPasses. Half a 60 Hz frame: at 4 ms thin 17k-vertex sketches, whose
+    // passes are cheap, got 3 passes per event (3 ms) and lagged up to 3× the converged
+    // energy behind the pins; at 8 ms they get 8–12 (9–10 ms of thread CPU measured on a
+    // busy 2-core machine, where the model's 8 ms take longer).
+    double dragBudgetMs = 8.0;
     // Refined, Drag: at least / at most this many passes (a coarse start counts as one). Below
     // 2 a drag pose is barely better than the paper's; 35–70 fit 4 ms at 2k vertices (thin
     // drawings with nearly rigid optima need them: 32 left one at 1.57× the converged energy).
@@ -251,7 +254,13 @@ ArapSolveResult arapSolve(const ArapPrecompute &data, const Eigen::MatrixX2d &bc
 // mesh cannot reach it. The pose depends on the drag's path, so it is only for showing a
 // drag: the stored pose is the Final stage's, a pure function of the pins. With TwoStep, or a
 // start of the wrong size or with a non-finite or out-of-range coordinate, it is the Drag
-// stage's pose (start ignored). Errors as the three-argument form.
+// stage's pose (start ignored). When `start` is, bit for bit, the pose the previous
+// arapSolveFrom on this thread returned for the same precompute (the app's drag: its events
+// run on one thread, each from the pose the last one showed), the event continues that one:
+// its start also takes what the last event's passes added to their start, scaled by how far
+// the handles moved this time along last time's move, where that lowers the energy
+// (momentum: in a steady drag the pose keeps up with the pins instead of lagging behind).
+// Errors as the three-argument form.
 ArapSolveResult arapSolveFrom(const ArapPrecompute &data, const Eigen::MatrixX2d &bc,
                               const Eigen::MatrixX2d &start, Eigen::MatrixX2d &U);
 
