@@ -115,7 +115,9 @@ struct ArapFactorization::Shared {
         stepTwoOk = factor.factorize(d.factorPattern, d.stepTwoMatrix);
         if (!stepTwoOk)
             return;
-        d.stepTwoLower = factor.lowerMatrix();
+        // Swapped in: assigning Eigen 3.4's SparseMatrix copies it even from a temporary.
+        Eigen::SparseMatrix<double> lower = factor.lowerMatrix();
+        d.stepTwoLower.swap(lower);
         const auto &L = d.stepTwoLower;
         d.stepTwoPivotInverse.resize(L.cols());
         for (Eigen::Index j = 0; j < L.cols(); ++j) // the diagonal leads each column

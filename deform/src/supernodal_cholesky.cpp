@@ -5,6 +5,11 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace finbook::deform {
 namespace {
@@ -33,6 +38,37 @@ std::int64_t trapezoid(std::int64_t rows, std::int64_t columns)
 }
 
 } // namespace
+
+namespace detail {
+
+namespace {
+constexpr std::size_t kHugePage = std::size_t(2) << 20;
+constexpr std::size_t kHugeFrom = std::size_t(4) << 20;
+} // namespace
+
+void *allocateFactorStorage(std::size_t bytes)
+{
+#if defined(__linux__)
+    if (bytes >= kHugeFrom) {
+        const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+        if (void *p = std::aligned_alloc(kHugePage, rounded)) {
+            madvise(p, rounded, MADV_HUGEPAGE); // advice only: ignored where unsupported
+            return p;
+        }
+        throw std::bad_alloc();
+    }
+#endif
+    if (void *p = std::malloc(bytes > 0 ? bytes : 1))
+        return p;
+    throw std::bad_alloc();
+}
+
+void releaseFactorStorage(void *p, std::size_t) noexcept
+{
+    std::free(p);
+}
+
+} // namespace detail
 
 std::vector<int> eliminationTree(int n, const int *outer, const int *inner)
 {
@@ -282,6 +318,15 @@ bool SupernodalCholesky<Scalar>::factorize(std::shared_ptr<const SupernodalSymbo
                                            const Eigen::SparseMatrix<Scalar> &lower,
                                            SupernodalIsa isa)
 {
+    return factorize(std::move(symbolic), lower.outerIndexPtr(), lower.innerIndexPtr(),
+                     lower.innerNonZeroPtr(), lower.valuePtr(), isa);
+}
+
+template <class Scalar>
+bool SupernodalCholesky<Scalar>::factorize(std::shared_ptr<const SupernodalSymbolic> symbolic,
+                                           const int *outer, const int *inner, const int *nonZeros,
+                                           const Scalar *values, SupernodalIsa isa)
+{
     m_symbolic = std::move(symbolic);
     m_ok = false;
     const SupernodalSymbolic &s = *m_symbolic;
@@ -296,10 +341,10 @@ bool SupernodalCholesky<Scalar>::factorize(std::shared_ptr<const SupernodalSymbo
     pattern.rows = s.rows.data();
     pattern.valueStart = s.valueStart.data();
     supernodal::Lower<Scalar> a;
-    a.outer = lower.outerIndexPtr();
-    a.inner = lower.innerIndexPtr();
-    a.nonZeros = lower.innerNonZeroPtr();
-    a.values = lower.valuePtr();
+    a.outer = outer;
+    a.inner = inner;
+    a.nonZeros = nonZeros;
+    a.values = values;
     std::vector<int> ints(std::size_t(s.n) + 3 * std::size_t(count) + std::size_t(s.maxRows));
     std::vector<Scalar> update(std::size_t(s.maxUpdate));
     supernodal::Scratch scratch;

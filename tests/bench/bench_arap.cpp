@@ -1,9 +1,11 @@
-// finbook-bench arap: precompute and per-drag-event cost of the ARAP deformer on grid meshes,
-// with 4 pins and with about 6 % of the vertices pinned (pins column; precompute_min_ms the
-// fastest of several precomputes), against the floor of one step-2 back-substitution, plus
-// pin-to-strokes latency and the refined method's drag event (update_ms is the paper's two
-// steps, drag_ms the refined drag stage, drag_over_update their ratio; factor_isa the
-// instruction set of the factorization; *_min_ms the fastest event, less disturbed by a busy
+// finbook-bench arap: precompute and per-drag-event cost of the ARAP deformer on square grid
+// meshes (with --bar: 4:1 bars, the bent bars' shape), each with 4 pins and with about 6 % of
+// the vertices pinned (pins column; precompute_min_ms the fastest of several precomputes,
+// precompute_cpu_min_ms the least CPU time of the calling thread, which a busy machine
+// disturbs less; the precompute's helper thread runs beside it), against the floor of one step-2
+// back-substitution, plus pin-to-strokes latency and the refined method's drag event (update_ms is
+// the paper's two steps, drag_ms the refined drag stage, drag_over_update their ratio; factor_isa
+// the instruction set of the factorization; *_min_ms the fastest event, less disturbed by a busy
 // machine); then the pose quality of a 4:1 bar bent 60° (see arap_quality.h; there
 // drag_over_two_step is the same ratio for that pose). With --quality FILE... the same quality
 // columns for real drawings, each meshed as the app meshes it and bent 45° (with --density D
@@ -21,6 +23,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <random>
 
 namespace {
@@ -160,18 +163,35 @@ Floors measureFloor(const ArapPrecompute &d, int repeats)
     return f;
 }
 
-int runSize(int vertices, bool sixPercent)
+// A 4:1 bar of about `vertices` vertices (the shape runBar bends).
+finbook::test::GridMesh barMesh(int vertices)
 {
-    const auto g = finbook::test::gridMeshWithVertices(vertices, 1000.0, 0.1);
+    const int rows = std::max(2, int(std::lround((std::sqrt(1.0 + 16.0 * vertices) - 5.0) / 8.0)));
+    return finbook::test::gridMesh(4 * rows, rows, 400.0, 100.0, 0.1);
+}
+
+double threadCpuMs()
+{
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
+}
+
+int runSize(int vertices, bool sixPercent, bool bar)
+{
+    const auto g =
+        bar ? barMesh(vertices) : finbook::test::gridMeshWithVertices(vertices, 1000.0, 0.1);
     const PinSet pins = pinSet(g, sixPercent);
     const Eigen::VectorXi &b = pins.b;
     const int repeats = vertices > 50000 ? 5 : 9;
     std::shared_ptr<const ArapPrecompute> data;
-    std::vector<double> precomputes;
+    std::vector<double> precomputes, precomputeCpu;
     for (int k = 0; k < repeats; ++k) {
+        const double cpuStart = threadCpuMs();
         const auto start = Clock::now();
         data = *finbook::deform::arapPrecompute(g.V, g.F, b);
         precomputes.push_back(msSince(start));
+        precomputeCpu.push_back(threadCpuMs() - cpuStart);
     }
     const double precomputeMs = finbook::bench::median(precomputes);
     const Eigen::MatrixX2d rest = finbook::test::rowsOf(g.V, b);
@@ -200,18 +220,21 @@ int runSize(int vertices, bool sixPercent)
     const double update = finbook::bench::median(updates);
     std::fprintf(stderr, "nnzL=%ld (%.1f/row)\n", long(data->stepTwoLower.nonZeros()),
                  double(data->stepTwoLower.nonZeros()) / double(data->freeCount));
-    std::printf("{\"bench\":\"arap\",\"vertices\":%lld,\"triangles\":%lld,\"pins\":%lld,"
-                "\"precompute_ms\":%.3f,\"precompute_min_ms\":%.3f,\"update_ms\":%.4f,\"floor_ms\":"
+    std::printf("{\"bench\":\"arap\",\"mesh\":\"%s\",\"vertices\":%lld,\"triangles\":%lld,"
+                "\"pins\":%lld,\"precompute_ms\":%.3f,\"precompute_min_ms\":%.3f,"
+                "\"precompute_cpu_min_ms\":%.3f,\"update_ms\":%.4f,\"floor_ms\":"
                 "%.4f,\"ratio\":%.2f,"
                 "\"floor_complex_ms\":%.4f,\"floor_kernel_ms\":%.4f,\"ratio_vs_kernel\":%.2f,"
                 "\"stroke_points\":5000,\"end_to_end_ms\":%.4f,\"drag_passes\":%d,"
                 "\"drag_ms\":%.4f,\"drag_min_ms\":%.4f,\"update_min_ms\":%.4f,"
                 "\"drag_over_update\":%.2f,\"factor_isa\":\"%s\"}\n",
-                (long long)g.V.rows(), (long long)g.F.rows(), (long long)b.size(), precomputeMs,
-                *std::min_element(precomputes.begin(), precomputes.end()), update, floor.realPairMs,
-                update / floor.realPairMs, floor.complexMs, floor.kernelMs, update / floor.kernelMs,
-                finbook::bench::median(endToEnd), data->dragPasses, finbook::bench::median(drags),
-                *std::min_element(drags.begin(), drags.end()),
+                bar ? "bar 4:1" : "square", (long long)g.V.rows(), (long long)g.F.rows(),
+                (long long)b.size(), precomputeMs,
+                *std::min_element(precomputes.begin(), precomputes.end()),
+                *std::min_element(precomputeCpu.begin(), precomputeCpu.end()), update,
+                floor.realPairMs, update / floor.realPairMs, floor.complexMs, floor.kernelMs,
+                update / floor.kernelMs, finbook::bench::median(endToEnd), data->dragPasses,
+                finbook::bench::median(drags), *std::min_element(drags.begin(), drags.end()),
                 *std::min_element(updates.begin(), updates.end()),
                 finbook::bench::median(drags) / update,
                 finbook::deform::supernodalInstructionSet());
@@ -229,8 +252,7 @@ void printRow(QJsonObject row)
 // A 4:1 bar of about `vertices` vertices, bent 60°.
 void runBar(int vertices, const QString &dumpDirectory)
 {
-    const int rows = std::max(2, int(std::lround((std::sqrt(1.0 + 16.0 * vertices) - 5.0) / 8.0)));
-    const auto g = finbook::test::gridMesh(4 * rows, rows, 400.0, 100.0, 0.1);
+    const auto g = barMesh(vertices);
     QJsonObject row = finbook::bench::measureBend(g.V, g.F, 60.0, dumpDirectory);
     row.insert(QStringLiteral("mesh"), QStringLiteral("bar 4:1"));
     printRow(row);
@@ -278,9 +300,10 @@ int benchArap(const QStringList &args)
                 list->append(s.toInt());
         }
     }
+    const bool bar = args.contains(QStringLiteral("--bar"));
     for (const int n : sizes) {
         for (const bool sixPercent : {false, true}) {
-            if (n < 9 || runSize(n, sixPercent) != 0) {
+            if (n < 9 || runSize(n, sixPercent, bar) != 0) {
                 std::fprintf(stderr, "arap: size %d failed\n", n);
                 return 1;
             }
@@ -296,6 +319,6 @@ int benchArap(const QStringList &args)
 } // namespace
 
 FINBOOK_BENCH("arap",
-              "[--sizes 2000,20000,100000] [--bars 2000,20000] [--dump DIR] | --quality "
+              "[--sizes 2000,20000,100000] [--bar] [--bars 2000,20000] [--dump DIR] | --quality "
               "[--density D] [--dump DIR] FILE...",
               benchArap);
