@@ -89,8 +89,9 @@ bool poseWithRig(StrokeGroup &group, const Rig &rig)
 }
 } // namespace
 
-QJsonObject reshadeCost(const QString &finbook)
+QJsonObject reshadeCost(const QString &finbook, int runs)
 {
+    runs = std::clamp(runs, 1, 100000);
     QJsonObject row{{QStringLiteral("reshade"), QFileInfo(finbook).fileName()}};
     auto loaded = loadFinbook(finbook);
     if (!loaded) {
@@ -132,8 +133,8 @@ QJsonObject reshadeCost(const QString &finbook)
     const double restMs = msSince(start);
     std::vector<double> wall, cpu, paint;
     QImage image(settings.canvasSize, QImage::Format_ARGB32_Premultiplied);
-    for (int run = 0; run < 15; ++run) {
-        settings.lightAzimuth = 100.0 + run; // a new light: every fill re-lit and re-cut
+    for (int run = 0; run < runs; ++run) {
+        settings.lightAzimuth = 100.0 + 15.0 * run / runs; // a new light: every fill re-lit and re-cut
         start = Clock::now();
         const double cpuStart = threadCpuMs();
         for (const StrokeGroup &g : frame.groups)
@@ -149,7 +150,7 @@ QJsonObject reshadeCost(const QString &finbook)
     // A new pose of every object (a new frame of an animation): posing, lighting and cutting
     // every fill's tones again.
     std::vector<double> allPosed;
-    for (int run = 0; run < 15; ++run) {
+    for (int run = 0; run < runs; ++run) {
         for (StrokeGroup &g : frame.groups)
             if (g.isDeformed())
                 g.deformed = std::make_shared<const DeformedStrokes>(*g.deformed);
@@ -165,7 +166,7 @@ QJsonObject reshadeCost(const QString &finbook)
         if (frame.groups[i].fills.size() > frame.groups[largest].fills.size())
             largest = i;
     std::vector<double> one;
-    for (int run = 0; run < 15 && frame.groups[largest].isDeformed(); ++run) {
+    for (int run = 0; run < runs && frame.groups[largest].isDeformed(); ++run) {
         StrokeGroup &g = frame.groups[largest];
         g.deformed = std::make_shared<const DeformedStrokes>(*g.deformed); // a new pose
         const double cpuStart = threadCpuMs();
