@@ -4,6 +4,7 @@
 #include "bench.h"
 
 #include <finbook/model/deform_setup.h>
+#include <finbook/model/document.h>
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
@@ -89,7 +90,7 @@ bool poseWithRig(StrokeGroup &group, const Rig &rig)
 }
 } // namespace
 
-QJsonObject reshadeCost(const QString &finbook, int runs)
+QJsonObject reshadeCost(const QString &finbook, int runs, const QString &savePosed)
 {
     runs = std::clamp(runs, 1, 100000);
     QJsonObject row{{QStringLiteral("reshade"), QFileInfo(finbook).fileName()}};
@@ -134,7 +135,8 @@ QJsonObject reshadeCost(const QString &finbook, int runs)
     std::vector<double> wall, cpu, paint;
     QImage image(settings.canvasSize, QImage::Format_ARGB32_Premultiplied);
     for (int run = 0; run < runs; ++run) {
-        settings.lightAzimuth = 100.0 + 15.0 * run / runs; // a new light: every fill re-lit and re-cut
+        settings.lightAzimuth =
+            100.0 + 15.0 * run / runs; // a new light: every fill re-lit and re-cut
         start = Clock::now();
         const double cpuStart = threadCpuMs();
         for (const StrokeGroup &g : frame.groups)
@@ -186,6 +188,15 @@ QJsonObject reshadeCost(const QString &finbook, int runs)
     row.insert(QStringLiteral("reshade_cpu_ms_median"), median(cpu));
     row.insert(QStringLiteral("reshade_ms_max"), percentile(wall, 1.0));
     row.insert(QStringLiteral("paint_frame_ms_median"), median(paint));
+    if (!savePosed.isEmpty()) { // the frame timed, to look at it in the app
+        LoadedDocument shown = *loaded;
+        shown.frames = {frame};
+        shown.settings.lightAzimuth = 135.0;
+        Document doc;
+        adoptLoadedDocument(doc, std::move(shown));
+        if (saveFinbook(doc, savePosed))
+            row.insert(QStringLiteral("error"), QStringLiteral("cannot write ") + savePosed);
+    }
     row.insert(QStringLiteral("rendered_as"),
                QStringLiteral("QPainter fills of tone polygons over each fill, under the ink"));
     return row;
