@@ -136,6 +136,8 @@ int benchInflate(const QStringList &arguments)
     const QString shadedPath = option(QStringLiteral("--shaded-sheet"));
     const QString shadedCell = option(QStringLiteral("--shaded-cell"));
     QString reshade = option(QStringLiteral("--reshade"));
+    const QString reshadeRuns = option(QStringLiteral("--reshade-runs"));
+    const QString savePosed = option(QStringLiteral("--save-reshaded"));
     if (reshade.isEmpty())
         reshade = QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook");
     InflateOptions options;
@@ -149,8 +151,8 @@ int benchInflate(const QStringList &arguments)
         std::fprintf(
             stderr,
             "usage: finbook-bench inflate [--sheet OUT.png] [--obj OUT.obj] [--smoothing S] "
-            "[--contact-angle A] [--reshade DOC.finbook] [--shaded-sheet OUT.png] "
-            "[--shaded-cell PX] FILE...\n");
+            "[--contact-angle A] [--reshade DOC.finbook] [--reshade-runs N] "
+            "[--save-reshaded OUT.finbook] [--shaded-sheet OUT.png] [--shaded-cell PX] FILE...\n");
         return 2;
     }
     finbook::bench::InflateSheet sheet;
@@ -183,7 +185,8 @@ int benchInflate(const QStringList &arguments)
     };
     std::printf("%s\n", QJsonDocument(summary).toJson(QJsonDocument::Compact).constData());
     // Shaded fills: the GUI-thread cost of re-shading a posed frame, and the contact sheet.
-    const QJsonObject shade = finbook::bench::reshadeCost(reshade);
+    const QJsonObject shade = finbook::bench::reshadeCost(
+        reshade, reshadeRuns.isEmpty() ? 15 : reshadeRuns.toInt(), savePosed);
     failures += shade.contains(QStringLiteral("error")) ? 1 : 0;
     std::printf("%s\n", QJsonDocument(shade).toJson(QJsonDocument::Compact).constData());
     if (!shadedPath.isEmpty() &&
@@ -210,7 +213,8 @@ int benchInflate(const QStringList &arguments)
 
 FINBOOK_BENCH("inflate",
               "[--sheet OUT.png] [--obj OUT.obj] [--smoothing S] [--contact-angle A] "
-              "[--reshade DOC.finbook] [--shaded-sheet OUT.png [--shaded-cell PX]] FILE... "
+              "[--reshade DOC.finbook] [--reshade-runs N] [--save-reshaded OUT.finbook] "
+              "[--shaded-sheet OUT.png [--shaded-cell PX]] FILE... "
               "(strokes or contours as "
               "JSON; re-shading times the example's posed frame)",
               benchInflate);

@@ -4,6 +4,7 @@
 #include "bench.h"
 
 #include <finbook/model/deform_setup.h>
+#include <finbook/model/document.h>
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
@@ -89,8 +90,9 @@ bool poseWithRig(StrokeGroup &group, const Rig &rig)
 }
 } // namespace
 
-QJsonObject reshadeCost(const QString &finbook)
+QJsonObject reshadeCost(const QString &finbook, int runs, const QString &savePosed)
 {
+    runs = std::clamp(runs, 1, 100000);
     QJsonObject row{{QStringLiteral("reshade"), QFileInfo(finbook).fileName()}};
     auto loaded = loadFinbook(finbook);
     if (!loaded) {
@@ -132,8 +134,9 @@ QJsonObject reshadeCost(const QString &finbook)
     const double restMs = msSince(start);
     std::vector<double> wall, cpu, paint;
     QImage image(settings.canvasSize, QImage::Format_ARGB32_Premultiplied);
-    for (int run = 0; run < 15; ++run) {
-        settings.lightAzimuth = 100.0 + run; // a new light: every fill re-lit and re-cut
+    for (int run = 0; run < runs; ++run) {
+        settings.lightAzimuth =
+            100.0 + 15.0 * run / runs; // a new light: every fill re-lit and re-cut
         start = Clock::now();
         const double cpuStart = threadCpuMs();
         for (const StrokeGroup &g : frame.groups)
@@ -149,7 +152,7 @@ QJsonObject reshadeCost(const QString &finbook)
     // A new pose of every object (a new frame of an animation): posing, lighting and cutting
     // every fill's tones again.
     std::vector<double> allPosed;
-    for (int run = 0; run < 15; ++run) {
+    for (int run = 0; run < runs; ++run) {
         for (StrokeGroup &g : frame.groups)
             if (g.isDeformed())
                 g.deformed = std::make_shared<const DeformedStrokes>(*g.deformed);
@@ -165,7 +168,7 @@ QJsonObject reshadeCost(const QString &finbook)
         if (frame.groups[i].fills.size() > frame.groups[largest].fills.size())
             largest = i;
     std::vector<double> one;
-    for (int run = 0; run < 15 && frame.groups[largest].isDeformed(); ++run) {
+    for (int run = 0; run < runs && frame.groups[largest].isDeformed(); ++run) {
         StrokeGroup &g = frame.groups[largest];
         g.deformed = std::make_shared<const DeformedStrokes>(*g.deformed); // a new pose
         const double cpuStart = threadCpuMs();
@@ -185,6 +188,15 @@ QJsonObject reshadeCost(const QString &finbook)
     row.insert(QStringLiteral("reshade_cpu_ms_median"), median(cpu));
     row.insert(QStringLiteral("reshade_ms_max"), percentile(wall, 1.0));
     row.insert(QStringLiteral("paint_frame_ms_median"), median(paint));
+    if (!savePosed.isEmpty()) { // the frame timed, to look at it in the app
+        LoadedDocument shown = *loaded;
+        shown.frames = {frame};
+        shown.settings.lightAzimuth = 135.0;
+        Document doc;
+        adoptLoadedDocument(doc, std::move(shown));
+        if (saveFinbook(doc, savePosed))
+            row.insert(QStringLiteral("error"), QStringLiteral("cannot write ") + savePosed);
+    }
     row.insert(QStringLiteral("rendered_as"),
                QStringLiteral("QPainter fills of tone polygons over each fill, under the ink"));
     return row;

@@ -13,8 +13,9 @@ namespace finbook::bench {
 // and times re-shading it: the tones of every fill recomputed for a new light (light the posed
 // normals, cut the tone polygons; the posed mesh is cached per pose), then the frame painted;
 // for a new pose of every object (pose the rest normals too); and after one object's pose
-// changed (a drag), the others' tones cached.
-QJsonObject reshadeCost(const QString &finbook);
+// changed (a drag), the others' tones cached. Each is timed `runs` times (median reported).
+// With `savePosed`, the frame timed (posed, every fill shaded) is saved there as a .finbook.
+QJsonObject reshadeCost(const QString &finbook, int runs = 15, const QString &savePosed = {});
 
 // A contact sheet: each drawing (shared/data sketch JSON) filled, shaded in three tones with a
 // rim, lit from the upper left, at rest and posed by its automatic skeleton (every bone bent).

@@ -56,6 +56,36 @@ Eigen::VectorXd litFromTheSide(const Inflation &shape)
     return diffuseTerm(shape.normal, lightDirection(0.0, 20.0));
 }
 
+// Non-zero winding of the rings around p.
+bool covers(const Pieces &rings, const Eigen::Vector2d &p)
+{
+    int w = 0;
+    for (int k = 0; k < rings.count(); ++k) {
+        const int begin = rings.starts[std::size_t(k)], end = rings.starts[std::size_t(k) + 1];
+        for (int i = begin, j = end - 1; i < end; j = i++) {
+            const Eigen::Vector2d &a = rings.points[std::size_t(j)];
+            const Eigen::Vector2d &b = rings.points[std::size_t(i)];
+            const double side = (b - a).x() * (p - a).y() - (p - a).x() * (b - a).y();
+            if (a.y() <= p.y() && b.y() > p.y() && side > 0.0)
+                ++w;
+            else if (a.y() > p.y() && b.y() <= p.y() && side < 0.0)
+                --w;
+        }
+    }
+    return w != 0;
+}
+
+// A concave outline: `points` spikes between radii r0 and r1 around c.
+Eigen::MatrixX2d star(int points, double r0, double r1, Eigen::RowVector2d c)
+{
+    Eigen::MatrixX2d ring(2 * points, 2);
+    for (int i = 0; i < 2 * points; ++i) {
+        const double a = M_PI * i / points + 0.1, r = i % 2 ? r0 : r1;
+        ring.row(i) = c + r * Eigen::RowVector2d(std::cos(a), std::sin(a));
+    }
+    return ring;
+}
+
 } // namespace
 
 class TestToneRegion : public QObject {
@@ -66,6 +96,7 @@ private slots:
     void toneAndItsComplementCoverTheRegion();
     void terminatorIsASmoothCurve();
     void badInputGivesNothing();
+    void directCutEqualsClipper();
 };
 
 void TestToneRegion::meshEdgesPairTheTwoSides()
@@ -176,6 +207,42 @@ void TestToneRegion::badInputGivesNothing()
     const Pieces whole = toneRegion(V, F, edges, Eigen::VectorXd::Ones(3), 0.5, {});
     QCOMPARE(whole.count(), 1);
     QVERIFY(std::abs(ringsArea(whole) - 50.0) < 1e-9);
+}
+
+void TestToneRegion::directCutEqualsClipper()
+{
+    // A fill of one ring is cut by tracing where the outlines cross (shade/ring_clip.h); the
+    // same clip with a second, far ring goes through Clipper. Both must draw the same tone:
+    // a moved and shrunk disc, a star crossing the tone many times, a small disc inside the
+    // tone (the clip's own ring is the cut), for shadows and lights at several levels.
+    const Inflation shape = disc();
+    const MeshEdges edges = meshEdges(shape.F);
+    const Eigen::VectorXd lit = diffuseTerm(shape.normal, lightDirection(30.0, 35.0));
+    const Eigen::MatrixX2d far = circle(8, 3.0, {900.0, 900.0});
+    const std::vector<Eigen::MatrixX2d> clips = {circle(96, kRadius - 5.0, {6.0, 0.0}),
+                                                 star(9, 55.0, 104.0, {-3.0, 2.0}),
+                                                 circle(40, 12.0, {-50.0, -30.0})};
+    int compared = 0;
+    for (const Eigen::MatrixX2d &clip : clips)
+        for (double t : {0.2, 0.45, 0.7})
+            for (const double sign : {-1.0, 1.0}) {
+                const Pieces direct =
+                    toneRegion(shape.V, shape.F, edges, sign * lit, sign * t, {clip});
+                const Pieces clipper =
+                    toneRegion(shape.V, shape.F, edges, sign * lit, sign * t, {clip, far});
+                const double a = ringsArea(direct), b = ringsArea(clipper);
+                QVERIFY2(std::abs(a - b) < 1e-3 * std::abs(b) + 0.5,
+                         qPrintable(QStringLiteral("%1 vs %2 px²").arg(a).arg(b)));
+                int differ = 0;
+                for (double y = -110.0; y < 110.0; y += 1.0)
+                    for (double x = -110.0; x < 110.0; x += 1.0) {
+                        const Eigen::Vector2d p(x + 0.37, y + 0.61);
+                        differ += covers(direct, p) != covers(clipper, p) ? 1 : 0;
+                    }
+                QVERIFY2(differ <= 2, qPrintable(QString::number(differ)));
+                compared += b > 1.0 ? 1 : 0;
+            }
+    QVERIFY(compared >= 12); // most cases have a tone to compare
 }
 
 QTEST_APPLESS_MAIN(TestToneRegion)

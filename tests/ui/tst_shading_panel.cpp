@@ -5,6 +5,7 @@
 
 #include <finbook/model/shade/fill_shading.h>
 #include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/shade/light_handle.h>
 #include <finbook/ui/window/main_window.h>
 
 #include <QCheckBox>
@@ -50,6 +51,7 @@ class TestShadingPanel : public QObject {
     Q_OBJECT
 private slots:
     void rampShadesTheCurrentObjectsFills();
+    void askingForThePanelBringsItToTheFront();
 };
 
 void TestShadingPanel::rampShadesTheCurrentObjectsFills()
@@ -102,6 +104,41 @@ void TestShadingPanel::rampShadesTheCurrentObjectsFills()
     QCOMPARE(ramp->currentIndex(), 0);
     QVERIFY(!doc->group(g)->fills[0].shading.shaded());
     QCOMPARE(shownAt(QPointF(300, 340)), kFill);
+}
+
+void TestShadingPanel::askingForThePanelBringsItToTheFront()
+{
+    // The Shading panel shares the Skeleton panel's place as a tab. Asking for it (View →
+    // Panels → Shading) must show it in front, with the light's sun on the canvas, not leave
+    // it behind the Skeleton tab where nothing says it opened.
+    ui::MainWindow window;
+    QVERIFY(test::showActive(window));
+    filledSquare(*window.document());
+    auto *skeleton = window.findChild<QDockWidget *>(QStringLiteral("skeletonDock"));
+    auto *shading = window.findChild<QDockWidget *>(QStringLiteral("shadingDock"));
+    auto *sun = window.findChild<ui::LightHandle *>(QStringLiteral("lightHandle"));
+    QVERIFY(skeleton && shading && sun);
+    QVERIFY(window.tabifiedDockWidgets(skeleton).contains(shading));
+    // A tab behind another stays "visible" but is moved out of the window: what shows is what
+    // has some of its area on screen.
+    const auto inFront = [](QDockWidget *dock) {
+        return dock->isVisible() && !dock->widget()->visibleRegion().isEmpty();
+    };
+    QTRY_VERIFY(inFront(skeleton));
+    QVERIFY(!sun->shown());
+    shading->toggleViewAction()->trigger();
+    QTRY_VERIFY(inFront(shading));
+    QVERIFY(!inFront(skeleton)); // the Skeleton tab is behind it now
+    QTRY_VERIFY(sun->shown());
+    // Back to the Skeleton tab: the sun goes; asked for again, the panel comes to the front.
+    skeleton->raise();
+    QTRY_VERIFY(inFront(skeleton));
+    QTRY_VERIFY(!sun->shown());
+    shading->toggleViewAction()->trigger(); // closes it (it was open, behind)
+    QVERIFY(shading->isHidden());
+    shading->toggleViewAction()->trigger();
+    QTRY_VERIFY(inFront(shading));
+    QTRY_VERIFY(sun->shown());
 }
 
 QTEST_MAIN(TestShadingPanel)

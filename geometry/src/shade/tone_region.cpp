@@ -1,11 +1,13 @@
 // Tone regions traced as contours, smoothed and clipped (shade/tone_region.h).
 #include "../clipper_bridge.h"
+#include "ring_clip.h"
 
 #include <finbook/geometry/shade/tone_region.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace finbook::geometry {
 
@@ -30,14 +32,16 @@ void smoothRing(Ring &ring, int steps)
     next.resize(n);
     for (int step = 0; step < 2 * steps; ++step) {
         const double w = step % 2 == 0 ? kLambda : kMu;
-        for (std::size_t i = 0; i < n; ++i) {
+        // Neighbours walked along rather than found by index mod n (a division per vertex).
+        std::size_t before = n - 1;
+        for (std::size_t i = 0, after = 1; i < n;
+             before = i++, after = after + 1 < n ? after + 1 : 0) {
             const Eigen::Vector2d &p = ring.points[i];
             if (!ring.movable[i]) {
                 next[i] = p;
                 continue;
             }
-            const Eigen::Vector2d &a = ring.points[(i + n - 1) % n], &b = ring.points[(i + 1) % n];
-            next[i] = p + w * (0.5 * (a + b) - p);
+            next[i] = p + w * (0.5 * (ring.points[before] + ring.points[after]) - p);
         }
         ring.points.swap(next);
     }
@@ -57,12 +61,13 @@ void thinOutlineRuns(Ring &ring, double tolerance)
         return; // no contour vertex: the ring is all outline; keep it
     // Pushed out by the tolerance first (to the right of the way round: the set lies on the
     // left), so the thinned run still holds the outline: the clip, not the thinning, cuts it.
+    const auto wrap = [n](std::size_t i) { return i < n ? i : i - n; }; // i < 2n
     thread_local std::vector<Eigen::Vector2d> pushed;
     pushed = ring.points;
     for (std::size_t k = 0; k < n; ++k) {
         if (ring.movable[k])
             continue;
-        const Eigen::Vector2d d = ring.points[(k + 1) % n] - ring.points[(k + n - 1) % n];
+        const Eigen::Vector2d d = ring.points[wrap(k + 1)] - ring.points[wrap(k + n - 1)];
         const double length = d.norm();
         if (length > 1e-12)
             pushed[k] += tolerance / length * Eigen::Vector2d(d.y(), -d.x());
@@ -72,13 +77,13 @@ void thinOutlineRuns(Ring &ring, double tolerance)
     keep.assign(n, 1);
     const auto thin = [&](auto &&self, std::size_t a, std::size_t b) -> void {
         // Run a → b (indices mod n, b after a), both kept.
-        const Eigen::Vector2d &p = ring.points[a % n], &q = ring.points[b % n];
+        const Eigen::Vector2d &p = ring.points[wrap(a)], &q = ring.points[wrap(b)];
         const Eigen::Vector2d d = q - p;
         const double length = d.norm();
         double worst = -1.0;
         std::size_t at = a;
         for (std::size_t i = a + 1; i < b; ++i) {
-            const Eigen::Vector2d r = ring.points[i % n] - p;
+            const Eigen::Vector2d r = ring.points[wrap(i)] - p;
             const double off =
                 length > 1e-12 ? std::abs(d.x() * r.y() - d.y() * r.x()) / length : r.norm();
             if (off > worst) {
@@ -88,7 +93,7 @@ void thinOutlineRuns(Ring &ring, double tolerance)
         }
         if (worst <= tolerance) {
             for (std::size_t i = a + 1; i < b; ++i)
-                keep[i % n] = 0;
+                keep[wrap(i)] = 0;
             return;
         }
         self(self, a, at);
@@ -99,7 +104,7 @@ void thinOutlineRuns(Ring &ring, double tolerance)
     std::size_t i = start;
     for (std::size_t step = 0; step < n;) {
         std::size_t j = i + 1;
-        while (j < start + n && !ring.movable[j % n])
+        while (j < start + n && !ring.movable[wrap(j)])
             ++j;
         // i and j are contour vertices (or j wrapped to start); the run is i + 1 … j − 1.
         if (j - i > 3)
@@ -118,47 +123,72 @@ void thinOutlineRuns(Ring &ring, double tolerance)
     ring.movable.resize(w);
 }
 
-Pieces toPieces(const std::vector<Ring> &rings)
+Pieces toPieces(const Ring *rings, std::size_t count)
 {
     Pieces out;
-    for (const Ring &ring : rings) {
-        out.points.insert(out.points.end(), ring.points.begin(), ring.points.end());
+    for (std::size_t r = 0; r < count; ++r) {
+        out.points.insert(out.points.end(), rings[r].points.begin(), rings[r].points.end());
         out.starts.push_back(int(out.points.size()));
     }
     return out;
 }
 
-Pieces clipRings(const std::vector<Ring> &rings, const std::vector<Eigen::MatrixX2d> &clip)
+Pieces clipRings(const Ring *rings, std::size_t count, const std::vector<Eigen::MatrixX2d> &clip)
 {
-    Eigen::RowVector2d lo(std::numeric_limits<double>::infinity(),
-                          std::numeric_limits<double>::infinity());
-    for (const Ring &ring : rings)
-        for (const Eigen::Vector2d &p : ring.points)
-            lo = lo.cwiseMin(p.transpose());
-    for (const Eigen::MatrixX2d &ring : clip)
+    // The clip's finite points (Clipper is given the same), for the test and the frame.
+    thread_local std::vector<std::vector<Eigen::Vector2d>> window;
+    std::size_t windows = 0;
+    for (const Eigen::MatrixX2d &ring : clip) {
+        if (windows == window.size())
+            window.emplace_back();
+        std::vector<Eigen::Vector2d> &w = window[windows];
+        w.clear();
         for (Eigen::Index i = 0; i < ring.rows(); ++i)
             if (ring.row(i).allFinite())
-                lo = lo.cwiseMin(ring.row(i));
+                w.emplace_back(ring(i, 0), ring(i, 1));
+        if (w.size() >= 3)
+            ++windows;
+    }
+    window.resize(windows);
+    if (windows == 1) { // a fill without holes: cut directly where the outlines cross cleanly
+        thread_local std::vector<const std::vector<Eigen::Vector2d> *> subjectRings;
+        subjectRings.resize(count);
+        for (std::size_t r = 0; r < count; ++r)
+            subjectRings[r] = &rings[r].points;
+        Pieces out;
+        if (shade_detail::clipToRing(subjectRings.data(), count, window.front(), out))
+            return out;
+    }
+    Eigen::RowVector2d lo(std::numeric_limits<double>::infinity(),
+                          std::numeric_limits<double>::infinity());
+    for (std::size_t r = 0; r < count; ++r)
+        for (const Eigen::Vector2d &p : rings[r].points)
+            lo = lo.cwiseMin(p.transpose());
+    for (const auto &ring : window)
+        for (const Eigen::Vector2d &p : ring)
+            lo = lo.cwiseMin(p.transpose());
     const detail::ClipperFrame frame = detail::frameFor(lo);
-    ClipperLib::Paths subject, window, solution;
-    subject.reserve(rings.size());
-    for (const Ring &ring : rings) {
-        ClipperLib::Path path;
-        path.reserve(ring.points.size());
-        for (const Eigen::Vector2d &p : ring.points) {
+    // Kept per thread with their capacity: re-shading clips a few rings per fill and frame.
+    thread_local ClipperLib::Paths subject, paths, solution;
+    const auto fill = [&frame](ClipperLib::Path &path, const std::vector<Eigen::Vector2d> &ring) {
+        path.clear();
+        for (const Eigen::Vector2d &p : ring) {
             const ClipperLib::IntPoint q(frame.units(p.x() - frame.origin.x()),
                                          frame.units(p.y() - frame.origin.y()));
             if (path.empty() || !(path.back() == q))
                 path.push_back(q);
         }
-        subject.push_back(std::move(path));
-    }
-    for (const Eigen::MatrixX2d &ring : clip)
-        window.push_back(frame.toPath(ring));
+    };
+    subject.resize(count);
+    for (std::size_t r = 0; r < count; ++r)
+        fill(subject[r], rings[r].points);
+    paths.resize(window.size());
+    for (std::size_t r = 0; r < window.size(); ++r)
+        fill(paths[r], window[r]);
     try {
         ClipperLib::Clipper clipper;
         clipper.AddPaths(subject, ClipperLib::ptSubject, true);
-        clipper.AddPaths(window, ClipperLib::ptClip, true);
+        clipper.AddPaths(paths, ClipperLib::ptClip, true);
         clipper.Execute(ClipperLib::ctIntersection, solution, ClipperLib::pftNonZero,
                         ClipperLib::pftNonZero);
     } catch (const std::exception &) {
@@ -168,9 +198,9 @@ Pieces clipRings(const std::vector<Ring> &rings, const std::vector<Eigen::Matrix
     for (const ClipperLib::Path &path : solution) {
         if (path.size() < 3)
             continue;
-        const Eigen::MatrixX2d ring = frame.toRing(path);
-        for (Eigen::Index i = 0; i < ring.rows(); ++i)
-            out.points.emplace_back(ring(i, 0), ring(i, 1));
+        for (const ClipperLib::IntPoint &q : path)
+            out.points.emplace_back(frame.pixels(double(q.X)) + frame.origin.x(),
+                                    frame.pixels(double(q.Y)) + frame.origin.y());
         out.starts.push_back(int(out.points.size()));
     }
     return out;
@@ -220,17 +250,23 @@ Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Me
     if (edges.edge.rows() != m || edges.neighbour.rows() != m || value.size() < n)
         return {};
     // Scratch kept per thread: re-shading calls this a few times per fill and frame.
-    thread_local std::vector<char> valid, crossed, inside, used;
+    thread_local std::vector<char> state, valid, crossed, inside, used;
     thread_local std::vector<Eigen::Vector2d> crossing;
     thread_local std::vector<std::pair<int, int>> segments; // boundary segments (from, to)
     thread_local std::vector<int> first, out, fill;
+    // Per vertex once (not per corner): 0 not finite, 1 below the threshold, 2 at or above.
+    state.resize(std::size_t(n));
+    for (Eigen::Index v = 0; v < n; ++v)
+        state[std::size_t(v)] =
+            std::isfinite(V(v, 0)) && std::isfinite(V(v, 1)) && std::isfinite(value(v))
+                ? (value(v) >= threshold ? 2 : 1)
+                : 0;
     valid.assign(std::size_t(m), 0);
     for (Eigen::Index f = 0; f < m; ++f) {
         bool ok = true;
         for (int k = 0; k < 3 && ok; ++k) {
             const int v = F(f, k);
-            ok = v >= 0 && v < n && std::isfinite(V(v, 0)) && std::isfinite(V(v, 1)) &&
-                 std::isfinite(value(v));
+            ok = v >= 0 && v < n && state[std::size_t(v)] != 0;
         }
         valid[std::size_t(f)] = ok ? 1 : 0;
     }
@@ -247,7 +283,7 @@ Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Me
         bool in[3];
         int above = 0;
         for (int k = 0; k < 3; ++k) {
-            in[k] = value(F(f, k)) >= threshold;
+            in[k] = state[std::size_t(F(f, k))] == 2;
             above += in[k] ? 1 : 0;
         }
         if (above == 0)
@@ -301,11 +337,17 @@ Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Me
     const auto position = [&](int id) -> Eigen::Vector2d {
         return id < n ? Eigen::Vector2d(V(id, 0), V(id, 1)) : crossing[std::size_t(id - n)];
     };
-    std::vector<Ring> rings;
+    // Rings reused with their capacity; `count` of them are this call's.
+    thread_local std::vector<Ring> rings;
+    std::size_t count = 0;
     for (std::size_t s0 = 0; s0 < segments.size(); ++s0) {
         if (used[s0])
             continue;
-        Ring ring;
+        if (count == rings.size())
+            rings.emplace_back();
+        Ring &ring = rings[count];
+        ring.points.clear();
+        ring.movable.clear();
         std::size_t s = s0;
         while (true) {
             used[s] = 1;
@@ -325,14 +367,14 @@ Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Me
         }
         if (ring.points.size() >= 3) {
             smoothRing(ring, options.smoothingSteps);
-            rings.push_back(std::move(ring));
+            ++count;
         }
     }
     if (clip.empty())
-        return toPieces(rings);
-    for (Ring &ring : rings)
-        thinOutlineRuns(ring, kOutlineTolerance);
-    return clipRings(rings, clip);
+        return toPieces(rings.data(), count);
+    for (std::size_t r = 0; r < count; ++r)
+        thinOutlineRuns(rings[r], kOutlineTolerance);
+    return clipRings(rings.data(), count, clip);
 }
 
 double ringsArea(const Pieces &rings)

@@ -7,6 +7,7 @@
 #include <finbook/ui/shade/light_handle.h>
 #include <finbook/ui/window/main_window.h>
 
+#include <QAction>
 #include <QDockWidget>
 #include <QMenu>
 
@@ -37,6 +38,13 @@ void MainWindow::createShading()
     addDockWidget(Qt::RightDockWidgetArea, dock);
     dock->hide();
     m_docksMenu->addAction(dock->toggleViewAction());
+    // It opens as a tab of the Skeleton panel's place (createDocks): asked for, it comes to the
+    // front with the light's sun on the canvas, as a docker opened from Krita's or OpenToonz's
+    // menu does, rather than behind the Skeleton tab where nothing says it opened.
+    connect(dock->toggleViewAction(), &QAction::triggered, dock, [dock](bool shown) {
+        if (shown)
+            dock->raise();
+    });
     // While the panel shows, a sun on the canvas shows the light and drags it.
     m_canvas->addOverlay(std::make_unique<LightHandleOverlay>(new LightHandle(m_canvas, dock)));
 }

@@ -32,7 +32,9 @@
 //
 // Cost: per vertex, the outline edges within 2r of b (a uniform grid finds them nearest
 // first): O(n · B) at worst, for n vertices and B outline edges; the grid makes thin parts
-// cheap. Overlapping regions of one object are not layered here: inflate each region's mesh.
+// cheap. This inflates one mesh as one height field; overlapping regions of one object (an
+// arm drawn over the body) are layered by inflating each layer's region separately
+// (inflate/layers.h: strokeLayers, layerRegion), which the shading and the 3D export do.
 #pragma once
 
 #include <finbook/geometry/expected.h>

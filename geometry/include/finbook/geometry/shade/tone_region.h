@@ -8,8 +8,11 @@
 // that depends on how the triangles happen to lie: on a coarse shading mesh it zigzags. A few
 // Taubin (λ|μ) smoothing steps on the contour's own vertices (never on the mesh outline or
 // its ends there) take the zigzag out without shrinking a closed contour. The mesh is posed
-// by another map than the region it shades (shade/pose.h versus the region's anchors), so the
-// rings are clipped to that region (Clipper, non-zero rule): a tone never spills past its fill.
+// by another map than the region it shades (shade/pose.h versus the region's anchors), and
+// inflated as its layer (an arm's whole loop), so the rings are clipped to that region
+// (non-zero rule): a tone never spills past its fill. A region of one ring is cut directly
+// where the two outlines cross (src/shade/ring_clip.h; most of re-shading's cost went to the
+// polygon boolean before); holes, or outlines that touch rather than cross, go to Clipper.
 #pragma once
 
 #include <finbook/geometry/shade/shading.h>
