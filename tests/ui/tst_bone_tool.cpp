@@ -1,5 +1,7 @@
 // The Bone tool driven by real mouse events on the real canvas: build a skeleton with a click,
 // turn a bone, pull a joint, move the root, lock a joint; every drag one exact undo step.
+#include "tst_tools_support.h"
+
 #include <finbook/model/commands.h>
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/fill/fill_commands.h>
@@ -634,15 +636,7 @@ void TestBoneTool::clickInsideAnOutlineBuilds()
     StrokeGroup g;
     g.id = fx.doc.allocateId();
     g.name = QStringLiteral("outline");
-    auto data = std::make_shared<StrokeData>();
-    const QPointF corners[] = {{100, 200}, {600, 200}, {600, 320}, {100, 320}, {100, 200}};
-    for (int c = 0; c < 4; ++c)
-        for (int i = 0; i < 40; ++i) {
-            const QPointF p = corners[c] + (corners[c + 1] - corners[c]) * (i / 40.0);
-            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-        }
-    data->points.push_back(data->points.front());
-    data->width = 3.0f;
+    const auto data = test::polyline({{100, 200}, {600, 200}, {600, 320}, {100, 320}, {100, 200}});
     g.strokes.push_back({fx.doc.allocateId(), data});
     f.groups.push_back(g);
     fx.group = g.id;
@@ -667,16 +661,8 @@ void TestBoneTool::bodyClosedForTheFillIsRigged()
     f.id = fx.doc.allocateId();
     StrokeGroup g;
     g.id = fx.doc.allocateId();
-    auto data = std::make_shared<StrokeData>();
-    const QPointF corners[] = {{260, 320}, {100, 320}, {100, 200},
-                               {600, 200}, {600, 320}, {440, 320}};
-    for (int c = 0; c < 5; ++c)
-        for (int i = 0; i < 40; ++i) {
-            const QPointF p = corners[c] + (corners[c + 1] - corners[c]) * (i / 40.0);
-            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-        }
-    data->points.push_back({440.0f, 320.0f, 1.0f});
-    data->width = 3.0f;
+    const auto data =
+        test::polyline({{260, 320}, {100, 320}, {100, 200}, {600, 200}, {600, 320}, {440, 320}});
     g.strokes.push_back({fx.doc.allocateId(), data});
     f.groups.push_back(g);
     fx.group = g.id;

@@ -1,4 +1,6 @@
 // The Pin tool driven by real mouse events on the real canvas: add, drag, remove, undo.
+#include "tst_tools_support.h"
+
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/ui/canvas/canvas_widget.h>
@@ -234,15 +236,7 @@ void TestPinTool::clickInsideAnUnpinnedOutlinePins()
     StrokeGroup g;
     g.id = fx.doc.allocateId();
     g.name = QStringLiteral("outline");
-    auto data = std::make_shared<StrokeData>();
-    const QPointF corners[] = {{100, 200}, {600, 200}, {600, 320}, {100, 320}, {100, 200}};
-    for (int c = 0; c < 4; ++c)
-        for (int i = 0; i < 40; ++i) {
-            const QPointF p = corners[c] + (corners[c + 1] - corners[c]) * (i / 40.0);
-            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-        }
-    data->points.push_back(data->points.front());
-    data->width = 3.0f;
+    const auto data = test::polyline({{100, 200}, {600, 200}, {600, 320}, {100, 320}, {100, 200}});
     g.strokes.push_back({fx.doc.allocateId(), data});
     f.groups.push_back(g);
     fx.group = g.id;

@@ -69,6 +69,21 @@ inline model::StrokeDataPtr line(QPointF a, QPointF b, int n = 20, QRgb color = 
     return s;
 }
 
+// A 3 px stroke through `corners` in order, 40 points per side.
+inline model::StrokeDataPtr polyline(const std::vector<QPointF> &corners)
+{
+    auto s = std::make_shared<model::StrokeData>();
+    for (std::size_t c = 0; c + 1 < corners.size(); ++c)
+        for (int i = 0; i < 40; ++i) {
+            const QPointF p = corners[c] + (corners[c + 1] - corners[c]) * (i / 40.0);
+            s->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        }
+    if (!corners.empty())
+        s->points.push_back({float(corners.back().x()), float(corners.back().y()), 1.0f});
+    s->width = 3.0f;
+    return s;
+}
+
 // `frames` frames of one empty object each, on a 400×300 page; no undo history.
 inline void resetDocument(model::Document &doc, int frames, int objectsPerFrame = 1)
 {
