@@ -107,11 +107,13 @@ public:
                    SupernodalIsa isa = SupernodalIsa::Automatic);
     // The same for a real symmetric A stored by rows, both halves (its rows are its columns):
     // passed to the overload above it would first be converted to compressed columns, a
-    // sorting pass over the whole matrix.
-    bool
-    factorize(std::shared_ptr<const SupernodalSymbolic> symbolic,
-              const Eigen::SparseMatrix<double, Eigen::RowMajor> &symmetric,
-              SupernodalIsa isa = SupernodalIsa::Automatic) requires std::is_same_v<Scalar, double>
+    // sorting pass over the whole matrix. A member template, so that the complex factor's
+    // explicit instantiation does not instantiate it (clang 14 ignores the constraint there).
+    template <class Real>
+    requires std::is_same_v<Real, double> && std::is_same_v<Scalar, double>
+    bool factorize(std::shared_ptr<const SupernodalSymbolic> symbolic,
+                   const Eigen::SparseMatrix<Real, Eigen::RowMajor> &symmetric,
+                   SupernodalIsa isa = SupernodalIsa::Automatic)
     {
         return factorize(std::move(symbolic), symmetric.outerIndexPtr(), symmetric.innerIndexPtr(),
                          symmetric.innerNonZeroPtr(), symmetric.valuePtr(), isa);
