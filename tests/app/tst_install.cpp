@@ -147,6 +147,12 @@ void TestInstall::treeHoldsEverything()
                  << QStringLiteral("share/icons/hicolor/%1x%1/mimetypes/application-x-finbook.png")
                         .arg(size);
     }
+#ifdef FINBOOK_INSTALLED_LIBDIR
+    // A shared build (the sanitizer preset) installs its layer libraries beside bin/.
+    for (const char *layer : {"geometry", "deform", "model", "ui"})
+        expected << QStringLiteral(FINBOOK_INSTALLED_LIBDIR "/libfinbook_%1.so")
+                        .arg(QLatin1String(layer));
+#endif
     for (const QString &file : expected)
         QVERIFY2(QFileInfo(m_prefix + QLatin1Char('/') + file).isFile(), qPrintable(file));
     QVERIFY(QFileInfo(m_prefix + QStringLiteral("/bin/finbook")).isExecutable());
