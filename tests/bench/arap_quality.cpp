@@ -36,51 +36,19 @@ double msSince(Clock::time_point start)
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// CPU time of this thread in ms: unlike wall time it leaves out the time other processes of a
-// busy machine take the core away (caches shared with them still slow it).
-double threadCpuMs()
-{
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
-}
-
-struct Bend {
-    Eigen::VectorXi b;
-    Eigen::MatrixX2d bc;
-};
+using Bend = BendPins;
 
 Bend bendPins(const Eigen::MatrixX2d &V, double degrees)
 {
     const double low = V.col(0).minCoeff(), high = V.col(0).maxCoeff();
-    const double width = high - low;
-    std::vector<int> left, right;
-    for (Eigen::Index v = 0; v < V.rows(); ++v) {
-        if (V(v, 0) <= low + kPinFraction * width)
-            left.push_back(int(v));
-        else if (V(v, 0) >= high - kPinFraction * width)
-            right.push_back(int(v));
-    }
     Eigen::RowVector2d centre = Eigen::RowVector2d::Zero();
-    for (const int v : left)
-        centre += V.row(v);
-    centre /= double(std::max<std::size_t>(1, left.size()));
-    const double angle = degrees * M_PI / 180.0;
-    Eigen::Matrix2d R;
-    R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
-    Bend bend;
-    bend.b.resize(Eigen::Index(left.size() + right.size()));
-    bend.bc.resize(bend.b.size(), 2);
-    Eigen::Index row = 0;
-    for (const int v : left) {
-        bend.b(row) = v;
-        bend.bc.row(row++) = V.row(v);
-    }
-    for (const int v : right) {
-        bend.b(row) = v;
-        bend.bc.row(row++) = centre + (V.row(v) - centre) * R.transpose();
-    }
-    return bend;
+    int left = 0;
+    for (Eigen::Index v = 0; v < V.rows(); ++v)
+        if (V(v, 0) <= low + kPinFraction * (high - low)) {
+            centre += V.row(v);
+            ++left;
+        }
+    return bendBands(V, low, high, centre / double(std::max(1, left)), degrees);
 }
 
 // Oriented area of U over the rest area, minus 1, in %.
@@ -202,6 +170,35 @@ void dump(const QString &directory, const Eigen::MatrixX2d &V, const Eigen::Matr
 }
 
 } // namespace
+
+BendPins bendBands(const Eigen::MatrixX2d &V, double low, double high,
+                   const Eigen::RowVector2d &centre, double degrees)
+{
+    const double width = high - low;
+    std::vector<int> left, right;
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        if (V(v, 0) <= low + kPinFraction * width)
+            left.push_back(int(v));
+        else if (V(v, 0) >= high - kPinFraction * width)
+            right.push_back(int(v));
+    }
+    const double angle = degrees * M_PI / 180.0;
+    Eigen::Matrix2d R;
+    R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+    BendPins bend;
+    bend.b.resize(Eigen::Index(left.size() + right.size()));
+    bend.bc.resize(bend.b.size(), 2);
+    Eigen::Index row = 0;
+    for (const int v : left) {
+        bend.b(row) = v;
+        bend.bc.row(row++) = V.row(v);
+    }
+    for (const int v : right) {
+        bend.b(row) = v;
+        bend.bc.row(row++) = centre + (V.row(v) - centre) * R.transpose();
+    }
+    return bend;
+}
 
 QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees,
                         const QString &dumpDirectory)

@@ -25,6 +25,15 @@ namespace finbook::bench {
 // warm_event_max_ms the slowest; fast_* the same in 3 events.
 // With a dumpDirectory, also writes the bend and the reference pose there as text (see dump
 // in arap_quality.cpp) for checking against another solver.
+// The bend's pins: every vertex of V with x within 6 % of (high − low) above `low` held where
+// it is, every vertex within 6 % below `high` turned by `degrees` about `centre`.
+struct BendPins {
+    Eigen::VectorXi b;
+    Eigen::MatrixX2d bc;
+};
+BendPins bendBands(const Eigen::MatrixX2d &V, double low, double high,
+                   const Eigen::RowVector2d &centre, double degrees);
+
 QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees,
                         const QString &dumpDirectory = {});
 

@@ -17,6 +17,10 @@ bool registerBench(const char *name, const char *usage, BenchFunction fn);
 // Peak resident set size of this process in bytes (VmHWM), 0 if unknown.
 long long peakResidentBytes();
 
+// CPU time of the calling thread in ms: unlike wall time it leaves out the time other processes
+// of a busy machine take the core away (caches shared with them still slow it).
+double threadCpuMs();
+
 // Median of a list of samples (copies; fine for bench sizes).
 double median(std::vector<double> samples);
 double percentile(std::vector<double> samples, double p);

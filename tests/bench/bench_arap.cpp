@@ -28,6 +28,8 @@
 
 namespace {
 
+using finbook::bench::threadCpuMs;
+
 using finbook::deform::ArapPrecompute;
 using Clock = std::chrono::steady_clock;
 
@@ -168,13 +170,6 @@ finbook::test::GridMesh barMesh(int vertices)
 {
     const int rows = std::max(2, int(std::lround((std::sqrt(1.0 + 16.0 * vertices) - 5.0) / 8.0)));
     return finbook::test::gridMesh(4 * rows, rows, 400.0, 100.0, 0.1);
-}
-
-double threadCpuMs()
-{
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
 }
 
 int runSize(int vertices, bool sixPercent, bool bar)

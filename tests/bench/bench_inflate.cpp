@@ -28,6 +28,8 @@
 
 namespace {
 
+using finbook::bench::threadCpuMs;
+
 using namespace finbook::geometry;
 using finbook::bench::median;
 using finbook::bench::percentile;
@@ -38,14 +40,6 @@ constexpr int kRuns = 9;
 double msSince(Clock::time_point start)
 {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// CPU time of this thread (ms): on a shared machine it shows the cost without the waiting.
-double threadCpuMs()
-{
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
 }
 
 struct Totals {

@@ -46,6 +46,8 @@
 
 namespace {
 
+using finbook::bench::threadCpuMs;
+
 using namespace finbook::geometry;
 using finbook::test::insideRing;
 using finbook::test::toMatrix;
@@ -58,15 +60,6 @@ constexpr double kSampleSpacing = 0.25; // px along bones for the inside fractio
 double msSince(Clock::time_point start)
 {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// CPU time of this thread (ms): unlike wall time, not inflated when other processes share the
-// cores, so runs on a busy machine stay comparable.
-double threadCpuMs()
-{
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
 }
 
 struct Input {

@@ -27,6 +27,8 @@
 
 namespace {
 
+using finbook::bench::threadCpuMs;
+
 using namespace finbook::deform;
 using finbook::bench::median;
 using finbook::bench::percentile;
@@ -37,13 +39,6 @@ constexpr int kRuns = 7;
 double msSince(Clock::time_point start)
 {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double threadCpuMs()
-{
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
 }
 
 // Median wall time, and in `cpuMs` the median CPU time of this thread: the machine is shared,

@@ -33,13 +33,6 @@ double msSince(Clock::time_point start)
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-double threadCpuMs()
-{
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
-}
-
 constexpr QRgb kPalette[] = {0xfff2c9a0, 0xff5b8fd6, 0xffe0704a, 0xff7fbf6a, 0xffc58fd8};
 
 // Every fill of the group shaded in three tones with a rim; every enclosed region without a
