@@ -35,6 +35,7 @@ struct Workspace {
     const ArapPrecompute *dragOwner = nullptr;
     Eigen::MatrixX2d dragPose;
     Eigen::VectorXcd warmPlain, handleMove, lastCorrection, lastMove;
+    Eigen::VectorXcd olderCorrection; // the correction of the event before the last
 };
 
 Workspace &workspace();
