@@ -23,8 +23,9 @@ struct Workspace {
     Eigen::VectorXcd trialRotations; // the same for an extrapolated candidate
     // Refinement (Anderson acceleration) state, freeCount rows each.
     Eigen::VectorXcd iterate, mapped, mappedBefore, residualBefore;
-    Eigen::MatrixXcd mappedSteps, residualSteps;                          // freeCount × history
-    std::vector<int> region, mark;                                        // flip repair
+    Eigen::MatrixXcd mappedSteps, residualSteps; // freeCount × history
+    std::vector<int> region, mark;               // flip repair
+    Eigen::VectorXcd saved; // flip repair: the region's positions before a restart
     Eigen::VectorXcd coarseRotations, coarseCovariance, coarseHandleTerm; // K each
     Eigen::VectorXcd handleTargets; // handles: a warm start's targets while step 1 moves it
     // A drag's momentum (arap_solve.cpp): the precompute and the pose the last warm event on
@@ -34,6 +35,7 @@ struct Workspace {
     const ArapPrecompute *dragOwner = nullptr;
     Eigen::MatrixX2d dragPose;
     Eigen::VectorXcd warmPlain, handleMove, lastCorrection, lastMove;
+    Eigen::VectorXcd olderCorrection; // the correction of the event before the last
 };
 
 Workspace &workspace();
@@ -84,7 +86,8 @@ std::optional<DeformError> refine(const ArapPrecompute &d, Workspace &w, int pas
 int countFlips(const ArapPrecompute &d, const Eigen::VectorXcd &W);
 
 // Local ARAP relaxation of the free vertices around flipped triangles until none is left or a
-// sweep cap is reached; never increases the energy. Fills report.flipped/repairedTriangles.
+// sweep cap is reached (never increases the energy), then one restart from a smoothed region
+// for folds that survive it (kept only with fewer flips). Fills report.flipped/repairedTriangles.
 void repairFlips(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report);
 
 // Moves the vertices of follower components with their anchors (after the solve).
