@@ -8,7 +8,8 @@
 // own points are carried by each pose (geometry::embed, as the app carries strokes). One row per
 // drawing and density: vertices, pins, the stored pose's wall and thread-CPU time and passes,
 // and how far the drawing lands from where the 100k mesh puts it (median, p99 and max over the
-// drawing's points, in px). The question it answers: which density draws the same picture as
+// drawing's points, in px), then a summary row per density; --png DIR draws the poses over each
+// other (drawPicture). The question it answers: which density draws the same picture as
 // 100k vertices, so the app never needs to solve 100k.
 #include "../geometry/geometry_test_support.h"
 #include "arap_quality.h"
@@ -20,9 +21,11 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QPainter>
 
 #include <algorithm>
 #include <chrono>
@@ -49,7 +52,8 @@ constexpr int kReferenceVertices = 100000;
 struct Drawing {
     std::vector<geometry::StrokeInput> strokes; // empty for a contour file
     std::optional<geometry::Polygon> region;
-    Eigen::MatrixX2d points; // every point the drawing is made of
+    Eigen::MatrixX2d points;        // every point the drawing is made of
+    std::vector<Eigen::Index> ends; // where each stroke (or ring) ends in `points`
 };
 
 std::optional<Drawing> loadDrawing(const QString &path, QString &error)
@@ -78,6 +82,7 @@ std::optional<Drawing> loadDrawing(const QString &path, QString &error)
     for (const auto &line : lines) {
         d.points.middleRows(count, line.rows()) = line;
         count += line.rows();
+        d.ends.push_back(count);
     }
     const Eigen::RowVector2d low = d.points.colwise().minCoeff(),
                              high = d.points.colwise().maxCoeff();
@@ -164,6 +169,49 @@ std::optional<Posed> pose(const Drawing &drawing, const geometry::MeshOptions &o
     return p;
 }
 
+// The rest drawing in light grey, the 100k pose in black and each density's pose in its colour
+// (1 red, 2 orange, 4 blue), fitted into 800 px wide: where the colours leave the black line the
+// mesh was too coarse to draw that part the same.
+void drawPicture(const QString &file, const Drawing &drawing,
+                 const std::vector<std::pair<double, Eigen::MatrixX2d>> &poses,
+                 const Eigen::MatrixX2d &reference)
+{
+    Eigen::MatrixX2d all(drawing.points.rows() * Eigen::Index(poses.size() + 2), 2);
+    all.topRows(drawing.points.rows()) = drawing.points;
+    all.middleRows(drawing.points.rows(), reference.rows()) = reference;
+    for (std::size_t k = 0; k < poses.size(); ++k)
+        all.middleRows(drawing.points.rows() * Eigen::Index(k + 2), reference.rows()) =
+            poses[k].second;
+    const Eigen::RowVector2d low = all.colwise().minCoeff(), high = all.colwise().maxCoeff();
+    const double scale = 760.0 / std::max(1.0, high.x() - low.x());
+    QImage image(800, int(std::ceil((high.y() - low.y()) * scale)) + 40, QImage::Format_RGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    const auto draw = [&](const Eigen::MatrixX2d &points, const QColor &colour, double width) {
+        painter.setPen(QPen(colour, width, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        Eigen::Index begin = 0;
+        for (const Eigen::Index end : drawing.ends) {
+            QPolygonF line;
+            for (Eigen::Index k = begin; k < end; ++k)
+                line << QPointF(20.0 + (points(k, 0) - low.x()) * scale,
+                                20.0 + (points(k, 1) - low.y()) * scale);
+            painter.drawPolyline(line);
+            begin = end;
+        }
+    };
+    draw(drawing.points, QColor(200, 200, 200), 1.5);
+    draw(reference, Qt::black, 2.5);
+    for (const auto &[density, points] : poses)
+        draw(points,
+             density <= 1.0   ? QColor(220, 40, 40, 200)
+             : density <= 2.0 ? QColor(240, 150, 0, 200)
+                              : QColor(40, 90, 230, 200),
+             1.2);
+    painter.end();
+    image.save(file);
+}
+
 int benchArapResolution(const QStringList &arguments)
 {
     QStringList files = arguments;
@@ -173,6 +221,12 @@ int benchArapResolution(const QStringList &arguments)
         densities.clear();
         for (const QString &s : files[at + 1].split(QLatin1Char(','), Qt::SkipEmptyParts))
             densities.append(std::clamp(s.toDouble(), 0.01, 100.0));
+        files.remove(at, 2);
+    }
+    QString pngDirectory;
+    if (const int at = int(files.indexOf(QStringLiteral("--png")));
+        at >= 0 && at + 1 < files.size()) {
+        pngDirectory = files[at + 1];
         files.remove(at, 2);
     }
     int failures = 0;
@@ -230,6 +284,7 @@ int benchArapResolution(const QStringList &arguments)
             byDensity[density.isString() ? density.toString() : QString::number(density.toDouble())]
                 .push_back(out);
         };
+        std::vector<std::pair<double, Eigen::MatrixX2d>> poses;
         for (const double density : densities) {
             geometry::MeshOptions options;
             options.density = density;
@@ -239,7 +294,12 @@ int benchArapResolution(const QStringList &arguments)
                 continue;
             }
             row(density, *posed);
+            poses.emplace_back(density, posed->points);
         }
+        if (!pngDirectory.isEmpty())
+            drawPicture(pngDirectory + QLatin1Char('/') + QFileInfo(path).completeBaseName() +
+                            QStringLiteral(".png"),
+                        *drawing, poses, reference->points);
         row(QStringLiteral("100k"), *reference);
     }
     // One summary row per density: the worst drawing decides whether it draws the same picture.
@@ -283,4 +343,4 @@ int benchArapResolution(const QStringList &arguments)
 
 } // namespace
 
-FINBOOK_BENCH("arap-resolution", "[--densities 1,2,4] FILE...", benchArapResolution);
+FINBOOK_BENCH("arap-resolution", "[--densities 1,2,4] [--png DIR] FILE...", benchArapResolution);
