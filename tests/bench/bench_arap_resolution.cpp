@@ -119,7 +119,7 @@ struct Posed {
 };
 
 std::optional<Posed> pose(const Drawing &drawing, const geometry::MeshOptions &options,
-                          QString &error)
+                          const deform::ArapOptions &arapOptions, QString &error)
 {
     auto mesh = drawing.region
                     ? geometry::buildObjectMesh(geometry::Region{*drawing.region}, options)
@@ -142,7 +142,7 @@ std::optional<Posed> pose(const Drawing &drawing, const geometry::MeshOptions &o
         }
     const bench::BendPins bend =
         bench::bendBands(V, low, high, centre / double(std::max(1, held)), kBendDegrees);
-    auto data = deform::arapPrecompute(V, mesh->F, bend.b, deform::ArapOptions{});
+    auto data = deform::arapPrecompute(V, mesh->F, bend.b, arapOptions);
     if (!data) {
         error = QStringLiteral("precompute failed");
         return std::nullopt;
@@ -229,6 +229,16 @@ int benchArapResolution(const QStringList &arguments)
         pngDirectory = files[at + 1];
         files.remove(at, 2);
     }
+    // --tight: the reference runs until no vertex moves by 1e-9 of the size in a pass (the app
+    // stops at 1e-6 with the energy settled), to tell the coarse meshes' error from the
+    // reference's own.
+    deform::ArapOptions referenceOptions;
+    if (const int at = int(files.indexOf(QStringLiteral("--tight"))); at >= 0) {
+        referenceOptions.finalTolerance = 1e-9;
+        referenceOptions.finalEnergyTolerance = 0.0;
+        referenceOptions.finalPassCap = 20000;
+        files.remove(at);
+    }
     int failures = 0;
     std::map<QString, std::vector<QJsonObject>> byDensity; // for the summary rows
     for (const QString &path : files) {
@@ -239,7 +249,8 @@ int benchArapResolution(const QStringList &arguments)
         geometry::MeshOptions fine;
         fine.maxVertices = kReferenceVertices;
         fine.targetVertices = kReferenceVertices;
-        const auto reference = drawing ? pose(*drawing, fine, error) : std::nullopt;
+        const auto reference =
+            drawing ? pose(*drawing, fine, referenceOptions, error) : std::nullopt;
         if (!reference) {
             std::printf("%s\n", QJsonDocument(QJsonObject{{QStringLiteral("bench"),
                                                            QStringLiteral("arap-resolution")},
@@ -288,7 +299,7 @@ int benchArapResolution(const QStringList &arguments)
         for (const double density : densities) {
             geometry::MeshOptions options;
             options.density = density;
-            const auto posed = pose(*drawing, options, error);
+            const auto posed = pose(*drawing, options, deform::ArapOptions{}, error);
             if (!posed) {
                 ++failures;
                 continue;
@@ -343,4 +354,5 @@ int benchArapResolution(const QStringList &arguments)
 
 } // namespace
 
-FINBOOK_BENCH("arap-resolution", "[--densities 1,2,4] [--png DIR] FILE...", benchArapResolution);
+FINBOOK_BENCH("arap-resolution", "[--densities 1,2,4] [--tight] [--png DIR] FILE...",
+              benchArapResolution);
