@@ -9,9 +9,12 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <vector>
 
 using namespace finbook::deform;
 using finbook::test::GridMesh;
@@ -50,14 +53,41 @@ Bend bendEnds(const GridMesh &g, double angle)
     return bend;
 }
 
-// The bend reached in `events` warm events from the rest pose; the last event's pose.
-Eigen::MatrixX2d warmDrag(const ArapPrecompute &d, const GridMesh &g, double angle, int events,
+// The vertices within `fraction` of the bar's length from either end pinned, the right band
+// turned by `angle` about the left band's centroid.
+Bend bendBands(const GridMesh &g, double fraction, double angle)
+{
+    const double low = g.V.col(0).minCoeff(), high = g.V.col(0).maxCoeff();
+    std::vector<int> left, right;
+    for (Eigen::Index v = 0; v < g.V.rows(); ++v) {
+        if (g.V(v, 0) <= low + fraction * (high - low))
+            left.push_back(int(v));
+        else if (g.V(v, 0) >= high - fraction * (high - low))
+            right.push_back(int(v));
+    }
+    Bend bend;
+    bend.b.resize(Eigen::Index(left.size() + right.size()));
+    std::copy(left.begin(), left.end(), bend.b.begin());
+    std::copy(right.begin(), right.end(), bend.b.begin() + Eigen::Index(left.size()));
+    bend.bc = finbook::test::rowsOf(g.V, bend.b);
+    const Eigen::RowVector2d pivot = bend.bc.topRows(Eigen::Index(left.size())).colwise().mean();
+    Eigen::Matrix2d R;
+    R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+    for (Eigen::Index k = Eigen::Index(left.size()); k < bend.b.size(); ++k)
+        bend.bc.row(k) = pivot + (bend.bc.row(k) - pivot) * R.transpose();
+    return bend;
+}
+
+// The bend `bendAt(t)` reached in `events` warm events from the rest pose (t = 1/events … 1);
+// the last event's pose.
+Eigen::MatrixX2d warmDrag(const ArapPrecompute &d, const Eigen::MatrixX2d &rest,
+                          const std::function<Bend(double)> &bendAt, int events,
                           ArapSolveReport *report = nullptr)
 {
-    Eigen::MatrixX2d U = g.V;
+    Eigen::MatrixX2d U = rest;
     for (int e = 1; e <= events; ++e) {
         const Eigen::MatrixX2d start = U;
-        auto result = arapSolveFrom(d, bendEnds(g, angle * e / events).bc, start, U);
+        auto result = arapSolveFrom(d, bendAt(double(e) / events).bc, start, U);
         if (!result) {
             qWarning("solve failed: %s", result.error().message.c_str());
             return {};
@@ -66,6 +96,14 @@ Eigen::MatrixX2d warmDrag(const ArapPrecompute &d, const GridMesh &g, double ang
             *report = *result;
     }
     return U;
+}
+
+// The same for bendEnds(g, ·) up to `angle`.
+Eigen::MatrixX2d warmDrag(const ArapPrecompute &d, const GridMesh &g, double angle, int events,
+                          ArapSolveReport *report = nullptr)
+{
+    return warmDrag(
+        d, g.V, [&](double t) { return bendEnds(g, angle * t); }, events, report);
 }
 
 ArapOptions convergedReference()
@@ -314,36 +352,8 @@ void TestArapDrag::dragsRepeatBitForBit()
 void TestArapDrag::dragLeavesNoFoldTheOptimumHasNot()
 {
     const GridMesh g = finbook::test::gridMesh(40, 20, 2.0, 1.0);
-    const auto bendBands = [&](double degrees) {
-        std::vector<int> left, right;
-        for (Eigen::Index v = 0; v < g.V.rows(); ++v) {
-            if (g.V(v, 0) <= 0.06 * 2.0)
-                left.push_back(int(v));
-            else if (g.V(v, 0) >= 2.0 - 0.06 * 2.0)
-                right.push_back(int(v));
-        }
-        Eigen::RowVector2d centre = Eigen::RowVector2d::Zero();
-        for (const int v : left)
-            centre += g.V.row(v);
-        centre /= double(left.size());
-        const double angle = degrees * M_PI / 180.0;
-        Eigen::Matrix2d R;
-        R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
-        Bend bend;
-        bend.b.resize(Eigen::Index(left.size() + right.size()));
-        bend.bc.resize(bend.b.size(), 2);
-        Eigen::Index row = 0;
-        for (const int v : left) {
-            bend.b(row) = v;
-            bend.bc.row(row++) = g.V.row(v);
-        }
-        for (const int v : right) {
-            bend.b(row) = v;
-            bend.bc.row(row++) = centre + (g.V.row(v) - centre) * R.transpose();
-        }
-        return bend;
-    };
-    const Bend bend = bendBands(60.0);
+    const double angle = 60.0 * M_PI / 180.0;
+    const Bend bend = bendBands(g, 0.06, angle);
     ArapOptions few;
     few.maxDragPasses = 8;
     const auto data = precompute(g.V, g.F, bend.b, few);
@@ -352,13 +362,8 @@ void TestArapDrag::dragLeavesNoFoldTheOptimumHasNot()
     const Eigen::MatrixX2d optimum = solved(*reference, bend.bc, ArapStage::Final);
     QCOMPARE(arapFlippedTriangles(g.V, g.F, optimum), 0);
     const auto drag = [&] {
-        Eigen::MatrixX2d U = g.V;
-        for (int e = 1; e <= 30; ++e) {
-            const Eigen::MatrixX2d start = U;
-            if (!arapSolveFrom(*data, bendBands(60.0 * e / 30).bc, start, U))
-                return Eigen::MatrixX2d();
-        }
-        return U;
+        return warmDrag(
+            *data, g.V, [&](double t) { return bendBands(g, 0.06, angle * t); }, 30);
     };
     const Eigen::MatrixX2d U = drag();
     QVERIFY(U.rows() == g.V.rows());
