@@ -110,6 +110,54 @@ private slots:
         QTRY_COMPARE(layer.pictureWithoutWaiting(3), layer.pictureAt(3));
     }
 
+    void thumbnailPicturesDecodeOnAWorkerInOrder()
+    {
+        Document doc;
+        DocumentSettings s;
+        s.canvasSize = QSize(128, 96);
+        s.fps = 10;
+        doc.reset(framesOfOneTick(doc, 40), s, doc.nextId());
+        doc.referenceLayer().setReference(*importReferenceFile(m_video, QSizeF(128, 96)));
+        ReferenceLayer &layer = doc.referenceLayer();
+        layer.media()->setCacheLimit(0); // only the frame decoded last stays
+        QSignalSpy decoded(&layer, &ReferenceLayer::pictureDecoded);
+        // Not decoded yet: null now, the media frame to wait for; asking twice queues once.
+        for (int frame : {30, 3, 30, 17}) {
+            qint64 pending = -2;
+            QVERIFY(layer.requestPicture(frame, &pending).isNull());
+            QCOMPARE(pending, layer.videoFrameAt(frame));
+        }
+        QTRY_COMPARE(decoded.count(), 3);
+        QTest::qWait(50);
+        QCOMPARE(decoded.count(), 3);
+        const QList<qint64> order{decoded[0][0].toLongLong(), decoded[1][0].toLongLong(),
+                                  decoded[2][0].toLongLong()};
+        QCOMPARE(order, (QList<qint64>{30, 3, 17}));
+        for (const QList<QVariant> &answer : decoded)
+            QCOMPARE(answer[1].value<QImage>(), layer.pictureAt(int(answer[0].toLongLong())));
+        // The frame decoded last is cached: handed over at once.
+        qint64 pending = -2;
+        QCOMPARE(layer.requestPicture(17, &pending), layer.pictureAt(17));
+        QCOMPARE(pending, qint64(-1));
+        // Hidden: nothing to show, nothing to decode.
+        Reference hidden = layer.reference();
+        hidden.visible = false;
+        layer.setReference(hidden);
+        QVERIFY(layer.requestPicture(25, &pending).isNull());
+        QCOMPARE(pending, qint64(-1));
+        // Answers for media replaced before they arrive are dropped.
+        Reference shown = hidden;
+        shown.visible = true;
+        layer.setReference(shown);
+        decoded.clear();
+        QVERIFY(layer.requestPicture(25, &pending).isNull());
+        QCOMPARE(pending, qint64(25));
+        layer.setReference(
+            *importReferenceFile(test::writeTwoColourPng(m_dir.path()), QSizeF(128, 96)));
+        QTest::qWait(300);
+        QCOMPARE(decoded.count(), 0);
+    }
+
     void aSeekKeepsTheFramesBefore()
     {
         const auto r = importReferenceFile(m_video, QSizeF(128, 96));

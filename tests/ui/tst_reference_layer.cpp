@@ -4,8 +4,10 @@
 #include "tst_window_support.h"
 
 #include <finbook/model/reference/reference_layer.h>
+#include <finbook/model/render.h>
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/reference/reference_panel.h>
+#include <finbook/ui/timeline/thumbnail_cache.h>
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -94,6 +96,44 @@ private slots:
         QVERIFY(error->contains(QStringLiteral("half.png")));
         QVERIFY(doc.referenceLayer().isEmpty());
         QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
+    void thumbnailsDoNotWaitForTheVideo()
+    {
+        model::Document doc;
+        model::DocumentSettings settings;
+        settings.canvasSize = QSize(64, 48);
+        settings.fps = 12;
+        std::vector<model::Frame> frames(12);
+        for (model::Frame &f : frames)
+            f.id = doc.allocateId();
+        doc.reset(std::move(frames), settings, doc.nextId());
+        const QString video =
+            writeTestVideo(m_dir.path(), QStringLiteral("thumbs.mp4"), {64, 48}, 1, 12);
+        if (video.isEmpty())
+            QSKIP("ffmpeg could not write a test video");
+        QVERIFY(!ui::importReference(doc, video));
+        model::ReferenceLayer &layer = doc.referenceLayer();
+        layer.media()->setCacheLimit(0); // only the frame decoded last stays
+        ui::ThumbnailCache cache(&doc);
+        cache.setThumbnailSize(QSize(64, 48));
+        const model::Id id = doc.frameAt(9).id;
+        QVERIFY(layer.media()->cachedFrame(layer.videoFrameAt(9)).isNull());
+        // Rendered at once without the video's picture, which a worker decodes meanwhile.
+        cache.thumbnail(id);
+        cache.renderPending();
+        QCOMPARE(cache.renderedCount(), 1);
+        const QImage first = cache.thumbnail(id).toImage();
+        QCOMPARE(first, model::renderFrame(doc.frameAt(9), doc.settings(), QSize(64, 48))
+                            .convertToFormat(first.format()));
+        // Then drawn again with it.
+        QTRY_COMPARE(cache.renderedCount(), 2);
+        QVERIFY(cache.isCurrent(id));
+        const QImage second = cache.thumbnail(id).toImage();
+        const QImage expected = model::renderFrameWithReference(
+            doc.frameAt(9), doc.settings(), QSize(64, 48), layer.reference(), layer.pictureAt(9));
+        QCOMPARE(second, expected.convertToFormat(second.format()));
+        QVERIFY(second != first);
     }
 
     void canvasShowsItUnderTheDrawing()

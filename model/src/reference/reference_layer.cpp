@@ -20,15 +20,39 @@ ReferenceLayer::~ReferenceLayer()
 {
     if (m_thread) {
         m_worker->latest = -1; // what is queued is dropped; a decode under way finishes
+        m_worker->dropQueued();
         m_thread->quit();
         m_thread->wait();
         delete m_worker;
     }
 }
 
+bool ReferenceLayer::showsPicture() const
+{
+    return !m_reference.isEmpty() && m_reference.visible && m_reference.opacity > 0.0;
+}
+
+void ReferenceLayer::startWorker()
+{
+    if (m_thread)
+        return;
+    m_thread = new QThread(this);
+    m_thread->setObjectName(QStringLiteral("reference decoder"));
+    m_worker = new reference_detail::ReferenceDecodeWorker;
+    m_worker->moveToThread(m_thread);
+    connect(m_worker, &reference_detail::ReferenceDecodeWorker::decoded, this,
+            &ReferenceLayer::pictureReady);
+    connect(m_worker, &reference_detail::ReferenceDecodeWorker::pictureDecoded, this,
+            [this](quint64 generation, qint64 index, const QImage &picture) {
+                if (generation == m_mediaGeneration)
+                    emit pictureDecoded(index, picture);
+            });
+    m_thread->start(QThread::LowPriority);
+}
+
 QImage ReferenceLayer::pictureWithoutWaiting(int frameIndex)
 {
-    if (m_reference.isEmpty() || !m_reference.visible || m_reference.opacity <= 0.0)
+    if (!showsPicture())
         return {};
     const auto m = media();
     if (!m)
@@ -38,21 +62,30 @@ QImage ReferenceLayer::pictureWithoutWaiting(int frameIndex)
         m_lastShown = ready;
         return ready;
     }
-    if (!m_thread) {
-        m_thread = new QThread(this);
-        m_thread->setObjectName(QStringLiteral("reference decoder"));
-        m_worker = new reference_detail::ReferenceDecodeWorker;
-        m_worker->moveToThread(m_thread);
-        connect(m_worker, &reference_detail::ReferenceDecodeWorker::decoded, this,
-                &ReferenceLayer::pictureReady);
-        m_thread->start(QThread::LowPriority);
-    }
+    startWorker();
     if (m_worker->latest.exchange(index) != index) {
         auto *worker = m_worker;
         QMetaObject::invokeMethod(
             worker, [worker, m, index] { worker->decode(m, index); }, Qt::QueuedConnection);
     }
     return m_lastShown;
+}
+
+QImage ReferenceLayer::requestPicture(int frameIndex, qint64 *pending)
+{
+    *pending = -1;
+    if (!showsPicture())
+        return {};
+    const auto m = media();
+    if (!m)
+        return {};
+    const qint64 index = videoFrameAt(frameIndex);
+    if (QImage ready = m->cachedFrame(index); !ready.isNull())
+        return ready;
+    startWorker();
+    m_worker->enqueue(m, m_mediaGeneration, index);
+    *pending = index;
+    return {};
 }
 
 void ReferenceLayer::setReference(Reference reference)
@@ -62,8 +95,11 @@ void ReferenceLayer::setReference(Reference reference)
     if (reference.kind != m_reference.kind || reference.bytes != m_reference.bytes ||
         reference.pictures != m_reference.pictures) {
         m_lastShown = QImage();
-        if (m_worker)
+        ++m_mediaGeneration;
+        if (m_worker) {
             m_worker->latest = -1;
+            m_worker->dropQueued();
+        }
         m_media.reset();
         m_mediaOpened = false;
         m_mediaError.clear();
@@ -104,7 +140,7 @@ qint64 ReferenceLayer::videoFrameAt(int frameIndex) const
 
 QImage ReferenceLayer::pictureAt(int frameIndex, bool decode) const
 {
-    if (m_reference.isEmpty() || !m_reference.visible || m_reference.opacity <= 0.0)
+    if (!showsPicture())
         return {};
     const auto m = media();
     if (!m)

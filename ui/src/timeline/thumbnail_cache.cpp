@@ -29,10 +29,13 @@ ThumbnailCache::ThumbnailCache(model::Document *document, QObject *parent)
         m_cache.clear();
         m_revisions.clear();
         m_pending.clear();
+        m_awaiting.clear();
         emit thumbnailsInvalidated();
     });
     connect(&m_doc->referenceLayer(), &model::ReferenceLayer::referenceChanged, this,
             &ThumbnailCache::invalidateAll);
+    connect(&m_doc->referenceLayer(), &model::ReferenceLayer::pictureDecoded, this,
+            &ThumbnailCache::pictureDecoded);
     connect(m_doc, &model::Document::settingsChanged, this, [this] {
         const model::DocumentSettings &s = m_doc->settings();
         if (s.canvasSize == m_canvasSize && s.background == m_background &&
@@ -60,6 +63,7 @@ void ThumbnailCache::invalidateAll()
 {
     m_cache.clear();
     m_pending.clear();
+    m_awaiting.clear();
     emit thumbnailsInvalidated();
 }
 
@@ -96,23 +100,59 @@ bool ThumbnailCache::renderOne(model::Id frameId)
 {
     if (isCurrent(frameId) || (m_isVisible && !m_isVisible(frameId)))
         return false;
-    const model::Frame *frame = m_doc->frame(frameId);
-    if (!frame)
+    if (!m_doc->frame(frameId))
         return false;
+    // A reference video's frame is never decoded here: the layer's worker does it, and the
+    // thumbnail is drawn again with it when it comes (pictureDecoded).
+    model::ReferenceLayer &reference = m_doc->referenceLayer();
+    qint64 pending = -1;
+    const QImage picture = reference.isEmpty()
+                               ? QImage()
+                               : reference.requestPicture(m_doc->frameIndex(frameId), &pending);
+    if (pending >= 0) {
+        m_awaiting[frameId] = pending;
+        if (m_cache.contains(frameId))
+            return false; // the older thumbnail stays until the picture is decoded
+    } else {
+        m_awaiting.remove(frameId);
+    }
+    store(frameId, picture);
+    return true;
+}
+
+void ThumbnailCache::store(model::Id frameId, const QImage &picture)
+{
+    const model::Frame *frame = m_doc->frame(frameId);
     const QSize device = (QSizeF(m_size) * m_dpr).toSize().expandedTo(QSize(1, 1));
-    const model::ReferenceLayer &reference = m_doc->referenceLayer();
-    const QImage picture =
-        reference.isEmpty() ? QImage() : reference.pictureAt(m_doc->frameIndex(frameId));
-    QImage image = picture.isNull()
-                       ? model::renderFrame(*frame, m_doc->settings(), device)
-                       : model::renderFrameWithReference(*frame, m_doc->settings(), device,
-                                                         reference.reference(), picture);
+    QImage image =
+        picture.isNull()
+            ? model::renderFrame(*frame, m_doc->settings(), device)
+            : model::renderFrameWithReference(*frame, m_doc->settings(), device,
+                                              m_doc->referenceLayer().reference(), picture);
     image.setDevicePixelRatio(m_dpr);
     m_cache.insert(frameId,
                    new Entry{QPixmap::fromImage(std::move(image)), currentRevision(frameId)});
     ++m_rendered;
     emit thumbnailRendered(frameId);
-    return true;
+}
+
+void ThumbnailCache::pictureDecoded(qint64 mediaFrame, const QImage &picture)
+{
+    std::vector<model::Id> ready;
+    for (auto it = m_awaiting.begin(); it != m_awaiting.end();) {
+        if (it.value() == mediaFrame) {
+            ready.push_back(it.key());
+            it = m_awaiting.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    for (model::Id frameId : ready) {
+        // Only a frame still showing that media frame (holds and order may have changed).
+        const int index = m_doc->frameIndex(frameId);
+        if (index >= 0 && m_doc->referenceLayer().videoFrameAt(index) == mediaFrame)
+            store(frameId, picture);
+    }
 }
 
 void ThumbnailCache::renderSlice()

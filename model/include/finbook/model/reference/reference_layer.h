@@ -49,12 +49,20 @@ public:
     // it is decoded; otherwise the picture this returned last while a worker thread decodes
     // it, and pictureReady() when it is.
     QImage pictureWithoutWaiting(int frameIndex);
+    // For thumbnails, which must not wait either: the picture at `frameIndex` when it needs no
+    // decoding (the image, a cached frame; null when hidden or empty). Otherwise null, with
+    // `*pending` set to its media frame, which a worker thread decodes and pictureDecoded()
+    // hands over. Each frame asked for is decoded once, in the order asked.
+    QImage requestPicture(int frameIndex, qint64 *pending);
 
 signals:
     // Anything about the reference changed (placement, opacity, visibility, lock, media).
     void referenceChanged();
     // A frame asked for by pictureWithoutWaiting() is decoded: ask again.
     void pictureReady();
+    // A media frame asked for by requestPicture(), for the media shown now (null: it did not
+    // decode).
+    void pictureDecoded(qint64 mediaFrame, const QImage &picture);
 
 private:
     Document *m_doc;
@@ -63,8 +71,12 @@ private:
     mutable bool m_mediaOpened = false;
     mutable QString m_mediaError;
     QImage m_lastShown;
-    QThread *m_thread = nullptr; // started on the first video frame not in the cache
+    quint64 m_mediaGeneration = 0; // tags thumbnail requests: older media's answers are dropped
+    QThread *m_thread = nullptr;   // started on the first video frame not in the cache
     reference_detail::ReferenceDecodeWorker *m_worker = nullptr;
+
+    bool showsPicture() const;
+    void startWorker();
 };
 
 // Paints `picture` (the reference's media, mediaSize pixels) where `reference` places it, at

@@ -5,12 +5,15 @@
 // small time slices, asking the visibility filter first so frames scrolled away meanwhile are
 // skipped. Entries are keyed by frame id and a revision bumped on Document::frameChanged
 // (and for all frames when canvas size or background change), and evicted least recently used.
+// A reference video's frames are decoded on the reference layer's worker thread: a thumbnail
+// is drawn without its picture (or keeps its older one) until the picture comes.
 #pragma once
 
 #include <finbook/model/document.h>
 
 #include <QCache>
 #include <QHash>
+#include <QImage>
 #include <QObject>
 #include <QPixmap>
 #include <QTimer>
@@ -56,6 +59,8 @@ private:
     quint64 currentRevision(model::Id frameId) const;
     void renderSlice();
     bool renderOne(model::Id frameId);
+    void store(model::Id frameId, const QImage &picture); // renders and caches, current
+    void pictureDecoded(qint64 mediaFrame, const QImage &picture);
     void invalidateAll();
 
     model::Document *m_doc;
@@ -65,6 +70,7 @@ private:
     QHash<model::Id, quint64> m_revisions;
     quint64 m_generation = 1; // bumped when every thumbnail is stale at once
     std::vector<model::Id> m_pending;
+    QHash<model::Id, qint64> m_awaiting; // frames whose reference video frame is decoding
     std::function<bool(model::Id)> m_isVisible;
     QTimer m_timer;
     int m_rendered = 0;
