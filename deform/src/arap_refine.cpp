@@ -27,7 +27,8 @@ constexpr int kOverRelaxedPasses = 3;
 // A drawing whose pins force folds so pays up to that many passes per event for looking.
 // A fold often survives the first extra pass and opens in the second: with 1, the 20k-vertex
 // drawings of the quality bench kept 11 drag flips beyond the converged pose's, with 2 (and
-// two extra passes, see kMinFlipPasses in arap_solve.cpp) 4; 3 left 6.
+// two extra passes, see kMinFlipPasses in arap_solve.cpp) 4; 3 (and three extra) left 6 on
+// the 9 drawings that fold.
 constexpr int kUnfoldPatience = 2;
 constexpr double kOverRelaxation = 1.0;
 

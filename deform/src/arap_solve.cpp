@@ -219,8 +219,11 @@ using detail::Workspace;
 // folds a bend's last events squeeze next to a pinned band (a triangle the converged pose keeps
 // at a few % of its area) often need two more before local relaxation can open them. On the
 // 55 drawings of `finbook-bench arap --quality --density 3.65` the drags' flips beyond the
-// converged pose's went from 11 to 4 with 2 (and kUnfoldPatience 2); 3 did no better, and up
-// to 6 left the same 4 (a bat's fold and a face's, local minima the drag walked into).
+// converged pose's went from 11 to 4 with 2 (and kUnfoldPatience 2); 3 did no better, and on
+// the 9 drawings that fold 6 (with a patience of 6) left the same 4 at twice the cost. They
+// are local minima the drag walked into, which a second round of 4 passes did not open either:
+// a bat's fold (nor did restarting regions of up to 200 vertices around it) and a face's 3
+// beside the 9 its converged pose has.
 constexpr int kMinFlipPasses = 2;
 
 // Steps 1, then `scalePasses` × (2a + 2b): the paper's method (and its extra passes).
