@@ -215,6 +215,17 @@ namespace {
 
 using detail::Workspace;
 
+// A 20k-vertex drawing's drag event gets 4–5 passes, and one more for flips was too few: the
+// folds a bend's last events squeeze next to a pinned band (a triangle the converged pose keeps
+// at a few % of its area) often need two more before local relaxation can open them. On the
+// 55 drawings of `finbook-bench arap --quality --density 3.65` the drags' flips beyond the
+// converged pose's went from 11 to 4 with 2 (and kUnfoldPatience 2); 3 did no better, and on
+// the 9 drawings that fold 6 (with a patience of 6) left the same 4 at twice the cost. They
+// are local minima the drag walked into, which a second round of 4 passes did not open either:
+// a bat's fold (nor did restarting regions of up to 200 vertices around it) and a face's 3
+// beside the 9 its converged pose has.
+constexpr int kMinFlipPasses = 2;
+
 // Steps 1, then `scalePasses` × (2a + 2b): the paper's method (and its extra passes).
 ArapSolveResult twoStepSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc,
                              Eigen::MatrixX2d &U, int scalePasses)
@@ -265,11 +276,13 @@ ArapSolveResult refinedSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc
     }
     const int passes = final ? std::max(1, d.options.finalPassCap) : dragPasses;
     const double tolerance = final ? d.options.finalTolerance * d.objectSize : 0.0;
-    // Drag: the flip repair may add an eighth of the passes (only for poses with flipped
-    // triangles, and only while their count falls); none at the minimum of two passes (large
-    // meshes), where the budget has no room and local relaxation alone repairs.
-    const int flipPasses =
-        d.options.fixFlips && !final && dragPasses >= 3 ? std::max(1, dragPasses / 8) : 0;
+    // Drag: the flip repair may add an eighth of the passes, at least kMinFlipPasses (only for
+    // poses with flipped triangles, and only while their count falls, see kUnfoldPatience in
+    // arap_refine.cpp); none at the minimum of two passes (large meshes), where the budget has
+    // no room and local relaxation alone repairs.
+    const int flipPasses = d.options.fixFlips && !final && dragPasses >= 3
+                               ? std::max(kMinFlipPasses, dragPasses / 8)
+                               : 0;
     const double energyTolerance = final ? d.options.finalEnergyTolerance : 0.0;
     if (auto error = detail::refine(d, w, passes, flipPasses, tolerance, energyTolerance,
                                     final ? cancelled : nullptr, report))

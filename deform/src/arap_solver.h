@@ -35,7 +35,8 @@ struct Workspace {
     const ArapPrecompute *dragOwner = nullptr;
     Eigen::MatrixX2d dragPose;
     Eigen::VectorXcd warmPlain, handleMove, lastCorrection, lastMove;
-    Eigen::VectorXcd olderCorrection; // the correction of the event before the last
+    Eigen::VectorXcd olderCorrection;  // the correction of the event before the last
+    Eigen::VectorXcd correctionChange; // lastCorrection − olderCorrection (acceleration)
 };
 
 Workspace &workspace();

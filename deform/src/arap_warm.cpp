@@ -94,9 +94,10 @@ void addMomentum(const ArapPrecompute &d, Workspace &w)
     }
     if (w.olderCorrection.size() == nf) {
         const double gamma = kAcceleration * beta;
-        free += gamma * (w.lastCorrection - w.olderCorrection);
+        w.correctionChange = w.lastCorrection - w.olderCorrection;
+        free += gamma * w.correctionChange;
         if (!(fitRotations(d, w.positions, w.rotations, true) < momentum))
-            free -= gamma * (w.lastCorrection - w.olderCorrection);
+            free -= gamma * w.correctionChange;
     }
 }
 
