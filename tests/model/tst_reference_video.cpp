@@ -28,6 +28,20 @@ private:
         return frames;
     }
 
+    // 40 frames of one tick at 10 fps over the test video, whose cache keeps only the frame
+    // decoded last.
+    ReferenceLayer &showVideoUncached(Document &doc) const
+    {
+        DocumentSettings s;
+        s.canvasSize = QSize(128, 96);
+        s.fps = 10;
+        doc.reset(framesOfOneTick(doc, 40), s, doc.nextId());
+        doc.referenceLayer().setReference(*importReferenceFile(m_video, QSizeF(128, 96)));
+        ReferenceLayer &layer = doc.referenceLayer();
+        layer.media()->setCacheLimit(0);
+        return layer;
+    }
+
 private slots:
     void initTestCase()
     {
@@ -89,13 +103,7 @@ private slots:
     void canvasPicturesDecodeOnAWorker()
     {
         Document doc;
-        DocumentSettings s;
-        s.canvasSize = QSize(128, 96);
-        s.fps = 10;
-        doc.reset(framesOfOneTick(doc, 40), s, doc.nextId());
-        doc.referenceLayer().setReference(*importReferenceFile(m_video, QSizeF(128, 96)));
-        ReferenceLayer &layer = doc.referenceLayer();
-        layer.media()->setCacheLimit(0); // only the frame decoded last stays
+        ReferenceLayer &layer = showVideoUncached(doc);
         QSignalSpy ready(&layer, &ReferenceLayer::pictureReady);
         // Asked without waiting: at first the frame shown before (none yet), then the frame.
         for (int i = 0; i < 30; ++i)
@@ -113,13 +121,7 @@ private slots:
     void thumbnailPicturesDecodeOnAWorkerInOrder()
     {
         Document doc;
-        DocumentSettings s;
-        s.canvasSize = QSize(128, 96);
-        s.fps = 10;
-        doc.reset(framesOfOneTick(doc, 40), s, doc.nextId());
-        doc.referenceLayer().setReference(*importReferenceFile(m_video, QSizeF(128, 96)));
-        ReferenceLayer &layer = doc.referenceLayer();
-        layer.media()->setCacheLimit(0); // only the frame decoded last stays
+        ReferenceLayer &layer = showVideoUncached(doc);
         QSignalSpy decoded(&layer, &ReferenceLayer::pictureDecoded);
         // Not decoded yet: null now, the media frame to wait for; asking twice queues once.
         for (int frame : {30, 3, 30, 17}) {

@@ -27,9 +27,14 @@ ReferenceLayer::~ReferenceLayer()
     }
 }
 
-bool ReferenceLayer::showsPicture() const
+std::shared_ptr<ReferenceMedia> ReferenceLayer::shownMedia(int frameIndex, qint64 &index) const
 {
-    return !m_reference.isEmpty() && m_reference.visible && m_reference.opacity > 0.0;
+    if (m_reference.isEmpty() || !m_reference.visible || m_reference.opacity <= 0.0)
+        return nullptr;
+    auto m = media();
+    if (m)
+        index = videoFrameAt(frameIndex);
+    return m;
 }
 
 void ReferenceLayer::startWorker()
@@ -52,12 +57,10 @@ void ReferenceLayer::startWorker()
 
 QImage ReferenceLayer::pictureWithoutWaiting(int frameIndex)
 {
-    if (!showsPicture())
-        return {};
-    const auto m = media();
+    qint64 index = 0;
+    const auto m = shownMedia(frameIndex, index);
     if (!m)
         return {};
-    const qint64 index = videoFrameAt(frameIndex);
     if (QImage ready = m->cachedFrame(index); !ready.isNull()) {
         m_lastShown = ready;
         return ready;
@@ -74,12 +77,10 @@ QImage ReferenceLayer::pictureWithoutWaiting(int frameIndex)
 QImage ReferenceLayer::requestPicture(int frameIndex, qint64 *pending)
 {
     *pending = -1;
-    if (!showsPicture())
-        return {};
-    const auto m = media();
+    qint64 index = 0;
+    const auto m = shownMedia(frameIndex, index);
     if (!m)
         return {};
-    const qint64 index = videoFrameAt(frameIndex);
     if (QImage ready = m->cachedFrame(index); !ready.isNull())
         return ready;
     startWorker();
@@ -140,12 +141,10 @@ qint64 ReferenceLayer::videoFrameAt(int frameIndex) const
 
 QImage ReferenceLayer::pictureAt(int frameIndex, bool decode) const
 {
-    if (!showsPicture())
-        return {};
-    const auto m = media();
+    qint64 index = 0;
+    const auto m = shownMedia(frameIndex, index);
     if (!m)
         return {};
-    const qint64 index = videoFrameAt(frameIndex);
     return decode ? m->frame(index) : m->cachedFrame(index);
 }
 

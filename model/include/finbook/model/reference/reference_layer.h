@@ -75,7 +75,9 @@ private:
     QThread *m_thread = nullptr;   // started on the first video frame not in the cache
     reference_detail::ReferenceDecodeWorker *m_worker = nullptr;
 
-    bool showsPicture() const;
+    // The media when a picture shows (not hidden, not transparent), with `index` set to the
+    // media frame shown at `frameIndex`; null otherwise.
+    std::shared_ptr<ReferenceMedia> shownMedia(int frameIndex, qint64 &index) const;
     void startWorker();
 };
 
