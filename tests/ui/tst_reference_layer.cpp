@@ -134,6 +134,18 @@ private slots:
             doc.frameAt(9), doc.settings(), QSize(64, 48), layer.reference(), layer.pictureAt(9));
         QCOMPARE(second, expected.convertToFormat(second.format()));
         QVERIFY(second != first);
+        // Edited while its picture is out of the cache: the older thumbnail stays, and asking
+        // for it again while the picture decodes queues nothing more.
+        layer.pictureAt(2); // the cache keeps only this one
+        QVERIFY(layer.media()->cachedFrame(layer.videoFrameAt(9)).isNull());
+        emit doc.frameChanged(id);
+        QVERIFY(!cache.isCurrent(id));
+        cache.thumbnail(id);
+        cache.renderPending();
+        QCOMPARE(cache.thumbnail(id).toImage(), second);
+        QCOMPARE(cache.pendingCount(), 0);
+        QTRY_VERIFY(cache.isCurrent(id));
+        QCOMPARE(cache.thumbnail(id).toImage(), second);
     }
 
     void canvasShowsItUnderTheDrawing()

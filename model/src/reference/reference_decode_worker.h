@@ -100,6 +100,7 @@ private:
 
     std::mutex m_mutex;
     std::deque<Request> m_queue;
+    // Queued or being decoded: a request for a frame under way is not queued again.
     std::set<std::pair<quint64, qint64>> m_queued;
 };
 

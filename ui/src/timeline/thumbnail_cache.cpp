@@ -89,6 +89,8 @@ QPixmap ThumbnailCache::thumbnail(model::Id frameId)
     const Entry *e = m_cache.object(frameId); // also marks it most recently used
     if (e && e->revision == currentRevision(frameId))
         return e->pixmap;
+    if (m_awaiting.contains(frameId)) // drawn again when its reference picture comes
+        return e ? e->pixmap : QPixmap();
     if (std::find(m_pending.begin(), m_pending.end(), frameId) == m_pending.end())
         m_pending.push_back(frameId);
     if (!m_timer.isActive())
@@ -148,10 +150,15 @@ void ThumbnailCache::pictureDecoded(qint64 mediaFrame, const QImage &picture)
         }
     }
     for (model::Id frameId : ready) {
-        // Only a frame still showing that media frame (holds and order may have changed).
+        // Only a frame still showing that media frame; one whose holds or place changed
+        // meanwhile is asked for again.
         const int index = m_doc->frameIndex(frameId);
-        if (index >= 0 && m_doc->referenceLayer().videoFrameAt(index) == mediaFrame)
+        if (index < 0)
+            continue;
+        if (m_doc->referenceLayer().videoFrameAt(index) == mediaFrame)
             store(frameId, picture);
+        else
+            thumbnail(frameId);
     }
 }
 
