@@ -32,6 +32,7 @@
 #include "limb_measures.h"
 #include "skin_alternatives.h"
 
+#include <finbook/deform/skeleton/cut_out.h>
 #include <finbook/deform/skeleton/linear_blend_skinning.h>
 #include <finbook/deform/skeleton/rigid_skinning.h>
 #include <finbook/deform/skeleton/skeleton.h>
@@ -73,7 +74,8 @@ struct Scheme {
     double dominance = 2.0;    // ≤ 1: rigid pieces (bench::rigidPieces)
     bool hardCut = false;      // linear blend with one-hot weights (bench::hardCut)
     bool skeletonArap = false; // pins from deform::skeletonArapHolds
-    int stage = -1; // rigid schemes: −1 arapSolve's two steps, else ArapStage (Drag, Final)
+    int stage = -1;      // rigid schemes: −1 arapSolve's two steps, else ArapStage (Drag, Final)
+    bool cutOut = false; // the mesh cut at its joints (deform::cutAtJoints), pieces layered
 };
 constexpr Scheme kSchemes[] = {
     {"rigid", true, 0.0},
@@ -86,7 +88,8 @@ constexpr Scheme kSchemes[] = {
      int(deform::ArapStage::Drag)},
     {"skeleton_arap", true, 0.0, 2.0, false, true, int(deform::ArapStage::Drag)},
     {"skeleton_arap_two_step", true, 0.0, 2.0, false, true, -1},
-    {"skeleton_arap_final", true, 0.0, 2.0, false, true, int(deform::ArapStage::Final)}};
+    {"skeleton_arap_final", true, 0.0, 2.0, false, true, int(deform::ArapStage::Final)},
+    {"cutout_layers", true, deform::kDefaultJointFree, 2.0, false, false, -1, true}};
 
 constexpr const char *kUsage =
     "[--before] [--only A,B] [--png DIR] [--png-degrees 60|100] [--zoom] [--scheme NAME] "
@@ -96,13 +99,15 @@ constexpr const char *kUsage =
 
 struct Sample {
     int folds = 0, crossings = 0, flips = 0;
-    double jointArea = 100.0, bodyMoved = 0.0, ms = 0.0;
+    int layered = 0; // cutout_layers: crossings of two pieces' outlines (one drawn over the other)
+    double jointArea = 100.0, jointCover = 100.0, bodyMoved = 0.0, ms = 0.0;
 };
 
 struct Skinned {
     std::shared_ptr<const deform::SkinningWeights> weights;
     deform::SkinBinding vertices;
     std::shared_ptr<const deform::RigidSkinning> rigid;
+    std::optional<deform::CutMesh> cut; // cutout_layers: the mesh it skins
 };
 
 // --joint-free, --dominance and --reach: the zone factor of the *_zones and rigid_pieces
@@ -131,10 +136,23 @@ std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::S
     auto weights = deform::computeSkinningWeights(mesh.V, mesh.F, skeleton, options);
     if (!weights)
         return std::nullopt;
+    if (scheme.cutOut) {
+        // The app's Cut-out mode: the mesh cut at its joints, each piece skinned by its own
+        // bones with the Rigid mode's joint zones where it was not cut.
+        auto cut = deform::cutAtJoints(mesh.V, mesh.F, skeleton, s.radius);
+        if (!cut)
+            return std::nullopt;
+        const deform::SkinningWeights pieces = deform::cutOutWeights(**weights, skeleton, *cut);
+        auto rigid = deform::rigidSkinPrecompute(
+            cut->V, cut->F, deform::withJointZones(pieces, cut->V, skeleton, s.radius, free));
+        if (!rigid)
+            return std::nullopt;
+        return Skinned{*weights, deform::bindVertices(pieces, cut->V), *rigid, std::move(*cut)};
+    }
     Skinned out{
         *weights,
         deform::bindVertices(scheme.hardCut ? bench::hardCut(**weights) : **weights, mesh.V),
-        nullptr};
+        nullptr, std::nullopt};
     if (scheme.rigid) {
         const deform::SkinningWeights pins =
             scheme.skeletonArap
@@ -150,11 +168,44 @@ std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::S
     return out;
 }
 
+// The mesh a scheme moves: the object's, or its cut (cutout_layers), whose pieces are drawn
+// one over the other.
+struct Moved {
+    Eigen::MatrixX2d V;
+    Eigen::MatrixX3i F;
+    Eigen::VectorXi piece;                    // per vertex (−1 everywhere uncut)
+    std::vector<std::pair<int, int>> outline; // boundary edges of every piece
+    std::vector<int> edgePiece;               // the piece of each
+    std::vector<std::pair<int, int>> drawing; // bench::drawingOutline
+};
+
+Moved movedMesh(const geometry::ObjectMesh &mesh, const Skinned &skinned)
+{
+    Moved m;
+    m.V = skinned.cut ? skinned.cut->V : mesh.V;
+    m.F = skinned.cut ? skinned.cut->F : mesh.F;
+    m.piece = Eigen::VectorXi::Constant(m.V.rows(), -1);
+    std::map<std::pair<int, int>, int> pieceOf;
+    for (Eigen::Index t = 0; t < m.F.rows(); ++t) {
+        const int piece = skinned.cut ? skinned.cut->piece(t) : -1;
+        for (int k = 0; k < 3; ++k) {
+            const int a = m.F(t, k), b = m.F(t, (k + 1) % 3);
+            pieceOf[{std::min(a, b), std::max(a, b)}] = piece;
+            m.piece(a) = piece;
+        }
+    }
+    m.outline = bench::boundaryEdges(m.F);
+    for (const auto &e : m.outline)
+        m.edgePiece.push_back(pieceOf[e]);
+    m.drawing = bench::drawingOutline(mesh.F, m.F);
+    return m;
+}
+
 // Vertices that belong to neither the limb nor the joint disk: their nearest bone is not one
-// of the limb's.
+// of the limb's (nor, cut, is their piece one of the limb's pieces).
 // onLimb gets, for every vertex, whether its nearest bone is one of the limb's.
-std::vector<int> bodyVertices(const geometry::ObjectMesh &mesh, const geometry::Skeleton &s,
-                              const Limb &limb, std::vector<char> &onLimb)
+std::vector<int> bodyVertices(const Moved &mesh, const geometry::Skeleton &s, const Limb &limb,
+                              const std::vector<int> &limbPieces, std::vector<char> &onLimb)
 {
     onLimb.assign(std::size_t(mesh.V.rows()), 0);
     std::vector<char> inLimb(std::size_t(s.jointCount()), 0);
@@ -183,7 +234,9 @@ std::vector<int> bodyVertices(const geometry::ObjectMesh &mesh, const geometry::
             }
         }
         onLimb[std::size_t(v)] = owner >= 0 && inLimb[std::size_t(owner)];
-        if (!onLimb[std::size_t(v)] && (p - pivot).norm() > disk)
+        const bool limbPiece =
+            std::find(limbPieces.begin(), limbPieces.end(), mesh.piece(v)) != limbPieces.end();
+        if (!onLimb[std::size_t(v)] && !limbPiece && (p - pivot).norm() > disk)
             body.push_back(int(v));
     }
     return body;
@@ -217,20 +270,28 @@ bool passesOver(const geometry::ObjectMesh &mesh, const std::vector<std::pair<in
     return false;
 }
 
-Sample measurePose(const geometry::ObjectMesh &mesh, const Eigen::MatrixX2d &U,
-                   const std::vector<std::pair<int, int>> &outline, const Eigen::Vector2d &pivot,
+Sample measurePose(const Moved &mesh, const Eigen::MatrixX2d &U, const Eigen::Vector2d &pivot,
                    double disk, const std::vector<int> &body, double diagonal)
 {
     Sample out;
     // A crossing of two outline edges that both start near the joint is a fold there; any
     // other is the limb passing over the body (or another limb), which a turn may well do.
+    // Edges of two pieces of a cut mesh cross where one piece is drawn over the other.
+    const auto &outline = mesh.outline;
     for (const auto &[e, f] : bench::outlineCrossings(U, outline)) {
         const auto near = [&](int edge) {
             return (mesh.V.row(outline[std::size_t(edge)].first).transpose() - pivot).norm() <=
                    kFoldDisk / kJointDisk * disk;
         };
-        ++(near(e) && near(f) ? out.folds : out.crossings);
+        if (mesh.edgePiece[std::size_t(e)] != mesh.edgePiece[std::size_t(f)])
+            ++out.layered;
+        else
+            ++(near(e) && near(f) ? out.folds : out.crossings);
     }
+    const double restCover = bench::coveredArea(mesh.V, mesh.drawing, pivot, disk);
+    out.jointCover = restCover > 0.0
+                         ? 100.0 * bench::coveredArea(U, mesh.drawing, pivot, disk) / restCover
+                         : 100.0;
     double rest = 0.0, posed = 0.0;
     for (Eigen::Index t = 0; t < mesh.F.rows(); ++t) {
         const double r = bench::signedTriangleArea(mesh.V, mesh.F, t);
@@ -253,12 +314,15 @@ Sample measurePose(const geometry::ObjectMesh &mesh, const Eigen::MatrixX2d &U,
 }
 
 struct Summary {
-    std::vector<double> folds, crossings, flips, jointArea, bodyMoved, ms;
+    std::vector<double> folds, crossings, flips, jointArea, jointCover, bodyMoved, ms;
+    int layered = 0;     // poses where one piece of a cut mesh crosses over another
     int clean = 0;       // poses with no fold and no flip
     int cleanOrOver = 0; // no flip, and no fold or the limb passes over the body (passesOver)
 };
 
-void drawPose(QPainter &painter, const geometry::ObjectMesh &mesh, const Eigen::MatrixX2d &U,
+// A cut mesh is drawn piece after piece (parents first), each opaque over the ones before
+// with its own outline, as the pieces of a cut-out puppet lie.
+void drawPose(QPainter &painter, const Moved &mesh, const Eigen::MatrixX2d &U,
               const Eigen::Vector2d &pivot, const QRectF &cell, const Eigen::RowVector2d &lo,
               double scale, const Eigen::VectorXi &pins)
 {
@@ -267,20 +331,30 @@ void drawPose(QPainter &painter, const geometry::ObjectMesh &mesh, const Eigen::
     painter.translate(cell.topLeft());
     painter.scale(scale, scale);
     painter.translate(-lo.x(), -lo.y());
-    for (Eigen::Index t = 0; t < mesh.F.rows(); ++t) {
-        const bool flipped = bench::signedTriangleArea(mesh.V, mesh.F, t) *
-                                 bench::signedTriangleArea(U, mesh.F, t) <=
-                             0.0;
-        QPolygonF tri;
-        for (int k = 0; k < 3; ++k)
-            tri << QPointF(U(mesh.F(t, k), 0), U(mesh.F(t, k), 1));
-        painter.setPen(Qt::NoPen);
-        painter.setBrush(flipped ? QColor(255, 40, 40) : QColor(150, 180, 230, 140));
-        painter.drawPolygon(tri);
+    const int last = mesh.piece.size() ? mesh.piece.maxCoeff() : -1;
+    for (int piece = -1; piece <= last; ++piece) {
+        for (Eigen::Index t = 0; t < mesh.F.rows(); ++t) {
+            if (mesh.piece(mesh.F(t, 0)) != piece)
+                continue;
+            const bool flipped = bench::signedTriangleArea(mesh.V, mesh.F, t) *
+                                     bench::signedTriangleArea(U, mesh.F, t) <=
+                                 0.0;
+            QPolygonF tri;
+            for (int k = 0; k < 3; ++k)
+                tri << QPointF(U(mesh.F(t, k), 0), U(mesh.F(t, k), 1));
+            painter.setPen(
+                QPen(flipped ? QColor(255, 40, 40) : QColor(190, 206, 235), 0.5 / scale));
+            painter.setBrush(flipped ? QColor(255, 40, 40) : QColor(190, 206, 235));
+            painter.drawPolygon(tri);
+        }
+        painter.setPen(QPen(Qt::black, 1.0 / scale));
+        for (std::size_t e = 0; e < mesh.outline.size(); ++e) {
+            if (mesh.edgePiece[e] != piece)
+                continue;
+            const auto &[a, b] = mesh.outline[e];
+            painter.drawLine(QPointF(U(a, 0), U(a, 1)), QPointF(U(b, 0), U(b, 1)));
+        }
     }
-    painter.setPen(QPen(Qt::black, 1.0 / scale));
-    for (const auto &[a, b] : bench::boundaryEdges(mesh.F))
-        painter.drawLine(QPointF(U(a, 0), U(a, 1)), QPointF(U(b, 0), U(b, 1)));
     painter.setPen(Qt::NoPen);
     painter.setBrush(QColor(0, 120, 0));
     for (const int v : pins)
@@ -387,17 +461,25 @@ int benchLimbs(const QStringList &arguments)
                 ++failures;
                 continue;
             }
+            const Moved moved = movedMesh(*mesh, *skinned);
+            const Eigen::VectorXi bonePiece =
+                skinned->cut ? deform::bonePieces(*skeleton, *skinned->cut)
+                             : Eigen::VectorXi::Constant(skeleton->jointCount(), -1);
             for (std::size_t l = 0; l < limbs.size(); ++l) {
                 const Limb &limb = limbs[l];
                 std::vector<char> onLimb;
-                const std::vector<int> body = bodyVertices(*mesh, *s, limb, onLimb);
+                std::vector<int> limbPieces;
+                for (const int j : limb.joints)
+                    if (bonePiece(j) >= 0 && bonePiece(j) != bonePiece(limb.base))
+                        limbPieces.push_back(bonePiece(j));
+                const std::vector<int> body = bodyVertices(moved, *s, limb, limbPieces, onLimb);
                 const Eigen::Vector2d pivot = s->joints.row(limb.base).transpose();
                 for (int a = 0; a < int(std::size(kDegrees)); ++a) {
                     deform::SkeletonPose pose = deform::restPose(*skeleton);
                     pose.angles(limb.first) = kDegrees[a] * M_PI / 180.0;
                     const auto start = Clock::now();
                     const auto posed = deform::forwardKinematics(*skeleton, pose);
-                    Eigen::MatrixX2d U = mesh->V;
+                    Eigen::MatrixX2d U = moved.V;
                     if (scheme.rigid && scheme.stage >= 0) {
                         Eigen::MatrixX2d targets;
                         deform::skin(skinned->rigid->pins, *posed, targets);
@@ -409,8 +491,8 @@ int benchLimbs(const QStringList &arguments)
                         deform::skin(skinned->vertices, *posed, U);
                     const double ms =
                         std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-                    Sample m = measurePose(*mesh, U, outline, pivot,
-                                           kJointDisk * s->radius(limb.base), body, diagonal);
+                    Sample m = measurePose(moved, U, pivot, kJointDisk * s->radius(limb.base), body,
+                                           diagonal);
                     m.ms = ms;
                     const bool over =
                         m.folds > 0 && passesOver(*mesh, outline, onLimb,
@@ -422,21 +504,25 @@ int benchLimbs(const QStringList &arguments)
                     sum.crossings.push_back(m.crossings);
                     sum.flips.push_back(m.flips);
                     sum.jointArea.push_back(m.jointArea);
+                    sum.jointCover.push_back(m.jointCover);
+                    sum.layered += m.layered > 0 ? 1 : 0;
                     sum.bodyMoved.push_back(m.bodyMoved);
                     sum.ms.push_back(ms);
                     sum.clean += m.folds == 0 && m.flips == 0 ? 1 : 0;
                     std::printf("{\"file\":\"%s\",\"limb\":%d,\"tip\":%d,\"base\":%d,"
                                 "\"scheme\":\"%s\",\"degrees\":%g,\"folds\":%d,\"overlaps\":%d,"
-                                "\"flips\":%d,\"passes_over\":%d,"
-                                "\"joint_area_pct\":%.1f,\"body_moved_pct\":%.2f,\"ms\":%.2f}\n",
+                                "\"flips\":%d,\"passes_over\":%d,\"layered\":%d,\"base_cut\":%d,"
+                                "\"joint_area_pct\":%.1f,\"joint_cover_pct\":%.1f,"
+                                "\"body_moved_pct\":%.2f,\"ms\":%.2f}\n",
                                 qPrintable(name), int(l), limb.tip, limb.base, scheme.name,
-                                kDegrees[a], m.folds, m.crossings, m.flips, int(over), m.jointArea,
-                                m.bodyMoved, ms);
+                                kDegrees[a], m.folds, m.crossings, m.flips, int(over), m.layered,
+                                int(bonePiece(limb.first) != bonePiece(limb.base)), m.jointArea,
+                                m.jointCover, m.bodyMoved, ms);
                     if (!pngDir.isEmpty() && k == pngScheme &&
                         std::abs(kDegrees[a]) == double(pngDegrees)) {
                         // --zoom: 16 joint radii around the pivot per cell, pins drawn.
                         const double r = kZoomRadii * s->radius(limb.base);
-                        drawPose(painter, *mesh, U, pivot,
+                        drawPose(painter, moved, U, pivot,
                                  QRectF(double(l) * kCell + 5, (a % 2) * kCell + 5, kCell - 10,
                                         kCell - 10),
                                  zoom ? Eigen::RowVector2d(pivot.transpose().array() - r)
@@ -465,7 +551,9 @@ int benchLimbs(const QStringList &arguments)
             "\"median_flips\":%g,"
             "\"median_folds\":%g,\"median_overlaps\":%g,"
             "\"joint_area_pct_p5\":%.1f,\"joint_area_pct_median\":%.1f,"
-            "\"joint_area_pct_p95\":%.1f,\"body_moved_pct_median\":%.2f,"
+            "\"joint_area_pct_p95\":%.1f,\"joint_cover_pct_p5\":%.1f,"
+            "\"joint_cover_pct_median\":%.1f,\"joint_cover_pct_p95\":%.1f,"
+            "\"joint_cover_90_110_pct\":%.1f,\"layered_pct\":%.1f,\"body_moved_pct_median\":%.2f,"
             "\"body_moved_pct_p95\":%.2f,\"body_moved_le1_pct\":%.1f,\"median_ms\":%.2f}\n",
             kSchemes[key.first].name, kDegrees[key.second], n, n ? 100.0 * sum.clean / n : 0.0,
             n ? 100.0 * sum.cleanOrOver / n : 0.0,
@@ -473,7 +561,15 @@ int benchLimbs(const QStringList &arguments)
               : 0.0,
             median(sum.flips), median(sum.folds), median(sum.crossings),
             percentile(sum.jointArea, 0.05), median(sum.jointArea), percentile(sum.jointArea, 0.95),
-            median(sum.bodyMoved), percentile(sum.bodyMoved, 0.95),
+            percentile(sum.jointCover, 0.05), median(sum.jointCover),
+            percentile(sum.jointCover, 0.95),
+            n ? 100.0 *
+                    double(std::count_if(sum.jointCover.begin(), sum.jointCover.end(),
+                                         [](double c) { return c >= 90.0 && c <= 110.0; })) /
+                    n
+              : 0.0,
+            n ? 100.0 * sum.layered / n : 0.0, median(sum.bodyMoved),
+            percentile(sum.bodyMoved, 0.95),
             n ? 100.0 *
                     double(std::count_if(sum.bodyMoved.begin(), sum.bodyMoved.end(),
                                          [](double d) { return d <= 1.0; })) /

@@ -143,4 +143,67 @@ inline std::vector<std::pair<int, int>> outlineCrossings(const Eigen::MatrixX2d 
     return found;
 }
 
+// The drawing's outline as oriented edges (a → b as its triangle runs): the boundary of the
+// mesh F, moved onto the vertices of `moved` (the same triangles, vertices copied along cuts,
+// deform::cutAtJoints; moved = F for an uncut mesh). Where the outline passes from one piece
+// to the next, a chord joins the two copies of its vertex, as the drawing's lines do.
+inline std::vector<std::pair<int, int>> drawingOutline(const Eigen::MatrixX3i &F,
+                                                       const Eigen::MatrixX3i &moved)
+{
+    std::map<std::pair<int, int>, int> count;
+    for (Eigen::Index t = 0; t < F.rows(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const int a = F(t, k), b = F(t, (k + 1) % 3);
+            ++count[{std::min(a, b), std::max(a, b)}];
+        }
+    std::vector<std::pair<int, int>> out;
+    std::map<int, int> into, from; // rest vertex → its copy at the end / start of an edge
+    for (Eigen::Index t = 0; t < F.rows(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const int a = F(t, k), b = F(t, (k + 1) % 3);
+            if (count[{std::min(a, b), std::max(a, b)}] != 1)
+                continue;
+            out.emplace_back(moved(t, k), moved(t, (k + 1) % 3));
+            into[b] = moved(t, (k + 1) % 3);
+            from[a] = moved(t, k);
+        }
+    for (const auto &[v, copy] : into) {
+        const auto next = from.find(v);
+        if (next != from.end() && next->second != copy)
+            out.emplace_back(copy, next->second);
+    }
+    return out;
+}
+
+// Area (px², sampled on a grid of `samples`² points) of the disk of `radius` around c that the
+// oriented outline E over P covers by the non-zero rule: what the drawing fills there.
+inline double coveredArea(const Eigen::MatrixX2d &P, const std::vector<std::pair<int, int>> &E,
+                          const Eigen::Vector2d &c, double radius, int samples = 48)
+{
+    const double step = 2.0 * radius / samples;
+    int covered = 0;
+    std::vector<std::pair<double, int>> hits;
+    for (int row = 0; row < samples; ++row) {
+        const double y = c.y() - radius + (row + 0.5) * step;
+        hits.clear();
+        for (const auto &[a, b] : E) {
+            const double ya = P(a, 1), yb = P(b, 1);
+            if ((ya <= y) == (yb <= y))
+                continue;
+            const double x = P(a, 0) + (y - ya) / (yb - ya) * (P(b, 0) - P(a, 0));
+            hits.emplace_back(x, ya <= y ? 1 : -1);
+        }
+        for (int col = 0; col < samples; ++col) {
+            const double x = c.x() - radius + (col + 0.5) * step;
+            if ((x - c.x()) * (x - c.x()) + (y - c.y()) * (y - c.y()) > radius * radius)
+                continue;
+            int winding = 0;
+            for (const auto &[hx, sign] : hits)
+                winding += hx > x ? sign : 0;
+            covered += winding != 0 ? 1 : 0;
+        }
+    }
+    return covered * step * step;
+}
+
 } // namespace finbook::bench

@@ -1,0 +1,74 @@
+// Cut-out joints (issue 21): the mesh cut apart at the joints where a limb bends, so each
+// piece turns rigidly over the one above it, as a cut-out puppet's paper limbs do, instead
+// of bending flesh that folds once the turn passes about 45°.
+//
+// A joint is cut from the outline point nearest it on one side of its child bone, through the
+// joint, to the nearest on the other side (where its inscribed circle touches the outline, so
+// the cut piece keeps a round end), when both lie within `reach` inscribed radii and on
+// opposite sides of the joint, and that cut separates the mesh: what lies past it (flooded
+// from the child bone's side without crossing it) does not reach back round to the parent's
+// side.
+// Junctions (two or more children), tips, roots and joints in the middle of a wide shape are
+// not cut; the skinning blends across them as before. Cut pieces nest: an elbow's piece lies
+// inside its shoulder's.
+//
+// The cut mesh keeps every triangle, in the same order (so a point embedded in the mesh keeps
+// its triangle and barycentric coordinates); a vertex whose triangles lie in different pieces
+// is copied once per piece. Skinned with cutOutWeights, every piece follows only its own bones:
+// a piece with one bone moves exactly with it, and the drawing's lines across a cut run
+// straight from one piece to the next (a chord of the joint's round end).
+#pragma once
+
+#include <finbook/deform/deform_error.h>
+#include <finbook/deform/skeleton/skeleton.h>
+#include <finbook/deform/skeleton/skinning_weights.h>
+#include <finbook/geometry/expected.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace finbook::deform {
+
+struct CutOutOptions {
+    // A cut's ends may lie at most this many inscribed radii from its joint.
+    double reach = 1.75;
+};
+
+struct JointCut {
+    int joint = -1;                              // the joint cut (its child bone's pivot)
+    Eigen::Vector2d a = Eigen::Vector2d::Zero(); // the cut runs from a through the joint to b
+    Eigen::Vector2d b = Eigen::Vector2d::Zero();
+};
+
+struct CutMesh {
+    Eigen::MatrixX2d V;     // rest vertices: the input's, then the copies along the cuts
+    Eigen::MatrixX3i F;     // the input's triangles, same order, copies where pieces differ
+    Eigen::VectorXi source; // V row → input vertex (the first n rows are the input's)
+    // Per triangle: the cut joint whose piece holds it (the deepest cut above it), −1 for the
+    // piece around the skeleton's roots.
+    Eigen::VectorXi piece;
+    std::vector<JointCut> cuts; // in the skeleton's topological order (parents first)
+    int pieceCount() const { return int(cuts.size()) + 1; }
+};
+
+// V n×2, F m×3 as for computeSkinningWeights; radius J inscribed radii (joints with radius ≤ 0
+// are not cut). Never fails on valid input: a skeleton with no cuttable joint gives the mesh
+// unchanged (no cuts, every triangle in piece −1). Errors: SizeMismatch (radius not J
+// entries), InvalidIndex (F out of range).
+Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                           const Skeleton &skeleton, const Eigen::VectorXd &radius,
+                                           const CutOutOptions &options = {});
+
+// The piece each joint's bone belongs to (−1 for the roots' piece): bone j lies below the
+// deepest cut joint among its ancestors (j's parent included). J entries.
+Eigen::VectorXi bonePieces(const Skeleton &skeleton, const CutMesh &cut);
+
+// Weights of the cut mesh: each vertex keeps only the handles of its piece, renormalised (a
+// vertex whose weight lay wholly on other pieces' bones takes its piece's first bone), and a
+// boundary condition (owner) on another piece's bone is dropped. `weights` are those of the
+// uncut mesh the cut was made from.
+SkinningWeights cutOutWeights(const SkinningWeights &weights, const Skeleton &skeleton,
+                              const CutMesh &cut);
+
+} // namespace finbook::deform

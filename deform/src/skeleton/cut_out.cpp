@@ -1,0 +1,380 @@
+// Cut-out joints: where to cut, which triangles lie past each cut, and the cut mesh with the
+// vertices along the cuts copied per piece (cut_out.h).
+#include "skeleton_internal.h"
+
+#include <finbook/deform/skeleton/cut_out.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+
+namespace finbook::deform {
+namespace {
+
+using Vec = Eigen::Vector2d;
+
+double cross(const Vec &a, const Vec &b)
+{
+    return a.x() * b.y() - a.y() * b.x();
+}
+
+// Whether segments p–q and a–b share a point (touching counts).
+bool segmentsMeet(const Vec &p, const Vec &q, const Vec &a, const Vec &b)
+{
+    const double d1 = cross(b - a, p - a), d2 = cross(b - a, q - a);
+    const double d3 = cross(q - p, a - p), d4 = cross(q - p, b - p);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+        return true;
+    const auto onSegment = [](const Vec &s, const Vec &e, const Vec &x) {
+        return x.x() >= std::min(s.x(), e.x()) && x.x() <= std::max(s.x(), e.x()) &&
+               x.y() >= std::min(s.y(), e.y()) && x.y() <= std::max(s.y(), e.y());
+    };
+    return (d1 == 0 && onSegment(a, b, p)) || (d2 == 0 && onSegment(a, b, q)) ||
+           (d3 == 0 && onSegment(p, q, a)) || (d4 == 0 && onSegment(p, q, b));
+}
+
+struct MeshGraph {
+    std::vector<std::pair<int, int>> boundary; // edges of one triangle
+    std::vector<std::vector<int>> neighbours;  // vertex adjacency
+};
+
+MeshGraph meshGraph(Eigen::Index n, const Eigen::MatrixX3i &F)
+{
+    std::unordered_map<long long, int> count;
+    count.reserve(std::size_t(F.rows()) * 3);
+    const auto key = [n](int a, int b) {
+        return (long long)std::min(a, b) * (long long)n + (long long)std::max(a, b);
+    };
+    MeshGraph g;
+    g.neighbours.resize(std::size_t(n));
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const int a = F(t, k), b = F(t, (k + 1) % 3);
+            if (count[key(a, b)]++ == 0) {
+                g.neighbours[std::size_t(a)].push_back(b);
+                g.neighbours[std::size_t(b)].push_back(a);
+            }
+        }
+    }
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const int a = F(t, k), b = F(t, (k + 1) % 3);
+            if (count[key(a, b)] == 1)
+                g.boundary.emplace_back(a, b);
+        }
+    }
+    return g;
+}
+
+// The outline point nearest p on each side of the line through p along d (left: positive
+// cross product), as distances and points; infinity where a side has none.
+struct Contacts {
+    double left = std::numeric_limits<double>::infinity(), right = left;
+    Vec leftPoint = Vec::Zero(), rightPoint = Vec::Zero();
+};
+
+Contacts nearestContacts(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &p, const Vec &d)
+{
+    Contacts out;
+    for (const auto &[a, b] : g.boundary) {
+        const Vec s = V.row(a).transpose(), e = V.row(b).transpose();
+        const Vec se = e - s;
+        const double length2 = se.squaredNorm();
+        const double t = length2 > 0.0 ? std::clamp((p - s).dot(se) / length2, 0.0, 1.0) : 0.0;
+        const Vec q = s + t * se;
+        const double distance = (q - p).norm();
+        const double side = cross(d, q - p);
+        if (side > 0.0 && distance < out.left) {
+            out.left = distance;
+            out.leftPoint = q;
+        } else if (side < 0.0 && distance < out.right) {
+            out.right = distance;
+            out.rightPoint = q;
+        }
+    }
+    return out;
+}
+
+// Whether x lies in the limb's sector of the cut a → pivot → b: the one of the two angular
+// sectors between the directions to a and to b that holds `outward`.
+bool pastCut(const Vec &x, const Vec &pivot, const Vec &a, const Vec &b, const Vec &outward)
+{
+    const auto angle = [&](const Vec &v) { return std::atan2(v.y(), v.x()); };
+    const auto ccw = [](double from, double to) { // angle from `from` to `to`, in [0, 2π)
+        double d = std::fmod(to - from, 2.0 * M_PI);
+        return d < 0.0 ? d + 2.0 * M_PI : d;
+    };
+    const double fromB = angle(b - pivot), span = ccw(fromB, angle(a - pivot));
+    const bool outwardInside = ccw(fromB, angle(outward)) < span;
+    return (ccw(fromB, angle(x - pivot)) < span) == outwardInside;
+}
+
+// The vertex of a triangle nearest `target` among those where `ok` holds, or −1.
+int nearestWhere(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &target,
+                 const std::function<bool(const Vec &)> &ok)
+{
+    int best = -1;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+        if (g.neighbours[std::size_t(v)].empty())
+            continue;
+        const Vec p = V.row(v).transpose();
+        const double d = (p - target).squaredNorm();
+        if (d < bestDistance && ok(p)) {
+            bestDistance = d;
+            best = int(v);
+        }
+    }
+    return best;
+}
+
+// The vertices past the cut a → pivot → b (flooded from `seed` along edges that do not meet
+// it), or empty when the flood reaches `stop` (the cut does not separate).
+std::vector<char> floodPast(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &a,
+                            const Vec &pivot, const Vec &b, int seed, int stop)
+{
+    std::vector<char> past(std::size_t(V.rows()), 0);
+    std::vector<int> stack{seed};
+    past[std::size_t(seed)] = 1;
+    while (!stack.empty()) {
+        const int v = stack.back();
+        stack.pop_back();
+        if (v == stop)
+            return {};
+        const Vec p = V.row(v).transpose();
+        for (const int u : g.neighbours[std::size_t(v)]) {
+            const Vec q = V.row(u).transpose();
+            if (past[std::size_t(u)] || segmentsMeet(p, q, a, pivot) ||
+                segmentsMeet(p, q, pivot, b))
+                continue;
+            past[std::size_t(u)] = 1;
+            stack.push_back(u);
+        }
+    }
+    return past;
+}
+
+// Union–find over triangle corners.
+int findRoot(std::vector<int> &up, int x)
+{
+    while (up[std::size_t(x)] != x) {
+        up[std::size_t(x)] = up[std::size_t(up[std::size_t(x)])];
+        x = up[std::size_t(x)];
+    }
+    return x;
+}
+
+} // namespace
+
+Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                           const Skeleton &skeleton, const Eigen::VectorXd &radius,
+                                           const CutOutOptions &options)
+{
+    if (radius.size() != skeleton.jointCount())
+        return unexpected(detail::makeError(DeformErrorCode::SizeMismatch,
+                                            "the joint radii do not match the skeleton"));
+    const Eigen::Index n = V.rows();
+    if (F.size() > 0 && (F.minCoeff() < 0 || F.maxCoeff() >= n))
+        return unexpected(detail::makeError(DeformErrorCode::InvalidIndex,
+                                            "a triangle refers to a vertex that does not exist"));
+    CutMesh out;
+    out.V = V;
+    out.F = F;
+    out.source = Eigen::VectorXi::LinSpaced(n, 0, int(n) - 1);
+    out.piece = Eigen::VectorXi::Constant(F.rows(), -1);
+    if (n == 0 || F.rows() == 0)
+        return out;
+    const MeshGraph graph = meshGraph(n, F);
+    const detail::ChildLists children = detail::childLists(skeleton.parent);
+    for (Eigen::Index k = 0; k < skeleton.jointCount(); ++k) {
+        const int j = skeleton.order(k);
+        const int parent = skeleton.parent(j);
+        const auto js = std::size_t(j);
+        if (parent < 0 || children.start[js + 1] - children.start[js] != 1)
+            continue;
+        const double r = radius(j);
+        if (!(std::isfinite(r) && r > 0.0))
+            continue;
+        const int child = children.child[std::size_t(children.start[js])];
+        const Vec pivot = skeleton.joints.row(j).transpose();
+        const Vec in = pivot - skeleton.joints.row(parent).transpose();
+        const Vec outward = skeleton.joints.row(child).transpose() - pivot;
+        if (in.norm() == 0.0 || outward.norm() == 0.0)
+            continue;
+        // The cut runs from the outline nearest the joint on one side of the child bone,
+        // through the joint, to the nearest on the other: where the joint's inscribed circle
+        // touches the outline, so the limb keeps a round end.
+        const Contacts contacts = nearestContacts(V, graph, pivot, outward);
+        const double reach = options.reach * r;
+        if (!(contacts.left <= reach && contacts.right <= reach))
+            continue;
+        const Vec toLeft = contacts.leftPoint - pivot, toRight = contacts.rightPoint - pivot;
+        // A hair past the outline, so the outline edges it ends on count as crossed.
+        const double margin = 1e-6 * r;
+        const Vec a = contacts.leftPoint + margin * toLeft.normalized();
+        const Vec b = contacts.rightPoint + margin * toRight.normalized();
+        const auto past = [&](const Vec &x) { return pastCut(x, pivot, a, b, outward); };
+        const int seed = nearestWhere(V, graph, pivot + 0.5 * r * outward.normalized(), past);
+        const int stop = nearestWhere(V, graph, pivot - 0.5 * r * in.normalized(),
+                                      [&](const Vec &x) { return !past(x); });
+        if (seed < 0 || stop < 0)
+            continue;
+        const std::vector<char> flooded = floodPast(V, graph, a, pivot, b, seed, stop);
+        if (flooded.empty())
+            continue;
+        const int index = int(out.cuts.size());
+        bool any = false;
+        for (Eigen::Index t = 0; t < F.rows(); ++t) {
+            const int inside = flooded[std::size_t(F(t, 0))] + flooded[std::size_t(F(t, 1))] +
+                               flooded[std::size_t(F(t, 2))];
+            bool mine = inside == 3;
+            if (inside == 1 || inside == 2) {
+                const Vec c = (V.row(F(t, 0)) + V.row(F(t, 1)) + V.row(F(t, 2))).transpose() / 3.0;
+                mine = past(c);
+            }
+            if (mine) {
+                out.piece(t) = index;
+                any = true;
+            }
+        }
+        if (any)
+            out.cuts.push_back({j, a, b});
+    }
+    if (out.cuts.empty())
+        return out;
+    // Copies: corners of triangles of one piece that share an edge at a vertex stay one vertex.
+    const Eigen::Index m = F.rows();
+    std::vector<int> up(std::size_t(3 * m));
+    std::iota(up.begin(), up.end(), 0);
+    std::unordered_map<long long, std::pair<int, int>> firstCorner; // edge → (triangle, slot)
+    firstCorner.reserve(std::size_t(3 * m));
+    for (Eigen::Index t = 0; t < m; ++t) {
+        for (int c = 0; c < 3; ++c) {
+            const int a = F(t, c), b = F(t, (c + 1) % 3);
+            const long long key = (long long)std::min(a, b) * (long long)n + std::max(a, b);
+            const auto [it, fresh] = firstCorner.emplace(key, std::make_pair(int(t), c));
+            if (fresh)
+                continue;
+            const auto [s, sc] = it->second;
+            if (out.piece(s) != out.piece(t))
+                continue;
+            // Corner of a in s, corner of b in s.
+            const int sa = F(s, sc) == a ? sc : (sc + 1) % 3;
+            const int sb = F(s, sc) == b ? sc : (sc + 1) % 3;
+            up[std::size_t(findRoot(up, int(3 * t + c)))] = findRoot(up, 3 * s + sa);
+            up[std::size_t(findRoot(up, int(3 * t + (c + 1) % 3)))] = findRoot(up, 3 * s + sb);
+        }
+    }
+    std::vector<int> classVertex(up.size(), -1);
+    std::vector<char> used(std::size_t(n), 0);
+    std::vector<int> extra;
+    for (Eigen::Index t = 0; t < m; ++t) {
+        for (int c = 0; c < 3; ++c) {
+            const int root = findRoot(up, int(3 * t + c));
+            int &vertex = classVertex[std::size_t(root)];
+            if (vertex < 0) {
+                const int original = F(t, c);
+                if (!used[std::size_t(original)]) {
+                    used[std::size_t(original)] = 1;
+                    vertex = original;
+                } else {
+                    vertex = int(n + Eigen::Index(extra.size()));
+                    extra.push_back(original);
+                }
+            }
+            out.F(t, c) = vertex;
+        }
+    }
+    out.V.conservativeResize(n + Eigen::Index(extra.size()), 2);
+    out.source.conservativeResize(n + Eigen::Index(extra.size()));
+    for (std::size_t e = 0; e < extra.size(); ++e) {
+        out.V.row(n + Eigen::Index(e)) = V.row(extra[e]);
+        out.source(n + Eigen::Index(e)) = extra[e];
+    }
+    return out;
+}
+
+Eigen::VectorXi bonePieces(const Skeleton &skeleton, const CutMesh &cut)
+{
+    std::vector<int> cutIndex(std::size_t(skeleton.jointCount()), -1);
+    for (std::size_t c = 0; c < cut.cuts.size(); ++c) {
+        const int j = cut.cuts[c].joint;
+        if (j >= 0 && j < skeleton.jointCount())
+            cutIndex[std::size_t(j)] = int(c);
+    }
+    Eigen::VectorXi piece = Eigen::VectorXi::Constant(skeleton.jointCount(), -1);
+    for (Eigen::Index k = 0; k < skeleton.jointCount(); ++k) {
+        const int j = skeleton.order(k);
+        const int p = skeleton.parent(j);
+        if (p >= 0)
+            piece(j) = cutIndex[std::size_t(p)] >= 0 ? cutIndex[std::size_t(p)] : piece(p);
+    }
+    return piece;
+}
+
+SkinningWeights cutOutWeights(const SkinningWeights &weights, const Skeleton &skeleton,
+                              const CutMesh &cut)
+{
+    SkinningWeights out = weights;
+    const Eigen::Index n = cut.V.rows();
+    out.W.setZero(n, weights.W.cols());
+    out.owner = Eigen::VectorXi::Constant(n, -1);
+    const Eigen::VectorXi bones = bonePieces(skeleton, cut);
+    // Each vertex's piece, from its triangles (all of one piece by construction).
+    Eigen::VectorXi vertexPiece = Eigen::VectorXi::Constant(n, -1);
+    for (Eigen::Index t = 0; t < cut.F.rows(); ++t)
+        for (int c = 0; c < 3; ++c)
+            vertexPiece(cut.F(t, c)) = cut.piece(t);
+    // The first bone of each cut's piece (the bone leaving the cut joint).
+    std::vector<int> firstBone(cut.cuts.size(), -1);
+    for (Eigen::Index j = 0; j < skeleton.jointCount(); ++j) {
+        const int p = skeleton.parent(j);
+        for (std::size_t c = 0; c < cut.cuts.size(); ++c)
+            if (p == cut.cuts[c].joint)
+                firstBone[c] = int(j);
+    }
+    for (Eigen::Index v = 0; v < n; ++v) {
+        const int source = cut.source(v);
+        const int piece = vertexPiece(v);
+        double sum = 0.0;
+        for (Eigen::Index h = 0; h < weights.W.cols(); ++h) {
+            if (h < bones.size() && bones(h) == piece) {
+                out.W(v, h) = weights.W(source, h);
+                sum += out.W(v, h);
+            }
+        }
+        if (sum > 1e-12) {
+            out.W.row(v) /= sum;
+        } else {
+            // All its weight lay on other pieces' bones: the nearest-by-weight bone of its own.
+            int fallback = piece >= 0 ? firstBone[std::size_t(piece)] : -1;
+            if (fallback < 0) {
+                double best = -1.0;
+                for (Eigen::Index h = 0; h < weights.W.cols(); ++h) {
+                    if (h < bones.size() && bones(h) == piece && !skeleton.isRoot(h) &&
+                        weights.W(source, h) > best) {
+                        best = weights.W(source, h);
+                        fallback = int(h);
+                    }
+                }
+            }
+            if (fallback >= 0)
+                out.W(v, fallback) = 1.0;
+            else
+                out.W.row(v) = weights.W.row(source);
+        }
+        const int owner = weights.owner(source);
+        out.owner(v) = owner >= 0 && owner < bones.size() && bones(owner) == piece ? owner : -1;
+    }
+    std::vector<int> active;
+    for (const int h : weights.handles)
+        if (out.W.col(h).cwiseAbs().maxCoeff() > 0.0)
+            active.push_back(h);
+    out.active = Eigen::Map<const Eigen::VectorXi>(active.data(), Eigen::Index(active.size()));
+    return out;
+}
+
+} // namespace finbook::deform

@@ -1,0 +1,201 @@
+// Cut-out joints (issue 21): where the mesh is cut, the pieces it makes, and that a piece
+// cut off at its joint turns rigidly with its bone while the rest stays put.
+#include "grid_mesh.h"
+
+#include <finbook/deform/skeleton/cut_out.h>
+#include <finbook/deform/skeleton/rigid_skinning.h>
+#include <finbook/deform/skeleton/skeleton.h>
+#include <finbook/deform/skeleton/skinning_weights.h>
+
+#include <QTest>
+
+#include <cmath>
+#include <map>
+
+using namespace finbook::deform;
+using finbook::test::gridMesh;
+
+namespace {
+
+// Keeps the triangles `keep` accepts (by centroid) and drops the vertices left unused.
+void keepTriangles(Eigen::MatrixX2d &V, Eigen::MatrixX3i &F,
+                   const std::function<bool(const Eigen::Vector2d &)> &keep)
+{
+    std::vector<int> index(std::size_t(V.rows()), -1);
+    std::vector<Eigen::RowVector3i> kept;
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        const Eigen::Vector2d c =
+            (V.row(F(t, 0)) + V.row(F(t, 1)) + V.row(F(t, 2))).transpose() / 3;
+        if (keep(c))
+            kept.push_back(F.row(t));
+    }
+    Eigen::MatrixX2d newV(V.rows(), 2);
+    int n = 0;
+    Eigen::MatrixX3i newF(Eigen::Index(kept.size()), 3);
+    for (std::size_t t = 0; t < kept.size(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            int &i = index[std::size_t(kept[t](k))];
+            if (i < 0) {
+                i = n++;
+                newV.row(i) = V.row(kept[t](k));
+            }
+            newF(Eigen::Index(t), k) = i;
+        }
+    }
+    V = newV.topRows(n);
+    F = newF;
+}
+
+// A 300 × 40 bar along x with an elbow at x = 150: bones 0→1 and 1→2, radius 20.
+struct Arm {
+    finbook::test::GridMesh mesh = gridMesh(60, 8, 300.0, 40.0, 0.1);
+    Skeleton skeleton;
+    Eigen::VectorXd radius = Eigen::Vector3d(20.0, 20.0, 20.0);
+    Arm()
+    {
+        Eigen::MatrixX2d joints(3, 2);
+        joints << 0.0, 20.0, 150.0, 20.0, 300.0, 20.0;
+        skeleton = *makeSkeleton(joints, Eigen::Vector3i(-1, 0, 1));
+    }
+};
+
+Eigen::Vector2d centroid(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, Eigen::Index t)
+{
+    return (V.row(F(t, 0)) + V.row(F(t, 1)) + V.row(F(t, 2))).transpose() / 3.0;
+}
+
+double signedArea(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, Eigen::Index t)
+{
+    const Eigen::RowVector2d a = V.row(F(t, 1)) - V.row(F(t, 0)),
+                             b = V.row(F(t, 2)) - V.row(F(t, 0));
+    return 0.5 * (a.x() * b.y() - a.y() * b.x());
+}
+
+} // namespace
+
+class TestCutOut : public QObject {
+    Q_OBJECT
+private slots:
+    void anArmIsCutAtItsElbow()
+    {
+        const Arm arm;
+        const auto cut = cutAtJoints(arm.mesh.V, arm.mesh.F, arm.skeleton, arm.radius);
+        QVERIFY(cut.hasValue());
+        QCOMPARE(int(cut->cuts.size()), 1);
+        QCOMPARE(cut->cuts[0].joint, 1);
+        // The cut crosses the bar at the elbow, from one side to the other.
+        QVERIFY(std::abs(cut->cuts[0].a.x() - 150.0) < 8.0);
+        QVERIFY(std::abs(cut->cuts[0].b.x() - 150.0) < 8.0);
+        QVERIFY(std::abs(cut->cuts[0].a.y() - cut->cuts[0].b.y()) > 39.0);
+        // Same triangles in the same order, on the same points.
+        QCOMPARE(cut->F.rows(), arm.mesh.F.rows());
+        QVERIFY(cut->V.rows() > arm.mesh.V.rows());
+        QVERIFY(cut->V.topRows(arm.mesh.V.rows()) == arm.mesh.V);
+        for (Eigen::Index v = 0; v < cut->V.rows(); ++v)
+            QVERIFY(cut->V.row(v) == arm.mesh.V.row(cut->source(v)));
+        for (Eigen::Index t = 0; t < cut->F.rows(); ++t) {
+            for (int k = 0; k < 3; ++k)
+                QCOMPARE(cut->source(cut->F(t, k)), arm.mesh.F(t, k));
+            // The forearm is the cut's piece; the upper arm the roots'.
+            const double x = centroid(arm.mesh.V, arm.mesh.F, t).x();
+            if (x > 156.0)
+                QCOMPARE(cut->piece(t), 0);
+            if (x < 144.0)
+                QCOMPARE(cut->piece(t), -1);
+        }
+        // No vertex is shared by two pieces: each copy belongs to one.
+        std::map<int, int> pieceOf;
+        for (Eigen::Index t = 0; t < cut->F.rows(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const auto [it, fresh] = pieceOf.emplace(cut->F(t, k), cut->piece(t));
+                QVERIFY(fresh || it->second == cut->piece(t));
+            }
+        const Eigen::VectorXi bones = bonePieces(arm.skeleton, *cut);
+        QCOMPARE(bones(1), -1);
+        QCOMPARE(bones(2), 0);
+    }
+
+    void aJointInTheMiddleOfAWideShapeIsNotCut()
+    {
+        // The same bones in a 300 × 200 slab: the outline lies five radii from the elbow.
+        Arm arm;
+        arm.mesh = gridMesh(30, 20, 300.0, 200.0, 0.1, Eigen::Vector2d(0.0, -80.0));
+        const auto cut = cutAtJoints(arm.mesh.V, arm.mesh.F, arm.skeleton, arm.radius);
+        QVERIFY(cut.hasValue());
+        QVERIFY(cut->cuts.empty());
+        QVERIFY(cut->V == arm.mesh.V);
+        QVERIFY(cut->F == arm.mesh.F);
+        QVERIFY((cut->piece.array() == -1).all());
+    }
+
+    void aCutThatDoesNotSeparateIsNotMade()
+    {
+        // A square ring 40 wide: a cut across its left side leaves the piece below joined to
+        // the one above round the other three sides.
+        finbook::test::GridMesh ring = gridMesh(60, 60, 300.0, 300.0, 0.0);
+        keepTriangles(ring.V, ring.F, [](const Eigen::Vector2d &c) {
+            return !(c.x() > 40 && c.x() < 260 && c.y() > 40 && c.y() < 260);
+        });
+        Eigen::MatrixX2d joints(3, 2);
+        joints << 20.0, 280.0, 20.0, 150.0, 20.0, 20.0;
+        const Skeleton skeleton = *makeSkeleton(joints, Eigen::Vector3i(-1, 0, 1));
+        const auto cut = cutAtJoints(ring.V, ring.F, skeleton, Eigen::Vector3d(20, 20, 20));
+        QVERIFY(cut.hasValue());
+        QVERIFY(cut->cuts.empty());
+    }
+
+    void aCutPieceTurnsRigidlyAndTheRestStays()
+    {
+        const Arm arm;
+        const auto cut = cutAtJoints(arm.mesh.V, arm.mesh.F, arm.skeleton, arm.radius);
+        QVERIFY(cut.hasValue());
+        const auto weights = computeSkinningWeights(arm.mesh.V, arm.mesh.F, arm.skeleton);
+        QVERIFY(weights.hasValue());
+        const SkinningWeights pieces = cutOutWeights(**weights, arm.skeleton, *cut);
+        QCOMPARE(pieces.W.rows(), cut->V.rows());
+        for (Eigen::Index v = 0; v < pieces.W.rows(); ++v)
+            QVERIFY(std::abs(pieces.W.row(v).sum() - 1.0) < 1e-9);
+        const auto rigid = rigidSkinPrecompute(
+            cut->V, cut->F, withJointZones(pieces, cut->V, arm.skeleton, arm.radius));
+        QVERIFY(rigid.hasValue());
+        for (const double degrees : {60.0, -100.0}) {
+            SkeletonPose pose = restPose(arm.skeleton);
+            pose.angles(2) = degrees * M_PI / 180.0;
+            const auto posed = forwardKinematics(arm.skeleton, pose);
+            QVERIFY(posed.hasValue());
+            Eigen::MatrixX2d U = cut->V;
+            QVERIFY(rigidSkinSolve(**rigid, *posed, U).hasValue());
+            // Vertex pieces from their triangles.
+            Eigen::VectorXi piece = Eigen::VectorXi::Constant(U.rows(), -1);
+            for (Eigen::Index t = 0; t < cut->F.rows(); ++t)
+                for (int k = 0; k < 3; ++k)
+                    piece(cut->F(t, k)) = cut->piece(t);
+            double worst = 0.0;
+            for (Eigen::Index v = 0; v < U.rows(); ++v) {
+                const Eigen::Vector2d rest = cut->V.row(v).transpose();
+                const Eigen::Vector2d expected =
+                    piece(v) == 0 ? transformPoint(posed->transforms[2], rest) : rest;
+                worst = std::max(worst, (U.row(v).transpose() - expected).norm());
+            }
+            QVERIFY2(worst < 1e-6, qPrintable(QString::number(worst)));
+            for (Eigen::Index t = 0; t < cut->F.rows(); ++t)
+                QVERIFY(signedArea(U, cut->F, t) * signedArea(cut->V, cut->F, t) > 0.0);
+        }
+    }
+
+    void badRadiiAreRefused()
+    {
+        const Arm arm;
+        const auto cut = cutAtJoints(arm.mesh.V, arm.mesh.F, arm.skeleton, Eigen::Vector2d(1, 1));
+        QVERIFY(!cut.hasValue());
+        QCOMPARE(cut.error().code, DeformErrorCode::SizeMismatch);
+        // A zero radius (unknown) leaves that joint uncut.
+        const auto uncut =
+            cutAtJoints(arm.mesh.V, arm.mesh.F, arm.skeleton, Eigen::Vector3d(20.0, 0.0, 20.0));
+        QVERIFY(uncut.hasValue());
+        QVERIFY(uncut->cuts.empty());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestCutOut)
+#include "tst_cut_out.moc"
