@@ -521,27 +521,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="71"/>
+        <location filename="../model/src/deform_setup.cpp" line="76"/>
         <source>The object has no strokes to deform.</source>
         <translation>Das Objekt hat keine Striche, die sich verformen ließen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="76"/>
+        <location filename="../model/src/deform_setup.cpp" line="82"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Für diese Zeichnung lässt sich kein Verformungsnetz erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="108"/>
+        <location filename="../model/src/deform_setup.cpp" line="114"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="153"/>
+        <location filename="../model/src/deform_setup.cpp" line="159"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>Der Käfig wurde geändert, während er vorbereitet wurde.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="161"/>
+        <location filename="../model/src/deform_setup.cpp" line="167"/>
         <source>The object has no mesh to deform.</source>
         <translation>Das Objekt hat kein Netz, das sich verformen ließe.</translation>
     </message>
@@ -556,7 +556,7 @@
         <translation>Die Pins konnten nicht berechnet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="182"/>
+        <location filename="../model/src/deform_setup.cpp" line="190"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>Die Verformung hat ungültige Punkte ergeben; sie wurde nicht angewendet.</translation>
     </message>
@@ -590,12 +590,12 @@
         <translation>Dieser Käfig kann nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="74"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="75"/>
         <source>The cage must enclose the whole object: %1</source>
         <translation>Der Käfig muss das ganze Objekt umschließen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="91"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="95"/>
         <source>No cage fits this drawing: %1</source>
         <translation>Kein Käfig passt zu dieser Zeichnung: %1</translation>
     </message>
@@ -605,13 +605,13 @@
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="53"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="54"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>Das Objekt hat keine Striche, in denen sich ein Skelett erstellen ließe.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="76"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="68"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="77"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen.</translation>
     </message>
@@ -665,14 +665,17 @@
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="122"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="135"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="137"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="145"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="155"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>Das Skelett kann nicht an diese Zeichnung gebunden werden: %1</translation>
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="72"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="151"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="157"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="173"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="177"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="183"/>
         <source>The bones could not be posed: %1</source>
         <translation>Die Knochen konnten nicht posiert werden: %1</translation>
     </message>
@@ -2369,7 +2372,7 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="165"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="168"/>
         <source>Build Skeleton</source>
         <translation>Skelett erstellen</translation>
     </message>
@@ -2379,32 +2382,32 @@
         <translation>Das Objekt ist mit einem anderen Verformer posiert. Beim Erstellen eines Skeletts wird diese Pose verworfen. Trotzdem erstellen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="183"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="186"/>
         <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
         <translation>Mit %1 verbunden. Ziehen Sie die Wurzel mit Umschalt an eine andere Stelle, um es dort zu verbinden; Rechtsklick darauf löst es.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="258"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="261"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Klicken Sie auf eine sichtbare, nicht gesperrte Zeichnung, um ihr ein Skelett zu geben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="265"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>Ziehen Sie ein Gelenk, um es zu verschieben, klicken Sie auf einen Knochen, um ein Gelenk einzufügen; Rechtsklick auf ein Gelenk löscht es.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="271"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
         <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um es zu ziehen, die Wurzel, um das Objekt zu verschieben; L über einem Gelenk sperrt es; die Wurzel mit Umschalt auf ein anderes Teil ziehen verbindet beide.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="361"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="364"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>Legen Sie die Wurzel auf einem Knochen eines anderen Teils ab, um beide zu verbinden.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="369"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="372"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 hängt bereits an diesem Teil und kann daher nicht umgekehrt daran hängen.</translation>
     </message>
@@ -3159,112 +3162,112 @@
         <translation>Objekte:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="81"/>
         <source>&amp;Frames between the keys:</source>
         <translation>&amp;Einzelbilder zwischen den Schlüsselbildern:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="84"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="84"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="85"/>
         <source>Ease in (slow from the first key)</source>
         <translation>Ease-in (langsam vom ersten Schlüsselbild weg)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="85"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="86"/>
         <source>Ease out (slow into the second key)</source>
         <translation>Ease-out (langsam ins zweite Schlüsselbild hinein)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="86"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="87"/>
         <source>Ease in and out</source>
         <translation>Ease-in und Ease-out</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="87"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="88"/>
         <source>Favour…</source>
         <translation>Gewichtet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="88"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="89"/>
         <source>&amp;Spacing:</source>
         <translation>&amp;Verteilung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="92"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
         <source>Left favours the first key, right the second.</source>
         <translation>Links wird das erste Schlüsselbild bevorzugt, rechts das zweite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
         <source>F&amp;avour:</source>
         <translation>&amp;Gewichtung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="96"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="97"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Pins und Käfigecken auf &amp;Bögen bewegen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="99"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="100"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Ein zwischen den Schlüsselbildern geschwungenes Glied behält seine Länge. Ohne diese Option bewegt sich jeder Zielpunkt geradlinig.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="128"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="129"/>
         <source>(unnamed)</source>
         <translation>(unbenannt)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
         <source>%1: interpolated</source>
         <translation>%1: interpoliert</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="133"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (keine Pins, kein Käfig und kein Skelett)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="136"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (Pins, Käfig oder Skelett unterscheiden sich zwischen den Schlüsselbildern)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="139"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: nur im ersten Schlüsselbild, in der ersten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="142"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: nur im zweiten Schlüsselbild, in der zweiten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="152"/>
         <source>Select two different frames as keys.</source>
         <translation>Wählen Sie zwei verschiedene Einzelbilder als Schlüsselbilder aus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="161"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="162"/>
         <source>Posing the preview…</source>
         <translation>Die Vorschau wird berechnet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="193"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
         <source>The preview could not be posed: %1</source>
         <translation>Die Vorschau konnte nicht posiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="201"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Kein Objekt hat in beiden Schlüsselbildern passende Pins oder einen passenden Käfig: Die Zwischenbilder halten nur die Zeichnungen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="200"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="203"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Die Leinwand zeigt das mittlere Zwischenbild.</translation>
     </message>
@@ -3733,6 +3736,11 @@
         <translation>&amp;Lineare Überblendung</translation>
     </message>
     <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="81"/>
+        <source>&amp;Cut-out (Limbs Turn over the Body)</source>
+        <translation>&amp;Ausschneidefigur (Glieder drehen sich über dem Körper)</translation>
+    </message>
+    <message>
         <location filename="../ui/src/recovery/main_window_recovery.cpp" line="63"/>
         <source>Cannot Recover</source>
         <translation>Wiederherstellung nicht möglich</translation>
@@ -3754,42 +3762,42 @@
         <translation>Lücken schließen: automatisch (%1 px)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="38"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
         <source>Close gaps up to </source>
         <translation>Lücken schließen bis </translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="41"/>
         <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
         <translation>Öffnungen im Umriss bis zu dieser Breite ergeben noch einen Bereich, den das Füllwerkzeug füllen kann (0 = nur geschlossene Umrisse)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
         <source>Fill All Enclosed Re&amp;gions</source>
         <translation>Alle geschlossenen Bereiche &amp;füllen</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="79"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="88"/>
         <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
         <translation>Jeden geschlossenen Bereich des aktuellen Objekts ohne Füllung in der Stiftfarbe füllen</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
         <source>The current object has no unfilled closed region</source>
         <translation>Das aktuelle Objekt hat keinen ungefüllten geschlossenen Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="104"/>
         <source>Fill</source>
         <translation>Füllen</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/main_window_shade.cpp" line="32"/>
+        <location filename="../ui/src/shade/main_window_shade.cpp" line="33"/>
         <source>Shading</source>
         <translation>Schattierung</translation>
     </message>

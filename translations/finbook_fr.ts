@@ -521,27 +521,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="71"/>
+        <location filename="../model/src/deform_setup.cpp" line="76"/>
         <source>The object has no strokes to deform.</source>
         <translation>L&apos;objet n&apos;a aucun trait à déformer.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="76"/>
+        <location filename="../model/src/deform_setup.cpp" line="82"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>Impossible de mailler ce dessin pour le déformer&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="108"/>
+        <location filename="../model/src/deform_setup.cpp" line="114"/>
         <source>Cancelled.</source>
         <translation>Annulé.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="153"/>
+        <location filename="../model/src/deform_setup.cpp" line="159"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>La cage a changé pendant sa préparation.</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="161"/>
+        <location filename="../model/src/deform_setup.cpp" line="167"/>
         <source>The object has no mesh to deform.</source>
         <translation>L&apos;objet n&apos;a pas de maillage à déformer.</translation>
     </message>
@@ -556,7 +556,7 @@
         <translation>Le calcul de la déformation par les épingles a échoué&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="182"/>
+        <location filename="../model/src/deform_setup.cpp" line="190"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>La déformation a produit des points invalides&#xa0;; elle n&apos;a pas été appliquée.</translation>
     </message>
@@ -590,12 +590,12 @@
         <translation>Cette cage est inutilisable&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="74"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="75"/>
         <source>The cage must enclose the whole object: %1</source>
         <translation>La cage doit entourer tout l&apos;objet&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="91"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="95"/>
         <source>No cage fits this drawing: %1</source>
         <translation>Aucune cage ne convient à ce dessin&#xa0;: %1</translation>
     </message>
@@ -605,13 +605,13 @@
         <translation>Impossible de construire un squelette pour ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="53"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="54"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>L&apos;objet n&apos;a aucun trait dans lequel construire un squelette.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="76"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="68"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="77"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Impossible de construire un squelette pour ce dessin.</translation>
     </message>
@@ -665,14 +665,17 @@
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="122"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="135"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="137"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="145"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="155"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>Le squelette ne peut pas habiller ce dessin&#xa0;: %1</translation>
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="72"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="151"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="157"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="173"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="177"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="183"/>
         <source>The bones could not be posed: %1</source>
         <translation>Impossible de poser les os&#xa0;: %1</translation>
     </message>
@@ -2369,7 +2372,7 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="165"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="168"/>
         <source>Build Skeleton</source>
         <translation>Construire le squelette</translation>
     </message>
@@ -2379,32 +2382,32 @@
         <translation>L&apos;objet est posé avec un autre déformateur. Construire un squelette abandonne cette pose. Le construire quand même&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="183"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="186"/>
         <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
         <translation>Joint à %1. Faites glisser sa racine avec Maj pour le joindre ailleurs ; clic droit dessus pour le détacher.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="258"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="261"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>Cliquez sur un dessin visible et déverrouillé pour lui donner un squelette.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="265"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>Faites glisser une articulation pour la déplacer, cliquez sur un os pour insérer une articulation ; clic droit sur une articulation pour la supprimer.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="271"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
         <translation>Faites glisser un os pour le tourner, une articulation pour la tirer, la racine pour déplacer l’objet ; L sur une articulation la verrouille ; faites glisser la racine avec Maj sur une autre partie pour les joindre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="361"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="364"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>Déposez la racine sur un os d’une autre partie pour les joindre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="369"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="372"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 est déjà suspendu à cette partie ; elle ne peut donc pas être suspendue à lui en retour.</translation>
     </message>
@@ -3159,112 +3162,112 @@
         <translation>Objets&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="81"/>
         <source>&amp;Frames between the keys:</source>
         <translation>&amp;Images entre les clés&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="84"/>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="84"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="85"/>
         <source>Ease in (slow from the first key)</source>
         <translation>Démarrage progressif (lent depuis la première clé)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="85"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="86"/>
         <source>Ease out (slow into the second key)</source>
         <translation>Arrêt progressif (lent en arrivant à la seconde clé)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="86"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="87"/>
         <source>Ease in and out</source>
         <translation>Démarrage et arrêt progressifs</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="87"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="88"/>
         <source>Favour…</source>
         <translation>Favoriser…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="88"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="89"/>
         <source>&amp;Spacing:</source>
         <translation>&amp;Espacement&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="92"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
         <source>Left favours the first key, right the second.</source>
         <translation>À gauche, la première clé est favorisée&#xa0;; à droite, la seconde.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
         <source>F&amp;avour:</source>
         <translation>Fa&amp;voriser&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="96"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="97"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Déplacer les épingles et les coins de cage en &amp;arcs</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="99"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="100"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Un membre qui pivote entre les clés garde sa longueur. Si la case est décochée, chaque cible se déplace en ligne droite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="128"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="129"/>
         <source>(unnamed)</source>
         <translation>(sans nom)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
         <source>%1: interpolated</source>
         <translation>%1&#xa0;: interpolé</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="133"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ni épingles, ni cage, ni squelette)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="136"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ses épingles, sa cage ou son squelette diffèrent entre les clés)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="139"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1&#xa0;: seulement dans la première clé, maintenu pendant la première moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="142"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1&#xa0;: seulement dans la seconde clé, maintenu pendant la seconde moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="152"/>
         <source>Select two different frames as keys.</source>
         <translation>Sélectionnez deux images différentes comme clés.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="161"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="162"/>
         <source>Posing the preview…</source>
         <translation>Calcul de l’aperçu…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="193"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
         <source>The preview could not be posed: %1</source>
         <translation>Impossible de poser l&apos;aperçu&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="201"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Aucun objet n&apos;a d&apos;épingles ou de cage correspondantes dans les deux clés&#xa0;: les intervalles ne feront que maintenir les dessins.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="200"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="203"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Le canevas montre l&apos;intervalle du milieu.</translation>
     </message>
@@ -3733,6 +3736,11 @@
         <translation>Mélange &amp;linéaire</translation>
     </message>
     <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="81"/>
+        <source>&amp;Cut-out (Limbs Turn over the Body)</source>
+        <translation>&amp;Découpage (les membres tournent par-dessus le corps)</translation>
+    </message>
+    <message>
         <location filename="../ui/src/recovery/main_window_recovery.cpp" line="63"/>
         <source>Cannot Recover</source>
         <translation>Impossible de récupérer le travail</translation>
@@ -3754,42 +3762,42 @@
         <translation>Fermer les trous : automatique (%1 px)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="38"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
         <source>Close gaps up to </source>
         <translation>Fermer les trous jusqu&apos;à </translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="41"/>
         <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
         <translation>Les ouvertures d&apos;un contour jusqu&apos;à cette largeur forment encore une zone que l&apos;outil Remplissage peut remplir (0 = contours fermés seulement)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
         <source>Fill All Enclosed Re&amp;gions</source>
         <translation>Remplir toutes les &amp;zones fermées</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="79"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="88"/>
         <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
         <translation>Remplir de la couleur du stylo chaque zone fermée de l&apos;objet courant qui n&apos;a pas de remplissage</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
         <source>The current object has no unfilled closed region</source>
         <translation>L&apos;objet courant n&apos;a aucune zone fermée sans remplissage</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="104"/>
         <source>Fill</source>
         <translation>Remplissage</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/main_window_shade.cpp" line="32"/>
+        <location filename="../ui/src/shade/main_window_shade.cpp" line="33"/>
         <source>Shading</source>
         <translation>Ombrage</translation>
     </message>

@@ -521,27 +521,27 @@
 <context>
     <name>Deformation</name>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="71"/>
+        <location filename="../model/src/deform_setup.cpp" line="76"/>
         <source>The object has no strokes to deform.</source>
         <translation>このオブジェクトには変形できるストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="76"/>
+        <location filename="../model/src/deform_setup.cpp" line="82"/>
         <source>This drawing cannot be meshed for deformation: %1</source>
         <translation>この絵から変形用のメッシュを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="108"/>
+        <location filename="../model/src/deform_setup.cpp" line="114"/>
         <source>Cancelled.</source>
         <translation>キャンセルしました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="153"/>
+        <location filename="../model/src/deform_setup.cpp" line="159"/>
         <source>The cage changed while it was being prepared.</source>
         <translation>準備中にケージが変更されました。</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="161"/>
+        <location filename="../model/src/deform_setup.cpp" line="167"/>
         <source>The object has no mesh to deform.</source>
         <translation>このオブジェクトには変形できるメッシュがありません。</translation>
     </message>
@@ -556,7 +556,7 @@
         <translation>ピンによる変形を計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/deform_setup.cpp" line="182"/>
+        <location filename="../model/src/deform_setup.cpp" line="190"/>
         <source>The deformation produced invalid points; it was not applied.</source>
         <translation>変形によって無効な点が生じたため、適用しませんでした。</translation>
     </message>
@@ -589,12 +589,12 @@
         <translation>このケージは使用できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="74"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="75"/>
         <source>The cage must enclose the whole object: %1</source>
         <translation>ケージはオブジェクト全体を囲む必要があります: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/cage/cage_setup.cpp" line="91"/>
+        <location filename="../model/src/cage/cage_setup.cpp" line="95"/>
         <source>No cage fits this drawing: %1</source>
         <translation>この絵に合うケージがありません: %1</translation>
     </message>
@@ -604,13 +604,13 @@
         <translation>この絵にはスケルトンを作成できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="53"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="54"/>
         <source>The object has no strokes to build a skeleton in.</source>
         <translation>このオブジェクトにはスケルトンを作成するためのストロークがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="67"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="76"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="68"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="77"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>この絵にはスケルトンを作成できません。</translation>
     </message>
@@ -664,14 +664,17 @@
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="122"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="135"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="137"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="145"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="155"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>このスケルトンではこの絵をスキニングできません: %1</translation>
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_setup.cpp" line="72"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="151"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="157"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="173"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="177"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="183"/>
         <source>The bones could not be posed: %1</source>
         <translation>ボーンのポーズを計算できませんでした: %1</translation>
     </message>
@@ -2359,7 +2362,7 @@
     </message>
     <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="165"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="168"/>
         <source>Build Skeleton</source>
         <translation>スケルトンを作成</translation>
     </message>
@@ -2369,32 +2372,32 @@
         <translation>このオブジェクトには別の変形方法によるポーズが付いています。スケルトンを作成すると、そのポーズは破棄されます。作成しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="183"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="186"/>
         <source>Joined to %1. Shift-drag its root to join it elsewhere; right-click it to detach it.</source>
         <translation>%1 に接続しました。ルートを Shift キーを押しながらドラッグすると別の場所に接続し、右クリックで切り離します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="258"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="261"/>
         <source>Click on a visible, unlocked drawing to give it a skeleton.</source>
         <translation>表示されていてロックされていない絵をクリックすると、スケルトンを作成できます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="265"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
         <source>Drag a joint to move it, click a bone to insert a joint; right-click a joint to delete it.</source>
         <translation>関節をドラッグで移動、ボーンをクリックで関節を挿入、関節を右クリックで削除します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="268"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="271"/>
         <source>Drag a bone to turn it, a joint to pull it, the root to move the object; press L over a joint to lock it; Shift-drag the root onto another part to join them.</source>
         <translation>ボーンをドラッグすると回転、関節をドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。関節の上で L キーを押すとロックします。ルートを Shift キーを押しながら別のパーツへドラッグすると接続します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="361"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="364"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>ルートを別のパーツのボーンにドロップすると接続します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="369"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="372"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 はすでにこのパーツにぶら下がっているため、逆にぶら下げることはできません。</translation>
     </message>
@@ -3146,112 +3149,112 @@
         <translation>オブジェクト:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="80"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="81"/>
         <source>&amp;Frames between the keys:</source>
         <translation>キーの間のフレーム数(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="83"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="84"/>
         <source>Linear</source>
         <translation>等間隔</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="84"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="85"/>
         <source>Ease in (slow from the first key)</source>
         <translation>イーズイン（最初のキーからゆっくり）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="85"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="86"/>
         <source>Ease out (slow into the second key)</source>
         <translation>イーズアウト（2 番目のキーへゆっくり）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="86"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="87"/>
         <source>Ease in and out</source>
         <translation>イーズイン・アウト</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="87"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="88"/>
         <source>Favour…</source>
         <translation>詰め…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="88"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="89"/>
         <source>&amp;Spacing:</source>
         <translation>間隔(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="92"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
         <source>Left favours the first key, right the second.</source>
         <translation>左にすると最初のキー側に、右にすると 2 番目のキー側に詰めます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
         <source>F&amp;avour:</source>
         <translation>詰め(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="96"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="97"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>ピンとケージの頂点を弧に沿って移動(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="99"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="100"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>キーの間で振られた手足は長さを保ちます。オフにすると、すべての対象が直線的に移動します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="128"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="129"/>
         <source>(unnamed)</source>
         <translation>（名前なし）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
         <source>%1: interpolated</source>
         <translation>%1: 補間</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="133"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: 最初のキーを保持（ピン、ケージ、スケルトンがありません）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="136"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: 最初のキーを保持（キーの間でピン、ケージ、またはスケルトンが異なります）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="139"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: 最初のキーにのみ存在、前半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="142"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: 2 番目のキーにのみ存在、後半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="151"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="152"/>
         <source>Select two different frames as keys.</source>
         <translation>キーとして異なる 2 つのフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="161"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="162"/>
         <source>Posing the preview…</source>
         <translation>プレビューを計算中…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="193"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
         <source>The preview could not be posed: %1</source>
         <translation>プレビューのポーズを計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="198"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="201"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>両方のキーで一致するピンまたはケージを持つオブジェクトがありません。中割りでは絵が保持されるだけです。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="200"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="203"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>キャンバスには中央の中割りが表示されています。</translation>
     </message>
@@ -3719,6 +3722,11 @@
         <translation>線形ブレンド(&amp;L)</translation>
     </message>
     <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="81"/>
+        <source>&amp;Cut-out (Limbs Turn over the Body)</source>
+        <translation>切り絵（手足が胴体の上で回る）(&amp;C)</translation>
+    </message>
+    <message>
         <location filename="../ui/src/recovery/main_window_recovery.cpp" line="63"/>
         <source>Cannot Recover</source>
         <translation>復元できません</translation>
@@ -3740,42 +3748,42 @@
         <translation>隙間を閉じる: 自動 (%1 px)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="38"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
         <source>Close gaps up to </source>
         <translation>隙間を閉じる: 最大 </translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="41"/>
         <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
         <translation>この幅までの輪郭の切れ目は、塗りつぶしツールで塗れる領域として扱います（0 = 閉じた輪郭のみ）</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="77"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
         <source>Fill All Enclosed Re&amp;gions</source>
         <translation>閉じた領域をすべて塗る(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="79"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="88"/>
         <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
         <translation>現在のオブジェクトの塗られていない閉じた領域をすべてペンの色で塗ります</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
         <source>The current object has no unfilled closed region</source>
         <translation>現在のオブジェクトに塗られていない閉じた領域はありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="104"/>
         <source>Fill</source>
         <translation>塗りつぶし</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/main_window_shade.cpp" line="32"/>
+        <location filename="../ui/src/shade/main_window_shade.cpp" line="33"/>
         <source>Shading</source>
         <translation>陰影</translation>
     </message>

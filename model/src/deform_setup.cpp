@@ -51,12 +51,16 @@ MeshKey MeshKey::of(const StrokeGroup &group, double closeGap)
 
 const Eigen::MatrixX2d &DeformSetup::meshVertices() const
 {
-    return cage ? cage->meshVertices() : meshed->mesh.V;
+    return cage                        ? cage->meshVertices()
+           : skeleton && skeleton->cut ? skeleton->cut->V
+                                       : meshed->mesh.V;
 }
 
 const Eigen::MatrixX3i &DeformSetup::meshTriangles() const
 {
-    return cage ? cage->meshTriangles() : meshed->mesh.F;
+    return cage                        ? cage->meshTriangles()
+           : skeleton && skeleton->cut ? skeleton->cut->F
+                                       : meshed->mesh.F;
 }
 
 bool DeformSetup::matches(const StrokeGroup &group, double closeGap) const
@@ -161,7 +165,6 @@ Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &g
     } else {
         if (!setup.meshed)
             return unexpected(Deformation::tr("The object has no mesh to deform."));
-        const geometry::ObjectMesh &mesh = setup.meshed->mesh;
         if (setup.pins && group.rig.pins.size() == setup.rest.pins.size()) {
             auto solved =
                 solvePins(*setup.meshed, *setup.pins, group.rig.pins, stage, cancelled, dragStart);
@@ -175,9 +178,12 @@ Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &g
                 return unexpected(solved.error());
             pose.vertices = std::move(*solved);
         } else {
-            pose.vertices = mesh.V;
+            pose.vertices = setup.meshVertices();
         }
-        points = geometry::applyEmbedding(setup.meshed->embedding, pose.vertices, mesh.F);
+        // A cut-out skeleton's mesh has the object mesh's triangles in the same order, so the
+        // strokes' embedding holds for it too.
+        points =
+            geometry::applyEmbedding(setup.meshed->embedding, pose.vertices, setup.meshTriangles());
     }
     if (!points.allFinite() || !pose.vertices.allFinite())
         return unexpected(

@@ -98,7 +98,7 @@ inline std::unique_ptr<QUndoCommand> randomSkeletonCommand(model::Document &doc,
         return std::make_unique<JoinOverlappingPartsCommand>(&doc, frameId);
     default:
         return std::make_unique<SetSkinningModeCommand>(
-            &doc, groupId, rng.bounded(2) ? SkinningMode::Rigid : SkinningMode::LinearBlend);
+            &doc, groupId, SkinningMode(rng.bounded(kLastSkinningMode + 1)));
     }
 }
 

@@ -111,6 +111,7 @@ private slots:
     void malformedSkeletonChunksAreRefused_data();
     void malformedSkeletonChunksAreRefused();
     void randomPosesNeverGiveNaN();
+    void cutOutTurnsALimbRigidlyOverAStillBody();
     void duplicateFrameCopiesSkeletonAndPose();
     void jointLocksAreOneStepAndSaved();
     void filesBeforeLocksOpenWithoutLocks();
@@ -144,6 +145,7 @@ void TestSkeletonRig::identityPoseIsRest_data()
     QTest::addColumn<int>("mode");
     QTest::newRow("rigid") << int(SkinningMode::Rigid);
     QTest::newRow("linear blend") << int(SkinningMode::LinearBlend);
+    QTest::newRow("cut-out") << int(SkinningMode::CutOut);
 }
 
 void TestSkeletonRig::identityPoseIsRest()
@@ -198,7 +200,10 @@ void TestSkeletonRig::rotatingABoneRotatesItsTip()
         int checked = 0;
         for (Eigen::Index v = 0; v < V.rows(); ++v) {
             const QPointF p(V(v, 0), V(v, 1));
-            if (owner(v) != bone || QLineF(p, tip).length() > QLineF(p, pivot).length())
+            // (A cut-out mesh's first rows are the object mesh's; its copies along the cuts
+            // come after.)
+            if (v >= owner.size() || owner(v) != bone ||
+                QLineF(p, tip).length() > QLineF(p, pivot).length())
                 continue;
             const QPointF q((*U)(v, 0), (*U)(v, 1));
             const double turned = wrapped(angleOf(q - pivot) - angleOf(p - pivot) - theta);
@@ -403,6 +408,97 @@ void TestSkeletonRig::randomPosesNeverGiveNaN()
             for (const StrokePoint &p : stroke)
                 QVERIFY(std::isfinite(p.x) && std::isfinite(p.y));
     }
+    // Cut-out skins another mesh: its own setup.
+    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode::CutOut));
+    QVERIFY(waitSolved(controller, doc, g));
+    const DeformSetup *cut = controller.setup(g);
+    QVERIFY(cut && cut->skeleton && cut->skeleton->cut);
+    group = *doc.group(g);
+    for (int i = 0; i < 300; ++i) {
+        SkeletonRig &s = group.rig.skeleton;
+        for (double &a : s.angles)
+            a = (rng.generateDouble() - 0.5) * 4 * std::numbers::pi;
+        s.rootOffset = {(rng.generateDouble() - 0.5) * 2000, (rng.generateDouble() - 0.5) * 2000};
+        auto pose = solvePose(*cut, group);
+        QVERIFY(pose);
+        QCOMPARE(pose->vertices.rows(), cut->meshVertices().rows());
+        QVERIFY(pose->vertices.allFinite());
+        for (const auto &stroke : pose->strokes->strokes)
+            for (const StrokePoint &p : stroke)
+                QVERIFY(std::isfinite(p.x) && std::isfinite(p.y));
+    }
+}
+
+void TestSkeletonRig::cutOutTurnsALimbRigidlyOverAStillBody()
+{
+    // A 200 × 200 body drawn with parallel strokes, and an arm 30 wide leaving its right side.
+    Document doc;
+    Frame f;
+    f.id = doc.allocateId();
+    StrokeGroup object;
+    object.id = doc.allocateId();
+    for (int k = 0; k <= 40; ++k)
+        object.strokes.push_back(
+            {doc.allocateId(), line({100, 100 + 5.0 * k}, {300, 100 + 5.0 * k}, 60)});
+    for (int k = 0; k <= 6; ++k)
+        object.strokes.push_back(
+            {doc.allocateId(), line({295, 185 + 5.0 * k}, {480, 185 + 5.0 * k}, 60)});
+    f.groups.push_back(object);
+    doc.reset({f}, DocumentSettings{}, doc.nextId());
+    const Id g = buildSkeleton(doc, object.id);
+    DeformController controller(&doc);
+    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode::CutOut));
+    QVERIFY(waitSolved(controller, doc, g));
+    const DeformSetup *setup = controller.setup(g);
+    QVERIFY(setup && setup->skeleton && setup->skeleton->cut);
+    // The arm is cut where it leaves the body.
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
+    int base = -1;
+    for (const deform::JointCut &cut : setup->skeleton->cut->cuts) {
+        const QPointF at = rest.joints[std::size_t(cut.joint)];
+        if (at.x() > 290 && at.x() < 360 && std::abs(at.y() - 200) < 10)
+            base = cut.joint;
+    }
+    QVERIFY2(base >= 0, "no cut where the arm leaves the body");
+    int first = -1;
+    for (int j = 0; j < rest.jointCount(); ++j)
+        if (rest.parent[std::size_t(j)] == base)
+            first = j;
+    QVERIFY(first >= 0);
+    const QPointF pivot = rest.joints[std::size_t(base)];
+    const double theta = std::numbers::pi / 3;
+    std::vector<double> angles(rest.joints.size(), 0.0);
+    angles[std::size_t(first)] = theta;
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+    QVERIFY(waitSolved(controller, doc, g));
+    const StrokeGroup *posed = doc.group(g);
+    QVERIFY(posed->isDeformed());
+    int body = 0, arm = 0;
+    for (std::size_t s = 0; s < posed->strokes.size(); ++s) {
+        const auto &points = posed->strokes[s].data->points;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const QPointF p(points[i].x, points[i].y);
+            const QPointF q(posed->deformed->strokes[s][i].x, posed->deformed->strokes[s][i].y);
+            if (p.x() < pivot.x() - 40) { // the body, clear of the joint: still
+                QVERIFY2(QLineF(p, q).length() < 1e-6,
+                         qPrintable(QString::number(QLineF(p, q).length())));
+                ++body;
+            } else if (p.x() > pivot.x() + 40) { // the arm: turned rigidly about the joint
+                QVERIFY(std::abs(QLineF(q, pivot).length() - QLineF(p, pivot).length()) < 1e-3);
+                QVERIFY(std::abs(wrapped(angleOf(q - pivot) - angleOf(p - pivot) - theta)) < 1e-4);
+                ++arm;
+            }
+        }
+    }
+    QVERIFY(body > 100 && arm > 50);
+    // Back to Rigid: the arm bends its flesh again (the uncut mesh), and undo restores Cut-out.
+    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode::Rigid));
+    QVERIFY(waitSolved(controller, doc, g));
+    QVERIFY(controller.setup(g)->skeleton && !controller.setup(g)->skeleton->cut);
+    doc.undoStack()->undo();
+    QVERIFY(waitSolved(controller, doc, g));
+    QCOMPARE(doc.group(g)->rig.skeleton.mode, SkinningMode::CutOut);
+    QVERIFY(controller.setup(g)->skeleton->cut);
 }
 
 void TestSkeletonRig::duplicateFrameCopiesSkeletonAndPose()

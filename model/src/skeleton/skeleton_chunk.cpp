@@ -59,7 +59,7 @@ SkeletonRig Reader::readSkeleton(Cursor &c)
             c.fail(FileErrorCode::BadValue, badSettings);
     }
     const quint8 mode = c.u8(what);
-    if (mode > quint8(SkinningMode::LinearBlend))
+    if (mode > quint8(kLastSkinningMode))
         c.fail(FileErrorCode::BadValue,
                FinbookFile::tr("the skeleton has an unknown skinning mode"));
     s.mode = SkinningMode(mode);

@@ -191,6 +191,7 @@ SkeletonRig SkeletonRig::rebased() const
 bool SkeletonRig::sameRest(const SkeletonRig &other) const
 {
     return joints == other.joints && parent == other.parent && anchor.valid == other.anchor.valid &&
+           (mode == SkinningMode::CutOut) == (other.mode == SkinningMode::CutOut) &&
            (!anchor.valid || (anchor.from == other.anchor.from && anchor.to == other.anchor.to));
 }
 

@@ -128,6 +128,26 @@ buildSkeletonSetup(const MeshedObject &meshed, const SkeletonRig &rig,
     Eigen::VectorXd radius = Eigen::VectorXd::Zero(setup->skeleton.jointCount());
     for (std::size_t j = 0; j < rig.radius.size() && Eigen::Index(j) < radius.size(); ++j)
         radius(Eigen::Index(j)) = std::isfinite(rig.radius[j]) ? std::max(0.0, rig.radius[j]) : 0.0;
+    if (rig.mode == SkinningMode::CutOut) {
+        // Cut at the joints where limbs narrow, each piece skinned by its own bones, with the
+        // Rigid mode's joint zones where it was not cut (chosen with `finbook-bench limbs`,
+        // scheme cutout_layers).
+        auto cut = deform::cutAtJoints(V, F, setup->skeleton, radius);
+        if (!cut)
+            return unexpected(Deformation::tr("The skeleton cannot skin this drawing: %1")
+                                  .arg(message(cut.error())));
+        const deform::SkinningWeights pieces =
+            deform::cutOutWeights(*setup->weights, setup->skeleton, *cut);
+        auto rigid = deform::rigidSkinPrecompute(
+            cut->V, cut->F, deform::withJointZones(pieces, cut->V, setup->skeleton, radius),
+            options, cancelled);
+        if (!rigid)
+            return unexpected(Deformation::tr("The skeleton cannot skin this drawing: %1")
+                                  .arg(message(rigid.error())));
+        setup->cut = std::move(*cut);
+        setup->cutRigid = *rigid;
+        return std::shared_ptr<const SkeletonSetup>(std::move(setup));
+    }
     const deform::SkinningWeights pins =
         deform::withJointZones(*setup->weights, V, setup->skeleton, radius);
     auto rigid = deform::rigidSkinPrecompute(V, F, pins, options, cancelled);
@@ -145,16 +165,24 @@ solveSkeleton(const MeshedObject &meshed, const SkeletonSetup &setup, const Skel
     if (!posed)
         return unexpected(posed.error());
     Eigen::MatrixX2d U;
-    if (rig.mode == SkinningMode::LinearBlend) {
+    if (setup.cut && setup.cutRigid) {
+        U = setup.cut->V;
+        auto solved = deform::rigidSkinSolve(*setup.cutRigid, *posed, U);
+        if (!solved)
+            return unexpected(
+                Deformation::tr("The bones could not be posed: %1").arg(message(solved.error())));
+    } else if (rig.mode == SkinningMode::LinearBlend) {
         if (auto error = deform::skin(setup.vertices, *posed, U))
             return unexpected(
                 Deformation::tr("The bones could not be posed: %1").arg(message(*error)));
-    } else {
+    } else if (setup.rigid) {
         U = meshed.mesh.V;
         auto solved = deform::rigidSkinSolve(*setup.rigid, *posed, U);
         if (!solved)
             return unexpected(
                 Deformation::tr("The bones could not be posed: %1").arg(message(solved.error())));
+    } else {
+        U = meshed.mesh.V;
     }
     return U;
 }

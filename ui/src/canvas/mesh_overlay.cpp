@@ -58,7 +58,8 @@ void MeshOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
         const Eigen::MatrixX2d &U = *m_controller->poseVertices(g.id);
         QColor colour = g.id == current ? QColor(20, 140, 200, 150) : QColor(120, 120, 120, 110);
         painter.setPen(QPen(colour, 0.8));
-        if (!setup->meshed) { // a cage's interior mesh: triangles only
+        // A cage's interior mesh, or a cut-out skeleton's cut mesh: triangles only.
+        if (!setup->meshed || &setup->meshTriangles() != &setup->meshed->mesh.F) {
             const Eigen::MatrixX3i &F = setup->meshTriangles();
             QVector<QLineF> lines;
             lines.reserve(int(F.rows() * 3));

@@ -76,7 +76,9 @@ void MainWindow::createSkeleton(QMenu *deformMenu)
     } modes[] = {{model::SkinningMode::Rigid, QStringLiteral("deform.skinningRigid"),
                   tr("&Rigid (Bones Pin the Mesh)")},
                  {model::SkinningMode::LinearBlend, QStringLiteral("deform.skinningLinear"),
-                  tr("&Linear Blend")}};
+                  tr("&Linear Blend")},
+                 {model::SkinningMode::CutOut, QStringLiteral("deform.skinningCutOut"),
+                  tr("&Cut-out (Limbs Turn over the Body)")}};
     std::vector<std::pair<QAction *, model::SkinningMode>> choices;
     for (const auto &m : modes) {
         QAction *a = makeAction(m.name, m.text);

@@ -5,8 +5,9 @@
 // root offset (px), as deform/skeleton/skeleton.h defines it: no drag history, so undo, reopen
 // and re-solve give the same strokes. The rest joints and parents are the rest definition (a
 // change re-precomputes the skinning on the worker); angles, offset and skinning mode only
-// re-solve. Joint locks (issue 10) only steer inverse kinematics: they are neither rest nor
-// pose, so toggling one never re-precomputes or re-solves.
+// re-solve (except a change to or from Cut-out, which skins another mesh). Joint locks (issue 10)
+// only steer inverse kinematics: they are neither rest nor pose, so toggling one never
+// re-precomputes or re-solves.
 #pragma once
 
 #include <QPointF>
@@ -27,8 +28,11 @@ struct SkeletonSettings {
 };
 
 // How the bones move the drawing: posed bones pin an ARAP solve (limbs keep their width at
-// bent joints; the default), or linear blend skinning (cheaper, thins bent joints).
-enum class SkinningMode { Rigid = 0, LinearBlend = 1 };
+// bent joints; the default), linear blend skinning (cheaper, thins bent joints), or cut-out:
+// the drawing cut apart at the joints where a limb narrows (deform/skeleton/cut_out.h), each
+// piece turning rigidly with its bone, as a cut-out puppet's limbs do.
+enum class SkinningMode { Rigid = 0, LinearBlend = 1, CutOut = 2 };
+constexpr int kLastSkinningMode = 2;
 
 // A rigid motion of the canvas, x ↦ R(angle) x + shift (R as in deform/skeleton/skeleton.h).
 struct RigidMotion {
@@ -116,7 +120,8 @@ struct SkeletonRig {
     // broken or turned around (exact for the root's tree; other roots of a forest share the
     // offset and may shift).
     SkeletonRig keepingShownPose(const SkeletonAnchor &newAnchor) const;
-    // Same rest joints and parents and anchor bone: what the skinning precompute depends on.
+    // Same rest joints and parents and anchor bone, and both cut out or neither: what the
+    // skinning precompute depends on (a cut-out rig skins a mesh cut at its joints).
     bool sameRest(const SkeletonRig &other) const;
     // Sizes agree (locked empty or one per joint, not all false), everything finite,
     // parent[j] ∈ [−1, j), root a root, settings in [0, 1].

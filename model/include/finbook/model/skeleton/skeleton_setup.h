@@ -3,6 +3,7 @@
 // Built on the worker; solving it is the per-drag step.
 #pragma once
 
+#include <finbook/deform/skeleton/cut_out.h>
 #include <finbook/deform/skeleton/linear_blend_skinning.h>
 #include <finbook/deform/skeleton/rigid_skinning.h>
 #include <finbook/model/deform_setup.h>
@@ -14,6 +15,12 @@ struct SkeletonSetup {
     std::shared_ptr<const deform::SkinningWeights> weights;
     deform::SkinBinding vertices; // the mesh vertices bound for linear blend skinning
     std::shared_ptr<const deform::RigidSkinning> rigid;
+    // A Cut-out rig's instead of `rigid`: the mesh cut at the joints, which solves and the
+    // strokes' embedding follow (same triangles, vertices copied along the cuts), and the
+    // rigid precompute of its pieces (SkeletonRig::sameRest rebuilds the setup when the mode
+    // turns to or from Cut-out).
+    std::optional<deform::CutMesh> cut;
+    std::shared_ptr<const deform::RigidSkinning> cutRigid;
 };
 
 // The rest skeleton for deform/ (joints and parents). Errors: sentences for the user.
