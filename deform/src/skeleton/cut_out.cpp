@@ -132,9 +132,9 @@ int nearestWhere(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &targe
 }
 
 // The vertices past the cut a → pivot → b (flooded from `seed` along edges that do not meet
-// it), or empty when the flood reaches `stop` (the cut does not separate).
+// it), or empty when the flood reaches a vertex marked in `stop` (the cut does not separate).
 std::vector<char> floodPast(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &a,
-                            const Vec &pivot, const Vec &b, int seed, int stop)
+                            const Vec &pivot, const Vec &b, int seed, const std::vector<char> &stop)
 {
     std::vector<char> past(std::size_t(V.rows()), 0);
     std::vector<int> stack{seed};
@@ -142,7 +142,7 @@ std::vector<char> floodPast(const Eigen::MatrixX2d &V, const MeshGraph &g, const
     while (!stack.empty()) {
         const int v = stack.back();
         stack.pop_back();
-        if (v == stop)
+        if (stop[std::size_t(v)])
             return {};
         const Vec p = V.row(v).transpose();
         for (const int u : g.neighbours[std::size_t(v)]) {
@@ -222,7 +222,30 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
                                       [&](const Vec &x) { return !past(x); });
         if (seed < 0 || stop < 0)
             continue;
-        const std::vector<char> flooded = floodPast(V, graph, a, pivot, b, seed, stop);
+        // The flood must reach neither the parent's side of the joint nor any joint outside
+        // the child's subtree (a cut whose sides close round into a sharp V would otherwise
+        // take the whole body for the limb).
+        std::vector<char> stops(std::size_t(n), 0);
+        stops[std::size_t(stop)] = 1;
+        std::vector<char> below(std::size_t(skeleton.jointCount()), 0);
+        std::vector<int> pending{child};
+        while (!pending.empty()) {
+            const int c = pending.back();
+            pending.pop_back();
+            below[std::size_t(c)] = 1;
+            for (int i = children.start[std::size_t(c)]; i < children.start[std::size_t(c) + 1];
+                 ++i)
+                pending.push_back(children.child[std::size_t(i)]);
+        }
+        for (Eigen::Index o = 0; o < skeleton.jointCount(); ++o) {
+            const Vec at = skeleton.joints.row(o).transpose();
+            if (below[std::size_t(o)] || (at - pivot).norm() <= reach)
+                continue;
+            const int v = nearestWhere(V, graph, at, [](const Vec &) { return true; });
+            if (v >= 0 && v != seed)
+                stops[std::size_t(v)] = 1;
+        }
+        const std::vector<char> flooded = floodPast(V, graph, a, pivot, b, seed, stops);
         if (flooded.empty())
             continue;
         const int index = int(out.cuts.size());
