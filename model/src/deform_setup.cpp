@@ -189,6 +189,11 @@ Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &g
         return unexpected(
             Deformation::tr("The deformation produced invalid points; it was not applied."));
     pose.strokes = strokesFromPoints(group, points);
+    if (setup.skeleton && setup.skeleton->cut && setup.meshed) {
+        auto layered = std::make_shared<DeformedStrokes>(*pose.strokes);
+        addCutOutPieces(*setup.skeleton, *setup.meshed, pose.vertices, *layered);
+        pose.strokes = std::move(layered);
+    }
     return pose;
 }
 

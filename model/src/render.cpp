@@ -360,10 +360,12 @@ void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &s
         return;
     }
     for (const StrokeGroup &group : frame.groups) {
-        for (const FillItem &fill : fillList(group, settings, options))
-            paintFill(painter, fill);
-        for (const PaintItem &item : paintList(group, options))
-            paintStroke(painter, *item.points, item.color, item.width);
+        for (const PaintLayer &layer : paintLayers(group, settings, options)) {
+            for (const FillItem &fill : layer.fills)
+                paintFill(painter, fill);
+            for (const PaintItem &item : layer.strokes)
+                paintStroke(painter, *item.points, item.color, item.width);
+        }
     }
     painter.restore();
 }

@@ -1,9 +1,12 @@
 // Skeletons in the model: building, refining and posing as undoable commands, the skinning
 // precompute through the deform controller, and the "SKEL" file chunk.
+#include "fill_support.h"
 #include "random_edits.h"
 #include "stroke_support.h"
 
 #include <finbook/model/deform_controller.h>
+#include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_render.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
@@ -18,6 +21,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 
 using namespace finbook;
 using namespace finbook::model;
@@ -112,6 +116,7 @@ private slots:
     void malformedSkeletonChunksAreRefused();
     void randomPosesNeverGiveNaN();
     void cutOutTurnsALimbRigidlyOverAStillBody();
+    void cutOutLimbHidesTheBodysLinesUnderIt();
     void duplicateFrameCopiesSkeletonAndPose();
     void jointLocksAreOneStepAndSaved();
     void filesBeforeLocksOpenWithoutLocks();
@@ -499,6 +504,69 @@ void TestSkeletonRig::cutOutTurnsALimbRigidlyOverAStillBody()
     QVERIFY(waitSolved(controller, doc, g));
     QCOMPARE(doc.group(g)->rig.skeleton.mode, SkinningMode::CutOut);
     QVERIFY(controller.setup(g)->skeleton->cut);
+}
+
+void TestSkeletonRig::cutOutLimbHidesTheBodysLinesUnderIt()
+{
+    // One closed outline: a 200 × 200 body with an arm 30 wide leaving its right side, filled.
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    const QPolygonF outline{{100, 100}, {300, 100}, {300, 185}, {480, 185}, {480, 215},
+                            {300, 215}, {300, 300}, {100, 300}, {100, 100}};
+    doc.undoStack()->push(new AddStrokeCommand(&doc, g, finbook::testing::polylineStroke(outline)));
+    const QRgb yellow = qRgb(255, 204, 0);
+    doc.undoStack()->push(fillRegionCommand(&doc, g, {200, 200}, yellow).release());
+    buildSkeleton(doc, g);
+    DeformController controller(&doc);
+    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode::CutOut));
+    QVERIFY(waitSolved(controller, doc, g));
+    const DeformSetup *setup = controller.setup(g);
+    QVERIFY(setup && setup->skeleton && setup->skeleton->cut);
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
+    int base = -1; // the cut nearest the body
+    for (const deform::JointCut &cut : setup->skeleton->cut->cuts) {
+        const QPointF at = rest.joints[std::size_t(cut.joint)];
+        if (at.x() > 290 && at.x() < 360 && std::abs(at.y() - 200) < 10 &&
+            (base < 0 || at.x() < rest.joints[std::size_t(base)].x()))
+            base = cut.joint;
+    }
+    QVERIFY2(base >= 0, "no cut where the arm leaves the body");
+    std::vector<double> angles(rest.joints.size(), 0.0);
+    for (int j = 0; j < rest.jointCount(); ++j)
+        if (rest.parent[std::size_t(j)] == base)
+            angles[std::size_t(j)] = 100.0 * std::numbers::pi / 180.0; // down, over the body
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+    QVERIFY(waitSolved(controller, doc, g));
+    const StrokeGroup &posed = *doc.group(g);
+    QVERIFY(posed.deformed && !posed.deformed->pieces.empty());
+    // A point of the body's outline that the turned arm covers, clear of the arm's lines.
+    const auto &pieces = posed.deformed->pieces;
+    const auto &points = posed.deformed->strokes[0];
+    const auto &pieceOf = posed.deformed->pieceOf[0];
+    std::optional<QPointF> covered;
+    for (std::size_t i = 0; i < points.size() && !covered; ++i) {
+        const QPointF p(points[i].x, points[i].y);
+        if (pieceOf[i] != -1 || std::none_of(pieces.begin(), pieces.end(),
+                                             [&](const auto &arm) { return arm.contains(p); }))
+            continue;
+        double nearest = 1e9;
+        for (std::size_t k = 0; k < points.size(); ++k)
+            if (pieceOf[k] >= 0)
+                nearest = std::min(nearest, QLineF(p, QPointF(points[k].x, points[k].y)).length());
+        if (nearest > 8)
+            covered = p;
+    }
+    QVERIFY2(covered, "the turned arm covers none of the body's outline");
+    // Drawn over the body, the arm's fill hides the body's line there.
+    const DocumentSettings &settings = doc.settings();
+    const QImage image = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    const QColor shown =
+        image.pixelColor(int(std::lround(covered->x())), int(std::lround(covered->y())));
+    QVERIFY2(shown.red() > 200 && shown.green() > 150 && shown.blue() < 100,
+             qPrintable(shown.name()));
+    // One layer per piece, over the body's.
+    QCOMPARE(paintLayers(posed, settings).size(), posed.deformed->pieces.size() + 1);
 }
 
 void TestSkeletonRig::duplicateFrameCopiesSkeletonAndPose()

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace finbook::model {
 
@@ -156,6 +157,66 @@ buildSkeletonSetup(const MeshedObject &meshed, const SkeletonRig &rig,
                               .arg(message(rigid.error())));
     setup->rigid = *rigid;
     return std::shared_ptr<const SkeletonSetup>(std::move(setup));
+}
+
+void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
+                     const Eigen::MatrixX2d &U, DeformedStrokes &out)
+{
+    if (!setup.cut || setup.cut->cuts.empty() || U.rows() != setup.cut->V.rows())
+        return;
+    const deform::CutMesh &cut = *setup.cut;
+    const Eigen::VectorXi &triangle = meshed.embedding.I;
+    out.pieceOf.resize(out.strokes.size());
+    Eigen::Index row = 0;
+    for (std::size_t s = 0; s < out.strokes.size(); ++s) {
+        out.pieceOf[s].assign(out.strokes[s].size(), -1);
+        for (std::int16_t &piece : out.pieceOf[s]) {
+            const int t = row < triangle.size() ? triangle(row) : -1;
+            if (t >= 0 && t < cut.piece.size())
+                piece = std::int16_t(std::clamp(cut.piece(t), -1, 32767));
+            ++row;
+        }
+    }
+    // Each piece's outline: its triangles' edges that no other triangle of it shares, chained
+    // from each vertex to the next as the triangles run.
+    out.pieces.assign(cut.cuts.size(), QPainterPath());
+    std::map<std::pair<int, int>, int> edges; // (min, max) → uses within the piece
+    for (int piece = 0; piece < int(cut.cuts.size()); ++piece) {
+        edges.clear();
+        for (Eigen::Index t = 0; t < cut.F.rows(); ++t) {
+            if (cut.piece(t) != piece)
+                continue;
+            for (int k = 0; k < 3; ++k) {
+                const int a = cut.F(t, k), b = cut.F(t, (k + 1) % 3);
+                ++edges[{std::min(a, b), std::max(a, b)}];
+            }
+        }
+        std::map<int, int> next;
+        for (Eigen::Index t = 0; t < cut.F.rows(); ++t) {
+            if (cut.piece(t) != piece)
+                continue;
+            for (int k = 0; k < 3; ++k) {
+                const int a = cut.F(t, k), b = cut.F(t, (k + 1) % 3);
+                if (edges[{std::min(a, b), std::max(a, b)}] == 1)
+                    next[a] = b;
+            }
+        }
+        QPainterPath &path = out.pieces[std::size_t(piece)];
+        path.setFillRule(Qt::WindingFill);
+        while (!next.empty()) {
+            int v = next.begin()->first;
+            path.moveTo(U(v, 0), U(v, 1));
+            for (std::size_t steps = 0; steps <= std::size_t(U.rows()); ++steps) {
+                const auto it = next.find(v);
+                if (it == next.end())
+                    break;
+                v = it->second;
+                next.erase(it);
+                path.lineTo(U(v, 0), U(v, 1));
+            }
+            path.closeSubpath();
+        }
+    }
 }
 
 Expected<Eigen::MatrixX2d, QString>

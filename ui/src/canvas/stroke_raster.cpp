@@ -146,13 +146,15 @@ void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptio
         return;
     }
     for (const model::StrokeGroup &group : frame.groups) {
-        for (const model::FillItem &fill : model::fillList(group, settings, options)) {
-            drawFill(fill.path, fill.color, options.opacity);
-            for (const model::ToneItem &tone : fill.tones)
-                drawFill(tone.path, tone.color, options.opacity);
+        for (const model::PaintLayer &layer : model::paintLayers(group, settings, options)) {
+            for (const model::FillItem &fill : layer.fills) {
+                drawFill(fill.path, fill.color, options.opacity);
+                for (const model::ToneItem &tone : fill.tones)
+                    drawFill(tone.path, tone.color, options.opacity);
+            }
+            for (const model::PaintItem &item : layer.strokes)
+                drawStroke(*item.points, item.color, item.width, options.opacity);
         }
-        for (const model::PaintItem &item : model::paintList(group, options))
-            drawStroke(*item.points, item.color, item.width, options.opacity);
     }
 }
 

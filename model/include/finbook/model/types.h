@@ -8,6 +8,7 @@
 #include <finbook/model/skeleton/skeleton_rig.h>
 
 #include <QColor>
+#include <QPainterPath>
 #include <QPointF>
 #include <QSize>
 #include <QString>
@@ -101,6 +102,12 @@ struct Rig {
 // Points of one deformed object, stroke by stroke (same order and sizes as its rest strokes).
 struct DeformedStrokes {
     std::vector<std::vector<StrokePoint>> strokes;
+    // A cut-out skeleton's pose (SkinningMode::CutOut) lies in pieces, each drawn over the ones
+    // before it (fill/fill_render.h, paintLayers): per stroke point the piece it moved with
+    // (−1 the roots' piece, k ≥ 0 the k-th cut's, deeper cuts later), and each cut piece's
+    // outline as posed (non-zero rule). Both empty for every other pose.
+    std::vector<std::vector<std::int16_t>> pieceOf;
+    std::vector<QPainterPath> pieces;
     friend bool operator==(const DeformedStrokes &, const DeformedStrokes &) = default;
 };
 using DeformedStrokesPtr = std::shared_ptr<const DeformedStrokes>;

@@ -26,6 +26,25 @@ std::vector<FillItem> fillList(const StrokeGroup &group, double closeGap,
 std::vector<FillItem> fillList(const StrokeGroup &group, const DocumentSettings &settings,
                                const RenderOptions &options = {});
 
+// An object as the renderers paint it, back to front: usually one layer (its fills, then its
+// strokes). A cut-out pose (DeformedStrokes::pieces) gives one layer per piece, each over the
+// ones before: the roots' piece with every fill and the strokes' runs that stayed with it,
+// then each cut piece with the fills clipped to its outline and its own runs (the run across
+// a cut goes with the deeper piece: the limb's round end), so a limb turned over the body
+// hides the body's lines under it, as a cut-out puppet's paper limb does.
+struct PaintLayer {
+    std::vector<FillItem> fills;
+    std::vector<PaintItem> strokes;             // may point into runs
+    std::vector<std::vector<StrokePoint>> runs; // pieces of strokes split at the cuts
+    PaintLayer() = default;
+    PaintLayer(const PaintLayer &) = delete; // strokes point into runs
+    PaintLayer &operator=(const PaintLayer &) = delete;
+    PaintLayer(PaintLayer &&) = default;
+    PaintLayer &operator=(PaintLayer &&) = default;
+};
+std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSettings &settings,
+                                    const RenderOptions &options = {});
+
 // Paints one item: its path, then its tones (the canvas raster draws its own way).
 void paintFill(QPainter &painter, const FillItem &fill);
 

@@ -1,0 +1,90 @@
+// An object's layers as the renderers paint them (fill_render.h, paintLayers): one, or one
+// per piece of a cut-out pose.
+#include <finbook/model/fill/fill_render.h>
+
+#include <algorithm>
+
+namespace finbook::model {
+
+std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSettings &settings,
+                                    const RenderOptions &options)
+{
+    std::vector<PaintLayer> layers(1);
+    layers[0].fills = fillList(group, settings, options);
+    layers[0].strokes = paintList(group, options);
+    const DeformedStrokes *posed = group.deformed.get();
+    if (!posed || posed->pieces.empty() || posed->pieceOf.size() != posed->strokes.size() ||
+        posed->strokes.size() != group.strokes.size())
+        return layers;
+    const std::size_t pieces = posed->pieces.size();
+    layers.resize(pieces + 1);
+    for (std::size_t k = 0; k < pieces; ++k) {
+        PaintLayer &layer = layers[k + 1];
+        for (const FillItem &fill : layers[0].fills) {
+            FillItem clipped;
+            clipped.path = fill.path.intersected(posed->pieces[k]);
+            if (clipped.path.isEmpty())
+                continue;
+            clipped.path.setFillRule(Qt::WindingFill);
+            clipped.color = fill.color;
+            for (const ToneItem &tone : fill.tones) {
+                ToneItem part = tone;
+                part.path = tone.path.intersected(posed->pieces[k]);
+                if (!part.path.isEmpty())
+                    clipped.tones.push_back(std::move(part));
+            }
+            layer.fills.push_back(std::move(clipped));
+        }
+    }
+    // The strokes: each item (a displayed stroke, folded repeats included) split into runs of
+    // segments that moved with one piece; a segment across a cut goes with the deeper piece.
+    const std::vector<PaintItem> items = std::move(layers[0].strokes);
+    layers[0].strokes.clear();
+    const auto *first = posed->strokes.data();
+    struct Entry {
+        std::size_t layer;
+        PaintItem item;
+        std::ptrdiff_t run; // into layers[layer].runs, or −1: the item as it is
+    };
+    std::vector<Entry> entries; // in painting order
+    for (const PaintItem &item : items) {
+        const std::ptrdiff_t s = item.points - first;
+        if (s < 0 || std::size_t(s) >= posed->strokes.size() ||
+            posed->pieceOf[std::size_t(s)].size() != item.points->size()) {
+            entries.push_back({0, item, -1});
+            continue;
+        }
+        const std::vector<StrokePoint> &points = *item.points;
+        const std::vector<std::int16_t> &piece = posed->pieceOf[std::size_t(s)];
+        const auto layerOf = [&](std::size_t i) {
+            const int p = i + 1 < points.size() ? std::max(piece[i], piece[i + 1]) : piece[i];
+            return std::size_t(std::clamp(p + 1, 0, int(pieces)));
+        };
+        if (points.size() <= 1 || std::all_of(piece.begin(), piece.end(),
+                                              [&](std::int16_t p) { return p == piece[0]; })) {
+            entries.push_back({layerOf(0), item, -1});
+            continue;
+        }
+        std::size_t start = 0;
+        while (start + 1 < points.size()) {
+            const std::size_t layer = layerOf(start);
+            std::size_t end = start + 1;
+            while (end + 1 < points.size() && layerOf(end) == layer)
+                ++end;
+            entries.push_back({layer, item, std::ptrdiff_t(layers[layer].runs.size())});
+            layers[layer].runs.emplace_back(points.begin() + std::ptrdiff_t(start),
+                                            points.begin() + std::ptrdiff_t(end) + 1);
+            start = end;
+        }
+    }
+    // Every run is stored before an item points at one (the runs do not move after).
+    for (Entry &entry : entries) {
+        PaintLayer &layer = layers[entry.layer];
+        if (entry.run >= 0)
+            entry.item.points = &layer.runs[std::size_t(entry.run)];
+        layer.strokes.push_back(entry.item);
+    }
+    return layers;
+}
+
+} // namespace finbook::model
