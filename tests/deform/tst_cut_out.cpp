@@ -1,5 +1,6 @@
 // Cut-out joints (issue 21): where the mesh is cut, the pieces it makes, and that a piece
 // cut off at its joint turns rigidly with its bone while the rest stays put.
+#include "arm_mesh.h"
 #include "grid_mesh.h"
 
 #include <finbook/deform/skeleton/cut_out.h>
@@ -13,6 +14,7 @@
 #include <map>
 
 using namespace finbook::deform;
+using finbook::test::Arm;
 using finbook::test::gridMesh;
 
 namespace {
@@ -45,19 +47,6 @@ void keepTriangles(Eigen::MatrixX2d &V, Eigen::MatrixX3i &F,
     V = newV.topRows(n);
     F = newF;
 }
-
-// A 300 × 40 bar along x with an elbow at x = 150: bones 0→1 and 1→2, radius 20.
-struct Arm {
-    finbook::test::GridMesh mesh = gridMesh(60, 8, 300.0, 40.0, 0.1);
-    Skeleton skeleton;
-    Eigen::VectorXd radius = Eigen::Vector3d(20.0, 20.0, 20.0);
-    Arm()
-    {
-        Eigen::MatrixX2d joints(3, 2);
-        joints << 0.0, 20.0, 150.0, 20.0, 300.0, 20.0;
-        skeleton = *makeSkeleton(joints, Eigen::Vector3i(-1, 0, 1));
-    }
-};
 
 Eigen::Vector2d centroid(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, Eigen::Index t)
 {

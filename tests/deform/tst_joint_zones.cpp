@@ -1,6 +1,7 @@
 // Joint zones (issue 21): the flesh around a joint where bones meet is held by no bone, in the
 // weights' boundary (SkinningOptions::jointFree) or in the rigid mode's pins only
 // (withJointZones).
+#include "arm_mesh.h"
 #include "grid_mesh.h"
 
 #include <finbook/deform/skeleton/linear_blend_skinning.h>
@@ -13,28 +14,8 @@
 #include <cmath>
 
 using namespace finbook::deform;
+using finbook::test::Arm;
 using finbook::test::gridMesh;
-
-namespace {
-
-// A 300 × 40 bar along x with an elbow joint at x = 150: bones 0→1 and 1→2.
-struct Arm {
-    finbook::test::GridMesh mesh = gridMesh(60, 8, 300.0, 40.0, 0.1);
-    Skeleton skeleton;
-    Eigen::VectorXd radius = Eigen::Vector3d(20.0, 20.0, 20.0);
-    Arm()
-    {
-        Eigen::MatrixX2d joints(3, 2);
-        joints << 0.0, 20.0, 150.0, 20.0, 300.0, 20.0;
-        skeleton = *makeSkeleton(joints, Eigen::Vector3i(-1, 0, 1));
-    }
-    double elbowDistance(Eigen::Index v) const
-    {
-        return (mesh.V.row(v) - skeleton.joints.row(1)).norm();
-    }
-};
-
-} // namespace
 
 class TestJointZones : public QObject {
     Q_OBJECT

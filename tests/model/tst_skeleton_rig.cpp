@@ -75,6 +75,25 @@ Id buildSkeleton(Document &doc, Id g)
     return g;
 }
 
+// Turns object g to Cut-out and waits for its setup; the cut joint where the arm of the
+// body-and-arm drawings below leaves the body (the cut nearest the body) goes to `base`.
+const DeformSetup *cutOutArm(Document &doc, DeformController &controller, Id g, int &base)
+{
+    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode::CutOut));
+    base = -1;
+    const DeformSetup *setup = waitSolved(controller, doc, g) ? controller.setup(g) : nullptr;
+    if (!setup || !setup->skeleton || !setup->skeleton->cut)
+        return nullptr;
+    const SkeletonRig &rest = doc.group(g)->rig.skeleton;
+    for (const deform::JointCut &cut : setup->skeleton->cut->cuts) {
+        const QPointF at = rest.joints[std::size_t(cut.joint)];
+        if (at.x() > 290 && at.x() < 360 && std::abs(at.y() - 200) < 10 &&
+            (base < 0 || at.x() < rest.joints[std::size_t(base)].x()))
+            base = cut.joint;
+    }
+    return setup;
+}
+
 // A terminal joint whose bone can turn (not a root).
 int terminalBone(const SkeletonRig &s)
 {
@@ -452,18 +471,9 @@ void TestSkeletonRig::cutOutTurnsALimbRigidlyOverAStillBody()
     doc.reset({f}, DocumentSettings{}, doc.nextId());
     const Id g = buildSkeleton(doc, object.id);
     DeformController controller(&doc);
-    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode::CutOut));
-    QVERIFY(waitSolved(controller, doc, g));
-    const DeformSetup *setup = controller.setup(g);
-    QVERIFY(setup && setup->skeleton && setup->skeleton->cut);
-    // The arm is cut where it leaves the body.
-    const SkeletonRig rest = doc.group(g)->rig.skeleton;
     int base = -1;
-    for (const deform::JointCut &cut : setup->skeleton->cut->cuts) {
-        const QPointF at = rest.joints[std::size_t(cut.joint)];
-        if (at.x() > 290 && at.x() < 360 && std::abs(at.y() - 200) < 10)
-            base = cut.joint;
-    }
+    QVERIFY(cutOutArm(doc, controller, g, base));
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
     QVERIFY2(base >= 0, "no cut where the arm leaves the body");
     int first = -1;
     for (int j = 0; j < rest.jointCount(); ++j)
@@ -519,18 +529,9 @@ void TestSkeletonRig::cutOutLimbHidesTheBodysLinesUnderIt()
     doc.undoStack()->push(fillRegionCommand(&doc, g, {200, 200}, yellow).release());
     buildSkeleton(doc, g);
     DeformController controller(&doc);
-    doc.undoStack()->push(new SetSkinningModeCommand(&doc, g, SkinningMode::CutOut));
-    QVERIFY(waitSolved(controller, doc, g));
-    const DeformSetup *setup = controller.setup(g);
-    QVERIFY(setup && setup->skeleton && setup->skeleton->cut);
+    int base = -1;
+    QVERIFY(cutOutArm(doc, controller, g, base));
     const SkeletonRig rest = doc.group(g)->rig.skeleton;
-    int base = -1; // the cut nearest the body
-    for (const deform::JointCut &cut : setup->skeleton->cut->cuts) {
-        const QPointF at = rest.joints[std::size_t(cut.joint)];
-        if (at.x() > 290 && at.x() < 360 && std::abs(at.y() - 200) < 10 &&
-            (base < 0 || at.x() < rest.joints[std::size_t(base)].x()))
-            base = cut.joint;
-    }
     QVERIFY2(base >= 0, "no cut where the arm leaves the body");
     std::vector<double> angles(rest.joints.size(), 0.0);
     for (int j = 0; j < rest.jointCount(); ++j)
