@@ -24,6 +24,8 @@
 // (layered); base_cut says whether the limb's base joint was cut. joint_cover_pct: the area
 // of the joint disk the drawing's outline covers (non-zero rule, lines across a cut running
 // straight from piece to piece, as the app draws them), % of rest.
+// Per file and scheme one line with the skinning precompute's time (weights, cut, ARAP
+// factorization) and, cut, how many joints were cut.
 // --before: the skeleton without the animator rig (RefineOptions::animatorRig off). --only A,B:
 // just these schemes. Sweeps: --joint-free X (the zones' factor), --dominance X (rigid_pieces),
 // --reach X (SkinningOptions::reach), --child-zone X, --parent-zone X, --arap-dominance X,
@@ -461,11 +463,17 @@ int benchLimbs(const QStringList &arguments)
             const Scheme &scheme = kSchemes[k];
             if (!only.isEmpty() && !only.contains(QLatin1String(scheme.name)))
                 continue;
+            const auto built = Clock::now();
             const auto skinned = skinFor(*mesh, *skeleton, *s, scheme);
             if (!skinned) {
                 ++failures;
                 continue;
             }
+            std::printf("{\"file\":\"%s\",\"scheme\":\"%s\",\"vertices\":%d,\"cuts\":%d,"
+                        "\"precompute_ms\":%.2f}\n",
+                        qPrintable(name), scheme.name, int(mesh->V.rows()),
+                        skinned->cut ? int(skinned->cut->cuts.size()) : 0,
+                        std::chrono::duration<double, std::milli>(Clock::now() - built).count());
             const Moved moved = movedMesh(*mesh, *skinned);
             const Eigen::VectorXi bonePiece =
                 skinned->cut ? deform::bonePieces(*skeleton, *skinned->cut)
