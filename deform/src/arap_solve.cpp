@@ -288,7 +288,7 @@ ArapSolveResult refinedSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc
                                     final ? cancelled : nullptr, report))
         return unexpected(std::move(*error));
     if (d.options.fixFlips)
-        detail::repairFlips(d, w, report);
+        detail::repairFlips(d, w, report, final);
     else
         report.flippedTriangles = detail::countFlips(d, w.positions);
     detail::placeFollowers(d, w.positions);
