@@ -6,9 +6,12 @@
 // refitted first (in the precompute's weights: the cotangent ARAP energy for Refined). Each update
 // lowers (never raises) the energy. A fold that survives is a local minimum: the region around
 // it restarts from a smoothed shape once and relaxes again (restartRegion), which may leave a
-// little more energy there and is kept only with fewer flips; what survives that too is taken
-// as forced by the pins.
-#include "arap_solver.h"
+// little more energy there and is kept only with fewer flips. What survives that too gets an
+// injective finish (untangleFlips, arap_untangle.cpp): its corners moved to where their
+// triangles are upright where their rings leave room, then relaxed without turning any
+// triangle over; kept only with fewer flips and little more energy. What survives that is
+// taken as forced by the pins.
+#include "arap_flips.h"
 
 #include <algorithm>
 #include <limits>
@@ -36,6 +39,15 @@ constexpr int kRingsPerGrowth = 2;
 constexpr int kSmoothSweeps = 5;
 constexpr int kRestartRings = 2;
 constexpr int kRestartSweeps = 30;
+// The injective finish (untangleFlips) is kept only if it adds at most this share of the
+// energy (refine's): opening a fold that the converged pose has too can cost visible rigidity
+// (on the 20k-vertex drawings of `finbook-bench arap --quality` one cost 2.3 % of a stored
+// pose's energy, where the converged pose has that fold). A drag pose is replaced by the stored
+// one, and a fold flickering in and out of a drag shows more than a percent of energy does.
+constexpr double kFinishCostFinal = 0.005;
+constexpr double kFinishCostDrag = 0.02;
+
+} // namespace
 
 double signedDoubleArea(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen::Index t)
 {
@@ -116,6 +128,26 @@ int regionFlips(const ArapPrecompute &d, const Workspace &w)
     return count;
 }
 
+// The region: the free corners of the flipped triangles (w.mark set for them).
+void seedRegion(const ArapPrecompute &d, Workspace &w)
+{
+    w.mark.assign(std::size_t(d.freeCount), 0);
+    w.region.clear();
+    for (Eigen::Index t = 0; t < d.triangles.rows(); ++t) {
+        if (!flipped(d, w.positions, t))
+            continue;
+        for (int k = 0; k < 3; ++k) {
+            const int v = d.triangles(t, k);
+            if (v < d.freeCount && !w.mark[v]) {
+                w.mark[v] = 1;
+                w.region.push_back(v);
+            }
+        }
+    }
+}
+
+namespace {
+
 // Gauss–Seidel sweeps over the region until it holds no flip, or kStall sweeps in a row
 // bring no new low (a fold the region cannot undo), or kSweeps, or `budget` vertex updates
 // are spent. Returns the flips left.
@@ -134,24 +166,6 @@ int relaxRegion(const ArapPrecompute &d, Workspace &w, Eigen::Index &budget)
         fewest = std::min(fewest, flips);
     }
     return regionFlips(d, w);
-}
-
-// The region: the free corners of the flipped triangles (w.mark set for them).
-void seedRegion(const ArapPrecompute &d, Workspace &w)
-{
-    w.mark.assign(std::size_t(d.freeCount), 0);
-    w.region.clear();
-    for (Eigen::Index t = 0; t < d.triangles.rows(); ++t) {
-        if (!flipped(d, w.positions, t))
-            continue;
-        for (int k = 0; k < 3; ++k) {
-            const int v = d.triangles(t, k);
-            if (v < d.freeCount && !w.mark[v]) {
-                w.mark[v] = 1;
-                w.region.push_back(v);
-            }
-        }
-    }
 }
 
 // A fold that local relaxation cannot open is a local minimum of the energy, and a drag that
@@ -220,7 +234,7 @@ int countFlips(const ArapPrecompute &d, const Eigen::VectorXcd &W)
     return count;
 }
 
-void repairFlips(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report)
+void repairFlips(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report, bool final)
 {
     // Flips the refinement's extra passes already removed count as repaired too.
     const int found = countFlips(d, w.positions);
@@ -242,6 +256,11 @@ void repairFlips(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report)
         left = now;
     }
     restartRegion(d, w, budget);
+    // The injective finish has a budget of its own: the relaxation may have spent the first.
+    if (countFlips(d, w.positions) > 0) {
+        Eigen::Index finishBudget = std::max(kMinUpdates, d.freeCount / kUpdatesPerFree);
+        untangleFlips(d, w, final ? kFinishCostFinal : kFinishCostDrag, finishBudget);
+    }
     report.flippedTriangles = countFlips(d, w.positions);
     report.repairedTriangles = std::max(0, before - report.flippedTriangles);
 }

@@ -139,6 +139,7 @@ std::optional<DeformError> refine(const ArapPrecompute &d, Workspace &w, int pas
                                   const std::function<bool()> &cancelled, ArapSolveReport &report)
 {
     const Eigen::Index nf = d.freeCount;
+    w.refinedEnergy = 0.0;
     if (nf == 0 || passes <= 0)
         return std::nullopt;
     auto free = w.positions.head(nf);
@@ -208,6 +209,7 @@ std::optional<DeformError> refine(const ArapPrecompute &d, Workspace &w, int pas
         globalStep(d, w); // reads the rotations and the handles, not the free positions
         ++report.passes;
     }
+    w.refinedEnergy = energy;
     if (tolerance > 0.0 && !report.converged) // the cap was reached: was the last pass small?
         report.converged = maxMagnitude(free - w.iterate) <= tolerance;
     if (auto error = checkGlobalStep(d, w, report))

@@ -223,7 +223,8 @@ using detail::Workspace;
 // the 9 drawings that fold 6 (with a patience of 6) left the same 4 at twice the cost. They
 // are local minima the drag walked into, which a second round of 4 passes did not open either:
 // a bat's fold (nor did restarting regions of up to 200 vertices around it) and a face's 3
-// beside the 9 its converged pose has.
+// beside the 9 its converged pose has. The repair's injective finish (arap_untangle.cpp) opens
+// all 4.
 constexpr int kMinFlipPasses = 2;
 
 // Steps 1, then `scalePasses` × (2a + 2b): the paper's method (and its extra passes).
@@ -288,7 +289,7 @@ ArapSolveResult refinedSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc
                                     final ? cancelled : nullptr, report))
         return unexpected(std::move(*error));
     if (d.options.fixFlips)
-        detail::repairFlips(d, w, report);
+        detail::repairFlips(d, w, report, final);
     else
         report.flippedTriangles = detail::countFlips(d, w.positions);
     detail::placeFollowers(d, w.positions);

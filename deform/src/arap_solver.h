@@ -23,9 +23,11 @@ struct Workspace {
     Eigen::VectorXcd trialRotations; // the same for an extrapolated candidate
     // Refinement (Anderson acceleration) state, freeCount rows each.
     Eigen::VectorXcd iterate, mapped, mappedBefore, residualBefore;
-    Eigen::MatrixXcd mappedSteps, residualSteps; // freeCount × history
-    std::vector<int> region, mark;               // flip repair
-    Eigen::VectorXcd saved; // flip repair: the region's positions before a restart
+    Eigen::MatrixXcd mappedSteps, residualSteps;    // freeCount × history
+    std::vector<int> region, mark;                  // flip repair
+    std::vector<int> untangleFlipped, untangleLeft; // flip repair: flips before/after the finish
+    double refinedEnergy = 0.0; // the energy refine() ended with (an upper bound of the pose's)
+    Eigen::VectorXcd saved;     // flip repair: the region's positions before a restart
     Eigen::VectorXcd coarseRotations, coarseCovariance, coarseHandleTerm; // K each
     Eigen::VectorXcd handleTargets; // handles: a warm start's targets while step 1 moves it
     // A drag's momentum (arap_solve.cpp): the precompute and the pose the last warm event on
@@ -88,8 +90,10 @@ int countFlips(const ArapPrecompute &d, const Eigen::VectorXcd &W);
 
 // Local ARAP relaxation of the free vertices around flipped triangles until none is left or a
 // sweep cap is reached (never increases the energy), then one restart from a smoothed region
-// for folds that survive it (kept only with fewer flips). Fills report.flipped/repairedTriangles.
-void repairFlips(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report);
+// for folds that survive it (kept only with fewer flips), then the injective finish for those
+// that survive that (kept only with fewer flips and at most a small share more energy, more
+// for a drag pose than a `final` one). Fills report.flipped/repairedTriangles.
+void repairFlips(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report, bool final);
 
 // Moves the vertices of follower components with their anchors (after the solve).
 void placeFollowers(const ArapPrecompute &d, Eigen::VectorXcd &W);
