@@ -99,6 +99,21 @@ private slots:
                 const auto [it, fresh] = pieceOf.emplace(cut->F(t, k), cut->piece(t));
                 QVERIFY(fresh || it->second == cut->piece(t));
             }
+        // The forearm's outline: one loop of its own vertices, round its triangles.
+        QCOMPARE(int(cut->outlines.size()), 1);
+        QCOMPARE(int(cut->outlines[0].size()), 1);
+        const std::vector<int> &loop = cut->outlines[0][0];
+        double area = 0.0, pieceArea = 0.0;
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            QCOMPARE(pieceOf.at(loop[i]), 0);
+            const Eigen::RowVector2d p = cut->V.row(loop[i]);
+            const Eigen::RowVector2d q = cut->V.row(loop[(i + 1) % loop.size()]);
+            area += 0.5 * (p.x() * q.y() - q.x() * p.y());
+        }
+        for (Eigen::Index t = 0; t < cut->F.rows(); ++t)
+            if (cut->piece(t) == 0)
+                pieceArea += signedArea(cut->V, cut->F, t);
+        QVERIFY(std::abs(area - pieceArea) < 1e-6 * std::abs(pieceArea));
         const Eigen::VectorXi bones = bonePieces(arm.skeleton, *cut);
         QCOMPARE(bones(1), -1);
         QCOMPARE(bones(2), 0);

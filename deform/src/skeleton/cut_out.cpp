@@ -317,6 +317,38 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
         out.V.row(n + Eigen::Index(e)) = V.row(extra[e]);
         out.source(n + Eigen::Index(e)) = extra[e];
     }
+    // The pieces' outlines: the cut mesh's boundary edges (each vertex belongs to one piece),
+    // chained from each vertex to the next.
+    const Eigen::Index total = out.V.rows();
+    std::unordered_map<long long, int> uses;
+    uses.reserve(std::size_t(3 * m));
+    for (Eigen::Index t = 0; t < m; ++t)
+        for (int c = 0; c < 3; ++c) {
+            const int a = out.F(t, c), b = out.F(t, (c + 1) % 3);
+            ++uses[(long long)std::min(a, b) * total + std::max(a, b)];
+        }
+    std::vector<int> next(std::size_t(total), -1), pieceOf(std::size_t(total), -1);
+    for (Eigen::Index t = 0; t < m; ++t)
+        for (int c = 0; c < 3; ++c) {
+            const int a = out.F(t, c), b = out.F(t, (c + 1) % 3);
+            pieceOf[std::size_t(a)] = out.piece(t);
+            if (uses[(long long)std::min(a, b) * total + std::max(a, b)] == 1)
+                next[std::size_t(a)] = b;
+        }
+    out.outlines.resize(out.cuts.size());
+    for (Eigen::Index start = 0; start < total; ++start) {
+        const int piece = pieceOf[std::size_t(start)];
+        if (next[std::size_t(start)] < 0 || piece < 0)
+            continue;
+        std::vector<int> loop;
+        for (int v = int(start); v >= 0 && loop.size() <= std::size_t(total);) {
+            loop.push_back(v);
+            const int after = next[std::size_t(v)];
+            next[std::size_t(v)] = -1;
+            v = after;
+        }
+        out.outlines[std::size_t(piece)].push_back(std::move(loop));
+    }
     return out;
 }
 

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace finbook::model {
 
@@ -177,43 +176,16 @@ void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
             ++row;
         }
     }
-    // Each piece's outline: its triangles' edges that no other triangle of it shares, chained
-    // from each vertex to the next as the triangles run.
     out.pieces.assign(cut.cuts.size(), QPainterPath());
-    std::map<std::pair<int, int>, int> edges; // (min, max) → uses within the piece
-    for (int piece = 0; piece < int(cut.cuts.size()); ++piece) {
-        edges.clear();
-        for (Eigen::Index t = 0; t < cut.F.rows(); ++t) {
-            if (cut.piece(t) != piece)
-                continue;
-            for (int k = 0; k < 3; ++k) {
-                const int a = cut.F(t, k), b = cut.F(t, (k + 1) % 3);
-                ++edges[{std::min(a, b), std::max(a, b)}];
-            }
-        }
-        std::map<int, int> next;
-        for (Eigen::Index t = 0; t < cut.F.rows(); ++t) {
-            if (cut.piece(t) != piece)
-                continue;
-            for (int k = 0; k < 3; ++k) {
-                const int a = cut.F(t, k), b = cut.F(t, (k + 1) % 3);
-                if (edges[{std::min(a, b), std::max(a, b)}] == 1)
-                    next[a] = b;
-            }
-        }
-        QPainterPath &path = out.pieces[std::size_t(piece)];
+    for (std::size_t piece = 0; piece < cut.outlines.size() && piece < out.pieces.size(); ++piece) {
+        QPainterPath &path = out.pieces[piece];
         path.setFillRule(Qt::WindingFill);
-        while (!next.empty()) {
-            int v = next.begin()->first;
-            path.moveTo(U(v, 0), U(v, 1));
-            for (std::size_t steps = 0; steps <= std::size_t(U.rows()); ++steps) {
-                const auto it = next.find(v);
-                if (it == next.end())
-                    break;
-                v = it->second;
-                next.erase(it);
-                path.lineTo(U(v, 0), U(v, 1));
-            }
+        for (const std::vector<int> &loop : cut.outlines[piece]) {
+            if (loop.empty())
+                continue;
+            path.moveTo(U(loop[0], 0), U(loop[0], 1));
+            for (std::size_t i = 1; i < loop.size(); ++i)
+                path.lineTo(U(loop[i], 0), U(loop[i], 1));
             path.closeSubpath();
         }
     }

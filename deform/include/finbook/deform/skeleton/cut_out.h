@@ -49,6 +49,9 @@ struct CutMesh {
     // piece around the skeleton's roots.
     Eigen::VectorXi piece;
     std::vector<JointCut> cuts; // in the skeleton's topological order (parents first)
+    // Per cut piece (cuts' order), its outline: loops of V rows as its triangles run (the
+    // shape's outline and the cuts), for drawing the piece over the ones before it.
+    std::vector<std::vector<std::vector<int>>> outlines;
     int pieceCount() const { return int(cuts.size()) + 1; }
 };
 
