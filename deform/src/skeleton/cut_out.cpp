@@ -3,6 +3,7 @@
 #include "skeleton_internal.h"
 
 #include <finbook/deform/skeleton/cut_out.h>
+#include <finbook/geometry/mesh_boundary.h>
 
 #include <cmath>
 #include <functional>
@@ -59,13 +60,9 @@ MeshGraph meshGraph(Eigen::Index n, const Eigen::MatrixX3i &F)
             }
         }
     }
-    for (Eigen::Index t = 0; t < F.rows(); ++t) {
-        for (int k = 0; k < 3; ++k) {
-            const int a = F(t, k), b = F(t, (k + 1) % 3);
-            if (count[key(a, b)] == 1)
-                g.boundary.emplace_back(a, b);
-        }
-    }
+    for (const Eigen::VectorXi &loop : geometry::boundaryLoops(F))
+        for (Eigen::Index i = 0; i < loop.size(); ++i)
+            g.boundary.emplace_back(loop(i), loop((i + 1) % loop.size()));
     return g;
 }
 
@@ -189,6 +186,11 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
         return out;
     const MeshGraph graph = meshGraph(n, F);
     const detail::ChildLists children = detail::childLists(skeleton.parent);
+    // The mesh vertex nearest each joint, for the floods' stops.
+    std::vector<int> nearestVertex(std::size_t(skeleton.jointCount()));
+    for (Eigen::Index o = 0; o < skeleton.jointCount(); ++o)
+        nearestVertex[std::size_t(o)] = nearestWhere(V, graph, skeleton.joints.row(o).transpose(),
+                                                     [](const Vec &) { return true; });
     for (Eigen::Index k = 0; k < skeleton.jointCount(); ++k) {
         const int j = skeleton.order(k);
         const int parent = skeleton.parent(j);
@@ -241,7 +243,7 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
             const Vec at = skeleton.joints.row(o).transpose();
             if (below[std::size_t(o)] || (at - pivot).norm() <= reach)
                 continue;
-            const int v = nearestWhere(V, graph, at, [](const Vec &) { return true; });
+            const int v = nearestVertex[std::size_t(o)];
             if (v >= 0 && v != seed)
                 stops[std::size_t(v)] = 1;
         }
@@ -317,37 +319,16 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
         out.V.row(n + Eigen::Index(e)) = V.row(extra[e]);
         out.source(n + Eigen::Index(e)) = extra[e];
     }
-    // The pieces' outlines: the cut mesh's boundary edges (each vertex belongs to one piece),
-    // chained from each vertex to the next.
-    const Eigen::Index total = out.V.rows();
-    std::unordered_map<long long, int> uses;
-    uses.reserve(std::size_t(3 * m));
+    // The pieces' outlines: the cut mesh's boundary loops (each vertex belongs to one piece).
+    std::vector<int> pieceOf(std::size_t(out.V.rows()), -1);
     for (Eigen::Index t = 0; t < m; ++t)
-        for (int c = 0; c < 3; ++c) {
-            const int a = out.F(t, c), b = out.F(t, (c + 1) % 3);
-            ++uses[(long long)std::min(a, b) * total + std::max(a, b)];
-        }
-    std::vector<int> next(std::size_t(total), -1), pieceOf(std::size_t(total), -1);
-    for (Eigen::Index t = 0; t < m; ++t)
-        for (int c = 0; c < 3; ++c) {
-            const int a = out.F(t, c), b = out.F(t, (c + 1) % 3);
-            pieceOf[std::size_t(a)] = out.piece(t);
-            if (uses[(long long)std::min(a, b) * total + std::max(a, b)] == 1)
-                next[std::size_t(a)] = b;
-        }
+        for (int c = 0; c < 3; ++c)
+            pieceOf[std::size_t(out.F(t, c))] = out.piece(t);
     out.outlines.resize(out.cuts.size());
-    for (Eigen::Index start = 0; start < total; ++start) {
-        const int piece = pieceOf[std::size_t(start)];
-        if (next[std::size_t(start)] < 0 || piece < 0)
-            continue;
-        std::vector<int> loop;
-        for (int v = int(start); v >= 0 && loop.size() <= std::size_t(total);) {
-            loop.push_back(v);
-            const int after = next[std::size_t(v)];
-            next[std::size_t(v)] = -1;
-            v = after;
-        }
-        out.outlines[std::size_t(piece)].push_back(std::move(loop));
+    for (const Eigen::VectorXi &loop : geometry::boundaryLoops(out.F)) {
+        const int piece = pieceOf[std::size_t(loop(0))];
+        if (piece >= 0)
+            out.outlines[std::size_t(piece)].emplace_back(loop.data(), loop.data() + loop.size());
     }
     return out;
 }
