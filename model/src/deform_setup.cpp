@@ -191,7 +191,8 @@ Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &g
     pose.strokes = strokesFromPoints(group, points);
     if (setup.skeleton && setup.skeleton->cut && setup.meshed) {
         auto layered = std::make_shared<DeformedStrokes>(*pose.strokes);
-        addCutOutPieces(*setup.skeleton, *setup.meshed, pose.vertices, *layered);
+        addCutOutPieces(*setup.skeleton, *setup.meshed, pose.vertices, group.rig.skeleton,
+                        *layered);
         pose.strokes = std::move(layered);
     }
     return pose;

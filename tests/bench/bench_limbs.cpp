@@ -180,13 +180,17 @@ std::optional<Skinned> skinFor(const geometry::ObjectMesh &mesh, const deform::S
 struct Moved {
     Eigen::MatrixX2d V;
     Eigen::MatrixX3i F;
-    Eigen::VectorXi piece;                    // per vertex (−1 everywhere uncut)
-    std::vector<std::pair<int, int>> outline; // boundary edges of every piece
-    std::vector<int> edgePiece;               // the piece of each
-    std::vector<std::pair<int, int>> drawing; // bench::drawingOutline
+    Eigen::VectorXi piece;                        // per vertex (−1 everywhere uncut)
+    std::vector<std::pair<int, int>> outline;     // boundary edges of every piece
+    std::vector<int> edgePiece;                   // the piece of each
+    std::vector<std::pair<int, int>> drawing;     // bench::drawingOutline
+    Eigen::VectorXi source;                       // vertex → the uncut mesh's vertex it copies
+    Eigen::MatrixX2d socketPoints;                // the sockets' rest points
+    std::vector<std::pair<int, int>> socketEdges; // into [V; socketPoints]
 };
 
-Moved movedMesh(const geometry::ObjectMesh &mesh, const Skinned &skinned)
+Moved movedMesh(const geometry::ObjectMesh &mesh, const deform::Skeleton &skeleton,
+                const Skinned &skinned)
 {
     Moved m;
     m.V = skinned.cut ? skinned.cut->V : mesh.V;
@@ -205,6 +209,40 @@ Moved movedMesh(const geometry::ObjectMesh &mesh, const Skinned &skinned)
     for (const auto &e : m.outline)
         m.edgePiece.push_back(pieceOf[e]);
     m.drawing = bench::drawingOutline(mesh.F, m.F);
+    // The sockets the app paints under turned limbs, in the fill: each cut's round end
+    // (JointCut::round), a disk at its joint touching the outline, which a limb's turn leaves
+    // where it is. Their points follow the mesh's in the arrays coveredArea is given.
+    if (skinned.cut) {
+        std::vector<Eigen::RowVector2d> points;
+        const auto addLoop = [&](const std::vector<Eigen::RowVector2d> &loop) {
+            const int first = int(m.V.rows() + Eigen::Index(points.size()));
+            for (std::size_t i = 0; i < loop.size(); ++i) {
+                points.push_back(loop[i]);
+                m.socketEdges.emplace_back(first + int(i), first + int((i + 1) % loop.size()));
+            }
+        };
+        // Loops turning as the triangles do, so the non-zero rule adds them up.
+        const double sense = bench::signedTriangleArea(m.V, m.F, 0) < 0.0 ? -1.0 : 1.0;
+        for (std::size_t c = 0; c < skinned.cut->cuts.size(); ++c) {
+            const deform::JointCut &at = skinned.cut->cuts[c];
+            if (at.round > 0.0 && at.joint >= 0 && at.joint < skeleton.jointCount()) {
+                std::vector<Eigen::RowVector2d> disk;
+                for (int i = 0; i < 64; ++i) {
+                    const double angle = sense * 2.0 * M_PI * i / 64.0;
+                    disk.push_back(skeleton.joints.row(at.joint) +
+                                   at.round * Eigen::RowVector2d(std::cos(angle), std::sin(angle)));
+                }
+                addLoop(disk);
+            }
+        }
+        m.socketPoints.resize(Eigen::Index(points.size()), 2);
+        for (std::size_t i = 0; i < points.size(); ++i)
+            m.socketPoints.row(Eigen::Index(i)) = points[i];
+    }
+    m.source =
+        skinned.cut
+            ? skinned.cut->source
+            : Eigen::VectorXi(Eigen::VectorXi::LinSpaced(m.V.rows(), 0, int(m.V.rows()) - 1));
     return m;
 }
 
@@ -286,6 +324,13 @@ Sample measurePose(const Moved &mesh, const Eigen::MatrixX2d &U, const Eigen::Ve
     // Edges of two pieces of a cut mesh cross where one piece is drawn over the other.
     const auto &outline = mesh.outline;
     for (const auto &[e, f] : bench::outlineCrossings(U, outline)) {
+        // Edges from two copies of one vertex (a piece's outline pinched where two cuts leave
+        // one joint) meet there in every pose, as edges sharing a vertex do: not a fold.
+        const auto &[e0, e1] = outline[std::size_t(e)];
+        const auto &[f0, f1] = outline[std::size_t(f)];
+        if (mesh.source(e0) == mesh.source(f0) || mesh.source(e0) == mesh.source(f1) ||
+            mesh.source(e1) == mesh.source(f0) || mesh.source(e1) == mesh.source(f1))
+            continue;
         const auto near = [&](int edge) {
             return (mesh.V.row(outline[std::size_t(edge)].first).transpose() - pivot).norm() <=
                    kFoldDisk / kJointDisk * disk;
@@ -295,10 +340,18 @@ Sample measurePose(const Moved &mesh, const Eigen::MatrixX2d &U, const Eigen::Ve
         else
             ++(near(e) && near(f) ? out.folds : out.crossings);
     }
-    const double restCover = bench::coveredArea(mesh.V, mesh.drawing, pivot, disk);
-    out.jointCover = restCover > 0.0
-                         ? 100.0 * bench::coveredArea(U, mesh.drawing, pivot, disk) / restCover
-                         : 100.0;
+    std::vector<std::pair<int, int>> drawing = mesh.drawing;
+    drawing.insert(drawing.end(), mesh.socketEdges.begin(), mesh.socketEdges.end());
+    const auto withSockets = [&](const Eigen::MatrixX2d &P) {
+        Eigen::MatrixX2d all(P.rows() + mesh.socketPoints.rows(), 2);
+        all << P, mesh.socketPoints;
+        return all;
+    };
+    const double restCover = bench::coveredArea(withSockets(mesh.V), drawing, pivot, disk);
+    out.jointCover =
+        restCover > 0.0
+            ? 100.0 * bench::coveredArea(withSockets(U), drawing, pivot, disk) / restCover
+            : 100.0;
     double rest = 0.0, posed = 0.0;
     for (Eigen::Index t = 0; t < mesh.F.rows(); ++t) {
         const double r = bench::signedTriangleArea(mesh.V, mesh.F, t);
@@ -474,7 +527,7 @@ int benchLimbs(const QStringList &arguments)
                         qPrintable(name), scheme.name, int(mesh->V.rows()),
                         skinned->cut ? int(skinned->cut->cuts.size()) : 0,
                         std::chrono::duration<double, std::milli>(Clock::now() - built).count());
-            const Moved moved = movedMesh(*mesh, *skinned);
+            const Moved moved = movedMesh(*mesh, *skeleton, *skinned);
             const Eigen::VectorXi bonePiece =
                 skinned->cut ? deform::bonePieces(*skeleton, *skinned->cut)
                              : Eigen::VectorXi::Constant(skeleton->jointCount(), -1);

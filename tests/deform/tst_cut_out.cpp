@@ -60,6 +60,16 @@ double signedArea(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, Eigen::I
     return 0.5 * (a.x() * b.y() - a.y() * b.x());
 }
 
+// A plus sign 40 wide in a `width` × `height` grid, its bars crossing at (150, 150).
+finbook::test::GridMesh plusSign(double height)
+{
+    finbook::test::GridMesh plus = gridMesh(60, int(height / 5.0), 300.0, height, 0.0);
+    keepTriangles(plus.V, plus.F, [](const Eigen::Vector2d &c) {
+        return std::abs(c.x() - 150.0) < 20.0 || std::abs(c.y() - 150.0) < 20.0;
+    });
+    return plus;
+}
+
 } // namespace
 
 class TestCutOut : public QObject {
@@ -117,6 +127,11 @@ private slots:
         const Eigen::VectorXi bones = bonePieces(arm.skeleton, *cut);
         QCOMPARE(bones(1), -1);
         QCOMPARE(bones(2), 0);
+        QCOMPARE(cut->cuts[0].child, 2);
+        QCOMPARE(cut->parentPiece, std::vector<int>{-1});
+        // The round end: the elbow's distance to the bar's sides (jittered a little).
+        QVERIFY2(std::abs(cut->cuts[0].round - 20.0) < 2.0,
+                 qPrintable(QString::number(cut->cuts[0].round)));
     }
 
     void aJointInTheMiddleOfAWideShapeIsNotCut()
@@ -185,6 +200,105 @@ private slots:
             for (Eigen::Index t = 0; t < cut->F.rows(); ++t)
                 QVERIFY(signedArea(U, cut->F, t) * signedArea(cut->V, cut->F, t) > 0.0);
         }
+    }
+
+    void aPlusSignsLimbsAreCutAtItsJunction()
+    {
+        // Hung from the bottom bar's end: the junction's three limbs are cut there, each
+        // between its bar and the neighbouring ones (at the plus's inner corners).
+        const finbook::test::GridMesh plus = plusSign(300.0);
+        Eigen::MatrixX2d joints(5, 2);
+        joints << 150.0, 300.0, 150.0, 150.0, 0.0, 150.0, 300.0, 150.0, 150.0, 0.0;
+        const Skeleton skeleton =
+            *makeSkeleton(joints, (Eigen::VectorXi(5) << -1, 0, 1, 1, 1).finished());
+        const double r = 20.0 * std::sqrt(2.0);
+        const Eigen::VectorXd radius = (Eigen::VectorXd(5) << 20.0, r, 20.0, 20.0, 20.0).finished();
+        const auto cut = cutAtJoints(plus.V, plus.F, skeleton, radius);
+        QVERIFY(cut.hasValue());
+        QCOMPARE(int(cut->cuts.size()), 3);
+        std::map<int, int> pieceOfChild;
+        for (std::size_t c = 0; c < cut->cuts.size(); ++c) {
+            QCOMPARE(cut->cuts[c].joint, 1);
+            pieceOfChild[cut->cuts[c].child] = int(c);
+            // Both ends at inner corners of the plus.
+            for (const Eigen::Vector2d &end : {cut->cuts[c].a, cut->cuts[c].b}) {
+                QVERIFY(std::abs(std::abs(end.x() - 150.0) - 20.0) < 1e-3);
+                QVERIFY(std::abs(std::abs(end.y() - 150.0) - 20.0) < 1e-3);
+            }
+        }
+        QCOMPARE(int(pieceOfChild.size()), 3);
+        const Eigen::VectorXi bones = bonePieces(skeleton, *cut);
+        QCOMPARE(bones(1), -1);
+        for (int child : {2, 3, 4})
+            QCOMPARE(bones(child), pieceOfChild.at(child));
+        for (Eigen::Index t = 0; t < cut->F.rows(); ++t) {
+            const Eigen::Vector2d c = centroid(plus.V, plus.F, t);
+            const int expected = c.x() < 130.0   ? pieceOfChild.at(2)
+                                 : c.x() > 170.0 ? pieceOfChild.at(3)
+                                 : c.y() < 130.0 ? pieceOfChild.at(4)
+                                 : c.y() > 170.0 ? -1
+                                                 : -2;
+            if (expected != -2)
+                QCOMPARE(cut->piece(t), expected);
+        }
+        // Each cut's round end touches the outline at the inner corners; the piece above
+        // every cut is the bottom bar's.
+        std::map<int, int> vertexPiece;
+        for (Eigen::Index t = 0; t < cut->F.rows(); ++t)
+            for (int k = 0; k < 3; ++k)
+                vertexPiece[cut->F(t, k)] = cut->piece(t);
+        QCOMPARE(int(cut->parentPiece.size()), 3);
+        for (std::size_t c = 0; c < 3; ++c) {
+            QCOMPARE(cut->parentPiece[c], -1);
+            QVERIFY2(std::abs(cut->cuts[c].round - r) < 1e-9,
+                     qPrintable(QString::number(cut->cuts[c].round)));
+        }
+        // The right bar turns rigidly about the junction; the rest stays.
+        const auto weights = computeSkinningWeights(plus.V, plus.F, skeleton);
+        QVERIFY(weights.hasValue());
+        const auto rigid = rigidSkinPrecompute(
+            cut->V, cut->F,
+            withJointZones(cutOutWeights(**weights, skeleton, *cut), cut->V, skeleton, radius));
+        QVERIFY(rigid.hasValue());
+        SkeletonPose pose = restPose(skeleton);
+        pose.angles(3) = 60.0 * M_PI / 180.0;
+        const auto posed = forwardKinematics(skeleton, pose);
+        QVERIFY(posed.hasValue());
+        Eigen::MatrixX2d U = cut->V;
+        QVERIFY(rigidSkinSolve(**rigid, *posed, U).hasValue());
+        double worst = 0.0;
+        for (Eigen::Index v = 0; v < U.rows(); ++v) {
+            const Eigen::Vector2d rest = cut->V.row(v).transpose();
+            const Eigen::Vector2d expected = vertexPiece.at(int(v)) == pieceOfChild.at(3)
+                                                 ? transformPoint(posed->transforms[3], rest)
+                                                 : rest;
+            worst = std::max(worst, (U.row(v).transpose() - expected).norm());
+        }
+        QVERIFY2(worst < 1e-6, qPrintable(QString::number(worst)));
+    }
+
+    void aRootJunctionKeepsItsHeaviestLimb()
+    {
+        // The root at the crossing of a plus whose bottom bar is the longest: the three other
+        // bars are cut off; the bottom one stays the body.
+        const finbook::test::GridMesh plus = plusSign(450.0);
+        Eigen::MatrixX2d joints(5, 2);
+        joints << 150.0, 150.0, 0.0, 150.0, 300.0, 150.0, 150.0, 0.0, 150.0, 450.0;
+        const Skeleton skeleton =
+            *makeSkeleton(joints, (Eigen::VectorXi(5) << -1, 0, 0, 0, 0).finished());
+        const Eigen::VectorXd radius =
+            (Eigen::VectorXd(5) << 20.0 * std::sqrt(2.0), 20.0, 20.0, 20.0, 20.0).finished();
+        const auto cut = cutAtJoints(plus.V, plus.F, skeleton, radius);
+        QVERIFY(cut.hasValue());
+        QCOMPARE(int(cut->cuts.size()), 3);
+        for (const JointCut &c : cut->cuts) {
+            QCOMPARE(c.joint, 0);
+            QVERIFY(c.child != 4);
+        }
+        for (Eigen::Index t = 0; t < cut->F.rows(); ++t)
+            if (centroid(plus.V, plus.F, t).y() > 170.0)
+                QCOMPARE(cut->piece(t), -1);
+        QCOMPARE(bonePieces(skeleton, *cut)(4), -1);
     }
 
     void badRadiiAreRefused()

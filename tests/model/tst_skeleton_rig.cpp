@@ -136,6 +136,7 @@ private slots:
     void randomPosesNeverGiveNaN();
     void cutOutTurnsALimbRigidlyOverAStillBody();
     void cutOutLimbHidesTheBodysLinesUnderIt();
+    void cutOutJointsStayRoundWhenTheyTurn();
     void duplicateFrameCopiesSkeletonAndPose();
     void jointLocksAreOneStepAndSaved();
     void filesBeforeLocksOpenWithoutLocks();
@@ -568,6 +569,101 @@ void TestSkeletonRig::cutOutLimbHidesTheBodysLinesUnderIt()
              qPrintable(shown.name()));
     // One layer per piece, over the body's.
     QCOMPARE(paintLayers(posed, settings).size(), posed.deformed->pieces.size() + 1);
+}
+
+void TestSkeletonRig::cutOutJointsStayRoundWhenTheyTurn()
+{
+    // The body and arm above; the arm turned 100° at its base over the body. Its round joint
+    // (the socket) fills the gap the turn opens at the joint, where neither piece lies any
+    // more; at rest the sockets change no pixel.
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    const QPolygonF outline{{100, 100}, {300, 100}, {300, 185}, {480, 185}, {480, 215},
+                            {300, 215}, {300, 300}, {100, 300}, {100, 100}};
+    doc.undoStack()->push(new AddStrokeCommand(&doc, g, finbook::testing::polylineStroke(outline)));
+    const QRgb yellow = qRgb(255, 204, 0);
+    doc.undoStack()->push(fillRegionCommand(&doc, g, {200, 200}, yellow).release());
+    buildSkeleton(doc, g);
+    const DocumentSettings &settings = doc.settings();
+    const QImage flat = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    DeformController controller(&doc);
+    int base = -1;
+    const DeformSetup *setup = cutOutArm(doc, controller, g, base);
+    QVERIFY(setup);
+    QVERIFY2(base >= 0, "no cut where the arm leaves the body");
+    const auto &cuts = setup->skeleton->cut->cuts;
+    const auto cut = std::find_if(cuts.begin(), cuts.end(),
+                                  [&](const deform::JointCut &c) { return c.joint == base; });
+    QVERIFY(cut != cuts.end());
+    // The socket's disk touches the outline: its radius is the joint's distance to it.
+    const QPointF joint = doc.group(g)->rig.skeleton.joints[std::size_t(base)];
+    double toOutline = 1e9;
+    for (int i = 0; i + 1 < outline.size(); ++i) {
+        const QPointF a = outline[i], d = outline[i + 1] - a;
+        const double t =
+            std::clamp(QPointF::dotProduct(joint - a, d) / QPointF::dotProduct(d, d), 0.0, 1.0);
+        toOutline = std::min(toOutline, QLineF(joint, a + t * d).length());
+    }
+    QVERIFY2(std::abs(cut->round - toOutline) < 2.0,
+             qPrintable(QStringLiteral("%1 %2").arg(cut->round).arg(toOutline)));
+    // At rest no socket shows: the paper around the drawing and the inside of its fill keep
+    // their pixels (the ink's own edges may differ by a shade where strokes split at a cut).
+    QVERIFY(doc.group(g)->deformed && !doc.group(g)->deformed->sockets.empty());
+    const QImage atRest = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    int differ = 0, paper = 0, inside = 0;
+    for (int y = 0; y < flat.height(); ++y)
+        for (int x = 0; x < flat.width(); ++x) {
+            const QRgb a = flat.pixel(x, y);
+            if (a != qRgb(255, 255, 255) && a != yellow)
+                continue;
+            ++(a == yellow ? inside : paper);
+            differ += atRest.pixel(x, y) != a ? 1 : 0;
+        }
+    QVERIFY(inside > 10000 && paper > 10000);
+    QVERIFY2(differ == 0, qPrintable(QString::number(differ)));
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
+    std::vector<double> angles(rest.joints.size(), 0.0);
+    for (int j = 0; j < rest.jointCount(); ++j)
+        if (rest.parent[std::size_t(j)] == base)
+            angles[std::size_t(j)] = 100.0 * std::numbers::pi / 180.0;
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+    QVERIFY(waitSolved(controller, doc, g));
+    const StrokeGroup &posed = *doc.group(g);
+    // Within the joint's disk, the point farthest from every line that neither the posed
+    // fills nor the pieces reach: the gap the turn opened.
+    const QPointF pivot = rest.joints[std::size_t(base)];
+    const std::vector<FillItem> fills = fillList(posed, settings);
+    std::optional<QPointF> gap;
+    double clearance = 0.0;
+    for (int a = 0; a < 72; ++a)
+        for (double f = 0.2; f < 0.95; f += 0.05) {
+            const double angle = a * std::numbers::pi / 36.0;
+            const QPointF p = pivot + f * cut->round * QPointF(std::cos(angle), std::sin(angle));
+            const auto reaches = [&](const QPainterPath &path) { return path.contains(p); };
+            if (std::any_of(fills.begin(), fills.end(),
+                            [&](const FillItem &fill) { return reaches(fill.path); }) ||
+                std::any_of(posed.deformed->pieces.begin(), posed.deformed->pieces.end(), reaches))
+                continue;
+            double nearest = 1e9;
+            for (const auto &stroke : posed.deformed->strokes)
+                for (const StrokePoint &q : stroke)
+                    nearest = std::min(nearest, std::hypot(p.x() - q.x, p.y() - q.y));
+            if (nearest > clearance) {
+                clearance = nearest;
+                gap = p;
+            }
+        }
+    QVERIFY2(gap && clearance > 3.0, "the turn opened no gap at the joint");
+    // The socket, painted on the body's layer, fills it.
+    const std::vector<PaintLayer> layers = paintLayers(posed, settings);
+    QVERIFY(std::any_of(layers[0].fills.begin(), layers[0].fills.end(), [&](const FillItem &f) {
+        return f.color == yellow && f.path.contains(*gap);
+    }));
+    const QImage image = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    const QColor shown = image.pixelColor(int(std::lround(gap->x())), int(std::lround(gap->y())));
+    QVERIFY2(shown.red() > 200 && shown.green() > 150 && shown.blue() < 100,
+             qPrintable(shown.name()));
 }
 
 void TestSkeletonRig::duplicateFrameCopiesSkeletonAndPose()

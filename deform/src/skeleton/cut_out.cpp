@@ -5,6 +5,7 @@
 #include <finbook/deform/skeleton/cut_out.h>
 #include <finbook/geometry/mesh_boundary.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -66,31 +67,47 @@ MeshGraph meshGraph(Eigen::Index n, const Eigen::MatrixX3i &F)
     return g;
 }
 
-// The outline point nearest p on each side of the line through p along d (left: positive
-// cross product), as distances and points; infinity where a side has none.
-struct Contacts {
-    double left = std::numeric_limits<double>::infinity(), right = left;
-    Vec leftPoint = Vec::Zero(), rightPoint = Vec::Zero();
+double angleOf(const Vec &v)
+{
+    return std::atan2(v.y(), v.x());
+}
+
+// The angle from `from` to `to`, counter-clockwise, in [0, 2π).
+double ccw(double from, double to)
+{
+    const double d = std::fmod(to - from, 2.0 * M_PI);
+    return d < 0.0 ? d + 2.0 * M_PI : d;
+}
+
+// The outline point nearest p in the counter-clockwise sector of directions from angle `from`
+// spanning `span` (ends excluded): each outline edge's point nearest p, or an end of it, where
+// that lies in the sector. Infinite distance where there is none.
+struct Contact {
+    double distance = std::numeric_limits<double>::infinity();
+    Vec point = Vec::Zero();
 };
 
-Contacts nearestContacts(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &p, const Vec &d)
+Contact nearestInSector(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &p, double from,
+                        double span)
 {
-    Contacts out;
+    Contact out;
+    const auto consider = [&](const Vec &q) {
+        const double distance = (q - p).norm();
+        if (distance >= out.distance || distance == 0.0)
+            return;
+        const double turn = ccw(from, angleOf(q - p));
+        if (turn > 0.0 && turn < span) {
+            out.distance = distance;
+            out.point = q;
+        }
+    };
     for (const auto &[a, b] : g.boundary) {
         const Vec s = V.row(a).transpose(), e = V.row(b).transpose();
         const Vec se = e - s;
         const double length2 = se.squaredNorm();
         const double t = length2 > 0.0 ? std::clamp((p - s).dot(se) / length2, 0.0, 1.0) : 0.0;
-        const Vec q = s + t * se;
-        const double distance = (q - p).norm();
-        const double side = cross(d, q - p);
-        if (side > 0.0 && distance < out.left) {
-            out.left = distance;
-            out.leftPoint = q;
-        } else if (side < 0.0 && distance < out.right) {
-            out.right = distance;
-            out.rightPoint = q;
-        }
+        consider(s + t * se);
+        consider(s);
     }
     return out;
 }
@@ -99,11 +116,7 @@ Contacts nearestContacts(const Eigen::MatrixX2d &V, const MeshGraph &g, const Ve
 // sectors between the directions to a and to b that holds `outward`.
 bool pastCut(const Vec &x, const Vec &pivot, const Vec &a, const Vec &b, const Vec &outward)
 {
-    const auto angle = [&](const Vec &v) { return std::atan2(v.y(), v.x()); };
-    const auto ccw = [](double from, double to) { // angle from `from` to `to`, in [0, 2π)
-        double d = std::fmod(to - from, 2.0 * M_PI);
-        return d < 0.0 ? d + 2.0 * M_PI : d;
-    };
+    const auto angle = angleOf;
     const double fromB = angle(b - pivot), span = ccw(fromB, angle(a - pivot));
     const bool outwardInside = ccw(fromB, angle(outward)) < span;
     return (ccw(fromB, angle(x - pivot)) < span) == outwardInside;
@@ -191,46 +204,9 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
     for (Eigen::Index o = 0; o < skeleton.jointCount(); ++o)
         nearestVertex[std::size_t(o)] = nearestWhere(V, graph, skeleton.joints.row(o).transpose(),
                                                      [](const Vec &) { return true; });
-    for (Eigen::Index k = 0; k < skeleton.jointCount(); ++k) {
-        const int j = skeleton.order(k);
-        const int parent = skeleton.parent(j);
-        const auto js = std::size_t(j);
-        if (parent < 0 || children.start[js + 1] - children.start[js] != 1)
-            continue;
-        const double r = radius(j);
-        if (!(std::isfinite(r) && r > 0.0))
-            continue;
-        const int child = children.child[std::size_t(children.start[js])];
-        const Vec pivot = skeleton.joints.row(j).transpose();
-        const Vec in = pivot - skeleton.joints.row(parent).transpose();
-        const Vec outward = skeleton.joints.row(child).transpose() - pivot;
-        if (in.norm() == 0.0 || outward.norm() == 0.0)
-            continue;
-        // The cut runs from the outline nearest the joint on one side of the child bone,
-        // through the joint, to the nearest on the other: where the joint's inscribed circle
-        // touches the outline, so the limb keeps a round end.
-        const Contacts contacts = nearestContacts(V, graph, pivot, outward);
-        const double reach = options.reach * r;
-        if (!(contacts.left <= reach && contacts.right <= reach))
-            continue;
-        const Vec toLeft = contacts.leftPoint - pivot, toRight = contacts.rightPoint - pivot;
-        // A hair past the outline, so the outline edges it ends on count as crossed.
-        const double margin = 1e-6 * r;
-        const Vec a = contacts.leftPoint + margin * toLeft.normalized();
-        const Vec b = contacts.rightPoint + margin * toRight.normalized();
-        const auto past = [&](const Vec &x) { return pastCut(x, pivot, a, b, outward); };
-        const int seed = nearestWhere(V, graph, pivot + 0.5 * r * outward.normalized(), past);
-        const int stop = nearestWhere(V, graph, pivot - 0.5 * r * in.normalized(),
-                                      [&](const Vec &x) { return !past(x); });
-        if (seed < 0 || stop < 0)
-            continue;
-        // The flood must reach neither the parent's side of the joint nor any joint outside
-        // the child's subtree (a cut whose sides close round into a sharp V would otherwise
-        // take the whole body for the limb).
-        std::vector<char> stops(std::size_t(n), 0);
-        stops[std::size_t(stop)] = 1;
+    const auto subtreeOf = [&](int top) {
         std::vector<char> below(std::size_t(skeleton.jointCount()), 0);
-        std::vector<int> pending{child};
+        std::vector<int> pending{top};
         while (!pending.empty()) {
             const int c = pending.back();
             pending.pop_back();
@@ -239,6 +215,51 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
                  ++i)
                 pending.push_back(children.child[std::size_t(i)]);
         }
+        return below;
+    };
+    const auto childCount = [&](int j) {
+        return children.start[std::size_t(j) + 1] - children.start[std::size_t(j)];
+    };
+    // A limb: the chain of bones from `top` out to a tip, with no junction on it.
+    const auto isChain = [&](int top) {
+        for (int c = top;;) {
+            const int count = childCount(c);
+            if (count == 0)
+                return true;
+            if (count > 1)
+                return false;
+            c = children.child[std::size_t(children.start[std::size_t(c)])];
+        }
+    };
+    struct Candidate {
+        int child = -1;
+        Vec a, b;
+        std::vector<char> flooded;
+        int size = 0;
+    };
+    // The vertices past the cut a → joint j → b towards `child`, or empty when that cut does
+    // not separate: the flood from the child's side must reach no vertex just beside the
+    // joint towards `others` (its other bones) and no joint outside the child's subtree (a cut
+    // whose sides close round into a sharp V would otherwise take the whole body for the limb).
+    const auto tryCut = [&](int j, int child, const Vec &a, const Vec &b,
+                            const std::vector<Vec> &others) -> Candidate {
+        const Vec pivot = skeleton.joints.row(j).transpose();
+        const Vec outward = skeleton.joints.row(child).transpose() - pivot;
+        const double r = radius(j);
+        const auto past = [&](const Vec &x) { return pastCut(x, pivot, a, b, outward); };
+        const int seed = nearestWhere(V, graph, pivot + 0.5 * r * outward.normalized(), past);
+        if (seed < 0)
+            return {};
+        std::vector<char> stops(std::size_t(n), 0);
+        for (const Vec &towards : others) {
+            const int stop = nearestWhere(V, graph, pivot + 0.5 * r * towards.normalized(),
+                                          [&](const Vec &x) { return !past(x); });
+            if (stop < 0)
+                return {};
+            stops[std::size_t(stop)] = 1;
+        }
+        const std::vector<char> below = subtreeOf(child);
+        const double reach = options.reach * r;
         for (Eigen::Index o = 0; o < skeleton.jointCount(); ++o) {
             const Vec at = skeleton.joints.row(o).transpose();
             if (below[std::size_t(o)] || (at - pivot).norm() <= reach)
@@ -247,26 +268,134 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
             if (v >= 0 && v != seed)
                 stops[std::size_t(v)] = 1;
         }
-        const std::vector<char> flooded = floodPast(V, graph, a, pivot, b, seed, stops);
-        if (flooded.empty())
-            continue;
+        Candidate found{child, a, b, floodPast(V, graph, a, pivot, b, seed, stops), 0};
+        found.size = int(std::count(found.flooded.begin(), found.flooded.end(), char(1)));
+        return found;
+    };
+    const auto commit = [&](int j, const Candidate &cut) {
+        const Vec pivot = skeleton.joints.row(j).transpose();
+        const Vec outward = skeleton.joints.row(cut.child).transpose() - pivot;
         const int index = int(out.cuts.size());
         bool any = false;
         for (Eigen::Index t = 0; t < F.rows(); ++t) {
-            const int inside = flooded[std::size_t(F(t, 0))] + flooded[std::size_t(F(t, 1))] +
-                               flooded[std::size_t(F(t, 2))];
+            const int inside = cut.flooded[std::size_t(F(t, 0))] +
+                               cut.flooded[std::size_t(F(t, 1))] +
+                               cut.flooded[std::size_t(F(t, 2))];
             bool mine = inside == 3;
             if (inside == 1 || inside == 2) {
                 const Vec c = (V.row(F(t, 0)) + V.row(F(t, 1)) + V.row(F(t, 2))).transpose() / 3.0;
-                mine = past(c);
+                mine = pastCut(c, pivot, cut.a, cut.b, outward);
             }
             if (mine) {
                 out.piece(t) = index;
                 any = true;
             }
         }
-        if (any)
-            out.cuts.push_back({j, a, b});
+        if (!any)
+            return;
+        double round = std::numeric_limits<double>::infinity();
+        for (const auto &[s, e] : graph.boundary) {
+            const Vec p = V.row(s).transpose(), q = V.row(e).transpose();
+            const Vec d = q - p;
+            const double length2 = d.squaredNorm();
+            const double t =
+                length2 > 0.0 ? std::clamp((pivot - p).dot(d) / length2, 0.0, 1.0) : 0.0;
+            round = std::min(round, (p + t * d - pivot).norm());
+        }
+        out.cuts.push_back({j, cut.child, cut.a, cut.b, std::isfinite(round) ? round : 0.0});
+    };
+    for (Eigen::Index k = 0; k < skeleton.jointCount(); ++k) {
+        const int j = skeleton.order(k);
+        const int parent = skeleton.parent(j);
+        const auto js = std::size_t(j);
+        const double r = radius(j);
+        if (!(std::isfinite(r) && r > 0.0))
+            continue;
+        const Vec pivot = skeleton.joints.row(j).transpose();
+        // A hair past the outline, so the outline edges a cut ends on count as crossed.
+        const double margin = 1e-6 * r;
+        const auto beyond = [&](const Vec &contact) {
+            return Vec(contact + margin * (contact - pivot).normalized());
+        };
+        const double reach = options.reach * r;
+        const auto within = [&](double a, double b) {
+            return std::min(a, b) <= reach && std::max(a, b) <= options.farReach * r;
+        };
+        if (parent >= 0 && childCount(j) == 1) {
+            const int child = children.child[std::size_t(children.start[js])];
+            const Vec in = pivot - skeleton.joints.row(parent).transpose();
+            const Vec outward = skeleton.joints.row(child).transpose() - pivot;
+            if (in.norm() == 0.0 || outward.norm() == 0.0)
+                continue;
+            // The cut runs from the outline nearest the joint on one side of the child bone,
+            // through the joint, to the nearest on the other: where the joint's inscribed
+            // circle touches the outline, so the limb keeps a round end.
+            const double at = angleOf(outward), side = options.sideAngle;
+            const Contact a = nearestInSector(V, graph, pivot, at, side);
+            const Contact b = nearestInSector(V, graph, pivot, at - side, side);
+            if (!within(a.distance, b.distance))
+                continue;
+            const Candidate cut = tryCut(j, child, beyond(a.point), beyond(b.point), {-in});
+            if (!cut.flooded.empty())
+                commit(j, cut);
+            continue;
+        }
+        if (childCount(j) < 2)
+            continue;
+        // A junction (or a root between two or more bones): each limb hanging from it is cut
+        // between its bone and the neighbouring bones on either side.
+        std::vector<Vec> bones; // from the joint to each neighbour: its children, then parent
+        std::vector<int> ends;
+        for (int i = children.start[js]; i < children.start[js + 1]; ++i) {
+            const int c = children.child[std::size_t(i)];
+            bones.push_back(skeleton.joints.row(c).transpose() - pivot);
+            ends.push_back(c);
+        }
+        if (parent >= 0) {
+            bones.push_back(skeleton.joints.row(parent).transpose() - pivot);
+            ends.push_back(parent);
+        }
+        if (std::any_of(bones.begin(), bones.end(), [](const Vec &d) { return d.norm() == 0.0; }))
+            continue;
+        std::vector<Candidate> found;
+        int limbs = 0;
+        for (std::size_t i = 0; i + (parent >= 0 ? 1 : 0) < bones.size(); ++i) {
+            if (!isChain(ends[i]))
+                continue;
+            ++limbs;
+            // A limb already narrower at its first joint is cut there, where it leaves the
+            // body, not again at the junction.
+            if (childCount(ends[i]) == 1 && radius(ends[i]) < 0.8 * r)
+                continue;
+            const double at = angleOf(bones[i]);
+            double left = 2.0 * M_PI, right = 2.0 * M_PI; // to the next bone each way
+            for (std::size_t o = 0; o < bones.size(); ++o) {
+                if (o == i)
+                    continue;
+                const double other = angleOf(bones[o]);
+                left = std::min(left, ccw(at, other));
+                right = std::min(right, ccw(other, at));
+            }
+            const Contact a = nearestInSector(V, graph, pivot, at, left);
+            const Contact b = nearestInSector(V, graph, pivot, at - right, right);
+            if (!within(a.distance, b.distance))
+                continue;
+            std::vector<Vec> others;
+            for (std::size_t o = 0; o < bones.size(); ++o)
+                if (o != i)
+                    others.push_back(bones[o]);
+            Candidate cut = tryCut(j, ends[i], beyond(a.point), beyond(b.point), others);
+            if (!cut.flooded.empty())
+                found.push_back(std::move(cut));
+        }
+        // At a root whose every bone is a limb, the heaviest stays as the body.
+        if (parent < 0 && !found.empty() && limbs == int(bones.size()) &&
+            int(found.size()) == limbs)
+            found.erase(std::max_element(
+                found.begin(), found.end(),
+                [](const Candidate &x, const Candidate &y) { return x.size < y.size; }));
+        for (const Candidate &cut : found)
+            commit(j, cut);
     }
     if (out.cuts.empty())
         return out;
@@ -325,28 +454,35 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
         for (int c = 0; c < 3; ++c)
             pieceOf[std::size_t(out.F(t, c))] = out.piece(t);
     out.outlines.resize(out.cuts.size());
-    for (const Eigen::VectorXi &loop : geometry::boundaryLoops(out.F)) {
+    const std::vector<Eigen::VectorXi> loops = geometry::boundaryLoops(out.F);
+    for (const Eigen::VectorXi &loop : loops) {
         const int piece = pieceOf[std::size_t(loop(0))];
         if (piece >= 0)
             out.outlines[std::size_t(piece)].emplace_back(loop.data(), loop.data() + loop.size());
+    }
+    const Eigen::VectorXi bones = bonePieces(skeleton, out);
+    out.parentPiece.assign(out.cuts.size(), -1);
+    for (std::size_t c = 0; c < out.cuts.size(); ++c) {
+        const int j = out.cuts[c].joint;
+        out.parentPiece[c] = skeleton.parent(j) >= 0 ? bones(j) : -1;
     }
     return out;
 }
 
 Eigen::VectorXi bonePieces(const Skeleton &skeleton, const CutMesh &cut)
 {
-    std::vector<int> cutIndex(std::size_t(skeleton.jointCount()), -1);
+    std::vector<int> cutOf(std::size_t(skeleton.jointCount()), -1); // by the bone it starts
     for (std::size_t c = 0; c < cut.cuts.size(); ++c) {
-        const int j = cut.cuts[c].joint;
+        const int j = cut.cuts[c].child;
         if (j >= 0 && j < skeleton.jointCount())
-            cutIndex[std::size_t(j)] = int(c);
+            cutOf[std::size_t(j)] = int(c);
     }
     Eigen::VectorXi piece = Eigen::VectorXi::Constant(skeleton.jointCount(), -1);
     for (Eigen::Index k = 0; k < skeleton.jointCount(); ++k) {
         const int j = skeleton.order(k);
         const int p = skeleton.parent(j);
         if (p >= 0)
-            piece(j) = cutIndex[std::size_t(p)] >= 0 ? cutIndex[std::size_t(p)] : piece(p);
+            piece(j) = cutOf[std::size_t(j)] >= 0 ? cutOf[std::size_t(j)] : piece(p);
     }
     return piece;
 }
@@ -366,12 +502,8 @@ SkinningWeights cutOutWeights(const SkinningWeights &weights, const Skeleton &sk
             vertexPiece(cut.F(t, c)) = cut.piece(t);
     // The first bone of each cut's piece (the bone leaving the cut joint).
     std::vector<int> firstBone(cut.cuts.size(), -1);
-    for (Eigen::Index j = 0; j < skeleton.jointCount(); ++j) {
-        const int p = skeleton.parent(j);
-        for (std::size_t c = 0; c < cut.cuts.size(); ++c)
-            if (p == cut.cuts[c].joint)
-                firstBone[c] = int(j);
-    }
+    for (std::size_t c = 0; c < cut.cuts.size(); ++c)
+        firstBone[c] = cut.cuts[c].child;
     for (Eigen::Index v = 0; v < n; ++v) {
         const int source = cut.source(v);
         const int piece = vertexPiece(v);

@@ -36,6 +36,25 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
             layer.fills.push_back(std::move(clipped));
         }
     }
+    // Sockets (round joints): painted on the piece above each cut (over its fills, under its
+    // strokes) in the colour of the limb's fill that meets the socket, so a turned limb leaves
+    // no gap at its joint.
+    for (std::size_t k = 0; k < pieces && k < posed->sockets.size(); ++k) {
+        const QPainterPath &socket = posed->sockets[k];
+        if (socket.isEmpty() || k >= posed->socketAbove.size())
+            continue;
+        const std::vector<FillItem> &limb = layers[k + 1].fills;
+        const auto colour = std::find_if(limb.rbegin(), limb.rend(), [&](const FillItem &fill) {
+            return fill.path.intersects(socket);
+        });
+        if (colour == limb.rend())
+            continue;
+        FillItem fill;
+        fill.path = socket;
+        fill.color = colour->color;
+        layers[std::size_t(std::clamp(posed->socketAbove[k] + 1, 0, int(pieces)))].fills.push_back(
+            std::move(fill));
+    }
     // The strokes: each item (a displayed stroke, folded repeats included) split into runs of
     // segments that moved with one piece; a segment across a cut goes with the deeper piece.
     const std::vector<PaintItem> items = std::move(layers[0].strokes);

@@ -2,6 +2,7 @@
 // generic deform setup dispatches to.
 #include "../deformation_text.h"
 
+#include <finbook/geometry/embedding.h>
 #include <finbook/model/skeleton/skeleton_setup.h>
 
 #include <algorithm>
@@ -136,6 +137,28 @@ buildSkeletonSetup(const MeshedObject &meshed, const SkeletonRig &rig,
         if (!cut)
             return unexpected(Deformation::tr("The skeleton cannot skin this drawing: %1")
                                   .arg(message(cut.error())));
+        // The round ends reach the strokes' centre lines, where the fills end, not the mesh's
+        // outline (a little way outside the ink): at rest a socket lies under the fill.
+        const Eigen::MatrixX2d points = geometry::applyEmbedding(meshed.embedding, V, F);
+        for (deform::JointCut &at : cut->cuts) {
+            if (at.joint < 0 || at.joint >= setup->skeleton.jointCount())
+                continue;
+            const Eigen::Vector2d c = setup->skeleton.joints.row(at.joint).transpose();
+            for (std::size_t s = 0; s + 1 < meshed.strokeOffsets.size(); ++s) {
+                const auto first = Eigen::Index(meshed.strokeOffsets[s]);
+                const auto end = std::min(Eigen::Index(meshed.strokeOffsets[s + 1]), points.rows());
+                for (Eigen::Index i = first; i < end; ++i) {
+                    const Eigen::Vector2d p = points.row(i).transpose();
+                    const Eigen::Vector2d d =
+                        i + 1 < end ? Eigen::Vector2d(points.row(i + 1).transpose() - p)
+                                    : Eigen::Vector2d::Zero();
+                    const double length2 = d.squaredNorm();
+                    const double t =
+                        length2 > 0.0 ? std::clamp((c - p).dot(d) / length2, 0.0, 1.0) : 0.0;
+                    at.round = std::min(at.round, (p + t * d - c).norm());
+                }
+            }
+        }
         const deform::SkinningWeights pieces =
             deform::cutOutWeights(*setup->weights, setup->skeleton, *cut);
         auto rigid = deform::rigidSkinPrecompute(
@@ -159,7 +182,7 @@ buildSkeletonSetup(const MeshedObject &meshed, const SkeletonRig &rig,
 }
 
 void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
-                     const Eigen::MatrixX2d &U, DeformedStrokes &out)
+                     const Eigen::MatrixX2d &U, const SkeletonRig &rig, DeformedStrokes &out)
 {
     if (!setup.cut || setup.cut->cuts.empty() || U.rows() != setup.cut->V.rows())
         return;
@@ -188,6 +211,18 @@ void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
                 path.lineTo(U(loop[i], 0), U(loop[i], 1));
             path.closeSubpath();
         }
+    }
+    // Each cut's round end, at its joint as posed (the same from either piece).
+    out.sockets.assign(cut.cuts.size(), QPainterPath());
+    out.socketAbove.assign(cut.cuts.size(), -1);
+    const auto posed = posedSkinningSkeleton(setup.skeleton, rig);
+    for (std::size_t piece = 0; piece < cut.cuts.size(); ++piece) {
+        out.socketAbove[piece] = piece < cut.parentPiece.size() ? cut.parentPiece[piece] : -1;
+        const deform::JointCut &at = cut.cuts[piece];
+        if (!posed || at.round <= 0.0 || at.joint < 0 || at.joint >= posed->joints.rows())
+            continue;
+        const Eigen::Vector2d c = posed->joints.row(at.joint).transpose();
+        out.sockets[piece].addEllipse(QPointF(c.x(), c.y()), at.round, at.round);
     }
 }
 

@@ -108,6 +108,11 @@ struct DeformedStrokes {
     // outline as posed (non-zero rule). Both empty for every other pose.
     std::vector<std::vector<std::int16_t>> pieceOf;
     std::vector<QPainterPath> pieces;
+    // Per cut piece, its socket as posed (deform/skeleton/cut_out.h: the cut's round end, a
+    // disk at its joint, painted on the piece above it in the limb's fill) and the piece
+    // above it (−1 the roots'). Empty paths where a cut has no round end.
+    std::vector<QPainterPath> sockets;
+    std::vector<int> socketAbove;
     friend bool operator==(const DeformedStrokes &, const DeformedStrokes &) = default;
 };
 using DeformedStrokesPtr = std::shared_ptr<const DeformedStrokes>;

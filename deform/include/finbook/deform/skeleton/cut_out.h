@@ -8,9 +8,17 @@
 // opposite sides of the joint, and that cut separates the mesh: what lies past it (flooded
 // from the child bone's side without crossing it) does not reach back round to the parent's
 // side.
-// Junctions (two or more children), tips, roots and joints in the middle of a wide shape are
-// not cut; the skinning blends across them as before. Cut pieces nest: an elbow's piece lies
-// inside its shoulder's.
+// At a junction (two or more children, or the root) each limb hanging from it (a chain of
+// bones out to a tip) is cut the same way, its contacts taken between its bone and the
+// neighbouring bones on either side, so the limb turns there as a piece over the body; at the
+// root one limb, the heaviest, stays with the body when every child is such a limb. Tips and
+// joints in the middle of a wide shape are not cut; the skinning blends across them as before.
+// Cut pieces nest: an elbow's piece lies inside its shoulder's.
+//
+// Each cut has a round end: the disk round its joint that touches the outline. It lies inside
+// the drawing and turns onto itself with either piece; painted under a turned limb in the
+// limb's colour (a socket) it closes the gap on the outer side of the bend, as a cut-out
+// puppet's round joint does.
 //
 // The cut mesh keeps every triangle, in the same order (so a point embedded in the mesh keeps
 // its triangle and barycentric coordinates); a vertex whose triangles lie in different pieces
@@ -33,12 +41,22 @@ namespace finbook::deform {
 struct CutOutOptions {
     // A cut's ends may lie at most this many inscribed radii from its joint.
     double reach = 1.75;
+    // ...but one of them may lie up to this many when the other is within `reach`: a limb
+    // leaving the body at a slant (a tail off the rump) meets the body's outline far off on
+    // its outer side.
+    double farReach = 3.0;
+    // Each end is looked for on its side of the child bone within this angle of it
+    // (radians): not behind the joint, where the outline of a limb leaving at a slant runs
+    // on along the body.
+    double sideAngle = 0.75 * 3.14159265358979323846;
 };
 
 struct JointCut {
     int joint = -1;                              // the joint cut (its child bone's pivot)
+    int child = -1;                              // the child joint whose bone the piece starts
     Eigen::Vector2d a = Eigen::Vector2d::Zero(); // the cut runs from a through the joint to b
     Eigen::Vector2d b = Eigen::Vector2d::Zero();
+    double round = 0.0; // the joint's round end: its distance to the outline (the socket's disk)
 };
 
 struct CutMesh {
@@ -52,6 +70,8 @@ struct CutMesh {
     // Per cut piece (cuts' order), its outline: loops of V rows as its triangles run (the
     // shape's outline and the cuts), for drawing the piece over the ones before it.
     std::vector<std::vector<std::vector<int>>> outlines;
+    // Per cut, the piece above it (−1 the roots').
+    std::vector<int> parentPiece;
     int pieceCount() const { return int(cuts.size()) + 1; }
 };
 
@@ -63,8 +83,8 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
                                            const Skeleton &skeleton, const Eigen::VectorXd &radius,
                                            const CutOutOptions &options = {});
 
-// The piece each joint's bone belongs to (−1 for the roots' piece): bone j lies below the
-// deepest cut joint among its ancestors (j's parent included). J entries.
+// The piece each joint's bone belongs to (−1 for the roots' piece): bone j lies in the piece
+// of the cut that starts with it, else in its parent's bone's piece. J entries.
 Eigen::VectorXi bonePieces(const Skeleton &skeleton, const CutMesh &cut);
 
 // Weights of the cut mesh: each vertex keeps only the handles of its piece, renormalised (a

@@ -47,9 +47,10 @@ buildSkeletonSetup(const MeshedObject &meshed, const SkeletonRig &rig,
 // For a cut-out setup (setup.cut), the pieces of the pose U (its solveSkeleton vertices) that
 // paintLayers draws one over the other: DeformedStrokes::pieceOf from each stroke point's
 // triangle, DeformedStrokes::pieces from each cut piece's outline. `out.strokes` must hold
-// the object's strokes in the embedding's order. Other setups leave `out` as it is.
+// the object's strokes in the embedding's order; DeformedStrokes::sockets from each cut's
+// socket moved by the bone above it in `rig`'s pose. Other setups leave `out` as it is.
 void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
-                     const Eigen::MatrixX2d &U, DeformedStrokes &out);
+                     const Eigen::MatrixX2d &U, const SkeletonRig &rig, DeformedStrokes &out);
 
 // Deformed mesh vertices (n×2) for the rig's pose in its skinning mode. `rig` must have the
 // setup's rest joints.
