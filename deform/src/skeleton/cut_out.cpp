@@ -459,6 +459,8 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
         const int piece = pieceOf[std::size_t(loop(0))];
         if (piece >= 0)
             out.outlines[std::size_t(piece)].emplace_back(loop.data(), loop.data() + loop.size());
+        else
+            out.rootOutline.emplace_back(loop.data(), loop.data() + loop.size());
     }
     const Eigen::VectorXi bones = bonePieces(skeleton, out);
     out.parentPiece.assign(out.cuts.size(), -1);

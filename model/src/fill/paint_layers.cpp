@@ -3,6 +3,7 @@
 #include <finbook/model/fill/fill_render.h>
 
 #include <algorithm>
+#include <optional>
 
 namespace finbook::model {
 
@@ -18,22 +19,58 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         return layers;
     const std::size_t pieces = posed->pieces.size();
     layers.resize(pieces + 1);
-    for (std::size_t k = 0; k < pieces; ++k) {
-        PaintLayer &layer = layers[k + 1];
-        for (const FillItem &fill : layers[0].fills) {
+    // A piece that moved rigidly takes the rest fills moved with it, clipped to its outline:
+    // whole, however far the pieces round it turned (the fills as posed follow the strokes,
+    // and the lines across a cut stretch them into twists that leave holes). Any other cut
+    // piece clips the fills as posed.
+    const bool rigid =
+        posed->motions.size() == pieces + 1 &&
+        std::any_of(posed->motions.begin(), posed->motions.end(),
+                    [](const std::optional<QTransform> &m) { return m.has_value(); });
+    std::vector<FillItem> rest;
+    if (rigid) {
+        StrokeGroup still = group;
+        still.deformed.reset();
+        rest = fillList(still, settings, options);
+        if (rest.size() != layers[0].fills.size())
+            rest.clear();
+    }
+    const std::vector<FillItem> shown = std::move(layers[0].fills);
+    layers[0].fills.clear();
+    for (std::size_t layer = 0; layer <= pieces; ++layer) {
+        const QPainterPath *outline = layer > 0               ? &posed->pieces[layer - 1]
+                                      : posed->body.isEmpty() ? nullptr
+                                                              : &posed->body;
+        const std::optional<QTransform> motion =
+            layer < posed->motions.size() ? posed->motions[layer] : std::nullopt;
+        const bool moved = motion && outline && !rest.empty();
+        // The body's layer starts with every fill as posed: under the pieces' own fills it
+        // leaves no seam along the cuts (and the lines across a cut still close the outline).
+        if (layer == 0) {
+            layers[0].fills = shown;
+            if (!moved)
+                continue;
+        }
+        const std::vector<FillItem> &source = moved ? rest : shown;
+        const auto place = [&](const QPainterPath &path) {
+            QPainterPath placed = moved ? motion->map(path) : path;
+            placed.setFillRule(Qt::WindingFill);
+            return outline ? placed.intersected(*outline) : placed;
+        };
+        for (const FillItem &fill : source) {
             FillItem clipped;
-            clipped.path = fill.path.intersected(posed->pieces[k]);
+            clipped.path = place(fill.path);
             if (clipped.path.isEmpty())
                 continue;
             clipped.path.setFillRule(Qt::WindingFill);
             clipped.color = fill.color;
             for (const ToneItem &tone : fill.tones) {
                 ToneItem part = tone;
-                part.path = tone.path.intersected(posed->pieces[k]);
+                part.path = place(tone.path);
                 if (!part.path.isEmpty())
                     clipped.tones.push_back(std::move(part));
             }
-            layer.fills.push_back(std::move(clipped));
+            layers[layer].fills.push_back(std::move(clipped));
         }
     }
     // Sockets (round joints): painted on the piece above each cut (over its fills, under its

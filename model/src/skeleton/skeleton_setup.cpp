@@ -212,6 +212,66 @@ void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
             path.closeSubpath();
         }
     }
+    out.body = QPainterPath();
+    out.body.setFillRule(Qt::WindingFill);
+    for (const std::vector<int> &loop : cut.rootOutline) {
+        if (loop.empty())
+            continue;
+        out.body.moveTo(U(loop[0], 0), U(loop[0], 1));
+        for (std::size_t i = 1; i < loop.size(); ++i)
+            out.body.lineTo(U(loop[i], 0), U(loop[i], 1));
+        out.body.closeSubpath();
+    }
+    // Each piece's motion where it is rigid (2D Procrustes of its vertices, rest → posed).
+    const int layers = int(cut.cuts.size()) + 1;
+    std::vector<std::vector<int>> members;
+    members.resize(std::size_t(layers));
+    {
+        std::vector<char> seen(std::size_t(cut.V.rows()), 0);
+        for (Eigen::Index t = 0; t < cut.F.rows(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const int v = cut.F(t, k);
+                if (!seen[std::size_t(v)]) {
+                    seen[std::size_t(v)] = 1;
+                    members[std::size_t(std::clamp(cut.piece(t) + 1, 0, layers - 1))].push_back(v);
+                }
+            }
+    }
+    out.motions.assign(std::size_t(layers), std::nullopt);
+    for (int layer = 0; layer < layers; ++layer) {
+        const std::vector<int> &vs = members[std::size_t(layer)];
+        if (vs.empty())
+            continue;
+        Eigen::Vector2d restMean = Eigen::Vector2d::Zero(), posedMean = Eigen::Vector2d::Zero();
+        for (int v : vs) {
+            restMean += cut.V.row(v).transpose();
+            posedMean += U.row(v).transpose();
+        }
+        restMean /= double(vs.size());
+        posedMean /= double(vs.size());
+        double dot = 0.0, cross = 0.0, extent = 0.0;
+        for (int v : vs) {
+            const Eigen::Vector2d r = cut.V.row(v).transpose() - restMean;
+            const Eigen::Vector2d p = U.row(v).transpose() - posedMean;
+            dot += r.dot(p);
+            cross += r.x() * p.y() - r.y() * p.x();
+            extent = std::max(extent, r.norm());
+        }
+        const double angle = std::atan2(cross, dot);
+        const double c = std::cos(angle), s = std::sin(angle);
+        const Eigen::Vector2d t = posedMean - Eigen::Vector2d(c * restMean.x() - s * restMean.y(),
+                                                              s * restMean.x() + c * restMean.y());
+        double worst = 0.0;
+        for (int v : vs) {
+            const Eigen::Vector2d r = cut.V.row(v).transpose();
+            const Eigen::Vector2d moved(c * r.x() - s * r.y() + t.x(),
+                                        s * r.x() + c * r.y() + t.y());
+            worst = std::max(worst, (moved - U.row(v).transpose()).norm());
+        }
+        // Rigid to within a hundredth of a pixel (a piece with a bent joint inside is not).
+        if (std::isfinite(worst) && worst <= 0.01 && std::isfinite(extent))
+            out.motions[std::size_t(layer)] = QTransform(c, s, -s, c, t.x(), t.y());
+    }
     // Each cut's round end, at its joint as posed (the same from either piece).
     out.sockets.assign(cut.cuts.size(), QPainterPath());
     out.socketAbove.assign(cut.cuts.size(), -1);

@@ -12,9 +12,11 @@
 #include <QPointF>
 #include <QSize>
 #include <QString>
+#include <QTransform>
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace finbook::model {
@@ -113,6 +115,11 @@ struct DeformedStrokes {
     // above it (−1 the roots'). Empty paths where a cut has no round end.
     std::vector<QPainterPath> sockets;
     std::vector<int> socketAbove;
+    // The roots' piece's outline as posed, and per piece (the roots', then each cut's) its
+    // motion where it moved rigidly: its fills are then the rest fills moved with it, whole
+    // however far the pieces around it turned.
+    QPainterPath body;
+    std::vector<std::optional<QTransform>> motions;
     friend bool operator==(const DeformedStrokes &, const DeformedStrokes &) = default;
 };
 using DeformedStrokesPtr = std::shared_ptr<const DeformedStrokes>;

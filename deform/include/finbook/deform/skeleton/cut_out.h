@@ -70,6 +70,8 @@ struct CutMesh {
     // Per cut piece (cuts' order), its outline: loops of V rows as its triangles run (the
     // shape's outline and the cuts), for drawing the piece over the ones before it.
     std::vector<std::vector<std::vector<int>>> outlines;
+    // The roots' piece's outline, as `outlines` (empty when nothing was cut).
+    std::vector<std::vector<int>> rootOutline;
     // Per cut, the piece above it (−1 the roots').
     std::vector<int> parentPiece;
     int pieceCount() const { return int(cuts.size()) + 1; }

@@ -31,7 +31,10 @@ std::vector<FillItem> fillList(const StrokeGroup &group, const DocumentSettings 
 // ones before: the roots' piece with every fill and the strokes' runs that stayed with it,
 // then each cut piece with the fills clipped to its outline and its own runs (the run across
 // a cut goes with the deeper piece: the limb's round end), so a limb turned over the body
-// hides the body's lines under it, as a cut-out puppet's paper limb does.
+// hides the body's lines under it, as a cut-out puppet's paper limb does. A piece that moved
+// rigidly (DeformedStrokes::motions) takes the rest fills moved with it, so no twist of the
+// posed fills opens a hole in it; each cut's socket (its round joint) is painted in the limb's
+// fill on the layer of the piece above it, over that layer's fills.
 struct PaintLayer {
     std::vector<FillItem> fills;
     std::vector<PaintItem> strokes;             // may point into runs
