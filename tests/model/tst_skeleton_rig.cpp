@@ -94,6 +94,22 @@ const DeformSetup *cutOutArm(Document &doc, DeformController &controller, Id g, 
     return setup;
 }
 
+// One closed outline: a 200 × 200 body with an arm 30 wide leaving its right side, filled
+// yellow, with its skeleton built.
+const QPolygonF kBodyAndArm{{100, 100}, {300, 100}, {300, 185}, {480, 185}, {480, 215},
+                            {300, 215}, {300, 300}, {100, 300}, {100, 100}};
+const QRgb yellow = qRgb(255, 204, 0);
+Id filledBodyAndArm(Document &doc)
+{
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, g, finbook::testing::polylineStroke(kBodyAndArm)));
+    doc.undoStack()->push(fillRegionCommand(&doc, g, {200, 200}, yellow).release());
+    buildSkeleton(doc, g);
+    return g;
+}
+
 // A terminal joint whose bone can turn (not a root).
 int terminalBone(const SkeletonRig &s)
 {
@@ -519,16 +535,9 @@ void TestSkeletonRig::cutOutTurnsALimbRigidlyOverAStillBody()
 
 void TestSkeletonRig::cutOutLimbHidesTheBodysLinesUnderIt()
 {
-    // One closed outline: a 200 × 200 body with an arm 30 wide leaving its right side, filled.
+    // The body and arm, filled; the arm turned at its base down over the body.
     Document doc;
-    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
-    const Id g = doc.frameAt(0).groups.at(0).id;
-    const QPolygonF outline{{100, 100}, {300, 100}, {300, 185}, {480, 185}, {480, 215},
-                            {300, 215}, {300, 300}, {100, 300}, {100, 100}};
-    doc.undoStack()->push(new AddStrokeCommand(&doc, g, finbook::testing::polylineStroke(outline)));
-    const QRgb yellow = qRgb(255, 204, 0);
-    doc.undoStack()->push(fillRegionCommand(&doc, g, {200, 200}, yellow).release());
-    buildSkeleton(doc, g);
+    const Id g = filledBodyAndArm(doc);
     DeformController controller(&doc);
     int base = -1;
     QVERIFY(cutOutArm(doc, controller, g, base));
@@ -577,14 +586,7 @@ void TestSkeletonRig::cutOutJointsStayRoundWhenTheyTurn()
     // (the socket) fills the gap the turn opens at the joint, where neither piece lies any
     // more; at rest the sockets change no pixel.
     Document doc;
-    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
-    const Id g = doc.frameAt(0).groups.at(0).id;
-    const QPolygonF outline{{100, 100}, {300, 100}, {300, 185}, {480, 185}, {480, 215},
-                            {300, 215}, {300, 300}, {100, 300}, {100, 100}};
-    doc.undoStack()->push(new AddStrokeCommand(&doc, g, finbook::testing::polylineStroke(outline)));
-    const QRgb yellow = qRgb(255, 204, 0);
-    doc.undoStack()->push(fillRegionCommand(&doc, g, {200, 200}, yellow).release());
-    buildSkeleton(doc, g);
+    const Id g = filledBodyAndArm(doc);
     const DocumentSettings &settings = doc.settings();
     const QImage flat = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
     DeformController controller(&doc);
@@ -599,8 +601,8 @@ void TestSkeletonRig::cutOutJointsStayRoundWhenTheyTurn()
     // The socket's disk touches the outline: its radius is the joint's distance to it.
     const QPointF joint = doc.group(g)->rig.skeleton.joints[std::size_t(base)];
     double toOutline = 1e9;
-    for (int i = 0; i + 1 < outline.size(); ++i) {
-        const QPointF a = outline[i], d = outline[i + 1] - a;
+    for (int i = 0; i + 1 < kBodyAndArm.size(); ++i) {
+        const QPointF a = kBodyAndArm[i], d = kBodyAndArm[i + 1] - a;
         const double t =
             std::clamp(QPointF::dotProduct(joint - a, d) / QPointF::dotProduct(d, d), 0.0, 1.0);
         toOutline = std::min(toOutline, QLineF(joint, a + t * d).length());
