@@ -19,11 +19,13 @@
 // zones moves rigidly with its bone, the zones are solved) with the Drag stage
 // (skeleton_arap), the two steps (skeleton_arap_two_step) and the converged Final stage
 // (skeleton_arap_final); and cutout_layers, the app's Cut-out mode (deform::cutAtJoints: the
-// mesh cut where limbs narrow, each piece skinned by its own bones): its outline crossings
-// count as folds only within one piece, those of two pieces are one drawn over the other
-// (layered); base_cut says whether the limb's base joint was cut. joint_cover_pct: the area
-// of the joint disk the drawing's outline covers (non-zero rule, lines across a cut running
-// straight from piece to piece, as the app draws them), % of rest.
+// mesh cut where limbs narrow or hang from a junction, each piece skinned by its own bones):
+// its outline crossings count as folds only within one piece (and not between edges from two
+// copies of one vertex, which touch in every pose), those of two pieces are one drawn over the
+// other (layered); base_cut says whether the limb's base joint was cut. joint_cover_pct: the
+// area of the joint disk the drawing's outline and the cuts' round joints cover (non-zero
+// rule, lines across a cut running straight from piece to piece, as the app draws them), % of
+// rest.
 // Per file and scheme one line with the skinning precompute's time (weights, cut, ARAP
 // factorization) and, cut, how many joints were cut.
 // --before: the skeleton without the animator rig (RefineOptions::animatorRig off). --only A,B:
