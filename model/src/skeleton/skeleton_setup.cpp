@@ -199,11 +199,11 @@ void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
             ++row;
         }
     }
-    out.pieces.assign(cut.cuts.size(), QPainterPath());
-    for (std::size_t piece = 0; piece < cut.outlines.size() && piece < out.pieces.size(); ++piece) {
-        QPainterPath &path = out.pieces[piece];
+    // Outline loops of V rows as a posed path (non-zero rule).
+    const auto posedPath = [&U](const std::vector<std::vector<int>> &loops) {
+        QPainterPath path;
         path.setFillRule(Qt::WindingFill);
-        for (const std::vector<int> &loop : cut.outlines[piece]) {
+        for (const std::vector<int> &loop : loops) {
             if (loop.empty())
                 continue;
             path.moveTo(U(loop[0], 0), U(loop[0], 1));
@@ -211,17 +211,12 @@ void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
                 path.lineTo(U(loop[i], 0), U(loop[i], 1));
             path.closeSubpath();
         }
-    }
-    out.body = QPainterPath();
-    out.body.setFillRule(Qt::WindingFill);
-    for (const std::vector<int> &loop : cut.rootOutline) {
-        if (loop.empty())
-            continue;
-        out.body.moveTo(U(loop[0], 0), U(loop[0], 1));
-        for (std::size_t i = 1; i < loop.size(); ++i)
-            out.body.lineTo(U(loop[i], 0), U(loop[i], 1));
-        out.body.closeSubpath();
-    }
+        return path;
+    };
+    out.pieces.assign(cut.cuts.size(), QPainterPath());
+    for (std::size_t piece = 0; piece < cut.outlines.size() && piece < out.pieces.size(); ++piece)
+        out.pieces[piece] = posedPath(cut.outlines[piece]);
+    out.body = posedPath(cut.rootOutline);
     // Each piece's motion where it is rigid (2D Procrustes of its vertices, rest → posed).
     const int layers = int(cut.cuts.size()) + 1;
     std::vector<std::vector<int>> members;
@@ -249,13 +244,12 @@ void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
         }
         restMean /= double(vs.size());
         posedMean /= double(vs.size());
-        double dot = 0.0, cross = 0.0, extent = 0.0;
+        double dot = 0.0, cross = 0.0;
         for (int v : vs) {
             const Eigen::Vector2d r = cut.V.row(v).transpose() - restMean;
             const Eigen::Vector2d p = U.row(v).transpose() - posedMean;
             dot += r.dot(p);
             cross += r.x() * p.y() - r.y() * p.x();
-            extent = std::max(extent, r.norm());
         }
         const double angle = std::atan2(cross, dot);
         const double c = std::cos(angle), s = std::sin(angle);
@@ -269,7 +263,7 @@ void addCutOutPieces(const SkeletonSetup &setup, const MeshedObject &meshed,
             worst = std::max(worst, (moved - U.row(v).transpose()).norm());
         }
         // Rigid to within a hundredth of a pixel (a piece with a bent joint inside is not).
-        if (std::isfinite(worst) && worst <= 0.01 && std::isfinite(extent))
+        if (std::isfinite(worst) && worst <= 0.01)
             out.motions[std::size_t(layer)] = QTransform(c, s, -s, c, t.x(), t.y());
     }
     // Each cut's round end, at its joint as posed (the same from either piece).
