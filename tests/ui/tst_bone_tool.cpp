@@ -543,7 +543,11 @@ void TestBoneTool::skeletonFollowsTheDrawingWhenShown()
     Fixture fx;
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
     fx.overlay->setShown(true);
+    // A new skeleton turns its limbs cut out; the user's other choice survives the rebuild.
+    QCOMPARE(fx.skeleton().mode, SkinningMode::CutOut);
+    fx.doc.undoStack()->push(new SetSkinningModeCommand(&fx.doc, fx.group, SkinningMode::Rigid));
     const SkeletonRig before = fx.skeleton();
+    QCOMPARE(before.mode, SkinningMode::Rigid);
     QVERIFY(leftmostJoint(before) > 120);
     const QByteArray start = serializeFinbook(fx.doc);
     const int count = fx.doc.undoStack()->count();
@@ -559,6 +563,7 @@ void TestBoneTool::skeletonFollowsTheDrawingWhenShown()
     auto expected =
         buildSkeletonRig(fx.object(), before.settings, before.joints[std::size_t(before.root)]);
     QVERIFY(expected);
+    expected->mode = before.mode;
     QCOMPARE(after, carryHandEdits(before, *expected));
     const QByteArray end = serializeFinbook(fx.doc);
     fx.doc.undoStack()->undo();
