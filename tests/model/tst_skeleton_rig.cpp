@@ -154,6 +154,7 @@ private slots:
     void cutOutTurnsALimbRigidlyOverAStillBody();
     void cutOutLimbHidesTheBodysLinesUnderIt();
     void cutOutJointsStayRoundWhenTheyTurn();
+    void cutOutOutlineRunsRoundATurnedJoint();
     void duplicateFrameCopiesSkeletonAndPose();
     void jointLocksAreOneStepAndSaved();
     void filesBeforeLocksOpenWithoutLocks();
@@ -699,6 +700,73 @@ void TestSkeletonRig::cutOutJointsStayRoundWhenTheyTurn()
         }
     QVERIFY(inArm > 200);
     QVERIFY2(holes == 0, qPrintable(QStringLiteral("%1 of %2").arg(holes).arg(inArm)));
+}
+
+void TestSkeletonRig::cutOutOutlineRunsRoundATurnedJoint()
+{
+    // The body and arm above, the arm turned 100° at its base. Where the outline crosses the
+    // cut, each piece's part of it ends where it met the cut at rest, and an arc round the
+    // joint joins the two ends: on the side the turn opens, the ink runs round the joint at
+    // the distance the outline had from it, not along a chord across the turn.
+    Document doc;
+    const Id g = filledBodyAndArm(doc);
+    const DocumentSettings &settings = doc.settings();
+    DeformController controller(&doc);
+    int base = -1;
+    const DeformSetup *setup = cutOutArm(doc, controller, g, base);
+    QVERIFY(setup);
+    QVERIFY2(base >= 0, "no cut where the arm leaves the body");
+    const auto &cuts = setup->skeleton->cut->cuts;
+    const auto cut = std::find_if(cuts.begin(), cuts.end(),
+                                  [&](const deform::JointCut &c) { return c.joint == base; });
+    QVERIFY(cut != cuts.end());
+    const int arm = int(cut - cuts.begin());
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
+    const QPointF pivot = rest.joints[std::size_t(base)];
+    const double theta = 100.0 * std::numbers::pi / 180.0;
+    std::vector<double> angles(rest.joints.size(), 0.0);
+    for (int j = 0; j < rest.jointCount(); ++j)
+        if (rest.parent[std::size_t(j)] == base)
+            angles[std::size_t(j)] = theta;
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+    QVERIFY(waitSolved(controller, doc, g));
+    const StrokeGroup &posed = *doc.group(g);
+    QCOMPARE(posed.strokes.size(), std::size_t(1));
+    const std::vector<StrokePoint> &outline = posed.strokes[0].data->points;
+    const std::vector<std::int16_t> &piece = posed.deformed->pieceOf[0];
+    QCOMPARE(piece.size(), outline.size());
+    const QImage image = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    const QRectF body(100, 100, 200, 200);
+    int crossings = 0, opened = 0;
+    for (std::size_t i = 0; i + 1 < outline.size(); ++i) {
+        if (piece[i] == piece[i + 1] || std::max(piece[i], piece[i + 1]) != arm)
+            continue;
+        ++crossings;
+        // Where the outline met the cut at rest: its point nearest the joint.
+        const QPointF a(outline[i].x, outline[i].y);
+        const QPointF d = QPointF(outline[i + 1].x, outline[i + 1].y) - a;
+        const double t =
+            std::clamp(QPointF::dotProduct(pivot - a, d) / QPointF::dotProduct(d, d), 0.0, 1.0);
+        const QPointF met = a + t * d;
+        const double radius = QLineF(pivot, met).length();
+        // Half way round the turn from there: inside the body, or in the gap the turn opened.
+        const double half = std::atan2(met.y() - pivot.y(), met.x() - pivot.x()) + theta / 2.0;
+        const QPointF direction(std::cos(half), std::sin(half));
+        const QPointF middle = pivot + radius * direction;
+        if (body.contains(middle))
+            continue;
+        ++opened;
+        const QColor ink = image.pixelColor(middle.toPoint());
+        QVERIFY2(ink.lightness() < 100, qPrintable(ink.name()));
+        // Just outside the arc: paper, no fill beyond the line.
+        const QPointF beyond = pivot + (radius + 6.0) * direction;
+        QCOMPARE(image.pixel(beyond.toPoint()), qRgb(255, 255, 255));
+        // Just inside it: the fill (the socket and the wedge under the arc).
+        const QPointF within = pivot + std::max(radius - 6.0, 1.0) * direction;
+        QCOMPARE(image.pixel(within.toPoint()), yellow);
+    }
+    QCOMPARE(crossings, 2);
+    QCOMPARE(opened, 1);
 }
 
 void TestSkeletonRig::duplicateFrameCopiesSkeletonAndPose()

@@ -3,7 +3,10 @@
 #include <finbook/model/fill/fill_render.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <optional>
+#include <utility>
 
 namespace finbook::model {
 
@@ -76,6 +79,10 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
     // Sockets (round joints): painted on the piece above each cut (over its fills, under its
     // strokes) in the colour of the limb's fill that meets the socket, so a turned limb leaves
     // no gap at its joint.
+    std::vector<std::optional<QRgb>> socketColour(pieces);
+    const auto layerAbove = [&](std::size_t k) {
+        return std::size_t(std::clamp(posed->socketAbove[k] + 1, 0, int(pieces)));
+    };
     for (std::size_t k = 0; k < pieces && k < posed->sockets.size(); ++k) {
         const QPainterPath &socket = posed->sockets[k];
         if (socket.isEmpty() || k >= posed->socketAbove.size())
@@ -86,14 +93,88 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         });
         if (colour == limb.rend())
             continue;
+        socketColour[k] = colour->color;
         FillItem fill;
         fill.path = socket;
         fill.color = colour->color;
-        layers[std::size_t(std::clamp(posed->socketAbove[k] + 1, 0, int(pieces)))].fills.push_back(
-            std::move(fill));
+        layers[layerAbove(k)].fills.push_back(std::move(fill));
     }
+    // Where a line crosses a cut between two pieces that turned rigidly, each piece's part of
+    // it ends where the line met the cut at rest (the point of the line nearest the joint: the
+    // cut runs from the joint to the outline's nearest point), and an arc round the joint joins
+    // the two ends on the piece above, as a cut-out puppet's round joint is drawn: the outline
+    // stays closed and round at any angle instead of a chord cutting across the turn. The
+    // wedge between the arc and the joint takes the socket's colour. Elsewhere (a piece that
+    // bent, no round end) the segment across the cut goes with the deeper piece as it is.
+    struct Seam {
+        StrokePoint above, below; // the line's end on the piece above / on the cut piece
+        std::vector<StrokePoint> arc;
+        std::size_t cut = 0;
+    };
+    const auto seamAt = [&](std::size_t s, std::size_t i) -> std::optional<Seam> {
+        const std::vector<std::int16_t> &piece = posed->pieceOf[s];
+        const int a = piece[i], b = piece[i + 1];
+        const int deeper = std::max(a, b), other = std::min(a, b);
+        if (deeper < 0 || std::size_t(deeper) >= pieces ||
+            std::size_t(deeper) >= posed->socketAbove.size() ||
+            std::size_t(deeper) >= posed->sockets.size() ||
+            posed->socketAbove[std::size_t(deeper)] != other ||
+            posed->sockets[std::size_t(deeper)].isEmpty() || posed->motions.size() != pieces + 1 ||
+            !posed->motions[std::size_t(a + 1)] || !posed->motions[std::size_t(b + 1)] ||
+            s >= group.strokes.size() || !group.strokes[s].data ||
+            group.strokes[s].data->points.size() != posed->strokes[s].size())
+            return std::nullopt;
+        const QTransform &ma = *posed->motions[std::size_t(a + 1)];
+        const QTransform &mb = *posed->motions[std::size_t(b + 1)];
+        bool invertible = false;
+        const QPointF joint = posed->sockets[std::size_t(deeper)].boundingRect().center();
+        const QPointF restJoint = mb.inverted(&invertible).map(joint);
+        if (!invertible)
+            return std::nullopt;
+        const StrokePoint &p = group.strokes[s].data->points[i];
+        const StrokePoint &q = group.strokes[s].data->points[i + 1];
+        const QPointF from(p.x, p.y), d(q.x - p.x, q.y - p.y);
+        const double length2 = QPointF::dotProduct(d, d);
+        const double t =
+            length2 > 0.0 ? std::clamp(QPointF::dotProduct(restJoint - from, d) / length2, 0.0, 1.0)
+                          : 0.0;
+        const QPointF c = from + t * d;
+        const float pressure = float(p.pressure + t * (q.pressure - p.pressure));
+        const QPointF ca = ma.map(c), cb = mb.map(c);
+        const double radius = QLineF(joint, ca).length();
+        if (!(radius > 0.0) || !std::isfinite(radius))
+            return std::nullopt;
+        const double start = std::atan2(ca.y() - joint.y(), ca.x() - joint.x());
+        const double sweep = std::remainder(
+            std::atan2(cb.y() - joint.y(), cb.x() - joint.x()) - start, 2.0 * std::numbers::pi);
+        Seam seam;
+        seam.cut = std::size_t(deeper);
+        const StrokePoint ends[2] = {{float(ca.x()), float(ca.y()), pressure},
+                                     {float(cb.x()), float(cb.y()), pressure}};
+        seam.above = ends[a == other ? 0 : 1];
+        seam.below = ends[a == other ? 1 : 0];
+        const int steps = std::max(1, int(std::ceil(std::abs(sweep) / (std::numbers::pi / 16))));
+        for (int k = 0; k <= steps; ++k) {
+            const double angle = start + sweep * k / steps;
+            seam.arc.push_back({float(joint.x() + radius * std::cos(angle)),
+                                float(joint.y() + radius * std::sin(angle)), pressure});
+        }
+        if (a != other) // the arc runs from the piece above's end to the cut piece's
+            std::reverse(seam.arc.begin(), seam.arc.end());
+        if (const std::optional<QRgb> colour = socketColour[seam.cut]) {
+            FillItem wedge;
+            wedge.path.moveTo(joint);
+            for (const StrokePoint &point : seam.arc)
+                wedge.path.lineTo(point.x, point.y);
+            wedge.path.closeSubpath();
+            wedge.path.setFillRule(Qt::WindingFill);
+            wedge.color = *colour;
+            layers[layerAbove(seam.cut)].fills.push_back(std::move(wedge));
+        }
+        return seam;
+    };
     // The strokes: each item (a displayed stroke, folded repeats included) split into runs of
-    // segments that moved with one piece; a segment across a cut goes with the deeper piece.
+    // segments that moved with one piece, joined across the cuts as above.
     const std::vector<PaintItem> items = std::move(layers[0].strokes);
     layers[0].strokes.clear();
     const auto *first = posed->strokes.data();
@@ -112,26 +193,46 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         }
         const std::vector<StrokePoint> &points = *item.points;
         const std::vector<std::int16_t> &piece = posed->pieceOf[std::size_t(s)];
-        const auto layerOf = [&](std::size_t i) {
-            const int p = i + 1 < points.size() ? std::max(piece[i], piece[i + 1]) : piece[i];
+        const auto layerOfPiece = [&](int p) {
             return std::size_t(std::clamp(p + 1, 0, int(pieces)));
         };
         if (points.size() <= 1 || std::all_of(piece.begin(), piece.end(),
                                               [&](std::int16_t p) { return p == piece[0]; })) {
-            entries.push_back({layerOf(0), item, -1});
+            entries.push_back({layerOfPiece(piece[0]), item, -1});
             continue;
         }
-        std::size_t start = 0;
-        while (start + 1 < points.size()) {
-            const std::size_t layer = layerOf(start);
-            std::size_t end = start + 1;
-            while (end + 1 < points.size() && layerOf(end) == layer)
-                ++end;
-            entries.push_back({layer, item, std::ptrdiff_t(layers[layer].runs.size())});
-            layers[layer].runs.emplace_back(points.begin() + std::ptrdiff_t(start),
-                                            points.begin() + std::ptrdiff_t(end) + 1);
-            start = end;
+        std::size_t layer = layerOfPiece(piece[0]);
+        std::vector<StrokePoint> run;
+        const auto flush = [&](std::size_t into, std::vector<StrokePoint> &&part) {
+            if (part.size() < 2)
+                return;
+            entries.push_back({into, item, std::ptrdiff_t(layers[into].runs.size())});
+            layers[into].runs.push_back(std::move(part));
+        };
+        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+            const int a = piece[i], b = piece[i + 1];
+            std::optional<Seam> seam;
+            if (a != b)
+                seam = seamAt(std::size_t(s), i);
+            const std::size_t segment = a == b ? layerOfPiece(a)
+                                        : seam ? layerOfPiece(a)
+                                               : layerOfPiece(std::max(a, b));
+            if (run.empty() || layer != segment) {
+                flush(layer, std::exchange(run, {}));
+                layer = segment;
+                run.push_back(points[i]);
+            }
+            if (!seam) {
+                run.push_back(points[i + 1]);
+                continue;
+            }
+            run.push_back(a == std::min(a, b) ? seam->above : seam->below);
+            flush(layer, std::exchange(run, {}));
+            flush(layerAbove(seam->cut), std::move(seam->arc));
+            layer = layerOfPiece(b);
+            run = {b == std::min(a, b) ? seam->above : seam->below, points[i + 1]};
         }
+        flush(layer, std::move(run));
     }
     // Every run is stored before an item points at one (the runs do not move after).
     for (Entry &entry : entries) {
