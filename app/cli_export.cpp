@@ -8,6 +8,7 @@
 #include <finbook/model/export/exporter.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/io/printable_text.h>
+#include <finbook/model/skeleton/cut_out_layers.h>
 
 #include <QCoreApplication>
 #include <QDir>
@@ -306,6 +307,7 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
                         .arg(options.target, reason),
                     ExitCode::Failure);
     options.title = QFileInfo(input).completeBaseName();
+    model::restoreCutOutLayers(loaded->frames, loaded->settings.closeGap);
     const model::ExportSource source{std::move(loaded->frames), loaded->settings,
                                      std::move(loaded->reference), std::move(loaded->sound)};
     const auto result = model::exportAnimation(

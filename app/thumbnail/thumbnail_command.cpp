@@ -5,6 +5,7 @@
 
 #include <finbook/model/io/printable_text.h>
 #include <finbook/model/render.h>
+#include <finbook/model/skeleton/cut_out_layers.h>
 
 #include <QBuffer>
 #include <QCoreApplication>
@@ -57,6 +58,7 @@ int runThumbnailCommand(const QStringList &arguments, QTextStream &err)
                     Thumbnail::tr("Cannot make a thumbnail of \"%1\": it has no frame.")
                         .arg(QFileInfo(arguments[0]).fileName()),
                     ExitCode::BadInput);
+    model::restoreCutOutLayers(loaded->frames, loaded->settings.closeGap);
     const QImage image = model::renderFrame(loaded->frames.front(), loaded->settings,
                                             thumbnailSize(loaded->settings.canvasSize, size));
     QByteArray png;

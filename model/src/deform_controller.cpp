@@ -1,5 +1,6 @@
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/rig/rig_commands.h>
+#include <finbook/model/skeleton/cut_out_layers.h>
 
 #include <QMetaObject>
 
@@ -15,8 +16,12 @@ DeformController::DeformController(Document *document, QObject *parent)
     : QObject(parent)
     , m_doc(document)
 {
-    connect(m_doc, &Document::constraintsChanged, this, [this](Id id) { refresh(id); });
+    connect(m_doc, &Document::constraintsChanged, this, [this](Id id) {
+        m_restoring.erase(id);
+        refresh(id);
+    });
     connect(m_doc, &Document::strokesChanged, this, [this](Id id) {
+        m_restoring.erase(id);
         const auto it = m_states.find(id);
         refresh(id, it != m_states.end() && it->second.setup);
     });
@@ -37,6 +42,15 @@ DeformController::DeformController(Document *document, QObject *parent)
         m_states.clear();
         m_recent.clear();
         m_unsettled.clear();
+        m_restoring.clear();
+        // A file stores a cut-out pose without its layers: solve it again, off this thread,
+        // so the limbs are drawn over the body as before it was saved.
+        for (int f = 0; f < m_doc->frameCount(); ++f)
+            for (const StrokeGroup &g : m_doc->frameAt(f).groups)
+                if (lacksCutOutLayers(g)) {
+                    m_restoring.insert(g.id);
+                    refresh(g.id);
+                }
     });
     connect(&m_service, &PrecomputeService::busyChanged, this, &DeformController::busyChanged);
     connect(&m_service, &PrecomputeService::setupReady, this,
@@ -264,7 +278,12 @@ void DeformController::solve(Id groupId, std::shared_ptr<const DeformSetup> setu
         } else {
             m_unsettled.erase(groupId);
         }
-        storePose(groupId, std::move(*pose));
+        // A reopened pose keeps its stored strokes unless it solves to them again.
+        if (m_restoring.erase(groupId) > 0 && g->deformed &&
+            !(pose->strokes && restoresLayers(*pose->strokes, *g->deformed)))
+            state.vertices = std::move(pose->vertices);
+        else
+            storePose(groupId, std::move(*pose));
     }
     if (newMesh)
         emit meshChanged(groupId);

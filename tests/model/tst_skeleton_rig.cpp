@@ -9,6 +9,7 @@
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
+#include <finbook/model/skeleton/cut_out_layers.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_joint_edit.h>
 #include <finbook/model/skeleton/skeleton_setup.h>
@@ -155,6 +156,7 @@ private slots:
     void cutOutLimbHidesTheBodysLinesUnderIt();
     void cutOutJointsStayRoundWhenTheyTurn();
     void cutOutOutlineRunsRoundATurnedJoint();
+    void cutOutLayersComeBackWithTheFile();
     void duplicateFrameCopiesSkeletonAndPose();
     void jointLocksAreOneStepAndSaved();
     void filesBeforeLocksOpenWithoutLocks();
@@ -767,6 +769,75 @@ void TestSkeletonRig::cutOutOutlineRunsRoundATurnedJoint()
     }
     QCOMPARE(crossings, 2);
     QCOMPARE(opened, 1);
+}
+
+void TestSkeletonRig::cutOutLayersComeBackWithTheFile()
+{
+    // A file stores a cut-out pose's strokes, not its layers. Read back and solved again, the
+    // pose draws its turned arm over the body as before it was saved (the export and the
+    // thumbnail restore it at once, the editor off its thread); a stored pose that no longer
+    // solves the same keeps its strokes.
+    Document doc;
+    const Id g = filledBodyAndArm(doc);
+    const DocumentSettings &settings = doc.settings();
+    DeformController controller(&doc);
+    int base = -1;
+    QVERIFY(cutOutArm(doc, controller, g, base));
+    QVERIFY(base >= 0);
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
+    std::vector<double> angles(rest.joints.size(), 0.0);
+    for (int j = 0; j < rest.jointCount(); ++j)
+        if (rest.parent[std::size_t(j)] == base)
+            angles[std::size_t(j)] = 100.0 * std::numbers::pi / 180.0;
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+    QVERIFY(waitSolved(controller, doc, g));
+    QVERIFY(!doc.group(g)->deformed->pieces.empty());
+    const QImage shown = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    const auto differing = [&](const QImage &image) {
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor a = image.pixelColor(x, y), b = shown.pixelColor(x, y);
+                count += std::max({std::abs(a.red() - b.red()), std::abs(a.green() - b.green()),
+                                   std::abs(a.blue() - b.blue())}) > 8
+                             ? 1
+                             : 0;
+            }
+        return count;
+    };
+    const QByteArray bytes = serializeFinbook(doc);
+    auto loaded = readFinbook(bytes);
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    const StrokeGroup &read = loaded->frames[0].groups[0];
+    QVERIFY(lacksCutOutLayers(read));
+    // Drawn flat, the turned arm shows the body's lines through it.
+    const int flat =
+        differing(renderFrame(loaded->frames[0], loaded->settings, settings.canvasSize));
+    QVERIFY2(flat > 200, qPrintable(QString::number(flat)));
+    // A stored pose moved off what the pose solves to keeps its strokes.
+    std::vector<Frame> moved = loaded->frames;
+    auto shifted = std::make_shared<DeformedStrokes>(*moved[0].groups[0].deformed);
+    shifted->strokes[0][0].x += 1.0f;
+    moved[0].groups[0].deformed = shifted;
+    QCOMPARE(restoreCutOutLayers(moved, loaded->settings.closeGap), 0);
+    QCOMPARE(moved[0].groups[0].deformed.get(), shifted.get());
+    // Restored: the layers are back, the strokes are the stored ones, the picture the one
+    // the editor showed.
+    std::vector<Frame> frames = loaded->frames;
+    QCOMPARE(restoreCutOutLayers(frames, loaded->settings.closeGap), 1);
+    const StrokeGroup &restored = frames[0].groups[0];
+    QVERIFY(!lacksCutOutLayers(restored));
+    QVERIFY(restoresLayers(*restored.deformed, *read.deformed));
+    const int back = differing(renderFrame(frames[0], loaded->settings, settings.canvasSize));
+    QVERIFY2(back == 0, qPrintable(QString::number(back)));
+    // The editor: a document reset with the file's frames gets its layers from its
+    // controller's solve.
+    Document reopened;
+    DeformController again(&reopened);
+    reopened.reset(loaded->frames, loaded->settings, loaded->nextId);
+    QVERIFY(QTest::qWaitFor([&] { return !lacksCutOutLayers(*reopened.group(g)); }, 10000));
+    QVERIFY(restoresLayers(*reopened.group(g)->deformed, *read.deformed));
+    QCOMPARE(differing(renderFrame(reopened.frameAt(0), settings, settings.canvasSize)), 0);
 }
 
 void TestSkeletonRig::duplicateFrameCopiesSkeletonAndPose()

@@ -2,12 +2,9 @@
 
 namespace finbook::model {
 
-namespace {
-
-Expected<std::shared_ptr<const DeformSetup>, QString> setupFor(const StrokeGroup &g,
-                                                               const deform::ArapOptions &options,
-                                                               DeformSetupCache &cache,
-                                                               double closeGap)
+Expected<std::shared_ptr<const DeformSetup>, QString>
+setupFromCache(const StrokeGroup &g, const deform::ArapOptions &options, DeformSetupCache &cache,
+               double closeGap)
 {
     for (const auto &s : cache)
         if (s && sameSolverOptions(s->options, options) && s->matches(g, closeGap))
@@ -27,8 +24,6 @@ Expected<std::shared_ptr<const DeformSetup>, QString> setupFor(const StrokeGroup
     return built;
 }
 
-} // namespace
-
 Expected<int, QString> solveInbetweenPoses(std::vector<Frame> &frames,
                                            const deform::ArapOptions &options,
                                            DeformSetupCache *cache, double closeGap)
@@ -40,7 +35,7 @@ Expected<int, QString> solveInbetweenPoses(std::vector<Frame> &frames,
         for (StrokeGroup &g : f.groups) {
             if (g.rig.empty() || g.deformed || g.strokes.empty())
                 continue;
-            auto setup = setupFor(g, options, setups, closeGap);
+            auto setup = setupFromCache(g, options, setups, closeGap);
             if (!setup)
                 return unexpected(setup.error());
             auto pose = solvePose(**setup, g);

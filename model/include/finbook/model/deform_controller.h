@@ -103,6 +103,9 @@ private:
     std::map<Id, quint64> m_settleGeneration;
     quint64 m_generation = 0;
     bool m_previewOnly = false; // solving a batch of inserted frames
+    // Objects of a document just opened whose cut-out pose is solved again for its layers
+    // (skeleton/cut_out_layers.h): the result is taken only where it is the stored pose.
+    std::set<Id> m_restoring;
     std::shared_ptr<std::atomic_bool> m_cancelConverged = std::make_shared<std::atomic_bool>();
     QTimer m_settleTimer;
     QThreadPool m_pool;

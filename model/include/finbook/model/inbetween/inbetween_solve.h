@@ -13,6 +13,12 @@ namespace finbook::model {
 
 using DeformSetupCache = std::vector<std::shared_ptr<const DeformSetup>>;
 
+// The setup in `cache` that serves `group` with `options`, else one built now (reusing a
+// cached mesh of the same drawing) and added to it. Errors: sentences for the user.
+Expected<std::shared_ptr<const DeformSetup>, QString>
+setupFromCache(const StrokeGroup &group, const deform::ArapOptions &options,
+               DeformSetupCache &cache, double closeGap);
+
 // Solves every object of `frames` that has a rig and no pose (deformed == nullptr). `cache`
 // (optional) offers setups to reuse — e.g. the keys' — and receives the ones built here.
 // Returns how many objects were solved, or the first error (frames solved before it keep
