@@ -264,6 +264,19 @@ std::vector<Stroke> posedStrokes(const StrokeGroup &group)
             continue;
         auto data = std::make_shared<StrokeData>(*strokes[i].data);
         data->points = displayedPoints(group, i);
+        // A cut-out pose's line goes round each joint it crosses, as the pose is drawn.
+        if (!group.deformed->pieces.empty() && i < group.deformed->pieceOf.size() &&
+            group.deformed->pieceOf[i].size() == data->points.size()) {
+            const std::vector<std::int16_t> &piece = group.deformed->pieceOf[i];
+            std::vector<StrokePoint> joined;
+            for (std::size_t k = 0; k < data->points.size(); ++k) {
+                joined.push_back(data->points[k]);
+                if (k + 1 < data->points.size() && piece[k] != piece[k + 1])
+                    if (const auto seam = cutOutSeam(group, i, k))
+                        joined.insert(joined.end(), seam->arc.begin(), seam->arc.end());
+            }
+            data->points = std::move(joined);
+        }
         strokes[i].data = std::move(data);
     }
     return strokes;

@@ -1,8 +1,10 @@
 // Fills → faces (the rules are in fill_resolve.h).
+#include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
 
 #include <algorithm>
 #include <iterator>
+#include <optional>
 
 namespace finbook::model {
 
@@ -187,6 +189,34 @@ std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Str
         }
         if (best >= 0)
             out[i].seed = fillOfFace(*regions, best, out[i].color).seed;
+    }
+    // A face the baked lines cut off from the one its fill moved to (where a limb passed over
+    // the body, a fold) shows what the pose showed there: the topmost fill as drawn, a
+    // cut-out pose's layers and round joints included.
+    DocumentSettings settings;
+    settings.closeGap = closeGap;
+    const std::vector<PaintLayer> layers = paintLayers(group, settings);
+    const std::vector<int> filled = faceFills(*regions, out);
+    for (int f = 0; f < regions->faceCount(); ++f) {
+        if (filled[std::size_t(f)] >= 0)
+            continue;
+        const geometry::Face &face = regions->regions().faces[std::size_t(f)];
+        const QPointF seed(face.seed.x(), face.seed.y());
+        std::optional<QRgb> colour;
+        for (auto layer = layers.rbegin(); layer != layers.rend() && !colour; ++layer)
+            for (auto item = layer->fills.rbegin(); item != layer->fills.rend(); ++item)
+                if (item->path.contains(seed)) {
+                    colour = item->color;
+                    break;
+                }
+        if (!colour)
+            continue;
+        Fill added = fillOfFace(*regions, f, *colour);
+        const auto same = std::find_if(group.fills.rbegin(), group.fills.rend(),
+                                       [&](const Fill &fill) { return fill.color == *colour; });
+        if (same != group.fills.rend())
+            added.shading = same->shading;
+        out.push_back(std::move(added));
     }
     return out;
 }

@@ -10,6 +10,63 @@
 
 namespace finbook::model {
 
+std::optional<CutOutSeam> cutOutSeam(const StrokeGroup &group, std::size_t stroke, std::size_t i)
+{
+    const DeformedStrokes *posed = group.deformed.get();
+    if (!posed || stroke >= posed->pieceOf.size() || stroke >= posed->strokes.size() ||
+        stroke >= group.strokes.size() || !group.strokes[stroke].data ||
+        posed->pieceOf[stroke].size() != posed->strokes[stroke].size() ||
+        group.strokes[stroke].data->points.size() != posed->strokes[stroke].size() ||
+        i + 1 >= posed->strokes[stroke].size())
+        return std::nullopt;
+    const std::size_t pieces = posed->pieces.size();
+    const std::vector<std::int16_t> &piece = posed->pieceOf[stroke];
+    const int a = piece[i], b = piece[i + 1];
+    const int deeper = std::max(a, b), other = std::min(a, b);
+    if (a == b || deeper < 0 || std::size_t(deeper) >= pieces || other < -1 ||
+        std::size_t(deeper) >= posed->socketAbove.size() ||
+        std::size_t(deeper) >= posed->sockets.size() ||
+        posed->socketAbove[std::size_t(deeper)] != other ||
+        posed->sockets[std::size_t(deeper)].isEmpty() || posed->motions.size() != pieces + 1 ||
+        !posed->motions[std::size_t(a + 1)] || !posed->motions[std::size_t(b + 1)])
+        return std::nullopt;
+    const QTransform &ma = *posed->motions[std::size_t(a + 1)];
+    const QTransform &mb = *posed->motions[std::size_t(b + 1)];
+    bool invertible = false;
+    const QPointF joint = posed->sockets[std::size_t(deeper)].boundingRect().center();
+    const QPointF restJoint = mb.inverted(&invertible).map(joint);
+    if (!invertible)
+        return std::nullopt;
+    const StrokePoint &p = group.strokes[stroke].data->points[i];
+    const StrokePoint &q = group.strokes[stroke].data->points[i + 1];
+    const QPointF from(p.x, p.y), d(q.x - p.x, q.y - p.y);
+    const double length2 = QPointF::dotProduct(d, d);
+    const double t = length2 > 0.0
+                         ? std::clamp(QPointF::dotProduct(restJoint - from, d) / length2, 0.0, 1.0)
+                         : 0.0;
+    const QPointF c = from + t * d;
+    const float pressure = float(p.pressure + t * (q.pressure - p.pressure));
+    const QPointF ca = ma.map(c), cb = mb.map(c);
+    const double radius = QLineF(joint, ca).length();
+    if (!(radius > 0.0) || !std::isfinite(radius))
+        return std::nullopt;
+    const double start = std::atan2(ca.y() - joint.y(), ca.x() - joint.x());
+    const double sweep = std::remainder(std::atan2(cb.y() - joint.y(), cb.x() - joint.x()) - start,
+                                        2.0 * std::numbers::pi);
+    CutOutSeam seam;
+    seam.cut = std::size_t(deeper);
+    seam.joint = joint;
+    const int steps = std::max(1, int(std::ceil(std::abs(sweep) / (std::numbers::pi / 16))));
+    for (int k = 0; k <= steps; ++k) {
+        const double angle = start + sweep * k / steps;
+        seam.arc.push_back({float(joint.x() + radius * std::cos(angle)),
+                            float(joint.y() + radius * std::sin(angle)), pressure});
+    }
+    seam.arc.front() = {float(ca.x()), float(ca.y()), pressure};
+    seam.arc.back() = {float(cb.x()), float(cb.y()), pressure};
+    return seam;
+}
+
 std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSettings &settings,
                                     const RenderOptions &options)
 {
@@ -99,80 +156,6 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         fill.color = colour->color;
         layers[layerAbove(k)].fills.push_back(std::move(fill));
     }
-    // Where a line crosses a cut between two pieces that turned rigidly, each piece's part of
-    // it ends where the line met the cut at rest (the point of the line nearest the joint: the
-    // cut runs from the joint to the outline's nearest point), and an arc round the joint joins
-    // the two ends on the piece above, as a cut-out puppet's round joint is drawn: the outline
-    // stays closed and round at any angle instead of a chord cutting across the turn. The
-    // wedge between the arc and the joint takes the socket's colour. Elsewhere (a piece that
-    // bent, no round end) the segment across the cut goes with the deeper piece as it is.
-    struct Seam {
-        StrokePoint above, below; // the line's end on the piece above / on the cut piece
-        std::vector<StrokePoint> arc;
-        std::size_t cut = 0;
-    };
-    const auto seamAt = [&](std::size_t s, std::size_t i) -> std::optional<Seam> {
-        const std::vector<std::int16_t> &piece = posed->pieceOf[s];
-        const int a = piece[i], b = piece[i + 1];
-        const int deeper = std::max(a, b), other = std::min(a, b);
-        if (deeper < 0 || std::size_t(deeper) >= pieces ||
-            std::size_t(deeper) >= posed->socketAbove.size() ||
-            std::size_t(deeper) >= posed->sockets.size() ||
-            posed->socketAbove[std::size_t(deeper)] != other ||
-            posed->sockets[std::size_t(deeper)].isEmpty() || posed->motions.size() != pieces + 1 ||
-            !posed->motions[std::size_t(a + 1)] || !posed->motions[std::size_t(b + 1)] ||
-            s >= group.strokes.size() || !group.strokes[s].data ||
-            group.strokes[s].data->points.size() != posed->strokes[s].size())
-            return std::nullopt;
-        const QTransform &ma = *posed->motions[std::size_t(a + 1)];
-        const QTransform &mb = *posed->motions[std::size_t(b + 1)];
-        bool invertible = false;
-        const QPointF joint = posed->sockets[std::size_t(deeper)].boundingRect().center();
-        const QPointF restJoint = mb.inverted(&invertible).map(joint);
-        if (!invertible)
-            return std::nullopt;
-        const StrokePoint &p = group.strokes[s].data->points[i];
-        const StrokePoint &q = group.strokes[s].data->points[i + 1];
-        const QPointF from(p.x, p.y), d(q.x - p.x, q.y - p.y);
-        const double length2 = QPointF::dotProduct(d, d);
-        const double t =
-            length2 > 0.0 ? std::clamp(QPointF::dotProduct(restJoint - from, d) / length2, 0.0, 1.0)
-                          : 0.0;
-        const QPointF c = from + t * d;
-        const float pressure = float(p.pressure + t * (q.pressure - p.pressure));
-        const QPointF ca = ma.map(c), cb = mb.map(c);
-        const double radius = QLineF(joint, ca).length();
-        if (!(radius > 0.0) || !std::isfinite(radius))
-            return std::nullopt;
-        const double start = std::atan2(ca.y() - joint.y(), ca.x() - joint.x());
-        const double sweep = std::remainder(
-            std::atan2(cb.y() - joint.y(), cb.x() - joint.x()) - start, 2.0 * std::numbers::pi);
-        Seam seam;
-        seam.cut = std::size_t(deeper);
-        const StrokePoint ends[2] = {{float(ca.x()), float(ca.y()), pressure},
-                                     {float(cb.x()), float(cb.y()), pressure}};
-        seam.above = ends[a == other ? 0 : 1];
-        seam.below = ends[a == other ? 1 : 0];
-        const int steps = std::max(1, int(std::ceil(std::abs(sweep) / (std::numbers::pi / 16))));
-        for (int k = 0; k <= steps; ++k) {
-            const double angle = start + sweep * k / steps;
-            seam.arc.push_back({float(joint.x() + radius * std::cos(angle)),
-                                float(joint.y() + radius * std::sin(angle)), pressure});
-        }
-        if (a != other) // the arc runs from the piece above's end to the cut piece's
-            std::reverse(seam.arc.begin(), seam.arc.end());
-        if (const std::optional<QRgb> colour = socketColour[seam.cut]) {
-            FillItem wedge;
-            wedge.path.moveTo(joint);
-            for (const StrokePoint &point : seam.arc)
-                wedge.path.lineTo(point.x, point.y);
-            wedge.path.closeSubpath();
-            wedge.path.setFillRule(Qt::WindingFill);
-            wedge.color = *colour;
-            layers[layerAbove(seam.cut)].fills.push_back(std::move(wedge));
-        }
-        return seam;
-    };
     // The strokes: each item (a displayed stroke, folded repeats included) split into runs of
     // segments that moved with one piece, joined across the cuts as above.
     const std::vector<PaintItem> items = std::move(layers[0].strokes);
@@ -211,9 +194,9 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         };
         for (std::size_t i = 0; i + 1 < points.size(); ++i) {
             const int a = piece[i], b = piece[i + 1];
-            std::optional<Seam> seam;
+            std::optional<CutOutSeam> seam;
             if (a != b)
-                seam = seamAt(std::size_t(s), i);
+                seam = cutOutSeam(group, std::size_t(s), i);
             const std::size_t segment = a == b ? layerOfPiece(a)
                                         : seam ? layerOfPiece(a)
                                                : layerOfPiece(std::max(a, b));
@@ -226,11 +209,23 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
                 run.push_back(points[i + 1]);
                 continue;
             }
-            run.push_back(a == std::min(a, b) ? seam->above : seam->below);
+            // The arc and the wedge under it go on the piece above the cut.
+            const std::size_t above = layerAbove(seam->cut);
+            if (const std::optional<QRgb> colour = socketColour[seam->cut]) {
+                FillItem wedge;
+                wedge.path.moveTo(seam->joint);
+                for (const StrokePoint &point : seam->arc)
+                    wedge.path.lineTo(point.x, point.y);
+                wedge.path.closeSubpath();
+                wedge.path.setFillRule(Qt::WindingFill);
+                wedge.color = *colour;
+                layers[above].fills.push_back(std::move(wedge));
+            }
+            run.push_back(seam->arc.front());
             flush(layer, std::exchange(run, {}));
-            flush(layerAbove(seam->cut), std::move(seam->arc));
+            run = {seam->arc.back(), points[i + 1]};
+            flush(above, std::move(seam->arc));
             layer = layerOfPiece(b);
-            run = {b == std::min(a, b) ? seam->above : seam->below, points[i + 1]};
         }
         flush(layer, std::move(run));
     }

@@ -8,6 +8,9 @@
 
 #include <QPainterPath>
 
+#include <optional>
+#include <vector>
+
 namespace finbook::model {
 
 struct FillItem {
@@ -29,8 +32,9 @@ std::vector<FillItem> fillList(const StrokeGroup &group, const DocumentSettings 
 // An object as the renderers paint it, back to front: usually one layer (its fills, then its
 // strokes). A cut-out pose (DeformedStrokes::pieces) gives one layer per piece, each over the
 // ones before: the roots' piece with every fill and the strokes' runs that stayed with it,
-// then each cut piece with the fills clipped to its outline and its own runs (the run across
-// a cut goes with the deeper piece: the limb's round end), so a limb turned over the body
+// then each cut piece with the fills clipped to its outline and its own runs (joined across a
+// cut by an arc on the piece above, cutOutSeam, or else the run across goes with the deeper
+// piece), so a limb turned over the body
 // hides the body's lines under it, as a cut-out puppet's paper limb does. A piece that moved
 // rigidly (DeformedStrokes::motions) takes the rest fills moved with it, so no twist of the
 // posed fills opens a hole in it; each cut's socket (its round joint) is painted in the limb's
@@ -47,6 +51,20 @@ struct PaintLayer {
 };
 std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSettings &settings,
                                     const RenderOptions &options = {});
+
+// Where posed stroke `stroke` of a cut-out pose crosses a cut between its points i and i + 1
+// and both pieces turned rigidly: each piece's part of the line ends where it met the cut at
+// rest (its point nearest the joint: the cut runs from the joint to the outline's nearest
+// point), and an arc round the joint joins the two ends, as a cut-out puppet's round joint is
+// drawn. `arc` runs from point i's piece's end to point i + 1's; `cut` is the deeper piece's
+// cut, whose socket (centre `joint`) the arc goes round. nullopt where the line is drawn
+// straight across (a piece that bent, no round end, no cut there).
+struct CutOutSeam {
+    std::size_t cut = 0;
+    QPointF joint;
+    std::vector<StrokePoint> arc;
+};
+std::optional<CutOutSeam> cutOutSeam(const StrokeGroup &group, std::size_t stroke, std::size_t i);
 
 // Paints one item: its path, then its tones (the canvas raster draws its own way).
 void paintFill(QPainter &painter, const FillItem &fill);

@@ -36,7 +36,9 @@ std::optional<std::vector<Fill>> fillsWithAllFaces(const ObjectRegions &regions,
 
 // The fills of `group` once its pose has become its drawing (`baked`: its posed strokes, ids
 // kept, as Apply Pose to Drawing makes them): each fill that shows moves its seed into the face
-// of the baked drawing that lies where the fill is shown now.
+// of the baked drawing that lies where the fill is shown now, and each other face of the baked
+// drawing (cut off by a limb passing over the body, a fold) gets a fill in the colour the pose
+// shows there (its topmost fill as painted, paintLayers: a cut-out's layers and sockets).
 std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                  double closeGap);
 
