@@ -5,6 +5,7 @@
 #include <QMetaObject>
 
 #include <algorithm>
+#include <vector>
 
 namespace finbook::model {
 
@@ -358,6 +359,19 @@ void DeformController::settle()
 void DeformController::setupReady(Id groupId, std::shared_ptr<const DeformSetup> setup)
 {
     remember(setup);
+    // Other objects waiting for the same drawing and rest definition (a reopened or new run of
+    // frames duplicated from one key) take this setup instead of building their own.
+    std::vector<Id> alike;
+    for (const auto &[id, state] : m_states) {
+        const StrokeGroup *other = id == groupId ? nullptr : m_doc->group(id);
+        if (other && state.waiting && sameSolverOptions(setup->options, m_options) &&
+            setup->matches(*other, m_doc->settings().closeGap))
+            alike.push_back(id);
+    }
+    for (Id id : alike) {
+        m_service.cancel(id);
+        solve(id, setup);
+    }
     const StrokeGroup *g = m_doc->group(groupId);
     if (!g)
         return;
