@@ -113,6 +113,30 @@ Id filledBodyAndArm(Document &doc)
     return g;
 }
 
+// The body and arm above, turned to Cut-out, with its arm turned `degrees` at its base (the
+// cut nearest the body, joint `base`).
+struct TurnedArm {
+    Document doc;
+    DeformController controller{&doc};
+    Id g = kNoId;
+    int base = -1;
+    const DeformSetup *setup = nullptr;
+    bool turn(double degrees)
+    {
+        g = filledBodyAndArm(doc);
+        setup = cutOutArm(doc, controller, g, base);
+        if (!setup || base < 0)
+            return false;
+        const SkeletonRig &rest = doc.group(g)->rig.skeleton;
+        std::vector<double> angles(rest.joints.size(), 0.0);
+        for (int j = 0; j < rest.jointCount(); ++j)
+            if (rest.parent[std::size_t(j)] == base)
+                angles[std::size_t(j)] = degrees * std::numbers::pi / 180.0;
+        doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+        return waitSolved(controller, doc, g);
+    }
+};
+
 // A terminal joint whose bone can turn (not a root).
 int terminalBone(const SkeletonRig &s)
 {
@@ -720,28 +744,18 @@ void TestSkeletonRig::cutOutOutlineRunsRoundATurnedJoint()
     // cut, each piece's part of it ends where it met the cut at rest, and an arc round the
     // joint joins the two ends: on the side the turn opens, the ink runs round the joint at
     // the distance the outline had from it, not along a chord across the turn.
-    Document doc;
-    const Id g = filledBodyAndArm(doc);
+    TurnedArm scene;
+    QVERIFY2(scene.turn(100.0), "no cut where the arm leaves the body");
+    const Document &doc = scene.doc;
+    const Id g = scene.g;
     const DocumentSettings &settings = doc.settings();
-    DeformController controller(&doc);
-    int base = -1;
-    const DeformSetup *setup = cutOutArm(doc, controller, g, base);
-    QVERIFY(setup);
-    QVERIFY2(base >= 0, "no cut where the arm leaves the body");
-    const auto &cuts = setup->skeleton->cut->cuts;
+    const auto &cuts = scene.setup->skeleton->cut->cuts;
     const auto cut = std::find_if(cuts.begin(), cuts.end(),
-                                  [&](const deform::JointCut &c) { return c.joint == base; });
+                                  [&](const deform::JointCut &c) { return c.joint == scene.base; });
     QVERIFY(cut != cuts.end());
     const int arm = int(cut - cuts.begin());
-    const SkeletonRig rest = doc.group(g)->rig.skeleton;
-    const QPointF pivot = rest.joints[std::size_t(base)];
+    const QPointF pivot = doc.group(g)->rig.skeleton.joints[std::size_t(scene.base)];
     const double theta = 100.0 * std::numbers::pi / 180.0;
-    std::vector<double> angles(rest.joints.size(), 0.0);
-    for (int j = 0; j < rest.jointCount(); ++j)
-        if (rest.parent[std::size_t(j)] == base)
-            angles[std::size_t(j)] = theta;
-    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
-    QVERIFY(waitSolved(controller, doc, g));
     const StrokeGroup &posed = *doc.group(g);
     QCOMPARE(posed.strokes.size(), std::size_t(1));
     const std::vector<StrokePoint> &outline = posed.strokes[0].data->points;
@@ -787,20 +801,11 @@ void TestSkeletonRig::cutOutLayersComeBackWithTheFile()
     // pose draws its turned arm over the body as before it was saved (the export and the
     // thumbnail restore it at once, the editor off its thread); a stored pose that no longer
     // solves the same keeps its strokes.
-    Document doc;
-    const Id g = filledBodyAndArm(doc);
+    TurnedArm scene;
+    QVERIFY(scene.turn(100.0));
+    Document &doc = scene.doc;
+    const Id g = scene.g;
     const DocumentSettings &settings = doc.settings();
-    DeformController controller(&doc);
-    int base = -1;
-    QVERIFY(cutOutArm(doc, controller, g, base));
-    QVERIFY(base >= 0);
-    const SkeletonRig rest = doc.group(g)->rig.skeleton;
-    std::vector<double> angles(rest.joints.size(), 0.0);
-    for (int j = 0; j < rest.jointCount(); ++j)
-        if (rest.parent[std::size_t(j)] == base)
-            angles[std::size_t(j)] = 100.0 * std::numbers::pi / 180.0;
-    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
-    QVERIFY(waitSolved(controller, doc, g));
     QVERIFY(!doc.group(g)->deformed->pieces.empty());
     const QImage shown = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
     const auto differing = [&](const QImage &image) {
@@ -872,20 +877,11 @@ void TestSkeletonRig::applyingACutOutPoseKeepsWhatItShowed()
     // (the arm over the body, the body round it): each shows the colour the pose showed
     // there, so nothing the pose painted turns to paper (the body's lines under the arm show
     // again: the drawing is flat now). Undo brings back the pose exactly.
-    Document doc;
-    const Id g = filledBodyAndArm(doc);
+    TurnedArm scene;
+    QVERIFY(scene.turn(100.0));
+    Document &doc = scene.doc;
+    const Id g = scene.g;
     const DocumentSettings &settings = doc.settings();
-    DeformController controller(&doc);
-    int base = -1;
-    QVERIFY(cutOutArm(doc, controller, g, base));
-    QVERIFY(base >= 0);
-    const SkeletonRig rest = doc.group(g)->rig.skeleton;
-    std::vector<double> angles(rest.joints.size(), 0.0);
-    for (int j = 0; j < rest.jointCount(); ++j)
-        if (rest.parent[std::size_t(j)] == base)
-            angles[std::size_t(j)] = 100.0 * std::numbers::pi / 180.0;
-    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
-    QVERIFY(waitSolved(controller, doc, g));
     const QImage posed = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
     const QByteArray before = serializeFinbook(doc);
     const std::size_t fills = doc.group(g)->fills.size();
