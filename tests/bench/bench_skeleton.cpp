@@ -7,7 +7,8 @@
 // of each result to DIR: shape grey, simplified outline blue, raw skeleton orange, bones
 // black, joints as circles of their radius, the root red, and DIR/sheet.png: every picture on
 // one contact sheet. Per file also the rig an animator sees (issue 21): terminals, junctions,
-// bones, the shortest bone relative to the shape's diagonal, whether the root is a tip.
+// bones, the shortest bone relative to the shape's diagonal, whether the root is a tip, and the
+// limb bases (where limbs leave the body: IK turns a limb there; blue dots in the pictures).
 // --before: without the animator rig (RefineOptions::animatorRig off), for comparison.
 // "Wires": a skeleton that lies within one pen width of the strokes along most (> half) of its
 // length traces the pen line instead of the body. Each row says whether the skeleton is one
@@ -243,6 +244,12 @@ void writePicture(const QString &dir, const QString &name, const Region &shape,
         painter.setPen(QPen(j == s.root ? Qt::red : QColor(0, 120, 0), 1.0 / scale));
         painter.drawEllipse(QPointF(s.joints(j, 0), s.joints(j, 1)), s.radius(j), s.radius(j));
     }
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0, 150, 255));
+    for (int j = 0; j < int(s.limbBase.size()); ++j)
+        if (s.limbBase[std::size_t(j)])
+            painter.drawEllipse(QPointF(s.joints(j, 0), s.joints(j, 1)), 4.0 / scale, 4.0 / scale);
+    painter.setBrush(QBrush());
     painter.setPen(QPen(Qt::magenta, 2.0 / scale));
     for (const auto &[tip, reached] : tips) {
         painter.setBrush(reached ? QBrush(Qt::magenta) : QBrush());
@@ -334,6 +341,8 @@ QJsonObject measure(const QString &path, const Input &input, const QString &pngD
                qint64(std::count(kinds.begin(), kinds.end(), JointKind::Junction)));
     row.insert(QStringLiteral("terminals"),
                qint64(std::count(kinds.begin(), kinds.end(), JointKind::Terminal)));
+    row.insert(QStringLiteral("limb_bases"),
+               qint64(std::count(skeleton->limbBase.begin(), skeleton->limbBase.end(), true)));
     double bonePx = 0.0;
     const double inside = bonesInside(*skeleton, shape, &bonePx);
     row.insert(QStringLiteral("bones_inside"), inside);

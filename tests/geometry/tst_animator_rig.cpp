@@ -109,6 +109,7 @@ void TestAnimatorRig::drawnRectangleHasOneBone()
     const Skeleton s = rigOf(shape);
     QVERIFY(isValidSkeleton(s));
     QCOMPARE(boneCount(s), 1);
+    QVERIFY(s.limbBase.empty()); // no limb leaves a body
     QVERIFY(bonesInside(s, shape) >= 0.99);
     // Without the clean-up the corner spurs stay.
     QVERIFY(boneCount(rigOf(shape, false)) > 1);
@@ -151,6 +152,10 @@ void TestAnimatorRig::limbBaseJointSitsWhereWidthDrops()
         const double base = s.joints.row(chain.back()).norm();
         QVERIFY2(base > 60.0 && base < 110.0, qPrintable(QString::number(base)));
         QVERIFY(s.radius(chain.back()) < 0.5 * s.radius(s.parent(chain.back())));
+        // It is marked as the base (IK turns the arm there), and nothing else on the arm is.
+        QCOMPARE(s.limbBase.size(), std::size_t(s.jointCount()));
+        for (const int j : chain)
+            QCOMPARE(bool(s.limbBase[std::size_t(j)]), j == chain.back());
         // RealSkel alone turns the arm about the centre: one bone from there.
         const std::vector<int> plainChain = limbChain(plain, tipNearest(plain, tipAt));
         QVERIFY(plain.joints.row(plainChain.back()).norm() < 60.0 ||
@@ -172,6 +177,7 @@ void TestAnimatorRig::limbBaseBelowALongChest()
     const std::vector<int> chain = limbChain(s, tipNearest(s, Eigen::RowVector2d(0, 440)));
     const double baseY = s.joints(chain.back(), 1);
     QVERIFY2(baseY > 150.0 && baseY < 260.0, qPrintable(QString::number(baseY)));
+    QVERIFY(s.limbBase.at(std::size_t(chain.back())));
 }
 
 void TestAnimatorRig::rootIsAtThickestPart()

@@ -194,8 +194,10 @@ namespace {
 
 // limbJoints for nodes[0] the body end (a junction, or the thickest node of a branch between
 // two tips) and nodes.back() the tip: positions into `nodes`.
-std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nodes)
+// The joints of a limb hanging from nodes.front(); *baseOut is the base among them (0: none).
+std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nodes, int *baseOut)
 {
+    *baseOut = 0;
     const int m = int(nodes.size());
     if (m < 3)
         return {};
@@ -227,6 +229,7 @@ std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nod
         if (base > 0)
             kept.push_back(base);
     }
+    *baseOut = base;
     const double limbLength = length - s[std::size_t(base)];
     if (limb > 0.0 && limbLength > kLongLimb * limb) {
         // The middle third of the limb: the sharpest bend if it bends, else the narrowest
@@ -262,7 +265,7 @@ std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nod
 
 } // namespace
 
-std::vector<int> limbJoints(const DenseGraph &g, const Branch &branch)
+std::vector<int> limbJoints(const DenseGraph &g, const Branch &branch, std::vector<int> *bases)
 {
     const std::vector<int> &nodes = branch.nodes;
     const int m = int(nodes.size());
@@ -270,12 +273,21 @@ std::vector<int> limbJoints(const DenseGraph &g, const Branch &branch)
         return {};
     const int front = g.degree(nodes.front()), back = g.degree(nodes.back());
     std::vector<int> kept;
+    int base = 0;
+    const auto addBase = [&](int at) {
+        if (bases)
+            bases->push_back(at);
+    };
     if (front >= 3 && back == 1) {
-        kept = limbJointsFrom(g, nodes);
+        kept = limbJointsFrom(g, nodes, &base);
+        if (base > 0)
+            addBase(base);
     } else if (back >= 3 && front == 1) {
         const std::vector<int> reversed(nodes.rbegin(), nodes.rend());
-        for (int k : limbJointsFrom(g, reversed))
+        for (int k : limbJointsFrom(g, reversed, &base))
             kept.push_back(m - 1 - k);
+        if (base > 0)
+            addBase(m - 1 - base);
     } else if (front == 1 && back == 1) {
         // Two tips: a body (the thickest node, clearly thicker than the branch typically is)
         // at one end or in the middle; each side of it is a limb from it.
@@ -291,11 +303,15 @@ std::vector<int> limbJoints(const DenseGraph &g, const Branch &branch)
         if (thick > 0 && thick < m - 1)
             kept.push_back(thick);
         const std::vector<int> ahead(nodes.begin() + thick, nodes.end());
-        for (int k : limbJointsFrom(g, ahead))
+        for (int k : limbJointsFrom(g, ahead, &base))
             kept.push_back(thick + k);
+        if (base > 0)
+            addBase(thick + base);
         const std::vector<int> behind(nodes.rend() - thick - 1, nodes.rend());
-        for (int k : limbJointsFrom(g, behind))
+        for (int k : limbJointsFrom(g, behind, &base))
             kept.push_back(thick - k);
+        if (base > 0)
+            addBase(thick - base);
     }
     std::sort(kept.begin(), kept.end());
     return kept;

@@ -41,8 +41,10 @@ bool isJunctionCluster(const DenseGraph &graph, const Branch &branch);
 // Positions along a branch (indices into branch.nodes) that must become joints: on a branch
 // from a junction to a tip, the base where the width drops from the body's to the limb's
 // (none when it does not drop: the junction is the base), and, on a long limb, a middle joint
-// where it bends most or narrows (else half way).
-std::vector<int> limbJoints(const DenseGraph &graph, const Branch &branch);
+// where it bends most or narrows (else half way). `bases` (if given) gets the positions among
+// them that are limbs' bases.
+std::vector<int> limbJoints(const DenseGraph &graph, const Branch &branch,
+                            std::vector<int> *bases = nullptr);
 
 // Terminal bones shorter than half the inscribed radius at their inner end go (the tip moves
 // in to that joint), as long as that joint is an inner one and the bone that then reaches

@@ -50,7 +50,8 @@ Eigen::VectorXd boneLengths(const Skeleton &skeleton)
 bool isValidSkeleton(const Skeleton &s)
 {
     const Eigen::Index n = s.joints.rows();
-    if (s.radius.size() != n || s.parent.size() != n || s.part.size() != n)
+    if (s.radius.size() != n || s.parent.size() != n || s.part.size() != n ||
+        (!s.limbBase.empty() && Eigen::Index(s.limbBase.size()) != n))
         return false;
     if (!s.joints.allFinite() || !s.radius.allFinite() || (n > 0 && s.radius.minCoeff() < 0.0))
         return false;

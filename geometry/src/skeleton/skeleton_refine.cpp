@@ -150,6 +150,29 @@ Skeleton rooted(const DenseGraph &bones, const RawSkeleton &raw, const RefineOpt
     return orderedSkeleton(graph, roots, root);
 }
 
+// The joints still where a limb's base was put (clean-up after limbJoints may have merged or
+// moved some: those are no longer bases). Left empty when there are none.
+void markLimbBases(Skeleton &skeleton, const std::vector<Eigen::Vector2d> &bases)
+{
+    if (bases.empty() || skeleton.jointCount() == 0)
+        return;
+    std::vector<bool> flags(std::size_t(skeleton.jointCount()), false);
+    bool any = false;
+    for (int j = 0; j < skeleton.jointCount(); ++j) {
+        if (skeleton.parent(j) < 0)
+            continue; // a root has no bone into the body to leave out
+        const Eigen::Vector2d p = skeleton.joints.row(j).transpose();
+        for (const Eigen::Vector2d &b : bases) {
+            if ((p - b).norm() <= 1e-9 * (1.0 + b.norm())) {
+                flags[std::size_t(j)] = any = true;
+                break;
+            }
+        }
+    }
+    if (any)
+        skeleton.limbBase = std::move(flags);
+}
+
 bool validLength(double value)
 {
     return value >= 0.0;
@@ -177,16 +200,25 @@ Expected<Skeleton, GeometryError> refineSkeleton(const RawSkeleton &raw,
         removeCornerSpurs(graph, raw.contour);
     mergeJunctions(graph, options.mergeDistance, options.animatorRig, contours);
     ForcedJoints forced;
+    std::vector<Eigen::Vector2d> bases; // where limbs leave the body
     if (options.animatorRig) {
         subdivideLongEdges(graph);
-        forced = [&graph](const Branch &branch) { return limbJoints(graph, branch); };
+        forced = [&graph, &bases](const Branch &branch) {
+            std::vector<int> at;
+            std::vector<int> joints = limbJoints(graph, branch, &at);
+            for (const int i : at)
+                bases.push_back(graph.pos[std::size_t(branch.nodes[std::size_t(i)])]);
+            return joints;
+        };
     }
     DenseGraph bones = bonesFromBranches(graph, options.boneTolerance, contours, forced);
     collapseShortBones(bones, options.collapseLength, options.animatorRig ? kTinyBone : 0.0,
                        contours);
     if (options.animatorRig)
         trimTinyTips(bones, contours);
-    return rooted(bones, raw, options);
+    Skeleton skeleton = rooted(bones, raw, options);
+    markLimbBases(skeleton, bases);
+    return skeleton;
 }
 
 RefineRanges refineRanges(const RawSkeleton &raw)

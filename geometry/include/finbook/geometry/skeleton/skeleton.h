@@ -9,6 +9,9 @@
 //   part    J    the part (object) a joint belongs to: 0 for one part's skeleton, the part's
 //                index in a character assembled from several parts (skeleton_connect.h)
 //   root         the character's root joint (parent[root] == −1); −1 only when J == 0
+//   limbBase     empty, or J flags: the joints where a limb leaves the body (the shoulder, the
+//                hip), set by an animator rig's refinement (skeleton_refine.h); inverse
+//                kinematics turns a limb there, not at the body's centre
 // Bone j runs from joints.row(parent[j]) to joints.row(j) for every non-root j, so a skeleton
 // has J − (number of roots) bones. Several roots make a forest: separate lobes of one object,
 // or parts that are not joined to the character.
@@ -26,6 +29,7 @@ struct Skeleton {
     Eigen::VectorXi parent;
     Eigen::VectorXi part;
     int root = -1;
+    std::vector<bool> limbBase;
 
     int jointCount() const { return int(joints.rows()); }
 };
@@ -49,8 +53,8 @@ std::vector<JointKind> jointKinds(const Skeleton &skeleton);
 // Length of bone j (0 for roots), J entries.
 Eigen::VectorXd boneLengths(const Skeleton &skeleton);
 
-// True if the shapes agree, everything is finite, radius ≥ 0, parent[j] ∈ [−1, j), root is a
-// root (or −1 with no joints) and part ≥ 0.
+// True if the shapes agree (limbBase empty or J), everything is finite, radius ≥ 0,
+// parent[j] ∈ [−1, j), root is a root (or −1 with no joints) and part ≥ 0.
 bool isValidSkeleton(const Skeleton &skeleton);
 
 // Children of every joint, in increasing index order.
