@@ -73,6 +73,7 @@ private slots:
     void ikIsContinuousInTheTarget();
     void locksAreRespected();
     void limbsTurnAtTheirBase();
+    void oneBoneLimbsTurnAtTheirMarkedBase();
     void rootDragTranslates();
     void rotateBoneFollowsTheCursor();
     void badDragInputGivesTypedErrors();
@@ -363,6 +364,50 @@ void TestKinematics::limbsTurnAtTheirBase()
     QVERIFY(result->distance < 0.5);
     QVERIFY(std::abs(boneLength(P, s, 2) - boneLength(s.joints, s, 2)) < 1e-9);
     QVERIFY(std::abs(boneLength(P, s, 3) - boneLength(s.joints, s, 3)) < 1e-9);
+}
+
+// An automatic rig's foreleg: from the chest (a branch point) a bone inside the body to the
+// top of the leg, where the width drops (the limb base), then one bone to the paw. Without the
+// mark the paw's chain takes the bone into the body too, and the drag swings the chest; with
+// it the leg turns at its base, and dragging the base itself still turns the inner bone.
+void TestKinematics::oneBoneLimbsTurnAtTheirMarkedBase()
+{
+    Eigen::MatrixX2d joints(5, 2);
+    joints << 300, 300, 340, 360, 340, 460, 200, 300, 400, 300;
+    Eigen::VectorXi parent(5);
+    parent << -1, 0, 1, 0, 0;
+    const Skeleton s = *makeSkeleton(joints, parent);
+    const std::vector<bool> none(5, false);
+    std::vector<bool> bases(5, false);
+    bases[1] = true;
+    QCOMPARE(ikChain(s, 2, none), Eigen::Vector2i(2, 1));
+    QCOMPARE(ikChain(s, 2, none, 0, bases), Eigen::VectorXi::Constant(1, 2));
+    QCOMPARE(ikChain(s, 1, none, 0, bases), Eigen::VectorXi::Constant(1, 1));
+
+    const Eigen::Vector2d target(440, 380);
+    const auto unmarked = solveIk(s, restPose(s), 2, target);
+    QVERIFY(unmarked.hasValue());
+    QVERIFY((posedJoints(s, unmarked->pose).row(1) - s.joints.row(1)).norm() > 1.0);
+    IkOptions options;
+    options.limbBase = bases;
+    const auto marked = solveIk(s, restPose(s), 2, target, {}, options);
+    QVERIFY(marked.hasValue());
+    const Eigen::MatrixX2d P = posedJoints(s, marked->pose);
+    for (const int j : {0, 1, 3, 4})
+        QVERIFY((P.row(j) - s.joints.row(j)).norm() < 1e-9);
+    // The paw points from the base at the cursor, the leg its own length.
+    const Eigen::Vector2d base = s.joints.row(1).transpose(), paw = P.row(2).transpose();
+    QVERIFY(std::abs((paw - base).norm() - 100.0) < 1e-9);
+    QVERIFY(std::abs((paw - base).normalized().dot((target - base).normalized()) - 1.0) < 1e-12);
+    // Dragging the base turns the bone into the body about the chest.
+    const auto shoulder = solveIk(s, restPose(s), 1, Eigen::Vector2d(360, 340), {}, options);
+    QVERIFY(shoulder.hasValue());
+    QCOMPARE(shoulder->chain, Eigen::VectorXi::Constant(1, 1));
+    QVERIFY(std::abs(shoulder->pose.angles(1)) > 0.1);
+    options.limbBase.resize(3);
+    QCOMPARE(solveIk(s, restPose(s), 2, target, {}, options).error().code,
+             DeformErrorCode::SizeMismatch);
+    QCOMPARE(ikChain(s, 2, none, 0, std::vector<bool>(3)).size(), Eigen::Index(0));
 }
 
 void TestKinematics::rootDragTranslates()

@@ -214,10 +214,11 @@ Expected<IkResult, DeformError> translateRoots(const PosedSkeleton &posed, IkRes
 } // namespace
 
 Eigen::VectorXi ikChain(const Skeleton &skeleton, int joint, const std::vector<bool> &locked,
-                        int maxChainBones)
+                        int maxChainBones, const std::vector<bool> &limbBase)
 {
     const Eigen::Index count = skeleton.jointCount();
-    if (joint < 0 || joint >= count || (!locked.empty() && Eigen::Index(locked.size()) != count))
+    if (joint < 0 || joint >= count || (!locked.empty() && Eigen::Index(locked.size()) != count) ||
+        (!limbBase.empty() && Eigen::Index(limbBase.size()) != count))
         return Eigen::VectorXi();
     // lockedBelow[j]: joint j or one of its descendants is locked (children after parents in
     // `order`, so a reverse sweep sees every child before its parent).
@@ -245,6 +246,9 @@ Eigen::VectorXi ikChain(const Skeleton &skeleton, int joint, const std::vector<b
          j = skeleton.parent(j)) {
         if (static_cast<int>(chain.size()) >= longest)
             break;
+        // A limb base's bone runs into the body: it turns only when the base itself is dragged.
+        if (!chain.empty() && !limbBase.empty() && limbBase[static_cast<std::size_t>(j)])
+            break;
         const bool fromBranch = children[static_cast<std::size_t>(skeleton.parent(j))] >= 2;
         if (fromBranch && chain.size() >= 2)
             break;
@@ -265,6 +269,9 @@ Expected<IkResult, DeformError> solveIk(const Skeleton &skeleton, const Skeleton
     if (!locked.empty() && Eigen::Index(locked.size()) != skeleton.jointCount())
         return unexpected(makeError(DeformErrorCode::SizeMismatch,
                                     "the locks do not match the skeleton's joints"));
+    if (!options.limbBase.empty() && Eigen::Index(options.limbBase.size()) != skeleton.jointCount())
+        return unexpected(makeError(DeformErrorCode::SizeMismatch,
+                                    "the limb bases do not match the skeleton's joints"));
     if (auto error = checkPoint(target, "the target"))
         return unexpected(*error);
     auto posed = forwardKinematics(skeleton, start);
@@ -277,7 +284,7 @@ Expected<IkResult, DeformError> solveIk(const Skeleton &skeleton, const Skeleton
     }
     if (skeleton.isRoot(joint))
         return translateRoots(*posed, std::move(result), joint, target, locked);
-    result.chain = ikChain(skeleton, joint, locked, options.maxChainBones);
+    result.chain = ikChain(skeleton, joint, locked, options.maxChainBones, options.limbBase);
     const Eigen::Index m = result.chain.size();
     if (m > 0) {
         // Chain positions from its fixed pivot down to the dragged joint.

@@ -8,8 +8,12 @@
 // move a locked joint (the nearest locked ancestor, or a locked joint on a side branch), at a
 // root, or at a branch point (a joint with two or more children): a bone starting at a branch
 // point is the last of the chain, and is left out when the chain already has two bones, so a
-// limb turns at its own base joint and not about the body's centre. Roots are never turned by
-// IK; dragging a root translates the whole skeleton.
+// limb turns at its own base joint and not about the body's centre. A limb base (a joint the
+// automatic skeleton put where a limb leaves the body, IkOptions::limbBase) ends the chain of
+// every joint below it the same way, however few bones the limb has: its bone runs into the
+// body, so a one-bone ear or foreleg dragged by its tip turns at its base; dragging the base
+// itself still turns that bone. Roots are never turned by IK; dragging a root translates the
+// whole skeleton.
 #pragma once
 
 #include <finbook/deform/deform_error.h>
@@ -32,6 +36,8 @@ struct IkOptions {
                              // way at most kMaxIkChainBones)
     int iterations = 64;     // FABRIK passes for chains of three or more bones
     double tolerance = 1e-4; // px: FABRIK stops once the dragged joint is this close
+    // Empty, or one flag per joint: the limb bases (see above). Another size is an error.
+    std::vector<bool> limbBase;
 };
 
 struct IkResult {
@@ -44,7 +50,7 @@ struct IkResult {
 // An empty chain when the joint is locked, a root, or its own bone would move a locked joint,
 // and when the joint is not in [0, J) or `locked` has another size.
 Eigen::VectorXi ikChain(const Skeleton &skeleton, int joint, const std::vector<bool> &locked,
-                        int maxChainBones = 0);
+                        int maxChainBones = 0, const std::vector<bool> &limbBase = {});
 
 // Moves `joint` towards `target` (canvas px) by turning the bones of its chain: one bone turns
 // to point at the target, two bones are solved in closed form (keeping the side the middle
