@@ -363,157 +363,157 @@
         <translation>Unbekannter Befehl „%1“; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="40"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: Einzelbilder A bis B (Standard: der Wiedergabebereich).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
+        <location filename="../app/cli_export.cpp" line="39"/>
         <source>export: png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>export: png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="42"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: frame N only; a 3D model (obj, glb) is one frame, by default the first of the play range.</source>
         <translation>export: nur Einzelbild N; ein 3D-Modell (obj, glb) ist ein Einzelbild, standardmäßig das erste des Abspielbereichs.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: die Leinwandgröße mit S multiplizieren.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="47"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: N Bilder pro Sekunde (Standard: die des Dokuments).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="49"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: diese Hintergrundfarbe (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
         <source>export: no background.</source>
         <translation>export: kein Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="52"/>
+        <location filename="../app/cli_export.cpp" line="53"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: eine Datei pro Zeichnung plus ein Timing-Sheet.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="55"/>
+        <location filename="../app/cli_export.cpp" line="56"/>
         <source>export: paint the document&apos;s reference picture or video under the drawing.</source>
         <translation>export: das Referenzbild oder -video des Dokuments unter die Zeichnung malen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="58"/>
+        <location filename="../app/cli_export.cpp" line="59"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="59"/>
+        <location filename="../app/cli_export.cpp" line="60"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="61"/>
+        <location filename="../app/cli_export.cpp" line="62"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="92"/>
+        <location filename="../app/cli_export.cpp" line="93"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="106"/>
+        <location filename="../app/cli_export.cpp" line="107"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame und --range können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="109"/>
+        <location filename="../app/cli_export.cpp" line="110"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame braucht eine Bildnummer ab 1, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="116"/>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="122"/>
+        <location filename="../app/cli_export.cpp" line="123"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="130"/>
+        <location filename="../app/cli_export.cpp" line="131"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="136"/>
+        <location filename="../app/cli_export.cpp" line="137"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="148"/>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="164"/>
+        <location filename="../app/cli_export.cpp" line="165"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="171"/>
+        <location filename="../app/cli_export.cpp" line="172"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html, .obj oder .glb enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="176"/>
+        <location filename="../app/cli_export.cpp" line="177"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="192"/>
+        <location filename="../app/cli_export.cpp" line="193"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="196"/>
+        <location filename="../app/cli_export.cpp" line="197"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="207"/>
+        <location filename="../app/cli_export.cpp" line="208"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="209"/>
+        <location filename="../app/cli_export.cpp" line="210"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="305"/>
+        <location filename="../app/cli_export.cpp" line="306"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="317"/>
+        <location filename="../app/cli_export.cpp" line="319"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Unterbrochen; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="324"/>
+        <location filename="../app/cli_export.cpp" line="326"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="326"/>
+        <location filename="../app/cli_export.cpp" line="328"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
@@ -611,18 +611,18 @@
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_build.cpp" line="68"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="77"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="83"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Für diese Zeichnung lässt sich kein Skelett erstellen.</translation>
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="27"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="90"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="161"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="182"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="22"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="66"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="93"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="136"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="165"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="188"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="23"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="67"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>Das Skelett ist beschädigt; erstellen Sie es neu.</translation>
     </message>
@@ -637,45 +637,45 @@
         <translation>Dieses Gelenk gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="48"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="62"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="50"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="64"/>
         <source>A joint cannot go there.</source>
         <translation>Dorthin kann kein Gelenk.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="60"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="62"/>
         <source>A joint can only be inserted on a bone.</source>
         <translation>Ein Gelenk kann nur auf einem Knochen eingefügt werden.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="67"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="69"/>
         <source>The bone is too short to split.</source>
         <translation>Der Knochen ist zu kurz zum Teilen.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="99"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="102"/>
         <source>A skeleton needs at least one bone.</source>
         <translation>Ein Skelett braucht mindestens einen Knochen.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="33"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="56"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="34"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="57"/>
         <source>The skeleton cannot be used: %1</source>
         <translation>Das Skelett kann nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="122"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="137"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="145"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="155"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="123"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="138"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="168"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="178"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>Das Skelett kann nicht an diese Zeichnung gebunden werden: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="72"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="173"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="177"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="183"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="73"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="295"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="299"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="305"/>
         <source>The bones could not be posed: %1</source>
         <translation>Die Knochen konnten nicht posiert werden: %1</translation>
     </message>
@@ -1403,152 +1403,152 @@
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="52"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="53"/>
         <source>the frame list</source>
         <translation>die Einzelbildliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="60"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
         <source>a frame</source>
         <translation>ein Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>das Einzelbild ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
         <source>%1; the frame is left out</source>
         <translation>%1; das Einzelbild wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>a frame id</source>
         <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
         <source>the frame</source>
         <translation>das Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="84"/>
         <source>a frame hold</source>
         <translation>eine Haltedauer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
         <source>the object list</source>
         <translation>die Objektliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="99"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>das Objekt ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
         <source>%1; the object is left out</source>
         <translation>%1; das Objekt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
         <source>a chunk header</source>
         <translation>ein Blockkopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="204"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="222"/>
         <source>a chunk</source>
         <translation>ein Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
         <source>chunk</source>
         <translation>Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>an object id</source>
         <translation>eine Objekt-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
         <source>the object</source>
         <translation>das Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
         <source>the object flags</source>
         <translation>die Objektattribute</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the mesh density</source>
         <translation>die Netzdichte</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="149"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
         <source>the object name</source>
         <translation>der Objektname</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="152"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="171"/>
         <source>the stroke list</source>
         <translation>die Strichliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
         <source>a stroke id</source>
         <translation>eine Strich-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="189"/>
         <source>the stroke</source>
         <translation>der Strich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>seine Pose hat %n Strich, das Objekt aber %1</numerusform>
@@ -1556,7 +1556,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="338"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>Strich %1 hat %n Punkt, seine Pose aber %2</numerusform>
@@ -1564,122 +1564,122 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
         <source>a stroke reference</source>
         <translation>ein Strichverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="41"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="42"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 gibt %2 Einträge an; die %3, die hineinpassen, werden gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
         <source>an unknown chunk is left out</source>
         <translation>ein unbekannter Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="217"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>Block %1 kommt doppelt oder mit einem anderen Rig vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
         <source>%1; the chunk is left out</source>
         <translation>%1; der Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
         <source>the skeleton&apos;s join</source>
         <translation>die Verbindung des Skeletts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="255"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="256"/>
         <source>a join comes without a skeleton</source>
         <translation>eine Verbindung steht ohne Skelett</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>die Verbindung des Skeletts ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="276"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="277"/>
         <source>the pin list</source>
         <translation>die Pin-Liste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
         <source>a pin id</source>
         <translation>eine Pin-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
         <source>pin %1</source>
         <translation>Pin %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>a pin position</source>
         <translation>eine Pin-Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
         <source>pin %1 has a non-finite position</source>
         <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
         <source>the cage corner list</source>
         <translation>die Käfigeckenliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="302"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>der Käfig hat weniger als 3 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
         <source>a cage corner</source>
         <translation>eine Käfigecke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>Käfigecke %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>a pose reference</source>
         <translation>ein Posenverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="323"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="327"/>
         <source>its pose: %1</source>
         <translation>seine Pose: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
         <source>%1 has no id</source>
         <translation>%1 hat keine ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="351"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 hat die ID %2, die größer ist als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
@@ -1801,6 +1801,26 @@
         <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="73"/>
         <source>skeleton joint %1 has an unknown lock state</source>
         <translation>Skelettgelenk %1 hat einen unbekannten Sperrzustand</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="84"/>
+        <source>the skeleton&apos;s limb bases</source>
+        <translation>die Gliedmaßenansätze des Skeletts</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="87"/>
+        <source>limb bases come without a skeleton</source>
+        <translation>Gliedmaßenansätze stehen ohne Skelett</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="90"/>
+        <source>the skeleton has %1 joints but %2 limb base flags</source>
+        <translation>das Skelett hat %1 Gelenke, aber %2 Markierungen für Gliedmaßenansätze</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="99"/>
+        <source>skeleton joint %1 has an unknown limb base flag</source>
+        <translation>Skelettgelenk %1 hat eine unbekannte Markierung für den Gliedmaßenansatz</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
@@ -2322,27 +2342,27 @@
         <translation>die Datei ist beschädigt oder unvollständig.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="42"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="43"/>
         <source>Usage: finbook thumbnail FILE OUT.png SIZE</source>
         <translation>Aufruf: finbook thumbnail DATEI AUSGABE.png GRÖSSE</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="48"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="49"/>
         <source>The thumbnail size &quot;%1&quot; is not a whole number from 1 to %2.</source>
         <translation>Die Vorschaugröße „%1“ ist keine ganze Zahl von 1 bis %2.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="57"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="58"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: it has no frame.</source>
         <translation>Für „%1“ kann keine Vorschau erstellt werden: sie hat kein Bild.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="67"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="69"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: there is not enough memory.</source>
         <translation>Für „%1“ kann keine Vorschau erstellt werden: nicht genug Arbeitsspeicher.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="73"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="75"/>
         <source>Cannot write the thumbnail &quot;%1&quot;: %2.</source>
         <translation>Die Vorschau „%1“ kann nicht geschrieben werden: %2.</translation>
     </message>
@@ -2402,12 +2422,12 @@
         <translation>Ziehen Sie einen Knochen, um ihn zu drehen, ein Gelenk, um es zu ziehen, die Wurzel, um das Objekt zu verschieben; L über einem Gelenk sperrt es; die Wurzel mit Umschalt auf ein anderes Teil ziehen verbindet beide.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="364"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="366"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>Legen Sie die Wurzel auf einem Knochen eines anderen Teils ab, um beide zu verbinden.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="372"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="374"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 hängt bereits an diesem Teil und kann daher nicht umgekehrt daran hängen.</translation>
     </message>

@@ -363,157 +363,157 @@
         <translation>Commande inconnue « %1 » ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="40"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export : images A à B (par défaut : la plage de lecture).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
+        <location filename="../app/cli_export.cpp" line="39"/>
         <source>export: png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>export : png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="42"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: frame N only; a 3D model (obj, glb) is one frame, by default the first of the play range.</source>
         <translation>export : l&apos;image N seulement ; un modèle 3D (obj, glb) est une seule image, par défaut la première de la plage de lecture.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export : multiplier la taille du canevas par S.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="47"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export : N images par seconde (par défaut : celle du document).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="49"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export : cette couleur d&apos;arrière-plan (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
         <source>export: no background.</source>
         <translation>export : pas d&apos;arrière-plan.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="52"/>
+        <location filename="../app/cli_export.cpp" line="53"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg : un fichier par dessin, plus une feuille d&apos;exposition.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="55"/>
+        <location filename="../app/cli_export.cpp" line="56"/>
         <source>export: paint the document&apos;s reference picture or video under the drawing.</source>
         <translation>export : peindre l’image ou la vidéo de référence du document sous le dessin.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="58"/>
+        <location filename="../app/cli_export.cpp" line="59"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="59"/>
+        <location filename="../app/cli_export.cpp" line="60"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="61"/>
+        <location filename="../app/cli_export.cpp" line="62"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="92"/>
+        <location filename="../app/cli_export.cpp" line="93"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="106"/>
+        <location filename="../app/cli_export.cpp" line="107"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame et --range ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="109"/>
+        <location filename="../app/cli_export.cpp" line="110"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame attend un numéro d&apos;image à partir de 1, pas « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="116"/>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="122"/>
+        <location filename="../app/cli_export.cpp" line="123"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="130"/>
+        <location filename="../app/cli_export.cpp" line="131"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="136"/>
+        <location filename="../app/cli_export.cpp" line="137"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="148"/>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="164"/>
+        <location filename="../app/cli_export.cpp" line="165"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="171"/>
+        <location filename="../app/cli_export.cpp" line="172"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html, .obj ou .glb, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="176"/>
+        <location filename="../app/cli_export.cpp" line="177"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="192"/>
+        <location filename="../app/cli_export.cpp" line="193"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="196"/>
+        <location filename="../app/cli_export.cpp" line="197"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="207"/>
+        <location filename="../app/cli_export.cpp" line="208"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="209"/>
+        <location filename="../app/cli_export.cpp" line="210"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="305"/>
+        <location filename="../app/cli_export.cpp" line="306"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="317"/>
+        <location filename="../app/cli_export.cpp" line="319"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="324"/>
+        <location filename="../app/cli_export.cpp" line="326"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="326"/>
+        <location filename="../app/cli_export.cpp" line="328"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -611,18 +611,18 @@
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_build.cpp" line="68"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="77"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="83"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>Impossible de construire un squelette pour ce dessin.</translation>
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="27"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="90"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="161"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="182"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="22"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="66"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="93"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="136"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="165"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="188"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="23"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="67"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>Le squelette est endommagé&#xa0;; reconstruisez-le.</translation>
     </message>
@@ -637,45 +637,45 @@
         <translation>Cette articulation n’existe pas.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="48"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="62"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="50"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="64"/>
         <source>A joint cannot go there.</source>
         <translation>Une articulation ne peut pas aller là.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="60"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="62"/>
         <source>A joint can only be inserted on a bone.</source>
         <translation>Une articulation ne peut être insérée que sur un os.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="67"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="69"/>
         <source>The bone is too short to split.</source>
         <translation>L’os est trop court pour être divisé.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="99"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="102"/>
         <source>A skeleton needs at least one bone.</source>
         <translation>Un squelette a besoin d’au moins un os.</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="33"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="56"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="34"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="57"/>
         <source>The skeleton cannot be used: %1</source>
         <translation>Impossible d&apos;utiliser le squelette&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="122"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="137"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="145"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="155"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="123"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="138"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="168"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="178"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>Le squelette ne peut pas habiller ce dessin&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="72"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="173"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="177"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="183"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="73"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="295"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="299"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="305"/>
         <source>The bones could not be posed: %1</source>
         <translation>Impossible de poser les os&#xa0;: %1</translation>
     </message>
@@ -1403,152 +1403,152 @@
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="52"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="53"/>
         <source>the frame list</source>
         <translation>la liste des images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="60"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
         <source>a frame</source>
         <translation>une image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
         <source>%1; the frame is left out</source>
         <translation>%1&#xa0;; l&apos;image est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>a frame id</source>
         <translation>un identifiant d&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
         <source>the frame</source>
         <translation>l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="84"/>
         <source>a frame hold</source>
         <translation>une durée d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
         <source>the object list</source>
         <translation>la liste des objets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
         <source>an object</source>
         <translation>un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="99"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
         <source>%1; the object is left out</source>
         <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
         <source>a chunk header</source>
         <translation>un en-tête de bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="204"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="222"/>
         <source>a chunk</source>
         <translation>un bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
         <source>chunk</source>
         <translation>bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>an object id</source>
         <translation>un identifiant d&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
         <source>the object</source>
         <translation>l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
         <source>the object flags</source>
         <translation>les attributs de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the mesh density</source>
         <translation>la densité du maillage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="149"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
         <source>the object name</source>
         <translation>le nom de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="152"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="171"/>
         <source>the stroke list</source>
         <translation>la liste des traits</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
         <source>a stroke id</source>
         <translation>un identifiant de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="189"/>
         <source>the stroke</source>
         <translation>le trait</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>sa pose a %n trait, mais l&apos;objet en a %1</numerusform>
@@ -1556,7 +1556,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="338"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>le trait %1 a %n point, mais sa pose en a %2</numerusform>
@@ -1564,122 +1564,122 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
         <source>a stroke reference</source>
         <translation>une référence de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="41"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="42"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
         <source>an unknown chunk is left out</source>
         <translation>un bloc inconnu est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="217"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
         <source>%1; the chunk is left out</source>
         <translation>%1&#xa0;; le bloc est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
         <source>the skeleton&apos;s join</source>
         <translation>la jonction du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="255"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="256"/>
         <source>a join comes without a skeleton</source>
         <translation>une jonction est présente sans squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>la jonction du squelette est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="276"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="277"/>
         <source>the pin list</source>
         <translation>la liste des épingles</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
         <source>a pin id</source>
         <translation>un identifiant d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
         <source>pin %1</source>
         <translation>l&apos;épingle %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>a pin position</source>
         <translation>une position d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
         <source>pin %1 has a non-finite position</source>
         <translation>l&apos;épingle %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
         <source>the cage corner list</source>
         <translation>la liste des coins de la cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="302"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>la cage a moins de 3 coins</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
         <source>a cage corner</source>
         <translation>un coin de cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>le coin de cage %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>a pose reference</source>
         <translation>une référence de pose</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="323"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="327"/>
         <source>its pose: %1</source>
         <translation>sa pose&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
         <source>%1 has no id</source>
         <translation>%1 n&apos;a pas d&apos;identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="351"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
@@ -1801,6 +1801,26 @@
         <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="73"/>
         <source>skeleton joint %1 has an unknown lock state</source>
         <translation>l’articulation %1 du squelette a un état de verrouillage inconnu</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="84"/>
+        <source>the skeleton&apos;s limb bases</source>
+        <translation>les bases des membres du squelette</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="87"/>
+        <source>limb bases come without a skeleton</source>
+        <translation>des bases de membres sont présentes sans squelette</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="90"/>
+        <source>the skeleton has %1 joints but %2 limb base flags</source>
+        <translation>le squelette a %1 articulations mais %2 marques de base de membre</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="99"/>
+        <source>skeleton joint %1 has an unknown limb base flag</source>
+        <translation>l’articulation %1 du squelette a une marque de base de membre inconnue</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
@@ -2322,27 +2342,27 @@
         <translation>le fichier est endommagé ou incomplet.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="42"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="43"/>
         <source>Usage: finbook thumbnail FILE OUT.png SIZE</source>
         <translation>Utilisation&#xa0;: finbook thumbnail FICHIER SORTIE.png TAILLE</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="48"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="49"/>
         <source>The thumbnail size &quot;%1&quot; is not a whole number from 1 to %2.</source>
         <translation>La taille de vignette «&#xa0;%1&#xa0;» n&apos;est pas un nombre entier de 1 à %2.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="57"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="58"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: it has no frame.</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: il n&apos;a aucune image.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="67"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="69"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: there is not enough memory.</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="73"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="75"/>
         <source>Cannot write the thumbnail &quot;%1&quot;: %2.</source>
         <translation>Impossible d&apos;écrire la vignette «&#xa0;%1&#xa0;»&#xa0;: %2.</translation>
     </message>
@@ -2402,12 +2422,12 @@
         <translation>Faites glisser un os pour le tourner, une articulation pour la tirer, la racine pour déplacer l’objet ; L sur une articulation la verrouille ; faites glisser la racine avec Maj sur une autre partie pour les joindre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="364"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="366"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>Déposez la racine sur un os d’une autre partie pour les joindre.</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="372"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="374"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 est déjà suspendu à cette partie ; elle ne peut donc pas être suspendue à lui en retour.</translation>
     </message>

@@ -363,157 +363,157 @@
         <translation>不明なコマンド「%1」です。%2。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="40"/>
+        <location filename="../app/cli_export.cpp" line="41"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: フレーム A～B（既定: 再生範囲）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="38"/>
+        <location filename="../app/cli_export.cpp" line="39"/>
         <source>export: png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>export: png、svg、gif、mp4、webm、apng、html、obj、glb のいずれか。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="42"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: frame N only; a 3D model (obj, glb) is one frame, by default the first of the play range.</source>
         <translation>export: フレーム N のみ。3D モデル (obj、glb) は 1 フレームで、既定では再生範囲の最初のフレーム。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="45"/>
+        <location filename="../app/cli_export.cpp" line="46"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: キャンバスサイズを S 倍にする。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="47"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: 毎秒 N フレーム（既定: ドキュメントの設定）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="49"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: この背景色（#rrggbb）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="51"/>
         <source>export: no background.</source>
         <translation>export: 背景なし。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="52"/>
+        <location filename="../app/cli_export.cpp" line="53"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: 絵ごとに 1 ファイルとタイムシートを書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="55"/>
+        <location filename="../app/cli_export.cpp" line="56"/>
         <source>export: paint the document&apos;s reference picture or video under the drawing.</source>
         <translation>export: 文書の参照画像または参照動画を絵の下に描きます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="58"/>
+        <location filename="../app/cli_export.cpp" line="59"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="59"/>
+        <location filename="../app/cli_export.cpp" line="60"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="61"/>
+        <location filename="../app/cli_export.cpp" line="62"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="92"/>
+        <location filename="../app/cli_export.cpp" line="93"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="106"/>
+        <location filename="../app/cli_export.cpp" line="107"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame と --range は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="109"/>
+        <location filename="../app/cli_export.cpp" line="110"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame には 1 以上のフレーム番号を指定してください (「%1」ではなく)。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="116"/>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="122"/>
+        <location filename="../app/cli_export.cpp" line="123"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="130"/>
+        <location filename="../app/cli_export.cpp" line="131"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="136"/>
+        <location filename="../app/cli_export.cpp" line="137"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="148"/>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj、glb のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="164"/>
+        <location filename="../app/cli_export.cpp" line="165"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="171"/>
+        <location filename="../app/cli_export.cpp" line="172"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj、.glb にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="176"/>
+        <location filename="../app/cli_export.cpp" line="177"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="192"/>
+        <location filename="../app/cli_export.cpp" line="193"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="196"/>
+        <location filename="../app/cli_export.cpp" line="197"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="207"/>
+        <location filename="../app/cli_export.cpp" line="208"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="209"/>
+        <location filename="../app/cli_export.cpp" line="210"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="305"/>
+        <location filename="../app/cli_export.cpp" line="306"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="317"/>
+        <location filename="../app/cli_export.cpp" line="319"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="324"/>
+        <location filename="../app/cli_export.cpp" line="326"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="326"/>
+        <location filename="../app/cli_export.cpp" line="328"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -610,18 +610,18 @@
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_build.cpp" line="68"/>
-        <location filename="../model/src/skeleton/skeleton_build.cpp" line="77"/>
+        <location filename="../model/src/skeleton/skeleton_build.cpp" line="83"/>
         <source>No skeleton can be built for this drawing.</source>
         <translation>この絵にはスケルトンを作成できません。</translation>
     </message>
     <message>
         <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="27"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="90"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="132"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="161"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="182"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="22"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="66"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="93"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="136"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="165"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="188"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="23"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="67"/>
         <source>The skeleton is damaged; build it again.</source>
         <translation>スケルトンが破損しています。作成し直してください。</translation>
     </message>
@@ -636,45 +636,45 @@
         <translation>その関節はありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="48"/>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="62"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="50"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="64"/>
         <source>A joint cannot go there.</source>
         <translation>そこには関節を置けません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="60"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="62"/>
         <source>A joint can only be inserted on a bone.</source>
         <translation>関節はボーンの上にだけ挿入できます。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="67"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="69"/>
         <source>The bone is too short to split.</source>
         <translation>ボーンが短すぎて分割できません。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="99"/>
+        <location filename="../model/src/skeleton/skeleton_joint_edit.cpp" line="102"/>
         <source>A skeleton needs at least one bone.</source>
         <translation>スケルトンには少なくとも 1 本のボーンが必要です。</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="33"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="56"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="34"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="57"/>
         <source>The skeleton cannot be used: %1</source>
         <translation>スケルトンを使用できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="122"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="137"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="145"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="155"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="123"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="138"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="168"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="178"/>
         <source>The skeleton cannot skin this drawing: %1</source>
         <translation>このスケルトンではこの絵をスキニングできません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="72"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="173"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="177"/>
-        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="183"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="73"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="295"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="299"/>
+        <location filename="../model/src/skeleton/skeleton_setup.cpp" line="305"/>
         <source>The bones could not be posed: %1</source>
         <translation>ボーンのポーズを計算できませんでした: %1</translation>
     </message>
@@ -1400,281 +1400,281 @@
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="50"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="52"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="53"/>
         <source>the frame list</source>
         <translation>フレーム一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="60"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
         <source>a frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="63"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>フレームが途中で切れているため、以降のフレームとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
         <source>%1; the frame is left out</source>
         <translation>%1。このフレームは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="81"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
         <source>a frame id</source>
         <translation>フレーム ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
         <source>the frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="84"/>
         <source>a frame hold</source>
         <translation>フレームの表示時間</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>表示時間 %1 が 1～%2 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
         <source>the object list</source>
         <translation>オブジェクト一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
         <source>an object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="99"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>オブジェクトが途中で切れているため、以降のオブジェクトとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
         <source>%1; the object is left out</source>
         <translation>%1。このオブジェクトは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="113"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="201"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
         <source>a chunk header</source>
         <translation>チャンクヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="204"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="222"/>
         <source>a chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
         <source>chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="124"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
         <source>an object id</source>
         <translation>オブジェクト ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
         <source>the object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
         <source>the object flags</source>
         <translation>オブジェクトのフラグ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>オブジェクトのフラグ 0x%1 は不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the mesh density</source>
         <translation>メッシュ密度</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>メッシュ密度 %1 が 0～1000 の数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="149"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
         <source>the object name</source>
         <translation>オブジェクト名</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="152"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>オブジェクト名が %1 バイトあります（最大 %2 バイト）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>オブジェクト名が有効な UTF-8 テキストではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="170"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="171"/>
         <source>the stroke list</source>
         <translation>ストローク一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
         <source>a stroke id</source>
         <translation>ストローク ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="189"/>
         <source>the stroke</source>
         <translation>ストローク</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>ポーズのストローク数は %n ですが、オブジェクトのストローク数は %1 です</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="338"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>ストローク %1 の点の数は %n ですが、ポーズでは %2 です</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
         <source>a stroke reference</source>
         <translation>ストロークの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="41"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="42"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 には %2 個の項目があるはずですが、収まっている %3 個を読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>ストロークデータ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
         <source>an unknown chunk is left out</source>
         <translation>不明なチャンクを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="216"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="217"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>チャンク %1 が 2 回、または別のリグと一緒に現れます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
         <source>%1; the chunk is left out</source>
         <translation>%1。このチャンクは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
         <source>the skeleton&apos;s join</source>
         <translation>スケルトンの接続</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="255"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="256"/>
         <source>a join comes without a skeleton</source>
         <translation>スケルトンのない接続があります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>スケルトンの接続が壊れています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="276"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="277"/>
         <source>the pin list</source>
         <translation>ピン一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="281"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
         <source>a pin id</source>
         <translation>ピン ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
         <source>pin %1</source>
         <translation>ピン %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>a pin position</source>
         <translation>ピンの位置</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
         <source>pin %1 has a non-finite position</source>
         <translation>ピン %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
         <source>the cage corner list</source>
         <translation>ケージの頂点一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="301"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="302"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>ケージの頂点が 3 個未満です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
         <source>a cage corner</source>
         <translation>ケージの頂点</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>ケージの頂点 %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>a pose reference</source>
         <translation>ポーズの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="323"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>ポーズがポーズ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="327"/>
         <source>its pose: %1</source>
         <translation>ポーズ: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="349"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
         <source>%1 has no id</source>
         <translation>%1 に ID がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="351"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 の ID %2 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
@@ -1795,6 +1795,26 @@
         <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="73"/>
         <source>skeleton joint %1 has an unknown lock state</source>
         <translation>スケルトンの関節 %1 のロック状態が不明です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="84"/>
+        <source>the skeleton&apos;s limb bases</source>
+        <translation>スケルトンの肢の付け根</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="87"/>
+        <source>limb bases come without a skeleton</source>
+        <translation>スケルトンのない肢の付け根があります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="90"/>
+        <source>the skeleton has %1 joints but %2 limb base flags</source>
+        <translation>スケルトンの関節は %1 個ですが、肢の付け根の印は %2 個です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/skeleton/skeleton_chunk.cpp" line="99"/>
+        <source>skeleton joint %1 has an unknown limb base flag</source>
+        <translation>スケルトンの関節 %1 に不明な肢の付け根の印があります</translation>
     </message>
     <message>
         <location filename="../model/src/finbook_file_recover.cpp" line="49"/>
@@ -2313,27 +2333,27 @@
         <translation>ファイルが破損しているか不完全です。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="42"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="43"/>
         <source>Usage: finbook thumbnail FILE OUT.png SIZE</source>
         <translation>使い方: finbook thumbnail ファイル 出力.png サイズ</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="48"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="49"/>
         <source>The thumbnail size &quot;%1&quot; is not a whole number from 1 to %2.</source>
         <translation>サムネイルのサイズ「%1」は 1 から %2 までの整数ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="57"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="58"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: it has no frame.</source>
         <translation>「%1」のサムネイルを作成できません: フレームがありません。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="67"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="69"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: there is not enough memory.</source>
         <translation>「%1」のサムネイルを作成できません: メモリが足りません。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="73"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="75"/>
         <source>Cannot write the thumbnail &quot;%1&quot;: %2.</source>
         <translation>サムネイル「%1」を書き込めません: %2。</translation>
     </message>
@@ -2392,12 +2412,12 @@
         <translation>ボーンをドラッグすると回転、関節をドラッグすると引っ張り、ルートをドラッグするとオブジェクトを移動します。関節の上で L キーを押すとロックします。ルートを Shift キーを押しながら別のパーツへドラッグすると接続します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="364"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="366"/>
         <source>Drop the root on a bone of another part to join them.</source>
         <translation>ルートを別のパーツのボーンにドロップすると接続します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/tool_bone.cpp" line="372"/>
+        <location filename="../ui/src/skeleton/tool_bone.cpp" line="374"/>
         <source>%1 hangs from this part already, so it cannot hang from it in turn.</source>
         <translation>%1 はすでにこのパーツにぶら下がっているため、逆にぶら下げることはできません。</translation>
     </message>

@@ -25,6 +25,10 @@
 //              The locks (0 or 1 per joint) are written only when a joint is locked, so a
 //              skeleton without locks keeps the original layout and older files (which end
 //              at the mode) open with no locks.
+//   "limb"  := u32 joints u8 limbBase[joints]   (ancillary; skeleton/skeleton_rig.h limbBase,
+//              0 or 1 per joint): where the skeleton's limbs leave the body. Written only when
+//              some joint is a limb base, only after SKEL; a reader that skips it turns limbs
+//              from the body's centre when dragged by their tip.
 //   "FILL"  := u32 count (u32 color f64 seedX f64 seedY u32 n u64 strokeId[n])[count]
 //              (format 3 on; types.h Fill): fills, drawn under the strokes in this order.
 //   "shad"  := u32 count (u8 ramp u8 rim)[count]   (ancillary; types.h FillShading): how each
@@ -108,6 +112,7 @@ constexpr quint32 kTagReference = tag("refr");
 constexpr quint32 kTagReferenceSequence = tag("rseq");
 constexpr quint32 kTagSound = tag("SOND");
 constexpr quint32 kTagShading = tag("shad");
+constexpr quint32 kTagLimbBases = tag("limb");
 constexpr quint32 kTagLight = tag("lite");
 
 inline bool isAncillary(quint32 t)

@@ -99,7 +99,8 @@ private:
     void readReferenceSequenceSection(Cursor &c);     // reference/reference_section.cpp
     std::vector<Pin> readPins(Cursor &c);
     CageRig readCage(Cursor &c);
-    SkeletonRig readSkeleton(Cursor &c); // skeleton/skeleton_chunk.cpp
+    SkeletonRig readSkeleton(Cursor &c);                // skeleton/skeleton_chunk.cpp
+    void readLimbBasesChunk(Cursor &c, StrokeGroup &g); // skeleton/skeleton_chunk.cpp
     DeformedStrokesPtr readPoseRef(Cursor &c, const StrokeGroup &group);
     void claimId(Cursor &c, Id id, const QString &owner);
     // sound/sound_section.cpp: one "SOND" section, a clip of the soundtrack.

@@ -23,10 +23,14 @@ constexpr qint64 kClaimedIdBytes = qint64(sizeof(Id));
 
 // New object chunks go here: one row, one read function.
 const Reader::ObjectChunk Reader::kObjectChunks[] = {
-    {kTagPins, true, &Reader::readPinsChunk},         {kTagCage, true, &Reader::readCageChunk},
-    {kTagSkeleton, true, &Reader::readSkeletonChunk}, {kTagJoin, false, &Reader::readJoinChunk},
-    {kTagDeformed, false, &Reader::readPoseChunk},    {kTagFills, false, &Reader::readFillsChunk},
+    {kTagPins, true, &Reader::readPinsChunk},
+    {kTagCage, true, &Reader::readCageChunk},
+    {kTagSkeleton, true, &Reader::readSkeletonChunk},
+    {kTagJoin, false, &Reader::readJoinChunk},
+    {kTagDeformed, false, &Reader::readPoseChunk},
+    {kTagFills, false, &Reader::readFillsChunk},
     {kTagShading, false, &Reader::readShadingChunk},
+    {kTagLimbBases, false, &Reader::readLimbBasesChunk},
 };
 
 quint32 Reader::count(Cursor &c, std::size_t recordBytes, const char *what)

@@ -192,6 +192,17 @@ const ObjectChunkWriter kObjectChunkWriters[] = {
          for (double v : {j.childAt.x(), j.childAt.y(), j.parentAt.x(), j.parentAt.y()})
              w.f64(v);
      }},
+    {kTagLimbBases,
+     [](const StrokeGroup &g) {
+         const std::vector<bool> &b = g.rig.skeleton.limbBase;
+         return !g.rig.skeleton.empty() && std::find(b.begin(), b.end(), true) != b.end();
+     },
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &) {
+         const SkeletonRig &s = g.rig.skeleton;
+         w.u32(quint32(s.joints.size()));
+         for (std::size_t j = 0; j < s.joints.size(); ++j)
+             w.u8(s.isLimbBase(int(j)) ? 1 : 0);
+     }},
     {kTagFills, [](const StrokeGroup &g) { return !g.fills.empty(); },
      [](ByteWriter &w, const StrokeGroup &g, const Tables &) {
          w.u32(quint32(g.fills.size()));

@@ -3,6 +3,7 @@
 #include "fill_support.h"
 #include "random_edits.h"
 #include "stroke_support.h"
+#include "tst_file_sample.h"
 
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/fill/fill_commands.h>
@@ -187,6 +188,7 @@ private slots:
     void jointLocksAreOneStepAndSaved();
     void filesBeforeLocksOpenWithoutLocks();
     void badLockFlagsAreRefused();
+    void limbBasesAreSavedAndFollowJointEdits();
     void resetBonePoseResetsThatBoneOnly();
     void insertJointSplitsABone();
     void deleteJointReattachesChildren();
@@ -1036,7 +1038,76 @@ void TestSkeletonRig::badLockFlagsAreRefused()
     QCOMPARE(good.at(payload + length - 3), '\x01'); // joint 2 of 5, from the end: 0 0 1 0 0 ...
     QByteArray bad = good;
     bad[payload + length - 3] = '\x02';
-    QVERIFY(!readFinbook(bad));
+    file_test::refreshChecksums(bad); // refused for the flag, not for the changed bytes
+    const auto refused = readFinbook(bad);
+    QVERIFY(!refused);
+    QVERIFY2(refused.error().message.contains(QStringLiteral("lock state")),
+             qPrintable(refused.error().message));
+}
+
+// The automatic skeleton marks where the arm leaves the body (inverse kinematics turns the arm
+// there, see deform's tst_kinematics); the marks are saved in their own ancillary chunk, and
+// hand edits keep them on their joints.
+void TestSkeletonRig::limbBasesAreSavedAndFollowJointEdits()
+{
+    Document doc;
+    const Id g = filledBodyAndArm(doc);
+    const SkeletonRig built = doc.group(g)->rig.skeleton;
+    QVERIFY(built.isValid());
+    int base = -1;
+    for (int j = 0; j < built.jointCount(); ++j) {
+        if (built.isLimbBase(j)) {
+            QVERIFY2(base < 0, "one limb, one base");
+            base = j;
+        }
+    }
+    QVERIFY(base >= 0);
+    const QPointF at = built.joints[std::size_t(base)];
+    QVERIFY2(at.x() > 290 && at.x() < 360 && std::abs(at.y() - 200) < 10,
+             qPrintable(QStringLiteral("%1, %2").arg(at.x()).arg(at.y())));
+
+    const QByteArray bytes = serializeFinbook(doc);
+    auto loaded = readFinbook(bytes);
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    QCOMPARE(loaded->frames[0].groups[0].rig.skeleton.limbBase, built.limbBase);
+    // A reader that does not know the chunk skips it and turns limbs as before.
+    const qsizetype tag = bytes.indexOf("limb", bytes.indexOf("SKEL"));
+    QVERIFY(tag > 0);
+    QByteArray unknown = bytes;
+    unknown[tag + 3] = 'x';
+    file_test::refreshChecksums(unknown);
+    auto skipped = readFinbook(unknown);
+    QVERIFY2(skipped, skipped ? "" : qPrintable(skipped.error().message));
+    QVERIFY(skipped->frames[0].groups[0].rig.skeleton.limbBase.empty());
+    QVERIFY(skipped->frames[0].groups[0].rig.skeleton.isValid());
+    // A flag that is neither 0 nor 1 is refused.
+    const quint32 length = qFromLittleEndian<quint32>(bytes.constData() + tag + 4);
+    QCOMPARE(length, quint32(4 + built.jointCount()));
+    QByteArray bad = bytes;
+    bad[tag + 8 + 4 + base] = '\x02';
+    file_test::refreshChecksums(bad);
+    const auto refused = readFinbook(bad);
+    QVERIFY(!refused);
+    QVERIFY2(refused.error().message.contains(QStringLiteral("limb base")),
+             qPrintable(refused.error().message));
+
+    // Splitting the bone into the base keeps the mark on the base.
+    const int p = built.parent[std::size_t(base)];
+    const QPointF mid = (built.joints[std::size_t(p)] + at) / 2.0;
+    auto *insert = new InsertJointCommand(&doc, g, base, mid);
+    doc.undoStack()->push(insert);
+    const SkeletonRig &split = doc.group(g)->rig.skeleton;
+    QVERIFY(split.isValid());
+    QVERIFY(!split.isLimbBase(insert->insertedJoint()));
+    QVERIFY(split.isLimbBase(insert->insertedJoint() + 1));
+    QCOMPARE(split.joints[std::size_t(insert->insertedJoint() + 1)], at);
+    doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(doc), bytes);
+    // Deleting the base takes its mark: none is left, so the flags are gone (canonical).
+    doc.undoStack()->push(new DeleteJointCommand(&doc, g, base));
+    QVERIFY(doc.group(g)->rig.skeleton.isValid());
+    QVERIFY(doc.group(g)->rig.skeleton.limbBase.empty());
+    QVERIFY(serializeFinbook(doc).indexOf("limb", bytes.indexOf("SKEL")) < 0);
 }
 
 void TestSkeletonRig::resetBonePoseResetsThatBoneOnly()

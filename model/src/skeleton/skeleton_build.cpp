@@ -72,6 +72,7 @@ Expected<SkeletonRig, QString> buildSkeletonRig(const StrokeGroup &group,
         rig.radius.push_back(skeleton->radius(j));
     }
     rig.root = skeleton->root;
+    rig.limbBase = skeleton->limbBase; // empty or one per joint, some set (refineSkeleton)
     // A new skeleton turns its limbs as cut-out pieces: of the skinnings measured with
     // `finbook-bench limbs` it is the one whose ±60° turns leave ≥ 95 % of the limbs without a
     // fold or a flipped triangle (Rigid: about half), the body where it was. Deform → Skinning

@@ -79,4 +79,28 @@ SkeletonRig Reader::readSkeleton(Cursor &c)
     return s;
 }
 
+void Reader::readLimbBasesChunk(Cursor &c, StrokeGroup &g)
+{
+    const char *what = QT_TRANSLATE_NOOP("FinbookFile", "the skeleton's limb bases");
+    SkeletonRig &s = g.rig.skeleton;
+    if (s.empty())
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("limb bases come without a skeleton"));
+    const quint32 n = c.count(1, what);
+    if (n != s.joints.size())
+        c.fail(FileErrorCode::BadValue, FinbookFile::tr("the skeleton has %1 joints but %2 limb "
+                                                        "base flags")
+                                            .arg(s.joints.size())
+                                            .arg(n));
+    const char *flags = c.take(n, what);
+    std::vector<bool> bases(n);
+    for (quint32 j = 0; j < n; ++j) {
+        if (quint8(flags[j]) > 1)
+            c.fail(FileErrorCode::BadValue,
+                   FinbookFile::tr("skeleton joint %1 has an unknown limb base flag").arg(j + 1));
+        bases[j] = flags[j] != 0;
+    }
+    if (std::any_of(bases.begin(), bases.end(), [](bool b) { return b; }))
+        s.limbBase = std::move(bases);
+}
+
 } // namespace finbook::model::file_format

@@ -32,10 +32,12 @@ std::optional<QString> editable(const SkeletonRig &rig, int joint)
     return std::nullopt;
 }
 
+// Per-joint flags (locks, limb bases) stay canonical: empty when none is set.
 void normaliseLocks(SkeletonRig &rig)
 {
-    if (std::none_of(rig.locked.begin(), rig.locked.end(), [](bool l) { return l; }))
-        rig.locked.clear();
+    for (std::vector<bool> *flags : {&rig.locked, &rig.limbBase})
+        if (std::none_of(flags->begin(), flags->end(), [](bool l) { return l; }))
+            flags->clear();
 }
 
 } // namespace
@@ -81,8 +83,9 @@ Expected<InsertedJoint, QString> withJointInserted(const SkeletonRig &rig, int b
     const double ra = rig.radius[std::size_t(p)], rb = rig.radius[j];
     r.radius.insert(r.radius.begin() + std::ptrdiff_t(j), ra + t * (rb - ra));
     r.angles.assign(r.joints.size(), 0.0);
-    if (!r.locked.empty())
-        r.locked.insert(r.locked.begin() + std::ptrdiff_t(j), false);
+    for (std::vector<bool> *flags : {&r.locked, &r.limbBase})
+        if (!flags->empty())
+            flags->insert(flags->begin() + std::ptrdiff_t(j), false);
     if (r.root >= bone)
         ++r.root;
     out.joint = bone;
@@ -116,8 +119,9 @@ Expected<SkeletonRig, QString> withJointDeleted(const SkeletonRig &rig, int join
     r.joints.erase(r.joints.begin() + std::ptrdiff_t(d));
     r.parent.erase(r.parent.begin() + std::ptrdiff_t(d));
     r.radius.erase(r.radius.begin() + std::ptrdiff_t(d));
-    if (!r.locked.empty())
-        r.locked.erase(r.locked.begin() + std::ptrdiff_t(d));
+    for (std::vector<bool> *flags : {&r.locked, &r.limbBase})
+        if (!flags->empty())
+            flags->erase(flags->begin() + std::ptrdiff_t(d));
     normaliseLocks(r);
     for (int &q : r.parent)
         if (q > joint)
@@ -170,13 +174,15 @@ Expected<SkeletonRig, QString> withRootJoint(const SkeletonRig &rig, int joint)
         r.parent[std::size_t(j)] = e.parent(j);
     }
     r.root = e.root;
-    if (!rig.locked.empty()) {
-        r.locked.assign(r.joints.size(), false);
+    for (auto flags : {&SkeletonRig::locked, &SkeletonRig::limbBase}) {
+        if ((rig.*flags).empty())
+            continue;
+        (r.*flags).assign(r.joints.size(), false);
         for (Eigen::Index j = 0; j < edit->newIndex.size(); ++j)
-            if (edit->newIndex(j) >= 0 && rig.locked[std::size_t(j)])
-                r.locked[std::size_t(edit->newIndex(j))] = true;
-        normaliseLocks(r);
+            if (edit->newIndex(j) >= 0 && (rig.*flags)[std::size_t(j)])
+                (r.*flags)[std::size_t(edit->newIndex(j))] = true;
     }
+    normaliseLocks(r);
     r.angles.assign(r.joints.size(), 0.0);
     if (!r.isValid())
         return unexpected(Deformation::tr("The skeleton is damaged; build it again."));

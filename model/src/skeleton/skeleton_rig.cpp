@@ -52,6 +52,11 @@ bool SkeletonRig::isLocked(int joint) const
     return joint >= 0 && std::size_t(joint) < locked.size() && locked[std::size_t(joint)];
 }
 
+bool SkeletonRig::isLimbBase(int joint) const
+{
+    return joint >= 0 && std::size_t(joint) < limbBase.size() && limbBase[std::size_t(joint)];
+}
+
 SkeletonRig SkeletonRig::withLock(int joint, bool on) const
 {
     SkeletonRig r = *this;
@@ -200,9 +205,10 @@ bool SkeletonRig::isValid() const
     const std::size_t n = joints.size();
     if (parent.size() != n || radius.size() != n || (!angles.empty() && angles.size() != n))
         return false;
-    if (!locked.empty() && (locked.size() != n ||
-                            std::none_of(locked.begin(), locked.end(), [](bool l) { return l; })))
-        return false;
+    for (const std::vector<bool> *flags : {&locked, &limbBase})
+        if (!flags->empty() && (flags->size() != n || std::none_of(flags->begin(), flags->end(),
+                                                                   [](bool l) { return l; })))
+            return false;
     if (n == 0)
         return root == -1;
     if (root < 0 || std::size_t(root) >= n || parent[std::size_t(root)] != -1)

@@ -87,6 +87,11 @@ struct SkeletonRig {
     // Joints an IK drag must not move (the chain stops below them): empty when none is locked
     // (kept canonical so files and comparisons agree), else one flag per joint.
     std::vector<bool> locked;
+    // Joints where a limb leaves the body (the shoulder, the hip), as the automatic skeleton
+    // found them (geometry::Skeleton::limbBase): an IK drag of a joint below one turns the limb
+    // there instead of swinging the bone into the body. Empty when there is none (canonical,
+    // as `locked`), else one flag per joint; hand edits keep the flags of the joints they keep.
+    std::vector<bool> limbBase;
     // Where this part hangs in a character (rest definition), and that join resolved.
     SkeletonJoin join;
     SkeletonAnchor anchor;
@@ -98,6 +103,7 @@ struct SkeletonRig {
     // The anchor applies: the part follows its parent's bone.
     bool hangs() const { return join.joined() && anchor.valid; }
     bool isLocked(int joint) const;
+    bool isLimbBase(int joint) const;
     // The same skeleton with `joint`'s lock set to `on` (locked stays canonical).
     SkeletonRig withLock(int joint, bool on) const;
     // Children of each joint, in index order.
@@ -123,7 +129,7 @@ struct SkeletonRig {
     // Same rest joints and parents and anchor bone, and both cut out or neither: what the
     // skinning precompute depends on (a cut-out rig skins a mesh cut at its joints).
     bool sameRest(const SkeletonRig &other) const;
-    // Sizes agree (locked empty or one per joint, not all false), everything finite,
+    // Sizes agree (locked and limbBase empty or one per joint, not all false), everything finite,
     // parent[j] ∈ [−1, j), root a root, settings in [0, 1].
     bool isValid() const;
     friend bool operator==(const SkeletonRig &, const SkeletonRig &) = default;
