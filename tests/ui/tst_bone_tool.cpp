@@ -43,6 +43,23 @@ StrokeDataPtr line(QPointF a, QPointF b)
     return data;
 }
 
+// One closed outline through `corners`, a point every 2 px.
+StrokeDataPtr outline(const std::vector<QPointF> &corners)
+{
+    auto data = std::make_shared<StrokeData>();
+    for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
+        const QPointF a = corners[i], b = corners[i + 1];
+        const int n = std::max(1, int(QLineF(a, b).length() / 2.0));
+        for (int k = 0; k < n; ++k) {
+            const QPointF p = a + (b - a) * (double(k) / n);
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        }
+    }
+    data->points.push_back({float(corners.back().x()), float(corners.back().y()), 1.0f});
+    data->width = 3.0f;
+    return data;
+}
+
 struct Fixture {
     Document doc;
     EditorState state{&doc};
@@ -52,15 +69,18 @@ struct Fixture {
     SkeletonOverlay *overlay = nullptr;
     Id group = kNoId;
 
-    Fixture()
+    // `drawing`: the object's strokes; by default an L of hatched lines (an upper arm along x,
+    // the forearm down).
+    explicit Fixture(std::vector<StrokeDataPtr> drawing = {})
     {
         Frame f;
         f.id = doc.allocateId();
         StrokeGroup g;
         g.id = doc.allocateId();
         g.name = QStringLiteral("arm");
-        // An L: upper arm along x, forearm down.
-        for (int k = 0; k <= 6; ++k) {
+        for (StrokeDataPtr &stroke : drawing)
+            g.strokes.push_back({doc.allocateId(), std::move(stroke)});
+        for (int k = 0; drawing.empty() && k <= 6; ++k) {
             const double o = 5.0 * k;
             g.strokes.push_back({doc.allocateId(), line({150, 200 + o}, {450, 200 + o})});
             g.strokes.push_back({doc.allocateId(), line({420 + o, 200}, {420 + o, 500})});
@@ -153,6 +173,7 @@ private slots:
     void clickBuildsThenDragTurnsABone();
     void dragJointPullsTheChain();
     void dragRootMovesTheObject();
+    void shortLimbTurnsAtItsBase();
     void altClickLocksAJoint();
     void keyLLocksTheJointUnderTheMouse();
     void showSkeletonPaints();
@@ -233,6 +254,47 @@ void TestBoneTool::dragJointPullsTheChain()
     for (const auto &stroke : fx.object().deformed->strokes)
         for (const StrokePoint &p : stroke)
             QVERIFY(std::isfinite(p.x) && std::isfinite(p.y));
+}
+
+// A body with a short arm (one bone beyond where it leaves the body): dragging the hand turns
+// the arm at its base, as an animator pulls a puppet's arm; the bone inside the body stays, so
+// the body does not swing with it.
+void TestBoneTool::shortLimbTurnsAtItsBase()
+{
+    Fixture fx({outline({{100, 100},
+                         {300, 100},
+                         {300, 185},
+                         {385, 185},
+                         {385, 215},
+                         {300, 215},
+                         {300, 300},
+                         {100, 300},
+                         {100, 100}})});
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({200, 200}));
+    QVERIFY(fx.waitReady());
+    const SkeletonRig rest = fx.skeleton();
+    int base = -1;
+    for (int j = 0; j < rest.jointCount(); ++j)
+        if (rest.isLimbBase(j))
+            base = j;
+    QVERIFY(base >= 0);
+    int hand = -1;
+    for (int j = 0; j < rest.jointCount(); ++j)
+        if (rest.parent[std::size_t(j)] == base)
+            hand = j;
+    QVERIFY2(hand >= 0 && rest.joints[std::size_t(hand)].x() > 360,
+             "the arm is one bone from its base to the hand");
+    const QPointF pivot = rest.joints[std::size_t(base)], from = rest.joints[std::size_t(hand)];
+    const double length = QLineF(pivot, from).length();
+    const QPointF target = pivot + length * QPointF(std::cos(-0.8), std::sin(-0.8));
+    fx.drag(from, target);
+    const std::vector<QPointF> posed = fx.skeleton().posedJoints();
+    for (int j = 0; j < rest.jointCount(); ++j)
+        if (j != hand)
+            QVERIFY2(QLineF(posed[std::size_t(j)], rest.joints[std::size_t(j)]).length() < 1e-6,
+                     qPrintable(QStringLiteral("joint %1 moved").arg(j)));
+    QVERIFY2(QLineF(posed[std::size_t(hand)], target).length() < 1.0,
+             qPrintable(QString::number(QLineF(posed[std::size_t(hand)], target).length())));
 }
 
 void TestBoneTool::dragRootMovesTheObject()

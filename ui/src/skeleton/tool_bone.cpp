@@ -303,8 +303,10 @@ void BoneTool::move(const ToolEvent &event)
         const model::StrokeGroup *g = doc->group(m_drag.groupId);
         if (!g)
             return;
+        deform::IkOptions options;
+        options.limbBase = g->rig.skeleton.limbBase;
         auto solved = deform::solveIk(m_drag.skeleton, m_drag.start, m_drag.joint, cursor,
-                                      g->rig.skeleton.locked);
+                                      g->rig.skeleton.locked, options);
         if (!solved)
             return;
         pose = std::move(solved->pose);
