@@ -1,5 +1,6 @@
 #include "../command_text.h"
 
+#include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/render.h>
 #include <finbook/model/rig/rig_commands.h>
@@ -120,8 +121,9 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
     m_oldStrokes = g->strokes;
     m_oldRig = g->rig;
     m_oldDeformed = g->deformed;
-    // The baked strokes keep their ids: they are the same strokes, redrawn.
-    m_newStrokes = posedStrokes(*g);
+    // The baked strokes keep their ids: they are the same strokes, redrawn (a line that a
+    // cut-out limb hid in the middle becomes two, the second with a new id).
+    m_newStrokes = bakedStrokes(*g, doc->settings().closeGap, [doc] { return doc->allocateId(); });
     m_oldFills = g->fills;
     m_newFills = fillsAfterBake(*g, m_newStrokes, doc->settings().closeGap);
 }

@@ -8,6 +8,7 @@
 
 #include <QPainterPath>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -65,6 +66,16 @@ struct CutOutSeam {
     std::vector<StrokePoint> arc;
 };
 std::optional<CutOutSeam> cutOutSeam(const StrokeGroup &group, std::size_t stroke, std::size_t i);
+
+// The strokes Apply Pose makes of `group`'s pose: posedStrokes (a cut-out pose's lines go round
+// the joints), with what the pose hid cut away: the parts of a piece's lines that a piece
+// drawn over it covers with its fills (paintLayers: the body's outline under a limb turned over
+// it), cut where the cover begins, so the baked drawing shows what the pose showed. A stroke
+// that keeps several parts becomes several strokes in its place, the first with its id, the
+// others with ids from `newId`; a stroke hidden whole is left out. Any other pose: as
+// posedStrokes. `closeGap`: the document's Close gaps, as the pose was painted with.
+std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
+                                 const std::function<Id()> &newId);
 
 // Paints one item: its path, then its tones (the canvas raster draws its own way).
 void paintFill(QPainter &painter, const FillItem &fill);
