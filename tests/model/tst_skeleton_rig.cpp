@@ -1,5 +1,6 @@
 // Skeletons in the model: building, refining and posing as undoable commands, the skinning
 // precompute through the deform controller, and the "SKEL" file chunk.
+#include "../../model/src/export/export_formats.h"
 #include "fill_support.h"
 #include "random_edits.h"
 #include "stroke_support.h"
@@ -16,8 +17,10 @@
 #include <finbook/model/skeleton/skeleton_joint_edit.h>
 #include <finbook/model/skeleton/skeleton_setup.h>
 
+#include <QPainter>
 #include <QRandomGenerator>
 #include <QSignalSpy>
+#include <QSvgRenderer>
 #include <QTest>
 #include <QtEndian>
 
@@ -185,6 +188,7 @@ private slots:
     void cutOutOutlineRunsRoundATurnedJoint();
     void cutOutLayersComeBackWithTheFile();
     void applyingACutOutPoseKeepsWhatItShowed();
+    void svgOfACutOutPoseShowsWhatTheCanvasShows();
     void duplicateFrameCopiesSkeletonAndPose();
     void jointLocksAreOneStepAndSaved();
     void filesBeforeLocksOpenWithoutLocks();
@@ -917,6 +921,46 @@ void TestSkeletonRig::applyingACutOutPoseKeepsWhatItShowed()
     QCOMPARE(serializeFinbook(doc), before);
     doc.undoStack()->redo();
     QCOMPARE(doc.group(g)->strokes, baked.strokes);
+}
+
+// The SVG export of the arm turned 100° over the body draws the pieces' fills in layer order
+// and the lines with what the arm hides cut away: rendered, it shows what the canvas shows
+// (written flat as before, 510 pixels of the arm's fill were paper: the posed fills' twist
+// holes that the turned piece's own fill covers on the canvas).
+void TestSkeletonRig::svgOfACutOutPoseShowsWhatTheCanvasShows()
+{
+    TurnedArm scene;
+    QVERIFY(scene.turn(100.0));
+    const Document &doc = scene.doc;
+    const DocumentSettings &settings = doc.settings();
+    const QImage canvas = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    ExportPlan plan;
+    plan.background = settings.background;
+    plan.size = settings.canvasSize;
+    const QByteArray svg = frameSvg(doc.frameAt(0), settings, plan);
+    QSvgRenderer renderer(svg);
+    QVERIFY(renderer.isValid());
+    QImage drawn(settings.canvasSize, QImage::Format_ARGB32);
+    drawn.fill(Qt::white);
+    {
+        QPainter painter(&drawn);
+        renderer.render(&painter);
+    }
+    // The outline is cut where the arm hides it: in parts, the first with the stroke's id.
+    const QByteArray outline = "stroke-" + QByteArray::number(doc.group(scene.g)->strokes[0].id);
+    QVERIFY(svg.contains(outline + "\"") && svg.contains(outline + "-1\""));
+    int painted = 0, lost = 0, inkOverFill = 0;
+    for (int y = 0; y < canvas.height(); ++y)
+        for (int x = 0; x < canvas.width(); ++x) {
+            if (canvas.pixel(x, y) != yellow)
+                continue;
+            ++painted;
+            lost += qGray(drawn.pixel(x, y)) > 240 ? 1 : 0;
+            inkOverFill += qGray(drawn.pixel(x, y)) < 100 ? 1 : 0;
+        }
+    QVERIFY(painted > 10000);
+    QVERIFY2(lost == 0, qPrintable(QString::number(lost)));
+    QVERIFY2(inkOverFill < 20, qPrintable(QString::number(inkOverFill)));
 }
 
 void TestSkeletonRig::duplicateFrameCopiesSkeletonAndPose()

@@ -170,10 +170,10 @@ void appendTones(QByteArray &svg, const FillItem &fill, Id groupId, int k)
     }
 }
 
-void appendFills(QByteArray &svg, const StrokeGroup &group, const DocumentSettings &settings)
+void appendFills(QByteArray &svg, const StrokeGroup &group, const std::vector<FillItem> &fills,
+                 int &k)
 {
-    int k = 0;
-    for (const FillItem &fill : fillList(group, settings)) {
+    for (const FillItem &fill : fills) {
         const QByteArray d = fillPath(fill.path);
         ++k;
         if (d.isEmpty())
@@ -185,6 +185,48 @@ void appendFills(QByteArray &svg, const StrokeGroup &group, const DocumentSettin
             svg += " fill-opacity=\"" + QByteArray::number(alpha / 255.0, 'g', 3) + '"';
         svg += " fill-rule=\"nonzero\" d=\"" + d + "\"/>\n";
         appendTones(svg, fill, group.id, k);
+    }
+}
+
+void appendStroke(QByteArray &svg, const QByteArray &id, const StrokeData &data,
+                  const QByteArray &d)
+{
+    svg += "<path id=\"stroke-" + id + "\" fill=\"" + colour(data.color) + '"';
+    const int alpha = qAlpha(data.color);
+    if (alpha < 255)
+        svg += " fill-opacity=\"" + QByteArray::number(alpha / 255.0, 'g', 3) + '"';
+    svg += " d=\"" + d + "\"/>\n";
+}
+
+// A cut-out pose as the canvas paints it: each piece's fills over the pieces below it, then the
+// lines with what the pieces above hide cut away (bakedStrokes), so a limb turned over the body
+// hides the body's lines in the SVG too. A line cut into parts keeps its id on the first part;
+// the others are "stroke-<id>-<part>".
+void appendCutOutPose(QByteArray &svg, const StrokeGroup &group, const DocumentSettings &settings,
+                      const QRectF &visible)
+{
+    int k = 0;
+    for (const PaintLayer &layer : paintLayers(group, settings))
+        appendFills(svg, group, layer.fills, k);
+    // Ids past any a document allocates mark the later parts of a cut line.
+    constexpr Id kPart = Id(1) << 62;
+    Id next = kPart;
+    Id whole = kNoId;
+    int part = 0;
+    for (const Stroke &stroke : bakedStrokes(group, settings.closeGap, [&] { return next++; })) {
+        if (!stroke.data)
+            continue;
+        if (stroke.id < kPart) {
+            whole = stroke.id;
+            part = 0;
+        }
+        const QByteArray d = outline(stroke.data->points, stroke.data->width, visible);
+        if (d.isEmpty())
+            continue;
+        QByteArray id = QByteArray::number(whole);
+        if (stroke.id >= kPart)
+            id += '-' + QByteArray::number(++part);
+        appendStroke(svg, id, *stroke.data, d);
     }
 }
 } // namespace
@@ -233,7 +275,13 @@ QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const 
         if (!group.visible)
             continue;
         svg += "<g id=\"object-" + QByteArray::number(group.id) + "\">\n";
-        appendFills(svg, group, settings);
+        if (group.isDeformed() && !group.deformed->pieces.empty()) {
+            appendCutOutPose(svg, group, settings, visible);
+            svg += "</g>\n";
+            continue;
+        }
+        int k = 0;
+        appendFills(svg, group, fillList(group, settings), k);
         for (std::size_t i = 0; i < group.strokes.size(); ++i) {
             const Stroke &stroke = group.strokes[i];
             if (!stroke.data)
@@ -245,16 +293,16 @@ QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const 
                 d = outline(points, stroke.data->width, visible);
             if (shape != shapes.end() ? shape->second < 0 : d.isEmpty())
                 continue;
-            svg += (d.isEmpty() ? "<use" : "<path");
-            svg += " id=\"stroke-" + QByteArray::number(stroke.id) + "\" fill=\"" +
+            if (!d.isEmpty()) {
+                appendStroke(svg, QByteArray::number(stroke.id), *stroke.data, d);
+                continue;
+            }
+            svg += "<use id=\"stroke-" + QByteArray::number(stroke.id) + "\" fill=\"" +
                    colour(stroke.data->color) + '"';
             const int alpha = qAlpha(stroke.data->color);
             if (alpha < 255)
                 svg += " fill-opacity=\"" + QByteArray::number(alpha / 255.0, 'g', 3) + '"';
-            if (d.isEmpty())
-                svg += " xlink:href=\"#shape-" + QByteArray::number(shape->second) + "\"/>\n";
-            else
-                svg += " d=\"" + d + "\"/>\n";
+            svg += " xlink:href=\"#shape-" + QByteArray::number(shape->second) + "\"/>\n";
         }
         svg += "</g>\n";
     }
