@@ -206,14 +206,15 @@ void appendCutOutPose(QByteArray &svg, const StrokeGroup &group, const DocumentS
                       const QRectF &visible)
 {
     int k = 0;
-    for (const PaintLayer &layer : paintLayers(group, settings))
+    const std::vector<PaintLayer> layers = paintLayers(group, settings);
+    for (const PaintLayer &layer : layers)
         appendFills(svg, group, layer.fills, k);
     // Ids past any a document allocates mark the later parts of a cut line.
     constexpr Id kPart = Id(1) << 62;
     Id next = kPart;
     Id whole = kNoId;
     int part = 0;
-    for (const Stroke &stroke : bakedStrokes(group, settings.closeGap, [&] { return next++; })) {
+    for (const Stroke &stroke : bakedStrokes(group, layers, [&] { return next++; })) {
         if (!stroke.data)
             continue;
         if (stroke.id < kPart) {

@@ -143,40 +143,50 @@ std::vector<std::vector<StrokePoint>> visibleRuns(const std::vector<Segment> &se
 
 } // namespace
 
-std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
+std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
                                  const std::function<Id()> &newId)
 {
-    std::vector<Stroke> posed = posedStrokes(group);
     const DeformedStrokes *d = group.deformed.get();
     if (!group.isDeformed() || !d || d->pieces.empty() ||
         d->pieceOf.size() != group.strokes.size() || d->strokes.size() != group.strokes.size())
-        return posed;
-    DocumentSettings settings;
-    settings.closeGap = closeGap;
-    const std::vector<PaintLayer> layers = paintLayers(group, settings);
+        return posedStrokes(group);
     const Covers covers(layers);
     std::vector<Stroke> out;
-    out.reserve(posed.size());
-    for (std::size_t i = 0; i < posed.size(); ++i) {
+    out.reserve(group.strokes.size());
+    for (std::size_t i = 0; i < group.strokes.size(); ++i) {
         const Stroke &stroke = group.strokes[i];
+        if (!stroke.data) {
+            out.push_back(stroke);
+            continue;
+        }
         const std::vector<StrokePoint> &points = displayedPoints(group, i);
-        if (!stroke.data || d->pieceOf[i].size() != points.size() || points.size() < 2) {
-            out.push_back(posed[i]);
+        auto data = std::make_shared<StrokeData>(*stroke.data);
+        if (d->pieceOf[i].size() != points.size() || points.size() < 2) {
+            data->points = points; // no cut to go round or hide at (as posedStrokes)
+            out.push_back({stroke.id, std::move(data)});
             continue;
         }
-        const std::vector<Segment> segments = layeredSegments(group, i, points);
-        const std::vector<std::vector<StrokePoint>> runs = visibleRuns(segments, covers);
-        if (runs.size() == 1 && runs.front() == posed[i].data->points) {
-            out.push_back(posed[i]); // nothing hidden
-            continue;
-        }
+        // The runs join the layered segments, arcs included: one run that shows whole is
+        // the line posedStrokes makes.
+        std::vector<std::vector<StrokePoint>> runs =
+            visibleRuns(layeredSegments(group, i, points), covers);
         for (std::size_t r = 0; r < runs.size(); ++r) {
-            auto data = std::make_shared<StrokeData>(*stroke.data);
-            data->points = runs[r];
-            out.push_back({r == 0 ? stroke.id : newId(), std::move(data)});
+            auto part = r + 1 < runs.size() ? std::make_shared<StrokeData>(*stroke.data) : data;
+            part->points = std::move(runs[r]);
+            out.push_back({r == 0 ? stroke.id : newId(), std::move(part)});
         }
     }
     return out;
+}
+
+std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
+                                 const std::function<Id()> &newId)
+{
+    if (!group.isDeformed() || group.deformed->pieces.empty())
+        return posedStrokes(group);
+    DocumentSettings settings;
+    settings.closeGap = closeGap;
+    return bakedStrokes(group, paintLayers(group, settings), newId);
 }
 
 } // namespace finbook::model

@@ -76,6 +76,9 @@ std::optional<CutOutSeam> cutOutSeam(const StrokeGroup &group, std::size_t strok
 // posedStrokes. `closeGap`: the document's Close gaps, as the pose was painted with.
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
                                  const std::function<Id()> &newId);
+// The same with the group's paintLayers already made (the SVG export paints them too).
+std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
+                                 const std::function<Id()> &newId);
 
 // Paints one item: its path, then its tones (the canvas raster draws its own way).
 void paintFill(QPainter &painter, const FillItem &fill);
