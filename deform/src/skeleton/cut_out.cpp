@@ -18,6 +18,10 @@ namespace {
 
 using Vec = Eigen::Vector2d;
 
+// Vertices this close to a cut (in inscribed radii of its joint) lie on it: a cut ending on an
+// outline vertex passes through that vertex to round-off (its end is placed 1e-6 radii past).
+constexpr double kOnCut = 1e-9;
+
 double cross(const Vec &a, const Vec &b)
 {
     return a.x() * b.y() - a.y() * b.x();
@@ -141,11 +145,27 @@ int nearestWhere(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &targe
     return best;
 }
 
+double distanceToSegment(const Vec &x, const Vec &s, const Vec &e)
+{
+    const Vec d = e - s;
+    const double length2 = d.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp((x - s).dot(d) / length2, 0.0, 1.0) : 0.0;
+    return (s + t * d - x).norm();
+}
+
 // The vertices past the cut a → pivot → b (flooded from `seed` along edges that do not meet
 // it), or empty when the flood reaches a vertex marked in `stop` (the cut does not separate).
+// A vertex on the cut (within `onCut`) is not flooded through: a cut that ends on an outline
+// vertex, such as the tip of the slit between two limbs, would otherwise leak round it along
+// an edge leaving that vertex almost along the cut (an octopus arm whose slits end in a sharp
+// V was left uncut, and its turn dragged the body with it).
 std::vector<char> floodPast(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &a,
-                            const Vec &pivot, const Vec &b, int seed, const std::vector<char> &stop)
+                            const Vec &pivot, const Vec &b, int seed, const std::vector<char> &stop,
+                            double onCut)
 {
+    const auto isOnCut = [&](const Vec &x) {
+        return distanceToSegment(x, a, pivot) <= onCut || distanceToSegment(x, pivot, b) <= onCut;
+    };
     std::vector<char> past(std::size_t(V.rows()), 0);
     std::vector<int> stack{seed};
     past[std::size_t(seed)] = 1;
@@ -158,7 +178,7 @@ std::vector<char> floodPast(const Eigen::MatrixX2d &V, const MeshGraph &g, const
         for (const int u : g.neighbours[std::size_t(v)]) {
             const Vec q = V.row(u).transpose();
             if (past[std::size_t(u)] || segmentsMeet(p, q, a, pivot) ||
-                segmentsMeet(p, q, pivot, b))
+                segmentsMeet(p, q, pivot, b) || isOnCut(q))
                 continue;
             past[std::size_t(u)] = 1;
             stack.push_back(u);
@@ -268,7 +288,7 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
             if (v >= 0 && v != seed)
                 stops[std::size_t(v)] = 1;
         }
-        Candidate found{child, a, b, floodPast(V, graph, a, pivot, b, seed, stops), 0};
+        Candidate found{child, a, b, floodPast(V, graph, a, pivot, b, seed, stops, kOnCut * r), 0};
         found.size = int(std::count(found.flooded.begin(), found.flooded.end(), char(1)));
         return found;
     };
