@@ -472,6 +472,10 @@ int benchLimbs(const QStringList &arguments)
             break;
         }
     }
+    // --only without the drawn scheme among them draws the first of them (blank sheets before).
+    if (!only.isEmpty() && !only.contains(QLatin1String(kSchemes[pngScheme].name)))
+        for (int k = int(std::size(kSchemes)) - 1; k >= 0; --k)
+            pngScheme = only.contains(QLatin1String(kSchemes[k].name)) ? k : pngScheme;
     tuning.arap.thinnest = thinnest != 0.0;
     tuning.arap.softLimbs = softLimbs != 0.0;
     pngDegrees = degrees >= 80.0 ? 100 : 60;
