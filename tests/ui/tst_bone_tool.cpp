@@ -178,6 +178,7 @@ private slots:
     void keyLLocksTheJointUnderTheMouse();
     void showSkeletonPaints();
     void lockedJointsLookLocked();
+    void limbBasesLookDifferent();
     void contextMenuResetsOneBone();
     void editJointsMovesAJoint();
     void editJointsInsertsAndDeletes();
@@ -445,6 +446,48 @@ void TestBoneTool::lockedJointsLookLocked()
     QCOMPARE(redPixelsNear(paintOverlay(fx), c, 8), 0);
     fx.doc.undoStack()->push(new SetJointLockCommand(&fx.doc, fx.group, joint, true));
     QVERIFY(redPixelsNear(paintOverlay(fx), c, 8) > 20);
+}
+
+int bluePixelsNear(const QImage &image, QPoint c, int reach)
+{
+    int blue = 0;
+    for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx) {
+            const QColor px = image.pixelColor(c + QPoint(dx, dy));
+            blue += px.blue() > 180 && px.red() < 90 && px.green() < 150;
+        }
+    return blue;
+}
+
+void TestBoneTool::limbBasesLookDifferent()
+{
+    // The body with an arm of shortLimbTurnsAtItsBase: its base is a blue dot, the hand not.
+    Fixture fx({outline({{100, 100},
+                         {300, 100},
+                         {300, 185},
+                         {385, 185},
+                         {385, 215},
+                         {300, 215},
+                         {300, 300},
+                         {100, 300},
+                         {100, 100}})});
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({200, 200}));
+    QVERIFY(fx.waitReady());
+    fx.overlay->setShown(true);
+    int base = -1, hand = -1;
+    for (int j = 0; j < fx.skeleton().jointCount(); ++j)
+        base = fx.skeleton().isLimbBase(j) ? j : base;
+    QVERIFY(base >= 0);
+    for (int j = 0; j < fx.skeleton().jointCount(); ++j)
+        hand = fx.skeleton().parent[std::size_t(j)] == base ? j : hand;
+    QVERIFY(hand >= 0);
+    const QImage shown = paintOverlay(fx);
+    QVERIFY(bluePixelsNear(shown, fx.at(fx.skeleton().joints[std::size_t(base)]), 4) > 10);
+    QCOMPARE(bluePixelsNear(shown, fx.at(fx.skeleton().joints[std::size_t(hand)]), 4), 0);
+    // A locked base shows as locked.
+    fx.doc.undoStack()->push(new SetJointLockCommand(&fx.doc, fx.group, base, true));
+    QCOMPARE(bluePixelsNear(paintOverlay(fx), fx.at(fx.skeleton().joints[std::size_t(base)]), 4),
+             0);
 }
 
 void TestBoneTool::contextMenuResetsOneBone()

@@ -61,7 +61,11 @@ void paintSkeleton(QPainter &painter, const QTransform &canvasToWidget,
             painter.drawEllipse(at, 7, 7);
         }
         painter.setPen(QPen(Qt::white, 1.5));
-        painter.setBrush(locked ? QColor(200, 30, 30) : bone.darker(120));
+        // A limb's base (where it leaves the body, and where it turns when its tip is
+        // dragged): a blue dot.
+        painter.setBrush(locked                        ? QColor(200, 30, 30)
+                         : skeleton.isLimbBase(int(j)) ? QColor(40, 110, 220)
+                                                       : bone.darker(120));
         if (int(j) == skeleton.root && hangs) { // a joined part's root: a green diamond
             painter.setBrush(locked ? QColor(200, 30, 30) : QColor(40, 150, 90));
             const QPointF d[4] = {at + QPointF(0, -6), at + QPointF(6, 0), at + QPointF(0, 6),
