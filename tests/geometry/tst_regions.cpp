@@ -105,6 +105,7 @@ private slots:
     void scribbleIsRefusedQuickly();
     void objectShapeOfTidyOutlineIsItsSilhouette();
     void objectShapeFillsGapWristedOutline();
+    void objectShapeKeepsTheSlitBetweenFingers();
     void realSketches();
 };
 
@@ -443,6 +444,42 @@ void TestRegions::objectShapeFillsGapWristedOutline()
     QVERIFY(regionContains(*shape, 0, 0));
     for (Eigen::Index i = 0; i < strokes[0].points.rows(); i += 10)
         QVERIFY(regionContains(*shape, strokes[0].points(i, 0), strokes[0].points(i, 1)));
+}
+
+void TestRegions::objectShapeKeepsTheSlitBetweenFingers()
+{
+    // One closed outline: a palm and two long fingers whose sides are 12 px apart, so the
+    // silhouette's 8 px closing fills the slit between them (5 px between the bands). The
+    // object's shape keeps it open, as the fill does: fingers, tentacles and coils turn apart.
+    const Eigen::MatrixX2d outline = polyline(
+        {{0, 260}, {0, 0}, {30, 0}, {30, 160}, {42, 160}, {42, 0}, {72, 0}, {72, 260}, {0, 260}});
+    const std::vector<StrokeInput> hand{{outline, 3.0}};
+    const auto shape = objectShape(hand);
+    const auto closed = silhouette(hand);
+    QVERIFY(shape && closed);
+    QVERIFY(regionContains(*closed, 36, 80)); // the closing filled the slit...
+    QVERIFY(!regionContains(*shape, 36, 80)); // ...the shape does not
+    QVERIFY(!regionContains(*shape, 36, 10));
+    QVERIFY(regionContains(*shape, 15, 80) && regionContains(*shape, 57, 80));
+    QVERIFY(regionContains(*shape, 36, 200)); // the palm
+    QVERIFY(isSimple(*shape, Touching::AllowedAtPoints));
+    QCOMPARE(int(shape->size()), 1);
+    for (Eigen::Index i = 0; i < outline.rows(); ++i)
+        QVERIFY(regionContains(*shape, outline(i, 0), outline(i, 1)));
+    // Two separate strokes as far apart are still bridged: the closing joins two parts.
+    const std::vector<StrokeInput> pair{{polyline({{30, 0}, {30, 160}}), 3.0},
+                                        {polyline({{42, 0}, {42, 160}}), 3.0}};
+    const auto bridged = objectShape(pair);
+    QVERIFY(bridged);
+    QVERIFY(regionContains(*bridged, 36, 80));
+    QCOMPARE(int(bridged->size()), 1);
+    // A slit a stroke's free end reaches into stays filled (a sketchy line drawn over the
+    // palm and stopping in the slit: the sliver beside an overshoot).
+    std::vector<StrokeInput> sketchy = hand;
+    sketchy.push_back({polyline({{36, 240}, {36, 150}}), 3.0});
+    const auto kept = objectShape(sketchy);
+    QVERIFY(kept);
+    QVERIFY(regionContains(*kept, 36, 80));
 }
 
 void TestRegions::realSketches()

@@ -1,7 +1,10 @@
 // The shape of an object: what meshing, skeletons and Fit Cage see. The union of the closed
 // regions of its strokes (regions.h) and the strokes' bands (silhouette.h), so a drawing whose
 // outline is left slightly open still gives a body, not a wire along the pen line. A tidy
-// closed outline gives exactly its silhouette.
+// closed outline gives exactly its silhouette, except that a long, narrow slit of its own
+// outline that the silhouette's closing filled (between an octopus's arms, the fingers of a
+// hand, the turns of a coil) stays open, as the fill leaves it; the closing still bridges
+// separate strokes and the slivers a sketchy stroke's end leaves.
 #pragma once
 
 #include <finbook/geometry/expected.h>
