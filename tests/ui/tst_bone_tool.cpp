@@ -260,17 +260,28 @@ void TestBoneTool::dragJointPullsTheChain()
 // A body with a short arm (one bone beyond where it leaves the body): dragging the hand turns
 // the arm at its base, as an animator pulls a puppet's arm; the bone inside the body stays, so
 // the body does not swing with it.
+namespace {
+
+// A 200 × 200 body with an 85 px arm 30 wide: built with a click, the arm is one bone from
+// its base (where it leaves the body) to the hand.
+std::vector<StrokeDataPtr> bodyWithArm()
+{
+    return {outline({{100, 100},
+                     {300, 100},
+                     {300, 185},
+                     {385, 185},
+                     {385, 215},
+                     {300, 215},
+                     {300, 300},
+                     {100, 300},
+                     {100, 100}})};
+}
+
+} // namespace
+
 void TestBoneTool::shortLimbTurnsAtItsBase()
 {
-    Fixture fx({outline({{100, 100},
-                         {300, 100},
-                         {300, 185},
-                         {385, 185},
-                         {385, 215},
-                         {300, 215},
-                         {300, 300},
-                         {100, 300},
-                         {100, 100}})});
+    Fixture fx(bodyWithArm());
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({200, 200}));
     QVERIFY(fx.waitReady());
     const SkeletonRig rest = fx.skeleton();
@@ -427,6 +438,17 @@ int redPixelsNear(const QImage &image, QPoint c, int reach)
     return red;
 }
 
+int bluePixelsNear(const QImage &image, QPoint c, int reach)
+{
+    int blue = 0;
+    for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx) {
+            const QColor px = image.pixelColor(c + QPoint(dx, dy));
+            blue += px.blue() > 180 && px.red() < 90 && px.green() < 150;
+        }
+    return blue;
+}
+
 // Chooses the context-menu action named `name` (none when absent).
 void choose(Fixture &fx, const char *name)
 {
@@ -448,29 +470,10 @@ void TestBoneTool::lockedJointsLookLocked()
     QVERIFY(redPixelsNear(paintOverlay(fx), c, 8) > 20);
 }
 
-int bluePixelsNear(const QImage &image, QPoint c, int reach)
-{
-    int blue = 0;
-    for (int dy = -reach; dy <= reach; ++dy)
-        for (int dx = -reach; dx <= reach; ++dx) {
-            const QColor px = image.pixelColor(c + QPoint(dx, dy));
-            blue += px.blue() > 180 && px.red() < 90 && px.green() < 150;
-        }
-    return blue;
-}
-
 void TestBoneTool::limbBasesLookDifferent()
 {
     // The body with an arm of shortLimbTurnsAtItsBase: its base is a blue dot, the hand not.
-    Fixture fx({outline({{100, 100},
-                         {300, 100},
-                         {300, 185},
-                         {385, 185},
-                         {385, 215},
-                         {300, 215},
-                         {300, 300},
-                         {100, 300},
-                         {100, 100}})});
+    Fixture fx(bodyWithArm());
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({200, 200}));
     QVERIFY(fx.waitReady());
     fx.overlay->setShown(true);

@@ -107,14 +107,21 @@ bool overlaps(const ClipperLib::IntRect &a, const ClipperLib::IntRect &b)
     return a.left <= b.right && b.left <= a.right && a.top <= b.bottom && b.top <= a.bottom;
 }
 
-bool meets(const ClipperLib::Paths &a, const ClipperLib::Paths &b)
+// a ∩ b or a − b (closed paths, non-zero filling) into `out` (Paths or PolyTree).
+template <class Out>
+void clip(ClipperLib::ClipType type, const ClipperLib::Paths &a, const ClipperLib::Paths &b,
+          Out &out)
 {
     ClipperLib::Clipper clipper;
     clipper.AddPaths(a, ClipperLib::ptSubject, true);
     clipper.AddPaths(b, ClipperLib::ptClip, true);
+    clipper.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+}
+
+bool meets(const ClipperLib::Paths &a, const ClipperLib::Paths &b)
+{
     ClipperLib::Paths out;
-    clipper.Execute(ClipperLib::ctIntersection, out, ClipperLib::pftNonZero,
-                    ClipperLib::pftNonZero);
+    clip(ClipperLib::ctIntersection, a, b, out);
     return !out.empty();
 }
 
@@ -142,12 +149,8 @@ Region reopenSlits(const Region &closed, const Region &open, double gap, double 
         parts.push_back({frame.toPath(p.outer)});
         partBounds.push_back(bounds(parts.back().front()));
     }
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(closedPaths, ClipperLib::ptSubject, true);
-    clipper.AddPaths(openPaths, ClipperLib::ptClip, true);
     ClipperLib::PolyTree added;
-    clipper.Execute(ClipperLib::ctDifference, added, ClipperLib::pftNonZero,
-                    ClipperLib::pftNonZero);
+    clip(ClipperLib::ctDifference, closedPaths, openPaths, added);
     const double unit = frame.units(1.0);
     const double longArea = kSlitAreaInGaps * gap * gap * unit * unit;
     const double arcTolerance = 0.1;
@@ -179,11 +182,8 @@ Region reopenSlits(const Region &closed, const Region &open, double gap, double 
     }
     if (slits.empty())
         return closed;
-    ClipperLib::Clipper cut;
-    cut.AddPaths(closedPaths, ClipperLib::ptSubject, true);
-    cut.AddPaths(slits, ClipperLib::ptClip, true);
     ClipperLib::PolyTree tree;
-    cut.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    clip(ClipperLib::ctDifference, closedPaths, slits, tree);
     Region region = detail::simplifyRegion(detail::treeToRegion(tree, frame), tolerance);
     return region.empty() || !(regionArea(region) > 0.0) ? closed : region;
 }
