@@ -427,26 +427,28 @@ QImage paintOverlay(Fixture &fx)
     return image;
 }
 
+// Pixels within `reach` of c (a square) whose colour `is` accepts.
+template <class Is> int pixelsNear(const QImage &image, QPoint c, int reach, Is is)
+{
+    int count = 0;
+    for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx)
+            count += is(image.pixelColor(c + QPoint(dx, dy))) ? 1 : 0;
+    return count;
+}
+
 int redPixelsNear(const QImage &image, QPoint c, int reach)
 {
-    int red = 0;
-    for (int dy = -reach; dy <= reach; ++dy)
-        for (int dx = -reach; dx <= reach; ++dx) {
-            const QColor px = image.pixelColor(c + QPoint(dx, dy));
-            red += px.red() > 150 && px.green() < 90 && px.blue() < 90;
-        }
-    return red;
+    return pixelsNear(image, c, reach, [](const QColor &px) {
+        return px.red() > 150 && px.green() < 90 && px.blue() < 90;
+    });
 }
 
 int bluePixelsNear(const QImage &image, QPoint c, int reach)
 {
-    int blue = 0;
-    for (int dy = -reach; dy <= reach; ++dy)
-        for (int dx = -reach; dx <= reach; ++dx) {
-            const QColor px = image.pixelColor(c + QPoint(dx, dy));
-            blue += px.blue() > 180 && px.red() < 90 && px.green() < 150;
-        }
-    return blue;
+    return pixelsNear(image, c, reach, [](const QColor &px) {
+        return px.blue() > 180 && px.red() < 90 && px.green() < 150;
+    });
 }
 
 // Chooses the context-menu action named `name` (none when absent).
