@@ -10,6 +10,10 @@
 // bones, the shortest bone relative to the shape's diagonal, whether the root is a tip, and the
 // limb bases (where limbs leave the body: IK turns a limb there; blue dots in the pictures).
 // --before: without the animator rig (RefineOptions::animatorRig off), for comparison.
+// --as-strokes: shape contours as the app sees them after `finbook-bench import`: each contour
+// a closed stroke of the pen width, scaled into the 1280 × 720 canvas as the import scales it,
+// through the object's shape like a sketch (the contours as given skip the silhouette's
+// closing, which filled the slits between an octopus's arms until objectShape reopened them).
 // "Wires": a skeleton that lies within one pen width of the strokes along most (> half) of its
 // length traces the pen line instead of the body. Each row says whether the skeleton is one
 // now (wire_after) and whether the one from the silhouette alone, before regions, was
@@ -68,8 +72,50 @@ struct Input {
     std::vector<Eigen::MatrixX2d> lines; // the pen lines (strokes, or the contours)
 };
 
-// The shape of a file: the object shape of its strokes, or its contours as one polygon.
-std::optional<Input> readShape(const QString &path, QString &problem)
+// The shape of pen strokes: the object's shape (and the silhouette alone, for wires).
+std::optional<Input> shapeOfStrokes(const std::vector<StrokeInput> &strokes, QString &problem)
+{
+    Input input;
+    for (const StrokeInput &stroke : strokes)
+        input.lines.push_back(stroke.points);
+    const auto before = silhouette(strokes);
+    const auto after = objectShape(strokes);
+    if (!before || !after) {
+        problem = QString::fromStdString(!before ? before.error().message : after.error().message);
+        return std::nullopt;
+    }
+    input.before = *before;
+    input.after = *after;
+    return input;
+}
+
+// Contours as `finbook-bench import` places them: closed strokes fitted into 1100 × 600 px
+// round the canvas centre (640, 360), proportions kept.
+std::vector<StrokeInput> contoursAsStrokes(const QJsonArray &contours)
+{
+    std::vector<StrokeInput> strokes;
+    Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(HUGE_VAL), hi = -lo;
+    for (const QJsonValue &contour : contours) {
+        Eigen::MatrixX2d points = toMatrix(contour.toArray());
+        if (points.rows() == 0)
+            continue;
+        points.conservativeResize(points.rows() + 1, 2);
+        points.row(points.rows() - 1) = points.row(0);
+        lo = lo.cwiseMin(points.colwise().minCoeff());
+        hi = hi.cwiseMax(points.colwise().maxCoeff());
+        strokes.push_back({points, kPenWidth});
+    }
+    const double scale =
+        std::min(1100.0 / std::max(1.0, hi.x() - lo.x()), 600.0 / std::max(1.0, hi.y() - lo.y()));
+    for (StrokeInput &stroke : strokes)
+        stroke.points = ((stroke.points.rowwise() - 0.5 * (lo + hi)) * scale).rowwise() +
+                        Eigen::RowVector2d(640.0, 360.0);
+    return strokes;
+}
+
+// The shape of a file: the object shape of its strokes, or its contours as one polygon (or,
+// asStrokes, as closed strokes).
+std::optional<Input> readShape(const QString &path, bool asStrokes, QString &problem)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
@@ -78,23 +124,14 @@ std::optional<Input> readShape(const QString &path, QString &problem)
     }
     const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
     if (json.contains(QStringLiteral("strokes"))) {
-        Input input;
         std::vector<StrokeInput> strokes;
-        for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray()) {
+        for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray())
             strokes.push_back({toMatrix(stroke.toArray()), kPenWidth});
-            input.lines.push_back(strokes.back().points);
-        }
-        const auto before = silhouette(strokes);
-        const auto after = objectShape(strokes);
-        if (!before || !after) {
-            problem =
-                QString::fromStdString(!before ? before.error().message : after.error().message);
-            return std::nullopt;
-        }
-        input.before = *before;
-        input.after = *after;
-        return input;
+        return shapeOfStrokes(strokes, problem);
     }
+    if (json.contains(QStringLiteral("contours")) && asStrokes)
+        return shapeOfStrokes(contoursAsStrokes(json.value(QStringLiteral("contours")).toArray()),
+                              problem);
     if (json.contains(QStringLiteral("contours"))) {
         const QJsonArray contours = json.value(QStringLiteral("contours")).toArray();
         Input input;
@@ -397,7 +434,7 @@ int benchSkeleton(const QStringList &arguments)
 {
     QStringList args = arguments;
     QString pngDir;
-    bool before = false;
+    bool before = false, asStrokes = false;
     while (!args.isEmpty()) {
         if (args.size() >= 2 && args.front() == QStringLiteral("--png")) {
             pngDir = args[1];
@@ -406,12 +443,17 @@ int benchSkeleton(const QStringList &arguments)
         } else if (args.front() == QStringLiteral("--before")) {
             before = true;
             args.removeFirst();
+        } else if (args.front() == QStringLiteral("--as-strokes")) {
+            asStrokes = true;
+            args.removeFirst();
         } else {
             break;
         }
     }
     if (args.isEmpty()) {
-        std::fprintf(stderr, "usage: finbook-bench skeleton [--png DIR] FILE...\n");
+        std::fprintf(
+            stderr,
+            "usage: finbook-bench skeleton [--before] [--as-strokes] [--png DIR] FILE...\n");
         return 2;
     }
     int failures = 0;
@@ -419,7 +461,7 @@ int benchSkeleton(const QStringList &arguments)
     QStringList names;
     for (const QString &path : args) {
         QString problem;
-        const std::optional<Input> input = readShape(path, problem);
+        const std::optional<Input> input = readShape(path, asStrokes, problem);
         const QJsonObject row =
             input ? measure(path, *input, pngDir, before, totals)
                   : QJsonObject{{QStringLiteral("file"), QFileInfo(path).fileName()},
@@ -450,6 +492,8 @@ int benchSkeleton(const QStringList &arguments)
 
 } // namespace
 
-FINBOOK_BENCH("skeleton",
-              "[--before] [--png DIR] FILE... (Quick, Draw! strokes or shape contours as JSON)",
-              benchSkeleton);
+FINBOOK_BENCH(
+    "skeleton",
+    "[--before] [--as-strokes] [--png DIR] FILE... (Quick, Draw! strokes or shape contours "
+    "as JSON)",
+    benchSkeleton);
