@@ -28,7 +28,9 @@
 // rest.
 // Per file and scheme one line with the skinning precompute's time (weights, cut, ARAP
 // factorization) and, cut, how many joints were cut.
-// --before: the skeleton without the animator rig (RefineOptions::animatorRig off). --only A,B:
+// --before: the skeleton without the animator rig (RefineOptions::animatorRig off).
+// --as-strokes: silhouettes' contours as the app imports them (closed 3 px strokes, placed as
+// `finbook-bench import` places them, through the object's shape). --only A,B:
 // just these schemes. Sweeps: --joint-free X (the zones' factor), --dominance X (rigid_pieces),
 // --reach X (SkinningOptions::reach), --child-zone X, --parent-zone X, --arap-dominance X,
 // --thinnest 0|1, --soft-limbs 0|1 (bench::SkeletonArapOptions).
@@ -101,7 +103,8 @@ constexpr Scheme kSchemes[] = {
     {"cutout_layers", true, deform::kDefaultJointFree, 2.0, false, false, -1, true}};
 
 constexpr const char *kUsage =
-    "[--before] [--only A,B] [--png DIR] [--png-degrees 60|100] [--zoom] [--scheme NAME] "
+    "[--before] [--as-strokes] [--only A,B] [--png DIR] [--png-degrees 60|100] [--zoom] [--scheme "
+    "NAME] "
     "[--joint-free X] [--dominance X] [--reach X] [--child-zone X] [--parent-zone X] "
     "[--arap-dominance X] [--thinnest 0|1] [--soft-limbs 0|1] FILE... (every limb turned "
     "±60°/±100° at its base)";
@@ -429,7 +432,7 @@ void drawPose(QPainter &painter, const Moved &mesh, const Eigen::MatrixX2d &U,
 int benchLimbs(const QStringList &arguments)
 {
     QStringList args = arguments;
-    bool before = false;
+    bool before = false, asStrokes = false;
     QString pngDir;
     int pngScheme = 2;
     bool zoom = false;
@@ -450,6 +453,9 @@ int benchLimbs(const QStringList &arguments)
     while (!args.isEmpty() && args.front().startsWith(QStringLiteral("--"))) {
         if (args.front() == QStringLiteral("--before")) {
             before = true;
+            args.removeFirst();
+        } else if (args.front() == QStringLiteral("--as-strokes")) {
+            asStrokes = true;
             args.removeFirst();
         } else if (args.front() == QStringLiteral("--only") && args.size() >= 2) {
             only = args[1].split(QLatin1Char(','));
@@ -487,7 +493,7 @@ int benchLimbs(const QStringList &arguments)
     int limbCount = 0, failures = 0;
     for (const QString &path : args) {
         const QString name = QFileInfo(path).baseName();
-        const auto mesh = test::meshDataFile(path);
+        const auto mesh = test::meshDataFile(path, {}, asStrokes);
         geometry::RefineOptions refine;
         refine.animatorRig = !before;
         std::optional<geometry::Skeleton> s;

@@ -54,6 +54,7 @@ namespace {
 using finbook::bench::threadCpuMs;
 
 using namespace finbook::geometry;
+using finbook::test::contoursAsStrokes;
 using finbook::test::insideRing;
 using finbook::test::toMatrix;
 using Clock = std::chrono::steady_clock;
@@ -89,30 +90,6 @@ std::optional<Input> shapeOfStrokes(const std::vector<StrokeInput> &strokes, QSt
     return input;
 }
 
-// Contours as `finbook-bench import` places them: closed strokes fitted into 1100 × 600 px
-// round the canvas centre (640, 360), proportions kept.
-std::vector<StrokeInput> contoursAsStrokes(const QJsonArray &contours)
-{
-    std::vector<StrokeInput> strokes;
-    Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(HUGE_VAL), hi = -lo;
-    for (const QJsonValue &contour : contours) {
-        Eigen::MatrixX2d points = toMatrix(contour.toArray());
-        if (points.rows() == 0)
-            continue;
-        points.conservativeResize(points.rows() + 1, 2);
-        points.row(points.rows() - 1) = points.row(0);
-        lo = lo.cwiseMin(points.colwise().minCoeff());
-        hi = hi.cwiseMax(points.colwise().maxCoeff());
-        strokes.push_back({points, kPenWidth});
-    }
-    const double scale =
-        std::min(1100.0 / std::max(1.0, hi.x() - lo.x()), 600.0 / std::max(1.0, hi.y() - lo.y()));
-    for (StrokeInput &stroke : strokes)
-        stroke.points = ((stroke.points.rowwise() - 0.5 * (lo + hi)) * scale).rowwise() +
-                        Eigen::RowVector2d(640.0, 360.0);
-    return strokes;
-}
-
 // The shape of a file: the object shape of its strokes, or its contours as one polygon (or,
 // asStrokes, as closed strokes).
 std::optional<Input> readShape(const QString &path, bool asStrokes, QString &problem)
@@ -129,9 +106,13 @@ std::optional<Input> readShape(const QString &path, bool asStrokes, QString &pro
             strokes.push_back({toMatrix(stroke.toArray()), kPenWidth});
         return shapeOfStrokes(strokes, problem);
     }
-    if (json.contains(QStringLiteral("contours")) && asStrokes)
-        return shapeOfStrokes(contoursAsStrokes(json.value(QStringLiteral("contours")).toArray()),
-                              problem);
+    if (json.contains(QStringLiteral("contours")) && asStrokes) {
+        std::vector<StrokeInput> strokes;
+        for (Eigen::MatrixX2d &points :
+             contoursAsStrokes(json.value(QStringLiteral("contours")).toArray()))
+            strokes.push_back({std::move(points), kPenWidth});
+        return shapeOfStrokes(strokes, problem);
+    }
     if (json.contains(QStringLiteral("contours"))) {
         const QJsonArray contours = json.value(QStringLiteral("contours")).toArray();
         Input input;

@@ -58,9 +58,10 @@ inline QStringList realDataFiles(const QString &dir)
     return files;
 }
 
-// A data file (Quick, Draw! strokes with a 3 px pen, or contours) meshed by buildObjectMesh.
-inline std::optional<geometry::ObjectMesh> meshDataFile(const QString &path,
-                                                        const geometry::MeshOptions &options = {})
+// A data file (Quick, Draw! strokes with a 3 px pen, or contours) meshed by buildObjectMesh;
+// asStrokes: contours as the app imports them (contoursAsStrokes, a 3 px pen).
+inline std::optional<geometry::ObjectMesh>
+meshDataFile(const QString &path, const geometry::MeshOptions &options = {}, bool asStrokes = false)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
@@ -76,6 +77,13 @@ inline std::optional<geometry::ObjectMesh> meshDataFile(const QString &path,
     const QJsonArray contours = json.value(QStringLiteral("contours")).toArray();
     if (contours.isEmpty())
         return std::nullopt;
+    if (asStrokes) {
+        std::vector<geometry::StrokeInput> strokes;
+        for (Eigen::MatrixX2d &points : contoursAsStrokes(contours))
+            strokes.push_back({std::move(points), 3.0});
+        auto mesh = geometry::buildObjectMesh(strokes, options);
+        return mesh ? std::optional(std::move(*mesh)) : std::nullopt;
+    }
     geometry::Polygon polygon;
     polygon.outer = toMatrix(contours[0].toArray());
     for (qsizetype i = 1; i < contours.size(); ++i)

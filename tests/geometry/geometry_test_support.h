@@ -5,9 +5,11 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <utility>
+#include <vector>
 
 namespace finbook::test {
 
@@ -59,6 +61,30 @@ inline Eigen::MatrixX2d toMatrix(const QJsonArray &points)
         m(i, 1) = p[1].toDouble();
     }
     return m;
+}
+
+// A silhouette's contours as `finbook-bench import` places them for the app: closed polylines
+// fitted into 1100 × 600 px round the canvas centre (640, 360), proportions kept.
+inline std::vector<Eigen::MatrixX2d> contoursAsStrokes(const QJsonArray &contours)
+{
+    std::vector<Eigen::MatrixX2d> strokes;
+    Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(HUGE_VAL), hi = -lo;
+    for (const QJsonValue &contour : contours) {
+        Eigen::MatrixX2d points = toMatrix(contour.toArray());
+        if (points.rows() == 0)
+            continue;
+        points.conservativeResize(points.rows() + 1, 2);
+        points.row(points.rows() - 1) = points.row(0);
+        lo = lo.cwiseMin(points.colwise().minCoeff());
+        hi = hi.cwiseMax(points.colwise().maxCoeff());
+        strokes.push_back(points);
+    }
+    const double scale =
+        std::min(1100.0 / std::max(1.0, hi.x() - lo.x()), 600.0 / std::max(1.0, hi.y() - lo.y()));
+    for (Eigen::MatrixX2d &points : strokes)
+        points = ((points.rowwise() - 0.5 * (lo + hi)) * scale).rowwise() +
+                 Eigen::RowVector2d(640.0, 360.0);
+    return strokes;
 }
 
 } // namespace finbook::test
