@@ -67,23 +67,20 @@ meshDataFile(const QString &path, const geometry::MeshOptions &options = {}, boo
     if (!file.open(QIODevice::ReadOnly))
         return std::nullopt;
     const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
-    if (json.contains(QStringLiteral("strokes"))) {
-        std::vector<geometry::StrokeInput> strokes;
+    const QJsonArray contours = json.value(QStringLiteral("contours")).toArray();
+    std::vector<geometry::StrokeInput> strokes;
+    if (json.contains(QStringLiteral("strokes")))
         for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray())
             strokes.push_back({toMatrix(stroke.toArray()), 3.0});
-        auto mesh = geometry::buildObjectMesh(strokes, options);
-        return mesh ? std::optional(std::move(*mesh)) : std::nullopt;
-    }
-    const QJsonArray contours = json.value(QStringLiteral("contours")).toArray();
-    if (contours.isEmpty())
-        return std::nullopt;
-    if (asStrokes) {
-        std::vector<geometry::StrokeInput> strokes;
+    else if (asStrokes)
         for (Eigen::MatrixX2d &points : contoursAsStrokes(contours))
             strokes.push_back({std::move(points), 3.0});
+    if (!strokes.empty()) {
         auto mesh = geometry::buildObjectMesh(strokes, options);
         return mesh ? std::optional(std::move(*mesh)) : std::nullopt;
     }
+    if (contours.isEmpty())
+        return std::nullopt;
     geometry::Polygon polygon;
     polygon.outer = toMatrix(contours[0].toArray());
     for (qsizetype i = 1; i < contours.size(); ++i)

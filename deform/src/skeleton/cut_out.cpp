@@ -145,14 +145,6 @@ int nearestWhere(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &targe
     return best;
 }
 
-double distanceToSegment(const Vec &x, const Vec &s, const Vec &e)
-{
-    const Vec d = e - s;
-    const double length2 = d.squaredNorm();
-    const double t = length2 > 0.0 ? std::clamp((x - s).dot(d) / length2, 0.0, 1.0) : 0.0;
-    return (s + t * d - x).norm();
-}
-
 // The vertices past the cut a → pivot → b (flooded from `seed` along edges that do not meet
 // it), or empty when the flood reaches a vertex marked in `stop` (the cut does not separate).
 // A vertex on the cut (within `onCut`) is not flooded through: a cut that ends on an outline
@@ -164,7 +156,8 @@ std::vector<char> floodPast(const Eigen::MatrixX2d &V, const MeshGraph &g, const
                             double onCut)
 {
     const auto isOnCut = [&](const Vec &x) {
-        return distanceToSegment(x, a, pivot) <= onCut || distanceToSegment(x, pivot, b) <= onCut;
+        return std::min(detail::squaredSegmentDistance(x, a, pivot),
+                        detail::squaredSegmentDistance(x, pivot, b)) <= onCut * onCut;
     };
     std::vector<char> past(std::size_t(V.rows()), 0);
     std::vector<int> stack{seed};
@@ -313,15 +306,11 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
         }
         if (!any)
             return;
-        double round = std::numeric_limits<double>::infinity();
-        for (const auto &[s, e] : graph.boundary) {
-            const Vec p = V.row(s).transpose(), q = V.row(e).transpose();
-            const Vec d = q - p;
-            const double length2 = d.squaredNorm();
-            const double t =
-                length2 > 0.0 ? std::clamp((pivot - p).dot(d) / length2, 0.0, 1.0) : 0.0;
-            round = std::min(round, (p + t * d - pivot).norm());
-        }
+        double round2 = std::numeric_limits<double>::infinity();
+        for (const auto &[s, e] : graph.boundary)
+            round2 = std::min(round2, detail::squaredSegmentDistance(pivot, V.row(s).transpose(),
+                                                                     V.row(e).transpose()));
+        const double round = std::sqrt(round2);
         out.cuts.push_back({j, cut.child, cut.a, cut.b, std::isfinite(round) ? round : 0.0});
     };
     for (Eigen::Index k = 0; k < skeleton.jointCount(); ++k) {

@@ -20,22 +20,31 @@ void addPolygon(const Polygon &polygon, const detail::ClipperFrame &frame, Clipp
         out.push_back(frame.toPath(hole));
 }
 
-double thinnestRadius(const std::vector<StrokeInput> &strokes, double margin)
+// The outline simplification silhouette() uses: at most a fifth of the thinnest band's radius.
+double simplifyTolerance(const std::vector<StrokeInput> &strokes, const SilhouetteOptions &options)
 {
     double r = std::numeric_limits<double>::max();
     for (const StrokeInput &s : strokes)
         if (s.points.rows() > 0)
-            r = std::min(r, 0.5 * s.width + margin);
-    return r;
+            r = std::min(r, 0.5 * s.width + options.margin);
+    return std::min(options.simplifyTolerance, 0.2 * r);
 }
+
+// The lower corner of every ring of `region`, and of `lo`.
+Eigen::RowVector2d lowerCorner(const Region &region, Eigen::RowVector2d lo)
+{
+    for (const Eigen::MatrixX2d &ring : regionRings(region))
+        lo = lo.cwiseMin(ring.colwise().minCoeff());
+    return lo;
+}
+
+constexpr double kFar = std::numeric_limits<double>::max();
 
 Expected<Region, GeometryError> unite(const Region &bands, const std::vector<Face> &faces,
                                       const std::vector<StrokeInput> &strokes,
                                       const SilhouetteOptions &options)
 {
-    Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(std::numeric_limits<double>::max());
-    for (const Eigen::MatrixX2d &ring : regionRings(bands))
-        lo = lo.cwiseMin(ring.colwise().minCoeff());
+    Eigen::RowVector2d lo = lowerCorner(bands, Eigen::RowVector2d::Constant(kFar));
     for (const Face &f : faces)
         lo = lo.cwiseMin(f.polygon.outer.colwise().minCoeff());
     const detail::ClipperFrame frame = detail::frameFor(lo);
@@ -52,9 +61,8 @@ Expected<Region, GeometryError> unite(const Region &bands, const std::vector<Fac
             outer.push_back(node->Contour);
         detail::uniteToTree(outer, ClipperLib::pftNonZero, tree);
     }
-    const double tolerance =
-        std::min(options.simplifyTolerance, 0.2 * thinnestRadius(strokes, options.margin));
-    Region region = detail::simplifyRegion(detail::treeToRegion(tree, frame), tolerance);
+    Region region = detail::simplifyRegion(detail::treeToRegion(tree, frame),
+                                           simplifyTolerance(strokes, options));
     if (region.empty() || !(regionArea(region) > 0.0))
         return unexpected(
             detail::error(GeometryErrorCode::DegenerateRegion, "The strokes cover no area."));
@@ -133,12 +141,8 @@ bool meets(const ClipperLib::Paths &a, const ClipperLib::Paths &b)
 Region reopenSlits(const Region &closed, const Region &open, double gap, double tolerance,
                    const std::vector<Eigen::RowVector2d> &freeEnds, double endReach)
 {
-    Eigen::RowVector2d lo = Eigen::RowVector2d::Constant(std::numeric_limits<double>::max());
-    for (const Eigen::MatrixX2d &ring : regionRings(closed))
-        lo = lo.cwiseMin(ring.colwise().minCoeff());
-    for (const Eigen::MatrixX2d &ring : regionRings(open))
-        lo = lo.cwiseMin(ring.colwise().minCoeff());
-    const detail::ClipperFrame frame = detail::frameFor(lo);
+    const detail::ClipperFrame frame = detail::frameFor(
+        lowerCorner(open, lowerCorner(closed, Eigen::RowVector2d::Constant(kFar))));
     ClipperLib::Paths closedPaths, openPaths;
     for (const Polygon &p : closed)
         addPolygon(p, frame, closedPaths);
@@ -244,8 +248,7 @@ Expected<Region, GeometryError> objectShape(const std::vector<StrokeInput> &stro
         }
     }
     const double endReach = 0.5 * widest + silhouetteOptions.margin + silhouetteOptions.gap;
-    const double tolerance = std::min(silhouetteOptions.simplifyTolerance,
-                                      0.2 * thinnestRadius(strokes, silhouetteOptions.margin));
+    const double tolerance = simplifyTolerance(strokes, silhouetteOptions);
     auto reopened = detail::catchExceptions([&]() -> Expected<Region, GeometryError> {
         return reopenSlits(*shape, *open, silhouetteOptions.gap, tolerance, freeEnds, endReach);
     });
