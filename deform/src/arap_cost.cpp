@@ -57,23 +57,30 @@ double chooseDragPasses(ArapPrecompute &d)
         iterationMs > 0.0 ? int(std::clamp(std::floor(kCoarseBudgetShare * budgetMs / iterationMs),
                                            double(kCoarseIterations), double(kMaxCoarseIterations)))
                           : kCoarseIterations;
-    const double fixedMs =
+    // A two-level start solves the coarse level's drag event (its own model), hands its
+    // rotations over and takes one fine global step.
+    const ArapPrecompute *level = d.coarseLevel.get();
+    const double levelMs = level ? double(level->dragPasses + 2) * level->estimatedPassMs +
+                                       1e-6 * kVertexNs * double(level->rest.size())
+                                 : 0.0;
+    const double shortStartMs =
         d.triangleCluster.size() > 0
             ? 1e-6 * kBasisEntryNs *
                       (double(d.coarseHandles.size()) + clusters * clusters * d.coarseIterations) +
                   d.estimatedPassMs + vertexMs
             : stepOneMs + vertexMs;
+    const double fixedMs = level ? levelMs + d.estimatedPassMs + vertexMs : shortStartMs;
     const int cap = std::max(1, d.options.maxDragPasses);
     // The coarse start ends with a global step, worth one of the minimum's passes: with it one
     // fine pass left the 20k bar at 1.15× the converged energy, where two from step 1 left 1.51×.
-    const int minimum = d.options.minDragPasses - (d.triangleCluster.size() > 0 ? 1 : 0);
-    const int floor = std::clamp(minimum, 1, cap);
+    const int shortMinimum = d.options.minDragPasses - (d.triangleCluster.size() > 0 ? 1 : 0);
+    const int minimum = level ? d.options.minDragPasses - 1 : shortMinimum;
     if (!(d.estimatedPassMs > 0.0)) {
         d.dragPasses = d.warmDragPasses = cap;
         return INFINITY;
     }
     const double fit = std::floor((budgetMs - fixedMs) / d.estimatedPassMs);
-    d.dragPasses = int(std::clamp(fit, double(floor), double(cap)));
+    d.dragPasses = int(std::clamp(fit, double(std::clamp(minimum, 1, cap)), double(cap)));
     // A warm event starts from the previous pose moved by step 1's answer to the handles'
     // move (no coarse rotations): step 1 and the per-vertex rest are fixed, and it runs at
     // least the cold event's minimum.

@@ -4,6 +4,8 @@
 
 #include <Eigen/OrderingMethods>
 
+#include <future>
+#include <system_error>
 #include <vector>
 
 namespace finbook::deform {
@@ -201,6 +203,23 @@ ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::Matr
     const Classification c = classify(V.rows(), F, b);
     if (stop())
         return cancelledError();
+    // A large mesh's coarse level is meshed and precomputed on a thread of its own meanwhile.
+    std::future<std::optional<detail::TwoLevelBuild>> twoLevel;
+    if (options.method == ArapMethod::Refined && options.twoLevelVertices > 0 &&
+        c.freeVertices.size() + c.handleVertices.size() >= std::size_t(options.twoLevelVertices)) {
+        // Only a faster start: without a thread, or when building it fails, there is none.
+        try {
+            twoLevel =
+                std::async(std::launch::async, [&]() -> std::optional<detail::TwoLevelBuild> {
+                    try {
+                        return detail::buildTwoLevel(V, F, c.solvedTriangles, b, options);
+                    } catch (...) {
+                        return std::nullopt;
+                    }
+                });
+        } catch (const std::system_error &) {
+        }
+    }
     const std::vector<int> internal = numberVertices(V, F, b, c, *d);
     if (stop())
         return cancelledError();
@@ -210,6 +229,10 @@ ArapPrecomputeResult arapPrecompute(const Eigen::MatrixX2d &V, const Eigen::Matr
     detail::assembleArapSystems(V, F, c.solvedTriangles, internal, *d);
     if (auto error = factorization.finish(cancelled))
         return unexpected(std::move(*error));
+    if (twoLevel.valid()) {
+        if (const auto build = twoLevel.get())
+            detail::attachTwoLevel(*d, *build, internal);
+    }
     return std::shared_ptr<const ArapPrecompute>(std::move(d));
 }
 

@@ -2,6 +2,9 @@
 
 #include <finbook/deform/arap.h>
 
+#include <memory>
+#include <vector>
+
 namespace finbook::deform {
 namespace detail {
 
@@ -209,6 +212,34 @@ void scatterPositions(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen:
     }
 }
 
+// The coarse level of a two-level start runs inside a fine solve on the same thread, so it
+// has a workspace of its own: a cold start with its coarse rotations or step 1, then its
+// passes (its drag event's, or to convergence), no flip repair (only the rotations are used).
+bool solveCoarseLevel(const ArapPrecompute &level, const Eigen::MatrixX2d &bc,
+                      Eigen::VectorXcd &rotations)
+{
+    // One workspace per nesting depth: a coarse level may have a coarse level of its own.
+    thread_local std::vector<std::unique_ptr<Workspace>> spaces;
+    thread_local std::size_t depth = 0;
+    if (spaces.size() <= depth)
+        spaces.push_back(std::make_unique<Workspace>());
+    Workspace &w = *spaces[depth];
+    struct Nest {
+        std::size_t &depth;
+        ~Nest() { --depth; }
+    } nest{++depth};
+    if (beginSolve(level, bc, w))
+        return false;
+    ArapSolveReport report;
+    if (coldStart(level, w, report))
+        return false;
+    if (refine(level, w, level.dragPasses, 0, 0.0, 0.0, nullptr, report))
+        return false;
+    rotations.resize(level.triangles.rows());
+    fitRotations(level, w.positions, rotations, false);
+    return rotations.allFinite();
+}
+
 } // namespace detail
 
 namespace {
@@ -272,7 +303,7 @@ ArapSolveResult refinedSolve(const ArapPrecompute &d, const Eigen::MatrixX2d &bc
         if (!passes)
             return unexpected(passes.error());
         dragPasses = *passes;
-    } else if (auto error = detail::coldStart(d, w, report)) {
+    } else if (auto error = detail::coldStart(d, w, report, !final)) {
         return unexpected(std::move(*error));
     }
     const int passes = final ? std::max(1, d.options.finalPassCap) : dragPasses;

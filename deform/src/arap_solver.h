@@ -29,7 +29,8 @@ struct Workspace {
     double refinedEnergy = 0.0; // the energy refine() ended with (an upper bound of the pose's)
     Eigen::VectorXcd saved;     // flip repair: the region's positions before a restart
     Eigen::VectorXcd coarseRotations, coarseCovariance, coarseHandleTerm; // K each
-    Eigen::VectorXcd handleTargets; // handles: a warm start's targets while step 1 moves it
+    Eigen::VectorXcd coarseLevelRotations; // two-level start: 3·R per coarse-level triangle
+    Eigen::VectorXcd handleTargets;        // handles: a warm start's targets while step 1 moves it
     // A drag's momentum (arap_solve.cpp): the precompute and the pose the last warm event on
     // this thread returned; that event's start moved by step 1 (free vertices), its handles'
     // move, and what its passes added to that start. warmPlain and handleMove are the current
@@ -146,14 +147,47 @@ private:
 // w.positions, then one global step with those rotations into w.positions.head(freeCount).
 void coarseStart(const ArapPrecompute &d, Workspace &w);
 
+// Two-level start (arap_two_level.cpp), for meshes whose solved part has at least
+// options.twoLevelVertices vertices (Refined). The coarse level's drag event gets
+// kTwoLevelBudgetShare of the drag budget (measured before the outline was meshed at a fixed
+// size: at half, 21 coarse passes left the 20k bar at 1.11× the converged energy, at three
+// quarters 33 passes 1.08×, a converged coarse level 1.004×).
+constexpr double kTwoLevelBudgetShare = 0.75;
+
+// What the precompute builds beside the fine systems (from the original numbering; it may run
+// on another thread): the coarse level and, per coarse pin, its three fine pinned vertices,
+// weights and offset (see ArapPrecompute::coarseLevelHandles).
+struct TwoLevelBuild {
+    std::shared_ptr<const ArapPrecompute> level;
+    Eigen::MatrixX3i entryVertices;
+    Eigen::MatrixX3d entryWeights;
+    Eigen::VectorXcd entryOffset;
+};
+// No value when the outline cannot be meshed coarser, a coarse part would not be solved, or the
+// coarse mesh would not be much smaller.
+std::optional<TwoLevelBuild> buildTwoLevel(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                           const std::vector<Eigen::Index> &solvedTriangles,
+                                           const Eigen::VectorXi &b, const ArapOptions &options);
+// Hands the build to d in its internal numbering and re-runs the cost model; false (d
+// unchanged) when it does not fit.
+bool attachTwoLevel(ArapPrecompute &d, const TwoLevelBuild &build,
+                    const std::vector<int> &internal);
+// The cold start from the coarse level: solves it for the handles in w.positions (its drag
+// event, or converged when `final`), then one fine global step with its rotations. False
+// when the coarse solve fails (then nothing was changed).
+bool twoLevelStart(const ArapPrecompute &d, Workspace &w);
+// The coarse level's solve, on a workspace of its own: 3·R per row of level.triangles.
+bool solveCoarseLevel(const ArapPrecompute &level, const Eigen::MatrixX2d &bc,
+                      Eigen::VectorXcd &rotations);
+
 // Drag events from the previous pose (arap_warm.cpp). A start of the mesh's size, finite and in
 // range; the cold event's start (coarse rotations or step 1) into w.positions; the start of a
 // warm event into w.positions and the passes that follow it (with `continued`, the momentum
 // of the last event); whether `start` is the pose the last warm event on w returned for d;
 // and remembering this event's pose and correction for the next one.
 bool usableStart(const ArapPrecompute &d, const Eigen::MatrixX2d &start);
-std::optional<DeformError> coldStart(const ArapPrecompute &d, Workspace &w,
-                                     ArapSolveReport &report);
+std::optional<DeformError> coldStart(const ArapPrecompute &d, Workspace &w, ArapSolveReport &report,
+                                     bool drag = false);
 Expected<int, DeformError> warmOrCold(const ArapPrecompute &d, const Eigen::MatrixX2d &start,
                                       Workspace &w, ArapSolveReport &report, bool continued);
 bool continuesDrag(const ArapPrecompute &d, const Workspace &w, const Eigen::MatrixX2d &start);
