@@ -17,6 +17,8 @@
 
 #include <finbook/geometry/mesh_boundary.h>
 #include <finbook/geometry/object_mesh.h>
+#include <finbook/geometry/polyline.h>
+#include <finbook/geometry/region.h>
 #include <finbook/geometry/simplicity.h>
 #include <finbook/geometry/triangle_locator.h>
 
@@ -37,27 +39,7 @@ constexpr double kMaxCoarseShare = 0.3;
 // The size (bounding-box diagonal) the outline is meshed at.
 constexpr double kCanonicalSize = 1000.0;
 
-double signedArea(const Eigen::MatrixX2d &ring)
-{
-    double a = 0.0;
-    for (Eigen::Index i = 0, n = ring.rows(); i < n; ++i) {
-        const Eigen::Index j = (i + 1) % n;
-        a += ring(i, 0) * ring(j, 1) - ring(j, 0) * ring(i, 1);
-    }
-    return 0.5 * a;
-}
-
-bool ringContains(const Eigen::MatrixX2d &ring, double x, double y)
-{
-    bool inside = false;
-    for (Eigen::Index i = 0, n = ring.rows(), j = n - 1; i < n; j = i++) {
-        const double yi = ring(i, 1), yj = ring(j, 1);
-        if ((yi > y) != (yj > y) &&
-            x < (ring(j, 0) - ring(i, 0)) * (y - yi) / (yj - yi) + ring(i, 0))
-            inside = !inside;
-    }
-    return inside;
-}
+using geometry::signedArea;
 
 // Keeps ring vertices at least `spacing` apart along the ring (always the first).
 Eigen::MatrixX2d thinned(const Eigen::MatrixX2d &ring, double spacing)
@@ -104,7 +86,8 @@ geometry::Region outline(const Eigen::MatrixX2d &V, const std::vector<Eigen::Vec
         double bestArea = INFINITY;
         for (std::size_t k = 0; k < outers.size(); ++k) {
             const double area = signedArea(outers[k]);
-            if (area < bestArea && ringContains(outers[k], hole(0, 0), hole(0, 1))) {
+            if (area < bestArea &&
+                geometry::regionContains({{outers[k], {}}}, hole(0, 0), hole(0, 1))) {
                 best = k;
                 bestArea = area;
             }
