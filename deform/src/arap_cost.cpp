@@ -63,18 +63,17 @@ double chooseDragPasses(ArapPrecompute &d)
     const double levelMs = level ? double(level->dragPasses + 2) * level->estimatedPassMs +
                                        1e-6 * kVertexNs * double(level->rest.size())
                                  : 0.0;
-    const double shortStartMs =
-        d.triangleCluster.size() > 0
+    const double fixedMs =
+        level ? levelMs + d.estimatedPassMs + vertexMs
+        : d.triangleCluster.size() > 0
             ? 1e-6 * kBasisEntryNs *
                       (double(d.coarseHandles.size()) + clusters * clusters * d.coarseIterations) +
                   d.estimatedPassMs + vertexMs
             : stepOneMs + vertexMs;
-    const double fixedMs = level ? levelMs + d.estimatedPassMs + vertexMs : shortStartMs;
     const int cap = std::max(1, d.options.maxDragPasses);
     // The coarse start ends with a global step, worth one of the minimum's passes: with it one
     // fine pass left the 20k bar at 1.15× the converged energy, where two from step 1 left 1.51×.
-    const int shortMinimum = d.options.minDragPasses - (d.triangleCluster.size() > 0 ? 1 : 0);
-    const int minimum = level ? d.options.minDragPasses - 1 : shortMinimum;
+    const int minimum = d.options.minDragPasses - (level || d.triangleCluster.size() > 0 ? 1 : 0);
     if (!(d.estimatedPassMs > 0.0)) {
         d.dragPasses = d.warmDragPasses = cap;
         return INFINITY;

@@ -2,9 +2,6 @@
 
 #include <finbook/deform/arap.h>
 
-#include <memory>
-#include <vector>
-
 namespace finbook::deform {
 namespace detail {
 
@@ -213,21 +210,13 @@ void scatterPositions(const ArapPrecompute &d, const Eigen::VectorXcd &W, Eigen:
 }
 
 // The coarse level of a two-level start runs inside a fine solve on the same thread, so it
-// has a workspace of its own: a cold start with its coarse rotations or step 1, then its
-// passes (its drag event's, or to convergence), no flip repair (only the rotations are used).
+// has a workspace of its own (a coarse level has no coarse level: options.twoLevelVertices is
+// 0 there): a cold start with its coarse rotations or step 1, then its drag event's passes, no
+// flip repair (only the rotations are used).
 bool solveCoarseLevel(const ArapPrecompute &level, const Eigen::MatrixX2d &bc,
                       Eigen::VectorXcd &rotations)
 {
-    // One workspace per nesting depth: a coarse level may have a coarse level of its own.
-    thread_local std::vector<std::unique_ptr<Workspace>> spaces;
-    thread_local std::size_t depth = 0;
-    if (spaces.size() <= depth)
-        spaces.push_back(std::make_unique<Workspace>());
-    Workspace &w = *spaces[depth];
-    struct Nest {
-        std::size_t &depth;
-        ~Nest() { --depth; }
-    } nest{++depth};
+    thread_local Workspace w;
     if (beginSolve(level, bc, w))
         return false;
     ArapSolveReport report;
