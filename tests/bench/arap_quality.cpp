@@ -249,6 +249,14 @@ QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, do
     const double referenceEnergy = arapCotangentEnergy(V, F, converged->U);
     const bool rigid = referenceEnergy <= kRigidEnergy * scale;
     const std::vector<bool> referenceFlipped = flippedTriangles(V, F, converged->U);
+    // The vertices of the reference's folds: a flipped triangle touching one lies in a fold the
+    // pins force, shifted by a triangle or so (an unconverged pose folds the neighbour first);
+    // one that touches none is a fold where the converged pose has none.
+    std::vector<bool> referenceFoldVertex(std::size_t(V.rows()), false);
+    for (Eigen::Index t = 0; t < F.rows(); ++t)
+        if (referenceFlipped[std::size_t(t)])
+            for (int k = 0; k < 3; ++k)
+                referenceFoldVertex[std::size_t(F(t, k))] = true;
     row.insert(QStringLiteral("reference_energy_rel"), referenceEnergy / scale);
     const auto columns = [&](const char *name, const Solved &s) {
         const QString prefix = QString::fromLatin1(name);
@@ -259,13 +267,19 @@ QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, do
                    (energy - referenceEnergy) / scale);
         row.insert(prefix + QStringLiteral("_area_pct"), areaChangePercent(V, F, s.U));
         const std::vector<bool> flipped = flippedTriangles(V, F, s.U);
-        int count = 0, beyond = 0;
+        int count = 0, beyond = 0, apart = 0;
         for (std::size_t t = 0; t < flipped.size(); ++t) {
             count += flipped[t] ? 1 : 0;
             beyond += flipped[t] && !referenceFlipped[t] ? 1 : 0;
+            const auto row3 = F.row(Eigen::Index(t));
+            const bool touchesFold = referenceFoldVertex[std::size_t(row3(0))] ||
+                                     referenceFoldVertex[std::size_t(row3(1))] ||
+                                     referenceFoldVertex[std::size_t(row3(2))];
+            apart += flipped[t] && !touchesFold ? 1 : 0;
         }
         row.insert(prefix + QStringLiteral("_flips"), count);
         row.insert(prefix + QStringLiteral("_flips_beyond_reference"), beyond);
+        row.insert(prefix + QStringLiteral("_flips_apart_from_reference"), apart);
         row.insert(prefix + QStringLiteral("_ms"), s.ms);
         row.insert(prefix + QStringLiteral("_cpu_ms"), s.cpuMs);
         row.insert(prefix + QStringLiteral("_passes"), s.report.passes);
