@@ -398,7 +398,7 @@ void TestArapDrag::lastEventsFoldsOpenWithTwoMorePasses()
 // ends pinned as 6 % bands and turned 60° it lands much closer to the optimum than the
 // clustered start alone (1.05× against 1.12× the converged energy), the pins hold
 // exactly, and the stored pose is unchanged by it. Single pinned vertices (the app's pins), two
-// at each end, get the same start.
+// at each end, get the same start. A jump event (undo, a flick) is such a cold event.
 void TestArapDrag::coldEventsStartFromACoarserMesh()
 {
     const GridMesh g = finbook::test::gridMesh(280, 70, 4.0, 1.0, 0.1);
@@ -406,17 +406,21 @@ void TestArapDrag::coldEventsStartFromACoarserMesh()
     ArapOptions single;
     single.twoLevelVertices = 0;
     for (const bool bands : {true, false}) {
-        Bend bend = bands ? bendBands(g, 0.06, angle) : bendEnds(g, angle);
-        if (!bands) { // two vertices of each end column, a quarter from its ends
-            const int r1 = g.rows / 4, r2 = 3 * g.rows / 4;
-            Eigen::VectorXi chosen(4), b(4);
-            chosen << 2 * r1, 2 * r2, 2 * r1 + 1, 2 * r2 + 1;
-            for (int k = 0; k < 4; ++k)
-                b(k) = bend.b(chosen(k));
-            const Eigen::MatrixX2d bc = finbook::test::rowsOf(bend.bc, chosen);
-            bend.b = b;
-            bend.bc = bc;
-        }
+        const auto bent = [&](double turn) {
+            Bend bend = bands ? bendBands(g, 0.06, turn) : bendEnds(g, turn);
+            if (!bands) { // two vertices of each end column, a quarter from its ends
+                const int r1 = g.rows / 4, r2 = 3 * g.rows / 4;
+                Eigen::VectorXi chosen(4), b(4);
+                chosen << 2 * r1, 2 * r2, 2 * r1 + 1, 2 * r2 + 1;
+                for (int k = 0; k < 4; ++k)
+                    b(k) = bend.b(chosen(k));
+                const Eigen::MatrixX2d bc = finbook::test::rowsOf(bend.bc, chosen);
+                bend.b = b;
+                bend.bc = bc;
+            }
+            return bend;
+        };
+        const Bend bend = bent(angle);
         const auto twoLevel = precompute(g.V, g.F, bend.b);
         const auto oneLevel = precompute(g.V, g.F, bend.b, single);
         const auto reference = precompute(g.V, g.F, bend.b, convergedReference());
@@ -439,6 +443,21 @@ void TestArapDrag::coldEventsStartFromACoarserMesh()
                                 .arg(clustered)));
         const Eigen::MatrixX2d stored = solved(*twoLevel, bend.bc, ArapStage::Final);
         QVERIFY(sameBits(stored, solved(*oneLevel, bend.bc, ArapStage::Final)));
+        // A jump is that cold event, whatever the start: the whole bend in one event from the
+        // rest pose, from the pose of a bend 15° short of it (where the warm start is good too),
+        // and its undo back from the bent pose.
+        Eigen::MatrixX2d jumped;
+        QVERIFY(arapSolveFrom(*twoLevel, bend.bc, g.V, jumped));
+        QVERIFY(sameBits(jumped, U));
+        const Eigen::MatrixX2d shorter =
+            solved(*twoLevel, bent(angle - 15.0 * M_PI / 180.0).bc, ArapStage::Drag);
+        QVERIFY(arapSolveFrom(*twoLevel, bend.bc, shorter, jumped));
+        QVERIFY(sameBits(jumped, U));
+        const Eigen::MatrixX2d rest = finbook::test::rowsOf(g.V, bend.b);
+        Eigen::MatrixX2d undone;
+        QVERIFY(arapSolveFrom(*twoLevel, rest, jumped, undone));
+        QVERIFY(sameBits(undone, solved(*twoLevel, rest, ArapStage::Drag)));
+        QVERIFY((undone - g.V).cwiseAbs().maxCoeff() <= 1e-9);
     }
 }
 
