@@ -1,14 +1,10 @@
 #include "arap_quality.h"
 
-#include "../geometry/geometry_test_support.h"
 #include "bench.h"
 
 #include <finbook/deform/arap.h>
-#include <finbook/geometry/object_mesh.h>
 
 #include <QFile>
-#include <QJsonArray>
-#include <QJsonDocument>
 #include <QTextStream>
 
 #include <algorithm>
@@ -22,8 +18,6 @@ namespace {
 using namespace finbook::deform;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kPinFraction = 0.06;
-constexpr double kPenWidth = 3.0;     // Quick, Draw! strokes carry no width (as bench mesh)
 constexpr double kRigidEnergy = 1e-9; // of the energy scale: the bend needs no deformation
 // A drag as the app sees it: the bend reached in this many mouse events (about half a second
 // at 60 Hz), each warm-started from the pose of the one before (the first from the rest
@@ -36,20 +30,8 @@ double msSince(Clock::time_point start)
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-using Bend = BendPins;
-
-Bend bendPins(const Eigen::MatrixX2d &V, double degrees)
-{
-    const double low = V.col(0).minCoeff(), high = V.col(0).maxCoeff();
-    Eigen::RowVector2d centre = Eigen::RowVector2d::Zero();
-    int left = 0;
-    for (Eigen::Index v = 0; v < V.rows(); ++v)
-        if (V(v, 0) <= low + kPinFraction * (high - low)) {
-            centre += V.row(v);
-            ++left;
-        }
-    return bendBands(V, low, high, centre / double(std::max(1, left)), degrees);
-}
+using test::bendPins;
+using Bend = test::BendPins;
 
 // Oriented area of U over the rest area, minus 1, in %.
 double areaChangePercent(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
@@ -171,35 +153,6 @@ void dump(const QString &directory, const Eigen::MatrixX2d &V, const Eigen::Matr
 
 } // namespace
 
-BendPins bendBands(const Eigen::MatrixX2d &V, double low, double high,
-                   const Eigen::RowVector2d &centre, double degrees)
-{
-    const double width = high - low;
-    std::vector<int> left, right;
-    for (Eigen::Index v = 0; v < V.rows(); ++v) {
-        if (V(v, 0) <= low + kPinFraction * width)
-            left.push_back(int(v));
-        else if (V(v, 0) >= high - kPinFraction * width)
-            right.push_back(int(v));
-    }
-    const double angle = degrees * M_PI / 180.0;
-    Eigen::Matrix2d R;
-    R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
-    BendPins bend;
-    bend.b.resize(Eigen::Index(left.size() + right.size()));
-    bend.bc.resize(bend.b.size(), 2);
-    Eigen::Index row = 0;
-    for (const int v : left) {
-        bend.b(row) = v;
-        bend.bc.row(row++) = V.row(v);
-    }
-    for (const int v : right) {
-        bend.b(row) = v;
-        bend.bc.row(row++) = centre + (V.row(v) - centre) * R.transpose();
-    }
-    return bend;
-}
-
 QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees,
                         const QString &dumpDirectory)
 {
@@ -306,42 +259,6 @@ QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, do
     row.insert(QStringLiteral("stored_last_pass_energy_change"), stored->report.lastEnergyChange);
     row.insert(QStringLiteral("precompute_ms"), precomputeMs);
     return row;
-}
-
-std::optional<std::pair<Eigen::MatrixX2d, Eigen::MatrixX3i>>
-meshFile(const QString &path, QString &error, double density)
-{
-    geometry::MeshOptions options;
-    options.density = density;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        error = QStringLiteral("unreadable");
-        return std::nullopt;
-    }
-    const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
-    finbook::Expected<geometry::ObjectMesh, geometry::GeometryError> mesh =
-        unexpected(geometry::GeometryError{});
-    if (json.contains(QStringLiteral("strokes"))) {
-        std::vector<geometry::StrokeInput> strokes;
-        for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray())
-            strokes.push_back({test::toMatrix(stroke.toArray()), kPenWidth});
-        mesh = geometry::buildObjectMesh(strokes, options);
-    } else if (json.contains(QStringLiteral("contours"))) {
-        geometry::Polygon polygon;
-        const QJsonArray contours = json.value(QStringLiteral("contours")).toArray();
-        for (qsizetype i = 0; i < contours.size(); ++i)
-            (i == 0 ? polygon.outer : polygon.holes.emplace_back()) =
-                test::toMatrix(contours[i].toArray());
-        mesh = geometry::buildObjectMesh(geometry::Region{polygon}, options);
-    } else {
-        error = QStringLiteral("neither strokes nor contours");
-        return std::nullopt;
-    }
-    if (!mesh) {
-        error = QString::fromStdString(mesh.error().message);
-        return std::nullopt;
-    }
-    return std::make_pair(mesh->V, mesh->F);
 }
 
 } // namespace finbook::bench

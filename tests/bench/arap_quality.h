@@ -2,12 +2,12 @@
 // reference, area change and flipped triangles, per solve mode, on one bend of a mesh.
 #pragma once
 
+#include "../deform/drawing_bend.h"
+
 #include <QJsonObject>
 #include <QString>
 
 #include <Eigen/Core>
-
-#include <optional>
 
 namespace finbook::bench {
 
@@ -26,22 +26,7 @@ namespace finbook::bench {
 // warm_event_max_ms the slowest; fast_* the same in 3 events.
 // With a dumpDirectory, also writes the bend and the reference pose there as text (see dump
 // in arap_quality.cpp) for checking against another solver.
-// The bend's pins: every vertex of V with x within 6 % of (high − low) above `low` held where
-// it is, every vertex within 6 % below `high` turned by `degrees` about `centre`.
-struct BendPins {
-    Eigen::VectorXi b;
-    Eigen::MatrixX2d bc;
-};
-BendPins bendBands(const Eigen::MatrixX2d &V, double low, double high,
-                   const Eigen::RowVector2d &centre, double degrees);
-
 QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees,
                         const QString &dumpDirectory = {});
-
-// Meshes a file of ../shared/data (Quick, Draw! "strokes" or shape "contours") with the
-// geometry layer's defaults, as the app would; nullopt with `error` set when it cannot.
-// `density` is MeshOptions::density: 3.65 gives about 13× the vertices (about 20k).
-std::optional<std::pair<Eigen::MatrixX2d, Eigen::MatrixX3i>>
-meshFile(const QString &path, QString &error, double density = 1.0);
 
 } // namespace finbook::bench

@@ -270,7 +270,7 @@ int runQuality(QStringList files)
     int failures = 0;
     for (const QString &path : files) {
         QString error;
-        const auto mesh = finbook::bench::meshFile(path, error, density);
+        const auto mesh = finbook::test::meshDrawing(path, error, density);
         QJsonObject row =
             mesh ? finbook::bench::measureBend(mesh->first, mesh->second, 45.0, dumpDirectory)
                  : QJsonObject{{QStringLiteral("error"), error}};

@@ -140,8 +140,8 @@ std::optional<Posed> pose(const Drawing &drawing, const geometry::MeshOptions &o
             centre += drawing.points.row(k);
             ++held;
         }
-    const bench::BendPins bend =
-        bench::bendBands(V, low, high, centre / double(std::max(1, held)), kBendDegrees);
+    const test::BendPins bend =
+        test::bendBands(V, low, high, centre / double(std::max(1, held)), kBendDegrees);
     auto data = deform::arapPrecompute(V, mesh->F, bend.b, arapOptions);
     if (!data) {
         error = QStringLiteral("precompute failed");
