@@ -28,6 +28,7 @@ struct Workspace {
     std::vector<int> untangleFlipped, untangleLeft; // flip repair: flips before/after the finish
     double refinedEnergy = 0.0; // the energy refine() ended with (an upper bound of the pose's)
     Eigen::VectorXcd saved;     // flip repair: the region's positions before a restart
+    Eigen::VectorXcd pushSaved; // flip repair: the region's positions before an apex push
     Eigen::VectorXcd coarseRotations, coarseCovariance, coarseHandleTerm; // K each
     Eigen::VectorXcd coarseLevelRotations; // two-level start: 3·R per coarse-level triangle
     Eigen::VectorXcd handleTargets;        // handles: a warm start's targets while step 1 moves it

@@ -11,7 +11,9 @@
 // vertex's relaxed position shortened to a fraction of the largest step that keeps its
 // triangles' areas positive, as in Smith & Schaefer 2015): for fixed rotations the energy is
 // a convex quadratic along the step, least at the full step, so a shortened step still
-// lowers it. What the corners' rings do not leave room for stays, as forced by the pins.
+// lowers it. Where folds are left, a free corner of a triangle whose other two corners are
+// pinned is pushed over the pinned edge (pushApexes), and what it turns over untangles in turn.
+// What the corners' rings do not leave room for stays, as forced by the pins.
 #include "arap_flips.h"
 
 #include <Eigen/LU>
@@ -292,6 +294,52 @@ void flippedAround(const ArapPrecompute &d, const Workspace &w, std::vector<int>
     out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
+// Untangling rounds over the corners of the flipped triangles, then clamped sweeps.
+void untangleRegion(const ArapPrecompute &d, Workspace &w)
+{
+    for (int round = 0; round < kRounds; ++round) {
+        bool moved = false;
+        for (const int v : w.region)
+            if (touchesFlip(d, w.positions, v))
+                moved = untangleVertex(d, w.positions, v) || moved;
+        if (!moved)
+            break;
+    }
+    for (int sweep = 0; sweep < kSweeps; ++sweep)
+        for (const int v : w.region)
+            clampedStep(d, w.positions, v);
+}
+
+// The free corner of each flipped triangle with two pinned corners, put where the pinned
+// edge's similarity takes its rest position (the triangle upright in its rest shape). Its
+// other triangles may turn over: their corners, free to move, then untangle. False when
+// there is no such triangle.
+bool pushApexes(const ArapPrecompute &d, Workspace &w, const std::vector<int> &flips)
+{
+    bool moved = false;
+    for (const int t : flips) {
+        int free = -1, pinned = 0;
+        for (int k = 0; k < 3; ++k) {
+            if (d.triangles(t, k) >= d.freeCount)
+                ++pinned;
+            else
+                free = k;
+        }
+        if (pinned != 2 || !flipped(d, w.positions, t))
+            continue;
+        const int a = (free + 1) % 3, b = (free + 2) % 3;
+        const Complex rest = d.restCentered(t, b) - d.restCentered(t, a);
+        if (!(squaredMagnitude(rest) > 0.0))
+            continue;
+        const Complex pa = w.positions(d.triangles(t, a));
+        const Complex similarity = (w.positions(d.triangles(t, b)) - pa) / rest;
+        w.positions(d.triangles(t, free)) =
+            pa + similarity * (d.restCentered(t, free) - d.restCentered(t, a));
+        moved = true;
+    }
+    return moved;
+}
+
 } // namespace
 
 void untangleFlips(const ArapPrecompute &d, Workspace &w, double maxCost, Eigen::Index &budget)
@@ -313,29 +361,41 @@ void untangleFlips(const ArapPrecompute &d, Workspace &w, double maxCost, Eigen:
     w.saved.resize(size);
     for (Eigen::Index i = 0; i < size; ++i)
         w.saved(i) = w.positions(w.region[std::size_t(i)]);
-    for (int round = 0; round < kRounds; ++round) {
-        bool moved = false;
-        for (const int v : w.region)
-            if (touchesFlip(d, w.positions, v))
-                moved = untangleVertex(d, w.positions, v) || moved;
-        if (!moved)
-            break;
-    }
-    for (int sweep = 0; sweep < kSweeps; ++sweep)
-        for (const int v : w.region)
-            clampedStep(d, w.positions, v);
-    // Kept with fewer flips, none of them new (by construction; checked all the same), and
-    // at most maxCost of the energy more.
+    untangleRegion(d, w);
+    // Kept with fewer flips than `fewest`, none of them new (by construction; checked all
+    // the same), and at most maxCost of the energy more.
     std::vector<int> &after = w.untangleLeft;
+    const auto better = [&](std::size_t fewest) {
+        flippedAround(d, w, after);
+        return after.size() < fewest &&
+               std::includes(before.begin(), before.end(), after.begin(), after.end()) &&
+               regionEnergy(d, w) - energyBefore <= maxCost * w.refinedEnergy;
+    };
+    std::size_t fewest = before.size();
+    if (better(fewest))
+        fewest = after.size();
+    else
+        for (Eigen::Index i = 0; i < size; ++i)
+            w.positions(w.region[std::size_t(i)]) = w.saved(i);
+    // A free corner between a pinned edge and free neighbours that leave it no room (a cold
+    // drag event's first passes leave such folds next to a pinned band) stays folded: its
+    // neighbours touch no flip and are never untangled. Pushed over the pinned edge, it
+    // turns them over instead, and they untangle in turn where they have room. Tried only
+    // where flips are left, and kept only with fewer.
+    if (fewest == 0 || budget < work)
+        return;
+    w.pushSaved.resize(size);
+    for (Eigen::Index i = 0; i < size; ++i)
+        w.pushSaved(i) = w.positions(w.region[std::size_t(i)]);
     flippedAround(d, w, after);
-    const double cost = regionEnergy(d, w) - energyBefore;
-    const bool kept = after.size() < before.size() &&
-                      std::includes(before.begin(), before.end(), after.begin(), after.end()) &&
-                      cost <= maxCost * w.refinedEnergy;
-    if (kept)
+    if (!pushApexes(d, w, after))
+        return;
+    budget -= work;
+    untangleRegion(d, w);
+    if (better(fewest))
         return;
     for (Eigen::Index i = 0; i < size; ++i)
-        w.positions(w.region[std::size_t(i)]) = w.saved(i);
+        w.positions(w.region[std::size_t(i)]) = w.pushSaved(i);
 }
 
 } // namespace finbook::deform::detail
