@@ -1,5 +1,7 @@
 #include "planar_map.h"
 
+#include <finbook/geometry/polyline.h>
+
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arr_walk_along_line_point_location.h>
@@ -95,16 +97,6 @@ Eigen::MatrixX2d ringOf(const std::vector<HalfedgeHandle> &cycle)
     return ring;
 }
 
-double shoelace(const Eigen::MatrixX2d &ring)
-{
-    double a = 0.0;
-    for (Eigen::Index i = 0, n = ring.rows(); i < n; ++i) {
-        const Eigen::Index j = (i + 1) % n;
-        a += ring(i, 0) * ring(j, 1) - ring(j, 0) * ring(i, 1);
-    }
-    return 0.5 * a;
-}
-
 double ringLength(const Eigen::MatrixX2d &ring)
 {
     double l = 0.0;
@@ -119,7 +111,7 @@ MapFace toMapFace(const Boundary &boundary)
     double bestOuter = 0.0;
     for (const auto &cycle : boundary.cycles) {
         Eigen::MatrixX2d ring = ringOf(cycle);
-        const double a = shoelace(ring);
+        const double a = signedArea(ring);
         face.area += a;
         face.perimeter += ringLength(ring);
         for (HalfedgeHandle h : cycle)
@@ -210,7 +202,7 @@ void PlanarMap::mergeSlivers(double minWidth, double minArea)
             std::map<const void *, double> shared;
             for (const auto &cycle : boundary.cycles) {
                 const Eigen::MatrixX2d ring = ringOf(cycle);
-                area += shoelace(ring);
+                area += signedArea(ring);
                 perimeter += ringLength(ring);
             }
             if (!(perimeter > 0.0) || (2.0 * area / perimeter >= minWidth && area >= minArea))
