@@ -36,20 +36,17 @@ double handlesMove(const ArapPrecompute &d, const Eigen::MatrixX2d &start, const
 
 // The first iterate of a warm event: the start moved by step 1's answer to how far the handles
 // moved since it (step 1 is linear in the handles), so a pin's jump spreads over the shape as
-// a similarity field instead of tearing the triangles next to the pin. Returns the handles'
-// largest move.
-Expected<double, DeformError> warmStart(const ArapPrecompute &d, const Eigen::MatrixX2d &start,
-                                        Workspace &w, ArapSolveReport &report)
+// a similarity field instead of tearing the triangles next to the pin.
+std::optional<DeformError> warmStart(const ArapPrecompute &d, const Eigen::MatrixX2d &start,
+                                     Workspace &w, ArapSolveReport &report)
 {
     const Eigen::Index nf = d.freeCount, handles = d.handleEntry.size();
     auto q = w.positions.segment(nf, handles);
     auto &targets = w.handleTargets;
     targets = q;
-    double move = 0.0;
     for (Eigen::Index c = 0; c < handles; ++c) {
         const int v = d.order(nf + c);
         q(c) -= Complex(start(v, 0), start(v, 1));
-        move = std::max(move, squaredMagnitude(q(c)));
     }
     const int *order = d.order.data();
     const double *x = start.col(0).data(), *y = start.col(1).data();
@@ -58,10 +55,10 @@ Expected<double, DeformError> warmStart(const ArapPrecompute &d, const Eigen::Ma
     w.handleMove = q;
     q = targets;
     if (error)
-        return unexpected(std::move(*error));
+        return error;
     for (Eigen::Index k = 0; k < nf; ++k)
         out[k] += Complex(x[order[k]], y[order[k]]);
-    return std::sqrt(move);
+    return std::nullopt;
 }
 
 // Momentum: the previous event's passes moved its start by c (toward the optimum, which
@@ -145,25 +142,25 @@ std::optional<DeformError> coldStart(const ArapPrecompute &d, Workspace &w, Arap
 // event's passes. Against the comparison above (with the cold event's passes less one), 3-event
 // drags of the 55 drawings at ~20k vertices ended at 1.009× the converged energy in the median
 // instead of 1.028×, with no worse maximum (1.157×, a fork), and their slowest event took
-// 8.3 ms in the median instead of 11.0 ms (an 8 ms budget).
+// 8.3 ms in the median instead of 11.0 ms.
 Expected<int, DeformError> warmOrCold(const ArapPrecompute &d, const Eigen::MatrixX2d &start,
                                       Workspace &w, ArapSolveReport &report, bool continued)
 {
-    if (d.coarseLevel && d.freeCount > 0 && handlesMove(d, start, w) > kJump * d.objectSize) {
+    const bool jump = d.freeCount > 0 && handlesMove(d, start, w) > kJump * d.objectSize;
+    if (jump && d.coarseLevel) {
         w.warmPlain.resize(0); // no momentum from a jump
         w.lastCorrection.resize(0);
         if (auto error = coldStart(d, w, report, true))
             return unexpected(std::move(*error));
         return d.dragPasses;
     }
-    const auto move = warmStart(d, start, w, report);
-    if (!move)
-        return unexpected(move.error());
+    if (auto error = warmStart(d, start, w, report))
+        return unexpected(std::move(*error));
     auto free = w.positions.head(d.freeCount);
     w.warmPlain = free;
     if (!continued) // a new drag: nothing of the last one's corrections carries over
         w.lastCorrection.resize(0);
-    if (!(*move > kJump * d.objectSize) || d.freeCount == 0) {
+    if (!jump) {
         if (continued && d.freeCount > 0)
             addMomentum(d, w);
         return d.warmDragPasses;
