@@ -23,8 +23,10 @@ struct Limb {
 };
 
 // Every tip whose chain up to the nearest junction (or the root) runs along parent links;
-// the base is the first joint below that junction when it is already narrower than the
-// junction (the joint where the limb leaves the body), else the junction.
+// the base is the joint on that chain the skeleton marks as a limb base nearest the tip (where
+// the Bone tool turns the limb when its tip is dragged); without a mark, the first joint below
+// that junction when it is already narrower than the junction (the joint where the limb
+// leaves the body), else the junction.
 inline std::vector<Limb> findLimbs(const geometry::Skeleton &s)
 {
     const Eigen::VectorXi degree = geometry::jointDegrees(s);
@@ -44,8 +46,14 @@ inline std::vector<Limb> findLimbs(const geometry::Skeleton &s)
         limb.tip = t;
         limb.base = junction;
         limb.first = chain[chain.size() - 2];
-        if (chain.size() >= 3 && degree(junction) >= 3 &&
-            s.radius(limb.first) < 0.8 * s.radius(junction)) {
+        const auto marked = std::find_if(chain.begin() + 1, chain.end(), [&](int j) {
+            return !s.limbBase.empty() && s.limbBase[std::size_t(j)];
+        });
+        if (marked != chain.end()) {
+            limb.base = *marked;
+            limb.first = *(marked - 1);
+        } else if (chain.size() >= 3 && degree(junction) >= 3 &&
+                   s.radius(limb.first) < 0.8 * s.radius(junction)) {
             limb.base = limb.first;
             limb.first = chain[chain.size() - 3];
         }
