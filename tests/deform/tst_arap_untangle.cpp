@@ -155,12 +155,12 @@ void TestArapUntangle::forcedFoldStaysAndIsReported()
 // 1.055× the converged energy).
 void TestArapUntangle::foldBesideAPinnedBandOpensInAColdEvent()
 {
-    const QByteArray fromEnvironment = qgetenv("FINBOOK_DATA_DIR");
-    const QString data = fromEnvironment.isEmpty() ? QStringLiteral(FINBOOK_DATA_DIR)
-                                                   : QString::fromLocal8Bit(fromEnvironment);
+    // A copy of ../shared/data's file kept with the tests (tests/data/README.md), so that it
+    // runs wherever they do.
+    const QString path = QStringLiteral(FINBOOK_SOURCE_DIR) +
+                         QStringLiteral("/tests/data/quickdraw_cat_6261062519226368.json");
     QString error;
-    const auto mesh = finbook::test::meshDrawing(
-        data + QStringLiteral("/sketches/quickdraw_cat_6261062519226368.json"), error, 3.65);
+    const auto mesh = finbook::test::meshDrawing(path, error, 3.65);
     QVERIFY2(mesh, qPrintable(error));
     const Eigen::MatrixX2d &V = mesh->first;
     const Eigen::MatrixX3i &F = mesh->second;
