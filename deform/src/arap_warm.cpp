@@ -140,9 +140,9 @@ std::optional<DeformError> coldStart(const ArapPrecompute &d, Workspace &w, Arap
 // cold event's passes less one (the warm start and the comparison cost about that). With a
 // two-level start (large meshes), a jump is a cold event: no warm start, no comparison, the cold
 // event's passes. Against the comparison above (with the cold event's passes less one), 3-event
-// drags of the 55 drawings at ~20k vertices ended at 1.009× the converged energy in the median
-// instead of 1.028×, with no worse maximum (1.157×, a fork), and their slowest event took
-// 8.3 ms in the median instead of 11.0 ms.
+// drags of the 55 drawings at ~20k vertices ended at 1.011× the converged energy in the median
+// instead of 1.027×, with no worse maximum (1.157×, a fork), and their slowest event took
+// 8.2 ms in the median instead of 10.8 ms.
 Expected<int, DeformError> warmOrCold(const ArapPrecompute &d, const Eigen::MatrixX2d &start,
                                       Workspace &w, ArapSolveReport &report, bool continued)
 {
