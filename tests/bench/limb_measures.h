@@ -46,9 +46,10 @@ inline std::vector<Limb> findLimbs(const geometry::Skeleton &s)
         limb.tip = t;
         limb.base = junction;
         limb.first = chain[chain.size() - 2];
-        const auto marked = std::find_if(chain.begin() + 1, chain.end(), [&](int j) {
-            return !s.limbBase.empty() && s.limbBase[std::size_t(j)];
-        });
+        const auto marked = s.limbBase.empty()
+                                ? chain.end()
+                                : std::find_if(chain.begin() + 1, chain.end(),
+                                               [&](int j) { return s.limbBase[std::size_t(j)]; });
         if (marked != chain.end()) {
             limb.base = *marked;
             limb.first = *(marked - 1);

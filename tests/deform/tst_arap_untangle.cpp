@@ -58,6 +58,17 @@ Pins pinnedRing(const GridMesh &g, int c, int r,
     return pins;
 }
 
+// The converged pose without flip repair: what a fold is measured against.
+ArapOptions unrepairedReference()
+{
+    ArapOptions options;
+    options.fixFlips = false;
+    options.finalTolerance = 1e-10;
+    options.finalEnergyTolerance = 0.0;
+    options.finalPassCap = 20000;
+    return options;
+}
+
 // Flipped triangles at U that have vertex v as a corner.
 int flipsAround(const GridMesh &g, const Eigen::MatrixX2d &U, int v)
 {
@@ -94,11 +105,7 @@ void TestArapUntangle::foldWithRoomIsOpened()
     const Eigen::RowVector2d target = g.V.row(v) - Eigen::RowVector2d(0.5 * 4.0 / g.columns, 0.0);
     const Pins pins =
         pinnedRing(g, c, r, [&](Eigen::RowVector2d p) { return p == dented ? target : p; });
-    ArapOptions unrepaired;
-    unrepaired.fixFlips = false;
-    unrepaired.finalTolerance = 1e-10;
-    unrepaired.finalEnergyTolerance = 0.0;
-    unrepaired.finalPassCap = 20000;
+    const ArapOptions unrepaired = unrepairedReference();
     const auto reference = precompute(g.V, g.F, pins.b, unrepaired);
     const auto data = precompute(g.V, g.F, pins.b);
     QVERIFY(reference && data);
@@ -166,11 +173,7 @@ void TestArapUntangle::foldBesideAPinnedBandOpensInAColdEvent()
     const Eigen::MatrixX3i &F = mesh->second;
     QVERIFY(V.rows() > 20000);
     const finbook::test::BendPins bend = finbook::test::bendPins(V, 45.0);
-    ArapOptions unrepaired;
-    unrepaired.fixFlips = false;
-    unrepaired.finalTolerance = 1e-10;
-    unrepaired.finalEnergyTolerance = 0.0;
-    unrepaired.finalPassCap = 20000;
+    const ArapOptions unrepaired = unrepairedReference();
     const auto reference = precompute(V, F, bend.b, unrepaired);
     const auto deformer = precompute(V, F, bend.b);
     QVERIFY(reference && deformer && deformer->coarseLevel);
