@@ -5,11 +5,13 @@
 #include "skeleton_test_support.h"
 
 #include <finbook/geometry/silhouette.h>
+#include <finbook/geometry/skeleton/raw_skeleton.h>
 #include <finbook/geometry/skeleton/skeleton_connect.h>
 #include <finbook/geometry/skeleton/skeleton_refine.h>
 
 #include <QtTest>
 
+#include <array>
 #include <cmath>
 
 using namespace finbook::geometry;
@@ -88,6 +90,7 @@ private slots:
     void longStraightArmGetsAMiddleJoint();
     void loosePiecesHangFromNearestBone();
     void crossOfTwoObjectsJoins();
+    void prongBesideALongerBranchGoes();
 };
 
 void TestAnimatorRig::drawnRectangleHasOneBone()
@@ -252,4 +255,62 @@ void TestAnimatorRig::crossOfTwoObjectsJoins()
 }
 
 QTEST_APPLESS_MAIN(TestAnimatorRig)
+void TestAnimatorRig::prongBesideALongerBranchGoes()
+{
+    // A horse's tail as the straight skeleton saw it: the tail (60 px wide, hanging from the
+    // rump) splits at the rump into two branches 20 px apart, one to the tail's end and a
+    // shorter one to a notch at its corner, inside the longer one's width all the way. The
+    // animator's rig keeps one chain down the tail; a second prong there is a limb whose turn
+    // drags the tail with it.
+    RawSkeleton raw;
+    raw.contour = regionOf(rows(
+        {{0, 0}, {300, 0}, {300, 330}, {254, 330}, {254, 300}, {240, 300}, {240, 100}, {0, 100}}));
+    const std::vector<std::array<double, 3>> nodes{
+        {50, 50, 50},   {150, 50, 50},  {270, 60, 30}, // body, the junction at the rump
+        {280, 120, 20}, {280, 200, 20}, {281, 290, 19}, {283, 328, 2}, // down the tail
+        {262, 130, 18}, {262, 220, 18}, {262, 296, 4}};                // the prong to the notch
+    raw.nodes.resize(Eigen::Index(nodes.size()), 2);
+    raw.radius.resize(raw.nodes.rows());
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        raw.nodes.row(Eigen::Index(i)) << nodes[i][0], nodes[i][1];
+        raw.radius(Eigen::Index(i)) = nodes[i][2];
+    }
+    raw.clearance = raw.radius;
+    raw.polygon = Eigen::VectorXi::Zero(raw.nodes.rows());
+    raw.edges.resize(9, 2);
+    raw.edges << 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 2, 7, 7, 8, 8, 9;
+    raw.polygonVertices = raw.contour.front().outer.rows();
+    raw.centroid << 150, 100;
+
+    const auto tips = [](const Skeleton &s) { return kindCount(s, JointKind::Terminal); };
+    RefineOptions options;
+    options.animatorRig = true;
+    const auto rig = refineSkeleton(raw, options);
+    QVERIFY(rig && isValidSkeleton(*rig));
+    QCOMPARE(tips(*rig), 2); // the body's end and the tail's
+    const int tail = tipNearest(*rig, Eigen::RowVector2d(283, 328));
+    QVERIFY((rig->joints.row(tail) - Eigen::RowVector2d(283, 328)).norm() < 1.0);
+    QVERIFY(tipNearest(*rig, Eigen::RowVector2d(262, 296)) == tail);
+
+    // Spread apart (the notch's prong turned 30° away from the tail), it is a limb of its own.
+    RawSkeleton apart = raw;
+    for (const Eigen::Index k : {7, 8, 9}) {
+        const Eigen::Vector2d from = apart.nodes.row(k).transpose() - Eigen::Vector2d(270, 60);
+        const double a = -M_PI / 6.0;
+        apart.nodes.row(k) = (Eigen::Vector2d(270, 60) +
+                              Eigen::Vector2d(std::cos(a) * from.x() - std::sin(a) * from.y(),
+                                              std::sin(a) * from.x() + std::cos(a) * from.y()))
+                                 .transpose();
+        apart.clearance(k) = apart.radius(k) = 0.5 * raw.radius(k);
+    }
+    const auto spread = refineSkeleton(apart, options);
+    QVERIFY(spread && isValidSkeleton(*spread));
+    QCOMPARE(tips(*spread), 3);
+    // RealSkel's refinement alone keeps the prong: the step above does something.
+    options.animatorRig = false;
+    const auto plain = refineSkeleton(raw, options);
+    QVERIFY(plain && isValidSkeleton(*plain));
+    QCOMPARE(tips(*plain), 3);
+}
+
 #include "tst_animator_rig.moc"

@@ -23,6 +23,9 @@ constexpr double kNarrower = 0.8;
 // width drops well beyond its own disk. Measured with `finbook-bench limbs` (1: the base often
 // in the chest, 3: at the top of the leg; README).
 constexpr double kBaseReach = 3.0;
+// Two branches from one junction run side by side when their ends lie within this angle
+// (radians) of each other, seen from the junction.
+constexpr double kSideBySide = kPi / 9.0;
 // A limb longer than this many of its radii from its base gets a middle joint.
 constexpr double kLongLimb = 6.0;
 
@@ -119,6 +122,47 @@ std::vector<int> tipPath(const DenseGraph &g, int tip, int &end)
     }
 }
 
+// The nodes from `junction` out through its neighbour `first` up to (and including) the first
+// node that is not an inner one, and the path's length.
+std::vector<int> branchFrom(const DenseGraph &g, int junction, int first, double &length)
+{
+    std::vector<int> nodes{junction, first};
+    length = g.length(junction, first);
+    while (g.degree(nodes.back()) == 2 && nodes.size() <= std::size_t(g.size())) {
+        const int at = nodes.back(), previous = nodes[nodes.size() - 2];
+        const int next = g.adj[std::size_t(at)][0] != previous ? g.adj[std::size_t(at)][0]
+                                                               : g.adj[std::size_t(at)][1];
+        length += g.length(at, next);
+        nodes.push_back(next);
+    }
+    return nodes;
+}
+
+// Whether every node of `path` lies within kInsideDisk inscribed radii of the polyline
+// `along` (the radius interpolated along each of its edges): a prong inside the tube of
+// another branch.
+bool insideTube(const DenseGraph &g, const std::vector<int> &path, const std::vector<int> &along)
+{
+    for (const int n : path) {
+        const Eigen::Vector2d &p = g.pos[std::size_t(n)];
+        bool inside = false;
+        for (std::size_t i = 0; i + 1 < along.size() && !inside; ++i) {
+            const Eigen::Vector2d &a = g.pos[std::size_t(along[i])];
+            const Eigen::Vector2d &b = g.pos[std::size_t(along[i + 1])];
+            const Eigen::Vector2d ab = b - a;
+            const double t = ab.squaredNorm() > 0.0
+                                 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0)
+                                 : 0.0;
+            const double width = (1.0 - t) * g.clearance[std::size_t(along[i])] +
+                                 t * g.clearance[std::size_t(along[i + 1])];
+            inside = (a + t * ab - p).norm() <= kInsideDisk * width;
+        }
+        if (!inside)
+            return false;
+    }
+    return true;
+}
+
 bool isCornerSpur(const DenseGraph &graph, const Region &contour, const std::vector<int> &path,
                   int junction)
 {
@@ -135,8 +179,24 @@ bool isCornerSpur(const DenseGraph &graph, const Region &contour, const std::vec
     }
     if (reach <= kInsideDisk * r)
         return true;
-    if (length >= kSpurLength * r)
+    if (length >= kSpurLength * r) {
+        // A long prong running alongside a longer sibling that ends in a tip too, inside its
+        // tube: the wide end of a tail splits the skeleton into two branches a radius apart,
+        // one reaching a notch at a corner.
+        const Eigen::Vector2d out = graph.pos[std::size_t(path.front())] - c;
+        for (const int first : graph.adj[std::size_t(junction)]) {
+            if (first == path.back())
+                continue;
+            double siblingLength = 0.0;
+            const std::vector<int> sibling = branchFrom(graph, junction, first, siblingLength);
+            const Eigen::Vector2d along = graph.pos[std::size_t(sibling.back())] - c;
+            if (graph.degree(sibling.back()) == 1 && siblingLength > length &&
+                std::abs(std::atan2(cross2(out, along), out.dot(along))) < kSideBySide &&
+                insideTube(graph, path, sibling))
+                return true;
+        }
         return false;
+    }
     const int tip = path.front();
     const int polygon = graph.polygon[std::size_t(tip)];
     if (polygon < 0 || std::size_t(polygon) >= contour.size())

@@ -31,7 +31,8 @@ double outlineTurning(const Polygon &contour, const Eigen::Vector2d &p, double r
 
 // Clean-up by default, relative to the inscribed radius: side branches that stay inside their
 // junction's disk, or are corner spurs (short, and the outline turns less than kTipTurning
-// around their tip), go, shortest first.
+// around their tip), or, long, run side by side with a longer branch to a tip and inside its
+// width (kInsideDisk of it all along), go, shortest first.
 void removeCornerSpurs(DenseGraph &graph, const Region &contour);
 
 // Whether the branch a–…–z joining two junctions is a cluster to merge: shorter than the
