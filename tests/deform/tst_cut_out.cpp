@@ -345,6 +345,76 @@ private slots:
         QVERIFY(cutCorners > 0);
     }
 
+    void aRingIsCutOpenWhereItsSkeletonBreaks()
+    {
+        // A handle under a body: two bars 20 wide joined by a bar at the bottom, round a hole.
+        // The skeleton, a tree, breaks the loop in the bottom bar: each side is a chain from
+        // the body to a tip at the break, 10 apart. Each chain is cut where it leaves the
+        // body, and the two pieces part at the break: without that, each side's flood ran on
+        // round the ring to the other side's joints and neither was cut, so turning one side
+        // dragged the whole handle (a deer's antlers, a guitar's neck).
+        finbook::test::GridMesh handle = gridMesh(40, 44, 200.0, 220.0);
+        keepTriangles(handle.V, handle.F, [](const Eigen::Vector2d &c) {
+            const bool bars = (c.x() > 40.0 && c.x() < 60.0) || (c.x() > 140.0 && c.x() < 160.0);
+            const bool bottom = c.y() > 200.0 && c.x() > 40.0 && c.x() < 160.0;
+            return c.y() < 100.0 || bars || bottom;
+        });
+        Eigen::MatrixX2d joints(7, 2);
+        joints << 100.0, 50.0,                        // the body
+            50.0, 110.0, 50.0, 210.0, 95.0, 210.0,    // down the left bar to the break
+            150.0, 110.0, 150.0, 210.0, 105.0, 210.0; // and the right
+        const Skeleton skeleton =
+            *makeSkeleton(joints, (Eigen::VectorXi(7) << -1, 0, 1, 2, 0, 4, 5).finished());
+        // The corners' radii unknown (0) leaves them uncut: each side is one piece.
+        const Eigen::VectorXd radius =
+            (Eigen::VectorXd(7) << 50.0, 10.0, 0.0, 10.0, 10.0, 0.0, 10.0).finished();
+        const auto cut = cutAtJoints(handle.V, handle.F, skeleton, radius);
+        QVERIFY(cut.hasValue());
+        std::map<int, int> pieceOfJoint;
+        for (std::size_t c = 0; c < cut->cuts.size(); ++c)
+            pieceOfJoint[cut->cuts[c].joint] = int(c);
+        QCOMPARE(int(cut->cuts.size()), 2);
+        QVERIFY(pieceOfJoint.count(1) && pieceOfJoint.count(4));
+        for (Eigen::Index t = 0; t < cut->F.rows(); ++t) {
+            const Eigen::Vector2d c = centroid(handle.V, handle.F, t);
+            if (c.y() > 115.0 && c.x() < 94.0)
+                QCOMPARE(cut->piece(t), pieceOfJoint.at(1));
+            if (c.y() > 115.0 && c.x() > 106.0)
+                QCOMPARE(cut->piece(t), pieceOfJoint.at(4));
+            if (c.y() < 100.0)
+                QCOMPARE(cut->piece(t), -1);
+        }
+        // The break's vertices are copied, one for each side.
+        int copied = 0;
+        for (Eigen::Index v = handle.V.rows(); v < cut->V.rows(); ++v)
+            copied += std::abs(cut->V(v, 0) - 95.0) < 6.0 && cut->V(v, 1) > 199.0 ? 1 : 0;
+        QVERIFY(copied >= 5);
+        // Turned at its cut, the left side moves as a piece and the right stays.
+        const auto weights = computeSkinningWeights(handle.V, handle.F, skeleton);
+        QVERIFY(weights.hasValue());
+        const auto rigid = rigidSkinPrecompute(
+            cut->V, cut->F,
+            withJointZones(cutOutWeights(**weights, skeleton, *cut), cut->V, skeleton, radius));
+        QVERIFY(rigid.hasValue());
+        SkeletonPose pose = restPose(skeleton);
+        pose.angles(2) = 0.5;
+        const auto posed = forwardKinematics(skeleton, pose);
+        QVERIFY(posed.hasValue());
+        Eigen::MatrixX2d U = cut->V;
+        QVERIFY(rigidSkinSolve(**rigid, *posed, U).hasValue());
+        double leftMoved = 0.0, rightMoved = 0.0;
+        for (Eigen::Index t = 0; t < cut->F.rows(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const double moved = (U.row(cut->F(t, k)) - cut->V.row(cut->F(t, k))).norm();
+                if (cut->piece(t) == pieceOfJoint.at(1))
+                    leftMoved = std::max(leftMoved, moved);
+                if (cut->piece(t) == pieceOfJoint.at(4) || cut->piece(t) < 0)
+                    rightMoved = std::max(rightMoved, moved);
+            }
+        QVERIFY(leftMoved > 20.0);
+        QVERIFY(rightMoved < 1e-9);
+    }
+
     void badRadiiAreRefused()
     {
         const Arm arm;

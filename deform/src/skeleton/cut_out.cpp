@@ -5,12 +5,16 @@
 #include <finbook/deform/skeleton/cut_out.h>
 #include <finbook/geometry/mesh_boundary.h>
 
+#include <queue>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 
 namespace finbook::deform {
@@ -45,10 +49,12 @@ bool segmentsMeet(const Vec &p, const Vec &q, const Vec &a, const Vec &b)
 struct MeshGraph {
     std::vector<std::pair<int, int>> boundary; // edges of one triangle
     std::vector<std::vector<int>> neighbours;  // vertex adjacency
+    std::vector<Eigen::VectorXi> holes;        // outline loops running against the triangles
 };
 
-MeshGraph meshGraph(Eigen::Index n, const Eigen::MatrixX3i &F)
+MeshGraph meshGraph(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
 {
+    const Eigen::Index n = V.rows();
     std::unordered_map<long long, int> count;
     count.reserve(std::size_t(F.rows()) * 3);
     const auto key = [n](int a, int b) {
@@ -65,9 +71,23 @@ MeshGraph meshGraph(Eigen::Index n, const Eigen::MatrixX3i &F)
             }
         }
     }
-    for (const Eigen::VectorXi &loop : geometry::boundaryLoops(F))
-        for (Eigen::Index i = 0; i < loop.size(); ++i)
-            g.boundary.emplace_back(loop(i), loop((i + 1) % loop.size()));
+    // Twice the signed areas: the triangles' (their orientation) and each loop's.
+    double triangles = 0.0;
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        const Eigen::RowVector2d &a = V.row(F(t, 0));
+        const Eigen::RowVector2d u = V.row(F(t, 1)) - a, w = V.row(F(t, 2)) - a;
+        triangles += u.x() * w.y() - u.y() * w.x();
+    }
+    for (const Eigen::VectorXi &loop : geometry::boundaryLoops(F)) {
+        double area = 0.0;
+        for (Eigen::Index i = 0; i < loop.size(); ++i) {
+            const int a = loop(i), b = loop((i + 1) % loop.size());
+            g.boundary.emplace_back(a, b);
+            area += V(a, 0) * V(b, 1) - V(b, 0) * V(a, 1);
+        }
+        if (area * triangles < 0.0)
+            g.holes.push_back(loop);
+    }
     return g;
 }
 
@@ -145,15 +165,25 @@ int nearestWhere(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &targe
     return best;
 }
 
+// A line across the shape that no flood crosses: where the skeleton's tree was cut open round
+// a hole (a → middle → b, each end a hair past the outline).
+struct Barrier {
+    Vec a, middle, b;
+    bool meets(const Vec &p, const Vec &q) const
+    {
+        return segmentsMeet(p, q, a, middle) || segmentsMeet(p, q, middle, b);
+    }
+};
+
 // The vertices past the cut a → pivot → b (flooded from `seed` along edges that do not meet
-// it), or empty when the flood reaches a vertex marked in `stop` (the cut does not separate).
-// A vertex on the cut (within `onCut`) is not flooded through: a cut that ends on an outline
-// vertex, such as the tip of the slit between two limbs, would otherwise leak round it along
-// an edge leaving that vertex almost along the cut (an octopus arm whose slits end in a sharp
+// it nor a barrier), or empty when the flood reaches a vertex marked in `stop` (the cut does not
+// separate). A vertex on the cut (within `onCut`) is not flooded through: a cut that ends on an
+// outline vertex, such as the tip of the slit between two limbs, would otherwise leak round it
+// along an edge leaving that vertex almost along the cut (an octopus arm whose slits end in a sharp
 // V was left uncut, and its turn dragged the body with it).
 std::vector<char> floodPast(const Eigen::MatrixX2d &V, const MeshGraph &g, const Vec &a,
                             const Vec &pivot, const Vec &b, int seed, const std::vector<char> &stop,
-                            double onCut)
+                            double onCut, const std::vector<Barrier> &barriers)
 {
     const auto isOnCut = [&](const Vec &x) {
         return std::min(detail::squaredSegmentDistance(x, a, pivot),
@@ -171,13 +201,174 @@ std::vector<char> floodPast(const Eigen::MatrixX2d &V, const MeshGraph &g, const
         for (const int u : g.neighbours[std::size_t(v)]) {
             const Vec q = V.row(u).transpose();
             if (past[std::size_t(u)] || segmentsMeet(p, q, a, pivot) ||
-                segmentsMeet(p, q, pivot, b) || isOnCut(q))
+                segmentsMeet(p, q, pivot, b) || isOnCut(q) ||
+                std::any_of(barriers.begin(), barriers.end(),
+                            [&](const Barrier &line) { return line.meets(p, q); }))
                 continue;
             past[std::size_t(u)] = 1;
             stack.push_back(u);
         }
     }
     return past;
+}
+
+// Whether p lies inside the closed polygon `ring` (even–odd rule).
+bool insidePolygon(const std::vector<Vec> &ring, const Vec &p)
+{
+    bool inside = false;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+        const Vec &a = ring[i], &b = ring[j];
+        if ((a.y() > p.y()) != (b.y() > p.y()) &&
+            p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+            inside = !inside;
+    }
+    return inside;
+}
+
+// A ring's break: the straight skeleton of a shape with a hole runs round it in a loop, which
+// the skeleton cuts open where the shape is thinnest (geometry::rawSkeleton), leaving a tip
+// there that is no end of the shape. Such a tip has a joint within kRingGap of their inscribed
+// radii (summed) of it through the mesh but kRingDetour times as far along the bones, and the
+// loop the bones between them and that short way make goes round a hole. Each hole is broken
+// once: at the pair closest for their radii. Measured on ../shared/data (finbook-bench
+// limbs): the guitar's neck closes 0.9 radii apart, the deer's antlers 1.5 and 2.5; joints of
+// the deer and an angel that are close through a wide part of the shape go round no hole.
+constexpr double kRingGap = 3.0;
+constexpr double kRingDetour = 3.0;
+
+// The barriers across each ring's break, at its tip.
+std::vector<Barrier> ringBreaks(const Eigen::MatrixX2d &V, const MeshGraph &g,
+                                const Skeleton &skeleton, const Eigen::VectorXd &radius,
+                                const std::vector<int> &nearestVertex,
+                                const detail::ChildLists &children)
+{
+    std::vector<Barrier> out;
+    const int count = skeleton.jointCount();
+    if (g.holes.empty() || count < 3)
+        return out;
+    std::vector<std::vector<int>> bones(static_cast<std::size_t>(count));
+    for (int j = 0; j < count; ++j)
+        if (skeleton.parent(j) >= 0) {
+            bones[std::size_t(j)].push_back(skeleton.parent(j));
+            bones[std::size_t(skeleton.parent(j))].push_back(j);
+        }
+    const auto jointAt = [&](int j) { return Vec(skeleton.joints.row(j).transpose()); };
+    struct Pair {
+        double gap;
+        int tip, beyond;
+        std::vector<int> path; // the bones' way from tip to beyond
+    };
+    std::vector<Pair> pairs;
+    for (int t = 0; t < count; ++t) {
+        if (skeleton.parent(t) < 0 ||
+            children.start[std::size_t(t) + 1] != children.start[std::size_t(t)] ||
+            !(radius(t) > 0.0) || nearestVertex[std::size_t(t)] < 0)
+            continue;
+        // Along the bones from t to every joint, and the way back.
+        std::vector<double> along(std::size_t(count), -1.0);
+        std::vector<int> back(std::size_t(count), -1);
+        along[std::size_t(t)] = 0.0;
+        std::vector<int> stack{t};
+        while (!stack.empty()) {
+            const int j = stack.back();
+            stack.pop_back();
+            for (const int k : bones[std::size_t(j)])
+                if (along[std::size_t(k)] < 0.0) {
+                    along[std::size_t(k)] =
+                        along[std::size_t(j)] + (jointAt(j) - jointAt(k)).norm();
+                    back[std::size_t(k)] = j;
+                    stack.push_back(k);
+                }
+        }
+        double limit = 0.0;
+        for (int o = 0; o < count; ++o)
+            if (o != t && along[std::size_t(o)] >= 0.0 && radius(o) > 0.0)
+                limit = std::max(limit, std::min(kRingGap * (radius(t) + radius(o)),
+                                                 along[std::size_t(o)] / kRingDetour));
+        if (limit <= 0.0)
+            continue;
+        // Through the mesh from t, as far as `limit`.
+        std::vector<double> through(std::size_t(V.rows()), std::numeric_limits<double>::infinity());
+        using Item = std::pair<double, int>;
+        std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+        const int start = nearestVertex[std::size_t(t)];
+        through[std::size_t(start)] = 0.0;
+        queue.emplace(0.0, start);
+        while (!queue.empty()) {
+            const auto [d, v] = queue.top();
+            queue.pop();
+            if (d > through[std::size_t(v)])
+                continue;
+            for (const int u : g.neighbours[std::size_t(v)]) {
+                const double next = d + (V.row(u) - V.row(v)).norm();
+                if (next < through[std::size_t(u)] && next <= limit) {
+                    through[std::size_t(u)] = next;
+                    queue.emplace(next, u);
+                }
+            }
+        }
+        for (int o = 0; o < count; ++o) {
+            const int v = o != t && radius(o) > 0.0 ? nearestVertex[std::size_t(o)] : -1;
+            if (v < 0 || along[std::size_t(o)] < 0.0)
+                continue;
+            const double gap = through[std::size_t(v)] / (radius(t) + radius(o));
+            if (gap > kRingGap || along[std::size_t(o)] < kRingDetour * through[std::size_t(v)])
+                continue;
+            Pair pair{gap, t, o, {}};
+            for (int j = o; j >= 0; j = back[std::size_t(j)])
+                pair.path.push_back(j);
+            pairs.push_back(std::move(pair));
+        }
+    }
+    std::sort(pairs.begin(), pairs.end(), [](const Pair &x, const Pair &y) {
+        return x.gap != y.gap ? x.gap < y.gap
+                              : std::tie(x.tip, x.beyond) < std::tie(y.tip, y.beyond);
+    });
+    std::vector<char> broken(g.holes.size(), 0);
+    for (const Pair &pair : pairs) {
+        std::vector<Vec> loop;
+        for (const int j : pair.path)
+            loop.push_back(jointAt(j));
+        bool opens = false;
+        for (std::size_t h = 0; h < g.holes.size(); ++h) {
+            if (!insidePolygon(loop, V.row(g.holes[h](0)).transpose()))
+                continue;
+            opens = opens || !broken[h];
+            broken[h] = 1;
+        }
+        if (!opens)
+            continue;
+        // Across the shape at a tip of the pair, which lies on the shape's medial axis: from the
+        // outline nearest it to the nearest on the side facing away from that (where its
+        // inscribed circle touches the outline on either side). At the tip whose two contacts
+        // lie most nearly opposite: a branch running into the side of another is cut across
+        // itself, not round the other's rounded end.
+        std::optional<Barrier> across;
+        double straightest = 2.0;
+        for (const int j : {pair.tip, pair.beyond}) {
+            if (children.start[std::size_t(j) + 1] != children.start[std::size_t(j)])
+                continue;
+            const Vec middle = jointAt(j);
+            const Contact a = nearestInSector(V, g, middle, 0.0, 2.0 * M_PI);
+            if (!std::isfinite(a.distance))
+                continue;
+            const Contact b =
+                nearestInSector(V, g, middle, angleOf(a.point - middle) + 0.5 * M_PI, M_PI);
+            if (!std::isfinite(b.distance))
+                continue;
+            const double cosine =
+                (a.point - middle).normalized().dot((b.point - middle).normalized());
+            if (cosine >= straightest)
+                continue;
+            straightest = cosine;
+            const double margin = 1e-6 * radius(j);
+            across = Barrier{Vec(a.point + margin * (a.point - middle).normalized()), middle,
+                             Vec(b.point + margin * (b.point - middle).normalized())};
+        }
+        if (across)
+            out.push_back(*across);
+    }
+    return out;
 }
 
 // Union–find over triangle corners.
@@ -210,13 +401,15 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
     out.piece = Eigen::VectorXi::Constant(F.rows(), -1);
     if (n == 0 || F.rows() == 0)
         return out;
-    const MeshGraph graph = meshGraph(n, F);
+    const MeshGraph graph = meshGraph(V, F);
     const detail::ChildLists children = detail::childLists(skeleton.parent);
     // The mesh vertex nearest each joint, for the floods' stops.
     std::vector<int> nearestVertex(std::size_t(skeleton.jointCount()));
     for (Eigen::Index o = 0; o < skeleton.jointCount(); ++o)
         nearestVertex[std::size_t(o)] = nearestWhere(V, graph, skeleton.joints.row(o).transpose(),
                                                      [](const Vec &) { return true; });
+    const std::vector<Barrier> barriers =
+        ringBreaks(V, graph, skeleton, radius, nearestVertex, children);
     const auto subtreeOf = [&](int top) {
         std::vector<char> below(std::size_t(skeleton.jointCount()), 0);
         std::vector<int> pending{top};
@@ -281,7 +474,8 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
             if (v >= 0 && v != seed)
                 stops[std::size_t(v)] = 1;
         }
-        Candidate found{child, a, b, floodPast(V, graph, a, pivot, b, seed, stops, kOnCut * r), 0};
+        Candidate found{child, a, b,
+                        floodPast(V, graph, a, pivot, b, seed, stops, kOnCut * r, barriers), 0};
         found.size = int(std::count(found.flooded.begin(), found.flooded.end(), char(1)));
         return found;
     };
@@ -298,6 +492,15 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
             if (inside == 1 || inside == 2) {
                 const Vec c = (V.row(F(t, 0)) + V.row(F(t, 1)) + V.row(F(t, 2))).transpose() / 3.0;
                 mine = pastCut(c, pivot, cut.a, cut.b, outward);
+                // At a ring's break, only on the flooded side of it: a corner flooded and the
+                // centroid not parted by the break.
+                int flooded = 0;
+                while (!cut.flooded[std::size_t(F(t, flooded))])
+                    ++flooded;
+                const Vec corner = V.row(F(t, flooded)).transpose();
+                mine = mine &&
+                       std::none_of(barriers.begin(), barriers.end(),
+                                    [&](const Barrier &line) { return line.meets(c, corner); });
             }
             if (mine) {
                 out.piece(t) = index;
