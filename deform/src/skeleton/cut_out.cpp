@@ -11,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -381,6 +382,81 @@ int findRoot(std::vector<int> &up, int x)
     return x;
 }
 
+// Slivers: where two cuts end on one outline point (the notch between a horse's ears), the
+// triangles between them can belong to neither limb and be parted from the rest of their own
+// piece, an island that no bone of its piece reaches, so it followed the nearest bone (an ear)
+// as it turned. A connected part of a piece other than its largest that borders another piece
+// and lies wholly near a cut (within one inscribed radius of its joint beyond its farther end)
+// joins the piece it shares most edges with.
+
+void joinSlivers(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Skeleton &skeleton,
+                 const Eigen::VectorXd &radius, CutMesh &out)
+{
+    const Eigen::Index n = V.rows(), m = F.rows();
+    const auto key = [n](int a, int b) {
+        return (long long)std::min(a, b) * (long long)n + (long long)std::max(a, b);
+    };
+    std::unordered_map<long long, std::vector<int>> edgeTriangles;
+    edgeTriangles.reserve(std::size_t(3 * m));
+    for (Eigen::Index t = 0; t < m; ++t)
+        for (int k = 0; k < 3; ++k)
+            edgeTriangles[key(F(t, k), F(t, (k + 1) % 3))].push_back(int(t));
+    const auto nearACut = [&](const Vec &p) {
+        return std::any_of(out.cuts.begin(), out.cuts.end(), [&](const JointCut &cut) {
+            const Vec pivot = skeleton.joints.row(cut.joint).transpose();
+            const double reach = std::max((cut.a - pivot).norm(), (cut.b - pivot).norm());
+            return (p - pivot).norm() <= reach + radius(cut.joint);
+        });
+    };
+    for (int round = 0; round < 4; ++round) {
+        std::vector<int> up(static_cast<std::size_t>(m));
+        std::iota(up.begin(), up.end(), 0);
+        for (const auto &entry : edgeTriangles) {
+            const std::vector<int> &triangles = entry.second;
+            for (std::size_t i = 1; i < triangles.size(); ++i)
+                if (out.piece(triangles[i]) == out.piece(triangles[0]))
+                    up[std::size_t(findRoot(up, triangles[i]))] = findRoot(up, triangles[0]);
+        }
+        std::map<int, std::vector<int>> parts; // root → its triangles
+        for (Eigen::Index t = 0; t < m; ++t)
+            parts[findRoot(up, int(t))].push_back(int(t));
+        std::map<int, std::size_t> largest; // piece → triangles of its largest part
+        for (const auto &entry : parts) {
+            std::size_t &size = largest[out.piece(entry.second.front())];
+            size = std::max(size, entry.second.size());
+        }
+        std::vector<std::pair<std::vector<int>, int>> moves; // a sliver, the piece it joins
+        for (const auto &entry : parts) {
+            const std::vector<int> &triangles = entry.second;
+            const int piece = out.piece(triangles.front());
+            if (triangles.size() == largest[piece])
+                continue;
+            std::map<int, int> bordering; // other piece → shared edges
+            bool sliver = true;
+            for (std::size_t i = 0; i < triangles.size() && sliver; ++i) {
+                const int t = triangles[i];
+                for (int k = 0; k < 3 && sliver; ++k) {
+                    sliver = nearACut(V.row(F(t, k)).transpose());
+                    for (const int u : edgeTriangles.at(key(F(t, k), F(t, (k + 1) % 3))))
+                        if (out.piece(u) != piece)
+                            ++bordering[out.piece(u)];
+                }
+            }
+            if (!sliver || bordering.empty())
+                continue;
+            const auto most =
+                std::max_element(bordering.begin(), bordering.end(),
+                                 [](const auto &a, const auto &b) { return a.second < b.second; });
+            moves.emplace_back(triangles, most->first);
+        }
+        if (moves.empty())
+            return;
+        for (const auto &[triangles, piece] : moves)
+            for (const int t : triangles)
+                out.piece(t) = piece;
+    }
+}
+
 } // namespace
 
 Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
@@ -611,6 +687,7 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
     }
     if (out.cuts.empty())
         return out;
+    joinSlivers(V, F, skeleton, radius, out);
     // Copies: corners of triangles of one piece that share an edge at a vertex stay one vertex.
     const Eigen::Index m = F.rows();
     std::vector<int> up(std::size_t(3 * m));
