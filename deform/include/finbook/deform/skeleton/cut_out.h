@@ -14,6 +14,11 @@
 // root one limb, the heaviest, stays with the body when every child is such a limb. Tips and
 // joints in the middle of a wide shape are not cut; the skinning blends across them as before.
 // Cut pieces nest: an elbow's piece lies inside its shoulder's.
+// A shape with a hole is parted where its skeleton broke the loop round the hole (a tip with
+// a joint near it through the shape but far along the bones, the loop between them going
+// round a hole): no cut's piece reaches past that line, so each side of a ring is a limb of
+// its own. Triangles two cuts leave between them, parted from the rest of their piece, join
+// the neighbouring piece they share most edges with: every piece is one connected part.
 //
 // Each cut has a round end: the disk round its joint that touches the outline. It lies inside
 // the drawing and turns onto itself with either piece; painted under a turned limb in the
