@@ -18,7 +18,7 @@
 // a joint near it through the shape but far along the bones, the loop between them going
 // round a hole): no cut's piece reaches past that line, so each side of a ring is a limb of
 // its own. Triangles two cuts leave between them, parted from the rest of their piece, join
-// the neighbouring piece they share most edges with: every piece is one connected part.
+// the neighbouring piece they share most edges with, so no island of a piece floats free.
 //
 // Each cut has a round end: the disk round its joint that touches the outline. It lies inside
 // the drawing and turns onto itself with either piece; painted under a turned limb in the
