@@ -10,8 +10,11 @@
 
 #include <QTest>
 
+#include <array>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <optional>
 
 using namespace finbook::deform;
 using finbook::test::Arm;
@@ -58,6 +61,58 @@ double signedArea(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, Eigen::I
     const Eigen::RowVector2d a = V.row(F(t, 1)) - V.row(F(t, 0)),
                              b = V.row(F(t, 2)) - V.row(F(t, 0));
     return 0.5 * (a.x() * b.y() - a.y() * b.x());
+}
+
+// A columns × rows grid over width × height, its inner vertices jittered by `seed` (a fifth
+// of a cell at most), keeping the triangles `keep` accepts.
+finbook::test::GridMesh jitteredShape(int columns, int rows, double width, double height,
+                                      unsigned seed,
+                                      const std::function<bool(const Eigen::Vector2d &)> &keep)
+{
+    finbook::test::GridMesh shape =
+        gridMesh(columns, rows, width, height, 0.2, Eigen::Vector2d::Zero(), seed);
+    keepTriangles(shape.V, shape.F, keep);
+    return shape;
+}
+
+// The mesh cut for a root (joint 0) with two limbs of one bone hanging from it, 1–2 and 3–4:
+// joints as x, y pairs, and their radii.
+auto cutTwoLimbs(const finbook::test::GridMesh &mesh, const std::array<double, 10> &xy,
+                 const std::array<double, 5> &radii)
+{
+    const Skeleton skeleton =
+        *makeSkeleton(Eigen::Map<const Eigen::Matrix<double, 5, 2, Eigen::RowMajor>>(xy.data()),
+                      (Eigen::VectorXi(5) << -1, 0, 1, 0, 3).finished());
+    return cutAtJoints(mesh.V, mesh.F, skeleton,
+                       Eigen::Map<const Eigen::VectorXd>(radii.data(), 5));
+}
+
+// The cut mesh skinned as the Cut-out mode skins it (weights from the uncut mesh), with the
+// bone ending at `joint` turned by `angle` radians: the posed skeleton and the vertices, or
+// nothing if a step failed.
+struct Turned {
+    PosedSkeleton posed;
+    Eigen::MatrixX2d U;
+};
+std::optional<Turned> turnCut(const finbook::test::GridMesh &mesh, const Skeleton &skeleton,
+                              const Eigen::VectorXd &radius, const CutMesh &cut, int joint,
+                              double angle)
+{
+    const auto weights = computeSkinningWeights(mesh.V, mesh.F, skeleton);
+    if (!weights)
+        return std::nullopt;
+    const auto rigid = rigidSkinPrecompute(
+        cut.V, cut.F,
+        withJointZones(cutOutWeights(**weights, skeleton, cut), cut.V, skeleton, radius));
+    SkeletonPose pose = restPose(skeleton);
+    pose.angles(joint) = angle;
+    auto posed = forwardKinematics(skeleton, pose);
+    if (!rigid || !posed)
+        return std::nullopt;
+    Turned out{std::move(*posed), cut.V};
+    if (!rigidSkinSolve(**rigid, out.posed, out.U))
+        return std::nullopt;
+    return out;
 }
 
 // A plus sign 40 wide in a `width` × `height` grid, its bars crossing at (150, 150).
@@ -254,18 +309,10 @@ private slots:
                      qPrintable(QString::number(cut->cuts[c].round)));
         }
         // The right bar turns rigidly about the junction; the rest stays.
-        const auto weights = computeSkinningWeights(plus.V, plus.F, skeleton);
-        QVERIFY(weights.hasValue());
-        const auto rigid = rigidSkinPrecompute(
-            cut->V, cut->F,
-            withJointZones(cutOutWeights(**weights, skeleton, *cut), cut->V, skeleton, radius));
-        QVERIFY(rigid.hasValue());
-        SkeletonPose pose = restPose(skeleton);
-        pose.angles(3) = 60.0 * M_PI / 180.0;
-        const auto posed = forwardKinematics(skeleton, pose);
-        QVERIFY(posed.hasValue());
-        Eigen::MatrixX2d U = cut->V;
-        QVERIFY(rigidSkinSolve(**rigid, *posed, U).hasValue());
+        const auto turned = turnCut(plus, skeleton, radius, *cut, 3, 60.0 * M_PI / 180.0);
+        QVERIFY(turned.has_value());
+        const PosedSkeleton *posed = &turned->posed;
+        const Eigen::MatrixX2d &U = turned->U;
         double worst = 0.0;
         for (Eigen::Index v = 0; v < U.rows(); ++v) {
             const Eigen::Vector2d rest = cut->V.row(v).transpose();
@@ -309,19 +356,13 @@ private slots:
         // the leg was left uncut (an octopus's arms). Jittered grids put the corner anywhere.
         int cutCorners = 0;
         for (unsigned seed = 1; seed <= 40; ++seed) {
-            finbook::test::GridMesh legs =
-                gridMesh(40, 40, 200.0, 200.0, 0.2, Eigen::Vector2d::Zero(), seed);
-            keepTriangles(legs.V, legs.F, [](const Eigen::Vector2d &c) {
-                const bool slit = c.y() > 120.0 && std::abs(c.x() - 100.0) < 5.0;
-                return c.y() < 100.0 || (c.x() > 60.0 && c.x() < 140.0 && !slit);
-            });
-            Eigen::MatrixX2d joints(5, 2);
-            joints << 100.0, 50.0, 80.0, 122.0, 80.0, 195.0, 120.0, 122.0, 120.0, 195.0;
-            const Skeleton skeleton =
-                *makeSkeleton(joints, (Eigen::VectorXi(5) << -1, 0, 1, 0, 3).finished());
-            const Eigen::VectorXd radius =
-                (Eigen::VectorXd(5) << 50.0, 18.0, 18.0, 18.0, 18.0).finished();
-            const auto cut = cutAtJoints(legs.V, legs.F, skeleton, radius);
+            const finbook::test::GridMesh legs =
+                jitteredShape(40, 40, 200.0, 200.0, seed, [](const Eigen::Vector2d &c) {
+                    const bool slit = c.y() > 120.0 && std::abs(c.x() - 100.0) < 5.0;
+                    return c.y() < 100.0 || (c.x() > 60.0 && c.x() < 140.0 && !slit);
+                });
+            const auto cut = cutTwoLimbs(legs, {100, 50, 80, 122, 80, 195, 120, 122, 120, 195},
+                                         {50, 18, 18, 18, 18});
             QVERIFY(cut.hasValue());
             std::map<int, int> pieceOfJoint;
             for (std::size_t c = 0; c < cut->cuts.size(); ++c)
@@ -390,18 +431,9 @@ private slots:
             copied += std::abs(cut->V(v, 0) - 95.0) < 6.0 && cut->V(v, 1) > 199.0 ? 1 : 0;
         QVERIFY(copied >= 5);
         // Turned at its cut, the left side moves as a piece and the right stays.
-        const auto weights = computeSkinningWeights(handle.V, handle.F, skeleton);
-        QVERIFY(weights.hasValue());
-        const auto rigid = rigidSkinPrecompute(
-            cut->V, cut->F,
-            withJointZones(cutOutWeights(**weights, skeleton, *cut), cut->V, skeleton, radius));
-        QVERIFY(rigid.hasValue());
-        SkeletonPose pose = restPose(skeleton);
-        pose.angles(2) = 0.5;
-        const auto posed = forwardKinematics(skeleton, pose);
-        QVERIFY(posed.hasValue());
-        Eigen::MatrixX2d U = cut->V;
-        QVERIFY(rigidSkinSolve(**rigid, *posed, U).hasValue());
+        const auto turned = turnCut(handle, skeleton, radius, *cut, 2, 0.5);
+        QVERIFY(turned.has_value());
+        const Eigen::MatrixX2d &U = turned->U;
         double leftMoved = 0.0, rightMoved = 0.0;
         for (Eigen::Index t = 0; t < cut->F.rows(); ++t)
             for (int k = 0; k < 3; ++k) {
@@ -424,19 +456,14 @@ private slots:
         // the notch's vertices anywhere.
         int islands = 0;
         for (unsigned seed = 1; seed <= 40; ++seed) {
-            finbook::test::GridMesh head =
-                gridMesh(40, 32, 200.0, 160.0, 0.2, Eigen::Vector2d::Zero(), seed);
-            keepTriangles(head.V, head.F, [](const Eigen::Vector2d &c) {
-                const bool notch = c.y() > 128.0 && std::abs(c.x() - 100.0) < 0.3 * (c.y() - 128.0);
-                return c.y() < 100.0 || (c.x() > 80.0 && c.x() < 120.0 && !notch);
-            });
-            Eigen::MatrixX2d joints(5, 2);
-            joints << 100.0, 50.0, 91.0, 112.0, 91.0, 158.0, 109.0, 112.0, 109.0, 158.0;
-            const Skeleton skeleton =
-                *makeSkeleton(joints, (Eigen::VectorXi(5) << -1, 0, 1, 0, 3).finished());
-            const Eigen::VectorXd radius =
-                (Eigen::VectorXd(5) << 50.0, 10.0, 4.0, 10.0, 4.0).finished();
-            const auto cut = cutAtJoints(head.V, head.F, skeleton, radius);
+            const finbook::test::GridMesh head =
+                jitteredShape(40, 32, 200.0, 160.0, seed, [](const Eigen::Vector2d &c) {
+                    const bool notch =
+                        c.y() > 128.0 && std::abs(c.x() - 100.0) < 0.3 * (c.y() - 128.0);
+                    return c.y() < 100.0 || (c.x() > 80.0 && c.x() < 120.0 && !notch);
+                });
+            const auto cut = cutTwoLimbs(head, {100, 50, 91, 112, 91, 158, 109, 112, 109, 158},
+                                         {50, 10, 4, 10, 4});
             QVERIFY(cut.hasValue());
             // Each piece is one part, joined across its triangles' edges.
             std::map<std::pair<int, int>, std::vector<int>> edges;
