@@ -388,7 +388,6 @@ int findRoot(std::vector<int> &up, int x)
 // as it turned. A connected part of a piece other than its largest that borders another piece
 // and lies wholly near a cut (within one inscribed radius of its joint beyond its farther end)
 // joins the piece it shares most edges with.
-
 void joinSlivers(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Skeleton &skeleton,
                  const Eigen::VectorXd &radius, CutMesh &out)
 {
