@@ -74,8 +74,12 @@ void TestArapSketches::randomPinsGiveFiniteResults_data()
 {
     QTest::addColumn<QString>("path");
     const QDir dir(dataDir() + QStringLiteral("/sketches"));
+    // Without the data the test function skips its one empty row. A skip here, in the data
+    // function of the only test, made under load LeakSanitizer report QtTest's watchdog thread
+    // (152 bytes from QThread::QThread in QTest::qRun) in 8 of 60 runs; skipped in the test
+    // function, in none of 60.
     if (!dir.exists())
-        QSKIP("../shared/data/sketches is absent (see its README); nothing to test");
+        QTest::newRow("absent") << QString();
     for (const QFileInfo &info : dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files))
         QTest::newRow(qPrintable(info.baseName())) << info.filePath();
 }
@@ -83,6 +87,8 @@ void TestArapSketches::randomPinsGiveFiniteResults_data()
 void TestArapSketches::randomPinsGiveFiniteResults()
 {
     QFETCH(QString, path);
+    if (path.isEmpty())
+        QSKIP("../shared/data/sketches is absent (see its README); nothing to test");
     const auto strokes = readStrokes(path);
     QVERIFY(!strokes.empty());
     auto mesh = finbook::geometry::buildObjectMesh(strokes);
