@@ -4,6 +4,7 @@
 
 #include <finbook/deform/skeleton/cut_out.h>
 #include <finbook/geometry/mesh_boundary.h>
+#include <finbook/geometry/polyline.h>
 
 #include <queue>
 
@@ -72,7 +73,7 @@ MeshGraph meshGraph(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
             }
         }
     }
-    // Twice the signed areas: the triangles' (their orientation) and each loop's.
+    // The triangles' orientation (twice their signed area), against each loop's.
     double triangles = 0.0;
     for (Eigen::Index t = 0; t < F.rows(); ++t) {
         const Eigen::RowVector2d &a = V.row(F(t, 0));
@@ -80,13 +81,9 @@ MeshGraph meshGraph(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
         triangles += u.x() * w.y() - u.y() * w.x();
     }
     for (const Eigen::VectorXi &loop : geometry::boundaryLoops(F)) {
-        double area = 0.0;
-        for (Eigen::Index i = 0; i < loop.size(); ++i) {
-            const int a = loop(i), b = loop((i + 1) % loop.size());
-            g.boundary.emplace_back(a, b);
-            area += V(a, 0) * V(b, 1) - V(b, 0) * V(a, 1);
-        }
-        if (area * triangles < 0.0)
+        for (Eigen::Index i = 0; i < loop.size(); ++i)
+            g.boundary.emplace_back(loop(i), loop((i + 1) % loop.size()));
+        if (geometry::signedArea(V(loop, Eigen::all)) * triangles < 0.0)
             g.holes.push_back(loop);
     }
     return g;
