@@ -91,6 +91,7 @@ private slots:
     void loosePiecesHangFromNearestBone();
     void crossOfTwoObjectsJoins();
     void prongBesideALongerBranchGoes();
+    void stripOfABrokenLoopLeavesTheBodyWhereItNarrows();
 };
 
 void TestAnimatorRig::drawnRectangleHasOneBone()
@@ -311,6 +312,44 @@ void TestAnimatorRig::prongBesideALongerBranchGoes()
     const auto plain = refineSkeleton(raw, options);
     QVERIFY(plain && isValidSkeleton(*plain));
     QCOMPARE(tips(*plain), 3);
+}
+
+void TestAnimatorRig::stripOfABrokenLoopLeavesTheBodyWhereItNarrows()
+{
+    // A guitar: a body (radius 100), a neck of two strips 28 px wide round a slot, a head. The
+    // skeleton is a tree, so the loop round the slot is broken at one end of a strip: that
+    // strip ends in a tip, and its branch runs from the head's junction down the other strip,
+    // through the body and out again. The strip is a limb of the body: its base is where it
+    // leaves the body, not the body's centre (turning there swings the body with it).
+    Region shape = shapeOf({{rows({{0, 0}}), 200.0},
+                            {rows({{0, 0}, {420, 0}}), 80.0},
+                            {rows({{450, 0}}), 120.0},
+                            {rows({{450, -120}, {450, 120}}), 30.0},
+                            {rows({{450, 0}, {580, 0}}), 30.0}});
+    QCOMPARE(shape.size(), std::size_t(1));
+    // The upper strip narrows towards the head (30 to 26 px), so the loop breaks there.
+    shape[0].holes.push_back(rows({{60, -10}, {60, 10}, {380, 14}, {380, -10}}));
+    const Skeleton s = rigOf(shape);
+    QVERIFY(isValidSkeleton(s));
+    QVERIFY(bonesInside(s, shape) >= 0.99);
+    QVERIFY(s.joints.row(s.root).norm() < 40.0); // the body's centre
+    const Eigen::VectorXi degree = jointDegrees(s);
+    int strips = 0;
+    for (int t = 0; t < s.jointCount(); ++t) {
+        const Eigen::RowVector2d p = s.joints.row(t);
+        if (degree(t) != 1 || p.x() < 100 || p.x() > 420 || std::abs(p.y()) < 12)
+            continue;
+        ++strips; // the loop's broken end
+        // Up the parent links to the first joint marked as a limb base.
+        int base = s.parent(t);
+        while (base >= 0 && !(base < int(s.limbBase.size()) && s.limbBase[std::size_t(base)]))
+            base = s.parent(base);
+        QVERIFY2(base >= 0, "the strip has no base");
+        const double x = s.joints(base, 0);
+        QVERIFY2(x > 50.0 && x < 150.0, qPrintable(QString::number(x))); // the disk's edge: 96
+        QVERIFY(std::abs(s.joints(base, 1)) > 12.0); // on the strip's side of the slot
+    }
+    QCOMPARE(strips, 1);
 }
 
 #include "tst_animator_rig.moc"

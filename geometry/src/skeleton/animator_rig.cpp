@@ -28,6 +28,8 @@ constexpr double kBaseReach = 3.0;
 constexpr double kSideBySide = kPi / 9.0;
 // A limb longer than this many of its radii from its base gets a middle joint.
 constexpr double kLongLimb = 6.0;
+// A branch runs through a body when its thickest node is this many times its median width.
+constexpr double kThickBody = 1.25;
 
 double cross2(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
 {
@@ -253,9 +255,12 @@ bool isJunctionCluster(const DenseGraph &graph, const Branch &branch)
 namespace {
 
 // limbJoints for nodes[0] the body end (a junction, or the thickest node of a branch between
-// two tips) and nodes.back() the tip: positions into `nodes`.
+// two tips or running through a body) and nodes.back() the tip: positions into `nodes`.
 // The joints of a limb hanging from nodes.front(); *baseOut is the base among them (0: none).
-std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nodes, int *baseOut)
+// The base is the first node from the body that is narrow enough, or with `fromTip` the near
+// end of the narrow run at the tip.
+std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nodes, int *baseOut,
+                                bool fromTip = false)
 {
     *baseOut = 0;
     const int m = int(nodes.size());
@@ -275,11 +280,21 @@ std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nod
     int base = 0;
     if (limb < kNarrower * body) {
         const double level = limb + kBaseDrop * (body - limb);
-        for (int i = 1; i + 1 < m; ++i) {
-            if (g.clearance[std::size_t(nodes[std::size_t(i)])] <= level ||
-                s[std::size_t(i)] >= kBaseReach * body) {
+        if (fromTip) {
+            // The near end of the narrow run at the tip: the width on the body's side can dip
+            // and rise again where the branch skirts the body's outline.
+            for (int i = m - 2; i >= 1; --i) {
+                if (g.clearance[std::size_t(nodes[std::size_t(i)])] > level)
+                    break;
                 base = i;
-                break;
+            }
+        } else {
+            for (int i = 1; i + 1 < m; ++i) {
+                if (g.clearance[std::size_t(nodes[std::size_t(i)])] <= level ||
+                    s[std::size_t(i)] >= kBaseReach * body) {
+                    base = i;
+                    break;
+                }
             }
         }
         // Not inside the junction's own disk centre, and with a limb left beyond it.
@@ -333,45 +348,50 @@ std::vector<int> limbJoints(const DenseGraph &g, const Branch &branch, std::vect
         return {};
     const int front = g.degree(nodes.front()), back = g.degree(nodes.back());
     std::vector<int> kept;
-    int base = 0;
-    const auto addBase = [&](int at) {
-        if (bases)
-            bases->push_back(at);
+    // The limb hanging from nodes[from] out to the end `forward` points at (true: the back).
+    const auto limbFrom = [&](int from, bool forward, bool fromTip) {
+        const int step = forward ? 1 : -1;
+        std::vector<int> path;
+        for (int i = from; i >= 0 && i < m; i += step)
+            path.push_back(nodes[std::size_t(i)]);
+        int base = 0;
+        for (const int k : limbJointsFrom(g, path, &base, fromTip))
+            kept.push_back(from + step * k);
+        if (base > 0 && bases)
+            bases->push_back(from + step * base);
     };
-    if (front >= 3 && back == 1) {
-        kept = limbJointsFrom(g, nodes, &base);
-        if (base > 0)
-            addBase(base);
-    } else if (back >= 3 && front == 1) {
-        const std::vector<int> reversed(nodes.rbegin(), nodes.rend());
-        for (int k : limbJointsFrom(g, reversed, &base))
-            kept.push_back(m - 1 - k);
-        if (base > 0)
-            addBase(m - 1 - base);
-    } else if (front == 1 && back == 1) {
-        // Two tips: a body (the thickest node, clearly thicker than the branch typically is)
-        // at one end or in the middle; each side of it is a limb from it.
-        int thick = 0;
-        std::vector<double> widths;
-        for (int i = 0; i < m; ++i) {
-            widths.push_back(g.clearance[std::size_t(nodes[std::size_t(i)])]);
-            if (widths.back() > widths[std::size_t(thick)])
-                thick = i;
-        }
-        if (widths[std::size_t(thick)] < 1.25 * median(widths))
-            return {};
-        if (thick > 0 && thick < m - 1)
+    // The thickest node, and whether it is clearly thicker than the branch typically is (a
+    // body along the branch).
+    int thick = 0;
+    std::vector<double> widths;
+    for (int i = 0; i < m; ++i) {
+        widths.push_back(g.clearance[std::size_t(nodes[std::size_t(i)])]);
+        if (widths.back() > widths[std::size_t(thick)])
+            thick = i;
+    }
+    const bool body = widths[std::size_t(thick)] >= kThickBody * median(widths);
+    const bool inner = thick > 0 && thick < m - 1;
+    if ((front >= 3 && back == 1) || (back >= 3 && front == 1)) {
+        // From a junction to a tip. Where the branch runs through a body clearly thicker than
+        // the junction (a loop round a hole broken at the tip: a guitar's neck in two strips),
+        // the limb hangs from that body, not from the junction.
+        const bool forward = front >= 3;
+        const int junction = forward ? 0 : m - 1;
+        if (body && inner &&
+            widths[std::size_t(thick)] * kNarrower > widths[std::size_t(junction)]) {
             kept.push_back(thick);
-        const std::vector<int> ahead(nodes.begin() + thick, nodes.end());
-        for (int k : limbJointsFrom(g, ahead, &base))
-            kept.push_back(thick + k);
-        if (base > 0)
-            addBase(thick + base);
-        const std::vector<int> behind(nodes.rend() - thick - 1, nodes.rend());
-        for (int k : limbJointsFrom(g, behind, &base))
-            kept.push_back(thick - k);
-        if (base > 0)
-            addBase(thick - base);
+            limbFrom(thick, forward, true);
+        } else {
+            limbFrom(junction, forward, false);
+        }
+    } else if (front == 1 && back == 1) {
+        // Two tips: a body at one end or in the middle; each side of it is a limb from it.
+        if (!body)
+            return {};
+        if (inner)
+            kept.push_back(thick);
+        limbFrom(thick, true, false);
+        limbFrom(thick, false, false);
     }
     std::sort(kept.begin(), kept.end());
     return kept;
