@@ -104,26 +104,6 @@ double outlineTurning(const Polygon &contour, const Eigen::Vector2d &p, double r
 
 namespace {
 
-// The path from a tip up to (not including) the first node that is not an inner one; `end`
-// is that node if it is a junction, else −1.
-std::vector<int> tipPath(const DenseGraph &g, int tip, int &end)
-{
-    std::vector<int> path{tip};
-    int previous = -1, at = tip;
-    for (;;) {
-        int next = -1;
-        for (int n : g.adj[std::size_t(at)])
-            next = n != previous ? n : next;
-        if (next < 0 || g.degree(next) != 2) {
-            end = next >= 0 && g.degree(next) >= 3 ? next : -1;
-            return path;
-        }
-        path.push_back(next);
-        previous = at;
-        at = next;
-    }
-}
-
 // The nodes from `junction` out through its neighbour `first` up to (and including) the first
 // node that is not an inner one, and the path's length.
 std::vector<int> branchFrom(const DenseGraph &g, int junction, int first, double &length)
@@ -221,7 +201,7 @@ void removeCornerSpurs(DenseGraph &graph, const Region &contour)
             if (!graph.alive[std::size_t(v)] || graph.degree(v) != 1)
                 continue;
             int junction = -1;
-            std::vector<int> path = tipPath(graph, v, junction);
+            std::vector<int> path = terminalPath(graph, v, junction);
             if (junction >= 0 && isCornerSpur(graph, contour, path, junction))
                 spurs.emplace_back(junction, std::move(path));
         }

@@ -143,10 +143,6 @@ void breakCycles(DenseGraph &graph)
     }
 }
 
-namespace {
-
-// The terminal path from leaf `tip` up to (excluding) the first node of degree ≠ 2; `end`
-// receives that node (−1 if the component is a path).
 std::vector<int> terminalPath(const DenseGraph &g, int tip, int &end)
 {
     std::vector<int> path{tip};
@@ -170,6 +166,8 @@ std::vector<int> terminalPath(const DenseGraph &g, int tip, int &end)
         cur = next;
     }
 }
+
+namespace {
 
 double pathLength(const DenseGraph &g, const std::vector<int> &path, int end)
 {

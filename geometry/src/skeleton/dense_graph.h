@@ -40,6 +40,10 @@ void collapseShortEdges(DenseGraph &graph, double fraction);
 // is the smaller clearance of the ends: each loop is cut where the shape is thinnest.
 void breakCycles(DenseGraph &graph);
 
+// The terminal path from leaf `tip` up to (excluding) the first node of degree ≠ 2; `end`
+// receives that node if it is a junction, else −1 (the component is a path).
+std::vector<int> terminalPath(const DenseGraph &g, int tip, int &end);
+
 // Removes terminal branches (a path from a leaf up to, not including, a junction) for which
 // remove(path, junction, length) holds, shortest first, one at a time until none is left.
 // A junction left with two edges becomes an inner node. A component is never removed.
