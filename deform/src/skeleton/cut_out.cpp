@@ -5,6 +5,7 @@
 #include <finbook/deform/skeleton/cut_out.h>
 #include <finbook/geometry/mesh_boundary.h>
 #include <finbook/geometry/polyline.h>
+#include <finbook/geometry/region.h>
 
 #include <queue>
 
@@ -210,19 +211,6 @@ std::vector<char> floodPast(const Eigen::MatrixX2d &V, const MeshGraph &g, const
     return past;
 }
 
-// Whether p lies inside the closed polygon `ring` (even–odd rule).
-bool insidePolygon(const std::vector<Vec> &ring, const Vec &p)
-{
-    bool inside = false;
-    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-        const Vec &a = ring[i], &b = ring[j];
-        if ((a.y() > p.y()) != (b.y() > p.y()) &&
-            p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-            inside = !inside;
-    }
-    return inside;
-}
-
 // A ring's break: the straight skeleton of a shape with a hole runs round it in a loop, which
 // the skeleton cuts open where the shape is thinnest (geometry::rawSkeleton), leaving a tip
 // there that is no end of the shape. Such a tip has a joint within kRingGap of their inscribed
@@ -324,12 +312,12 @@ std::vector<Barrier> ringBreaks(const Eigen::MatrixX2d &V, const MeshGraph &g,
     });
     std::vector<char> broken(g.holes.size(), 0);
     for (const Pair &pair : pairs) {
-        std::vector<Vec> loop;
-        for (const int j : pair.path)
-            loop.push_back(jointAt(j));
+        geometry::Region loop{{Eigen::MatrixX2d(Eigen::Index(pair.path.size()), 2), {}}};
+        for (std::size_t i = 0; i < pair.path.size(); ++i)
+            loop[0].outer.row(Eigen::Index(i)) = jointAt(pair.path[i]).transpose();
         bool opens = false;
         for (std::size_t h = 0; h < g.holes.size(); ++h) {
-            if (!insidePolygon(loop, V.row(g.holes[h](0)).transpose()))
+            if (!geometry::regionContains(loop, V(g.holes[h](0), 0), V(g.holes[h](0), 1)))
                 continue;
             opens = opens || !broken[h];
             broken[h] = 1;
