@@ -53,6 +53,14 @@ inline void edgeWeights(const Complex z[3], bool cotangent, double w[3])
 }
 
 // Rest positions, triangles and pins as arapPrecompute receives them; nullopt when usable.
+// The triangles around each vertex of F (n vertices, every index below n): those of v are
+// triangle[start[v]] … triangle[start[v + 1] − 1], in ascending order, v being corner
+// corner[i] of triangle[i].
+struct VertexRings {
+    std::vector<int> start, triangle, corner;
+};
+VertexRings vertexRings(Eigen::Index n, const Eigen::MatrixX3i &F);
+
 std::optional<DeformError> validateArapInput(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                              const Eigen::VectorXi &b);
 

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace finbook::deform::detail {
 namespace {
@@ -104,21 +105,18 @@ geometry::Region outline(const Eigen::MatrixX2d &V, const std::vector<Eigen::Vec
 
 // Whether coarse vertex c can move to p with every triangle around it keeping at least a
 // quarter of its area (counter-clockwise, as meshRegion makes them).
-bool movable(const Eigen::MatrixX2d &Vc, const Eigen::MatrixX3i &Fc, Eigen::Index c,
-             const Eigen::Vector2d &p)
+bool movable(const Eigen::MatrixX2d &Vc, const Eigen::MatrixX3i &Fc, const VertexRings &rings,
+             Eigen::Index c, const Eigen::Vector2d &p)
 {
     const auto doubleArea = [](const Eigen::Vector2d &a, const Eigen::Vector2d &b,
                                const Eigen::Vector2d &d) {
         return (b - a).x() * (d - a).y() - (b - a).y() * (d - a).x();
     };
-    for (Eigen::Index t = 0; t < Fc.rows(); ++t) {
-        for (int r = 0; r < 3; ++r) {
-            if (Fc(t, r) != c)
-                continue;
-            const Eigen::Vector2d a = Vc.row(Fc(t, (r + 1) % 3)), b = Vc.row(Fc(t, (r + 2) % 3));
-            if (!(doubleArea(p, a, b) >= 0.25 * doubleArea(Vc.row(c).transpose(), a, b)))
-                return false;
-        }
+    for (int i = rings.start[std::size_t(c)]; i < rings.start[std::size_t(c) + 1]; ++i) {
+        const int t = rings.triangle[std::size_t(i)], r = rings.corner[std::size_t(i)];
+        const Eigen::Vector2d a = Vc.row(Fc(t, (r + 1) % 3)), b = Vc.row(Fc(t, (r + 2) % 3));
+        if (!(doubleArea(p, a, b) >= 0.25 * doubleArea(Vc.row(c).transpose(), a, b)))
+            return false;
     }
     return true;
 }
@@ -228,11 +226,14 @@ std::optional<TwoLevelBuild> buildTwoLevel(const Eigen::MatrixX2d &V, const Eige
             nearestPin[std::size_t(c)] = int(v);
         }
     }
+    std::optional<VertexRings> rings; // built for the first such pin
     for (Eigen::Index c = 0; c < Vc.rows(); ++c) {
         const int v = nearestPin[std::size_t(c)];
         if (v < 0)
             continue;
-        if (movable(Vc, Fc, c, V.row(v).transpose()))
+        if (!rings)
+            rings = vertexRings(Vc.rows(), Fc);
+        if (movable(Vc, Fc, *rings, c, V.row(v).transpose()))
             Vc.row(c) = V.row(v); // the pin itself, so its target needs no offset
         vertices.emplace_back(v, v, v);
         weights.emplace_back(1.0, 0.0, 0.0);

@@ -29,15 +29,8 @@ std::optional<DeformError> validateTriangle(const Eigen::MatrixX2d &V, const Eig
 // vertex at no cost, so such meshes are refused (geometry's meshes split these vertices).
 int pinchedVertex(Eigen::Index n, const Eigen::MatrixX3i &F)
 {
-    std::vector<int> start(static_cast<std::size_t>(n) + 1, 0), triangle(3 * F.rows());
-    for (Eigen::Index t = 0; t < F.rows(); ++t)
-        for (int k = 0; k < 3; ++k)
-            ++start[F(t, k) + 1];
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<int> next(start.begin(), start.end() - 1);
-    for (Eigen::Index t = 0; t < F.rows(); ++t)
-        for (int k = 0; k < 3; ++k)
-            triangle[next[F(t, k)]++] = static_cast<int>(t);
+    const VertexRings rings = vertexRings(n, F);
+    const std::vector<int> &start = rings.start, &triangle = rings.triangle;
     std::vector<int> seenBy(static_cast<std::size_t>(n), -1);
     for (int v = 0; v < n; ++v) {
         int neighbours = 0;
@@ -57,6 +50,27 @@ int pinchedVertex(Eigen::Index n, const Eigen::MatrixX3i &F)
 }
 
 } // namespace
+
+VertexRings vertexRings(Eigen::Index n, const Eigen::MatrixX3i &F)
+{
+    VertexRings rings;
+    rings.start.assign(std::size_t(n) + 1, 0);
+    for (Eigen::Index t = 0; t < F.rows(); ++t)
+        for (int k = 0; k < 3; ++k)
+            ++rings.start[std::size_t(F(t, k)) + 1];
+    std::partial_sum(rings.start.begin(), rings.start.end(), rings.start.begin());
+    rings.triangle.resize(std::size_t(3 * F.rows()));
+    rings.corner.resize(rings.triangle.size());
+    std::vector<int> next(rings.start.begin(), rings.start.end() - 1);
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const auto at = std::size_t(next[std::size_t(F(t, k))]++);
+            rings.triangle[at] = int(t);
+            rings.corner[at] = k;
+        }
+    }
+    return rings;
+}
 
 std::optional<DeformError> validateArapInput(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                              const Eigen::VectorXi &b)
