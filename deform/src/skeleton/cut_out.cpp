@@ -49,6 +49,12 @@ bool segmentsMeet(const Vec &p, const Vec &q, const Vec &a, const Vec &b)
            (d3 == 0 && onSegment(p, q, a)) || (d4 == 0 && onSegment(p, q, b));
 }
 
+// One key per undirected edge {a, b} of a mesh of n vertices.
+long long edgeKey(Eigen::Index n, int a, int b)
+{
+    return (long long)std::min(a, b) * (long long)n + (long long)std::max(a, b);
+}
+
 struct MeshGraph {
     std::vector<std::pair<int, int>> boundary; // edges of one triangle
     std::vector<std::vector<int>> neighbours;  // vertex adjacency
@@ -60,15 +66,12 @@ MeshGraph meshGraph(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F)
     const Eigen::Index n = V.rows();
     std::unordered_map<long long, int> count;
     count.reserve(std::size_t(F.rows()) * 3);
-    const auto key = [n](int a, int b) {
-        return (long long)std::min(a, b) * (long long)n + (long long)std::max(a, b);
-    };
     MeshGraph g;
     g.neighbours.resize(std::size_t(n));
     for (Eigen::Index t = 0; t < F.rows(); ++t) {
         for (int k = 0; k < 3; ++k) {
             const int a = F(t, k), b = F(t, (k + 1) % 3);
-            if (count[key(a, b)]++ == 0) {
+            if (count[edgeKey(n, a, b)]++ == 0) {
                 g.neighbours[std::size_t(a)].push_back(b);
                 g.neighbours[std::size_t(b)].push_back(a);
             }
@@ -377,14 +380,11 @@ void joinSlivers(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Ske
                  const Eigen::VectorXd &radius, CutMesh &out)
 {
     const Eigen::Index n = V.rows(), m = F.rows();
-    const auto key = [n](int a, int b) {
-        return (long long)std::min(a, b) * (long long)n + (long long)std::max(a, b);
-    };
     std::unordered_map<long long, std::vector<int>> edgeTriangles;
     edgeTriangles.reserve(std::size_t(3 * m));
     for (Eigen::Index t = 0; t < m; ++t)
         for (int k = 0; k < 3; ++k)
-            edgeTriangles[key(F(t, k), F(t, (k + 1) % 3))].push_back(int(t));
+            edgeTriangles[edgeKey(n, F(t, k), F(t, (k + 1) % 3))].push_back(int(t));
     const auto nearACut = [&](const Vec &p) {
         return std::any_of(out.cuts.begin(), out.cuts.end(), [&](const JointCut &cut) {
             const Vec pivot = skeleton.joints.row(cut.joint).transpose();
@@ -421,7 +421,7 @@ void joinSlivers(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Ske
                 const int t = triangles[i];
                 for (int k = 0; k < 3 && sliver; ++k) {
                     sliver = nearACut(V.row(F(t, k)).transpose());
-                    for (const int u : edgeTriangles.at(key(F(t, k), F(t, (k + 1) % 3))))
+                    for (const int u : edgeTriangles.at(edgeKey(n, F(t, k), F(t, (k + 1) % 3))))
                         if (out.piece(u) != piece)
                             ++bordering[out.piece(u)];
                 }
@@ -681,8 +681,8 @@ Expected<CutMesh, DeformError> cutAtJoints(const Eigen::MatrixX2d &V, const Eige
     for (Eigen::Index t = 0; t < m; ++t) {
         for (int c = 0; c < 3; ++c) {
             const int a = F(t, c), b = F(t, (c + 1) % 3);
-            const long long key = (long long)std::min(a, b) * (long long)n + std::max(a, b);
-            const auto [it, fresh] = firstCorner.emplace(key, std::make_pair(int(t), c));
+            const auto [it, fresh] =
+                firstCorner.emplace(edgeKey(n, a, b), std::make_pair(int(t), c));
             if (fresh)
                 continue;
             const auto [s, sc] = it->second;
