@@ -4,6 +4,7 @@
 // fails if the rig's step it checks does nothing.
 #include "skeleton_test_support.h"
 
+#include <finbook/geometry/polyline.h>
 #include <finbook/geometry/silhouette.h>
 #include <finbook/geometry/skeleton/raw_skeleton.h>
 #include <finbook/geometry/skeleton/skeleton_connect.h>
@@ -92,6 +93,7 @@ private slots:
     void crossOfTwoObjectsJoins();
     void prongBesideALongerBranchGoes();
     void stripOfABrokenLoopLeavesTheBodyWhereItNarrows();
+    void tailFusedWithTheRumpLeavesTheBodyBelowIt();
 };
 
 void TestAnimatorRig::drawnRectangleHasOneBone()
@@ -350,6 +352,40 @@ void TestAnimatorRig::stripOfABrokenLoopLeavesTheBodyWhereItNarrows()
         QVERIFY(std::abs(s.joints(base, 1)) > 12.0); // on the strip's side of the slot
     }
     QCOMPARE(strips, 1);
+}
+
+void TestAnimatorRig::tailFusedWithTheRumpLeavesTheBodyBelowIt()
+{
+    // A horse's tail (y down): it rises from the rump's top corner and hangs down the rump's
+    // back, one with it on its inner side down to a slit at y = 150 where the body's back
+    // parts from it. Its width is a tail's (radius 15) from the corner on, but it leaves the
+    // body only where its inner side is outline too: a base at the corner turns the rump's
+    // back with the tail (no cut there separates the two).
+    const Region shape{Polygon{rows({{0, 0},
+                                     {290, 0},
+                                     {320, 10},
+                                     {340, 30},
+                                     {350, 60},
+                                     {350, 400},
+                                     {335, 410},
+                                     {320, 400},
+                                     {318, 150},
+                                     {315, 190},
+                                     {315, 300},
+                                     {0, 300}}),
+                               {}}};
+    QVERIFY(signedArea(shape[0].outer) > 0.0);
+    const Skeleton s = rigOf(shape);
+    QVERIFY(isValidSkeleton(s));
+    QVERIFY(bonesInside(s, shape) >= 0.99);
+    // Up the parent links from the tail's tip to the first joint marked as a limb base.
+    int base = s.parent(tipNearest(s, Eigen::RowVector2d(335, 410)));
+    while (base >= 0 && !(base < int(s.limbBase.size()) && s.limbBase[std::size_t(base)]))
+        base = s.parent(base);
+    QVERIFY2(base >= 0, "the tail has no base");
+    const Eigen::RowVector2d at = s.joints.row(base);
+    QVERIFY2(at.y() > 120.0 && at.y() < 250.0 && at.x() > 318.0,
+             qPrintable(QStringLiteral("%1, %2").arg(at.x()).arg(at.y())));
 }
 
 #include "tst_animator_rig.moc"

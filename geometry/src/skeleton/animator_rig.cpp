@@ -30,6 +30,16 @@ constexpr double kSideBySide = kPi / 9.0;
 constexpr double kLongLimb = 6.0;
 // A branch runs through a body when its thickest node is this many times its median width.
 constexpr double kThickBody = 1.25;
+// A limb has left the body where the outline lies within this many of its radii on both
+// sides of it. A base where one side's outline lies farther, looked for within kSideAngle of
+// the limb's direction as the Cut-out mode looks for a cut's ends (CutOutOptions::sideAngle,
+// farReach), is still fused with the body on that side (a tail whose upper part is one with
+// the rump); it moves out along the limb to where the outline comes in on both sides, across
+// the limb (within kAcross of square to it) and within kSideAngle alike. The sector alone
+// would take the outline behind a base near the body's edge for the limb's side.
+constexpr double kFusedSide = 3.0;
+constexpr double kSideAngle = 0.75 * kPi;
+constexpr double kAcross = kPi / 6.0;
 
 double cross2(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
 {
@@ -68,6 +78,55 @@ double bendAt(const DenseGraph &g, const std::vector<int> &nodes, const std::vec
     const Eigen::Vector2d u = g.pos[std::size_t(nodes[i])] - g.pos[std::size_t(nodes[a])];
     const Eigen::Vector2d w = g.pos[std::size_t(nodes[b])] - g.pos[std::size_t(nodes[i])];
     return std::abs(std::atan2(cross2(u, w), u.dot(w)));
+}
+
+// How far the outline lies on either side of direction d at p: the nearest outline point
+// within kSideAngle of d (sector) and the nearest hit of rays across d (square to it and
+// kAcross either way), each the larger of its two sides (infinity when a side has none).
+struct SideReach {
+    double sector = 0.0, across = 0.0;
+};
+
+SideReach sideReach(const Polygon &contour, const Eigen::Vector2d &p, const Eigen::Vector2d &d)
+{
+    const Eigen::Vector2d u = d.normalized();
+    const double none = std::numeric_limits<double>::infinity();
+    double sector[2] = {none, none}, across[2] = {none, none};
+    Eigen::Vector2d rays[2][3];
+    for (int k = 0; k < 2; ++k)
+        for (int r = 0; r < 3; ++r) {
+            const double angle = (k == 0 ? 0.5 : -0.5) * kPi + (r - 1) * kAcross;
+            rays[k][r] = Eigen::Vector2d(u.x() * std::cos(angle) - u.y() * std::sin(angle),
+                                         u.x() * std::sin(angle) + u.y() * std::cos(angle));
+        }
+    const auto consider = [&](const Eigen::Vector2d &q) {
+        const Eigen::Vector2d e = q - p;
+        const double distance = e.norm(), angle = std::atan2(cross2(u, e), u.dot(e));
+        if (distance > 0.0 && std::abs(angle) < kSideAngle)
+            sector[angle > 0.0 ? 0 : 1] = std::min(sector[angle > 0.0 ? 0 : 1], distance);
+    };
+    for (const Eigen::MatrixX2d &ring : regionRings(Region{contour})) {
+        const Eigen::Index n = ring.rows();
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const Eigen::Vector2d a = ring.row(i).transpose();
+            const Eigen::Vector2d e = ring.row((i + 1) % n).transpose() - a;
+            const double length2 = e.squaredNorm();
+            consider(a +
+                     (length2 > 0.0 ? std::clamp((p - a).dot(e) / length2, 0.0, 1.0) : 0.0) * e);
+            consider(a);
+            for (int k = 0; k < 2; ++k)
+                for (const Eigen::Vector2d &ray : rays[k]) {
+                    // p + t·ray = a + s·e
+                    const double den = cross2(ray, e);
+                    if (den == 0.0)
+                        continue;
+                    const double t = cross2(a - p, e) / den, s = cross2(a - p, ray) / den;
+                    if (t > 0.0 && s >= 0.0 && s <= 1.0)
+                        across[k] = std::min(across[k], t);
+                }
+        }
+    }
+    return {std::max(sector[0], sector[1]), std::max(across[0], across[1])};
 }
 
 } // namespace
@@ -240,7 +299,7 @@ namespace {
 // The base is the first node from the body that is narrow enough, or with `fromTip` the near
 // end of the narrow run at the tip.
 std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nodes, int *baseOut,
-                                bool fromTip = false)
+                                bool fromTip, const Polygon *contour)
 {
     *baseOut = 0;
     const int m = int(nodes.size());
@@ -278,9 +337,28 @@ std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nod
             }
         }
         // Not inside the junction's own disk centre, and with a limb left beyond it.
-        if (base > 0 &&
-            (s[std::size_t(base)] < 0.5 * body || length - s[std::size_t(base)] < 1.5 * limb))
+        const auto leavesRoom = [&](int i) { return length - s[std::size_t(i)] >= 1.5 * limb; };
+        if (base > 0 && (s[std::size_t(base)] < 0.5 * body || !leavesRoom(base)))
             base = 0;
+        // Out along the limb to where the outline comes in on both sides.
+        const auto reach = [&](int i) {
+            int ahead = i + 1;
+            while (ahead + 1 < m && s[std::size_t(ahead)] - s[std::size_t(i)] < 2.0 * limb)
+                ++ahead;
+            const Eigen::Vector2d &p = g.pos[std::size_t(nodes[std::size_t(i)])];
+            const Eigen::Vector2d d = g.pos[std::size_t(nodes[std::size_t(ahead)])] - p;
+            const double width = kFusedSide * g.clearance[std::size_t(nodes[std::size_t(i)])];
+            const SideReach side = d.norm() > 0.0 ? sideReach(*contour, p, d) : SideReach{};
+            return std::pair{side.sector <= width, side.sector <= width && side.across <= width};
+        };
+        if (base > 0 && contour && !reach(base).first) {
+            for (int i = base + 1; i + 1 < m && leavesRoom(i); ++i) {
+                if (reach(i).second) {
+                    base = i;
+                    break;
+                }
+            }
+        }
         if (base > 0)
             kept.push_back(base);
     }
@@ -320,7 +398,8 @@ std::vector<int> limbJointsFrom(const DenseGraph &g, const std::vector<int> &nod
 
 } // namespace
 
-std::vector<int> limbJoints(const DenseGraph &g, const Branch &branch, std::vector<int> *bases)
+std::vector<int> limbJoints(const DenseGraph &g, const Branch &branch, std::vector<int> *bases,
+                            const Region *contour)
 {
     const std::vector<int> &nodes = branch.nodes;
     const int m = int(nodes.size());
@@ -335,7 +414,11 @@ std::vector<int> limbJoints(const DenseGraph &g, const Branch &branch, std::vect
         for (int i = from; i >= 0 && i < m; i += step)
             path.push_back(nodes[std::size_t(i)]);
         int base = 0;
-        for (const int k : limbJointsFrom(g, path, &base, fromTip))
+        const int polygon = g.polygon[std::size_t(nodes[std::size_t(from)])];
+        const Polygon *outline = contour && polygon >= 0 && std::size_t(polygon) < contour->size()
+                                     ? &(*contour)[std::size_t(polygon)]
+                                     : nullptr;
+        for (const int k : limbJointsFrom(g, path, &base, fromTip, outline))
             kept.push_back(from + step * k);
         if (base > 0 && bases)
             bases->push_back(from + step * base);

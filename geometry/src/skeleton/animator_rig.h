@@ -43,9 +43,11 @@ bool isJunctionCluster(const DenseGraph &graph, const Branch &branch);
 // from a junction to a tip, the base where the width drops from the body's to the limb's
 // (none when it does not drop: the junction is the base), and, on a long limb, a middle joint
 // where it bends most or narrows (else half way). `bases` (if given) gets the positions among
-// them that are limbs' bases.
+// them that are limbs' bases. With the `contour` the skeleton was made from, a base where the
+// limb is still one with the body on one side (that side's outline far off) moves out along
+// the limb to where the outline comes in on both sides.
 std::vector<int> limbJoints(const DenseGraph &graph, const Branch &branch,
-                            std::vector<int> *bases = nullptr);
+                            std::vector<int> *bases = nullptr, const Region *contour = nullptr);
 
 // Terminal bones shorter than half the inscribed radius at their inner end go (the tip moves
 // in to that joint), as long as that joint is an inner one and the bone that then reaches

@@ -203,9 +203,9 @@ Expected<Skeleton, GeometryError> refineSkeleton(const RawSkeleton &raw,
     std::vector<Eigen::Vector2d> bases; // where limbs leave the body
     if (options.animatorRig) {
         subdivideLongEdges(graph);
-        forced = [&graph, &bases](const Branch &branch) {
+        forced = [&graph, &bases, &raw](const Branch &branch) {
             std::vector<int> at;
-            std::vector<int> joints = limbJoints(graph, branch, &at);
+            std::vector<int> joints = limbJoints(graph, branch, &at, &raw.contour);
             for (const int i : at)
                 bases.push_back(graph.pos[std::size_t(branch.nodes[std::size_t(i)])]);
             return joints;
