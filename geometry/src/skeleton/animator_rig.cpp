@@ -110,9 +110,7 @@ SideReach sideReach(const Polygon &contour, const Eigen::Vector2d &p, const Eige
         for (Eigen::Index i = 0; i < n; ++i) {
             const Eigen::Vector2d a = ring.row(i).transpose();
             const Eigen::Vector2d e = ring.row((i + 1) % n).transpose() - a;
-            const double length2 = e.squaredNorm();
-            consider(a +
-                     (length2 > 0.0 ? std::clamp((p - a).dot(e) / length2, 0.0, 1.0) : 0.0) * e);
+            consider(nearestOnSegment(p, a, a + e));
             consider(a);
             for (int k = 0; k < 2; ++k)
                 for (const Eigen::Vector2d &ray : rays[k]) {

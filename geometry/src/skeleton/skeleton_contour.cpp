@@ -223,15 +223,20 @@ Eigen::RowVector2d regionCentroid(const Region &region)
     return points.colwise().mean();
 }
 
-double pointSegmentDistance(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
-                            const Eigen::Vector2d &b)
+Eigen::Vector2d nearestOnSegment(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
+                                 const Eigen::Vector2d &b)
 {
     const Eigen::Vector2d ab = b - a;
     const double len2 = ab.squaredNorm();
     if (len2 == 0.0)
-        return (p - a).norm();
-    const double t = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
-    return (p - (a + t * ab)).norm();
+        return a;
+    return a + std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) * ab;
+}
+
+double pointSegmentDistance(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
+                            const Eigen::Vector2d &b)
+{
+    return (p - nearestOnSegment(p, a, b)).norm();
 }
 
 ContourIndex::ContourIndex(const Polygon &polygon)

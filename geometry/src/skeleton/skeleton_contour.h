@@ -73,6 +73,9 @@ private:
     std::vector<Eigen::Vector2d> m_a, m_b; // edge i runs m_a[i] → m_b[i]
 };
 
+// The point of segment [a, b] nearest p, and its distance from p.
+Eigen::Vector2d nearestOnSegment(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
+                                 const Eigen::Vector2d &b);
 double pointSegmentDistance(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
                             const Eigen::Vector2d &b);
 
