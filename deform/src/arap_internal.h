@@ -52,7 +52,6 @@ inline void edgeWeights(const Complex z[3], bool cotangent, double w[3])
     }
 }
 
-// Rest positions, triangles and pins as arapPrecompute receives them; nullopt when usable.
 // The triangles around each vertex of F (n vertices, every index below n): those of v are
 // triangle[start[v]] … triangle[start[v + 1] − 1], in ascending order, v being corner
 // corner[i] of triangle[i].
@@ -61,6 +60,7 @@ struct VertexRings {
 };
 VertexRings vertexRings(Eigen::Index n, const Eigen::MatrixX3i &F);
 
+// Rest positions, triangles and pins as arapPrecompute receives them; nullopt when usable.
 std::optional<DeformError> validateArapInput(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                              const Eigen::VectorXi &b);
 

@@ -4,6 +4,8 @@
 
 #include <finbook/geometry/polyline.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -94,11 +96,8 @@ SideReach sideReach(const Polygon &contour, const Eigen::Vector2d &p, const Eige
     double sector[2] = {none, none}, across[2] = {none, none};
     Eigen::Vector2d rays[2][3];
     for (int k = 0; k < 2; ++k)
-        for (int r = 0; r < 3; ++r) {
-            const double angle = (k == 0 ? 0.5 : -0.5) * kPi + (r - 1) * kAcross;
-            rays[k][r] = Eigen::Vector2d(u.x() * std::cos(angle) - u.y() * std::sin(angle),
-                                         u.x() * std::sin(angle) + u.y() * std::cos(angle));
-        }
+        for (int r = 0; r < 3; ++r)
+            rays[k][r] = Eigen::Rotation2Dd((k == 0 ? 0.5 : -0.5) * kPi + (r - 1) * kAcross) * u;
     const auto consider = [&](const Eigen::Vector2d &q) {
         const Eigen::Vector2d e = q - p;
         const double distance = e.norm(), angle = std::atan2(cross2(u, e), u.dot(e));
@@ -109,8 +108,8 @@ SideReach sideReach(const Polygon &contour, const Eigen::Vector2d &p, const Eige
         const Eigen::Index n = ring.rows();
         for (Eigen::Index i = 0; i < n; ++i) {
             const Eigen::Vector2d a = ring.row(i).transpose();
-            const Eigen::Vector2d e = ring.row((i + 1) % n).transpose() - a;
-            consider(nearestOnSegment(p, a, a + e));
+            const Eigen::Vector2d b = ring.row((i + 1) % n).transpose(), e = b - a;
+            consider(nearestOnSegment(p, a, b));
             consider(a);
             for (int k = 0; k < 2; ++k)
                 for (const Eigen::Vector2d &ray : rays[k]) {
