@@ -1,8 +1,6 @@
 // Precompiled once for every model test (tests/CMakeLists.txt): the headers most of them read.
 // Parsing <QtTest> alone costs seconds per file; a test still includes what it uses.
 #pragma once
-#include <QtTest>
-
 #include <finbook/model/commands.h>
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/document.h>
@@ -11,6 +9,7 @@
 #include <finbook/model/render.h>
 
 #include <QTemporaryDir>
+#include <QtTest>
 
 #include <algorithm>
 #include <cmath>
