@@ -50,9 +50,12 @@ inline QByteArray readAllFrom(int fd)
 // Runs `finbook arguments...` with its output in temporary files (so a chatty child never
 // blocks on a pipe) and returns its exit code, peak memory and time.
 // `addressSpaceMiB` > 0 caps the child's address space (RLIMIT_AS) to provoke running out
-// of memory. `signal` is sent after `signalAfterMs` (when > 0); SIGKILL after `killAfterMs`.
+// of memory. `signal` is sent after `signalAfterMs` (when > 0); SIGKILL after `killAfterMs`
+// (when > 0), by default after 4 minutes: a child that hangs fails its check (exit -1) instead
+// of holding the whole test until ctest's timeout, with nothing said.
 inline Measured runMeasured(const QStringList &arguments, long addressSpaceMiB = 0,
-                            int signalAfterMs = 0, int signal = SIGTERM, int killAfterMs = 0)
+                            int signalAfterMs = 0, int signal = SIGTERM,
+                            int killAfterMs = 240000)
 {
     std::vector<QByteArray> args{QByteArray(FINBOOK_BINARY_DIR "/bin/finbook")};
     for (const QString &a : arguments)
