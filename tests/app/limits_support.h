@@ -54,8 +54,7 @@ inline QByteArray readAllFrom(int fd)
 // (when > 0), by default after 4 minutes: a child that hangs fails its check (exit -1) instead
 // of holding the whole test until ctest's timeout, with nothing said.
 inline Measured runMeasured(const QStringList &arguments, long addressSpaceMiB = 0,
-                            int signalAfterMs = 0, int signal = SIGTERM,
-                            int killAfterMs = 240000)
+                            int signalAfterMs = 0, int signal = SIGTERM, int killAfterMs = 240000)
 {
     std::vector<QByteArray> args{QByteArray(FINBOOK_BINARY_DIR "/bin/finbook")};
     for (const QString &a : arguments)
