@@ -17,7 +17,7 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <dirent.h>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -26,22 +26,16 @@ namespace {
 
 bool watchdogAlive()
 {
-    DIR *tasks = opendir("/proc/self/task");
-    if (!tasks)
-        return false;
-    bool alive = false;
-    while (const dirent *entry = readdir(tasks)) {
-        if (entry->d_name[0] == '.')
-            continue;
-        std::ifstream comm(std::string("/proc/self/task/") + entry->d_name + "/comm");
+    // The error_code forms throw nothing: an exception would end the process in atexit.
+    std::error_code error;
+    for (std::filesystem::directory_iterator task("/proc/self/task", error), end;
+         !error && task != end; task.increment(error)) {
+        std::ifstream comm(task->path() / "comm");
         std::string name;
-        if (std::getline(comm, name) && name == "QtTest Watchdog") {
-            alive = true;
-            break;
-        }
+        if (std::getline(comm, name) && name == "QtTest Watchdog")
+            return true;
     }
-    closedir(tasks);
-    return alive;
+    return false;
 }
 
 void awaitWatchdog()
