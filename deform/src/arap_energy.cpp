@@ -54,17 +54,24 @@ double arapCotangentEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
     return energy;
 }
 
-int arapFlippedTriangles(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
-                         const Eigen::MatrixX2d &U)
+std::vector<int> arapFlippedTriangleRows(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                         const Eigen::MatrixX2d &U)
 {
     const auto doubleArea = [](const Eigen::MatrixX2d &P, const Eigen::RowVector3i &t) {
         const Eigen::RowVector2d e1 = P.row(t(1)) - P.row(t(0)), e2 = P.row(t(2)) - P.row(t(0));
         return e1.x() * e2.y() - e1.y() * e2.x();
     };
-    int count = 0;
+    std::vector<int> rows;
     for (Eigen::Index t = 0; t < F.rows(); ++t)
-        count += doubleArea(V, F.row(t)) * doubleArea(U, F.row(t)) < 0.0 ? 1 : 0;
-    return count;
+        if (doubleArea(V, F.row(t)) * doubleArea(U, F.row(t)) < 0.0)
+            rows.push_back(int(t));
+    return rows;
+}
+
+int arapFlippedTriangles(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                         const Eigen::MatrixX2d &U)
+{
+    return int(arapFlippedTriangleRows(V, F, U).size());
 }
 
 } // namespace finbook::deform

@@ -38,6 +38,7 @@
 #include <complex>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace finbook::deform {
 
@@ -308,5 +309,8 @@ double arapCotangentEnergy(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
 // turned inside out (collapsed ones do not count). Same requirements as arapEnergy.
 int arapFlippedTriangles(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                          const Eigen::MatrixX2d &U);
+// The same triangles' rows of F, ascending (Show Mesh draws them).
+std::vector<int> arapFlippedTriangleRows(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
+                                         const Eigen::MatrixX2d &U);
 
 } // namespace finbook::deform
