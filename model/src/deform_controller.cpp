@@ -335,6 +335,20 @@ void DeformController::convergedSolved(Id groupId, quint64 generation, Pose pose
     m_unsettled.erase(groupId);
     storePose(groupId, std::move(pose));
     emit poseSolved(groupId);
+    reportFolds(groupId);
+}
+
+void DeformController::reportFolds(Id groupId)
+{
+    const auto it = m_states.find(groupId);
+    if (it == m_states.end() || !it->second.setup || !it->second.setup->pins ||
+        it->second.setup->options.method != deform::ArapMethod::Refined)
+        return;
+    const DeformSetup &setup = *it->second.setup;
+    const int folds = deform::arapFlippedTriangles(setup.meshVertices(), setup.meshTriangles(),
+                                                   it->second.vertices);
+    if (folds > 0)
+        emit foldsForced(groupId, folds);
 }
 
 void DeformController::settle()
@@ -352,6 +366,7 @@ void DeformController::settle()
         if (pose) {
             storePose(id, std::move(*pose));
             emit poseSolved(id);
+            reportFolds(id);
         }
     }
 }

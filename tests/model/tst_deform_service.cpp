@@ -79,6 +79,29 @@ Id makeArm(Document &doc)
     return g.id;
 }
 
+// One frame, one object: a closed square outline from (100, 100) to (400, 400), solid inside.
+Id makeTile(Document &doc)
+{
+    auto data = std::make_shared<StrokeData>();
+    const QPointF corners[] = {{100, 100}, {400, 100}, {400, 400}, {100, 400}, {100, 100}};
+    for (int side = 0; side < 4; ++side)
+        for (int i = 0; i < 30; ++i) {
+            const QPointF p = corners[side] + (corners[side + 1] - corners[side]) * (i / 30.0);
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        }
+    data->points.push_back(data->points.front());
+    data->width = 4.0f;
+    Frame f;
+    f.id = doc.allocateId();
+    StrokeGroup g;
+    g.id = doc.allocateId();
+    g.name = QStringLiteral("tile");
+    g.strokes.push_back({doc.allocateId(), data});
+    f.groups.push_back(g);
+    doc.reset({f}, DocumentSettings{}, doc.nextId());
+    return g.id;
+}
+
 // Pins at both ends of the arm, at rest.
 void pinBothEnds(Document &doc, Id g)
 {
@@ -122,6 +145,7 @@ private slots:
     void duplicatedFrameSharesSetupButNotPins();
     void extraPassesReprepareAndStayStateless();
     void unpinnedPartFollowsThePinnedOne();
+    void foldsThePinsForceAreReported();
     void reopenedFileContinuesWhereItStopped();
     void serviceDeliversOnlyLatestGeneration();
     void guiStaysResponsiveDuringBigPrecompute();
@@ -444,6 +468,52 @@ void TestDeformService::unpinnedPartFollowsThePinnedOne()
     for (std::size_t i = 0; i < restHand.size(); ++i)
         moved = std::max(moved, double(posedHand[i].y - restHand[i].y));
     QVERIFY2(moved > 40, qPrintable(QString::number(moved)));
+}
+
+// Issue 26: where the pins force a fold, the pose is kept as it is and the controller says so
+// (the window posts it). A bend that leaves room reports nothing.
+void TestDeformService::foldsThePinsForceAreReported()
+{
+    Document doc;
+    const Id g = makeTile(doc);
+    DeformController controller(&doc);
+    controller.setSettleDelay(1000000); // settled only when asked
+    QSignalSpy folds(&controller, &DeformController::foldsForced);
+    for (const QPointF p : {QPointF(130, 130), QPointF(370, 130), QPointF(250, 370)})
+        doc.undoStack()->push(new AddPinCommand(&doc, g, p, p));
+    QVERIFY(waitSolved(controller, g));
+    const DeformSetup &setup = *controller.setup(g);
+    QVERIFY(setup.pins);
+    QVERIFY(setup.meshVertices().rows() > 200); // the inside is meshed, not only the outline
+    const auto turnedOver = [&] {
+        return deform::arapFlippedTriangles(setup.meshVertices(), setup.meshTriangles(),
+                                            *controller.poseVertices(g));
+    };
+    const Id apex = doc.group(g)->rig.pins[2].id;
+    // Stretched and turned a little: room everywhere.
+    doc.undoStack()->push(new MovePinCommand(&doc, g, apex, {290, 420}, 1));
+    controller.settle();
+    QCOMPARE(turnedOver(), 0);
+    QVERIFY(folds.isEmpty());
+    // The apex pulled through the line of the other two: the pinned triangle turns inside out,
+    // and the mesh between the pins must fold.
+    for (int step = 1; step <= 10; ++step)
+        doc.undoStack()->push(new MovePinCommand(&doc, g, apex, {250, 370 - 51.0 * step}, 2));
+    controller.settle();
+    const int forced = turnedOver();
+    QVERIFY(forced > 0);
+    QCOMPARE(folds.size(), 1);
+    QCOMPARE(folds.at(0).at(0).value<Id>(), g);
+    QCOMPARE(folds.at(0).at(1).toInt(), forced);
+    // The pose is stored all the same: the converged pose of these pins.
+    const auto direct = solvePose(setup, *doc.group(g), PoseStage::Final);
+    QVERIFY(direct);
+    QCOMPARE(*doc.group(g)->deformed, *direct->strokes);
+    // Back where there is room: nothing more to say.
+    doc.undoStack()->undo();
+    controller.settle();
+    QCOMPARE(turnedOver(), 0);
+    QCOMPARE(folds.size(), 1);
 }
 
 QTEST_GUILESS_MAIN(TestDeformService)

@@ -68,6 +68,11 @@ signals:
     void meshChanged(finbook::model::Id groupId);
     void poseSolved(finbook::model::Id groupId);
     void errorOccurred(finbook::model::Id groupId, const QString &message);
+    // A converged pin pose was stored that turns `triangles` triangles of the object's mesh
+    // inside out: folds the pins force, where they leave the mesh no room (deform/arap.h keeps
+    // a fold only where the converged pose without repair has it too). The pose is kept and
+    // shown as it is; the window says so.
+    void foldsForced(finbook::model::Id groupId, int triangles);
 
 private:
     struct State {
@@ -91,6 +96,7 @@ private:
     void startConvergedSolves();
     void convergedSolved(Id groupId, quint64 generation, Pose pose);
     void storePose(Id groupId, Pose pose);
+    void reportFolds(Id groupId);
 
     Document *m_doc;
     PrecomputeService m_service;
