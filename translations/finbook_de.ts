@@ -144,12 +144,12 @@
         <translation>Zwischenbilder erzeugen</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="90"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="91"/>
         <source>Reset Pose</source>
         <translation>Pose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="114"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="115"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung anwenden</translation>
@@ -1403,152 +1403,152 @@
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="53"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="54"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="56"/>
         <source>the frame list</source>
         <translation>die Einzelbildliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
         <source>a frame</source>
         <translation>ein Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>das Einzelbild ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="76"/>
         <source>%1; the frame is left out</source>
         <translation>%1; das Einzelbild wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
         <source>a frame id</source>
         <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
         <source>the frame</source>
         <translation>das Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="84"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>a frame hold</source>
         <translation>eine Haltedauer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="91"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
         <source>the object list</source>
         <translation>die Objektliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>das Objekt ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
         <source>%1; the object is left out</source>
         <translation>%1; das Objekt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="118"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="205"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="206"/>
         <source>a chunk header</source>
         <translation>ein Blockkopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="204"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="222"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
         <source>a chunk</source>
         <translation>ein Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
         <source>chunk</source>
         <translation>Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
         <source>an object id</source>
         <translation>eine Objekt-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
         <source>the object</source>
         <translation>das Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>the object flags</source>
         <translation>die Objektattribute</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
         <source>the mesh density</source>
         <translation>die Netzdichte</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
         <source>the object name</source>
         <translation>der Objektname</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="167"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="174"/>
         <source>the stroke list</source>
         <translation>die Strichliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
         <source>a stroke id</source>
         <translation>eine Strich-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="192"/>
         <source>the stroke</source>
         <translation>der Strich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="334"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>seine Pose hat %n Strich, das Objekt aber %1</numerusform>
@@ -1556,7 +1556,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="341"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>Strich %1 hat %n Punkt, seine Pose aber %2</numerusform>
@@ -1564,122 +1564,122 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
         <source>a stroke reference</source>
         <translation>ein Strichverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="42"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="45"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 gibt %2 Einträge an; die %3, die hineinpassen, werden gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="185"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
         <source>an unknown chunk is left out</source>
         <translation>ein unbekannter Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="217"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>Block %1 kommt doppelt oder mit einem anderen Rig vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="229"/>
         <source>%1; the chunk is left out</source>
         <translation>%1; der Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
         <source>the skeleton&apos;s join</source>
         <translation>die Verbindung des Skeletts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="259"/>
         <source>a join comes without a skeleton</source>
         <translation>eine Verbindung steht ohne Skelett</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="267"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>die Verbindung des Skeletts ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="277"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>the pin list</source>
         <translation>die Pin-Liste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
         <source>a pin id</source>
         <translation>eine Pin-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>pin %1</source>
         <translation>Pin %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
         <source>a pin position</source>
         <translation>eine Pin-Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
         <source>pin %1 has a non-finite position</source>
         <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
         <source>the cage corner list</source>
         <translation>die Käfigeckenliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="302"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="305"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>der Käfig hat weniger als 3 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
         <source>a cage corner</source>
         <translation>eine Käfigecke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="315"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>Käfigecke %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
         <source>a pose reference</source>
         <translation>ein Posenverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="323"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="327"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>its pose: %1</source>
         <translation>seine Pose: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="353"/>
         <source>%1 has no id</source>
         <translation>%1 hat keine ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="351"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="354"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 hat die ID %2, die größer ist als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="362"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
@@ -2645,43 +2645,51 @@
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>Die Pins, den Käfig oder das Skelett vom aktuellen Objekt entfernen</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/rig/deform_actions.cpp" line="56"/>
+        <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
+        <translation>
+            <numerusform>Die Pins falten die Zeichnung: %n Dreieck ihres Netzes ist umgeklappt, wo die Pins keinen Platz lassen (Ansicht → Netz anzeigen zeigt es rot)</numerusform>
+            <numerusform>Die Pins falten die Zeichnung: %n Dreiecke ihres Netzes sind umgeklappt, wo die Pins keinen Platz lassen (Ansicht → Netz anzeigen zeigt sie rot)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="51"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="71"/>
         <source>R&amp;igidity</source>
         <translation>&amp;Steifigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="75"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="85"/>
         <source>Converged (Most Rigid)</source>
         <translation>Konvergiert (am starrsten)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="76"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Wie in der Veröffentlichung (zwei Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="77"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Steifer (+1 Durchgang)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="78"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Am steifsten (+3 Durchgänge)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="111"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="121"/>
         <source>Mesh density </source>
         <translation>Netzdichte </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="112"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Wie fein das Verformungsnetz des aktuellen Objekts ist (1 = Standard)</translation>
     </message>

@@ -144,12 +144,12 @@
         <translation>Générer des intervalles</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="90"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="91"/>
         <source>Reset Pose</source>
         <translation>Réinitialiser la pose</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="114"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="115"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Appliquer la pose au dessin</translation>
@@ -1403,152 +1403,152 @@
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="53"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="54"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="56"/>
         <source>the frame list</source>
         <translation>la liste des images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
         <source>a frame</source>
         <translation>une image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="76"/>
         <source>%1; the frame is left out</source>
         <translation>%1&#xa0;; l&apos;image est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
         <source>a frame id</source>
         <translation>un identifiant d&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
         <source>the frame</source>
         <translation>l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="84"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>a frame hold</source>
         <translation>une durée d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="91"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
         <source>the object list</source>
         <translation>la liste des objets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
         <source>an object</source>
         <translation>un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
         <source>%1; the object is left out</source>
         <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="118"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="205"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="206"/>
         <source>a chunk header</source>
         <translation>un en-tête de bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="204"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="222"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
         <source>a chunk</source>
         <translation>un bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
         <source>chunk</source>
         <translation>bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
         <source>an object id</source>
         <translation>un identifiant d&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
         <source>the object</source>
         <translation>l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>the object flags</source>
         <translation>les attributs de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
         <source>the mesh density</source>
         <translation>la densité du maillage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
         <source>the object name</source>
         <translation>le nom de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="167"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="174"/>
         <source>the stroke list</source>
         <translation>la liste des traits</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
         <source>a stroke id</source>
         <translation>un identifiant de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="192"/>
         <source>the stroke</source>
         <translation>le trait</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="334"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>sa pose a %n trait, mais l&apos;objet en a %1</numerusform>
@@ -1556,7 +1556,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="341"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>le trait %1 a %n point, mais sa pose en a %2</numerusform>
@@ -1564,122 +1564,122 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
         <source>a stroke reference</source>
         <translation>une référence de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="42"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="45"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="185"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
         <source>an unknown chunk is left out</source>
         <translation>un bloc inconnu est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="217"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="229"/>
         <source>%1; the chunk is left out</source>
         <translation>%1&#xa0;; le bloc est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
         <source>the skeleton&apos;s join</source>
         <translation>la jonction du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="259"/>
         <source>a join comes without a skeleton</source>
         <translation>une jonction est présente sans squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="267"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>la jonction du squelette est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="277"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>the pin list</source>
         <translation>la liste des épingles</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
         <source>a pin id</source>
         <translation>un identifiant d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>pin %1</source>
         <translation>l&apos;épingle %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
         <source>a pin position</source>
         <translation>une position d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
         <source>pin %1 has a non-finite position</source>
         <translation>l&apos;épingle %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
         <source>the cage corner list</source>
         <translation>la liste des coins de la cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="302"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="305"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>la cage a moins de 3 coins</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
         <source>a cage corner</source>
         <translation>un coin de cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="315"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>le coin de cage %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
         <source>a pose reference</source>
         <translation>une référence de pose</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="323"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="327"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>its pose: %1</source>
         <translation>sa pose&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="353"/>
         <source>%1 has no id</source>
         <translation>%1 n&apos;a pas d&apos;identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="351"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="354"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="362"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
@@ -2645,43 +2645,51 @@
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>Retirer les épingles, la cage ou le squelette de l&apos;objet courant</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/rig/deform_actions.cpp" line="56"/>
+        <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
+        <translation>
+            <numerusform>Les épingles plient le dessin&#xa0;: %n triangle de son maillage est retourné là où elles ne laissent pas de place (Affichage → Afficher le maillage le montre en rouge)</numerusform>
+            <numerusform>Les épingles plient le dessin&#xa0;: %n triangles de son maillage sont retournés là où elles ne laissent pas de place (Affichage → Afficher le maillage les montre en rouge)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="51"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
         <source>Preparing the deformation…</source>
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="71"/>
         <source>R&amp;igidity</source>
         <translation>R&amp;igidité</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="75"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="85"/>
         <source>Converged (Most Rigid)</source>
         <translation>Convergence (rigidité maximale)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="76"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Comme dans l&apos;article (deux étapes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="77"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Plus rigide (+1 passe)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="78"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Le plus rigide (+3 passes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="111"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="121"/>
         <source>Mesh density </source>
         <translation>Densité du maillage </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="112"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Finesse du maillage de déformation de l&apos;objet courant (1 = par défaut)</translation>
     </message>

@@ -144,12 +144,12 @@
         <translation>中割りを生成</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="90"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="91"/>
         <source>Reset Pose</source>
         <translation>ポーズをリセット</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="114"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="115"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>ポーズを絵に適用</translation>
@@ -1400,281 +1400,281 @@
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="51"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="53"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="54"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="56"/>
         <source>the frame list</source>
         <translation>フレーム一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="61"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
         <source>a frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>フレームが途中で切れているため、以降のフレームとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="76"/>
         <source>%1; the frame is left out</source>
         <translation>%1。このフレームは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="82"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
         <source>a frame id</source>
         <translation>フレーム ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="83"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
         <source>the frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="84"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>a frame hold</source>
         <translation>フレームの表示時間</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="91"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>表示時間 %1 が 1～%2 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
         <source>the object list</source>
         <translation>オブジェクト一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="97"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
         <source>an object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>オブジェクトが途中で切れているため、以降のオブジェクトとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
         <source>%1; the object is left out</source>
         <translation>%1。このオブジェクトは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="202"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="118"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="205"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="206"/>
         <source>a chunk header</source>
         <translation>チャンクヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="116"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="204"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="222"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
         <source>a chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
         <source>chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="125"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
         <source>an object id</source>
         <translation>オブジェクト ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="126"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
         <source>the object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="127"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>the object flags</source>
         <translation>オブジェクトのフラグ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>オブジェクトのフラグ 0x%1 は不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
         <source>the mesh density</source>
         <translation>メッシュ密度</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>メッシュ密度 %1 が 0～1000 の数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="150"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
         <source>the object name</source>
         <translation>オブジェクト名</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>オブジェクト名が %1 バイトあります（最大 %2 バイト）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="167"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>オブジェクト名が有効な UTF-8 テキストではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="171"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="174"/>
         <source>the stroke list</source>
         <translation>ストローク一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
         <source>a stroke id</source>
         <translation>ストローク ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="189"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="192"/>
         <source>the stroke</source>
         <translation>ストローク</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="334"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>ポーズのストローク数は %n ですが、オブジェクトのストローク数は %1 です</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="341"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>ストローク %1 の点の数は %n ですが、ポーズでは %2 です</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
         <source>a stroke reference</source>
         <translation>ストロークの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="42"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="45"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 には %2 個の項目があるはずですが、収まっている %3 個を読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="185"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>ストロークデータ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
         <source>an unknown chunk is left out</source>
         <translation>不明なチャンクを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="217"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>チャンク %1 が 2 回、または別のリグと一緒に現れます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="229"/>
         <source>%1; the chunk is left out</source>
         <translation>%1。このチャンクは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
         <source>the skeleton&apos;s join</source>
         <translation>スケルトンの接続</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="259"/>
         <source>a join comes without a skeleton</source>
         <translation>スケルトンのない接続があります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="267"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>スケルトンの接続が壊れています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="277"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
         <source>the pin list</source>
         <translation>ピン一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="282"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
         <source>a pin id</source>
         <translation>ピン ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="283"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>pin %1</source>
         <translation>ピン %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
         <source>a pin position</source>
         <translation>ピンの位置</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
         <source>pin %1 has a non-finite position</source>
         <translation>ピン %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
         <source>the cage corner list</source>
         <translation>ケージの頂点一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="302"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="305"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>ケージの頂点が 3 個未満です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
         <source>a cage corner</source>
         <translation>ケージの頂点</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="315"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>ケージの頂点 %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
         <source>a pose reference</source>
         <translation>ポーズの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="323"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>ポーズがポーズ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="327"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>its pose: %1</source>
         <translation>ポーズ: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="350"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="353"/>
         <source>%1 has no id</source>
         <translation>%1 に ID がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="351"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="354"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 の ID %2 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="362"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
@@ -2634,43 +2634,50 @@
         <source>Take the pins, the cage or the skeleton off the current object</source>
         <translation>現在のオブジェクトからピン、ケージ、またはスケルトンを外す</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/rig/deform_actions.cpp" line="56"/>
+        <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
+        <translation>
+            <numerusform>ピンが絵を折り返しています。ピンの間に余地がないため、メッシュの三角形 %n 個が裏返っています（表示 → メッシュを表示 で赤く示されます）</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="51"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
         <source>Preparing the deformation…</source>
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="71"/>
         <source>R&amp;igidity</source>
         <translation>剛性(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="75"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="85"/>
         <source>Converged (Most Rigid)</source>
         <translation>収束まで（最も硬く）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="76"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>論文どおり（2 段階）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="77"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>より硬く（+1 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="78"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>最も硬く（+3 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="111"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="121"/>
         <source>Mesh density </source>
         <translation>メッシュ密度 </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="112"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>現在のオブジェクトの変形メッシュの細かさ（1 = 標準）</translation>
     </message>

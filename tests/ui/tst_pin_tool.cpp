@@ -31,6 +31,21 @@ StrokeDataPtr bar(float y)
     return data;
 }
 
+// A closed square outline from (300, 200) to (600, 500): a solid tile.
+StrokeDataPtr tile()
+{
+    auto data = std::make_shared<StrokeData>();
+    const QPointF corners[] = {{300, 200}, {600, 200}, {600, 500}, {300, 500}, {300, 200}};
+    for (int side = 0; side < 4; ++side)
+        for (int i = 0; i < 30; ++i) {
+            const QPointF p = corners[side] + (corners[side + 1] - corners[side]) * (i / 30.0);
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        }
+    data->points.push_back(data->points.front());
+    data->width = 4.0f;
+    return data;
+}
+
 struct Fixture {
     Document doc;
     EditorState state{&doc};
@@ -39,15 +54,20 @@ struct Fixture {
     PinTool *tool = nullptr;
     Id group = kNoId;
 
-    Fixture()
+    // An arm of two strokes, or with `solidTile` the tile.
+    explicit Fixture(bool solidTile = false)
     {
         Frame f;
         f.id = doc.allocateId();
         StrokeGroup g;
         g.id = doc.allocateId();
         g.name = QStringLiteral("arm");
-        g.strokes.push_back({doc.allocateId(), bar(300)});
-        g.strokes.push_back({doc.allocateId(), bar(306)});
+        if (solidTile) {
+            g.strokes.push_back({doc.allocateId(), tile()});
+        } else {
+            g.strokes.push_back({doc.allocateId(), bar(300)});
+            g.strokes.push_back({doc.allocateId(), bar(306)});
+        }
         f.groups.push_back(g);
         group = g.id;
         DocumentSettings s;
@@ -95,6 +115,7 @@ private slots:
     void addDragRemoveWithUndo();
     void drawingOnPosedObjectKeepsWhatIsShown();
     void showMeshDrawsTheObjectsMesh();
+    void foldsThePinsForceShowRedAndAreSaid();
     void clickOffTheDrawingAddsNothing();
     void lockedObjectsAreNotPinned();
     void clickInsideAnUnpinnedOutlinePins();
@@ -208,6 +229,62 @@ void TestPinTool::showMeshDrawsTheObjectsMesh()
     QVERIFY2(shown > before + 200, qPrintable(QStringLiteral("%1 -> %2").arg(before).arg(shown)));
     fx.state.setShowMesh(false);
     QCOMPARE(meshPixels(fx.canvas.grab().toImage()), before);
+}
+
+namespace {
+// Pixels in the fold colour of Show Mesh (red).
+int foldPixels(const QImage &image)
+{
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (c.red() > 180 && c.red() > c.green() + 80 && c.red() > c.blue() + 80)
+                ++count;
+        }
+    return count;
+}
+} // namespace
+
+// Issue 26: a fold the pins force stays in the pose; Show Mesh fills its triangles red and the
+// window says so once the pose has settled.
+void TestPinTool::foldsThePinsForceShowRedAndAreSaid()
+{
+    Fixture fx(true);
+    QSignalSpy messages(&fx.actions, &DeformActions::messagePosted);
+    for (const QPointF p : {QPointF(330, 230), QPointF(570, 230), QPointF(450, 470)})
+        QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at(p));
+    QCOMPARE(fx.object().rig.pins.size(), std::size_t(3));
+    QVERIFY(fx.waitReady());
+    // Red pixels Show Mesh adds (the pins are drawn red-orange either way).
+    const auto foldShown = [&] {
+        fx.state.setShowMesh(false);
+        const int without = foldPixels(fx.canvas.grab().toImage());
+        fx.state.setShowMesh(true);
+        return foldPixels(fx.canvas.grab().toImage()) - without;
+    };
+    fx.state.setShowMesh(true);
+    const auto saidFold = [&] {
+        for (const auto &args : messages)
+            if (args.at(0).toString().contains(QStringLiteral("fold")))
+                return true;
+        return false;
+    };
+    // A bend with room: no red, nothing said.
+    fx.drag({450, 470}, {480, 520});
+    QTest::qWait(300); // the converged pose follows shortly after the pin stops
+    QVERIFY(!fx.actions.controller()->isSettling(fx.group));
+    QCOMPARE(foldShown(), 0);
+    QVERIFY(!saidFold());
+    // The third pin dragged through the line of the other two: the mesh must fold.
+    fx.drag({480, 520}, {450, 20});
+    QTRY_VERIFY_WITH_TIMEOUT(saidFold(), 5000);
+    QVERIFY(!fx.actions.controller()->isSettling(fx.group));
+    const int red = foldShown();
+    QVERIFY2(red > 20, qPrintable(QString::number(red)));
+    fx.doc.undoStack()->undo();
+    QTRY_VERIFY_WITH_TIMEOUT(!fx.actions.controller()->isSettling(fx.group), 5000);
+    QCOMPARE(foldShown(), 0);
 }
 
 void TestPinTool::clickOffTheDrawingAddsNothing()

@@ -34,7 +34,7 @@
 <context>
     <name>FinbookFile</name>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="334"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>its pose has %n stroke but the object has %1</numerusform>
@@ -42,7 +42,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="337"/>
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="341"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>stroke %1 has %n point but its pose has %2</numerusform>
@@ -80,8 +80,9 @@
 <context>
     <name>Reference</name>
     <message numerus="yes">
-        <location filename="../../model/src/reference/reference_sequence.cpp" line="116"/>
+        <location filename="../../model/src/reference/reference_sequence.cpp" line="108"/>
         <source>%1 and %n more</source>
+        <extracomment>%1 is the first file&apos;s name, %n how many pictures follow it</extracomment>
         <translation>
             <numerusform>%1 and %n more</numerusform>
             <numerusform>%1 and %n more</numerusform>
@@ -107,6 +108,17 @@
         <translation>
             <numerusform>Joined %n part.</numerusform>
             <numerusform>Joined %n parts.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::DeformActions</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/rig/deform_actions.cpp" line="56"/>
+        <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
+        <translation>
+            <numerusform>The pins fold the drawing: %n triangle of its mesh turned over where the pins leave no room (View → Show Mesh shows it red)</numerusform>
+            <numerusform>The pins fold the drawing: %n triangles of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</numerusform>
         </translation>
     </message>
 </context>
@@ -154,7 +166,7 @@
 <context>
     <name>finbook::ui::ReferencePanel</name>
     <message numerus="yes">
-        <location filename="../../ui/src/reference/reference_panel.cpp" line="177"/>
+        <location filename="../../ui/src/reference/reference_panel.cpp" line="183"/>
         <source>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</source>
         <translation>
             <numerusform>“%1” is one of %n numbered picture (%2 … %3). Import it as a sequence, one picture per frame?</numerusform>

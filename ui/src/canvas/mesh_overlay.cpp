@@ -1,3 +1,4 @@
+#include <finbook/deform/arap.h>
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/canvas/mesh_overlay.h>
 #include <finbook/ui/window/editor_state.h>
@@ -42,6 +43,37 @@ void MeshOverlay::requestMissing()
     }
 }
 
+// Triangles the pose turns inside out, red under the mesh lines: folds the pins force
+// (a converged pin pose keeps no other), a cage crossing itself, a drag not yet settled.
+void MeshOverlay::paintFolds(QPainter &painter, const QTransform &canvasToWidget,
+                             const model::DeformSetup &setup, const Eigen::MatrixX2d &U)
+{
+    const Eigen::MatrixX3i &F = setup.meshTriangles();
+    const std::vector<int> folds = deform::arapFlippedTriangleRows(setup.meshVertices(), F, U);
+    if (folds.empty())
+        return;
+    // Filled, and ringed: a forced fold is often a sliver, or a few triangles round one
+    // point, with next to no area at any zoom.
+    const QColor red(220, 30, 30);
+    painter.save();
+    painter.setPen(QPen(red, 1.5));
+    painter.setBrush(QColor(220, 30, 30, 170));
+    QVector<QPointF> centres;
+    centres.reserve(qsizetype(folds.size()));
+    for (const int t : folds) {
+        QPolygonF triangle;
+        for (int k = 0; k < 3; ++k)
+            triangle << canvasToWidget.map(QPointF(U(F(t, k), 0), U(F(t, k), 1)));
+        painter.drawPolygon(triangle);
+        centres.append((triangle[0] + triangle[1] + triangle[2]) / 3.0);
+    }
+    painter.setPen(QPen(red, 2.0));
+    painter.setBrush(Qt::NoBrush);
+    for (const QPointF &c : centres)
+        painter.drawEllipse(c, 11.0, 11.0); // round a pin dot there too
+    painter.restore();
+}
+
 void MeshOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
 {
     const model::Frame *f = m_state->currentFrame();
@@ -56,6 +88,7 @@ void MeshOverlay::paint(QPainter &painter, const QTransform &canvasToWidget)
         if (!g.visible || !setup)
             continue;
         const Eigen::MatrixX2d &U = *m_controller->poseVertices(g.id);
+        paintFolds(painter, canvasToWidget, *setup, U);
         QColor colour = g.id == current ? QColor(20, 140, 200, 150) : QColor(120, 120, 120, 110);
         painter.setPen(QPen(colour, 0.8));
         // A cage's interior mesh, or a cut-out skeleton's cut mesh: triangles only.

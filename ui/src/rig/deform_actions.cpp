@@ -47,6 +47,16 @@ DeformActions::DeformActions(EditorState *state, QObject *parent)
     });
     connect(&m_controller, &model::DeformController::errorOccurred, this,
             [this](model::Id, const QString &message) { emit messagePosted(message); });
+    // Folds the pins force stay in the pose (deform/arap.h): the window says so for the object
+    // being worked on, and Show Mesh draws the turned-over triangles red.
+    connect(&m_controller, &model::DeformController::foldsForced, this,
+            [this](model::Id groupId, int triangles) {
+                if (groupId == m_state->currentGroupId())
+                    emit messagePosted(
+                        tr("The pins fold the drawing: %n triangle(s) of its mesh turned over "
+                           "where the pins leave no room (View → Show Mesh shows them red)",
+                           nullptr, triangles));
+            });
     connect(&m_controller, &model::DeformController::busyChanged, this, [this](bool busy) {
         emit messagePosted(busy ? tr("Preparing the deformation…") : QString());
     });

@@ -1,5 +1,6 @@
 // View → Show Mesh: draws each visible object's deformation mesh (posed when it has pins)
-// over the current frame. Meshes are built on demand by the DeformController's worker.
+// over the current frame, the triangles the pose turns inside out filled red. Meshes are
+// built on demand by the DeformController's worker.
 #pragma once
 
 #include <finbook/model/deform_controller.h>
@@ -20,6 +21,8 @@ public:
 
 private:
     void requestMissing();
+    static void paintFolds(QPainter &painter, const QTransform &canvasToWidget,
+                           const model::DeformSetup &setup, const Eigen::MatrixX2d &U);
 
     EditorState *m_state;
     model::DeformController *m_controller;
