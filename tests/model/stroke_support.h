@@ -1,4 +1,5 @@
-// Strokes the model tests draw by hand: evenly spaced points on a straight line.
+// Strokes the model tests draw by hand: evenly spaced points on a straight line or round a
+// square.
 #pragma once
 
 #include <finbook/model/types.h>
@@ -16,6 +17,24 @@ inline model::StrokeDataPtr lineStroke(QPointF from, QPointF to, int points, flo
         const QPointF p = from + (to - from) * (double(i) / (points - 1));
         data->points.push_back({float(p.x()), float(p.y()), 1.0f});
     }
+    return data;
+}
+
+// A closed square outline (the last point is the first) from `corner` to `corner` + (side,
+// side), `perSide` points a side, pressure 1: the object a pen draws round a solid tile.
+inline model::StrokeDataPtr squareOutline(QPointF corner, double side, int perSide, float width)
+{
+    auto data = std::make_shared<model::StrokeData>();
+    data->width = width;
+    const QPointF corners[] = {corner, corner + QPointF(side, 0), corner + QPointF(side, side),
+                               corner + QPointF(0, side), corner};
+    for (int edge = 0; edge < 4; ++edge)
+        for (int i = 0; i < perSide; ++i) {
+            const QPointF p =
+                corners[edge] + (corners[edge + 1] - corners[edge]) * (double(i) / perSide);
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        }
+    data->points.push_back(data->points.front());
     return data;
 }
 

@@ -1,4 +1,6 @@
 // ARAP in the model: pin commands, the worker-thread precompute service and the controller.
+#include "stroke_support.h"
+
 #include <finbook/model/deform_controller.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
@@ -82,21 +84,12 @@ Id makeArm(Document &doc)
 // One frame, one object: a closed square outline from (100, 100) to (400, 400), solid inside.
 Id makeTile(Document &doc)
 {
-    auto data = std::make_shared<StrokeData>();
-    const QPointF corners[] = {{100, 100}, {400, 100}, {400, 400}, {100, 400}, {100, 100}};
-    for (int side = 0; side < 4; ++side)
-        for (int i = 0; i < 30; ++i) {
-            const QPointF p = corners[side] + (corners[side + 1] - corners[side]) * (i / 30.0);
-            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-        }
-    data->points.push_back(data->points.front());
-    data->width = 4.0f;
     Frame f;
     f.id = doc.allocateId();
     StrokeGroup g;
     g.id = doc.allocateId();
     g.name = QStringLiteral("tile");
-    g.strokes.push_back({doc.allocateId(), data});
+    g.strokes.push_back({doc.allocateId(), testing::squareOutline({100, 100}, 300, 30, 4.0f)});
     f.groups.push_back(g);
     doc.reset({f}, DocumentSettings{}, doc.nextId());
     return g.id;

@@ -1,4 +1,5 @@
 // The Pin tool driven by real mouse events on the real canvas: add, drag, remove, undo.
+#include "../model/stroke_support.h"
 #include "tst_tools_support.h"
 
 #include <finbook/model/finbook_file.h>
@@ -31,21 +32,6 @@ StrokeDataPtr bar(float y)
     return data;
 }
 
-// A closed square outline from (300, 200) to (600, 500): a solid tile.
-StrokeDataPtr tile()
-{
-    auto data = std::make_shared<StrokeData>();
-    const QPointF corners[] = {{300, 200}, {600, 200}, {600, 500}, {300, 500}, {300, 200}};
-    for (int side = 0; side < 4; ++side)
-        for (int i = 0; i < 30; ++i) {
-            const QPointF p = corners[side] + (corners[side + 1] - corners[side]) * (i / 30.0);
-            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-        }
-    data->points.push_back(data->points.front());
-    data->width = 4.0f;
-    return data;
-}
-
 struct Fixture {
     Document doc;
     EditorState state{&doc};
@@ -63,7 +49,9 @@ struct Fixture {
         g.id = doc.allocateId();
         g.name = QStringLiteral("arm");
         if (solidTile) {
-            g.strokes.push_back({doc.allocateId(), tile()});
+            // a solid tile from (300, 200) to (600, 500)
+            g.strokes.push_back(
+                {doc.allocateId(), testing::squareOutline({300, 200}, 300, 30, 4.0f)});
         } else {
             g.strokes.push_back({doc.allocateId(), bar(300)});
             g.strokes.push_back({doc.allocateId(), bar(306)});
@@ -205,17 +193,29 @@ void TestPinTool::drawingOnPosedObjectKeepsWhatIsShown()
 }
 
 namespace {
-// Pixels in the Show Mesh colour (blue, blended over white page and black strokes).
-int meshPixels(const QImage &image)
+// Pixels of `image` whose colour `is` accepts.
+template <class Colour> int pixelsWhere(const QImage &image, Colour is)
 {
     int count = 0;
     for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x) {
-            const QColor c = image.pixelColor(x, y);
-            if (c.blue() > c.red() + 40 && c.blue() > 120)
-                ++count;
-        }
+        for (int x = 0; x < image.width(); ++x)
+            count += is(image.pixelColor(x, y)) ? 1 : 0;
     return count;
+}
+
+// Pixels in the Show Mesh colour (blue, blended over white page and black strokes).
+int meshPixels(const QImage &image)
+{
+    return pixelsWhere(image,
+                       [](const QColor &c) { return c.blue() > c.red() + 40 && c.blue() > 120; });
+}
+
+// Pixels in the fold colour of Show Mesh (red).
+int foldPixels(const QImage &image)
+{
+    return pixelsWhere(image, [](const QColor &c) {
+        return c.red() > 180 && c.red() > c.green() + 80 && c.red() > c.blue() + 80;
+    });
 }
 } // namespace
 
@@ -230,21 +230,6 @@ void TestPinTool::showMeshDrawsTheObjectsMesh()
     fx.state.setShowMesh(false);
     QCOMPARE(meshPixels(fx.canvas.grab().toImage()), before);
 }
-
-namespace {
-// Pixels in the fold colour of Show Mesh (red).
-int foldPixels(const QImage &image)
-{
-    int count = 0;
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x) {
-            const QColor c = image.pixelColor(x, y);
-            if (c.red() > 180 && c.red() > c.green() + 80 && c.red() > c.blue() + 80)
-                ++count;
-        }
-    return count;
-}
-} // namespace
 
 // Issue 26: a fold the pins force stays in the pose; Show Mesh fills its triangles red and the
 // window says so once the pose has settled.
