@@ -66,33 +66,33 @@ StrokeDataPtr wobble(float x0, float y0, float length, int n)
     return data;
 }
 
-// One frame, one object with two long overlapping strokes (an "arm").
-Id makeArm(Document &doc)
+// The document becomes one frame with one object of these strokes; returns the object's id.
+Id makeObject(Document &doc, const QString &name, std::initializer_list<StrokeDataPtr> strokes)
 {
     Frame f;
     f.id = doc.allocateId();
     StrokeGroup g;
     g.id = doc.allocateId();
-    g.name = QStringLiteral("arm");
-    g.strokes.push_back({doc.allocateId(), wobble(100, 100, 300, 120)});
-    g.strokes.push_back({doc.allocateId(), wobble(100, 106, 300, 120)}); // overlaps: one lobe
+    g.name = name;
+    for (const StrokeDataPtr &data : strokes)
+        g.strokes.push_back({doc.allocateId(), data});
     f.groups.push_back(g);
     doc.reset({f}, DocumentSettings{}, doc.nextId());
     return g.id;
 }
 
-// One frame, one object: a closed square outline from (100, 100) to (400, 400), solid inside.
+// An object of two long overlapping strokes (an "arm"; they overlap: one lobe).
+Id makeArm(Document &doc)
+{
+    return makeObject(doc, QStringLiteral("arm"),
+                      {wobble(100, 100, 300, 120), wobble(100, 106, 300, 120)});
+}
+
+// An object of a closed square outline from (100, 100) to (400, 400), solid inside.
 Id makeTile(Document &doc)
 {
-    Frame f;
-    f.id = doc.allocateId();
-    StrokeGroup g;
-    g.id = doc.allocateId();
-    g.name = QStringLiteral("tile");
-    g.strokes.push_back({doc.allocateId(), testing::squareOutline({100, 100}, 300, 30, 4.0f)});
-    f.groups.push_back(g);
-    doc.reset({f}, DocumentSettings{}, doc.nextId());
-    return g.id;
+    return makeObject(doc, QStringLiteral("tile"),
+                      {testing::squareOutline({100, 100}, 300, 30, 4.0f)});
 }
 
 // Pins at both ends of the arm, at rest.
