@@ -126,9 +126,9 @@ std::shared_ptr<const ArapPrecompute> prepare(const Eigen::MatrixX2d &V, const E
 std::vector<bool> flippedTriangles(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F,
                                    const Eigen::MatrixX2d &U)
 {
-    std::vector<bool> flipped(std::size_t(F.rows()));
-    for (Eigen::Index t = 0; t < F.rows(); ++t)
-        flipped[std::size_t(t)] = arapFlippedTriangles(V, F.row(t), U) > 0;
+    std::vector<bool> flipped(std::size_t(F.rows()), false);
+    for (const int t : arapFlippedTriangleRows(V, F, U))
+        flipped[std::size_t(t)] = true;
     return flipped;
 }
 

@@ -179,18 +179,16 @@ void TestArapUntangle::foldBesideAPinnedBandOpensInAColdEvent()
     QVERIFY(reference && deformer && deformer->coarseLevel);
     const Eigen::MatrixX2d converged = solved(*reference, bend.bc, ArapStage::Final);
     std::set<int> forced; // the corners of the converged pose's folds
-    for (Eigen::Index t = 0; t < F.rows(); ++t)
-        if (arapFlippedTriangles(V, F.row(t), converged) > 0)
-            forced.insert(F.row(t).data(), F.row(t).data() + 3);
+    for (const int t : arapFlippedTriangleRows(V, F, converged))
+        forced.insert({F(t, 0), F(t, 1), F(t, 2)});
     ArapSolveReport report;
     const Eigen::MatrixX2d U = solved(*deformer, bend.bc, ArapStage::Drag, &report);
     QVERIFY(U.allFinite());
     QCOMPARE(finbook::test::rowsOf(U, bend.b), bend.bc);
     QCOMPARE(report.flippedTriangles, arapFlippedTriangles(V, F, U));
     int apart = 0;
-    for (Eigen::Index t = 0; t < F.rows(); ++t)
-        if (arapFlippedTriangles(V, F.row(t), U) > 0 && !forced.count(F(t, 0)) &&
-            !forced.count(F(t, 1)) && !forced.count(F(t, 2)))
+    for (const int t : arapFlippedTriangleRows(V, F, U))
+        if (!forced.count(F(t, 0)) && !forced.count(F(t, 1)) && !forced.count(F(t, 2)))
             ++apart;
     QCOMPARE(apart, 0);
     const double ratio = arapCotangentEnergy(V, F, U) / arapCotangentEnergy(V, F, converged);
