@@ -127,15 +127,20 @@ void buildVertexTriangles(ArapPrecompute &d)
 }
 
 // Edges whose assembled weight is negative: positive off-diagonal entries of H00 (upper
-// half) and of H01.
+// half) and of H01. An edge facing two angles that add up to exactly 180° (its quad's corners
+// on one circle, as a CDT makes them on a regular layout) weighs 0, computed as round-off of
+// either sign: entries within kZeroWeight of the largest diagonal entry are 0, not negative.
 int countNegativeWeights(const ArapPrecompute &d)
 {
+    constexpr double kZeroWeight = 1e-12;
+    const Eigen::VectorXd diagonal = d.stepTwoMatrix.diagonal();
+    const double zero = diagonal.size() > 0 ? kZeroWeight * diagonal.cwiseAbs().maxCoeff() : 0.0;
     int count = 0;
     for (const auto *m : {&d.stepTwoMatrix, &d.stepTwoCoupling}) {
         for (Eigen::Index col = 0; col < m->outerSize(); ++col) {
             for (ArapPrecompute::RealMatrix::InnerIterator it(*m, col); it; ++it) {
                 const bool offDiagonal = m == &d.stepTwoCoupling || it.row() < it.col();
-                count += offDiagonal && it.value() > 0.0 ? 1 : 0;
+                count += offDiagonal && it.value() > zero ? 1 : 0;
             }
         }
     }

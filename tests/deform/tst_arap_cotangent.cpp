@@ -119,6 +119,7 @@ class TestArapCotangent : public QObject {
 
 private slots:
     void storedPoseIsStationaryForTheCotangentEnergy();
+    void cocircularEdgesAreNotCountedNegative();
     void energyFormsAgree();
     void poseDoesNotDependOnTheTriangulation();
     void storedPoseAddsNoFlips();
@@ -151,6 +152,29 @@ void TestArapCotangent::storedPoseIsStationaryForTheCotangentEnergy()
     const double atUniform = freeGradientNorm(cotangentGradient(g.V, g.F, other), bend.b);
     QVERIFY2(atUniform > 1e-2 * scale, qPrintable(QString::number(atUniform / scale)));
     QVERIFY(arapCotangentEnergy(g.V, g.F, stored) < arapCotangentEnergy(g.V, g.F, other));
+}
+
+// A grid of squares, each cut by a diagonal, turned: the diagonals face two right angles, so
+// their weight is 0 (cot 90° + cot 90°), computed as round-off of either sign. The CDT meshes
+// the app builds have such edges (a horse's ~2k-vertex mesh has two), and they are not
+// negative. Sheared cells make real negative weights, which are counted.
+void TestArapCotangent::cocircularEdgesAreNotCountedNegative()
+{
+    GridMesh g = finbook::test::gridMesh(30, 10, 3.0, 1.0);
+    const double turn = 0.37;
+    Eigen::Matrix2d R;
+    R << std::cos(turn), -std::sin(turn), std::sin(turn), std::cos(turn);
+    g.V = (g.V * R.transpose()).eval();
+    const Bend bend = bendEnds(g, 0.5, 0.0);
+    const auto square = precompute(g.V, g.F, bend.b);
+    QVERIFY(square);
+    QCOMPARE(square->negativeWeightEdges, 0);
+    Eigen::Matrix2d shear;
+    shear << 1.0, 0.6, 0.0, 1.0;
+    g.V = (g.V * shear.transpose()).eval();
+    const auto sheared = precompute(g.V, g.F, bendEnds(g, 0.5, 0.0).b);
+    QVERIFY(sheared);
+    QVERIFY(sheared->negativeWeightEdges > 0);
 }
 
 // The energy the solver descends (edge form, cotangent weights) is the one measured from J:

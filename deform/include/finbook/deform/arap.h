@@ -17,7 +17,8 @@
 // per drag event, to convergence for a stored pose; then flipped triangles are repaired by
 // local relaxation of the same energy. The cotangent weight of an edge is negative where the
 // angles opposite it add up to more than 180° (a non-Delaunay edge, or a boundary edge facing an
-// obtuse angle); the CDT meshes the app builds have none, and where one occurs it is kept as
+// obtuse angle); the CDT meshes the app builds have none (an edge whose opposite angles add up to
+// exactly 180° weighs 0, whatever sign its round-off has), and where one occurs it is kept as
 // it is: the energy is still a sum of per-triangle squares area·‖J − R‖², so both systems
 // stay positive definite and every pass still lowers it.
 //
