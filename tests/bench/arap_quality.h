@@ -17,7 +17,8 @@ namespace finbook::bench {
 // a stored pose, and a converged reference (tolerance 1e-10 of the size, flip repair off).
 // Columns: ratios of the cotangent ARAP energy (arapCotangentEnergy) to the reference's, area
 // change in %, flipped triangles (_flips_beyond_reference: those not flipped in the reference;
-// _flips_apart_from_reference: those sharing no vertex with a reference flip), times in ms
+// _flips_apart_from_reference: those sharing no vertex with a reference flip;
+// _flips_over_reference_folds: fold by fold, flips over the reference's), times in ms
 // (fastest of several runs), passes run, drag_over_two_step (drag time over the two steps'),
 // the stored pose's last relative energy change. drag_* is one cold drag event to the bend's
 // targets (arapSolve, Drag: from step 1 or coarse rotations, what every event of a drag
