@@ -301,4 +301,67 @@ QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, do
     return row;
 }
 
+QJsonObject summariseBends(const QList<QJsonObject> &rows)
+{
+    QList<QJsonObject> measured;
+    for (const QJsonObject &row : rows)
+        if (!row.contains(QStringLiteral("error")))
+            measured.append(row);
+    QJsonObject summary{{QStringLiteral("bench"), QStringLiteral("arap_quality_summary")},
+                        {QStringLiteral("drawings"), qint64(measured.size())},
+                        {QStringLiteral("failed"), qint64(rows.size() - measured.size())}};
+    const auto values = [&](const QString &column) {
+        std::vector<double> out;
+        for (const QJsonObject &row : measured)
+            if (row.value(column).isDouble())
+                out.push_back(row.value(column).toDouble());
+        return out;
+    };
+    const auto sum = [&](const QString &column) {
+        double total = 0.0;
+        for (const double v : values(column))
+            total += v;
+        return qint64(total);
+    };
+    const auto medianAndMax = [&](const QString &column) {
+        std::vector<double> v = values(column);
+        if (v.empty())
+            return;
+        summary.insert(column + QStringLiteral("_max"), *std::max_element(v.begin(), v.end()));
+        summary.insert(column + QStringLiteral("_median"), bench::median(std::move(v)));
+    };
+    for (const char *mode : {"drag", "fast", "warm", "stored"}) {
+        const QString prefix = QString::fromLatin1(mode);
+        const QString ratio = prefix + QStringLiteral("_energy_ratio");
+        medianAndMax(ratio);
+        const QJsonObject *worst = nullptr;
+        for (const QJsonObject &row : measured)
+            if (row.value(ratio).isDouble() &&
+                (!worst || row.value(ratio).toDouble() > worst->value(ratio).toDouble()))
+                worst = &row;
+        if (worst)
+            summary.insert(ratio + QStringLiteral("_max_file"),
+                           worst->value(QStringLiteral("file")));
+        for (const char *flips : {"_flips", "_flips_beyond_reference",
+                                  "_flips_over_reference_folds", "_flips_apart_from_reference"})
+            summary.insert(prefix + QString::fromLatin1(flips),
+                           sum(prefix + QString::fromLatin1(flips)));
+        std::vector<double> cpu = values(prefix + QStringLiteral("_cpu_ms"));
+        if (!cpu.empty())
+            summary.insert(prefix + QStringLiteral("_cpu_ms_median"),
+                           bench::median(std::move(cpu)));
+    }
+    medianAndMax(QStringLiteral("stored_passes"));
+    medianAndMax(QStringLiteral("stored_ms"));
+    medianAndMax(QStringLiteral("warm_event_max_cpu_ms"));
+    qint64 converged = 0;
+    for (const QJsonObject &row : measured)
+        converged += row.value(QStringLiteral("stored_converged")).toBool() ? 1 : 0;
+    summary.insert(QStringLiteral("stored_converged"), converged);
+    summary.insert(QStringLiteral("reference_flips"), sum(QStringLiteral("reference_flips")));
+    summary.insert(QStringLiteral("negative_weight_edges"),
+                   sum(QStringLiteral("negative_weight_edges")));
+    return summary;
+}
+
 } // namespace finbook::bench

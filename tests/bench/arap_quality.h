@@ -5,6 +5,7 @@
 #include "../deform/drawing_bend.h"
 
 #include <QJsonObject>
+#include <QList>
 #include <QString>
 
 #include <Eigen/Core>
@@ -29,5 +30,13 @@ namespace finbook::bench {
 // in arap_quality.cpp) for checking against another solver.
 QJsonObject measureBend(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, double degrees,
                         const QString &dumpDirectory = {});
+
+// The rows of measureBend over many drawings in one row (bench "arap_quality_summary"): per
+// mode (drag, fast, warm, stored) the median and largest energy ratio (and the drawing with
+// the largest), the flip columns summed and the median CPU time; the stored pose's passes and
+// time (median and largest) and how many converged; the reference's flips and the
+// negative-weight edges summed. Rows with an error count in "failed"; rigid bends (null
+// ratio) are left out of the ratios.
+QJsonObject summariseBends(const QList<QJsonObject> &rows);
 
 } // namespace finbook::bench

@@ -239,7 +239,8 @@ int runSize(int vertices, bool sixPercent, bool bar)
 
 void printRow(QJsonObject row)
 {
-    row.insert(QStringLiteral("bench"), QStringLiteral("arap_quality"));
+    if (!row.contains(QStringLiteral("bench")))
+        row.insert(QStringLiteral("bench"), QStringLiteral("arap_quality"));
     std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
     std::fflush(stdout);
 }
@@ -267,7 +268,7 @@ int runQuality(QStringList files)
         dumpDirectory = files[at + 1];
         files.remove(at, 2);
     }
-    int failures = 0;
+    QList<QJsonObject> rows;
     for (const QString &path : files) {
         QString error;
         const auto mesh = finbook::test::meshDrawing(path, error, density);
@@ -275,10 +276,13 @@ int runQuality(QStringList files)
             mesh ? finbook::bench::measureBend(mesh->first, mesh->second, 45.0, dumpDirectory)
                  : QJsonObject{{QStringLiteral("error"), error}};
         row.insert(QStringLiteral("file"), QFileInfo(path).fileName());
-        failures += row.contains(QStringLiteral("error")) ? 1 : 0;
         printRow(row);
+        rows.append(row);
     }
-    return failures == 0 ? 0 : 1;
+    const QJsonObject summary = finbook::bench::summariseBends(rows);
+    if (rows.size() > 1)
+        printRow(summary);
+    return summary.value(QStringLiteral("failed")).toInt() == 0 ? 0 : 1;
 }
 
 int benchArap(const QStringList &args)
