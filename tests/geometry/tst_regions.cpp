@@ -101,6 +101,7 @@ private slots:
     void overshootSliverIsMerged();
     void whiskerInsideClosedFaceIsNotJoined();
     void barEndIsNotSpentOnItsOwnStem();
+    void closedGapsEndIsNotClosedAgain();
     void degenerateInput();
     void scribbleIsRefusedQuickly();
     void objectShapeOfTidyOutlineIsItsSilhouette();
@@ -361,6 +362,26 @@ void TestRegions::barEndIsNotSpentOnItsOwnStem()
     };
     for (const GapClosure &g : r.closures)
         QVERIFY2(!(onBar(g.from) && onBar(g.to)), "a closure lies along the bar");
+}
+
+// Issue 45: a 4 px gap in a body's outline closed, then a second closure ran from the gap's
+// other end to the arm nearby, and Fill All filled the armpit wedge it made.
+void TestRegions::closedGapsEndIsNotClosedAgain()
+{
+    StrokeInput body = cShape(50, 4.0);
+    // The arm leaves the body above the gap and runs out to the right, 22 px from the gap.
+    const StrokeInput arm{
+        polyline({{50 * std::cos(0.5), -50 * std::sin(0.5)}, {140, -50 * std::sin(0.5)}}), 3.0};
+    for (bool armFirst : {false, true}) {
+        const std::vector<StrokeInput> strokes =
+            armFirst ? std::vector<StrokeInput>{arm, body} : std::vector<StrokeInput>{body, arm};
+        const Regions r = regionsOf(strokes, 30.0);
+        checkRegions(r, 2);
+        QCOMPARE(int(r.closures.size()), 1);
+        QVERIFY((r.closures[0].to - r.closures[0].from).norm() < 5.0);
+        QCOMPARE(int(r.faces.size()), 1); // the body, no wedge
+        QVERIFY(r.faces[0].area > 0.95 * M_PI * 2500);
+    }
 }
 
 void TestRegions::degenerateInput()

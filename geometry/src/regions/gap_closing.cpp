@@ -211,6 +211,16 @@ public:
         m_map.insert(c.exact ? LabelledSegment{e.point, c.to, -1} : linkTo(e.point, c.to, -1));
         m_parts.join(e.stroke, c.toStroke);
         closures.push_back({e.point, c.to, e.stroke, c.toStroke});
+        // A free end the closure now touches (the other side of the gap, when the closure
+        // went to the point of its stroke rather than to the end itself) has had its gap
+        // closed: left free, it would reach on to whatever line is nearest (an arm beside
+        // the gap) and close nothing but a sliver.
+        for (std::size_t k = 0; k < m_ends.size(); ++k) {
+            const End &o = m_ends[k];
+            if (!m_used[k] && (closestOnSegment(o.point, e.point, c.to) - o.point).norm() <=
+                                  touchTolerance(m_soup, o.stroke, e.stroke) + kContactSlack)
+                m_used[k] = true;
+        }
     }
 
     std::vector<GapClosure> closures;

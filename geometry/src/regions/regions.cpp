@@ -148,4 +148,35 @@ int faceAt(const Regions &regions, double x, double y)
     return best;
 }
 
+double closureShare(const Regions &regions, int face)
+{
+    if (face < 0 || std::size_t(face) >= regions.faces.size())
+        return 0.0;
+    // An outline edge lies on a closure when both its ends do (closures reach 0.01 px past
+    // the line they end on, and the arrangement splits them where they cross a stroke).
+    constexpr double kOnClosure = 0.05;
+    const auto onClosure = [&](const Eigen::Vector2d &p) {
+        for (const GapClosure &g : regions.closures) {
+            const Eigen::Vector2d d = g.to - g.from;
+            const double length2 = d.squaredNorm();
+            const double t =
+                length2 > 0.0 ? std::clamp((p - g.from).dot(d) / length2, 0.0, 1.0) : 0.0;
+            if ((g.from + t * d - p).norm() <= kOnClosure)
+                return true;
+        }
+        return false;
+    };
+    const Eigen::MatrixX2d &ring = regions.faces[std::size_t(face)].polygon.outer;
+    double total = 0.0, closed = 0.0;
+    for (Eigen::Index i = 0; i < ring.rows(); ++i) {
+        const Eigen::Vector2d a = ring.row(i).transpose();
+        const Eigen::Vector2d b = ring.row((i + 1) % ring.rows()).transpose();
+        const double length = (b - a).norm();
+        total += length;
+        if (onClosure(a) && onClosure(b) && onClosure(0.5 * (a + b)))
+            closed += length;
+    }
+    return total > 0.0 ? closed / total : 0.0;
+}
+
 } // namespace finbook::geometry

@@ -10,8 +10,8 @@
 // no region that is already closed, and closes a new face (its two ends are already connected
 // through the drawing, or a second closure connects the same two parts, or it completes a
 // ring of closures through three or more parts: an outline drawn in several strokes that
-// each stop short of the next); closures that continue the end's direction are preferred. Faces thinner than a pen width (slivers from
-// overshoots) are merged into their neighbour.
+// each stop short of the next); closures that continue the end's direction are preferred. Faces
+// thinner than a pen width (slivers from overshoots) are merged into their neighbour.
 #pragma once
 
 #include <finbook/geometry/expected.h>
@@ -65,5 +65,10 @@ Expected<Regions, GeometryError> computeRegions(const std::vector<StrokeInput> &
 
 // Index of the innermost face containing (x, y), or -1.
 int faceAt(const Regions &regions, double x, double y);
+
+// The share (0..1) of face `face`'s outer outline that runs along gap closures rather than
+// strokes: a face bounded mostly by closures (a wedge between an outline and a line beside
+// it) is one nobody drew, which Fill All leaves alone. 0 for an index out of range.
+double closureShare(const Regions &regions, int face);
 
 } // namespace finbook::geometry
