@@ -116,26 +116,144 @@ QPointF placed(const Anchor &a, QPointF rest, const StrokeGroup &group)
 }
 } // namespace
 
-const std::vector<std::vector<ObjectRegions::Anchor>> &
-ObjectRegions::anchors(const StrokeGroup &group, int face) const
+namespace {
+using Edge = ObjectRegions::Edge;
+
+// An outline edge runs along a stroke when its ends and middle lie within this of the stroke:
+// the regions simplify strokes by a tenth of the pen width (geometry/regions.h).
+double alongTolerance(const StrokeData &data)
+{
+    return 0.15 * double(data.width) + 0.1;
+}
+
+QPointF restAt(const Anchor &a, const StrokeGroup &group)
+{
+    const auto &pts = group.strokes[std::size_t(a.stroke)].data->points;
+    const StrokePoint &p0 = pts[std::size_t(a.segment)];
+    const StrokePoint &p1 = pts[std::min(std::size_t(a.segment) + 1, pts.size() - 1)];
+    return QPointF(p0.x + a.t * (p1.x - p0.x), p0.y + a.t * (p1.y - p0.y));
+}
+
+double position(const Anchor &a)
+{
+    return double(a.segment) + double(a.t);
+}
+
+// Arc length along `pts` from its start to position `pos` (segment + t).
+double arcTo(const std::vector<StrokePoint> &pts, double pos)
+{
+    double length = 0.0;
+    for (std::size_t k = 0; k + 1 < pts.size() && double(k) < pos; ++k) {
+        const double seg = std::hypot(pts[k + 1].x - pts[k].x, pts[k + 1].y - pts[k].y);
+        length += seg * std::min(1.0, pos - double(k));
+    }
+    return length;
+}
+
+bool closedStroke(const std::vector<StrokePoint> &pts)
+{
+    return pts.size() > 3 &&
+           std::hypot(pts.front().x - pts.back().x, pts.front().y - pts.back().y) <= 0.5;
+}
+
+// The edge from rest corner a to rest corner b: along the boundary stroke that holds both
+// ends and its middle (the nearest such), else a chord between corners tied to the nearest
+// points of the boundary strokes.
+Edge edgeBetween(QPointF a, QPointF b, const std::vector<int> &candidates, const StrokeGroup &group)
+{
+    Edge best;
+    double bestFit = std::numeric_limits<double>::infinity();
+    const QPointF mid = 0.5 * (a + b);
+    for (int s : candidates) {
+        if (s < 0 || std::size_t(s) >= group.strokes.size() || !group.strokes[std::size_t(s)].data)
+            continue;
+        const StrokeData &data = *group.strokes[std::size_t(s)].data;
+        const double tolerance = alongTolerance(data);
+        const Anchor from = nearestAnchor(a, {s}, group), to = nearestAnchor(b, {s}, group);
+        if (from.stroke < 0 || to.stroke < 0)
+            continue;
+        const Anchor middle = nearestAnchor(mid, {s}, group);
+        const double fit = std::max({QLineF(restAt(from, group), a).length(),
+                                     QLineF(restAt(to, group), b).length(),
+                                     QLineF(restAt(middle, group), mid).length()});
+        if (!(fit <= tolerance) || fit >= bestFit)
+            continue;
+        // The way along the stroke whose length matches the edge's: on a closed stroke the
+        // short way may go round its joint; a way much longer than the edge is another pass
+        // of the line (a stroke that comes back near itself): then a chord.
+        const double direct =
+            std::abs(arcTo(data.points, position(to)) - arcTo(data.points, position(from)));
+        const double total = arcTo(data.points, double(data.points.size()));
+        const bool wraps = closedStroke(data.points) && total - direct < direct;
+        const double walk = wraps ? total - direct : direct;
+        if (walk > 1.5 * QLineF(a, b).length() + 2.0 * double(data.width) + 1.0)
+            continue;
+        best = Edge{from, to, s, wraps};
+        bestFit = fit;
+    }
+    if (best.along < 0)
+        best.start = nearestAnchor(a, candidates, group);
+    return best;
+}
+
+// Appends the shown points of `edge`'s stroke strictly between its two ends, in the order
+// the edge walks them.
+void appendWalk(QPolygonF &poly, const Edge &edge, const StrokeGroup &group)
+{
+    const auto &shown = displayedPoints(group, std::size_t(edge.along));
+    const auto n = std::ptrdiff_t(shown.size());
+    const auto &rest = group.strokes[std::size_t(edge.along)].data->points;
+    if (n < 2 || std::size_t(n) != rest.size())
+        return;
+    const double from = position(edge.start), to = position(edge.end);
+    const auto add = [&](std::ptrdiff_t k) {
+        if (k >= 0 && k < n && finitePoint(shown[std::size_t(k)]))
+            poly << QPointF(shown[std::size_t(k)].x, shown[std::size_t(k)].y);
+    };
+    const auto up = [&](std::ptrdiff_t first, std::ptrdiff_t last) {
+        for (std::ptrdiff_t k = first; k <= last; ++k)
+            add(k);
+    };
+    const auto down = [&](std::ptrdiff_t first, std::ptrdiff_t last) {
+        for (std::ptrdiff_t k = first; k >= last; --k)
+            add(k);
+    };
+    const auto after = [](double p) { return std::ptrdiff_t(std::floor(p)) + 1; };
+    const auto before = [](double p) { return std::ptrdiff_t(std::ceil(p)) - 1; };
+    if (!edge.wraps) {
+        from <= to ? up(after(from), before(to)) : down(before(from), after(to));
+    } else if (from <= to) { // back through the joint (the last point repeats the first)
+        down(before(from), 0);
+        down(n - 2, after(to));
+    } else {
+        up(after(from), n - 1);
+        up(1, before(to));
+    }
+}
+} // namespace
+
+const std::vector<std::vector<ObjectRegions::Edge>> &ObjectRegions::edges(const StrokeGroup &group,
+                                                                          int face) const
 {
     std::lock_guard lock(m_mutex);
-    if (auto it = m_anchors.find(face); it != m_anchors.end())
+    if (auto it = m_edges.find(face); it != m_edges.end())
         return it->second;
     const geometry::Face &f = m_regions.faces[std::size_t(face)];
     std::vector<int> candidates;
     for (int s : f.strokes)
         if (s >= 0 && std::size_t(s) < m_strokeIndex.size())
             candidates.push_back(m_strokeIndex[std::size_t(s)]);
-    std::vector<std::vector<Anchor>> out;
+    std::vector<std::vector<Edge>> out;
     for (const Eigen::MatrixX2d *r : rings(f.polygon)) {
-        std::vector<Anchor> anchors(std::size_t(r->rows()));
-        for (Eigen::Index i = 0; i < r->rows(); ++i)
-            anchors[std::size_t(i)] =
-                nearestAnchor(QPointF((*r)(i, 0), (*r)(i, 1)), candidates, group);
-        out.push_back(std::move(anchors));
+        std::vector<Edge> ring(std::size_t(r->rows()));
+        for (Eigen::Index i = 0; i < r->rows(); ++i) {
+            const Eigen::Index j = (i + 1) % r->rows();
+            ring[std::size_t(i)] = edgeBetween(QPointF((*r)(i, 0), (*r)(i, 1)),
+                                               QPointF((*r)(j, 0), (*r)(j, 1)), candidates, group);
+        }
+        out.push_back(std::move(ring));
     }
-    return m_anchors.emplace(face, std::move(out)).first->second;
+    return m_edges.emplace(face, std::move(out)).first->second;
 }
 
 QPainterPath ObjectRegions::displayedPath(const StrokeGroup &group, int face) const
@@ -144,16 +262,19 @@ QPainterPath ObjectRegions::displayedPath(const StrokeGroup &group, int face) co
         return {};
     if (!group.isDeformed())
         return restPath(face);
-    const auto &faceAnchors = anchors(group, face);
+    const auto &faceEdges = edges(group, face);
     const geometry::Face &f = m_regions.faces[std::size_t(face)];
     QPainterPath path;
     path.setFillRule(Qt::WindingFill);
     const auto rs = rings(f.polygon);
-    for (std::size_t r = 0; r < rs.size() && r < faceAnchors.size(); ++r) {
+    for (std::size_t r = 0; r < rs.size() && r < faceEdges.size(); ++r) {
         QPolygonF poly;
-        for (Eigen::Index i = 0; i < rs[r]->rows(); ++i)
-            poly << placed(faceAnchors[r][std::size_t(i)], QPointF((*rs[r])(i, 0), (*rs[r])(i, 1)),
-                           group);
+        for (Eigen::Index i = 0; i < rs[r]->rows(); ++i) {
+            const Edge &edge = faceEdges[r][std::size_t(i)];
+            poly << placed(edge.start, QPointF((*rs[r])(i, 0), (*rs[r])(i, 1)), group);
+            if (edge.along >= 0)
+                appendWalk(poly, edge, group);
+        }
         if (!poly.isEmpty()) {
             poly << poly.front();
             path.addPolygon(poly);

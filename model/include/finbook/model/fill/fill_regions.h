@@ -31,10 +31,12 @@ public:
     // Innermost face holding rest point p, or -1.
     int faceAt(QPointF p) const;
 
-    // The face's outline as the object shows now: each outline corner lies on (or within the
-    // stroke simplification of) a boundary stroke, so it is tied to the nearest point of one
-    // (stroke, segment, t) once, and follows that stroke's displayed (posed) points. The fill
-    // then meets its ink exactly under any deformer (pins, cage, skeleton) and in in-betweens.
+    // The face's outline as the object shows now: each outline edge that runs along a boundary
+    // stroke (within its simplification) is tied to that stroke once, from the point nearest
+    // its start to the point nearest its end (stroke, segment, t), and follows the stroke's
+    // displayed (posed) points between them; an edge along a gap closure joins its corners,
+    // each tied to the nearest point of a boundary stroke. The fill then meets its ink exactly,
+    // bends included, under any deformer (pins, cage, skeleton) and in in-betweens.
     QPainterPath displayedPath(const StrokeGroup &group, int face) const;
     // The gap-closing segments, each end following the stroke it lies on, as shown.
     std::vector<QLineF> displayedClosures(const StrokeGroup &group) const;
@@ -44,16 +46,26 @@ public:
         int segment = 0;
         float t = 0.0f;
     };
+    // One edge of a face's outline as shown: it starts at `start` and, when it runs along a
+    // stroke (`along` ≥ 0, an index into the object's strokes), passes through that stroke's
+    // shown points between `start` and `end` (both on it), so the fill follows the posed line
+    // between the outline's corners, not a chord across its bend; `wraps`: the walk goes
+    // round a closed stroke's joint.
+    struct Edge {
+        Anchor start, end;
+        int along = -1;
+        bool wraps = false;
+    };
 
 private:
-    const std::vector<std::vector<Anchor>> &anchors(const StrokeGroup &group, int face) const;
+    const std::vector<std::vector<Edge>> &edges(const StrokeGroup &group, int face) const;
 
     geometry::Regions m_regions;
     std::vector<std::vector<Id>> m_faceIds;
     std::vector<QPainterPath> m_restPaths;
     std::vector<int> m_strokeIndex; // input index → index into the object's strokes
     mutable std::mutex m_mutex;
-    mutable std::unordered_map<int, std::vector<std::vector<Anchor>>> m_anchors; // per ring
+    mutable std::unordered_map<int, std::vector<std::vector<Edge>>> m_edges; // per ring
 };
 
 using ObjectRegionsPtr = std::shared_ptr<const ObjectRegions>;
