@@ -292,7 +292,7 @@ std::vector<PaintItem> paintListOf(const StrokeGroup *groups, std::size_t count,
             continue;
         for (std::size_t i = 0; i < g.strokes.size(); ++i) {
             const Stroke &s = g.strokes[i];
-            if (!s.data)
+            if (!s.data || qAlpha(s.data->color) == 0) // a gap closer, or ink of no colour
                 continue;
             const QRgb color = options.tint ? options.tint->rgba() : s.data->color;
             items.push_back(PaintItem{&displayedPoints(g, i), color, s.data->width, 1});

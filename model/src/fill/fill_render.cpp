@@ -43,6 +43,7 @@ std::vector<FillItem> fillItems(const StrokeGroup &group, double closeGap,
                 qRgba(t.red(), t.green(), t.blue(), int(std::lround(t.alpha() * kTintedFillAlpha)));
         }
         items[i].color = color;
+        items[i].fill = int(i);
         out.push_back(std::move(items[i]));
     }
     return out;

@@ -88,15 +88,39 @@ std::vector<int> splitFaces(const ObjectRegions &regions, const Fill &fill, int 
 
 std::vector<int> faceFills(const ObjectRegions &regions, const std::vector<Fill> &fills)
 {
-    std::vector<int> out(std::size_t(regions.faceCount()), -1);
+    // Each face goes to the fill that claims it as its own region and is tied best to the
+    // strokes around it (the share of strokes the two have in common; a later fill wins a
+    // tie): a fill whose region has gone, and whose seed now lies in a neighbour's region,
+    // never takes that region from the neighbour's own fill (and never spreads from there).
+    const auto n = std::size_t(regions.faceCount());
+    std::vector<int> out(n, -1), primary(fills.size(), -1);
+    std::vector<double> claim(n, -1.0);
     for (std::size_t i = 0; i < fills.size(); ++i) {
-        const int primary = primaryFace(regions, fills[i]);
-        if (primary < 0)
+        const int f = primaryFace(regions, fills[i]);
+        if (f < 0)
             continue;
-        for (int f : splitFaces(regions, fills[i], primary))
+        primary[i] = f;
+        const auto &ids = regions.faceStrokeIds(f);
+        const std::size_t common = shared(ids, fills[i].strokes);
+        const std::size_t either = ids.size() + fills[i].strokes.size() - common;
+        const double tie = either > 0 ? double(common) / double(either) : 1.0;
+        if (tie >= claim[std::size_t(f)]) {
+            claim[std::size_t(f)] = tie;
             out[std::size_t(f)] = int(i);
+        }
     }
-    return out;
+    // The halves of a region cut in two by new strokes keep its fill, unless another fill
+    // claims them as its own.
+    std::vector<int> spread = out;
+    for (std::size_t i = 0; i < fills.size(); ++i) {
+        const int f = primary[i];
+        if (f < 0 || out[std::size_t(f)] != int(i))
+            continue;
+        for (int half : splitFaces(regions, fills[i], f))
+            if (out[std::size_t(half)] < 0)
+                spread[std::size_t(half)] = int(i);
+    }
+    return spread;
 }
 
 Fill fillOfFace(const ObjectRegions &regions, int face, QRgb color)
@@ -150,74 +174,18 @@ std::optional<std::vector<Fill>> fillsWithAllFaces(const ObjectRegions &regions,
 {
     const std::vector<int> shown = faceFills(regions, fills);
     std::vector<Fill> out = fills;
+    // A face whose outline runs mostly along gap closures is one nobody drew (a wedge between
+    // an outline and a line beside it): a click of the Fill tool still fills it, Fill All not.
+    constexpr double kMostlyClosures = 0.5;
     for (int f = 0; f < regions.faceCount(); ++f)
-        if (shown[std::size_t(f)] < 0) {
+        if (shown[std::size_t(f)] < 0 &&
+            geometry::closureShare(regions.regions(), f) <= kMostlyClosures) {
             out.push_back(fillOfFace(regions, f, color));
             if (!fills.empty())
                 out.back().shading = fills.back().shading;
         }
     if (out.size() == fills.size())
         return std::nullopt;
-    return out;
-}
-
-std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                                 double closeGap)
-{
-    std::vector<Fill> out = group.fills;
-    if (out.empty())
-        return out;
-    const ObjectRegionsPtr before = objectRegions(group, closeGap);
-    const std::vector<int> shown = faceFills(*before, group.fills);
-    StrokeGroup after;
-    after.strokes = baked;
-    const ObjectRegionsPtr regions = objectRegions(after, closeGap);
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        QPainterPath where; // the fill as it shows now
-        for (int f = 0; f < before->faceCount(); ++f)
-            if (shown[std::size_t(f)] == int(i))
-                where.addPath(before->displayedPath(group, f));
-        where.setFillRule(Qt::WindingFill);
-        int best = -1;
-        double bestArea = 0;
-        for (int f = 0; f < regions->faceCount(); ++f) {
-            const geometry::Face &face = regions->regions().faces[std::size_t(f)];
-            if (face.area > bestArea && where.contains(QPointF(face.seed.x(), face.seed.y()))) {
-                best = f;
-                bestArea = face.area;
-            }
-        }
-        if (best >= 0)
-            out[i].seed = fillOfFace(*regions, best, out[i].color).seed;
-    }
-    // A face the baked lines cut off from the one its fill moved to (where a limb passed over
-    // the body, a fold) shows what the pose showed there: the topmost fill as drawn, a
-    // cut-out pose's layers and round joints included.
-    DocumentSettings settings;
-    settings.closeGap = closeGap;
-    const std::vector<PaintLayer> layers = paintLayers(group, settings);
-    const std::vector<int> filled = faceFills(*regions, out);
-    for (int f = 0; f < regions->faceCount(); ++f) {
-        if (filled[std::size_t(f)] >= 0)
-            continue;
-        const geometry::Face &face = regions->regions().faces[std::size_t(f)];
-        const QPointF seed(face.seed.x(), face.seed.y());
-        std::optional<QRgb> colour;
-        for (auto layer = layers.rbegin(); layer != layers.rend() && !colour; ++layer)
-            for (auto item = layer->fills.rbegin(); item != layer->fills.rend(); ++item)
-                if (item->path.contains(seed)) {
-                    colour = item->color;
-                    break;
-                }
-        if (!colour)
-            continue;
-        Fill added = fillOfFace(*regions, f, *colour);
-        const auto same = std::find_if(group.fills.rbegin(), group.fills.rend(),
-                                       [&](const Fill &fill) { return fill.color == *colour; });
-        if (same != group.fills.rend())
-            added.shading = same->shading;
-        out.push_back(std::move(added));
-    }
     return out;
 }
 

@@ -124,6 +124,7 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
                 continue;
             clipped.path.setFillRule(Qt::WindingFill);
             clipped.color = fill.color;
+            clipped.fill = fill.fill;
             for (const ToneItem &tone : fill.tones) {
                 ToneItem part = tone;
                 part.path = place(tone.path);
@@ -137,6 +138,7 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
     // strokes) in the colour of the limb's fill that meets the socket, so a turned limb leaves
     // no gap at its joint.
     std::vector<std::optional<QRgb>> socketColour(pieces);
+    std::vector<int> socketFill(pieces, -1);
     const auto layerAbove = [&](std::size_t k) {
         return std::size_t(std::clamp(posed->socketAbove[k] + 1, 0, int(pieces)));
     };
@@ -151,9 +153,11 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         if (colour == limb.rend())
             continue;
         socketColour[k] = colour->color;
+        socketFill[k] = colour->fill;
         FillItem fill;
         fill.path = socket;
         fill.color = colour->color;
+        fill.fill = colour->fill;
         layers[layerAbove(k)].fills.push_back(std::move(fill));
     }
     // The strokes: each item (a displayed stroke, folded repeats included) split into runs of
@@ -219,6 +223,7 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
                 wedge.path.closeSubpath();
                 wedge.path.setFillRule(Qt::WindingFill);
                 wedge.color = *colour;
+                wedge.fill = socketFill[seam->cut];
                 layers[above].fills.push_back(std::move(wedge));
             }
             run.push_back(seam->arc.front());

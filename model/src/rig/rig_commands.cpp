@@ -123,7 +123,12 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
     m_oldDeformed = g->deformed;
     // The baked strokes keep their ids: they are the same strokes, redrawn (a line that a
     // cut-out limb hid in the middle becomes two, the second with a new id).
-    m_newStrokes = bakedStrokes(*g, doc->settings().closeGap, [doc] { return doc->allocateId(); });
+    const auto newId = [doc] { return doc->allocateId(); };
+    m_newStrokes = bakedStrokes(*g, doc->settings().closeGap, newId);
+    // A gap the pose showed closed stays closed (by a line of no ink) where the baked lines
+    // alone would leave it open.
+    for (Stroke &closer : keptGapClosers(*g, m_newStrokes, doc->settings().closeGap, newId))
+        m_newStrokes.push_back(std::move(closer));
     m_oldFills = g->fills;
     m_newFills = fillsAfterBake(*g, m_newStrokes, doc->settings().closeGap);
 }

@@ -17,6 +17,7 @@ namespace finbook::model {
 struct FillItem {
     QPainterPath path; // canvas pixels, non-zero (winding) rule
     QRgb color = 0;    // after options: the onion-skin tint, lighter than the strokes'
+    int fill = -1;     // the index of the object's fill it paints (a socket: the limb's)
     // A shaded fill's tone regions (shade/fill_shading.h), drawn over `path` in this order.
     // They follow the fill's faces and end on its outline, under the ink.
     std::vector<ToneItem> tones;

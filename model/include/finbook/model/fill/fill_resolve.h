@@ -6,12 +6,16 @@
 // half of them). A face cut in two by a new stroke keeps the colour on both halves: the faces
 // that share one of the cutting strokes with the fill's face and are otherwise bounded only by
 // the fill's strokes and the cutting ones inherit it. A region that has gone shows no colour;
-// the fill stays in the object, so undoing the edit brings the colour back exactly. A later
-// fill on the same face wins.
+// the fill stays in the object, so undoing the edit brings the colour back exactly. Where two
+// fills hold their seeds in one face, the one tied best to its strokes (the larger share of
+// strokes in common) has it, a later fill winning a tie; the other shows nowhere and does
+// not spread (a region that vanished under a moved head must not colour the body it left its
+// seed in).
 #pragma once
 
 #include <finbook/model/fill/fill_regions.h>
 
+#include <functional>
 #include <optional>
 
 namespace finbook::model {
@@ -30,17 +34,36 @@ std::optional<std::vector<Fill>>
 fillsWithFace(const ObjectRegions &regions, const std::vector<Fill> &fills, int face, QRgb color);
 std::optional<std::vector<Fill>> fillsWithoutFace(const ObjectRegions &regions,
                                                   const std::vector<Fill> &fills, int face);
-// Every face that shows no fill gets one in `color` (shaded as the object's last fill).
+// Every face that shows no fill gets one in `color` (shaded as the object's last fill), except
+// a face whose outline runs mostly along gap closures (geometry::closureShare > 0.5): a wedge
+// nobody drew.
 std::optional<std::vector<Fill>> fillsWithAllFaces(const ObjectRegions &regions,
                                                    const std::vector<Fill> &fills, QRgb color);
 
 // The fills of `group` once its pose has become its drawing (`baked`: its posed strokes, ids
-// kept, as Apply Pose to Drawing makes them): each fill that shows moves its seed into the face
-// of the baked drawing that lies where the fill is shown now, and each other face of the baked
-// drawing (cut off by a limb passing over the body, a fold) gets a fill in the colour the pose
-// shows there (its topmost fill as painted, paintLayers: a cut-out's layers and sockets).
+// kept, as Apply Pose to Drawing makes them), so that the baked drawing shows exactly what the
+// pose showed: each face of the baked drawing gets the fill the pose showed over most of it
+// (as painted, paintLayers: a cut-out's layers and round joints included), or none where most
+// of it showed none. Each fill is tied to one face (fillOfFace: that face's seed and bounding
+// strokes, so no split rule spreads it), keeping its colour, shading and place in the list on
+// its largest face; a fill shown on several faces (a limb passing over the body cuts it in
+// two) gets one more fill per further face after the others. A fill the pose showed nowhere
+// is left out (undo brings it back).
 std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                  double closeGap);
+
+// The colour of a line of no ink that closes a gap (keptGapClosers): it bounds regions like any
+// stroke, and no renderer draws it (render.h draws no stroke of alpha 0).
+constexpr QRgb kGapCloserColor = 0x00000000;
+
+// The gaps the pose shows closed that the baked drawing (`baked`, as Apply Pose makes it)
+// would leave open: a pose can stretch a gap past the Close gaps distance, or change the
+// drawing's size that the automatic distance follows, and the region behind it would open
+// and lose its fill. Each such gap gets a closing line of no ink (kGapCloserColor, as
+// Harmony's Close Gap tool draws invisible strokes), with new ids from `newId`, to add to the
+// baked strokes; it is drawn by no renderer, and erasing it opens the gap.
+std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                   double closeGap, const std::function<Id()> &newId);
 
 // The face under canvas point p as the object shows now (posed where it is posed), or -1.
 int displayedFaceAt(const ObjectRegions &regions, const StrokeGroup &group, QPointF p);

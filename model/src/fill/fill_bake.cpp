@@ -1,0 +1,221 @@
+// The fills of a pose made the drawing (fill_resolve.h, fillsAfterBake): each face of the
+// baked drawing shows the fill the pose showed over most of it, exactly.
+//
+// The pose is what the animator saw, so it is the reference: its fills are painted as every
+// renderer paints them (paintLayers: a cut-out's layers and round joints included) into a
+// picture of fill indices, the baked drawing's faces into a picture of face indices, and each
+// face takes the fill that covers most of its pixels (or none, when most of it showed no
+// fill). Each fill is then tied to exactly its faces: a fill's seed and bounding strokes are
+// those of one face (fillOfFace), so faceFills resolves it to that face alone (no split rule
+// reaches past it), and a fill the pose showed on several faces of the baked drawing (a limb
+// crossing the body cuts the body in two) gets one more fill per further face, in its colour
+// and shading. Resolving by seed points alone let a seed fall into a neighbouring region and
+// a fill spread over faces the pose showed empty (slivers between a limb and the body).
+#include <finbook/model/fill/fill_render.h>
+#include <finbook/model/fill/fill_resolve.h>
+
+#include <QImage>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace finbook::model {
+
+namespace {
+
+// The longer side of the index pictures: a face of a few canvas pixels still covers pixels
+// of them on any drawing a canvas holds, and the two pictures stay at 4 MB each.
+constexpr int kIndexPictureSide = 1024;
+constexpr double kMaxIndexScale = 8.0;
+
+QRgb indexColour(int index)
+{
+    return 0xff000000u | QRgb(index + 1); // 0 (black) = nothing
+}
+
+int colourIndex(QRgb c)
+{
+    return int(c & 0x00ffffffu) - 1;
+}
+
+// Per face of `regions`, the pixels of the posed fills (`layers`) over it: fill index (−1
+// none) → count.
+std::vector<std::unordered_map<int, long long>> coverage(const ObjectRegions &regions,
+                                                         const std::vector<PaintLayer> &layers)
+{
+    std::vector<std::unordered_map<int, long long>> out(std::size_t(regions.faceCount()));
+    QRectF box;
+    for (int f = 0; f < regions.faceCount(); ++f)
+        box = box.united(regions.restPath(f).boundingRect());
+    const double side = std::max(box.width(), box.height());
+    if (!(side > 0.0) || !std::isfinite(side))
+        return out;
+    const double scale = std::min(kMaxIndexScale, kIndexPictureSide / side);
+    const QSize size(std::max(1, int(std::ceil(box.width() * scale)) + 2),
+                     std::max(1, int(std::ceil(box.height() * scale)) + 2));
+    QImage faces(size, QImage::Format_RGB32), fills(size, QImage::Format_RGB32);
+    if (faces.isNull() || fills.isNull())
+        return out;
+    faces.fill(Qt::black);
+    fills.fill(Qt::black);
+    QTransform toPixels;
+    toPixels.translate(1, 1);
+    toPixels.scale(scale, scale);
+    toPixels.translate(-box.left(), -box.top());
+    {
+        QPainter painter(&faces);
+        painter.setPen(Qt::NoPen);
+        painter.setTransform(toPixels);
+        for (int f = 0; f < regions.faceCount(); ++f)
+            painter.fillPath(regions.restPath(f), QColor::fromRgb(indexColour(f)));
+    }
+    {
+        QPainter painter(&fills);
+        painter.setPen(Qt::NoPen);
+        painter.setTransform(toPixels);
+        for (const PaintLayer &layer : layers)
+            for (const FillItem &item : layer.fills)
+                if (item.fill >= 0)
+                    painter.fillPath(item.path, QColor::fromRgb(indexColour(item.fill)));
+    }
+    for (int y = 0; y < size.height(); ++y) {
+        const auto *face = reinterpret_cast<const QRgb *>(faces.constScanLine(y));
+        const auto *fill = reinterpret_cast<const QRgb *>(fills.constScanLine(y));
+        for (int x = 0; x < size.width();) {
+            // Runs of one (face, fill) pair are counted at once.
+            int end = x + 1;
+            while (end < size.width() && face[end] == face[x] && fill[end] == fill[x])
+                ++end;
+            const int f = colourIndex(face[x]);
+            if (f >= 0 && f < regions.faceCount())
+                out[std::size_t(f)][colourIndex(fill[x])] += end - x;
+            x = end;
+        }
+    }
+    return out;
+}
+
+// The fill the pose shows at point p: the topmost item holding it, or −1.
+int fillAt(const std::vector<PaintLayer> &layers, QPointF p)
+{
+    for (auto layer = layers.rbegin(); layer != layers.rend(); ++layer)
+        for (auto item = layer->fills.rbegin(); item != layer->fills.rend(); ++item)
+            if (item->fill >= 0 && item->path.contains(p))
+                return item->fill;
+    return -1;
+}
+
+// Per face of `regions`, the index of the fill the pose (`layers`) shows over most of it, or
+// −1 where most of it showed none.
+std::vector<int> shownFillPerFace(const ObjectRegions &regions,
+                                  const std::vector<PaintLayer> &layers, int fillCount)
+{
+    std::vector<int> out(std::size_t(regions.faceCount()), -1);
+    const auto counts = coverage(regions, layers);
+    for (int f = 0; f < regions.faceCount(); ++f) {
+        int best = -1;
+        long long bestCount = 0;
+        for (const auto &[fill, count] : counts[std::size_t(f)])
+            if (count > bestCount || (count == bestCount && fill > best)) {
+                best = fill;
+                bestCount = count;
+            }
+        if (bestCount == 0) { // smaller than a pixel of the picture: its seed decides
+            const auto &seed = regions.regions().faces[std::size_t(f)].seed;
+            best = fillAt(layers, QPointF(seed.x(), seed.y()));
+        }
+        out[std::size_t(f)] = best >= 0 && best < fillCount ? best : -1;
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                 double closeGap)
+{
+    if (group.fills.empty())
+        return {};
+    StrokeGroup after;
+    after.strokes = baked;
+    const ObjectRegionsPtr regions = objectRegions(after, closeGap);
+    DocumentSettings settings;
+    settings.closeGap = closeGap;
+    StrokeGroup shown = group;
+    shown.visible = true; // a hidden object keeps its fills too
+    const std::vector<int> owner =
+        shownFillPerFace(*regions, paintLayers(shown, settings), int(group.fills.size()));
+    // Each fill keeps its place in the list on its largest face; its other faces follow.
+    std::vector<int> largest(group.fills.size(), -1);
+    for (int f = 0; f < regions->faceCount(); ++f) {
+        const int i = owner[std::size_t(f)];
+        if (i < 0)
+            continue;
+        int &l = largest[std::size_t(i)];
+        if (l < 0 || regions->regions().faces[std::size_t(f)].area >
+                         regions->regions().faces[std::size_t(l)].area)
+            l = f;
+    }
+    const auto tied = [&](int face, const Fill &source) {
+        Fill fill = fillOfFace(*regions, face, source.color);
+        fill.shading = source.shading;
+        return fill;
+    };
+    std::vector<Fill> out;
+    for (std::size_t i = 0; i < group.fills.size(); ++i)
+        if (largest[i] >= 0)
+            out.push_back(tied(largest[i], group.fills[i]));
+    for (int f = 0; f < regions->faceCount(); ++f) {
+        const int i = owner[std::size_t(f)];
+        if (i >= 0 && largest[std::size_t(i)] != f)
+            out.push_back(tied(f, group.fills[std::size_t(i)]));
+    }
+    return out;
+}
+
+std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                   double closeGap, const std::function<Id()> &newId)
+{
+    if (group.fills.empty() || !group.isDeformed())
+        return {};
+    const ObjectRegionsPtr before = objectRegions(group, closeGap);
+    const auto &closures = before->regions().closures;
+    if (closures.empty())
+        return {};
+    const std::vector<QLineF> shown = before->displayedClosures(group);
+    StrokeGroup after;
+    after.strokes = baked;
+    const ObjectRegionsPtr regions = objectRegions(after, closeGap);
+    std::vector<Stroke> out;
+    for (std::size_t i = 0; i < shown.size() && i < closures.size(); ++i) {
+        const QLineF &line = shown[i];
+        const int from = closures[i].fromStroke;
+        const float width = from >= 0 && std::size_t(from) < group.strokes.size() &&
+                                    group.strokes[std::size_t(from)].data
+                                ? group.strokes[std::size_t(from)].data->width
+                                : StrokeData().width;
+        const double near = 2.0 * double(width) + 0.5;
+        const auto close = [near](QPointF a, const Eigen::Vector2d &b) {
+            return QLineF(a, QPointF(b.x(), b.y())).length() <= near;
+        };
+        const bool kept =
+            std::any_of(regions->regions().closures.begin(), regions->regions().closures.end(),
+                        [&](const geometry::GapClosure &c) {
+                            return (close(line.p1(), c.from) && close(line.p2(), c.to)) ||
+                                   (close(line.p1(), c.to) && close(line.p2(), c.from));
+                        });
+        if (kept || !(line.length() > 0.0) || !std::isfinite(line.length()))
+            continue;
+        auto data = std::make_shared<StrokeData>();
+        data->color = kGapCloserColor;
+        data->width = width;
+        data->points = {{float(line.x1()), float(line.y1()), 1.0f},
+                        {float(line.x2()), float(line.y2()), 1.0f}};
+        out.push_back({newId(), std::move(data)});
+    }
+    return out;
+}
+
+} // namespace finbook::model
