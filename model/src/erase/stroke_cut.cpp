@@ -1,5 +1,10 @@
+#include "../command_text.h"
+
 #include <finbook/geometry/erase/polyline_erase.h>
+#include <finbook/model/commands.h>
+#include <finbook/model/document.h>
 #include <finbook/model/erase/stroke_cut.h>
+#include <finbook/model/fill/fill_commands.h>
 
 #include <algorithm>
 #include <cmath>
@@ -121,6 +126,41 @@ std::optional<std::vector<StrokeDataPtr>> cutStroke(const StrokeData &stroke,
             pieces.push_back(std::move(piece));
     }
     return pieces;
+}
+
+std::vector<Id> pushStrokeCut(Document *doc, Id strokeId, const std::vector<StrokeDataPtr> &pieces)
+{
+    const StrokeLocation at = doc->locateStroke(strokeId);
+    if (!at.isValid())
+        return {};
+    const StrokeGroup &group = doc->frameAt(at.frame).groups[std::size_t(at.group)];
+    const Id groupId = group.id;
+    std::vector<Fill> fills = group.fills;
+    QUndoStack *stack = doc->undoStack();
+    stack->push(new RemoveStrokeCommand(doc, strokeId));
+    std::vector<Id> ids;
+    int index = at.stroke;
+    for (const StrokeDataPtr &piece : pieces) {
+        auto *add = new AddStrokeCommand(doc, groupId, piece, index++);
+        ids.push_back(add->strokeId());
+        stack->push(add);
+    }
+    bool named = false;
+    for (Fill &fill : fills) {
+        const auto it = std::lower_bound(fill.strokes.begin(), fill.strokes.end(), strokeId);
+        if (it == fill.strokes.end() || *it != strokeId)
+            continue;
+        named = true;
+        fill.strokes.erase(it);
+        fill.strokes.insert(fill.strokes.end(), ids.begin(), ids.end());
+        std::sort(fill.strokes.begin(), fill.strokes.end());
+        fill.strokes.erase(std::unique(fill.strokes.begin(), fill.strokes.end()),
+                           fill.strokes.end());
+    }
+    if (named)
+        stack->push(new SetFillsCommand(doc, groupId, std::move(fills),
+                                        Command::tr("Keep Fills Along a Cut")));
+    return ids;
 }
 
 } // namespace finbook::model

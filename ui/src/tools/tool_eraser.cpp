@@ -214,17 +214,8 @@ void EraserTool::cut(const std::vector<model::Id> &strokes, const QPointF &from,
     for (const auto &c : cuts)
         cutIds.push_back(c.first);
     openMacro(cutIds);
-    QUndoStack *stack = doc->undoStack();
-    for (const auto &[id, pieces] : cuts) {
-        const model::StrokeLocation at = doc->locateStroke(id);
-        if (!at.isValid())
-            continue;
-        const model::Id groupId = doc->frameAt(at.frame).groups[std::size_t(at.group)].id;
-        stack->push(new model::RemoveStrokeCommand(doc, id));
-        int index = at.stroke;
-        for (const model::StrokeDataPtr &piece : pieces)
-            stack->push(new model::AddStrokeCommand(doc, groupId, piece, index++));
-    }
+    for (const auto &[id, pieces] : cuts)
+        model::pushStrokeCut(doc, id, pieces); // nothing when the stroke has gone
 }
 
 void EraserTool::moveCursor(const QPointF &pos)

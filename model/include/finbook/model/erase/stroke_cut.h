@@ -22,4 +22,13 @@ constexpr double kMinPieceLength = 0.5;
 std::optional<std::vector<StrokeDataPtr>> cutStroke(const StrokeData &stroke,
                                                     const std::vector<QPointF> &rub, double radius);
 
+class Document;
+
+// Replaces stroke `strokeId` with `pieces` (cutStroke's) in its place, pushing one command per
+// stroke onto the document's undo stack (open a macro around it for one step). The pieces are
+// the same line: the fills that named the stroke among their bounding strokes name every
+// piece instead, so a region the cut leaves closed keeps its fill and no neighbour's fill
+// takes the pieces for a line cutting through it. Returns the pieces' ids.
+std::vector<Id> pushStrokeCut(Document *doc, Id strokeId, const std::vector<StrokeDataPtr> &pieces);
+
 } // namespace finbook::model
