@@ -1,0 +1,366 @@
+// finbook-bench bake [--png DIR] FILE...: what you see is what you keep. For each drawing
+// (Quick, Draw! "strokes" or a shape's "contours", shared/data/README.md; pen 3 px): Fill All,
+// each fill then recoloured apart (so a fill that moves to another region shows), then for each
+// rig kind and skinning (pins: the arap --quality bend, the right end turned 60° round the held
+// left end; cage: Fit Cage with two opposite corners moved out; skeleton: the automatic one,
+// every limb turned ±60° at its base, in each skinning) pose it, render the posed object as the
+// app draws it, Apply Pose to Drawing, render again. One JSON object per drawing and rig:
+// agree_pct (the share of the drawing's pixels whose colour agrees, each channel within
+// 8/255; a pixel on a colour edge in both pictures, the anti-aliased rim, is left out),
+// filled_px before and after (fills alone), fills before and after, and how many fills show.
+// A last line per rig kind sums up: bake_agree_pct_min and bake_agree_pct_median, the worst
+// drawing, the largest filled-area change and how many drawings changed their fill count.
+// --png writes, per drawing and rig, the posed picture, the baked one and the differences.
+#include "../model/bake_support.h"
+#include "bench.h"
+
+#include <finbook/model/cage/cage_setup.h>
+#include <finbook/model/commands.h>
+#include <finbook/model/deform_setup.h>
+#include <finbook/model/document.h>
+#include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_render.h>
+#include <finbook/model/fill/fill_resolve.h>
+#include <finbook/model/render.h>
+#include <finbook/model/rig/rig_commands.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QPainter>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+
+using namespace finbook::model;
+
+namespace {
+
+constexpr float kPenWidth = 3.0f;
+constexpr int kPicture = 640;    // the longer side of the compared pictures, px
+constexpr double kTurn = 60.0;   // degrees: the pins' bend and each limb's turn
+constexpr double kCageOut = 0.2; // the two cage corners move out by this share of the size
+
+std::vector<std::vector<QPointF>> readDrawing(const QString &path, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = QStringLiteral("cannot open");
+        return {};
+    }
+    const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
+    std::vector<std::vector<QPointF>> lines;
+    const auto points = [](const QJsonArray &array) {
+        std::vector<QPointF> out;
+        for (const QJsonValue &p : array)
+            out.emplace_back(p.toArray().at(0).toDouble(), p.toArray().at(1).toDouble());
+        return out;
+    };
+    if (json.contains(QStringLiteral("strokes"))) {
+        for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray())
+            lines.push_back(points(stroke.toArray()));
+    } else if (json.contains(QStringLiteral("contours"))) {
+        for (const QJsonValue &contour : json.value(QStringLiteral("contours")).toArray()) {
+            std::vector<QPointF> ring = points(contour.toArray());
+            if (!ring.empty())
+                ring.push_back(ring.front());
+            lines.push_back(std::move(ring));
+        }
+    } else {
+        *error = QStringLiteral("neither strokes nor contours");
+    }
+    return lines;
+}
+
+// A document of one frame whose one object holds the drawing, every region filled, each fill
+// in its own colour. Returns the object's id (kNoId when nothing could be drawn).
+Id drawingDocument(Document &doc, const std::vector<std::vector<QPointF>> &lines)
+{
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    for (const std::vector<QPointF> &line : lines) {
+        if (line.size() < 2)
+            continue;
+        auto data = std::make_shared<StrokeData>();
+        data->width = kPenWidth;
+        for (const QPointF &p : line)
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        doc.undoStack()->push(new AddStrokeCommand(&doc, g, std::move(data)));
+    }
+    if (auto all = fillAllRegionsCommand(&doc, g, 0xff808080))
+        doc.undoStack()->push(all.release());
+    std::vector<Fill> fills = doc.group(g)->fills;
+    for (std::size_t i = 0; i < fills.size(); ++i)
+        fills[i].color = finbook::testing::distinctColour(i);
+    if (!fills.empty())
+        doc.undoStack()->push(new SetFillsCommand(&doc, g, fills, QStringLiteral("Colour")));
+    return g;
+}
+
+QPointF turned(QPointF p, QPointF about, double degrees)
+{
+    const double a = degrees * std::numbers::pi / 180.0;
+    const QPointF d = p - about;
+    return about + QPointF(std::cos(a) * d.x() - std::sin(a) * d.y(),
+                           std::sin(a) * d.x() + std::cos(a) * d.y());
+}
+
+// Pins on the stroke points of the left and right 6 % of the drawing (at most 8 each, spread
+// along it); the right ones turned round the left ones' centroid.
+Rig pinBend(const StrokeGroup &group)
+{
+    const QRectF box = finbook::testing::shownBounds(group);
+    std::vector<QPointF> left, right;
+    for (const Stroke &s : group.strokes)
+        for (const StrokePoint &p : s.data->points) {
+            if (p.x <= box.left() + 0.06 * box.width())
+                left.emplace_back(p.x, p.y);
+            else if (p.x >= box.right() - 0.06 * box.width())
+                right.emplace_back(p.x, p.y);
+        }
+    const auto spread = [](const std::vector<QPointF> &all) {
+        std::vector<QPointF> out;
+        const std::size_t step = std::max<std::size_t>(1, all.size() / 8);
+        for (std::size_t i = 0; i < all.size() && out.size() < 8; i += step)
+            out.push_back(all[i]);
+        return out;
+    };
+    left = spread(left);
+    right = spread(right);
+    Rig rig;
+    if (left.empty() || right.empty())
+        return rig;
+    QPointF centre;
+    for (const QPointF &p : left)
+        centre += p / double(left.size());
+    Id id = 1;
+    for (const QPointF &p : left)
+        rig.pins.push_back({id++, p, p});
+    for (const QPointF &p : right)
+        rig.pins.push_back({id++, p, turned(p, centre, kTurn)});
+    return rig;
+}
+
+Rig cageBend(const StrokeGroup &group, double closeGap)
+{
+    Rig rig;
+    const auto corners = fitCage(group, kDefaultFitCageCorners, closeGap);
+    if (!corners || corners->size() < 4)
+        return rig;
+    rig.cage.rest = *corners;
+    rig.cage.posed = *corners;
+    QPointF centre;
+    for (const QPointF &p : *corners)
+        centre += p / double(corners->size());
+    const QRectF box = finbook::testing::shownBounds(group);
+    const double out = kCageOut * std::max(box.width(), box.height());
+    for (std::size_t k : {std::size_t(0), corners->size() / 2}) {
+        QPointF &p = rig.cage.posed[k];
+        const QPointF d = p - centre;
+        const double length = std::hypot(d.x(), d.y());
+        if (length > 0)
+            p += d * (out / length);
+    }
+    return rig;
+}
+
+// The automatic skeleton, each limb turned ±60° where it leaves the body (a joint flagged as
+// a limb base; without any, each bone from the root).
+Rig skeletonBend(const StrokeGroup &group, double closeGap, SkinningMode mode)
+{
+    Rig rig;
+    const auto built = buildSkeletonRig(group, {}, std::nullopt, closeGap);
+    if (!built || built->jointCount() < 2)
+        return rig;
+    rig.skeleton = *built;
+    rig.skeleton.mode = mode;
+    rig.skeleton.angles.assign(std::size_t(built->jointCount()), 0.0);
+    bool anyBase = false;
+    for (int j = 0; j < built->jointCount(); ++j)
+        anyBase = anyBase || built->isLimbBase(j);
+    int sign = 1;
+    for (int j = 0; j < built->jointCount(); ++j) {
+        const int parent = built->parent[std::size_t(j)];
+        const bool turns = anyBase ? parent >= 0 && built->isLimbBase(parent)
+                                   : parent >= 0 && parent == built->root;
+        if (!turns)
+            continue;
+        rig.skeleton.angles[std::size_t(j)] = sign * kTurn * std::numbers::pi / 180.0;
+        sign = -sign;
+    }
+    return rig;
+}
+
+int shownFills(const StrokeGroup &group, double closeGap)
+{
+    const auto regions = objectRegions(group, closeGap);
+    const std::vector<int> owners = faceFills(*regions, group.fills);
+    std::vector<bool> seen(group.fills.size(), false);
+    for (int f : owners)
+        if (f >= 0)
+            seen[std::size_t(f)] = true;
+    return int(std::count(seen.begin(), seen.end(), true));
+}
+
+struct Case {
+    const char *name;
+    RigKind kind;
+    SkinningMode mode;
+};
+constexpr Case kCases[] = {
+    {"pins", RigKind::Pins, SkinningMode::Rigid},
+    {"cage", RigKind::Cage, SkinningMode::Rigid},
+    {"skeleton_rigid", RigKind::Skeleton, SkinningMode::Rigid},
+    {"skeleton_blend", RigKind::Skeleton, SkinningMode::LinearBlend},
+    {"skeleton_cut_out", RigKind::Skeleton, SkinningMode::CutOut},
+};
+
+void print(const QJsonObject &row)
+{
+    std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
+    std::fflush(stdout);
+}
+
+struct Summary {
+    std::vector<double> agree;
+    QString worst;
+    double worstPct = 101.0;
+    double maxAreaChangePct = 0.0;
+    int fillCountChanged = 0;
+    int failed = 0;
+};
+
+QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
+                    const Case &c, const QString &pngDir, Summary &summary)
+{
+    QJsonObject row{{QStringLiteral("bench"), QStringLiteral("bake")},
+                    {QStringLiteral("file"), QFileInfo(file).fileName()},
+                    {QStringLiteral("rig"), QLatin1String(c.name)}};
+    Document doc;
+    const Id g = drawingDocument(doc, lines);
+    const double closeGap = doc.settings().closeGap;
+    const StrokeGroup &group = *doc.group(g);
+    row.insert(QStringLiteral("fills_made"), int(group.fills.size()));
+    if (group.fills.empty()) {
+        row.insert(QStringLiteral("skipped"), QStringLiteral("no region to fill"));
+        return row;
+    }
+    const Rig rig = c.kind == RigKind::Pins   ? pinBend(group)
+                    : c.kind == RigKind::Cage ? cageBend(group, closeGap)
+                                              : skeletonBend(group, closeGap, c.mode);
+    const QString error = rig.empty() ? QString() : finbook::testing::poseObject(doc, g, rig);
+    if (rig.empty() || !error.isEmpty()) {
+        row.insert(QStringLiteral("error"), rig.empty() ? QStringLiteral("no rig") : error);
+        ++summary.failed;
+        return row;
+    }
+    using finbook::testing::framePicture;
+    const QTransform t = finbook::testing::pictureView(
+        finbook::testing::shownBounds(*doc.group(g)).adjusted(-5, -5, 5, 5), kPicture);
+    const QImage posed = framePicture(doc, 0, t, kPicture);
+    const long long filledBefore =
+        finbook::testing::darkPixels(framePicture(doc, 0, t, kPicture, true));
+    const int fillsBefore = int(doc.group(g)->fills.size());
+    const int shownBefore = shownFills(*doc.group(g), closeGap);
+    doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
+    const QImage baked = framePicture(doc, 0, t, kPicture);
+    const long long filledAfter =
+        finbook::testing::darkPixels(framePicture(doc, 0, t, kPicture, true));
+    const finbook::testing::PictureAgreement cmp = finbook::testing::comparePictures(posed, baked);
+    const int fillsAfter = int(doc.group(g)->fills.size());
+    const int shownAfter = shownFills(*doc.group(g), closeGap);
+    const double areaChange =
+        filledBefore > 0 ? 100.0 * double(filledAfter - filledBefore) / double(filledBefore) : 0.0;
+    row.insert(QStringLiteral("agree_pct"), cmp.agreePct);
+    row.insert(QStringLiteral("filled_px_before"), double(filledBefore));
+    row.insert(QStringLiteral("filled_px_after"), double(filledAfter));
+    row.insert(QStringLiteral("filled_change_pct"), areaChange);
+    row.insert(QStringLiteral("fills_before"), fillsBefore);
+    row.insert(QStringLiteral("fills_after"), fillsAfter);
+    row.insert(QStringLiteral("fills_shown_before"), shownBefore);
+    row.insert(QStringLiteral("fills_shown_after"), shownAfter);
+    summary.agree.push_back(cmp.agreePct);
+    if (cmp.agreePct < summary.worstPct) {
+        summary.worstPct = cmp.agreePct;
+        summary.worst = QFileInfo(file).fileName();
+    }
+    summary.maxAreaChangePct = std::max(summary.maxAreaChangePct, std::abs(areaChange));
+    summary.fillCountChanged += shownBefore != shownAfter;
+    if (!pngDir.isEmpty()) {
+        QImage sheet(3 * kPicture, kPicture, QImage::Format_RGB32);
+        QPainter painter(&sheet);
+        painter.drawImage(0, 0, posed);
+        painter.drawImage(kPicture, 0, baked);
+        painter.drawImage(2 * kPicture, 0, cmp.difference);
+        painter.setPen(Qt::black);
+        painter.drawText(QRectF(5, 2, 3 * kPicture, 20),
+                         QStringLiteral("%1 %2: posed | applied | differences (%3 %)")
+                             .arg(QFileInfo(file).completeBaseName(), QLatin1String(c.name))
+                             .arg(cmp.agreePct, 0, 'f', 2));
+        painter.end();
+        sheet.save(QDir(pngDir).filePath(QFileInfo(file).completeBaseName() + QLatin1Char('_') +
+                                         QLatin1String(c.name) + QStringLiteral(".png")));
+    }
+    return row;
+}
+
+int benchBake(const QStringList &argsIn)
+{
+    QStringList args = argsIn;
+    QString pngDir;
+    if (args.size() >= 2 && args[0] == QLatin1String("--png")) {
+        pngDir = args[1];
+        QDir().mkpath(pngDir);
+        args = args.mid(2);
+    }
+    if (args.isEmpty()) {
+        std::fprintf(stderr, "bake: no drawing given\n");
+        return 2;
+    }
+    std::map<std::string, Summary> summaries;
+    int unreadable = 0;
+    for (const QString &file : args) {
+        QString error;
+        const auto lines = readDrawing(file, &error);
+        if (!error.isEmpty()) {
+            print({{QStringLiteral("bench"), QStringLiteral("bake")},
+                   {QStringLiteral("file"), file},
+                   {QStringLiteral("error"), error}});
+            ++unreadable;
+            continue;
+        }
+        for (const Case &c : kCases)
+            print(bakeOne(file, lines, c, pngDir, summaries[c.name]));
+    }
+    for (const Case &c : kCases) {
+        const Summary &s = summaries[c.name];
+        QJsonObject row{{QStringLiteral("bench"), QStringLiteral("bake_summary")},
+                        {QStringLiteral("rig"), QLatin1String(c.name)},
+                        {QStringLiteral("drawings"), int(s.agree.size())},
+                        {QStringLiteral("failed"), s.failed}};
+        if (!s.agree.empty()) {
+            row.insert(QStringLiteral("bake_agree_pct_min"),
+                       *std::min_element(s.agree.begin(), s.agree.end()));
+            row.insert(QStringLiteral("bake_agree_pct_median"), finbook::bench::median(s.agree));
+            row.insert(QStringLiteral("worst"), s.worst);
+            row.insert(QStringLiteral("below_99_5"),
+                       int(std::count_if(s.agree.begin(), s.agree.end(),
+                                         [](double p) { return p < 99.5; })));
+            row.insert(QStringLiteral("filled_change_pct_max"), s.maxAreaChangePct);
+            row.insert(QStringLiteral("shown_fill_count_changed"), s.fillCountChanged);
+        }
+        print(row);
+    }
+    return unreadable > 0 ? 1 : 0;
+}
+
+} // namespace
+
+FINBOOK_BENCH("bake", "[--png DIR] FILE...  (Apply Pose keeps what was shown)", benchBake);

@@ -1,0 +1,619 @@
+// What you see is what you keep (issue 45): Apply Pose to Drawing, and every edit that applies
+// a pose first (a stroke, an erase, a move), keeps the drawing as it was shown — the same
+// lines, the same fill colour at every point, no new filled or emptied area — for pins, a
+// cage and a skeleton in each skinning, on random characters posed at random.
+#include "bake_support.h"
+#include "fill_support.h"
+
+#include <finbook/model/cage/cage_setup.h>
+#include <finbook/model/erase/stroke_cut.h>
+#include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_resolve.h>
+#include <finbook/model/finbook_file.h>
+#include <finbook/model/rig/rig_commands.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
+
+#include <QTest>
+
+#include <numbers>
+#include <random>
+#include <set>
+#include <string_view>
+
+using namespace finbook::model;
+using namespace finbook::testing;
+
+namespace {
+
+constexpr int kSide = 480;         // picture side, px
+constexpr double kAgreePct = 99.5; // issue 45's target
+constexpr double kAreaChangePct = 0.5;
+constexpr long long kSpeck = 12; // pixels: a fill shown on fewer is a speck
+
+// Poses of the 12 per rig kind that may still change the picture (the known misses in the
+// README): pins and cages none; a skeleton one; a cut-out skeleton two (not met yet: an
+// expected failure below, which turns into a failure once it is met).
+int kAllowedMisses(int kind, int mode)
+{
+    if (RigKind(kind) != RigKind::Skeleton)
+        return 0;
+    return SkinningMode(mode) == SkinningMode::CutOut ? 2 : 1;
+}
+
+double uniform(std::mt19937 &rng, double lo, double hi)
+{
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
+
+QPolygonF ellipse(QPointF c, double rx, double ry, int corners)
+{
+    QPolygonF ring;
+    for (int i = 0; i <= corners; ++i) {
+        const double a = 2 * std::numbers::pi * i / corners;
+        ring << c + QPointF(rx * std::cos(a), ry * std::sin(a));
+    }
+    return ring;
+}
+
+// A limb: a closed rectangle from `root` (inside the body) along `angle`.
+QPolygonF limb(QPointF root, double angle, double length, double width)
+{
+    const QPointF d(std::cos(angle), std::sin(angle)), n(-d.y(), d.x());
+    const QPointF a = root + n * (width / 2), b = root - n * (width / 2);
+    return QPolygonF{a, a + d * length, b + d * length, b, a};
+}
+
+struct Character {
+    Id group = kNoId;
+    Id head = kNoId; // the head's stroke
+};
+
+// A character drawn as an animator would: a body, a head overlapping it and two to four
+// limbs crossing its outline, every region filled, each fill in a colour of its own.
+Character drawCharacter(Document &doc, std::mt19937 &rng)
+{
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    Character c;
+    c.group = doc.frameAt(0).groups.at(0).id;
+    const QPointF centre(400, 320);
+    const double rx = uniform(rng, 55, 85), ry = uniform(rng, 85, 120);
+    const auto add = [&](const QPolygonF &outline) {
+        auto *command = new AddStrokeCommand(&doc, c.group, polylineStroke(outline, 4.0, 3.0f));
+        doc.undoStack()->push(command);
+        return command->strokeId();
+    };
+    add(ellipse(centre, rx, ry, 48));
+    const double r = uniform(rng, 35, 55);
+    c.head = add(ellipse(centre - QPointF(uniform(rng, -10, 10), ry + r * 0.7), r, r, 36));
+    const int limbs = std::uniform_int_distribution<int>(2, 4)(rng);
+    for (int i = 0; i < limbs; ++i) {
+        // Arms from the shoulders, legs from the hips, pointing outwards and a little down.
+        const bool arm = i < 2;
+        const double side = i % 2 == 0 ? -1.0 : 1.0;
+        const QPointF root = centre + QPointF(side * rx * 0.6, arm ? -ry * 0.45 : ry * 0.7);
+        const double angle =
+            side < 0 ? std::numbers::pi - uniform(rng, 0.1, 0.6) : uniform(rng, 0.1, 0.6);
+        add(limb(root, arm ? angle : std::numbers::pi / 2 - side * uniform(rng, 0.05, 0.3),
+                 uniform(rng, 90, 130), uniform(rng, 22, 32)));
+    }
+    if (auto all = fillAllRegionsCommand(&doc, c.group, 0xff808080))
+        doc.undoStack()->push(all.release());
+    std::vector<Fill> fills = doc.group(c.group)->fills;
+    for (std::size_t i = 0; i < fills.size(); ++i)
+        fills[i].color = distinctColour(i);
+    doc.undoStack()->push(new SetFillsCommand(&doc, c.group, fills, QStringLiteral("Colours")));
+    return c;
+}
+
+QPointF turned(QPointF p, QPointF about, double radians)
+{
+    const QPointF d = p - about;
+    return about + QPointF(std::cos(radians) * d.x() - std::sin(radians) * d.y(),
+                           std::sin(radians) * d.x() + std::cos(radians) * d.y());
+}
+
+// A random pose of kind `kind`: pins holding the left of the drawing and turning the right,
+// a fitted cage with two corners pulled, or the automatic skeleton with each limb turned.
+Rig randomRig(const Document &doc, Id g, RigKind kind, SkinningMode mode, std::mt19937 &rng)
+{
+    const StrokeGroup &group = *doc.group(g);
+    const QRectF box = shownBounds(group);
+    Rig rig;
+    if (kind == RigKind::Pins) {
+        const double turn = uniform(rng, -1.0, 1.0);
+        const QPointF held(box.left() + 0.1 * box.width(), box.center().y());
+        Id id = 1;
+        for (const Stroke &s : group.strokes)
+            for (std::size_t i = 0; i < s.data->points.size(); i += 7) {
+                const QPointF p(s.data->points[i].x, s.data->points[i].y);
+                if (p.x() < box.left() + 0.12 * box.width())
+                    rig.pins.push_back({id++, p, p});
+                else if (p.x() > box.right() - 0.12 * box.width())
+                    rig.pins.push_back({id++, p, turned(p, held, turn)});
+            }
+    } else if (kind == RigKind::Cage) {
+        const auto corners = fitCage(group, kDefaultFitCageCorners, doc.settings().closeGap);
+        if (!corners)
+            return rig;
+        rig.cage.rest = *corners;
+        rig.cage.posed = *corners;
+        for (int k = 0; k < 2; ++k) {
+            const std::size_t at =
+                std::uniform_int_distribution<std::size_t>(0, corners->size() - 1)(rng);
+            rig.cage.posed[at] += QPointF(uniform(rng, -0.2, 0.2) * box.width(),
+                                          uniform(rng, -0.2, 0.2) * box.height());
+        }
+    } else {
+        const auto built = buildSkeletonRig(group, {}, std::nullopt, doc.settings().closeGap);
+        if (!built)
+            return rig;
+        rig.skeleton = *built;
+        rig.skeleton.mode = mode;
+        rig.skeleton.angles.assign(std::size_t(built->jointCount()), 0.0);
+        for (int j = 0; j < built->jointCount(); ++j) {
+            const int parent = built->parent[std::size_t(j)];
+            if (parent >= 0 && (built->isLimbBase(parent) || parent == built->root))
+                rig.skeleton.angles[std::size_t(j)] =
+                    (rng() % 2 ? 1.0 : -1.0) * uniform(rng, 0.6, 1.8);
+        }
+    }
+    return rig;
+}
+
+// The colours the fills of frame 0 show.
+std::set<QRgb> shownColours(const Document &doc)
+{
+    std::set<QRgb> out;
+    for (const StrokeGroup &group : doc.frameAt(0).groups)
+        for (const PaintLayer &layer : paintLayers(group, doc.settings()))
+            for (const FillItem &fill : layer.fills)
+                out.insert(fill.color);
+    return out;
+}
+
+struct Shown {
+    QTransform view;
+    QImage picture, fills;
+    std::set<QRgb> colours;
+};
+
+Shown shown(const Document &doc, Id g, const QTransform *view = nullptr)
+{
+    Shown s;
+    s.view =
+        view ? *view : pictureView(shownBounds(*doc.group(g)).adjusted(-40, -40, 40, 40), kSide);
+    s.picture = framePicture(doc, 0, s.view, kSide);
+    s.fills = framePicture(doc, 0, s.view, kSide, true);
+    s.colours = shownColours(doc);
+    return s;
+}
+
+// Pixels of `picture` in colour c.
+long long colourPixels(const QImage &picture, QRgb c)
+{
+    long long n = 0;
+    for (int y = 0; y < picture.height(); ++y)
+        for (int x = 0; x < picture.width(); ++x)
+            n += sameColour(picture.pixel(x, y), c);
+    return n;
+}
+
+QImage sideBySide(const std::vector<QImage> &pictures)
+{
+    QImage sheet(int(pictures.size()) * kSide, kSide, QImage::Format_RGB32);
+    QPainter painter(&sheet);
+    for (std::size_t i = 0; i < pictures.size(); ++i)
+        painter.drawImage(int(i) * kSide, 0, pictures[i]);
+    return sheet;
+}
+
+QString describe(const char *what, RigKind kind, SkinningMode mode, unsigned seed)
+{
+    return QStringLiteral("%1, rig %2, skinning %3, seed %4")
+        .arg(QLatin1String(what))
+        .arg(int(kind))
+        .arg(int(mode))
+        .arg(seed);
+}
+
+// Pixels of `picture` (painted with `t`) that the strokes `strokes` cover, grown by `grow` px.
+QImage strokeMask(const std::vector<StrokeDataPtr> &strokes, const QTransform &t, double grow)
+{
+    QImage mask(kSide, kSide, QImage::Format_ARGB32_Premultiplied);
+    mask.fill(Qt::transparent);
+    QPainter painter(&mask);
+    painter.setTransform(t);
+    for (const StrokeDataPtr &s : strokes) {
+        QPainterPath path;
+        for (std::size_t i = 0; i < s->points.size(); ++i)
+            i == 0 ? path.moveTo(s->points[i].x, s->points[i].y)
+                   : path.lineTo(s->points[i].x, s->points[i].y);
+        painter.setPen(QPen(Qt::black, s->width + grow, Qt::SolidLine, Qt::RoundCap));
+        painter.drawPath(path);
+    }
+    return mask;
+}
+
+const StrokeData *strokeData(const Document &doc, Id g, Id stroke)
+{
+    for (const Stroke &s : doc.group(g)->strokes)
+        if (s.id == stroke)
+            return s.data.get();
+    return nullptr;
+}
+
+// The regions of object g that stroke `stroke` bounds, as drawn now.
+QPainterPath facesAlong(const Document &doc, Id g, Id stroke)
+{
+    QPainterPath out;
+    out.setFillRule(Qt::WindingFill);
+    const auto regions = objectRegions(*doc.group(g), doc.settings().closeGap);
+    for (int f = 0; f < regions->faceCount(); ++f) {
+        const auto &ids = regions->faceStrokeIds(f);
+        if (std::binary_search(ids.begin(), ids.end(), stroke))
+            out.addPath(regions->displayedPath(*doc.group(g), f));
+    }
+    return out;
+}
+
+// Of the pixels outside `ignore`, the share (%) that show no colour they did not show before:
+// a pixel may lose its fill (an erased line opened its region) but not gain or change one.
+double keptPct(const QImage &before, const QImage &after, const QImage &ignore)
+{
+    long long compared = 0, kept = 0;
+    const QRgb white = qRgb(255, 255, 255);
+    for (int y = 0; y < before.height(); ++y)
+        for (int x = 0; x < before.width(); ++x) {
+            if (qAlpha(ignore.pixel(x, y)) > 0)
+                continue;
+            const QRgb p = before.pixel(x, y), q = after.pixel(x, y);
+            if (sameColour(p, white) && sameColour(q, white))
+                continue;
+            if (onColourEdge(before, x, y) || onColourEdge(after, x, y))
+                continue;
+            ++compared;
+            kept += sameColour(p, q) || sameColour(q, white);
+        }
+    return compared > 0 ? 100.0 * double(kept) / double(compared) : 100.0;
+}
+
+} // namespace
+
+class TestPoseBake : public QObject {
+    Q_OBJECT
+private slots:
+    void applyPoseKeepsWhatWasShown_data();
+    void applyPoseKeepsWhatWasShown();
+    void editsOnAPosedObjectKeepTheRest_data();
+    void editsOnAPosedObjectKeepTheRest();
+    void armCrossingTheBodyKeepsBothColours();
+    void randomPosedEditsUndoAndRedoExactly();
+    void fillAllLeavesFacesOfClosuresAlone();
+};
+
+void TestPoseBake::applyPoseKeepsWhatWasShown_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<int>("mode");
+    QTest::newRow("pins") << int(RigKind::Pins) << 0;
+    QTest::newRow("cage") << int(RigKind::Cage) << 0;
+    QTest::newRow("skeleton, rigid") << int(RigKind::Skeleton) << int(SkinningMode::Rigid);
+    QTest::newRow("skeleton, linear blend")
+        << int(RigKind::Skeleton) << int(SkinningMode::LinearBlend);
+    QTest::newRow("skeleton, cut-out") << int(RigKind::Skeleton) << int(SkinningMode::CutOut);
+}
+
+// The property: random characters, filled, posed at random, then Apply Pose: the picture
+// agrees on ≥ 99.5 % of its pixels, the filled area within 0.5 %, the same colours show, and
+// undo brings back the pose exactly.
+void TestPoseBake::applyPoseKeepsWhatWasShown()
+{
+    QFETCH(int, kind);
+    QFETCH(int, mode);
+    int posed = 0, missed = 0;
+    for (unsigned seed = 1; seed <= 12; ++seed) {
+        std::mt19937 rng(seed * 7919u + unsigned(kind) * 31u + unsigned(mode));
+        Document doc;
+        const Character c = drawCharacter(doc, rng);
+        const Rig rig = randomRig(doc, c.group, RigKind(kind), SkinningMode(mode), rng);
+        if (rig.empty() || !poseObject(doc, c.group, rig).isEmpty() ||
+            !doc.group(c.group)->isDeformed())
+            continue; // a skeleton the drawing does not give, say
+        ++posed;
+        const QString what = describe("Apply Pose", RigKind(kind), SkinningMode(mode), seed);
+        const Shown before = shown(doc, c.group);
+        const StrokeGroup posedGroup = *doc.group(c.group);
+        doc.undoStack()->push(new ApplyPoseCommand(&doc, c.group));
+        QVERIFY2(!doc.group(c.group)->rig.isPosed(), qPrintable(what));
+        const Shown after = shown(doc, c.group, &before.view);
+        const PictureAgreement agreement = comparePictures(before.picture, after.picture);
+        if (agreement.agreePct < kAgreePct) // posed | applied | differences, to look at
+            sideBySide({before.picture, after.picture, agreement.difference})
+                .save(QStringLiteral("pose_bake_%1_%2_%3.png").arg(kind).arg(mode).arg(seed));
+        const double areaBefore = double(darkPixels(before.fills));
+        const double areaAfter = double(darkPixels(after.fills));
+        // Every fill that showed on more than a speck still shows (a sliver thinner than the
+        // pen merges into its neighbour in any drawing), and no colour is new.
+        QStringList lost, gained;
+        for (QRgb colour : before.colours)
+            if (!after.colours.count(colour) && colourPixels(before.picture, colour) > kSpeck)
+                lost << QStringLiteral("%1 (%2 px)")
+                            .arg(QString::number(colour, 16))
+                            .arg(colourPixels(before.picture, colour));
+        for (QRgb colour : after.colours)
+            if (!before.colours.count(colour))
+                gained << QString::number(colour, 16);
+        const bool kept = agreement.agreePct >= kAgreePct &&
+                          std::abs(areaAfter - areaBefore) <= kAreaChangePct / 100.0 * areaBefore &&
+                          lost.isEmpty() && gained.isEmpty();
+        if (!kept) {
+            ++missed;
+            sideBySide({before.picture, after.picture, agreement.difference})
+                .save(QStringLiteral("pose_bake_%1_%2_%3.png").arg(kind).arg(mode).arg(seed));
+            qWarning("%s: %.2f %% agree, filled %.0f -> %.0f px, colours lost %s, gained %s",
+                     qPrintable(what), agreement.agreePct, areaBefore, areaAfter,
+                     qPrintable(lost.join(u' ')), qPrintable(gained.join(u' ')));
+        }
+        doc.undoStack()->undo();
+        QVERIFY2(doc.group(c.group)->strokes == posedGroup.strokes, qPrintable(what));
+        QVERIFY2(doc.group(c.group)->fills == posedGroup.fills, qPrintable(what));
+        QVERIFY2(doc.group(c.group)->rig == posedGroup.rig, qPrintable(what));
+    }
+    QVERIFY2(posed >= 8, qPrintable(QString::number(posed)));
+    // Known misses (README, "What you see is what you keep"): a cut-out limb turned over
+    // another region ends its colour at the cut, where no line is, so the baked regions join
+    // the two; a fill on a sliver that a skeleton pose folds. Each miss is printed above.
+    QEXPECT_FAIL("skeleton, cut-out",
+                 "issue 45 is open for cut-out poses: a limb's colour ends "
+                 "at its cut, where the baked drawing has no line (README)",
+                 Abort);
+    QVERIFY2(
+        missed <= kAllowedMisses(kind, mode),
+        qPrintable(QStringLiteral("%1 of %2 poses changed the picture").arg(missed).arg(posed)));
+}
+
+void TestPoseBake::editsOnAPosedObjectKeepTheRest_data()
+{
+    applyPoseKeepsWhatWasShown_data();
+}
+
+// A stroke drawn, a line erased and the head moved on a posed object, each after the pose was
+// applied in the same step (as the editor does): outside what the edit touched, no pixel
+// gains or changes a colour (a region the eraser opened may lose its fill).
+void TestPoseBake::editsOnAPosedObjectKeepTheRest()
+{
+    QFETCH(int, kind);
+    QFETCH(int, mode);
+    int missed = 0;
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+        for (const char *edit : {"stroke", "erase", "move"}) {
+            std::mt19937 rng(seed * 104729u + unsigned(kind) * 17u + unsigned(mode));
+            Document doc;
+            const Character c = drawCharacter(doc, rng);
+            const Rig rig = randomRig(doc, c.group, RigKind(kind), SkinningMode(mode), rng);
+            if (rig.empty() || !poseObject(doc, c.group, rig).isEmpty())
+                continue;
+            const QString what = describe(edit, RigKind(kind), SkinningMode(mode), seed);
+            const Shown before = shown(doc, c.group);
+            const QRectF box = shownBounds(*doc.group(c.group));
+            auto *stack = doc.undoStack();
+            stack->beginMacro(QStringLiteral("Edit (pose applied)"));
+            stack->push(new ApplyPoseCommand(&doc, c.group));
+            std::vector<StrokeDataPtr> touched;
+            QPainterPath facesOfHead; // for a move: the regions the head bounds, before and after
+            if (std::string_view(edit) == "stroke") {
+                // A line across the middle of the drawing: it cuts regions, whose halves keep
+                // their colours.
+                auto line = polylineStroke(
+                    QPolygonF{box.center() - QPointF(30, 0), box.center() + QPointF(30, 0)});
+                touched.push_back(line);
+                stack->push(new AddStrokeCommand(&doc, c.group, line));
+            } else if (std::string_view(edit) == "erase") {
+                // A rub across the tip of the first limb (its point farthest from the body's
+                // centre): the limb's region opens to the outside and may lose its colour.
+                const StrokeGroup &g = *doc.group(c.group);
+                const Stroke &s = g.strokes.at(2);
+                const QPointF centre = shownBounds(g).center();
+                QPointF at(s.data->points.front().x, s.data->points.front().y);
+                for (const StrokePoint &p : s.data->points)
+                    if (QLineF(centre, QPointF(p.x, p.y)).length() > QLineF(centre, at).length())
+                        at = QPointF(p.x, p.y);
+                const std::vector<QPointF> rub{at - QPointF(5, 5), at + QPointF(5, 5)};
+                const auto pieces = cutStroke(*s.data, rub, 5.0);
+                QVERIFY2(pieces, qPrintable(what));
+                auto rubbed = std::make_shared<StrokeData>();
+                for (const QPointF &p : rub)
+                    rubbed->points.push_back({float(p.x()), float(p.y()), 1.0f});
+                rubbed->width = 12.0f;
+                touched.push_back(rubbed);
+                pushStrokeCut(&doc, s.id, *pieces);
+            } else {
+                facesOfHead.addPath(facesAlong(doc, c.group, c.head));
+                const StrokeData *head = strokeData(doc, c.group, c.head);
+                QVERIFY2(head, qPrintable(what));
+                auto moved = std::make_shared<StrokeData>(*head);
+                for (StrokePoint &p : moved->points)
+                    p.y -= 25.0f;
+                touched.push_back(std::make_shared<StrokeData>(*head));
+                touched.push_back(moved);
+                stack->push(new ReplaceStrokeDataCommand(&doc, {c.head}, {moved},
+                                                         QStringLiteral("Move Strokes")));
+            }
+            stack->endMacro();
+            // What the edit touched: its lines grown by the pen and a margin, and for a move
+            // every region the head bounds before and after (moving an outline that overlaps
+            // others changes the regions it crosses).
+            QImage ignore = strokeMask(touched, before.view, 10.0);
+            if (std::string_view(edit) == "move") {
+                facesOfHead.addPath(facesAlong(doc, c.group, c.head));
+                QPainter painter(&ignore);
+                painter.setTransform(before.view);
+                painter.fillPath(facesOfHead, Qt::black);
+            }
+            const Shown after = shown(doc, c.group, &before.view);
+            const double kept = keptPct(before.picture, after.picture, ignore);
+            if (kept < kAgreePct)
+                sideBySide({before.picture, after.picture, ignore})
+                    .save(QStringLiteral("pose_edit_%1_%2_%3_%4.png")
+                              .arg(QLatin1String(edit))
+                              .arg(kind)
+                              .arg(mode)
+                              .arg(seed));
+            if (kept < kAgreePct) {
+                ++missed;
+                qWarning("%s: %.2f %% kept", qPrintable(what), kept);
+            }
+            stack->undo();
+            QVERIFY2(doc.group(c.group)->rig == rig, qPrintable(what));
+        }
+    }
+    // Of the 12 edits per rig kind, the known misses above (printed); a move of an outline
+    // that a skeleton pose folded over others changes the regions it crossed.
+    QEXPECT_FAIL("skeleton, cut-out", "issue 45 is open for cut-out poses (README)", Abort);
+    QVERIFY2(missed <= kAllowedMisses(kind, mode), qPrintable(QString::number(missed)));
+}
+
+// Issue 45, item 1: both arms raised ~100° in a cut-out pose turned the blue body yellow.
+// Here an arm swung across the body: the body keeps its colour on both sides of the arm.
+void TestPoseBake::armCrossingTheBodyKeepsBothColours()
+{
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, g, polylineStroke(ellipse({400, 300}, 70, 110, 48))));
+    doc.undoStack()->push(new AddStrokeCommand(
+        &doc, g, polylineStroke(limb({440, 240}, 0.2, 130, 28)))); // the right arm
+    if (auto all = fillAllRegionsCommand(&doc, g, 0xff808080))
+        doc.undoStack()->push(all.release());
+    std::vector<Fill> fills = doc.group(g)->fills;
+    QVERIFY(fills.size() >= 2);
+    constexpr QRgb kBody = 0xff2040e0, kArm = 0xffe0c020;
+    const QPolygonF arm = limb({440, 240}, 0.2, 130, 28);
+    for (Fill &f : fills)
+        f.color = arm.containsPoint(f.seed, Qt::OddEvenFill) ? kArm : kBody;
+    doc.undoStack()->push(new SetFillsCommand(&doc, g, fills, QStringLiteral("Colours")));
+    Rig rig;
+    rig.pins = {{1, {400, 200}, {400, 200}},
+                {2, {400, 400}, {400, 400}},
+                {3, {560, 266}, {400, 330}}}; // the arm's hand swung down across the body
+    QVERIFY(poseObject(doc, g, rig).isEmpty());
+    const Shown before = shown(doc, g);
+    doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
+    const Shown after = shown(doc, g, &before.view);
+    const PictureAgreement agreement = comparePictures(before.picture, after.picture);
+    QVERIFY2(agreement.agreePct >= kAgreePct, qPrintable(QString::number(agreement.agreePct)));
+    QCOMPARE(after.colours, before.colours);
+}
+
+// The randomized undo test with posed-frame edits: random characters under random rigs, then
+// random edits that apply the pose first (a stroke, an erase, a move, Fill All, recolouring),
+// each one step as the editor makes it, with the object posed again between them. Undoing
+// everything gives the document's first bytes back, redoing everything its last.
+void TestPoseBake::randomPosedEditsUndoAndRedoExactly()
+{
+    constexpr RigKind kinds[] = {RigKind::Pins, RigKind::Cage, RigKind::Skeleton};
+    int edits = 0;
+    for (unsigned seed = 1; seed <= 9; ++seed) {
+        std::mt19937 rng(seed * 2654435761u);
+        Document doc;
+        const Character c = drawCharacter(doc, rng);
+        const RigKind kind = kinds[seed % 3];
+        const auto mode = SkinningMode(seed % (kLastSkinningMode + 1));
+        const Rig rig = randomRig(doc, c.group, kind, mode, rng);
+        if (rig.empty() || !poseObject(doc, c.group, rig).isEmpty())
+            continue;
+        doc.undoStack()->clear();
+        const QByteArray start = serializeFinbook(doc);
+        auto *stack = doc.undoStack();
+        for (int step = 0; step < 6; ++step) {
+            if (step > 0) { // pose it again: a new pose of the baked drawing's rig
+                const Rig again = randomRig(doc, c.group, kind, mode, rng);
+                if (again.empty())
+                    continue;
+                stack->push(new SetRigCommand(&doc, c.group, again, QStringLiteral("Pose")));
+                if (!poseObject(doc, c.group, again).isEmpty())
+                    continue;
+            }
+            stack->beginMacro(QStringLiteral("Edit (pose applied)"));
+            stack->push(new ApplyPoseCommand(&doc, c.group));
+            const StrokeGroup &g = *doc.group(c.group);
+            switch (rng() % 5) {
+            case 0:
+                stack->push(new AddStrokeCommand(
+                    &doc, c.group,
+                    polylineStroke(QPolygonF{QPointF(uniform(rng, 300, 500), 200),
+                                             QPointF(uniform(rng, 300, 500), 450)})));
+                break;
+            case 1: {
+                const Stroke &s = g.strokes[rng() % g.strokes.size()];
+                const auto &pts = s.data->points;
+                const QPointF at(pts[pts.size() / 2].x, pts[pts.size() / 2].y);
+                const Id id = s.id;
+                if (const auto pieces = cutStroke(*s.data, {at, at + QPointF(4, 4)}, 6.0))
+                    pushStrokeCut(&doc, id, *pieces);
+                break;
+            }
+            case 2: {
+                if (const StrokeData *head = strokeData(doc, c.group, c.head)) {
+                    auto moved = std::make_shared<StrokeData>(*head);
+                    for (StrokePoint &p : moved->points)
+                        p.x += 12.0f;
+                    stack->push(new ReplaceStrokeDataCommand(&doc, {c.head}, {moved},
+                                                             QStringLiteral("Move Strokes")));
+                }
+                break;
+            }
+            case 3:
+                if (auto all = fillAllRegionsCommand(&doc, c.group, distinctColour(rng() % 50)))
+                    stack->push(all.release());
+                break;
+            default: {
+                std::vector<Fill> fills = doc.group(c.group)->fills;
+                if (!fills.empty())
+                    fills[rng() % fills.size()].color = distinctColour(rng() % 50);
+                stack->push(new SetFillsCommand(&doc, c.group, fills, QStringLiteral("Colour")));
+            }
+            }
+            stack->endMacro();
+            ++edits;
+        }
+        const QByteArray end = serializeFinbook(doc);
+        while (stack->canUndo())
+            stack->undo();
+        QVERIFY2(serializeFinbook(doc) == start, qPrintable(QStringLiteral("seed %1").arg(seed)));
+        while (stack->canRedo())
+            stack->redo();
+        QVERIFY2(serializeFinbook(doc) == end, qPrintable(QStringLiteral("seed %1").arg(seed)));
+    }
+    QVERIFY2(edits >= 30, qPrintable(QString::number(edits)));
+}
+
+// Issue 45, item 3: Fill All filled a wedge bounded mostly by gap closures.
+void TestPoseBake::fillAllLeavesFacesOfClosuresAlone()
+{
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    // Three short dashes round a triangle, each 6 px long in the middle of a 40 px side:
+    // closed by three 17 px closures, the face is mostly closures.
+    const QPointF a(300, 300), b(340, 300), c(320, 300 - 40 * std::sqrt(3.0) / 2);
+    for (auto [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
+        const QPointF mid = (p + q) / 2, d = (q - p) / QLineF(p, q).length();
+        doc.undoStack()->push(
+            new AddStrokeCommand(&doc, g, polylineStroke(QPolygonF{mid - 3 * d, mid + 3 * d})));
+    }
+    doc.undoStack()->push(setCloseGapCommand(&doc, 25.0).release());
+    const auto regions = objectRegions(*doc.group(g), doc.settings().closeGap);
+    QCOMPARE(regions->faceCount(), 1);
+    QVERIFY(finbook::geometry::closureShare(regions->regions(), 0) > 0.5);
+    QVERIFY(!fillAllRegionsCommand(&doc, g, 0xffe03020));             // Fill All leaves it
+    QVERIFY(fillRegionCommand(&doc, g, (a + b + c) / 3, 0xffe03020)); // a click fills it
+    // A closed outline is filled by Fill All as before.
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, g, polylineStroke(squareCorners(QRectF(500, 250, 80, 80)))));
+    QVERIFY(fillAllRegionsCommand(&doc, g, 0xffe03020));
+}
+
+QTEST_MAIN(TestPoseBake)
+#include "tst_pose_bake.moc"
