@@ -122,6 +122,7 @@ private slots:
     void editShapeMovesTheRestCage();
     void fitCageWrapsTheObject();
     void replacingPosedPinsAsksFirst();
+    void removingAPosedRigSaysRemoving();
     void aNewCageStartsWithNothingSelected();
 };
 
@@ -252,6 +253,31 @@ void TestCageTool::replacingPosedPinsAsksFirst()
     stack->undo();
     QCOMPARE(fx.object().rig.kind(), RigKind::Pins);
     QCOMPARE(fx.object().rig.pins[1].target, QPointF(580, 360));
+}
+
+// Issue 45: Remove Rig on a posed object asked about replacing its rig.
+void TestCageTool::removingAPosedRigSaysRemoving()
+{
+    Fixture fx;
+    auto *stack = fx.doc.undoStack();
+    stack->push(new AddPinCommand(&fx.doc, fx.group, {200, 300}, {200, 300}));
+    stack->push(new AddPinCommand(&fx.doc, fx.group, {600, 300}, {600, 300}));
+    stack->push(new MovePinCommand(&fx.doc, fx.group, fx.object().rig.pins[1].id, {580, 360}, 1));
+    QString question;
+    QTimer::singleShot(0, [&question] {
+        for (QWidget *w : QApplication::topLevelWidgets())
+            if (auto *box = qobject_cast<QMessageBox *>(w);
+                box && box->objectName() == QStringLiteral("discardPosePrompt")) {
+                question = box->text();
+                box->button(QMessageBox::Discard)->click();
+            }
+    });
+    fx.actions.removePinsAction()->trigger();
+    QVERIFY2(question.contains(QStringLiteral("Removing its rig")), qPrintable(question));
+    QVERIFY(!question.contains(QStringLiteral("Replacing")));
+    QCOMPARE(fx.object().rig.kind(), RigKind::None);
+    stack->undo();
+    QCOMPARE(fx.object().rig.kind(), RigKind::Pins);
 }
 
 // Issue 22, bug 3: after Remove Rig a new cage came up with the old cage's corners selected,

@@ -6,11 +6,14 @@
 #include "tst_window_support.h"
 
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/finbook_file.h>
 #include <finbook/ui/canvas/canvas_tool.h>
 #include <finbook/ui/tools/stroke_editing.h>
 #include <finbook/ui/window/editor_state.h>
 
 #include <QtTest>
+
+#include <limits>
 
 using namespace finbook;
 using namespace finbook::test;
@@ -37,6 +40,7 @@ private slots:
     void pasteIntoAnotherFrameKeepsRegister();
     void ctrlVOverTheCanvasLandsAtTheMouse();
     void fillsTravelWithTheStrokesAroundThem();
+    void pasteAcceptsOnlyWhatAFileCanHold();
 
 private:
     ui::EditorState *state() const { return m_window->editorState(); }
@@ -181,6 +185,32 @@ void TestPaste::fillsTravelWithTheStrokesAroundThem()
     doc()->undoStack()->undo();
     QVERIFY(doc()->frameAt(1).groups[0].fills.empty());
     QVERIFY(doc()->frameAt(1).groups[0].strokes.empty());
+}
+
+// Issue 54, item 3: clipboard strokes of width 0, 1e6 or 1e30 were pasted, and every save after
+// failed. Paste reads as a file does: what it accepts, a file holds.
+void TestPaste::pasteAcceptsOnlyWhatAFileCanHold()
+{
+    const auto stroke = [](float width) {
+        auto s = std::make_shared<model::StrokeData>();
+        s->points = {{10, 10, 1}, {60, 40, 0.5f}};
+        s->width = width;
+        return s;
+    };
+    for (float bad : {0.0f, -1.0f, 1e6f, 1e30f, std::numeric_limits<float>::quiet_NaN(),
+                      std::numeric_limits<float>::infinity()})
+        QVERIFY2(!ui::decodeStrokes(ui::encodeStrokes({stroke(bad)}, {})),
+                 qPrintable(QString::number(bad)));
+    for (float good : {0.01f, 3.0f, model::kMaxStrokeWidth}) {
+        const auto clip = ui::decodeStrokes(ui::encodeStrokes({stroke(good)}, {}));
+        QVERIFY(clip && clip->strokes.size() == 1);
+        model::Document pasted;
+        pasted.undoStack()->push(new model::InsertFrameCommand(&pasted, 0));
+        pasted.undoStack()->push(new model::AddStrokeCommand(
+            &pasted, pasted.frameAt(0).groups.at(0).id, clip->strokes.front()));
+        const auto reread = model::readFinbook(model::serializeFinbook(pasted));
+        QVERIFY2(reread, qPrintable(QString::number(good)));
+    }
 }
 
 QTEST_MAIN(TestPaste)

@@ -40,6 +40,7 @@ private slots:
     void conflictsAcrossAlternativesAreFound();
     void settingsKeepListsAndReadOldSingleValues();
     void applyPoseHasAShortcut();
+    void undoIsListedByItsName();
 
 private:
     int strokeCount() const
@@ -222,6 +223,22 @@ void TestShortcuts::applyPoseHasAShortcut()
     QVERIFY(!m_window->action(QStringLiteral("deform.apply"))->isEnabled());
     QVERIFY(!m_window->action(QStringLiteral("deform.reset"))->isEnabled());
     QVERIFY(m_window->action(QStringLiteral("deform.removePins"))->isEnabled());
+}
+
+// Undo's menu text names the step it would undo; the shortcut lists name the command.
+void TestShortcuts::undoIsListedByItsName()
+{
+    draw();
+    QVERIFY(m_window->action(QStringLiteral("edit.undo"))->text().size() > 6);
+    ui::ShortcutsDialog list(m_window->shortcuts());
+    auto *table = list.findChild<QTableWidget *>(QStringLiteral("shortcutsTable"));
+    QStringList names;
+    for (int r = 0; r < table->rowCount(); ++r)
+        names << table->item(r, 0)->text();
+    QVERIFY2(names.contains(QStringLiteral("Undo")), qPrintable(names.join(u'|')));
+    QVERIFY2(names.contains(QStringLiteral("Redo")), qPrintable(names.join(u'|')));
+    for (const QString &name : names)
+        QVERIFY2(!name.startsWith(QStringLiteral("Undo ")), qPrintable(name));
 }
 
 QTEST_MAIN(TestShortcuts)

@@ -87,6 +87,7 @@ private slots:
     void importRefusesWhatIsNotSound();
     void rowDrawsTheClipAndDragMovesIt();
     void clipActionsAreUndoable();
+    void soundPastTheLastFrameIsShown();
     void playbackFollowsTheSoundClockSilently();
     void steppingPlaysTheSliceUnderTheFrame();
     void exportDialogSaysWhichFormatsHaveSound();
@@ -163,6 +164,30 @@ void TestSoundRow::rowDrawsTheClipAndDragMovesIt()
     QTest::keyClick(f.row, Qt::Key_Escape);
     QTest::mouseRelease(f.row, Qt::LeftButton, {}, QPoint(f.row->xOfTick(8.5), y));
     QCOMPARE(f.doc.soundtrack().clip(id)->start, qint64(0));
+}
+
+// Issue 45: a sound longer than the animation showed no sign of the part past the last frame.
+void TestSoundRow::soundPastTheLastFrameIsShown()
+{
+    Fixture f(4);
+    QCOMPARE(f.row->secondsPastEnd(), 0.0);
+    const int lastLeft = f.row->xOfTick(3.0), lastRight = f.row->xOfTick(3.99);
+    QVERIFY(lastLeft >= 0 && lastRight > lastLeft);
+    const int pastX = lastRight + (lastRight - lastLeft);
+    QVERIFY(pastX + 20 < f.row->width());
+    const QImage before = f.row->grab().toImage();
+    const Id id = f.import(f.write(QStringLiteral("long.wav"), sound_test::sineWav(1.0)));
+    QVERIFY(id != model::kNoId);
+    // One second at 12 fps: 12 ticks, 8 of them after the 4 frames.
+    QTRY_VERIFY(std::abs(f.row->secondsPastEnd() - 8.0 / 12.0) < 0.01);
+    const QImage after = f.row->grab().toImage();
+    int changed = 0;
+    for (int x = pastX; x < f.row->width(); ++x)
+        for (int y = 0; y < f.row->height(); ++y)
+            changed += before.pixel(x, y) != after.pixel(x, y);
+    QVERIFY2(changed > 50, qPrintable(QString::number(changed)));
+    f.doc.undoStack()->undo();
+    QCOMPARE(f.row->secondsPastEnd(), 0.0);
 }
 
 void TestSoundRow::clipActionsAreUndoable()

@@ -87,6 +87,7 @@ private slots:
     void duplicateThenEditCopyLeavesOriginal();
     void frameActionsEditAndUndo();
     void deleteIsDisabledOnTheLastFrame();
+    void deleteRemovesTheSelectedFrames();
     void clickPicksTheCurrentFrame();
     void draggingTheNumberBandScrubs();
     void draggingAThumbnailReorders();
@@ -187,6 +188,27 @@ void TestTimeline::deleteIsDisabledOnTheLastFrame()
     QVERIFY(!f.actions->previous()->isEnabled());
     f.doc.undoStack()->undo();
     QVERIFY(f.actions->remove()->isEnabled());
+}
+
+// Issue 45: Delete Frame with frames 2–3 selected deleted only the current frame.
+void TestTimeline::deleteRemovesTheSelectedFrames()
+{
+    Fixture f(5);
+    const std::vector<Id> before = frameIds(f.doc);
+    QTest::mouseClick(f.viewport(), Qt::LeftButton, {}, f.view()->thumbnailRect(1).center());
+    QTest::mouseClick(f.viewport(), Qt::LeftButton, Qt::ShiftModifier,
+                      f.view()->thumbnailRect(2).center());
+    QCOMPARE(f.state->selectedFrames(), (std::vector<int>{1, 2}));
+    f.actions->remove()->trigger();
+    QCOMPARE(frameIds(f.doc), (std::vector<Id>{before[0], before[3], before[4]}));
+    QCOMPARE(f.doc.undoStack()->count(), 1); // one step
+    f.doc.undoStack()->undo();
+    QCOMPARE(frameIds(f.doc), before);
+    // Every frame selected: the first stays.
+    f.state->setCurrentFrameIndex(0);
+    f.state->setSelectedFrames(before);
+    f.actions->remove()->trigger();
+    QCOMPARE(frameIds(f.doc), (std::vector<Id>{before[0]}));
 }
 
 void TestTimeline::clickPicksTheCurrentFrame()

@@ -15,7 +15,7 @@ namespace finbook::ui {
 namespace {
 QString plainText(const QAction *action)
 {
-    return withoutMnemonic(action->text());
+    return shortcutName(action);
 }
 } // namespace
 

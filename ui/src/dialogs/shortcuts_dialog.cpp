@@ -21,7 +21,7 @@ ShortcutsDialog::ShortcutsDialog(const ShortcutRegistry *registry, QWidget *pare
     setObjectName(QStringLiteral("shortcutsDialog"));
     QList<QPair<QString, QString>> rows;
     for (const QAction *a : registry->actions())
-        rows.append({withoutMnemonic(a->text()),
+        rows.append({shortcutName(a),
                      QKeySequence::listToString(a->shortcuts(), QKeySequence::NativeText)});
     rows.append({tr("Pan the view"), tr("Space + drag, or middle button drag")});
     rows.append({tr("Zoom about the cursor"), tr("Mouse wheel")});

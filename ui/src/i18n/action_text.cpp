@@ -9,6 +9,7 @@ namespace {
 
 // The dynamic properties remember what this file set, to tell it from an explicit value.
 constexpr char kIconTextSet[] = "finbookPlainIconText";
+constexpr char kShortcutName[] = "finbookShortcutName";
 constexpr char kToolTipSet[] = "finbookPlainToolTip";
 
 // Qt's rule for icon texts and tooltips derived from the text (qt_strippedText in qaction.cpp).
@@ -55,6 +56,17 @@ void sync(QAction *action)
 }
 
 } // namespace
+
+QString shortcutName(const QAction *action)
+{
+    const QVariant name = action->property(kShortcutName);
+    return name.isValid() ? name.toString() : withoutMnemonic(action->text());
+}
+
+void setShortcutName(QAction *action, const QString &name)
+{
+    action->setProperty(kShortcutName, name);
+}
 
 QString withoutMnemonic(const QString &text)
 {

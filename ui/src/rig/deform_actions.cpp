@@ -42,7 +42,8 @@ DeformActions::DeformActions(EditorState *state, QObject *parent)
     });
     connect(m_removePins, &QAction::triggered, this, [this, doc] {
         const model::StrokeGroup *g = m_state->currentGroup();
-        if (g && !g->rig.empty() && confirmDiscardingPose(QApplication::activeWindow(), *g))
+        if (g && !g->rig.empty() &&
+            confirmDiscardingPose(QApplication::activeWindow(), *g, ui::RigChange::Remove))
             doc->undoStack()->push(new model::RemoveRigCommand(doc, g->id));
     });
     connect(&m_controller, &model::DeformController::errorOccurred, this,

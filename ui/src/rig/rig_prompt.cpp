@@ -11,14 +11,17 @@ struct RigPrompt {
 };
 } // namespace
 
-bool confirmDiscardingPose(QWidget *parent, const model::StrokeGroup &group)
+bool confirmDiscardingPose(QWidget *parent, const model::StrokeGroup &group, RigChange change)
 {
     if (!group.rig.isPosed())
         return true;
-    QMessageBox box(QMessageBox::Question, RigPrompt::tr("Discard the Pose?"),
-                    RigPrompt::tr("\"%1\" is posed. Replacing its rig sends the drawing back to "
-                                  "rest. (Apply Pose to Drawing first keeps the pose.)")
-                        .arg(group.name),
+    const QString text =
+        change == RigChange::Remove
+            ? RigPrompt::tr("\"%1\" is posed. Removing its rig sends the drawing back to "
+                            "rest. (Apply Pose to Drawing first keeps the pose.)")
+            : RigPrompt::tr("\"%1\" is posed. Replacing its rig sends the drawing back to "
+                            "rest. (Apply Pose to Drawing first keeps the pose.)");
+    QMessageBox box(QMessageBox::Question, RigPrompt::tr("Discard the Pose?"), text.arg(group.name),
                     QMessageBox::Discard | QMessageBox::Cancel, parent);
     box.setObjectName(QStringLiteral("discardPosePrompt"));
     box.setDefaultButton(QMessageBox::Cancel);

@@ -6,6 +6,7 @@
 #include <finbook/ui/timeline/timeline_view.h>
 #include <finbook/ui/window/editor_state.h>
 
+#include <QLocale>
 #include <QMenu>
 #include <QMouseEvent>
 #include <QPainter>
@@ -101,6 +102,37 @@ double SoundRow::clipEndTick(model::Id clipId) const
     return double(clip->start) + seconds * doc.settings().fps;
 }
 
+double SoundRow::secondsPastEnd() const
+{
+    const model::Document &doc = *m_controller->editorState()->document();
+    qint64 total = 0;
+    for (int row = 0; row < doc.frameCount(); ++row)
+        total += std::max(1, doc.frameAt(row).hold);
+    double past = 0.0;
+    for (const model::SoundClip &clip : doc.soundtrack().clips())
+        past = std::max(past, clipEndTick(clip.id) - double(total));
+    return past / std::max(1, doc.settings().fps);
+}
+
+void SoundRow::paintPastEnd(QPainter &painter, const std::vector<Cell> &cells)
+{
+    const model::Document &doc = *m_controller->editorState()->document();
+    const double seconds = secondsPastEnd();
+    if (!(seconds > 0.0) || cells.empty() || cells.back().row != doc.frameCount() - 1)
+        return;
+    const int left = cells.back().left + cells.back().width;
+    if (left >= width())
+        return;
+    const QRect past(left, 2, width() - left, height() - 4);
+    QColor hatch = palette().color(QPalette::Text);
+    hatch.setAlpha(90);
+    painter.fillRect(past, QBrush(hatch, Qt::BDiagPattern));
+    painter.setPen(palette().color(QPalette::Text));
+    painter.drawText(
+        past.adjusted(4, 0, -2, 0), Qt::AlignVCenter | Qt::AlignLeft,
+        tr("+%1 s after the last frame (not played)").arg(QLocale().toString(seconds, 'f', 1)));
+}
+
 model::Id SoundRow::clipAt(int x) const
 {
     const double tick = tickAt(x);
@@ -124,6 +156,7 @@ void SoundRow::paintEvent(QPaintEvent *)
     }
     for (int i = 0; i < int(clips.size()); ++i)
         paintClip(painter, cells, i);
+    paintPastEnd(painter, cells);
     if (clips.empty()) {
         painter.setPen(palette().color(QPalette::PlaceholderText));
         painter.drawText(rect().adjusted(8, 0, -8, 0), Qt::AlignVCenter | Qt::AlignLeft,

@@ -110,7 +110,23 @@ void FrameActions::removeFrame()
     model::Document *doc = m_state->document();
     if (doc->frameCount() <= 1)
         return; // a flipbook always keeps one page to draw on
-    doc->undoStack()->push(new model::DeleteFrameCommand(doc, m_state->currentFrameId()));
+    // The frames selected in the timeline go together when the current frame is one of them
+    // (one undo step); a flipbook keeps at least its first selected page.
+    std::vector<int> picked = m_state->selectedFrames();
+    const int current = m_state->currentFrameIndex();
+    if (picked.size() < 2 || std::find(picked.begin(), picked.end(), current) == picked.end()) {
+        doc->undoStack()->push(new model::DeleteFrameCommand(doc, m_state->currentFrameId()));
+        return;
+    }
+    if (int(picked.size()) >= doc->frameCount())
+        picked.erase(picked.begin());
+    std::vector<model::Id> ids;
+    for (int row : picked)
+        ids.push_back(doc->frameAt(row).id);
+    doc->undoStack()->beginMacro(tr("Delete %n Frame(s)", nullptr, int(ids.size())));
+    for (model::Id id : ids)
+        doc->undoStack()->push(new model::DeleteFrameCommand(doc, id));
+    doc->undoStack()->endMacro();
 }
 
 void FrameActions::moveFrame(int delta)

@@ -94,7 +94,8 @@ std::optional<ClipboardContent> decodeStrokes(const QByteArray &bytes)
         total += n;
         // Each point takes 12 bytes: refuse counts the remaining bytes cannot hold.
         if (in.status() != QDataStream::Ok || n == 0 || total > kMaxClipPoints ||
-            quint64(n) * 12 > quint64(bytes.size()) || !finite(s->width) || s->width < 0)
+            quint64(n) * 12 > quint64(bytes.size()) ||
+            !(s->width > 0.0f && s->width <= model::kMaxStrokeWidth)) // as a file: also NaN
             return std::nullopt;
         s->color = color;
         s->points.resize(n);

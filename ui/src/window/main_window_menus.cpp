@@ -6,6 +6,7 @@
 #include <finbook/ui/dialogs/shortcuts_dialog.h>
 #include <finbook/ui/export/export_dialog.h>
 #include <finbook/ui/export/export_done.h>
+#include <finbook/ui/i18n/action_text.h>
 #include <finbook/ui/keys/shortcut_registry.h>
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/reference/reference_panel.h>
@@ -128,9 +129,11 @@ void MainWindow::createEditMenu()
     QUndoStack *stack = m_doc->undoStack();
     QAction *undo = stack->createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("edit.undo"));
+    setShortcutName(undo, tr("Undo"));
     m_shortcuts->registerAction(undo);
     QAction *redo = stack->createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("edit.redo"));
+    setShortcutName(redo, tr("Redo"));
     m_shortcuts->registerAction(redo);
     m_editMenu->addActions({undo, redo});
     m_fileBar->addActions({undo, redo});

@@ -14,6 +14,12 @@ namespace finbook::ui {
 // ("開く(&O)..." -> "開く..."). "&&" stays a literal '&'. Everything else is kept.
 QString withoutMnemonic(const QString &text);
 
+// An action's name in the shortcut lists (Help → Keyboard Shortcuts, Preferences): the name
+// set with setShortcutName() when its text changes as it is used (Undo reads "Undo Change
+// Frame Exposure"), else its text, withoutMnemonic().
+QString shortcutName(const QAction *action);
+void setShortcutName(QAction *action, const QString &name);
+
 // The icon text Qt would derive from `text` if it knew the bracketed form: withoutMnemonic()
 // minus "...", trimmed (Qt's own rule for derived icon texts).
 QString plainIconText(const QString &text);

@@ -31,6 +31,10 @@ public:
     int xOfTick(double tick) const;
     // The top clip sounding at x, or kNoId.
     model::Id clipAt(int x) const;
+    // How many seconds of sound play on past the last frame (0 when none does): the row shows
+    // that part hatched after the last frame, with the seconds written on it, since playback
+    // and export stop at the last frame.
+    double secondsPastEnd() const;
     // The clip being dragged and how many ticks it moved (tests).
     qint64 dragTicks() const { return m_dragTicks; }
 
@@ -55,6 +59,7 @@ private:
     };
     std::vector<Cell> visibleCells() const;
     void paintClip(QPainter &painter, const std::vector<Cell> &cells, int index);
+    void paintPastEnd(QPainter &painter, const std::vector<Cell> &cells);
     double clipEndTick(model::Id clipId) const;
 
     SoundController *m_controller;
