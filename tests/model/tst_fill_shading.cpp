@@ -10,7 +10,9 @@
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/finbook_file.h>
+#include <finbook/model/inbetween/inbetween_commands.h>
 #include <finbook/model/shade/fill_shading.h>
+#include <finbook/model/shade/same_object.h>
 #include <finbook/model/shade/shade_commands.h>
 
 #include <QTest>
@@ -78,6 +80,9 @@ class TestFillShading : public QObject {
     Q_OBJECT
 private slots:
     void shadingIsOneUndoStep();
+    void shadingAppliesToTheObjectInEveryFrame();
+    void framesMadeLaterShowTheShading();
+    void sameNamesPairInOrder();
     void lightIsOneUndoStepAndSanitized();
     void newFillsAreShadedAsTheObjectsOthers();
     void discLitFromTheLeftIsBrighterOnItsLeft();
@@ -109,6 +114,111 @@ void TestFillShading::shadingIsOneUndoStep()
     // Recolouring keeps the shading.
     push(doc, fillRegionCommand(&doc, g, kCentre, 0xff2040e0));
     QCOMPARE(doc.group(g)->fills[0].shading.ramp, ShadeRamp::ThreeTones);
+}
+
+// Issue 45, item 4: a character shaded on frame 3 of 5 is shaded on all five, as one step; an
+// object of another name stays flat; undo gives every frame back exactly; the file keeps it.
+void TestFillShading::shadingAppliesToTheObjectInEveryFrame()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    for (int i = 1; i < 5; ++i)
+        doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frameAt(0).id, i));
+    // Another object on frame 2, filled, and a frame-5 namesake that has no fill yet.
+    auto *other = new AddObjectCommand(&doc, doc.frameAt(1).id, -1, QStringLiteral("Sun"));
+    const Id sun = other->groupId();
+    doc.undoStack()->push(other);
+    QPolygonF square{QPointF(320, 20), QPointF(380, 20), QPointF(380, 80), QPointF(320, 80),
+                     QPointF(320, 20)};
+    doc.undoStack()->push(new AddStrokeCommand(&doc, sun, polylineStroke(square)));
+    push(doc, fillRegionCommand(&doc, sun, QPointF(350, 50), 0xfff0d020));
+    doc.undoStack()->clear();
+    QCOMPARE(doc.frameCount(), 5);
+    const std::vector<Frame> before = doc.frames();
+    const QByteArray beforeBytes = serializeFinbook(doc);
+
+    const Id onFrame3 = doc.frameAt(2).groups.at(0).id;
+    QCOMPARE(sameObjectInFrames(doc, onFrame3).size(), std::size_t(5));
+    QCOMPARE(sameObjectInFrames(doc, sun), std::vector<Id>{sun});
+    push(doc, shadeFillsCommand(&doc, onFrame3, {ShadeRamp::ThreeTones, false}));
+    QCOMPARE(doc.undoStack()->count(), 1);
+    const FillShading three{ShadeRamp::ThreeTones, false};
+    for (int i = 0; i < 5; ++i) {
+        const StrokeGroup &disc = doc.frameAt(i).groups.at(0);
+        QCOMPARE(disc.fills.size(), std::size_t(1));
+        QCOMPARE(disc.fills[0].shading, three);
+        // Every frame draws the tones, not only the one it was set on.
+        QVERIFY(!fillList(disc, doc.settings()).at(0).tones.empty());
+    }
+    QCOMPARE(doc.group(sun)->fills.at(0).shading, FillShading());
+    QVERIFY(!shadeFillsCommand(&doc, g, three)); // already so everywhere
+
+    doc.undoStack()->undo();
+    for (int i = 0; i < 5; ++i)
+        QCOMPARE(doc.frameAt(i).groups.at(0).fills, before[std::size_t(i)].groups.at(0).fills);
+    QCOMPARE(serializeFinbook(doc), beforeBytes);
+    doc.undoStack()->redo();
+
+    // Saved and opened again, every frame is still shaded.
+    auto loaded = readFinbook(serializeFinbook(doc));
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    QCOMPARE(loaded->frames.size(), std::size_t(5));
+    for (const Frame &frame : loaded->frames)
+        QCOMPARE(frame.groups.at(0).fills.at(0).shading, three);
+}
+
+// Frames duplicated or in-betweened after the shading show it, and a frame where the object is
+// filled for the first time takes the object's shading rather than starting flat.
+void TestFillShading::framesMadeLaterShowTheShading()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frameAt(0).id, 1));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::TwoTones, true}));
+    const FillShading two{ShadeRamp::TwoTones, true};
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frameAt(1).id, 2));
+    QCOMPARE(doc.frameAt(2).groups.at(0).fills.at(0).shading, two);
+    auto *between = new InsertInbetweensCommand(&doc, doc.frameAt(0).id, doc.frameAt(1).id, 2, {});
+    QVERIFY(!between->isObsolete());
+    doc.undoStack()->push(between);
+    QCOMPARE(doc.frameCount(), 5);
+    for (int i = 0; i < 5; ++i)
+        QCOMPARE(doc.frameAt(i).groups.at(0).fills.at(0).shading, two);
+
+    // A new frame: its default object "Object" is the disc's namesake; drawn and filled there,
+    // it is shaded as the disc is.
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 5));
+    const Id fresh = doc.frameAt(5).groups.at(0).id;
+    QCOMPARE(doc.group(fresh)->name, doc.group(g)->name);
+    QPolygonF circle;
+    for (int i = 0; i <= 48; ++i)
+        circle << kCentre +
+                      80.0 * QPointF(std::cos(2 * M_PI * i / 48), std::sin(2 * M_PI * i / 48));
+    doc.undoStack()->push(new AddStrokeCommand(&doc, fresh, polylineStroke(circle)));
+    push(doc, fillRegionCommand(&doc, fresh, kCentre, kRed));
+    QCOMPARE(doc.group(fresh)->fills.at(0).shading, two);
+}
+
+// Two objects of one name in a frame pair with the two of that name in another, in order.
+void TestFillShading::sameNamesPairInOrder()
+{
+    Document doc;
+    discDocument(doc);
+    const Id frame = doc.frameAt(0).id;
+    const QString name = doc.frameAt(0).groups.at(0).name;
+    auto *second = new AddObjectCommand(&doc, frame, -1, name);
+    doc.undoStack()->push(second);
+    auto *third = new AddObjectCommand(&doc, frame, -1, QStringLiteral("Other"));
+    doc.undoStack()->push(third);
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, frame, 1));
+    const Frame &copy = doc.frameAt(1);
+    QCOMPARE(sameObjectInFrames(doc, second->groupId()),
+             (std::vector<Id>{second->groupId(), copy.groups.at(1).id}));
+    QCOMPARE(sameObjectInFrames(doc, copy.groups.at(0).id),
+             (std::vector<Id>{doc.frameAt(0).groups.at(0).id, copy.groups.at(0).id}));
+    QCOMPARE(sameObjectInFrames(doc, third->groupId()),
+             (std::vector<Id>{third->groupId(), copy.groups.at(2).id}));
+    QVERIFY(sameObjectInFrames(doc, 999999).empty());
 }
 
 void TestFillShading::lightIsOneUndoStepAndSanitized()
