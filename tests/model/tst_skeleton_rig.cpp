@@ -207,6 +207,7 @@ private slots:
     void cutOutOutlineRunsRoundATurnedJoint();
     void cutOutLayersComeBackWithTheFile();
     void applyingACutOutPoseKeepsWhatItShowed();
+    void onionGhostOfACutOutPoseIsEven();
     void svgOfACutOutPoseShowsWhatTheCanvasShows();
     void duplicateFrameCopiesSkeletonAndPose();
     void jointLocksAreOneStepAndSaved();
@@ -894,6 +895,55 @@ void TestSkeletonRig::cutOutLayersComeBackWithTheFile()
     QCOMPARE(built.count(), 1);
     QVERIFY(restoresLayers(*reopened.group(g)->deformed, *read.deformed));
     QCOMPARE(differing(renderFrame(reopened.frameAt(0), settings, settings.canvasSize)), 0);
+}
+
+// Issue 45, item 6: the ghost (onion skin: a tint at an opacity) of a cut-out pose is the pose
+// as drawn, tinted: wherever the pose shows its fill the ghost shows one colour, wherever it
+// shows ink another. Painted item by item at the ghost's opacity, the socket over the body at
+// the turned elbow made a darker disc and the lines' runs meeting at the cut darker dots.
+void TestSkeletonRig::onionGhostOfACutOutPoseIsEven()
+{
+    TurnedArm scene;
+    QVERIFY(scene.turn(100.0));
+    const Document &doc = scene.doc;
+    const DocumentSettings &settings = doc.settings();
+    const QImage posed = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    RenderOptions onion;
+    onion.tint = QColor(220, 40, 40);
+    onion.opacity = 0.4;
+    const QImage ghost = renderFrame(doc.frameAt(0), settings, settings.canvasSize, onion);
+    // The ghost colour of the most pixels the pose paints in `color`, and how many of those
+    // pixels stray from it by more than 2 levels in a channel.
+    const auto strays = [&](QRgb color, int &count) {
+        std::map<QRgb, int> seen;
+        for (int y = 0; y < posed.height(); ++y)
+            for (int x = 0; x < posed.width(); ++x)
+                if (posed.pixel(x, y) == color)
+                    ++seen[ghost.pixel(x, y)];
+        count = 0;
+        QRgb usual = 0;
+        int most = 0;
+        for (const auto &[c, n] : seen) {
+            count += n;
+            if (n > most) {
+                usual = c;
+                most = n;
+            }
+        }
+        int off = 0;
+        for (const auto &[c, n] : seen)
+            if (std::abs(qRed(c) - qRed(usual)) > 2 || std::abs(qGreen(c) - qGreen(usual)) > 2 ||
+                std::abs(qBlue(c) - qBlue(usual)) > 2 || std::abs(qAlpha(c) - qAlpha(usual)) > 2)
+                off += n;
+        return off;
+    };
+    int filled = 0, inked = 0;
+    const int fillStrays = strays(yellow, filled);
+    const int inkStrays = strays(qRgb(0, 0, 0), inked);
+    QVERIFY2(filled > 10000 && inked > 500,
+             qPrintable(QStringLiteral("%1 %2").arg(filled).arg(inked)));
+    QVERIFY2(fillStrays == 0, qPrintable(QString::number(fillStrays)));
+    QVERIFY2(inkStrays == 0, qPrintable(QString::number(inkStrays)));
 }
 
 void TestSkeletonRig::applyingACutOutPoseKeepsWhatItShowed()
