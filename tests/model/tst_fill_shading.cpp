@@ -86,6 +86,7 @@ private slots:
     void lightIsOneUndoStepAndSanitized();
     void newFillsAreShadedAsTheObjectsOthers();
     void discLitFromTheLeftIsBrighterOnItsLeft();
+    void toneEdgesAreSmoothCurves();
     void everyRampAndRimGivesTones();
     void tonesFollowThePoseLightStaysOnScreen();
     void tonesStayInsideTheFillWhenPosed();
@@ -273,6 +274,57 @@ void TestFillShading::discLitFromTheLeftIsBrighterOnItsLeft()
     // Undo: flat again, pixel for pixel.
     doc.undoStack()->undo();
     QCOMPARE(renderFrame(doc.frameAt(0), doc.settings(), QSize(400, 400)), flat);
+}
+
+// Issue 45, item 5: on a round head the tones' edges are smooth curves, not a sawtooth. Along
+// each tone's edge inside the disc (away from where it meets the outline), the edge turns one
+// way: of the turns between consecutive edges larger than 1°, few turn against their
+// neighbour (a sawtooth alternates at every mesh edge it crosses).
+void TestFillShading::toneEdgesAreSmoothCurves()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, false}));
+    const std::vector<FillItem> items = fillList(*doc.group(g), doc.settings());
+    QCOMPARE(items.size(), std::size_t(1));
+    QCOMPARE(items[0].tones.size(), std::size_t(2));
+    int turns = 0, flips = 0;
+    double length = 0.0;
+    for (const ToneItem &tone : items[0].tones)
+        for (const QPolygonF &ring : tone.path.toSubpathPolygons()) {
+            QPolygonF inside; // consecutive points well inside the disc
+            const auto flush = [&] {
+                int last = 0;
+                for (qsizetype i = 1; i + 1 < inside.size(); ++i) {
+                    const QPointF u = inside[i] - inside[i - 1], v = inside[i + 1] - inside[i];
+                    const double turn =
+                        std::atan2(u.x() * v.y() - u.y() * v.x(), u.x() * v.x() + u.y() * v.y()) *
+                        180.0 / M_PI;
+                    if (std::abs(turn) <= 1.0)
+                        continue;
+                    const int sign = turn > 0 ? 1 : -1;
+                    ++turns;
+                    flips += last != 0 && sign != last ? 1 : 0;
+                    last = sign;
+                }
+                for (qsizetype i = 1; i < inside.size(); ++i)
+                    length += QLineF(inside[i - 1], inside[i]).length();
+                inside.clear();
+            };
+            for (const QPointF &p : ring) {
+                if (QLineF(p, kCentre).length() < kRadius - 10.0)
+                    inside << p;
+                else
+                    flush();
+            }
+            flush();
+        }
+    qInfo("tone edges: %.0f px inside, %d turns over 1°, %d against the one before", length, turns,
+          flips);
+    QVERIFY(length > 200.0);
+    // 6 of 101 now; 14 of 101 with three smoothing steps, as before.
+    QVERIFY(turns > 20);
+    QVERIFY2(flips * 10 <= turns, qPrintable(QStringLiteral("%1 of %2").arg(flips).arg(turns)));
 }
 
 void TestFillShading::everyRampAndRimGivesTones()
