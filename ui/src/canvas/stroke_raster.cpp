@@ -146,7 +146,11 @@ void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptio
     // (drawFrame's header says why).
     const bool layered = (options.tint || opacity < 1.0) && m_width > 0 && m_height > 0;
     if (layered) {
-        m_ghost.assign(std::size_t(m_width) * std::size_t(m_height), 0);
+        // All zero: new, or cleared where the last frame used it (flushGhost), so the onion
+        // skin's several frames clear what they drew rather than the whole band each.
+        if (m_ghost.size() != std::size_t(m_width) * std::size_t(m_height))
+            m_ghost.assign(std::size_t(m_width) * std::size_t(m_height), 0);
+        m_ghostActive = true;
         m_ghostReplace = options.tint.has_value();
         m_ghostBox = QRect();
     }
@@ -176,7 +180,7 @@ void StrokeRaster::flushGhost(qreal opacity)
 {
     const auto a = std::uint32_t(std::lround(255.0 * std::clamp(opacity, 0.0, 1.0)));
     for (int y = m_ghostBox.top(); y <= m_ghostBox.bottom(); ++y) {
-        const QRgb *src = m_ghost.data() + std::size_t(y) * std::size_t(m_width);
+        QRgb *src = m_ghost.data() + std::size_t(y) * std::size_t(m_width);
         auto *dst = reinterpret_cast<QRgb *>(m_bits + qsizetype(y + m_clip.top()) * m_stride) +
                     m_clip.left();
         for (int x = m_ghostBox.left(); x <= m_ghostBox.right(); ++x) {
@@ -184,9 +188,10 @@ void StrokeRaster::flushGhost(qreal opacity)
                 continue;
             const QRgb s = byteMul(src[x], a);
             dst[x] = s + byteMul(dst[x], 255 - qAlpha(s)); // source-over, premultiplied
+            src[x] = 0;
         }
     }
-    m_ghost.clear();
+    m_ghostActive = false;
     m_ghostBox = QRect();
 }
 
@@ -345,7 +350,7 @@ void StrokeRaster::composite(QRgb color, qreal opacity)
     const int alpha = int(std::lround(qAlpha(color) * std::clamp(opacity, 0.0, 1.0)));
     const QRgb src = byteMul(qPremultiply(qRgba(qRed(color), qGreen(color), qBlue(color), 255)),
                              std::uint32_t(alpha));
-    const bool ghost = !m_ghost.empty();
+    const bool ghost = m_ghostActive;
     for (int t : m_tiles) {
         m_touched[std::size_t(t)] = 0;
         const int tx = (t % m_tilesX) * kTile, ty = (t / m_tilesX) * kTile;

@@ -75,10 +75,11 @@ private:
     std::vector<std::uint8_t> m_mask;
     std::vector<std::uint8_t> m_touched; // per 8×8 tile: has coverage
     std::vector<int> m_tiles;            // touched tile indices
-    // The layer a frame is drawn into first (drawFrame), premultiplied, clip-relative; empty
-    // while drawing straight into the image. m_ghostReplace: each item replaces what lies
-    // under it (a tinted frame) rather than going over it.
+    // The layer a frame is drawn into first (drawFrame), premultiplied, clip-relative, all zero
+    // between frames; m_ghostActive while a frame is drawn into it. m_ghostReplace: each item
+    // replaces what lies under it (a tinted frame) rather than going over it.
     std::vector<QRgb> m_ghost;
+    bool m_ghostActive = false;
     bool m_ghostReplace = false;
     QRect m_ghostBox; // clip-relative pixels the layer may hold
 };
