@@ -4328,8 +4328,8 @@
     </message>
     <message>
         <location filename="../ui/src/shade/shading_panel.cpp" line="29"/>
-        <source>Shade the current object&apos;s fills from its rounded shape</source>
-        <translation>Die Füllungen des aktuellen Objekts nach seiner gerundeten Form schattieren</translation>
+        <source>Shade the current object&apos;s fills from its rounded shape, in every frame where the object appears (objects of the same name)</source>
+        <translation>Die Füllungen des aktuellen Objekts nach seiner gerundeten Form schattieren, in jedem Bild, in dem das Objekt vorkommt (Objekte gleichen Namens)</translation>
     </message>
     <message>
         <location filename="../ui/src/shade/shading_panel.cpp" line="30"/>

@@ -4328,8 +4328,8 @@
     </message>
     <message>
         <location filename="../ui/src/shade/shading_panel.cpp" line="29"/>
-        <source>Shade the current object&apos;s fills from its rounded shape</source>
-        <translation>Ombrer les remplissages de l’objet courant d’après sa forme arrondie</translation>
+        <source>Shade the current object&apos;s fills from its rounded shape, in every frame where the object appears (objects of the same name)</source>
+        <translation>Ombrer les remplissages de l’objet courant d’après sa forme arrondie, dans chaque image où l’objet apparaît (les objets de même nom)</translation>
     </message>
     <message>
         <location filename="../ui/src/shade/shading_panel.cpp" line="30"/>

@@ -4311,8 +4311,8 @@
     </message>
     <message>
         <location filename="../ui/src/shade/shading_panel.cpp" line="29"/>
-        <source>Shade the current object&apos;s fills from its rounded shape</source>
-        <translation>現在のオブジェクトの塗りに、丸みを帯びた形から陰影を付けます</translation>
+        <source>Shade the current object&apos;s fills from its rounded shape, in every frame where the object appears (objects of the same name)</source>
+        <translation>現在のオブジェクトの塗りに、丸みを帯びた形から陰影を付けます。オブジェクトが現れるすべてのフレーム（同じ名前のオブジェクト）に適用されます</translation>
     </message>
     <message>
         <location filename="../ui/src/shade/shading_panel.cpp" line="30"/>

@@ -351,6 +351,31 @@ std::vector<PaintItem> paintList(const StrokeGroup &group, const RenderOptions &
     return paintListOf(&group, 1, options);
 }
 
+namespace {
+// The frame's fills and strokes, back to front, with the painter as it is; `replaceFills`:
+// each fill replaces what lies under it (CompositionMode_Source, edges blended by coverage).
+void paintFrameItems(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
+                     const RenderOptions &options, bool replaceFills = false)
+{
+    if (!frameHasFills(frame, options)) {
+        for (const PaintItem &item : paintList(frame, options))
+            paintStroke(painter, *item.points, item.color, item.width);
+        return;
+    }
+    for (const StrokeGroup &group : frame.groups) {
+        for (const PaintLayer &layer : paintLayers(group, settings, options)) {
+            if (replaceFills)
+                painter.setCompositionMode(QPainter::CompositionMode_Source);
+            for (const FillItem &fill : layer.fills)
+                paintFill(painter, fill);
+            painter.setCompositionMode(QPainter::CompositionMode_SourceOver);
+            for (const PaintItem &item : layer.strokes)
+                paintStroke(painter, *item.points, item.color, item.width);
+        }
+    }
+}
+} // namespace
+
 void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
                 const RenderOptions &options)
 {
@@ -365,21 +390,44 @@ void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &s
         options.underlay(painter);
         painter.restore();
     }
-    painter.setOpacity(options.opacity);
-    if (!frameHasFills(frame, options)) {
-        for (const PaintItem &item : paintList(frame, options))
-            paintStroke(painter, *item.points, item.color, item.width);
+    const qreal opacity = std::clamp(options.opacity, 0.0, 1.0);
+    // A ghost (onion skin: a tint, or an opacity below 1) is painted whole into a layer of the
+    // device first and laid on it once at its opacity: painted item by item at that opacity,
+    // wherever items overlap (a cut-out limb's pieces and sockets at a joint, a line split at a
+    // cut) it came out darker than the rest of the ghost. With a tint each item replaces what
+    // lies under it in the layer, as the opaque frame's look: a ghost fill on a ghost fill is
+    // one ghost fill (the tinted strokes are one colour: over each other they stay it, as long
+    // as the tint is opaque). Devices that are not pictures (SVG) keep item-by-item painting.
+    QPaintDevice *device = painter.device();
+    const bool layered = (options.tint || opacity < 1.0) && device &&
+                         device->devType() == QInternal::Image && opacity > 0.0;
+    if (!layered) {
+        painter.setOpacity(opacity);
+        paintFrameItems(painter, frame, settings, options);
         painter.restore();
         return;
     }
-    for (const StrokeGroup &group : frame.groups) {
-        for (const PaintLayer &layer : paintLayers(group, settings, options)) {
-            for (const FillItem &fill : layer.fills)
-                paintFill(painter, fill);
-            for (const PaintItem &item : layer.strokes)
-                paintStroke(painter, *item.points, item.color, item.width);
-        }
+    QImage layer(device->width(), device->height(), QImage::Format_ARGB32_Premultiplied);
+    if (layer.isNull()) { // no memory for a layer: item by item, as before
+        painter.setOpacity(opacity);
+        paintFrameItems(painter, frame, settings, options);
+        painter.restore();
+        return;
     }
+    layer.fill(Qt::transparent);
+    {
+        QPainter into(&layer);
+        into.setRenderHint(QPainter::Antialiasing, true);
+        if (painter.hasClipping()) // the clip in device pixels, then the drawing's transform
+            into.setClipPath(painter.deviceTransform().map(painter.clipPath()));
+        into.setTransform(painter.deviceTransform());
+        paintFrameItems(into, frame, settings, options, options.tint.has_value());
+    }
+    layer.setDevicePixelRatio(device->devicePixelRatioF());
+    painter.resetTransform();
+    painter.setClipping(false);
+    painter.setOpacity(opacity);
+    painter.drawImage(QPointF(0, 0), layer);
     painter.restore();
 }
 

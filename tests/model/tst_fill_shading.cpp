@@ -10,7 +10,9 @@
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/finbook_file.h>
+#include <finbook/model/inbetween/inbetween_commands.h>
 #include <finbook/model/shade/fill_shading.h>
+#include <finbook/model/shade/same_object.h>
 #include <finbook/model/shade/shade_commands.h>
 
 #include <QTest>
@@ -78,9 +80,13 @@ class TestFillShading : public QObject {
     Q_OBJECT
 private slots:
     void shadingIsOneUndoStep();
+    void shadingAppliesToTheObjectInEveryFrame();
+    void framesMadeLaterShowTheShading();
+    void sameNamesPairInOrder();
     void lightIsOneUndoStepAndSanitized();
     void newFillsAreShadedAsTheObjectsOthers();
     void discLitFromTheLeftIsBrighterOnItsLeft();
+    void toneEdgesAreSmoothCurves();
     void everyRampAndRimGivesTones();
     void tonesFollowThePoseLightStaysOnScreen();
     void tonesStayInsideTheFillWhenPosed();
@@ -109,6 +115,111 @@ void TestFillShading::shadingIsOneUndoStep()
     // Recolouring keeps the shading.
     push(doc, fillRegionCommand(&doc, g, kCentre, 0xff2040e0));
     QCOMPARE(doc.group(g)->fills[0].shading.ramp, ShadeRamp::ThreeTones);
+}
+
+// Issue 45, item 4: a character shaded on frame 3 of 5 is shaded on all five, as one step; an
+// object of another name stays flat; undo gives every frame back exactly; the file keeps it.
+void TestFillShading::shadingAppliesToTheObjectInEveryFrame()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    for (int i = 1; i < 5; ++i)
+        doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frameAt(0).id, i));
+    // Another object on frame 2, filled, and a frame-5 namesake that has no fill yet.
+    auto *other = new AddObjectCommand(&doc, doc.frameAt(1).id, -1, QStringLiteral("Sun"));
+    const Id sun = other->groupId();
+    doc.undoStack()->push(other);
+    QPolygonF square{QPointF(320, 20), QPointF(380, 20), QPointF(380, 80), QPointF(320, 80),
+                     QPointF(320, 20)};
+    doc.undoStack()->push(new AddStrokeCommand(&doc, sun, polylineStroke(square)));
+    push(doc, fillRegionCommand(&doc, sun, QPointF(350, 50), 0xfff0d020));
+    doc.undoStack()->clear();
+    QCOMPARE(doc.frameCount(), 5);
+    const std::vector<Frame> before = doc.frames();
+    const QByteArray beforeBytes = serializeFinbook(doc);
+
+    const Id onFrame3 = doc.frameAt(2).groups.at(0).id;
+    QCOMPARE(sameObjectInFrames(doc, onFrame3).size(), std::size_t(5));
+    QCOMPARE(sameObjectInFrames(doc, sun), std::vector<Id>{sun});
+    push(doc, shadeFillsCommand(&doc, onFrame3, {ShadeRamp::ThreeTones, false}));
+    QCOMPARE(doc.undoStack()->count(), 1);
+    const FillShading three{ShadeRamp::ThreeTones, false};
+    for (int i = 0; i < 5; ++i) {
+        const StrokeGroup &disc = doc.frameAt(i).groups.at(0);
+        QCOMPARE(disc.fills.size(), std::size_t(1));
+        QCOMPARE(disc.fills[0].shading, three);
+        // Every frame draws the tones, not only the one it was set on.
+        QVERIFY(!fillList(disc, doc.settings()).at(0).tones.empty());
+    }
+    QCOMPARE(doc.group(sun)->fills.at(0).shading, FillShading());
+    QVERIFY(!shadeFillsCommand(&doc, g, three)); // already so everywhere
+
+    doc.undoStack()->undo();
+    for (int i = 0; i < 5; ++i)
+        QCOMPARE(doc.frameAt(i).groups.at(0).fills, before[std::size_t(i)].groups.at(0).fills);
+    QCOMPARE(serializeFinbook(doc), beforeBytes);
+    doc.undoStack()->redo();
+
+    // Saved and opened again, every frame is still shaded.
+    auto loaded = readFinbook(serializeFinbook(doc));
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    QCOMPARE(loaded->frames.size(), std::size_t(5));
+    for (const Frame &frame : loaded->frames)
+        QCOMPARE(frame.groups.at(0).fills.at(0).shading, three);
+}
+
+// Frames duplicated or in-betweened after the shading show it, and a frame where the object is
+// filled for the first time takes the object's shading rather than starting flat.
+void TestFillShading::framesMadeLaterShowTheShading()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frameAt(0).id, 1));
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::TwoTones, true}));
+    const FillShading two{ShadeRamp::TwoTones, true};
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frameAt(1).id, 2));
+    QCOMPARE(doc.frameAt(2).groups.at(0).fills.at(0).shading, two);
+    auto *between = new InsertInbetweensCommand(&doc, doc.frameAt(0).id, doc.frameAt(1).id, 2, {});
+    QVERIFY(!between->isObsolete());
+    doc.undoStack()->push(between);
+    QCOMPARE(doc.frameCount(), 5);
+    for (int i = 0; i < 5; ++i)
+        QCOMPARE(doc.frameAt(i).groups.at(0).fills.at(0).shading, two);
+
+    // A new frame: its default object "Object" is the disc's namesake; drawn and filled there,
+    // it is shaded as the disc is.
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 5));
+    const Id fresh = doc.frameAt(5).groups.at(0).id;
+    QCOMPARE(doc.group(fresh)->name, doc.group(g)->name);
+    QPolygonF circle;
+    for (int i = 0; i <= 48; ++i)
+        circle << kCentre +
+                      80.0 * QPointF(std::cos(2 * M_PI * i / 48), std::sin(2 * M_PI * i / 48));
+    doc.undoStack()->push(new AddStrokeCommand(&doc, fresh, polylineStroke(circle)));
+    push(doc, fillRegionCommand(&doc, fresh, kCentre, kRed));
+    QCOMPARE(doc.group(fresh)->fills.at(0).shading, two);
+}
+
+// Two objects of one name in a frame pair with the two of that name in another, in order.
+void TestFillShading::sameNamesPairInOrder()
+{
+    Document doc;
+    discDocument(doc);
+    const Id frame = doc.frameAt(0).id;
+    const QString name = doc.frameAt(0).groups.at(0).name;
+    auto *second = new AddObjectCommand(&doc, frame, -1, name);
+    doc.undoStack()->push(second);
+    auto *third = new AddObjectCommand(&doc, frame, -1, QStringLiteral("Other"));
+    doc.undoStack()->push(third);
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, frame, 1));
+    const Frame &copy = doc.frameAt(1);
+    QCOMPARE(sameObjectInFrames(doc, second->groupId()),
+             (std::vector<Id>{second->groupId(), copy.groups.at(1).id}));
+    QCOMPARE(sameObjectInFrames(doc, copy.groups.at(0).id),
+             (std::vector<Id>{doc.frameAt(0).groups.at(0).id, copy.groups.at(0).id}));
+    QCOMPARE(sameObjectInFrames(doc, third->groupId()),
+             (std::vector<Id>{third->groupId(), copy.groups.at(2).id}));
+    QVERIFY(sameObjectInFrames(doc, 999999).empty());
 }
 
 void TestFillShading::lightIsOneUndoStepAndSanitized()
@@ -163,6 +274,57 @@ void TestFillShading::discLitFromTheLeftIsBrighterOnItsLeft()
     // Undo: flat again, pixel for pixel.
     doc.undoStack()->undo();
     QCOMPARE(renderFrame(doc.frameAt(0), doc.settings(), QSize(400, 400)), flat);
+}
+
+// Issue 45, item 5: on a round head the tones' edges are smooth curves, not a sawtooth. Along
+// each tone's edge inside the disc (away from where it meets the outline), the edge turns one
+// way: of the turns between consecutive edges larger than 1°, few turn against their
+// neighbour (a sawtooth alternates at every mesh edge it crosses).
+void TestFillShading::toneEdgesAreSmoothCurves()
+{
+    Document doc;
+    const Id g = discDocument(doc);
+    push(doc, shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, false}));
+    const std::vector<FillItem> items = fillList(*doc.group(g), doc.settings());
+    QCOMPARE(items.size(), std::size_t(1));
+    QCOMPARE(items[0].tones.size(), std::size_t(2));
+    int turns = 0, flips = 0;
+    double length = 0.0;
+    for (const ToneItem &tone : items[0].tones)
+        for (const QPolygonF &ring : tone.path.toSubpathPolygons()) {
+            QPolygonF inside; // consecutive points well inside the disc
+            const auto flush = [&] {
+                int last = 0;
+                for (qsizetype i = 1; i + 1 < inside.size(); ++i) {
+                    const QPointF u = inside[i] - inside[i - 1], v = inside[i + 1] - inside[i];
+                    const double turn =
+                        std::atan2(u.x() * v.y() - u.y() * v.x(), u.x() * v.x() + u.y() * v.y()) *
+                        180.0 / M_PI;
+                    if (std::abs(turn) <= 1.0)
+                        continue;
+                    const int sign = turn > 0 ? 1 : -1;
+                    ++turns;
+                    flips += last != 0 && sign != last ? 1 : 0;
+                    last = sign;
+                }
+                for (qsizetype i = 1; i < inside.size(); ++i)
+                    length += QLineF(inside[i - 1], inside[i]).length();
+                inside.clear();
+            };
+            for (const QPointF &p : ring) {
+                if (QLineF(p, kCentre).length() < kRadius - 10.0)
+                    inside << p;
+                else
+                    flush();
+            }
+            flush();
+        }
+    qInfo("tone edges: %.0f px inside, %d turns over 1°, %d against the one before", length, turns,
+          flips);
+    QVERIFY(length > 200.0);
+    // 6 of 101 now; 14 of 101 with three smoothing steps, as before.
+    QVERIFY(turns > 20);
+    QVERIFY2(flips * 10 <= turns, qPrintable(QStringLiteral("%1 of %2").arg(flips).arg(turns)));
 }
 
 void TestFillShading::everyRampAndRimGivesTones()

@@ -12,6 +12,8 @@
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/precompute_service.h>
+#include <finbook/model/shade/fill_shading.h>
+#include <finbook/model/shade/shade_commands.h>
 #include <finbook/model/skeleton/cut_out_layers.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_joint_edit.h>
@@ -207,6 +209,11 @@ private slots:
     void cutOutOutlineRunsRoundATurnedJoint();
     void cutOutLayersComeBackWithTheFile();
     void applyingACutOutPoseKeepsWhatItShowed();
+    void onionGhostOfACutOutPoseIsEven();
+    void cutOutTurnedLimbIsLitByTheStillLight();
+    void shadedCutOutAtRestShowsTheRestShading();
+    void turnedCutOutShowsNoPaperBetweenPieces_data();
+    void turnedCutOutShowsNoPaperBetweenPieces();
     void svgOfACutOutPoseShowsWhatTheCanvasShows();
     void duplicateFrameCopiesSkeletonAndPose();
     void jointLocksAreOneStepAndSaved();
@@ -894,6 +901,216 @@ void TestSkeletonRig::cutOutLayersComeBackWithTheFile()
     QCOMPARE(built.count(), 1);
     QVERIFY(restoresLayers(*reopened.group(g)->deformed, *read.deformed));
     QCOMPARE(differing(renderFrame(reopened.frameAt(0), settings, settings.canvasSize)), 0);
+}
+
+// Issue 45, item 6: the ghost (onion skin: a tint at an opacity) of a cut-out pose is the pose
+// as drawn, tinted: wherever the pose shows its fill the ghost shows one colour, wherever it
+// shows ink another. Painted item by item at the ghost's opacity, the socket over the body at
+// the turned elbow made a darker disc and the lines' runs meeting at the cut darker dots.
+void TestSkeletonRig::onionGhostOfACutOutPoseIsEven()
+{
+    TurnedArm scene;
+    QVERIFY(scene.turn(100.0));
+    const Document &doc = scene.doc;
+    const DocumentSettings &settings = doc.settings();
+    const QImage posed = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    RenderOptions onion;
+    onion.tint = QColor(220, 40, 40);
+    onion.opacity = 0.4;
+    const QImage ghost = renderFrame(doc.frameAt(0), settings, settings.canvasSize, onion);
+    // The ghost colour of the most pixels the pose paints in `color`, and how many of those
+    // pixels stray from it by more than 2 levels in a channel.
+    const auto strays = [&](QRgb color, int &count) {
+        std::map<QRgb, int> seen;
+        for (int y = 0; y < posed.height(); ++y)
+            for (int x = 0; x < posed.width(); ++x)
+                if (posed.pixel(x, y) == color)
+                    ++seen[ghost.pixel(x, y)];
+        count = 0;
+        QRgb usual = 0;
+        int most = 0;
+        for (const auto &[c, n] : seen) {
+            count += n;
+            if (n > most) {
+                usual = c;
+                most = n;
+            }
+        }
+        int off = 0;
+        for (const auto &[c, n] : seen)
+            if (std::abs(qRed(c) - qRed(usual)) > 2 || std::abs(qGreen(c) - qGreen(usual)) > 2 ||
+                std::abs(qBlue(c) - qBlue(usual)) > 2 || std::abs(qAlpha(c) - qAlpha(usual)) > 2)
+                off += n;
+        return off;
+    };
+    int filled = 0, inked = 0;
+    const int fillStrays = strays(yellow, filled);
+    const int inkStrays = strays(qRgb(0, 0, 0), inked);
+    QVERIFY2(filled > 10000 && inked > 500,
+             qPrintable(QStringLiteral("%1 %2").arg(filled).arg(inked)));
+    QVERIFY2(fillStrays == 0, qPrintable(QString::number(fillStrays)));
+    QVERIFY2(inkStrays == 0, qPrintable(QString::number(inkStrays)));
+}
+
+// Issue 45, item 5: a shaded cut-out limb is lit by the light fixed on screen, as a posed body
+// is. The arm, lit from above, is shadowed along its lower side; turned 180° at its base it
+// points left over the body, and its lower side (its upper one at rest) is the shadowed one.
+// Moved with the piece as they were lit at rest, its tones came out upside down, the shadow on
+// top, and stopped hard against the body's at the joint.
+void TestSkeletonRig::cutOutTurnedLimbIsLitByTheStillLight()
+{
+    Document doc;
+    const Id g = filledBodyAndArm(doc);
+    auto shade = shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, false});
+    QVERIFY(shade);
+    doc.undoStack()->push(shade.release());
+    auto light = setLightCommand(&doc, 90.0, 20.0); // from above, low
+    QVERIFY(light);
+    doc.undoStack()->push(light.release());
+    DeformController controller(&doc);
+    int base = -1;
+    QVERIFY(cutOutArm(doc, controller, g, base));
+    QVERIFY2(base >= 0, "no cut where the arm leaves the body");
+    const DocumentSettings &settings = doc.settings();
+    const QRgb shadow = shadowTone(yellow) | 0xff000000u;
+    // Shadow pixels of the arm's upper and lower halves (rows y0 … 199 and 201 … y1) over
+    // columns x0 … x1.
+    const auto shadows = [&](int x0, int x1, int &upper, int &lower) {
+        const QImage image = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+        upper = lower = 0;
+        for (int y = 188; y <= 212; ++y)
+            for (int x = x0; x <= x1; ++x)
+                if (image.pixel(x, y) == shadow)
+                    ++(y < 200 ? upper : lower);
+    };
+    int upper = 0, lower = 0;
+    shadows(360, 460, upper, lower); // the arm at rest
+    QVERIFY2(lower > 4 * upper && lower > 300,
+             qPrintable(QStringLiteral("%1 %2").arg(upper).arg(lower)));
+    const SkeletonRig rest = doc.group(g)->rig.skeleton;
+    std::vector<double> angles(rest.joints.size(), 0.0);
+    for (int j = 0; j < rest.jointCount(); ++j)
+        if (rest.parent[std::size_t(j)] == base)
+            angles[std::size_t(j)] = std::numbers::pi;
+    doc.undoStack()->push(new PoseBonesCommand(&doc, g, angles, {}, 1));
+    QVERIFY(waitSolved(controller, doc, g));
+    const double pivot = rest.joints[std::size_t(base)].x();
+    // The turned arm over the body: from the joint leftwards.
+    shadows(int(pivot) - 140, int(pivot) - 40, upper, lower);
+    QVERIFY2(lower > 4 * upper && lower > 300,
+             qPrintable(QStringLiteral("%1 %2").arg(upper).arg(lower)));
+}
+
+// Issue 45, item 5: turned to Cut-out and left at rest, a shaded object shows the shading it
+// had without a rig. The round joints (sockets) were painted flat in the fill's colour, so
+// each joint showed a disc of it across the shadow; a joint that has not turned opens no gap
+// and now gets no socket. What may differ is the antialiased edge where two pieces' tones
+// meet along a cut (a faint line, a few levels off).
+void TestSkeletonRig::shadedCutOutAtRestShowsTheRestShading()
+{
+    Document doc;
+    const Id g = filledBodyAndArm(doc);
+    auto shade = shadeFillsCommand(&doc, g, {ShadeRamp::ThreeTones, false});
+    QVERIFY(shade);
+    doc.undoStack()->push(shade.release());
+    const DocumentSettings &settings = doc.settings();
+    QVERIFY(!doc.group(g)->isDeformed());
+    const QImage unrigged = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    DeformController controller(&doc);
+    int base = -1;
+    QVERIFY(cutOutArm(doc, controller, g, base));
+    QVERIFY(doc.group(g)->isDeformed() && !doc.group(g)->deformed->sockets.empty());
+    const QImage atRest = renderFrame(doc.frameAt(0), settings, settings.canvasSize);
+    int differ = 0, worst = 0;
+    for (int y = 0; y < unrigged.height(); ++y)
+        for (int x = 0; x < unrigged.width(); ++x) {
+            const QRgb a = unrigged.pixel(x, y), b = atRest.pixel(x, y);
+            const int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                                    std::abs(qBlue(a) - qBlue(b))});
+            worst = std::max(worst, d);
+            differ += d > 40 ? 1 : 0;
+        }
+    qInfo("shaded cut-out at rest: %d pixels more than 40 levels off, worst %d", differ, worst);
+    QVERIFY2(differ <= 20, qPrintable(QString::number(differ)));
+}
+
+// Issue 45, item 5: a turned cut-out joint shows no white specks: no paper shows inside the
+// posed pieces (the roots' outline, each cut piece's and each socket's) that is not the paper
+// around the drawing (reached from the picture's border through paper: the notch where a
+// turned limb's side leaves the body is outside, however narrow its tip).
+void TestSkeletonRig::turnedCutOutShowsNoPaperBetweenPieces_data()
+{
+    QTest::addColumn<double>("degrees");
+    QTest::addColumn<bool>("shaded");
+    for (const bool shaded : {false, true})
+        for (const double d : {30.0, 60.0, 100.0, 140.0, -60.0})
+            QTest::newRow(qPrintable(QStringLiteral("%1%2").arg(d).arg(shaded ? " shaded" : "")))
+                << d << shaded;
+}
+
+void TestSkeletonRig::turnedCutOutShowsNoPaperBetweenPieces()
+{
+    QFETCH(double, degrees);
+    QFETCH(bool, shaded);
+    TurnedArm scene;
+    QVERIFY(scene.turn(degrees));
+    if (shaded) {
+        auto shade = shadeFillsCommand(&scene.doc, scene.g, {ShadeRamp::ThreeTones, true});
+        QVERIFY(shade);
+        scene.doc.undoStack()->push(shade.release());
+        QVERIFY(scene.doc.group(scene.g)->isDeformed());
+    }
+    const Document &doc = scene.doc;
+    const DeformedStrokes &posed = *doc.group(scene.g)->deformed;
+    QPainterPath inside = posed.body;
+    for (const QPainterPath &piece : posed.pieces)
+        inside = inside.united(piece);
+    for (const QPainterPath &socket : posed.sockets)
+        inside = inside.united(socket);
+    const QImage image = renderFrame(doc.frameAt(0), doc.settings(), doc.settings().canvasSize);
+    const int w = image.width(), h = image.height();
+    QImage mask(image.size(), QImage::Format_Grayscale8);
+    mask.fill(0);
+    {
+        QPainter painter(&mask);
+        painter.fillPath(inside, Qt::white); // aliased: a pixel is in or out
+    }
+    // The paper around the drawing: flooded from the border through paper pixels.
+    const auto paperAt = [&](int x, int y) { return qGray(image.pixel(x, y)) > 240; };
+    std::vector<char> outside(std::size_t(w) * std::size_t(h), 0);
+    std::vector<std::pair<int, int>> todo;
+    const auto reach = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= w || y >= h || outside[std::size_t(y * w + x)] || !paperAt(x, y))
+            return;
+        outside[std::size_t(y * w + x)] = 1;
+        todo.emplace_back(x, y);
+    };
+    for (int x = 0; x < w; ++x) {
+        reach(x, 0);
+        reach(x, h - 1);
+    }
+    for (int y = 0; y < h; ++y) {
+        reach(0, y);
+        reach(w - 1, y);
+    }
+    while (!todo.empty()) {
+        const auto [x, y] = todo.back();
+        todo.pop_back();
+        reach(x + 1, y);
+        reach(x - 1, y);
+        reach(x, y + 1);
+        reach(x, y - 1);
+    }
+    int specks = 0, covered = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (!mask.constScanLine(y)[x])
+                continue;
+            ++covered;
+            specks += paperAt(x, y) && !outside[std::size_t(y * w + x)] ? 1 : 0;
+        }
+    QVERIFY(covered > 10000);
+    QVERIFY2(specks == 0, qPrintable(QString::number(specks)));
 }
 
 void TestSkeletonRig::applyingACutOutPoseKeepsWhatItShowed()

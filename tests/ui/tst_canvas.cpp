@@ -1,6 +1,7 @@
 // The canvas view: zoom about the cursor, panning, fit, onion skin and the frame cache.
 #include "tst_tools_support.h"
 
+#include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/render.h>
 #include <finbook/ui/tools/tool_pen.h>
 #include <finbook/ui/window/editor_state.h>
@@ -26,6 +27,7 @@ private slots:
     void onionSkinShowsTintedNeighbours_data();
     void onionSkinShowsTintedNeighbours();
     void onionSkinHiddenWhilePlaying();
+    void onionGhostIsEvenWhereItemsOverlap();
     void cacheFollowsUndo();
     void hiddenObjectsAreNotDrawn();
     void rasterMatchesQPainter();
@@ -163,6 +165,47 @@ void TestCanvas::onionSkinShowsTintedNeighbours()
     onion.enabled = false;
     m_state->setOnionSkin(onion);
     QCOMPARE(pixelAt(probe), QColor(Qt::white));
+}
+
+// Issue 45, item 6: a ghost is the frame as drawn, tinted and made translucent once. Painted
+// item by item at the onion's opacity, a fill over a fill (a cut-out limb's piece or socket
+// over the body) and two lines' round ends on one spot (a line split at a cut) came out
+// darker than the rest of the ghost.
+void TestCanvas::onionGhostIsEvenWhereItemsOverlap()
+{
+    resetDocument(*m_doc, 2, 2);
+    const model::Frame &first = m_doc->frameAt(0);
+    const model::Id back = first.groups[0].id, front = first.groups[1].id;
+    addStroke(*m_doc, back, polyline({{100, 60}, {220, 60}, {220, 180}, {100, 180}, {100, 60}}));
+    addStroke(*m_doc, front,
+              polyline({{160, 120}, {280, 120}, {280, 240}, {160, 240}, {160, 120}}));
+    for (const auto &[g, at] : {std::pair{back, QPointF(130, 90)}, {front, QPointF(250, 210)}}) {
+        auto fill = model::fillRegionCommand(m_doc.get(), g, at, 0xffe0a040);
+        QVERIFY(fill);
+        m_doc->undoStack()->push(fill.release());
+    }
+    // One line drawn as two runs meeting end to end (as a cut-out pose splits it at a cut).
+    addStroke(*m_doc, back, line({40, 270}, {120, 270}));
+    addStroke(*m_doc, back, line({120, 270}, {200, 270}));
+    m_state->setCurrentFrameIndex(1);
+    ui::OnionSkin onion = m_state->onionSkin();
+    onion.enabled = true;
+    onion.before = 1;
+    onion.after = 0;
+    onion.opacity = 0.5;
+    m_state->setOnionSkin(onion);
+    m_canvas->fitToView();
+    const auto near = [](const QColor &a, const QColor &b) {
+        return std::abs(a.red() - b.red()) <= 3 && std::abs(a.green() - b.green()) <= 3 &&
+               std::abs(a.blue() - b.blue()) <= 3;
+    };
+    const QColor oneFill = pixelAt({130, 90}), twoFills = pixelAt({190, 150});
+    QVERIFY2(oneFill != QColor(Qt::white), qPrintable(oneFill.name()));
+    QVERIFY2(near(twoFills, oneFill), qPrintable(twoFills.name() + " " + oneFill.name()));
+    QVERIFY(near(pixelAt({250, 210}), oneFill)); // the front object's own fill
+    const QColor run = pixelAt({80, 270}), joint = pixelAt({120, 270});
+    QVERIFY2(run.green() < oneFill.green() - 20, qPrintable(run.name())); // ink, not fill
+    QVERIFY2(near(joint, run), qPrintable(joint.name() + " " + run.name()));
 }
 
 void TestCanvas::onionSkinHiddenWhilePlaying()

@@ -3,6 +3,7 @@
 
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/fill/fill_resolve.h>
+#include <finbook/model/shade/same_object.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +48,20 @@ commandFor(Document *doc, Id groupId, std::optional<std::vector<Fill>> fills, co
     return command;
 }
 
+// An object's first fills are shaded as the object is in the other frames (shade/same_object.h):
+// a character filled on a new frame is not flat among its shaded neighbours. Later fills take
+// the object's own fills' shading (fill_resolve.h).
+std::optional<std::vector<Fill>> shadedAsElsewhere(const Document &doc, const StrokeGroup &group,
+                                                   std::optional<std::vector<Fill>> fills)
+{
+    if (!fills || !group.fills.empty())
+        return fills;
+    if (const std::optional<FillShading> shading = objectShading(doc, group.id))
+        for (Fill &f : *fills)
+            f.shading = *shading;
+    return fills;
+}
+
 struct Target {
     const StrokeGroup *group = nullptr;
     ObjectRegionsPtr regions;
@@ -71,8 +86,10 @@ std::unique_ptr<QUndoCommand> fillRegionCommand(Document *doc, Id groupId, QPoin
     if (t.face < 0)
         return nullptr;
     const bool filled = faceFills(*t.regions, t.group->fills)[std::size_t(t.face)] >= 0;
-    return commandFor(doc, groupId, fillsWithFace(*t.regions, t.group->fills, t.face, color),
-                      filled ? Command::tr("Recolour Fill") : Command::tr("Fill Region"));
+    return commandFor(
+        doc, groupId,
+        shadedAsElsewhere(*doc, *t.group, fillsWithFace(*t.regions, t.group->fills, t.face, color)),
+        filled ? Command::tr("Recolour Fill") : Command::tr("Fill Region"));
 }
 
 std::unique_ptr<QUndoCommand> removeFillCommand(Document *doc, Id groupId, QPointF at)
@@ -90,7 +107,8 @@ std::unique_ptr<QUndoCommand> fillAllRegionsCommand(Document *doc, Id groupId, Q
     if (!g)
         return nullptr;
     const ObjectRegionsPtr regions = objectRegions(*g, doc->settings().closeGap);
-    return commandFor(doc, groupId, fillsWithAllFaces(*regions, g->fills, color),
+    return commandFor(doc, groupId,
+                      shadedAsElsewhere(*doc, *g, fillsWithAllFaces(*regions, g->fills, color)),
                       Command::tr("Fill All Enclosed Regions"));
 }
 

@@ -10,6 +10,45 @@
 
 namespace finbook::model {
 
+namespace {
+// The rest fills of `still` (the object without its pose) as a piece moved by `motion` shows
+// them: lit by the light turned back by the piece's turn, so once turned with the piece its
+// tones face the light fixed on screen, as the posed body's do (moved as they were lit at
+// rest, a limb turned 180° kept its light side away from the light, and its tones stopped hard
+// against the body's at the cut). The fills as at rest when none is shaded.
+std::vector<FillItem> restFillsLitFor(const StrokeGroup &still, const DocumentSettings &settings,
+                                      const RenderOptions &options, const QTransform &motion,
+                                      const std::vector<FillItem> &atRest)
+{
+    const bool shaded = std::any_of(atRest.begin(), atRest.end(),
+                                    [](const FillItem &fill) { return !fill.tones.empty(); });
+    // The motion's turn in canvas axes (x toward y, y down); the light's azimuth turns the
+    // other way on screen (geometry::lightDirection), so lighting turned normals n' = R n by
+    // L equals lighting n by R⁻¹ L = the light at azimuth + turn.
+    const double turn = std::atan2(motion.m12(), motion.m11()) * 180.0 / std::numbers::pi;
+    if (!shaded || !std::isfinite(turn) || std::abs(std::remainder(turn, 360.0)) < 1e-6)
+        return atRest;
+    DocumentSettings turned = settings;
+    turned.lightAzimuth = std::fmod(settings.lightAzimuth + turn + 720.0, 360.0);
+    std::vector<FillItem> lit = fillList(still, turned, options);
+    return lit.size() == atRest.size() ? lit : atRest;
+}
+
+// `fill`'s tones cut to `path`: what a socket or a seam's wedge painted in that fill shows.
+std::vector<ToneItem> tonesWithin(const FillItem *fill, const QPainterPath &path)
+{
+    std::vector<ToneItem> out;
+    if (!fill)
+        return out;
+    for (const ToneItem &tone : fill->tones) {
+        ToneItem part{tone.path.intersected(path), tone.color};
+        if (!part.path.isEmpty())
+            out.push_back(std::move(part));
+    }
+    return out;
+}
+} // namespace
+
 std::optional<CutOutSeam> cutOutSeam(const StrokeGroup &group, std::size_t stroke, std::size_t i)
 {
     const DeformedStrokes *posed = group.deformed.get();
@@ -88,8 +127,9 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         std::any_of(posed->motions.begin(), posed->motions.end(),
                     [](const std::optional<QTransform> &m) { return m.has_value(); });
     std::vector<FillItem> rest;
+    StrokeGroup still;
     if (rigid) {
-        StrokeGroup still = group;
+        still = group;
         still.deformed.reset();
         rest = fillList(still, settings, options);
         if (rest.size() != layers[0].fills.size())
@@ -97,6 +137,10 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
     }
     const std::vector<FillItem> shown = std::move(layers[0].fills);
     layers[0].fills.clear();
+    // Per layer, its fills moved but not cut to its outline (a moved piece's) and which of them
+    // each of its cut fills is: a socket painted in a limb's fill takes its tones from there.
+    std::vector<std::vector<FillItem>> whole(pieces + 1);
+    std::vector<std::vector<std::size_t>> wholeOf(pieces + 1);
     for (std::size_t layer = 0; layer <= pieces; ++layer) {
         const QPainterPath *outline = layer > 0               ? &posed->pieces[layer - 1]
                                       : posed->body.isEmpty() ? nullptr
@@ -111,13 +155,24 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
             if (!moved)
                 continue;
         }
-        const std::vector<FillItem> &source = moved ? rest : shown;
+        if (moved) {
+            for (const FillItem &fill : restFillsLitFor(still, settings, options, *motion, rest)) {
+                FillItem placed = fill; // all but where it lies
+                placed.path = motion->map(fill.path);
+                placed.path.setFillRule(Qt::WindingFill);
+                for (ToneItem &tone : placed.tones)
+                    tone.path = motion->map(tone.path);
+                whole[layer].push_back(std::move(placed));
+            }
+        }
+        const std::vector<FillItem> &source = moved ? whole[layer] : shown;
         const auto place = [&](const QPainterPath &path) {
-            QPainterPath placed = moved ? motion->map(path) : path;
+            QPainterPath placed = path;
             placed.setFillRule(Qt::WindingFill);
             return outline ? placed.intersected(*outline) : placed;
         };
-        for (const FillItem &fill : source) {
+        for (std::size_t i = 0; i < source.size(); ++i) {
+            const FillItem &fill = source[i];
             FillItem clipped;
             clipped.path = place(fill.path);
             if (clipped.path.isEmpty())
@@ -132,19 +187,36 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
                     clipped.tones.push_back(std::move(part));
             }
             layers[layer].fills.push_back(std::move(clipped));
+            wholeOf[layer].push_back(i);
         }
     }
     // Sockets (round joints): painted on the piece above each cut (over its fills, under its
     // strokes) in the colour of the limb's fill that meets the socket, so a turned limb leaves
     // no gap at its joint.
+    // A shaded limb's socket carries the limb's tones (its fill moved whole, or as posed), so
+    // the round joint is shaded on as the limb is rather than a flat disc among the tones.
     std::vector<std::optional<QRgb>> socketColour(pieces);
-    std::vector<int> socketFill(pieces, -1);
+    std::vector<const FillItem *> socketFill(pieces, nullptr);
+    std::vector<int> socketIndex(pieces, -1); // the limb's fill (FillItem::fill)
     const auto layerAbove = [&](std::size_t k) {
         return std::size_t(std::clamp(posed->socketAbove[k] + 1, 0, int(pieces)));
     };
+    // A joint that has not turned (the rest pose, a limb moved with its parent) opens no gap: its
+    // socket is left out, as over shaded fills its edge would draw a seam through the tones.
+    const auto turned = [&](std::size_t k) {
+        const std::size_t above = layerAbove(k);
+        if (posed->motions.size() != pieces + 1 || !posed->motions[k + 1] || !posed->motions[above])
+            return true;
+        const QTransform &a = *posed->motions[k + 1], &b = *posed->motions[above];
+        const double worst =
+            std::max({std::abs(a.m11() - b.m11()), std::abs(a.m12() - b.m12()),
+                      std::abs(a.m21() - b.m21()), std::abs(a.m22() - b.m22()),
+                      std::abs(a.dx() - b.dx()) * 1e-3, std::abs(a.dy() - b.dy()) * 1e-3});
+        return !(worst < 1e-6);
+    };
     for (std::size_t k = 0; k < pieces && k < posed->sockets.size(); ++k) {
         const QPainterPath &socket = posed->sockets[k];
-        if (socket.isEmpty() || k >= posed->socketAbove.size())
+        if (socket.isEmpty() || k >= posed->socketAbove.size() || !turned(k))
             continue;
         const std::vector<FillItem> &limb = layers[k + 1].fills;
         const auto colour = std::find_if(limb.rbegin(), limb.rend(), [&](const FillItem &fill) {
@@ -153,10 +225,17 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         if (colour == limb.rend())
             continue;
         socketColour[k] = colour->color;
-        socketFill[k] = colour->fill;
+        socketIndex[k] = colour->fill;
+        const std::size_t at = std::size_t(limb.rend() - colour) - 1;
+        if (!colour->tones.empty() && at < wholeOf[k + 1].size()) {
+            const std::size_t i = wholeOf[k + 1][at];
+            const std::vector<FillItem> &from = whole[k + 1].empty() ? shown : whole[k + 1];
+            socketFill[k] = i < from.size() ? &from[i] : nullptr;
+        }
         FillItem fill;
         fill.path = socket;
         fill.color = colour->color;
+        fill.tones = tonesWithin(socketFill[k], socket);
         fill.fill = colour->fill;
         layers[layerAbove(k)].fills.push_back(std::move(fill));
     }
@@ -223,7 +302,8 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
                 wedge.path.closeSubpath();
                 wedge.path.setFillRule(Qt::WindingFill);
                 wedge.color = *colour;
-                wedge.fill = socketFill[seam->cut];
+                wedge.tones = tonesWithin(socketFill[seam->cut], wedge.path);
+                wedge.fill = socketIndex[seam->cut];
                 layers[above].fills.push_back(std::move(wedge));
             }
             run.push_back(seam->arc.front());

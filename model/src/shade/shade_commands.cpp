@@ -2,7 +2,10 @@
 #include "../command_text.h"
 
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/shade/same_object.h>
 #include <finbook/model/shade/shade_commands.h>
+
+#include <algorithm>
 
 namespace finbook::model {
 
@@ -12,15 +15,24 @@ std::unique_ptr<QUndoCommand> shadeFillsCommand(Document *doc, Id groupId,
     const StrokeGroup *group = doc->group(groupId);
     if (!group || group->fills.empty())
         return nullptr;
-    std::vector<Fill> fills = group->fills;
-    for (Fill &f : fills)
-        f.shading = shading;
-    auto command = std::make_unique<SetFillsCommand>(
-        doc, groupId, std::move(fills),
-        shading.shaded() ? Command::tr("Shade Fills") : Command::tr("Unshade Fills"));
-    if (command->isObsolete())
-        return nullptr;
-    return command;
+    const QString text =
+        shading.shaded() ? Command::tr("Shade Fills") : Command::tr("Unshade Fills");
+    // One step over every frame: set on one frame only, playback flickered between shaded and
+    // flat frames of one character.
+    auto command = std::make_unique<QUndoCommand>(text);
+    for (const Id id : sameObjectInFrames(*doc, groupId)) {
+        const std::vector<Fill> &old = doc->group(id)->fills;
+        if (std::all_of(old.begin(), old.end(),
+                        [&](const Fill &f) { return f.shading == shading; }))
+            continue; // no fills, or already so: an obsolete child would undo to no fills
+        std::vector<Fill> fills = old;
+        for (Fill &f : fills)
+            f.shading = shading;
+        new SetFillsCommand(doc, id, std::move(fills), text, command.get()); // owned by `command`
+    }
+    if (command->childCount() > 0)
+        return command;
+    return nullptr;
 }
 
 std::unique_ptr<QUndoCommand> setLightCommand(Document *doc, double azimuth, double elevation)

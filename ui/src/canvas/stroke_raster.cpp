@@ -139,23 +139,60 @@ void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal sc
 void StrokeRaster::drawFrame(const model::Frame &frame, const model::RenderOptions &options,
                              const model::DocumentSettings &settings)
 {
+    const qreal opacity = std::clamp(options.opacity, 0.0, 1.0);
+    if (opacity <= 0)
+        return;
+    // A ghost: the frame into a layer at full strength, then the layer once at its opacity
+    // (drawFrame's header says why).
+    const bool layered = (options.tint || opacity < 1.0) && m_width > 0 && m_height > 0;
+    if (layered) {
+        // All zero: new, or cleared where the last frame used it (flushGhost), so the onion
+        // skin's several frames clear what they drew rather than the whole band each.
+        if (m_ghost.size() != std::size_t(m_width) * std::size_t(m_height))
+            m_ghost.assign(std::size_t(m_width) * std::size_t(m_height), 0);
+        m_ghostActive = true;
+        m_ghostReplace = options.tint.has_value();
+        m_ghostBox = QRect();
+    }
+    const qreal itemOpacity = layered ? 1.0 : opacity;
     // paintList folds repeated references of one stroke into one item, as paintFrame does.
     if (!model::frameHasFills(frame, options)) {
         for (const model::PaintItem &item : model::paintList(frame, options))
-            drawStroke(*item.points, item.color, item.width, options.opacity);
-        return;
-    }
-    for (const model::StrokeGroup &group : frame.groups) {
-        for (const model::PaintLayer &layer : model::paintLayers(group, settings, options)) {
-            for (const model::FillItem &fill : layer.fills) {
-                drawFill(fill.path, fill.color, options.opacity);
-                for (const model::ToneItem &tone : fill.tones)
-                    drawFill(tone.path, tone.color, options.opacity);
+            drawStroke(*item.points, item.color, item.width, itemOpacity);
+    } else {
+        for (const model::StrokeGroup &group : frame.groups) {
+            for (const model::PaintLayer &layer : model::paintLayers(group, settings, options)) {
+                for (const model::FillItem &fill : layer.fills) {
+                    drawFill(fill.path, fill.color, itemOpacity);
+                    for (const model::ToneItem &tone : fill.tones)
+                        drawFill(tone.path, tone.color, itemOpacity);
+                }
+                for (const model::PaintItem &item : layer.strokes)
+                    drawStroke(*item.points, item.color, item.width, itemOpacity);
             }
-            for (const model::PaintItem &item : layer.strokes)
-                drawStroke(*item.points, item.color, item.width, options.opacity);
         }
     }
+    if (layered)
+        flushGhost(opacity);
+}
+
+void StrokeRaster::flushGhost(qreal opacity)
+{
+    const auto a = std::uint32_t(std::lround(255.0 * std::clamp(opacity, 0.0, 1.0)));
+    for (int y = m_ghostBox.top(); y <= m_ghostBox.bottom(); ++y) {
+        QRgb *src = m_ghost.data() + std::size_t(y) * std::size_t(m_width);
+        auto *dst = reinterpret_cast<QRgb *>(m_bits + qsizetype(y + m_clip.top()) * m_stride) +
+                    m_clip.left();
+        for (int x = m_ghostBox.left(); x <= m_ghostBox.right(); ++x) {
+            if (!src[x])
+                continue;
+            const QRgb s = byteMul(src[x], a);
+            dst[x] = s + byteMul(dst[x], 255 - qAlpha(s)); // source-over, premultiplied
+            src[x] = 0;
+        }
+    }
+    m_ghostActive = false;
+    m_ghostBox = QRect();
 }
 
 void StrokeRaster::prepareFills(const model::Frame &frame, const model::RenderOptions &options,
@@ -313,10 +350,13 @@ void StrokeRaster::composite(QRgb color, qreal opacity)
     const int alpha = int(std::lround(qAlpha(color) * std::clamp(opacity, 0.0, 1.0)));
     const QRgb src = byteMul(qPremultiply(qRgba(qRed(color), qGreen(color), qBlue(color), 255)),
                              std::uint32_t(alpha));
+    const bool ghost = m_ghostActive;
     for (int t : m_tiles) {
         m_touched[std::size_t(t)] = 0;
         const int tx = (t % m_tilesX) * kTile, ty = (t / m_tilesX) * kTile;
         const int xEnd = std::min(tx + kTile, m_width), yEnd = std::min(ty + kTile, m_height);
+        if (ghost)
+            m_ghostBox |= QRect(QPoint(tx, ty), QPoint(xEnd - 1, yEnd - 1));
         for (int y = ty; y < yEnd; ++y) {
             std::uint8_t *mask = m_mask.data() + std::size_t(y) * std::size_t(m_width);
             if (xEnd - tx == kTile) { // most tile rows of a thin stroke are empty
@@ -325,15 +365,20 @@ void StrokeRaster::composite(QRgb color, qreal opacity)
                 if (!word)
                     continue;
             }
-            auto *dst = reinterpret_cast<QRgb *>(m_bits + qsizetype(y + m_clip.top()) * m_stride) +
-                        m_clip.left();
+            auto *dst =
+                ghost ? m_ghost.data() + std::size_t(y) * std::size_t(m_width)
+                      : reinterpret_cast<QRgb *>(m_bits + qsizetype(y + m_clip.top()) * m_stride) +
+                            m_clip.left();
             for (int x = tx; x < xEnd; ++x) {
                 const std::uint32_t m = mask[x];
                 if (!m)
                     continue;
                 mask[x] = 0;
                 const QRgb s = m == 255 ? src : byteMul(src, m);
-                dst[x] = s + byteMul(dst[x], 255 - qAlpha(s)); // source-over, premultiplied
+                if (ghost && m_ghostReplace) // this item's colour where it covers, whole
+                    dst[x] = s + byteMul(dst[x], 255 - m);
+                else
+                    dst[x] = s + byteMul(dst[x], 255 - qAlpha(s)); // source-over, premultiplied
             }
         }
     }

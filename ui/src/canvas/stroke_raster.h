@@ -33,9 +33,13 @@ public:
     // A fill (canvas pixels, the path's own fill rule), antialiased by QPainter.
     void drawFill(const QPainterPath &path, QRgb color, qreal opacity);
     // paintFrame()'s rules: hidden objects skipped unless options.showHidden, the tint
-    // replaces every colour, options.opacity applies per stroke and fill, each object's fills
-    // under its strokes (regions closed with settings.closeGap; shaded fills lit by its light).
-    // No background.
+    // replaces every colour, each object's fills under its strokes (regions closed with
+    // settings.closeGap; shaded fills lit by its light). No background. A frame drawn with
+    // opacity below 1 or a tint (onion skin) is drawn whole into a layer first and laid on the
+    // image once with options.opacity, so where its items overlap (a cut-out limb's pieces, its
+    // sockets and split lines at a joint) it shows as the opaque frame would, not darker; with
+    // a tint each item replaces what lies under it in that layer (the opaque frame's look:
+    // the ghost of a fill on a fill is one ghost of a fill).
     void drawFrame(const model::Frame &frame, const model::RenderOptions &options,
                    const model::DocumentSettings &settings);
     // Computes what drawFrame needs of the frame's fills once, on this thread, so the bands
@@ -55,6 +59,7 @@ private:
     void capsule(float ax, float ay, float ar, float bx, float by, float br);
     void touch(int x0, int y0, int x1, int y1);
     void composite(QRgb color, qreal opacity);
+    void flushGhost(qreal opacity);
 
     uchar *m_bits;
     qsizetype m_stride;
@@ -70,6 +75,13 @@ private:
     std::vector<std::uint8_t> m_mask;
     std::vector<std::uint8_t> m_touched; // per 8×8 tile: has coverage
     std::vector<int> m_tiles;            // touched tile indices
+    // The layer a frame is drawn into first (drawFrame), premultiplied, clip-relative, all zero
+    // between frames; m_ghostActive while a frame is drawn into it. m_ghostReplace: each item
+    // replaces what lies under it (a tinted frame) rather than going over it.
+    std::vector<QRgb> m_ghost;
+    bool m_ghostActive = false;
+    bool m_ghostReplace = false;
+    QRect m_ghostBox; // clip-relative pixels the layer may hold
 };
 
 } // namespace finbook::ui

@@ -26,7 +26,8 @@ ShadingPanel::ShadingPanel(EditorState *state, QWidget *parent)
     m_ramp->addItem(tr("Cel, two tones"), int(model::ShadeRamp::TwoTones));
     m_ramp->addItem(tr("Cel, three tones"), int(model::ShadeRamp::ThreeTones));
     m_ramp->addItem(tr("Smooth"), int(model::ShadeRamp::Smooth));
-    m_ramp->setToolTip(tr("Shade the current object's fills from its rounded shape"));
+    m_ramp->setToolTip(tr("Shade the current object's fills from its rounded shape, in every "
+                          "frame where the object appears (objects of the same name)"));
     form->addRow(tr("Fills:"), m_ramp);
     m_rim = new QCheckBox(tr("Rim light"), this);
     m_rim->setObjectName(QStringLiteral("shade.rim"));

@@ -8,8 +8,9 @@
 
 namespace finbook::model {
 
-// Shades every fill of object `groupId` as `shading` (ramp Off: flat again). Null when the
-// object is gone, has no fill, or every fill is already shaded so.
+// Shades every fill of object `groupId` as `shading` (ramp Off: flat again), in every frame
+// where the object appears (shade/same_object.h: its namesakes), as one undo step. Null when
+// the object is gone, has no fill, or every fill of it in every frame is already shaded so.
 std::unique_ptr<QUndoCommand> shadeFillsCommand(Document *doc, Id groupId,
                                                 const FillShading &shading);
 
