@@ -225,27 +225,27 @@
         <translation>Zur Wurzel der Figur machen</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="92"/>
         <source>Recolour Fill</source>
         <translation>Füllung umfärben</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="92"/>
         <source>Fill Region</source>
         <translation>Bereich füllen</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="84"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="101"/>
         <source>Remove Fill</source>
         <translation>Füllung entfernen</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="94"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="112"/>
         <source>Fill All Enclosed Regions</source>
         <translation>Alle geschlossenen Bereiche füllen</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="105"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="123"/>
         <source>Close Gaps</source>
         <translation>Lücken schließen</translation>
     </message>
@@ -280,19 +280,24 @@
         <translation>Stummschaltung aufheben</translation>
     </message>
     <message>
-        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <location filename="../model/src/shade/shade_commands.cpp" line="19"/>
         <source>Shade Fills</source>
         <translation>Füllungen schattieren</translation>
     </message>
     <message>
-        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <location filename="../model/src/shade/shade_commands.cpp" line="19"/>
         <source>Unshade Fills</source>
         <translation>Schattierung der Füllungen entfernen</translation>
     </message>
     <message>
-        <location filename="../model/src/shade/shade_commands.cpp" line="34"/>
+        <location filename="../model/src/shade/shade_commands.cpp" line="46"/>
         <source>Move Light</source>
         <translation>Licht verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/erase/stroke_cut.cpp" line="162"/>
+        <source>Keep Fills Along a Cut</source>
+        <translation>Füllungen entlang eines Schnitts behalten</translation>
     </message>
 </context>
 <context>
@@ -2209,12 +2214,17 @@
 <context>
     <name>RigPrompt</name>
     <message>
-        <location filename="../ui/src/rig/rig_prompt.cpp" line="18"/>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="20"/>
+        <source>&quot;%1&quot; is posed. Removing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
+        <translation>„%1“ ist posiert. Wenn das Rig entfernt wird, kehrt die Zeichnung in die Ruhelage zurück. (Erst „Pose auf Zeichnung anwenden“ behält die Pose.)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="24"/>
         <source>Discard the Pose?</source>
         <translation>Pose verwerfen?</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/rig_prompt.cpp" line="19"/>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="22"/>
         <source>&quot;%1&quot; is posed. Replacing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
         <translation>„%1“ ist posiert. Wenn sein Rig ersetzt wird, kehrt die Zeichnung in die Ruhelage zurück. (Mit „Pose auf Zeichnung anwenden“ bleibt die Pose vorher erhalten.)</translation>
     </message>
@@ -2268,48 +2278,48 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="119"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="120"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="147"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="148"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="186"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="187"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="207"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="208"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="271"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="272"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="347"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="348"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="357"/>
         <location filename="../ui/src/tools/stroke_editing.cpp" line="358"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="359"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -2646,7 +2656,7 @@
         <translation>Die Pins, den Käfig oder das Skelett vom aktuellen Objekt entfernen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/rig/deform_actions.cpp" line="56"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="57"/>
         <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
         <translation>
             <numerusform>Die Pins falten die Zeichnung: %n Dreieck ihres Netzes ist umgeklappt, wo die Pins keinen Platz lassen (Ansicht → Netz anzeigen zeigt es rot)</numerusform>
@@ -2654,42 +2664,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="62"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="71"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="72"/>
         <source>R&amp;igidity</source>
         <translation>&amp;Steifigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="85"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
         <source>Converged (Most Rigid)</source>
         <translation>Konvergiert (am starrsten)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Wie in der Veröffentlichung (zwei Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Steifer (+1 Durchgang)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="89"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Am steifsten (+3 Durchgänge)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="121"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
         <source>Mesh density </source>
         <translation>Netzdichte </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="123"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Wie fein das Verformungsnetz des aktuellen Objekts ist (1 = Standard)</translation>
     </message>
@@ -3168,6 +3178,14 @@
         <source>&amp;Next Frame</source>
         <translation>Nä&amp;chstes Einzelbild</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="126"/>
+        <source>Delete %n Frame(s)</source>
+        <translation>
+            <numerusform>%n Bild löschen</numerusform>
+            <numerusform>%n Bilder löschen</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::HandTool</name>
@@ -3409,7 +3427,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
@@ -3454,222 +3472,222 @@
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="52"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="53"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="66"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="102"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
         <source>Import Re&amp;ference...</source>
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="197"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="222"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="259"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="276"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -3689,11 +3707,13 @@
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
@@ -4332,42 +4352,42 @@
         <translation>Die Füllungen des aktuellen Objekts nach seiner gerundeten Form schattieren, in jedem Bild, in dem das Objekt vorkommt (Objekte gleichen Namens)</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="30"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="31"/>
         <source>Fills:</source>
         <translation>Füllungen:</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="31"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="32"/>
         <source>Rim light</source>
         <translation>Randlicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="33"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="34"/>
         <source>A light edge on the side away from the light</source>
         <translation>Ein heller Rand auf der vom Licht abgewandten Seite</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="41"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="42"/>
         <source>Where the light comes from on screen: 0° from the right, 90° from above, 180° from the left</source>
         <translation>Woher das Licht auf dem Bildschirm kommt: 0° von rechts, 90° von oben, 180° von links</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="43"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="44"/>
         <source>Light direction:</source>
         <translation>Lichtrichtung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="49"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="50"/>
         <source>How high the light stands above the drawing: 0° grazes it, 90° shines from the viewer</source>
         <translation>Wie hoch das Licht über der Zeichnung steht: 0° streift sie, 90° scheint vom Betrachter her</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="51"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="52"/>
         <source>Light height:</source>
         <translation>Lichthöhe:</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="88"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="89"/>
         <source>Fill regions of the current object with the Fill tool to shade them.</source>
         <translation>Füllen Sie Bereiche des aktuellen Objekts mit dem Füllwerkzeug, um sie zu schattieren.</translation>
     </message>
@@ -4587,42 +4607,47 @@
 <context>
     <name>finbook::ui::SoundRow</name>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="36"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="37"/>
         <source>The soundtrack: drag a sound to move it, right click for its volume</source>
         <translation>Die Tonspur: einen Ton ziehen, um ihn zu verschieben, Rechtsklick für seine Lautstärke</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="130"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="133"/>
+        <source>+%1 s after the last frame (not played)</source>
+        <translation>+%1 s nach dem letzten Bild (nicht abgespielt)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="163"/>
         <source>No sound: File → Import Sound…</source>
         <translation>Kein Ton: Datei → Ton importieren…</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="186"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="219"/>
         <source>%1 (cannot be played)</source>
         <translation>%1 (nicht abspielbar)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="188"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="221"/>
         <source>%1 (reading…)</source>
         <translation>%1 (wird gelesen…)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="190"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="223"/>
         <source>%1 (muted)</source>
         <translation>%1 (stumm)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="266"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="299"/>
         <source>&amp;Mute</source>
         <translation>&amp;Stumm</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="271"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="304"/>
         <source>&amp;Volume...</source>
         <translation>&amp;Lautstärke...</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="273"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="306"/>
         <source>Delete &amp;Sound</source>
         <translation>Ton &amp;löschen</translation>
     </message>

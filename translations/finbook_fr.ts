@@ -225,27 +225,27 @@
         <translation>Faire la racine du personnage</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="92"/>
         <source>Recolour Fill</source>
         <translation>Recolorer le remplissage</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="92"/>
         <source>Fill Region</source>
         <translation>Remplir la zone</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="84"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="101"/>
         <source>Remove Fill</source>
         <translation>Retirer le remplissage</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="94"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="112"/>
         <source>Fill All Enclosed Regions</source>
         <translation>Remplir toutes les zones fermées</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="105"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="123"/>
         <source>Close Gaps</source>
         <translation>Fermer les trous</translation>
     </message>
@@ -280,19 +280,24 @@
         <translation>Rétablir le son</translation>
     </message>
     <message>
-        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <location filename="../model/src/shade/shade_commands.cpp" line="19"/>
         <source>Shade Fills</source>
         <translation>Ombrer les remplissages</translation>
     </message>
     <message>
-        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <location filename="../model/src/shade/shade_commands.cpp" line="19"/>
         <source>Unshade Fills</source>
         <translation>Retirer l’ombrage des remplissages</translation>
     </message>
     <message>
-        <location filename="../model/src/shade/shade_commands.cpp" line="34"/>
+        <location filename="../model/src/shade/shade_commands.cpp" line="46"/>
         <source>Move Light</source>
         <translation>Déplacer la lumière</translation>
+    </message>
+    <message>
+        <location filename="../model/src/erase/stroke_cut.cpp" line="162"/>
+        <source>Keep Fills Along a Cut</source>
+        <translation>Garder les remplissages le long d’une coupe</translation>
     </message>
 </context>
 <context>
@@ -2209,12 +2214,17 @@
 <context>
     <name>RigPrompt</name>
     <message>
-        <location filename="../ui/src/rig/rig_prompt.cpp" line="18"/>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="20"/>
+        <source>&quot;%1&quot; is posed. Removing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
+        <translation>« %1 » est en pose. Supprimer son rig ramène le dessin au repos. (Appliquer d’abord la pose au dessin garde la pose.)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="24"/>
         <source>Discard the Pose?</source>
         <translation>Abandonner la pose&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/rig_prompt.cpp" line="19"/>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="22"/>
         <source>&quot;%1&quot; is posed. Replacing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
         <translation>«&#xa0;%1&#xa0;» est posé. Remplacer son armature ramène le dessin au repos. (Utilisez d&apos;abord «&#xa0;Appliquer la pose au dessin&#xa0;» pour conserver la pose.)</translation>
     </message>
@@ -2268,48 +2278,48 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="119"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="120"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="147"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="148"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="186"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="187"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="207"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="208"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="271"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="272"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="347"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="348"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="357"/>
         <location filename="../ui/src/tools/stroke_editing.cpp" line="358"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="359"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -2646,7 +2656,7 @@
         <translation>Retirer les épingles, la cage ou le squelette de l&apos;objet courant</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/rig/deform_actions.cpp" line="56"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="57"/>
         <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
         <translation>
             <numerusform>Les épingles plient le dessin&#xa0;: %n triangle de son maillage est retourné là où elles ne laissent pas de place (Affichage → Afficher le maillage le montre en rouge)</numerusform>
@@ -2654,42 +2664,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="62"/>
         <source>Preparing the deformation…</source>
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="71"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="72"/>
         <source>R&amp;igidity</source>
         <translation>R&amp;igidité</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="85"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
         <source>Converged (Most Rigid)</source>
         <translation>Convergence (rigidité maximale)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>Comme dans l&apos;article (deux étapes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>Plus rigide (+1 passe)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="89"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>Le plus rigide (+3 passes)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="121"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
         <source>Mesh density </source>
         <translation>Densité du maillage </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="123"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>Finesse du maillage de déformation de l&apos;objet courant (1 = par défaut)</translation>
     </message>
@@ -3168,6 +3178,14 @@
         <source>&amp;Next Frame</source>
         <translation>Image sui&amp;vante</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="126"/>
+        <source>Delete %n Frame(s)</source>
+        <translation>
+            <numerusform>Supprimer %n image</numerusform>
+            <numerusform>Supprimer %n images</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::HandTool</name>
@@ -3424,7 +3442,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
@@ -3469,231 +3487,233 @@
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="52"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="53"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="66"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="102"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
         <source>Import Re&amp;ference...</source>
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="197"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="222"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="259"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="276"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
     <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Annuler</translation>
     </message>
     <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Rétablir</translation>
@@ -4332,42 +4352,42 @@
         <translation>Ombrer les remplissages de l’objet courant d’après sa forme arrondie, dans chaque image où l’objet apparaît (les objets de même nom)</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="30"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="31"/>
         <source>Fills:</source>
         <translation>Remplissages&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="31"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="32"/>
         <source>Rim light</source>
         <translation>Lumière de contour</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="33"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="34"/>
         <source>A light edge on the side away from the light</source>
         <translation>Un bord clair du côté opposé à la lumière</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="41"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="42"/>
         <source>Where the light comes from on screen: 0° from the right, 90° from above, 180° from the left</source>
         <translation>D’où vient la lumière à l’écran&#xa0;: 0° de la droite, 90° du haut, 180° de la gauche</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="43"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="44"/>
         <source>Light direction:</source>
         <translation>Direction de la lumière&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="49"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="50"/>
         <source>How high the light stands above the drawing: 0° grazes it, 90° shines from the viewer</source>
         <translation>Hauteur de la lumière au-dessus du dessin&#xa0;: 0° la rase, 90° éclaire depuis le spectateur</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="51"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="52"/>
         <source>Light height:</source>
         <translation>Hauteur de la lumière&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="88"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="89"/>
         <source>Fill regions of the current object with the Fill tool to shade them.</source>
         <translation>Remplissez des zones de l’objet courant avec l’outil Remplissage pour les ombrer.</translation>
     </message>
@@ -4587,42 +4607,47 @@
 <context>
     <name>finbook::ui::SoundRow</name>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="36"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="37"/>
         <source>The soundtrack: drag a sound to move it, right click for its volume</source>
         <translation>La bande son : faites glisser un son pour le déplacer, clic droit pour son volume</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="130"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="133"/>
+        <source>+%1 s after the last frame (not played)</source>
+        <translation>+%1 s après la dernière image (non joué)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="163"/>
         <source>No sound: File → Import Sound…</source>
         <translation>Aucun son : Fichier → Importer un son…</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="186"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="219"/>
         <source>%1 (cannot be played)</source>
         <translation>%1 (illisible)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="188"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="221"/>
         <source>%1 (reading…)</source>
         <translation>%1 (lecture…)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="190"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="223"/>
         <source>%1 (muted)</source>
         <translation>%1 (coupé)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="266"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="299"/>
         <source>&amp;Mute</source>
         <translation>&amp;Couper le son</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="271"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="304"/>
         <source>&amp;Volume...</source>
         <translation>&amp;Volume...</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="273"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="306"/>
         <source>Delete &amp;Sound</source>
         <translation>&amp;Supprimer le son</translation>
     </message>

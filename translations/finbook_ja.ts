@@ -225,27 +225,27 @@
         <translation>キャラクターのルートにする</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="92"/>
         <source>Recolour Fill</source>
         <translation>塗りの色を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="75"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="92"/>
         <source>Fill Region</source>
         <translation>領域を塗る</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="84"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="101"/>
         <source>Remove Fill</source>
         <translation>塗りを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="94"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="112"/>
         <source>Fill All Enclosed Regions</source>
         <translation>閉じた領域をすべて塗る</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_commands.cpp" line="105"/>
+        <location filename="../model/src/fill/fill_commands.cpp" line="123"/>
         <source>Close Gaps</source>
         <translation>隙間を閉じる</translation>
     </message>
@@ -280,19 +280,24 @@
         <translation>サウンドのミュート解除</translation>
     </message>
     <message>
-        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <location filename="../model/src/shade/shade_commands.cpp" line="19"/>
         <source>Shade Fills</source>
         <translation>塗りに陰影を付ける</translation>
     </message>
     <message>
-        <location filename="../model/src/shade/shade_commands.cpp" line="20"/>
+        <location filename="../model/src/shade/shade_commands.cpp" line="19"/>
         <source>Unshade Fills</source>
         <translation>塗りの陰影を外す</translation>
     </message>
     <message>
-        <location filename="../model/src/shade/shade_commands.cpp" line="34"/>
+        <location filename="../model/src/shade/shade_commands.cpp" line="46"/>
         <source>Move Light</source>
         <translation>光源を動かす</translation>
+    </message>
+    <message>
+        <location filename="../model/src/erase/stroke_cut.cpp" line="162"/>
+        <source>Keep Fills Along a Cut</source>
+        <translation>切断に沿って塗りを保持</translation>
     </message>
 </context>
 <context>
@@ -2200,12 +2205,17 @@
 <context>
     <name>RigPrompt</name>
     <message>
-        <location filename="../ui/src/rig/rig_prompt.cpp" line="18"/>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="20"/>
+        <source>&quot;%1&quot; is posed. Removing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
+        <translation>「%1」はポーズ中です。リグを削除すると絵は初期状態に戻ります。(先に「ポーズを絵に適用」するとポーズが残ります。)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="24"/>
         <source>Discard the Pose?</source>
         <translation>ポーズを破棄しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/rig_prompt.cpp" line="19"/>
+        <location filename="../ui/src/rig/rig_prompt.cpp" line="22"/>
         <source>&quot;%1&quot; is posed. Replacing its rig sends the drawing back to rest. (Apply Pose to Drawing first keeps the pose.)</source>
         <translation>「%1」にはポーズが付いています。リグを置き換えると、絵は元の状態に戻ります（先に「ポーズを絵に適用」を実行すれば、ポーズを残せます）。</translation>
     </message>
@@ -2259,48 +2269,48 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="119"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="120"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="122"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="125"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="147"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="148"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="186"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="187"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="207"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="208"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="271"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="272"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="347"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="348"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="357"/>
         <location filename="../ui/src/tools/stroke_editing.cpp" line="358"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="359"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -2635,49 +2645,49 @@
         <translation>現在のオブジェクトからピン、ケージ、またはスケルトンを外す</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/rig/deform_actions.cpp" line="56"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="57"/>
         <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
         <translation>
             <numerusform>ピンが絵を折り返しています。ピンの間に余地がないため、メッシュの三角形 %n 個が裏返っています（表示 → メッシュを表示 で赤く示されます）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="61"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="62"/>
         <source>Preparing the deformation…</source>
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="71"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="72"/>
         <source>R&amp;igidity</source>
         <translation>剛性(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="85"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
         <source>Converged (Most Rigid)</source>
         <translation>収束まで（最も硬く）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="86"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
         <source>As in the Paper (Two Steps)</source>
         <translation>論文どおり（2 段階）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="87"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
         <source>Stiffer (+1 Pass)</source>
         <translation>より硬く（+1 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="88"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="89"/>
         <source>Stiffest (+3 Passes)</source>
         <translation>最も硬く（+3 パス）</translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="121"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
         <source>Mesh density </source>
         <translation>メッシュ密度 </translation>
     </message>
     <message>
-        <location filename="../ui/src/rig/deform_actions.cpp" line="122"/>
+        <location filename="../ui/src/rig/deform_actions.cpp" line="123"/>
         <source>How fine the current object&apos;s deformation mesh is (1 = default)</source>
         <translation>現在のオブジェクトの変形メッシュの細かさ（1 = 標準）</translation>
     </message>
@@ -3154,6 +3164,13 @@
         <source>&amp;Next Frame</source>
         <translation>次のフレーム(&amp;N)</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/timeline/frame_actions.cpp" line="126"/>
+        <source>Delete %n Frame(s)</source>
+        <translation>
+            <numerusform>%n 枚のフレームを削除</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::HandTool</name>
@@ -3409,7 +3426,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
@@ -3454,231 +3471,233 @@
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="52"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="53"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="64"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="66"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="102"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
         <source>Import Re&amp;ference...</source>
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="108"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="110"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="129"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="164"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="171"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="197"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="220"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="222"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="259"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="270"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="276"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
     <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>やり直す</translation>
@@ -4315,42 +4334,42 @@
         <translation>現在のオブジェクトの塗りに、丸みを帯びた形から陰影を付けます。オブジェクトが現れるすべてのフレーム（同じ名前のオブジェクト）に適用されます</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="30"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="31"/>
         <source>Fills:</source>
         <translation>塗り:</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="31"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="32"/>
         <source>Rim light</source>
         <translation>リムライト</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="33"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="34"/>
         <source>A light edge on the side away from the light</source>
         <translation>光源と反対側の縁を明るくします</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="41"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="42"/>
         <source>Where the light comes from on screen: 0° from the right, 90° from above, 180° from the left</source>
         <translation>画面上で光の来る方向: 0° は右から、90° は上から、180° は左から</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="43"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="44"/>
         <source>Light direction:</source>
         <translation>光の方向:</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="49"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="50"/>
         <source>How high the light stands above the drawing: 0° grazes it, 90° shines from the viewer</source>
         <translation>光源の高さ: 0° は絵をかすめ、90° は見る人の側から照らします</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="51"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="52"/>
         <source>Light height:</source>
         <translation>光の高さ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/shade/shading_panel.cpp" line="88"/>
+        <location filename="../ui/src/shade/shading_panel.cpp" line="89"/>
         <source>Fill regions of the current object with the Fill tool to shade them.</source>
         <translation>塗りつぶしツールで現在のオブジェクトの領域を塗ると、陰影を付けられます。</translation>
     </message>
@@ -4570,42 +4589,47 @@
 <context>
     <name>finbook::ui::SoundRow</name>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="36"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="37"/>
         <source>The soundtrack: drag a sound to move it, right click for its volume</source>
         <translation>サウンドトラック: サウンドをドラッグして移動、右クリックで音量</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="130"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="133"/>
+        <source>+%1 s after the last frame (not played)</source>
+        <translation>最後のフレームの後に +%1 秒 (再生されません)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/sound/sound_row.cpp" line="163"/>
         <source>No sound: File → Import Sound…</source>
         <translation>サウンドなし: ファイル → サウンドをインポート…</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="186"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="219"/>
         <source>%1 (cannot be played)</source>
         <translation>%1(再生できません)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="188"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="221"/>
         <source>%1 (reading…)</source>
         <translation>%1(読み込み中…)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="190"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="223"/>
         <source>%1 (muted)</source>
         <translation>%1(ミュート)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="266"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="299"/>
         <source>&amp;Mute</source>
         <translation>ミュート(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="271"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="304"/>
         <source>&amp;Volume...</source>
         <translation>音量(&amp;V)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_row.cpp" line="273"/>
+        <location filename="../ui/src/sound/sound_row.cpp" line="306"/>
         <source>Delete &amp;Sound</source>
         <translation>サウンドを削除(&amp;S)</translation>
     </message>
