@@ -34,7 +34,7 @@ float peak(const model::DecodedSound &sound, double from, double to)
     const auto first = qint64(from * model::kSoundRate) * 2;
     const qint64 last = std::min(qint64(to * model::kSoundRate) * 2, qint64(sound.samples.size()));
     for (qint64 i = std::max<qint64>(0, first); i < last; ++i)
-        p = std::max(p, std::abs(sound.samples[std::size_t(i)]));
+        p = std::max(p, std::abs(float(sound.samples[std::size_t(i)]) * sound.kScale));
     return p;
 }
 } // namespace

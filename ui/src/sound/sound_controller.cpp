@@ -125,7 +125,7 @@ void SoundController::importSound(const QString &path)
                 clip.bytes = bytes;
                 clip.start = std::min(start, model::kMaxSoundStart);
                 auto *command = new model::AddSoundClipCommand(doc, clip);
-                self->m_cache->insert(command->clipId(), sound, waveform);
+                self->m_cache->insert(command->clipId(), sound, waveform, bytes.size());
                 doc->undoStack()->push(command);
                 emit self->importFinished(
                     command->clipId(),
