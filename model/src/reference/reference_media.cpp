@@ -1,4 +1,5 @@
 // ReferenceMedia: the still image, or a video decoder behind a byte-bounded LRU frame cache.
+#include "reference_svg.h"
 #include "video_decoder.h"
 
 #include <finbook/model/reference/reference_media.h>
@@ -19,9 +20,12 @@ namespace {
 constexpr qint64 kDefaultCacheBytes = qint64(256) << 20;
 constexpr qint64 kKeptOnTheWay = 16; // frames before the one asked for, kept from a seek
 
+constexpr int kMaxStillSide = 16384;
+constexpr qint64 kMaxStillPixels = qint64(8192) * 8192;
+
 // Qt's own readers first (they know a picture's orientation, colour space, animation); null
-// when none reads the bytes.
-QImage readWithQt(const QByteArray &bytes)
+// when none reads the bytes. `svg` is set when the bytes are SVG (renderSvg's alone).
+QImage readWithQt(const QByteArray &bytes, bool *svg)
 {
     QBuffer buffer;
     buffer.setData(bytes);
@@ -30,17 +34,32 @@ QImage readWithQt(const QByteArray &bytes)
     reader.setAutoTransform(true);
     if (!reader.canRead())
         return {};
-    const QSize size = reader.size();
-    if (size.isValid() && (size.width() > 16384 || size.height() > 16384))
+    if (reader.format() == "svg" || reader.format() == "svgz") {
+        *svg = true; // Qt's SVG reader has no limits: never through it
         return {};
-    return reader.read();
+    }
+    const QSize size = reader.size();
+    if (size.isValid() && (size.width() > kMaxStillSide || size.height() > kMaxStillSide ||
+                           qint64(size.width()) * size.height() > kMaxStillPixels))
+        return {};
+    // What decoded is checked as well as what the header said.
+    QImage image = reader.read();
+    if (image.width() > kMaxStillSide || image.height() > kMaxStillSide ||
+        qint64(image.width()) * image.height() > kMaxStillPixels)
+        return {};
+    return image;
 }
 
 // One still picture in the cache's format; null with `error` set when none decodes.
 QImage decodeStill(const QByteArray &bytes, QString *error)
 {
-    QImage image = readWithQt(bytes);
-    if (image.isNull()) {
+    bool svg = reference_detail::looksLikeSvg(bytes);
+    QImage image = svg ? QImage() : readWithQt(bytes, &svg);
+    if (svg) {
+        image = reference_detail::renderSvg(bytes, error);
+        if (image.isNull())
+            return {};
+    } else if (image.isNull()) {
         auto decoder = reference_detail::VideoDecoder::open(bytes, error);
         if (!decoder)
             return {};
