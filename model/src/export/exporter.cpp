@@ -223,6 +223,11 @@ Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
     // Media that cannot be used is said once, whatever the format: left out with a note, or
     // (strict) the export refused before anything is written.
     QStringList problems = sound.problems();
+    if (problems.size() > 3) { // one line on a terminal, not one per clip of 256
+        const auto more = int(problems.size() - 2);
+        problems.resize(2);
+        problems << Export::tr("%n more sound clip(s) are left out too.", nullptr, more);
+    }
     if (!reference.problem().isEmpty())
         problems << reference.problem();
     if (options.strictMedia && !problems.isEmpty())
