@@ -2161,8 +2161,8 @@
         <translation>Sie ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="109"/>
-        <location filename="../model/src/reference/reference_media.cpp" line="133"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="111"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="135"/>
         <source>The file is empty.</source>
         <translation>Die Datei ist leer.</translation>
     </message>
@@ -2178,7 +2178,7 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_svg.cpp" line="113"/>
-        <location filename="../model/src/reference/reference_svg.cpp" line="208"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="213"/>
         <source>It is not a valid SVG picture.</source>
         <translation>Es ist kein gültiges SVG-Bild.</translation>
     </message>
@@ -2193,27 +2193,32 @@
         <translation>SVG-Bilder werden nur gezeichnet, wo Finbook mit seiner grafischen Anwendung läuft (ihr Text braucht deren Schriften).</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="192"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="189"/>
+        <source>The reference&apos;s SVG pictures took all the time Finbook spends drawing them.</source>
+        <translation>Die SVG-Bilder der Referenz haben die ganze Zeit verbraucht, die Finbook für ihr Zeichnen aufwendet.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
         <source>Its compressed SVG is damaged or larger than 16 MB.</source>
         <translation>Ihr komprimiertes SVG ist beschädigt oder größer als 16 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="196"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="201"/>
         <source>Its SVG is larger than 16 MB.</source>
         <translation>Ihr SVG ist größer als 16 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="203"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="208"/>
         <source>Its SVG paints more than 100,000 elements (counting what &lt;use&gt; repeats), more than Finbook draws for a reference.</source>
         <translation>Ihr SVG zeichnet mehr als 100.000 Elemente (mitgezählt, was &lt;use&gt; wiederholt), mehr als Finbook für eine Referenz zeichnet.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="214"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="219"/>
         <source>Its SVG has no size.</source>
         <translation>Ihr SVG hat keine Größe.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="221"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="226"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="184"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="189"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="193"/>
@@ -2222,7 +2227,7 @@
         <translation>Zum Lesen reicht der Speicher nicht.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="241"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="255"/>
         <source>Its SVG takes too long to draw (more than %1 s), more than Finbook spends on a reference.</source>
         <translation>Ihr SVG braucht zu lange zum Zeichnen (mehr als %1 s), länger als Finbook für eine Referenz aufwendet.</translation>
     </message>

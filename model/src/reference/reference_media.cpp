@@ -51,12 +51,12 @@ QImage readWithQt(const QByteArray &bytes, bool *svg)
 }
 
 // One still picture in the cache's format; null with `error` set when none decodes.
-QImage decodeStill(const QByteArray &bytes, QString *error)
+QImage decodeStill(const QByteArray &bytes, QString *error, double *svgBudget = nullptr)
 {
     bool svg = reference_detail::looksLikeSvg(bytes);
     QImage image = svg ? QImage() : readWithQt(bytes, &svg);
     if (svg) {
-        image = reference_detail::renderSvg(bytes, error);
+        image = reference_detail::renderSvg(bytes, error, svgBudget);
         if (image.isNull())
             return {};
     } else if (image.isNull()) {
@@ -83,6 +83,8 @@ struct ReferenceMedia::Cache {
     std::unordered_map<qint64, std::list<std::pair<qint64, QImage>>::iterator> index;
     qint64 bytes = 0;
     qint64 limit = kDefaultCacheBytes;
+    // CPU seconds left for a sequence's SVG pictures (reference_svg.h), under `decoder`.
+    double svgSeconds = 10.0;
 
     void trim()
     {
@@ -134,7 +136,8 @@ Expected<std::shared_ptr<ReferenceMedia>, QString> ReferenceMedia::open(const Re
     std::shared_ptr<ReferenceMedia> media(new ReferenceMedia());
     media->m_kind = ReferenceKind::Sequence;
     QString error;
-    const QImage first = decodeStill(reference.pictures.front(), &error);
+    const QImage first =
+        decodeStill(reference.pictures.front(), &error, &media->m_cache->svgSeconds);
     if (first.isNull())
         return unexpected(error);
     media->m_size = first.size();
@@ -210,7 +213,8 @@ QImage ReferenceMedia::frame(qint64 index)
     };
     if (m_kind == ReferenceKind::Sequence) {
         QString error;
-        const QImage image = decodeStill(m_pictures[qsizetype(index)], &error);
+        // Under the decoder's lock: the SVG time left is this media's alone.
+        const QImage image = decodeStill(m_pictures[qsizetype(index)], &error, &c.svgSeconds);
         if (!image.isNull())
             insert(index, image);
         return image;

@@ -173,7 +173,7 @@ bool looksLikeSvg(const QByteArray &bytes)
     return head.contains("<svg") || head.contains(":svg");
 }
 
-QImage renderSvg(const QByteArray &bytes, QString *error)
+QImage renderSvg(const QByteArray &bytes, QString *error, double *budget)
 {
     const auto fail = [error](const QString &why) {
         if (error)
@@ -184,6 +184,11 @@ QImage renderSvg(const QByteArray &bytes, QString *error)
         return fail(QCoreApplication::translate(
             "Reference", "SVG pictures are drawn only where Finbook runs with its "
                          "graphical application (their text needs its fonts)."));
+    const double limit = budget ? std::min(kMaxSvgRenderSeconds, *budget) : kMaxSvgRenderSeconds;
+    if (limit <= 0.0)
+        return fail(QCoreApplication::translate("Reference",
+                                                "The reference's SVG pictures took all the "
+                                                "time Finbook spends drawing them."));
     QByteArray xml = bytes;
     if (isGzip(bytes)) {
         bool whole = false;
@@ -223,6 +228,15 @@ QImage renderSvg(const QByteArray &bytes, QString *error)
     // Band by band: each band paints the whole picture clipped to its rows (the pixels are
     // those of one whole painting), and the time spent is checked between bands.
     const double start = threadSeconds();
+    struct Charge { // the time spent, taken from the budget on every way out
+        double *budget;
+        double start;
+        ~Charge()
+        {
+            if (budget)
+                *budget -= threadSeconds() - start;
+        }
+    } charge{budget, start};
     int top = 0;
     int rows = 8;
     while (top < pixels.height()) {
