@@ -210,7 +210,7 @@ void TestSoundDecode::refusesRatesOutsideTheRange()
     clock.start();
     const QByteArray bomb = sineWav(3500, 1, 0.1);
     QVERIFY(bomb.size() < 8000);
-    Expected<DecodedSound, QString> slow = unexpected(QString());
+    finbook::Expected<DecodedSound, QString> slow = finbook::unexpected(QString());
     const long rise = peakRiseMiB([&] { slow = decodeSound(bomb); });
     QVERIFY(!slow);
     QVERIFY2(slow.error().contains(QStringLiteral("1 Hz")), qPrintable(slow.error()));
@@ -235,7 +235,7 @@ void TestSoundDecode::refusesMoreSoundThanItsBytesHold()
     QVERIFY(flac.size() < 2 << 20);
     QElapsedTimer clock;
     clock.start();
-    Expected<DecodedSound, QString> sound = unexpected(QString());
+    finbook::Expected<DecodedSound, QString> sound = finbook::unexpected(QString());
     const long rise = peakRiseMiB([&] { sound = decodeSound(flac); });
     qInfo("59 min FLAC of %lld bytes: %s in %lld ms, peak rose %ld MiB", qint64(flac.size()),
           sound ? "decoded" : "refused", clock.elapsed(), rise);
