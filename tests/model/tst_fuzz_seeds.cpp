@@ -139,15 +139,17 @@ void withMedia(Document &doc)
     sound_test::importClip(
         doc,
         QByteArray::fromBase64(
-            "SUQzBAAAAAAAI1RTU0UAAAAPAAADTGF2ZjU5LjI3LjEwMAAAAAAAAAAAAAAA/+M4wAAAAAAAAAAAAEluZm8A"
-            "AAAPAAAABAAAAfgAkpKSkpKSkpKSkpKSkpKSkpKSkpKSkpKStra2tra2tra2tra2tra2tra2tra2tra2ttvb"
-            "29vb29vb29vb29vb29vb29vb29vb29v/////////////////////////////////AAAAAExhdmM1OS4zNwAA"
-            "AAAAAAAAAAAAACQDoAAAAAAAAAH4OEpbLwAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA"
-            "AAAAAAAAAAAA/+MYxAAK8AbVuUEAAv9HcNtgBg+D4PvUCAIHIPg+fxOD4PoggcRB8H34IOu/wxwG/SGOXfzn"
-            "T7ulJoc4WcQ3/GVEJRyhC3+D/+MYxA8QmUKQAZRQAG8H6ge5ABlxEnAPiYDmR1gd6mHvgGgCQCorCKC6//IR"
-            "6KpEPh8ab//5CgNCUJA1/4lOg0rle3yUy2al/+MYxAcOeQqgAZlAAD//9Pb3G5bHn1iv//z7/nD0wRfQgDMg"
-            "kHA6//YODISgEhODotZP/8JUJ6NZLFWf86VnV0xBTUUzLjEw/+MYxAgAAANIAcAAADBVVVVVVVVVVVVVVVVV"
-            "VVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVVV"),
+            "SUQzBAAAAAAACgAAAAAAAAAAAAD/4xjEAArwBtW5QQAC/0dw22AGD4Pg+9QIAgcg+D5/E4Pg+iCBxEHwffgg"
+            "67/DHAb9IY5d/OdPu6UmhzhZxDf8ZUQlHKELf4P/4xjEDxCZQpABlFAAbwfqB7kAGXEScA+JgOZHWB3qYe+A"
+            "aAJAKisIoLr/8hHoqkQ+Hxpv//kKA0JQkDX/iU6DSv//////////4xjEBw5opjwB3gAA//////jSIRgDgBJJ"
+            "BcAowKwXjB/BqMIcUoxC6XDG+E2MNsFowPQPgUBeIQAwMAqhJbTt0//++BKlUCD/4xjECA2opiwAVrxgKYkU"
+            "Z9AbJyeX0YgA25x36Hmn4KmYaoLxglALlADyBEGgAIBUvrH////f5T///1r/X/98YwMhgQAB1wX/4xjEDA7o"
+            "piwAp7CAggGnIgeakYjIqpzkUymryIeYeQKxgygWmBgBEbpGM5fxSvH//9n+/0////////9F///5OxVA4DBJ"
+            "hA3/4xjECw1opjAABv5EmAoQInQCEYGBLISRgIoN0SARIMAODAAwBUIACyIAQQJrhv/////6P///Uv///jGA"
+            "GAADfQMAIBwMCwH/4xjEEA04pkABVgAAIBALwMRoywMfZtQOrsWwN6Q/gMGwIAMAwCQAgXgJAKI+GYEKISAS"
+            "P8cwgjDKf4zBUFmCCki4HaTiN4//4xjEFhKJLpQplGgAgDk0hOAuAG3AOBhIr/+Cdgr48x3iZlP//zMvm6y+"
+            "Fz//Lic+Hy7//oB8BmiY1//9BNxq5Co7Vy3YAD//4xjEBgzwttG5wwAD/ZmX/jMylxgzM3GZm1UCb9VUBCn9"
+            "BQYK8FBQp/goMd/QUKG+CgwU/wUKG/5IKkxBTUUzLjEwMKqqqqo="),
         QStringLiteral("tone.mp3"), 6);
     Reference r;
     r.kind = ReferenceKind::Video;
