@@ -2308,61 +2308,60 @@
         <translation>Die Datei ist kein Ton, den Finbook lesen kann (WAV, FLAC, MP3, Ogg, Opus, AAC oder M4A), oder sie ist beschädigt.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="196"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="211"/>
         <source>It holds more sound than a file of %1 KB can hold when it is real sound (more than %2 min; hostile or damaged files announce hours of sound in a few kilobytes). Convert it to WAV, FLAC or MP3 and import it again.</source>
         <translation>Sie enthält mehr Sound, als eine Datei von %1 KB mit echtem Sound enthalten kann (mehr als %2 min; bösartige oder beschädigte Dateien kündigen in wenigen Kilobyte Stunden an). Wandeln Sie sie in WAV, FLAC oder MP3 um und importieren Sie sie erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="240"/>
         <source>With the soundtrack&apos;s other clips it would make more than %1 min of sound, the most Finbook decodes from sound files of this size.</source>
         <translation>Zusammen mit den anderen Clips der Tonspur ergäbe das mehr als %1 min Sound, das Meiste, was Finbook aus Sounddateien dieser Größe dekodiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="236"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="251"/>
         <source>The file is empty.</source>
         <translation>Die Datei ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="238"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="253"/>
         <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
         <translation>Die Datei ist unvollständig: ihre Tondaten brechen ab. Importieren Sie die vollständige Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="246"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="250"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="254"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="299"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="261"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="265"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="269"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="305"/>
         <source>There is not enough memory to read the sound.</source>
         <translation>Zum Lesen des Tons ist nicht genug Speicher vorhanden.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="264"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="279"/>
         <source>The file holds no sound Finbook can play.</source>
         <translation>Die Datei enthält keinen Ton, den Finbook abspielen kann.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="270"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="282"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="197"/>
         <source>Its sample rate, %1 Hz, is outside the %2 to %3 Hz Finbook plays (real recordings use 8,000 to 192,000).</source>
         <translation>Ihre Abtastrate von %1 Hz liegt außerhalb der %2 bis %3 Hz, die Finbook abspielt (echte Aufnahmen nutzen 8.000 bis 192.000).</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="288"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="294"/>
         <source>It has %1 channels; Finbook plays at most %2.</source>
         <translation>Sie hat %1 Kanäle; Finbook spielt höchstens %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="347"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="353"/>
         <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
         <translation>Der Ton ist länger als %1 Minuten, die längste Dauer, die Finbook abspielt.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="356"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="362"/>
         <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
         <translation>Die Datei enthält keinen Ton, den Finbook abspielen kann (es ließ sich kein Ton daraus dekodieren).</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="363"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="369"/>
         <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
         <translation>Die Datei ist unvollständig: sie kündigt %1 s Ton an, enthält aber nur %2 s. Importieren Sie die vollständige Datei.</translation>
     </message>

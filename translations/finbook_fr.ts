@@ -2308,61 +2308,60 @@
         <translation>Le fichier n&apos;est pas un son que Finbook sait lire (WAV, FLAC, MP3, Ogg, Opus, AAC ou M4A), ou il est endommagé.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="196"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="211"/>
         <source>It holds more sound than a file of %1 KB can hold when it is real sound (more than %2 min; hostile or damaged files announce hours of sound in a few kilobytes). Convert it to WAV, FLAC or MP3 and import it again.</source>
         <translation>Il contient plus de son qu’un fichier de %1 Ko ne peut en contenir quand c’est du vrai son (plus de %2 min ; des fichiers malveillants ou endommagés annoncent des heures de son en quelques kilo-octets). Convertissez-le en WAV, FLAC ou MP3 et importez-le à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="240"/>
         <source>With the soundtrack&apos;s other clips it would make more than %1 min of sound, the most Finbook decodes from sound files of this size.</source>
         <translation>Avec les autres clips de la bande son, cela ferait plus de %1 min de son, le maximum que Finbook décode à partir de fichiers sonores de cette taille.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="236"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="251"/>
         <source>The file is empty.</source>
         <translation>Le fichier est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="238"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="253"/>
         <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
         <translation>Le fichier est incomplet : ses données sonores sont tronquées. Importez le fichier complet.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="246"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="250"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="254"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="299"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="261"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="265"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="269"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="305"/>
         <source>There is not enough memory to read the sound.</source>
         <translation>La mémoire est insuffisante pour lire le son.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="264"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="279"/>
         <source>The file holds no sound Finbook can play.</source>
         <translation>Le fichier ne contient aucun son que Finbook sait lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="270"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="282"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="197"/>
         <source>Its sample rate, %1 Hz, is outside the %2 to %3 Hz Finbook plays (real recordings use 8,000 to 192,000).</source>
         <translation>Sa fréquence d’échantillonnage, %1 Hz, est hors de la plage de %2 à %3 Hz que Finbook lit (les vrais enregistrements utilisent 8 000 à 192 000).</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="288"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="294"/>
         <source>It has %1 channels; Finbook plays at most %2.</source>
         <translation>Il a %1 canaux ; Finbook en lit au plus %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="347"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="353"/>
         <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
         <translation>Le son dure plus de %1 minutes, la plus longue durée que Finbook lit.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="356"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="362"/>
         <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
         <translation>Le fichier ne contient aucun son que Finbook sait lire (aucun son n&apos;a pu en être décodé).</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="363"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="369"/>
         <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
         <translation>Le fichier est incomplet : il annonce %1 s de son mais n’en contient que %2 s. Importez le fichier complet.</translation>
     </message>

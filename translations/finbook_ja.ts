@@ -2298,61 +2298,60 @@
         <translation>このファイルは Finbook が読めるサウンド(WAV、FLAC、MP3、Ogg、Opus、AAC、M4A)ではないか、破損しています。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="196"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="211"/>
         <source>It holds more sound than a file of %1 KB can hold when it is real sound (more than %2 min; hostile or damaged files announce hours of sound in a few kilobytes). Convert it to WAV, FLAC or MP3 and import it again.</source>
         <translation>%1 KB のファイルに実際の音として入りうる量を超える音を含んでいます（%2 分超。悪意のある、または壊れたファイルは数 KB で何時間もの音を宣言します）。WAV、FLAC または MP3 に変換して、もう一度読み込んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="240"/>
         <source>With the soundtrack&apos;s other clips it would make more than %1 min of sound, the most Finbook decodes from sound files of this size.</source>
         <translation>サウンドトラックのほかのクリップと合わせると %1 分を超え、このサイズのサウンドファイルから Finbook がデコードする上限を超えます。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="236"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="251"/>
         <source>The file is empty.</source>
         <translation>ファイルが空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="238"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="253"/>
         <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
         <translation>ファイルが不完全です。サウンドデータが途中で切れています。完全なファイルをインポートしてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="246"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="250"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="254"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="299"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="261"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="265"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="269"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="305"/>
         <source>There is not enough memory to read the sound.</source>
         <translation>サウンドを読み込むためのメモリが足りません。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="264"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="279"/>
         <source>The file holds no sound Finbook can play.</source>
         <translation>ファイルに Finbook が再生できるサウンドがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="270"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="282"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="197"/>
         <source>Its sample rate, %1 Hz, is outside the %2 to %3 Hz Finbook plays (real recordings use 8,000 to 192,000).</source>
         <translation>サンプリングレート %1 Hz は Finbook が再生する %2～%3 Hz の範囲外です（実際の録音は 8,000～192,000 を使います）。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="288"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="294"/>
         <source>It has %1 channels; Finbook plays at most %2.</source>
         <translation>%1 チャンネルあります。Finbook が再生するのは最大 %2 チャンネルです。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="347"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="353"/>
         <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
         <translation>サウンドが Finbook で再生できる最長の %1 分を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="356"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="362"/>
         <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
         <translation>ファイルに Finbook が再生できるサウンドがありません(音声をデコードできませんでした)。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="363"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="369"/>
         <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
         <translation>ファイルが不完全です。%1 秒のサウンドと記されていますが、%2 秒しかありません。完全なファイルをインポートしてください。</translation>
     </message>

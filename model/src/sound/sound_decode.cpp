@@ -120,7 +120,7 @@ public:
         : m_max(maxSamples)
     {}
     qint64 size() const { return m_size; }
-    bool full() const { return m_size > m_max; }
+    bool full() const { return m_over || m_size > m_max; }
     // Converts `frame` (null: flush the resampler) and appends it. False when the resampler
     // fails; full() when it would pass the limit (nothing is appended then).
     bool convert(SwrContext *swr, const AVFrame *frame)
@@ -132,7 +132,7 @@ public:
         // Counted before allocating: a frame of millions of samples at a low rate asks for
         // more than the whole clip may hold.
         if (m_size + qint64(room) * kSoundChannels > m_max + kSlack) {
-            m_size = m_max + 1;
+            m_over = true;
             return true;
         }
         m_scratch.resize(std::size_t(room) * kSoundChannels);
@@ -182,9 +182,24 @@ private:
     }
     qint64 m_max;
     qint64 m_size = 0;
+    bool m_over = false; // a conversion was refused: it would have passed the limit
     std::vector<std::vector<qint16>> m_blocks;
     std::vector<qint16> m_scratch;
 };
+
+bool rateAllowed(int rate)
+{
+    return rate >= kMinSoundSourceRate && rate <= kMaxSoundSourceRate;
+}
+
+QString rateRefused(int rate)
+{
+    return SoundText::tr("Its sample rate, %1 Hz, is outside the %2 to %3 Hz Finbook plays (real "
+                         "recordings use 8,000 to 192,000).")
+        .arg(rate)
+        .arg(kMinSoundSourceRate)
+        .arg(kMaxSoundSourceRate);
+}
 
 QString minutes(double seconds)
 {
@@ -265,25 +280,16 @@ Expected<DecodedSound, QString> decodeSound(const QByteArray &bytes,
     const AVStream *st = g.format->streams[stream];
     // Refused before a decoder exists: a rate of 1 Hz resampled to 48 kHz multiplies the
     // file's samples by 48,000.
-    const int rate = st->codecpar->sample_rate;
-    if (rate > 0 && (rate < kMinSoundSourceRate || rate > kMaxSoundSourceRate))
-        return unexpected(SoundText::tr("Its sample rate, %1 Hz, is outside the %2 to %3 Hz "
-                                        "Finbook plays (real recordings use 8,000 to 192,000).")
-                              .arg(rate)
-                              .arg(kMinSoundSourceRate)
-                              .arg(kMaxSoundSourceRate));
+    if (const int rate = st->codecpar->sample_rate; rate > 0 && !rateAllowed(rate))
+        return unexpected(rateRefused(rate));
     g.codec = avcodec_alloc_context3(decoder);
     if (!g.codec || avcodec_parameters_to_context(g.codec, st->codecpar) < 0 ||
         avcodec_open2(g.codec, decoder, nullptr) < 0)
         return unexpected(notSound());
     if (g.codec->sample_rate <= 0 || g.codec->ch_layout.nb_channels <= 0)
         return unexpected(notSound());
-    if (g.codec->sample_rate < kMinSoundSourceRate || g.codec->sample_rate > kMaxSoundSourceRate)
-        return unexpected(SoundText::tr("Its sample rate, %1 Hz, is outside the %2 to %3 Hz "
-                                        "Finbook plays (real recordings use 8,000 to 192,000).")
-                              .arg(g.codec->sample_rate)
-                              .arg(kMinSoundSourceRate)
-                              .arg(kMaxSoundSourceRate));
+    if (!rateAllowed(g.codec->sample_rate))
+        return unexpected(rateRefused(g.codec->sample_rate));
     if (g.codec->ch_layout.nb_channels > kMaxSoundSourceChannels)
         return unexpected(SoundText::tr("It has %1 channels; Finbook plays at most %2.")
                               .arg(g.codec->ch_layout.nb_channels)
