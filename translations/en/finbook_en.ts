@@ -30,6 +30,14 @@
             <numerusform>%n objects of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../../model/src/export/exporter.cpp" line="229"/>
+        <source>%n more sound clip(s) are left out too.</source>
+        <translation>
+            <numerusform>%n more sound clip is left out too.</numerusform>
+            <numerusform>%n more sound clips are left out too.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>FinbookFile</name>
