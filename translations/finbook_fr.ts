@@ -4605,74 +4605,82 @@
 <context>
     <name>finbook::ui::SoundController</name>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="40"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
         <source>Import Soun&amp;d...</source>
         <translation>Impor&amp;ter un son...</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="44"/>
         <source>Add a sound file to the soundtrack, starting at the current frame</source>
         <translation>Ajouter un fichier son à la bande son, à partir de l&apos;image actuelle</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="45"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="47"/>
         <source>Import Sound</source>
         <translation>Importer un son</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="46"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="48"/>
         <source>Sound files (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;All files (*)</source>
         <translation>Fichiers son (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="57"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="74"/>
         <source>The sound &quot;%1&quot; cannot be played: %2</source>
         <translation>Le son « %1 » ne peut pas être lu : %2</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/sound/sound_controller.cpp" line="77"/>
+        <source>%n sound(s) cannot be played; &quot;%1&quot;: %2</source>
+        <translation>
+            <numerusform>%n son ne peut pas être lu ; « %1 » : %2</numerusform>
+            <numerusform>%n sons ne peuvent pas être lus ; « %1 » : %2</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="118"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="140"/>
         <source>Cannot Import Sound</source>
         <translation>Impossible d’importer le son</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
         <source>Cannot import &quot;%1&quot;: %2</source>
         <translation>Impossible d’importer « %1 » : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="81"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="103"/>
         <source>it is not a file.</source>
         <translation>ce n&apos;est pas un fichier.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="85"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="107"/>
         <source>it is larger than %1 MB.</source>
         <translation>il dépasse %1 Mo.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="94"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="116"/>
         <source>Reading &quot;%1&quot;…</source>
         <translation>Lecture de « %1 »…</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="119"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="141"/>
         <source>Cannot import &quot;%1&quot;: %2 Nothing was changed.</source>
         <translation>Impossible d’importer « %1 » : %2 Rien n’a été modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="132"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="134"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="154"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="156"/>
         <source>Imported &quot;%1&quot; (%2 s).</source>
         <translation>« %1 » importé (%2 s).</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Sound Volume</source>
         <translation>Volume du son</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Volume of &quot;%1&quot; (%):</source>
         <translation>Volume de « %1 » (%) :</translation>
     </message>

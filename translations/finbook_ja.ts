@@ -4587,74 +4587,81 @@
 <context>
     <name>finbook::ui::SoundController</name>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="40"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
         <source>Import Soun&amp;d...</source>
         <translation>サウンドをインポート(&amp;D)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="44"/>
         <source>Add a sound file to the soundtrack, starting at the current frame</source>
         <translation>現在のフレームから始まるサウンドファイルをサウンドトラックに追加します</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="45"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="47"/>
         <source>Import Sound</source>
         <translation>サウンドのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="46"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="48"/>
         <source>Sound files (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;All files (*)</source>
         <translation>サウンドファイル (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="57"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="74"/>
         <source>The sound &quot;%1&quot; cannot be played: %2</source>
         <translation>サウンド「%1」を再生できません: %2</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/sound/sound_controller.cpp" line="77"/>
+        <source>%n sound(s) cannot be played; &quot;%1&quot;: %2</source>
+        <translation>
+            <numerusform>%n 個のサウンドを再生できません。「%1」: %2</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="118"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="140"/>
         <source>Cannot Import Sound</source>
         <translation>サウンドをインポートできません</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
         <source>Cannot import &quot;%1&quot;: %2</source>
         <translation>「%1」をインポートできません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="81"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="103"/>
         <source>it is not a file.</source>
         <translation>ファイルではありません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="85"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="107"/>
         <source>it is larger than %1 MB.</source>
         <translation>%1 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="94"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="116"/>
         <source>Reading &quot;%1&quot;…</source>
         <translation>「%1」を読み込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="119"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="141"/>
         <source>Cannot import &quot;%1&quot;: %2 Nothing was changed.</source>
         <translation>「%1」をインポートできません: %2 何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="132"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="134"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="154"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="156"/>
         <source>Imported &quot;%1&quot; (%2 s).</source>
         <translation>「%1」をインポートしました(%2 秒)。</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Sound Volume</source>
         <translation>サウンドの音量</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Volume of &quot;%1&quot; (%):</source>
         <translation>「%1」の音量 (%):</translation>
     </message>

@@ -182,4 +182,15 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>finbook::ui::SoundController</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/sound/sound_controller.cpp" line="77"/>
+        <source>%n sound(s) cannot be played; &quot;%1&quot;: %2</source>
+        <translation>
+            <numerusform>%n sound cannot be played; &quot;%1&quot;: %2</numerusform>
+            <numerusform>%n sounds cannot be played; &quot;%1&quot;: %2</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>
