@@ -2178,7 +2178,7 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_svg.cpp" line="113"/>
-        <location filename="../model/src/reference/reference_svg.cpp" line="213"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="215"/>
         <source>It is not a valid SVG picture.</source>
         <translation>Es ist kein gültiges SVG-Bild.</translation>
     </message>
@@ -2188,37 +2188,37 @@
         <translation>Ihr SVG verwendet ein Element in sich selbst (eine Schleife von &lt;use&gt;).</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="184"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="210"/>
         <source>SVG pictures are drawn only where Finbook runs with its graphical application (their text needs its fonts).</source>
         <translation>SVG-Bilder werden nur gezeichnet, wo Finbook mit seiner grafischen Anwendung läuft (ihr Text braucht deren Schriften).</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="189"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="185"/>
         <source>The reference&apos;s SVG pictures took all the time Finbook spends drawing them.</source>
         <translation>Die SVG-Bilder der Referenz haben die ganze Zeit verbraucht, die Finbook für ihr Zeichnen aufwendet.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="193"/>
         <source>Its compressed SVG is damaged or larger than 16 MB.</source>
         <translation>Ihr komprimiertes SVG ist beschädigt oder größer als 16 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="201"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
         <source>Its SVG is larger than 16 MB.</source>
         <translation>Ihr SVG ist größer als 16 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="208"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="204"/>
         <source>Its SVG paints more than 100,000 elements (counting what &lt;use&gt; repeats), more than Finbook draws for a reference.</source>
         <translation>Ihr SVG zeichnet mehr als 100.000 Elemente (mitgezählt, was &lt;use&gt; wiederholt), mehr als Finbook für eine Referenz zeichnet.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="219"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="221"/>
         <source>Its SVG has no size.</source>
         <translation>Ihr SVG hat keine Größe.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="226"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="228"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="184"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="189"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="193"/>
@@ -2227,7 +2227,7 @@
         <translation>Zum Lesen reicht der Speicher nicht.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="255"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="257"/>
         <source>Its SVG takes too long to draw (more than %1 s), more than Finbook spends on a reference.</source>
         <translation>Ihr SVG braucht zu lange zum Zeichnen (mehr als %1 s), länger als Finbook für eine Referenz aufwendet.</translation>
     </message>

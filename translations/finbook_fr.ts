@@ -2178,7 +2178,7 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_svg.cpp" line="113"/>
-        <location filename="../model/src/reference/reference_svg.cpp" line="213"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="215"/>
         <source>It is not a valid SVG picture.</source>
         <translation>Ce n’est pas une image SVG valide.</translation>
     </message>
@@ -2188,37 +2188,37 @@
         <translation>Son SVG utilise un élément à l’intérieur de lui-même (une boucle de &lt;use&gt;).</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="184"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="210"/>
         <source>SVG pictures are drawn only where Finbook runs with its graphical application (their text needs its fonts).</source>
         <translation>Les images SVG ne sont dessinées que là où Finbook tourne avec son application graphique (leur texte a besoin de ses polices).</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="189"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="185"/>
         <source>The reference&apos;s SVG pictures took all the time Finbook spends drawing them.</source>
         <translation>Les images SVG de la référence ont pris tout le temps que Finbook consacre à les dessiner.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="193"/>
         <source>Its compressed SVG is damaged or larger than 16 MB.</source>
         <translation>Son SVG compressé est endommagé ou dépasse 16 Mo.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="201"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
         <source>Its SVG is larger than 16 MB.</source>
         <translation>Son SVG dépasse 16 Mo.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="208"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="204"/>
         <source>Its SVG paints more than 100,000 elements (counting what &lt;use&gt; repeats), more than Finbook draws for a reference.</source>
         <translation>Son SVG dessine plus de 100 000 éléments (en comptant ce que &lt;use&gt; répète), plus que Finbook n’en dessine pour une référence.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="219"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="221"/>
         <source>Its SVG has no size.</source>
         <translation>Son SVG n’a pas de taille.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="226"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="228"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="184"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="189"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="193"/>
@@ -2227,7 +2227,7 @@
         <translation>Il n’y a pas assez de mémoire pour la lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="255"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="257"/>
         <source>Its SVG takes too long to draw (more than %1 s), more than Finbook spends on a reference.</source>
         <translation>Son SVG est trop long à dessiner (plus de %1 s), plus que Finbook n’y consacre pour une référence.</translation>
     </message>

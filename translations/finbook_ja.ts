@@ -2169,7 +2169,7 @@
     </message>
     <message>
         <location filename="../model/src/reference/reference_svg.cpp" line="113"/>
-        <location filename="../model/src/reference/reference_svg.cpp" line="213"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="215"/>
         <source>It is not a valid SVG picture.</source>
         <translation>有効な SVG 画像ではありません。</translation>
     </message>
@@ -2179,37 +2179,37 @@
         <translation>この SVG は要素をそれ自身の中で使っています（&lt;use&gt; のループ）。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="184"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="210"/>
         <source>SVG pictures are drawn only where Finbook runs with its graphical application (their text needs its fonts).</source>
         <translation>SVG 画像は Finbook がグラフィカルアプリケーションとして動作しているときだけ描画されます（テキストにそのフォントが必要です）。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="189"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="185"/>
         <source>The reference&apos;s SVG pictures took all the time Finbook spends drawing them.</source>
         <translation>参照の SVG 画像が、Finbook がその描画に費やす時間をすべて使いました。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="193"/>
         <source>Its compressed SVG is damaged or larger than 16 MB.</source>
         <translation>圧縮された SVG が壊れているか、16 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="201"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
         <source>Its SVG is larger than 16 MB.</source>
         <translation>SVG が 16 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="208"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="204"/>
         <source>Its SVG paints more than 100,000 elements (counting what &lt;use&gt; repeats), more than Finbook draws for a reference.</source>
         <translation>この SVG は 100,000 を超える要素を描画します（&lt;use&gt; の繰り返しを含む）。Finbook が参照として描画する量を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="219"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="221"/>
         <source>Its SVG has no size.</source>
         <translation>SVG にサイズがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="226"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="228"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="184"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="189"/>
         <location filename="../model/src/reference/video_decoder.cpp" line="193"/>
@@ -2218,7 +2218,7 @@
         <translation>読み込むためのメモリが足りません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_svg.cpp" line="255"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="257"/>
         <source>Its SVG takes too long to draw (more than %1 s), more than Finbook spends on a reference.</source>
         <translation>この SVG は描画に時間がかかりすぎます（%1 秒超）。Finbook が参照に費やす時間を超えています。</translation>
     </message>

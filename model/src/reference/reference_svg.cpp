@@ -180,10 +180,6 @@ QImage renderSvg(const QByteArray &bytes, QString *error, double *budget)
             *error = why;
         return QImage();
     };
-    if (!qobject_cast<QGuiApplication *>(QCoreApplication::instance()))
-        return fail(QCoreApplication::translate(
-            "Reference", "SVG pictures are drawn only where Finbook runs with its "
-                         "graphical application (their text needs its fonts)."));
     const double limit = budget ? std::min(kMaxSvgRenderSeconds, *budget) : kMaxSvgRenderSeconds;
     if (limit <= 0.0)
         return fail(QCoreApplication::translate("Reference",
@@ -208,6 +204,12 @@ QImage renderSvg(const QByteArray &bytes, QString *error, double *budget)
         return fail(QCoreApplication::translate(
             "Reference", "Its SVG paints more than 100,000 elements (counting what <use> "
                          "repeats), more than Finbook draws for a reference."));
+    // Checked after the look through the XML, which needs no fonts (the fuzzers, on a
+    // QCoreApplication, reach it), and before Qt's renderer, which does.
+    if (!qobject_cast<QGuiApplication *>(QCoreApplication::instance()))
+        return fail(QCoreApplication::translate(
+            "Reference", "SVG pictures are drawn only where Finbook runs with its "
+                         "graphical application (their text needs its fonts)."));
     QSvgRenderer renderer;
     if (!renderer.load(xml) || !renderer.isValid())
         return fail(QCoreApplication::translate("Reference", "It is not a valid SVG picture."));
