@@ -127,6 +127,21 @@ bool isHeadlessCommand(const QStringList &arguments)
     return false;
 }
 
+bool headlessCommandRendersText(const QStringList &arguments)
+{
+    // The option words come before "--" (main.cpp puts them there); file names after it.
+    const qsizetype end = arguments.indexOf(QStringLiteral("--"));
+    const QStringList options = end < 0 ? arguments : arguments.mid(0, end);
+    return !options.isEmpty() && options.first() == QLatin1String("export") &&
+           options.contains(QStringLiteral("--include-reference"));
+}
+
+void quietQtMessages(QtMsgType type, const QMessageLogContext &, const QString &message)
+{
+    if (type == QtFatalMsg)
+        QTextStream(stderr) << model::printableText(message.simplified()) << Qt::endl;
+}
+
 QByteArray documentInfoJson(const QString &path, QString *error)
 {
     const QString openable = openablePath(path); // a name that is not UTF-8: native_names.h

@@ -4,6 +4,7 @@
 
 #include <QString>
 #include <QStringList>
+#include <QtGlobal>
 
 class QTextStream;
 
@@ -13,6 +14,15 @@ enum class ExitCode { Ok = 0, Failure = 1, BadInput = 2 };
 
 // True when the arguments ask for a headless subcommand (so no window system is needed).
 bool isHeadlessCommand(const QStringList &arguments);
+
+// True when the headless command may draw text (an export that includes the reference, which
+// may be an SVG with text): it then needs a QGuiApplication (on the offscreen platform).
+bool headlessCommandRendersText(const QStringList &arguments);
+
+// A Qt message handler for the headless commands: their contract is their own one line on
+// stderr, so Qt's warnings (a platform plugin's, fontconfig's) are dropped; fatal ones are
+// printed.
+void quietQtMessages(QtMsgType type, const QMessageLogContext &context, const QString &message);
 
 // Runs `info` or `export`. `arguments` are the positional arguments (options already parsed
 // away), starting with the command; `export` also takes its options here as "--name=value"

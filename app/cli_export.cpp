@@ -56,6 +56,10 @@ const OptionSpec kOptions[] = {
      QT_TRANSLATE_NOOP("CommandLine",
                        "export: paint the document's reference picture or video under the "
                        "drawing.")},
+    {"strict", nullptr,
+     QT_TRANSLATE_NOOP("CommandLine",
+                       "export: fail (exit code 2, nothing written) when a sound clip or the "
+                       "reference cannot be used, instead of leaving it out with a warning.")},
     {"overwrite", nullptr, QT_TRANSLATE_NOOP("CommandLine", "export: replace existing files.")},
     {"out-dir", "DIR", QT_TRANSLATE_NOOP("CommandLine", "export: write each FILE into DIR.")},
     {"max-frames", "N",
@@ -204,6 +208,7 @@ std::optional<QString> parseRequest(const QStringList &arguments, Request &r)
     r.options.onePerDrawing = p.isSet(QStringLiteral("one-per-drawing"));
     r.options.includeReference = p.isSet(QStringLiteral("include-reference"));
     r.options.overwrite = p.isSet(QStringLiteral("overwrite"));
+    r.options.strictMedia = p.isSet(QStringLiteral("strict"));
     if (r.options.transparent && r.options.background)
         return CommandLine::tr("--transparent and --background cannot be used together.");
     if (r.options.onePerDrawing && !model::exportsSequence(r.options.format))
@@ -320,7 +325,8 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
                         ExitCode(128 + interruptSignal()));
         const bool badInput = code == model::ExportErrorCode::BadOptions ||
                               code == model::ExportErrorCode::TargetExists ||
-                              code == model::ExportErrorCode::TooLarge;
+                              code == model::ExportErrorCode::TooLarge ||
+                              code == model::ExportErrorCode::MediaUnusable;
         QString message = native.shown(result.error().message);
         if (code == model::ExportErrorCode::TargetExists)
             message += QLatin1Char(' ') + CommandLine::tr("Use --overwrite to replace it.");
@@ -331,7 +337,7 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
     native.keep();
     printWrittenFiles(*result, options, source, native, out);
     if (!result->note.isEmpty()) // stdout lists the files only, for scripts
-        err << model::printableText(result->note) << Qt::endl;
+        err << model::printableText(result->note.simplified()) << Qt::endl;
     return int(ExitCode::Ok);
 }
 } // namespace

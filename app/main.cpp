@@ -159,9 +159,25 @@ int main(int argc, char **argv)
     if (finbook::app::isHeadlessCommand(options.positional)) {
         // Rendering strokes into a QImage needs no platform plugin; a QGuiApplication would
         // load one and could print its own warnings, breaking the one-line-on-stderr promise.
+        // A reference may be an SVG with text, though, and text needs the font database,
+        // which aborts the process without a QGuiApplication: an export that includes the
+        // reference gets one, on the offscreen platform (no display), with Qt's own
+        // messages kept off stderr.
+        QTextStream out(stdout), err(stderr);
+        if (finbook::app::headlessCommandRendersText(options.positional)) {
+            const QByteArray platform = qgetenv("QT_QPA_PLATFORM");
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+            qInstallMessageHandler(finbook::app::quietQtMessages);
+            QGuiApplication app(argc, argv);
+            if (platform.isNull())
+                qunsetenv("QT_QPA_PLATFORM");
+            else
+                qputenv("QT_QPA_PLATFORM", platform);
+            finbook::app::installTranslations(app, options.language);
+            return finbook::app::runHeadlessCommand(options.positional, out, err);
+        }
         QCoreApplication app(argc, argv);
         finbook::app::installTranslations(app, options.language);
-        QTextStream out(stdout), err(stderr);
         return finbook::app::runHeadlessCommand(options.positional, out, err);
     }
 

@@ -303,17 +303,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="146"/>
+        <location filename="../app/cli.cpp" line="161"/>
         <source>No command given; see finbook --help.</source>
         <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="150"/>
+        <location filename="../app/cli.cpp" line="165"/>
         <source>Usage: finbook info FILE</source>
         <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="162"/>
+        <location filename="../app/cli.cpp" line="177"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
@@ -413,112 +413,117 @@
         <translation>export: das Referenzbild oder -video des Dokuments unter die Zeichnung malen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="59"/>
+        <location filename="../app/cli_export.cpp" line="60"/>
+        <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
+        <translation>export: abbrechen (Exit-Code 2, nichts geschrieben), wenn ein Soundclip oder die Referenz nicht verwendet werden kann, statt sie mit einer Warnung wegzulassen.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="63"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="60"/>
+        <location filename="../app/cli_export.cpp" line="64"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="62"/>
+        <location filename="../app/cli_export.cpp" line="66"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="93"/>
+        <location filename="../app/cli_export.cpp" line="97"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="107"/>
+        <location filename="../app/cli_export.cpp" line="111"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame und --range können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="110"/>
+        <location filename="../app/cli_export.cpp" line="114"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame braucht eine Bildnummer ab 1, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="117"/>
+        <location filename="../app/cli_export.cpp" line="121"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="123"/>
+        <location filename="../app/cli_export.cpp" line="127"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="131"/>
+        <location filename="../app/cli_export.cpp" line="135"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="137"/>
+        <location filename="../app/cli_export.cpp" line="141"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="149"/>
+        <location filename="../app/cli_export.cpp" line="153"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="165"/>
+        <location filename="../app/cli_export.cpp" line="169"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="176"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html, .obj oder .glb enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="177"/>
+        <location filename="../app/cli_export.cpp" line="181"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="193"/>
+        <location filename="../app/cli_export.cpp" line="197"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="197"/>
+        <location filename="../app/cli_export.cpp" line="201"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="208"/>
+        <location filename="../app/cli_export.cpp" line="213"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="210"/>
+        <location filename="../app/cli_export.cpp" line="215"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="306"/>
+        <location filename="../app/cli_export.cpp" line="311"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="319"/>
+        <location filename="../app/cli_export.cpp" line="324"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Unterbrochen; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="326"/>
+        <location filename="../app/cli_export.cpp" line="332"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="328"/>
+        <location filename="../app/cli_export.cpp" line="334"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
@@ -700,7 +705,7 @@
         <translation>ihr Ordner kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="117"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="116"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg wurde beendet, ohne die Ausgabe als %1 zu schreiben; es wurde nichts exportiert.</translation>
     </message>
@@ -835,6 +840,19 @@
         <source>Choose where to export the animation to.</source>
         <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/exporter.cpp" line="229"/>
+        <source>%n more sound clip(s) are left out too.</source>
+        <translation>
+            <numerusform>%n weiterer Soundclip wird ebenfalls weggelassen.</numerusform>
+            <numerusform>%n weitere Soundclips werden ebenfalls weggelassen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="236"/>
+        <source>Nothing was exported.</source>
+        <translation>Es wurde nichts exportiert.</translation>
+    </message>
     <message>
         <location filename="../model/src/export/ffmpeg_arguments.cpp" line="42"/>
         <source>GIF</source>
@@ -920,6 +938,16 @@
         <location filename="../model/src/export/export_glb.cpp" line="53"/>
         <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
         <translation>Einzelbild %1 ergibt ein 3D-Modell, das größer ist, als eine glTF-Datei fassen kann (4 GiB); exportieren Sie es stattdessen als OBJ.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sound.cpp" line="76"/>
+        <source>The sound &quot;%1&quot; is left out: %2</source>
+        <translation>Der Sound „%1“ wird weggelassen: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_export.cpp" line="18"/>
+        <source>The reference &quot;%1&quot; is left out: %2</source>
+        <translation>Die Referenz „%1“ wird weggelassen: %2</translation>
     </message>
 </context>
 <context>
@@ -2118,71 +2146,124 @@
         <translation>Referenz entfernen</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="33"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="34"/>
         <source>“%1” cannot be used as a reference: %2</source>
         <translation>„%1“ kann nicht als Referenz verwendet werden: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="43"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="44"/>
         <source>It cannot be read (is it there, and may Finbook read it?).</source>
         <translation>Sie lässt sich nicht lesen (gibt es sie, und darf Finbook sie lesen?).</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="66"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="67"/>
         <source>It is larger than %1 MB.</source>
         <translation>Sie ist größer als %1 MB.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="52"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="53"/>
         <source>It is empty.</source>
         <translation>Sie ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="90"/>
-        <location filename="../model/src/reference/reference_media.cpp" line="114"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="111"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="135"/>
         <source>The file is empty.</source>
         <translation>Die Datei ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="50"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="69"/>
         <source>Its picture cannot be decoded.</source>
         <translation>Ihr Bild lässt sich nicht dekodieren.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="178"/>
-        <location filename="../model/src/reference/video_decoder.cpp" line="183"/>
-        <location filename="../model/src/reference/video_decoder.cpp" line="187"/>
-        <location filename="../model/src/reference/video_decoder.cpp" line="211"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="85"/>
+        <source>Its SVG declares entities, which Finbook does not expand.</source>
+        <translation>Ihr SVG deklariert Entitäten, die Finbook nicht auflöst.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="113"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="215"/>
+        <source>It is not a valid SVG picture.</source>
+        <translation>Es ist kein gültiges SVG-Bild.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="152"/>
+        <source>Its SVG uses an element inside itself (a loop of &lt;use&gt;).</source>
+        <translation>Ihr SVG verwendet ein Element in sich selbst (eine Schleife von &lt;use&gt;).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="210"/>
+        <source>SVG pictures are drawn only where Finbook runs with its graphical application (their text needs its fonts).</source>
+        <translation>SVG-Bilder werden nur gezeichnet, wo Finbook mit seiner grafischen Anwendung läuft (ihr Text braucht deren Schriften).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="185"/>
+        <source>The reference&apos;s SVG pictures took all the time Finbook spends drawing them.</source>
+        <translation>Die SVG-Bilder der Referenz haben die ganze Zeit verbraucht, die Finbook für ihr Zeichnen aufwendet.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="193"/>
+        <source>Its compressed SVG is damaged or larger than 16 MB.</source>
+        <translation>Ihr komprimiertes SVG ist beschädigt oder größer als 16 MB.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
+        <source>Its SVG is larger than 16 MB.</source>
+        <translation>Ihr SVG ist größer als 16 MB.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="204"/>
+        <source>Its SVG paints more than 100,000 elements (counting what &lt;use&gt; repeats), more than Finbook draws for a reference.</source>
+        <translation>Ihr SVG zeichnet mehr als 100.000 Elemente (mitgezählt, was &lt;use&gt; wiederholt), mehr als Finbook für eine Referenz zeichnet.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="221"/>
+        <source>Its SVG has no size.</source>
+        <translation>Ihr SVG hat keine Größe.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="228"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="184"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="189"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="193"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
         <source>There is not enough memory to read it.</source>
         <translation>Zum Lesen reicht der Speicher nicht.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="191"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="257"/>
+        <source>Its SVG takes too long to draw (more than %1 s), more than Finbook spends on a reference.</source>
+        <translation>Ihr SVG braucht zu lange zum Zeichnen (mehr als %1 s), länger als Finbook für eine Referenz aufwendet.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="197"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="201"/>
         <source>It is not a picture or a video Finbook can read, or it is damaged.</source>
         <translation>Es ist kein Bild oder Video, das Finbook lesen kann, oder es ist beschädigt.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="194"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="204"/>
         <source>It is damaged: its streams cannot be read.</source>
         <translation>Es ist beschädigt: seine Datenströme lassen sich nicht lesen.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="198"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="208"/>
         <source>It holds no picture Finbook can decode.</source>
         <translation>Es enthält kein Bild, das Finbook dekodieren kann.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="203"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="213"/>
         <source>Its pictures are empty or larger than 16384 pixels a side.</source>
         <translation>Seine Bilder sind leer oder größer als 16384 Pixel je Seite.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="214"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="231"/>
         <source>Its pictures cannot be decoded.</source>
         <translation>Seine Bilder lassen sich nicht dekodieren.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="238"/>
         <source>Its first picture cannot be decoded.</source>
         <translation>Sein erstes Bild lässt sich nicht dekodieren.</translation>
     </message>
@@ -2237,40 +2318,60 @@
         <translation>Die Datei ist kein Ton, den Finbook lesen kann (WAV, FLAC, MP3, Ogg, Opus, AAC oder M4A), oder sie ist beschädigt.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="137"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="211"/>
+        <source>It holds more sound than a file of %1 KB can hold when it is real sound (more than %2 min; hostile or damaged files announce hours of sound in a few kilobytes). Convert it to WAV, FLAC or MP3 and import it again.</source>
+        <translation>Sie enthält mehr Sound, als eine Datei von %1 KB mit echtem Sound enthalten kann (mehr als %2 min; bösartige oder beschädigte Dateien kündigen in wenigen Kilobyte Stunden an). Wandeln Sie sie in WAV, FLAC oder MP3 um und importieren Sie sie erneut.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="240"/>
+        <source>With the soundtrack&apos;s other clips it would make more than %1 min of sound, the most Finbook decodes from sound files of this size.</source>
+        <translation>Zusammen mit den anderen Clips der Tonspur ergäbe das mehr als %1 min Sound, das Meiste, was Finbook aus Sounddateien dieser Größe dekodiert.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="251"/>
         <source>The file is empty.</source>
         <translation>Die Datei ist leer.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="139"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="253"/>
         <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
         <translation>Die Datei ist unvollständig: ihre Tondaten brechen ab. Importieren Sie die vollständige Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="147"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="151"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="155"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="181"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="261"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="265"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="269"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="305"/>
         <source>There is not enough memory to read the sound.</source>
         <translation>Zum Lesen des Tons ist nicht genug Speicher vorhanden.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="165"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="279"/>
         <source>The file holds no sound Finbook can play.</source>
         <translation>Die Datei enthält keinen Ton, den Finbook abspielen kann.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="214"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="197"/>
+        <source>Its sample rate, %1 Hz, is outside the %2 to %3 Hz Finbook plays (real recordings use 8,000 to 192,000).</source>
+        <translation>Ihre Abtastrate von %1 Hz liegt außerhalb der %2 bis %3 Hz, die Finbook abspielt (echte Aufnahmen nutzen 8.000 bis 192.000).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="294"/>
+        <source>It has %1 channels; Finbook plays at most %2.</source>
+        <translation>Sie hat %1 Kanäle; Finbook spielt höchstens %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="353"/>
         <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
         <translation>Der Ton ist länger als %1 Minuten, die längste Dauer, die Finbook abspielt.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="218"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="362"/>
         <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
         <translation>Die Datei enthält keinen Ton, den Finbook abspielen kann (es ließ sich kein Ton daraus dekodieren).</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="369"/>
         <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
         <translation>Die Datei ist unvollständig: sie kündigt %1 s Ton an, enthält aber nur %2 s. Importieren Sie die vollständige Datei.</translation>
     </message>
@@ -3351,28 +3452,33 @@
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <source>The reference &quot;%1&quot; cannot be shown: %2</source>
+        <translation>Die Referenz „%1“ kann nicht angezeigt werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="242"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window.cpp" line="253"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window.cpp" line="254"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window.cpp" line="259"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window.cpp" line="260"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -4519,74 +4625,82 @@
 <context>
     <name>finbook::ui::SoundController</name>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="40"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
         <source>Import Soun&amp;d...</source>
         <translation>&amp;Ton importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="44"/>
         <source>Add a sound file to the soundtrack, starting at the current frame</source>
         <translation>Eine Tondatei zur Tonspur hinzufügen, beginnend beim aktuellen Bild</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="45"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="47"/>
         <source>Import Sound</source>
         <translation>Ton importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="46"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="48"/>
         <source>Sound files (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;All files (*)</source>
         <translation>Tondateien (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="57"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="74"/>
         <source>The sound &quot;%1&quot; cannot be played: %2</source>
         <translation>Der Ton „%1“ kann nicht abgespielt werden: %2</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/sound/sound_controller.cpp" line="77"/>
+        <source>%n sound(s) cannot be played; &quot;%1&quot;: %2</source>
+        <translation>
+            <numerusform>%n Sound kann nicht abgespielt werden; „%1“: %2</numerusform>
+            <numerusform>%n Sounds können nicht abgespielt werden; „%1“: %2</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="118"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="140"/>
         <source>Cannot Import Sound</source>
         <translation>Ton kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
         <source>Cannot import &quot;%1&quot;: %2</source>
         <translation>„%1“ kann nicht importiert werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="81"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="103"/>
         <source>it is not a file.</source>
         <translation>es ist keine Datei.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="85"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="107"/>
         <source>it is larger than %1 MB.</source>
         <translation>sie ist größer als %1 MB.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="94"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="116"/>
         <source>Reading &quot;%1&quot;…</source>
         <translation>„%1“ wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="119"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="141"/>
         <source>Cannot import &quot;%1&quot;: %2 Nothing was changed.</source>
         <translation>„%1“ kann nicht importiert werden: %2 Es wurde nichts geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="132"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="134"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="154"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="156"/>
         <source>Imported &quot;%1&quot; (%2 s).</source>
         <translation>„%1“ importiert (%2 s).</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Sound Volume</source>
         <translation>Lautstärke</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Volume of &quot;%1&quot; (%):</source>
         <translation>Lautstärke von „%1“ (%):</translation>
     </message>

@@ -303,17 +303,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="146"/>
+        <location filename="../app/cli.cpp" line="161"/>
         <source>No command given; see finbook --help.</source>
         <translation>Aucune commande indiquée ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="150"/>
+        <location filename="../app/cli.cpp" line="165"/>
         <source>Usage: finbook info FILE</source>
         <translation>Utilisation : finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="162"/>
+        <location filename="../app/cli.cpp" line="177"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
@@ -413,112 +413,117 @@
         <translation>export : peindre l’image ou la vidéo de référence du document sous le dessin.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="59"/>
+        <location filename="../app/cli_export.cpp" line="60"/>
+        <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
+        <translation>export : échouer (code de sortie 2, rien n’est écrit) quand un clip sonore ou la référence ne peut pas être utilisé, au lieu de l’omettre avec un avertissement.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="63"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="60"/>
+        <location filename="../app/cli_export.cpp" line="64"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="62"/>
+        <location filename="../app/cli_export.cpp" line="66"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="93"/>
+        <location filename="../app/cli_export.cpp" line="97"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="107"/>
+        <location filename="../app/cli_export.cpp" line="111"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame et --range ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="110"/>
+        <location filename="../app/cli_export.cpp" line="114"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame attend un numéro d&apos;image à partir de 1, pas « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="117"/>
+        <location filename="../app/cli_export.cpp" line="121"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="123"/>
+        <location filename="../app/cli_export.cpp" line="127"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="131"/>
+        <location filename="../app/cli_export.cpp" line="135"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="137"/>
+        <location filename="../app/cli_export.cpp" line="141"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="149"/>
+        <location filename="../app/cli_export.cpp" line="153"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="165"/>
+        <location filename="../app/cli_export.cpp" line="169"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="176"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html, .obj ou .glb, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="177"/>
+        <location filename="../app/cli_export.cpp" line="181"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="193"/>
+        <location filename="../app/cli_export.cpp" line="197"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="197"/>
+        <location filename="../app/cli_export.cpp" line="201"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="208"/>
+        <location filename="../app/cli_export.cpp" line="213"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="210"/>
+        <location filename="../app/cli_export.cpp" line="215"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="306"/>
+        <location filename="../app/cli_export.cpp" line="311"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="319"/>
+        <location filename="../app/cli_export.cpp" line="324"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="326"/>
+        <location filename="../app/cli_export.cpp" line="332"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="328"/>
+        <location filename="../app/cli_export.cpp" line="334"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -700,7 +705,7 @@
         <translation>son dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="117"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="116"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg s&apos;est terminé sans écrire le fichier %1&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
@@ -835,6 +840,19 @@
         <source>Choose where to export the animation to.</source>
         <translation>Choisissez où exporter l&apos;animation.</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/exporter.cpp" line="229"/>
+        <source>%n more sound clip(s) are left out too.</source>
+        <translation>
+            <numerusform>%n autre clip sonore est aussi omis.</numerusform>
+            <numerusform>%n autres clips sonores sont aussi omis.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="236"/>
+        <source>Nothing was exported.</source>
+        <translation>Rien n’a été exporté.</translation>
+    </message>
     <message>
         <location filename="../model/src/export/ffmpeg_arguments.cpp" line="42"/>
         <source>GIF</source>
@@ -920,6 +938,16 @@
         <location filename="../model/src/export/export_glb.cpp" line="53"/>
         <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
         <translation>L&apos;image %1 donne un modèle 3D plus grand que ce qu&apos;un fichier glTF peut contenir (4 Gio) ; exportez-la plutôt en OBJ.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sound.cpp" line="76"/>
+        <source>The sound &quot;%1&quot; is left out: %2</source>
+        <translation>Le son « %1 » est omis : %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_export.cpp" line="18"/>
+        <source>The reference &quot;%1&quot; is left out: %2</source>
+        <translation>La référence « %1 » est omise : %2</translation>
     </message>
 </context>
 <context>
@@ -2118,71 +2146,124 @@
         <translation>Retirer la référence</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="33"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="34"/>
         <source>“%1” cannot be used as a reference: %2</source>
         <translation>« %1 » ne peut pas servir de référence : %2</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="43"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="44"/>
         <source>It cannot be read (is it there, and may Finbook read it?).</source>
         <translation>Il ne peut pas être lu (existe-t-il, et Finbook a-t-il le droit de le lire ?).</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="66"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="67"/>
         <source>It is larger than %1 MB.</source>
         <translation>Il dépasse %1 Mo.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="52"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="53"/>
         <source>It is empty.</source>
         <translation>Il est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="90"/>
-        <location filename="../model/src/reference/reference_media.cpp" line="114"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="111"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="135"/>
         <source>The file is empty.</source>
         <translation>Le fichier est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="50"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="69"/>
         <source>Its picture cannot be decoded.</source>
         <translation>Son image ne peut pas être décodée.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="178"/>
-        <location filename="../model/src/reference/video_decoder.cpp" line="183"/>
-        <location filename="../model/src/reference/video_decoder.cpp" line="187"/>
-        <location filename="../model/src/reference/video_decoder.cpp" line="211"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="85"/>
+        <source>Its SVG declares entities, which Finbook does not expand.</source>
+        <translation>Son SVG déclare des entités, que Finbook ne développe pas.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="113"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="215"/>
+        <source>It is not a valid SVG picture.</source>
+        <translation>Ce n’est pas une image SVG valide.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="152"/>
+        <source>Its SVG uses an element inside itself (a loop of &lt;use&gt;).</source>
+        <translation>Son SVG utilise un élément à l’intérieur de lui-même (une boucle de &lt;use&gt;).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="210"/>
+        <source>SVG pictures are drawn only where Finbook runs with its graphical application (their text needs its fonts).</source>
+        <translation>Les images SVG ne sont dessinées que là où Finbook tourne avec son application graphique (leur texte a besoin de ses polices).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="185"/>
+        <source>The reference&apos;s SVG pictures took all the time Finbook spends drawing them.</source>
+        <translation>Les images SVG de la référence ont pris tout le temps que Finbook consacre à les dessiner.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="193"/>
+        <source>Its compressed SVG is damaged or larger than 16 MB.</source>
+        <translation>Son SVG compressé est endommagé ou dépasse 16 Mo.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
+        <source>Its SVG is larger than 16 MB.</source>
+        <translation>Son SVG dépasse 16 Mo.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="204"/>
+        <source>Its SVG paints more than 100,000 elements (counting what &lt;use&gt; repeats), more than Finbook draws for a reference.</source>
+        <translation>Son SVG dessine plus de 100 000 éléments (en comptant ce que &lt;use&gt; répète), plus que Finbook n’en dessine pour une référence.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="221"/>
+        <source>Its SVG has no size.</source>
+        <translation>Son SVG n’a pas de taille.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="228"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="184"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="189"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="193"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
         <source>There is not enough memory to read it.</source>
         <translation>Il n’y a pas assez de mémoire pour la lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="191"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="257"/>
+        <source>Its SVG takes too long to draw (more than %1 s), more than Finbook spends on a reference.</source>
+        <translation>Son SVG est trop long à dessiner (plus de %1 s), plus que Finbook n’y consacre pour une référence.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="197"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="201"/>
         <source>It is not a picture or a video Finbook can read, or it is damaged.</source>
         <translation>Ce n’est pas une image ou une vidéo que Finbook sait lire, ou elle est endommagée.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="194"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="204"/>
         <source>It is damaged: its streams cannot be read.</source>
         <translation>Elle est endommagée : ses flux ne peuvent pas être lus.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="198"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="208"/>
         <source>It holds no picture Finbook can decode.</source>
         <translation>Elle ne contient aucune image que Finbook sait décoder.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="203"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="213"/>
         <source>Its pictures are empty or larger than 16384 pixels a side.</source>
         <translation>Ses images sont vides ou font plus de 16384 pixels de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="214"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="231"/>
         <source>Its pictures cannot be decoded.</source>
         <translation>Ses images ne peuvent pas être décodées.</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="238"/>
         <source>Its first picture cannot be decoded.</source>
         <translation>Sa première image ne peut pas être décodée.</translation>
     </message>
@@ -2237,40 +2318,60 @@
         <translation>Le fichier n&apos;est pas un son que Finbook sait lire (WAV, FLAC, MP3, Ogg, Opus, AAC ou M4A), ou il est endommagé.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="137"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="211"/>
+        <source>It holds more sound than a file of %1 KB can hold when it is real sound (more than %2 min; hostile or damaged files announce hours of sound in a few kilobytes). Convert it to WAV, FLAC or MP3 and import it again.</source>
+        <translation>Il contient plus de son qu’un fichier de %1 Ko ne peut en contenir quand c’est du vrai son (plus de %2 min ; des fichiers malveillants ou endommagés annoncent des heures de son en quelques kilo-octets). Convertissez-le en WAV, FLAC ou MP3 et importez-le à nouveau.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="240"/>
+        <source>With the soundtrack&apos;s other clips it would make more than %1 min of sound, the most Finbook decodes from sound files of this size.</source>
+        <translation>Avec les autres clips de la bande son, cela ferait plus de %1 min de son, le maximum que Finbook décode à partir de fichiers sonores de cette taille.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="251"/>
         <source>The file is empty.</source>
         <translation>Le fichier est vide.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="139"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="253"/>
         <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
         <translation>Le fichier est incomplet : ses données sonores sont tronquées. Importez le fichier complet.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="147"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="151"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="155"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="181"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="261"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="265"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="269"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="305"/>
         <source>There is not enough memory to read the sound.</source>
         <translation>La mémoire est insuffisante pour lire le son.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="165"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="279"/>
         <source>The file holds no sound Finbook can play.</source>
         <translation>Le fichier ne contient aucun son que Finbook sait lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="214"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="197"/>
+        <source>Its sample rate, %1 Hz, is outside the %2 to %3 Hz Finbook plays (real recordings use 8,000 to 192,000).</source>
+        <translation>Sa fréquence d’échantillonnage, %1 Hz, est hors de la plage de %2 à %3 Hz que Finbook lit (les vrais enregistrements utilisent 8 000 à 192 000).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="294"/>
+        <source>It has %1 channels; Finbook plays at most %2.</source>
+        <translation>Il a %1 canaux ; Finbook en lit au plus %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="353"/>
         <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
         <translation>Le son dure plus de %1 minutes, la plus longue durée que Finbook lit.</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="218"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="362"/>
         <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
         <translation>Le fichier ne contient aucun son que Finbook sait lire (aucun son n&apos;a pu en être décodé).</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="369"/>
         <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
         <translation>Le fichier est incomplet : il annonce %1 s de son mais n’en contient que %2 s. Importez le fichier complet.</translation>
     </message>
@@ -3351,28 +3452,33 @@
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <source>The reference &quot;%1&quot; cannot be shown: %2</source>
+        <translation>La référence « %1 » ne peut pas être affichée : %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="242"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window.cpp" line="253"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window.cpp" line="254"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window.cpp" line="259"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window.cpp" line="260"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -4519,74 +4625,82 @@
 <context>
     <name>finbook::ui::SoundController</name>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="40"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
         <source>Import Soun&amp;d...</source>
         <translation>Impor&amp;ter un son...</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="44"/>
         <source>Add a sound file to the soundtrack, starting at the current frame</source>
         <translation>Ajouter un fichier son à la bande son, à partir de l&apos;image actuelle</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="45"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="47"/>
         <source>Import Sound</source>
         <translation>Importer un son</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="46"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="48"/>
         <source>Sound files (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;All files (*)</source>
         <translation>Fichiers son (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="57"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="74"/>
         <source>The sound &quot;%1&quot; cannot be played: %2</source>
         <translation>Le son « %1 » ne peut pas être lu : %2</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/sound/sound_controller.cpp" line="77"/>
+        <source>%n sound(s) cannot be played; &quot;%1&quot;: %2</source>
+        <translation>
+            <numerusform>%n son ne peut pas être lu ; « %1 » : %2</numerusform>
+            <numerusform>%n sons ne peuvent pas être lus ; « %1 » : %2</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="118"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="140"/>
         <source>Cannot Import Sound</source>
         <translation>Impossible d’importer le son</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
         <source>Cannot import &quot;%1&quot;: %2</source>
         <translation>Impossible d’importer « %1 » : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="81"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="103"/>
         <source>it is not a file.</source>
         <translation>ce n&apos;est pas un fichier.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="85"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="107"/>
         <source>it is larger than %1 MB.</source>
         <translation>il dépasse %1 Mo.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="94"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="116"/>
         <source>Reading &quot;%1&quot;…</source>
         <translation>Lecture de « %1 »…</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="119"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="141"/>
         <source>Cannot import &quot;%1&quot;: %2 Nothing was changed.</source>
         <translation>Impossible d’importer « %1 » : %2 Rien n’a été modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="132"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="134"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="154"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="156"/>
         <source>Imported &quot;%1&quot; (%2 s).</source>
         <translation>« %1 » importé (%2 s).</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Sound Volume</source>
         <translation>Volume du son</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Volume of &quot;%1&quot; (%):</source>
         <translation>Volume de « %1 » (%) :</translation>
     </message>

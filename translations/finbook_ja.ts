@@ -303,17 +303,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="146"/>
+        <location filename="../app/cli.cpp" line="161"/>
         <source>No command given; see finbook --help.</source>
         <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="150"/>
+        <location filename="../app/cli.cpp" line="165"/>
         <source>Usage: finbook info FILE</source>
         <translation>使い方: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="162"/>
+        <location filename="../app/cli.cpp" line="177"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
@@ -413,112 +413,117 @@
         <translation>export: 文書の参照画像または参照動画を絵の下に描きます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="59"/>
+        <location filename="../app/cli_export.cpp" line="60"/>
+        <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
+        <translation>export: サウンドクリップまたは参照画像を使用できないとき、警告して省く代わりに失敗します（終了コード 2、何も書き出しません）。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="63"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="60"/>
+        <location filename="../app/cli_export.cpp" line="64"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="62"/>
+        <location filename="../app/cli_export.cpp" line="66"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="93"/>
+        <location filename="../app/cli_export.cpp" line="97"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="107"/>
+        <location filename="../app/cli_export.cpp" line="111"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame と --range は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="110"/>
+        <location filename="../app/cli_export.cpp" line="114"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame には 1 以上のフレーム番号を指定してください (「%1」ではなく)。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="117"/>
+        <location filename="../app/cli_export.cpp" line="121"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="123"/>
+        <location filename="../app/cli_export.cpp" line="127"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="131"/>
+        <location filename="../app/cli_export.cpp" line="135"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="137"/>
+        <location filename="../app/cli_export.cpp" line="141"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="149"/>
+        <location filename="../app/cli_export.cpp" line="153"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj、glb のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="165"/>
+        <location filename="../app/cli_export.cpp" line="169"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="176"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj、.glb にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="177"/>
+        <location filename="../app/cli_export.cpp" line="181"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="193"/>
+        <location filename="../app/cli_export.cpp" line="197"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="197"/>
+        <location filename="../app/cli_export.cpp" line="201"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="208"/>
+        <location filename="../app/cli_export.cpp" line="213"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="210"/>
+        <location filename="../app/cli_export.cpp" line="215"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="306"/>
+        <location filename="../app/cli_export.cpp" line="311"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="319"/>
+        <location filename="../app/cli_export.cpp" line="324"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="326"/>
+        <location filename="../app/cli_export.cpp" line="332"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="328"/>
+        <location filename="../app/cli_export.cpp" line="334"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -699,7 +704,7 @@
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="117"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="116"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
     </message>
@@ -834,6 +839,18 @@
         <source>Choose where to export the animation to.</source>
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/exporter.cpp" line="229"/>
+        <source>%n more sound clip(s) are left out too.</source>
+        <translation>
+            <numerusform>ほかに %n 個のサウンドクリップも省かれます。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/exporter.cpp" line="236"/>
+        <source>Nothing was exported.</source>
+        <translation>何も書き出されませんでした。</translation>
+    </message>
     <message>
         <location filename="../model/src/export/ffmpeg_arguments.cpp" line="42"/>
         <source>GIF</source>
@@ -917,6 +934,16 @@
         <location filename="../model/src/export/export_glb.cpp" line="53"/>
         <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
         <translation>フレーム %1 の 3D モデルは glTF ファイルに収まる大きさ (4 GiB) を超えます。代わりに OBJ で書き出してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_sound.cpp" line="76"/>
+        <source>The sound &quot;%1&quot; is left out: %2</source>
+        <translation>サウンド「%1」は省かれます: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_export.cpp" line="18"/>
+        <source>The reference &quot;%1&quot; is left out: %2</source>
+        <translation>参照「%1」は省かれます: %2</translation>
     </message>
 </context>
 <context>
@@ -2110,71 +2137,124 @@
         <translation>参照を削除</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="33"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="34"/>
         <source>“%1” cannot be used as a reference: %2</source>
         <translation>「%1」は参照として使えません: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="43"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="44"/>
         <source>It cannot be read (is it there, and may Finbook read it?).</source>
         <translation>読み込めません (ファイルは存在し、Finbook に読み取り権限がありますか?)。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="66"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="67"/>
         <source>It is larger than %1 MB.</source>
         <translation>%1 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_import.cpp" line="52"/>
+        <location filename="../model/src/reference/reference_import.cpp" line="53"/>
         <source>It is empty.</source>
         <translation>空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="90"/>
-        <location filename="../model/src/reference/reference_media.cpp" line="114"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="111"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="135"/>
         <source>The file is empty.</source>
         <translation>ファイルが空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/reference_media.cpp" line="50"/>
+        <location filename="../model/src/reference/reference_media.cpp" line="69"/>
         <source>Its picture cannot be decoded.</source>
         <translation>画像をデコードできません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="178"/>
-        <location filename="../model/src/reference/video_decoder.cpp" line="183"/>
-        <location filename="../model/src/reference/video_decoder.cpp" line="187"/>
-        <location filename="../model/src/reference/video_decoder.cpp" line="211"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="85"/>
+        <source>Its SVG declares entities, which Finbook does not expand.</source>
+        <translation>この SVG はエンティティを宣言していますが、Finbook は展開しません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="113"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="215"/>
+        <source>It is not a valid SVG picture.</source>
+        <translation>有効な SVG 画像ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="152"/>
+        <source>Its SVG uses an element inside itself (a loop of &lt;use&gt;).</source>
+        <translation>この SVG は要素をそれ自身の中で使っています（&lt;use&gt; のループ）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="210"/>
+        <source>SVG pictures are drawn only where Finbook runs with its graphical application (their text needs its fonts).</source>
+        <translation>SVG 画像は Finbook がグラフィカルアプリケーションとして動作しているときだけ描画されます（テキストにそのフォントが必要です）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="185"/>
+        <source>The reference&apos;s SVG pictures took all the time Finbook spends drawing them.</source>
+        <translation>参照の SVG 画像が、Finbook がその描画に費やす時間をすべて使いました。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="193"/>
+        <source>Its compressed SVG is damaged or larger than 16 MB.</source>
+        <translation>圧縮された SVG が壊れているか、16 MB を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="197"/>
+        <source>Its SVG is larger than 16 MB.</source>
+        <translation>SVG が 16 MB を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="204"/>
+        <source>Its SVG paints more than 100,000 elements (counting what &lt;use&gt; repeats), more than Finbook draws for a reference.</source>
+        <translation>この SVG は 100,000 を超える要素を描画します（&lt;use&gt; の繰り返しを含む）。Finbook が参照として描画する量を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="221"/>
+        <source>Its SVG has no size.</source>
+        <translation>SVG にサイズがありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/reference_svg.cpp" line="228"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="184"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="189"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="193"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
         <source>There is not enough memory to read it.</source>
         <translation>読み込むためのメモリが足りません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="191"/>
+        <location filename="../model/src/reference/reference_svg.cpp" line="257"/>
+        <source>Its SVG takes too long to draw (more than %1 s), more than Finbook spends on a reference.</source>
+        <translation>この SVG は描画に時間がかかりすぎます（%1 秒超）。Finbook が参照に費やす時間を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/reference/video_decoder.cpp" line="197"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="201"/>
         <source>It is not a picture or a video Finbook can read, or it is damaged.</source>
         <translation>Finbook が読める画像や動画ではないか、壊れています。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="194"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="204"/>
         <source>It is damaged: its streams cannot be read.</source>
         <translation>壊れています: ストリームを読み込めません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="198"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="208"/>
         <source>It holds no picture Finbook can decode.</source>
         <translation>Finbook がデコードできる画像が含まれていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="203"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="213"/>
         <source>Its pictures are empty or larger than 16384 pixels a side.</source>
         <translation>画像が空か、一辺が 16384 ピクセルを超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="214"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="231"/>
         <source>Its pictures cannot be decoded.</source>
         <translation>画像をデコードできません。</translation>
     </message>
     <message>
-        <location filename="../model/src/reference/video_decoder.cpp" line="221"/>
+        <location filename="../model/src/reference/video_decoder.cpp" line="238"/>
         <source>Its first picture cannot be decoded.</source>
         <translation>最初の画像をデコードできません。</translation>
     </message>
@@ -2228,40 +2308,60 @@
         <translation>このファイルは Finbook が読めるサウンド(WAV、FLAC、MP3、Ogg、Opus、AAC、M4A)ではないか、破損しています。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="137"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="211"/>
+        <source>It holds more sound than a file of %1 KB can hold when it is real sound (more than %2 min; hostile or damaged files announce hours of sound in a few kilobytes). Convert it to WAV, FLAC or MP3 and import it again.</source>
+        <translation>%1 KB のファイルに実際の音として入りうる量を超える音を含んでいます（%2 分超。悪意のある、または壊れたファイルは数 KB で何時間もの音を宣言します）。WAV、FLAC または MP3 に変換して、もう一度読み込んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="240"/>
+        <source>With the soundtrack&apos;s other clips it would make more than %1 min of sound, the most Finbook decodes from sound files of this size.</source>
+        <translation>サウンドトラックのほかのクリップと合わせると %1 分を超え、このサイズのサウンドファイルから Finbook がデコードする上限を超えます。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="251"/>
         <source>The file is empty.</source>
         <translation>ファイルが空です。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="139"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="253"/>
         <source>The file is incomplete: its sound data is cut off. Import the complete file.</source>
         <translation>ファイルが不完全です。サウンドデータが途中で切れています。完全なファイルをインポートしてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="147"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="151"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="155"/>
-        <location filename="../model/src/sound/sound_decode.cpp" line="181"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="261"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="265"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="269"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="305"/>
         <source>There is not enough memory to read the sound.</source>
         <translation>サウンドを読み込むためのメモリが足りません。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="165"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="279"/>
         <source>The file holds no sound Finbook can play.</source>
         <translation>ファイルに Finbook が再生できるサウンドがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="214"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="197"/>
+        <source>Its sample rate, %1 Hz, is outside the %2 to %3 Hz Finbook plays (real recordings use 8,000 to 192,000).</source>
+        <translation>サンプリングレート %1 Hz は Finbook が再生する %2～%3 Hz の範囲外です（実際の録音は 8,000～192,000 を使います）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="294"/>
+        <source>It has %1 channels; Finbook plays at most %2.</source>
+        <translation>%1 チャンネルあります。Finbook が再生するのは最大 %2 チャンネルです。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/sound/sound_decode.cpp" line="353"/>
         <source>The sound is longer than %1 minutes, the longest Finbook plays.</source>
         <translation>サウンドが Finbook で再生できる最長の %1 分を超えています。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="218"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="362"/>
         <source>The file holds no sound Finbook can play (no audio could be decoded from it).</source>
         <translation>ファイルに Finbook が再生できるサウンドがありません(音声をデコードできませんでした)。</translation>
     </message>
     <message>
-        <location filename="../model/src/sound/sound_decode.cpp" line="225"/>
+        <location filename="../model/src/sound/sound_decode.cpp" line="369"/>
         <source>The file is incomplete: it announces %1 s of sound but holds only %2 s. Import the complete file.</source>
         <translation>ファイルが不完全です。%1 秒のサウンドと記されていますが、%2 秒しかありません。完全なファイルをインポートしてください。</translation>
     </message>
@@ -3336,28 +3436,33 @@
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <source>The reference &quot;%1&quot; cannot be shown: %2</source>
+        <translation>参照「%1」を表示できません: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="242"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window.cpp" line="253"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window.cpp" line="254"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window.cpp" line="259"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window.cpp" line="260"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -4501,74 +4606,81 @@
 <context>
     <name>finbook::ui::SoundController</name>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="40"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
         <source>Import Soun&amp;d...</source>
         <translation>サウンドをインポート(&amp;D)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="42"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="44"/>
         <source>Add a sound file to the soundtrack, starting at the current frame</source>
         <translation>現在のフレームから始まるサウンドファイルをサウンドトラックに追加します</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="45"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="47"/>
         <source>Import Sound</source>
         <translation>サウンドのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="46"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="48"/>
         <source>Sound files (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;All files (*)</source>
         <translation>サウンドファイル (*.wav *.flac *.mp3 *.ogg *.oga *.opus *.m4a *.aac);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="57"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="74"/>
         <source>The sound &quot;%1&quot; cannot be played: %2</source>
         <translation>サウンド「%1」を再生できません: %2</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/src/sound/sound_controller.cpp" line="77"/>
+        <source>%n sound(s) cannot be played; &quot;%1&quot;: %2</source>
+        <translation>
+            <numerusform>%n 個のサウンドを再生できません。「%1」: %2</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="118"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="140"/>
         <source>Cannot Import Sound</source>
         <translation>サウンドをインポートできません</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="78"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="100"/>
         <source>Cannot import &quot;%1&quot;: %2</source>
         <translation>「%1」をインポートできません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="81"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="103"/>
         <source>it is not a file.</source>
         <translation>ファイルではありません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="85"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="107"/>
         <source>it is larger than %1 MB.</source>
         <translation>%1 MB を超えています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="94"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="116"/>
         <source>Reading &quot;%1&quot;…</source>
         <translation>「%1」を読み込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="119"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="141"/>
         <source>Cannot import &quot;%1&quot;: %2 Nothing was changed.</source>
         <translation>「%1」をインポートできません: %2 何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="132"/>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="134"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="154"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="156"/>
         <source>Imported &quot;%1&quot; (%2 s).</source>
         <translation>「%1」をインポートしました(%2 秒)。</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Sound Volume</source>
         <translation>サウンドの音量</translation>
     </message>
     <message>
-        <location filename="../ui/src/sound/sound_controller.cpp" line="161"/>
+        <location filename="../ui/src/sound/sound_controller.cpp" line="183"/>
         <source>Volume of &quot;%1&quot; (%):</source>
         <translation>「%1」の音量 (%):</translation>
     </message>

@@ -2,10 +2,13 @@
 // `finbook info` and `finbook export` on hand-made files, and exports onto a full disk.
 #include "../model/deep_structures.h"
 #include "../model/file_builder.h"
+#include "../model/hostile_media.h"
+#include "../model/sound_support.h"
 #include "limits_support.h"
 
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/recovery/recovery_store.h>
+#include <finbook/model/reference/reference_layer.h>
 
 #include <QDir>
 #include <QFileInfo>
@@ -76,11 +79,45 @@ private slots:
     void interruptedExportLeavesNothing();
     void widePensCostWhatIsVisible_data();
     void widePensCostWhatIsVisible();
+    void hostileMediaCostsLittle_data();
+    void hostileMediaCostsLittle();
 
 private:
     QString holdsBomb();
     QTemporaryDir m_dir;
 };
+
+namespace {
+// A one-frame document with a stroke, `clips` as its soundtrack and `reference` under it.
+QByteArray mediaDocument(const std::vector<QByteArray> &clips, model::ReferenceKind kind,
+                         const QByteArray &reference)
+{
+    Document doc;
+    model::DocumentSettings settings;
+    settings.canvasSize = QSize(64, 48);
+    model::Frame frame{doc.allocateId(), 1, {}};
+    model::StrokeGroup group;
+    group.id = doc.allocateId();
+    auto data = std::make_shared<model::StrokeData>();
+    data->points = {{5.0f, 5.0f, 1.0f}, {50.0f, 40.0f, 1.0f}};
+    group.strokes.push_back({doc.allocateId(), data});
+    frame.groups.push_back(group);
+    doc.reset({frame}, settings, doc.nextId());
+    for (std::size_t i = 0; i < clips.size(); ++i)
+        sound_test::importClip(doc, clips[i], QStringLiteral("clip%1.wav").arg(i));
+    if (!reference.isEmpty()) {
+        model::Reference r;
+        r.kind = kind;
+        r.bytes = reference;
+        r.name = QStringLiteral("hostile");
+        r.mediaSize = QSizeF(64, 64);
+        r.center = QPointF(32, 24);
+        r.opacity = 1.0;
+        doc.referenceLayer().setReference(r);
+    }
+    return model::serializeFinbook(doc);
+}
+} // namespace
 
 void TestLimits::initTestCase()
 {
@@ -526,4 +563,109 @@ void TestLimits::widePensCostWhatIsVisible()
 }
 
 QTEST_GUILESS_MAIN(TestLimits)
+// Issue 47: embedded sound and reference media are bounded like everything else. Each row is a
+// small document (under 2 MB) whose clips or reference are hostile; `info`, `thumbnail`, an
+// MP4 export and an export with the reference each end within the limits, with exit code 0 and
+// what was left out said on stderr (exit code 2 with --strict), never an abort.
+void TestLimits::hostileMediaCostsLittle_data()
+{
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<bool>("badSound");
+    QTest::addColumn<bool>("badReference");
+    QTemporaryDir scratch;
+    const auto row = [this](const char *name, const QByteArray &bytes, bool sound, bool ref) {
+        QTest::newRow(name) << writeFile(m_dir,
+                                         QString::fromLatin1(name).replace(' ', '_') +
+                                             QStringLiteral(".finbook"),
+                                         bytes)
+                            << sound << ref;
+    };
+    using model::ReferenceKind;
+    const QByteArray oneHertz = sound_test::sineWav(3500, 1, 0.1); // 7 KB announcing ~1 hour
+    row("wav at 1 Hz", mediaDocument({oneHertz}, ReferenceKind::None, {}), true, false);
+    row("256 wavs at 1 Hz",
+        mediaDocument(std::vector<QByteArray>(model::kMaxSoundClips, oneHertz), ReferenceKind::None,
+                      {}),
+        true, false);
+    if (const QByteArray flac =
+            sound_test::ffmpegSilence(scratch, QStringLiteral("silence.flac"), 3540);
+        !flac.isEmpty())
+        // An export needs the sound under its one frame only: it decodes that and plays it.
+        row("flac of 59 min silence", mediaDocument({flac}, ReferenceKind::None, {}), false, false);
+    row("damaged clip", mediaDocument({QByteArray(5000, 'x')}, ReferenceKind::None, {}), true,
+        false);
+    row("svg with text", mediaDocument({}, ReferenceKind::Image, hostile_media::svgWithText()),
+        false, false);
+    row("slow svg", mediaDocument({}, ReferenceKind::Image, hostile_media::slowSvg()), false, true);
+    row("svg use bomb", mediaDocument({}, ReferenceKind::Image, hostile_media::useBomb()), false,
+        true);
+    if (const QByteArray video = hostile_media::lyingVideo(scratch); !video.isEmpty())
+        row("video larger than its header", mediaDocument({}, ReferenceKind::Video, video), false,
+            false);
+    row("1 Hz sound and slow svg",
+        mediaDocument({oneHertz}, ReferenceKind::Image, hostile_media::slowSvg()), true, true);
+}
+
+void TestLimits::hostileMediaCostsLittle()
+{
+    QFETCH(QString, path);
+    QFETCH(bool, badSound);
+    QFETCH(bool, badReference);
+    QVERIFY(QFileInfo(path).size() < 2 << 20);
+    const bool ffmpeg = !QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty();
+    const QString out = m_dir.filePath(QFileInfo(path).completeBaseName());
+    struct Command {
+        const char *what;
+        QStringList arguments;
+        bool saysLeftOut;
+    };
+    std::vector<Command> commands{
+        {"info", {QStringLiteral("info"), path}, false},
+        {"thumbnail",
+         {QStringLiteral("thumbnail"), path, out + QStringLiteral("-thumb.png"),
+          QStringLiteral("128")},
+         false},
+    };
+    if (ffmpeg) {
+        commands.push_back({"mp4",
+                            {QStringLiteral("export"), path, out + QStringLiteral(".mp4"),
+                             QStringLiteral("--overwrite")},
+                            badSound});
+        commands.push_back({"mp4 --include-reference",
+                            {QStringLiteral("export"), path, out + QStringLiteral("-ref.mp4"),
+                             QStringLiteral("--include-reference"), QStringLiteral("--overwrite")},
+                            badSound || badReference});
+    } else {
+        commands.push_back({"png --include-reference",
+                            {QStringLiteral("export"), path, out + QStringLiteral("-ref/"),
+                             QStringLiteral("--include-reference"), QStringLiteral("--overwrite")},
+                            badReference});
+    }
+    for (const Command &c : commands) {
+        const Measured run = runMeasured(c.arguments);
+        qInfo("{\"case\":\"%s\",\"command\":\"%s\",\"code\":%d,\"seconds\":%.2f,\"peak_mib\":%ld}",
+              QTest::currentDataTag(), c.what, run.code, run.seconds, run.peakMiB);
+        QVERIFY2(run.code == 0, run.err.constData()); // -1: it crashed or was killed
+        if (c.saysLeftOut) {
+            QVERIFY2(isOneLine(run.err), run.err.constData());
+            QVERIFY2(run.err.contains("left out"), run.err.constData());
+        } else if (QByteArrayView(c.what) != "info") {
+            QVERIFY2(run.err.isEmpty(), run.err.constData());
+        }
+        QVERIFY2(run.seconds < 20, c.what); // generous on a busy machine: ~2 s when idle
+        if (!kUnderAsan)
+            QVERIFY2(run.peakMiB < 300, qPrintable(QString::number(run.peakMiB)));
+    }
+    // --strict: what cannot be used fails the export, and nothing is written.
+    if (ffmpeg && (badSound || badReference)) {
+        const QString strictOut = out + QStringLiteral("-strict.mp4");
+        const Measured strict =
+            runMeasured({QStringLiteral("export"), path, strictOut,
+                         QStringLiteral("--include-reference"), QStringLiteral("--strict")});
+        QCOMPARE(strict.code, 2);
+        QVERIFY2(isOneLine(strict.err), strict.err.constData());
+        QVERIFY(!QFileInfo::exists(strictOut));
+    }
+}
+
 #include "tst_limits.moc"

@@ -7,7 +7,9 @@
 
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/reference/reference_layer.h>
+#include <finbook/model/reference/reference_media.h>
 #include <finbook/model/render.h>
+#include <finbook/model/sound/sound_decode.h>
 
 #include <QtEndian>
 
@@ -75,6 +77,38 @@ inline void roundTrip(LoadedDocument &doc, const char *what)
     check(serializeFinbook(e) == again, "save -> open -> save is byte-identical");
 }
 
+// The embedded media as the editor and an export decode them: every clip within one soundtrack
+// budget, and a few pictures of the reference. What decodes stays within the limits the
+// budget promised (issue 47: a few KB of sound decoded to gigabytes).
+inline void decodeMedia(const LoadedDocument &doc)
+{
+    qint64 bytes = 0;
+    for (const SoundClip &clip : doc.sound)
+        bytes += clip.bytes.size();
+    SoundBudget budget(bytes);
+    const auto allowed = qint64(soundSecondsAllowed(bytes, kMaxSoundtrackSeconds) * kSoundRate);
+    for (const SoundClip &clip : doc.sound) {
+        const SoundDecodeLimits limits = budget.limitsFor(clip.bytes.size());
+        if (auto sound = decodeSound(clip.bytes, nullptr, limits)) {
+            check(sound->frames() <= limits.maxFrames, "a clip decodes within its limit");
+            budget.spend(sound->frames());
+            check(budget.spentFrames() <= allowed, "the soundtrack decodes within its budget");
+            computeWaveform(*sound);
+        }
+    }
+    if (doc.reference.isEmpty())
+        return;
+    if (auto media = ReferenceMedia::open(doc.reference)) {
+        const QSize size = (*media)->size();
+        for (qint64 i : {qint64(0), (*media)->frameCount() / 2, (*media)->frameCount() - 1}) {
+            const QImage picture = (*media)->frame(i);
+            check(picture.isNull() || picture.size() == size ||
+                      doc.reference.kind == ReferenceKind::Sequence,
+                  "a reference's pictures have its size");
+        }
+    }
+}
+
 // Everything a file goes through: the strict reader (as is and with its checksums made
 // right), "open anyway", the description reader.
 inline void readEveryWay(const QByteArray &bytes)
@@ -82,6 +116,7 @@ inline void readEveryWay(const QByteArray &bytes)
     for (const QByteArray &input : {bytes, withChecksums(bytes)}) {
         if (auto loaded = readFinbook(input)) {
             renderSome(*loaded);
+            decodeMedia(*loaded);
             roundTrip(*loaded, "a loaded document saves and loads again");
         }
     }

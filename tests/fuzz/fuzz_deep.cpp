@@ -8,14 +8,27 @@
 //   input := u8 shape  u8 sizeExponent  u16 sizeMantissa  u16 parts  u8 flags  u32 seed
 //            (u32 offset  u8 xor)*          flags: 1 posed, 2 reversed, 4 star, 8 fix checksums
 //
+// A shape byte with its top bit set asks for embedded media instead (issue 47): a document
+// whose sound clips are WAVs with the input's header fields (sample rate, channels, bits, the
+// data size it announces, how many clips) and whose reference is an SVG of <use> nested as
+// deep and wide as the input says; decoding them (fuzz_checks.h) must stay within the limits.
+//
+//   media := u8 shape|0x80  u32 rate  u8 channels  u8 bits  u32 announced  u8 clips
+//            u8 useLevels  u8 useFanout  u16 samples
+//
 // Run: build/fuzz/bin/finbook-fuzz-deep -rss_limit_mb=4096 -timeout=300 -max_len=256 CORPUS
 #include "../model/deep_structures.h"
 #include "fuzz_checks.h"
+
+#include <finbook/model/reference/reference_layer.h>
+#include <finbook/model/sound/sound_commands.h>
 
 #include <QCoreApplication>
 #include <QtEndian>
 
 namespace {
+using namespace finbook::model;
+
 constexpr int kMaxCount = 1 << 17;
 constexpr std::size_t kHeaderBytes = 11;
 constexpr std::size_t kEditBytes = 5;
@@ -37,6 +50,73 @@ deep_build::Params paramsOf(const uint8_t *data)
         p.n = std::min(p.n, 4096); // each frame is an object with a stroke: keep a run short
     return p;
 }
+constexpr std::size_t kMediaBytes = 16;
+
+// A WAV of `samples` bytes of data whose header says what the input says.
+QByteArray wavWithHeader(const uint8_t *data)
+{
+    const quint32 rate = qFromLittleEndian<quint32>(data + 1);
+    const quint16 channels = data[5];
+    const quint16 bits = data[6];
+    const quint32 announced = qFromLittleEndian<quint32>(data + 7);
+    const int samples = qFromLittleEndian<quint16>(data + 14);
+    QByteArray wav(44 + samples, '\0');
+    char *p = wav.data();
+    const auto u32 = [&p](quint32 v) { qToLittleEndian<quint32>(v, p), p += 4; };
+    const auto u16 = [&p](quint16 v) { qToLittleEndian<quint16>(v, p), p += 2; };
+    const auto text = [&p](const char *four) { std::copy(four, four + 4, p), p += 4; };
+    text("RIFF");
+    u32(quint32(36 + samples));
+    text("WAVE");
+    text("fmt ");
+    u32(16);
+    u16(1);
+    u16(channels);
+    u32(rate);
+    u32(rate * channels * std::max<quint32>(1, bits / 8));
+    u16(quint16(channels * std::max(1, bits / 8)));
+    u16(bits);
+    text("data");
+    u32(announced);
+    for (int i = 0; i < samples; ++i)
+        p[i] = char(i * 37);
+    return wav;
+}
+
+QByteArray svgOfUses(int levels, int fanout)
+{
+    QByteArray svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+                     "xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"64\" height=\"64\">"
+                     "<defs><rect id=\"l0\" width=\"1\" height=\"1\"/>";
+    for (int level = 1; level <= levels; ++level) {
+        svg += "<g id=\"l" + QByteArray::number(level) + "\">";
+        for (int i = 0; i < fanout; ++i)
+            svg += "<use xlink:href=\"#l" + QByteArray::number(level - 1) + "\" x=\"" +
+                   QByteArray::number(i) + "\"/>";
+        svg += "</g>";
+    }
+    return svg + "</defs><use xlink:href=\"#l" + QByteArray::number(levels) + "\"/></svg>";
+}
+
+QByteArray mediaFile(const uint8_t *data)
+{
+    Document doc;
+    const QByteArray wav = wavWithHeader(data);
+    const int clips = 1 + data[11] % kMaxSoundClips;
+    for (int i = 0; i < clips; ++i) {
+        SoundClip clip;
+        clip.name = QStringLiteral("c.wav");
+        clip.bytes = wav;
+        doc.undoStack()->push(new AddSoundClipCommand(&doc, clip));
+    }
+    Reference r;
+    r.kind = ReferenceKind::Image;
+    r.name = QStringLiteral("uses.svg");
+    r.bytes = svgOfUses(data[12] % 16, data[13] % 16);
+    r.mediaSize = QSizeF(64, 64);
+    doc.referenceLayer().setReference(r);
+    return serializeFinbook(doc);
+}
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
@@ -47,6 +127,10 @@ extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+    if (size >= kMediaBytes && (data[0] & 0x80)) {
+        fuzz_checks::readEveryWay(mediaFile(data));
+        return 0;
+    }
     if (size < kHeaderBytes)
         return 0;
     const deep_build::Params p = paramsOf(data);

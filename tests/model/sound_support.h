@@ -64,6 +64,25 @@ inline QByteArray ffmpegSine(const QTemporaryDir &dir, const QString &file, doub
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
+// `seconds` of mono silence at 44.1 kHz encoded by ffmpeg into `file` (a FLAC of an hour of
+// silence is under a megabyte), or an empty array when ffmpeg is missing.
+inline QByteArray ffmpegSilence(const QTemporaryDir &dir, const QString &file, double seconds)
+{
+    const QString ffmpeg = QStandardPaths::findExecutable(QStringLiteral("ffmpeg"));
+    if (ffmpeg.isEmpty())
+        return {};
+    const QString path = dir.filePath(file);
+    QProcess p;
+    p.start(ffmpeg, QStringList{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-y"),
+                                QStringLiteral("-f"), QStringLiteral("lavfi"), QStringLiteral("-i"),
+                                QStringLiteral("anullsrc=r=44100:cl=mono"), QStringLiteral("-t"),
+                                QString::number(seconds), path});
+    if (!p.waitForFinished(120000) || p.exitCode() != 0)
+        return {};
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
 // Imports `bytes` as a clip named `name` through the command, as File → Import Sound does.
 inline Id importClip(Document &doc, const QByteArray &bytes, const QString &name, qint64 start = 0)
 {

@@ -6,6 +6,7 @@
 
 #include <finbook/model/sound/sound_decode.h>
 
+#include <QFileInfo>
 #include <QtTest>
 
 using namespace finbook;
@@ -34,7 +35,7 @@ float peak(const model::DecodedSound &sound, double from, double to)
     const auto first = qint64(from * model::kSoundRate) * 2;
     const qint64 last = std::min(qint64(to * model::kSoundRate) * 2, qint64(sound.samples.size()));
     for (qint64 i = std::max<qint64>(0, first); i < last; ++i)
-        p = std::max(p, std::abs(sound.samples[std::size_t(i)]));
+        p = std::max(p, std::abs(float(sound.samples[std::size_t(i)]) * sound.kScale));
     return p;
 }
 } // namespace
@@ -47,6 +48,7 @@ private slots:
     void videoCarriesTheRangesSound();
     void noAudioWithoutSound();
     void flipbookEmbedsTheSound();
+    void unusableMediaIsSaid();
 
 private:
     QString exportTo(ExportFormat format, const QString &name, int first, int last);
@@ -174,4 +176,40 @@ void TestExportSound::flipbookEmbedsTheSound()
 }
 
 QTEST_GUILESS_MAIN(TestExportSound)
+// Issue 47: a clip that no longer decodes was left out of the video without a word. Now the
+// result says which and why; strictMedia refuses the export before anything is written.
+void TestExportSound::unusableMediaIsSaid()
+{
+    model::ExportSource source = m_source;
+    model::SoundClip bad = source.sound.front();
+    bad.id = 1001;
+    bad.name = QStringLiteral("slow.wav");
+    bad.bytes = sound_test::sineWav(3500, 1, 0.1); // 1 Hz
+    source.sound.push_back(bad);
+    source.reference.kind = model::ReferenceKind::Image;
+    source.reference.name = QStringLiteral("gone.png");
+    source.reference.bytes = QByteArray(3000, 'x');
+    source.reference.mediaSize = QSizeF(10, 10);
+    model::ExportOptions o;
+    o.format = ExportFormat::Mp4;
+    o.target = m_dir.filePath(QStringLiteral("left_out.mp4"));
+    o.scale = 0.25;
+    o.includeReference = true;
+    const auto result = model::exportAnimation(source, o);
+    QVERIFY2(result, result ? "" : qPrintable(result.error().message));
+    qInfo("note: %s", qPrintable(result->note));
+    QVERIFY(result->note.contains(QStringLiteral("\"slow.wav\" is left out")));
+    QVERIFY(result->note.contains(QStringLiteral("1 Hz")));
+    QVERIFY(result->note.contains(QStringLiteral("\"gone.png\" is left out")));
+    QCOMPARE(audioStreams(o.target).size(), 1); // the good clip still plays
+
+    o.strictMedia = true;
+    o.target = m_dir.filePath(QStringLiteral("strict.mp4"));
+    const auto strict = model::exportAnimation(source, o);
+    QVERIFY(!strict);
+    QCOMPARE(strict.error().code, model::ExportErrorCode::MediaUnusable);
+    QVERIFY(strict.error().message.contains(QStringLiteral("slow.wav")));
+    QVERIFY(!QFileInfo::exists(o.target));
+}
+
 #include "tst_export_sound.moc"

@@ -122,6 +122,76 @@ void withSequence(Document &doc)
     doc.referenceLayer().setReference(r);
 }
 
+// The sample with media of every kind a decoder reads (issue 47: the fuzzers decode them):
+// FLAC and MP3 clips, and an animated GIF as a video reference (FFmpeg decodes it).
+void withMedia(Document &doc)
+{
+    buildSample(doc);
+    sound_test::importClip(
+        doc,
+        QByteArray::fromBase64(
+            "ZkxhQwAAACICQAJAAADLAADLAfQA8AAAAZAilYmSioD/lQJDJEsQF/VvhAAADgYAAABmZm1wZWcAAAAA//"
+            "h0CAABjyROAAAFawoyDcUPtg/NDgUKlOWZyr5sVL+vEHLfMMEs/x4AKZKJCgjFkMI5UWEwiyJrprlESQst"
+            "d6YRhRIWS1fryiJEkVZDVqEwjAuF1zRhMsEYSksjEeXiiSFEpfTLKJEUIwjXMuKREURa+60iwUikxGEGSZ"
+            "KJCgjFkMI5UWEwiyJrprlESQstd6YRhRIWS1fryiJEkVZDVqEwjAuF1zRhMsEYSksjEeXiiSFEpfTLKJEU"
+            "IwjXMuKREURa+60iwUiA5qQ="),
+        QStringLiteral("tone.flac"), 1);
+    sound_test::importClip(
+        doc,
+        QByteArray::fromBase64(
+            "SUQzBAAAAAAACgAAAAAAAAAAAAD/4xjEAArwBtW5QQAC/0dw22AGD4Pg+9QIAgcg+D5/E4Pg+iCBxEHwffgg"
+            "67/DHAb9IY5d/OdPu6UmhzhZxDf8ZUQlHKELf4P/4xjEDxCZQpABlFAAbwfqB7kAGXEScA+JgOZHWB3qYe+A"
+            "aAJAKisIoLr/8hHoqkQ+Hxpv//kKA0JQkDX/iU6DSv//////////4xjEBw5opjwB3gAA//////jSIRgDgBJJ"
+            "BcAowKwXjB/BqMIcUoxC6XDG+E2MNsFowPQPgUBeIQAwMAqhJbTt0//++BKlUCD/4xjECA2opiwAVrxgKYkU"
+            "Z9AbJyeX0YgA25x36Hmn4KmYaoLxglALlADyBEGgAIBUvrH////f5T///1r/X/98YwMhgQAB1wX/4xjEDA7o"
+            "piwAp7CAggGnIgeakYjIqpzkUymryIeYeQKxgygWmBgBEbpGM5fxSvH//9n+/0////////9F///5OxVA4DBJ"
+            "hA3/4xjECw1opjAABv5EmAoQInQCEYGBLISRgIoN0SARIMAODAAwBUIACyIAQQJrhv/////6P///Uv///jGA"
+            "GAADfQMAIBwMCwH/4xjEEA04pkABVgAAIBALwMRoywMfZtQOrsWwN6Q/gMGwIAMAwCQAgXgJAKI+GYEKISAS"
+            "P8cwgjDKf4zBUFmCCki4HaTiN4//4xjEFhKJLpQplGgAgDk0hOAuAG3AOBhIr/+Cdgr48x3iZlP//zMvm6y+"
+            "Fz//Lic+Hy7//oB8BmiY1//9BNxq5Co7Vy3YAD//4xjEBgzwttG5wwAD/ZmX/jMylxgzM3GZm1UCb9VUBCn9"
+            "BQYK8FBQp/goMd/QUKG+CgwU/wUKG/5IKkxBTUUzLjEwMKqqqqo="),
+        QStringLiteral("tone.mp3"), 6);
+    Reference r;
+    r.kind = ReferenceKind::Video;
+    r.name = QStringLiteral("dots.gif");
+    r.bytes = QByteArray::fromBase64(
+        "R0lGODlhCAAIAPcfMQAAACQAAEgAAGwAAJAAALQAANgAAPwAAAAkACQkAEgkAGwkAJAkALQkANgkAPwkAABIAC"
+        "RIAEhIAGxIAJBIALRIANhIAPxIAABsACRsAEhsAGxsAJBsALRsANhsAPxsAACQACSQAEiQAGyQAJCQALSQANiQ"
+        "APyQAAC0ACS0AEi0AGy0AJC0ALS0ANi0APy0AADYACTYAEjYAGzYAJDYALTYANjYAPzYAAD8ACT8AEj8AGz8AJ"
+        "D8ALT8ANj8APz8AAAAVSQAVUgAVWwAVZAAVbQAVdgAVfwAVQAkVSQkVUgkVWwkVZAkVbQkVdgkVfwkVQBIVSRI"
+        "VUhIVWxIVZBIVbRIVdhIVfxIVQBsVSRsVUhsVWxsVZBsVbRsVdhsVfxsVQCQVSSQVUiQVWyQVZCQVbSQVdiQVf"
+        "yQVQC0VSS0VUi0VWy0VZC0VbS0Vdi0Vfy0VQDYVSTYVUjYVWzYVZDYVbTYVdjYVfzYVQD8VST8VUj8VWz8VZD8"
+        "VbT8Vdj8Vfz8VQAAqiQAqkgAqmwAqpAAqrQAqtgAqvwAqgAkqiQkqkgkqmwkqpAkqrQkqtgkqvwkqgBIqiRIqk"
+        "hIqmxIqpBIqrRIqthIqvxIqgBsqiRsqkhsqmxsqpBsqrRsqthsqvxsqgCQqiSQqkiQqmyQqpCQqrSQqtiQqvyQ"
+        "qgC0qiS0qki0qmy0qpC0qrS0qti0qvy0qgDYqiTYqkjYqmzYqpDYqrTYqtjYqvzYqgD8qiT8qkj8qmz8qpD8qr"
+        "T8qtj8qvz8qgAA/yQA/0gA/2wA/5AA/7QA/9gA//wA/wAk/yQk/0gk/2wk/5Ak/7Qk/9gk//wk/wBI/yRI/0hI"
+        "/2xI/5BI/7RI/9hI//xI/wBs/yRs/0hs/2xs/5Bs/7Rs/9hs//xs/wCQ/ySQ/0iQ/2yQ/5CQ/7SQ/9iQ//yQ/w"
+        "C0/yS0/0i0/2y0/5C0/7S0/9i0//y0/wDY/yTY/0jY/2zY/5DY/7TY/9jY//zY/wD8/yT8/0j8/2z8/5D8/7T8"
+        "/9j8//z8/yH/C05FVFNDQVBFMi4wAwEAAAAh+QQEGQAfACwAAAAACAAIAAAINQABHMDxA9gxfP8EHgP2A8eBhP"
+        "gWNjwAAEBEhg4rXpyoUWLGAzd44MEHjdihAy924CA57FhAACH5BAUZAAAALAAABgAIAAIAAAgUAC/80IELHjBj"
+        "Rx4MxIMOWLFDAQEAIfkEBRkAAAAsAAAGAAgAAgAACBQAT/jAAQCcsGMHPvTAgc/gsSMBAQA7");
+    r.mediaSize = QSizeF(8, 8);
+    r.center = QPointF(50, 40);
+    r.scale = 8.0;
+    doc.referenceLayer().setReference(r);
+}
+
+// The sample with an SVG reference holding text and a <use>.
+void withSvgReference(Document &doc)
+{
+    buildSample(doc);
+    Reference r;
+    r.kind = ReferenceKind::Image;
+    r.name = QStringLiteral("sign.svg");
+    r.bytes = "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+              "xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"40\" height=\"20\">"
+              "<rect id=\"r\" width=\"8\" height=\"8\" fill=\"#c00\"/>"
+              "<use xlink:href=\"#r\" x=\"10\"/><text x=\"2\" y=\"18\">Hi</text></svg>";
+    r.mediaSize = QSizeF(40, 20);
+    r.center = QPointF(50, 40);
+    doc.referenceLayer().setReference(r);
+}
+
 // Every seed by name.
 std::vector<std::pair<QString, QByteArray>> seeds()
 {
@@ -141,7 +211,13 @@ std::vector<std::pair<QString, QByteArray>> seeds()
                                             QStringLiteral("voice.wav"), 30);
     sound.undoStack()->push(soundClipMutedCommand(&sound, quiet, true).release());
     sound.undoStack()->push(soundClipVolumeCommand(&sound, quiet, 0.5).release());
+    Document media;
+    withMedia(media);
+    Document svg;
+    withSvgReference(svg);
     std::vector<std::pair<QString, QByteArray>> all{
+        {QStringLiteral("media.finbook"), serializeFinbook(media)},
+        {QStringLiteral("svg_reference.finbook"), serializeFinbook(svg)},
         {QStringLiteral("sample.finbook"), serializeFinbook(sample)},
         {QStringLiteral("cage_skeleton.finbook"), serializeFinbook(rigs)},
         {QStringLiteral("reference.finbook"), serializeFinbook(referenced)},

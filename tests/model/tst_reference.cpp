@@ -1,5 +1,6 @@
 // The reference layer with a picture: import, undo, lock, save/reopen byte-identical, hostile
 // files refused with nothing lost, export only with "Include reference".
+#include "hostile_media.h"
 #include "reference_support.h"
 
 #include <finbook/model/commands.h>
@@ -7,6 +8,7 @@
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/reference/reference_commands.h>
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QTest>
 #include <QtEndian>
@@ -52,6 +54,51 @@ private:
     }
 
 private slots:
+    // Issue 47: SVG references are drawn at a bounded cost, text and all (this test runs with
+    // a QGuiApplication, as the editor and `finbook export --include-reference` do).
+    void svgReferencesAreBounded()
+    {
+        auto text = ReferenceMedia::open(ReferenceKind::Image, hostile_media::svgWithText());
+        QVERIFY2(text, text ? "" : qPrintable(text.error()));
+        QCOMPARE((*text)->size(), QSize(120, 80));
+        QCOMPARE((*text)->frame(0).pixel(5, 5), qRgb(0xff, 0xd0, 0xd0));
+        struct Case {
+            const char *name;
+            QByteArray bytes;
+            QString says;
+        };
+        const Case cases[] = {
+            {"use bomb", hostile_media::useBomb(), QStringLiteral("100,000")},
+            {"use loop", hostile_media::useLoop(), QStringLiteral("loop")},
+            {"slow", hostile_media::slowSvg(), QStringLiteral("too long")},
+            {"entities",
+             "<?xml version=\"1.0\"?><!DOCTYPE svg [<!ENTITY a \"aaaaaaaaaa\">]>"
+             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"9\" height=\"9\">"
+             "<text>&a;</text></svg>",
+             QStringLiteral("entities")},
+        };
+        for (const Case &c : cases) {
+            QElapsedTimer clock;
+            clock.start();
+            const auto media = ReferenceMedia::open(ReferenceKind::Image, c.bytes);
+            qInfo("%s SVG (%lld bytes): %s in %lld ms", c.name, qint64(c.bytes.size()),
+                  media ? "drawn" : qPrintable(media.error()), clock.elapsed());
+            QVERIFY2(!media, c.name);
+            QVERIFY2(media.error().contains(c.says), qPrintable(media.error()));
+            // 2 s of CPU at most; the wall clock of a busy machine is given room. Unbounded,
+            // the slow one paints 50 billion pixels.
+            QVERIFY2(clock.elapsed() < 20000, c.name);
+        }
+        // A picture that says it is 100,000 px wide is drawn 4,096 px wide.
+        const QByteArray huge =
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100000\" height=\"50000\">"
+            "<rect width=\"100000\" height=\"50000\" fill=\"#00ff00\"/></svg>";
+        const auto big = ReferenceMedia::open(ReferenceKind::Image, huge);
+        QVERIFY2(big, big ? "" : qPrintable(big.error()));
+        QCOMPARE((*big)->size(), QSize(4096, 2048));
+        QCOMPARE((*big)->frame(0).pixel(4000, 2000), qRgb(0, 255, 0));
+    }
+
     void importFitsTheCanvasAndUndoes()
     {
         Document doc;

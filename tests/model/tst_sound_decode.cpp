@@ -10,6 +10,7 @@
 #include <QtTest>
 
 #include <random>
+#include <sys/resource.h>
 
 using namespace finbook::model;
 using namespace sound_test;
@@ -25,7 +26,23 @@ private slots:
     void waveformFollowsTheSound();
     void mixesClipsAtTheirStartAndVolume();
     void cacheDecodesOffTheGuiThread();
+    void refusesRatesOutsideTheRange();
+    void refusesMoreSoundThanItsBytesHold();
+    void soundtrackSharesOneBudget();
 };
+
+namespace {
+// How far this process's peak resident memory rose while `work` ran (the peak so far can hide
+// a rise below it, never invent one).
+template <typename Work> long peakRiseMiB(Work &&work)
+{
+    rusage before{}, after{};
+    getrusage(RUSAGE_SELF, &before);
+    work();
+    getrusage(RUSAGE_SELF, &after);
+    return (after.ru_maxrss - before.ru_maxrss) / 1024;
+}
+} // namespace
 
 void TestSoundDecode::decodesWav()
 {
@@ -34,8 +51,8 @@ void TestSoundDecode::decodesWav()
     QVERIFY(std::abs(sound->seconds() - 1.0) < 0.01);
     // Resampled to stereo at kSoundRate: both channels carry the mono sine, at about half scale.
     float peak = 0.0f;
-    for (float s : sound->samples)
-        peak = std::max(peak, std::abs(s));
+    for (qint16 s : sound->samples)
+        peak = std::max(peak, std::abs(float(s) * DecodedSound::kScale));
     QVERIFY(peak > 0.3f && peak < 0.6f);
     QCOMPARE(sound->samples[1000 * 2], sound->samples[1000 * 2 + 1]);
 }
@@ -186,4 +203,78 @@ void TestSoundDecode::cacheDecodesOffTheGuiThread()
 }
 
 QTEST_GUILESS_MAIN(TestSoundDecode)
+// Issue 47: a 7 KB WAV at 1 Hz announces an hour and, resampled to 48 kHz, asked for 5 GB.
+void TestSoundDecode::refusesRatesOutsideTheRange()
+{
+    QElapsedTimer clock;
+    clock.start();
+    const QByteArray bomb = sineWav(3500, 1, 0.1);
+    QVERIFY(bomb.size() < 8000);
+    finbook::Expected<DecodedSound, QString> slow = finbook::unexpected(QString());
+    const long rise = peakRiseMiB([&] { slow = decodeSound(bomb); });
+    QVERIFY(!slow);
+    QVERIFY2(slow.error().contains(QStringLiteral("1 Hz")), qPrintable(slow.error()));
+    auto fast = decodeSound(sineWav(0.01, 400000));
+    QVERIFY(!fast);
+    QVERIFY2(fast.error().contains(QStringLiteral("400000 Hz")), qPrintable(fast.error()));
+    auto lowest = decodeSound(sineWav(0.5, kMinSoundSourceRate));
+    QVERIFY2(lowest, lowest ? "" : qPrintable(lowest.error()));
+    qInfo("1 Hz WAV of %lld bytes refused in %lld ms, peak rose %ld MiB", qint64(bomb.size()),
+          clock.elapsed(), rise);
+    QVERIFY(rise < 100);
+    QVERIFY(clock.elapsed() < 5000); // generous: it took 24 s and 5 GB
+}
+
+// Issue 47: a 655 KB FLAC of 59 minutes of silence decoded to 2.7 GB.
+void TestSoundDecode::refusesMoreSoundThanItsBytesHold()
+{
+    QTemporaryDir dir;
+    const QByteArray flac = ffmpegSilence(dir, QStringLiteral("silence.flac"), 3540);
+    if (flac.isEmpty())
+        QSKIP("no ffmpeg to make the FLAC");
+    QVERIFY(flac.size() < 2 << 20);
+    QElapsedTimer clock;
+    clock.start();
+    finbook::Expected<DecodedSound, QString> sound = finbook::unexpected(QString());
+    const long rise = peakRiseMiB([&] { sound = decodeSound(flac); });
+    qInfo("59 min FLAC of %lld bytes: %s in %lld ms, peak rose %ld MiB", qint64(flac.size()),
+          sound ? "decoded" : "refused", clock.elapsed(), rise);
+    QVERIFY(!sound);
+    QVERIFY2(sound.error().contains(QStringLiteral("KB")), qPrintable(sound.error()));
+    // What it may decode to: a minute plus what its bytes pay for (far below 59 minutes).
+    QVERIFY(soundSecondsAllowed(flac.size()) < 600);
+    QVERIFY(rise < 300);
+    QVERIFY(clock.elapsed() < 5000);
+    // An export needs the sound under its frames only, and gets it whatever follows.
+    SoundDecodeLimits first;
+    first.wantedFrames = 2 * kSoundRate;
+    auto head = decodeSound(flac, nullptr, first);
+    QVERIFY2(head, head ? "" : qPrintable(head.error()));
+    QCOMPARE(head->frames(), qint64(2 * kSoundRate));
+    // A real hour fits: what an hour of 24 kbit/s sound weighs is allowed an hour.
+    QCOMPARE(soundSecondsAllowed(3600 * kMinSoundBytesPerSecond), kMaxSoundSeconds);
+}
+
+// 256 tiny clips must not each take a clip's allowance: the soundtrack has one budget.
+void TestSoundDecode::soundtrackSharesOneBudget()
+{
+    QTemporaryDir dir;
+    const QByteArray flac = ffmpegSilence(dir, QStringLiteral("short.flac"), 50);
+    if (flac.isEmpty())
+        QSKIP("no ffmpeg to make the FLAC");
+    QVERIFY(decodeSound(flac)); // alone, each fits
+    Document doc;
+    std::vector<Id> ids;
+    for (int i = 0; i < 4; ++i)
+        ids.push_back(importClip(doc, flac, QStringLiteral("s%1.flac").arg(i)));
+    SoundCache cache(&doc);
+    QSignalSpy ready(&cache, &SoundCache::soundReady);
+    QSignalSpy failed(&cache, &SoundCache::soundFailed);
+    QTRY_COMPARE(ready.count() + failed.count(), 4);
+    QCOMPARE(ready.count(), 1); // 50 s of the 60 + (4 × bytes) / 3000 s allowed
+    QCOMPARE(failed.count(), 3);
+    const QString why = failed.first().at(1).toString();
+    QVERIFY2(why.contains(QStringLiteral("other clips")), qPrintable(why));
+}
+
 #include "tst_sound_decode.moc"

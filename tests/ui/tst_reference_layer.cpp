@@ -1,5 +1,6 @@
 // The reference layer in the window: File → Import Reference, the Reference panel's edits
 // (undoable, lock), the canvas showing it under the drawing and the pen ignoring it.
+#include "../model/hostile_media.h"
 #include "../model/reference_support.h"
 #include "tst_window_support.h"
 
@@ -13,7 +14,9 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
+#include <QSignalSpy>
 #include <QSlider>
+#include <QStatusBar>
 #include <QTest>
 
 using namespace finbook;
@@ -192,6 +195,32 @@ private slots:
             model::editReferenceCommand(doc, hidden, model::ReferenceEdit::Visible).release());
         const QColor gone = pixelAt(QPointF(page.width() * 0.75, page.height() * 0.5));
         QCOMPARE(gone, QColor(Qt::white));
+    }
+
+    // Issue 47: a reference that cannot be used was silently not shown. The status bar says
+    // so, once; the drawing still works.
+    void unusableReferenceIsSaidOnTheStatusBar()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        model::Document *doc = window.document();
+        QSignalSpy failed(&doc->referenceLayer(), &model::ReferenceLayer::mediaFailed);
+        model::Reference r;
+        r.kind = model::ReferenceKind::Image;
+        r.name = QStringLiteral("bomb.svg");
+        r.bytes = hostile_media::useBomb();
+        r.mediaSize = QSizeF(100, 100);
+        r.center = QPointF(50, 50);
+        doc->referenceLayer().setReference(r);
+        window.canvas()->repaint();
+        QTRY_COMPARE(failed.count(), 1);
+        const QString message = window.statusBar()->currentMessage();
+        QVERIFY2(message.contains(QStringLiteral("bomb.svg")) &&
+                     message.contains(QStringLiteral("100,000")),
+                 qPrintable(message));
+        window.canvas()->repaint();
+        QTest::qWait(50);
+        QCOMPARE(failed.count(), 1);
     }
 
 private:

@@ -91,6 +91,7 @@ private slots:
     void playbackFollowsTheSoundClockSilently();
     void steppingPlaysTheSliceUnderTheFrame();
     void exportDialogSaysWhichFormatsHaveSound();
+    void unplayableClipsAreSaidOnce();
     void rowNeverCoversTheFrames();
 };
 
@@ -307,4 +308,29 @@ void TestSoundRow::rowNeverCoversTheFrames()
 }
 
 QTEST_MAIN(TestSoundRow)
+// Issue 47: a document of 256 clips that cannot be played (7 KB WAVs at 1 Hz, which once
+// asked for 5 GB each) opens with one message that counts them, and costs nothing.
+void TestSoundRow::unplayableClipsAreSaidOnce()
+{
+    Fixture f(2);
+    QSignalSpy said(f.sound, &ui::SoundController::message);
+    QSignalSpy failed(f.sound->cache(), &model::SoundCache::soundFailed);
+    const QByteArray oneHertz = sound_test::sineWav(3500, 1, 0.1);
+    auto *macro = new QUndoCommand(QStringLiteral("clips"));
+    for (int i = 0; i < model::kMaxSoundClips; ++i) {
+        model::SoundClip clip;
+        clip.name = QStringLiteral("slow%1.wav").arg(i);
+        clip.bytes = oneHertz;
+        new model::AddSoundClipCommand(&f.doc, clip, macro);
+    }
+    f.doc.undoStack()->push(macro);
+    QTRY_COMPARE_WITH_TIMEOUT(failed.count(), model::kMaxSoundClips, 20000);
+    QTRY_COMPARE(said.count(), 1);
+    const QString text = said.first().first().toString();
+    QVERIFY2(text.contains(QStringLiteral("256")) && text.contains(QStringLiteral("1 Hz")),
+             qPrintable(text));
+    QTest::qWait(300);
+    QCOMPARE(said.count(), 1);
+}
+
 #include "tst_sound_row.moc"

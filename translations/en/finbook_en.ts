@@ -30,6 +30,14 @@
             <numerusform>%n objects of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../../model/src/export/exporter.cpp" line="229"/>
+        <source>%n more sound clip(s) are left out too.</source>
+        <translation>
+            <numerusform>%n more sound clip is left out too.</numerusform>
+            <numerusform>%n more sound clips are left out too.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>FinbookFile</name>
@@ -171,6 +179,17 @@
         <translation>
             <numerusform>“%1” is one of %n numbered picture (%2 … %3). Import it as a sequence, one picture per frame?</numerusform>
             <numerusform>“%1” is one of %n numbered pictures (%2 … %3). Import them all as a sequence, one picture per frame?</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SoundController</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/sound/sound_controller.cpp" line="77"/>
+        <source>%n sound(s) cannot be played; &quot;%1&quot;: %2</source>
+        <translation>
+            <numerusform>%n sound cannot be played; &quot;%1&quot;: %2</numerusform>
+            <numerusform>%n sounds cannot be played; &quot;%1&quot;: %2</numerusform>
         </translation>
     </message>
 </context>

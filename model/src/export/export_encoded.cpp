@@ -77,11 +77,10 @@ ExportOutcome exportEncoded(const ExportContext &context)
     const ExportPlan &plan = context.plan;
     // The soundtrack's mix of the range (MP4, WebM): a temporary beside the target too.
     PendingFile sound(target);
-    if (exportHasSound(context.source, context.options)) {
+    if (context.sound.carriesSound()) {
         if (!sound.open(&openFailure))
             return unexpected(writeFailed(target, openFailure));
-        const QByteArray wav = exportSoundtrackWav(context.source, plan);
-        if (sound.file().write(wav) != wav.size() || !sound.file().flush())
+        if (!context.sound.writeWav(sound.file()) || !sound.file().flush())
             return unexpected(writeFailed(target, sound.file().errorString()));
         sound.file().close();
     }

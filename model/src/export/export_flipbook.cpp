@@ -218,8 +218,7 @@ ExportOutcome exportFlipbook(const ExportContext &context)
     }
     const QByteArray html =
         flipbookHtml(pngs, plan, context.options.title,
-                     flipbookHasSound(context.source) ? flipbookSoundtrackWav(context.source, plan)
-                                                      : QByteArray());
+                     context.sound.carriesSound() ? context.sound.flipbookWav() : QByteArray());
     PendingFile pending(target);
     QString reason;
     if (!pending.open(&reason))

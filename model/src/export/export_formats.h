@@ -2,6 +2,7 @@
 #pragma once
 
 #include "../reference/reference_export.h"
+#include "export_sound.h"
 
 #include <finbook/model/export/export_plan.h>
 #include <finbook/model/export/frame_solids.h>
@@ -20,6 +21,7 @@ struct ExportContext {
     const ExportPlan &plan;
     const ExportProgress &progress;
     const ExportReference &reference;
+    const ExportSoundtrack &sound;
 
     // Reports progress; true when the caller asked to stop.
     bool cancelled(qint64 done, qint64 total) const { return progress && !progress(done, total); }

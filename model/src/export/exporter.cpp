@@ -219,16 +219,39 @@ Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
     if (auto error = checkExportSize(*plan, options))
         return unexpected(*error);
     const ExportReference reference(source, options);
-    const ExportContext context{source, options, *plan, progress, reference};
-    if (exportsSequence(options.format))
-        return exportSequence(context);
-    if (options.format == ExportFormat::Html)
-        return exportFlipbook(context);
-    if (options.format == ExportFormat::Obj)
-        return exportObj(context);
-    if (options.format == ExportFormat::Glb)
-        return exportGlb(context);
-    return exportEncoded(context);
+    const ExportSoundtrack sound(source, options, *plan);
+    // Media that cannot be used is said once, whatever the format: left out with a note, or
+    // (strict) the export refused before anything is written.
+    QStringList problems = sound.problems();
+    if (problems.size() > 3) { // one line on a terminal, not one per clip of 256
+        const auto more = int(problems.size() - 2);
+        problems.resize(2);
+        problems << Export::tr("%n more sound clip(s) are left out too.", nullptr, more);
+    }
+    if (!reference.problem().isEmpty())
+        problems << reference.problem();
+    if (options.strictMedia && !problems.isEmpty())
+        return unexpected(exportError(ExportErrorCode::MediaUnusable,
+                                      problems.join(QLatin1Char(' ')) + QLatin1Char(' ') +
+                                          Export::tr("Nothing was exported.")));
+    const ExportContext context{source, options, *plan, progress, reference, sound};
+    auto result = [&]() -> Expected<ExportResult, ExportError> {
+        if (exportsSequence(options.format))
+            return exportSequence(context);
+        if (options.format == ExportFormat::Html)
+            return exportFlipbook(context);
+        if (options.format == ExportFormat::Obj)
+            return exportObj(context);
+        if (options.format == ExportFormat::Glb)
+            return exportGlb(context);
+        return exportEncoded(context);
+    }();
+    if (result && !problems.isEmpty()) {
+        if (!result->note.isEmpty())
+            problems.prepend(result->note);
+        result->note = problems.join(QLatin1Char(' '));
+    }
+    return result;
 }
 
 } // namespace finbook::model

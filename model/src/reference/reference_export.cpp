@@ -1,5 +1,7 @@
 #include "reference_export.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 
 namespace finbook::model {
@@ -12,8 +14,11 @@ ExportReference::ExportReference(const ExportSource &source, const ExportOptions
         m_reference.opacity <= 0.0)
         return;
     auto media = ReferenceMedia::open(m_reference);
-    if (!media)
+    if (!media) {
+        m_problem = QCoreApplication::translate("Export", "The reference \"%1\" is left out: %2")
+                        .arg(m_reference.name, media.error());
         return;
+    }
     m_media = *media;
     // A few frames: an export walks forward, so the decoder seldom seeks.
     m_media->setCacheLimit(qint64(64) << 20);

@@ -14,6 +14,9 @@ public:
     // reference whose media decodes.
     ExportReference(const ExportSource &source, const ExportOptions &options);
     bool isEmpty() const { return !m_media; }
+    // A sentence when the reference was asked for but cannot be used (its media does not
+    // decode, or passes the limits); empty otherwise.
+    const QString &problem() const { return m_problem; }
     const Reference &reference() const { return m_reference; }
     // The picture under document frame `frameIndex`; null when empty.
     QImage picture(int frameIndex) const;
@@ -23,6 +26,7 @@ private:
     std::shared_ptr<ReferenceMedia> m_media;
     std::vector<qint64> m_startTicks; // per document frame
     int m_fps = 12;
+    QString m_problem;
 };
 
 } // namespace finbook::model

@@ -1,6 +1,7 @@
 // importReferenceFile: reading a picture or video file into a Reference, refusing what does
 // not decode before anything in the document changes.
 #include "reference_files.h"
+#include "reference_svg.h"
 #include "video_decoder.h"
 
 #include <finbook/model/reference/reference_media.h>
@@ -73,7 +74,7 @@ Expected<Reference, QString> importReferenceFile(const QString &path, QSizeF can
     reference.name = name;
     reference.bytes = bytes;
     reference.kind = ReferenceKind::Image;
-    if (!qtReadsStill(bytes)) {
+    if (!reference_detail::looksLikeSvg(bytes) && !qtReadsStill(bytes)) {
         QString error;
         const auto decoder = reference_detail::VideoDecoder::open(bytes, &error);
         if (!decoder)

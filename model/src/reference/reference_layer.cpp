@@ -114,10 +114,19 @@ std::shared_ptr<ReferenceMedia> ReferenceLayer::media() const
     if (!m_mediaOpened && !m_reference.isEmpty()) {
         m_mediaOpened = true;
         auto opened = ReferenceMedia::open(m_reference);
-        if (opened)
+        if (opened) {
             m_media = *opened;
-        else
+        } else {
             m_mediaError = opened.error();
+            // Queued: media() is asked for in the middle of painting.
+            auto *self = const_cast<ReferenceLayer *>(this);
+            QMetaObject::invokeMethod(
+                self,
+                [self, name = m_reference.name, why = m_mediaError] {
+                    emit self->mediaFailed(name, why);
+                },
+                Qt::QueuedConnection);
+        }
     }
     return m_media;
 }

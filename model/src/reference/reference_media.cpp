@@ -1,4 +1,5 @@
 // ReferenceMedia: the still image, or a video decoder behind a byte-bounded LRU frame cache.
+#include "reference_svg.h"
 #include "video_decoder.h"
 
 #include <finbook/model/reference/reference_media.h>
@@ -19,9 +20,12 @@ namespace {
 constexpr qint64 kDefaultCacheBytes = qint64(256) << 20;
 constexpr qint64 kKeptOnTheWay = 16; // frames before the one asked for, kept from a seek
 
+constexpr int kMaxStillSide = 16384;
+constexpr qint64 kMaxStillPixels = qint64(8192) * 8192;
+
 // Qt's own readers first (they know a picture's orientation, colour space, animation); null
-// when none reads the bytes.
-QImage readWithQt(const QByteArray &bytes)
+// when none reads the bytes. `svg` is set when the bytes are SVG (renderSvg's alone).
+QImage readWithQt(const QByteArray &bytes, bool *svg)
 {
     QBuffer buffer;
     buffer.setData(bytes);
@@ -30,17 +34,32 @@ QImage readWithQt(const QByteArray &bytes)
     reader.setAutoTransform(true);
     if (!reader.canRead())
         return {};
-    const QSize size = reader.size();
-    if (size.isValid() && (size.width() > 16384 || size.height() > 16384))
+    if (reader.format() == "svg" || reader.format() == "svgz") {
+        *svg = true; // Qt's SVG reader has no limits: never through it
         return {};
-    return reader.read();
+    }
+    const QSize size = reader.size();
+    if (size.isValid() && (size.width() > kMaxStillSide || size.height() > kMaxStillSide ||
+                           qint64(size.width()) * size.height() > kMaxStillPixels))
+        return {};
+    // What decoded is checked as well as what the header said.
+    QImage image = reader.read();
+    if (image.width() > kMaxStillSide || image.height() > kMaxStillSide ||
+        qint64(image.width()) * image.height() > kMaxStillPixels)
+        return {};
+    return image;
 }
 
 // One still picture in the cache's format; null with `error` set when none decodes.
-QImage decodeStill(const QByteArray &bytes, QString *error)
+QImage decodeStill(const QByteArray &bytes, QString *error, double *svgBudget = nullptr)
 {
-    QImage image = readWithQt(bytes);
-    if (image.isNull()) {
+    bool svg = reference_detail::looksLikeSvg(bytes);
+    QImage image = svg ? QImage() : readWithQt(bytes, &svg);
+    if (svg) {
+        image = reference_detail::renderSvg(bytes, error, svgBudget);
+        if (image.isNull())
+            return {};
+    } else if (image.isNull()) {
         auto decoder = reference_detail::VideoDecoder::open(bytes, error);
         if (!decoder)
             return {};
@@ -64,6 +83,8 @@ struct ReferenceMedia::Cache {
     std::unordered_map<qint64, std::list<std::pair<qint64, QImage>>::iterator> index;
     qint64 bytes = 0;
     qint64 limit = kDefaultCacheBytes;
+    // CPU seconds left for a sequence's SVG pictures (reference_svg.h), under `decoder`.
+    double svgSeconds = 10.0;
 
     void trim()
     {
@@ -115,7 +136,8 @@ Expected<std::shared_ptr<ReferenceMedia>, QString> ReferenceMedia::open(const Re
     std::shared_ptr<ReferenceMedia> media(new ReferenceMedia());
     media->m_kind = ReferenceKind::Sequence;
     QString error;
-    const QImage first = decodeStill(reference.pictures.front(), &error);
+    const QImage first =
+        decodeStill(reference.pictures.front(), &error, &media->m_cache->svgSeconds);
     if (first.isNull())
         return unexpected(error);
     media->m_size = first.size();
@@ -191,7 +213,8 @@ QImage ReferenceMedia::frame(qint64 index)
     };
     if (m_kind == ReferenceKind::Sequence) {
         QString error;
-        const QImage image = decodeStill(m_pictures[qsizetype(index)], &error);
+        // Under the decoder's lock: the SVG time left is this media's alone.
+        const QImage image = decodeStill(m_pictures[qsizetype(index)], &error, &c.svgSeconds);
         if (!image.isNull())
             insert(index, image);
         return image;

@@ -44,6 +44,8 @@ struct VideoDecoder::State {
     bool havePending = false;
     bool draining = false;
     int stream = -1;
+    int width = 0; // as the stream's header says
+    int height = 0;
     double timeBase = 0.0;
     qint64 startPts = 0;
     qint64 decoded = 0;
@@ -135,18 +137,22 @@ struct VideoDecoder::State {
         haveCurrent = havePending = draining = false;
     }
 
+    // The frame as a picture of the size the stream announced (`width` × `height`): a frame
+    // that decodes to another size (a stream that changes size midway, or lies in its header)
+    // is scaled to it, so every picture of the reference costs what its header said.
     QImage convert(const AVFrame *f)
     {
-        if (f->width <= 0 || f->height <= 0 || f->width > kMaxSide || f->height > kMaxSide)
+        if (f->width <= 0 || f->height <= 0 || f->width > kMaxSide || f->height > kMaxSide ||
+            qint64(f->width) * f->height > kMaxPixels)
             return {};
         const auto source = AVPixelFormat(f->format);
         const AVPixFmtDescriptor *desc = av_pix_fmt_desc_get(source);
         const bool alpha = desc && (desc->flags & AV_PIX_FMT_FLAG_ALPHA);
-        QImage image(f->width, f->height, alpha ? QImage::Format_ARGB32 : QImage::Format_RGB32);
+        QImage image(width, height, alpha ? QImage::Format_ARGB32 : QImage::Format_RGB32);
         if (image.isNull())
             return {};
         // AV_PIX_FMT_RGB32 is 0xAARRGGBB in a native-endian word, as QImage's ARGB32 is.
-        sws = sws_getCachedContext(sws, f->width, f->height, source, f->width, f->height,
+        sws = sws_getCachedContext(sws, f->width, f->height, source, width, height,
                                    AV_PIX_FMT_RGB32, SWS_BILINEAR, nullptr, nullptr, nullptr);
         if (!sws)
             return {};
@@ -190,6 +196,10 @@ std::unique_ptr<VideoDecoder> VideoDecoder::open(const QByteArray &bytes, QStrin
     if (avformat_open_input(&s->format, nullptr, nullptr, nullptr) < 0)
         return fail(QT_TRANSLATE_NOOP("Reference", "It is not a picture or a video Finbook can "
                                                    "read, or it is damaged."));
+    // FFmpeg renders SVG with librsvg, without the limits renderSvg (reference_svg.h) keeps.
+    if (s->format->iformat && std::strstr(s->format->iformat->name, "svg"))
+        return fail(QT_TRANSLATE_NOOP("Reference", "It is not a picture or a video Finbook can "
+                                                   "read, or it is damaged."));
     if (avformat_find_stream_info(s->format, nullptr) < 0)
         return fail(QT_TRANSLATE_NOOP("Reference", "It is damaged: its streams cannot be read."));
     const AVCodec *codec = nullptr;
@@ -210,6 +220,13 @@ std::unique_ptr<VideoDecoder> VideoDecoder::open(const QByteArray &bytes, QStrin
         avcodec_parameters_to_context(s->codec, par) < 0)
         return fail(QT_TRANSLATE_NOOP("Reference", "There is not enough memory to read it."));
     s->codec->thread_count = 2;
+    // Checked against the decoded frames, not only the header: FFmpeg refuses to allocate a
+    // frame larger than this, so a header that says 64 px over frames 16,000 px wide costs
+    // nothing. The margin leaves room for codecs' coded sizes (whole macroblocks).
+    s->width = par->width;
+    s->height = par->height;
+    s->codec->max_pixels =
+        std::min<qint64>(kMaxPixels, qint64(par->width + 64) * (par->height + 64));
     if (avcodec_open2(s->codec, codec, nullptr) < 0)
         return fail(QT_TRANSLATE_NOOP("Reference", "Its pictures cannot be decoded."));
     s->timeBase = av_q2d(stream->time_base);
@@ -224,8 +241,7 @@ std::unique_ptr<VideoDecoder> VideoDecoder::open(const QByteArray &bytes, QStrin
 
 QSize VideoDecoder::size() const
 {
-    const AVCodecParameters *par = m->format->streams[m->stream]->codecpar;
-    return QSize(par->width, par->height);
+    return QSize(m->width, m->height);
 }
 
 double VideoDecoder::frameRate() const

@@ -14,9 +14,17 @@ SoundCache::SoundCache(Document *document, QObject *parent)
     m_pool.setMaxThreadCount(1);
     connect(&document->soundtrack(), &Soundtrack::clipsChanged, this, &SoundCache::requestAll);
     connect(document, &Document::documentReset, this, [this] {
-        for (auto it = m_entries.begin(); it != m_entries.end();)
-            it = it->pending || m_doc->soundtrack().clip(it.key()) ? std::next(it)
-                                                                   : m_entries.erase(it);
+        for (auto it = m_entries.begin(); it != m_entries.end();) {
+            if (it->pending || m_doc->soundtrack().clip(it.key())) {
+                ++it;
+                continue;
+            }
+            m_bytes -= it->bytes;
+            if (it->sound)
+                m_budget->refund(it->sound->frames());
+            it = m_entries.erase(it);
+        }
+        m_budget->setSoundtrackBytes(m_bytes);
     });
     requestAll();
 }
@@ -37,13 +45,21 @@ void SoundCache::request(const SoundClip &clip)
 {
     if (m_entries.contains(clip.id))
         return;
-    m_entries[clip.id].pending = true;
+    Entry &entry = m_entries[clip.id];
+    entry.pending = true;
+    entry.bytes = clip.bytes.size();
+    m_bytes += entry.bytes;
+    m_budget->setSoundtrackBytes(m_bytes);
     const Id id = clip.id;
     const QByteArray bytes = clip.bytes;
     auto cancelled = m_cancelled;
-    m_pool.start([this, id, bytes, cancelled] {
+    auto budget = m_budget;
+    m_pool.start([this, id, bytes, cancelled, budget] {
         QThread::currentThread()->setPriority(QThread::LowPriority);
-        auto decoded = decodeSound(bytes, cancelled.get());
+        // One clip at a time (one thread): each is charged before the next one starts.
+        auto decoded = decodeSound(bytes, cancelled.get(), budget->limitsFor(bytes.size()));
+        if (decoded)
+            budget->spend(decoded->frames());
         if (cancelled->load())
             return;
         DecodedSoundPtr sound;
@@ -73,10 +89,17 @@ void SoundCache::request(const SoundClip &clip)
     });
 }
 
-void SoundCache::insert(Id clipId, DecodedSoundPtr sound, WaveformPtr waveform)
+void SoundCache::insert(Id clipId, DecodedSoundPtr sound, WaveformPtr waveform, qint64 encodedBytes)
 {
     Entry &e = m_entries[clipId];
-    e = Entry{std::move(sound), std::move(waveform), {}, false};
+    m_bytes += encodedBytes - e.bytes;
+    e.bytes = encodedBytes;
+    m_budget->setSoundtrackBytes(m_bytes);
+    if (e.sound)
+        m_budget->refund(e.sound->frames());
+    if (sound)
+        m_budget->spend(sound->frames());
+    e = Entry{std::move(sound), std::move(waveform), {}, false, encodedBytes};
     emit soundReady(clipId);
 }
 

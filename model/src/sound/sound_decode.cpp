@@ -111,27 +111,141 @@ qint64 missingWavBytes(const QByteArray &bytes)
     return -1;
 }
 
-// Converts `frame` (null: flush the resampler) and appends to `out`.
-bool convert(SwrContext *swr, const AVFrame *frame, std::vector<float> &out)
+// Decoded samples gathered in blocks, so that growing never copies what is there (a vector
+// doubling its buffer held three times the sound for a moment) and the whole never exceeds
+// `maxSamples`: each conversion is checked before it is allocated.
+class SampleBlocks {
+public:
+    explicit SampleBlocks(qint64 maxSamples)
+        : m_max(maxSamples)
+    {}
+    qint64 size() const { return m_size; }
+    bool full() const { return m_over || m_size > m_max; }
+    // Converts `frame` (null: flush the resampler) and appends it. False when the resampler
+    // fails; full() when it would pass the limit (nothing is appended then).
+    bool convert(SwrContext *swr, const AVFrame *frame)
+    {
+        const int in = frame ? frame->nb_samples : 0;
+        const int room = swr_get_out_samples(swr, in);
+        if (room < 0)
+            return false;
+        // Counted before allocating: a frame of millions of samples at a low rate asks for
+        // more than the whole clip may hold.
+        if (m_size + qint64(room) * kSoundChannels > m_max + kSlack) {
+            m_over = true;
+            return true;
+        }
+        m_scratch.resize(std::size_t(room) * kSoundChannels);
+        uint8_t *dst = reinterpret_cast<uint8_t *>(m_scratch.data());
+        const int got =
+            swr_convert(swr, &dst, room,
+                        frame ? const_cast<const uint8_t **>(frame->extended_data) : nullptr, in);
+        if (got < 0)
+            return false;
+        append(m_scratch.data(), qint64(got) * kSoundChannels);
+        return true;
+    }
+    // The samples as one vector, at most `limit` of them; the blocks are freed on the way.
+    std::vector<qint16> take(qint64 limit)
+    {
+        std::vector<qint16> all(std::size_t(std::min(m_size, limit)));
+        std::size_t at = 0;
+        for (std::vector<qint16> &block : m_blocks) {
+            const std::size_t n = std::min(block.size(), all.size() - at);
+            std::copy_n(block.begin(), n, all.begin() + std::ptrdiff_t(at));
+            at += n;
+            std::vector<qint16>().swap(block);
+        }
+        m_blocks.clear();
+        m_size = 0;
+        return all;
+    }
+
+private:
+    static constexpr std::size_t kBlock = std::size_t(1) << 20; // samples (2 MB)
+    // A conversion may pass the limit by this much (one packet's worth) before it is refused.
+    static constexpr qint64 kSlack = kSoundRate * kSoundChannels;
+    void append(const qint16 *from, qint64 count)
+    {
+        while (count > 0) {
+            if (m_blocks.empty() || m_blocks.back().size() == kBlock) {
+                m_blocks.emplace_back();
+                m_blocks.back().reserve(kBlock);
+            }
+            std::vector<qint16> &block = m_blocks.back();
+            const auto n = std::min<qint64>(count, qint64(kBlock - block.size()));
+            block.insert(block.end(), from, from + n);
+            from += n;
+            count -= n;
+            m_size += n;
+        }
+    }
+    qint64 m_max;
+    qint64 m_size = 0;
+    bool m_over = false; // a conversion was refused: it would have passed the limit
+    std::vector<std::vector<qint16>> m_blocks;
+    std::vector<qint16> m_scratch;
+};
+
+bool rateAllowed(int rate)
 {
-    const int in = frame ? frame->nb_samples : 0;
-    const int room = swr_get_out_samples(swr, in);
-    if (room < 0)
-        return false;
-    const std::size_t at = out.size();
-    out.resize(at + std::size_t(room) * kSoundChannels);
-    uint8_t *dst = reinterpret_cast<uint8_t *>(out.data() + at);
-    const int got = swr_convert(
-        swr, &dst, room, frame ? const_cast<const uint8_t **>(frame->extended_data) : nullptr, in);
-    if (got < 0)
-        return false;
-    out.resize(at + std::size_t(got) * kSoundChannels);
-    return true;
+    return rate >= kMinSoundSourceRate && rate <= kMaxSoundSourceRate;
+}
+
+QString rateRefused(int rate)
+{
+    return SoundText::tr("Its sample rate, %1 Hz, is outside the %2 to %3 Hz Finbook plays (real "
+                         "recordings use 8,000 to 192,000).")
+        .arg(rate)
+        .arg(kMinSoundSourceRate)
+        .arg(kMaxSoundSourceRate);
+}
+
+QString minutes(double seconds)
+{
+    return QString::number(seconds / 60.0, 'f', seconds < 600 ? 1 : 0);
+}
+
+QString tooMuchForItsSize(qint64 bytes, qint64 maxFrames)
+{
+    return SoundText::tr("It holds more sound than a file of %1 KB can hold when it is real "
+                         "sound (more than %2 min; hostile or damaged files announce hours of "
+                         "sound in a few kilobytes). Convert it to WAV, FLAC or MP3 and import it "
+                         "again.")
+        .arg((bytes + 1023) / 1024)
+        .arg(minutes(double(maxFrames) / kSoundRate));
 }
 } // namespace
 
+double soundSecondsAllowed(qint64 encodedBytes, double cap)
+{
+    return std::min(cap, kFreeSoundSeconds +
+                             double(std::max<qint64>(0, encodedBytes)) / kMinSoundBytesPerSecond);
+}
+
+void SoundBudget::setSoundtrackBytes(qint64 bytes)
+{
+    m_allowed = qint64(soundSecondsAllowed(bytes, kMaxSoundtrackSeconds) * kSoundRate);
+}
+
+SoundDecodeLimits SoundBudget::limitsFor(qint64 clipBytes, qint64 wantedFrames) const
+{
+    SoundDecodeLimits limits;
+    limits.wantedFrames = wantedFrames;
+    const auto own = qint64(soundSecondsAllowed(clipBytes) * kSoundRate);
+    const qint64 left = std::max<qint64>(0, m_allowed - m_spent);
+    limits.maxFrames = std::min(own, left);
+    if (left < own)
+        limits.tooLong =
+            SoundText::tr("With the soundtrack's other clips it would make more than %1 min of "
+                          "sound, the most Finbook decodes from sound files of this size.")
+                .arg(minutes(double(m_allowed) / kSoundRate));
+    return limits;
+}
+
 Expected<DecodedSound, QString> decodeSound(const QByteArray &bytes,
-                                            const std::atomic<bool> *cancelled)
+                                            const std::atomic<bool> *cancelled,
+                                            const SoundDecodeLimits &limits)
 {
     if (bytes.isEmpty())
         return unexpected(SoundText::tr("The file is empty."));
@@ -164,14 +278,24 @@ Expected<DecodedSound, QString> decodeSound(const QByteArray &bytes,
     if (stream < 0 || !decoder)
         return unexpected(SoundText::tr("The file holds no sound Finbook can play."));
     const AVStream *st = g.format->streams[stream];
+    // Refused before a decoder exists: a rate of 1 Hz resampled to 48 kHz multiplies the
+    // file's samples by 48,000.
+    if (const int rate = st->codecpar->sample_rate; rate > 0 && !rateAllowed(rate))
+        return unexpected(rateRefused(rate));
     g.codec = avcodec_alloc_context3(decoder);
     if (!g.codec || avcodec_parameters_to_context(g.codec, st->codecpar) < 0 ||
         avcodec_open2(g.codec, decoder, nullptr) < 0)
         return unexpected(notSound());
     if (g.codec->sample_rate <= 0 || g.codec->ch_layout.nb_channels <= 0)
         return unexpected(notSound());
+    if (!rateAllowed(g.codec->sample_rate))
+        return unexpected(rateRefused(g.codec->sample_rate));
+    if (g.codec->ch_layout.nb_channels > kMaxSoundSourceChannels)
+        return unexpected(SoundText::tr("It has %1 channels; Finbook plays at most %2.")
+                              .arg(g.codec->ch_layout.nb_channels)
+                              .arg(kMaxSoundSourceChannels));
     AVChannelLayout stereo = AV_CHANNEL_LAYOUT_STEREO;
-    if (swr_alloc_set_opts2(&g.swr, &stereo, AV_SAMPLE_FMT_FLT, kSoundRate, &g.codec->ch_layout,
+    if (swr_alloc_set_opts2(&g.swr, &stereo, AV_SAMPLE_FMT_S16, kSoundRate, &g.codec->ch_layout,
                             g.codec->sample_fmt, g.codec->sample_rate, 0, nullptr) < 0 ||
         swr_init(g.swr) < 0)
         return unexpected(notSound());
@@ -180,45 +304,65 @@ Expected<DecodedSound, QString> decodeSound(const QByteArray &bytes,
     if (!g.packet || !g.frame)
         return unexpected(SoundText::tr("There is not enough memory to read the sound."));
 
-    DecodedSound sound;
-    const auto maxSamples = std::size_t(kMaxSoundSeconds * kSoundRate) * kSoundChannels;
+    const qint64 maxFrames = limits.maxFrames >= 0
+                                 ? limits.maxFrames
+                                 : qint64(soundSecondsAllowed(bytes.size()) * kSoundRate);
+    const qint64 wanted = limits.wantedFrames >= 0 ? std::min(limits.wantedFrames, maxFrames) : -1;
+    // What decoding reads, bounded too: source samples of every channel at the source rate.
+    const qint64 maxSourceSamples =
+        (maxFrames + kSoundRate) * kSoundChannels * kMaxSoundSourceFactor;
+    qint64 sourceSamples = 0;
+    SampleBlocks blocks(maxFrames * kSoundChannels);
     int badPackets = 0;
-    const auto drain = [&]() -> bool {
-        while (avcodec_receive_frame(g.codec, g.frame) == 0) {
-            if (!convert(g.swr, g.frame, sound.samples))
-                return false;
+    bool failed = false;
+    const auto drain = [&]() {
+        while (!failed && !blocks.full() && avcodec_receive_frame(g.codec, g.frame) == 0) {
+            sourceSamples += qint64(g.frame->nb_samples) * g.frame->ch_layout.nb_channels;
+            if (g.frame->sample_rate != g.codec->sample_rate ||
+                g.frame->ch_layout.nb_channels != g.codec->ch_layout.nb_channels ||
+                !blocks.convert(g.swr, g.frame))
+                failed = true; // a stream that changes its rate or channels midway
             av_frame_unref(g.frame);
         }
-        return true;
     };
-    bool tooLong = false;
-    while (av_read_frame(g.format, g.packet) >= 0) {
+    const auto enough = [&] {
+        return blocks.full() || sourceSamples > maxSourceSamples ||
+               (wanted >= 0 && blocks.size() >= wanted * kSoundChannels);
+    };
+    while (!failed && !enough() && av_read_frame(g.format, g.packet) >= 0) {
         if (cancelled && *cancelled)
             return unexpected(QString());
         if (g.packet->stream_index == stream) {
             if (avcodec_send_packet(g.codec, g.packet) < 0)
                 ++badPackets;
-            if (!drain())
-                return unexpected(notSound());
+            drain();
         }
         av_packet_unref(g.packet);
-        if (sound.samples.size() > maxSamples) {
-            tooLong = true;
-            break;
-        }
     }
-    avcodec_send_packet(g.codec, nullptr);
-    if (!drain() || !convert(g.swr, nullptr, sound.samples))
+    const bool stopped = wanted >= 0 && blocks.size() >= wanted * kSoundChannels;
+    if (!failed && !enough()) {
+        avcodec_send_packet(g.codec, nullptr);
+        drain();
+        if (!failed && !blocks.full())
+            failed = !blocks.convert(g.swr, nullptr);
+    }
+    if (failed)
         return unexpected(notSound());
-    if (tooLong)
-        return unexpected(SoundText::tr("The sound is longer than %1 minutes, the longest "
-                                        "Finbook plays.")
-                              .arg(int(kMaxSoundSeconds / 60)));
+    if (!stopped && (blocks.full() || sourceSamples > maxSourceSamples)) {
+        if (maxFrames >= qint64(kMaxSoundSeconds * kSoundRate))
+            return unexpected(SoundText::tr("The sound is longer than %1 minutes, the longest "
+                                            "Finbook plays.")
+                                  .arg(int(kMaxSoundSeconds / 60)));
+        return unexpected(limits.tooLong.isEmpty() ? tooMuchForItsSize(bytes.size(), maxFrames)
+                                                   : limits.tooLong);
+    }
+    DecodedSound sound;
+    sound.samples = blocks.take(wanted >= 0 ? wanted * kSoundChannels : maxFrames * kSoundChannels);
     if (sound.samples.empty())
         return unexpected(SoundText::tr("The file holds no sound Finbook can play (no audio could "
                                         "be decoded from it)."));
     // Cut short: far less sound than the container announces (a truncated download or copy).
-    if (g.format->duration > 0) {
+    if (!stopped && g.format->duration > 0) {
         const double announced = double(g.format->duration) / AV_TIME_BASE;
         if (sound.seconds() < 0.9 * announced - 0.05)
             return unexpected(
@@ -229,10 +373,6 @@ Expected<DecodedSound, QString> decodeSound(const QByteArray &bytes,
     }
     if (badPackets > 0 && badPackets * 10 > 1 + int(sound.seconds()))
         return unexpected(notSound());
-    for (float &s : sound.samples)
-        if (!std::isfinite(s))
-            s = 0.0f;
-    sound.samples.shrink_to_fit();
     return sound;
 }
 
@@ -254,15 +394,15 @@ Waveform computeWaveform(const DecodedSound &sound)
     const qint64 frames = sound.frames();
     Waveform w;
     w.peaks.resize(std::size_t((frames + kFramesPerBucket - 1) / kFramesPerBucket));
-    const float *s = sound.samples.data();
+    const qint16 *s = sound.samples.data();
     for (std::size_t b = 0; b < w.peaks.size(); ++b) {
         const qint64 begin = qint64(b) * kFramesPerBucket * kSoundChannels;
         const qint64 end = std::min<qint64>(begin + kFramesPerBucket * kSoundChannels,
                                             qint64(sound.samples.size()));
-        float peak = 0.0f;
+        int peak = 0;
         for (qint64 i = begin; i < end; ++i)
-            peak = std::max(peak, std::abs(s[i]));
-        w.peaks[b] = std::min(peak, 1.0f);
+            peak = std::max(peak, std::abs(int(s[i])));
+        w.peaks[b] = std::min(float(peak) * DecodedSound::kScale, 1.0f);
     }
     return w;
 }

@@ -48,11 +48,11 @@ void mixSoundtrack(const std::vector<SoundClip> &clips, const SoundLookup &looku
         if (o.length <= 0)
             continue;
         any = true;
-        const auto gain = float(clip.volume);
-        const float *src = sound->samples.data() + o.clipAt * kSoundChannels;
+        const auto gain = float(clip.volume) * DecodedSound::kScale;
+        const qint16 *src = sound->samples.data() + o.clipAt * kSoundChannels;
         float *dst = out + o.outAt * kSoundChannels;
         for (qint64 i = 0; i < o.length * kSoundChannels; ++i)
-            dst[i] += gain * src[i];
+            dst[i] += gain * float(src[i]);
     }
     if (any)
         for (qint64 i = 0; i < count * kSoundChannels; ++i)
@@ -83,8 +83,14 @@ QByteArray mixToWav(const std::vector<SoundClip> &clips, const SoundLookup &look
 
 QByteArray wavBytes(const std::vector<float> &samples, int rate, int channels)
 {
-    const quint32 dataBytes = quint32(samples.size() * 2);
-    QByteArray wav(44 + qsizetype(dataBytes), '\0');
+    return wavHeader(qint64(samples.size()), rate, channels) + pcmBytes(samples);
+}
+
+QByteArray wavHeader(qint64 samples, int rate, int channels)
+{
+    // A WAV counts its bytes in 32 bits: a longer mix says the most it can (players read on).
+    const auto dataBytes = quint32(std::min<qint64>(samples * 2, 0xffffffffll - 36));
+    QByteArray wav(44, '\0');
     char *p = wav.data();
     const auto u32 = [&p](quint32 v) {
         qToLittleEndian<quint32>(v, p);
@@ -111,9 +117,19 @@ QByteArray wavBytes(const std::vector<float> &samples, int rate, int channels)
     u16(16);
     text("data");
     u32(dataBytes);
-    for (float s : samples)
-        u16(quint16(qint16(std::lround(std::clamp(s, -1.0f, 1.0f) * 32767.0f))));
     return wav;
+}
+
+QByteArray pcmBytes(const std::vector<float> &samples)
+{
+    QByteArray pcm(qsizetype(samples.size() * 2), '\0');
+    char *p = pcm.data();
+    for (float s : samples) {
+        qToLittleEndian<quint16>(
+            quint16(qint16(std::lround(std::clamp(s, -1.0f, 1.0f) * 32767.0f))), p);
+        p += 2;
+    }
+    return pcm;
 }
 
 } // namespace finbook::model

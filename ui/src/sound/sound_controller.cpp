@@ -14,9 +14,11 @@
 #include <QInputDialog>
 #include <QPointer>
 #include <QThreadPool>
+#include <QTimer>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace finbook::ui {
 
@@ -50,12 +52,32 @@ SoundController::SoundController(EditorState *state, PlaybackController *playbac
     if (m_playback)
         m_playback->setClock(m_player);
     connect(m_player, &SoundPlayer::silent, this, &SoundController::message);
+    // Said once for a burst: a document of 256 clips that cannot be played opens with one
+    // message, not 256 in a row.
+    auto *failures = new QTimer(this);
+    failures->setSingleShot(true);
+    failures->setInterval(200);
+    auto failed = std::make_shared<QList<QPair<QString, QString>>>(); // name, why
     connect(m_cache, &model::SoundCache::soundFailed, this,
-            [this](model::Id id, const QString &why) {
+            [this, failures, failed](model::Id id, const QString &why) {
                 const model::SoundClip *clip = m_state->document()->soundtrack().clip(id);
-                if (clip && !why.isEmpty())
-                    emit message(tr("The sound \"%1\" cannot be played: %2").arg(clip->name, why));
+                if (clip && !why.isEmpty()) {
+                    failed->append({clip->name, why});
+                    failures->start();
+                }
             });
+    connect(failures, &QTimer::timeout, this, [this, failed] {
+        if (failed->isEmpty())
+            return;
+        const auto &[name, why] = failed->front();
+        if (failed->size() == 1)
+            emit message(tr("The sound \"%1\" cannot be played: %2").arg(name, why));
+        else
+            emit message(
+                tr("%n sound(s) cannot be played; \"%1\": %2", nullptr, int(failed->size()))
+                    .arg(name, why));
+        failed->clear();
+    });
     connect(m_state, &EditorState::currentFrameChanged, this, &SoundController::frameShown);
 }
 
@@ -125,7 +147,7 @@ void SoundController::importSound(const QString &path)
                 clip.bytes = bytes;
                 clip.start = std::min(start, model::kMaxSoundStart);
                 auto *command = new model::AddSoundClipCommand(doc, clip);
-                self->m_cache->insert(command->clipId(), sound, waveform);
+                self->m_cache->insert(command->clipId(), sound, waveform, bytes.size());
                 doc->undoStack()->push(command);
                 emit self->importFinished(
                     command->clipId(),

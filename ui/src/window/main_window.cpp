@@ -226,6 +226,12 @@ void MainWindow::connectStatus()
     connect(m_doc, &model::Document::documentReset, this, &MainWindow::updateStatus);
     connect(m_canvas, &CanvasWidget::messagePosted, this,
             [this](const QString &message) { statusBar()->showMessage(message, 6000); });
+    // Said once per reference: the document opens and plays without it.
+    connect(&m_doc->referenceLayer(), &model::ReferenceLayer::mediaFailed, this,
+            [this](const QString &name, const QString &why) {
+                statusBar()->showMessage(
+                    tr("The reference \"%1\" cannot be shown: %2").arg(name, why), 15000);
+            });
     connect(m_canvas, &CanvasWidget::cursorMoved, this, [this](const QPointF &p) {
         // lround is undefined past what a long holds: a position a tablet reports far away
         // (or not at all) shows as nothing rather than as a garbage number.

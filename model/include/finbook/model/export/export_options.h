@@ -57,6 +57,10 @@ struct ExportOptions {
     // limits, kMaxSequenceFiles files or kMaxVideoSeconds of video (export_plan.h); a larger
     // export is refused with TooLarge until the user sets this to at least its frame count.
     qint64 maxFrames = 0;
+    // A sound clip or the reference that cannot be used (it does not decode, or passes the
+    // media limits) fails the export with MediaUnusable, before anything is written. Off: it
+    // is left out and ExportResult::note says so.
+    bool strictMedia = false;
 };
 
 // The frames and settings an export reads: a value snapshot (strokes are shared, immutable),
@@ -91,6 +95,7 @@ enum class ExportErrorCode {
     Cancelled,      // the progress callback asked to stop
     TooLarge,       // more frames than the limits allow without options.maxFrames
     TargetBusy,     // another export is writing to the same target
+    MediaUnusable,  // strictMedia: a sound clip or the reference cannot be used
 };
 
 struct ExportError {

@@ -63,6 +63,9 @@ signals:
     // A media frame asked for by requestPicture(), for the media shown now (null: it did not
     // decode).
     void pictureDecoded(qint64 mediaFrame, const QImage &picture);
+    // The reference's media cannot be used (it does not decode, or passes the media limits);
+    // once per reference set, a moment after media() first finds out. `why` is a sentence.
+    void mediaFailed(const QString &name, const QString &why);
 
 private:
     Document *m_doc;

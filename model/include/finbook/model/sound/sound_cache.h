@@ -6,6 +6,9 @@
 // (request) and is told when the work is done (soundReady / soundFailed); it never waits.
 // The worker gets only the clip's bytes (implicitly shared, read-only) and never touches the
 // Document. The destructor cancels the work in flight and waits for it.
+//
+// All the clips it holds share one SoundBudget (sound_decode.h): the sound of a clip that
+// would pass it fails with a message, like a clip that does not decode.
 #pragma once
 
 #include <finbook/model/sound/sound_clip.h>
@@ -30,8 +33,9 @@ public:
 
     // Starts decoding `clip` unless it is done, failed or under way.
     void request(const SoundClip &clip);
-    // Seeds the cache with a sound decoded elsewhere (the import already decoded it).
-    void insert(Id clipId, DecodedSoundPtr sound, WaveformPtr waveform);
+    // Seeds the cache with a sound decoded elsewhere (the import already decoded it) from a
+    // clip of `encodedBytes`.
+    void insert(Id clipId, DecodedSoundPtr sound, WaveformPtr waveform, qint64 encodedBytes = 0);
     DecodedSoundPtr sound(Id clipId) const;
     WaveformPtr waveform(Id clipId) const;
     QString error(Id clipId) const; // empty unless decoding failed
@@ -49,6 +53,7 @@ private:
         WaveformPtr waveform;
         QString error;
         bool pending = false;
+        qint64 bytes = 0; // the clip's encoded bytes, counted into the budget
     };
     void requestAll();
 
@@ -56,6 +61,8 @@ private:
     QHash<Id, Entry> m_entries;
     QThreadPool m_pool;
     std::shared_ptr<std::atomic<bool>> m_cancelled = std::make_shared<std::atomic<bool>>(false);
+    std::shared_ptr<SoundBudget> m_budget = std::make_shared<SoundBudget>();
+    qint64 m_bytes = 0; // of every clip in m_entries
 };
 
 } // namespace finbook::model

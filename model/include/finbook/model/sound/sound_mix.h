@@ -29,6 +29,10 @@ QByteArray mixToWav(const std::vector<SoundClip> &clips, const SoundLookup &look
 
 // A 16-bit WAV file of `samples` (interleaved, `channels` per frame, -1 … 1) at `rate` Hz.
 QByteArray wavBytes(const std::vector<float> &samples, int rate, int channels);
+// The 44 bytes that start such a file of `samples` samples; pcmBytes() gives what follows,
+// block by block (a long mix is written without holding it whole).
+QByteArray wavHeader(qint64 samples, int rate, int channels);
+QByteArray pcmBytes(const std::vector<float> &samples);
 
 // Whether any unmuted clip sounds anywhere in samples [from, from + count).
 bool soundtrackSoundsIn(const std::vector<SoundClip> &clips, const SoundLookup &lookup, int fps,
