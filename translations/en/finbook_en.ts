@@ -193,4 +193,15 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>finbook::ui::FrameActions</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/timeline/frame_actions.cpp" line="126"/>
+        <source>Delete %n Frame(s)</source>
+        <translation>
+            <numerusform>Delete %n Frame</numerusform>
+            <numerusform>Delete %n Frames</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>
