@@ -43,10 +43,10 @@ inline QByteArray sineWav(double seconds, int rate = 44100, double hz = 440.0)
     return wav;
 }
 
-// `seconds` of a sine encoded by ffmpeg into `file` (its extension picks the format), or an
-// empty array when ffmpeg is missing or cannot write that format.
-inline QByteArray ffmpegSine(const QTemporaryDir &dir, const QString &file, double seconds,
-                             const QStringList &codec = {})
+// What ffmpeg writes into `file` (in `dir`) from a lavfi `source` with `options` before the
+// output, or an empty array when ffmpeg is missing, fails or takes over `timeoutMs`.
+inline QByteArray ffmpegOutput(const QTemporaryDir &dir, const QString &file, const QString &source,
+                               const QStringList &options, int timeoutMs)
 {
     const QString ffmpeg = QStandardPaths::findExecutable(QStringLiteral("ffmpeg"));
     if (ffmpeg.isEmpty())
@@ -55,32 +55,29 @@ inline QByteArray ffmpegSine(const QTemporaryDir &dir, const QString &file, doub
     QProcess p;
     p.start(ffmpeg, QStringList{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-y"),
                                 QStringLiteral("-f"), QStringLiteral("lavfi"), QStringLiteral("-i"),
-                                QStringLiteral("sine=frequency=440:duration=%1").arg(seconds),
-                                QStringLiteral("-ac"), QStringLiteral("2")} +
-                        codec + QStringList{path});
-    if (!p.waitForFinished(60000) || p.exitCode() != 0)
+                                source} +
+                        options + QStringList{path});
+    if (!p.waitForFinished(timeoutMs) || p.exitCode() != 0)
         return {};
     QFile f(path);
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// `seconds` of a sine encoded by ffmpeg into `file` (its extension picks the format), or an
+// empty array when ffmpeg is missing or cannot write that format.
+inline QByteArray ffmpegSine(const QTemporaryDir &dir, const QString &file, double seconds,
+                             const QStringList &codec = {})
+{
+    return ffmpegOutput(dir, file, QStringLiteral("sine=frequency=440:duration=%1").arg(seconds),
+                        QStringList{QStringLiteral("-ac"), QStringLiteral("2")} + codec, 60000);
 }
 
 // `seconds` of mono silence at 44.1 kHz encoded by ffmpeg into `file` (a FLAC of an hour of
 // silence is under a megabyte), or an empty array when ffmpeg is missing.
 inline QByteArray ffmpegSilence(const QTemporaryDir &dir, const QString &file, double seconds)
 {
-    const QString ffmpeg = QStandardPaths::findExecutable(QStringLiteral("ffmpeg"));
-    if (ffmpeg.isEmpty())
-        return {};
-    const QString path = dir.filePath(file);
-    QProcess p;
-    p.start(ffmpeg, QStringList{QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-y"),
-                                QStringLiteral("-f"), QStringLiteral("lavfi"), QStringLiteral("-i"),
-                                QStringLiteral("anullsrc=r=44100:cl=mono"), QStringLiteral("-t"),
-                                QString::number(seconds), path});
-    if (!p.waitForFinished(120000) || p.exitCode() != 0)
-        return {};
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    return ffmpegOutput(dir, file, QStringLiteral("anullsrc=r=44100:cl=mono"),
+                        QStringList{QStringLiteral("-t"), QString::number(seconds)}, 120000);
 }
 
 // Imports `bytes` as a clip named `name` through the command, as File → Import Sound does.

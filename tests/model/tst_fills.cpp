@@ -1,5 +1,6 @@
 // Fills: the Fill tool's commands, fills following stroke edits (split, erase, move, undo),
 // every deformer, Apply Pose, Duplicate Frame, in-betweens, rendering and the file.
+#include "bake_support.h"
 #include "fill_support.h"
 
 #include <finbook/model/deform_setup.h>
@@ -120,22 +121,10 @@ Rig bentRig(RigKind kind)
     return rig;
 }
 
-// Poses object g with `rig` as the deform service would: precompute, solve, store the pose.
+// Poses object g with `rig` as the deform service would (bake_support.h).
 bool pose(Document &doc, Id g, const Rig &rig)
 {
-    doc.setRig(g, rig);
-    DeformJob job;
-    job.groupId = g;
-    job.key = MeshKey::of(*doc.group(g), -1.0);
-    job.rig = rig.atRest();
-    const auto setup = buildDeformSetup(job);
-    if (!setup)
-        return false;
-    const auto solved = solvePose(**setup, *doc.group(g));
-    if (!solved)
-        return false;
-    doc.setDeformed(g, solved->strokes);
-    return true;
+    return finbook::testing::poseObject(doc, g, rig).isEmpty();
 }
 } // namespace
 
