@@ -13,6 +13,8 @@
 #include <QJsonObject>
 #include <QTextStream>
 
+#include <cstdio>
+#include <unistd.h>
 #include <unordered_set>
 
 namespace finbook::app {
@@ -172,8 +174,16 @@ int runHeadlessCommand(const QStringList &arguments, QTextStream &out, QTextStre
     }
     if (command == QLatin1String("export"))
         return runExportCommand(positional, out, err);
-    if (command == QLatin1String("thumbnail"))
-        return runThumbnailCommand(positional, err);
+    if (command == QLatin1String("thumbnail")) {
+        const int code = runThumbnailCommand(positional, err);
+        if (thumbnailWorkLeftRunning()) { // the PNG is written; a picture is still painting
+            err.flush();
+            out.flush();
+            std::fflush(nullptr);
+            ::_exit(code);
+        }
+        return code;
+    }
     return fail(err, CommandLine::tr("Unknown command \"%1\"; see finbook --help.").arg(command));
 }
 

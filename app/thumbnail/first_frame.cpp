@@ -12,6 +12,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <new>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -62,6 +63,7 @@ public:
     FileReader &operator=(const FileReader &) = delete;
 
     QString error() const { return m_error; }
+    int descriptor() const { return m_fd; }
     qint64 size() const { return m_size; }
     qint64 bytesRead() const { return m_read; }
 
@@ -347,14 +349,43 @@ FileError thumbnailError(const QString &path, FileErrorCode code, const QString 
                                .arg(QFileInfo(path).fileName(), reason)};
 }
 
+// Every check opening makes, on the whole file mapped into memory (the pages are the file's,
+// read once), keeping nothing of what it holds (ParseMode::Check).
+std::optional<FileError> checkWhole(const QString &path, FileReader &file)
+{
+    if (file.size() == 0)
+        return std::nullopt; // the walk says what is wrong with an empty file
+    void *mapped =
+        ::mmap(nullptr, std::size_t(file.size()), PROT_READ, MAP_PRIVATE, file.descriptor(), 0);
+    if (mapped == MAP_FAILED)
+        return thumbnailError(path, FileErrorCode::OpenFailed,
+                              QString::fromLocal8Bit(std::strerror(errno)) + QLatin1Char('.'));
+    ::madvise(mapped, std::size_t(file.size()), MADV_SEQUENTIAL);
+    std::optional<FileError> error;
+    {
+        const QByteArray bytes =
+            QByteArray::fromRawData(static_cast<const char *>(mapped), qsizetype(file.size()));
+        auto checked = parseFinbook(bytes, ParseMode::Check);
+        if (!checked)
+            error = thumbnailError(path, checked.error().code,
+                                   failureSentence(checked.error().code, checked.error().what));
+    }
+    ::munmap(mapped, std::size_t(file.size()));
+    return error;
+}
+
 } // namespace
 
-Expected<model::LoadedDocument, FileError>
-readFirstFrame(const QString &path, qint64 wholeSectionBytes, qint64 *bytesRead)
+Expected<model::LoadedDocument, FileError> readFirstFrame(const QString &path,
+                                                          qint64 wholeSectionBytes,
+                                                          qint64 *bytesRead, qint64 wholeCheckBytes)
 {
     FileReader file(path);
     if (!file.error().isEmpty())
         return unexpected(thumbnailError(path, FileErrorCode::OpenFailed, file.error()));
+    if (file.size() <= wholeCheckBytes)
+        if (auto error = checkWhole(path, file))
+            return unexpected(*error);
     QByteArray bytes;
     try {
         bytes = firstFrameFile(file, wholeSectionBytes);

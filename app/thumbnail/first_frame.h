@@ -17,13 +17,18 @@ namespace finbook::app {
 
 // Sections up to this size are read whole and their checksums checked.
 constexpr qint64 kWholeSectionBytes = qint64(4) << 20;
+// Files up to this size are first checked whole, as `finbook info` and opening check them
+// (every frame, id, sound clip and reference), without keeping what they hold: a thumbnail is
+// made of exactly the files that open. Larger ones are checked in the parts read.
+constexpr qint64 kWholeCheckBytes = qint64(64) << 20;
 
 // The document holding only the first frame of the file at `path` (its settings as saved).
 // Fails, without reading further, on anything opening the file would refuse in the parts it
 // read: not a regular file, not a .finbook, a newer format, a damaged or cut-off section, a
-// checksum that does not match (sections read whole), values out of range.
+// checksum that does not match (sections read whole), values out of range; and, for a file
+// of at most `wholeCheckBytes`, on anything opening would refuse anywhere in it.
 Expected<model::LoadedDocument, model::FileError>
 readFirstFrame(const QString &path, qint64 wholeSectionBytes = kWholeSectionBytes,
-               qint64 *bytesRead = nullptr);
+               qint64 *bytesRead = nullptr, qint64 wholeCheckBytes = kWholeCheckBytes);
 
 } // namespace finbook::app

@@ -5,6 +5,7 @@
 
 #include <finbook/model/io/printable_text.h>
 #include <finbook/model/render.h>
+#include <finbook/model/shade/fill_shading.h>
 #include <finbook/model/skeleton/cut_out_layers.h>
 
 #include <QBuffer>
@@ -12,6 +13,12 @@
 #include <QFileInfo>
 #include <QSaveFile>
 #include <QTextStream>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 
 namespace finbook::app {
 
@@ -35,7 +42,95 @@ QSize thumbnailSize(QSize canvas, int size)
                  std::max(1, int(canvas.height() * scale + 0.5)));
 }
 
+// Sanitizer builds run several times slower: their thumbnails get that much more time, so the
+// tests that compare a thumbnail with the full picture mean the same there.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kSlowdown = 8;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr int kSlowdown = 8;
+#else
+constexpr int kSlowdown = 1;
+#endif
+#else
+constexpr int kSlowdown = 1;
+#endif
+
+std::atomic<int> g_running{0}; // pictures still being painted after their time ran out
+
+// One picture painted on its own thread, so that the command can stop waiting for it.
+struct Painting {
+    std::mutex mutex;
+    std::condition_variable done;
+    bool finished = false;
+    QImage image;
+};
+
+// Paints `frame` as `options` say on a thread of its own and waits at most `waitMs` for it:
+// the picture, or a null image when it failed or was not ready in time (the thread is then
+// left to finish alone; g_running counts it). The thread owns copies of everything it reads.
+QImage paintWithin(const model::Frame &frame, const model::DocumentSettings &settings, QSize size,
+                   const model::RenderOptions &options, int waitMs)
+{
+    auto painting = std::make_shared<Painting>();
+    ++g_running;
+    try {
+        std::thread([painting, frames = std::vector<model::Frame>{frame}, settings, size,
+                     options]() mutable {
+            QImage image;
+            try {
+                model::restoreCutOutLayers(frames, settings.closeGap);
+                image = model::renderFrame(frames.front(), settings, size, options);
+            } catch (const std::exception &) { // out of memory: no picture at this level
+                image = QImage();
+            }
+            {
+                std::lock_guard lock(painting->mutex);
+                painting->image = std::move(image);
+                painting->finished = true;
+            }
+            painting->done.notify_all();
+            --g_running;
+        }).detach();
+    } catch (const std::exception &) { // no thread to be had
+        --g_running;
+        return QImage();
+    }
+    std::unique_lock lock(painting->mutex);
+    if (!painting->done.wait_for(lock, std::chrono::milliseconds(waitMs),
+                                 [&] { return painting->finished; }))
+        return QImage();
+    return painting->image;
+}
+
+// The picture within the budget: the first frame as the editor shows it when that is ready in
+// kFullPictureMs (and its shading does not ask for more than kShadingVertexBudget vertices),
+// else with its fills flat when that is ready in kFlatPictureMs, else its strokes alone, whose
+// cost follows the points the file holds.
+QImage budgetedPicture(const model::Frame &frame, const model::DocumentSettings &settings,
+                       QSize size)
+{
+    if (model::shadingVertexEstimate(frame) <= kShadingVertexBudget) {
+        QImage full = paintWithin(frame, settings, size, {}, kFullPictureMs * kSlowdown);
+        if (!full.isNull())
+            return full;
+    }
+    model::RenderOptions flat;
+    flat.shading = false;
+    if (QImage picture = paintWithin(frame, settings, size, flat, kFlatPictureMs * kSlowdown);
+        !picture.isNull())
+        return picture;
+    model::RenderOptions strokes;
+    strokes.fills = false;
+    return model::renderFrame(frame, settings, size, strokes);
+}
+
 } // namespace
+
+bool thumbnailWorkLeftRunning()
+{
+    return g_running.load() > 0;
+}
 
 int runThumbnailCommand(const QStringList &arguments, QTextStream &err)
 {
@@ -58,9 +153,8 @@ int runThumbnailCommand(const QStringList &arguments, QTextStream &err)
                     Thumbnail::tr("Cannot make a thumbnail of \"%1\": it has no frame.")
                         .arg(QFileInfo(arguments[0]).fileName()),
                     ExitCode::BadInput);
-    model::restoreCutOutLayers(loaded->frames, loaded->settings.closeGap);
-    const QImage image = model::renderFrame(loaded->frames.front(), loaded->settings,
-                                            thumbnailSize(loaded->settings.canvasSize, size));
+    const QImage image = budgetedPicture(loaded->frames.front(), loaded->settings,
+                                         thumbnailSize(loaded->settings.canvasSize, size));
     QByteArray png;
     QBuffer buffer(&png);
     buffer.open(QIODevice::WriteOnly);

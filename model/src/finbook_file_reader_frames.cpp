@@ -6,6 +6,8 @@
 // renumberClashingIds().
 #include "finbook_file_reader.h"
 
+#include <finbook/model/pins/pin_commands.h>
+
 #include <QStringDecoder>
 
 #include <algorithm>
@@ -140,6 +142,9 @@ StrokeGroup Reader::readObject(Cursor &c)
                     .arg(g.meshDensity));
         g.meshDensity = kDefaultMeshDensity;
     }
+    // The editor sets densities from kMinMeshDensity to kMaxMeshDensity and always has; a file
+    // asking for finer meshes (work and memory grow with the square) gets the finest it makes.
+    g.meshDensity = std::clamp(g.meshDensity, kMinMeshDensity, kMaxMeshDensity);
     g.name = readName(c);
     m_where.objectName = g.name;
     m_where.hasObjectName = true;

@@ -1,11 +1,13 @@
 // `finbook thumbnail`: the first frame read without the rest of the file gives exactly the
 // picture a full open gives, reads a small part of a large file, and every damaged or hostile
 // file ends in exit code 2 with no PNG written.
+#include "../../model/src/io/crc32c.h"
 #include "thumbnail/first_frame.h"
 #include "thumbnail/thumbnail_command.h"
 
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/render.h>
+#include <finbook/model/sound/sound_clip.h>
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -19,6 +21,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <limits>
 #include <sys/stat.h>
 
 using namespace finbook;
@@ -26,6 +29,8 @@ using namespace finbook;
 namespace {
 
 const QString kExample = QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook");
+// readFirstFrame's last argument for testing its own walk over the file, without the whole check.
+constexpr qint64 kNoWholeCheck = -1;
 
 QByteArray readAll(const QString &path)
 {
@@ -82,6 +87,46 @@ QByteArray manyFrames(int frames, int strokes, int points)
     return model::serializeFinbook(list, model::DocumentSettings{});
 }
 
+// Three frames of one object each (ids 1 to 9), a sound clip with id `clipId` and, when
+// `nanInLastFrame`, a point that is not a number in the last frame's stroke.
+QByteArray threeFramesWithSound(model::Id clipId, bool nanInLastFrame = false)
+{
+    std::vector<model::Frame> frames;
+    model::Id id = 1;
+    for (int f = 0; f < 3; ++f) {
+        model::Frame frame;
+        frame.id = id++;
+        model::StrokeGroup group;
+        group.id = id++;
+        group.name = QStringLiteral("object");
+        auto data = std::make_shared<model::StrokeData>();
+        data->points = {{10.0f + f, 10.0f, 1.0f}, {90.0f, 60.0f + f, 1.0f}};
+        if (nanInLastFrame && f == 2)
+            data->points[1].x = std::numeric_limits<float>::quiet_NaN();
+        group.strokes.push_back({id++, data});
+        frame.groups.push_back(std::move(group));
+        frames.push_back(std::move(frame));
+    }
+    model::SoundClip clip;
+    clip.id = clipId;
+    clip.name = QStringLiteral("click.wav");
+    clip.bytes = QByteArray(300, 'x'); // not decoded when read
+    return model::serializeFinbook(frames, model::DocumentSettings{}, {}, {clip});
+}
+
+// `bytes` with the document's next free id set to `next`, its checksum made to match
+// (layout in model/src/finbook_file_format.h: the document section comes first).
+QByteArray withNextId(QByteArray bytes, quint64 next)
+{
+    const qsizetype section = 12, payload = section + 12;
+    const auto length = qsizetype(qFromLittleEndian<quint64>(bytes.constData() + section + 4));
+    qToLittleEndian<quint64>(next, bytes.data() + payload + 25);
+    qToLittleEndian<quint32>(
+        model::io::crc32c(0, bytes.constData() + section, std::size_t(12 + length)),
+        bytes.data() + payload + length);
+    return bytes;
+}
+
 QStringList seedFiles()
 {
     QStringList files;
@@ -116,6 +161,8 @@ private slots:
     void hostileFilesAreRefused_data();
     void hostileFilesAreRefused();
     void randomDamageNeverCrashes();
+    void refusesWhatOpeningRefuses_data();
+    void refusesWhatOpeningRefuses();
     void commandWritesAPngOfTheSize();
     void badArgumentsAndOutputs();
     void realProcess();
@@ -168,7 +215,7 @@ void TestThumbnail::readsOnlyTheFirstFrame()
                                    manyFrames(frames, strokes, points));
     const qint64 size = QFileInfo(path).size();
     qint64 read = 0;
-    auto first = app::readFirstFrame(path, app::kWholeSectionBytes, &read);
+    auto first = app::readFirstFrame(path, app::kWholeSectionBytes, &read, kNoWholeCheck);
     QVERIFY2(first, first ? "" : qPrintable(first.error().message));
     // The first frame's points, the frame list (small: read whole for its checksum) and a few
     // headers: about a hundredth of the file.
@@ -193,7 +240,7 @@ void TestThumbnail::everyDamagedByteIsRefused()
         QByteArray damaged = bytes;
         damaged[at] = char(damaged[at] ^ 0x10);
         writeFile(path, damaged);
-        auto first = app::readFirstFrame(path);
+        auto first = app::readFirstFrame(path, app::kWholeSectionBytes, nullptr, kNoWholeCheck);
         if (first)
             QFAIL(qPrintable(QStringLiteral("a changed byte at %1 went unnoticed").arg(at)));
         ++refused;
@@ -204,8 +251,10 @@ void TestThumbnail::everyDamagedByteIsRefused()
 void TestThumbnail::cutOffFilesAreRefused_data()
 {
     QTest::addColumn<qint64>("whole");
-    QTest::newRow("whole sections") << app::kWholeSectionBytes;
-    QTest::newRow("first frame only") << qint64(0);
+    QTest::addColumn<qint64>("wholeCheck");
+    QTest::newRow("whole sections") << app::kWholeSectionBytes << kNoWholeCheck;
+    QTest::newRow("first frame only") << qint64(0) << kNoWholeCheck;
+    QTest::newRow("file checked whole") << qint64(0) << app::kWholeCheckBytes;
 }
 
 // The section lengths must add up to the file's size, so a file cut anywhere is refused even
@@ -213,15 +262,17 @@ void TestThumbnail::cutOffFilesAreRefused_data()
 void TestThumbnail::cutOffFilesAreRefused()
 {
     QFETCH(qint64, whole);
+    QFETCH(qint64, wholeCheck);
     const QByteArray bytes = readAll(kExample);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("cut.finbook"));
     for (qsizetype size = 0; size < bytes.size(); size += std::max<qsizetype>(1, size / 7)) {
         writeFile(path, bytes.left(size));
-        QVERIFY2(!app::readFirstFrame(path, whole), qPrintable(QString::number(size)));
+        QVERIFY2(!app::readFirstFrame(path, whole, nullptr, wholeCheck),
+                 qPrintable(QString::number(size)));
     }
     writeFile(path, bytes + QByteArray(1, '\0'));
-    QVERIFY(!app::readFirstFrame(path, whole));
+    QVERIFY(!app::readFirstFrame(path, whole, nullptr, wholeCheck));
 }
 
 void TestThumbnail::hostileFilesAreRefused_data()
@@ -258,8 +309,9 @@ void TestThumbnail::hostileFilesAreRefused()
     const QString in = writeFile(dir.filePath(QStringLiteral("in.finbook")), bytes);
     const QString out = dir.filePath(QStringLiteral("out.png"));
     for (qint64 whole : {app::kWholeSectionBytes, qint64(0)}) {
-        QVERIFY(!app::readFirstFrame(in, whole));
+        QVERIFY(!app::readFirstFrame(in, whole, nullptr, kNoWholeCheck));
     }
+    QVERIFY(!app::readFirstFrame(in));
     QString error;
     QCOMPARE(thumbnail({in, out, QStringLiteral("128")}, &error), 2);
     QVERIFY(!QFileInfo::exists(out));
@@ -284,7 +336,8 @@ void TestThumbnail::randomDamageNeverCrashes()
                 mutant[at] = char(random.bounded(256));
             }
             writeFile(path, mutant);
-            auto first = app::readFirstFrame(path, round % 2 ? app::kWholeSectionBytes : 0);
+            auto first = app::readFirstFrame(path, round % 2 ? app::kWholeSectionBytes : 0, nullptr,
+                                             round % 3 ? kNoWholeCheck : app::kWholeCheckBytes);
             if (first) {
                 QCOMPARE(first->frames.size(), std::size_t(1));
                 ++opened;
@@ -295,6 +348,40 @@ void TestThumbnail::randomDamageNeverCrashes()
     }
     QVERIFY(refused > 0);
     qInfo("%d mutants refused, %d read", refused, opened);
+}
+
+void TestThumbnail::refusesWhatOpeningRefuses_data()
+{
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::newRow("sound clip id at the next free id") << withNextId(threeFramesWithSound(50), 50);
+    QTest::newRow("sound clip id shared with a stroke") << threeFramesWithSound(3);
+    QTest::newRow("last frame's point not a number") << threeFramesWithSound(50, true);
+}
+
+// `finbook info` and opening refuse these for what lies past the first frame; the thumbnailer
+// refuses them too, with the same reason (issue: it used to draw them).
+void TestThumbnail::refusesWhatOpeningRefuses()
+{
+    QFETCH(QByteArray, bytes);
+    QTemporaryDir dir;
+    const QString in = writeFile(dir.filePath(QStringLiteral("in.finbook")), bytes);
+    QVERIFY(model::loadFinbook(
+        writeFile(dir.filePath(QStringLiteral("sound.finbook")), threeFramesWithSound(50))));
+    auto opened = model::loadFinbook(in);
+    QVERIFY(!opened);
+    auto first = app::readFirstFrame(in);
+    QVERIFY(!first);
+    // The reason opening gives ("Cannot open "in.finbook". <reason>") ends the thumbnailer's.
+    const QString reason = opened.error().message.section(QStringLiteral("\". "), 1);
+    QVERIFY2(!reason.isEmpty() && first.error().message.endsWith(reason),
+             qPrintable(first.error().message + QStringLiteral(" | ") + opened.error().message));
+    // Its own walk, which reads only the first frame, would have drawn it.
+    QVERIFY(app::readFirstFrame(in, app::kWholeSectionBytes, nullptr, kNoWholeCheck));
+    const QString out = dir.filePath(QStringLiteral("out.png"));
+    QString error;
+    QCOMPARE(thumbnail({in, out, QStringLiteral("128")}, &error), 2);
+    QVERIFY(!QFileInfo::exists(out));
+    QCOMPARE(error.count(QLatin1Char('\n')), 1);
 }
 
 void TestThumbnail::commandWritesAPngOfTheSize()

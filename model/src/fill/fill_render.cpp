@@ -24,7 +24,7 @@ std::vector<FillItem> fillItems(const StrokeGroup &group, double closeGap,
         const QPainterPath facePath = regions->displayedPath(group, f);
         items[std::size_t(fill)].path.addPath(facePath);
         const Fill &source = group.fills[std::size_t(fill)];
-        if (shade && !options.tint && source.shading.shaded())
+        if (shade && options.shading && !options.tint && source.shading.shaded())
             for (ToneItem &tone :
                  faceTones(group, regions, f, facePath, source.shading, source.color, *shade))
                 items[std::size_t(fill)].tones.push_back(std::move(tone));
@@ -71,9 +71,10 @@ void paintFill(QPainter &painter, const FillItem &fill)
 
 bool frameHasFills(const Frame &frame, const RenderOptions &options)
 {
-    return std::any_of(frame.groups.begin(), frame.groups.end(), [&](const StrokeGroup &g) {
-        return !g.fills.empty() && (g.visible || options.showHidden);
-    });
+    return options.fills &&
+           std::any_of(frame.groups.begin(), frame.groups.end(), [&](const StrokeGroup &g) {
+               return !g.fills.empty() && (g.visible || options.showHidden);
+           });
 }
 
 } // namespace finbook::model

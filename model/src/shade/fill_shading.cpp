@@ -1,6 +1,7 @@
 // Tone regions of shaded fills (shade/fill_shading.h).
 #include "rest_shade.h"
 
+#include <finbook/geometry/object_mesh.h>
 #include <finbook/geometry/shade/pose.h>
 #include <finbook/geometry/shade/shading.h>
 #include <finbook/geometry/shade/tone_region.h>
@@ -242,6 +243,23 @@ std::vector<ToneItem> faceTones(const StrokeGroup &group, const ObjectRegionsPtr
     if (g_posed.size() > kPosedEntries)
         g_posed.pop_back();
     return tones;
+}
+
+qint64 shadingVertexEstimate(const Frame &frame)
+{
+    geometry::MeshOptions options;
+    qint64 total = 0;
+    for (const StrokeGroup &group : frame.groups) {
+        if (!group.visible)
+            continue;
+        const double density = group.meshDensity > 0.0 ? std::min(group.meshDensity, 100.0) : 1.0;
+        const double perFace =
+            std::min(double(options.maxVertices), kShadeTargetVertices * density * density);
+        for (const Fill &fill : group.fills)
+            if (fill.shading.shaded())
+                total += qint64(perFace);
+    }
+    return total;
 }
 
 } // namespace finbook::model

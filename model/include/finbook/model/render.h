@@ -17,6 +17,11 @@ struct RenderOptions {
     qreal opacity = 1.0;
     std::optional<QColor> tint; // onion skin: every stroke in this colour
     bool showHidden = false;
+    // False: shaded fills are painted flat in their colour, without working out their tones
+    // (a cheaper picture, for thumbnails over their budget).
+    bool shading = true;
+    // False: only the strokes are painted (the cheapest picture: its cost follows the points).
+    bool fills = true;
     // Painted on the page after its background, clipped to it, under the drawing (the
     // reference picture of thumbnails and exports). Empty: nothing.
     std::function<void(QPainter &)> underlay;

@@ -84,7 +84,8 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<Pai
 // Paints one item: its path, then its tones (the canvas raster draws its own way).
 void paintFill(QPainter &painter, const FillItem &fill);
 
-// Whether any object of the frame that `options` shows has fills.
+// Whether any object of the frame that `options` shows has fills (false when options leave
+// fills out).
 bool frameHasFills(const Frame &frame, const RenderOptions &options = {});
 
 // The alpha a tinted fill gets against a tinted stroke (onion skin): the shape reads, the ink

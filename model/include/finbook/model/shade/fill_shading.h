@@ -46,4 +46,9 @@ std::vector<ToneItem> faceTones(const StrokeGroup &group, const ObjectRegionsPtr
                                 const QPainterPath &facePath, const FillShading &shading,
                                 QRgb color, const DocumentSettings &settings);
 
+// About how many shading-mesh vertices painting `frame` inflates (each shaded fill of a shown
+// object meshes at least one face at its object's mesh density): a price to check before
+// painting, as the work and memory of shading grow with it.
+qint64 shadingVertexEstimate(const Frame &frame);
+
 } // namespace finbook::model
