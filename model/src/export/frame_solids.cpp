@@ -5,6 +5,7 @@
 #include <finbook/model/export/frame_solids.h>
 #include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_resolve.h>
+#include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/render.h>
 
 #include <Eigen/Eigenvalues>
@@ -63,31 +64,48 @@ bool usable(const geometry::InflatedSolid &solid)
            geometry::signedVolume(solid) > 0.0;
 }
 
+// Why an object has no solid.
+enum class NoSolid { DotOrLine, TooFar, Failed, OverBudget };
+
+bool tooFar(const std::vector<StrokeDataPtr> &strokes)
+{
+    for (const StrokeDataPtr &data : strokes)
+        if (data)
+            for (const StrokePoint &p : data->points)
+                if (std::abs(p.x) > kMaxModelCoordinate || std::abs(p.y) > kMaxModelCoordinate)
+                    return true;
+    return false;
+}
+
 // An object whose every stroke closes a region by itself, two or more of them (a body and
 // an arm drawn over it): one closed solid per stroke's region (geometry/inflate/layers.h),
 // in one object, so the arm stays an arm in the 3D model instead of melting into the body.
-// nullopt for any other object (it exports as its silhouette) or when a layer fails.
-std::optional<geometry::InflatedSolid>
-layeredSolid(const std::vector<geometry::StrokeInput> &inputs, const geometry::MeshOptions &options)
+// nullopt for any other object (it exports as its silhouette) or when a layer fails;
+// OverBudget as soon as its layers pass `budget` vertices.
+Expected<std::optional<geometry::InflatedSolid>, NoSolid>
+layeredSolid(const std::vector<geometry::StrokeInput> &inputs, const geometry::MeshOptions &options,
+             qint64 budget)
 {
     if (inputs.size() < 2)
-        return std::nullopt;
+        return std::optional<geometry::InflatedSolid>();
     const double gap =
         options.regions.closeGap >= 0.0 ? options.regions.closeGap : geometry::autoCloseGap(inputs);
     const std::vector<geometry::Layer> layers = geometry::strokeLayers(inputs, gap);
     if (layers.size() != inputs.size())
-        return std::nullopt;
+        return std::optional<geometry::InflatedSolid>();
     geometry::InflatedSolid all;
     for (const geometry::Layer &layer : layers) {
         const auto mesh = geometry::buildObjectMesh(layer.region, options);
         if (!mesh)
-            return std::nullopt;
+            return std::optional<geometry::InflatedSolid>();
         const auto inflation = geometry::inflateObjectMesh(*mesh);
         if (!inflation)
-            return std::nullopt;
+            return std::optional<geometry::InflatedSolid>();
         const geometry::InflatedSolid solid = geometry::inflatedSolid(*inflation);
         if (!usable(solid))
-            return std::nullopt;
+            return std::optional<geometry::InflatedSolid>();
+        if (all.V.rows() + solid.V.rows() > budget)
+            return unexpected(NoSolid::OverBudget);
         const Eigen::Index v = all.V.rows(), f = all.F.rows();
         all.V.conservativeResize(v + solid.V.rows(), 3);
         all.N.conservativeResize(v + solid.N.rows(), 3);
@@ -96,34 +114,45 @@ layeredSolid(const std::vector<geometry::StrokeInput> &inputs, const geometry::M
         all.N.bottomRows(solid.N.rows()) = solid.N;
         all.F.bottomRows(solid.F.rows()) = solid.F.array() + int(v);
     }
-    return all;
+    return std::optional<geometry::InflatedSolid>(std::move(all));
 }
 
 // The object's shape as it shows now: its displayed strokes, meshed as the deformers mesh
-// its rest drawing (same density), with the gaps closed as its fills see them.
-std::optional<geometry::InflatedSolid> solidOf(const StrokeGroup &group, double closeGap)
+// its rest drawing (same density), with the gaps closed as its fills see them. At most
+// `budget` vertices.
+Expected<geometry::InflatedSolid, NoSolid> solidOf(const StrokeGroup &group, double closeGap,
+                                                   qint64 budget)
 {
     MeshKey key;
     key.density = group.meshDensity;
     for (const Stroke &s : posedStrokes(group))
         key.strokes.push_back(s.data);
+    if (tooFar(key.strokes))
+        return unexpected(NoSolid::TooFar);
     if (isDotOrStraightLine(key.strokes))
-        return std::nullopt;
+        return unexpected(NoSolid::DotOrLine);
     geometry::MeshOptions options;
-    options.density = group.meshDensity;
+    options.density = std::clamp(group.meshDensity, kMinMeshDensity, kMaxMeshDensity);
     options.regions = regionsOptions(closeGap);
     const std::vector<geometry::StrokeInput> inputs = strokeInputs(key);
-    if (auto layered = layeredSolid(inputs, options))
-        return layered;
+    auto layered = layeredSolid(inputs, options, budget);
+    if (!layered)
+        return unexpected(layered.error());
+    if (*layered)
+        return std::move(**layered);
     const auto mesh = geometry::buildObjectMesh(inputs, options);
     if (!mesh)
-        return std::nullopt;
+        return unexpected(NoSolid::Failed);
+    if (2 * mesh->V.rows() > budget) // the solid has a front and a back
+        return unexpected(NoSolid::OverBudget);
     const auto inflation = geometry::inflateObjectMesh(*mesh);
     if (!inflation)
-        return std::nullopt;
+        return unexpected(NoSolid::Failed);
     geometry::InflatedSolid solid = geometry::inflatedSolid(*inflation);
     if (!usable(solid))
-        return std::nullopt;
+        return unexpected(NoSolid::Failed);
+    if (solid.V.rows() > budget)
+        return unexpected(NoSolid::OverBudget);
     return solid;
 }
 } // namespace
@@ -148,7 +177,7 @@ QRgb objectExportColor(const StrokeGroup &group, double closeGap)
 }
 
 std::optional<FrameSolids> frameSolids(const Frame &frame, const DocumentSettings &settings,
-                                       const SolidsProgress &progress)
+                                       const SolidsProgress &progress, qint64 maxVertices)
 {
     FrameSolids out;
     for (const StrokeGroup &group : frame.groups)
@@ -157,11 +186,18 @@ std::optional<FrameSolids> frameSolids(const Frame &frame, const DocumentSetting
     for (const StrokeGroup &group : frame.groups) {
         if (!group.visible || !hasPoints(group))
             continue;
-        if (auto solid = solidOf(group, settings.closeGap))
+        auto solid = solidOf(group, settings.closeGap, maxVertices - out.vertices);
+        if (solid) {
+            out.vertices += solid->V.rows();
             out.objects.push_back({group.id, group.name,
                                    objectExportColor(group, settings.closeGap), std::move(*solid)});
-        else
+        } else if (solid.error() == NoSolid::OverBudget) {
+            out.tooLarge = true;
+            return out;
+        } else {
             ++out.skipped;
+            out.tooFar += solid.error() == NoSolid::TooFar ? 1 : 0;
+        }
         if (progress && !progress(++done, out.candidates))
             return std::nullopt;
     }
