@@ -3,16 +3,26 @@
 #include "export_sound.h"
 #include "export_text.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace finbook::model {
 
 namespace {
-// Linux refuses a single argument longer than 128 KiB; stay well below.
-constexpr qsizetype kMaxExpression = 100000;
-
-QStringList inputArguments(const ExportPlan &plan)
+QStringList inputArguments(const ExportPlan &plan, const QString &concat)
 {
+    if (!concat.isEmpty()) // drawings as files, each with its duration
+        return {QStringLiteral("-hide_banner"),
+                QStringLiteral("-nostats"),
+                QStringLiteral("-loglevel"),
+                QStringLiteral("error"),
+                QStringLiteral("-xerror"),
+                QStringLiteral("-f"),
+                QStringLiteral("concat"),
+                QStringLiteral("-safe"),
+                QStringLiteral("0"),
+                QStringLiteral("-i"),
+                QStringLiteral("file:") + concat};
     // -xerror: without it ffmpeg 5.1 reports a failed write (a full disk) and still exits
     // with 0, leaving a truncated file.
     return {QStringLiteral("-hide_banner"),
@@ -36,12 +46,14 @@ QStringList inputArguments(const ExportPlan &plan)
 // filter graph splitting the stream into palettegen and paletteuse would hold every frame
 // until palettegen has seen the last one (2.4 GB for 2,000 frames at 640×480). The first run
 // only counts colours into the palette (a PNG); the second maps each frame to it as it comes.
-FfmpegJob gifJob(const ExportPlan &plan, const QString &palette)
+// Drawings held for different times come from `drawings`, a concat list (concatList) whose
+// durations give each its hold; drawings all held one tick are piped, one per tick.
+FfmpegJob gifJob(const ExportPlan &plan, const QString &palette, const QString &drawings)
 {
     FfmpegJob job;
     job.what = Export::tr("GIF");
-    const QString timestamps = holdTimestamps(plan.holds);
-    job.perTick = timestamps.isEmpty();
+    job.perTick = drawings.isEmpty();
+    job.concatList = drawings;
     job.paletteArguments << QStringLiteral("-vf")
                          << QStringLiteral("palettegen=stats_mode=full:reserve_transparent=%1")
                                 .arg(plan.transparent ? 1 : 0)
@@ -49,13 +61,9 @@ FfmpegJob gifJob(const ExportPlan &plan, const QString &palette)
                          << QStringLiteral("-c:v") << QStringLiteral("png") << QStringLiteral("-f")
                          << QStringLiteral("image2") << QStringLiteral("-y")
                          << QStringLiteral("file:") + palette;
-    const QString setpts =
-        job.perTick ? QString() : QStringLiteral("setpts=(%1)/(FR*TB)").arg(timestamps);
-    // The frames are input 0 (from inputArguments), the palette input 1.
-    const QString graph =
-        (setpts.isEmpty() ? QStringLiteral("[0:v]")
-                          : QStringLiteral("[0:v]%1[v];[v]").arg(setpts)) +
-        QStringLiteral("[1:v]paletteuse=dither=sierra2_4a:diff_mode=rectangle:alpha_threshold=128");
+    // The frames are input 0, the palette input 1.
+    const QString graph = QStringLiteral(
+        "[0:v][1:v]paletteuse=dither=sierra2_4a:diff_mode=rectangle:alpha_threshold=128");
     // GIF delays are centiseconds; the last drawing's hold is not known to ffmpeg otherwise.
     const int lastTicks = job.perTick ? 1 : plan.holds.back();
     const int finalDelay = int(std::lround(lastTicks * 100.0 / plan.fps));
@@ -114,28 +122,35 @@ FfmpegJob apngJob(const ExportPlan &plan)
 }
 } // namespace
 
-QString holdTimestamps(const std::vector<int> &holds)
+bool holdsVary(const std::vector<int> &holds)
 {
-    QString expression = QStringLiteral("N");
-    for (std::size_t i = 0; i + 1 < holds.size(); ++i) {
-        if (holds[i] <= 1)
-            continue;
-        // Drawings after i start holds[i] - 1 ticks later. "\," keeps the comma inside the
-        // filter graph.
-        expression += QStringLiteral("+%1*gt(N\\,%2)").arg(holds[i] - 1).arg(i);
-        if (expression.size() > kMaxExpression)
-            return {};
+    return std::any_of(holds.begin(), holds.end(), [](int hold) { return hold > 1; });
+}
+
+QByteArray concatList(const std::vector<int> &holds, int fps,
+                      const std::function<QString(std::size_t)> &file)
+{
+    QByteArray list = "ffconcat version 1.0\n";
+    for (std::size_t i = 0; i < holds.size(); ++i) {
+        // Quoted as the concat demuxer reads it: ' closes, so each one inside is '\''.
+        QString name = file(i);
+        name.replace(QLatin1Char('\''), QStringLiteral("'\\''"));
+        list += "file '" + name.toUtf8() + "'\n";
+        // Read at 1,000 frames per second, so its time base is a millisecond: at the image
+        // reader's default (25) every start was rounded to 40 ms.
+        list += "option framerate 1000\n";
+        list += "duration " + QByteArray::number(double(holds[i]) / fps, 'f', 9) + '\n';
     }
-    return expression;
+    return list;
 }
 
 FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &output,
-                    const QString &palette, const QString &soundWav)
+                    const QString &palette, const QString &soundWav, const QString &drawings)
 {
     FfmpegJob job;
     switch (format) {
     case ExportFormat::Gif:
-        job = gifJob(plan, palette);
+        job = gifJob(plan, palette, drawings);
         break;
     case ExportFormat::Mp4:
         job = mp4Job();
@@ -148,12 +163,12 @@ FfmpegJob ffmpegJob(ExportFormat format, const ExportPlan &plan, const QString &
         break;
     }
     if (!soundWav.isEmpty() && (format == ExportFormat::Mp4 || format == ExportFormat::WebM))
-        job.arguments = inputArguments(plan) + soundInputArguments(soundWav) +
+        job.arguments = inputArguments(plan, job.concatList) + soundInputArguments(soundWav) +
                         soundOutputArguments(format) + job.arguments;
     else
-        job.arguments = inputArguments(plan) + job.arguments;
+        job.arguments = inputArguments(plan, job.concatList) + job.arguments;
     if (!job.paletteArguments.isEmpty())
-        job.paletteArguments = inputArguments(plan) + job.paletteArguments;
+        job.paletteArguments = inputArguments(plan, job.concatList) + job.paletteArguments;
     job.arguments << QStringLiteral("-y") << output;
     return job;
 }
