@@ -16,8 +16,10 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <csignal>
 #include <cstdio>
 #include <dirent.h>
+#include <map>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -51,6 +53,40 @@ bool haveFfmpeg()
     return !program("ffmpeg").isEmpty() && !program("ffprobe").isEmpty();
 }
 
+// Every entry of `folder` (hidden ones too) with its bytes.
+std::map<QString, QByteArray> folderContents(const QString &folder)
+{
+    std::map<QString, QByteArray> contents;
+    const QDir dir(folder);
+    for (const QString &name :
+         dir.entryList(QDir::AllEntries | QDir::Hidden | QDir::System | QDir::NoDotAndDotDot)) {
+        QFile f(dir.filePath(name));
+        contents[name] = f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<not a file>");
+    }
+    return contents;
+}
+
+void copyFolder(const QString &from, const QString &to)
+{
+    QDir().mkpath(to);
+    for (const auto &[name, bytes] : folderContents(from)) {
+        QFile f(QDir(to).filePath(name));
+        if (f.open(QIODevice::WriteOnly))
+            f.write(bytes);
+    }
+}
+
+// Whether process `pid` has ended (gone, or a zombie nobody has reaped yet).
+bool processEnded(qint64 pid)
+{
+    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
+    if (!stat.open(QIODevice::ReadOnly))
+        return true;
+    const QByteArray text = stat.readAll();
+    const qsizetype close = text.lastIndexOf(')');
+    return close < 0 || text.mid(close + 2, 1) == "Z";
+}
+
 } // namespace
 
 class TestCliExport : public QObject {
@@ -76,6 +112,10 @@ private slots:
     void fileInTheWayOfTheFolderExitsTwo();
     void tooLargeNeedsMaxFrames();
     void namesThatAreNotUtf8();
+    void overwriteLeavesOnlyTheNewSequence();
+    void swapSurvivesAKillAtEveryStep();
+    void encoderGroupEndsWithTheExport_data();
+    void encoderGroupEndsWithTheExport();
 
 private:
     QTemporaryDir m_dir;
@@ -606,6 +646,129 @@ void TestCliExport::namesThatAreNotUtf8()
     QVERIFY(isRegularFile(here + "o\xe9/caf\xe9.html"));
     // QTemporaryDir cannot name these entries to remove them.
     runProgram(QStringLiteral("/bin/rm"), {QStringLiteral("-rf"), folder});
+}
+
+// --overwrite with fewer frames than the sequence already there: the old frames past the new
+// end go too (they used to stay, mixing two exports); other files in the folder stay.
+void TestCliExport::overwriteLeavesOnlyTheNewSequence()
+{
+    const QString folder = m_dir.filePath(QStringLiteral("shorter"));
+    QCOMPARE(runFinbook({QStringLiteral("export"), m_held, folder}).code, 0);
+    QCOMPARE(folderContents(folder).size(), std::size_t(18));
+    QFile other(QDir(folder).filePath(QStringLiteral("notes.txt")));
+    QVERIFY(other.open(QIODevice::WriteOnly));
+    other.write("mine");
+    other.close();
+    const QString fresh = m_dir.filePath(QStringLiteral("shorter-fresh"));
+    QCOMPARE(
+        runFinbook({QStringLiteral("export"), m_held, fresh, QStringLiteral("--range=3-8")}).code,
+        0);
+    QCOMPARE(runFinbook({QStringLiteral("export"), m_held, folder, QStringLiteral("--range=3-8"),
+                         QStringLiteral("--overwrite")})
+                 .code,
+             0);
+    std::map<QString, QByteArray> expected = folderContents(fresh);
+    expected[QStringLiteral("notes.txt")] = "mine";
+    QVERIFY(folderContents(folder) == expected);
+}
+
+// A sequence export replacing another is killed (as kill -9 would) before each rename of its
+// swap in turn; the next export to the folder, with --overwrite or without, finds the folder
+// all old or all new and leaves no hidden folder behind. It used to be mixed (new frames, old
+// ones, one missing), and a later --overwrite deleted the set-aside originals.
+void TestCliExport::swapSurvivesAKillAtEveryStep()
+{
+    const QString oldFrames = m_dir.filePath(QStringLiteral("swap-old"));
+    const QString newFrames = m_dir.filePath(QStringLiteral("swap-new"));
+    QCOMPARE(runFinbook({QStringLiteral("export"), m_held, oldFrames}).code, 0); // 18 files
+    QCOMPARE(
+        runFinbook({QStringLiteral("export"), m_held, newFrames, QStringLiteral("--range=3-8")})
+            .code,
+        0); // 9 files, other pictures
+    const auto before = folderContents(oldFrames), after = folderContents(newFrames);
+    QCOMPARE(before.size(), std::size_t(18));
+    QCOMPARE(after.size(), std::size_t(9));
+    int killed = 0;
+    for (int step = 1; step < 100; ++step) {
+        const QString folder = m_dir.filePath(QStringLiteral("swap-%1").arg(step));
+        copyFolder(oldFrames, folder);
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("FINBOOK_TEST_KILL_AT_SWAP_STEP"), QString::number(step));
+        const Run swap = runFinbook({QStringLiteral("export"), m_held, folder,
+                                     QStringLiteral("--range=3-8"), QStringLiteral("--overwrite")},
+                                    env);
+        if (swap.code == 0) { // past the last step: the swap ended
+            QVERIFY(folderContents(folder) == after);
+            break;
+        }
+        QCOMPARE(swap.code, -1); // killed
+        ++killed;
+        // The next export: with --overwrite every other time, without it otherwise.
+        const bool overwrite = step % 2 == 1;
+        QStringList next{QStringLiteral("export"), m_held, folder, QStringLiteral("--range=3-8")};
+        if (overwrite)
+            next << QStringLiteral("--overwrite");
+        const Run again = runFinbook(next);
+        const auto now = folderContents(folder);
+        if (overwrite) {
+            QCOMPARE(again.code, 0);
+            QVERIFY2(now == after, qPrintable(QStringLiteral("step %1").arg(step)));
+        } else {
+            QCOMPARE(again.code, 2); // frames in the way: all old, or all new
+            QVERIFY2(now == before || now == after,
+                     qPrintable(QStringLiteral("step %1: %2 entries").arg(step).arg(now.size())));
+        }
+    }
+    // The journal, 9 new files each with an old one set aside, 9 old ones past the end, the end.
+    QCOMPARE(killed, 1 + 9 * 2 + 9 + 1);
+}
+
+void TestCliExport::encoderGroupEndsWithTheExport_data()
+{
+    QTest::addColumn<int>("signal");
+    QTest::newRow("export finishes") << 0;
+    QTest::newRow("SIGTERM") << int(SIGTERM);
+    QTest::newRow("SIGKILL") << int(SIGKILL);
+}
+
+// An encoder that leaves a process in the background (a wrapper script, a plugin): when the
+// export ends, however it ends, that process ends too. It used to survive a killed export.
+void TestCliExport::encoderGroupEndsWithTheExport()
+{
+    QFETCH(int, signal);
+    QTemporaryDir dir;
+    const QString pidFile = dir.filePath(QStringLiteral("background.pid"));
+    // Starts a sleeper in the background, then either takes every frame and writes a small
+    // output (the export finishes) or takes none (the export waits until it is stopped).
+    const QString script = dir.filePath(QStringLiteral("ffmpeg"));
+    {
+        QFile f(script);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("#!/bin/sh\nsleep 300 &\necho $! > " + shellQuote(pidFile).toUtf8() +
+                "\nfor a; do last=$a; done\n" +
+                (signal == 0 ? QByteArray("cat > /dev/null\necho mp4 > \"${last#file:}\"\n")
+                             : QByteArray("sleep 300\n")));
+        f.close();
+        f.setPermissions(f.permissions() | QFileDevice::ExeOwner | QFileDevice::ExeUser);
+    }
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("FINBOOK_FFMPEG"), script);
+    QProcess process;
+    process.setProcessEnvironment(env);
+    process.start(kFinbook,
+                  {QStringLiteral("export"), m_held, dir.filePath(QStringLiteral("a.mp4"))});
+    QVERIFY(process.waitForStarted());
+    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(pidFile).size() > 0, 60000);
+    QFile f(pidFile);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const qint64 background = f.readAll().trimmed().toLongLong();
+    QVERIFY(background > 0);
+    if (signal != 0)
+        ::kill(pid_t(process.processId()), signal);
+    QVERIFY(process.waitForFinished(60000));
+    if (signal == 0)
+        QCOMPARE(process.exitCode(), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(processEnded(background), 10000);
 }
 
 QTEST_GUILESS_MAIN(TestCliExport)

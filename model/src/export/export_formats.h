@@ -71,6 +71,9 @@ public:
     QString name(qint64 index) const; // 0 <= index < count()
     // Whether `fileName` is one of name(0 .. count()-1), found without making them all.
     bool contains(const QString &fileName) const;
+    // Whether `fileName` is named as this sequence's files are (its base name, "_", a number
+    // of any width, its suffix), whether or not this export writes it.
+    bool isSequenceName(const QString &fileName) const;
 
 private:
     const ExportPlan &m_plan;

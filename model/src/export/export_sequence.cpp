@@ -39,8 +39,11 @@ QByteArray exposureSheet(const ExportContext &context, const SequenceFiles &file
 // A folder where a file should go is refused even with overwrite (it is never replaced);
 // other files in the way only without it. The folder's entries are read, not the sequence's
 // names tried one by one: a long sequence (millions of ticks) costs what the folder holds.
+// With overwrite, `stale` gets the files of an earlier sequence of the same name that this
+// one does not replace (frames past its end, other numbers): the swap removes them, so the
+// folder never mixes two exports.
 std::optional<ExportError> refuseExisting(const QString &folder, const SequenceFiles &files,
-                                          bool overwrite)
+                                          bool overwrite, QStringList *stale)
 {
     if (!QFileInfo(folder).isDir())
         return std::nullopt;
@@ -48,9 +51,13 @@ std::optional<ExportError> refuseExisting(const QString &folder, const SequenceF
                          QDir::AllEntries | QDir::Hidden | QDir::System | QDir::NoDotAndDotDot);
     QStringList ours;
     while (entries.hasNext()) {
-        const QString name = QFileInfo(entries.next()).fileName();
+        const QFileInfo entry(entries.next());
+        const QString name = entry.fileName();
         if (files.contains(name))
             ours << name;
+        else if (overwrite && stale && files.isSequenceName(name) &&
+                 (!entry.isDir() || entry.isSymLink()))
+            *stale << name;
     }
     ours.sort(); // the first in writing order is named (same width numbers sort as they count)
     for (const QString &name : ours) {
@@ -122,9 +129,8 @@ ExportOutcome exportSequence(const ExportContext &context)
                        "\"%2\".")
                 .arg(QDir::toNativeSeparators(folder),
                      QDir::toNativeSeparators(QDir(folder).filePath(context.options.baseName)))));
-    if (auto error = refuseExisting(folder, files, context.options.overwrite))
-        return unexpected(*error);
-
+    // The lock first, and the leftovers of a killed export to this folder cleared (its swap
+    // finished or undone), so that what is in the way is seen as it really is.
     FolderGuard guard(folder);
     if (!guard.ok())
         return unexpected(writeFailed(folder, Export::tr("the folder cannot be created")));
@@ -132,6 +138,9 @@ ExportOutcome exportSequence(const ExportContext &context)
     if (!lock.tryLock())
         return unexpected(targetBusy(folder));
     lock.removeLeftovers();
+    QStringList stale;
+    if (auto error = refuseExisting(folder, files, context.options.overwrite, &stale))
+        return unexpected(*error);
     PendingFolder staging(folder);
     if (!staging.isValid())
         return unexpected(writeFailed(folder, staging.errorString()));
@@ -146,7 +155,7 @@ ExportOutcome exportSequence(const ExportContext &context)
     QString appeared;
     if (auto reason = staging.commit(
             files.count(), [&](qint64 i) { return files.name(i); }, context.options.overwrite,
-            &appeared))
+            &appeared, stale))
         return unexpected(appeared.isEmpty() ? writeFailed(folder, *reason)
                                              : targetExists(appeared));
     guard.keep();

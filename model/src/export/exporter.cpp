@@ -138,6 +138,19 @@ bool SequenceFiles::contains(const QString &fileName) const
            number - 1 <= std::numeric_limits<int>::max();
 }
 
+bool SequenceFiles::isSequenceName(const QString &fileName) const
+{
+    const QString prefix = m_options.baseName + QLatin1Char('_');
+    const QString suffix = QLatin1Char('.') + exportFormatSuffix(m_options.format);
+    if (fileName.size() <= prefix.size() + suffix.size() || !fileName.startsWith(prefix) ||
+        !fileName.endsWith(suffix))
+        return false;
+    const QStringView digits =
+        QStringView(fileName).mid(prefix.size(), fileName.size() - prefix.size() - suffix.size());
+    return std::all_of(digits.begin(), digits.end(),
+                       [](QChar c) { return c >= QLatin1Char('0') && c <= QLatin1Char('9'); });
+}
+
 QStringList exportTargetFiles(const ExportSource &source, const ExportOptions &options)
 {
     if (options.format == ExportFormat::Obj)

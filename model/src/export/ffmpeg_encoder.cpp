@@ -16,7 +16,9 @@
 #endif
 #ifdef Q_OS_LINUX
 #include <csignal>
+#include <fcntl.h>
 #include <sys/prctl.h>
+#include <unistd.h>
 #endif
 
 namespace finbook::model {
@@ -74,10 +76,6 @@ FfmpegEncoder::FfmpegEncoder(const QString &what, const QString &output)
 {
     m_process.setProcessChannelMode(QProcess::SeparateChannels);
     m_process.setStandardOutputFile(QProcess::nullDevice());
-#ifdef Q_OS_LINUX
-    // A Finbook killed outright (kill -9) takes its encoder with it instead of orphaning it.
-    m_process.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGKILL); });
-#endif
 }
 
 void FfmpegEncoder::noteProgress()
@@ -100,14 +98,77 @@ bool FfmpegEncoder::stalled()
 FfmpegEncoder::~FfmpegEncoder()
 {
     abort();
+    endGroup();
+}
+
+#ifdef Q_OS_LINUX
+namespace {
+// Runs in the forked child before it becomes the encoder (only async-signal-safe calls). The
+// encoder leads a process group of its own, so that it and whatever it starts can be ended
+// together, and dies with Finbook (kill -9 included). A guard process is forked into the
+// group: it waits on a pipe only Finbook writes to and, once that closes (Finbook ended or
+// finished with the encoder), kills the whole group, so nothing the encoder left in the
+// background outlives the export.
+void becomeEncoder(int guardRead, int guardWrite)
+{
+    ::setpgid(0, 0);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    const pid_t group = ::getpid();
+    if (::fork() == 0) {
+        const int devNull = ::open("/dev/null", O_RDWR);
+        for (int fd = 0; fd < 3; ++fd)
+            ::dup2(devNull, fd);
+        ::dup2(guardRead, 3);
+        ::close_range(4, ~0u, 0); // every other descriptor of Finbook's (its pipes, its files)
+        (void)guardWrite;
+        char byte;
+        while (::read(3, &byte, 1) != 0 && errno == EINTR) {
+        }
+        ::kill(-group, SIGKILL);
+        ::_exit(0);
+    }
+}
+} // namespace
+#endif
+
+void FfmpegEncoder::endGroup()
+{
+#ifdef Q_OS_LINUX
+    if (m_group > 0)
+        ::kill(-pid_t(m_group), SIGKILL);
+    m_group = 0;
+    if (m_guardWrite >= 0)
+        ::close(m_guardWrite);
+    m_guardWrite = -1;
+#endif
 }
 
 std::optional<ExportError> FfmpegEncoder::start(const QStringList &arguments)
 {
     const QString program = ffmpegProgram();
     if (!program.isEmpty()) {
+#ifdef Q_OS_LINUX
+        int guard[2] = {-1, -1};
+        if (::pipe2(guard, O_CLOEXEC) == 0) {
+            m_guardWrite = guard[1];
+            m_process.setChildProcessModifier(
+                [read = guard[0], write = guard[1]] { becomeEncoder(read, write); });
+        } else { // no guard: the encoder still dies with Finbook
+            m_process.setChildProcessModifier([] {
+                ::setpgid(0, 0);
+                ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+            });
+        }
+#endif
         m_process.start(program, arguments, QIODevice::ReadWrite);
+#ifdef Q_OS_LINUX
+        if (guard[0] >= 0)
+            ::close(guard[0]);
+#endif
         if (m_process.waitForStarted()) {
+#ifdef Q_OS_LINUX
+            m_group = m_process.processId();
+#endif
             m_sinceProgress.start();
             return std::nullopt;
         }
@@ -151,6 +212,7 @@ std::optional<ExportError> FfmpegEncoder::finish(const Cancelled &isCancelled)
             return stuck();
     }
     readErrors();
+    endGroup(); // what the encoder left running in the background goes with it
     // At -loglevel error anything printed is an error; ffmpeg has been seen to report a failed
     // write and exit with 0, so its words count as much as its exit code.
     if (m_process.exitStatus() != QProcess::NormalExit || m_process.exitCode() != 0 ||
@@ -163,6 +225,7 @@ void FfmpegEncoder::abort()
 {
     if (m_process.state() == QProcess::NotRunning)
         return;
+    endGroup(); // the encoder and everything it started
     m_process.kill();
     m_process.waitForFinished(5000);
 }

@@ -1,5 +1,7 @@
 // One run of the ffmpeg program fed raw frames on its standard input (blocking; for the
-// exporting thread). Its error output is kept, the last few kilobytes, for the message.
+// exporting thread). Its error output is kept, the last few kilobytes, for the message. The
+// encoder runs in a process group of its own that ends with the export, however the export
+// ends (finished, failed, cancelled, Finbook killed): nothing it starts outlives it.
 #pragma once
 
 #include <finbook/model/export/export_options.h>
@@ -42,6 +44,9 @@ private:
     ExportError failure();
     ExportError cancelled();
     ExportError stuck();
+    // Kills the encoder's process group (it, and anything it left in the background) and
+    // closes the guard's pipe.
+    void endGroup();
 
     QString m_what;
     QString m_output;
@@ -51,6 +56,8 @@ private:
     QElapsedTimer m_sinceProgress; // since ffmpeg last read, wrote or said something
     qint64 m_lastSize = -1;
     qint64 m_lastPending = -1;
+    qint64 m_group = 0;    // the encoder's process group (its pid), 0 when none
+    int m_guardWrite = -1; // Finbook's end of the guard's pipe (ffmpeg_encoder.cpp)
 };
 
 } // namespace finbook::model

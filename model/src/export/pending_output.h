@@ -58,6 +58,13 @@ private:
 
 // A hidden folder inside `folder` collecting the files of a sequence; commit() moves them all
 // into `folder`. Removed with whatever is left in it on destruction.
+//
+// The swap survives a kill at any point. Before its first rename it writes a journal (the
+// names it moves, synced) into the hidden folder; the files it replaces are set aside in there
+// too, and once every new file is in place the journal is marked done. A killed export leaves
+// the hidden folder behind, and the next export to the folder finds it (TargetLock::
+// removeLeftovers) and calls finishInterruptedSwap: a swap marked done is complete (the
+// set-aside files go), one not done is undone (the folder gets back exactly its old files).
 class PendingFolder {
 public:
     explicit PendingFolder(const QString &folder);
@@ -65,18 +72,24 @@ public:
     QString errorString() const { return m_staging.errorString(); }
     QString filePath(const QString &name) const { return m_staging.filePath(name); }
     // Moves files 0 .. count-1 (named by name(i)) into `folder` as a whole: the files they
-    // replace are set aside until every new one is in place; on a failure every new file is
-    // taken out again and every replaced one put back, so the folder is exactly as before.
-    // Unless `replace`, a file that appeared at the target meanwhile is such a failure
-    // (its path in `*appeared`).
+    // replace, and the files named in `stale` (an earlier sequence's frames past this one's
+    // end), are set aside until every new one is in place and then deleted; on a failure every
+    // new file is taken out again and every set-aside one put back, so the folder is exactly as
+    // before. Unless `replace`, a file that appeared at the target meanwhile is such a failure
+    // (its path in `*appeared`), and `stale` must be empty.
     std::optional<QString> commit(qint64 count, const std::function<QString(qint64)> &name,
-                                  bool replace, QString *appeared = nullptr);
+                                  bool replace, QString *appeared = nullptr,
+                                  const QStringList &stale = {});
 
 private:
-    void rollBack(qint64 upTo, const std::function<QString(qint64)> &name);
-
     QString m_folder;
     QTemporaryDir m_staging;
 };
+
+// Finishes the swap of a hidden folder `staging` that a killed export left in `folder`: undone
+// when it had not ended (new files taken out, set-aside ones put back), nothing to do when it
+// had (or had not begun). The hidden folder may be deleted afterwards. Safe to run again after
+// a kill during it.
+void finishInterruptedSwap(const QString &folder, const QString &staging);
 
 } // namespace finbook::model

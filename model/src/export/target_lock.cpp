@@ -1,5 +1,7 @@
 #include "target_lock.h"
 
+#include "pending_output.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QLockFile>
@@ -54,18 +56,25 @@ void TargetLock::removeLeftovers() const
     const QString prefix =
         m_folder ? QStringLiteral(".finbook-export-") : QStringLiteral(".%1.").arg(info.fileName());
     const QString suffix = m_folder ? QString() : QStringLiteral(".part");
-    const QDir::Filters filter =
-        (m_folder ? QDir::Dirs : QDir::Files) | QDir::Hidden | QDir::NoDotAndDotDot | QDir::System;
+    // A file target's leftovers are files, and folders (a GIF's drawings, export_encoded.cpp).
+    const QDir::Filters filter = (m_folder ? QDir::Dirs : QDir::Files | QDir::Dirs) | QDir::Hidden |
+                                 QDir::NoDotAndDotDot | QDir::System;
     for (const QString &entry : dir.entryList(filter)) {
         if (!isLeftoverOf(entry, prefix, suffix))
             continue;
         const QString path = dir.filePath(entry);
-        if (QFileInfo(path).isSymLink())
+        if (QFileInfo(path).isSymLink()) {
             QFile::remove(path);
-        else if (m_folder)
+        } else if (m_folder) {
+            // A swap the kill interrupted is finished first: the folder gets back all of its
+            // old files, or keeps all of the new ones (pending_output.h).
+            finishInterruptedSwap(m_target, path);
             QDir(path).removeRecursively();
-        else
+        } else if (QFileInfo(path).isDir()) {
+            QDir(path).removeRecursively();
+        } else {
             QFile::remove(path);
+        }
     }
 }
 

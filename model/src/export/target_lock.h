@@ -13,7 +13,8 @@ namespace finbook::model {
 // inside a sequence's folder (".finbook-export.lock"), removed on destruction. A lock whose
 // process is gone (killed) is taken over. While it is held, the temporaries of earlier
 // exports to the same target (".NAME.XXXXXX.part", ".finbook-export-XXXXXX/") can only be
-// leftovers of killed exports: removeLeftovers() deletes them.
+// leftovers of killed exports: removeLeftovers() deletes them, after finishing the swap a
+// killed sequence export had begun (finishInterruptedSwap).
 class TargetLock {
 public:
     TargetLock(const QString &target, bool folder);
