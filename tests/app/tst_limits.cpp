@@ -4,6 +4,7 @@
 #include "../model/file_builder.h"
 #include "../model/hostile_media.h"
 #include "../model/sound_support.h"
+#include "crafted_files.h"
 #include "limits_support.h"
 
 #include <finbook/model/finbook_file.h>
@@ -81,6 +82,9 @@ private slots:
     void widePensCostWhatIsVisible();
     void hostileMediaCostsLittle_data();
     void hostileMediaCostsLittle();
+    void craftedFilesCostLittle_data();
+    void craftedFilesCostLittle();
+    void farDrawingIsSaidToBeFar();
 
 private:
     QString holdsBomb();
@@ -665,6 +669,99 @@ void TestLimits::hostileMediaCostsLittle()
         QCOMPARE(strict.code, 2);
         QVERIFY2(isOneLine(strict.err), strict.err.constData());
         QVERIFY(!QFileInfo::exists(strictOut));
+    }
+}
+
+void TestLimits::craftedFilesCostLittle_data()
+{
+    QTest::addColumn<QString>("path");
+    const auto row = [this](const QString &name, const QByteArray &bytes) {
+        QTest::newRow(qPrintable(name)) << writeFile(
+            m_dir,
+            QString(name).replace(QLatin1Char(' '), QLatin1Char('_')) + QStringLiteral(".finbook"),
+            bytes);
+    };
+    // Shading grids: a mesh per cell at the editor's finest density and at densities an old
+    // reader let in, on a small and on the largest canvas.
+    for (const int lines : {6, 20, 32})
+        for (const double density : {1.0, 4.0, 100.0})
+            row(QStringLiteral("shaded grid %1 lines density %2").arg(lines).arg(density),
+                crafted::shadedGrid(lines, {1280, 720}, density));
+    row(QStringLiteral("shaded grid 32 lines on 16384 px"),
+        crafted::shadedGrid(32, {16384, 16384}, 4.0));
+    row(QStringLiteral("100000 fills"), crafted::manyFills(100000));
+    // Repeated objects: one circle stroke shared by every object, or each its own layer.
+    for (const int objects : {10, 50, 200})
+        row(QStringLiteral("%1 objects sharing a circle").arg(objects),
+            crafted::repeatedCircles(objects, 100.0));
+    row(QStringLiteral("50 layered circles"), crafted::repeatedCircles(50, 100.0, true));
+}
+
+// The thumbnailer and the 3D exports on small files asking for a lot: every run within its
+// budget (README: thumbnail 2 s and 300 MB; a 3D model at most 500,000 vertices, refused
+// beyond with one line). They used to take minutes and gigabytes.
+void TestLimits::craftedFilesCostLittle()
+{
+    QFETCH(QString, path);
+    QVERIFY(QFileInfo(path).size() < 4 << 20);
+    const QString out = m_dir.filePath(QFileInfo(path).completeBaseName());
+    const Measured thumb = runMeasured(
+        {QStringLiteral("thumbnail"), path, out + QStringLiteral(".png"), QStringLiteral("256")});
+    qInfo("{\"case\":\"%s\",\"command\":\"thumbnail\",\"code\":%d,\"seconds\":%.2f,"
+          "\"peak_mib\":%ld}",
+          QTest::currentDataTag(), thumb.code, thumb.seconds, thumb.peakMiB);
+    QVERIFY2(thumb.code == 0, thumb.err.constData());
+    QVERIFY(!QImage(out + QStringLiteral(".png")).isNull());
+    if (!kUnderAsan) {
+        // The budget is 2 s on an idle machine; a busy one gets some slack.
+        QVERIFY2(thumb.seconds < 4, qPrintable(QString::number(thumb.seconds)));
+        QVERIFY2(thumb.peakMiB < 300, qPrintable(QString::number(thumb.peakMiB)));
+    }
+    for (const QString suffix : {QStringLiteral(".glb"), QStringLiteral(".obj")}) {
+        const Measured model = runMeasured(
+            {QStringLiteral("export"), path, out + suffix, QStringLiteral("--overwrite")});
+        qInfo("{\"case\":\"%s\",\"command\":\"%s\",\"code\":%d,\"seconds\":%.2f,"
+              "\"peak_mib\":%ld,\"bytes\":%lld}",
+              QTest::currentDataTag(), qPrintable(suffix), model.code, model.seconds, model.peakMiB,
+              QFileInfo(out + suffix).size());
+        if (model.code == 2) { // refused: one line saying why, nothing written
+            QVERIFY2(isOneLine(model.err), model.err.constData());
+            QVERIFY2(model.err.contains("vertices"), model.err.constData());
+            QVERIFY(!QFileInfo::exists(out + suffix));
+        } else {
+            QVERIFY2(model.code == 0, model.err.constData());
+            QVERIFY(QFileInfo(out + suffix).size() < (qint64(150) << 20));
+        }
+        QVERIFY2(model.seconds < 60, qPrintable(QString::number(model.seconds)));
+        if (!kUnderAsan)
+            QVERIFY2(model.peakMiB < 500, qPrintable(QString::number(model.peakMiB)));
+    }
+}
+
+// A triangle drawn millions of pixels off the page: the 3D export refuses it as too far out
+// to mesh, not as "a dot or a straight line" (which it is not).
+void TestLimits::farDrawingIsSaidToBeFar()
+{
+    for (const double at : {1e7, 1e20, 3e38}) {
+        model::Frame frame;
+        frame.id = 1;
+        model::StrokeGroup group;
+        group.id = 2;
+        group.name = QStringLiteral("far");
+        auto data = std::make_shared<model::StrokeData>();
+        for (const QPointF p : {QPointF(0, 0), QPointF(400, 0), QPointF(200, 300), QPointF(0, 0)})
+            data->points.push_back({float(at + p.x()), float(at + p.y()), 1.0f});
+        group.strokes.push_back({3, data});
+        frame.groups.push_back(group);
+        const QString path = writeFile(m_dir, QStringLiteral("far-%1.finbook").arg(at),
+                                       model::serializeFinbook({frame}, model::DocumentSettings{}));
+        const QString out = m_dir.filePath(QStringLiteral("far-%1.glb").arg(at));
+        const Measured run = runMeasured({QStringLiteral("export"), path, out});
+        QCOMPARE(run.code, 2);
+        QVERIFY2(isOneLine(run.err), run.err.constData());
+        QVERIFY2(run.err.contains("too far out to mesh") && !run.err.contains("straight line"),
+                 run.err.constData());
+        QVERIFY(!QFileInfo::exists(out));
     }
 }
 

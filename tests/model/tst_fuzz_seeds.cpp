@@ -10,6 +10,7 @@
 
 #include <QDir>
 
+#include <algorithm>
 #include <set>
 
 using namespace finbook::model;
@@ -192,6 +193,56 @@ void withSvgReference(Document &doc)
     doc.referenceLayer().setReference(r);
 }
 
+// The sample with an object of shaded fills at the editor's finest mesh (a grid of 3 × 3 pen
+// lines, every cell filled and shaded), a sound clip and an SVG reference in one file: the
+// mix the thumbnailer's and the 3D export's budgets guard (issue 54).
+void withShadingAndMedia(Document &doc)
+{
+    buildSample(doc);
+    std::vector<Frame> frames = doc.frames();
+    Id id = doc.nextId();
+    StrokeGroup grid;
+    grid.id = id++;
+    grid.name = QStringLiteral("shaded grid");
+    grid.meshDensity = 4.0;
+    std::vector<Id> rows, columns;
+    for (int i = 0; i < 3; ++i) {
+        const float at = 20.0f + 30.0f * float(i);
+        for (std::vector<Id> *list : {&rows, &columns}) {
+            auto data = std::make_shared<StrokeData>();
+            data->width = 2.0f;
+            data->color = qRgb(30, 30, 40);
+            data->points = list == &rows ? std::vector<StrokePoint>{{10, at, 1}, {90, at, 1}}
+                                         : std::vector<StrokePoint>{{at, 10, 1}, {at, 90, 1}};
+            list->push_back(id);
+            grid.strokes.push_back({id++, data});
+        }
+    }
+    for (int r = 0; r < 2; ++r)
+        for (int c = 0; c < 2; ++c) {
+            Fill fill;
+            fill.color = qRgb(200, 90 + 60 * r, 60 + 80 * c);
+            fill.seed = QPointF(35.0 + 30 * c, 35.0 + 30 * r);
+            fill.strokes = {rows[std::size_t(r)], rows[std::size_t(r) + 1], columns[std::size_t(c)],
+                            columns[std::size_t(c) + 1]};
+            std::sort(fill.strokes.begin(), fill.strokes.end());
+            fill.shading.ramp = r == c ? ShadeRamp::ThreeTones : ShadeRamp::Smooth;
+            fill.shading.rim = c == 1;
+            grid.fills.push_back(fill);
+        }
+    frames.front().groups.push_back(std::move(grid));
+    doc.reset(std::move(frames), doc.settings(), id);
+    sound_test::importClip(doc, sound_test::sineWav(0.01, 8000), QStringLiteral("beat.wav"), 1);
+    Reference r;
+    r.kind = ReferenceKind::Image;
+    r.name = QStringLiteral("box.svg");
+    r.bytes = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"20\" height=\"20\">"
+              "<rect width=\"20\" height=\"20\" fill=\"#0a0\"/></svg>";
+    r.mediaSize = QSizeF(20, 20);
+    r.center = QPointF(50, 40);
+    doc.referenceLayer().setReference(r);
+}
+
 // Every seed by name.
 std::vector<std::pair<QString, QByteArray>> seeds()
 {
@@ -215,7 +266,10 @@ std::vector<std::pair<QString, QByteArray>> seeds()
     withMedia(media);
     Document svg;
     withSvgReference(svg);
+    Document shaded;
+    withShadingAndMedia(shaded);
     std::vector<std::pair<QString, QByteArray>> all{
+        {QStringLiteral("shading_and_media.finbook"), serializeFinbook(shaded)},
         {QStringLiteral("media.finbook"), serializeFinbook(media)},
         {QStringLiteral("svg_reference.finbook"), serializeFinbook(svg)},
         {QStringLiteral("sample.finbook"), serializeFinbook(sample)},
