@@ -303,17 +303,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="161"/>
+        <location filename="../app/cli.cpp" line="163"/>
         <source>No command given; see finbook --help.</source>
         <translation>Aucune commande indiquée ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="165"/>
+        <location filename="../app/cli.cpp" line="167"/>
         <source>Usage: finbook info FILE</source>
         <translation>Utilisation : finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="177"/>
+        <location filename="../app/cli.cpp" line="187"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
@@ -693,9 +693,10 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="37"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="43"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="71"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
-        <location filename="../model/src/export/export_sequence.cpp" line="93"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="100"/>
         <source>there is not enough memory to render it</source>
         <translation>la mémoire est insuffisante pour en faire le rendu</translation>
     </message>
@@ -705,7 +706,7 @@
         <translation>son dossier ne peut pas être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="116"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="169"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg s&apos;est terminé sans écrire le fichier %1&#xa0;; rien n&apos;a été exporté.</translation>
     </message>
@@ -791,22 +792,22 @@
         <translation>Cet export produirait %1 heures d’animation (%2 images), plus de %3 heures sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="61"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="68"/>
         <source>&quot;%1&quot; is a folder where a file should go; choose another folder.</source>
         <translation>«&#xa0;%1&#xa0;» est un dossier, à l&apos;emplacement prévu pour un fichier&#xa0;; choisissez un autre dossier.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="111"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="118"/>
         <source>&quot;%1&quot; is a file, not a folder; choose a folder for the %2 files, or remove the file.</source>
         <translation>« %1 » est un fichier, pas un dossier ; choisissez un dossier pour les fichiers %2, ou supprimez le fichier.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="120"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="127"/>
         <source>&quot;%1&quot; is the top folder of the disk; choose or name a folder for the frames, such as &quot;%2&quot;.</source>
         <translation>« %1 » est le dossier racine du disque ; choisissez ou nommez un dossier pour les images, par exemple « %2 ».</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="130"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="136"/>
         <source>the folder cannot be created</source>
         <translation>le dossier ne peut pas être créé</translation>
     </message>
@@ -836,12 +837,12 @@
         <translation>«&#xa0;%1&#xa0;» est un dossier&#xa0;; indiquez un nom de fichier se terminant par .%2.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="215"/>
+        <location filename="../model/src/export/exporter.cpp" line="228"/>
         <source>Choose where to export the animation to.</source>
         <translation>Choisissez où exporter l&apos;animation.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/exporter.cpp" line="229"/>
+        <location filename="../model/src/export/exporter.cpp" line="242"/>
         <source>%n more sound clip(s) are left out too.</source>
         <translation>
             <numerusform>%n autre clip sonore est aussi omis.</numerusform>
@@ -849,52 +850,52 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="236"/>
+        <location filename="../model/src/export/exporter.cpp" line="249"/>
         <source>Nothing was exported.</source>
         <translation>Rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="42"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="54"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="75"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="83"/>
         <source>MP4 video</source>
         <translation>vidéo MP4</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="93"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="101"/>
         <source>WebM video</source>
         <translation>vidéo WebM</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="107"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="115"/>
         <source>animated PNG</source>
         <translation>PNG animé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="116"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="177"/>
         <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
         <translation>L&apos;export en %1 nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le (sous Debian&#xa0;: apt install ffmpeg) et exportez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="207"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="270"/>
         <source>it stopped unexpectedly</source>
         <translation>il s&apos;est arrêté de façon inattendue</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="208"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="271"/>
         <source>exit code %1</source>
         <translation>code de sortie %1</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="211"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="274"/>
         <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
         <translation>ffmpeg n&apos;a pas pu créer le fichier %1 (%2)&#xa0;; rien n&apos;a été écrit. Si le disque est plein, libérez de l&apos;espace et exportez à nouveau.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="222"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="285"/>
         <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
         <translation>
             <numerusform>ffmpeg n’a pas progressé pendant %n seconde et a été arrêté ; rien n’a été écrit. Vérifiez que ffmpeg fonctionne, puis exportez à nouveau.</numerusform>
@@ -902,24 +903,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="262"/>
+        <location filename="../model/src/export/pending_output.cpp" line="341"/>
         <source>a folder cannot be created in it</source>
         <translation>aucun dossier ne peut y être créé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="268"/>
+        <location filename="../model/src/export/pending_output.cpp" line="362"/>
         <source>&quot;%1&quot; is a folder where a file should go</source>
         <translation>« %1 » est un dossier là où un fichier doit aller</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="21"/>
+        <location filename="../model/src/export/export_model.cpp" line="19"/>
+        <source>The 3D model of frame %1 would have more than %L2 vertices, the most a 3D export writes (about 25 MB of glTF). Nothing was exported; lower the mesh density of its objects (Deform → Mesh Density) or hide some of them.</source>
+        <translation>Le modèle 3D de l’image %1 aurait plus de %L2 sommets, le maximum qu’un export 3D écrit (environ 25 Mo de glTF). Rien n’a été exporté ; baissez la densité du maillage de ses objets (Déformer → Densité du maillage) ou masquez-en quelques-uns.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_model.cpp" line="30"/>
         <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
         <translation>L&apos;image %1 ne montre aucun dessin dont faire un modèle 3D ; choisissez une autre image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="25"/>
+        <location filename="../model/src/export/export_model.cpp" line="35"/>
+        <source>No object of frame %1 can be made 3D: their points lie more than %L2 pixels from the page, too far out to mesh. Nothing was exported; move the drawing back onto the page or choose another frame.</source>
+        <translation>Aucun objet de l’image %1 ne peut être mis en 3D : leurs points sont à plus de %L2 pixels de la page, trop loin pour être maillés. Rien n’a été exporté ; ramenez le dessin sur la page ou choisissez une autre image.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_model.cpp" line="43"/>
+        <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate, or lies too far from the page to mesh. Nothing was exported; draw a shape or choose another frame.</source>
+        <translation>Aucun objet de l’image %1 ne peut être mis en 3D : chacun est un point ou une ligne droite, sans surface à gonfler, ou se trouve trop loin de la page pour être maillé. Rien n’a été exporté ; dessinez une forme ou choisissez une autre image.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_model.cpp" line="50"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>Aucun objet de l&apos;image %1 ne peut être mis en 3D : chacun est un point ou une ligne droite, sans surface à gonfler. Rien n&apos;a été exporté ; dessinez une forme ou choisissez une autre image.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/export_model.cpp" line="61"/>
+        <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and were left out.</source>
+        <translation>
+            <numerusform>%n objet de l’image %1 n’a pas pu être mis en 3D (un point ou une ligne droite n’a pas de surface à gonfler ; un dessin loin hors de la page ne peut pas être maillé) et a été laissé de côté.</numerusform>
+            <numerusform>%n objets de l’image %1 n’ont pas pu être mis en 3D (un point ou une ligne droite n’a pas de surface à gonfler ; un dessin loin hors de la page ne peut pas être maillé) et ont été laissés de côté.</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../model/src/export/export_obj.cpp" line="148"/>
@@ -927,7 +951,7 @@
         <translation>« %1 » serait écrasé par son propre fichier de matériaux ; donnez un nom de fichier terminé par .obj.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_model.cpp" line="35"/>
+        <location filename="../model/src/export/export_model.cpp" line="66"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>%n objet de l&apos;image %1 n&apos;a pas pu être mis en 3D (un point ou une ligne droite n&apos;a pas de surface à gonfler) et a été omis.</numerusform>
@@ -1436,152 +1460,152 @@
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="54"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="56"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
         <source>the frame list</source>
         <translation>la liste des images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
         <source>a frame</source>
         <translation>une image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="69"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="76"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="78"/>
         <source>%1; the frame is left out</source>
         <translation>%1&#xa0;; l&apos;image est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>a frame id</source>
         <translation>un identifiant d&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the frame</source>
         <translation>l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>a frame hold</source>
         <translation>une durée d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="91"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
         <source>the object list</source>
         <translation>la liste des objets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
         <source>an object</source>
         <translation>un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="105"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
         <source>%1; the object is left out</source>
         <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="118"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="205"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="206"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
         <source>a chunk header</source>
         <translation>un en-tête de bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="230"/>
         <source>a chunk</source>
         <translation>un bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>chunk</source>
         <translation>bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>an object id</source>
         <translation>un identifiant d&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>the object</source>
         <translation>l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>the object flags</source>
         <translation>les attributs de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="138"/>
         <source>the mesh density</source>
         <translation>la densité du maillage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="141"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="158"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
         <source>the object name</source>
         <translation>le nom de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="167"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="172"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
         <source>the stroke list</source>
         <translation>la liste des traits</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
         <source>a stroke id</source>
         <translation>un identifiant de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="192"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="197"/>
         <source>the stroke</source>
         <translation>le trait</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>sa pose a %n trait, mais l&apos;objet en a %1</numerusform>
@@ -1589,7 +1613,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="341"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="346"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>le trait %1 a %n point, mais sa pose en a %2</numerusform>
@@ -1597,122 +1621,122 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>a stroke reference</source>
         <translation>une référence de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="45"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="47"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="185"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="190"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="218"/>
         <source>an unknown chunk is left out</source>
         <translation>un bloc inconnu est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="229"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="234"/>
         <source>%1; the chunk is left out</source>
         <translation>%1&#xa0;; le bloc est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
         <source>the skeleton&apos;s join</source>
         <translation>la jonction du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
         <source>a join comes without a skeleton</source>
         <translation>une jonction est présente sans squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="267"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="272"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>la jonction du squelette est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
         <source>the pin list</source>
         <translation>la liste des épingles</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="290"/>
         <source>a pin id</source>
         <translation>un identifiant d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
         <source>pin %1</source>
         <translation>l&apos;épingle %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="294"/>
         <source>a pin position</source>
         <translation>une position d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
         <source>pin %1 has a non-finite position</source>
         <translation>l&apos;épingle %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
         <source>the cage corner list</source>
         <translation>la liste des coins de la cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="305"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>la cage a moins de 3 coins</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="317"/>
         <source>a cage corner</source>
         <translation>un coin de cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="315"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>le coin de cage %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
         <source>a pose reference</source>
         <translation>une référence de pose</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
         <source>its pose: %1</source>
         <translation>sa pose&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="353"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
         <source>%1 has no id</source>
         <translation>%1 n&apos;a pas d&apos;identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="354"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="362"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="367"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
@@ -2428,52 +2452,52 @@
 <context>
     <name>Thumbnail</name>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="52"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="53"/>
         <source>it is not a regular file</source>
         <translation>ce n&apos;est pas un fichier ordinaire</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="366"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="397"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>une somme de contrôle ne correspond pas, le fichier est donc endommagé.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="368"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="399"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>il contient des données que cette version de Finbook ne connaît pas.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="371"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="402"/>
         <source>the file is damaged or incomplete.</source>
         <translation>le fichier est endommagé ou incomplet.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="43"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="138"/>
         <source>Usage: finbook thumbnail FILE OUT.png SIZE</source>
         <translation>Utilisation&#xa0;: finbook thumbnail FICHIER SORTIE.png TAILLE</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="49"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="144"/>
         <source>The thumbnail size &quot;%1&quot; is not a whole number from 1 to %2.</source>
         <translation>La taille de vignette «&#xa0;%1&#xa0;» n&apos;est pas un nombre entier de 1 à %2.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="58"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="153"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: it has no frame.</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: il n&apos;a aucune image.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="69"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="163"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: there is not enough memory.</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="75"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="169"/>
         <source>Cannot write the thumbnail &quot;%1&quot;: %2.</source>
         <translation>Impossible d&apos;écrire la vignette «&#xa0;%1&#xa0;»&#xa0;: %2.</translation>
     </message>

@@ -303,17 +303,17 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="161"/>
+        <location filename="../app/cli.cpp" line="163"/>
         <source>No command given; see finbook --help.</source>
         <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="165"/>
+        <location filename="../app/cli.cpp" line="167"/>
         <source>Usage: finbook info FILE</source>
         <translation>使い方: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="177"/>
+        <location filename="../app/cli.cpp" line="187"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
@@ -692,9 +692,10 @@
 <context>
     <name>Export</name>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="37"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="43"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="71"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
-        <location filename="../model/src/export/export_sequence.cpp" line="93"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="100"/>
         <source>there is not enough memory to render it</source>
         <translation>描画に必要なメモリが足りません</translation>
     </message>
@@ -704,7 +705,7 @@
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_encoded.cpp" line="116"/>
+        <location filename="../model/src/export/export_encoded.cpp" line="169"/>
         <source>ffmpeg finished without writing the %1; nothing was exported.</source>
         <translation>ffmpeg は %1 を書き出さずに終了しました。何も書き出されていません。</translation>
     </message>
@@ -790,22 +791,22 @@
         <translation>この書き出しは %1 時間のアニメーション（%2 フレーム）になります。明示的な許可なしに %3 時間を超えることはできないため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="61"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="68"/>
         <source>&quot;%1&quot; is a folder where a file should go; choose another folder.</source>
         <translation>「%1」はファイルを置く場所にあるフォルダーです。別のフォルダーを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="111"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="118"/>
         <source>&quot;%1&quot; is a file, not a folder; choose a folder for the %2 files, or remove the file.</source>
         <translation>「%1」はフォルダーではなくファイルです。%2 ファイル用のフォルダーを選ぶか、そのファイルを削除してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="120"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="127"/>
         <source>&quot;%1&quot; is the top folder of the disk; choose or name a folder for the frames, such as &quot;%2&quot;.</source>
         <translation>「%1」はディスクの最上位フォルダーです。「%2」のように、フレーム用のフォルダーを選ぶか名前を付けてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="130"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="136"/>
         <source>the folder cannot be created</source>
         <translation>フォルダーを作成できません</translation>
     </message>
@@ -835,88 +836,110 @@
         <translation>「%1」はフォルダーです。末尾が .%2 のファイル名を指定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="215"/>
+        <location filename="../model/src/export/exporter.cpp" line="228"/>
         <source>Choose where to export the animation to.</source>
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/exporter.cpp" line="229"/>
+        <location filename="../model/src/export/exporter.cpp" line="242"/>
         <source>%n more sound clip(s) are left out too.</source>
         <translation>
             <numerusform>ほかに %n 個のサウンドクリップも省かれます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="236"/>
+        <location filename="../model/src/export/exporter.cpp" line="249"/>
         <source>Nothing was exported.</source>
         <translation>何も書き出されませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="42"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="54"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="75"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="83"/>
         <source>MP4 video</source>
         <translation>MP4 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="93"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="101"/>
         <source>WebM video</source>
         <translation>WebM 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="107"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="115"/>
         <source>animated PNG</source>
         <translation>アニメーション PNG</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="116"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="177"/>
         <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
         <translation>%1 を書き出すには ffmpeg プログラムが必要ですが、見つかりませんでした。インストールしてから（Debian の場合: apt install ffmpeg）、もう一度書き出してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="207"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="270"/>
         <source>it stopped unexpectedly</source>
         <translation>予期せず停止しました</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="208"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="271"/>
         <source>exit code %1</source>
         <translation>終了コード %1</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="211"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="274"/>
         <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
         <translation>ffmpeg で %1 を作成できませんでした（%2）。何も書き込まれていません。ディスクがいっぱいの場合は、空き容量を増やしてからもう一度書き出してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="222"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="285"/>
         <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
         <translation>
             <numerusform>ffmpeg が %n 秒間進まなかったため停止しました。何も書き込まれていません。ffmpeg が動作するか確認してから、もう一度書き出してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="262"/>
+        <location filename="../model/src/export/pending_output.cpp" line="341"/>
         <source>a folder cannot be created in it</source>
         <translation>その中にフォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/src/export/pending_output.cpp" line="268"/>
+        <location filename="../model/src/export/pending_output.cpp" line="362"/>
         <source>&quot;%1&quot; is a folder where a file should go</source>
         <translation>ファイルを置くべき場所に「%1」というフォルダーがあります</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="21"/>
+        <location filename="../model/src/export/export_model.cpp" line="19"/>
+        <source>The 3D model of frame %1 would have more than %L2 vertices, the most a 3D export writes (about 25 MB of glTF). Nothing was exported; lower the mesh density of its objects (Deform → Mesh Density) or hide some of them.</source>
+        <translation>フレーム %1 の 3D モデルは頂点が %L2 個を超えます。これは 3D 書き出しの上限です（glTF で約 25 MB）。何も書き出していません。オブジェクトのメッシュ密度を下げる（変形 → メッシュ密度）か、いくつか非表示にしてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_model.cpp" line="30"/>
         <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
         <translation>フレーム %1 には 3D モデルにできる絵がありません。別のフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="25"/>
+        <location filename="../model/src/export/export_model.cpp" line="35"/>
+        <source>No object of frame %1 can be made 3D: their points lie more than %L2 pixels from the page, too far out to mesh. Nothing was exported; move the drawing back onto the page or choose another frame.</source>
+        <translation>フレーム %1 のオブジェクトはどれも 3D にできません。点がページから %L2 ピクセル以上離れていて、メッシュにできません。何も書き出していません。絵をページに戻すか、別のフレームを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_model.cpp" line="43"/>
+        <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate, or lies too far from the page to mesh. Nothing was exported; draw a shape or choose another frame.</source>
+        <translation>フレーム %1 のオブジェクトはどれも 3D にできません。どれも点か直線で膨らませる面がないか、ページから遠すぎてメッシュにできません。何も書き出していません。形を描くか、別のフレームを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_model.cpp" line="50"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>フレーム %1 のオブジェクトはどれも 3D にできません。どれも点か直線で、膨らませる面がありません。何も書き出していません。形を描くか、別のフレームを選んでください。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/src/export/export_model.cpp" line="61"/>
+        <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and were left out.</source>
+        <translation>
+            <numerusform>フレーム %1 のオブジェクト %n 個は 3D にできず（点や直線には膨らませる面がなく、ページから遠く離れた絵はメッシュにできません）、省きました。</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../model/src/export/export_obj.cpp" line="148"/>
@@ -924,7 +947,7 @@
         <translation>「%1」は自身のマテリアルファイルで上書きされてしまいます。末尾が .obj のファイル名を指定してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_model.cpp" line="35"/>
+        <location filename="../model/src/export/export_model.cpp" line="66"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>フレーム %1 の %n 個のオブジェクトは 3D にできなかったため (点や直線には膨らませる面がありません)、省きました。</numerusform>
@@ -1432,281 +1455,281 @@
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="54"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="56"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
         <source>the frame list</source>
         <translation>フレーム一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="64"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
         <source>a frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="69"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>フレームが途中で切れているため、以降のフレームとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="76"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="78"/>
         <source>%1; the frame is left out</source>
         <translation>%1。このフレームは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="85"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
         <source>a frame id</source>
         <translation>フレーム ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="86"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>the frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>a frame hold</source>
         <translation>フレームの表示時間</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="91"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>表示時間 %1 が 1～%2 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
         <source>the object list</source>
         <translation>オブジェクト一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="100"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
         <source>an object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="105"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>オブジェクトが途中で切れているため、以降のオブジェクトとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="112"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
         <source>%1; the object is left out</source>
         <translation>%1。このオブジェクトは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="117"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="118"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="205"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="206"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
         <source>a chunk header</source>
         <translation>チャンクヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="207"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="230"/>
         <source>a chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="215"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
         <source>chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="128"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
         <source>an object id</source>
         <translation>オブジェクト ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="129"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>the object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>the object flags</source>
         <translation>オブジェクトのフラグ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>オブジェクトのフラグ 0x%1 は不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="138"/>
         <source>the mesh density</source>
         <translation>メッシュ密度</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="141"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>メッシュ密度 %1 が 0～1000 の数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="153"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="158"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
         <source>the object name</source>
         <translation>オブジェクト名</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="156"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>オブジェクト名が %1 バイトあります（最大 %2 バイト）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="167"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="172"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>オブジェクト名が有効な UTF-8 テキストではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
         <source>the stroke list</source>
         <translation>ストローク一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="181"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
         <source>a stroke id</source>
         <translation>ストローク ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="192"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="197"/>
         <source>the stroke</source>
         <translation>ストローク</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>ポーズのストローク数は %n ですが、オブジェクトのストローク数は %1 です</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="341"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="346"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>ストローク %1 の点の数は %n ですが、ポーズでは %2 です</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="182"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>a stroke reference</source>
         <translation>ストロークの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="45"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="47"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 には %2 個の項目があるはずですが、収まっている %3 個を読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="185"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="190"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>ストロークデータ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="218"/>
         <source>an unknown chunk is left out</source>
         <translation>不明なチャンクを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>チャンク %1 が 2 回、または別のリグと一緒に現れます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="229"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="234"/>
         <source>%1; the chunk is left out</source>
         <translation>%1。このチャンクは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="257"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
         <source>the skeleton&apos;s join</source>
         <translation>スケルトンの接続</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
         <source>a join comes without a skeleton</source>
         <translation>スケルトンのない接続があります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="267"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="272"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>スケルトンの接続が壊れています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
         <source>the pin list</source>
         <translation>ピン一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="290"/>
         <source>a pin id</source>
         <translation>ピン ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
         <source>pin %1</source>
         <translation>ピン %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="289"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="294"/>
         <source>a pin position</source>
         <translation>ピンの位置</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
         <source>pin %1 has a non-finite position</source>
         <translation>ピン %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
         <source>the cage corner list</source>
         <translation>ケージの頂点一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="305"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>ケージの頂点が 3 個未満です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="317"/>
         <source>a cage corner</source>
         <translation>ケージの頂点</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="315"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>ケージの頂点 %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="324"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
         <source>a pose reference</source>
         <translation>ポーズの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="326"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>ポーズがポーズ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
         <source>its pose: %1</source>
         <translation>ポーズ: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="353"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
         <source>%1 has no id</source>
         <translation>%1 に ID がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="354"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 の ID %2 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="362"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="367"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
@@ -2418,52 +2441,52 @@
 <context>
     <name>Thumbnail</name>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="52"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="53"/>
         <source>it is not a regular file</source>
         <translation>通常のファイルではありません</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="346"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>「%1」のサムネイルを作成できません: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="366"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="397"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>チェックサムが一致しないため、ファイルが破損しています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="368"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="399"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>このバージョンの Finbook が知らないデータが含まれています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="371"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="402"/>
         <source>the file is damaged or incomplete.</source>
         <translation>ファイルが破損しているか不完全です。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="43"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="138"/>
         <source>Usage: finbook thumbnail FILE OUT.png SIZE</source>
         <translation>使い方: finbook thumbnail ファイル 出力.png サイズ</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="49"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="144"/>
         <source>The thumbnail size &quot;%1&quot; is not a whole number from 1 to %2.</source>
         <translation>サムネイルのサイズ「%1」は 1 から %2 までの整数ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="58"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="153"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: it has no frame.</source>
         <translation>「%1」のサムネイルを作成できません: フレームがありません。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="69"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="163"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: there is not enough memory.</source>
         <translation>「%1」のサムネイルを作成できません: メモリが足りません。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/thumbnail_command.cpp" line="75"/>
+        <location filename="../app/thumbnail/thumbnail_command.cpp" line="169"/>
         <source>Cannot write the thumbnail &quot;%1&quot;: %2.</source>
         <translation>サムネイル「%1」を書き込めません: %2。</translation>
     </message>

@@ -23,6 +23,14 @@
         </translation>
     </message>
     <message numerus="yes">
+        <location filename="../../model/src/export/export_model.cpp" line="61"/>
+        <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and were left out.</source>
+        <translation>
+            <numerusform>%n object of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and was left out.</numerusform>
+            <numerusform>%n objects of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and were left out.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
         <location filename="../../model/src/export/export_model.cpp" line="35"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
