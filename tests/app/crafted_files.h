@@ -109,9 +109,9 @@ inline QByteArray manyFills(int count)
 }
 
 // `objects` objects all holding the one circle stroke data (the file stores it once), each
-// filled, at mesh density `density`; `layered`: each circle its own, slightly smaller one
-// inside the last (every object a separate stroke).
-inline QByteArray repeatedCircles(int objects, double density, bool layered = false)
+// filled, at mesh density `density`; `distinct`: each object its own circle, slightly smaller
+// than the last (every object a separate stroke to mesh).
+inline QByteArray repeatedCircles(int objects, double density, bool distinct = false)
 {
     model::Frame frame;
     frame.id = 1;
@@ -125,7 +125,7 @@ inline QByteArray repeatedCircles(int objects, double density, bool layered = fa
         const model::Id stroke = id++;
         group.strokes.push_back(
             {stroke,
-             layered ? circle({640, 360}, 300.0 - 250.0 * i / std::max(1, objects)) : shared});
+             distinct ? circle({640, 360}, 300.0 - 250.0 * i / std::max(1, objects)) : shared});
         model::Fill fill;
         fill.color = qRgb(200, 80 + i % 150, 60);
         fill.seed = QPointF(640, 360);

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace finbook::model {
 
@@ -182,11 +183,30 @@ std::optional<FrameSolids> frameSolids(const Frame &frame, const DocumentSetting
     FrameSolids out;
     for (const StrokeGroup &group : frame.groups)
         out.candidates += group.visible && hasPoints(group) ? 1 : 0;
+    // Objects showing the very same rest strokes at the same density (pasted copies in place)
+    // have the same solid: it is made once and copied. (A posed object's strokes are made
+    // afresh, so it is never taken for another.)
+    std::map<std::pair<std::vector<const StrokeData *>, double>, std::size_t> made;
     int done = 0;
     for (const StrokeGroup &group : frame.groups) {
         if (!group.visible || !hasPoints(group))
             continue;
-        auto solid = solidOf(group, settings.closeGap, maxVertices - out.vertices);
+        std::pair<std::vector<const StrokeData *>, double> key{{}, group.meshDensity};
+        for (const Stroke &s : group.strokes)
+            key.first.push_back(s.data.get());
+        const bool shared = !group.isDeformed();
+        Expected<geometry::InflatedSolid, NoSolid> solid = unexpected(NoSolid::Failed);
+        if (const auto same = shared ? made.find(key) : made.end(); same != made.end()) {
+            const geometry::InflatedSolid &copy = out.objects[same->second].solid;
+            if (out.vertices + copy.V.rows() > maxVertices)
+                solid = unexpected(NoSolid::OverBudget);
+            else
+                solid = copy;
+        } else {
+            solid = solidOf(group, settings.closeGap, maxVertices - out.vertices);
+            if (solid && shared)
+                made.emplace(std::move(key), out.objects.size());
+        }
         if (solid) {
             out.vertices += solid->V.rows();
             out.objects.push_back({group.id, group.name,
