@@ -2,8 +2,13 @@
 // piece drawn over them hides cut away, so the baked drawing, whose fills all lie under all its
 // strokes, shows what the layered pose showed.
 #include <finbook/model/fill/fill_render.h>
+#include <finbook/model/fill/fill_resolve.h>
+
+#include <QImage>
+#include <QPainter>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace finbook::model {
@@ -187,6 +192,149 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
     DocumentSettings settings;
     settings.closeGap = closeGap;
     return bakedStrokes(group, paintLayers(group, settings), newId);
+}
+
+namespace {
+// Outline points closer than this (canvas px) to an inked baked line need no closer.
+constexpr double kLineReach = 1.5;
+// Outline stretches shorter than this (canvas px) are left open: the Close gaps distance
+// closes such slits anyway.
+constexpr double kShortestCloser = 3.0;
+// Outlines are walked in steps of at most this many px.
+constexpr double kOutlineStep = 1.0;
+
+std::vector<QPointF> densified(const QPolygonF &polygon)
+{
+    std::vector<QPointF> out;
+    for (qsizetype i = 0; i + 1 < polygon.size(); ++i) {
+        const QPointF a = polygon[i], b = polygon[i + 1];
+        const double length = QLineF(a, b).length();
+        const int steps = std::max(1, int(std::ceil(length / kOutlineStep)));
+        for (int k = 0; k < steps; ++k)
+            out.push_back(a + (b - a) * (double(k) / steps));
+    }
+    return out;
+}
+} // namespace
+
+std::vector<Stroke> cutOutClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                  double closeGap, const std::function<Id()> &newId)
+{
+    if (group.fills.empty() || !group.isDeformed() || group.deformed->pieces.empty())
+        return {};
+    DocumentSettings settings;
+    settings.closeGap = closeGap;
+    const std::vector<PaintLayer> layers = paintLayers(group, settings);
+    // The pieces' painted outlines (the roots' piece too: a fill that moved with it may show
+    // past its lines), with the layer each is painted on.
+    std::vector<std::pair<QPolygonF, std::size_t>> outlines;
+    QRectF bounds;
+    for (std::size_t l = 0; l < layers.size(); ++l) {
+        QPainterPath painted;
+        painted.setFillRule(Qt::WindingFill);
+        for (const FillItem &fill : layers[l].fills)
+            painted.addPath(fill.path);
+        if (painted.isEmpty())
+            continue;
+        for (const QPolygonF &polygon : painted.simplified().toSubpathPolygons()) {
+            outlines.emplace_back(polygon, l);
+            bounds |= polygon.boundingRect();
+        }
+    }
+    if (outlines.empty() || !bounds.isValid() || bounds.width() * bounds.height() > 64e6)
+        return {};
+    // Where the inked baked lines run, drawn into a mask over the outlines' bounds.
+    bounds.adjust(-4, -4, 4, 4);
+    QImage mask(bounds.size().toSize() + QSize(1, 1), QImage::Format_Alpha8);
+    if (mask.isNull())
+        return {};
+    mask.fill(0);
+    double widest = 1.0;
+    {
+        QPainter painter(&mask);
+        painter.translate(-bounds.topLeft());
+        for (const Stroke &s : baked) {
+            if (!s.data || qAlpha(s.data->color) == 0 || s.data->points.empty())
+                continue;
+            const double width = std::isfinite(s.data->width) ? double(s.data->width) : 1.0;
+            widest = std::max(widest, std::min(width, 64.0));
+            painter.setPen(QPen(Qt::black, width + 2.0 * kLineReach, Qt::SolidLine, Qt::RoundCap,
+                                Qt::RoundJoin));
+            QPolygonF line;
+            for (const StrokePoint &p : s.data->points)
+                line << QPointF(p.x, p.y);
+            line.size() == 1 ? painter.drawPoint(line.front()) : painter.drawPolyline(line);
+        }
+    }
+    const auto inked = [&](QPointF p) {
+        const QPoint at = (p - bounds.topLeft()).toPoint();
+        return mask.rect().contains(at) && qAlpha(mask.pixel(at)) > 0;
+    };
+    const Covers covers(layers);
+    // A closer runs on into the line it meets, past its middle, so that the regions join them
+    // (they follow the lines' middles).
+    const int reach = int(std::ceil((0.5 * widest + kLineReach + 1.0) / kOutlineStep));
+    std::vector<Stroke> out;
+    const auto addCloser = [&](const std::vector<QPointF> &run) {
+        double length = 0.0;
+        for (std::size_t k = 1; k < run.size(); ++k)
+            length += QLineF(run[k - 1], run[k]).length();
+        if (run.size() < 2 || length < kShortestCloser)
+            return;
+        auto data = std::make_shared<StrokeData>();
+        data->color = kGapCloserColor;
+        data->width = 1.0f;
+        for (const QPointF &p : run)
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        out.push_back({newId(), std::move(data)});
+    };
+    for (const auto &[outline, layer] : outlines) {
+        const std::vector<QPointF> points = densified(outline);
+        const std::size_t n = points.size();
+        if (n < 3)
+            continue;
+        // 'o': the colour ends here and nothing draws the edge (a closer goes here); 'i': an
+        // inked line runs here; 'h': a piece above hides the edge (the pose shows none).
+        std::vector<char> state(n);
+        for (std::size_t k = 0; k < n; ++k)
+            state[k] = covers.hides(layer, points[k]) ? 'h' : inked(points[k]) ? 'i' : 'o';
+        const auto first =
+            std::find_if(state.begin(), state.end(), [](char c) { return c != 'o'; });
+        if (first == state.end()) { // an edge drawn nowhere: closed whole
+            std::vector<QPointF> ring = points;
+            ring.push_back(points.front());
+            addCloser(ring);
+            continue;
+        }
+        // Walk from a point that needs no closer, so that a stretch across the polygon's first
+        // point stays one line.
+        const std::size_t start = std::size_t(first - state.begin());
+        for (std::size_t k = 0; k < n;) {
+            const std::size_t at = (start + k) % n;
+            if (state[at] != 'o') {
+                ++k;
+                continue;
+            }
+            std::size_t end = k; // the stretch k .. end-1 (walk order)
+            while (end < n && state[(start + end) % n] == 'o')
+                ++end;
+            std::vector<QPointF> run;
+            // Into the inked line before it and after it, never into a hidden edge.
+            int back = 0;
+            while (back < reach && k > std::size_t(back) &&
+                   state[(start + k - std::size_t(back) - 1) % n] == 'i')
+                ++back;
+            for (int j = back; j > 0; --j)
+                run.push_back(points[(start + k - std::size_t(j)) % n]);
+            for (std::size_t j = k; j < end; ++j)
+                run.push_back(points[(start + j) % n]);
+            for (int j = 0; j < reach && state[(start + end + std::size_t(j)) % n] == 'i'; ++j)
+                run.push_back(points[(start + end + std::size_t(j)) % n]);
+            addCloser(run);
+            k = end;
+        }
+    }
+    return out;
 }
 
 } // namespace finbook::model
