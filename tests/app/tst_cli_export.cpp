@@ -680,11 +680,13 @@ void TestCliExport::swapSurvivesAKillAtEveryStep()
 {
     const QString oldFrames = m_dir.filePath(QStringLiteral("swap-old"));
     const QString newFrames = m_dir.filePath(QStringLiteral("swap-new"));
-    QCOMPARE(runFinbook({QStringLiteral("export"), m_held, oldFrames}).code, 0); // 18 files
-    QCOMPARE(
-        runFinbook({QStringLiteral("export"), m_held, newFrames, QStringLiteral("--range=3-8")})
-            .code,
-        0); // 9 files, other pictures
+    // Tiny pictures: the swap is what is tested, and the export runs 60 times.
+    const QString small = QStringLiteral("--scale=0.05");
+    QCOMPARE(runFinbook({QStringLiteral("export"), m_held, oldFrames, small}).code, 0); // 18 files
+    QCOMPARE(runFinbook({QStringLiteral("export"), m_held, newFrames, small,
+                         QStringLiteral("--range=3-8")})
+                 .code,
+             0); // 9 files, other pictures
     const auto before = folderContents(oldFrames), after = folderContents(newFrames);
     QCOMPARE(before.size(), std::size_t(18));
     QCOMPARE(after.size(), std::size_t(9));
@@ -694,7 +696,7 @@ void TestCliExport::swapSurvivesAKillAtEveryStep()
         copyFolder(oldFrames, folder);
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("FINBOOK_TEST_KILL_AT_SWAP_STEP"), QString::number(step));
-        const Run swap = runFinbook({QStringLiteral("export"), m_held, folder,
+        const Run swap = runFinbook({QStringLiteral("export"), m_held, folder, small,
                                      QStringLiteral("--range=3-8"), QStringLiteral("--overwrite")},
                                     env);
         if (swap.code == 0) { // past the last step: the swap ended
@@ -705,7 +707,8 @@ void TestCliExport::swapSurvivesAKillAtEveryStep()
         ++killed;
         // The next export: with --overwrite every other time, without it otherwise.
         const bool overwrite = step % 2 == 1;
-        QStringList next{QStringLiteral("export"), m_held, folder, QStringLiteral("--range=3-8")};
+        QStringList next{QStringLiteral("export"), m_held, folder, small,
+                         QStringLiteral("--range=3-8")};
         if (overwrite)
             next << QStringLiteral("--overwrite");
         const Run again = runFinbook(next);

@@ -716,7 +716,7 @@ void TestLimits::craftedFilesCostLittle()
         QVERIFY2(thumb.seconds < 4, qPrintable(QString::number(thumb.seconds)));
         QVERIFY2(thumb.peakMiB < 300, qPrintable(QString::number(thumb.peakMiB)));
     }
-    for (const QString suffix : {QStringLiteral(".glb"), QStringLiteral(".obj")}) {
+    for (const QString &suffix : {QStringLiteral(".glb"), QStringLiteral(".obj")}) {
         const Measured model = runMeasured(
             {QStringLiteral("export"), path, out + suffix, QStringLiteral("--overwrite")});
         qInfo("{\"case\":\"%s\",\"command\":\"%s\",\"code\":%d,\"seconds\":%.2f,"
