@@ -83,20 +83,30 @@ inline QByteArray shadedGrid(int lines, QSize canvas, double density,
     return model::serializeFinbook({frame}, settings);
 }
 
-// `count` fills on one square (each a later coat of the same region).
-inline QByteArray manyFills(int count)
+// One frame (id 1) of one object (id 2, `name`) of one stroke (id 3) through `corners`.
+inline model::Frame polygonFrame(const QString &name, const std::vector<QPointF> &corners)
 {
     model::Frame frame;
     frame.id = 1;
     model::StrokeGroup group;
     group.id = 2;
-    group.name = QStringLiteral("square");
-    auto square = std::make_shared<model::StrokeData>();
-    square->width = 3.0f;
-    for (QPointF p : {QPointF(100, 100), QPointF(400, 100), QPointF(400, 400), QPointF(100, 400),
-                      QPointF(100, 100)})
-        square->points.push_back({float(p.x()), float(p.y()), 1.0f});
-    group.strokes.push_back({3, square});
+    group.name = name;
+    auto data = std::make_shared<model::StrokeData>();
+    data->width = 3.0f;
+    for (const QPointF &p : corners)
+        data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+    group.strokes.push_back({3, data});
+    frame.groups.push_back(std::move(group));
+    return frame;
+}
+
+// `count` fills on one square (each a later coat of the same region).
+inline QByteArray manyFills(int count)
+{
+    model::Frame frame = polygonFrame(QStringLiteral("square"),
+                                      {QPointF(100, 100), QPointF(400, 100), QPointF(400, 400),
+                                       QPointF(100, 400), QPointF(100, 100)});
+    model::StrokeGroup &group = frame.groups.front();
     for (int i = 0; i < count; ++i) {
         model::Fill fill;
         fill.color = qRgb(i % 256, 90, 200);
@@ -104,7 +114,6 @@ inline QByteArray manyFills(int count)
         fill.strokes = {3};
         group.fills.push_back(fill);
     }
-    frame.groups.push_back(std::move(group));
     return model::serializeFinbook({frame}, model::DocumentSettings{});
 }
 

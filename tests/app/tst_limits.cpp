@@ -742,16 +742,9 @@ void TestLimits::craftedFilesCostLittle()
 void TestLimits::farDrawingIsSaidToBeFar()
 {
     for (const double at : {1e7, 1e20, 3e38}) {
-        model::Frame frame;
-        frame.id = 1;
-        model::StrokeGroup group;
-        group.id = 2;
-        group.name = QStringLiteral("far");
-        auto data = std::make_shared<model::StrokeData>();
-        for (const QPointF p : {QPointF(0, 0), QPointF(400, 0), QPointF(200, 300), QPointF(0, 0)})
-            data->points.push_back({float(at + p.x()), float(at + p.y()), 1.0f});
-        group.strokes.push_back({3, data});
-        frame.groups.push_back(group);
+        const model::Frame frame = crafted::polygonFrame(
+            QStringLiteral("far"),
+            {QPointF(at, at), QPointF(at + 400, at), QPointF(at + 200, at + 300), QPointF(at, at)});
         const QString path = writeFile(m_dir, QStringLiteral("far-%1.finbook").arg(at),
                                        model::serializeFinbook({frame}, model::DocumentSettings{}));
         const QString out = m_dir.filePath(QStringLiteral("far-%1.glb").arg(at));

@@ -11,35 +11,22 @@ namespace finbook::model {
 namespace {
 QStringList inputArguments(const ExportPlan &plan, const QString &concat)
 {
-    if (!concat.isEmpty()) // drawings as files, each with its duration
-        return {QStringLiteral("-hide_banner"),
-                QStringLiteral("-nostats"),
-                QStringLiteral("-loglevel"),
-                QStringLiteral("error"),
-                QStringLiteral("-xerror"),
-                QStringLiteral("-f"),
-                QStringLiteral("concat"),
-                QStringLiteral("-safe"),
-                QStringLiteral("0"),
-                QStringLiteral("-i"),
-                QStringLiteral("file:") + concat};
     // -xerror: without it ffmpeg 5.1 reports a failed write (a full disk) and still exits
     // with 0, leaving a truncated file.
-    return {QStringLiteral("-hide_banner"),
-            QStringLiteral("-nostats"),
-            QStringLiteral("-loglevel"),
-            QStringLiteral("error"),
-            QStringLiteral("-xerror"),
-            QStringLiteral("-f"),
-            QStringLiteral("rawvideo"),
-            QStringLiteral("-pix_fmt"),
-            QStringLiteral("bgra"), // QImage::Format_ARGB32 in little-endian memory
-            QStringLiteral("-video_size"),
-            QStringLiteral("%1x%2").arg(plan.size.width()).arg(plan.size.height()),
-            QStringLiteral("-framerate"),
-            QString::number(plan.fps),
-            QStringLiteral("-i"),
-            QStringLiteral("pipe:0")};
+    QStringList arguments{QStringLiteral("-hide_banner"), QStringLiteral("-nostats"),
+                          QStringLiteral("-loglevel"), QStringLiteral("error"),
+                          QStringLiteral("-xerror")};
+    if (!concat.isEmpty()) // drawings as files, each with its duration
+        return arguments << QStringLiteral("-f") << QStringLiteral("concat")
+                         << QStringLiteral("-safe") << QStringLiteral("0") << QStringLiteral("-i")
+                         << QStringLiteral("file:") + concat;
+    return arguments << QStringLiteral("-f") << QStringLiteral("rawvideo")
+                     << QStringLiteral("-pix_fmt")
+                     << QStringLiteral("bgra") // QImage::Format_ARGB32 in little-endian memory
+                     << QStringLiteral("-video_size")
+                     << QStringLiteral("%1x%2").arg(plan.size.width()).arg(plan.size.height())
+                     << QStringLiteral("-framerate") << QString::number(plan.fps)
+                     << QStringLiteral("-i") << QStringLiteral("pipe:0");
 }
 
 // Two runs over the same frames, so that memory does not grow with their number: one
