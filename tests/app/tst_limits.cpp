@@ -731,7 +731,9 @@ void TestLimits::craftedFilesCostLittle()
             QVERIFY2(model.code == 0, model.err.constData());
             QVERIFY(QFileInfo(out + suffix).size() < (qint64(150) << 20));
         }
-        QVERIFY2(model.seconds < 60, qPrintable(QString::number(model.seconds)));
+        // Refused or written within a minute (sanitizer builds run several times slower).
+        QVERIFY2(model.seconds < (kUnderAsan ? 300 : 60),
+                 qPrintable(QString::number(model.seconds)));
         if (!kUnderAsan)
             QVERIFY2(model.peakMiB < 500, qPrintable(QString::number(model.peakMiB)));
     }
