@@ -3,6 +3,8 @@
 // crash or a huge allocation.
 #include "tst_file_sample.h"
 
+#include <finbook/model/pins/pin_commands.h>
+
 #include <QRandomGenerator>
 #include <QTemporaryDir>
 
@@ -19,6 +21,7 @@ private slots:
     void invalidValuesAreRejected_data();
     void invalidValuesAreRejected();
     void badNameUtf8IsRejected();
+    void meshDensityIsHeldToTheEditors();
     void newerVersionIsRefused();
     void flippedVersionBitsAreDamage();
     void flippedLengthsAreDamageNotTruncation();
@@ -134,6 +137,24 @@ void TestFileMalformed::invalidValuesAreRejected()
     QString message;
     QCOMPARE(errorOf(bytes, &message), FileErrorCode::BadValue);
     QVERIFY2(message.contains(expected, Qt::CaseInsensitive), qPrintable(message));
+}
+
+// A mesh density the editor cannot set (it offers 0.25 to 4) is read as the nearest it can:
+// a file asking for density 100 (work and memory grow with the square) costs what 4 costs.
+void TestFileMalformed::meshDensityIsHeldToTheEditors()
+{
+    for (const auto &[stored, read] : {std::pair{100.0, kMaxMeshDensity}, std::pair{4.5, 4.0},
+                                       std::pair{0.01, kMinMeshDensity}, std::pair{2.0, 2.0}}) {
+        Document doc;
+        buildSample(doc);
+        std::vector<Frame> frames = doc.frames();
+        frames[1].groups[1].meshDensity = stored;
+        Document crafted;
+        crafted.reset(std::move(frames), doc.settings(), doc.nextId());
+        auto loaded = readFinbook(serializeFinbook(crafted));
+        QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+        QCOMPARE(loaded->frames[1].groups[1].meshDensity, read);
+    }
 }
 
 void TestFileMalformed::badNameUtf8IsRejected()
