@@ -129,10 +129,6 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
     // alone would leave it open.
     for (Stroke &closer : keptGapClosers(*g, m_newStrokes, doc->settings().closeGap, newId))
         m_newStrokes.push_back(std::move(closer));
-    // A cut-out piece's colour ends at its cut, where no line is: a line of no ink keeps the
-    // baked regions ending there too.
-    for (Stroke &closer : cutOutClosers(*g, m_newStrokes, doc->settings().closeGap, newId))
-        m_newStrokes.push_back(std::move(closer));
     m_oldFills = g->fills;
     m_newFills = fillsAfterBake(*g, m_newStrokes, doc->settings().closeGap);
 }

@@ -65,15 +65,6 @@ constexpr QRgb kGapCloserColor = 0x00000000;
 std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                    double closeGap, const std::function<Id()> &newId);
 
-// A cut-out pose's pieces end their colour where they are cut, where no line is: a limb
-// turned over the body shows its fill up to the cut, and the baked lines alone would join the
-// limb's region to the body's behind it. Each stretch of a piece's painted outline (its fills
-// as paintLayers clips them, sockets included) that no baked line (`baked`, inked) runs along
-// gets a line of no ink (kGapCloserColor), with new ids from `newId`, so that the baked
-// regions end where the pieces' colours did. Empty for anything but a cut-out pose with fills.
-std::vector<Stroke> cutOutClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                                  double closeGap, const std::function<Id()> &newId);
-
 // The face under canvas point p as the object shows now (posed where it is posed), or -1.
 int displayedFaceAt(const ObjectRegions &regions, const StrokeGroup &group, QPointF p);
 
