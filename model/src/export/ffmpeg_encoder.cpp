@@ -109,7 +109,7 @@ namespace {
 // group: it waits on a pipe only Finbook writes to and, once that closes (Finbook ended or
 // finished with the encoder), kills the whole group, so nothing the encoder left in the
 // background outlives the export.
-void becomeEncoder(int guardRead, int guardWrite)
+void becomeEncoder(int guardRead)
 {
     ::setpgid(0, 0);
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -120,7 +120,6 @@ void becomeEncoder(int guardRead, int guardWrite)
             ::dup2(devNull, fd);
         ::dup2(guardRead, 3);
         ::close_range(4, ~0u, 0); // every other descriptor of Finbook's (its pipes, its files)
-        (void)guardWrite;
         char byte;
         while (::read(3, &byte, 1) != 0 && errno == EINTR) {
         }
@@ -151,8 +150,7 @@ std::optional<ExportError> FfmpegEncoder::start(const QStringList &arguments)
         int guard[2] = {-1, -1};
         if (::pipe2(guard, O_CLOEXEC) == 0) {
             m_guardWrite = guard[1];
-            m_process.setChildProcessModifier(
-                [read = guard[0], write = guard[1]] { becomeEncoder(read, write); });
+            m_process.setChildProcessModifier([read = guard[0]] { becomeEncoder(read); });
         } else { // no guard: the encoder still dies with Finbook
             m_process.setChildProcessModifier([] {
                 ::setpgid(0, 0);
