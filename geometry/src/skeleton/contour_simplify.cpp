@@ -16,7 +16,6 @@ namespace {
 
 constexpr int kMaxSteps = 40;
 constexpr double kStep = 1.25;
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // The smallest local half-width the adaptive budget resolves, in starting tolerances.
 constexpr double kMinScale = 4.0;
 // Outline detail within this many starting tolerances of a vertex (pixel steps) does not make

@@ -9,8 +9,6 @@
 namespace finbook::geometry::detail {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 // Radius of the disk tangent at p with inward unit normal n that first touches the segment
 // a–b (+inf if it never does).
 double touchRadius(const Eigen::Vector2d &p, const Eigen::Vector2d &n, const Eigen::Vector2d &a,

@@ -3,9 +3,13 @@
 
 #include <finbook/geometry/region.h>
 
+#include <limits>
 #include <vector>
 
 namespace finbook::geometry::detail {
+
+// +inf, as localHalfWidths gives it where nothing bounds a vertex.
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Per ring of `polygon` (outer first, then the holes), per vertex: the radius of the largest
 // disk inside the polygon that touches the outline at that vertex (tangent to the vertex's

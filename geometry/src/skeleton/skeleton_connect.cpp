@@ -12,7 +12,7 @@ namespace {
 
 using namespace detail;
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 // The nearest point to q on a segment a–b: parameter t ∈ [0, 1] and distance.
 double project(const Eigen::Vector2d &q, const Eigen::Vector2d &a, const Eigen::Vector2d &b,
@@ -44,9 +44,9 @@ std::optional<Eigen::Vector2d> crossing(const Eigen::Vector2d &a, const Eigen::V
 // no bones): the smallest distance / interpolated radius, and the point it projects to.
 double depthIn(const Skeleton &parent, const Eigen::Vector2d &q, Eigen::Vector2d &at)
 {
-    double best = kInfinity;
+    double best = kUnbounded;
     auto consider = [&](double d, double r, const Eigen::Vector2d &p) {
-        const double ratio = r > 0.0 ? d / r : (d > 0.0 ? kInfinity : 0.0);
+        const double ratio = r > 0.0 ? d / r : (d > 0.0 ? kUnbounded : 0.0);
         if (ratio < best) {
             best = ratio;
             at = p;
@@ -70,7 +70,7 @@ double depthIn(const Skeleton &parent, const Eigen::Vector2d &q, Eigen::Vector2d
 
 struct Candidate {
     PartJoin join;
-    double depth = kInfinity;
+    double depth = kUnbounded;
 };
 
 Candidate bestJoin(int childPart, const Skeleton &child, int parentPart, const Skeleton &parent)
