@@ -1,8 +1,8 @@
-// finbook-bench bake [--png DIR] FILE...: what you see is what you keep. For each drawing
-// (Quick, Draw! "strokes" or a shape's "contours", shared/data/README.md; pen 3 px): Fill All,
-// each fill then recoloured apart (so a fill that moves to another region shows), then for each
-// rig kind and skinning (pins: the arap --quality bend, the right end turned 60° round the held
-// left end; cage: Fit Cage with two opposite corners moved out; skeleton: the automatic one,
+// finbook-bench bake [--png DIR] [--rig NAME] FILE...: what you see is what you keep. For each
+// drawing (Quick, Draw! "strokes" or a shape's "contours", shared/data/README.md; pen 3 px): Fill
+// All, each fill then recoloured apart (so a fill that moves to another region shows), then for
+// each rig kind and skinning (pins: the arap --quality bend, the right end turned 60° round the
+// held left end; cage: Fit Cage with two opposite corners moved out; skeleton: the automatic one,
 // every limb turned ±60° at its base, in each skinning) pose it, render the posed object as the
 // app draws it, Apply Pose to Drawing, render again. One JSON object per drawing and rig:
 // agree_pct (the share of the drawing's pixels whose colour agrees, each channel within
@@ -10,7 +10,10 @@
 // filled_px before and after (fills alone), fills before and after, and how many fills show.
 // A last line per rig kind sums up: bake_agree_pct_min and bake_agree_pct_median, the worst
 // drawing, the largest filled-area change and how many drawings changed their fill count.
-// --png writes, per drawing and rig, the posed picture, the baked one and the differences.
+// --png writes, per drawing and rig, the posed picture, the baked one and the differences;
+// --rig pins|cage|skeleton_rigid|skeleton_blend|skeleton_cut_out measures that one alone;
+// --faces outlines the baked drawing's faces (green) and gap closures (magenta) on the
+// differences.
 #include "../model/bake_support.h"
 #include "bench.h"
 
@@ -19,6 +22,7 @@
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/document.h>
 #include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/fill/fill_regions.h>
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/render.h>
@@ -34,75 +38,22 @@
 #include <QJsonObject>
 #include <QPainter>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <numbers>
 
 using namespace finbook::model;
+using finbook::testing::drawingDocument;
+using finbook::testing::readDrawing;
+using finbook::testing::skeletonBend;
 
 namespace {
 
-constexpr float kPenWidth = 3.0f;
 constexpr int kPicture = 640;    // the longer side of the compared pictures, px
 constexpr double kTurn = 60.0;   // degrees: the pins' bend and each limb's turn
 constexpr double kCageOut = 0.2; // the two cage corners move out by this share of the size
-
-std::vector<std::vector<QPointF>> readDrawing(const QString &path, QString *error)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("cannot open");
-        return {};
-    }
-    const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
-    std::vector<std::vector<QPointF>> lines;
-    const auto points = [](const QJsonArray &array) {
-        std::vector<QPointF> out;
-        for (const QJsonValue &p : array)
-            out.emplace_back(p.toArray().at(0).toDouble(), p.toArray().at(1).toDouble());
-        return out;
-    };
-    if (json.contains(QStringLiteral("strokes"))) {
-        for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray())
-            lines.push_back(points(stroke.toArray()));
-    } else if (json.contains(QStringLiteral("contours"))) {
-        for (const QJsonValue &contour : json.value(QStringLiteral("contours")).toArray()) {
-            std::vector<QPointF> ring = points(contour.toArray());
-            if (!ring.empty())
-                ring.push_back(ring.front());
-            lines.push_back(std::move(ring));
-        }
-    } else {
-        *error = QStringLiteral("neither strokes nor contours");
-    }
-    return lines;
-}
-
-// A document of one frame whose one object holds the drawing, every region filled, each fill
-// in its own colour. Returns the object's id (kNoId when nothing could be drawn).
-Id drawingDocument(Document &doc, const std::vector<std::vector<QPointF>> &lines)
-{
-    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
-    const Id g = doc.frameAt(0).groups.at(0).id;
-    for (const std::vector<QPointF> &line : lines) {
-        if (line.size() < 2)
-            continue;
-        auto data = std::make_shared<StrokeData>();
-        data->width = kPenWidth;
-        for (const QPointF &p : line)
-            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-        doc.undoStack()->push(new AddStrokeCommand(&doc, g, std::move(data)));
-    }
-    if (auto all = fillAllRegionsCommand(&doc, g, 0xff808080))
-        doc.undoStack()->push(all.release());
-    std::vector<Fill> fills = doc.group(g)->fills;
-    for (std::size_t i = 0; i < fills.size(); ++i)
-        fills[i].color = finbook::testing::distinctColour(i);
-    if (!fills.empty())
-        doc.undoStack()->push(new SetFillsCommand(&doc, g, fills, QStringLiteral("Colour")));
-    return g;
-}
 
 QPointF turned(QPointF p, QPointF about, double degrees)
 {
@@ -171,33 +122,6 @@ Rig cageBend(const StrokeGroup &group, double closeGap)
     return rig;
 }
 
-// The automatic skeleton, each limb turned ±60° where it leaves the body (a joint flagged as
-// a limb base; without any, each bone from the root).
-Rig skeletonBend(const StrokeGroup &group, double closeGap, SkinningMode mode)
-{
-    Rig rig;
-    const auto built = buildSkeletonRig(group, {}, std::nullopt, closeGap);
-    if (!built || built->jointCount() < 2)
-        return rig;
-    rig.skeleton = *built;
-    rig.skeleton.mode = mode;
-    rig.skeleton.angles.assign(std::size_t(built->jointCount()), 0.0);
-    bool anyBase = false;
-    for (int j = 0; j < built->jointCount(); ++j)
-        anyBase = anyBase || built->isLimbBase(j);
-    int sign = 1;
-    for (int j = 0; j < built->jointCount(); ++j) {
-        const int parent = built->parent[std::size_t(j)];
-        const bool turns = anyBase ? parent >= 0 && built->isLimbBase(parent)
-                                   : parent >= 0 && parent == built->root;
-        if (!turns)
-            continue;
-        rig.skeleton.angles[std::size_t(j)] = sign * kTurn * std::numbers::pi / 180.0;
-        sign = -sign;
-    }
-    return rig;
-}
-
 int shownFills(const StrokeGroup &group, double closeGap)
 {
     const auto regions = objectRegions(group, closeGap);
@@ -238,7 +162,7 @@ struct Summary {
 };
 
 QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
-                    const Case &c, const QString &pngDir, Summary &summary)
+                    const Case &c, const QString &pngDir, bool showFaces, Summary &summary)
 {
     QJsonObject row{{QStringLiteral("bench"), QStringLiteral("bake")},
                     {QStringLiteral("file"), QFileInfo(file).fileName()},
@@ -254,7 +178,7 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     }
     const Rig rig = c.kind == RigKind::Pins   ? pinBend(group)
                     : c.kind == RigKind::Cage ? cageBend(group, closeGap)
-                                              : skeletonBend(group, closeGap, c.mode);
+                                              : skeletonBend(group, closeGap, c.mode, kTurn);
     const QString error = rig.empty() ? QString() : finbook::testing::poseObject(doc, g, rig);
     if (rig.empty() || !error.isEmpty()) {
         row.insert(QStringLiteral("error"), rig.empty() ? QStringLiteral("no rig") : error);
@@ -299,6 +223,43 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
         painter.drawImage(0, 0, posed);
         painter.drawImage(kPicture, 0, baked);
         painter.drawImage(2 * kPicture, 0, cmp.difference);
+        // The lines of no ink Apply Pose added (gap and cut closers), in blue over the
+        // differences: where the baked regions end without a drawn line.
+        painter.save();
+        painter.setClipRect(2 * kPicture, 0, kPicture, kPicture);
+        painter.translate(2 * kPicture, 0);
+        painter.setTransform(t, true);
+        painter.setPen(QPen(QColor(0, 90, 255), 0.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        painter.setRenderHint(QPainter::Antialiasing);
+        for (const Stroke &s : doc.group(g)->strokes) {
+            if (!s.data || qAlpha(s.data->color) != 0 || s.data->points.size() < 2)
+                continue;
+            QPolygonF line;
+            for (const auto &p : s.data->points)
+                line << QPointF(p.x, p.y);
+            painter.drawPolyline(line);
+        }
+        if (showFaces) { // the baked drawing's faces, outlined in green, with their seeds
+            const auto regions = objectRegions(*doc.group(g), closeGap);
+            painter.setPen(QPen(QColor(0, 160, 0), 0.0));
+            for (const auto &face : regions->regions().faces) {
+                const auto ring = [&](const Eigen::MatrixX2d &m) {
+                    QPolygonF poly;
+                    for (Eigen::Index r = 0; r < m.rows(); ++r)
+                        poly << QPointF(m(r, 0), m(r, 1));
+                    painter.drawPolygon(poly);
+                };
+                ring(face.polygon.outer);
+                for (const auto &hole : face.polygon.holes)
+                    ring(hole);
+                painter.drawEllipse(QPointF(face.seed.x(), face.seed.y()), 2.0, 2.0);
+            }
+            painter.setPen(QPen(QColor(220, 0, 220), 0.0)); // its gap closures, magenta
+            for (const auto &closure : regions->regions().closures)
+                painter.drawLine(QPointF(closure.from.x(), closure.from.y()),
+                                 QPointF(closure.to.x(), closure.to.y()));
+        }
+        painter.restore();
         painter.setPen(Qt::black);
         painter.drawText(QRectF(5, 2, 3 * kPicture, 20),
                          QStringLiteral("%1 %2: posed | applied | differences (%3 %)")
@@ -314,12 +275,32 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
 int benchBake(const QStringList &argsIn)
 {
     QStringList args = argsIn;
-    QString pngDir;
-    if (args.size() >= 2 && args[0] == QLatin1String("--png")) {
-        pngDir = args[1];
-        QDir().mkpath(pngDir);
+    QString pngDir, onlyRig;
+    bool showFaces = false;
+    while (args.size() >= 2 && args[0].startsWith(QLatin1String("--"))) {
+        if (args[0] == QLatin1String("--faces")) {
+            showFaces = true;
+            args = args.mid(1);
+            continue;
+        }
+        if (args[0] == QLatin1String("--png")) {
+            pngDir = args[1];
+            QDir().mkpath(pngDir);
+        } else if (args[0] == QLatin1String("--rig")) {
+            onlyRig = args[1];
+            if (std::none_of(std::begin(kCases), std::end(kCases),
+                             [&](const Case &c) { return onlyRig == QLatin1String(c.name); })) {
+                std::fprintf(stderr, "bake: no rig called %s\n", qPrintable(onlyRig));
+                return 2;
+            }
+        } else {
+            break;
+        }
         args = args.mid(2);
     }
+    const auto wanted = [&](const Case &c) {
+        return onlyRig.isEmpty() || onlyRig == QLatin1String(c.name);
+    };
     if (args.isEmpty()) {
         std::fprintf(stderr, "bake: no drawing given\n");
         return 2;
@@ -337,9 +318,12 @@ int benchBake(const QStringList &argsIn)
             continue;
         }
         for (const Case &c : kCases)
-            print(bakeOne(file, lines, c, pngDir, summaries[c.name]));
+            if (wanted(c))
+                print(bakeOne(file, lines, c, pngDir, showFaces, summaries[c.name]));
     }
     for (const Case &c : kCases) {
+        if (!wanted(c))
+            continue;
         const Summary &s = summaries[c.name];
         QJsonObject row{{QStringLiteral("bench"), QStringLiteral("bake_summary")},
                         {QStringLiteral("rig"), QLatin1String(c.name)},
@@ -363,4 +347,6 @@ int benchBake(const QStringList &argsIn)
 
 } // namespace
 
-FINBOOK_BENCH("bake", "[--png DIR] FILE...  (Apply Pose keeps what was shown)", benchBake);
+FINBOOK_BENCH("bake",
+              "[--png DIR [--faces]] [--rig NAME] FILE...  (Apply Pose keeps what was shown)",
+              benchBake);

@@ -1,22 +1,33 @@
 // What you see is what you keep (issue 45): pictures of an object as the app draws it, and how
-// much of two such pictures agrees. Shared by tst_pose_bake and finbook-bench bake.
+// much of two such pictures agrees; the real drawings of ../shared/data as filled documents and
+// their automatic skeletons' bends. Shared by tst_pose_bake and finbook-bench bake.
 #pragma once
 
+#include <finbook/model/commands.h>
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/document.h>
+#include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/render.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
 
+#include <QFile>
 #include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QPainter>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
+#include <vector>
 
 namespace finbook::testing {
 
-constexpr int kColourTolerance = 8; // per channel, of 255
+constexpr int kColourTolerance = 8;      // per channel, of 255
+constexpr float kDrawingPenWidth = 3.0f; // readDrawing's lines are drawn this wide
 
 // Poses object g with `rig` as the deform service would: precompute, solve (converged), store.
 // Returns an empty string, or the error.
@@ -152,6 +163,93 @@ inline QRgb distinctColour(std::size_t i)
 {
     return QColor::fromHsv(int(i * 137 % 360), 150 + int(i * 53 % 100), 190 + int(i * 29 % 60))
         .rgba();
+}
+
+// A Quick, Draw! drawing ("strokes") or a shape's outline ("contours"), shared/data/README.md.
+inline std::vector<std::vector<QPointF>> readDrawing(const QString &path, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = QStringLiteral("cannot open");
+        return {};
+    }
+    const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
+    std::vector<std::vector<QPointF>> lines;
+    const auto points = [](const QJsonArray &array) {
+        std::vector<QPointF> out;
+        for (const QJsonValue &p : array)
+            out.emplace_back(p.toArray().at(0).toDouble(), p.toArray().at(1).toDouble());
+        return out;
+    };
+    if (json.contains(QStringLiteral("strokes"))) {
+        for (const QJsonValue &stroke : json.value(QStringLiteral("strokes")).toArray())
+            lines.push_back(points(stroke.toArray()));
+    } else if (json.contains(QStringLiteral("contours"))) {
+        for (const QJsonValue &contour : json.value(QStringLiteral("contours")).toArray()) {
+            std::vector<QPointF> ring = points(contour.toArray());
+            if (!ring.empty())
+                ring.push_back(ring.front());
+            lines.push_back(std::move(ring));
+        }
+    } else {
+        *error = QStringLiteral("neither strokes nor contours");
+    }
+    return lines;
+}
+
+// A document of one frame whose one object holds the drawing, every region filled, each fill
+// in its own colour. Returns the object's id (kNoId when nothing could be drawn). Pen 3 px, as the
+// bench draws them.
+inline model::Id drawingDocument(model::Document &doc,
+                                 const std::vector<std::vector<QPointF>> &lines)
+{
+    doc.undoStack()->push(new model::InsertFrameCommand(&doc, 0));
+    const model::Id g = doc.frameAt(0).groups.at(0).id;
+    for (const std::vector<QPointF> &line : lines) {
+        if (line.size() < 2)
+            continue;
+        auto data = std::make_shared<model::StrokeData>();
+        data->width = kDrawingPenWidth;
+        for (const QPointF &p : line)
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        doc.undoStack()->push(new model::AddStrokeCommand(&doc, g, std::move(data)));
+    }
+    if (auto all = model::fillAllRegionsCommand(&doc, g, 0xff808080))
+        doc.undoStack()->push(all.release());
+    std::vector<model::Fill> fills = doc.group(g)->fills;
+    for (std::size_t i = 0; i < fills.size(); ++i)
+        fills[i].color = distinctColour(i);
+    if (!fills.empty())
+        doc.undoStack()->push(new model::SetFillsCommand(&doc, g, fills, QStringLiteral("Colour")));
+    return g;
+}
+
+// The automatic skeleton, each limb turned ±`degrees` where it leaves the body (a joint flagged as
+// a limb base; without any, each bone from the root).
+inline model::Rig skeletonBend(const model::StrokeGroup &group, double closeGap,
+                               model::SkinningMode mode, double degrees = 60.0)
+{
+    model::Rig rig;
+    const auto built = model::buildSkeletonRig(group, {}, std::nullopt, closeGap);
+    if (!built || built->jointCount() < 2)
+        return rig;
+    rig.skeleton = *built;
+    rig.skeleton.mode = mode;
+    rig.skeleton.angles.assign(std::size_t(built->jointCount()), 0.0);
+    bool anyBase = false;
+    for (int j = 0; j < built->jointCount(); ++j)
+        anyBase = anyBase || built->isLimbBase(j);
+    int sign = 1;
+    for (int j = 0; j < built->jointCount(); ++j) {
+        const int parent = built->parent[std::size_t(j)];
+        const bool turns = anyBase ? parent >= 0 && built->isLimbBase(parent)
+                                   : parent >= 0 && parent == built->root;
+        if (!turns)
+            continue;
+        rig.skeleton.angles[std::size_t(j)] = sign * degrees * std::numbers::pi / 180.0;
+        sign = -sign;
+    }
+    return rig;
 }
 
 } // namespace finbook::testing
