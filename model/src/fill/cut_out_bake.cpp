@@ -2,9 +2,16 @@
 // piece drawn over them hides cut away, so the baked drawing, whose fills all lie under all its
 // strokes, shows what the layered pose showed.
 #include <finbook/model/fill/fill_render.h>
+#include <finbook/model/fill/fill_resolve.h>
+
+#include <QImage>
+#include <QPainter>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <optional>
+#include <unordered_map>
 
 namespace finbook::model {
 
@@ -187,6 +194,369 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
     DocumentSettings settings;
     settings.closeGap = closeGap;
     return bakedStrokes(group, paintLayers(group, settings), newId);
+}
+
+namespace {
+// Outline points closer than this (canvas px) to an inked baked line need no closer.
+constexpr double kLineReach = 1.5;
+// Outline stretches shorter than this (canvas px) are left open: the Close gaps distance
+// closes such slits anyway.
+constexpr double kShortestCloser = 3.0;
+// Outlines are walked in steps of at most this many px.
+constexpr double kOutlineStep = 1.0;
+// The colours either side of an outline are looked at this far (canvas px) from it, and as
+// many times as far, until a point in the piece and one out of it are found.
+constexpr double kSideStep = 1.0;
+constexpr int kSideSteps = 4;
+// A closer ending on a line runs this far (px) past its middle, as gap closing's links do.
+constexpr double kHairPast = 0.01;
+// The most outline (px, all pieces) that is walked for closers.
+constexpr double kLongestOutlines = 2.0e6;
+// Past a line's end, outline points this much further than its half width (px) are not on it.
+constexpr double kAtEndReach = 0.5;
+
+// The fill the pose shows at p: the topmost fill holding it, or -1.
+int shownFill(const std::vector<PaintLayer> &layers, QPointF p)
+{
+    for (auto layer = layers.rbegin(); layer != layers.rend(); ++layer)
+        for (auto item = layer->fills.rbegin(); item != layer->fills.rend(); ++item)
+            if (item->path.controlPointRect().contains(p) && item->path.contains(p))
+                return item->fill;
+    return -1;
+}
+
+QPointF nearestOnSegment(QPointF p, const QLineF &segment)
+{
+    const QPointF d = segment.p2() - segment.p1();
+    const double dd = QPointF::dotProduct(d, d);
+    const double t =
+        dd > 0.0 ? std::clamp(QPointF::dotProduct(p - segment.p1(), d) / dd, 0.0, 1.0) : 0.0;
+    return segment.p1() + t * d;
+}
+
+double distanceToSegment(QPointF p, const QLineF &segment)
+{
+    return QLineF(p, nearestOnSegment(p, segment)).length();
+}
+
+// The inked baked lines' segments, found near a point through a uniform grid (an outline is
+// walked px by px, and a drawing has thousands of segments).
+class InkIndex {
+public:
+    struct Hit {
+        bool found = false;
+        double distance = 0.0;
+        QPointF point;          // nearest point on the line's middle
+        double halfWidth = 0.0; // of that line
+        bool atEnd = false;     // the point is one of the line's two ends
+    };
+
+    // Finds lines within `radius` of a point (and no further).
+    InkIndex(const std::vector<Stroke> &baked, double radius)
+        : m_cell(std::max(radius, 4.0))
+    {
+        for (const Stroke &s : baked) {
+            if (!s.data || qAlpha(s.data->color) == 0 || s.data->points.empty())
+                continue;
+            const auto &pts = s.data->points;
+            const double half =
+                0.5 * (std::isfinite(s.data->width) ? std::min(double(s.data->width), 64.0) : 1.0);
+            const std::size_t count = pts.size() > 1 ? pts.size() - 1 : 1;
+            for (std::size_t k = 0; k < count; ++k) {
+                const StrokePoint &a = pts[k], &b = pts[std::min(k + 1, pts.size() - 1)];
+                if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) ||
+                    !std::isfinite(b.y))
+                    continue;
+                const QLineF line(QPointF(a.x, a.y), QPointF(b.x, b.y));
+                const int index = int(m_segments.size());
+                m_segments.push_back({line, half, k == 0, k + 1 == count});
+                const QRectF box = QRectF(line.p1(), line.p2())
+                                       .normalized()
+                                       .adjusted(-radius, -radius, radius, radius);
+                for (long long y = cellOf(box.top()); y <= cellOf(box.bottom()); ++y)
+                    for (long long x = cellOf(box.left()); x <= cellOf(box.right()); ++x)
+                        m_cells[key(x, y)].push_back(index);
+            }
+        }
+    }
+
+    Hit nearest(QPointF p, double within) const
+    {
+        Hit hit;
+        const auto cell = m_cells.find(key(cellOf(p.x()), cellOf(p.y())));
+        if (cell == m_cells.end())
+            return hit;
+        double best = within;
+        for (const int index : cell->second) {
+            const Segment &s = m_segments[std::size_t(index)];
+            const QPointF d = s.line.p2() - s.line.p1();
+            const double dd = QPointF::dotProduct(d, d);
+            const double t =
+                dd > 0.0 ? std::clamp(QPointF::dotProduct(p - s.line.p1(), d) / dd, 0.0, 1.0) : 0.0;
+            const QPointF q = s.line.p1() + t * d;
+            const double distance = QLineF(p, q).length();
+            if (distance <= best) {
+                best = distance;
+                hit = {true, distance, q, s.halfWidth,
+                       (t <= 0.0 && s.startIsEnd) || (t >= 1.0 && s.endIsEnd) || !(dd > 0.0)};
+            }
+        }
+        return hit;
+    }
+
+private:
+    struct Segment {
+        QLineF line;
+        double halfWidth;
+        bool startIsEnd, endIsEnd;
+    };
+    long long cellOf(double v) const { return (long long)std::floor(v / m_cell); }
+    static long long key(long long x, long long y) { return x * 1000003LL + y; }
+
+    double m_cell;
+    std::vector<Segment> m_segments;
+    std::unordered_map<long long, std::vector<int>> m_cells;
+};
+
+std::vector<QPointF> densified(const QPolygonF &polygon)
+{
+    std::vector<QPointF> out;
+    for (qsizetype i = 0; i + 1 < polygon.size(); ++i) {
+        const QPointF a = polygon[i], b = polygon[i + 1];
+        const double length = QLineF(a, b).length();
+        const int steps = std::max(1, int(std::ceil(length / kOutlineStep)));
+        for (int k = 0; k < steps; ++k)
+            out.push_back(a + (b - a) * (double(k) / steps));
+    }
+    return out;
+}
+} // namespace
+
+std::vector<Stroke> cutOutClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                  double closeGap, const std::function<Id()> &newId)
+{
+    if (group.fills.empty() || !group.isDeformed() || group.deformed->pieces.empty())
+        return {};
+    DocumentSettings settings;
+    settings.closeGap = closeGap;
+    const std::vector<PaintLayer> layers = paintLayers(group, settings);
+    // The pieces' painted outlines (the roots' piece too: a fill that moved with it may show
+    // past its lines), with the layer each is painted on.
+    std::vector<std::pair<QPolygonF, std::size_t>> outlines;
+    std::vector<QPainterPath> painted(layers.size());
+    double perimeter = 0.0;
+    for (std::size_t l = 0; l < layers.size(); ++l) {
+        painted[l].setFillRule(Qt::WindingFill);
+        for (const FillItem &fill : layers[l].fills)
+            painted[l].addPath(fill.path);
+        if (painted[l].isEmpty())
+            continue;
+        painted[l] = painted[l].simplified();
+        for (const QPolygonF &polygon : painted[l].toSubpathPolygons()) {
+            outlines.emplace_back(polygon, l);
+            for (qsizetype k = 0; k + 1 < polygon.size(); ++k)
+                perimeter += QLineF(polygon[k], polygon[k + 1]).length();
+        }
+    }
+    // The outlines are walked px by px: beyond this many (a drawing many thousand px across
+    // with hundreds of pieces) the cost would be seconds, and the pose is baked without them.
+    if (outlines.empty() || !(perimeter <= kLongestOutlines))
+        return {};
+    double widest = 1.0;
+    std::vector<double> widths;
+    for (const Stroke &s : baked)
+        if (s.data && qAlpha(s.data->color) != 0 && !s.data->points.empty()) {
+            const double width = std::isfinite(s.data->width) ? double(s.data->width) : 1.0;
+            widest = std::max(widest, std::min(width, 64.0));
+            widths.push_back(width);
+        }
+    // A closer ends on the middle of the inked line it meets (a hair past it), so that the
+    // regions join them: they follow the lines' middles, and an end left short of one, or
+    // run on beyond it, would be a loose end for gap closing to link elsewhere.
+    const double reach = 0.5 * widest + kLineReach + 2.0 * kOutlineStep;
+    const InkIndex ink(baked, reach);
+    // Whether an inked line runs at p. Past a line's end only its round cap counts: between
+    // the ends of two lines (a line a piece above cut in two, dashes along a neck) the baked
+    // drawing has a gap, and the colour's edge there needs a closer.
+    const auto inked = [&](QPointF p) {
+        const InkIndex::Hit hit = ink.nearest(p, reach);
+        return hit.found && hit.distance <= hit.halfWidth + kLineReach &&
+               (!hit.atEnd || hit.distance <= hit.halfWidth + kAtEndReach);
+    };
+    const Covers covers(layers);
+    // Whether the fill shown changes across the outline at `at` (`before` and `after` its
+    // neighbours on it): a piece's edge over a region of its own fill (an arm cut from a body
+    // of one colour) ends no colour, and a line there would only split that region.
+    const auto colourChanges = [&](const QPainterPath &piece, QPointF before, QPointF at,
+                                   QPointF after) {
+        const QPointF along = after - before;
+        const double length = std::hypot(along.x(), along.y());
+        if (!(length > 0.0))
+            return true;
+        // The nearest points either side that are in the piece and out of it: a jagged edge
+        // (a cut's sawtooth) can put both points of one distance on one side.
+        const QPointF normal(-along.y() / length, along.x() / length);
+        std::optional<QPointF> inside, outside;
+        for (int step = 1; step <= kSideSteps && !(inside && outside); ++step)
+            for (const double side : {1.0, -1.0}) {
+                const QPointF q = at + normal * (side * step * kSideStep);
+                (piece.contains(q) ? inside : outside).emplace(q);
+            }
+        return !inside || !outside || shownFill(layers, *inside) != shownFill(layers, *outside);
+    };
+    std::vector<std::pair<QLineF, std::size_t>> closerSegments; // with the closer's index
+    const auto ontoInk = [&](QPointF p, std::size_t self) -> std::optional<QPointF> {
+        const InkIndex::Hit hit = ink.nearest(p, reach);
+        double best = hit.found ? hit.distance : reach;
+        std::optional<QPointF> out;
+        if (hit.found)
+            out = hit.point;
+        for (const auto &[seg, closer] : closerSegments) {
+            if (closer == self)
+                continue;
+            const QPointF q = nearestOnSegment(p, seg);
+            const double distance = QLineF(p, q).length();
+            if (distance < best) {
+                best = distance;
+                out = q;
+            }
+        }
+        if (out && best > 0.0)
+            *out += (*out - p) * (kHairPast / best);
+        return out;
+    };
+    double penWidth = 1.0;
+    if (!widths.empty()) {
+        std::nth_element(widths.begin(), widths.begin() + std::ptrdiff_t(widths.size() / 2),
+                         widths.end());
+        penWidth = std::clamp(widths[widths.size() / 2], 0.5, 64.0);
+    }
+    std::vector<Stroke> out;
+    const auto nearCloser = [&](QPointF p) {
+        return std::any_of(closerSegments.begin(), closerSegments.end(), [&](const auto &seg) {
+            return distanceToSegment(p, seg.first) <= kLineReach;
+        });
+    };
+    // Per closer, whether its first and last point still end short of any line: next to a
+    // hidden edge, its line is the piece above's closer, made later perhaps.
+    std::vector<std::pair<bool, bool>> loose;
+    const auto addCloser = [&](const std::vector<QPointF> &run, bool looseFront, bool looseBack) {
+        double length = 0.0;
+        for (std::size_t k = 1; k < run.size(); ++k)
+            length += QLineF(run[k - 1], run[k]).length();
+        if (run.size() < 2 || length < kShortestCloser)
+            return;
+        // A short stretch whose two ends met the same point of a line (a corner's tip) is a
+        // spike in and out again: it ends no region.
+        if (QLineF(run.front(), run.back()).length() < kLineReach && length < 4.0 * kShortestCloser)
+            return;
+        for (std::size_t k = 1; k < run.size(); ++k)
+            closerSegments.emplace_back(QLineF(run[k - 1], run[k]), out.size());
+        loose.emplace_back(looseFront, looseBack);
+        auto data = std::make_shared<StrokeData>();
+        data->color = kGapCloserColor;
+        // The pen's usual width: the automatic Close gaps distance follows the median width
+        // of all lines, and thin closers would lower it.
+        data->width = float(penWidth);
+        for (const QPointF &p : run)
+            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        out.push_back({newId(), std::move(data)});
+    };
+    for (const auto &[outline, layer] : outlines) {
+        const std::vector<QPointF> points = densified(outline);
+        const std::size_t n = points.size();
+        if (n < 3)
+            continue;
+        // 'o': the colour ends here and nothing draws the edge (a closer goes here); 'i': an
+        // inked line runs here; 'h': a piece above hides the edge (the pose shows none); 's':
+        // the same fill shows on both sides (no colour ends here); 'c': a closer made for an
+        // outline before runs here (two pieces' outlines along one cut).
+        std::vector<char> state(n);
+        for (std::size_t k = 0; k < n; ++k)
+            state[k] = covers.hides(layer, points[k]) ? 'h'
+                       : inked(points[k])             ? 'i'
+                       : nearCloser(points[k])        ? 'c'
+                       : colourChanges(painted[layer], points[(k + n - 1) % n], points[k],
+                                       points[(k + 1) % n])
+                           ? 'o'
+                           : 's';
+        const auto first =
+            std::find_if(state.begin(), state.end(), [](char c) { return c != 'o'; });
+        if (first == state.end()) { // an edge drawn nowhere: closed whole
+            std::vector<QPointF> ring = points;
+            ring.push_back(points.front());
+            addCloser(ring, false, false);
+            continue;
+        }
+        // Walk from a point that needs no closer, so that a stretch across the polygon's first
+        // point stays one line.
+        const std::size_t start = std::size_t(first - state.begin());
+        for (std::size_t k = 0; k < n;) {
+            const std::size_t at = (start + k) % n;
+            if (state[at] != 'o') {
+                ++k;
+                continue;
+            }
+            // The stretch k .. end-1 (walk order). It ends where it reaches a closer made
+            // before or comes back along itself: an outline may run out along a cut and back
+            // (two pieces' fills meeting there), and the cut needs one closer.
+            std::vector<QPointF> run;
+            std::size_t end = k;
+            for (; end < n && state[(start + end) % n] == 'o'; ++end) {
+                const QPointF p = points[(start + end) % n];
+                const bool alongItself =
+                    run.size() > 3 && std::any_of(run.begin(), run.end() - 3, [&](QPointF q) {
+                        return QLineF(p, q).length() <= kLineReach;
+                    });
+                if (alongItself || nearCloser(p)) {
+                    state[(start + end) % n] = 'c';
+                    break;
+                }
+                run.push_back(p);
+            }
+            if (run.empty()) {
+                ++k;
+                continue;
+            }
+            // Where an inked line (or an earlier closer) meets it, the closer ends on that
+            // line's middle (not along the line: beside it, it would make slivers), never in a
+            // hidden edge.
+            const auto meets = [](char c) { return c == 'i' || c == 'c'; };
+            bool looseFront = true, looseBack = true;
+            if (k > 0 && meets(state[(start + k - 1) % n]))
+                if (const auto onto = ontoInk(run.front(), out.size())) {
+                    run.insert(run.begin(), *onto);
+                    looseFront = false;
+                }
+            if (meets(state[(start + end) % n]))
+                if (const auto onto = ontoInk(run.back(), out.size())) {
+                    run.push_back(*onto);
+                    looseBack = false;
+                }
+            addCloser(run, looseFront, looseBack);
+            k = end;
+        }
+    }
+    // Ends left loose (where a piece above hid the edge, or an outline was walked before the
+    // one whose closer it meets) go on to the nearest line or other closer, all made now.
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        if (!loose[i].first && !loose[i].second)
+            continue;
+        auto data = std::make_shared<StrokeData>(*out[i].data);
+        auto &points = data->points;
+        const auto endOn = [&](const StrokePoint &end) {
+            return ontoInk(QPointF(end.x, end.y), i);
+        };
+        if (loose[i].first)
+            if (const auto onto = endOn(points.front()))
+                points.insert(points.begin(),
+                              StrokePoint{float(onto->x()), float(onto->y()), 1.0f});
+        if (loose[i].second)
+            if (const auto onto = endOn(points.back()))
+                points.push_back({float(onto->x()), float(onto->y()), 1.0f});
+        out[i].data = std::move(data);
+    }
+    return out;
 }
 
 } // namespace finbook::model

@@ -131,6 +131,38 @@ std::vector<int> shownFillPerFace(const ObjectRegions &regions,
     return out;
 }
 
+// Whether a line of no ink in `baked` (a cut-out closer) already runs along `line`: its gap
+// is closed there, and a second line on top of the first would only make slivers between
+// them. (Inked lines are left out: across a gap a few px wide, both ends are that near.)
+bool runsAlongALine(const std::vector<Stroke> &baked, const QLineF &line)
+{
+    constexpr int kSamples = 9;
+    for (int k = 1; k <= kSamples; ++k) {
+        const QPointF p = line.pointAt(double(k) / (kSamples + 1));
+        bool near = false;
+        for (const Stroke &s : baked) {
+            if (!s.data || s.data->points.empty() || qAlpha(s.data->color) != 0)
+                continue;
+            const auto &pts = s.data->points;
+            const double reach = 0.5 * double(s.data->width) + 1.5;
+            for (std::size_t i = 0; i < pts.size() && !near; ++i) {
+                const QPointF a(pts[i].x, pts[i].y);
+                const QPointF b = i + 1 < pts.size() ? QPointF(pts[i + 1].x, pts[i + 1].y) : a;
+                const QPointF d = b - a;
+                const double dd = QPointF::dotProduct(d, d);
+                const double t =
+                    dd > 0.0 ? std::clamp(QPointF::dotProduct(p - a, d) / dd, 0.0, 1.0) : 0.0;
+                near = QLineF(p, a + t * d).length() <= reach;
+            }
+            if (near)
+                break;
+        }
+        if (!near)
+            return false;
+    }
+    return true;
+}
+
 } // namespace
 
 std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
@@ -175,6 +207,72 @@ std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Str
     return out;
 }
 
+double shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                          double closeGap)
+{
+    if (group.fills.empty())
+        return 1.0;
+    StrokeGroup after;
+    after.strokes = baked;
+    const ObjectRegionsPtr regions = objectRegions(after, closeGap);
+    DocumentSettings settings;
+    settings.closeGap = closeGap;
+    StrokeGroup shown = group;
+    shown.visible = true;
+    const std::vector<PaintLayer> layers = paintLayers(shown, settings);
+    const std::vector<int> owner = shownFillPerFace(*regions, layers, int(group.fills.size()));
+    QRectF box;
+    for (const PaintLayer &layer : layers)
+        for (const FillItem &item : layer.fills)
+            box = box.united(item.path.boundingRect());
+    for (int f = 0; f < regions->faceCount(); ++f)
+        box = box.united(regions->restPath(f).boundingRect());
+    const double side = std::max(box.width(), box.height());
+    if (!(side > 0.0) || !std::isfinite(side))
+        return 1.0;
+    const double scale = std::min(kMaxIndexScale, kIndexPictureSide / side);
+    const QSize size(std::max(1, int(std::ceil(box.width() * scale)) + 2),
+                     std::max(1, int(std::ceil(box.height() * scale)) + 2));
+    QImage before(size, QImage::Format_RGB32), kept(size, QImage::Format_RGB32);
+    if (before.isNull() || kept.isNull())
+        return 1.0;
+    before.fill(Qt::black);
+    kept.fill(Qt::black);
+    QTransform toPixels;
+    toPixels.translate(1, 1);
+    toPixels.scale(scale, scale);
+    toPixels.translate(-box.left(), -box.top());
+    {
+        QPainter painter(&before);
+        painter.setPen(Qt::NoPen);
+        painter.setTransform(toPixels);
+        for (const PaintLayer &layer : layers)
+            for (const FillItem &item : layer.fills)
+                if (item.fill >= 0)
+                    painter.fillPath(item.path, QColor::fromRgb(indexColour(item.fill)));
+    }
+    {
+        QPainter painter(&kept);
+        painter.setPen(Qt::NoPen);
+        painter.setTransform(toPixels);
+        for (int f = 0; f < regions->faceCount(); ++f)
+            if (owner[std::size_t(f)] >= 0)
+                painter.fillPath(regions->restPath(f),
+                                 QColor::fromRgb(indexColour(owner[std::size_t(f)])));
+    }
+    long long painted = 0, agreeing = 0;
+    for (int y = 0; y < size.height(); ++y) {
+        const auto *a = reinterpret_cast<const QRgb *>(before.constScanLine(y));
+        const auto *b = reinterpret_cast<const QRgb *>(kept.constScanLine(y));
+        for (int x = 0; x < size.width(); ++x)
+            if (a[x] != 0xff000000u || b[x] != 0xff000000u) {
+                ++painted;
+                agreeing += a[x] == b[x];
+            }
+    }
+    return painted > 0 ? double(agreeing) / double(painted) : 1.0;
+}
+
 std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                    double closeGap, const std::function<Id()> &newId)
 {
@@ -206,7 +304,8 @@ std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<S
                             return (close(line.p1(), c.from) && close(line.p2(), c.to)) ||
                                    (close(line.p1(), c.to) && close(line.p2(), c.from));
                         });
-        if (kept || !(line.length() > 0.0) || !std::isfinite(line.length()))
+        if (kept || !(line.length() > 0.0) || !std::isfinite(line.length()) ||
+            runsAlongALine(baked, line))
             continue;
         auto data = std::make_shared<StrokeData>();
         data->color = kGapCloserColor;

@@ -125,12 +125,34 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
     // cut-out limb hid in the middle becomes two, the second with a new id).
     const auto newId = [doc] { return doc->allocateId(); };
     m_newStrokes = bakedStrokes(*g, doc->settings().closeGap, newId);
+    const double closeGap = doc->settings().closeGap;
     // A gap the pose showed closed stays closed (by a line of no ink) where the baked lines
     // alone would leave it open.
-    for (Stroke &closer : keptGapClosers(*g, m_newStrokes, doc->settings().closeGap, newId))
-        m_newStrokes.push_back(std::move(closer));
+    const auto withKeptGaps = [&](std::vector<Stroke> strokes) {
+        for (Stroke &closer : keptGapClosers(*g, strokes, closeGap, newId))
+            strokes.push_back(std::move(closer));
+        return strokes;
+    };
+    // A cut-out piece's colour ends at its cut, where no line is: a line of no ink keeps the
+    // baked regions ending there too (added before the kept gaps: a region they close, a
+    // body, no longer lets gap closing close a gap inside it, an eye, that the pose showed
+    // closed). Those lines do not find every region of every drawing, so the bake keeps them
+    // only where they keep more of the colours the pose showed than the baked lines alone.
+    std::vector<Stroke> cut = cutOutClosers(*g, m_newStrokes, closeGap, newId);
+    if (cut.empty()) {
+        m_newStrokes = withKeptGaps(std::move(m_newStrokes));
+    } else {
+        std::vector<Stroke> withCuts = m_newStrokes;
+        withCuts.insert(withCuts.end(), cut.begin(), cut.end());
+        withCuts = withKeptGaps(std::move(withCuts));
+        std::vector<Stroke> without = withKeptGaps(std::move(m_newStrokes));
+        m_newStrokes =
+            shownFillAgreement(*g, withCuts, closeGap) > shownFillAgreement(*g, without, closeGap)
+                ? std::move(withCuts)
+                : std::move(without);
+    }
     m_oldFills = g->fills;
-    m_newFills = fillsAfterBake(*g, m_newStrokes, doc->settings().closeGap);
+    m_newFills = fillsAfterBake(*g, m_newStrokes, closeGap);
 }
 
 void ApplyPoseCommand::redo()

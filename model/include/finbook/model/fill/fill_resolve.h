@@ -52,6 +52,13 @@ std::optional<std::vector<Fill>> fillsWithAllFaces(const ObjectRegions &regions,
 std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                  double closeGap);
 
+// The share (0-1) of the area the pose (`group`, posed) shows filled, or the baked drawing
+// would fill, where the baked drawing (`baked`, with the fills fillsAfterBake would give it)
+// shows the same fill: 1 when Apply Pose keeps every colour. Pictures of fill indices at up to
+// 1024 px, as fillsAfterBake's.
+double shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                          double closeGap);
+
 // The colour of a line of no ink that closes a gap (keptGapClosers): it bounds regions like any
 // stroke, and no renderer draws it (render.h draws no stroke of alpha 0).
 constexpr QRgb kGapCloserColor = 0x00000000;
@@ -61,9 +68,22 @@ constexpr QRgb kGapCloserColor = 0x00000000;
 // drawing's size that the automatic distance follows, and the region behind it would open
 // and lose its fill. Each such gap gets a closing line of no ink (kGapCloserColor, as
 // Harmony's Close Gap tool draws invisible strokes), with new ids from `newId`, to add to the
-// baked strokes; it is drawn by no renderer, and erasing it opens the gap.
+// baked strokes; it is drawn by no renderer, and erasing it opens the gap. A gap that a line
+// of no ink in `baked` already runs across (a cut-out closer) gets none.
 std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                    double closeGap, const std::function<Id()> &newId);
+
+// A cut-out pose's pieces end their colour where they are cut, where no line is: a limb
+// turned over the body shows its fill up to the cut, and the baked lines alone would join the
+// limb's region to the body's behind it. Each stretch of a piece's painted outline (its fills
+// as paintLayers clips them, sockets included) where the fill shown on its two sides differs,
+// that no baked line (`baked`, inked) runs along and no piece above hides, gets a line of no
+// ink (kGapCloserColor, the pen's median width), with new ids from `newId`, so that the baked
+// regions end where the pieces' colours did. Its ends lie on the middle of the lines it meets;
+// one line serves a cut that two outlines (or one, out and back) run along. Apply Pose adds
+// these before keptGapClosers. Empty for anything but a cut-out pose with fills.
+std::vector<Stroke> cutOutClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                  double closeGap, const std::function<Id()> &newId);
 
 // The face under canvas point p as the object shows now (posed where it is posed), or -1.
 int displayedFaceAt(const ObjectRegions &regions, const StrokeGroup &group, QPointF p);
