@@ -28,7 +28,7 @@ constexpr double kPolishDamping = 1e-3;
 constexpr double kMaxPolishTurn = 0.2;
 constexpr int kPolishSteps = 16;
 
-double cross(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
+double perpDot(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
 {
     return a.x() * b.y() - a.y() * b.x();
 }
@@ -38,7 +38,7 @@ double turn(const Eigen::Vector2d &a, const Eigen::Vector2d &b)
 {
     if (a.norm() <= kTinyLength || b.norm() <= kTinyLength)
         return 0.0;
-    return std::atan2(cross(a, b), a.dot(b));
+    return std::atan2(perpDot(a, b), a.dot(b));
 }
 
 Eigen::Vector2d direction(const Eigen::Vector2d &v, const Eigen::Vector2d &fallback)
@@ -75,7 +75,7 @@ void solveTwoBones(Points &P, const Eigen::Vector2d &target)
         bend = std::acos(std::clamp(cosine, -1.0, 1.0));
     }
     // Keep the side the middle joint bends to; a straight chain bends like a positive turn.
-    const double side = cross(P[1] - P[0], P[2] - P[1]) < 0.0 ? -1.0 : 1.0;
+    const double side = perpDot(P[1] - P[0], P[2] - P[1]) < 0.0 ? -1.0 : 1.0;
     P[1] = P[0] + a * rotated(toward, -side * bend);
     P[2] = P[1] + b * direction(P[0] + d * toward - P[1], toward);
 }

@@ -42,7 +42,7 @@ bool syncDescriptor(int fd)
 }
 
 // A renamed file survives a crash only once its directory entry is on disk too.
-void syncFolder(const QString &folder)
+void syncPendingFolder(const QString &folder)
 {
 #ifdef Q_OS_UNIX
     const int fd = ::open(QFile::encodeName(folder).constData(), O_RDONLY | O_DIRECTORY);
@@ -231,7 +231,7 @@ std::optional<QString> PendingFile::commit(const QByteArray &destination, bool r
         if (auto reason = renameOver(from, destination))
             return reason;
     m_file->setAutoRemove(false);
-    syncFolder(QFileInfo(m_target).path());
+    syncPendingFolder(QFileInfo(m_target).path());
     return std::nullopt;
 }
 
@@ -310,7 +310,7 @@ void undoSwap(const QString &folder, const QString &staging, const Journal &jour
     for (const QString &name : journal.stale)
         if (existsOrLinks(aside.filePath(name)))
             renameOver(aside.filePath(name), target.filePath(name));
-    syncFolder(folder);
+    syncPendingFolder(folder);
 }
 
 // Test hook: FINBOOK_TEST_KILL_AT_SWAP_STEP=k kills the process (SIGKILL, as a crash or a
@@ -335,7 +335,7 @@ std::optional<QString> PendingFolder::commit(qint64 count,
         if (++step == killAt)
             ::raise(SIGKILL);
     };
-    syncFolder(m_staging.path());
+    syncPendingFolder(m_staging.path());
     const QDir folder(m_folder), hidden(m_staging.path()), aside(m_staging.filePath(asideName()));
     if ((replace || !stale.isEmpty()) && !QDir().mkpath(aside.path()))
         return Export::tr("a folder cannot be created in it");
@@ -349,7 +349,7 @@ std::optional<QString> PendingFolder::commit(qint64 count,
     nextStep();
     if (auto reason = renameOver(hidden.filePath(kJournalWriting), hidden.filePath(kJournal)))
         return reason;
-    syncFolder(m_staging.path());
+    syncPendingFolder(m_staging.path());
     const auto fail = [&](const QString &reason) {
         undoSwap(m_folder, m_staging.path(), journal);
         QFile::remove(hidden.filePath(kJournal));
@@ -380,11 +380,11 @@ std::optional<QString> PendingFolder::commit(qint64 count,
         if (auto reason = renameOver(target, aside.filePath(file)))
             return fail(*reason);
     }
-    syncFolder(m_folder);
+    syncPendingFolder(m_folder);
     // Done: from here a kill leaves the new files, and the hidden folder only the old ones.
     nextStep();
     renameOver(hidden.filePath(kJournal), hidden.filePath(kJournalDone));
-    syncFolder(m_staging.path());
+    syncPendingFolder(m_staging.path());
     return std::nullopt;
 }
 
@@ -396,7 +396,7 @@ void finishInterruptedSwap(const QString &folder, const QString &staging)
     if (const auto journal = readJournal(hidden.filePath(kJournal))) {
         undoSwap(folder, staging, *journal);
         QFile::remove(hidden.filePath(kJournal));
-        syncFolder(staging);
+        syncPendingFolder(staging);
     }
 }
 

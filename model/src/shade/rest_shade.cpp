@@ -20,7 +20,7 @@ struct Entry {
 };
 constexpr std::size_t kEntries = 128; // about 100 kB each
 std::mutex g_mutex;
-std::list<Entry> g_cache;
+std::list<Entry> g_shades;
 
 // The region the face inflates as (geometry/inflate/layers.h): the topmost single stroke's
 // loop around it (an arm over the body inflates as the arm, the body beside it as the whole
@@ -45,7 +45,7 @@ geometry::Region layerOf(const StrokeGroup &group, const ObjectRegions &regions,
     return geometry::layerRegion(layers, all, face);
 }
 
-RestShadePtr compute(const StrokeGroup &group, const ObjectRegions &regions, int face)
+RestShadePtr computeShade(const StrokeGroup &group, const ObjectRegions &regions, int face)
 {
     geometry::MeshOptions options;
     options.density = group.meshDensity > 0.0 ? std::min(group.meshDensity, 100.0) : 1.0;
@@ -89,19 +89,19 @@ RestShadePtr restShade(const StrokeGroup &group, const ObjectRegionsPtr &regions
 {
     {
         std::lock_guard lock(g_mutex);
-        for (auto it = g_cache.begin(); it != g_cache.end(); ++it)
+        for (auto it = g_shades.begin(); it != g_shades.end(); ++it)
             if (it->regions == regions.get() && it->face == face &&
                 it->density == group.meshDensity && !it->alive.expired()) {
-                g_cache.splice(g_cache.begin(), g_cache, it);
-                return g_cache.front().shade;
+                g_shades.splice(g_shades.begin(), g_shades, it);
+                return g_shades.front().shade;
             }
     }
     // Computed outside the lock, as objectRegions does.
-    RestShadePtr shade = compute(group, *regions, face);
+    RestShadePtr shade = computeShade(group, *regions, face);
     std::lock_guard lock(g_mutex);
-    g_cache.push_front({regions.get(), regions, face, group.meshDensity, shade});
-    if (g_cache.size() > kEntries)
-        g_cache.pop_back();
+    g_shades.push_front({regions.get(), regions, face, group.meshDensity, shade});
+    if (g_shades.size() > kEntries)
+        g_shades.pop_back();
     return shade;
 }
 

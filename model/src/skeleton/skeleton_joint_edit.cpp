@@ -16,7 +16,7 @@ namespace {
 constexpr double kMinSplitLength = 2.0; // px: shorter bones are not split
 constexpr double kEndMargin = 0.05;     // a new joint stays this fraction away from bone ends
 
-bool finite(QPointF p)
+bool finiteAt(QPointF p)
 {
     return std::isfinite(p.x()) && std::isfinite(p.y());
 }
@@ -46,7 +46,7 @@ Expected<SkeletonRig, QString> withJointMoved(const SkeletonRig &rig, int joint,
 {
     if (auto why = editable(rig, joint))
         return unexpected(*why);
-    if (!finite(at))
+    if (!finiteAt(at))
         return unexpected(Deformation::tr("A joint cannot go there."));
     SkeletonRig r = rig;
     r.joints[std::size_t(joint)] = at;
@@ -60,7 +60,7 @@ Expected<InsertedJoint, QString> withJointInserted(const SkeletonRig &rig, int b
     const int p = rig.parent[std::size_t(bone)];
     if (p < 0)
         return unexpected(Deformation::tr("A joint can only be inserted on a bone."));
-    if (!finite(at))
+    if (!finiteAt(at))
         return unexpected(Deformation::tr("A joint cannot go there."));
     const QPointF a = rig.joints[std::size_t(p)], b = rig.joints[std::size_t(bone)];
     const QPointF d = b - a;

@@ -7,7 +7,7 @@
 namespace finbook::ui {
 
 namespace {
-const QString kGroup = QStringLiteral("shortcuts");
+const QString kShortcutsGroup = QStringLiteral("shortcuts");
 QKeySequence keys(const QString &portable)
 {
     return QKeySequence(portable, QKeySequence::PortableText);
@@ -209,7 +209,7 @@ QStringList toStrings(const KeyList &list)
 
 void ShortcutRegistry::load(QSettings &settings)
 {
-    settings.beginGroup(kGroup);
+    settings.beginGroup(kShortcutsGroup);
     for (const QString &name : settings.childKeys()) {
         // A list since several shortcuts per action; older settings hold one string, which
         // reads as a list of one.
@@ -227,8 +227,8 @@ void ShortcutRegistry::load(QSettings &settings)
 
 void ShortcutRegistry::save(QSettings &settings) const
 {
-    settings.remove(kGroup);
-    settings.beginGroup(kGroup);
+    settings.remove(kShortcutsGroup);
+    settings.beginGroup(kShortcutsGroup);
     for (const QString &name : m_order)
         if (shortcuts(name) != defaultShortcuts(name))
             settings.setValue(name, toStrings(shortcuts(name)));

@@ -16,11 +16,11 @@
 namespace finbook::ui {
 
 namespace {
-constexpr qreal kPinRadius = 6.0;   // widget px
-constexpr qreal kPinGrab = 10.0;    // widget px
-constexpr qreal kObjectGrab = 12.0; // widget px around a stroke
+constexpr qreal kPinRadius = 6.0;      // widget px
+constexpr qreal kPinGrab = 10.0;       // widget px
+constexpr qreal kPinObjectGrab = 12.0; // widget px around a stroke
 
-bool editable(const model::StrokeGroup &g)
+bool pinEditable(const model::StrokeGroup &g)
 {
     return g.visible && !g.locked;
 }
@@ -66,7 +66,7 @@ PinTool::PinRef PinTool::pinAt(const ToolEvent &event) const
     qreal bestDistance = kPinGrab / zoom;
     const model::Id current = state()->currentGroupId();
     for (const model::StrokeGroup &g : f->groups) {
-        if (!editable(g))
+        if (!pinEditable(g))
             continue;
         for (const model::Pin &p : g.rig.pins) {
             qreal d = QLineF(p.target, event.pos).length();
@@ -86,7 +86,7 @@ bool PinTool::objectHit(const model::StrokeGroup &group, const ToolEvent &event)
     const qreal zoom = canvas()->zoom();
     for (std::size_t s = 0; s < group.strokes.size(); ++s) {
         const auto &points = model::displayedPoints(group, s);
-        const qreal reach = kObjectGrab / zoom + group.strokes[s].data->width / 2;
+        const qreal reach = kPinObjectGrab / zoom + group.strokes[s].data->width / 2;
         for (const model::StrokePoint &p : points)
             if (std::abs(p.x - event.pos.x()) <= reach && std::abs(p.y - event.pos.y()) <= reach &&
                 std::hypot(p.x - event.pos.x(), p.y - event.pos.y()) <= reach)
@@ -119,10 +119,10 @@ model::Id PinTool::objectAt(const ToolEvent &event) const
     if (!f)
         return model::kNoId;
     if (const model::StrokeGroup *current = state()->currentGroup();
-        current && editable(*current) && objectHit(*current, event))
+        current && pinEditable(*current) && objectHit(*current, event))
         return current->id;
     for (auto it = f->groups.rbegin(); it != f->groups.rend(); ++it)
-        if (editable(*it) && !it->strokes.empty() && objectHit(*it, event))
+        if (pinEditable(*it) && !it->strokes.empty() && objectHit(*it, event))
             return it->id;
     return model::kNoId;
 }
