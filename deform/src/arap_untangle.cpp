@@ -25,9 +25,9 @@
 namespace finbook::deform::detail {
 namespace {
 
-constexpr int kRounds = 10; // untangling rounds over the flipped triangles' corners
-constexpr int kRings = 2;   // rings of the relaxed region around them
-constexpr int kSweeps = 10; // clamped relaxation sweeps
+constexpr int kRounds = 10;      // untangling rounds over the flipped triangles' corners
+constexpr int kRings = 2;        // rings of the relaxed region around them
+constexpr int kRelaxSweeps = 10; // clamped relaxation sweeps
 // A clamped step stops at this fraction of the step that would collapse a triangle.
 constexpr double kStepFraction = 0.9;
 // Margins tried, in order: a corner is placed so that each of its triangles keeps at least
@@ -305,7 +305,7 @@ void untangleRegion(const ArapPrecompute &d, Workspace &w)
         if (!moved)
             break;
     }
-    for (int sweep = 0; sweep < kSweeps; ++sweep)
+    for (int sweep = 0; sweep < kRelaxSweeps; ++sweep)
         for (const int v : w.region)
             clampedStep(d, w.positions, v);
 }
@@ -351,7 +351,7 @@ void untangleFlips(const ArapPrecompute &d, Workspace &w, double maxCost, Eigen:
     grow(d, w, kRings);
     std::sort(w.region.begin(), w.region.end());
     const Eigen::Index size = Eigen::Index(w.region.size());
-    const Eigen::Index work = kRounds * corners * kUntangleCost + kSweeps * size;
+    const Eigen::Index work = kRounds * corners * kUntangleCost + kRelaxSweeps * size;
     if (budget < work)
         return;
     budget -= work;

@@ -6,7 +6,7 @@ namespace finbook::deform::detail {
 namespace {
 
 // Cholesky on these SPD systems lands near 1e-16; see arap_internal.h.
-constexpr double kResidualTolerance = 1e-8;
+constexpr double kHarmonicResidualTolerance = 1e-8;
 
 // Fixed pseudo-random positive weights s: any wrong or non-finite column of X shows in
 // X s (barring an exact cancellation), so one residual checks all columns at the cost of one.
@@ -60,7 +60,7 @@ std::optional<DeformError> solveHarmonicSystem(const HarmonicSystem &system, Cag
     relativeResidual = residual(system, interior * weights, b);
     // The rows are contiguous: one vectorised pass (a strided allFinite() took milliseconds).
     if (!Eigen::Map<const Eigen::ArrayXd>(x, ni * c).allFinite() ||
-        !(relativeResidual <= kResidualTolerance))
+        !(relativeResidual <= kHarmonicResidualTolerance))
         return cageError(DeformErrorCode::SolveFailed,
                          "Solving for the cage's coordinates was inaccurate (relative residual " +
                              std::to_string(relativeResidual) + ").");

@@ -18,12 +18,12 @@ constexpr double kMu = -0.53;
 // Outline runs of a ring that is clipped are thinned to this (px).
 constexpr double kOutlineTolerance = 0.25;
 
-struct Ring {
+struct ToneRing {
     std::vector<Eigen::Vector2d> points;
     std::vector<char> movable; // a contour vertex inside the mesh
 };
 
-void smoothRing(Ring &ring, int steps)
+void smoothRing(ToneRing &ring, int steps)
 {
     const std::size_t n = ring.points.size();
     if (n < 3 || steps <= 0)
@@ -51,7 +51,7 @@ void smoothRing(Ring &ring, int steps)
 // a run's ends stay), pushed out by as much first: Clipper's cost grows with the vertices it is
 // given, and where the tone meets the outline the fill's own outline (the clip) and the ink decide
 // what shows.
-void thinOutlineRuns(Ring &ring, double tolerance)
+void thinOutlineRuns(ToneRing &ring, double tolerance)
 {
     const std::size_t n = ring.points.size();
     std::size_t start = 0;
@@ -123,7 +123,7 @@ void thinOutlineRuns(Ring &ring, double tolerance)
     ring.movable.resize(w);
 }
 
-Pieces toPieces(const Ring *rings, std::size_t count)
+Pieces toPieces(const ToneRing *rings, std::size_t count)
 {
     Pieces out;
     for (std::size_t r = 0; r < count; ++r) {
@@ -133,7 +133,8 @@ Pieces toPieces(const Ring *rings, std::size_t count)
     return out;
 }
 
-Pieces clipRings(const Ring *rings, std::size_t count, const std::vector<Eigen::MatrixX2d> &clip)
+Pieces clipRings(const ToneRing *rings, std::size_t count,
+                 const std::vector<Eigen::MatrixX2d> &clip)
 {
     // The clip's finite points (Clipper is given the same), for the test and the frame.
     thread_local std::vector<std::vector<Eigen::Vector2d>> window;
@@ -338,14 +339,14 @@ Pieces toneRegion(const Eigen::MatrixX2d &V, const Eigen::MatrixX3i &F, const Me
         return id < n ? Eigen::Vector2d(V(id, 0), V(id, 1)) : crossing[std::size_t(id - n)];
     };
     // Rings reused with their capacity; `count` of them are this call's.
-    thread_local std::vector<Ring> rings;
+    thread_local std::vector<ToneRing> rings;
     std::size_t count = 0;
     for (std::size_t s0 = 0; s0 < segments.size(); ++s0) {
         if (used[s0])
             continue;
         if (count == rings.size())
             rings.emplace_back();
-        Ring &ring = rings[count];
+        ToneRing &ring = rings[count];
         ring.points.clear();
         ring.movable.clear();
         std::size_t s = s0;

@@ -68,12 +68,12 @@ double depthIn(const Skeleton &parent, const Eigen::Vector2d &q, Eigen::Vector2d
     return best;
 }
 
-struct Candidate {
+struct Attachment {
     PartJoin join;
     double depth = kUnbounded;
 };
 
-Candidate bestJoin(int childPart, const Skeleton &child, int parentPart, const Skeleton &parent)
+Attachment bestJoin(int childPart, const Skeleton &child, int parentPart, const Skeleton &parent)
 {
     std::vector<Eigen::Vector2d> points;
     // Crossings first: a child bone that runs through a parent bone attaches right there.
@@ -92,7 +92,7 @@ Candidate bestJoin(int childPart, const Skeleton &child, int parentPart, const S
     }
     for (int j = 0; j < child.jointCount(); ++j)
         points.push_back(child.joints.row(j).transpose());
-    Candidate best;
+    Attachment best;
     for (const Eigen::Vector2d &q : points) {
         Eigen::Vector2d at;
         const double depth = depthIn(parent, q, at);
@@ -116,7 +116,7 @@ Candidate bestJoin(int childPart, const Skeleton &child, int parentPart, const S
 std::optional<PartJoin> findJoin(int childPart, const Skeleton &child, int parentPart,
                                  const Skeleton &parent)
 {
-    const Candidate c = bestJoin(childPart, child, parentPart, parent);
+    const Attachment c = bestJoin(childPart, child, parentPart, parent);
     if (!(c.depth <= 1.0))
         return std::nullopt;
     return c.join;
@@ -130,12 +130,12 @@ std::vector<PartJoin> findJoins(const std::vector<Skeleton> &parts, int rootPart
     std::vector<char> attached(parts.size(), 0);
     attached[std::size_t(rootPart)] = 1;
     for (;;) {
-        Candidate best;
+        Attachment best;
         for (std::size_t c = 0; c < parts.size(); ++c) {
             for (std::size_t p = 0; p < parts.size() && !attached[c]; ++p) {
                 if (!attached[p])
                     continue;
-                const Candidate candidate = bestJoin(int(c), parts[c], int(p), parts[p]);
+                const Attachment candidate = bestJoin(int(c), parts[c], int(p), parts[p]);
                 if (candidate.depth < best.depth)
                     best = candidate;
             }

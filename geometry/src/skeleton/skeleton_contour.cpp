@@ -26,7 +26,7 @@ GeometryError cancelledError()
     return error(GeometryErrorCode::Cancelled, "The skeleton was cancelled.");
 }
 
-bool strictlySimple(const Polygon &polygon)
+bool contourIsStrictlySimple(const Polygon &polygon)
 {
     if (polygon.outer.rows() < 3 || !(signedArea(polygon.outer) > 0.0))
         return false;
@@ -61,7 +61,7 @@ Polygon jittered(const Polygon &polygon, double amplitude)
     jitter(out.outer, amplitude);
     for (Eigen::MatrixX2d &hole : out.holes)
         jitter(hole, amplitude);
-    return strictlySimple(out) ? out : polygon;
+    return contourIsStrictlySimple(out) ? out : polygon;
 }
 
 // True if the rings are simple together (pinches allowed) and oriented as region.h says:

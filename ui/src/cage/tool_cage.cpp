@@ -1,4 +1,5 @@
 #include "../rig/rig_prompt.h"
+#include "../tools/stroke_hit.h"
 #include "cage_paint.h"
 
 #include <finbook/model/cage/cage_commands.h>
@@ -21,14 +22,6 @@ constexpr qreal kCornerGrab = 9.0; // widget px
 constexpr qreal kEdgeGrab = 6.0;   // widget px
 constexpr qreal kCornerSize = 7.0; // widget px
 
-qreal distanceToSegment(QPointF p, QPointF a, QPointF b)
-{
-    const QPointF ab = b - a;
-    const qreal len2 = QPointF::dotProduct(ab, ab);
-    const qreal t =
-        len2 > 0 ? std::clamp(QPointF::dotProduct(p - a, ab) / len2, qreal(0), qreal(1)) : 0;
-    return QLineF(p, a + t * ab).length();
-}
 } // namespace
 
 CageTool::CageTool(model::DeformController *controller, QObject *parent)
