@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <unordered_map>
 
 namespace finbook::model {
@@ -40,6 +41,55 @@ int colourIndex(QRgb c)
     return int(c & 0x00ffffffu) - 1;
 }
 
+// A black picture of indices over `box` (canvas px) at up to kIndexPictureSide px, with the
+// transform from canvas px to it; a null picture when the box is empty or not finite.
+struct IndexPicture {
+    QImage image;
+    QTransform toPixels;
+};
+
+IndexPicture indexPicture(const QRectF &box)
+{
+    const double side = std::max(box.width(), box.height());
+    if (!(side > 0.0) || !std::isfinite(side))
+        return {};
+    const double scale = std::min(kMaxIndexScale, kIndexPictureSide / side);
+    IndexPicture out;
+    out.image = QImage(std::max(1, int(std::ceil(box.width() * scale)) + 2),
+                       std::max(1, int(std::ceil(box.height() * scale)) + 2), QImage::Format_RGB32);
+    if (out.image.isNull())
+        return out;
+    out.image.fill(Qt::black);
+    out.toPixels.translate(1, 1);
+    out.toPixels.scale(scale, scale);
+    out.toPixels.translate(-box.left(), -box.top());
+    return out;
+}
+
+// The posed fills (`layers`) painted into `picture` as their fill indices, as shown.
+void paintShownFills(IndexPicture &picture, const std::vector<PaintLayer> &layers)
+{
+    QPainter painter(&picture.image);
+    painter.setPen(Qt::NoPen);
+    painter.setTransform(picture.toPixels);
+    for (const PaintLayer &layer : layers)
+        for (const FillItem &item : layer.fills)
+            if (item.fill >= 0)
+                painter.fillPath(item.path, QColor::fromRgb(indexColour(item.fill)));
+}
+
+// The faces of `regions` painted into `picture`, each as index `indexOf(face)` (none if < 0).
+void paintFaces(IndexPicture &picture, const ObjectRegions &regions,
+                const std::function<int(int)> &indexOf)
+{
+    QPainter painter(&picture.image);
+    painter.setPen(Qt::NoPen);
+    painter.setTransform(picture.toPixels);
+    for (int f = 0; f < regions.faceCount(); ++f)
+        if (const int index = indexOf(f); index >= 0)
+            painter.fillPath(regions.restPath(f), QColor::fromRgb(indexColour(index)));
+}
+
 // Per face of `regions`, the pixels of the posed fills (`layers`) over it: fill index (−1
 // none) → count.
 std::vector<std::unordered_map<int, long long>> coverage(const ObjectRegions &regions,
@@ -49,40 +99,15 @@ std::vector<std::unordered_map<int, long long>> coverage(const ObjectRegions &re
     QRectF box;
     for (int f = 0; f < regions.faceCount(); ++f)
         box = box.united(regions.restPath(f).boundingRect());
-    const double side = std::max(box.width(), box.height());
-    if (!(side > 0.0) || !std::isfinite(side))
+    IndexPicture faces = indexPicture(box), fills = indexPicture(box);
+    if (faces.image.isNull() || fills.image.isNull())
         return out;
-    const double scale = std::min(kMaxIndexScale, kIndexPictureSide / side);
-    const QSize size(std::max(1, int(std::ceil(box.width() * scale)) + 2),
-                     std::max(1, int(std::ceil(box.height() * scale)) + 2));
-    QImage faces(size, QImage::Format_RGB32), fills(size, QImage::Format_RGB32);
-    if (faces.isNull() || fills.isNull())
-        return out;
-    faces.fill(Qt::black);
-    fills.fill(Qt::black);
-    QTransform toPixels;
-    toPixels.translate(1, 1);
-    toPixels.scale(scale, scale);
-    toPixels.translate(-box.left(), -box.top());
-    {
-        QPainter painter(&faces);
-        painter.setPen(Qt::NoPen);
-        painter.setTransform(toPixels);
-        for (int f = 0; f < regions.faceCount(); ++f)
-            painter.fillPath(regions.restPath(f), QColor::fromRgb(indexColour(f)));
-    }
-    {
-        QPainter painter(&fills);
-        painter.setPen(Qt::NoPen);
-        painter.setTransform(toPixels);
-        for (const PaintLayer &layer : layers)
-            for (const FillItem &item : layer.fills)
-                if (item.fill >= 0)
-                    painter.fillPath(item.path, QColor::fromRgb(indexColour(item.fill)));
-    }
+    paintFaces(faces, regions, [](int f) { return f; });
+    paintShownFills(fills, layers);
+    const QSize size = faces.image.size();
     for (int y = 0; y < size.height(); ++y) {
-        const auto *face = reinterpret_cast<const QRgb *>(faces.constScanLine(y));
-        const auto *fill = reinterpret_cast<const QRgb *>(fills.constScanLine(y));
+        const auto *face = reinterpret_cast<const QRgb *>(faces.image.constScanLine(y));
+        const auto *fill = reinterpret_cast<const QRgb *>(fills.image.constScanLine(y));
         for (int x = 0; x < size.width();) {
             // Runs of one (face, fill) pair are counted at once.
             int end = x + 1;
@@ -131,6 +156,29 @@ std::vector<int> shownFillPerFace(const ObjectRegions &regions,
     return out;
 }
 
+// The regions of the baked drawing (`baked`), the pose (`group`) as painted, and per face the
+// fill the pose showed over most of it (shownFillPerFace).
+struct BakedOwners {
+    ObjectRegionsPtr regions;
+    std::vector<PaintLayer> layers;
+    std::vector<int> owner;
+};
+
+BakedOwners bakedOwners(const StrokeGroup &group, const std::vector<Stroke> &baked, double closeGap)
+{
+    StrokeGroup after;
+    after.strokes = baked;
+    BakedOwners out;
+    out.regions = objectRegions(after, closeGap);
+    DocumentSettings settings;
+    settings.closeGap = closeGap;
+    StrokeGroup shown = group;
+    shown.visible = true; // a hidden object keeps its fills too
+    out.layers = paintLayers(shown, settings);
+    out.owner = shownFillPerFace(*out.regions, out.layers, int(group.fills.size()));
+    return out;
+}
+
 // Whether a line of no ink in `baked` (a cut-out closer) already runs along `line`: its gap
 // is closed there, and a second line on top of the first would only make slivers between
 // them. (Inked lines are left out: across a gap a few px wide, both ends are that near.)
@@ -170,15 +218,9 @@ std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Str
 {
     if (group.fills.empty())
         return {};
-    StrokeGroup after;
-    after.strokes = baked;
-    const ObjectRegionsPtr regions = objectRegions(after, closeGap);
-    DocumentSettings settings;
-    settings.closeGap = closeGap;
-    StrokeGroup shown = group;
-    shown.visible = true; // a hidden object keeps its fills too
-    const std::vector<int> owner =
-        shownFillPerFace(*regions, paintLayers(shown, settings), int(group.fills.size()));
+    const BakedOwners baking = bakedOwners(group, baked, closeGap);
+    const ObjectRegionsPtr &regions = baking.regions;
+    const std::vector<int> &owner = baking.owner;
     // Each fill keeps its place in the list on its largest face; its other faces follow.
     std::vector<int> largest(group.fills.size(), -1);
     for (int f = 0; f < regions->faceCount(); ++f) {
@@ -212,58 +254,26 @@ double shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &b
 {
     if (group.fills.empty())
         return 1.0;
-    StrokeGroup after;
-    after.strokes = baked;
-    const ObjectRegionsPtr regions = objectRegions(after, closeGap);
-    DocumentSettings settings;
-    settings.closeGap = closeGap;
-    StrokeGroup shown = group;
-    shown.visible = true;
-    const std::vector<PaintLayer> layers = paintLayers(shown, settings);
-    const std::vector<int> owner = shownFillPerFace(*regions, layers, int(group.fills.size()));
+    const BakedOwners baking = bakedOwners(group, baked, closeGap);
+    const ObjectRegionsPtr &regions = baking.regions;
+    const std::vector<PaintLayer> &layers = baking.layers;
+    const std::vector<int> &owner = baking.owner;
     QRectF box;
     for (const PaintLayer &layer : layers)
         for (const FillItem &item : layer.fills)
             box = box.united(item.path.boundingRect());
     for (int f = 0; f < regions->faceCount(); ++f)
         box = box.united(regions->restPath(f).boundingRect());
-    const double side = std::max(box.width(), box.height());
-    if (!(side > 0.0) || !std::isfinite(side))
+    IndexPicture before = indexPicture(box), kept = indexPicture(box);
+    if (before.image.isNull() || kept.image.isNull())
         return 1.0;
-    const double scale = std::min(kMaxIndexScale, kIndexPictureSide / side);
-    const QSize size(std::max(1, int(std::ceil(box.width() * scale)) + 2),
-                     std::max(1, int(std::ceil(box.height() * scale)) + 2));
-    QImage before(size, QImage::Format_RGB32), kept(size, QImage::Format_RGB32);
-    if (before.isNull() || kept.isNull())
-        return 1.0;
-    before.fill(Qt::black);
-    kept.fill(Qt::black);
-    QTransform toPixels;
-    toPixels.translate(1, 1);
-    toPixels.scale(scale, scale);
-    toPixels.translate(-box.left(), -box.top());
-    {
-        QPainter painter(&before);
-        painter.setPen(Qt::NoPen);
-        painter.setTransform(toPixels);
-        for (const PaintLayer &layer : layers)
-            for (const FillItem &item : layer.fills)
-                if (item.fill >= 0)
-                    painter.fillPath(item.path, QColor::fromRgb(indexColour(item.fill)));
-    }
-    {
-        QPainter painter(&kept);
-        painter.setPen(Qt::NoPen);
-        painter.setTransform(toPixels);
-        for (int f = 0; f < regions->faceCount(); ++f)
-            if (owner[std::size_t(f)] >= 0)
-                painter.fillPath(regions->restPath(f),
-                                 QColor::fromRgb(indexColour(owner[std::size_t(f)])));
-    }
+    paintShownFills(before, layers);
+    paintFaces(kept, *regions, [&](int f) { return owner[std::size_t(f)]; });
+    const QSize size = before.image.size();
     long long painted = 0, agreeing = 0;
     for (int y = 0; y < size.height(); ++y) {
-        const auto *a = reinterpret_cast<const QRgb *>(before.constScanLine(y));
-        const auto *b = reinterpret_cast<const QRgb *>(kept.constScanLine(y));
+        const auto *a = reinterpret_cast<const QRgb *>(before.image.constScanLine(y));
+        const auto *b = reinterpret_cast<const QRgb *>(kept.image.constScanLine(y));
         for (int x = 0; x < size.width(); ++x)
             if (a[x] != 0xff000000u || b[x] != 0xff000000u) {
                 ++painted;
