@@ -4,9 +4,6 @@
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
 
-#include <QImage>
-#include <QPainter>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -270,12 +267,21 @@ public:
                 const QLineF line(QPointF(a.x, a.y), QPointF(b.x, b.y));
                 const int index = int(m_segments.size());
                 m_segments.push_back({line, half, k == 0, k + 1 == count});
-                const QRectF box = QRectF(line.p1(), line.p2())
-                                       .normalized()
-                                       .adjusted(-radius, -radius, radius, radius);
-                for (long long y = cellOf(box.top()); y <= cellOf(box.bottom()); ++y)
-                    for (long long x = cellOf(box.left()); x <= cellOf(box.right()); ++x)
-                        m_cells[key(x, y)].push_back(index);
+                // The cells within `radius` of the segment, walked along it (a long diagonal
+                // line's bounding box would hold millions of cells): points every half cell,
+                // each with the cells within radius plus a quarter cell of it.
+                const int steps = int(std::ceil(line.length() / (0.5 * m_cell)));
+                const double reach = radius + 0.25 * m_cell;
+                for (int i = 0; i <= steps; ++i) {
+                    const QPointF at = line.pointAt(steps > 0 ? double(i) / steps : 0.0);
+                    for (long long y = cellOf(at.y() - reach); y <= cellOf(at.y() + reach); ++y)
+                        for (long long x = cellOf(at.x() - reach); x <= cellOf(at.x() + reach);
+                             ++x) {
+                            std::vector<int> &cell = m_cells[key(x, y)];
+                            if (cell.empty() || cell.back() != index)
+                                cell.push_back(index);
+                        }
+                }
             }
         }
     }
