@@ -1,6 +1,8 @@
 // Apply Pose of a cut-out pose (fill_render.h, bakedStrokes): the posed lines with the parts a
 // piece drawn over them hides cut away, so the baked drawing, whose fills all lie under all its
 // strokes, shows what the layered pose showed.
+#include "../skeleton/nearest_bone.h"
+
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
 
@@ -212,23 +214,9 @@ constexpr double kLongestOutlines = 2.0e6;
 // Past a line's end, outline points this much further than its half width (px) are not on it.
 constexpr double kAtEndReach = 0.5;
 
-// The fill the pose shows at p: the topmost fill holding it, or -1.
-int shownFill(const std::vector<PaintLayer> &layers, QPointF p)
-{
-    for (auto layer = layers.rbegin(); layer != layers.rend(); ++layer)
-        for (auto item = layer->fills.rbegin(); item != layer->fills.rend(); ++item)
-            if (item->path.controlPointRect().contains(p) && item->path.contains(p))
-                return item->fill;
-    return -1;
-}
-
 QPointF nearestOnSegment(QPointF p, const QLineF &segment)
 {
-    const QPointF d = segment.p2() - segment.p1();
-    const double dd = QPointF::dotProduct(d, d);
-    const double t =
-        dd > 0.0 ? std::clamp(QPointF::dotProduct(p - segment.p1(), d) / dd, 0.0, 1.0) : 0.0;
-    return segment.p1() + t * d;
+    return segment.pointAt(join_detail::project(p, segment.p1(), segment.p2()).first);
 }
 
 double distanceToSegment(QPointF p, const QLineF &segment)
@@ -295,16 +283,12 @@ public:
         double best = within;
         for (const int index : cell->second) {
             const Segment &s = m_segments[std::size_t(index)];
-            const QPointF d = s.line.p2() - s.line.p1();
-            const double dd = QPointF::dotProduct(d, d);
-            const double t =
-                dd > 0.0 ? std::clamp(QPointF::dotProduct(p - s.line.p1(), d) / dd, 0.0, 1.0) : 0.0;
-            const QPointF q = s.line.p1() + t * d;
-            const double distance = QLineF(p, q).length();
+            const auto [t, distance] = join_detail::project(p, s.line.p1(), s.line.p2());
             if (distance <= best) {
                 best = distance;
-                hit = {true, distance, q, s.halfWidth,
-                       (t <= 0.0 && s.startIsEnd) || (t >= 1.0 && s.endIsEnd) || !(dd > 0.0)};
+                hit = {true, distance, s.line.pointAt(t), s.halfWidth,
+                       (t <= 0.0 && s.startIsEnd) || (t >= 1.0 && s.endIsEnd) ||
+                           s.line.p1() == s.line.p2()};
             }
         }
         return hit;
@@ -337,6 +321,16 @@ std::vector<QPointF> densified(const QPolygonF &polygon)
     return out;
 }
 } // namespace
+
+int shownFillAt(const std::vector<PaintLayer> &layers, QPointF p)
+{
+    for (auto layer = layers.rbegin(); layer != layers.rend(); ++layer)
+        for (auto item = layer->fills.rbegin(); item != layer->fills.rend(); ++item)
+            if (item->fill >= 0 && item->path.controlPointRect().contains(p) &&
+                item->path.contains(p))
+                return item->fill;
+    return -1;
+}
 
 std::vector<Stroke> cutOutClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                   double closeGap, const std::function<Id()> &newId)
@@ -408,7 +402,7 @@ std::vector<Stroke> cutOutClosers(const StrokeGroup &group, const std::vector<St
                 const QPointF q = at + normal * (side * step * kSideStep);
                 (piece.contains(q) ? inside : outside).emplace(q);
             }
-        return !inside || !outside || shownFill(layers, *inside) != shownFill(layers, *outside);
+        return !inside || !outside || shownFillAt(layers, *inside) != shownFillAt(layers, *outside);
     };
     std::vector<std::pair<QLineF, std::size_t>> closerSegments; // with the closer's index
     const auto ontoInk = [&](QPointF p, std::size_t self) -> std::optional<QPointF> {

@@ -11,6 +11,8 @@
 // crossing the body cuts the body in two) gets one more fill per further face, in its colour
 // and shading. Resolving by seed points alone let a seed fall into a neighbouring region and
 // a fill spread over faces the pose showed empty (slivers between a limb and the body).
+#include "../skeleton/nearest_bone.h"
+
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
 
@@ -122,16 +124,6 @@ std::vector<std::unordered_map<int, long long>> coverage(const ObjectRegions &re
     return out;
 }
 
-// The fill the pose shows at point p: the topmost item holding it, or −1.
-int fillAt(const std::vector<PaintLayer> &layers, QPointF p)
-{
-    for (auto layer = layers.rbegin(); layer != layers.rend(); ++layer)
-        for (auto item = layer->fills.rbegin(); item != layer->fills.rend(); ++item)
-            if (item->fill >= 0 && item->path.contains(p))
-                return item->fill;
-    return -1;
-}
-
 // Per face of `regions`, the index of the fill the pose (`layers`) shows over most of it, or
 // −1 where most of it showed none.
 std::vector<int> shownFillPerFace(const ObjectRegions &regions,
@@ -149,7 +141,7 @@ std::vector<int> shownFillPerFace(const ObjectRegions &regions,
             }
         if (bestCount == 0) { // smaller than a pixel of the picture: its seed decides
             const auto &seed = regions.regions().faces[std::size_t(f)].seed;
-            best = fillAt(layers, QPointF(seed.x(), seed.y()));
+            best = shownFillAt(layers, QPointF(seed.x(), seed.y()));
         }
         out[std::size_t(f)] = best >= 0 && best < fillCount ? best : -1;
     }
@@ -196,11 +188,7 @@ bool runsAlongALine(const std::vector<Stroke> &baked, const QLineF &line)
             for (std::size_t i = 0; i < pts.size() && !near; ++i) {
                 const QPointF a(pts[i].x, pts[i].y);
                 const QPointF b = i + 1 < pts.size() ? QPointF(pts[i + 1].x, pts[i + 1].y) : a;
-                const QPointF d = b - a;
-                const double dd = QPointF::dotProduct(d, d);
-                const double t =
-                    dd > 0.0 ? std::clamp(QPointF::dotProduct(p - a, d) / dd, 0.0, 1.0) : 0.0;
-                near = QLineF(p, a + t * d).length() <= reach;
+                near = join_detail::project(p, a, b).second <= reach;
             }
             if (near)
                 break;

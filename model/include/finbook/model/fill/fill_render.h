@@ -53,6 +53,9 @@ struct PaintLayer {
 };
 std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSettings &settings,
                                     const RenderOptions &options = {});
+// The index of the fill that `layers` show at canvas point p (the topmost fill item holding
+// it), or -1.
+int shownFillAt(const std::vector<PaintLayer> &layers, QPointF p);
 
 // Where posed stroke `stroke` of a cut-out pose crosses a cut between its points i and i + 1
 // and both pieces turned rigidly: each piece's part of the line ends where it met the cut at
