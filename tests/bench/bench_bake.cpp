@@ -9,7 +9,8 @@
 // 8/255; a pixel on a colour edge in both pictures, the anti-aliased rim, is left out),
 // filled_px before and after (fills alone), fills before and after, and how many fills show.
 // A last line per rig kind sums up: bake_agree_pct_min and bake_agree_pct_median, the worst
-// drawing, the largest filled-area change and how many drawings changed their fill count.
+// drawing, the largest filled-area change, how many drawings changed their fill count, and
+// Apply Pose's own time (apply_ms per drawing; median and max, on the UI thread in the app).
 // --png writes, per drawing and rig, the posed picture, the baked one and the differences;
 // --rig pins|cage|skeleton_rigid|skeleton_blend|skeleton_cut_out measures that one alone;
 // --faces outlines the baked drawing's faces (green) and gap closures (magenta) on the
@@ -30,6 +31,7 @@
 #include <finbook/model/skeleton/skeleton_commands.h>
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
@@ -157,6 +159,7 @@ struct Summary {
     QString worst;
     double worstPct = 101.0;
     double maxAreaChangePct = 0.0;
+    std::vector<double> applyMs; // Apply Pose's own time per drawing
     int fillCountChanged = 0;
     int failed = 0;
 };
@@ -193,7 +196,10 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
         finbook::testing::darkPixels(framePicture(doc, 0, t, kPicture, true));
     const int fillsBefore = int(doc.group(g)->fills.size());
     const int shownBefore = shownFills(*doc.group(g), closeGap);
+    QElapsedTimer clock;
+    clock.start();
     doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
+    const double applyMs = double(clock.nsecsElapsed()) / 1e6;
     const QImage baked = framePicture(doc, 0, t, kPicture);
     const long long filledAfter =
         finbook::testing::darkPixels(framePicture(doc, 0, t, kPicture, true));
@@ -210,6 +216,8 @@ QJsonObject bakeOne(const QString &file, const std::vector<std::vector<QPointF>>
     row.insert(QStringLiteral("fills_after"), fillsAfter);
     row.insert(QStringLiteral("fills_shown_before"), shownBefore);
     row.insert(QStringLiteral("fills_shown_after"), shownAfter);
+    row.insert(QStringLiteral("apply_ms"), applyMs);
+    summary.applyMs.push_back(applyMs);
     summary.agree.push_back(cmp.agreePct);
     if (cmp.agreePct < summary.worstPct) {
         summary.worstPct = cmp.agreePct;
@@ -339,6 +347,9 @@ int benchBake(const QStringList &argsIn)
                                          [](double p) { return p < 99.5; })));
             row.insert(QStringLiteral("filled_change_pct_max"), s.maxAreaChangePct);
             row.insert(QStringLiteral("shown_fill_count_changed"), s.fillCountChanged);
+            row.insert(QStringLiteral("apply_ms_median"), finbook::bench::median(s.applyMs));
+            row.insert(QStringLiteral("apply_ms_max"),
+                       *std::max_element(s.applyMs.begin(), s.applyMs.end()));
         }
         print(row);
     }
