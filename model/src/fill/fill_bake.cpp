@@ -20,8 +20,12 @@
 #include <QPainter>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <numbers>
+#include <optional>
 #include <unordered_map>
 
 namespace finbook::model {
@@ -80,43 +84,66 @@ void paintShownFills(IndexPicture &picture, const std::vector<PaintLayer> &layer
                 painter.fillPath(item.path, QColor::fromRgb(indexColour(item.fill)));
 }
 
-// The faces of `regions` painted into `picture`, each as index `indexOf(face)` (none if < 0).
-void paintFaces(IndexPicture &picture, const ObjectRegions &regions,
-                const std::function<int(int)> &indexOf)
+// The faces of `regions` painted into `picture`, each as its index.
+void paintFaces(IndexPicture &picture, const ObjectRegions &regions)
 {
     QPainter painter(&picture.image);
     painter.setPen(Qt::NoPen);
     painter.setTransform(picture.toPixels);
     for (int f = 0; f < regions.faceCount(); ++f)
-        if (const int index = indexOf(f); index >= 0)
-            painter.fillPath(regions.restPath(f), QColor::fromRgb(indexColour(index)));
+        painter.fillPath(regions.restPath(f), QColor::fromRgb(indexColour(f)));
 }
 
-// Per face of `regions`, the pixels of the posed fills (`layers`) over it: fill index (−1
-// none) → count.
-std::vector<std::unordered_map<int, long long>> coverage(const ObjectRegions &regions,
-                                                         const std::vector<PaintLayer> &layers)
+// The two index pictures over the baked faces and the posed fills: per pixel, the baked face
+// (−1 none) and the fill the pose showed there (−1 none).
+struct FacesAndFills {
+    IndexPicture faces, fills;
+    int width = 0, height = 0;
+    int face(int x, int y) const { return pixel(faces, x, y); }
+    int fill(int x, int y) const { return pixel(fills, x, y); }
+
+private:
+    static int pixel(const IndexPicture &p, int x, int y)
+    {
+        return colourIndex(reinterpret_cast<const QRgb *>(p.image.constScanLine(y))[x]);
+    }
+};
+
+FacesAndFills facesAndFills(const ObjectRegions &regions, const std::vector<PaintLayer> &layers)
 {
-    std::vector<std::unordered_map<int, long long>> out(std::size_t(regions.faceCount()));
     QRectF box;
+    for (const PaintLayer &layer : layers)
+        for (const FillItem &item : layer.fills)
+            box = box.united(item.path.boundingRect());
     for (int f = 0; f < regions.faceCount(); ++f)
         box = box.united(regions.restPath(f).boundingRect());
-    IndexPicture faces = indexPicture(box), fills = indexPicture(box);
-    if (faces.image.isNull() || fills.image.isNull())
-        return out;
-    paintFaces(faces, regions, [](int f) { return f; });
-    paintShownFills(fills, layers);
-    const QSize size = faces.image.size();
-    for (int y = 0; y < size.height(); ++y) {
-        const auto *face = reinterpret_cast<const QRgb *>(faces.image.constScanLine(y));
-        const auto *fill = reinterpret_cast<const QRgb *>(fills.image.constScanLine(y));
-        for (int x = 0; x < size.width();) {
+    FacesAndFills out;
+    out.faces = indexPicture(box);
+    out.fills = indexPicture(box);
+    if (out.faces.image.isNull() || out.fills.image.isNull())
+        return {};
+    paintFaces(out.faces, regions);
+    paintShownFills(out.fills, layers);
+    out.width = out.faces.image.width();
+    out.height = out.faces.image.height();
+    return out;
+}
+
+// Per face (of `faceCount`), the pixels of the posed fills over it: fill index (−1 none) →
+// count.
+std::vector<std::unordered_map<int, long long>> coverage(const FacesAndFills &p, int faceCount)
+{
+    std::vector<std::unordered_map<int, long long>> out(static_cast<std::size_t>(faceCount));
+    for (int y = 0; y < p.height; ++y) {
+        const auto *face = reinterpret_cast<const QRgb *>(p.faces.image.constScanLine(y));
+        const auto *fill = reinterpret_cast<const QRgb *>(p.fills.image.constScanLine(y));
+        for (int x = 0; x < p.width;) {
             // Runs of one (face, fill) pair are counted at once.
             int end = x + 1;
-            while (end < size.width() && face[end] == face[x] && fill[end] == fill[x])
+            while (end < p.width && face[end] == face[x] && fill[end] == fill[x])
                 ++end;
             const int f = colourIndex(face[x]);
-            if (f >= 0 && f < regions.faceCount())
+            if (f >= 0 && f < faceCount)
                 out[std::size_t(f)][colourIndex(fill[x])] += end - x;
             x = end;
         }
@@ -127,10 +154,11 @@ std::vector<std::unordered_map<int, long long>> coverage(const ObjectRegions &re
 // Per face of `regions`, the index of the fill the pose (`layers`) shows over most of it, or
 // −1 where most of it showed none.
 std::vector<int> shownFillPerFace(const ObjectRegions &regions,
-                                  const std::vector<PaintLayer> &layers, int fillCount)
+                                  const std::vector<PaintLayer> &layers, const FacesAndFills &p,
+                                  int fillCount)
 {
     std::vector<int> out(std::size_t(regions.faceCount()), -1);
-    const auto counts = coverage(regions, layers);
+    const auto counts = coverage(p, regions.faceCount());
     for (int f = 0; f < regions.faceCount(); ++f) {
         int best = -1;
         long long bestCount = 0;
@@ -153,6 +181,7 @@ std::vector<int> shownFillPerFace(const ObjectRegions &regions,
 struct BakedOwners {
     ObjectRegionsPtr regions;
     std::vector<PaintLayer> layers;
+    FacesAndFills pictures;
     std::vector<int> owner;
 };
 
@@ -167,7 +196,8 @@ BakedOwners bakedOwners(const StrokeGroup &group, const std::vector<Stroke> &bak
     StrokeGroup shown = group;
     shown.visible = true; // a hidden object keeps its fills too
     out.layers = paintLayers(shown, settings);
-    out.owner = shownFillPerFace(*out.regions, out.layers, int(group.fills.size()));
+    out.pictures = facesAndFills(*out.regions, out.layers);
+    out.owner = shownFillPerFace(*out.regions, out.layers, out.pictures, int(group.fills.size()));
     return out;
 }
 
@@ -197,6 +227,25 @@ bool runsAlongALine(const std::vector<Stroke> &baked, const QLineF &line)
             return false;
     }
     return true;
+}
+
+// The share of the pixels the pose showed filled, or the baked faces would fill, where the
+// two agree (shownFillAgreement).
+double agreement(const BakedOwners &baking)
+{
+    const FacesAndFills &p = baking.pictures;
+    long long painted = 0, agreeing = 0;
+    for (int y = 0; y < p.height; ++y)
+        for (int x = 0; x < p.width; ++x) {
+            const int face = p.face(x, y);
+            const int shown = p.fill(x, y);
+            const int kept = face >= 0 ? baking.owner[std::size_t(face)] : -1;
+            if (shown >= 0 || kept >= 0) {
+                ++painted;
+                agreeing += shown == kept;
+            }
+        }
+    return painted > 0 ? double(agreeing) / double(painted) : 1.0;
 }
 
 } // namespace
@@ -242,33 +291,7 @@ double shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &b
 {
     if (group.fills.empty())
         return 1.0;
-    const BakedOwners baking = bakedOwners(group, baked, closeGap);
-    const ObjectRegionsPtr &regions = baking.regions;
-    const std::vector<PaintLayer> &layers = baking.layers;
-    const std::vector<int> &owner = baking.owner;
-    QRectF box;
-    for (const PaintLayer &layer : layers)
-        for (const FillItem &item : layer.fills)
-            box = box.united(item.path.boundingRect());
-    for (int f = 0; f < regions->faceCount(); ++f)
-        box = box.united(regions->restPath(f).boundingRect());
-    IndexPicture before = indexPicture(box), kept = indexPicture(box);
-    if (before.image.isNull() || kept.image.isNull())
-        return 1.0;
-    paintShownFills(before, layers);
-    paintFaces(kept, *regions, [&](int f) { return owner[std::size_t(f)]; });
-    const QSize size = before.image.size();
-    long long painted = 0, agreeing = 0;
-    for (int y = 0; y < size.height(); ++y) {
-        const auto *a = reinterpret_cast<const QRgb *>(before.image.constScanLine(y));
-        const auto *b = reinterpret_cast<const QRgb *>(kept.image.constScanLine(y));
-        for (int x = 0; x < size.width(); ++x)
-            if (a[x] != 0xff000000u || b[x] != 0xff000000u) {
-                ++painted;
-                agreeing += a[x] == b[x];
-            }
-    }
-    return painted > 0 ? double(agreeing) / double(painted) : 1.0;
+    return agreement(bakedOwners(group, baked, closeGap));
 }
 
 std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
@@ -312,6 +335,382 @@ std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<S
                         {float(line.x2()), float(line.y2()), 1.0f}};
         out.push_back({newId(), std::move(data)});
     }
+    return out;
+}
+
+namespace {
+
+// Seams (shownColourSeams). A part of a face that showed another fill is given a seam only
+// when it covers this much (canvas px²): a speck is the pictures' rounding.
+constexpr double kSeamSmallestArea = 6.0;
+// The regions merge a face thinner than the pen into a neighbour (geometry/regions.h), and a
+// strip along a line or a face's edge is the pictures' rounding: a part gets a seam only when
+// it is this many times wider than the pen (twice its area over its perimeter).
+constexpr double kSeamWiderThanPen = 1.25;
+// A seam's staircase of pixel edges is straightened to within this many picture px.
+constexpr double kSeamStraighten = 0.75;
+// The most points all seams may have: the regions of a drawing take 20,000 segments at most,
+// and each seam's ends are matched against every other seam.
+constexpr std::size_t kSeamMostPoints = 4000;
+// A seam ends this far (canvas px) past the edge or seam it meets, as gap closing's links do.
+constexpr double kSeamHairPast = 0.01;
+
+// The four directions between pixel corners: right, down, left, up.
+constexpr int kDx[4] = {1, 0, -1, 0};
+constexpr int kDy[4] = {0, 1, 0, -1};
+
+// Douglas–Peucker on `points` (first and last kept).
+void straighten(const std::vector<QPointF> &points, std::size_t from, std::size_t to,
+                double tolerance, std::vector<QPointF> &out)
+{
+    double worst = -1.0;
+    std::size_t at = from;
+    for (std::size_t k = from + 1; k < to; ++k) {
+        const double d = join_detail::project(points[k], points[from], points[to]).second;
+        if (d > worst) {
+            worst = d;
+            at = k;
+        }
+    }
+    if (worst > tolerance) {
+        straighten(points, from, at, tolerance, out);
+        straighten(points, at, to, tolerance, out);
+    } else {
+        out.push_back(points[to]);
+    }
+}
+
+std::vector<QPointF> straightened(const std::vector<QPointF> &points, double tolerance)
+{
+    if (points.size() < 3)
+        return points;
+    std::vector<QPointF> out{points.front()};
+    if (points.front() == points.back()) { // a ring: split at its farthest point
+        std::size_t far = 0;
+        for (std::size_t k = 1; k < points.size(); ++k)
+            if (QLineF(points[0], points[k]).length() > QLineF(points[0], points[far]).length())
+                far = k;
+        straighten(points, 0, far, tolerance, out);
+        straighten(points, far, points.size() - 1, tolerance, out);
+    } else {
+        straighten(points, 0, points.size() - 1, tolerance, out);
+    }
+    return out;
+}
+
+// Per pixel of a picture (`like`'s transform, w × h), whether an inked line of `baked` covers
+// it, drawn at its pen width with round ends.
+std::vector<char> inkMask(const std::vector<Stroke> &baked, const IndexPicture &like, int w, int h)
+{
+    QImage image(w, h, QImage::Format_Grayscale8);
+    std::vector<char> out(std::size_t(w) * std::size_t(h), 0);
+    if (image.isNull())
+        return out;
+    image.fill(0);
+    {
+        QPainter painter(&image);
+        painter.setTransform(like.toPixels);
+        for (const Stroke &s : baked) {
+            if (!s.data || qAlpha(s.data->color) == 0 || s.data->points.empty() ||
+                !std::isfinite(s.data->width))
+                continue;
+            QPainterPath path(QPointF(s.data->points.front().x, s.data->points.front().y));
+            for (const StrokePoint &q : s.data->points)
+                path.lineTo(q.x, q.y);
+            painter.strokePath(path, QPen(Qt::white, std::clamp(double(s.data->width), 0.0, 64.0),
+                                          Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        }
+    }
+    for (int y = 0; y < h; ++y) {
+        const uchar *line = image.constScanLine(y);
+        for (int x = 0; x < w; ++x)
+            out[std::size_t(y) * std::size_t(w) + std::size_t(x)] = line[x] != 0;
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                     double closeGap, const std::function<Id()> &newId,
+                                     double *bakedAgreement)
+{
+    if (bakedAgreement)
+        *bakedAgreement = 1.0;
+    if (group.fills.empty() || !group.isDeformed())
+        return {};
+    const BakedOwners baking = bakedOwners(group, baked, closeGap);
+    if (bakedAgreement)
+        *bakedAgreement = agreement(baking);
+    const FacesAndFills &p = baking.pictures;
+    const int w = p.width, h = p.height;
+    if (w <= 0 || h <= 0)
+        return {};
+    const double scale = p.faces.toPixels.m11(); // picture px per canvas px
+    if (!(scale > 0.0))
+        return {};
+    double penWidth = 1.0;
+    {
+        std::vector<double> widths;
+        for (const Stroke &s : baked)
+            if (s.data && qAlpha(s.data->color) != 0 && std::isfinite(s.data->width))
+                widths.push_back(double(s.data->width));
+        if (!widths.empty()) {
+            std::nth_element(widths.begin(), widths.begin() + std::ptrdiff_t(widths.size() / 2),
+                             widths.end());
+            penWidth = std::clamp(widths[widths.size() / 2], 0.5, 64.0);
+        }
+    }
+    const auto index = [w](int x, int y) {
+        return std::size_t(y) * std::size_t(w) + std::size_t(x);
+    };
+    const auto owner = [&](int face) { return face >= 0 ? baking.owner[std::size_t(face)] : -1; };
+    // The parts of faces that showed a fill other than their face's, and the parts outside
+    // every face that showed a fill (a region whose gap the pose showed closed and the baked
+    // lines leave open), 4-connected, one face and one fill each, kept when large and thick
+    // enough.
+    const double smallest = kSeamSmallestArea * scale * scale;
+    std::vector<char> kept(std::size_t(w) * std::size_t(h), 0);
+    bool anyKept = false, outsideKept = false;
+    std::vector<char> seen(kept.size(), 0);
+    std::vector<std::pair<int, int>> part, stack;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int f = p.face(x, y);
+            if (seen[index(x, y)] || p.fill(x, y) == owner(f))
+                continue;
+            const int fill = p.fill(x, y);
+            part.clear();
+            stack = {{x, y}};
+            seen[index(x, y)] = 1;
+            long long rim = 0; // pixel edges between the part and the rest
+            while (!stack.empty()) {
+                const auto [cx, cy] = stack.back();
+                stack.pop_back();
+                part.emplace_back(cx, cy);
+                for (int k = 0; k < 4; ++k) {
+                    const int nx = cx + kDx[k], ny = cy + kDy[k];
+                    const bool same = nx >= 0 && ny >= 0 && nx < w && ny < h &&
+                                      p.face(nx, ny) == f && p.fill(nx, ny) == fill;
+                    rim += !same;
+                    if (same && !seen[index(nx, ny)]) {
+                        seen[index(nx, ny)] = 1;
+                        stack.emplace_back(nx, ny);
+                    }
+                }
+            }
+            // The regions merge a face thinner than the pen (twice its area over its
+            // perimeter) into its neighbour, which may be the outside: such a part would lose
+            // its colour instead of keeping it. A staircase of pixel edges is 4/π as long as
+            // the outline it follows.
+            const double area = double(part.size()) / (scale * scale);
+            const double perimeter = double(rim) / scale * (std::numbers::pi / 4.0);
+            const bool thickEnough = perimeter > 0.0 &&
+                                     2.0 * area / perimeter >= kSeamWiderThanPen * penWidth &&
+                                     area >= kSeamWiderThanPen * 2.0 * penWidth * penWidth;
+            if (thickEnough && double(part.size()) >= smallest) {
+                for (const auto &[px, py] : part)
+                    kept[index(px, py)] = 1;
+                anyKept = true;
+                outsideKept = outsideKept || f < 0;
+            }
+        }
+    if (!anyKept)
+        return {};
+    // The pixel edges between a kept part and the rest of its face showing another fill, as
+    // bits per pixel corner (corner (x, y) is the top left of pixel (x, y)).
+    const int cw = w + 1, ch = h + 1;
+    const auto corner = [cw](int x, int y) {
+        return std::size_t(y) * std::size_t(cw) + std::size_t(x);
+    };
+    std::vector<std::uint8_t> edges(std::size_t(cw) * std::size_t(ch), 0);
+    const auto link = [&](int x0, int y0, int dir) {
+        const int x1 = x0 + kDx[dir], y1 = y0 + kDy[dir];
+        edges[corner(x0, y0)] |= std::uint8_t(1u << dir);
+        edges[corner(x1, y1)] |= std::uint8_t(1u << ((dir + 2) % 4));
+    };
+    // The face of the pixels either side of the edge from corner (x, y) in direction `dir`.
+    const auto faceBeside = [&](int x, int y, int dir) {
+        const int px = dir == 2 ? x - 1 : x, py = dir == 3 ? y - 1 : y;
+        return p.face(std::clamp(px, 0, w - 1), std::clamp(py, 0, h - 1));
+    };
+    // Outside every face, a part's edge along a line needs no seam (the line bounds it once
+    // the seams close its gaps): the pixels the inked lines cover, drawn at their width.
+    const std::vector<char> inked =
+        outsideKept ? inkMask(baked, p.faces, w, h) : std::vector<char>(kept.size(), 0);
+    const auto seamBetween = [&](int x0, int y0, int x1, int y1) {
+        const int f = p.face(x0, y0);
+        return p.face(x1, y1) == f && p.fill(x1, y1) != p.fill(x0, y0) &&
+               (kept[index(x0, y0)] || kept[index(x1, y1)]) &&
+               (f >= 0 || (!inked[index(x0, y0)] && !inked[index(x1, y1)]));
+    };
+    bool any = false;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (x + 1 < w && seamBetween(x, y, x + 1, y)) {
+                link(x + 1, y, 1); // the corner edge between them, downwards
+                any = true;
+            }
+            if (y + 1 < h && seamBetween(x, y, x, y + 1)) {
+                link(x, y + 1, 0); // rightwards
+                any = true;
+            }
+        }
+    if (!any)
+        return {};
+    // The edges chained into lines: through a corner of two edges, and straight on through a
+    // corner where three or four meet (the line that stops there ends on the one that goes
+    // on).
+    const std::vector<std::uint8_t> degreeOf = [&] {
+        std::vector<std::uint8_t> d(edges.size());
+        for (std::size_t i = 0; i < edges.size(); ++i)
+            d[i] = std::uint8_t(std::popcount(unsigned(edges[i])));
+        return d;
+    }();
+    struct Chain {
+        std::vector<QPointF> points; // picture px, then canvas px
+        int face = -1;
+        bool ring = false;
+    };
+    std::vector<Chain> chains;
+    const auto walk = [&](int x, int y, int dir) {
+        Chain chain;
+        chain.face = faceBeside(x, y, dir);
+        chain.points.emplace_back(x, y);
+        const int startX = x, startY = y;
+        while (true) {
+            edges[corner(x, y)] &= std::uint8_t(~(1u << dir));
+            x += kDx[dir];
+            y += kDy[dir];
+            edges[corner(x, y)] &= std::uint8_t(~(1u << ((dir + 2) % 4)));
+            chain.points.emplace_back(x, y);
+            const std::uint8_t left = edges[corner(x, y)];
+            if (left == 0 || (x == startX && y == startY))
+                break;
+            if (degreeOf[corner(x, y)] == 2) {
+                dir = std::countr_zero(unsigned(left));
+            } else if (left & (1u << dir)) {
+                // straight on
+            } else {
+                break;
+            }
+        }
+        chain.ring = chain.points.size() > 2 && chain.points.front() == chain.points.back();
+        chains.push_back(std::move(chain));
+    };
+    for (int pass = 0; pass < 3; ++pass)
+        for (int y = 0; y < ch; ++y)
+            for (int x = 0; x < cw; ++x) {
+                const std::size_t c = corner(x, y);
+                // Line ends first, then corners where lines meet, then rings.
+                const bool start = pass == 0   ? degreeOf[c] == 1
+                                   : pass == 1 ? degreeOf[c] >= 3
+                                               : true;
+                while (start && edges[c] != 0)
+                    walk(x, y, std::countr_zero(unsigned(edges[c])));
+            }
+    // Straightened, in canvas px. Beyond kSeamMostPoints (colours scattered over a drawing
+    // no pose made) the seams would cost more than they could keep, and none are made.
+    const QTransform toCanvas = p.faces.toPixels.inverted();
+    std::size_t total = 0;
+    for (Chain &chain : chains) {
+        chain.points = straightened(chain.points, kSeamStraighten);
+        for (QPointF &q : chain.points)
+            q = toCanvas.map(q);
+        total += chain.points.size();
+    }
+    if (total > kSeamMostPoints)
+        return {};
+    // Each end of a line goes onto the nearest edge of its face or the nearest other line
+    // (a hair past it), so that the regions join it: the pixel edges stop short of the face's
+    // edge by up to a pixel of the pictures.
+    const double reach = 2.0 / scale + 0.5 * penWidth + 1.0;
+    std::vector<std::vector<QLineF>> faceEdges(std::size_t(baking.regions->faceCount()));
+    const auto edgesOf = [&](int face) -> const std::vector<QLineF> & {
+        std::vector<QLineF> &out = faceEdges[std::size_t(face)];
+        if (out.empty())
+            for (const QPolygonF &ring : baking.regions->restPath(face).toSubpathPolygons())
+                for (qsizetype k = 0; k + 1 < ring.size(); ++k)
+                    out.emplace_back(ring[k], ring[k + 1]);
+        return out;
+    };
+    const std::vector<Chain> straight = chains;
+    // The inked lines' middles, which a seam outside every face ends on.
+    std::vector<QLineF> inkLines;
+    if (std::any_of(chains.begin(), chains.end(), [](const Chain &c) { return c.face < 0; }))
+        for (const Stroke &s : baked)
+            if (s.data && qAlpha(s.data->color) != 0)
+                for (std::size_t k = 0; k + 1 < s.data->points.size(); ++k)
+                    inkLines.emplace_back(
+                        QPointF(s.data->points[k].x, s.data->points[k].y),
+                        QPointF(s.data->points[k + 1].x, s.data->points[k + 1].y));
+    const auto onto = [&](QPointF end, std::size_t self, int face) -> std::optional<QPointF> {
+        double best = reach;
+        std::optional<QPointF> out;
+        const auto consider = [&](const QLineF &line) {
+            const auto [t, distance] = join_detail::project(end, line.p1(), line.p2());
+            if (distance < best) {
+                best = distance;
+                out = line.pointAt(t);
+            }
+        };
+        if (face >= 0 && face < baking.regions->faceCount())
+            for (const QLineF &line : edgesOf(face))
+                consider(line);
+        else
+            for (const QLineF &line : inkLines)
+                consider(line);
+        for (std::size_t i = 0; i < straight.size(); ++i)
+            if (i != self)
+                for (std::size_t k = 0; k + 1 < straight[i].points.size(); ++k)
+                    consider(QLineF(straight[i].points[k], straight[i].points[k + 1]));
+        if (out && best > 0.0)
+            *out += (*out - end) * (kSeamHairPast / best);
+        return out;
+    };
+    std::vector<Stroke> out;
+    for (std::size_t i = 0; i < chains.size(); ++i) {
+        std::vector<QPointF> points = chains[i].points;
+        if (points.size() < 2)
+            continue;
+        if (!chains[i].ring) {
+            // An end already past its face's edge (a pixel corner lies either side of it)
+            // stays; outside every face, an end stops at a line's inked edge and goes on to
+            // its middle.
+            const int face = chains[i].face;
+            const auto inside = [&](QPointF q) {
+                return face < 0 || (face < baking.regions->faceCount() &&
+                                    baking.regions->restPath(face).contains(q));
+            };
+            if (inside(points.front()))
+                if (const auto first = onto(points.front(), i, face))
+                    points.insert(points.begin(), *first);
+            if (inside(points.back()))
+                if (const auto last = onto(points.back(), i, face))
+                    points.push_back(*last);
+        }
+        auto data = std::make_shared<StrokeData>();
+        data->color = kGapCloserColor;
+        data->width = float(penWidth);
+        for (const QPointF &q : points)
+            data->points.push_back({float(q.x()), float(q.y()), 1.0f});
+        out.push_back({newId(), std::move(data)});
+    }
+    // The gaps the regions close now stay closed as they are, by lines of no ink: gap closing
+    // leaves a gap open whose middle lies in a face already closed, so a seam that closes a
+    // face (or ends near a free end) can open a gap anywhere in it, and its region would lose
+    // its colour.
+    if (!out.empty())
+        for (const geometry::GapClosure &closure : baking.regions->regions().closures) {
+            if (!closure.from.allFinite() || !closure.to.allFinite() || closure.from == closure.to)
+                continue;
+            auto data = std::make_shared<StrokeData>();
+            data->color = kGapCloserColor;
+            data->width = float(penWidth);
+            data->points = {{float(closure.from.x()), float(closure.from.y()), 1.0f},
+                            {float(closure.to.x()), float(closure.to.y()), 1.0f}};
+            out.push_back({newId(), std::move(data)});
+        }
     return out;
 }
 

@@ -151,6 +151,17 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
                 ? std::move(withCuts)
                 : std::move(without);
     }
+    // Where the baked faces still join colours the pose showed apart, lines of no ink along
+    // the edge between them as painted, kept when they keep more of what was shown.
+    double bakedAgreement = 1.0;
+    if (std::vector<Stroke> seams =
+            shownColourSeams(*g, m_newStrokes, closeGap, newId, &bakedAgreement);
+        !seams.empty()) {
+        std::vector<Stroke> withSeams = m_newStrokes;
+        withSeams.insert(withSeams.end(), seams.begin(), seams.end());
+        if (shownFillAgreement(*g, withSeams, closeGap) > bakedAgreement)
+            m_newStrokes = std::move(withSeams);
+    }
     m_oldFills = g->fills;
     m_newFills = fillsAfterBake(*g, m_newStrokes, closeGap);
 }

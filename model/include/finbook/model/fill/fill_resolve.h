@@ -73,6 +73,24 @@ constexpr QRgb kGapCloserColor = 0x00000000;
 std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                    double closeGap, const std::function<Id()> &newId);
 
+// Where a face of the baked drawing (`baked`) would take one colour but the pose showed two
+// (or a colour and none) on it, say where a limb's cut or a fold left no line between them,
+// or where the pose showed a fill that no baked face holds (a gap the pose showed closed and
+// the baked lines leave open): lines of no ink (kGapCloserColor, the pen's median width), with
+// new ids from `newId`, along the edge between the colours as the pose painted them. Pictures
+// of the posed fills and the baked faces (as fillsAfterBake's) are compared, and each part of
+// a face (or of no face) that showed another fill, larger than a speck and wider than the pen,
+// is outlined where it borders the rest of its face (outside every face: where no inked line
+// covers that border). Each line ends a hair past the face's edge, the line's middle or the
+// seam it meets. The gaps the baked regions close are added as lines of no ink too, so that
+// gap closing cannot close them otherwise once the seams are in. Apply Pose adds them last,
+// when they keep more of the colours shown. Empty when no part differs (or the parts' outlines
+// would exceed 4,000 points). `bakedAgreement`, if given, receives shownFillAgreement of
+// `baked` (computed on the way).
+std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                     double closeGap, const std::function<Id()> &newId,
+                                     double *bakedAgreement = nullptr);
+
 // A cut-out pose's pieces end their colour where they are cut, where no line is: a limb
 // turned over the body shows its fill up to the cut, and the baked lines alone would join the
 // limb's region to the body's behind it. Each stretch of a piece's painted outline (its fills
