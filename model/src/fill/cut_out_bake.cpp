@@ -98,31 +98,45 @@ std::vector<Segment> layeredSegments(const StrokeGroup &group, std::size_t i,
     return segments;
 }
 
-// The parts of `segments` no cover hides, each a polyline of two points or more.
-std::vector<std::vector<StrokePoint>> visibleRuns(const std::vector<Segment> &segments,
-                                                  const Covers &covers)
+// A stretch of a line that shows, or that a cover hides, as a polyline of two points or more.
+struct Run {
+    std::vector<StrokePoint> points;
+    bool shows = true;
+};
+
+// `segments` cut into the runs that show and those a cover hides, in order: each run ends
+// where the next begins (the cover's edge), so together they are the whole line.
+std::vector<Run> runsOf(const std::vector<Segment> &segments, const Covers &covers)
 {
     // Consecutive segments share their ends, so a run takes each segment's start only when it
     // begins there (points repeated in the stroke stay as drawn).
-    std::vector<std::vector<StrokePoint>> runs;
-    std::vector<StrokePoint> run;
+    std::vector<Run> runs;
+    Run run;
     const auto end = [&] {
-        if (run.size() >= 2)
+        if (run.points.size() >= 2)
             runs.push_back(std::move(run));
-        run.clear();
+        run.points.clear();
     };
-    const auto add = [&run](const StrokePoint &p) { run.push_back(p); };
+    const auto add = [&run](const StrokePoint &p, bool shows) {
+        run.shows = shows;
+        run.points.push_back(p);
+    };
+    // Adds the part of a segment from `a` to `b`, all of one kind.
+    const auto extend = [&](const StrokePoint &a, const StrokePoint &b, bool shows) {
+        if (!run.points.empty() && run.shows != shows) {
+            const StrokePoint last = run.points.back();
+            end();
+            add(last, shows);
+        }
+        if (run.points.empty())
+            add(a, shows);
+        add(b, shows);
+    };
     for (const Segment &s : segments) {
         const bool aShows = !covers.hides(s.layer, at(s.a));
         const bool bShows = !covers.hides(s.layer, at(s.b));
-        if (aShows && bShows) {
-            if (run.empty())
-                add(s.a);
-            add(s.b);
-            continue;
-        }
-        if (!aShows && !bShows) {
-            end();
+        if (aShows == bShows) {
+            extend(s.a, s.b, aShows);
             continue;
         }
         // One end shows: the cover's edge lies between them.
@@ -132,16 +146,8 @@ std::vector<std::vector<StrokePoint>> visibleRuns(const std::vector<Segment> &se
             (covers.hides(s.layer, at(lerp(s.a, s.b, mid))) ? hidden : shown) = mid;
         }
         const StrokePoint edge = lerp(s.a, s.b, shown);
-        if (aShows) {
-            if (run.empty())
-                add(s.a);
-            add(edge);
-            end();
-        } else {
-            end();
-            add(edge);
-            add(s.b);
-        }
+        extend(s.a, edge, aShows);
+        extend(edge, s.b, bShows);
     }
     end();
     return runs;
@@ -150,7 +156,7 @@ std::vector<std::vector<StrokePoint>> visibleRuns(const std::vector<Segment> &se
 } // namespace
 
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
-                                 const std::function<Id()> &newId)
+                                 const std::function<Id()> &newId, HiddenLines hidden)
 {
     const DeformedStrokes *d = group.deformed.get();
     if (!group.isDeformed() || !d || d->pieces.empty() ||
@@ -173,26 +179,40 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<Pai
             continue;
         }
         // The runs join the layered segments, arcs included: one run that shows whole is
-        // the line posedStrokes makes.
-        std::vector<std::vector<StrokePoint>> runs =
-            visibleRuns(layeredSegments(group, i, points), covers);
+        // the line posedStrokes makes. A hidden run kept is a line of no ink, so that the
+        // line stays whole: its region stays closed, and it still closes a loop by itself
+        // (rest_shade.h inflates the body as the whole body).
+        std::vector<Run> runs = runsOf(layeredSegments(group, i, points), covers);
+        std::erase_if(runs, [hidden](const Run &run) {
+            return !run.shows &&
+                   (hidden == HiddenLines::Drop ||
+                    std::all_of(run.points.begin(), run.points.end(), [&](const StrokePoint &p) {
+                        return p.x == run.points.front().x && p.y == run.points.front().y;
+                    }));
+        });
+        // The stroke's id stays with its first part that shows.
+        const auto keeper =
+            std::find_if(runs.begin(), runs.end(), [](const Run &run) { return run.shows; });
+        const std::size_t keep = keeper == runs.end() ? 0 : std::size_t(keeper - runs.begin());
         for (std::size_t r = 0; r < runs.size(); ++r) {
-            auto part = r + 1 < runs.size() ? std::make_shared<StrokeData>(*stroke.data) : data;
-            part->points = std::move(runs[r]);
-            out.push_back({r == 0 ? stroke.id : newId(), std::move(part)});
+            auto part = std::make_shared<StrokeData>(*data);
+            part->points = std::move(runs[r].points);
+            if (!runs[r].shows)
+                part->color = kHiddenLineColor;
+            out.push_back({r == keep ? stroke.id : newId(), std::move(part)});
         }
     }
     return out;
 }
 
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
-                                 const std::function<Id()> &newId)
+                                 const std::function<Id()> &newId, HiddenLines hidden)
 {
     if (!group.isDeformed() || group.deformed->pieces.empty())
         return posedStrokes(group);
     DocumentSettings settings;
     settings.closeGap = closeGap;
-    return bakedStrokes(group, paintLayers(group, settings), newId);
+    return bakedStrokes(group, paintLayers(group, settings), newId, hidden);
 }
 
 namespace {

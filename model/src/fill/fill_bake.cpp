@@ -211,7 +211,7 @@ bool runsAlongALine(const std::vector<Stroke> &baked, const QLineF &line)
         const QPointF p = line.pointAt(double(k) / (kSamples + 1));
         bool near = false;
         for (const Stroke &s : baked) {
-            if (!s.data || s.data->points.empty() || qAlpha(s.data->color) != 0)
+            if (!s.data || s.data->points.empty() || s.data->color != kGapCloserColor)
                 continue;
             const auto &pts = s.data->points;
             const double reach = 0.5 * double(s.data->width) + 1.5;
@@ -310,7 +310,7 @@ std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<S
     std::vector<Stroke> out;
     for (std::size_t i = 0; i < shown.size() && i < closures.size(); ++i) {
         const QLineF &line = shown[i];
-        const int from = closures[i].fromStroke;
+        const int from = before->strokeOfInput(closures[i].fromStroke);
         const float width = from >= 0 && std::size_t(from) < group.strokes.size() &&
                                     group.strokes[std::size_t(from)].data
                                 ? group.strokes[std::size_t(from)].data->width

@@ -338,7 +338,7 @@ ObjectRegionsPtr compute(const StrokeGroup &group, double closeGap)
     std::vector<int> index;
     for (std::size_t s = 0; s < group.strokes.size(); ++s) {
         const StrokeDataPtr &data = group.strokes[s].data;
-        if (!data || data->points.empty())
+        if (!data || data->points.empty() || data->color == kHiddenLineColor)
             continue;
         inputs.push_back(strokeInput(data->points, data->width));
         ids.push_back(group.strokes[s].id);

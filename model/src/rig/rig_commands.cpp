@@ -124,7 +124,7 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
     // The baked strokes keep their ids: they are the same strokes, redrawn (a line that a
     // cut-out limb hid in the middle becomes two, the second with a new id).
     const auto newId = [doc] { return doc->allocateId(); };
-    m_newStrokes = bakedStrokes(*g, doc->settings().closeGap, newId);
+    m_newStrokes = bakedStrokes(*g, doc->settings().closeGap, newId, HiddenLines::KeepUnseen);
     const double closeGap = doc->settings().closeGap;
     // A gap the pose showed closed stays closed (by a line of no ink) where the baked lines
     // alone would leave it open.

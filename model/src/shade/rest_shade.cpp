@@ -24,24 +24,48 @@ std::list<Entry> g_shades;
 
 // The region the face inflates as (geometry/inflate/layers.h): the topmost single stroke's
 // loop around it (an arm over the body inflates as the arm, the body beside it as the whole
-// body), else the face itself. Only the strokes on the face's boundary are tried.
+// body), else the face itself. Only the strokes on the face's boundary are tried, each with
+// the strokes it continues in: Apply Pose cuts a line where a cut-out piece hid it into
+// parts that follow each other in the list, each beginning where the one before ends
+// (bakedStrokes), and together they close the loop the line closed.
 geometry::Region layerOf(const StrokeGroup &group, const ObjectRegions &regions, int face)
 {
     const geometry::Regions &all = regions.regions();
     const geometry::Face &f = all.faces[std::size_t(face)];
-    // The regions' inputs are the object's non-empty strokes, in order.
-    std::vector<const StrokeData *> inputs;
-    for (const Stroke &s : group.strokes)
-        if (s.data && !s.data->points.empty())
-            inputs.push_back(s.data.get());
+    const auto &strokes = group.strokes;
+    const auto continues = [&](std::size_t i) { // stroke i + 1 begins where stroke i ends
+        if (i + 1 >= strokes.size() || !strokes[i].data || !strokes[i + 1].data ||
+            strokes[i].data->points.empty() || strokes[i + 1].data->points.empty())
+            return false;
+        const StrokePoint &end = strokes[i].data->points.back();
+        const StrokePoint &begin = strokes[i + 1].data->points.front();
+        return end.x == begin.x && end.y == begin.y;
+    };
     std::vector<geometry::StrokeInput> boundary;
-    for (const int input : f.strokes)
-        if (input >= 0 && std::size_t(input) < inputs.size())
-            boundary.push_back(
-                strokeInput(inputs[std::size_t(input)]->points, inputs[std::size_t(input)]->width));
+    std::vector<int> boundaryInput; // per entry of `boundary`, its input on the face's boundary
+    std::vector<bool> taken(strokes.size(), false);
+    for (const int input : f.strokes) {
+        const int stroke = regions.strokeOfInput(input);
+        if (stroke < 0 || std::size_t(stroke) >= strokes.size() ||
+            !strokes[std::size_t(stroke)].data || taken[std::size_t(stroke)])
+            continue;
+        std::size_t first = std::size_t(stroke), last = std::size_t(stroke);
+        while (first > 0 && continues(first - 1))
+            --first;
+        while (continues(last))
+            ++last;
+        std::vector<StrokePoint> points;
+        for (std::size_t k = first; k <= last; ++k) {
+            taken[k] = true;
+            const auto &part = strokes[k].data->points;
+            points.insert(points.end(), part.begin() + (k > first ? 1 : 0), part.end());
+        }
+        boundary.push_back(strokeInput(points, strokes[std::size_t(stroke)].data->width));
+        boundaryInput.push_back(input);
+    }
     std::vector<geometry::Layer> layers = geometry::strokeLayers(boundary, all.closeGap);
     for (geometry::Layer &layer : layers)
-        layer.stroke = f.strokes[std::size_t(layer.stroke)];
+        layer.stroke = boundaryInput[std::size_t(layer.stroke)];
     return geometry::layerRegion(layers, all, face);
 }
 

@@ -28,6 +28,14 @@ public:
     const std::vector<Id> &faceStrokeIds(int face) const { return m_faceIds[std::size_t(face)]; }
     // The face's rest outline (outer ring and holes; non-zero rule, holes run the other way).
     const QPainterPath &restPath(int face) const { return m_restPaths[std::size_t(face)]; }
+    // The index into the object's strokes of input `input` of the regions (a face's strokes,
+    // a closure's), or -1: the regions leave out empty strokes and hidden lines.
+    int strokeOfInput(int input) const
+    {
+        return input >= 0 && std::size_t(input) < m_strokeIndex.size()
+                   ? m_strokeIndex[std::size_t(input)]
+                   : -1;
+    }
     // Innermost face holding rest point p, or -1.
     int faceAt(QPointF p) const;
 
@@ -69,6 +77,12 @@ private:
 };
 
 using ObjectRegionsPtr = std::shared_ptr<const ObjectRegions>;
+
+// The colour of a line's part that a cut-out piece hid when the pose was applied (bakedStrokes,
+// HiddenLines::KeepUnseen): no renderer draws it (alpha 0) and it bounds no region (the regions
+// leave it out, unlike a gap closer's line of no ink), but the line it belongs to stays whole,
+// so that the loop the line closed still inflates as one (rest_shade.h).
+constexpr QRgb kHiddenLineColor = 0x00ffffff;
 
 // The gap the document asks for, as geometry::RegionsOptions reads it (< 0 = automatic).
 geometry::RegionsOptions regionsOptions(double closeGap);

@@ -71,18 +71,28 @@ struct CutOutSeam {
 };
 std::optional<CutOutSeam> cutOutSeam(const StrokeGroup &group, std::size_t stroke, std::size_t i);
 
+// What bakedStrokes does with the parts of lines a piece above hides: drops them (the SVG
+// export draws what shows), or keeps them unseen (kHiddenLineColor: drawn by no renderer,
+// bounding no region), so that each line stays whole and the loop it closed still inflates as
+// one (Apply Pose).
+enum class HiddenLines { Drop, KeepUnseen };
+
 // The strokes Apply Pose makes of `group`'s pose: posedStrokes (a cut-out pose's lines go round
 // the joints), with what the pose hid cut away: the parts of a piece's lines that a piece
 // drawn over it covers with its fills (paintLayers: the body's outline under a limb turned over
 // it), cut where the cover begins, so the baked drawing shows what the pose showed. A stroke
-// that keeps several parts becomes several strokes in its place, the first with its id, the
-// others with ids from `newId`; a stroke hidden whole is left out. Any other pose: as
-// posedStrokes. `closeGap`: the document's Close gaps, as the pose was painted with.
+// cut so becomes several strokes in its place, in order along it (each part begins where the
+// one before ends), its first part that shows with its id, the others with ids from `newId`;
+// the hidden parts are left out or kept unseen as `hidden` says (a stroke hidden whole too).
+// Any other pose: as posedStrokes. `closeGap`: the document's Close gaps, as the pose was
+// painted with.
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group, double closeGap,
-                                 const std::function<Id()> &newId);
+                                 const std::function<Id()> &newId,
+                                 HiddenLines hidden = HiddenLines::Drop);
 // The same with the group's paintLayers already made (the SVG export paints them too).
 std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<PaintLayer> &layers,
-                                 const std::function<Id()> &newId);
+                                 const std::function<Id()> &newId,
+                                 HiddenLines hidden = HiddenLines::Drop);
 
 // Paints one item: its path, then its tones (the canvas raster draws its own way).
 void paintFill(QPainter &painter, const FillItem &fill);
