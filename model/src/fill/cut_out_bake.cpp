@@ -383,13 +383,10 @@ std::vector<Stroke> cutOutClosers(const StrokeGroup &group, const std::vector<St
     if (outlines.empty() || !(perimeter <= kLongestOutlines))
         return {};
     double widest = 1.0;
-    std::vector<double> widths;
     for (const Stroke &s : baked)
-        if (s.data && qAlpha(s.data->color) != 0 && !s.data->points.empty()) {
-            const double width = std::isfinite(s.data->width) ? double(s.data->width) : 1.0;
-            widest = std::max(widest, std::min(width, 64.0));
-            widths.push_back(width);
-        }
+        if (s.data && qAlpha(s.data->color) != 0 && !s.data->points.empty() &&
+            std::isfinite(s.data->width))
+            widest = std::max(widest, std::min(double(s.data->width), 64.0));
     // A closer ends on the middle of the inked line it meets (a hair past it), so that the
     // regions join them: they follow the lines' middles, and an end left short of one, or
     // run on beyond it, would be a loose end for gap closing to link elsewhere.
@@ -445,12 +442,7 @@ std::vector<Stroke> cutOutClosers(const StrokeGroup &group, const std::vector<St
             *out += (*out - p) * (kHairPast / best);
         return out;
     };
-    double penWidth = 1.0;
-    if (!widths.empty()) {
-        std::nth_element(widths.begin(), widths.begin() + std::ptrdiff_t(widths.size() / 2),
-                         widths.end());
-        penWidth = std::clamp(widths[widths.size() / 2], 0.5, 64.0);
-    }
+    const double penWidth = medianInkWidth(baked);
     std::vector<Stroke> out;
     const auto nearCloser = [&](QPointF p) {
         return std::any_of(closerSegments.begin(), closerSegments.end(), [&](const auto &seg) {
@@ -473,14 +465,7 @@ std::vector<Stroke> cutOutClosers(const StrokeGroup &group, const std::vector<St
         for (std::size_t k = 1; k < run.size(); ++k)
             closerSegments.emplace_back(QLineF(run[k - 1], run[k]), out.size());
         loose.emplace_back(looseFront, looseBack);
-        auto data = std::make_shared<StrokeData>();
-        data->color = kGapCloserColor;
-        // The pen's usual width: the automatic Close gaps distance follows the median width
-        // of all lines, and thin closers would lower it.
-        data->width = float(penWidth);
-        for (const QPointF &p : run)
-            data->points.push_back({float(p.x()), float(p.y()), 1.0f});
-        out.push_back({newId(), std::move(data)});
+        out.push_back({newId(), lineOfNoInk(run, penWidth)});
     };
     for (const auto &[outline, layer] : outlines) {
         const std::vector<QPointF> points = densified(outline);

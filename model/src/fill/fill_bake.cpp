@@ -250,6 +250,30 @@ double agreement(const BakedOwners &baking)
 
 } // namespace
 
+StrokeDataPtr lineOfNoInk(const std::vector<QPointF> &points, double width)
+{
+    auto data = std::make_shared<StrokeData>();
+    data->color = kGapCloserColor;
+    data->width = float(width);
+    for (const QPointF &q : points)
+        data->points.push_back({float(q.x()), float(q.y()), 1.0f});
+    return data;
+}
+
+double medianInkWidth(const std::vector<Stroke> &strokes)
+{
+    std::vector<double> widths;
+    for (const Stroke &s : strokes)
+        if (s.data && qAlpha(s.data->color) != 0 && !s.data->points.empty() &&
+            std::isfinite(s.data->width))
+            widths.push_back(double(s.data->width));
+    if (widths.empty())
+        return 1.0;
+    std::nth_element(widths.begin(), widths.begin() + std::ptrdiff_t(widths.size() / 2),
+                     widths.end());
+    return std::clamp(widths[widths.size() / 2], 0.5, 64.0);
+}
+
 std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                  double closeGap)
 {
@@ -328,12 +352,7 @@ std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<S
         if (kept || !(line.length() > 0.0) || !std::isfinite(line.length()) ||
             runsAlongALine(baked, line))
             continue;
-        auto data = std::make_shared<StrokeData>();
-        data->color = kGapCloserColor;
-        data->width = width;
-        data->points = {{float(line.x1()), float(line.y1()), 1.0f},
-                        {float(line.x2()), float(line.y2()), 1.0f}};
-        out.push_back({newId(), std::move(data)});
+        out.push_back({newId(), lineOfNoInk({line.p1(), line.p2()}, width)});
     }
     return out;
 }
@@ -449,18 +468,7 @@ std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector
     const double scale = p.faces.toPixels.m11(); // picture px per canvas px
     if (!(scale > 0.0))
         return {};
-    double penWidth = 1.0;
-    {
-        std::vector<double> widths;
-        for (const Stroke &s : baked)
-            if (s.data && qAlpha(s.data->color) != 0 && std::isfinite(s.data->width))
-                widths.push_back(double(s.data->width));
-        if (!widths.empty()) {
-            std::nth_element(widths.begin(), widths.begin() + std::ptrdiff_t(widths.size() / 2),
-                             widths.end());
-            penWidth = std::clamp(widths[widths.size() / 2], 0.5, 64.0);
-        }
-    }
+    const double penWidth = medianInkWidth(baked);
     const auto index = [w](int x, int y) {
         return std::size_t(y) * std::size_t(w) + std::size_t(x);
     };
@@ -689,12 +697,7 @@ std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector
                 if (const auto last = onto(points.back(), i, face))
                     points.push_back(*last);
         }
-        auto data = std::make_shared<StrokeData>();
-        data->color = kGapCloserColor;
-        data->width = float(penWidth);
-        for (const QPointF &q : points)
-            data->points.push_back({float(q.x()), float(q.y()), 1.0f});
-        out.push_back({newId(), std::move(data)});
+        out.push_back({newId(), lineOfNoInk(points, penWidth)});
     }
     // The gaps the regions close now stay closed as they are, by lines of no ink: gap closing
     // leaves a gap open whose middle lies in a face already closed, so a seam that closes a
@@ -704,12 +707,9 @@ std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector
         for (const geometry::GapClosure &closure : baking.regions->regions().closures) {
             if (!closure.from.allFinite() || !closure.to.allFinite() || closure.from == closure.to)
                 continue;
-            auto data = std::make_shared<StrokeData>();
-            data->color = kGapCloserColor;
-            data->width = float(penWidth);
-            data->points = {{float(closure.from.x()), float(closure.from.y()), 1.0f},
-                            {float(closure.to.x()), float(closure.to.y()), 1.0f}};
-            out.push_back({newId(), std::move(data)});
+            out.push_back({newId(), lineOfNoInk({QPointF(closure.from.x(), closure.from.y()),
+                                                 QPointF(closure.to.x(), closure.to.y())},
+                                                penWidth)});
         }
     return out;
 }

@@ -63,6 +63,13 @@ double shownFillAgreement(const StrokeGroup &group, const std::vector<Stroke> &b
 // stroke, and no renderer draws it (render.h draws no stroke of alpha 0).
 constexpr QRgb kGapCloserColor = 0x00000000;
 
+// A line of no ink (kGapCloserColor) through `points` (canvas px), `width` wide.
+StrokeDataPtr lineOfNoInk(const std::vector<QPointF> &points, double width);
+// The pen's usual width: the median width of the inked lines of `strokes` (0.5–64 px), 1
+// when there are none. The lines of no ink take it: the automatic Close gaps distance follows
+// the median width of all lines, and thinner ones would lower it.
+double medianInkWidth(const std::vector<Stroke> &strokes);
+
 // The gaps the pose shows closed that the baked drawing (`baked`, as Apply Pose makes it)
 // would leave open: a pose can stretch a gap past the Close gaps distance, or change the
 // drawing's size that the automatic distance follows, and the region behind it would open
