@@ -179,9 +179,9 @@ std::vector<Stroke> bakedStrokes(const StrokeGroup &group, const std::vector<Pai
             continue;
         }
         // The runs join the layered segments, arcs included: one run that shows whole is
-        // the line posedStrokes makes. A hidden run kept is a line of no ink, so that the
-        // line stays whole: its region stays closed, and it still closes a loop by itself
-        // (rest_shade.h inflates the body as the whole body).
+        // the line posedStrokes makes. A hidden run kept is a hidden line (kHiddenLineColor:
+        // no renderer draws it, no region ends on it), so that the line stays whole and still
+        // closes its loop by itself (rest_shade.h inflates the body as the whole body).
         std::vector<Run> runs = runsOf(layeredSegments(group, i, points), covers);
         std::erase_if(runs, [hidden](const Run &run) {
             return !run.shows &&

@@ -122,7 +122,8 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
     m_oldRig = g->rig;
     m_oldDeformed = g->deformed;
     // The baked strokes keep their ids: they are the same strokes, redrawn (a line that a
-    // cut-out limb hid in the middle becomes two, the second with a new id).
+    // cut-out limb hid in the middle becomes its parts, shown, hidden and shown again, the
+    // first part shown with its id; the hidden parts stay as hidden lines).
     const auto newId = [doc] { return doc->allocateId(); };
     m_newStrokes = bakedStrokes(*g, doc->settings().closeGap, newId, HiddenLines::KeepUnseen);
     const double closeGap = doc->settings().closeGap;
