@@ -6,6 +6,7 @@
 #include <finbook/model/deform_setup.h>
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/finbook_file.h>
+#include <finbook/model/render.h>
 #include <finbook/model/skeleton/skeleton_carry.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/ui/canvas/canvas_widget.h>
@@ -191,6 +192,7 @@ private slots:
     void bodyClosedForTheFillIsRigged();
     void partsJoinWhenBuiltAndShiftDragReattaches();
     void movingStrokesAwayRebuildsTheShownSkeleton();
+    void mergingAPosedObjectAppliesItsPoseFirst();
 };
 
 void TestBoneTool::clickBuildsThenDragTurnsABone()
@@ -925,6 +927,59 @@ void TestBoneTool::movingStrokesAwayRebuildsTheShownSkeleton()
     QVERIFY(fx.skeleton().isValid());
     QVERIFY2(lowest() < 300, qPrintable(QString::number(lowest())));
     fx.doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(fx.doc), start);
+}
+
+// Issue 45: Merge Objects on a posed object applies its pose first, in the same step, as
+// every edit of a posed object's strokes does: the merged drawing shows what the pose showed
+// (merged as posed lines, a cut-out pose's hidden parts and sockets were lost).
+void TestBoneTool::mergingAPosedObjectAppliesItsPoseFirst()
+{
+    Fixture fx;
+    QUndoStack *stack = fx.doc.undoStack();
+    QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
+    QVERIFY(fx.waitReady());
+    const int bone = fx.tipBone();
+    QVERIFY(bone >= 0);
+    const SkeletonRig rest = fx.skeleton();
+    const QPointF pivot = rest.joints[std::size_t(rest.parent[std::size_t(bone)])];
+    const QPointF tip = rest.joints[std::size_t(bone)];
+    const QPointF grab = pivot + (tip - pivot) * (2.0 / 3.0);
+    const QPointF v = grab - pivot;
+    const double theta = 0.6;
+    fx.drag(grab, pivot + QPointF(v.x() * std::cos(theta) - v.y() * std::sin(theta),
+                                  v.x() * std::sin(theta) + v.y() * std::cos(theta)));
+    QVERIFY(fx.object().isDeformed());
+    StrokeGroup below;
+    below.id = fx.doc.allocateId();
+    below.name = QStringLiteral("below");
+    below.strokes.push_back({fx.doc.allocateId(), line({100, 100}, {160, 100})});
+    fx.doc.insertGroup(fx.state.currentFrameId(), 0, below);
+    const auto picture = [&] {
+        return renderFrame(fx.doc.frameAt(0), fx.doc.settings(), QSize(800, 600));
+    };
+    const QImage shown = picture();
+    const QByteArray start = serializeFinbook(fx.doc);
+    const int count = stack->count();
+    fx.state.setCurrentGroupId(fx.group);
+    ObjectActions objects(&fx.state);
+    objects.mergeObjects();
+    QCOMPARE(stack->count(), count + 1); // the pose applied and the merge: one step
+    QVERIFY2(stack->text(count).contains(QStringLiteral("pose applied")),
+             qPrintable(stack->text(count)));
+    QCOMPARE(fx.doc.frameAt(0).groups.size(), std::size_t(1));
+    QVERIFY(!fx.doc.group(below.id)->isDeformed());
+    const QImage merged = picture();
+    long long inked = 0, differ = 0;
+    for (int y = 0; y < shown.height(); ++y)
+        for (int x = 0; x < shown.width(); ++x) {
+            const QRgb a = shown.pixel(x, y), b = merged.pixel(x, y);
+            inked += qGray(a) < 128;
+            differ += std::abs(qGray(a) - qGray(b)) > 64;
+        }
+    QVERIFY(inked > 1000);
+    QVERIFY2(differ <= inked / 200, qPrintable(QStringLiteral("%1 of %2").arg(differ).arg(inked)));
+    stack->undo();
     QCOMPARE(serializeFinbook(fx.doc), start);
 }
 

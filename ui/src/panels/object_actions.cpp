@@ -167,8 +167,11 @@ void ObjectActions::mergeObjects()
               [&](model::Id a, model::Id b) { return zIndex(*frame, a) < zIndex(*frame, b); });
     const model::Id target = ids.front();
     model::Document *doc = m_state->document();
-    // Bottom up, so each merged object's strokes land above the ones merged before it.
-    doc->undoStack()->beginMacro(tr("Merge Objects"));
+    // A posed object's pose becomes its drawing first, in the same step, as for every other
+    // edit of its strokes (Apply Pose keeps what the pose showed: its colours, cut-out pieces
+    // and shading), so the merged drawing shows what the objects showed. Bottom up, so each
+    // merged object's strokes land above the ones merged before it.
+    StrokeEditing::beginRestEdit(doc, tr("Merge Objects"), ids);
     for (auto it = ids.begin() + 1; it != ids.end(); ++it)
         doc->undoStack()->push(new model::MergeObjectsCommand(doc, *it, target));
     doc->undoStack()->endMacro();
