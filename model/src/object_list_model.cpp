@@ -145,6 +145,16 @@ int ObjectListModel::rowCount(const QModelIndex &parent) const
     return parent.isValid() ? 0 : int(m_ids.size());
 }
 
+namespace {
+// The strokes an animator drew and sees: lines of no ink (gap and cut closers, seams, the parts
+// of lines a cut-out piece hid, which Apply Pose keeps) are left out of the count.
+int drawnStrokes(const StrokeGroup &g)
+{
+    return int(std::count_if(g.strokes.begin(), g.strokes.end(),
+                             [](const Stroke &s) { return s.data && qAlpha(s.data->color) != 0; }));
+}
+} // namespace
+
 QVariant ObjectListModel::data(const QModelIndex &index, int role) const
 {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
@@ -158,7 +168,7 @@ QVariant ObjectListModel::data(const QModelIndex &index, int role) const
         return g->name;
     case Qt::ToolTipRole:
         return QCoreApplication::translate("ObjectListModel", "%1: %n stroke(s)", nullptr,
-                                           int(g->strokes.size()))
+                                           drawnStrokes(*g))
             .arg(g->name);
     case Qt::CheckStateRole:
         return g->visible ? Qt::Checked : Qt::Unchecked;
@@ -169,7 +179,7 @@ QVariant ObjectListModel::data(const QModelIndex &index, int role) const
     case LockedRole:
         return g->locked;
     case StrokeCountRole:
-        return int(g->strokes.size());
+        return drawnStrokes(*g);
     case PosedRole:
         return g->isDeformed();
     default:

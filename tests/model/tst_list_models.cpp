@@ -2,6 +2,7 @@
 // correct row signals (QAbstractItemModelTester watches every change), and every edit made
 // through them is one undoable command.
 #include <finbook/model/commands.h>
+#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/frame_list_model.h>
 #include <finbook/model/object_commands.h>
 #include <finbook/model/object_list_model.h>
@@ -195,6 +196,16 @@ void TestListModels::objectRowsAreTopFirst()
     QCOMPARE(model.groupId(0), add->groupId());
     QCOMPARE(model.index(1).data(ObjectListModel::StrokeCountRole).toInt(), 1);
     QCOMPARE(model.zIndexOfRow(0), 1);
+    // A line of no ink (a gap closer Apply Pose added) is not counted: the animator drew one
+    // stroke and sees one.
+    const Id bottom = doc.frameAt(0).groups.front().id;
+    auto closer = std::make_shared<StrokeData>();
+    closer->color = kGapCloserColor;
+    closer->points = {{0, 0, 1}, {10, 0, 1}};
+    doc.undoStack()->push(new AddStrokeCommand(&doc, bottom, closer));
+    QCOMPARE(doc.group(bottom)->strokes.size(), std::size_t(2));
+    QCOMPARE(model.index(1).data(ObjectListModel::StrokeCountRole).toInt(), 1);
+    QVERIFY(model.index(1).data(Qt::ToolTipRole).toString().contains(QStringLiteral("1 stroke")));
 }
 
 void TestListModels::objectRowsFollowEdits()

@@ -23,7 +23,7 @@ public:
         GroupIdRole = Qt::UserRole + 1, // Id (quint64)
         VisibleRole,                    // bool, editable
         LockedRole,                     // bool, editable
-        StrokeCountRole,                // int
+        StrokeCountRole,                // int: the strokes drawn (lines of no ink left out)
         PosedRole,                      // bool: has pins and a solved pose
     };
     Q_ENUM(Role)
