@@ -450,24 +450,21 @@ std::vector<char> inkMask(const std::vector<Stroke> &baked, const IndexPicture &
 
 } // namespace
 
-std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                                     double closeGap, const std::function<Id()> &newId,
-                                     double *bakedAgreement)
+ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                  double closeGap, const std::function<Id()> &newId)
 {
-    if (bakedAgreement)
-        *bakedAgreement = 1.0;
+    ShownColourSeams result;
     if (group.fills.empty() || !group.isDeformed())
-        return {};
+        return result;
     const BakedOwners baking = bakedOwners(group, baked, closeGap);
-    if (bakedAgreement)
-        *bakedAgreement = agreement(baking);
+    result.bakedAgreement = agreement(baking);
     const FacesAndFills &p = baking.pictures;
     const int w = p.width, h = p.height;
     if (w <= 0 || h <= 0)
-        return {};
+        return result;
     const double scale = p.faces.toPixels.m11(); // picture px per canvas px
     if (!(scale > 0.0))
-        return {};
+        return result;
     const double penWidth = medianInkWidth(baked);
     const auto index = [w](int x, int y) {
         return std::size_t(y) * std::size_t(w) + std::size_t(x);
@@ -524,7 +521,7 @@ std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector
             }
         }
     if (!anyKept)
-        return {};
+        return result;
     // The pixel edges between a kept part and the rest of its face showing another fill, as
     // bits per pixel corner (corner (x, y) is the top left of pixel (x, y)).
     const int cw = w + 1, ch = h + 1;
@@ -565,7 +562,7 @@ std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector
             }
         }
     if (!any)
-        return {};
+        return result;
     // The edges chained into lines: through a corner of two edges, and straight on through a
     // corner where three or four meet (the line that stops there ends on the one that goes
     // on).
@@ -628,7 +625,7 @@ std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector
         total += chain.points.size();
     }
     if (total > kSeamMostPoints)
-        return {};
+        return result;
     // Each end of a line goes onto the nearest edge of its face or the nearest other line
     // (a hair past it), so that the regions join it: the pixel edges stop short of the face's
     // edge by up to a pixel of the pictures.
@@ -676,7 +673,7 @@ std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector
             *out += (*out - end) * (kSeamHairPast / best);
         return out;
     };
-    std::vector<Stroke> out;
+    std::vector<Stroke> &out = result.seams;
     for (std::size_t i = 0; i < chains.size(); ++i) {
         std::vector<QPointF> points = chains[i].points;
         if (points.size() < 2)
@@ -699,19 +696,16 @@ std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector
         }
         out.push_back({newId(), lineOfNoInk(points, penWidth)});
     }
-    // The gaps the regions close now stay closed as they are, by lines of no ink: gap closing
-    // leaves a gap open whose middle lies in a face already closed, so a seam that closes a
-    // face (or ends near a free end) can open a gap anywhere in it, and its region would lose
-    // its colour.
     if (!out.empty())
         for (const geometry::GapClosure &closure : baking.regions->regions().closures) {
             if (!closure.from.allFinite() || !closure.to.allFinite() || closure.from == closure.to)
                 continue;
-            out.push_back({newId(), lineOfNoInk({QPointF(closure.from.x(), closure.from.y()),
-                                                 QPointF(closure.to.x(), closure.to.y())},
-                                                penWidth)});
+            result.keptClosures.push_back(
+                {newId(), lineOfNoInk({QPointF(closure.from.x(), closure.from.y()),
+                                       QPointF(closure.to.x(), closure.to.y())},
+                                      penWidth)});
         }
-    return out;
+    return result;
 }
 
 } // namespace finbook::model

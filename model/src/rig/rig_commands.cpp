@@ -153,15 +153,19 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
                 : std::move(without);
     }
     // Where the baked faces still join colours the pose showed apart, lines of no ink along
-    // the edge between them as painted, kept when they keep more of what was shown.
-    double bakedAgreement = 1.0;
-    if (std::vector<Stroke> seams =
-            shownColourSeams(*g, m_newStrokes, closeGap, newId, &bakedAgreement);
-        !seams.empty()) {
+    // the edge between them as painted, with the gaps closed now kept closed or not, whichever
+    // keeps more of what was shown (and only if that is more than without them).
+    if (const ShownColourSeams seams = shownColourSeams(*g, m_newStrokes, closeGap, newId);
+        !seams.seams.empty()) {
         std::vector<Stroke> withSeams = m_newStrokes;
-        withSeams.insert(withSeams.end(), seams.begin(), seams.end());
-        if (shownFillAgreement(*g, withSeams, closeGap) > bakedAgreement)
-            m_newStrokes = std::move(withSeams);
+        withSeams.insert(withSeams.end(), seams.seams.begin(), seams.seams.end());
+        std::vector<Stroke> withKept = withSeams;
+        withKept.insert(withKept.end(), seams.keptClosures.begin(), seams.keptClosures.end());
+        const double seamsAlone = shownFillAgreement(*g, withSeams, closeGap);
+        const double seamsKept =
+            seams.keptClosures.empty() ? 0.0 : shownFillAgreement(*g, withKept, closeGap);
+        if (std::max(seamsAlone, seamsKept) > seams.bakedAgreement)
+            m_newStrokes = seamsKept > seamsAlone ? std::move(withKept) : std::move(withSeams);
     }
     m_oldFills = g->fills;
     m_newFills = fillsAfterBake(*g, m_newStrokes, closeGap);

@@ -89,14 +89,19 @@ std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<S
 // a face (or of no face) that showed another fill, larger than a speck and wider than the pen,
 // is outlined where it borders the rest of its face (outside every face: where no inked line
 // covers that border). Each line ends a hair past the face's edge, the line's middle or the
-// seam it meets. The gaps the baked regions close are added as lines of no ink too, so that
-// gap closing cannot close them otherwise once the seams are in. Apply Pose adds them last,
-// when they keep more of the colours shown. Empty when no part differs (or the parts' outlines
-// would exceed 4,000 points). `bakedAgreement`, if given, receives shownFillAgreement of
-// `baked` (computed on the way).
-std::vector<Stroke> shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                                     double closeGap, const std::function<Id()> &newId,
-                                     double *bakedAgreement = nullptr);
+// seam it meets. `seams` is empty when no part differs (or the parts' outlines would exceed
+// 4,000 points).
+struct ShownColourSeams {
+    std::vector<Stroke> seams;
+    // The gaps the baked regions close, as lines of no ink: gap closing leaves a gap open
+    // whose middle lies in a face already closed, so a seam that closes a face could open a
+    // region elsewhere; with these added too, it cannot. (They also keep gaps from closing
+    // otherwise where that was right, so Apply Pose tries the seams with and without them.)
+    std::vector<Stroke> keptClosures;
+    double bakedAgreement = 1.0; // shownFillAgreement of `baked`, computed on the way
+};
+ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                  double closeGap, const std::function<Id()> &newId);
 
 // A cut-out pose's pieces end their colour where they are cut, where no line is: a limb
 // turned over the body shows its fill up to the cut, and the baked lines alone would join the
