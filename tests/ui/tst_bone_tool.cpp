@@ -145,6 +145,28 @@ struct Fixture {
         return -1;
     }
 
+    // Grabs the tip bone (tipBone) at two thirds of its length and swings it by `theta` rad
+    // about its parent joint. Returns the bone, with its rest pivot and tip.
+    struct Swing {
+        int bone = -1;
+        QPointF pivot, tip;
+    };
+    Swing swingTipBone(double theta)
+    {
+        Swing s;
+        s.bone = tipBone();
+        if (s.bone < 0)
+            return s;
+        const SkeletonRig &rest = skeleton();
+        s.pivot = rest.joints[std::size_t(rest.parent[std::size_t(s.bone)])];
+        s.tip = rest.joints[std::size_t(s.bone)];
+        const QPointF grab = s.pivot + (s.tip - s.pivot) * (2.0 / 3.0);
+        const QPointF v = grab - s.pivot;
+        drag(grab, s.pivot + QPointF(v.x() * std::cos(theta) - v.y() * std::sin(theta),
+                                     v.x() * std::sin(theta) + v.y() * std::cos(theta)));
+        return s;
+    }
+
     // The longest bone: easy to hit away from its joints.
     int longestBone() const
     {
@@ -205,18 +227,10 @@ void TestBoneTool::clickBuildsThenDragTurnsABone()
     QVERIFY(fx.waitReady());
     const QByteArray built = serializeFinbook(fx.doc);
 
-    const int bone = fx.tipBone();
-    QVERIFY(bone >= 0);
-    const SkeletonRig rest = fx.skeleton();
-    const QPointF pivot = rest.joints[std::size_t(rest.parent[std::size_t(bone)])];
-    const QPointF tip = rest.joints[std::size_t(bone)];
-    // Grab the bone at two thirds of its length and swing it by 0.4 rad.
-    const QPointF grab = pivot + (tip - pivot) * (2.0 / 3.0);
+    // Grab the tip bone at two thirds of its length and swing it by 0.4 rad.
     const double theta = 0.4;
-    const QPointF v = grab - pivot;
-    const QPointF to = pivot + QPointF(v.x() * std::cos(theta) - v.y() * std::sin(theta),
-                                       v.x() * std::sin(theta) + v.y() * std::cos(theta));
-    fx.drag(grab, to);
+    const auto [bone, pivot, tip] = fx.swingTipBone(theta);
+    QVERIFY(bone >= 0);
     QCOMPARE(stack->count(), 2); // the whole drag is one step
     const SkeletonRig &posed = fx.skeleton();
     QVERIFY(std::abs(posed.angles[std::size_t(bone)] - theta) < 0.03);
@@ -939,16 +953,7 @@ void TestBoneTool::mergingAPosedObjectAppliesItsPoseFirst()
     QUndoStack *stack = fx.doc.undoStack();
     QTest::mouseClick(&fx.canvas, Qt::LeftButton, {}, fx.at({300, 215}));
     QVERIFY(fx.waitReady());
-    const int bone = fx.tipBone();
-    QVERIFY(bone >= 0);
-    const SkeletonRig rest = fx.skeleton();
-    const QPointF pivot = rest.joints[std::size_t(rest.parent[std::size_t(bone)])];
-    const QPointF tip = rest.joints[std::size_t(bone)];
-    const QPointF grab = pivot + (tip - pivot) * (2.0 / 3.0);
-    const QPointF v = grab - pivot;
-    const double theta = 0.6;
-    fx.drag(grab, pivot + QPointF(v.x() * std::cos(theta) - v.y() * std::sin(theta),
-                                  v.x() * std::sin(theta) + v.y() * std::cos(theta)));
+    QVERIFY(fx.swingTipBone(0.6).bone >= 0);
     QVERIFY(fx.object().isDeformed());
     StrokeGroup below;
     below.id = fx.doc.allocateId();
