@@ -417,9 +417,18 @@ std::vector<QPointF> straightened(const std::vector<QPointF> &points, double tol
     return out;
 }
 
-// Per pixel of a picture (`like`'s transform, w × h), whether an inked line of `baked` covers
-// it, drawn at its pen width with round ends.
-std::vector<char> inkMask(const std::vector<Stroke> &baked, const IndexPicture &like, int w, int h)
+// Whether `s` is a line that bounds regions: inked, or with `closersToo` a line of no ink that
+// closes a gap (hidden lines bound nothing).
+bool boundingLine(const Stroke &s, bool closersToo)
+{
+    return s.data && !s.data->points.empty() &&
+           (qAlpha(s.data->color) != 0 || (closersToo && s.data->color == kGapCloserColor));
+}
+
+// Per pixel of a picture (`like`'s transform, w × h), whether a bounding line of `baked`
+// (boundingLine) covers it, drawn at its pen width with round ends.
+std::vector<char> inkMask(const std::vector<Stroke> &baked, bool closersToo,
+                          const IndexPicture &like, int w, int h)
 {
     QImage image(w, h, QImage::Format_Grayscale8);
     std::vector<char> out(std::size_t(w) * std::size_t(h), 0);
@@ -430,8 +439,7 @@ std::vector<char> inkMask(const std::vector<Stroke> &baked, const IndexPicture &
         QPainter painter(&image);
         painter.setTransform(like.toPixels);
         for (const Stroke &s : baked) {
-            if (!s.data || qAlpha(s.data->color) == 0 || s.data->points.empty() ||
-                !std::isfinite(s.data->width))
+            if (!boundingLine(s, closersToo) || !std::isfinite(s.data->width))
                 continue;
             QPainterPath path(QPointF(s.data->points.front().x, s.data->points.front().y));
             for (const StrokePoint &q : s.data->points)
@@ -448,36 +456,27 @@ std::vector<char> inkMask(const std::vector<Stroke> &baked, const IndexPicture &
     return out;
 }
 
-} // namespace
+// The parts of the baked faces that showed a fill other than their face's, and the parts
+// outside every face that showed a fill (a region whose gap the pose showed closed and the
+// baked lines leave open), 4-connected, one face and one fill each, marked per pixel when
+// large and thick enough for a seam.
+struct SeamParts {
+    std::vector<char> kept;
+    bool any = false, outside = false;
+};
 
-ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
-                                  double closeGap, const std::function<Id()> &newId)
+SeamParts seamParts(const BakedOwners &baking, double scale, double penWidth)
 {
-    ShownColourSeams result;
-    if (group.fills.empty() || !group.isDeformed())
-        return result;
-    const BakedOwners baking = bakedOwners(group, baked, closeGap);
-    result.bakedAgreement = agreement(baking);
     const FacesAndFills &p = baking.pictures;
     const int w = p.width, h = p.height;
-    if (w <= 0 || h <= 0)
-        return result;
-    const double scale = p.faces.toPixels.m11(); // picture px per canvas px
-    if (!(scale > 0.0))
-        return result;
-    const double penWidth = medianInkWidth(baked);
     const auto index = [w](int x, int y) {
         return std::size_t(y) * std::size_t(w) + std::size_t(x);
     };
     const auto owner = [&](int face) { return face >= 0 ? baking.owner[std::size_t(face)] : -1; };
-    // The parts of faces that showed a fill other than their face's, and the parts outside
-    // every face that showed a fill (a region whose gap the pose showed closed and the baked
-    // lines leave open), 4-connected, one face and one fill each, kept when large and thick
-    // enough.
     const double smallest = kSeamSmallestArea * scale * scale;
-    std::vector<char> kept(std::size_t(w) * std::size_t(h), 0);
-    bool anyKept = false, outsideKept = false;
-    std::vector<char> seen(kept.size(), 0);
+    SeamParts out;
+    out.kept.assign(std::size_t(w) * std::size_t(h), 0);
+    std::vector<char> seen(out.kept.size(), 0);
     std::vector<std::pair<int, int>> part, stack;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -515,15 +514,35 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
                                      area >= kSeamWiderThanPen * 2.0 * penWidth * penWidth;
             if (thickEnough && double(part.size()) >= smallest) {
                 for (const auto &[px, py] : part)
-                    kept[index(px, py)] = 1;
-                anyKept = true;
-                outsideKept = outsideKept || f < 0;
+                    out.kept[index(px, py)] = 1;
+                out.any = true;
+                out.outside = out.outside || f < 0;
             }
         }
-    if (!anyKept)
-        return result;
-    // The pixel edges between a kept part and the rest of its face showing another fill, as
-    // bits per pixel corner (corner (x, y) is the top left of pixel (x, y)).
+    return out;
+}
+
+// A seam before its ends are placed: picture px, then canvas px.
+struct SeamChain {
+    std::vector<QPointF> points;
+    int face = -1; // the face it runs through (−1: outside every face)
+    bool ring = false;
+};
+
+// The pixel edges between a kept part and the rest of its face showing another fill (those an
+// inked line covers left out where `inked` marks them), chained into straightened lines in
+// canvas px: through a corner of two edges, and straight on through a corner where three or
+// four meet (the line that stops there ends on the one that goes on). Empty when there are
+// more than kSeamMostPoints points (colours scattered over a drawing no pose made: the seams
+// would cost more than they could keep).
+std::vector<SeamChain> seamChains(const FacesAndFills &p, const std::vector<char> &kept,
+                                  const std::vector<char> &inked)
+{
+    const int w = p.width, h = p.height;
+    const auto index = [w](int x, int y) {
+        return std::size_t(y) * std::size_t(w) + std::size_t(x);
+    };
+    // The edges as bits per pixel corner (corner (x, y) is the top left of pixel (x, y)).
     const int cw = w + 1, ch = h + 1;
     const auto corner = [cw](int x, int y) {
         return std::size_t(y) * std::size_t(cw) + std::size_t(x);
@@ -534,20 +553,11 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
         edges[corner(x0, y0)] |= std::uint8_t(1u << dir);
         edges[corner(x1, y1)] |= std::uint8_t(1u << ((dir + 2) % 4));
     };
-    // The face of the pixels either side of the edge from corner (x, y) in direction `dir`.
-    const auto faceBeside = [&](int x, int y, int dir) {
-        const int px = dir == 2 ? x - 1 : x, py = dir == 3 ? y - 1 : y;
-        return p.face(std::clamp(px, 0, w - 1), std::clamp(py, 0, h - 1));
-    };
-    // Outside every face, a part's edge along a line needs no seam (the line bounds it once
-    // the seams close its gaps): the pixels the inked lines cover, drawn at their width.
-    const std::vector<char> inked =
-        outsideKept ? inkMask(baked, p.faces, w, h) : std::vector<char>(kept.size(), 0);
     const auto seamBetween = [&](int x0, int y0, int x1, int y1) {
         const int f = p.face(x0, y0);
         return p.face(x1, y1) == f && p.fill(x1, y1) != p.fill(x0, y0) &&
-               (kept[index(x0, y0)] || kept[index(x1, y1)]) &&
-               (f >= 0 || (!inked[index(x0, y0)] && !inked[index(x1, y1)]));
+               (kept[index(x0, y0)] || kept[index(x1, y1)]) && !inked[index(x0, y0)] &&
+               !inked[index(x1, y1)];
     };
     bool any = false;
     for (int y = 0; y < h; ++y)
@@ -562,24 +572,18 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
             }
         }
     if (!any)
-        return result;
-    // The edges chained into lines: through a corner of two edges, and straight on through a
-    // corner where three or four meet (the line that stops there ends on the one that goes
-    // on).
-    const std::vector<std::uint8_t> degreeOf = [&] {
-        std::vector<std::uint8_t> d(edges.size());
-        for (std::size_t i = 0; i < edges.size(); ++i)
-            d[i] = std::uint8_t(std::popcount(unsigned(edges[i])));
-        return d;
-    }();
-    struct Chain {
-        std::vector<QPointF> points; // picture px, then canvas px
-        int face = -1;
-        bool ring = false;
+        return {};
+    // The face of the pixels either side of the edge from corner (x, y) in direction `dir`.
+    const auto faceBeside = [&](int x, int y, int dir) {
+        const int px = dir == 2 ? x - 1 : x, py = dir == 3 ? y - 1 : y;
+        return p.face(std::clamp(px, 0, w - 1), std::clamp(py, 0, h - 1));
     };
-    std::vector<Chain> chains;
+    std::vector<std::uint8_t> degreeOf(edges.size());
+    for (std::size_t i = 0; i < edges.size(); ++i)
+        degreeOf[i] = std::uint8_t(std::popcount(unsigned(edges[i])));
+    std::vector<SeamChain> chains;
     const auto walk = [&](int x, int y, int dir) {
-        Chain chain;
+        SeamChain chain;
         chain.face = faceBeside(x, y, dir);
         chain.points.emplace_back(x, y);
         const int startX = x, startY = y;
@@ -592,13 +596,10 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
             const std::uint8_t left = edges[corner(x, y)];
             if (left == 0 || (x == startX && y == startY))
                 break;
-            if (degreeOf[corner(x, y)] == 2) {
+            if (degreeOf[corner(x, y)] == 2)
                 dir = std::countr_zero(unsigned(left));
-            } else if (left & (1u << dir)) {
-                // straight on
-            } else {
+            else if (!(left & (1u << dir))) // straight on, or stop
                 break;
-            }
         }
         chain.ring = chain.points.size() > 2 && chain.points.front() == chain.points.back();
         chains.push_back(std::move(chain));
@@ -614,41 +615,50 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
                 while (start && edges[c] != 0)
                     walk(x, y, std::countr_zero(unsigned(edges[c])));
             }
-    // Straightened, in canvas px. Beyond kSeamMostPoints (colours scattered over a drawing
-    // no pose made) the seams would cost more than they could keep, and none are made.
     const QTransform toCanvas = p.faces.toPixels.inverted();
     std::size_t total = 0;
-    for (Chain &chain : chains) {
+    for (SeamChain &chain : chains) {
         chain.points = straightened(chain.points, kSeamStraighten);
         for (QPointF &q : chain.points)
             q = toCanvas.map(q);
         total += chain.points.size();
     }
     if (total > kSeamMostPoints)
-        return result;
-    // Each end of a line goes onto the nearest edge of its face or the nearest other line
-    // (a hair past it), so that the regions join it: the pixel edges stop short of the face's
-    // edge by up to a pixel of the pictures.
+        return {};
+    return chains;
+}
+
+// The segments of the bounding lines of `baked` (boundingLine; their middles).
+std::vector<QLineF> inkSegments(const std::vector<Stroke> &baked, bool closersToo)
+{
+    std::vector<QLineF> out;
+    for (const Stroke &s : baked)
+        if (boundingLine(s, closersToo))
+            for (std::size_t k = 0; k + 1 < s.data->points.size(); ++k)
+                out.emplace_back(QPointF(s.data->points[k].x, s.data->points[k].y),
+                                 QPointF(s.data->points[k + 1].x, s.data->points[k + 1].y));
+    return out;
+}
+
+// The chains as lines of no ink, each end put onto the nearest edge of its face, the nearest
+// inked line (outside every face, or everywhere with `endOnInk`) or the nearest other
+// chain, a hair past it, so that the regions join it: the pixel edges stop short of what they
+// meet by up to a pixel of the pictures.
+std::vector<Stroke> placedSeams(const std::vector<SeamChain> &chains, const BakedOwners &baking,
+                                const std::vector<QLineF> &inkLines, bool endOnInk, double scale,
+                                double penWidth, const std::function<Id()> &newId)
+{
+    const ObjectRegions &regions = *baking.regions;
     const double reach = 2.0 / scale + 0.5 * penWidth + 1.0;
-    std::vector<std::vector<QLineF>> faceEdges(std::size_t(baking.regions->faceCount()));
+    std::vector<std::vector<QLineF>> faceEdges(std::size_t(regions.faceCount()));
     const auto edgesOf = [&](int face) -> const std::vector<QLineF> & {
         std::vector<QLineF> &out = faceEdges[std::size_t(face)];
         if (out.empty())
-            for (const QPolygonF &ring : baking.regions->restPath(face).toSubpathPolygons())
+            for (const QPolygonF &ring : regions.restPath(face).toSubpathPolygons())
                 for (qsizetype k = 0; k + 1 < ring.size(); ++k)
                     out.emplace_back(ring[k], ring[k + 1]);
         return out;
     };
-    const std::vector<Chain> straight = chains;
-    // The inked lines' middles, which a seam outside every face ends on.
-    std::vector<QLineF> inkLines;
-    if (std::any_of(chains.begin(), chains.end(), [](const Chain &c) { return c.face < 0; }))
-        for (const Stroke &s : baked)
-            if (s.data && qAlpha(s.data->color) != 0)
-                for (std::size_t k = 0; k + 1 < s.data->points.size(); ++k)
-                    inkLines.emplace_back(
-                        QPointF(s.data->points[k].x, s.data->points[k].y),
-                        QPointF(s.data->points[k + 1].x, s.data->points[k + 1].y));
     const auto onto = [&](QPointF end, std::size_t self, int face) -> std::optional<QPointF> {
         double best = reach;
         std::optional<QPointF> out;
@@ -659,21 +669,21 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
                 out = line.pointAt(t);
             }
         };
-        if (face >= 0 && face < baking.regions->faceCount())
+        if (face >= 0 && face < regions.faceCount())
             for (const QLineF &line : edgesOf(face))
                 consider(line);
-        else
+        if (face < 0 || endOnInk)
             for (const QLineF &line : inkLines)
                 consider(line);
-        for (std::size_t i = 0; i < straight.size(); ++i)
+        for (std::size_t i = 0; i < chains.size(); ++i)
             if (i != self)
-                for (std::size_t k = 0; k + 1 < straight[i].points.size(); ++k)
-                    consider(QLineF(straight[i].points[k], straight[i].points[k + 1]));
+                for (std::size_t k = 0; k + 1 < chains[i].points.size(); ++k)
+                    consider(QLineF(chains[i].points[k], chains[i].points[k + 1]));
         if (out && best > 0.0)
             *out += (*out - end) * (kSeamHairPast / best);
         return out;
     };
-    std::vector<Stroke> &out = result.seams;
+    std::vector<Stroke> out;
     for (std::size_t i = 0; i < chains.size(); ++i) {
         std::vector<QPointF> points = chains[i].points;
         if (points.size() < 2)
@@ -684,8 +694,8 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
             // its middle.
             const int face = chains[i].face;
             const auto inside = [&](QPointF q) {
-                return face < 0 || (face < baking.regions->faceCount() &&
-                                    baking.regions->restPath(face).contains(q));
+                return face < 0 ||
+                       (face < regions.faceCount() && regions.restPath(face).contains(q));
             };
             if (inside(points.front()))
                 if (const auto first = onto(points.front(), i, face))
@@ -696,7 +706,51 @@ ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<St
         }
         out.push_back({newId(), lineOfNoInk(points, penWidth)});
     }
-    if (!out.empty())
+    return out;
+}
+
+} // namespace
+
+ShownColourSeams shownColourSeams(const StrokeGroup &group, const std::vector<Stroke> &baked,
+                                  double closeGap, const std::function<Id()> &newId)
+{
+    ShownColourSeams result;
+    if (group.fills.empty() || !group.isDeformed())
+        return result;
+    const BakedOwners baking = bakedOwners(group, baked, closeGap);
+    result.bakedAgreement = agreement(baking);
+    const FacesAndFills &p = baking.pictures;
+    const int w = p.width, h = p.height;
+    if (w <= 0 || h <= 0)
+        return result;
+    const double scale = p.faces.toPixels.m11(); // picture px per canvas px
+    if (!(scale > 0.0))
+        return result;
+    const double penWidth = medianInkWidth(baked);
+    const SeamParts parts = seamParts(baking, scale, penWidth);
+    if (!parts.any)
+        return result;
+    // The pixels the lines cover, drawn at their width. Outside every face, a part's edge
+    // along an inked line needs no seam in any variant (the line bounds it once the seams
+    // close its gaps); inside a face only the variant that leaves the lines out skips it, and
+    // it leaves out the gap closers too (a seam along one would make slivers just the same).
+    std::vector<char> inkedOutside = inkMask(baked, false, p.faces, w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (p.face(x, y) >= 0)
+                inkedOutside[std::size_t(y) * std::size_t(w) + std::size_t(x)] = 0;
+    const std::vector<SeamChain> chains = seamChains(p, parts.kept, inkedOutside);
+    const std::vector<SeamChain> offInk =
+        seamChains(p, parts.kept, inkMask(baked, true, p.faces, w, h));
+    result.seams =
+        placedSeams(chains, baking, inkSegments(baked, false), false, scale, penWidth, newId);
+    const auto samePoints = [](const SeamChain &a, const SeamChain &b) {
+        return a.points == b.points;
+    };
+    if (!std::equal(chains.begin(), chains.end(), offInk.begin(), offInk.end(), samePoints))
+        result.seamsOffInk =
+            placedSeams(offInk, baking, inkSegments(baked, true), true, scale, penWidth, newId);
+    if (!result.seams.empty() || !result.seamsOffInk.empty())
         for (const geometry::GapClosure &closure : baking.regions->regions().closures) {
             if (!closure.from.allFinite() || !closure.to.allFinite() || closure.from == closure.to)
                 continue;

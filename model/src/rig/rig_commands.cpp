@@ -153,20 +153,28 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
                 : std::move(without);
     }
     // Where the baked faces still join colours the pose showed apart, lines of no ink along
-    // the edge between them as painted, with the gaps closed now kept closed or not, whichever
-    // keeps more of what was shown (and only if that is more than without them).
-    if (const ShownColourSeams seams = shownColourSeams(*g, m_newStrokes, closeGap, newId);
-        !seams.seams.empty()) {
-        std::vector<Stroke> withSeams = m_newStrokes;
-        withSeams.insert(withSeams.end(), seams.seams.begin(), seams.seams.end());
-        std::vector<Stroke> withKept = withSeams;
-        withKept.insert(withKept.end(), seams.keptClosures.begin(), seams.keptClosures.end());
-        const double seamsAlone = shownFillAgreement(*g, withSeams, closeGap);
-        const double seamsKept =
-            seams.keptClosures.empty() ? 0.0 : shownFillAgreement(*g, withKept, closeGap);
-        if (std::max(seamsAlone, seamsKept) > seams.bakedAgreement)
-            m_newStrokes = seamsKept > seamsAlone ? std::move(withKept) : std::move(withSeams);
+    // the edge between them as painted: the seams, or the seams left off the ink, each with the
+    // gaps closed now kept closed or not, whichever keeps most of what was shown (and only if
+    // that is more than without them).
+    const ShownColourSeams seams = shownColourSeams(*g, m_newStrokes, closeGap, newId);
+    double best = seams.bakedAgreement;
+    std::vector<Stroke> chosen;
+    for (const std::vector<Stroke> *set : {&seams.seams, &seams.seamsOffInk}) {
+        if (set->empty())
+            continue;
+        std::vector<Stroke> with = m_newStrokes;
+        with.insert(with.end(), set->begin(), set->end());
+        for (int keep = 0; keep < (seams.keptClosures.empty() ? 1 : 2); ++keep) {
+            if (keep)
+                with.insert(with.end(), seams.keptClosures.begin(), seams.keptClosures.end());
+            if (const double agreement = shownFillAgreement(*g, with, closeGap); agreement > best) {
+                best = agreement;
+                chosen = with;
+            }
+        }
     }
+    if (!chosen.empty())
+        m_newStrokes = std::move(chosen);
     m_oldFills = g->fills;
     m_newFills = fillsAfterBake(*g, m_newStrokes, closeGap);
 }

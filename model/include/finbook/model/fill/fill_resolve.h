@@ -93,10 +93,16 @@ std::vector<Stroke> keptGapClosers(const StrokeGroup &group, const std::vector<S
 // 4,000 points).
 struct ShownColourSeams {
     std::vector<Stroke> seams;
+    // The same seams without the stretches an inked line covers, ends on the ink's middle:
+    // where a line dangles inside a face along the border (a body's outline that a limb hid
+    // in part), a seam a hair beside it makes slivers that the regions merge, and may join
+    // faces that were apart. Empty when no seam runs under ink.
+    std::vector<Stroke> seamsOffInk;
     // The gaps the baked regions close, as lines of no ink: gap closing leaves a gap open
     // whose middle lies in a face already closed, so a seam that closes a face could open a
     // region elsewhere; with these added too, it cannot. (They also keep gaps from closing
-    // otherwise where that was right, so Apply Pose tries the seams with and without them.)
+    // otherwise where that was right, so Apply Pose tries each set of seams with and without
+    // them.)
     std::vector<Stroke> keptClosures;
     double bakedAgreement = 1.0; // shownFillAgreement of `baked`, computed on the way
 };
