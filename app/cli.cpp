@@ -71,6 +71,11 @@ void summariseMedia(const model::LoadedDocument &doc, QJsonObject &o)
     o[QStringLiteral("reference_bytes")] = referenceBytes;
     o[QStringLiteral("reference_pictures")] =
         qint64(ref.kind == model::ReferenceKind::Sequence ? ref.pictures.size() : 0);
+    o[QStringLiteral("camera_keys")] = qint64(doc.camera.keys.size());
+    if (!doc.camera.isEmpty()) {
+        o[QStringLiteral("camera_first_tick")] = doc.camera.keys.front().tick;
+        o[QStringLiteral("camera_last_tick")] = doc.camera.keys.back().tick;
+    }
 }
 
 QJsonObject summary(const model::LoadedDocument &doc)

@@ -56,6 +56,9 @@ const OptionSpec kOptions[] = {
      QT_TRANSLATE_NOOP("CommandLine",
                        "export: paint the document's reference picture or video under the "
                        "drawing.")},
+    {"no-camera", nullptr,
+     QT_TRANSLATE_NOOP("CommandLine",
+                       "export: the whole page, not the shot the document's camera frames.")},
     {"strict", nullptr,
      QT_TRANSLATE_NOOP("CommandLine",
                        "export: fail (exit code 2, nothing written) when a sound clip or the "
@@ -209,6 +212,7 @@ std::optional<QString> parseRequest(const QStringList &arguments, Request &r)
     r.options.includeReference = p.isSet(QStringLiteral("include-reference"));
     r.options.overwrite = p.isSet(QStringLiteral("overwrite"));
     r.options.strictMedia = p.isSet(QStringLiteral("strict"));
+    r.options.camera = !p.isSet(QStringLiteral("no-camera"));
     if (r.options.transparent && r.options.background)
         return CommandLine::tr("--transparent and --background cannot be used together.");
     if (r.options.onePerDrawing && !model::exportsSequence(r.options.format))
@@ -314,7 +318,8 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
     options.title = QFileInfo(input).completeBaseName();
     model::restoreCutOutLayers(loaded->frames, loaded->settings.closeGap);
     const model::ExportSource source{std::move(loaded->frames), loaded->settings,
-                                     std::move(loaded->reference), std::move(loaded->sound)};
+                                     std::move(loaded->reference), std::move(loaded->sound),
+                                     std::move(loaded->camera)};
     const auto result = model::exportAnimation(
         source, options, exportProgress(QFileInfo(native.shown(options.target)).fileName()));
     clearProgressLine();

@@ -299,21 +299,41 @@
         <source>Keep Fills Along a Cut</source>
         <translation>Füllungen entlang eines Schnitts behalten</translation>
     </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="60"/>
+        <source>Change Camera Key</source>
+        <translation>Kamera-Schlüsselbild ändern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="60"/>
+        <source>Add Camera Key</source>
+        <translation>Kamera-Schlüsselbild hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="66"/>
+        <source>Delete Camera Key</source>
+        <translation>Kamera-Schlüsselbild löschen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="77"/>
+        <source>Move Camera Key</source>
+        <translation>Kamera-Schlüsselbild verschieben</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="163"/>
+        <location filename="../app/cli.cpp" line="168"/>
         <source>No command given; see finbook --help.</source>
         <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="167"/>
+        <location filename="../app/cli.cpp" line="172"/>
         <source>Usage: finbook info FILE</source>
         <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="187"/>
+        <location filename="../app/cli.cpp" line="192"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
@@ -414,116 +434,121 @@
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="60"/>
+        <source>export: the whole page, not the shot the document&apos;s camera frames.</source>
+        <translation>export: die ganze Seite statt des Ausschnitts, den die Kamera des Dokuments zeigt.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="63"/>
         <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
         <translation>export: abbrechen (Exit-Code 2, nichts geschrieben), wenn ein Soundclip oder die Referenz nicht verwendet werden kann, statt sie mit einer Warnung wegzulassen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="63"/>
+        <location filename="../app/cli_export.cpp" line="66"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="64"/>
+        <location filename="../app/cli_export.cpp" line="67"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="66"/>
+        <location filename="../app/cli_export.cpp" line="69"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="97"/>
+        <location filename="../app/cli_export.cpp" line="100"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="111"/>
+        <location filename="../app/cli_export.cpp" line="114"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame und --range können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="114"/>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame braucht eine Bildnummer ab 1, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="121"/>
+        <location filename="../app/cli_export.cpp" line="124"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="127"/>
+        <location filename="../app/cli_export.cpp" line="130"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="135"/>
+        <location filename="../app/cli_export.cpp" line="138"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="141"/>
+        <location filename="../app/cli_export.cpp" line="144"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="153"/>
+        <location filename="../app/cli_export.cpp" line="156"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="169"/>
+        <location filename="../app/cli_export.cpp" line="172"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="176"/>
+        <location filename="../app/cli_export.cpp" line="179"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html, .obj oder .glb enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="181"/>
+        <location filename="../app/cli_export.cpp" line="184"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="197"/>
+        <location filename="../app/cli_export.cpp" line="200"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="201"/>
+        <location filename="../app/cli_export.cpp" line="204"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="213"/>
+        <location filename="../app/cli_export.cpp" line="217"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="215"/>
+        <location filename="../app/cli_export.cpp" line="219"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="311"/>
+        <location filename="../app/cli_export.cpp" line="315"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="324"/>
+        <location filename="../app/cli_export.cpp" line="328"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Unterbrochen; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="332"/>
+        <location filename="../app/cli_export.cpp" line="336"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="334"/>
+        <location filename="../app/cli_export.cpp" line="338"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
@@ -696,7 +721,7 @@
         <location filename="../model/src/export/export_encoded.cpp" line="43"/>
         <location filename="../model/src/export/export_encoded.cpp" line="71"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
-        <location filename="../model/src/export/export_sequence.cpp" line="100"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="101"/>
         <source>there is not enough memory to render it</source>
         <translation>es ist nicht genug Speicher vorhanden, um es zu rendern</translation>
     </message>
@@ -742,52 +767,57 @@
         <translation>Der Einzelbildbereich %1–%2 liegt nicht innerhalb der Einzelbilder 1–%3 der Animation; wählen Sie einen Bereich darin.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="81"/>
+        <location filename="../model/src/export/export_plan.cpp" line="73"/>
+        <source>The camera moves while a drawing is held, so one file per drawing cannot show the shot; export one file per frame, or without the camera.</source>
+        <translation>Die Kamera bewegt sich, während eine Zeichnung gehalten wird, daher kann eine Datei pro Zeichnung den Ausschnitt nicht zeigen; exportieren Sie eine Datei pro Bild oder ohne die Kamera.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="120"/>
         <source>The animation has no frames to export.</source>
         <translation>Die Animation hat keine Einzelbilder, die sich exportieren ließen.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="83"/>
+        <location filename="../model/src/export/export_plan.cpp" line="122"/>
         <source>The canvas has no size; set one in Document Settings.</source>
         <translation>Die Leinwand hat keine Größe; legen Sie eine in den Dokumenteinstellungen fest.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="91"/>
+        <location filename="../model/src/export/export_plan.cpp" line="130"/>
         <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
         <translation>Ein 3D-Modell enthält ein Einzelbild, nicht die Bilder %1–%2; wählen Sie ein einzelnes Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="111"/>
+        <location filename="../model/src/export/export_plan.cpp" line="150"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>Die Skalierung %1 ergibt keine mögliche Bildgröße; wählen Sie eine Skalierung, die 1 bis %2 Pixel pro Seite ergibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="115"/>
+        <location filename="../model/src/export/export_plan.cpp" line="154"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>Die Skalierung %1 ergäbe ein Bild mit %2 × %3 Pixeln; wählen Sie eine Skalierung, die 1 bis %4 Pixel pro Seite ergibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="128"/>
+        <location filename="../model/src/export/export_plan.cpp" line="167"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>Die Bildrate %1 ist nicht möglich; wählen Sie %2 bis %3 Bilder pro Sekunde.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="136"/>
+        <location filename="../model/src/export/export_plan.cpp" line="175"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>%1-Videos können nicht transparent sein; wählen Sie WebM, APNG, GIF oder PNG für einen transparenten Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="160"/>
+        <location filename="../model/src/export/export_plan.cpp" line="202"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Dieser Export würde %1 Einzelbilder schreiben, mehr als die erlaubten %2; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="167"/>
+        <location filename="../model/src/export/export_plan.cpp" line="209"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Dateien schreiben (%2 Wiedergabeschritte), mehr als %3 ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="175"/>
+        <location filename="../model/src/export/export_plan.cpp" line="217"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Stunden Animation ergeben (%2 Einzelbilder), mehr als %3 Stunden ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
@@ -797,17 +827,17 @@
         <translation>„%1“ ist ein Ordner, wo eine Datei hingehört; wählen Sie einen anderen Ordner.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="118"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="119"/>
         <source>&quot;%1&quot; is a file, not a folder; choose a folder for the %2 files, or remove the file.</source>
         <translation>„%1“ ist eine Datei, kein Ordner; wählen Sie einen Ordner für die %2-Dateien oder entfernen Sie die Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="127"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="128"/>
         <source>&quot;%1&quot; is the top folder of the disk; choose or name a folder for the frames, such as &quot;%2&quot;.</source>
         <translation>„%1“ ist der oberste Ordner des Datenträgers; wählen oder benennen Sie einen Ordner für die Einzelbilder, etwa „%2“.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="136"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="137"/>
         <source>the folder cannot be created</source>
         <translation>der Ordner kann nicht angelegt werden</translation>
     </message>
@@ -855,47 +885,47 @@
         <translation>Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="54"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="83"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="70"/>
         <source>MP4 video</source>
         <translation>MP4-Video</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="101"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="88"/>
         <source>WebM video</source>
         <translation>WebM-Video</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="115"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="102"/>
         <source>animated PNG</source>
         <translation>animiertes PNG</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="177"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="175"/>
         <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
         <translation>Für den Export als %1 wird das Programm ffmpeg benötigt, das nicht gefunden wurde; installieren Sie es (unter Debian: apt install ffmpeg) und exportieren Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="270"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="268"/>
         <source>it stopped unexpectedly</source>
         <translation>es wurde unerwartet beendet</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="271"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="269"/>
         <source>exit code %1</source>
         <translation>Exit-Code %1</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="274"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="272"/>
         <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
         <translation>ffmpeg konnte die Ausgabe als %1 nicht erstellen (%2); es wurde nichts geschrieben. Falls der Datenträger voll ist, geben Sie Speicherplatz frei und exportieren Sie erneut.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="285"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="283"/>
         <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
         <translation>
             <numerusform>ffmpeg kam %n Sekunde lang nicht voran und wurde beendet; es wurde nichts geschrieben. Prüfen Sie, ob ffmpeg funktioniert, und exportieren Sie erneut.</numerusform>
@@ -1215,7 +1245,7 @@
         <translation>„%1“ kann nicht geöffnet werden: Für die %2 MB der Datei ist nicht genug Arbeitsspeicher vorhanden. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="226"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
@@ -1296,166 +1326,176 @@
         <translation>Abschnitt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
         <source>the file&apos;s end is damaged</source>
         <translation>das Ende der Datei ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="142"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>ihre Länge (%1 Bytes) reicht über das Dateiende hinaus (%2 Bytes übrig), obwohl die Datei mit ihrer Endmarke endet; die Längenangabe ist also beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>die Datei endet mitten in diesem Abschnitt; sein vorhandener Inhalt wird gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
         <source>a section</source>
         <translation>ein Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>die Datei endet vor der Prüfsumme dieses Abschnitts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>a section checksum</source>
         <translation>eine Abschnittsprüfsumme</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>seine Prüfsumme stimmt nicht, seine Bytes wurden also nach dem Speichern verändert</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
         <source>the end marker</source>
         <translation>die Endmarke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
         <source>the file</source>
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="204"/>
         <source>a sound clip comes before the frames</source>
         <translation>ein Tonclip steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
+        <source>the camera comes before the frames</source>
+        <translation>die Kamera steht vor den Bildern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="213"/>
+        <source>the camera is repeated</source>
+        <translation>die Kamera kommt mehrfach vor</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="280"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="301"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="353"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1741,22 +1781,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="378"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="384"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="396"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="389"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="401"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="398"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="410"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -1898,12 +1938,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="159"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="160"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>Die automatische Sicherung konnte keine Wiederherstellungskopie schreiben: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="40"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="41"/>
         <source>there is not enough memory</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden</translation>
     </message>
@@ -2081,6 +2121,32 @@
         <source>the light&apos;s direction (%1°, %2°) is outside 0 to 360° and 0 to 90°</source>
         <translation>die Richtung des Lichts (%1°, %2°) liegt außerhalb von 0 bis 360° und 0 bis 90°</translation>
     </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="13"/>
+        <location filename="../model/src/camera/camera_section.cpp" line="15"/>
+        <source>the camera</source>
+        <translation>die Kamera</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="20"/>
+        <source>the camera has %1 keys (at most %2)</source>
+        <translation>die Kamera hat %1 Schlüsselbilder (höchstens %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="40"/>
+        <source>camera key %1 holds a value out of range; it is left out</source>
+        <translation>Kamera-Schlüsselbild %1 enthält einen Wert außerhalb des Bereichs; es wird weggelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="46"/>
+        <source>camera key %1 is not after the key before it; it is left out</source>
+        <translation>Kamera-Schlüsselbild %1 liegt nicht nach dem vorigen; es wird weggelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="59"/>
+        <source>%1; the camera is left out</source>
+        <translation>%1; die Kamera wird weggelassen</translation>
+    </message>
 </context>
 <context>
     <name>MeshImport</name>
@@ -2098,7 +2164,7 @@
 <context>
     <name>ObjectListModel</name>
     <message numerus="yes">
-        <location filename="../model/src/object_list_model.cpp" line="160"/>
+        <location filename="../model/src/object_list_model.cpp" line="170"/>
         <source>%1: %n stroke(s)</source>
         <translation>
             <numerusform>%1: %n Strich</numerusform>
@@ -2725,12 +2791,12 @@
         <translation>Käfig</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="139"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="132"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>Wählen Sie zuerst ein Objekt: Der Käfig wird darum gelegt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="265"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="258"/>
         <source>A cage needs at least three corners.</source>
         <translation>Ein Käfig braucht mindestens drei Ecken.</translation>
     </message>
@@ -4063,12 +4129,12 @@
         <translation>Objekt %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="171"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="174"/>
         <source>Merge Objects</source>
         <translation>Objekte zusammenführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="193"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="196"/>
         <source>Move Strokes to Object</source>
         <translation>Striche in Objekt verschieben</translation>
     </message>

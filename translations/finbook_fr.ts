@@ -299,21 +299,41 @@
         <source>Keep Fills Along a Cut</source>
         <translation>Garder les remplissages le long d’une coupe</translation>
     </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="60"/>
+        <source>Change Camera Key</source>
+        <translation>Modifier la clé de caméra</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="60"/>
+        <source>Add Camera Key</source>
+        <translation>Ajouter une clé de caméra</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="66"/>
+        <source>Delete Camera Key</source>
+        <translation>Supprimer la clé de caméra</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="77"/>
+        <source>Move Camera Key</source>
+        <translation>Déplacer la clé de caméra</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="163"/>
+        <location filename="../app/cli.cpp" line="168"/>
         <source>No command given; see finbook --help.</source>
         <translation>Aucune commande indiquée ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="167"/>
+        <location filename="../app/cli.cpp" line="172"/>
         <source>Usage: finbook info FILE</source>
         <translation>Utilisation : finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="187"/>
+        <location filename="../app/cli.cpp" line="192"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
@@ -414,116 +434,121 @@
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="60"/>
+        <source>export: the whole page, not the shot the document&apos;s camera frames.</source>
+        <translation>export : la page entière, pas le plan que cadre la caméra du document.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="63"/>
         <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
         <translation>export : échouer (code de sortie 2, rien n’est écrit) quand un clip sonore ou la référence ne peut pas être utilisé, au lieu de l’omettre avec un avertissement.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="63"/>
+        <location filename="../app/cli_export.cpp" line="66"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="64"/>
+        <location filename="../app/cli_export.cpp" line="67"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="66"/>
+        <location filename="../app/cli_export.cpp" line="69"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="97"/>
+        <location filename="../app/cli_export.cpp" line="100"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="111"/>
+        <location filename="../app/cli_export.cpp" line="114"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame et --range ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="114"/>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame attend un numéro d&apos;image à partir de 1, pas « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="121"/>
+        <location filename="../app/cli_export.cpp" line="124"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="127"/>
+        <location filename="../app/cli_export.cpp" line="130"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="135"/>
+        <location filename="../app/cli_export.cpp" line="138"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="141"/>
+        <location filename="../app/cli_export.cpp" line="144"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="153"/>
+        <location filename="../app/cli_export.cpp" line="156"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="169"/>
+        <location filename="../app/cli_export.cpp" line="172"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="176"/>
+        <location filename="../app/cli_export.cpp" line="179"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html, .obj ou .glb, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="181"/>
+        <location filename="../app/cli_export.cpp" line="184"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="197"/>
+        <location filename="../app/cli_export.cpp" line="200"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="201"/>
+        <location filename="../app/cli_export.cpp" line="204"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="213"/>
+        <location filename="../app/cli_export.cpp" line="217"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="215"/>
+        <location filename="../app/cli_export.cpp" line="219"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="311"/>
+        <location filename="../app/cli_export.cpp" line="315"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="324"/>
+        <location filename="../app/cli_export.cpp" line="328"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="332"/>
+        <location filename="../app/cli_export.cpp" line="336"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="334"/>
+        <location filename="../app/cli_export.cpp" line="338"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -696,7 +721,7 @@
         <location filename="../model/src/export/export_encoded.cpp" line="43"/>
         <location filename="../model/src/export/export_encoded.cpp" line="71"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
-        <location filename="../model/src/export/export_sequence.cpp" line="100"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="101"/>
         <source>there is not enough memory to render it</source>
         <translation>la mémoire est insuffisante pour en faire le rendu</translation>
     </message>
@@ -742,52 +767,57 @@
         <translation>La plage d&apos;images %1-%2 n&apos;est pas comprise dans les images 1-%3 de l&apos;animation&#xa0;; choisissez une plage à l&apos;intérieur.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="81"/>
+        <location filename="../model/src/export/export_plan.cpp" line="73"/>
+        <source>The camera moves while a drawing is held, so one file per drawing cannot show the shot; export one file per frame, or without the camera.</source>
+        <translation>La caméra bouge pendant qu’un dessin est tenu : un fichier par dessin ne peut pas montrer le plan ; exportez un fichier par image, ou sans la caméra.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="120"/>
         <source>The animation has no frames to export.</source>
         <translation>L&apos;animation n&apos;a aucune image à exporter.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="83"/>
+        <location filename="../model/src/export/export_plan.cpp" line="122"/>
         <source>The canvas has no size; set one in Document Settings.</source>
         <translation>Le canevas n&apos;a pas de taille&#xa0;; définissez-en une dans Paramètres du document.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="91"/>
+        <location filename="../model/src/export/export_plan.cpp" line="130"/>
         <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
         <translation>Un modèle 3D contient une seule image, pas les images %1 à %2 ; choisissez une seule image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="111"/>
+        <location filename="../model/src/export/export_plan.cpp" line="150"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>L&apos;échelle %1 ne donne pas une taille d&apos;image possible&#xa0;; choisissez une échelle qui donne de 1 à %2 pixels de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="115"/>
+        <location filename="../model/src/export/export_plan.cpp" line="154"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>L&apos;échelle %1 donnerait une image de %2 x %3 pixels&#xa0;; choisissez une échelle qui donne de 1 à %4 pixels de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="128"/>
+        <location filename="../model/src/export/export_plan.cpp" line="167"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>La fréquence d&apos;images %1 n&apos;est pas possible&#xa0;; choisissez de %2 à %3 images par seconde.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="136"/>
+        <location filename="../model/src/export/export_plan.cpp" line="175"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>Une vidéo %1 ne peut pas être transparente&#xa0;; choisissez WebM, APNG, GIF ou PNG pour un arrière-plan transparent.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="160"/>
+        <location filename="../model/src/export/export_plan.cpp" line="202"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Cet export écrirait %1 images, plus que les %2 autorisées ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="167"/>
+        <location filename="../model/src/export/export_plan.cpp" line="209"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Cet export écrirait %1 fichiers (%2 pas de lecture), plus de %3 sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="175"/>
+        <location filename="../model/src/export/export_plan.cpp" line="217"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Cet export produirait %1 heures d’animation (%2 images), plus de %3 heures sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
@@ -797,17 +827,17 @@
         <translation>«&#xa0;%1&#xa0;» est un dossier, à l&apos;emplacement prévu pour un fichier&#xa0;; choisissez un autre dossier.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="118"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="119"/>
         <source>&quot;%1&quot; is a file, not a folder; choose a folder for the %2 files, or remove the file.</source>
         <translation>« %1 » est un fichier, pas un dossier ; choisissez un dossier pour les fichiers %2, ou supprimez le fichier.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="127"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="128"/>
         <source>&quot;%1&quot; is the top folder of the disk; choose or name a folder for the frames, such as &quot;%2&quot;.</source>
         <translation>« %1 » est le dossier racine du disque ; choisissez ou nommez un dossier pour les images, par exemple « %2 ».</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="136"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="137"/>
         <source>the folder cannot be created</source>
         <translation>le dossier ne peut pas être créé</translation>
     </message>
@@ -855,47 +885,47 @@
         <translation>Rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="54"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="83"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="70"/>
         <source>MP4 video</source>
         <translation>vidéo MP4</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="101"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="88"/>
         <source>WebM video</source>
         <translation>vidéo WebM</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="115"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="102"/>
         <source>animated PNG</source>
         <translation>PNG animé</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="177"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="175"/>
         <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
         <translation>L&apos;export en %1 nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le (sous Debian&#xa0;: apt install ffmpeg) et exportez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="270"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="268"/>
         <source>it stopped unexpectedly</source>
         <translation>il s&apos;est arrêté de façon inattendue</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="271"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="269"/>
         <source>exit code %1</source>
         <translation>code de sortie %1</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="274"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="272"/>
         <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
         <translation>ffmpeg n&apos;a pas pu créer le fichier %1 (%2)&#xa0;; rien n&apos;a été écrit. Si le disque est plein, libérez de l&apos;espace et exportez à nouveau.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="285"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="283"/>
         <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
         <translation>
             <numerusform>ffmpeg n’a pas progressé pendant %n seconde et a été arrêté ; rien n’a été écrit. Vérifiez que ffmpeg fonctionne, puis exportez à nouveau.</numerusform>
@@ -1215,7 +1245,7 @@
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante pour ses %2&#xa0;Mo. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="226"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
@@ -1296,166 +1326,176 @@
         <translation>section %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
         <source>the file&apos;s end is damaged</source>
         <translation>la fin du fichier est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="142"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>sa longueur (%1 octets) dépasse la fin du fichier (%2 octets restants), alors que le fichier se termine par sa marque de fin&#xa0;: la longueur est donc endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>le fichier s&apos;arrête au milieu de cette section (%1 octets annoncés, %2 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>le fichier s&apos;arrête au milieu de cette section&#xa0;; ce qu&apos;elle contient est lu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
         <source>a section</source>
         <translation>une section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>le fichier s&apos;arrête avant la somme de contrôle de cette section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>a section checksum</source>
         <translation>une somme de contrôle de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>sa somme de contrôle ne correspond pas, ses octets ont donc changé après l&apos;enregistrement</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
         <source>the end marker</source>
         <translation>le marqueur de fin</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
         <source>the file</source>
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="204"/>
         <source>a sound clip comes before the frames</source>
         <translation>un extrait sonore précède les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
+        <source>the camera comes before the frames</source>
+        <translation>la caméra vient avant les images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="213"/>
+        <source>the camera is repeated</source>
+        <translation>la caméra est répétée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="280"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="301"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="353"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1741,22 +1781,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="378"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="384"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="396"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="389"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="401"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="398"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="410"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -1898,12 +1938,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="159"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="160"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>L&apos;enregistrement automatique n&apos;a pas pu écrire de copie de récupération&#xa0;: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="40"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="41"/>
         <source>there is not enough memory</source>
         <translation>la mémoire est insuffisante</translation>
     </message>
@@ -2081,6 +2121,32 @@
         <source>the light&apos;s direction (%1°, %2°) is outside 0 to 360° and 0 to 90°</source>
         <translation>la direction de la lumière (%1°, %2°) sort de 0 à 360° et de 0 à 90°</translation>
     </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="13"/>
+        <location filename="../model/src/camera/camera_section.cpp" line="15"/>
+        <source>the camera</source>
+        <translation>la caméra</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="20"/>
+        <source>the camera has %1 keys (at most %2)</source>
+        <translation>la caméra a %1 clés (au plus %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="40"/>
+        <source>camera key %1 holds a value out of range; it is left out</source>
+        <translation>la clé de caméra %1 contient une valeur hors limites ; elle est laissée de côté</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="46"/>
+        <source>camera key %1 is not after the key before it; it is left out</source>
+        <translation>la clé de caméra %1 ne vient pas après la clé précédente ; elle est laissée de côté</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="59"/>
+        <source>%1; the camera is left out</source>
+        <translation>%1 ; la caméra est laissée de côté</translation>
+    </message>
 </context>
 <context>
     <name>MeshImport</name>
@@ -2098,7 +2164,7 @@
 <context>
     <name>ObjectListModel</name>
     <message numerus="yes">
-        <location filename="../model/src/object_list_model.cpp" line="160"/>
+        <location filename="../model/src/object_list_model.cpp" line="170"/>
         <source>%1: %n stroke(s)</source>
         <translation>
             <numerusform>%1&#xa0;: %n trait</numerusform>
@@ -2725,12 +2791,12 @@
         <translation>Cage</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="139"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="132"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>Choisissez d&apos;abord un objet&#xa0;: la cage se place autour de lui.</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="265"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="258"/>
         <source>A cage needs at least three corners.</source>
         <translation>Une cage doit avoir au moins trois coins.</translation>
     </message>
@@ -4063,12 +4129,12 @@
         <translation>Objet %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="171"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="174"/>
         <source>Merge Objects</source>
         <translation>Fusionner les objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="193"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="196"/>
         <source>Move Strokes to Object</source>
         <translation>Déplacer les traits vers un objet</translation>
     </message>

@@ -299,21 +299,41 @@
         <source>Keep Fills Along a Cut</source>
         <translation>切断に沿って塗りを保持</translation>
     </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="60"/>
+        <source>Change Camera Key</source>
+        <translation>カメラキーを変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="60"/>
+        <source>Add Camera Key</source>
+        <translation>カメラキーを追加</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="66"/>
+        <source>Delete Camera Key</source>
+        <translation>カメラキーを削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_commands.cpp" line="77"/>
+        <source>Move Camera Key</source>
+        <translation>カメラキーを移動</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="163"/>
+        <location filename="../app/cli.cpp" line="168"/>
         <source>No command given; see finbook --help.</source>
         <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="167"/>
+        <location filename="../app/cli.cpp" line="172"/>
         <source>Usage: finbook info FILE</source>
         <translation>使い方: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="187"/>
+        <location filename="../app/cli.cpp" line="192"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
@@ -414,116 +434,121 @@
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="60"/>
+        <source>export: the whole page, not the shot the document&apos;s camera frames.</source>
+        <translation>export: 文書のカメラが写すショットではなく、ページ全体。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="63"/>
         <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
         <translation>export: サウンドクリップまたは参照画像を使用できないとき、警告して省く代わりに失敗します（終了コード 2、何も書き出しません）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="63"/>
+        <location filename="../app/cli_export.cpp" line="66"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="64"/>
+        <location filename="../app/cli_export.cpp" line="67"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="66"/>
+        <location filename="../app/cli_export.cpp" line="69"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="97"/>
+        <location filename="../app/cli_export.cpp" line="100"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="111"/>
+        <location filename="../app/cli_export.cpp" line="114"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame と --range は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="114"/>
+        <location filename="../app/cli_export.cpp" line="117"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame には 1 以上のフレーム番号を指定してください (「%1」ではなく)。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="121"/>
+        <location filename="../app/cli_export.cpp" line="124"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="127"/>
+        <location filename="../app/cli_export.cpp" line="130"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="135"/>
+        <location filename="../app/cli_export.cpp" line="138"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="141"/>
+        <location filename="../app/cli_export.cpp" line="144"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="153"/>
+        <location filename="../app/cli_export.cpp" line="156"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj、glb のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="169"/>
+        <location filename="../app/cli_export.cpp" line="172"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="176"/>
+        <location filename="../app/cli_export.cpp" line="179"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj、.glb にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="181"/>
+        <location filename="../app/cli_export.cpp" line="184"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="197"/>
+        <location filename="../app/cli_export.cpp" line="200"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="201"/>
+        <location filename="../app/cli_export.cpp" line="204"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="213"/>
+        <location filename="../app/cli_export.cpp" line="217"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="215"/>
+        <location filename="../app/cli_export.cpp" line="219"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="311"/>
+        <location filename="../app/cli_export.cpp" line="315"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="324"/>
+        <location filename="../app/cli_export.cpp" line="328"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="332"/>
+        <location filename="../app/cli_export.cpp" line="336"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="334"/>
+        <location filename="../app/cli_export.cpp" line="338"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -695,7 +720,7 @@
         <location filename="../model/src/export/export_encoded.cpp" line="43"/>
         <location filename="../model/src/export/export_encoded.cpp" line="71"/>
         <location filename="../model/src/export/export_flipbook.cpp" line="215"/>
-        <location filename="../model/src/export/export_sequence.cpp" line="100"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="101"/>
         <source>there is not enough memory to render it</source>
         <translation>描画に必要なメモリが足りません</translation>
     </message>
@@ -741,52 +766,57 @@
         <translation>フレーム範囲 %1～%2 がアニメーションのフレーム 1～%3 に収まっていません。その範囲内で選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="81"/>
+        <location filename="../model/src/export/export_plan.cpp" line="73"/>
+        <source>The camera moves while a drawing is held, so one file per drawing cannot show the shot; export one file per frame, or without the camera.</source>
+        <translation>絵を保持している間にカメラが動くため、絵ごとに 1 ファイルではショットを表せません。フレームごとに 1 ファイルで書き出すか、カメラなしで書き出してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_plan.cpp" line="120"/>
         <source>The animation has no frames to export.</source>
         <translation>アニメーションに書き出すフレームがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="83"/>
+        <location filename="../model/src/export/export_plan.cpp" line="122"/>
         <source>The canvas has no size; set one in Document Settings.</source>
         <translation>キャンバスのサイズがありません。ドキュメント設定で設定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="91"/>
+        <location filename="../model/src/export/export_plan.cpp" line="130"/>
         <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
         <translation>3D モデルに入るのは 1 フレームだけで、フレーム %1-%2 は入りません。フレームを 1 つ選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="111"/>
+        <location filename="../model/src/export/export_plan.cpp" line="150"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>倍率 %1 は画像のサイズとして使えません。一辺が 1～%2 ピクセルになる倍率を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="115"/>
+        <location filename="../model/src/export/export_plan.cpp" line="154"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>倍率 %1 では %2×%3 ピクセルの画像になります。一辺が 1～%4 ピクセルになる倍率を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="128"/>
+        <location filename="../model/src/export/export_plan.cpp" line="167"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>フレームレート %1 は使用できません。毎秒 %2～%3 フレームの範囲で選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="136"/>
+        <location filename="../model/src/export/export_plan.cpp" line="175"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>%1 動画は透明にできません。背景を透明にするには WebM、APNG、GIF、PNG のいずれかを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="160"/>
+        <location filename="../model/src/export/export_plan.cpp" line="202"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>この書き出しは %1 フレームを書き込みます。許可された %2 を超えるため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="167"/>
+        <location filename="../model/src/export/export_plan.cpp" line="209"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 個のファイル（再生ティック %2）を書き込みます。明示的な許可なしに %3 を超えることはできないため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="175"/>
+        <location filename="../model/src/export/export_plan.cpp" line="217"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 時間のアニメーション（%2 フレーム）になります。明示的な許可なしに %3 時間を超えることはできないため、何も書き出していません。</translation>
     </message>
@@ -796,17 +826,17 @@
         <translation>「%1」はファイルを置く場所にあるフォルダーです。別のフォルダーを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="118"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="119"/>
         <source>&quot;%1&quot; is a file, not a folder; choose a folder for the %2 files, or remove the file.</source>
         <translation>「%1」はフォルダーではなくファイルです。%2 ファイル用のフォルダーを選ぶか、そのファイルを削除してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="127"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="128"/>
         <source>&quot;%1&quot; is the top folder of the disk; choose or name a folder for the frames, such as &quot;%2&quot;.</source>
         <translation>「%1」はディスクの最上位フォルダーです。「%2」のように、フレーム用のフォルダーを選ぶか名前を付けてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_sequence.cpp" line="136"/>
+        <location filename="../model/src/export/export_sequence.cpp" line="137"/>
         <source>the folder cannot be created</source>
         <translation>フォルダーを作成できません</translation>
     </message>
@@ -853,47 +883,47 @@
         <translation>何も書き出されませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="54"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="41"/>
         <source>GIF</source>
         <translation>GIF</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="83"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="70"/>
         <source>MP4 video</source>
         <translation>MP4 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="101"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="88"/>
         <source>WebM video</source>
         <translation>WebM 動画</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="115"/>
+        <location filename="../model/src/export/ffmpeg_arguments.cpp" line="102"/>
         <source>animated PNG</source>
         <translation>アニメーション PNG</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="177"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="175"/>
         <source>Exporting %1 needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) and export again.</source>
         <translation>%1 を書き出すには ffmpeg プログラムが必要ですが、見つかりませんでした。インストールしてから（Debian の場合: apt install ffmpeg）、もう一度書き出してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="270"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="268"/>
         <source>it stopped unexpectedly</source>
         <translation>予期せず停止しました</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="271"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="269"/>
         <source>exit code %1</source>
         <translation>終了コード %1</translation>
     </message>
     <message>
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="274"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="272"/>
         <source>ffmpeg could not make the %1 (%2); nothing was written. If the disk is full, free some space and export again.</source>
         <translation>ffmpeg で %1 を作成できませんでした（%2）。何も書き込まれていません。ディスクがいっぱいの場合は、空き容量を増やしてからもう一度書き出してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="285"/>
+        <location filename="../model/src/export/ffmpeg_encoder.cpp" line="283"/>
         <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
         <translation>
             <numerusform>ffmpeg が %n 秒間進まなかったため停止しました。何も書き込まれていません。ffmpeg が動作するか確認してから、もう一度書き出してください。</numerusform>
@@ -1210,7 +1240,7 @@
         <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="226"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
@@ -1291,166 +1321,176 @@
         <translation>セクション %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="136"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
         <source>the file&apos;s end is damaged</source>
         <translation>ファイルの終端が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="141"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="142"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>長さ（%1 バイト）がファイルの終わりを超えています（残り %2 バイト）が、ファイルは終端マーカーで終わっています。長さの値が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="149"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
         <source>a section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
         <source>a section checksum</source>
         <translation>セクションのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="166"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="173"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
         <source>the end marker</source>
         <translation>終端マーカー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
         <source>the file</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="203"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="204"/>
         <source>a sound clip comes before the frames</source>
         <translation>サウンドクリップがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="209"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
+        <source>the camera comes before the frames</source>
+        <translation>カメラがフレームより前にあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="213"/>
+        <source>the camera is repeated</source>
+        <translation>カメラが重複しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="249"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="250"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="260"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="263"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="280"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="279"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="290"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="295"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="301"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="341"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="353"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1734,22 +1774,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="378"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="384"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="396"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="389"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="401"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="398"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="410"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -1889,12 +1929,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="159"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="160"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>自動保存で復元用のコピーを書き込めませんでした: %1。</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="40"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="41"/>
         <source>there is not enough memory</source>
         <translation>メモリが足りません</translation>
     </message>
@@ -2072,6 +2112,32 @@
         <source>the light&apos;s direction (%1°, %2°) is outside 0 to 360° and 0 to 90°</source>
         <translation>光源の向き (%1°, %2°) が 0〜360° と 0〜90° の範囲外です</translation>
     </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="13"/>
+        <location filename="../model/src/camera/camera_section.cpp" line="15"/>
+        <source>the camera</source>
+        <translation>カメラ</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="20"/>
+        <source>the camera has %1 keys (at most %2)</source>
+        <translation>カメラのキーが %1 個あります（上限 %2）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="40"/>
+        <source>camera key %1 holds a value out of range; it is left out</source>
+        <translation>カメラキー %1 の値が範囲外です。省きます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="46"/>
+        <source>camera key %1 is not after the key before it; it is left out</source>
+        <translation>カメラキー %1 が前のキーより後にありません。省きます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/camera/camera_section.cpp" line="59"/>
+        <source>%1; the camera is left out</source>
+        <translation>%1。カメラを省きます</translation>
+    </message>
 </context>
 <context>
     <name>MeshImport</name>
@@ -2089,7 +2155,7 @@
 <context>
     <name>ObjectListModel</name>
     <message numerus="yes">
-        <location filename="../model/src/object_list_model.cpp" line="160"/>
+        <location filename="../model/src/object_list_model.cpp" line="170"/>
         <source>%1: %n stroke(s)</source>
         <translation>
             <numerusform>%1: ストローク %n 本</numerusform>
@@ -2712,12 +2778,12 @@
         <translation>ケージ</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="139"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="132"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>先にオブジェクトを選んでください。ケージはその周りに配置されます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/cage/tool_cage.cpp" line="265"/>
+        <location filename="../ui/src/cage/tool_cage.cpp" line="258"/>
         <source>A cage needs at least three corners.</source>
         <translation>ケージには少なくとも 3 つの頂点が必要です。</translation>
     </message>
@@ -4045,12 +4111,12 @@
         <translation>オブジェクト %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="171"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="174"/>
         <source>Merge Objects</source>
         <translation>オブジェクトを結合</translation>
     </message>
     <message>
-        <location filename="../ui/src/panels/object_actions.cpp" line="193"/>
+        <location filename="../ui/src/panels/object_actions.cpp" line="196"/>
         <source>Move Strokes to Object</source>
         <translation>ストロークをオブジェクトへ移動</translation>
     </message>

@@ -99,6 +99,7 @@ void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings
     for (Frame &f : m_frames)
         resolveJoins(f);
     m_settings = settings;
+    m_camera = {};
     m_nextId = std::max<Id>(nextId, 1);
     m_reference->setReference({});
     m_soundtrack->reset({});
@@ -311,6 +312,14 @@ void Document::setSettings(const DocumentSettings &settings)
 {
     m_settings = settings;
     emit settingsChanged();
+}
+
+void Document::setCamera(CameraTrack camera)
+{
+    if (camera == m_camera)
+        return;
+    m_camera = std::move(camera);
+    emit cameraChanged();
 }
 
 } // namespace finbook::model

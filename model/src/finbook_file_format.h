@@ -44,6 +44,13 @@
 //              was (WAV, MP3, …). Written only when the document has sound, so a file without
 //              sound is a plain format-3 file; a Finbook that does not know SOND refuses a file
 //              with sound as made by a newer Finbook (it would drop the sound on saving).
+//   "CAMR"  := u32 count (i64 tick f64 centerX f64 centerY f64 zoom f64 rotation u8 easing
+//              f64 control1X f64 control1Y f64 control2X f64 control2Y)[count]
+//              (camera/camera_track.h): the camera's keys in increasing tick order. At most
+//              once, after FRAM. Written only when the document has camera keys, so a file
+//              without a camera is a plain format-3 file; a Finbook that does not know CAMR
+//              refuses a file with a camera as made by a newer Finbook (it would drop the
+//              camera on saving).
 //
 // Ancillary sections (between FRAM and FEND):
 //   "lite"  := f64 azimuth f64 elevation   (degrees; DocumentSettings' light for shaded fills),
@@ -111,6 +118,7 @@ constexpr quint32 kTagFills = tag("FILL");
 constexpr quint32 kTagReference = tag("refr");
 constexpr quint32 kTagReferenceSequence = tag("rseq");
 constexpr quint32 kTagSound = tag("SOND");
+constexpr quint32 kTagCamera = tag("CAMR");
 constexpr quint32 kTagShading = tag("shad");
 constexpr quint32 kTagLimbBases = tag("limb");
 constexpr quint32 kTagLight = tag("lite");
@@ -133,6 +141,7 @@ constexpr std::size_t kStrokeDataHeaderBytes = 4 + 4 + 4;
 constexpr std::size_t kStrokeRefBytes = 8 + 4;
 constexpr std::size_t kPinBytes = 8 + 4 * 8;
 constexpr std::size_t kCageCornerBytes = 4 * 8;
+constexpr std::size_t kCameraKeyBytes = 8 + 4 * 8 + 1 + 4 * 8;
 constexpr std::size_t kJointBytes = 3 * 8 + 4 + 8;
 constexpr std::size_t kSkeletonTailBytes = 4 + 6 * 8 + 1;
 constexpr std::size_t kFrameFixedBytes = 8 + 4 + 4;

@@ -213,6 +213,7 @@ void adoptLoadedDocument(Document &document, LoadedDocument loaded)
     document.reset(std::move(loaded.frames), loaded.settings, loaded.nextId);
     document.referenceLayer().setReference(std::move(loaded.reference));
     document.soundtrack().reset(std::move(loaded.sound));
+    document.setCamera(std::move(loaded.camera));
 }
 
 std::optional<FileError> saveFinbook(const Document &document, const QString &path,

@@ -121,8 +121,9 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
     m_where.section = FinbookFile::tr("section %1").arg(tagName(t));
     const auto *known = std::find(std::begin(kOrder), std::end(kOrder), t);
     const bool sound = t == kTagSound;
+    const bool camera = t == kTagCamera;
     const bool expected =
-        t == kTagEnd || sound ||
+        t == kTagEnd || sound || camera ||
         (known != std::end(kOrder) && std::size_t(known - std::begin(kOrder)) >= next);
     const bool text = !tagName(t).startsWith(QLatin1String("0x"));
     if (recovering() && (!text || (!expected && !isAncillary(t)))) {
@@ -202,6 +203,17 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
             problem(c, FileErrorCode::BadValue,
                     FinbookFile::tr("a sound clip comes before the frames"));
         readSoundSection(body);
+        return !cut;
+    }
+    if (camera) {
+        if (next < std::size(kOrder))
+            problem(c, FileErrorCode::BadValue,
+                    FinbookFile::tr("the camera comes before the frames"));
+        if (m_sawCamera)
+            problem(c, FileErrorCode::BadValue, FinbookFile::tr("the camera is repeated"));
+        else
+            readCameraSection(body);
+        m_sawCamera = true;
         return !cut;
     }
     if (known == std::end(kOrder)) {

@@ -106,6 +106,9 @@ private:
     // sound/sound_section.cpp: one "SOND" section, a clip of the soundtrack.
     void readSoundSection(Cursor &body);
     void readSoundClip(Cursor &c);
+    // camera/camera_section.cpp: the "CAMR" section, the camera's keys.
+    void readCameraSection(Cursor &body);
+    bool m_sawCamera = false;
     // finbook_file_recover.cpp
     bool findNextSection(Cursor &c, std::size_t next);
     void renumberClashingIds();

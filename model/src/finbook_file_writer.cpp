@@ -286,6 +286,24 @@ void writeSoundClip(ByteWriter &w, const SoundClip &clip)
     w.raw(clip.bytes.constData(), std::size_t(clip.bytes.size()));
 }
 
+// The "CAMR" section's payload (camera/camera_section.cpp reads it).
+void writeCamera(ByteWriter &w, const CameraTrack &camera)
+{
+    w.u32(quint32(camera.keys.size()));
+    for (const CameraKey &k : camera.keys) {
+        w.u64(quint64(k.tick));
+        w.f64(k.center.x());
+        w.f64(k.center.y());
+        w.f64(k.zoom);
+        w.f64(k.rotation);
+        w.u8(quint8(k.easing));
+        w.f64(k.control1.x());
+        w.f64(k.control1.y());
+        w.f64(k.control2.x());
+        w.f64(k.control2.y());
+    }
+}
+
 // A section and, from format 2 on, the CRC-32C of its tag, length and payload.
 template <class WriteBody> void writeSection(ByteWriter &w, quint32 sectionTag, WriteBody body)
 {
@@ -305,12 +323,12 @@ QByteArray serializeFinbook(const Document &document)
         for (AncillarySection &section : referenceSections(document.referenceLayer().reference()))
             extra.push_back(std::move(section));
     return serializeFinbook(document.frames(), document.settings(), extra,
-                            document.soundtrack().clips());
+                            document.soundtrack().clips(), document.camera());
 }
 
 QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSettings &settings,
                             const std::vector<AncillarySection> &ancillary,
-                            const std::vector<SoundClip> &sound)
+                            const std::vector<SoundClip> &sound, const CameraTrack &camera)
 {
     const Tables tables(frames);
     qsizetype extra = 0;
@@ -319,6 +337,9 @@ QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSett
     for (const SoundClip &clip : sound)
         extra += qsizetype(kSectionHeaderBytes + kSectionCrcBytes + kSoundFixedBytes) +
                  clip.name.size() * 3 + clip.bytes.size();
+    if (!camera.isEmpty())
+        extra += qsizetype(kSectionHeaderBytes + kSectionCrcBytes + 4) +
+                 qsizetype(camera.keys.size() * kCameraKeyBytes);
     ByteWriter w(tables.expectedBytes + extra);
     w.raw(kMagic, sizeof(kMagic));
     w.u32(kFinbookFormatVersion);
@@ -331,6 +352,8 @@ QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSett
     writeSection(w, kTagFrames, [&] { writeFrames(w, frames, tables); });
     for (const SoundClip &clip : sound)
         writeSection(w, kTagSound, [&] { writeSoundClip(w, clip); });
+    if (!camera.isEmpty())
+        writeSection(w, kTagCamera, [&] { writeCamera(w, camera); });
     const DocumentSettings defaults;
     if (settings.lightAzimuth != defaults.lightAzimuth ||
         settings.lightElevation != defaults.lightElevation)

@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "cli_run.h"
 
+#include <finbook/model/camera/camera_commands.h>
 #include <finbook/model/finbook_file.h>
 
 #include <QDir>
@@ -52,6 +53,7 @@ private slots:
     void infoMatchesTheFile();
     void infoInProcessMatchesBinary();
     void exportWritesEveryFrame();
+    void cameraInInfoAndExport();
     void badFilesExitTwo_data();
     void badFilesExitTwo();
     void badArgumentsExitTwo_data();
@@ -223,6 +225,58 @@ void TestCli::exportWritesEveryFrame()
         QVERIFY2(inked > 2000,
                  qPrintable(QStringLiteral("%1: %2 inked pixels").arg(name).arg(inked)));
         QCOMPARE(image.pixel(0, 0), background);
+    }
+}
+
+// A page with a dot at (150, 50) and a camera zoomed in twice on it: `info` counts the keys,
+// `export` frames the shot (the dot in the middle), `--no-camera` the page (the dot where it
+// was drawn).
+void TestCli::cameraInInfoAndExport()
+{
+    model::Document doc;
+    model::DocumentSettings settings;
+    settings.canvasSize = QSize(200, 100);
+    doc.reset({}, settings, 1);
+    doc.undoStack()->push(new model::InsertFrameCommand(&doc, 0));
+    auto dot = std::make_shared<model::StrokeData>();
+    dot->width = 8.0f;
+    dot->points = {{149.5f, 50.0f, 1.0f}, {150.5f, 50.0f, 1.0f}};
+    doc.undoStack()->push(new model::AddStrokeCommand(&doc, doc.frameAt(0).groups.at(0).id, dot));
+    for (qint64 tick : {0, 6}) {
+        model::CameraKey key;
+        key.tick = tick;
+        key.center = QPointF(150, 50);
+        key.zoom = 2.0;
+        doc.undoStack()->push(model::setCameraKeyCommand(&doc, key).release());
+    }
+    const QString file = m_dir.filePath(QStringLiteral("camera.finbook"));
+    QVERIFY(!model::saveFinbook(doc, file));
+    const Run info = runFinbook({QStringLiteral("info"), file});
+    QCOMPARE(info.code, 0);
+    const QJsonObject o = QJsonDocument::fromJson(info.out).object();
+    QCOMPARE(o[QStringLiteral("camera_keys")].toInteger(), 2);
+    QCOMPARE(o[QStringLiteral("camera_last_tick")].toInteger(), 6);
+    const auto darkX = [](const QString &path) {
+        const QImage image(path);
+        double sum = 0, n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (qGray(image.pixel(x, y)) < 100) {
+                    sum += x + 0.5;
+                    n += 1;
+                }
+        return n > 0 ? sum / n : -1.0;
+    };
+    for (const bool camera : {true, false}) {
+        const QString out =
+            m_dir.filePath(camera ? QStringLiteral("shot") : QStringLiteral("page"));
+        QStringList args{QStringLiteral("export"), file, out};
+        if (!camera)
+            args << QStringLiteral("--no-camera");
+        const Run run = runFinbook(args);
+        QCOMPARE(run.code, 0);
+        const double x = darkX(QDir(out).filePath(QStringLiteral("frame_0001.png")));
+        QVERIFY2(std::abs(x - (camera ? 100.0 : 150.0)) < 1.0, qPrintable(QString::number(x)));
     }
 }
 

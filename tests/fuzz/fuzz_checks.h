@@ -5,6 +5,7 @@
 
 #include "../../model/src/io/crc32c.h"
 
+#include <finbook/model/export/export_plan.h>
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/reference/reference_media.h>
@@ -13,6 +14,7 @@
 
 #include <QtEndian>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -59,6 +61,24 @@ inline void renderSome(const LoadedDocument &doc)
         onion.opacity = 0.4;
         onion.showHidden = true;
         renderFrameBand(doc.frames[f], doc.settings, size, size.height() / 3, 17, onion);
+    }
+    // Through the camera (issue 46): at its first and last key and halfway, a finite shot of
+    // the export's size.
+    if (doc.camera.isEmpty() || doc.frames.empty())
+        return;
+    ExportPlan plan;
+    plan.size = size;
+    const double first = double(doc.camera.keys.front().tick);
+    const double last = double(doc.camera.keys.back().tick);
+    for (double tick : {first, (first + last) / 2.0 + 0.5, last}) {
+        const CameraState state = cameraAt(doc.camera, tick, QSizeF(canvas));
+        check(std::isfinite(state.center.x()) && std::isfinite(state.center.y()) &&
+                  std::isfinite(state.zoom) && state.zoom > 0.0 && std::isfinite(state.rotation),
+              "the camera between valid keys is finite");
+        check(
+            renderExportFrame(doc.frames.front(), doc.settings, plan, nullptr, {}, &state).size() ==
+                size,
+            "a shot through the camera has the export's size");
     }
 }
 

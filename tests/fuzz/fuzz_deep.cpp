@@ -14,7 +14,11 @@
 // deep and wide as the input says; decoding them (fuzz_checks.h) must stay within the limits.
 //
 //   media := u8 shape|0x80  u32 rate  u8 channels  u8 bits  u32 announced  u8 clips
-//            u8 useLevels  u8 useFanout  u16 samples
+//            u8 useLevels  u8 useFanout  u16 samples  [u16 cameraKeys  u8 cameraSeed]
+//
+// The camera (issue 46) rides along: up to 65,535 keys of every easing, their values spread by
+// the seed over the whole allowed range (zooms from a twentieth to fifty, turns of a hundred
+// revolutions, Bézier handles that overshoot).
 //
 // Run: build/fuzz/bin/finbook-fuzz-deep -rss_limit_mb=4096 -timeout=300 -max_len=256 CORPUS
 #include "../model/deep_structures.h"
@@ -25,6 +29,8 @@
 
 #include <QCoreApplication>
 #include <QtEndian>
+
+#include <cmath>
 
 namespace {
 using namespace finbook::model;
@@ -98,9 +104,36 @@ QByteArray svgOfUses(int levels, int fanout)
     return svg + "</defs><use xlink:href=\"#l" + QByteArray::number(levels) + "\"/></svg>";
 }
 
-QByteArray mediaFile(const uint8_t *data)
+// `count` camera keys, values spread over the allowed ranges by `seed`.
+CameraTrack cameraOf(int count, std::uint8_t seed)
+{
+    CameraTrack track;
+    std::uint32_t x = 2166136261u ^ seed;
+    const auto unit = [&x] {
+        x = x * 1664525u + 1013904223u;
+        return double(x >> 8) / double(1u << 24);
+    };
+    for (int i = 0; i < count; ++i) {
+        CameraKey k;
+        k.tick = qint64(i) * (1 + seed % 13);
+        k.center = QPointF((unit() * 2 - 1) * kMaxCameraReach, (unit() * 2 - 1) * kMaxCameraReach);
+        k.zoom = kMinCameraZoom * std::pow(kMaxCameraZoom / kMinCameraZoom, unit());
+        k.rotation = (unit() * 2 - 1) * kMaxCameraTurn;
+        k.easing = CameraEasing(i % kCameraEasingCount);
+        k.control1 = QPointF(unit(), unit() * 3 - 1);
+        k.control2 = QPointF(unit(), unit() * 3 - 1);
+        if (k.tick <= kMaxCameraTick)
+            track.keys.push_back(k);
+    }
+    return track;
+}
+
+QByteArray mediaFile(const uint8_t *data, std::size_t size)
 {
     Document doc;
+    if (size >= kMediaBytes + 3)
+        doc.setCamera(
+            cameraOf(qFromLittleEndian<quint16>(data + kMediaBytes), data[kMediaBytes + 2]));
     const QByteArray wav = wavWithHeader(data);
     const int clips = 1 + data[11] % kMaxSoundClips;
     for (int i = 0; i < clips; ++i) {
@@ -128,7 +161,7 @@ extern "C" int LLVMFuzzerInitialize(int *argc, char ***argv)
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size >= kMediaBytes && (data[0] & 0x80)) {
-        fuzz_checks::readEveryWay(mediaFile(data));
+        fuzz_checks::readEveryWay(mediaFile(data, size));
         return 0;
     }
     if (size < kHeaderBytes)

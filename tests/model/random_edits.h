@@ -1,6 +1,7 @@
 // Random edits through real commands, for undo/redo property tests.
 #pragma once
 
+#include <finbook/model/camera/camera_commands.h>
 #include <finbook/model/commands.h>
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/pins/pin_commands.h>
@@ -155,6 +156,31 @@ inline std::unique_ptr<QUndoCommand> randomFillCommand(model::Document &doc, mod
                                              QStringLiteral("Fill"));
 }
 
+// A camera edit: a key added or changed (any easing), removed or moved (never null).
+inline std::unique_ptr<QUndoCommand> randomCameraCommand(model::Document &doc,
+                                                         QRandomGenerator &rng)
+{
+    using namespace model;
+    const std::vector<CameraKey> &keys = doc.camera().keys;
+    if (!keys.empty() && rng.bounded(3) == 0) {
+        const qint64 tick = keys[rng.bounded(quint32(keys.size()))].tick;
+        if (auto c = rng.bounded(2) ? removeCameraKeyCommand(&doc, tick)
+                                    : moveCameraKeyCommand(&doc, tick, rng.bounded(40)))
+            return c;
+    }
+    CameraKey k;
+    k.tick = rng.bounded(40);
+    k.center = QPointF(rng.bounded(2000.0) - 500.0, rng.bounded(2000.0) - 500.0);
+    k.zoom = 0.25 + rng.bounded(4.0);
+    k.rotation = rng.bounded(720.0) - 360.0;
+    k.easing = CameraEasing(rng.bounded(kCameraEasingCount));
+    k.control1 = QPointF(rng.bounded(1.0), rng.bounded(1.0));
+    k.control2 = QPointF(rng.bounded(1.0), rng.bounded(1.0));
+    if (auto c = setCameraKeyCommand(&doc, k, rng.bounded(2) ? -1 : 1))
+        return c;
+    return std::make_unique<SetCameraCommand>(&doc, doc.camera(), QStringLiteral("Camera"));
+}
+
 // Builds one random command against the document's current state (never null).
 inline std::unique_ptr<QUndoCommand> randomCommand(model::Document &doc, QRandomGenerator &rng)
 {
@@ -162,7 +188,9 @@ inline std::unique_ptr<QUndoCommand> randomCommand(model::Document &doc, QRandom
     const Picks p = randomPicks(doc, rng);
     const int n = doc.frameCount();
     const QPointF somewhere(rng.bounded(1000.0), rng.bounded(700.0));
-    switch (rng.bounded(24)) {
+    switch (rng.bounded(25)) {
+    case 24:
+        return randomCameraCommand(doc, rng);
     case 22:
         return randomFillCommand(doc, p.group, rng);
     case 23:

@@ -5,6 +5,7 @@
 #include "sound_support.h"
 #include "tst_file_sample.h"
 
+#include <finbook/model/camera/camera_commands.h>
 #include <finbook/model/recovery/recovery_store.h>
 #include <finbook/model/reference/reference_layer.h>
 
@@ -243,6 +244,23 @@ void withShadingAndMedia(Document &doc)
     doc.referenceLayer().setReference(r);
 }
 
+// The sample with a camera: one key of each easing, the Bézier's handles off the diagonal.
+void withCamera(Document &doc)
+{
+    buildSample(doc);
+    for (int e = 0; e < kCameraEasingCount; ++e) {
+        CameraKey k;
+        k.tick = 3 * e;
+        k.center = QPointF(40 + 10 * e, 30 - 5 * e);
+        k.zoom = 1.0 + 0.5 * e;
+        k.rotation = 15.0 * e;
+        k.easing = CameraEasing(e);
+        k.control1 = QPointF(0.2, -0.3);
+        k.control2 = QPointF(0.6, 1.4);
+        doc.undoStack()->push(setCameraKeyCommand(&doc, k).release());
+    }
+}
+
 // Every seed by name.
 std::vector<std::pair<QString, QByteArray>> seeds()
 {
@@ -268,9 +286,12 @@ std::vector<std::pair<QString, QByteArray>> seeds()
     withSvgReference(svg);
     Document shaded;
     withShadingAndMedia(shaded);
+    Document camera;
+    withCamera(camera);
     std::vector<std::pair<QString, QByteArray>> all{
         {QStringLiteral("shading_and_media.finbook"), serializeFinbook(shaded)},
         {QStringLiteral("media.finbook"), serializeFinbook(media)},
+        {QStringLiteral("camera.finbook"), serializeFinbook(camera)},
         {QStringLiteral("svg_reference.finbook"), serializeFinbook(svg)},
         {QStringLiteral("sample.finbook"), serializeFinbook(sample)},
         {QStringLiteral("cage_skeleton.finbook"), serializeFinbook(rigs)},
@@ -340,8 +361,9 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     std::set<QByteArray> tags;
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
-    for (const char *tag : {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE",
-                            "SKEL", "JOIN", "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite"})
+    for (const char *tag :
+         {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL", "JOIN",
+          "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR"})
         QVERIFY2(tags.count(tag), tag);
 }
 

@@ -33,12 +33,19 @@ struct ExportContext {
     {
         return renderBand(planIndex, 0, plan.size.height());
     }
+    // The camera for the entry, or null (the page as it is).
+    const CameraState *camera(std::size_t planIndex) const
+    {
+        return planIndex < plan.cameras.size() ? &plan.cameras[planIndex] : nullptr;
+    }
     QImage renderBand(std::size_t planIndex, int top, int rows) const
     {
         if (reference.isEmpty())
-            return renderExportBand(frame(planIndex), source.settings, plan, top, rows);
+            return renderExportBand(frame(planIndex), source.settings, plan, top, rows, nullptr, {},
+                                    camera(planIndex));
         return renderExportBand(frame(planIndex), source.settings, plan, top, rows,
-                                &reference.reference(), reference.picture(plan.frames[planIndex]));
+                                &reference.reference(), reference.picture(plan.frames[planIndex]),
+                                camera(planIndex));
     }
     // The frame as PNG bytes, rendered and compressed band by band: memory stays at one band
     // plus the compressed bytes whatever the picture's size. Empty when out of memory.
@@ -107,7 +114,8 @@ std::optional<ExportError> commitFile(PendingFile &pending, const ExportOptions 
 
 // One frame as an SVG document: plan.size pixels, a viewBox in canvas units, each stroke one
 // filled path (the union of tapered capsules between its samples).
-QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const ExportPlan &plan);
+QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const ExportPlan &plan,
+                    const CameraState *camera = nullptr);
 // The self-contained HTML page for the drawings' PNG images (in plan order).
 QByteArray flipbookHtml(const std::vector<QByteArray> &pngs, const ExportPlan &plan,
                         const QString &title, const QByteArray &soundWav = {});

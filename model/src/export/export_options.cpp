@@ -39,7 +39,8 @@ const FormatInfo &info(ExportFormat format)
 ExportSource exportSource(const Document &document)
 {
     return ExportSource{document.frames(), document.settings(),
-                        document.referenceLayer().reference(), document.soundtrack().clips()};
+                        document.referenceLayer().reference(), document.soundtrack().clips(),
+                        document.camera()};
 }
 
 std::optional<ExportFormat> exportFormatFromName(const QString &name)

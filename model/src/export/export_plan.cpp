@@ -50,6 +50,45 @@ std::optional<ExportError> resolveRange(const ExportSource &source, const Export
                                .arg(count));
     return std::nullopt;
 }
+// Sets plan.cameras when the document's camera shows anything but the page as it is, and splits
+// the holds the camera moves during into single ticks.
+std::optional<ExportError> frameThroughCamera(const ExportSource &source,
+                                              const ExportOptions &options, int first,
+                                              ExportPlan &plan)
+{
+    const CameraTrack &camera = source.camera;
+    const QSizeF page(source.settings.canvasSize);
+    if (camera.isEmpty() || !camera.isUsed(page))
+        return std::nullopt;
+    qint64 tick = exposureTicks(source.frames, 0, first - 1);
+    const auto moves = [&](qint64 start, int hold) {
+        return hold > 1 && camera.movesBetween(double(start), double(start + hold - 1));
+    };
+    bool split = false;
+    for (std::size_t i = 0, t = std::size_t(tick); i < plan.holds.size();
+         t += std::size_t(plan.holds[i++]))
+        split = split || moves(qint64(t), plan.holds[i]);
+    if (split && options.onePerDrawing)
+        return exportError(ExportErrorCode::BadOptions,
+                           Export::tr("The camera moves while a drawing is held, so one file per "
+                                      "drawing cannot show the shot; export one file per frame, "
+                                      "or without the camera."));
+    std::vector<int> frames, holds;
+    for (std::size_t i = 0; i < plan.frames.size(); ++i) {
+        const int hold = plan.holds[i];
+        const int pieces = moves(tick, hold) ? hold : 1;
+        for (int k = 0; k < pieces; ++k) {
+            frames.push_back(plan.frames[i]);
+            holds.push_back(pieces == 1 ? hold : 1);
+            plan.cameras.push_back(cameraAt(camera, double(tick + k), page));
+        }
+        tick += hold;
+    }
+    plan.frames = std::move(frames);
+    plan.holds = std::move(holds);
+    return std::nullopt;
+}
+
 } // namespace
 
 qint64 exposureTicks(const std::vector<Frame> &frames, int first, int last)
@@ -138,6 +177,9 @@ Expected<ExportPlan, ExportError> planExport(const ExportSource &source,
                               .arg(exportFormatName(options.format).toUpper()));
     // Video and GIF have no partial transparency outside the transparent mode: keep it opaque.
     plan.background = options.background.value_or(settings.background) | 0xff000000u;
+    if (options.camera && !exportsModel(options.format))
+        if (auto error = frameThroughCamera(source, options, first, plan))
+            return unexpected(*error);
     return plan;
 }
 
@@ -182,14 +224,16 @@ std::optional<ExportError> checkExportSize(const ExportPlan &plan, const ExportO
 }
 
 QImage renderExportFrame(const Frame &frame, const DocumentSettings &settings,
-                         const ExportPlan &plan, const Reference *reference, const QImage &picture)
+                         const ExportPlan &plan, const Reference *reference, const QImage &picture,
+                         const CameraState *camera)
 {
-    return renderExportBand(frame, settings, plan, 0, plan.size.height(), reference, picture);
+    return renderExportBand(frame, settings, plan, 0, plan.size.height(), reference, picture,
+                            camera);
 }
 
 QImage renderExportBand(const Frame &frame, const DocumentSettings &settings,
                         const ExportPlan &plan, int top, int rows, const Reference *reference,
-                        const QImage &picture)
+                        const QImage &picture, const CameraState *camera)
 {
     QImage image(QSize(plan.size.width(), std::max(0, rows)), QImage::Format_ARGB32_Premultiplied);
     if (image.isNull())
@@ -203,6 +247,8 @@ QImage renderExportBand(const Frame &frame, const DocumentSettings &settings,
         painter.translate((plan.size.width() - canvas.width() * scale) / 2,
                           (plan.size.height() - canvas.height() * scale) / 2 - top);
         painter.scale(scale, scale);
+        if (camera)
+            painter.setTransform(cameraTransform(*camera, canvas), true);
         RenderOptions options;
         options.paintBackground = false;
         if (reference)

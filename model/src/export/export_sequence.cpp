@@ -77,7 +77,8 @@ std::optional<ExportError> refuseExisting(const QString &folder, const SequenceF
 QByteArray encodeFrame(const ExportContext &context, std::size_t planIndex)
 {
     if (context.options.format == ExportFormat::SvgSequence)
-        return frameSvg(context.frame(planIndex), context.source.settings, context.plan);
+        return frameSvg(context.frame(planIndex), context.source.settings, context.plan,
+                        context.camera(planIndex));
     return context.png(planIndex);
 }
 

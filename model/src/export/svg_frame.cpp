@@ -232,7 +232,8 @@ void appendCutOutPose(QByteArray &svg, const StrokeGroup &group, const DocumentS
 }
 } // namespace
 
-QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const ExportPlan &plan)
+QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const ExportPlan &plan,
+                    const CameraState *camera)
 {
     const QSize canvas = settings.canvasSize;
     QByteArray svg;
@@ -246,7 +247,20 @@ QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const 
         svg += "<rect width=\"" + QByteArray::number(canvas.width()) + "\" height=\"" +
                QByteArray::number(canvas.height()) + "\" fill=\"" + colour(plan.background) +
                "\"/>\n";
-    const QRectF visible(QPointF(0, 0), QSizeF(canvas));
+    // Through a camera, the page is drawn in a group that the camera moves, and what is kept
+    // of each stroke is what the shot shows.
+    const QRectF visible = camera ? cameraFrame(*camera, QSizeF(canvas)).boundingRect()
+                                  : QRectF(QPointF(0, 0), QSizeF(canvas));
+    QByteArray closing;
+    if (camera) {
+        const QTransform t = cameraTransform(*camera, QSizeF(canvas));
+        svg += "<g transform=\"matrix(" + QByteArray::number(t.m11(), 'g', 10) + ' ' +
+               QByteArray::number(t.m12(), 'g', 10) + ' ' + QByteArray::number(t.m21(), 'g', 10) +
+               ' ' + QByteArray::number(t.m22(), 'g', 10) + ' ' +
+               QByteArray::number(t.dx(), 'g', 10) + ' ' + QByteArray::number(t.dy(), 'g', 10) +
+               ")\">\n";
+        closing = "</g>\n";
+    }
     // A drawing referenced more than once in the frame (a crafted file may reference one
     // stroke thousands of times) is written once in <defs> and placed with <use>.
     std::unordered_map<const std::vector<StrokePoint> *, int> uses;
@@ -307,7 +321,7 @@ QByteArray frameSvg(const Frame &frame, const DocumentSettings &settings, const 
         }
         svg += "</g>\n";
     }
-    svg += "</svg>\n";
+    svg += closing + "</svg>\n";
     return svg;
 }
 

@@ -97,7 +97,8 @@ void Autosaver::autosaveNow()
         RecoveryInfo{m_title, m_originalPath, QDateTime::currentDateTimeUtc(), m_doc->frameCount()},
         copyPath(),
         m_doc->referenceLayer().reference(),
-        m_doc->soundtrack().clips()};
+        m_doc->soundtrack().clips(),
+        m_doc->camera()};
     QMetaObject::invokeMethod(
         m_writer, [writer = m_writer, s = std::move(snapshot)] { writer->write(s); },
         Qt::QueuedConnection);

@@ -63,7 +63,7 @@ std::unique_ptr<QLockFile> lockFor(const QString &path)
 
 QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
                              const RecoveryInfo &info, const Reference &reference,
-                             const std::vector<SoundClip> &sound)
+                             const std::vector<SoundClip> &sound, const CameraTrack &camera)
 {
     const QJsonObject description{
         {QStringLiteral("title"), info.title},
@@ -78,7 +78,7 @@ QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSet
     if (!reference.isEmpty())
         for (AncillarySection &section : file_format::referenceSections(reference))
             extra.push_back(std::move(section));
-    return serializeFinbook(frames, settings, extra, sound);
+    return serializeFinbook(frames, settings, extra, sound, camera);
 }
 
 QString recoveryFolder()

@@ -25,6 +25,7 @@ public:
         QString path;
         Reference reference; // the reference layer (its media bytes shared)
         std::vector<SoundClip> sound;
+        CameraTrack camera;
     };
 
     void write(const Snapshot &snapshot)
@@ -33,7 +34,7 @@ public:
         try {
             const QByteArray bytes =
                 recoveryCopyBytes(snapshot.frames, snapshot.settings, snapshot.info,
-                                  snapshot.reference, snapshot.sound);
+                                  snapshot.reference, snapshot.sound, snapshot.camera);
             if (const auto failure = writeFileAtomically(snapshot.path, bytes))
                 error = describeWriteFailure(*failure, QFileInfo(snapshot.path).absolutePath());
         } catch (const std::bad_alloc &) {

@@ -21,6 +21,7 @@ enum class CommandId : int {
     MoveJoint,
     EditReference,
     SetCloseGap,
+    EditCamera,
 };
 
 class DocumentCommand : public QUndoCommand {

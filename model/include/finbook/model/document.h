@@ -5,6 +5,7 @@
 // past-tense signal so views, thumbnails and caches can follow.
 #pragma once
 
+#include <finbook/model/camera/camera_track.h>
 #include <finbook/model/types.h>
 
 #include <QObject>
@@ -48,6 +49,8 @@ public:
 
     // --- reading
     const DocumentSettings &settings() const { return m_settings; }
+    // The camera's keys (camera/camera_track.h); reset() empties it, the loader fills it after.
+    const CameraTrack &camera() const { return m_camera; }
     const std::vector<Frame> &frames() const { return m_frames; }
     int frameCount() const { return int(m_frames.size()); }
     const Frame &frameAt(int index) const { return m_frames.at(std::size_t(index)); }
@@ -98,6 +101,9 @@ public:
     void setDeformed(Id groupId, DeformedStrokesPtr deformed);
 
     void setSettings(const DocumentSettings &settings);
+    // Replaces the camera's keys (camera/camera_commands.h); `camera` must be valid
+    // (isValidCameraTrack).
+    void setCamera(CameraTrack camera);
 
 signals:
     void documentReset();
@@ -112,6 +118,7 @@ signals:
     void constraintsChanged(Id groupId);
     void deformedChanged(Id groupId);
     void settingsChanged();
+    void cameraChanged();
 
 private:
     StrokeGroup &mutableGroup(Id groupId);
@@ -122,6 +129,7 @@ private:
 
     std::vector<Frame> m_frames;
     DocumentSettings m_settings;
+    CameraTrack m_camera;
     Id m_nextId = 1;
     std::unique_ptr<Soundtrack> m_soundtrack;
     QUndoStack m_undoStack;

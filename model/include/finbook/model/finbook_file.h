@@ -66,6 +66,7 @@ struct LoadedDocument {
     Reference reference; // the reference layer (empty when the file has none)
     quint32 formatVersion = kFinbookFormatVersion;
     std::vector<SoundClip> sound; // the soundtrack's clips ("SOND" sections)
+    CameraTrack camera;           // the camera's keys ("CAMR" section)
 };
 
 // Puts what was loaded into `document` (Document::reset, then its soundtrack).
@@ -96,11 +97,12 @@ struct AncillarySection {
     QByteArray payload;
 };
 // The same bytes serializeFinbook(document) gives for a document holding `frames`,
-// `settings` and the sound clips `sound` (a snapshot; safe on any thread), plus `ancillary`
-// sections before the end.
+// `settings`, the sound clips `sound` and the camera `camera` (a snapshot; safe on any
+// thread), plus `ancillary` sections before the end.
 QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSettings &settings,
                             const std::vector<AncillarySection> &ancillary = {},
-                            const std::vector<SoundClip> &sound = {});
+                            const std::vector<SoundClip> &sound = {},
+                            const CameraTrack &camera = {});
 // The payload of the ancillary section `tag` of a file, if it has one with a correct checksum.
 std::optional<QByteArray> readAncillarySection(const QByteArray &bytes, const char (&tag)[5]);
 // Refuses to replace a file with bytes that would not open again (a document holding NaN or

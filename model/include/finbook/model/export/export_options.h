@@ -4,6 +4,7 @@
 // Export dialog and `finbook export` only fill them in.
 #pragma once
 
+#include <finbook/model/camera/camera_track.h>
 #include <finbook/model/reference/reference.h>
 #include <finbook/model/sound/sound_clip.h>
 #include <finbook/model/types.h>
@@ -53,6 +54,9 @@ struct ExportOptions {
     QString baseName = QStringLiteral("frame"); // sequences: <baseName>_0001.png, ...
     QString title;                              // HTML: the page title
     bool includeReference = false;              // paint the reference layer under the drawing
+    // Through the document's camera (camera/camera_track.h), when it has keys: each exported
+    // picture is the shot at its tick. Off: the whole page, as without a camera.
+    bool camera = true;
     // Frames the user allowed this export to write (see exportFrameCount). 0: the default
     // limits, kMaxSequenceFiles files or kMaxVideoSeconds of video (export_plan.h); a larger
     // export is refused with TooLarge until the user sets this to at least its frame count.
@@ -70,6 +74,7 @@ struct ExportSource {
     DocumentSettings settings;
     Reference reference = {};          // the reference layer (its media bytes shared, not copied)
     std::vector<SoundClip> sound = {}; // the soundtrack: MP4 and WebM carry its mix
+    CameraTrack camera = {};           // the camera's keys
 };
 ExportSource exportSource(const Document &document);
 

@@ -20,6 +20,10 @@ struct ExportPlan {
     bool loop = true;
     bool transparent = false;
     QRgb background = 0xffffffff; // opaque; unused when transparent
+    // The camera at the first tick of each entry (same length as `frames`), or empty: the
+    // page as it is. Where the camera moves during a drawing's hold, the hold is split into
+    // entries of one tick each (the same drawing, a new shot each tick).
+    std::vector<CameraState> cameras;
 };
 
 // An export of a few kilobytes can ask for millions of ticks. Without options.maxFrames an
@@ -48,10 +52,11 @@ std::optional<ExportError> checkExportSize(const ExportPlan &plan, const ExportO
 
 // The frame as it is exported: plan.size pixels, QImage::Format_ARGB32 (straight alpha), the
 // canvas scaled to fit and centred, over the plan's background unless it is transparent.
-// `reference` (optional) is painted under the drawing with `picture` as its media.
+// `reference` (optional) is painted under the drawing with `picture` as its media. With
+// `camera`, the page is seen through it (cameraTransform): the picture is the shot.
 QImage renderExportFrame(const Frame &frame, const DocumentSettings &settings,
                          const ExportPlan &plan, const Reference *reference = nullptr,
-                         const QImage &picture = {});
+                         const QImage &picture = {}, const CameraState *camera = nullptr);
 
 // Pixels rendered at once by exports that go band by band: a 16384-pixel-wide picture
 // renders 256 rows (16 MiB) at a time instead of 1 GiB for the whole frame.
@@ -61,7 +66,8 @@ constexpr qint64 kExportBandPixels = qint64(1) << 22;
 // band cannot be allocated.
 QImage renderExportBand(const Frame &frame, const DocumentSettings &settings,
                         const ExportPlan &plan, int top, int rows,
-                        const Reference *reference = nullptr, const QImage &picture = {});
+                        const Reference *reference = nullptr, const QImage &picture = {},
+                        const CameraState *camera = nullptr);
 
 // The rows of one band for plan.size: kExportBandPixels / width, at least 1, at most the
 // height (a picture of up to kExportBandPixels pixels is one band).

@@ -8,6 +8,7 @@
 // running Finbooks therefore never list, take or delete each other's copies.
 #pragma once
 
+#include <finbook/model/camera/camera_track.h>
 #include <finbook/model/reference/reference.h>
 #include <finbook/model/sound/sound_clip.h>
 #include <finbook/model/types.h>
@@ -39,10 +40,12 @@ struct RecoveryCopy {
 };
 
 // The bytes of a recovery copy: the document (a snapshot; any thread) with its description and
-// a thumbnail rendered here, the reference layer when there is one and the sound clips `sound`.
+// a thumbnail rendered here, the reference layer when there is one, the sound clips `sound`
+// and the camera `camera`.
 QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
                              const RecoveryInfo &info, const Reference &reference = {},
-                             const std::vector<SoundClip> &sound = {});
+                             const std::vector<SoundClip> &sound = {},
+                             const CameraTrack &camera = {});
 // Copies larger than this are not listed (nor read): a recovery copy is an autosave of a
 // drawing that had to fit in memory.
 constexpr qint64 kMaxRecoveryCopyBytes = qint64(4) << 30;
