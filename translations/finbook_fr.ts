@@ -538,17 +538,17 @@
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="328"/>
+        <location filename="../app/cli_export.cpp" line="329"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="336"/>
+        <location filename="../app/cli_export.cpp" line="337"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="338"/>
+        <location filename="../app/cli_export.cpp" line="339"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -2585,6 +2585,39 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::BezierEditorDialog</name>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="117"/>
+        <source>Camera Easing Curve</source>
+        <translation>Courbe d’accélération de la caméra</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="124"/>
+        <source>Ease</source>
+        <translation>Douce</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="125"/>
+        <source>Ease In</source>
+        <translation>Départ lent</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="126"/>
+        <source>Ease Out</source>
+        <translation>Arrivée lente</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="127"/>
+        <source>Ease In and Out</source>
+        <translation>Départ et arrivée lents</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="128"/>
+        <source>Overshoot</source>
+        <translation>Dépassement</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::BoneTool</name>
     <message>
         <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="40"/>
@@ -2799,6 +2832,59 @@
         <location filename="../ui/src/cage/tool_cage.cpp" line="258"/>
         <source>A cage needs at least three corners.</source>
         <translation>Une cage doit avoir au moins trois coins.</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CameraTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="29"/>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="189"/>
+        <source>Easing to the Next Key</source>
+        <translation>Accélération jusqu’à la clé suivante</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="193"/>
+        <source>Linear</source>
+        <translation>Linéaire</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="194"/>
+        <source>Ease In</source>
+        <translation>Départ lent</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="195"/>
+        <source>Ease Out</source>
+        <translation>Arrivée lente</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="196"/>
+        <source>Ease In and Out</source>
+        <translation>Départ et arrivée lents</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="197"/>
+        <source>Hold, Then Cut</source>
+        <translation>Tenir, puis couper</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="208"/>
+        <source>Bézier Curve...</source>
+        <translation>Courbe de Bézier...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="214"/>
+        <source>Delete Camera Key</source>
+        <translation>Supprimer la clé de caméra</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="217"/>
+        <source>Reset Camera</source>
+        <translation>Réinitialiser la caméra</translation>
     </message>
 </context>
 <context>
@@ -3512,63 +3598,63 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window.cpp" line="154"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="175"/>
+        <location filename="../ui/src/window/main_window.cpp" line="179"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window.cpp" line="180"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window.cpp" line="183"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window.cpp" line="203"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window.cpp" line="204"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="237"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>La référence « %1 » ne peut pas être affichée : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window.cpp" line="246"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window.cpp" line="257"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window.cpp" line="258"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="259"/>
+        <location filename="../ui/src/window/main_window.cpp" line="263"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window.cpp" line="264"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -3848,57 +3934,62 @@
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="231"/>
+        <source>&amp;Camera View</source>
+        <translation>Vue &amp;caméra</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="276"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="327"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
@@ -4207,7 +4298,7 @@
     <name>finbook::ui::PlaybackController</name>
     <message>
         <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
         <source>Pl&amp;ay</source>
         <translation>&amp;Lecture</translation>
     </message>
@@ -4227,7 +4318,7 @@
         <translation>Recommencer au début à la fin de la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;use</translation>
     </message>

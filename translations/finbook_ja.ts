@@ -538,17 +538,17 @@
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="328"/>
+        <location filename="../app/cli_export.cpp" line="329"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="336"/>
+        <location filename="../app/cli_export.cpp" line="337"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="338"/>
+        <location filename="../app/cli_export.cpp" line="339"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -2573,6 +2573,39 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::BezierEditorDialog</name>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="117"/>
+        <source>Camera Easing Curve</source>
+        <translation>カメラのイージングカーブ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="124"/>
+        <source>Ease</source>
+        <translation>イーズ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="125"/>
+        <source>Ease In</source>
+        <translation>イーズイン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="126"/>
+        <source>Ease Out</source>
+        <translation>イーズアウト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="127"/>
+        <source>Ease In and Out</source>
+        <translation>イーズインとアウト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/bezier_editor.cpp" line="128"/>
+        <source>Overshoot</source>
+        <translation>オーバーシュート</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::BoneTool</name>
     <message>
         <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="40"/>
@@ -2786,6 +2819,59 @@
         <location filename="../ui/src/cage/tool_cage.cpp" line="258"/>
         <source>A cage needs at least three corners.</source>
         <translation>ケージには少なくとも 3 つの頂点が必要です。</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CameraTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="29"/>
+        <source>Camera</source>
+        <translation>カメラ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="189"/>
+        <source>Easing to the Next Key</source>
+        <translation>次のキーへのイージング</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="193"/>
+        <source>Linear</source>
+        <translation>リニア</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="194"/>
+        <source>Ease In</source>
+        <translation>イーズイン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="195"/>
+        <source>Ease Out</source>
+        <translation>イーズアウト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="196"/>
+        <source>Ease In and Out</source>
+        <translation>イーズインとアウト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="197"/>
+        <source>Hold, Then Cut</source>
+        <translation>保持してカット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="208"/>
+        <source>Bézier Curve...</source>
+        <translation>ベジェ曲線...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="214"/>
+        <source>Delete Camera Key</source>
+        <translation>カメラキーを削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/camera/tool_camera.cpp" line="217"/>
+        <source>Reset Camera</source>
+        <translation>カメラをリセット</translation>
     </message>
 </context>
 <context>
@@ -3495,63 +3581,63 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window.cpp" line="154"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="175"/>
+        <location filename="../ui/src/window/main_window.cpp" line="179"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window.cpp" line="180"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window.cpp" line="183"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window.cpp" line="203"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window.cpp" line="204"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="237"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>参照「%1」を表示できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window.cpp" line="246"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window.cpp" line="257"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window.cpp" line="258"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="259"/>
+        <location filename="../ui/src/window/main_window.cpp" line="263"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window.cpp" line="264"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -3830,57 +3916,62 @@
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="231"/>
+        <source>&amp;Camera View</source>
+        <translation>カメラビュー(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="251"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="262"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="276"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="320"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="327"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
@@ -4189,7 +4280,7 @@
     <name>finbook::ui::PlaybackController</name>
     <message>
         <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
         <source>Pl&amp;ay</source>
         <translation>再生(&amp;P)</translation>
     </message>
@@ -4209,7 +4300,7 @@
         <translation>再生範囲の最後まで来たら最初から再生</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="233"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
         <source>P&amp;ause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>

@@ -268,9 +268,9 @@ Layout readLayout(FileReader &file, qint64 wholeSectionBytes)
                     throw Broken{FileErrorCode::BadValue};
                 break;
             }
-        } else if (t == kTagSound && next == std::size(order)) {
-            // A sound clip (after the frames, as the reader wants it): a thumbnail needs no
-            // sound, so its bytes are skipped unread.
+        } else if ((t == kTagSound || t == kTagCamera) && next == std::size(order)) {
+            // A sound clip or the camera (after the frames, as the reader wants them): a
+            // thumbnail shows the first drawing on its page, so their bytes are skipped unread.
         } else if (t == kTagLight && next == std::size(order) && length <= 64) {
             // The light of shaded fills: the thumbnail is lit as the opened file is. Read
             // whole (16 bytes) and checked as the model's reader checks it; the last one

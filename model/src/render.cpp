@@ -452,6 +452,11 @@ QImage renderFrameBand(const Frame &frame, const DocumentSettings &settings, QSi
     painter.translate((size.width() - canvas.width() * scale) / 2,
                       (size.height() - canvas.height() * scale) / 2 - top);
     painter.scale(scale, scale);
+    if (options.camera) {
+        if (options.paintBackground)
+            painter.fillRect(QRectF(QPointF(0, 0), canvas), QColor::fromRgba(settings.background));
+        painter.setTransform(cameraTransform(*options.camera, canvas), true);
+    }
     paintFrame(painter, frame, settings, options);
     return image;
 }

@@ -77,6 +77,13 @@ void CanvasWidget::connectDocument()
     connect(m_state, &EditorState::playingChanged, this, qOverload<>(&QWidget::update));
     connect(m_state, &EditorState::showMeshChanged, this, qOverload<>(&QWidget::update));
     connect(m_state, &EditorState::selectionChanged, this, qOverload<>(&QWidget::update));
+    // The camera's frame is drawn over the page, and Camera View looks through it.
+    connect(doc, &model::Document::cameraChanged, this, qOverload<>(&QWidget::update));
+    connect(m_state, &EditorState::cameraViewChanged, this, qOverload<>(&QWidget::update));
+    connect(m_state, &EditorState::tickChanged, this, [this] {
+        if (!document()->camera().isEmpty())
+            update();
+    });
 }
 
 void CanvasWidget::frameEdited(model::Id frameId)
@@ -143,8 +150,31 @@ void CanvasWidget::updateCanvasRect(const QRectF &canvasRect)
 
 QRectF CanvasWidget::pageRect() const
 {
-    return canvasToWidget().mapRect(
+    return screenTransform().mapRect(
         QRectF(QPointF(0, 0), QSizeF(document()->settings().canvasSize)));
+}
+
+// Camera View: the shot, painted straight through the camera (turned, so the cached layers,
+// drawn axis-aligned, do not serve), without the onion skin.
+void CanvasWidget::paintShot(QPainter &painter, const QRect &dirty) const
+{
+    const QRectF shot = pageRect();
+    painter.save();
+    painter.setClipRect(shot & QRectF(dirty));
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setTransform(canvasToWidget());
+    model::ReferenceLayer &reference = document()->referenceLayer();
+    if (!reference.isEmpty()) {
+        const QImage picture = reference.pictureWithoutWaiting(m_state->currentFrameIndex());
+        if (!picture.isNull())
+            model::paintReference(painter, reference.reference(), picture);
+    }
+    if (const model::Frame *frame = shownFrame()) {
+        model::RenderOptions options;
+        options.paintBackground = false;
+        model::paintFrame(painter, *frame, document()->settings(), options);
+    }
+    painter.restore();
 }
 
 QImage CanvasWidget::newLayerImage(QImage recycled) const
@@ -251,11 +281,16 @@ void CanvasWidget::paintPage(QPainter &painter) const
 
 void CanvasWidget::paintEvent(QPaintEvent *event)
 {
-    ensureLayers();
     QPainter painter(this);
     const QRect dirty = event->rect();
     painter.fillRect(dirty, kDeskColor);
     paintPage(painter);
+    if (m_state->cameraView()) {
+        paintShot(painter, dirty);
+        paintOverlays(painter);
+        return;
+    }
+    ensureLayers();
     // The reference lies under the onion skin and the drawing, clipped to the page.
     model::ReferenceLayer &reference = document()->referenceLayer();
     if (!reference.isEmpty()) {
@@ -276,7 +311,11 @@ void CanvasWidget::paintEvent(QPaintEvent *event)
     painter.setPen(QPen(kBorderColor, 1));
     painter.setBrush(Qt::NoBrush);
     painter.drawRect(pageRect().adjusted(-0.5, -0.5, 0.5, 0.5));
+    paintOverlays(painter);
+}
 
+void CanvasWidget::paintOverlays(QPainter &painter)
+{
     // Playback shows the animation, not the editing handles (pins, cages, bones, the mesh, the
     // tool's cursor); scrubbing is not playing, so they stay while the timeline is dragged.
     if (m_state->isPlaying())

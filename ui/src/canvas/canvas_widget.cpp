@@ -93,19 +93,40 @@ void CanvasWidget::addOverlay(std::unique_ptr<CanvasOverlay> overlay)
 
 // --- view --------------------------------------------------------------------------------
 
-QTransform CanvasWidget::canvasToWidget() const
+QTransform CanvasWidget::screenTransform() const
 {
     return QTransform(m_zoom, 0, 0, m_zoom, m_offset.x(), m_offset.y());
 }
 
+QTransform CanvasWidget::cameraViewTransform() const
+{
+    if (!m_state->cameraView())
+        return {};
+    const model::Document &doc = *document();
+    const QSizeF page(doc.settings().canvasSize);
+    return model::cameraTransform(
+        model::cameraAt(doc.camera(), double(m_state->currentTick()), page), page);
+}
+
+QTransform CanvasWidget::canvasToWidget() const
+{
+    return cameraViewTransform() * screenTransform();
+}
+
 QPointF CanvasWidget::mapToCanvas(const QPointF &widgetPos) const
 {
-    return (widgetPos - m_offset) / m_zoom;
+    if (!m_state->cameraView())
+        return (widgetPos - m_offset) / m_zoom;
+    bool invertible = false;
+    const QTransform back = canvasToWidget().inverted(&invertible);
+    return invertible ? back.map(widgetPos) : (widgetPos - m_offset) / m_zoom;
 }
 
 QPointF CanvasWidget::mapFromCanvas(const QPointF &canvasPos) const
 {
-    return canvasPos * m_zoom + m_offset;
+    if (!m_state->cameraView())
+        return canvasPos * m_zoom + m_offset;
+    return canvasToWidget().map(canvasPos);
 }
 
 void CanvasWidget::setZoom(qreal zoom, const QPointF &widgetAnchor)
@@ -113,9 +134,10 @@ void CanvasWidget::setZoom(qreal zoom, const QPointF &widgetAnchor)
     if (!std::isfinite(zoom))
         return;
     zoom = std::clamp(zoom, kMinZoom, kMaxZoom);
-    const QPointF anchorCanvas = mapToCanvas(widgetAnchor);
+    // In the view's own space (the page, or the shot in Camera View).
+    const QPointF anchor = (widgetAnchor - m_offset) / m_zoom;
     m_zoom = zoom;
-    m_offset = widgetAnchor - anchorCanvas * m_zoom;
+    m_offset = widgetAnchor - anchor * m_zoom;
     m_fitted = false;
     update();
     emit zoomChanged(m_zoom);

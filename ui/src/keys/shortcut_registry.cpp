@@ -54,6 +54,7 @@ const QHash<QString, KeyList> &ShortcutRegistry::defaultMap()
         {QStringLiteral("view.actualSize"), portable({"Ctrl+1"})},
         {QStringLiteral("view.onionSkin"), portable({"O"})},
         {QStringLiteral("view.showMesh"), portable({"M"})},
+        {QStringLiteral("view.cameraView"), portable({"Shift+V"})},
         {QStringLiteral("tool.pen"), portable({"B"})},
         {QStringLiteral("tool.eraser"), portable({"E"})},
         {QStringLiteral("tool.select"), portable({"V"})},

@@ -141,6 +141,7 @@ void PlaybackController::pause()
     if (m_external)
         m_external->stop();
     m_playing = false;
+    m_state->setPlaybackTick(-1);
     m_state->setPlaying(false);
     updateActions();
     emit playingChanged(false);
@@ -201,10 +202,14 @@ void PlaybackController::tick()
         // The sound starts again with the range: the clock restarts there too.
         const qint64 wrapped = now % std::max<qint64>(1, playRangeTicks(doc));
         show(frameAtTick(doc, wrapped, loop));
+        m_state->setPlaybackTick(firstTickOfRange(doc) + wrapped);
         rebase(wrapped);
         return;
     }
     show(frameAtTick(doc, now, loop));
+    const qint64 range = std::max<qint64>(1, playRangeTicks(doc));
+    m_state->setPlaybackTick(firstTickOfRange(doc) +
+                             (loop ? now % range : std::min(now, range - 1)));
     scheduleTick(ticks + 1);
 }
 

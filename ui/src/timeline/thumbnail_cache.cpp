@@ -36,6 +36,9 @@ ThumbnailCache::ThumbnailCache(model::Document *document, QObject *parent)
             &ThumbnailCache::invalidateAll);
     connect(&m_doc->referenceLayer(), &model::ReferenceLayer::pictureDecoded, this,
             &ThumbnailCache::pictureDecoded);
+    // Each thumbnail knows the shot it shows (Entry::shot): after a camera edit the ones whose
+    // shot changed are drawn again as they come into view.
+    connect(m_doc, &model::Document::cameraChanged, this, &ThumbnailCache::thumbnailsInvalidated);
     connect(m_doc, &model::Document::settingsChanged, this, [this] {
         const model::DocumentSettings &s = m_doc->settings();
         if (s.canvasSize == m_canvasSize && s.background == m_background &&
@@ -78,16 +81,31 @@ quint64 ThumbnailCache::currentRevision(model::Id frameId) const
     return (m_generation << 40) + m_revisions.value(frameId, 0);
 }
 
+std::optional<model::CameraState> ThumbnailCache::shotOf(model::Id frameId) const
+{
+    const model::CameraTrack &camera = m_doc->camera();
+    const QSizeF page(m_doc->settings().canvasSize);
+    if (camera.isEmpty() || !camera.isUsed(page))
+        return std::nullopt;
+    qint64 tick = 0;
+    for (const model::Frame &f : m_doc->frames()) {
+        if (f.id == frameId)
+            break;
+        tick += std::clamp(f.hold, 1, model::kMaxHold);
+    }
+    return model::cameraAt(camera, double(tick), page);
+}
+
 bool ThumbnailCache::isCurrent(model::Id frameId) const
 {
     const Entry *e = m_cache.object(frameId);
-    return e && e->revision == currentRevision(frameId);
+    return e && e->revision == currentRevision(frameId) && e->shot == shotOf(frameId);
 }
 
 QPixmap ThumbnailCache::thumbnail(model::Id frameId)
 {
     const Entry *e = m_cache.object(frameId); // also marks it most recently used
-    if (e && e->revision == currentRevision(frameId))
+    if (e && e->revision == currentRevision(frameId) && e->shot == shotOf(frameId))
         return e->pixmap;
     if (m_awaiting.contains(frameId)) // drawn again when its reference picture comes
         return e ? e->pixmap : QPixmap();
@@ -126,14 +144,18 @@ void ThumbnailCache::store(model::Id frameId, const QImage &picture)
 {
     const model::Frame *frame = m_doc->frame(frameId);
     const QSize device = (QSizeF(m_size) * m_dpr).toSize().expandedTo(QSize(1, 1));
-    QImage image =
-        picture.isNull()
-            ? model::renderFrame(*frame, m_doc->settings(), device)
-            : model::renderFrameWithReference(*frame, m_doc->settings(), device,
-                                              m_doc->referenceLayer().reference(), picture);
+    model::RenderOptions options;
+    options.camera = shotOf(frameId);
+    if (!picture.isNull()) {
+        const model::Reference &reference = m_doc->referenceLayer().reference();
+        options.underlay = [&](QPainter &painter) {
+            model::paintReference(painter, reference, picture);
+        };
+    }
+    QImage image = model::renderFrame(*frame, m_doc->settings(), device, options);
     image.setDevicePixelRatio(m_dpr);
-    m_cache.insert(frameId,
-                   new Entry{QPixmap::fromImage(std::move(image)), currentRevision(frameId)});
+    m_cache.insert(frameId, new Entry{QPixmap::fromImage(std::move(image)),
+                                      currentRevision(frameId), options.camera});
     ++m_rendered;
     emit thumbnailRendered(frameId);
 }

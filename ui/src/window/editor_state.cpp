@@ -55,9 +55,40 @@ EditorState::EditorState(model::Document *document, QObject *parent)
                                                    current) == m_frameSelection.end())
             setSelectedFrames({});
     });
+    connect(this, &EditorState::currentFrameChanged, this, [this] {
+        if (m_playbackTick < 0)
+            emit tickChanged(currentTick());
+    });
     connect(m_doc, &model::Document::framesRemoved, this, &EditorState::frameSelectionChanged);
     connect(m_doc, &model::Document::documentReset, this, [this] { setSelectedFrames({}); });
     clampToDocument();
+}
+
+qint64 EditorState::currentTick() const
+{
+    if (m_playbackTick >= 0)
+        return m_playbackTick;
+    qint64 tick = 0;
+    for (int i = 0; i < m_frameIndex && i < m_doc->frameCount(); ++i)
+        tick += std::clamp(m_doc->frameAt(i).hold, 1, model::kMaxHold);
+    return tick;
+}
+
+void EditorState::setPlaybackTick(qint64 tick)
+{
+    tick = std::max<qint64>(tick, -1);
+    if (tick == m_playbackTick)
+        return;
+    m_playbackTick = tick;
+    emit tickChanged(currentTick());
+}
+
+void EditorState::setCameraView(bool on)
+{
+    if (on == m_cameraView)
+        return;
+    m_cameraView = on;
+    emit cameraViewChanged(on);
 }
 
 std::vector<int> EditorState::selectedFrames() const

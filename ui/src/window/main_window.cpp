@@ -3,6 +3,8 @@
 #include <finbook/model/document.h>
 #include <finbook/model/recovery/autosaver.h>
 #include <finbook/model/reference/reference_layer.h>
+#include <finbook/ui/camera/camera_frame_overlay.h>
+#include <finbook/ui/camera/tool_camera.h>
 #include <finbook/ui/canvas/canvas_tool.h>
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/i18n/action_text.h>
@@ -109,6 +111,8 @@ void MainWindow::createCanvasAndTools()
     addTool(std::make_unique<SelectTool>());
     addTool(std::make_unique<HandTool>());
     addTool(std::make_unique<ReferenceTool>());
+    addTool(std::make_unique<CameraTool>());
+    m_canvas->addOverlay(std::make_unique<CameraFrameOverlay>(m_canvas));
     auto *brush = new BrushToolBar(m_pen, this);
     addToolBar(Qt::TopToolBarArea, brush);
     // The eraser's mode and size take the brush's place while the eraser is in hand: both at

@@ -227,7 +227,13 @@ void MainWindow::createViewMenu()
     mesh->setChecked(m_state->showMesh());
     connect(mesh, &QAction::toggled, m_state, &EditorState::setShowMesh);
     connect(m_state, &EditorState::showMeshChanged, mesh, &QAction::setChecked);
-    m_viewMenu->addActions({onion, onionSettings, mesh});
+    // The shot as the audience will see it: the canvas looks through the camera.
+    QAction *cameraView = makeAction(QStringLiteral("view.cameraView"), tr("&Camera View"));
+    cameraView->setCheckable(true);
+    cameraView->setChecked(m_state->cameraView());
+    connect(cameraView, &QAction::toggled, m_state, &EditorState::setCameraView);
+    connect(m_state, &EditorState::cameraViewChanged, cameraView, &QAction::setChecked);
+    m_viewMenu->addActions({onion, onionSettings, mesh, cameraView});
     m_viewMenu->addSeparator();
     m_docksMenu = m_viewMenu->addMenu(tr("&Panels"));
     m_docksMenu->addAction(m_fileBar->toggleViewAction());

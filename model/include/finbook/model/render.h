@@ -25,6 +25,9 @@ struct RenderOptions {
     // Painted on the page after its background, clipped to it, under the drawing (the
     // reference picture of thumbnails and exports). Empty: nothing.
     std::function<void(QPainter &)> underlay;
+    // renderFrame: the page seen through this camera (the picture is the shot, the
+    // background all over it). Empty: the page as it is.
+    std::optional<CameraState> camera;
 };
 
 // Liang–Barsky: cuts segment a→b to the part inside `r`; false when none of it is (or it is

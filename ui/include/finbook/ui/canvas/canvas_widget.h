@@ -56,6 +56,8 @@ public:
 
     // --- view
     qreal zoom() const { return m_zoom; }
+    // Canvas (page) coordinates to widget pixels: the zoom and pan, and in Camera View
+    // (EditorState::cameraView) the camera's shot at the current tick before them.
     QTransform canvasToWidget() const;
     QPointF mapToCanvas(const QPointF &widgetPos) const;
     QPointF mapFromCanvas(const QPointF &canvasPos) const;
@@ -118,7 +120,11 @@ private:
     QImage renderOnionLayer(QImage recycled) const;
     QImage newLayerImage(QImage recycled) const;
     void rasterize(QImage &image, const std::function<void(StrokeRaster &)> &draw) const;
-    QRectF pageRect() const; // the page in widget coordinates
+    QRectF pageRect() const;            // the page (in Camera View the shot) in widget coordinates
+    QTransform screenTransform() const; // the view's space (page or shot) to the widget
+    QTransform cameraViewTransform() const; // page to shot in Camera View, else identity
+    void paintShot(QPainter &painter, const QRect &dirty) const;
+    void paintOverlays(QPainter &painter);
     void paintPage(QPainter &painter) const;
     void clampPan();
     void setPanning(bool spaceHeld);

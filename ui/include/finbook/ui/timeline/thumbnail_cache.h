@@ -19,6 +19,7 @@
 #include <QTimer>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace finbook::ui {
@@ -55,7 +56,11 @@ private:
     struct Entry {
         QPixmap pixmap;
         quint64 revision = 0;
+        std::optional<model::CameraState> shot; // the camera it was seen through
     };
+    // The camera at the frame's first tick, when the document's camera frames anything but
+    // the page (thumbnails show the shot, as playback and exports do).
+    std::optional<model::CameraState> shotOf(model::Id frameId) const;
     quint64 currentRevision(model::Id frameId) const;
     void renderSlice();
     bool renderOne(model::Id frameId);

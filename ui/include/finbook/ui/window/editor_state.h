@@ -46,6 +46,12 @@ public:
     bool showMesh() const { return m_showMesh; }
     // View → Show Skeleton; while on, skeletons follow the drawing (skeleton_follow.h).
     bool showSkeleton() const { return m_showSkeleton; }
+    // The playback tick on screen (the animation's clock from its first frame, holds
+    // included): while playing, the tick playback has reached (the camera moves during a
+    // hold); otherwise the first tick of the current frame.
+    qint64 currentTick() const;
+    // View → Camera View: the canvas shows the shot the camera frames at currentTick().
+    bool cameraView() const { return m_cameraView; }
 
 public slots:
     void setCurrentFrameIndex(int index);
@@ -56,6 +62,9 @@ public slots:
     void setPlaying(bool playing);
     void setShowMesh(bool show);
     void setShowSkeleton(bool show);
+    // Playback reports the tick it shows; −1 when it stops (currentTick() follows the frame).
+    void setPlaybackTick(qint64 tick);
+    void setCameraView(bool on);
     void nextFrame();
     void previousFrame();
 
@@ -67,6 +76,9 @@ signals:
     void onionSkinChanged();
     void playingChanged(bool playing);
     void showMeshChanged(bool show);
+    // currentTick() changed (a new frame, or playback moved on within a hold).
+    void tickChanged(qint64 tick);
+    void cameraViewChanged(bool on);
 
 private:
     void clampToDocument();
@@ -80,6 +92,8 @@ private:
     bool m_playing = false;
     bool m_showMesh = false;
     bool m_showSkeleton = false;
+    bool m_cameraView = false;
+    qint64 m_playbackTick = -1;
 };
 
 } // namespace finbook::ui
