@@ -35,6 +35,10 @@ FrameListModel::FrameListModel(Document *document, QObject *parent)
     connect(m_doc, &Document::frameChanged, this, &FrameListModel::onFrameChanged);
     connect(m_doc, &Document::settingsChanged, this,
             [this] { positionsChanged(0, rowCount() - 1); });
+    connect(m_doc, &Document::cameraChanged, this, [this] {
+        if (rowCount() > 0)
+            emit dataChanged(index(0), index(rowCount() - 1), {CameraKeyRole});
+    });
 }
 
 void FrameListModel::rebuild()
@@ -127,6 +131,19 @@ QVariant FrameListModel::data(const QModelIndex &index, int role) const
         return QVariant::fromValue<quint64>(revision(id));
     case InPlayRangeRole:
         return row >= m_doc->playFirst() && row <= m_doc->playLast();
+    case CameraKeyRole: {
+        const std::vector<CameraKey> &keys = m_doc->camera().keys;
+        if (keys.empty())
+            return false;
+        qint64 start = 0;
+        for (int i = 0; i < row; ++i)
+            start += std::clamp(m_doc->frameAt(i).hold, 1, kMaxHold);
+        const qint64 end = start + std::clamp(f->hold, 1, kMaxHold);
+        const auto first =
+            std::lower_bound(keys.begin(), keys.end(), start,
+                             [](const CameraKey &k, qint64 tick) { return k.tick < tick; });
+        return first != keys.end() && first->tick < end;
+    }
     case Qt::ToolTipRole:
     case Qt::AccessibleTextRole:
         return f->hold > 1 ? tr("Frame %1, held for %n frame(s)", nullptr, f->hold).arg(row + 1)
@@ -169,6 +186,7 @@ QHash<int, QByteArray> FrameListModel::roleNames() const
     names.insert(HoldRole, "hold");
     names.insert(RevisionRole, "revision");
     names.insert(InPlayRangeRole, "inPlayRange");
+    names.insert(CameraKeyRole, "cameraKey");
     return names;
 }
 

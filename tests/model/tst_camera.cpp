@@ -10,6 +10,7 @@
 #include <finbook/model/export/export_plan.h>
 #include <finbook/model/export/exporter.h>
 #include <finbook/model/finbook_file.h>
+#include <finbook/model/frame_list_model.h>
 
 #include <QDir>
 #include <QTemporaryDir>
@@ -83,6 +84,7 @@ private slots:
     void exportFollowsAPanDuringAHold();
     void exportWithoutCameraShowsThePage();
     void svgExportFramesTheShot();
+    void timelineMarksTheFramesOfKeys();
 };
 
 void TestCamera::easingsFollowTheirClosedForms()
@@ -401,6 +403,32 @@ void TestCamera::svgExportFramesTheShot()
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QByteArray svg = file.readAll();
     QVERIFY(svg.contains("<g transform=\"matrix(2 0 0 2 -200 -50)\">"));
+}
+
+// The timeline's frames say which hold a camera key (FrameListModel::CameraKeyRole), and the
+// view hears of it when the camera changes.
+void TestCamera::timelineMarksTheFramesOfKeys()
+{
+    Document doc;
+    dotDocument(doc, {50, 50}, 3);                          // frame 1: ticks 0-2
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 1)); // frame 2: tick 3
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 2)); // frame 3: tick 4
+    FrameListModel frames(&doc);
+    const auto marked = [&] {
+        QList<bool> out;
+        for (int row = 0; row < frames.rowCount(); ++row)
+            out << frames.index(row).data(FrameListModel::CameraKeyRole).toBool();
+        return out;
+    };
+    QCOMPARE(marked(), (QList<bool>{false, false, false}));
+    QSignalSpy changed(&frames, &QAbstractItemModel::dataChanged);
+    doc.undoStack()->push(setCameraKeyCommand(&doc, key(2, {60, 40})).release());
+    QVERIFY(!changed.isEmpty());
+    QCOMPARE(marked(), (QList<bool>{true, false, false})); // tick 2 is inside frame 1's hold
+    doc.undoStack()->push(setCameraKeyCommand(&doc, key(4, {60, 40})).release());
+    QCOMPARE(marked(), (QList<bool>{true, false, true}));
+    doc.undoStack()->push(setCameraKeyCommand(&doc, key(40, {60, 40})).release());
+    QCOMPARE(marked(), (QList<bool>{true, false, true})); // past the last frame: no frame
 }
 
 QTEST_MAIN(TestCamera)

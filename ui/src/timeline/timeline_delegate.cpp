@@ -67,6 +67,19 @@ void TimelineDelegate::paintBand(QPainter *painter, const QRect &band, const QMo
                             : palette.color(QPalette::ButtonText));
     painter->drawText(band, Qt::AlignCenter,
                       QString::number(index.data(FrameListModel::FrameNumberRole).toInt()));
+    if (index.data(FrameListModel::CameraKeyRole).toBool()) {
+        // A camera key in this frame's ticks: a small diamond at the band's left, in the
+        // camera's colour (the canvas draws its frame and path in it).
+        const qreal r = (TimelineView::kBandHeight - 6) / 2.0;
+        const QPointF c(band.left() + 4 + r, band.center().y() + 0.5);
+        painter->save();
+        painter->setRenderHint(QPainter::Antialiasing, true);
+        painter->setPen(QPen(QColor(255, 255, 255, 180), 1));
+        painter->setBrush(QColor(230, 120, 20));
+        painter->drawPolygon(QPolygonF{c + QPointF(0, -r), c + QPointF(r, 0), c + QPointF(0, r),
+                                       c + QPointF(-r, 0)});
+        painter->restore();
+    }
 }
 
 void TimelineDelegate::paintThumbnail(QPainter *painter, const QRect &area,

@@ -30,6 +30,7 @@ public:
         HoldRole,                       // int, exposure in ticks; editable
         RevisionRole,                   // quint64, bumped whenever the frame's drawing changes
         InPlayRangeRole,                // bool
+        CameraKeyRole,                  // bool: a camera key lies in the frame's ticks
     };
     Q_ENUM(Role)
 
