@@ -1,4 +1,5 @@
 #include <finbook/model/camera/camera_track.h>
+#include <finbook/model/inbetween/spacing.h>
 
 #include <QPolygonF>
 
@@ -95,15 +96,16 @@ CameraState restCamera(QSizeF page)
 double easedTime(const CameraKey &from, double t)
 {
     t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
+    // The curves in-betweens are spaced by (inbetween/spacing.h): one formula for each.
     switch (from.easing) {
     case CameraEasing::Linear:
-        return t;
+        return spacedTime(t, {SpacingKind::Linear});
     case CameraEasing::EaseIn:
-        return t * t;
+        return spacedTime(t, {SpacingKind::EaseIn});
     case CameraEasing::EaseOut:
-        return t * (2.0 - t);
+        return spacedTime(t, {SpacingKind::EaseOut});
     case CameraEasing::EaseInOut:
-        return t * t * (3.0 - 2.0 * t);
+        return spacedTime(t, {SpacingKind::EaseInOut});
     case CameraEasing::Hold:
         return t < 1.0 ? 0.0 : 1.0;
     case CameraEasing::Bezier:
