@@ -142,16 +142,17 @@ private slots:
         QVERIFY(view && view->isCheckable());
         const QPointF middleOfPage = canvas->mapFromCanvas(
             QPointF(doc->settings().canvasSize.width(), doc->settings().canvasSize.height()) / 2);
+        const qreal zoom = canvas->zoom();
         view->trigger();
         QVERIFY(state->cameraView());
         // The shot's middle (where the page's middle was) shows the camera's centre, and a
-        // page px is two widget px as many as before.
-        const qreal zoom = canvas->zoom();
+        // page px is two widget px as many as before: the tools' grab radii follow (zoom()).
         QVERIFY(QLineF(canvas->mapToCanvas(middleOfPage), a.center).length() < 1e-6);
         QVERIFY(std::abs(QLineF(canvas->mapFromCanvas(a.center),
                                 canvas->mapFromCanvas(a.center + QPointF(10, 0)))
                              .length() -
                          20 * zoom) < 1e-6);
+        QVERIFY(std::abs(canvas->zoom() - 2 * zoom) < 1e-9);
         // Playback moves on within the hold: the view follows the tick, halfway at tick 4.
         state->setPlaybackTick(4);
         QCOMPARE(state->currentTick(), qint64(4));
@@ -167,6 +168,40 @@ private slots:
                                              2),
                        middleOfPage)
                     .length() < 1e-6);
+    }
+
+    // The onion skin shows in Camera View too: the frame before, tinted, through the camera.
+    void onionSkinShowsInCameraView()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        model::Document *doc = window.document();
+        ui::CanvasWidget *canvas = window.canvas();
+        ui::EditorState *state = canvas->state();
+        const QSizeF page(doc->settings().canvasSize);
+        const QPointF c(page.width() / 2, page.height() / 2);
+        doc->undoStack()->push(new model::AddStrokeCommand(
+            doc, doc->frameAt(0).groups.at(0).id, line(c - QPointF(60, 0), c + QPointF(60, 0))));
+        doc->undoStack()->push(new model::InsertFrameCommand(doc, 1));
+        state->setCurrentFrameIndex(1);
+        model::CameraKey key;
+        key.center = c;
+        key.zoom = 1.5;
+        key.rotation = 20.0;
+        doc->undoStack()->push(model::setCameraKeyCommand(doc, key).release());
+        ui::OnionSkin onion = state->onionSkin();
+        onion.enabled = true;
+        state->setOnionSkin(onion);
+        state->setCameraView(true);
+        const QImage shot = canvas->grab().toImage();
+        // The line of frame 1, turned with the camera, in the "before" tint (reddish).
+        int tinted = 0;
+        for (int x = -40; x <= 40; x += 4) {
+            const QPoint at = canvas->mapFromCanvas(c + QPointF(x, 0)).toPoint();
+            const QColor colour = shot.pixelColor(at);
+            tinted += colour.red() > colour.blue() + 30 && colour.red() > colour.green() + 30;
+        }
+        QVERIFY2(tinted >= 15, qPrintable(QString::number(tinted)));
     }
 
     // Timeline thumbnails show the shot: a camera key moves the dot in them, and they are

@@ -155,7 +155,8 @@ QRectF CanvasWidget::pageRect() const
 }
 
 // Camera View: the shot, painted straight through the camera (turned, so the cached layers,
-// drawn axis-aligned, do not serve), without the onion skin.
+// drawn axis-aligned, do not serve); the onion skin's neighbours through the same camera, so
+// that they show how the drawing moves within this shot.
 void CanvasWidget::paintShot(QPainter &painter, const QRect &dirty) const
 {
     const QRectF shot = pageRect();
@@ -169,6 +170,9 @@ void CanvasWidget::paintShot(QPainter &painter, const QRect &dirty) const
         if (!picture.isNull())
             model::paintReference(painter, reference.reference(), picture);
     }
+    if (m_state->onionSkin().enabled && !m_state->isPlaying())
+        for (const auto &[index, options] : onionNeighbours())
+            model::paintFrame(painter, document()->frameAt(index), document()->settings(), options);
     if (const model::Frame *frame = shownFrame()) {
         model::RenderOptions options;
         options.paintBackground = false;
@@ -218,9 +222,8 @@ QImage CanvasWidget::renderFrameLayer(QImage recycled) const
     return image;
 }
 
-QImage CanvasWidget::renderOnionLayer(QImage recycled) const
+std::vector<std::pair<int, model::RenderOptions>> CanvasWidget::onionNeighbours() const
 {
-    QImage image = newLayerImage(std::move(recycled));
     const OnionSkin &onion = m_state->onionSkin();
     const int current = m_state->currentFrameIndex();
     const model::Document *doc = document();
@@ -240,6 +243,14 @@ QImage CanvasWidget::renderOnionLayer(QImage recycled) const
     };
     addSide(onion.before, -1, onion.beforeTint);
     addSide(onion.after, +1, onion.afterTint);
+    return layers;
+}
+
+QImage CanvasWidget::renderOnionLayer(QImage recycled) const
+{
+    QImage image = newLayerImage(std::move(recycled));
+    const model::Document *doc = document();
+    const std::vector<std::pair<int, model::RenderOptions>> layers = onionNeighbours();
     const model::DocumentSettings &settings = doc->settings();
     for (const auto &[index, options] : layers)
         StrokeRaster::prepareFills(doc->frameAt(index), options, settings);

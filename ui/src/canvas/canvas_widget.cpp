@@ -108,6 +108,15 @@ QTransform CanvasWidget::cameraViewTransform() const
         model::cameraAt(doc.camera(), double(m_state->currentTick()), page), page);
 }
 
+qreal CanvasWidget::zoom() const
+{
+    if (!m_state->cameraView())
+        return m_zoom;
+    const model::Document &doc = *document();
+    const QSizeF page(doc.settings().canvasSize);
+    return m_zoom * model::cameraAt(doc.camera(), double(m_state->currentTick()), page).zoom;
+}
+
 QTransform CanvasWidget::canvasToWidget() const
 {
     return cameraViewTransform() * screenTransform();

@@ -24,7 +24,8 @@
 
 namespace finbook::model {
 class Document;
-}
+struct RenderOptions;
+} // namespace finbook::model
 
 namespace finbook::ui {
 
@@ -55,7 +56,9 @@ public:
     void addOverlay(std::unique_ptr<CanvasOverlay> overlay);
 
     // --- view
-    qreal zoom() const { return m_zoom; }
+    // Widget pixels per canvas pixel (tools size their grab radii by it): the view's zoom, and
+    // in Camera View the camera's zoom times it.
+    qreal zoom() const;
     // Canvas (page) coordinates to widget pixels: the zoom and pan, and in Camera View
     // (EditorState::cameraView) the camera's shot at the current tick before them.
     QTransform canvasToWidget() const;
@@ -125,6 +128,8 @@ private:
     QTransform cameraViewTransform() const; // page to shot in Camera View, else identity
     void paintShot(QPainter &painter, const QRect &dirty) const;
     void paintOverlays(QPainter &painter);
+    // The onion skin's frames, farthest first, with their tints and opacities.
+    std::vector<std::pair<int, model::RenderOptions>> onionNeighbours() const;
     void paintPage(QPainter &painter) const;
     void clampPan();
     void setPanning(bool spaceHeld);
