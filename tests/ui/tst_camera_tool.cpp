@@ -168,6 +168,19 @@ private slots:
                                              2),
                        middleOfPage)
                     .length() < 1e-6);
+        // Playback shows the shot even outside Camera View: what the audience will see.
+        state->setPlaying(true);
+        state->setPlaybackTick(8);
+        QVERIFY(canvas->looksThroughCamera());
+        QVERIFY(QLineF(canvas->mapToCanvas(middleOfPage), b.center).length() < 1e-6);
+        state->setPlaybackTick(-1);
+        state->setPlaying(false);
+        QVERIFY(!canvas->looksThroughCamera());
+        QVERIFY(
+            QLineF(canvas->mapToCanvas(middleOfPage), QPointF(doc->settings().canvasSize.width(),
+                                                              doc->settings().canvasSize.height()) /
+                                                          2)
+                .length() < 1e-6);
     }
 
     // The onion skin shows in Camera View too: the frame before, tinted, through the camera.

@@ -296,7 +296,7 @@ void CanvasWidget::paintEvent(QPaintEvent *event)
     const QRect dirty = event->rect();
     painter.fillRect(dirty, kDeskColor);
     paintPage(painter);
-    if (m_state->cameraView()) {
+    if (looksThroughCamera()) {
         paintShot(painter, dirty);
         paintOverlays(painter);
         return;

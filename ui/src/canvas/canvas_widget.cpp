@@ -100,7 +100,7 @@ QTransform CanvasWidget::screenTransform() const
 
 QTransform CanvasWidget::cameraViewTransform() const
 {
-    if (!m_state->cameraView())
+    if (!looksThroughCamera())
         return {};
     const model::Document &doc = *document();
     const QSizeF page(doc.settings().canvasSize);
@@ -108,9 +108,18 @@ QTransform CanvasWidget::cameraViewTransform() const
         model::cameraAt(doc.camera(), double(m_state->currentTick()), page), page);
 }
 
+bool CanvasWidget::looksThroughCamera() const
+{
+    if (m_state->cameraView())
+        return true;
+    // Playback shows what the audience will see: the shot, once the camera frames one.
+    const model::Document &doc = *document();
+    return m_state->isPlaying() && doc.camera().isUsed(QSizeF(doc.settings().canvasSize));
+}
+
 qreal CanvasWidget::zoom() const
 {
-    if (!m_state->cameraView())
+    if (!looksThroughCamera())
         return m_zoom;
     const model::Document &doc = *document();
     const QSizeF page(doc.settings().canvasSize);
@@ -124,7 +133,7 @@ QTransform CanvasWidget::canvasToWidget() const
 
 QPointF CanvasWidget::mapToCanvas(const QPointF &widgetPos) const
 {
-    if (!m_state->cameraView())
+    if (!looksThroughCamera())
         return (widgetPos - m_offset) / m_zoom;
     bool invertible = false;
     const QTransform back = canvasToWidget().inverted(&invertible);
@@ -133,7 +142,7 @@ QPointF CanvasWidget::mapToCanvas(const QPointF &widgetPos) const
 
 QPointF CanvasWidget::mapFromCanvas(const QPointF &canvasPos) const
 {
-    if (!m_state->cameraView())
+    if (!looksThroughCamera())
         return canvasPos * m_zoom + m_offset;
     return canvasToWidget().map(canvasPos);
 }

@@ -59,9 +59,12 @@ public:
     // Widget pixels per canvas pixel (tools size their grab radii by it): the view's zoom, and
     // in Camera View the camera's zoom times it.
     qreal zoom() const;
-    // Canvas (page) coordinates to widget pixels: the zoom and pan, and in Camera View
-    // (EditorState::cameraView) the camera's shot at the current tick before them.
+    // Canvas (page) coordinates to widget pixels: the zoom and pan, and when looking through
+    // the camera the camera's shot at the current tick before them.
     QTransform canvasToWidget() const;
+    // Whether the canvas shows the camera's shot: in Camera View (EditorState::cameraView),
+    // and while playing a document whose camera frames anything but the page.
+    bool looksThroughCamera() const;
     QPointF mapToCanvas(const QPointF &widgetPos) const;
     QPointF mapFromCanvas(const QPointF &canvasPos) const;
     // Zooms so that the canvas point under `widgetAnchor` stays under it.
