@@ -1,6 +1,7 @@
 #include "id_mime.h"
 
 #include <finbook/model/commands.h>
+#include <finbook/model/export/export_plan.h>
 #include <finbook/model/frame_list_model.h>
 
 #include <QCoreApplication>
@@ -135,9 +136,7 @@ QVariant FrameListModel::data(const QModelIndex &index, int role) const
         const std::vector<CameraKey> &keys = m_doc->camera().keys;
         if (keys.empty())
             return false;
-        qint64 start = 0;
-        for (int i = 0; i < row; ++i)
-            start += std::clamp(m_doc->frameAt(i).hold, 1, kMaxHold);
+        const qint64 start = exposureTicks(m_doc->frames(), 0, row - 1);
         const qint64 end = start + std::clamp(f->hold, 1, kMaxHold);
         const auto first =
             std::lower_bound(keys.begin(), keys.end(), start,

@@ -50,6 +50,7 @@ std::optional<ExportError> resolveRange(const ExportSource &source, const Export
                                .arg(count));
     return std::nullopt;
 }
+
 // Sets plan.cameras when the document's camera shows anything but the page as it is, and splits
 // the holds the camera moves during into single ticks.
 std::optional<ExportError> frameThroughCamera(const ExportSource &source,
@@ -61,29 +62,24 @@ std::optional<ExportError> frameThroughCamera(const ExportSource &source,
     if (camera.isEmpty() || !camera.isUsed(page))
         return std::nullopt;
     qint64 tick = exposureTicks(source.frames, 0, first - 1);
-    const auto moves = [&](qint64 start, int hold) {
-        return hold > 1 && camera.movesBetween(double(start), double(start + hold - 1));
-    };
+    std::vector<int> frames, holds;
     bool split = false;
-    for (std::size_t i = 0, t = std::size_t(tick); i < plan.holds.size();
-         t += std::size_t(plan.holds[i++]))
-        split = split || moves(qint64(t), plan.holds[i]);
+    for (std::size_t i = 0; i < plan.frames.size(); ++i) {
+        const int hold = plan.holds[i];
+        const bool moves = hold > 1 && camera.movesBetween(double(tick), double(tick + hold - 1));
+        split = split || moves;
+        for (int k = 0; k < (moves ? hold : 1); ++k) {
+            frames.push_back(plan.frames[i]);
+            holds.push_back(moves ? 1 : hold);
+            plan.cameras.push_back(cameraAt(camera, double(tick + k), page));
+        }
+        tick += hold;
+    }
     if (split && options.onePerDrawing)
         return exportError(ExportErrorCode::BadOptions,
                            Export::tr("The camera moves while a drawing is held, so one file per "
                                       "drawing cannot show the shot; export one file per frame, "
                                       "or without the camera."));
-    std::vector<int> frames, holds;
-    for (std::size_t i = 0; i < plan.frames.size(); ++i) {
-        const int hold = plan.holds[i];
-        const int pieces = moves(tick, hold) ? hold : 1;
-        for (int k = 0; k < pieces; ++k) {
-            frames.push_back(plan.frames[i]);
-            holds.push_back(pieces == 1 ? hold : 1);
-            plan.cameras.push_back(cameraAt(camera, double(tick + k), page));
-        }
-        tick += hold;
-    }
     plan.frames = std::move(frames);
     plan.holds = std::move(holds);
     return std::nullopt;

@@ -1,3 +1,4 @@
+#include <finbook/model/export/export_plan.h>
 #include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/render.h>
 #include <finbook/ui/timeline/thumbnail_cache.h>
@@ -87,12 +88,7 @@ std::optional<model::CameraState> ThumbnailCache::shotOf(model::Id frameId) cons
     const QSizeF page(m_doc->settings().canvasSize);
     if (camera.isEmpty() || !camera.isUsed(page))
         return std::nullopt;
-    qint64 tick = 0;
-    for (const model::Frame &f : m_doc->frames()) {
-        if (f.id == frameId)
-            break;
-        tick += std::clamp(f.hold, 1, model::kMaxHold);
-    }
+    const qint64 tick = model::exposureTicks(m_doc->frames(), 0, m_doc->frameIndex(frameId) - 1);
     return model::cameraAt(camera, double(tick), page);
 }
 

@@ -1,3 +1,4 @@
+#include <finbook/model/export/export_plan.h>
 #include <finbook/ui/window/editor_state.h>
 
 #include <algorithm>
@@ -68,10 +69,7 @@ qint64 EditorState::currentTick() const
 {
     if (m_playbackTick >= 0)
         return m_playbackTick;
-    qint64 tick = 0;
-    for (int i = 0; i < m_frameIndex && i < m_doc->frameCount(); ++i)
-        tick += std::clamp(m_doc->frameAt(i).hold, 1, model::kMaxHold);
-    return tick;
+    return model::exposureTicks(m_doc->frames(), 0, m_frameIndex - 1);
 }
 
 void EditorState::setPlaybackTick(qint64 tick)
