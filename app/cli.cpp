@@ -9,6 +9,7 @@
 #include <finbook/model/io/printable_text.h>
 
 #include <QCoreApplication>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTextStream>
@@ -108,8 +109,20 @@ QJsonObject summary(const model::LoadedDocument &doc)
     o[QStringLiteral("fps")] = doc.settings.fps;
     o[QStringLiteral("canvas_width")] = doc.settings.canvasSize.width();
     o[QStringLiteral("canvas_height")] = doc.settings.canvasSize.height();
-    // What playback (and a default export) covers: the play range, holds included.
-    const qint64 ticks = model::playbackTicks(doc.frames, doc.settings);
+    // What playback (and a default export) covers: the play range of the shot, holds included.
+    model::LoadedDocument copy = doc;
+    const std::vector<model::Layer> layers = model::takeLoadedLayers(copy);
+    const qint64 ticks = model::playbackTicks(model::shotFrames(layers), doc.settings);
+    QJsonArray list;
+    for (const model::Layer &l : layers)
+        list.append(QJsonObject{{QStringLiteral("name"), l.properties.name},
+                                {QStringLiteral("cels"), qint64(l.cels.size())},
+                                {QStringLiteral("ticks"), model::celTicks(l.cels)},
+                                {QStringLiteral("visible"), l.properties.visible},
+                                {QStringLiteral("locked"), l.properties.locked},
+                                {QStringLiteral("opacity"), l.properties.opacity},
+                                {QStringLiteral("depth"), l.properties.depth}});
+    o[QStringLiteral("layers")] = list;
     o[QStringLiteral("ticks")] = ticks;
     o[QStringLiteral("duration_s")] = double(ticks) / std::max(1, doc.settings.fps);
     summariseMedia(doc, o);

@@ -59,6 +59,10 @@ const OptionSpec kOptions[] = {
     {"no-camera", nullptr,
      QT_TRANSLATE_NOOP("CommandLine",
                        "export: the whole page, not the shot the document's camera frames.")},
+    {"layers", "A,B",
+     QT_TRANSLATE_NOOP("CommandLine",
+                       "export: only the layers named A, B, ... (hidden ones too), not every "
+                       "visible layer.")},
     {"strict", nullptr,
      QT_TRANSLATE_NOOP("CommandLine",
                        "export: fail (exit code 2, nothing written) when a sound clip or the "
@@ -81,6 +85,7 @@ struct Request {
     QString outDir; // with it
     std::optional<model::ExportFormat> format;
     model::ExportOptions options;
+    QStringList layers; // --layers: names; empty = every visible layer
 };
 
 int fail(QTextStream &err, const QString &message, ExitCode code = ExitCode::BadInput)
@@ -213,6 +218,13 @@ std::optional<QString> parseRequest(const QStringList &arguments, Request &r)
     r.options.overwrite = p.isSet(QStringLiteral("overwrite"));
     r.options.strictMedia = p.isSet(QStringLiteral("strict"));
     r.options.camera = !p.isSet(QStringLiteral("no-camera"));
+    if (p.isSet(QStringLiteral("layers"))) {
+        for (const QString &name : p.value(QStringLiteral("layers")).split(QLatin1Char(',')))
+            if (!name.trimmed().isEmpty())
+                r.layers << name.trimmed();
+        if (r.layers.isEmpty())
+            return CommandLine::tr("--layers needs the names of layers, separated by commas.");
+    }
     if (r.options.transparent && r.options.background)
         return CommandLine::tr("--transparent and --background cannot be used together.");
     if (r.options.onePerDrawing && !model::exportsSequence(r.options.format))
@@ -317,7 +329,24 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
                     ExitCode::Failure);
     options.title = QFileInfo(input).completeBaseName();
     model::restoreCutOutLayers(loaded->frames, loaded->settings.closeGap);
-    const model::ExportSource source{std::move(loaded->frames), loaded->settings,
+    const std::vector<model::Layer> layers = model::takeLoadedLayers(*loaded);
+    model::ShotFilter filter;
+    for (const QString &name : request.layers) {
+        const auto named = std::find_if(layers.begin(), layers.end(), [&](const model::Layer &l) {
+            return l.properties.name == name;
+        });
+        if (named == layers.end()) {
+            QStringList names;
+            for (const model::Layer &l : layers)
+                names << QLatin1Char('"') + l.properties.name + QLatin1Char('"');
+            return fail(err, CommandLine::tr("\"%1\" has no layer named \"%2\"; its layers are "
+                                             "%3. Nothing was exported.")
+                                 .arg(input, name, names.join(QStringLiteral(", "))));
+        }
+        filter.onlyLayers.push_back(named->id);
+        filter.hiddenToo = true;
+    }
+    const model::ExportSource source{model::shotFrames(layers, filter), loaded->settings,
                                      std::move(loaded->reference), std::move(loaded->sound),
                                      std::move(loaded->camera)};
     const auto result = model::exportAnimation(

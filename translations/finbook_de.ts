@@ -59,37 +59,38 @@
         <translation>Objekt entsperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="322"/>
+        <location filename="../model/src/commands.cpp" line="323"/>
         <source>Insert Frame</source>
         <translation>Einzelbild einfügen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="326"/>
+        <location filename="../model/src/commands.cpp" line="327"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="48"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="345"/>
+        <location filename="../model/src/commands.cpp" line="348"/>
         <source>Duplicate Frame</source>
         <translation>Einzelbild duplizieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="395"/>
+        <location filename="../model/src/commands.cpp" line="399"/>
         <source>Delete Frame</source>
         <translation>Einzelbild löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="421"/>
+        <location filename="../model/src/commands.cpp" line="426"/>
         <source>Move Frame</source>
         <translation>Einzelbild verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="444"/>
+        <location filename="../model/src/commands.cpp" line="450"/>
         <source>Change Frame Exposure</source>
         <translation>Haltedauer des Einzelbilds ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="488"/>
+        <location filename="../model/src/commands.cpp" line="494"/>
         <source>Change Document Settings</source>
         <translation>Dokumenteinstellungen ändern</translation>
     </message>
@@ -319,21 +320,56 @@
         <source>Move Camera Key</source>
         <translation>Kamera-Schlüsselbild verschieben</translation>
     </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="40"/>
+        <source>New Layer</source>
+        <translation>Neue Ebene</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="70"/>
+        <source>Duplicate Layer</source>
+        <translation>Ebene duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="79"/>
+        <source>%1 copy</source>
+        <translation>%1 Kopie</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="100"/>
+        <source>Delete Layer</source>
+        <translation>Ebene löschen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="127"/>
+        <source>Move Layer</source>
+        <translation>Ebene verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="191"/>
+        <source>Insert Time</source>
+        <translation>Zeit einfügen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="208"/>
+        <source>Delete Time</source>
+        <translation>Zeit löschen</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="168"/>
+        <location filename="../app/cli.cpp" line="181"/>
         <source>No command given; see finbook --help.</source>
         <translation>Kein Befehl angegeben; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="172"/>
+        <location filename="../app/cli.cpp" line="185"/>
         <source>Usage: finbook info FILE</source>
         <translation>Aufruf: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="192"/>
+        <location filename="../app/cli.cpp" line="205"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
@@ -439,116 +475,131 @@
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="63"/>
+        <source>export: only the layers named A, B, ... (hidden ones too), not every visible layer.</source>
+        <translation>export: nur die Ebenen namens A, B, ... (auch ausgeblendete) statt aller sichtbaren Ebenen.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="67"/>
         <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
         <translation>export: abbrechen (Exit-Code 2, nichts geschrieben), wenn ein Soundclip oder die Referenz nicht verwendet werden kann, statt sie mit einer Warnung wegzulassen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="66"/>
+        <location filename="../app/cli_export.cpp" line="70"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="67"/>
+        <location filename="../app/cli_export.cpp" line="71"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="69"/>
+        <location filename="../app/cli_export.cpp" line="73"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="100"/>
+        <location filename="../app/cli_export.cpp" line="105"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="114"/>
+        <location filename="../app/cli_export.cpp" line="119"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame und --range können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="117"/>
+        <location filename="../app/cli_export.cpp" line="122"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame braucht eine Bildnummer ab 1, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="124"/>
+        <location filename="../app/cli_export.cpp" line="129"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="130"/>
+        <location filename="../app/cli_export.cpp" line="135"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="138"/>
+        <location filename="../app/cli_export.cpp" line="143"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="144"/>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="156"/>
+        <location filename="../app/cli_export.cpp" line="161"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="177"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="179"/>
+        <location filename="../app/cli_export.cpp" line="184"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html, .obj oder .glb enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="184"/>
+        <location filename="../app/cli_export.cpp" line="189"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="200"/>
+        <location filename="../app/cli_export.cpp" line="205"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="204"/>
+        <location filename="../app/cli_export.cpp" line="209"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="217"/>
+        <location filename="../app/cli_export.cpp" line="226"/>
+        <source>--layers needs the names of layers, separated by commas.</source>
+        <translation>--layers braucht die Namen von Ebenen, durch Kommas getrennt.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="229"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="219"/>
+        <location filename="../app/cli_export.cpp" line="231"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="315"/>
+        <location filename="../app/cli_export.cpp" line="327"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="329"/>
+        <location filename="../app/cli_export.cpp" line="342"/>
+        <source>&quot;%1&quot; has no layer named &quot;%2&quot;; its layers are %3. Nothing was exported.</source>
+        <translation>„%1“ hat keine Ebene namens „%2“; seine Ebenen sind %3. Es wurde nichts exportiert.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="358"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Unterbrochen; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="337"/>
+        <location filename="../app/cli_export.cpp" line="366"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="339"/>
+        <location filename="../app/cli_export.cpp" line="368"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
@@ -767,57 +818,57 @@
         <translation>Der Einzelbildbereich %1–%2 liegt nicht innerhalb der Einzelbilder 1–%3 der Animation; wählen Sie einen Bereich darin.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="73"/>
+        <location filename="../model/src/export/export_plan.cpp" line="80"/>
         <source>The camera moves while a drawing is held, so one file per drawing cannot show the shot; export one file per frame, or without the camera.</source>
         <translation>Die Kamera bewegt sich, während eine Zeichnung gehalten wird, daher kann eine Datei pro Zeichnung den Ausschnitt nicht zeigen; exportieren Sie eine Datei pro Bild oder ohne die Kamera.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="120"/>
+        <location filename="../model/src/export/export_plan.cpp" line="116"/>
         <source>The animation has no frames to export.</source>
         <translation>Die Animation hat keine Einzelbilder, die sich exportieren ließen.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="122"/>
+        <location filename="../model/src/export/export_plan.cpp" line="118"/>
         <source>The canvas has no size; set one in Document Settings.</source>
         <translation>Die Leinwand hat keine Größe; legen Sie eine in den Dokumenteinstellungen fest.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="130"/>
+        <location filename="../model/src/export/export_plan.cpp" line="126"/>
         <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
         <translation>Ein 3D-Modell enthält ein Einzelbild, nicht die Bilder %1–%2; wählen Sie ein einzelnes Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="150"/>
+        <location filename="../model/src/export/export_plan.cpp" line="146"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>Die Skalierung %1 ergibt keine mögliche Bildgröße; wählen Sie eine Skalierung, die 1 bis %2 Pixel pro Seite ergibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="154"/>
+        <location filename="../model/src/export/export_plan.cpp" line="150"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>Die Skalierung %1 ergäbe ein Bild mit %2 × %3 Pixeln; wählen Sie eine Skalierung, die 1 bis %4 Pixel pro Seite ergibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="167"/>
+        <location filename="../model/src/export/export_plan.cpp" line="163"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>Die Bildrate %1 ist nicht möglich; wählen Sie %2 bis %3 Bilder pro Sekunde.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="175"/>
+        <location filename="../model/src/export/export_plan.cpp" line="171"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>%1-Videos können nicht transparent sein; wählen Sie WebM, APNG, GIF oder PNG für einen transparenten Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="202"/>
+        <location filename="../model/src/export/export_plan.cpp" line="198"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Dieser Export würde %1 Einzelbilder schreiben, mehr als die erlaubten %2; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="209"/>
+        <location filename="../model/src/export/export_plan.cpp" line="205"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Dateien schreiben (%2 Wiedergabeschritte), mehr als %3 ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="217"/>
+        <location filename="../model/src/export/export_plan.cpp" line="213"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Stunden Animation ergeben (%2 Einzelbilder), mehr als %3 Stunden ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
@@ -1103,58 +1154,63 @@
 <context>
     <name>FinbookFile</name>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="29"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="30"/>
+        <source>layer %1</source>
+        <translation>Ebene %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="32"/>
         <source>frame %1</source>
         <translation>Einzelbild %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="32"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="35"/>
         <source>, object &quot;%1&quot;</source>
         <translation>, Objekt „%1“</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="33"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="36"/>
         <source>, object %1</source>
         <translation>, Objekt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="35"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="38"/>
         <source>, stroke %1</source>
         <translation>, Strich %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="39"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="42"/>
         <source>stroke data %1</source>
         <translation>Strichdaten %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="41"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="44"/>
         <source>pose %1</source>
         <translation>Pose %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="82"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="85"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="90"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="93"/>
         <source>%1 runs past the end of its record (%2 bytes needed, %3 left), so a length in the file is wrong</source>
         <translation>%1 reicht über das Ende seines Eintrags hinaus (%2 Bytes benötigt, %3 übrig), also ist eine Längenangabe in der Datei falsch</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="97"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="100"/>
         <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
         <translation>%1 ist unvollständig, die Datei endet vorzeitig (%2 Bytes benötigt, %3 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="113"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="116"/>
         <source>%1 claims %2 entries but only %3 bytes remain</source>
         <translation>%1 gibt %2 Einträge an, es sind aber nur noch %3 Bytes übrig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="139"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="142"/>
         <source>%1 has %2 unexpected bytes at its end</source>
         <translation>%1 hat am Ende %2 unerwartete Bytes</translation>
     </message>
@@ -1245,7 +1301,7 @@
         <translation>„%1“ kann nicht geöffnet werden: Für die %2 MB der Datei ist nicht genug Arbeitsspeicher vorhanden. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="253"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
@@ -1326,176 +1382,186 @@
         <translation>Abschnitt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="138"/>
         <source>the file&apos;s end is damaged</source>
         <translation>das Ende der Datei ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="143"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>ihre Länge (%1 Bytes) reicht über das Dateiende hinaus (%2 Bytes übrig), obwohl die Datei mit ihrer Endmarke endet; die Längenangabe ist also beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>die Datei endet mitten in diesem Abschnitt; sein vorhandener Inhalt wird gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
         <source>a section</source>
         <translation>ein Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>die Datei endet vor der Prüfsumme dieses Abschnitts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
         <source>a section checksum</source>
         <translation>eine Abschnittsprüfsumme</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>seine Prüfsumme stimmt nicht, seine Bytes wurden also nach dem Speichern verändert</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
         <source>the end marker</source>
         <translation>die Endmarke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
         <source>the file</source>
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="204"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
         <source>a sound clip comes before the frames</source>
         <translation>ein Tonclip steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="212"/>
+        <source>the layers come before the frames</source>
+        <translation>die Ebenen stehen vor den Einzelbildern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <source>the layers are repeated</source>
+        <translation>die Ebenen kommen doppelt vor</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the camera comes before the frames</source>
         <translation>die Kamera steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="213"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <source>the camera is repeated</source>
         <translation>die Kamera kommt mehrfach vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="298"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="314"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="328"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="353"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="365"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1781,22 +1847,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="378"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="393"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="396"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="411"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="401"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="410"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="425"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -2146,6 +2212,42 @@
         <location filename="../model/src/camera/camera_section.cpp" line="59"/>
         <source>%1; the camera is left out</source>
         <translation>%1; die Kamera wird weggelassen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="14"/>
+        <location filename="../model/src/scene/layer_section.cpp" line="16"/>
+        <source>the layers</source>
+        <translation>die Ebenen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="20"/>
+        <source>the file has %1 layers (1 to %2)</source>
+        <translation>die Datei hat %1 Ebenen (1 bis %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="28"/>
+        <source>the layer</source>
+        <translation>die Ebene</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="39"/>
+        <source>its opacity is not between 0 and 1</source>
+        <translation>ihre Deckkraft liegt nicht zwischen 0 und 1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="44"/>
+        <source>its depth is not between %1 and %2</source>
+        <translation>ihre Tiefe liegt nicht zwischen %1 und %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="59"/>
+        <source>the layers hold %1 frames, but the file has %2</source>
+        <translation>die Ebenen enthalten %1 Einzelbilder, die Datei aber %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="76"/>
+        <source>%1; every frame is put on one layer</source>
+        <translation>%1; alle Einzelbilder kommen auf eine Ebene</translation>
     </message>
 </context>
 <context>
@@ -2523,22 +2625,22 @@
         <translation>es ist keine gewöhnliche Datei</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="359"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Für „%1“ kann keine Vorschau erstellt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="397"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="408"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>eine Prüfsumme stimmt nicht, die Datei ist also beschädigt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="399"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>sie enthält Daten, die diese Version von Finbook nicht kennt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="402"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="413"/>
         <source>the file is damaged or incomplete.</source>
         <translation>die Datei ist beschädigt oder unvollständig.</translation>
     </message>
@@ -2571,7 +2673,7 @@
 <context>
     <name>finbook::model::FrameListModel</name>
     <message numerus="yes">
-        <location filename="../model/src/frame_list_model.cpp" line="132"/>
+        <location filename="../model/src/frame_list_model.cpp" line="151"/>
         <source>Frame %1, held for %n frame(s)</source>
         <translation>
             <numerusform>Einzelbild %1, %n Einzelbild lang gehalten</numerusform>
@@ -2579,7 +2681,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/frame_list_model.cpp" line="133"/>
+        <location filename="../model/src/frame_list_model.cpp" line="152"/>
         <source>Frame %1</source>
         <translation>Einzelbild %1</translation>
     </message>
@@ -2837,7 +2939,7 @@
 <context>
     <name>finbook::ui::CameraTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="29"/>
+        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="30"/>
         <source>Camera</source>
         <translation>Kamera</translation>
     </message>
@@ -2885,6 +2987,19 @@
         <location filename="../ui/src/camera/tool_camera.cpp" line="217"/>
         <source>Reset Camera</source>
         <translation>Kamera zurücksetzen</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CanvasWidget</name>
+    <message>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="238"/>
+        <source>The layer &quot;%1&quot; is locked: unlock it (Layer &gt; Lock Layer, or its padlock in the timeline) to draw on it.</source>
+        <translation>Die Ebene „%1“ ist gesperrt: Entsperren Sie sie (Ebene &gt; Ebene sperren oder ihr Schloss in der Zeitleiste), um darauf zu zeichnen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="241"/>
+        <source>The layer &quot;%1&quot; is hidden: show it (Layer &gt; Show Layer, or its eye in the timeline) to draw on it.</source>
+        <translation>Die Ebene „%1“ ist ausgeblendet: Blenden Sie sie ein (Ebene &gt; Ebene anzeigen oder ihr Auge in der Zeitleiste), um darauf zu zeichnen.</translation>
     </message>
 </context>
 <context>
@@ -3467,7 +3582,7 @@
 <context>
     <name>finbook::ui::HandTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="16"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="17"/>
         <source>Hand</source>
         <translation>Hand</translation>
     </message>
@@ -3596,65 +3711,195 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::LayerActions</name>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="14"/>
+        <source>Layer %1</source>
+        <translation>Ebene %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="31"/>
+        <source>&amp;New Layer</source>
+        <translation>&amp;Neue Ebene</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="38"/>
+        <source>&amp;Duplicate Layer</source>
+        <translation>Ebene &amp;duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="45"/>
+        <source>De&amp;lete Layer</source>
+        <translation>Ebene &amp;löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="56"/>
+        <source>Move Layer &amp;Up</source>
+        <translation>Ebene nach &amp;oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="58"/>
+        <source>Move Layer D&amp;own</source>
+        <translation>Ebene nach &amp;unten</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="65"/>
+        <source>Layer &amp;Above</source>
+        <translation>Ebene da&amp;rüber</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="67"/>
+        <source>Layer &amp;Below</source>
+        <translation>Ebene darun&amp;ter</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="70"/>
+        <source>&amp;Show Layer</source>
+        <translation>Ebene &amp;anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="73"/>
+        <source>Loc&amp;k Layer</source>
+        <translation>Ebene &amp;sperren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="76"/>
+        <source>Layer &amp;Properties...</source>
+        <translation>Ebenen&amp;eigenschaften...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="79"/>
+        <source>&amp;Insert Time</source>
+        <translation>Zeit e&amp;infügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="85"/>
+        <source>Delete &amp;Time</source>
+        <translation>&amp;Zeit löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="193"/>
+        <source>Lock Layer</source>
+        <translation>Ebene sperren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
+        <source>Unlock Layer</source>
+        <translation>Ebene entsperren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="188"/>
+        <source>Show Layer</source>
+        <translation>Ebene einblenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
+        <source>Hide Layer</source>
+        <translation>Ebene ausblenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="140"/>
+        <source>Change Layer Properties</source>
+        <translation>Ebeneneigenschaften ändern</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::LayerPropertiesDialog</name>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="21"/>
+        <source>Show its neighbouring drawings in the onion skin</source>
+        <translation>Die benachbarten Zeichnungen in der Zwiebelhaut zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="23"/>
+        <source>Layer Properties</source>
+        <translation>Ebeneneigenschaften</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="36"/>
+        <source>How far behind the page the layer lies: at depth 1 the camera&apos;s pans and zooms move it half as much (a distant background), at 0 exactly as much, below 0 more (a foreground rushing past).</source>
+        <translation>Wie weit die Ebene hinter dem Blatt liegt: Bei Tiefe 1 bewegen Schwenks und Zooms der Kamera sie halb so stark (ein ferner Hintergrund), bei 0 genau so stark, unter 0 stärker (ein vorbeirauschender Vordergrund).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="42"/>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="43"/>
+        <source>&amp;Opacity:</source>
+        <translation>&amp;Deckkraft:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="44"/>
+        <source>&amp;Depth:</source>
+        <translation>&amp;Tiefe:</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="154"/>
+        <location filename="../ui/src/window/main_window.cpp" line="156"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window.cpp" line="190"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window.cpp" line="191"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window.cpp" line="194"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window.cpp" line="214"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window.cpp" line="215"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window.cpp" line="248"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>Die Referenz „%1“ kann nicht angezeigt werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window.cpp" line="257"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window.cpp" line="268"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window.cpp" line="269"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window.cpp" line="274"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="264"/>
+        <location filename="../ui/src/window/main_window.cpp" line="275"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -3709,7 +3954,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
@@ -3754,227 +3999,237 @@
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="53"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="55"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="66"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="84"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
         <source>Import Re&amp;ference...</source>
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="169"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="227"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="231"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
         <source>&amp;Camera View</source>
         <translation>Kamera&amp;ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="239"/>
+        <source>&amp;Dim Other Layers</source>
+        <translation>Andere Ebenen ab&amp;dunkeln</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="246"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <source>&amp;Layer</source>
+        <translation>Ebe&amp;ne</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="297"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="341"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="327"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -3994,13 +4249,13 @@
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
@@ -4297,28 +4552,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="61"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="226"/>
         <source>Pl&amp;ay</source>
         <translation>Abs&amp;pielen</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="65"/>
         <source>Play or pause the animation</source>
         <translation>Animation abspielen oder anhalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="85"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
         <source>L&amp;oop</source>
         <translation>&amp;Endlosschleife</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="89"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
         <source>Start again at the end of the play range</source>
         <translation>Am Ende des Wiedergabebereichs wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="226"/>
         <source>P&amp;ause</source>
         <translation>&amp;Pause</translation>
     </message>
@@ -4578,7 +4833,7 @@
 <context>
     <name>finbook::ui::ReferenceTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="20"/>
+        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="21"/>
         <source>Move Reference</source>
         <translation>Referenz verschieben</translation>
     </message>
@@ -4950,37 +5205,37 @@
 <context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="84"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>Benachbarte Einzelbilder beim Zeichnen blass anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="101"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="108"/>
         <source>Before:</source>
         <translation>Davor:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="102"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="109"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>Wie viele vorherige Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="103"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="110"/>
         <source>After:</source>
         <translation>Danach:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="104"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="111"/>
         <source>How many later frames the onion skin shows</source>
         <translation>Wie viele folgende Einzelbilder die Zwiebelhaut zeigt</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="135"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="142"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Einzelbild %1 von %2 · %3 fps</translation>
     </message>

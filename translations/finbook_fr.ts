@@ -59,37 +59,38 @@
         <translation>Déverrouiller l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="322"/>
+        <location filename="../model/src/commands.cpp" line="323"/>
         <source>Insert Frame</source>
         <translation>Insérer une image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="326"/>
+        <location filename="../model/src/commands.cpp" line="327"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="48"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="345"/>
+        <location filename="../model/src/commands.cpp" line="348"/>
         <source>Duplicate Frame</source>
         <translation>Dupliquer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="395"/>
+        <location filename="../model/src/commands.cpp" line="399"/>
         <source>Delete Frame</source>
         <translation>Supprimer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="421"/>
+        <location filename="../model/src/commands.cpp" line="426"/>
         <source>Move Frame</source>
         <translation>Déplacer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="444"/>
+        <location filename="../model/src/commands.cpp" line="450"/>
         <source>Change Frame Exposure</source>
         <translation>Modifier l&apos;exposition de l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="488"/>
+        <location filename="../model/src/commands.cpp" line="494"/>
         <source>Change Document Settings</source>
         <translation>Modifier les paramètres du document</translation>
     </message>
@@ -319,21 +320,56 @@
         <source>Move Camera Key</source>
         <translation>Déplacer la clé de caméra</translation>
     </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="40"/>
+        <source>New Layer</source>
+        <translation>Nouveau calque</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="70"/>
+        <source>Duplicate Layer</source>
+        <translation>Dupliquer le calque</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="79"/>
+        <source>%1 copy</source>
+        <translation>%1 copie</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="100"/>
+        <source>Delete Layer</source>
+        <translation>Supprimer le calque</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="127"/>
+        <source>Move Layer</source>
+        <translation>Déplacer le calque</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="191"/>
+        <source>Insert Time</source>
+        <translation>Insérer du temps</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="208"/>
+        <source>Delete Time</source>
+        <translation>Supprimer du temps</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="168"/>
+        <location filename="../app/cli.cpp" line="181"/>
         <source>No command given; see finbook --help.</source>
         <translation>Aucune commande indiquée ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="172"/>
+        <location filename="../app/cli.cpp" line="185"/>
         <source>Usage: finbook info FILE</source>
         <translation>Utilisation : finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="192"/>
+        <location filename="../app/cli.cpp" line="205"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
@@ -439,116 +475,131 @@
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="63"/>
+        <source>export: only the layers named A, B, ... (hidden ones too), not every visible layer.</source>
+        <translation>export : seulement les calques nommés A, B, ... (masqués compris), pas tous les calques visibles.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="67"/>
         <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
         <translation>export : échouer (code de sortie 2, rien n’est écrit) quand un clip sonore ou la référence ne peut pas être utilisé, au lieu de l’omettre avec un avertissement.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="66"/>
+        <location filename="../app/cli_export.cpp" line="70"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="67"/>
+        <location filename="../app/cli_export.cpp" line="71"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="69"/>
+        <location filename="../app/cli_export.cpp" line="73"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="100"/>
+        <location filename="../app/cli_export.cpp" line="105"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="114"/>
+        <location filename="../app/cli_export.cpp" line="119"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame et --range ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="117"/>
+        <location filename="../app/cli_export.cpp" line="122"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame attend un numéro d&apos;image à partir de 1, pas « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="124"/>
+        <location filename="../app/cli_export.cpp" line="129"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="130"/>
+        <location filename="../app/cli_export.cpp" line="135"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="138"/>
+        <location filename="../app/cli_export.cpp" line="143"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="144"/>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="156"/>
+        <location filename="../app/cli_export.cpp" line="161"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="177"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="179"/>
+        <location filename="../app/cli_export.cpp" line="184"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html, .obj ou .glb, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="184"/>
+        <location filename="../app/cli_export.cpp" line="189"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="200"/>
+        <location filename="../app/cli_export.cpp" line="205"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="204"/>
+        <location filename="../app/cli_export.cpp" line="209"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="217"/>
+        <location filename="../app/cli_export.cpp" line="226"/>
+        <source>--layers needs the names of layers, separated by commas.</source>
+        <translation>--layers attend des noms de calques séparés par des virgules.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="229"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="219"/>
+        <location filename="../app/cli_export.cpp" line="231"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="315"/>
+        <location filename="../app/cli_export.cpp" line="327"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="329"/>
+        <location filename="../app/cli_export.cpp" line="342"/>
+        <source>&quot;%1&quot; has no layer named &quot;%2&quot;; its layers are %3. Nothing was exported.</source>
+        <translation>« %1 » n’a pas de calque nommé « %2 » ; ses calques sont %3. Rien n’a été exporté.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="358"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="337"/>
+        <location filename="../app/cli_export.cpp" line="366"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="339"/>
+        <location filename="../app/cli_export.cpp" line="368"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -767,57 +818,57 @@
         <translation>La plage d&apos;images %1-%2 n&apos;est pas comprise dans les images 1-%3 de l&apos;animation&#xa0;; choisissez une plage à l&apos;intérieur.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="73"/>
+        <location filename="../model/src/export/export_plan.cpp" line="80"/>
         <source>The camera moves while a drawing is held, so one file per drawing cannot show the shot; export one file per frame, or without the camera.</source>
         <translation>La caméra bouge pendant qu’un dessin est tenu : un fichier par dessin ne peut pas montrer le plan ; exportez un fichier par image, ou sans la caméra.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="120"/>
+        <location filename="../model/src/export/export_plan.cpp" line="116"/>
         <source>The animation has no frames to export.</source>
         <translation>L&apos;animation n&apos;a aucune image à exporter.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="122"/>
+        <location filename="../model/src/export/export_plan.cpp" line="118"/>
         <source>The canvas has no size; set one in Document Settings.</source>
         <translation>Le canevas n&apos;a pas de taille&#xa0;; définissez-en une dans Paramètres du document.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="130"/>
+        <location filename="../model/src/export/export_plan.cpp" line="126"/>
         <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
         <translation>Un modèle 3D contient une seule image, pas les images %1 à %2 ; choisissez une seule image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="150"/>
+        <location filename="../model/src/export/export_plan.cpp" line="146"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>L&apos;échelle %1 ne donne pas une taille d&apos;image possible&#xa0;; choisissez une échelle qui donne de 1 à %2 pixels de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="154"/>
+        <location filename="../model/src/export/export_plan.cpp" line="150"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>L&apos;échelle %1 donnerait une image de %2 x %3 pixels&#xa0;; choisissez une échelle qui donne de 1 à %4 pixels de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="167"/>
+        <location filename="../model/src/export/export_plan.cpp" line="163"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>La fréquence d&apos;images %1 n&apos;est pas possible&#xa0;; choisissez de %2 à %3 images par seconde.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="175"/>
+        <location filename="../model/src/export/export_plan.cpp" line="171"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>Une vidéo %1 ne peut pas être transparente&#xa0;; choisissez WebM, APNG, GIF ou PNG pour un arrière-plan transparent.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="202"/>
+        <location filename="../model/src/export/export_plan.cpp" line="198"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Cet export écrirait %1 images, plus que les %2 autorisées ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="209"/>
+        <location filename="../model/src/export/export_plan.cpp" line="205"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Cet export écrirait %1 fichiers (%2 pas de lecture), plus de %3 sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="217"/>
+        <location filename="../model/src/export/export_plan.cpp" line="213"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Cet export produirait %1 heures d’animation (%2 images), plus de %3 heures sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
@@ -1103,58 +1154,63 @@
 <context>
     <name>FinbookFile</name>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="29"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="30"/>
+        <source>layer %1</source>
+        <translation>calque %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="32"/>
         <source>frame %1</source>
         <translation>image %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="32"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="35"/>
         <source>, object &quot;%1&quot;</source>
         <translation>, objet «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="33"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="36"/>
         <source>, object %1</source>
         <translation>, objet %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="35"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="38"/>
         <source>, stroke %1</source>
         <translation>, trait %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="39"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="42"/>
         <source>stroke data %1</source>
         <translation>données de trait %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="41"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="44"/>
         <source>pose %1</source>
         <translation>pose %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="82"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="85"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
         <source>%1: %2</source>
         <translation>%1&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="90"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="93"/>
         <source>%1 runs past the end of its record (%2 bytes needed, %3 left), so a length in the file is wrong</source>
         <translation>%1 dépasse la fin de son enregistrement (%2 octets nécessaires, %3 restants)&#xa0;: une longueur dans le fichier est donc fausse</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="97"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="100"/>
         <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
         <translation>le fichier s&apos;arrête dans %1 (%2 octets nécessaires, %3 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="113"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="116"/>
         <source>%1 claims %2 entries but only %3 bytes remain</source>
         <translation>%1 annonce %2 entrées, mais il ne reste que %3 octets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="139"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="142"/>
         <source>%1 has %2 unexpected bytes at its end</source>
         <translation>%1 se termine par %2 octets inattendus</translation>
     </message>
@@ -1245,7 +1301,7 @@
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante pour ses %2&#xa0;Mo. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="253"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
@@ -1326,176 +1382,186 @@
         <translation>section %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="138"/>
         <source>the file&apos;s end is damaged</source>
         <translation>la fin du fichier est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="143"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>sa longueur (%1 octets) dépasse la fin du fichier (%2 octets restants), alors que le fichier se termine par sa marque de fin&#xa0;: la longueur est donc endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>le fichier s&apos;arrête au milieu de cette section (%1 octets annoncés, %2 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>le fichier s&apos;arrête au milieu de cette section&#xa0;; ce qu&apos;elle contient est lu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
         <source>a section</source>
         <translation>une section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>le fichier s&apos;arrête avant la somme de contrôle de cette section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
         <source>a section checksum</source>
         <translation>une somme de contrôle de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>sa somme de contrôle ne correspond pas, ses octets ont donc changé après l&apos;enregistrement</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
         <source>the end marker</source>
         <translation>le marqueur de fin</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
         <source>the file</source>
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="204"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
         <source>a sound clip comes before the frames</source>
         <translation>un extrait sonore précède les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="212"/>
+        <source>the layers come before the frames</source>
+        <translation>les calques viennent avant les images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <source>the layers are repeated</source>
+        <translation>les calques sont répétés</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the camera comes before the frames</source>
         <translation>la caméra vient avant les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="213"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <source>the camera is repeated</source>
         <translation>la caméra est répétée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="298"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="314"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="328"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="353"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="365"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1781,22 +1847,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="378"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="393"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="396"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="411"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="401"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="410"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="425"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -2146,6 +2212,42 @@
         <location filename="../model/src/camera/camera_section.cpp" line="59"/>
         <source>%1; the camera is left out</source>
         <translation>%1 ; la caméra est laissée de côté</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="14"/>
+        <location filename="../model/src/scene/layer_section.cpp" line="16"/>
+        <source>the layers</source>
+        <translation>les calques</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="20"/>
+        <source>the file has %1 layers (1 to %2)</source>
+        <translation>le fichier a %1 calques (de 1 à %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="28"/>
+        <source>the layer</source>
+        <translation>le calque</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="39"/>
+        <source>its opacity is not between 0 and 1</source>
+        <translation>son opacité n’est pas entre 0 et 1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="44"/>
+        <source>its depth is not between %1 and %2</source>
+        <translation>sa profondeur n’est pas entre %1 et %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="59"/>
+        <source>the layers hold %1 frames, but the file has %2</source>
+        <translation>les calques contiennent %1 images, mais le fichier en a %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="76"/>
+        <source>%1; every frame is put on one layer</source>
+        <translation>%1 ; toutes les images sont mises sur un seul calque</translation>
     </message>
 </context>
 <context>
@@ -2523,22 +2625,22 @@
         <translation>ce n&apos;est pas un fichier ordinaire</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="359"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="397"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="408"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>une somme de contrôle ne correspond pas, le fichier est donc endommagé.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="399"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>il contient des données que cette version de Finbook ne connaît pas.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="402"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="413"/>
         <source>the file is damaged or incomplete.</source>
         <translation>le fichier est endommagé ou incomplet.</translation>
     </message>
@@ -2571,7 +2673,7 @@
 <context>
     <name>finbook::model::FrameListModel</name>
     <message numerus="yes">
-        <location filename="../model/src/frame_list_model.cpp" line="132"/>
+        <location filename="../model/src/frame_list_model.cpp" line="151"/>
         <source>Frame %1, held for %n frame(s)</source>
         <translation>
             <numerusform>Image %1, exposée pendant %n image</numerusform>
@@ -2579,7 +2681,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/frame_list_model.cpp" line="133"/>
+        <location filename="../model/src/frame_list_model.cpp" line="152"/>
         <source>Frame %1</source>
         <translation>Image %1</translation>
     </message>
@@ -2837,7 +2939,7 @@
 <context>
     <name>finbook::ui::CameraTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="29"/>
+        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="30"/>
         <source>Camera</source>
         <translation>Caméra</translation>
     </message>
@@ -2885,6 +2987,19 @@
         <location filename="../ui/src/camera/tool_camera.cpp" line="217"/>
         <source>Reset Camera</source>
         <translation>Réinitialiser la caméra</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CanvasWidget</name>
+    <message>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="238"/>
+        <source>The layer &quot;%1&quot; is locked: unlock it (Layer &gt; Lock Layer, or its padlock in the timeline) to draw on it.</source>
+        <translation>Le calque « %1 » est verrouillé : déverrouillez-le (Calque &gt; Verrouiller le calque, ou son cadenas dans la timeline) pour dessiner dessus.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="241"/>
+        <source>The layer &quot;%1&quot; is hidden: show it (Layer &gt; Show Layer, or its eye in the timeline) to draw on it.</source>
+        <translation>Le calque « %1 » est masqué : affichez-le (Calque &gt; Afficher le calque, ou son œil dans la timeline) pour dessiner dessus.</translation>
     </message>
 </context>
 <context>
@@ -3467,7 +3582,7 @@
 <context>
     <name>finbook::ui::HandTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="16"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="17"/>
         <source>Hand</source>
         <translation>Main</translation>
     </message>
@@ -3596,65 +3711,195 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::LayerActions</name>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="14"/>
+        <source>Layer %1</source>
+        <translation>Calque %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="31"/>
+        <source>&amp;New Layer</source>
+        <translation>&amp;Nouveau calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="38"/>
+        <source>&amp;Duplicate Layer</source>
+        <translation>&amp;Dupliquer le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="45"/>
+        <source>De&amp;lete Layer</source>
+        <translation>&amp;Supprimer le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="56"/>
+        <source>Move Layer &amp;Up</source>
+        <translation>&amp;Monter le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="58"/>
+        <source>Move Layer D&amp;own</source>
+        <translation>D&amp;escendre le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="65"/>
+        <source>Layer &amp;Above</source>
+        <translation>Calque a&amp;u-dessus</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="67"/>
+        <source>Layer &amp;Below</source>
+        <translation>Calque en-dess&amp;ous</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="70"/>
+        <source>&amp;Show Layer</source>
+        <translation>&amp;Afficher le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="73"/>
+        <source>Loc&amp;k Layer</source>
+        <translation>&amp;Verrouiller le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="76"/>
+        <source>Layer &amp;Properties...</source>
+        <translation>&amp;Propriétés du calque...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="79"/>
+        <source>&amp;Insert Time</source>
+        <translation>&amp;Insérer du temps</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="85"/>
+        <source>Delete &amp;Time</source>
+        <translation>Supprimer du &amp;temps</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="193"/>
+        <source>Lock Layer</source>
+        <translation>Verrouiller le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
+        <source>Unlock Layer</source>
+        <translation>Déverrouiller le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="188"/>
+        <source>Show Layer</source>
+        <translation>Afficher le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
+        <source>Hide Layer</source>
+        <translation>Masquer le calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="140"/>
+        <source>Change Layer Properties</source>
+        <translation>Modifier les propriétés du calque</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::LayerPropertiesDialog</name>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="21"/>
+        <source>Show its neighbouring drawings in the onion skin</source>
+        <translation>Montrer ses dessins voisins en pelure d’oignon</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="23"/>
+        <source>Layer Properties</source>
+        <translation>Propriétés du calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="36"/>
+        <source>How far behind the page the layer lies: at depth 1 the camera&apos;s pans and zooms move it half as much (a distant background), at 0 exactly as much, below 0 more (a foreground rushing past).</source>
+        <translation>À quelle distance derrière la page se trouve le calque : à la profondeur 1, les panoramiques et zooms de la caméra le déplacent deux fois moins (un arrière-plan lointain), à 0 exactement autant, en dessous de 0 davantage (un premier plan qui défile).</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="42"/>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nom :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="43"/>
+        <source>&amp;Opacity:</source>
+        <translation>&amp;Opacité :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="44"/>
+        <source>&amp;Depth:</source>
+        <translation>&amp;Profondeur :</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="154"/>
+        <location filename="../ui/src/window/main_window.cpp" line="156"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window.cpp" line="190"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window.cpp" line="191"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window.cpp" line="194"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window.cpp" line="214"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window.cpp" line="215"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window.cpp" line="248"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>La référence « %1 » ne peut pas être affichée : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window.cpp" line="257"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window.cpp" line="268"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window.cpp" line="269"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window.cpp" line="274"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="264"/>
+        <location filename="../ui/src/window/main_window.cpp" line="275"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -3724,7 +3969,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
@@ -3769,238 +4014,248 @@
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="53"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="55"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="66"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="84"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
         <source>Import Re&amp;ference...</source>
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="169"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="227"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="231"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
         <source>&amp;Camera View</source>
         <translation>Vue &amp;caméra</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="239"/>
+        <source>&amp;Dim Other Layers</source>
+        <translation>Atténuer les a&amp;utres calques</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="246"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <source>&amp;Layer</source>
+        <translation>&amp;Calque</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="297"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="341"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="327"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Rétablir</translation>
@@ -4297,28 +4552,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="61"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="226"/>
         <source>Pl&amp;ay</source>
         <translation>&amp;Lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="65"/>
         <source>Play or pause the animation</source>
         <translation>Lire l&apos;animation ou la mettre en pause</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="85"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
         <source>L&amp;oop</source>
         <translation>Lecture en &amp;boucle</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="89"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
         <source>Start again at the end of the play range</source>
         <translation>Recommencer au début à la fin de la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="226"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;use</translation>
     </message>
@@ -4578,7 +4833,7 @@
 <context>
     <name>finbook::ui::ReferenceTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="20"/>
+        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="21"/>
         <source>Move Reference</source>
         <translation>Déplacer la référence</translation>
     </message>
@@ -4950,37 +5205,37 @@
 <context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="84"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>Afficher les images voisines en transparence pendant le dessin</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="101"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="108"/>
         <source>Before:</source>
         <translation>Avant&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="102"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="109"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>Nombre d&apos;images précédentes que montre la pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="103"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="110"/>
         <source>After:</source>
         <translation>Après&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="104"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="111"/>
         <source>How many later frames the onion skin shows</source>
         <translation>Nombre d&apos;images suivantes que montre la pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="135"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="142"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Image %1 sur %2 · %3 i/s</translation>
     </message>

@@ -59,37 +59,38 @@
         <translation>オブジェクトのロックを解除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="322"/>
+        <location filename="../model/src/commands.cpp" line="323"/>
         <source>Insert Frame</source>
         <translation>フレームを挿入</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="326"/>
+        <location filename="../model/src/commands.cpp" line="327"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="48"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="345"/>
+        <location filename="../model/src/commands.cpp" line="348"/>
         <source>Duplicate Frame</source>
         <translation>フレームを複製</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="395"/>
+        <location filename="../model/src/commands.cpp" line="399"/>
         <source>Delete Frame</source>
         <translation>フレームを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="421"/>
+        <location filename="../model/src/commands.cpp" line="426"/>
         <source>Move Frame</source>
         <translation>フレームを移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="444"/>
+        <location filename="../model/src/commands.cpp" line="450"/>
         <source>Change Frame Exposure</source>
         <translation>フレームの表示時間を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="488"/>
+        <location filename="../model/src/commands.cpp" line="494"/>
         <source>Change Document Settings</source>
         <translation>ドキュメント設定を変更</translation>
     </message>
@@ -319,21 +320,56 @@
         <source>Move Camera Key</source>
         <translation>カメラキーを移動</translation>
     </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="40"/>
+        <source>New Layer</source>
+        <translation>新しいレイヤー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="70"/>
+        <source>Duplicate Layer</source>
+        <translation>レイヤーを複製</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="79"/>
+        <source>%1 copy</source>
+        <translation>%1 のコピー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="100"/>
+        <source>Delete Layer</source>
+        <translation>レイヤーを削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="127"/>
+        <source>Move Layer</source>
+        <translation>レイヤーを移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="191"/>
+        <source>Insert Time</source>
+        <translation>時間を挿入</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="208"/>
+        <source>Delete Time</source>
+        <translation>時間を削除</translation>
+    </message>
 </context>
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../app/cli.cpp" line="168"/>
+        <location filename="../app/cli.cpp" line="181"/>
         <source>No command given; see finbook --help.</source>
         <translation>コマンドが指定されていません。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="172"/>
+        <location filename="../app/cli.cpp" line="185"/>
         <source>Usage: finbook info FILE</source>
         <translation>使い方: finbook info FILE</translation>
     </message>
     <message>
-        <location filename="../app/cli.cpp" line="192"/>
+        <location filename="../app/cli.cpp" line="205"/>
         <source>Unknown command &quot;%1&quot;; see finbook --help.</source>
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
@@ -439,116 +475,131 @@
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="63"/>
+        <source>export: only the layers named A, B, ... (hidden ones too), not every visible layer.</source>
+        <translation>export: すべての表示レイヤーではなく、A, B, ... という名前のレイヤーだけ（非表示のものも含む）。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="67"/>
         <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
         <translation>export: サウンドクリップまたは参照画像を使用できないとき、警告して省く代わりに失敗します（終了コード 2、何も書き出しません）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="66"/>
+        <location filename="../app/cli_export.cpp" line="70"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="67"/>
+        <location filename="../app/cli_export.cpp" line="71"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="69"/>
+        <location filename="../app/cli_export.cpp" line="73"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="100"/>
+        <location filename="../app/cli_export.cpp" line="105"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="114"/>
+        <location filename="../app/cli_export.cpp" line="119"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame と --range は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="117"/>
+        <location filename="../app/cli_export.cpp" line="122"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame には 1 以上のフレーム番号を指定してください (「%1」ではなく)。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="124"/>
+        <location filename="../app/cli_export.cpp" line="129"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="130"/>
+        <location filename="../app/cli_export.cpp" line="135"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="138"/>
+        <location filename="../app/cli_export.cpp" line="143"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="144"/>
+        <location filename="../app/cli_export.cpp" line="149"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="156"/>
+        <location filename="../app/cli_export.cpp" line="161"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
         <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj、glb のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="172"/>
+        <location filename="../app/cli_export.cpp" line="177"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="179"/>
+        <location filename="../app/cli_export.cpp" line="184"/>
         <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
         <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj、.glb にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="184"/>
+        <location filename="../app/cli_export.cpp" line="189"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="200"/>
+        <location filename="../app/cli_export.cpp" line="205"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="204"/>
+        <location filename="../app/cli_export.cpp" line="209"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="217"/>
+        <location filename="../app/cli_export.cpp" line="226"/>
+        <source>--layers needs the names of layers, separated by commas.</source>
+        <translation>--layers にはカンマで区切ったレイヤー名が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="229"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="219"/>
+        <location filename="../app/cli_export.cpp" line="231"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="315"/>
+        <location filename="../app/cli_export.cpp" line="327"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="329"/>
+        <location filename="../app/cli_export.cpp" line="342"/>
+        <source>&quot;%1&quot; has no layer named &quot;%2&quot;; its layers are %3. Nothing was exported.</source>
+        <translation>「%1」には「%2」という名前のレイヤーがありません。レイヤーは %3 です。何も書き出されませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="358"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="337"/>
+        <location filename="../app/cli_export.cpp" line="366"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="339"/>
+        <location filename="../app/cli_export.cpp" line="368"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -766,57 +817,57 @@
         <translation>フレーム範囲 %1～%2 がアニメーションのフレーム 1～%3 に収まっていません。その範囲内で選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="73"/>
+        <location filename="../model/src/export/export_plan.cpp" line="80"/>
         <source>The camera moves while a drawing is held, so one file per drawing cannot show the shot; export one file per frame, or without the camera.</source>
         <translation>絵を保持している間にカメラが動くため、絵ごとに 1 ファイルではショットを表せません。フレームごとに 1 ファイルで書き出すか、カメラなしで書き出してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="120"/>
+        <location filename="../model/src/export/export_plan.cpp" line="116"/>
         <source>The animation has no frames to export.</source>
         <translation>アニメーションに書き出すフレームがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="122"/>
+        <location filename="../model/src/export/export_plan.cpp" line="118"/>
         <source>The canvas has no size; set one in Document Settings.</source>
         <translation>キャンバスのサイズがありません。ドキュメント設定で設定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="130"/>
+        <location filename="../model/src/export/export_plan.cpp" line="126"/>
         <source>A 3D model holds one frame, not the frames %1-%2; choose a single frame.</source>
         <translation>3D モデルに入るのは 1 フレームだけで、フレーム %1-%2 は入りません。フレームを 1 つ選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="150"/>
+        <location filename="../model/src/export/export_plan.cpp" line="146"/>
         <source>The scale %1 is not a size a picture can have; choose a scale that gives 1 to %2 pixels a side.</source>
         <translation>倍率 %1 は画像のサイズとして使えません。一辺が 1～%2 ピクセルになる倍率を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="154"/>
+        <location filename="../model/src/export/export_plan.cpp" line="150"/>
         <source>The scale %1 would make a %2 x %3 pixel picture; choose a scale that gives 1 to %4 pixels a side.</source>
         <translation>倍率 %1 では %2×%3 ピクセルの画像になります。一辺が 1～%4 ピクセルになる倍率を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="167"/>
+        <location filename="../model/src/export/export_plan.cpp" line="163"/>
         <source>The frame rate %1 is not possible; choose %2 to %3 frames per second.</source>
         <translation>フレームレート %1 は使用できません。毎秒 %2～%3 フレームの範囲で選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="175"/>
+        <location filename="../model/src/export/export_plan.cpp" line="171"/>
         <source>%1 video cannot be transparent; choose WebM, APNG, GIF or PNG for a transparent background.</source>
         <translation>%1 動画は透明にできません。背景を透明にするには WebM、APNG、GIF、PNG のいずれかを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="202"/>
+        <location filename="../model/src/export/export_plan.cpp" line="198"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>この書き出しは %1 フレームを書き込みます。許可された %2 を超えるため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="209"/>
+        <location filename="../model/src/export/export_plan.cpp" line="205"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 個のファイル（再生ティック %2）を書き込みます。明示的な許可なしに %3 を超えることはできないため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="217"/>
+        <location filename="../model/src/export/export_plan.cpp" line="213"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 時間のアニメーション（%2 フレーム）になります。明示的な許可なしに %3 時間を超えることはできないため、何も書き出していません。</translation>
     </message>
@@ -1098,58 +1149,63 @@
 <context>
     <name>FinbookFile</name>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="29"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="30"/>
+        <source>layer %1</source>
+        <translation>レイヤー %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_cursor.h" line="32"/>
         <source>frame %1</source>
         <translation>フレーム %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="32"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="35"/>
         <source>, object &quot;%1&quot;</source>
         <translation>、オブジェクト「%1」</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="33"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="36"/>
         <source>, object %1</source>
         <translation>、オブジェクト %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="35"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="38"/>
         <source>, stroke %1</source>
         <translation>、ストローク %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="39"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="42"/>
         <source>stroke data %1</source>
         <translation>ストロークデータ %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="41"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="44"/>
         <source>pose %1</source>
         <translation>ポーズ %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="82"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="85"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="90"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="93"/>
         <source>%1 runs past the end of its record (%2 bytes needed, %3 left), so a length in the file is wrong</source>
         <translation>%1 がレコードの終わりを超えています（%2 バイト必要、残り %3 バイト）。ファイル内の長さの値が誤っています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="97"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="100"/>
         <source>the file ends inside %1 (%2 bytes needed, %3 left)</source>
         <translation>%1 の途中でファイルが終わっています（%2 バイト必要ですが、残りは %3 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="113"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="116"/>
         <source>%1 claims %2 entries but only %3 bytes remain</source>
         <translation>%1 には %2 個の項目があるはずですが、残りは %3 バイトしかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_cursor.h" line="139"/>
+        <location filename="../model/src/finbook_file_cursor.h" line="142"/>
         <source>%1 has %2 unexpected bytes at its end</source>
         <translation>%1 の末尾に予期しない %2 バイトがあります</translation>
     </message>
@@ -1240,7 +1296,7 @@
         <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="253"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
@@ -1321,176 +1377,186 @@
         <translation>セクション %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="137"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="138"/>
         <source>the file&apos;s end is damaged</source>
         <translation>ファイルの終端が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="142"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="143"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>長さ（%1 バイト）がファイルの終わりを超えています（残り %2 バイト）が、ファイルは終端マーカーで終わっています。長さの値が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="150"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="154"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="158"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
         <source>a section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="162"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
         <source>a section checksum</source>
         <translation>セクションのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="174"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="176"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
         <source>the end marker</source>
         <translation>終端マーカー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
         <source>the file</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="204"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
         <source>a sound clip comes before the frames</source>
         <translation>サウンドクリップがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="212"/>
+        <source>the layers come before the frames</source>
+        <translation>レイヤーがフレームより前にあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <source>the layers are repeated</source>
+        <translation>レイヤーが繰り返されています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the camera comes before the frames</source>
         <translation>カメラがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="213"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <source>the camera is repeated</source>
         <translation>カメラが重複しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="230"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="261"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="272"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="275"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="276"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="280"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="286"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="298"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="300"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="302"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="314"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="313"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="316"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="328"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="353"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="365"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1774,22 +1840,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="378"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="393"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="396"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="411"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="401"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="410"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="425"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -2137,6 +2203,42 @@
         <location filename="../model/src/camera/camera_section.cpp" line="59"/>
         <source>%1; the camera is left out</source>
         <translation>%1。カメラを省きます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="14"/>
+        <location filename="../model/src/scene/layer_section.cpp" line="16"/>
+        <source>the layers</source>
+        <translation>レイヤー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="20"/>
+        <source>the file has %1 layers (1 to %2)</source>
+        <translation>ファイルのレイヤー数は %1 です（1〜%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="28"/>
+        <source>the layer</source>
+        <translation>レイヤー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="39"/>
+        <source>its opacity is not between 0 and 1</source>
+        <translation>不透明度が 0〜1 の範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="44"/>
+        <source>its depth is not between %1 and %2</source>
+        <translation>奥行きが %1〜%2 の範囲外です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="59"/>
+        <source>the layers hold %1 frames, but the file has %2</source>
+        <translation>レイヤーのフレーム数は %1 ですが、ファイルには %2 あります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_section.cpp" line="76"/>
+        <source>%1; every frame is put on one layer</source>
+        <translation>%1。すべてのフレームを1つのレイヤーに入れます</translation>
     </message>
 </context>
 <context>
@@ -2512,22 +2614,22 @@
         <translation>通常のファイルではありません</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="348"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="359"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>「%1」のサムネイルを作成できません: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="397"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="408"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>チェックサムが一致しないため、ファイルが破損しています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="399"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>このバージョンの Finbook が知らないデータが含まれています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="402"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="413"/>
         <source>the file is damaged or incomplete.</source>
         <translation>ファイルが破損しているか不完全です。</translation>
     </message>
@@ -2560,14 +2662,14 @@
 <context>
     <name>finbook::model::FrameListModel</name>
     <message numerus="yes">
-        <location filename="../model/src/frame_list_model.cpp" line="132"/>
+        <location filename="../model/src/frame_list_model.cpp" line="151"/>
         <source>Frame %1, held for %n frame(s)</source>
         <translation>
             <numerusform>フレーム %1（%n フレーム分表示）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/frame_list_model.cpp" line="133"/>
+        <location filename="../model/src/frame_list_model.cpp" line="152"/>
         <source>Frame %1</source>
         <translation>フレーム %1</translation>
     </message>
@@ -2824,7 +2926,7 @@
 <context>
     <name>finbook::ui::CameraTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="29"/>
+        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="30"/>
         <source>Camera</source>
         <translation>カメラ</translation>
     </message>
@@ -2872,6 +2974,19 @@
         <location filename="../ui/src/camera/tool_camera.cpp" line="217"/>
         <source>Reset Camera</source>
         <translation>カメラをリセット</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::CanvasWidget</name>
+    <message>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="238"/>
+        <source>The layer &quot;%1&quot; is locked: unlock it (Layer &gt; Lock Layer, or its padlock in the timeline) to draw on it.</source>
+        <translation>レイヤー「%1」はロックされています。描くには、ロックを解除してください（レイヤー &gt; レイヤーをロック、またはタイムラインの錠前）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="241"/>
+        <source>The layer &quot;%1&quot; is hidden: show it (Layer &gt; Show Layer, or its eye in the timeline) to draw on it.</source>
+        <translation>レイヤー「%1」は非表示です。描くには、表示してください（レイヤー &gt; レイヤーを表示、またはタイムラインの目のアイコン）。</translation>
     </message>
 </context>
 <context>
@@ -3450,7 +3565,7 @@
 <context>
     <name>finbook::ui::HandTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="16"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="17"/>
         <source>Hand</source>
         <translation>手のひら</translation>
     </message>
@@ -3579,65 +3694,195 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::LayerActions</name>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="14"/>
+        <source>Layer %1</source>
+        <translation>レイヤー %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="31"/>
+        <source>&amp;New Layer</source>
+        <translation>新しいレイヤー(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="38"/>
+        <source>&amp;Duplicate Layer</source>
+        <translation>レイヤーを複製(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="45"/>
+        <source>De&amp;lete Layer</source>
+        <translation>レイヤーを削除(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="56"/>
+        <source>Move Layer &amp;Up</source>
+        <translation>レイヤーを上へ(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="58"/>
+        <source>Move Layer D&amp;own</source>
+        <translation>レイヤーを下へ(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="65"/>
+        <source>Layer &amp;Above</source>
+        <translation>上のレイヤー(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="67"/>
+        <source>Layer &amp;Below</source>
+        <translation>下のレイヤー(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="70"/>
+        <source>&amp;Show Layer</source>
+        <translation>レイヤーを表示(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="73"/>
+        <source>Loc&amp;k Layer</source>
+        <translation>レイヤーをロック(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="76"/>
+        <source>Layer &amp;Properties...</source>
+        <translation>レイヤーのプロパティ(&amp;P)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="79"/>
+        <source>&amp;Insert Time</source>
+        <translation>時間を挿入(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="85"/>
+        <source>Delete &amp;Time</source>
+        <translation>時間を削除(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="193"/>
+        <source>Lock Layer</source>
+        <translation>レイヤーをロック</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
+        <source>Unlock Layer</source>
+        <translation>レイヤーのロックを解除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="188"/>
+        <source>Show Layer</source>
+        <translation>レイヤーを表示</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
+        <source>Hide Layer</source>
+        <translation>レイヤーを非表示</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="140"/>
+        <source>Change Layer Properties</source>
+        <translation>レイヤーのプロパティを変更</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::LayerPropertiesDialog</name>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="21"/>
+        <source>Show its neighbouring drawings in the onion skin</source>
+        <translation>前後の絵をオニオンスキンに表示</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="23"/>
+        <source>Layer Properties</source>
+        <translation>レイヤーのプロパティ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="36"/>
+        <source>How far behind the page the layer lies: at depth 1 the camera&apos;s pans and zooms move it half as much (a distant background), at 0 exactly as much, below 0 more (a foreground rushing past).</source>
+        <translation>レイヤーが紙面からどれだけ奥にあるか：奥行き1ではカメラのパンやズームで半分だけ動き（遠い背景）、0ではそのまま、0未満ではより大きく動きます（手前を横切る前景）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="42"/>
+        <source>&amp;Name:</source>
+        <translation>名前(&amp;N):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="43"/>
+        <source>&amp;Opacity:</source>
+        <translation>不透明度(&amp;O):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/layer_properties_dialog.cpp" line="44"/>
+        <source>&amp;Depth:</source>
+        <translation>奥行き(&amp;D):</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="154"/>
+        <location filename="../ui/src/window/main_window.cpp" line="156"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window.cpp" line="190"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="180"/>
+        <location filename="../ui/src/window/main_window.cpp" line="191"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="183"/>
+        <location filename="../ui/src/window/main_window.cpp" line="194"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window.cpp" line="214"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window.cpp" line="215"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window.cpp" line="248"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>参照「%1」を表示できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window.cpp" line="257"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window.cpp" line="268"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window.cpp" line="269"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="263"/>
+        <location filename="../ui/src/window/main_window.cpp" line="274"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="264"/>
+        <location filename="../ui/src/window/main_window.cpp" line="275"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -3706,7 +3951,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
@@ -3751,238 +3996,248 @@
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="53"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="55"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="65"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="66"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="82"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="84"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="95"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="103"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
         <source>Import Re&amp;ference...</source>
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="128"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="161"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="169"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="177"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="227"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="231"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
         <source>&amp;Camera View</source>
         <translation>カメラビュー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="239"/>
+        <source>&amp;Dim Other Layers</source>
+        <translation>他のレイヤーを薄く表示(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="246"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <source>&amp;Layer</source>
+        <translation>レイヤー(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="280"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="297"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="302"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="326"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="341"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="327"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>やり直す</translation>
@@ -4279,28 +4534,28 @@
 <context>
     <name>finbook::ui::PlaybackController</name>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="61"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="226"/>
         <source>Pl&amp;ay</source>
         <translation>再生(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="65"/>
         <source>Play or pause the animation</source>
         <translation>アニメーションを再生または一時停止</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="85"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="73"/>
         <source>L&amp;oop</source>
         <translation>ループ再生(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="89"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="77"/>
         <source>Start again at the end of the play range</source>
         <translation>再生範囲の最後まで来たら最初から再生</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/playback_controller.cpp" line="238"/>
+        <location filename="../ui/src/timeline/playback_controller.cpp" line="226"/>
         <source>P&amp;ause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>
@@ -4558,7 +4813,7 @@
 <context>
     <name>finbook::ui::ReferenceTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="20"/>
+        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="21"/>
         <source>Move Reference</source>
         <translation>参照を移動</translation>
     </message>
@@ -4929,37 +5184,37 @@
 <context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="84"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="85"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="92"/>
         <source>Show neighbouring frames faintly while drawing</source>
         <translation>描画中に前後のフレームを薄く表示</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="101"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="108"/>
         <source>Before:</source>
         <translation>前:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="102"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="109"/>
         <source>How many earlier frames the onion skin shows</source>
         <translation>オニオンスキンで表示する前のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="103"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="110"/>
         <source>After:</source>
         <translation>後:</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="104"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="111"/>
         <source>How many later frames the onion skin shows</source>
         <translation>オニオンスキンで表示する後のフレームの数</translation>
     </message>
     <message>
-        <location filename="../ui/src/timeline/timeline_widget.cpp" line="135"/>
+        <location filename="../ui/src/timeline/timeline_widget.cpp" line="142"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>フレーム %1 / %2 · %3 fps</translation>
     </message>

@@ -57,7 +57,7 @@ void RemoveStrokeCommand::redo()
         setObsolete(true);
         return;
     }
-    m_groupId = m_doc->frameAt(at.frame).groups[std::size_t(at.group)].id;
+    m_groupId = m_doc->frameAt(at).groups[std::size_t(at.group)].id;
     m_index = at.stroke;
     m_stroke = m_doc->takeStroke(m_strokeId);
 }
@@ -87,7 +87,7 @@ void MoveStrokesCommand::redo()
         const StrokeLocation at = m_doc->locateStroke(id);
         if (!at.isValid())
             continue;
-        const Id groupId = m_doc->frameAt(at.frame).groups[std::size_t(at.group)].id;
+        const Id groupId = m_doc->frameAt(at).groups[std::size_t(at.group)].id;
         m_origins.push_back({id, groupId, at.stroke});
         moved.push_back(m_doc->takeStroke(id));
     }
@@ -122,10 +122,8 @@ ReplaceStrokeDataCommand::ReplaceStrokeDataCommand(Document *doc, std::vector<Id
             setObsolete(true);
             return;
         }
-        m_old.push_back(doc->frameAt(at.frame)
-                            .groups[std::size_t(at.group)]
-                            .strokes[std::size_t(at.stroke)]
-                            .data);
+        m_old.push_back(
+            doc->frameAt(at).groups[std::size_t(at.group)].strokes[std::size_t(at.stroke)].data);
     }
 }
 
@@ -137,7 +135,7 @@ void ReplaceStrokeDataCommand::apply(const std::vector<StrokeDataPtr> &data)
     std::vector<Id> groups;
     for (std::size_t i = 0; i < m_strokeIds.size(); ++i) {
         const StrokeLocation at = m_doc->locateStroke(m_strokeIds[i]);
-        const Id gid = m_doc->frameAt(at.frame).groups[std::size_t(at.group)].id;
+        const Id gid = m_doc->frameAt(at).groups[std::size_t(at.group)].id;
         if (std::find(groups.begin(), groups.end(), gid) == groups.end())
             groups.push_back(gid);
     }
@@ -211,7 +209,7 @@ void RemoveObjectCommand::redo()
         setObsolete(true);
         return;
     }
-    m_frameId = m_doc->frameAt(at.frame).id;
+    m_frameId = m_doc->frameAt(at).id;
     m_index = at.group;
     m_group = m_doc->takeGroup(m_groupId);
 }
@@ -260,7 +258,7 @@ ReorderObjectCommand::ReorderObjectCommand(Document *doc, Id groupId, int toInde
         return;
     }
     m_from = at.group;
-    const int count = int(doc->frameAt(at.frame).groups.size());
+    const int count = int(doc->frameAt(at).groups.size());
     m_to = std::clamp(m_to, 0, count - 1);
 }
 
@@ -317,6 +315,7 @@ void SetObjectFlagCommand::undo()
 
 InsertFrameCommand::InsertFrameCommand(Document *doc, int index, QUndoCommand *parent)
     : DocumentCommand(doc, parent)
+    , m_layer(doc->currentLayerId())
     , m_index(std::clamp(index, 0, doc->frameCount()))
 {
     setText(Command::tr("Insert Frame"));
@@ -329,11 +328,13 @@ InsertFrameCommand::InsertFrameCommand(Document *doc, int index, QUndoCommand *p
 
 void InsertFrameCommand::redo()
 {
-    m_doc->insertFrame(m_index, m_frame);
+    if (!isObsolete())
+        m_doc->insertFrame(m_layer, m_index, m_frame);
 }
 void InsertFrameCommand::undo()
 {
-    m_doc->takeFrame(m_index);
+    if (!isObsolete())
+        m_doc->takeFrame(m_layer, m_index);
 }
 
 DuplicateFrameCommand::DuplicateFrameCommand(Document *doc, Id sourceFrameId, int index,
@@ -348,7 +349,8 @@ DuplicateFrameCommand::DuplicateFrameCommand(Document *doc, Id sourceFrameId, in
         setObsolete(true);
         return;
     }
-    m_index = std::clamp(m_index, 0, doc->frameCount());
+    m_layer = doc->layerOfFrame(sourceFrameId);
+    m_index = std::clamp(m_index, 0, int(doc->layer(m_layer)->cels.size()));
     m_copyId = doc->allocateId();
     for (const StrokeGroup &g : source->groups) {
         m_ids.push_back(doc->allocateId());
@@ -379,13 +381,13 @@ void DuplicateFrameCommand::redo()
             p.id = m_ids.at(next++);
     }
     remapJoins(copy, groupIds);
-    m_doc->insertFrame(m_index, std::move(copy));
+    m_doc->insertFrame(m_layer, m_index, std::move(copy));
 }
 
 void DuplicateFrameCommand::undo()
 {
     if (!isObsolete())
-        m_doc->takeFrame(m_doc->frameIndex(m_copyId));
+        m_doc->takeFrame(m_layer, m_doc->celIndex(m_copyId));
 }
 
 DeleteFrameCommand::DeleteFrameCommand(Document *doc, Id frameId, QUndoCommand *parent)
@@ -393,24 +395,25 @@ DeleteFrameCommand::DeleteFrameCommand(Document *doc, Id frameId, QUndoCommand *
     , m_frameId(frameId)
 {
     setText(Command::tr("Delete Frame"));
-    if (doc->frameIndex(frameId) < 0)
+    if (!doc->frame(frameId))
         setObsolete(true);
 }
 
 void DeleteFrameCommand::redo()
 {
-    m_index = m_doc->frameIndex(m_frameId);
+    m_layer = m_doc->layerOfFrame(m_frameId);
+    m_index = m_doc->celIndex(m_frameId);
     if (m_index < 0) {
         setObsolete(true);
         return;
     }
-    m_frame = m_doc->takeFrame(m_index);
+    m_frame = m_doc->takeFrame(m_layer, m_index);
 }
 
 void DeleteFrameCommand::undo()
 {
     if (m_frame)
-        m_doc->insertFrame(m_index, *m_frame);
+        m_doc->insertFrame(m_layer, m_index, *m_frame);
 }
 
 MoveFrameCommand::MoveFrameCommand(Document *doc, int from, int to, QUndoCommand *parent)
@@ -419,6 +422,7 @@ MoveFrameCommand::MoveFrameCommand(Document *doc, int from, int to, QUndoCommand
     , m_to(to)
 {
     setText(Command::tr("Move Frame"));
+    m_layer = doc->currentLayerId();
     const int n = doc->frameCount();
     if (from < 0 || from >= n || to < 0 || to >= n || from == to)
         setObsolete(true);
@@ -427,13 +431,13 @@ MoveFrameCommand::MoveFrameCommand(Document *doc, int from, int to, QUndoCommand
 void MoveFrameCommand::redo()
 {
     if (!isObsolete())
-        m_doc->moveFrame(m_from, m_to);
+        m_doc->moveFrame(m_layer, m_from, m_to);
 }
 
 void MoveFrameCommand::undo()
 {
     if (!isObsolete())
-        m_doc->moveFrame(m_to, m_from);
+        m_doc->moveFrame(m_layer, m_to, m_from);
 }
 
 SetFrameHoldCommand::SetFrameHoldCommand(Document *doc, Id frameId, int hold, QUndoCommand *parent)

@@ -12,7 +12,11 @@ Document::Document(QObject *parent)
     : QObject(parent)
     , m_soundtrack(std::make_unique<Soundtrack>())
     , m_reference(new ReferenceLayer(this))
-{}
+{
+    Layer first;
+    first.id = allocateId();
+    m_layers.push_back(std::move(first));
+}
 
 Document::~Document()
 {
@@ -20,27 +24,100 @@ Document::~Document()
     m_undoStack.clear();
 }
 
+int Document::layerIndex(Id layerId) const
+{
+    for (int i = 0; i < layerCount(); ++i)
+        if (m_layers[std::size_t(i)].id == layerId)
+            return i;
+    return -1;
+}
+
+const Layer *Document::layer(Id layerId) const
+{
+    const int index = layerIndex(layerId);
+    return index < 0 ? nullptr : &m_layers[std::size_t(index)];
+}
+
+Layer &Document::mutableLayer(Id layerId)
+{
+    const int index = layerIndex(layerId);
+    if (index < 0)
+        throw std::out_of_range("Document: no such layer");
+    return m_layers[std::size_t(index)];
+}
+
+Id Document::layerOfFrame(Id frameId) const
+{
+    for (const Layer &l : m_layers)
+        for (const Frame &f : l.cels)
+            if (f.id == frameId)
+                return l.id;
+    return kNoId;
+}
+
 int Document::frameIndex(Id frameId) const
 {
-    for (int i = 0; i < frameCount(); ++i)
-        if (m_frames[std::size_t(i)].id == frameId)
+    const std::vector<Frame> &cels = frames();
+    for (int i = 0; i < int(cels.size()); ++i)
+        if (cels[std::size_t(i)].id == frameId)
             return i;
+    return -1;
+}
+
+int Document::celIndex(Id frameId) const
+{
+    for (const Layer &l : m_layers)
+        for (std::size_t i = 0; i < l.cels.size(); ++i)
+            if (l.cels[i].id == frameId)
+                return int(i);
     return -1;
 }
 
 const Frame *Document::frame(Id frameId) const
 {
-    const int index = frameIndex(frameId);
-    return index < 0 ? nullptr : &m_frames[std::size_t(index)];
+    for (const Layer &l : m_layers)
+        for (const Frame &f : l.cels)
+            if (f.id == frameId)
+                return &f;
+    return nullptr;
+}
+
+Frame *Document::findFrame(Id frameId)
+{
+    for (Layer &l : m_layers)
+        for (Frame &f : l.cels)
+            if (f.id == frameId)
+                return &f;
+    return nullptr;
+}
+
+const Frame &Document::frameAt(const GroupLocation &at) const
+{
+    return m_layers.at(std::size_t(at.layer)).cels.at(std::size_t(at.frame));
+}
+
+const Frame &Document::frameAt(const StrokeLocation &at) const
+{
+    return m_layers.at(std::size_t(at.layer)).cels.at(std::size_t(at.frame));
+}
+
+Frame &Document::mutableFrame(const GroupLocation &at)
+{
+    return m_layers.at(std::size_t(at.layer)).cels.at(std::size_t(at.frame));
 }
 
 GroupLocation Document::locateGroup(Id groupId) const
 {
-    for (int f = 0; f < frameCount(); ++f) {
-        const auto &groups = m_frames[std::size_t(f)].groups;
-        for (int g = 0; g < int(groups.size()); ++g)
-            if (groups[std::size_t(g)].id == groupId)
-                return {f, g};
+    // The current layer first: nearly every edit is there.
+    for (int k = 0; k < layerCount(); ++k) {
+        const int l = k == 0 ? m_current : (k <= m_current ? k - 1 : k);
+        const auto &cels = m_layers[std::size_t(l)].cels;
+        for (int f = 0; f < int(cels.size()); ++f) {
+            const auto &groups = cels[std::size_t(f)].groups;
+            for (int g = 0; g < int(groups.size()); ++g)
+                if (groups[std::size_t(g)].id == groupId)
+                    return {f, g, l};
+        }
     }
     return {};
 }
@@ -50,18 +127,22 @@ const StrokeGroup *Document::group(Id groupId) const
     const GroupLocation at = locateGroup(groupId);
     if (!at.isValid())
         return nullptr;
-    return &m_frames[std::size_t(at.frame)].groups[std::size_t(at.group)];
+    return &frameAt(at).groups[std::size_t(at.group)];
 }
 
 StrokeLocation Document::locateStroke(Id strokeId) const
 {
-    for (int f = 0; f < frameCount(); ++f) {
-        const auto &groups = m_frames[std::size_t(f)].groups;
-        for (int g = 0; g < int(groups.size()); ++g) {
-            const auto &strokes = groups[std::size_t(g)].strokes;
-            for (int s = 0; s < int(strokes.size()); ++s)
-                if (strokes[std::size_t(s)].id == strokeId)
-                    return {f, g, s};
+    for (int k = 0; k < layerCount(); ++k) {
+        const int l = k == 0 ? m_current : (k <= m_current ? k - 1 : k);
+        const auto &cels = m_layers[std::size_t(l)].cels;
+        for (int f = 0; f < int(cels.size()); ++f) {
+            const auto &groups = cels[std::size_t(f)].groups;
+            for (int g = 0; g < int(groups.size()); ++g) {
+                const auto &strokes = groups[std::size_t(g)].strokes;
+                for (int s = 0; s < int(strokes.size()); ++s)
+                    if (strokes[std::size_t(s)].id == strokeId)
+                        return {f, g, s, l};
+            }
         }
     }
     return {};
@@ -69,14 +150,14 @@ StrokeLocation Document::locateStroke(Id strokeId) const
 
 int Document::playFirst() const
 {
-    if (m_frames.empty())
+    if (frames().empty())
         return 0;
     return std::clamp(m_settings.playStart, 0, frameCount() - 1);
 }
 
 int Document::playLast() const
 {
-    if (m_frames.empty())
+    if (frames().empty())
         return 0;
     const int last = m_settings.playEnd < 0 ? frameCount() - 1 : m_settings.playEnd;
     return std::clamp(last, playFirst(), frameCount() - 1);
@@ -85,19 +166,60 @@ int Document::playLast() const
 qint64 Document::pointCount() const
 {
     qint64 total = 0;
-    for (const Frame &f : m_frames)
-        for (const StrokeGroup &g : f.groups)
-            for (const Stroke &s : g.strokes)
-                total += qint64(s.data ? s.data->points.size() : 0);
+    for (const Layer &l : m_layers)
+        for (const Frame &f : l.cels)
+            for (const StrokeGroup &g : f.groups)
+                for (const Stroke &s : g.strokes)
+                    total += qint64(s.data ? s.data->points.size() : 0);
     return total;
 }
 
+namespace {
+Id largestId(const std::vector<Frame> &frames)
+{
+    Id largest = kNoId;
+    for (const Frame &f : frames) {
+        largest = std::max(largest, f.id);
+        for (const StrokeGroup &g : f.groups) {
+            largest = std::max(largest, g.id);
+            for (const Stroke &s : g.strokes)
+                largest = std::max(largest, s.id);
+            for (const Pin &p : g.rig.pins)
+                largest = std::max(largest, p.id);
+        }
+    }
+    return largest;
+}
+} // namespace
+
 void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings, Id nextId)
 {
+    // The layer's id must not clash with the frames' even when `nextId` is too low (the writer
+    // and the loader repair a low counter the same way).
+    Layer only;
+    only.id = std::max<Id>({nextId, 1, largestId(frames) + 1});
+    only.cels = std::move(frames);
+    std::vector<Layer> layers;
+    layers.push_back(std::move(only));
+    const Id after = layers.front().id + 1;
+    reset(std::move(layers), settings, after);
+}
+
+void Document::reset(std::vector<Layer> layers, const DocumentSettings &settings, Id nextId)
+{
+    if (layers.empty())
+        throw std::invalid_argument("Document::reset: a document has at least one layer");
     m_undoStack.clear();
-    m_frames = std::move(frames);
-    for (Frame &f : m_frames)
-        resolveJoins(f);
+    m_layers = std::move(layers);
+    // Opened on the layer with the most drawings (the topmost of equals): the animated one,
+    // where a background exposed once is the first layer.
+    m_current = 0;
+    for (int i = 1; i < layerCount(); ++i)
+        if (m_layers[std::size_t(i)].cels.size() >= m_layers[std::size_t(m_current)].cels.size())
+            m_current = i;
+    for (Layer &l : m_layers)
+        for (Frame &f : l.cels)
+            resolveJoins(f);
     m_settings = settings;
     m_camera = {};
     m_nextId = std::max<Id>(nextId, 1);
@@ -106,54 +228,66 @@ void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings
     emit documentReset();
 }
 
-void Document::insertFrame(int index, Frame frame)
+void Document::insertFrame(Id layerId, int index, Frame frame)
 {
-    index = std::clamp(index, 0, frameCount());
+    std::vector<Frame> &cels = mutableLayer(layerId).cels;
+    index = std::clamp(index, 0, int(cels.size()));
     resolveJoins(frame);
-    m_frames.insert(m_frames.begin() + index, std::move(frame));
-    emit framesInserted(index, 1);
+    cels.insert(cels.begin() + index, std::move(frame));
+    if (layerId == currentLayerId())
+        emit framesInserted(index, 1);
+    emit celsChanged(layerId);
 }
 
-Frame Document::takeFrame(int index)
+Frame Document::takeFrame(Id layerId, int index)
 {
-    if (index < 0 || index >= frameCount())
+    std::vector<Frame> &cels = mutableLayer(layerId).cels;
+    if (index < 0 || index >= int(cels.size()))
         throw std::out_of_range("Document::takeFrame: no such frame");
-    Frame taken = std::move(m_frames[std::size_t(index)]);
-    m_frames.erase(m_frames.begin() + index);
-    emit framesRemoved(index, 1);
+    Frame taken = std::move(cels[std::size_t(index)]);
+    cels.erase(cels.begin() + index);
+    if (layerId == currentLayerId())
+        emit framesRemoved(index, 1);
+    emit celsChanged(layerId);
     return taken;
 }
 
-void Document::moveFrame(int from, int to)
+void Document::moveFrame(Id layerId, int from, int to)
 {
-    if (from < 0 || from >= frameCount() || to < 0 || to >= frameCount())
+    std::vector<Frame> &cels = mutableLayer(layerId).cels;
+    const int count = int(cels.size());
+    if (from < 0 || from >= count || to < 0 || to >= count)
         throw std::out_of_range("Document::moveFrame: no such frame");
     if (from == to)
         return;
-    Frame moving = std::move(m_frames[std::size_t(from)]);
-    m_frames.erase(m_frames.begin() + from);
-    m_frames.insert(m_frames.begin() + to, std::move(moving));
-    emit frameMoved(from, to);
+    Frame moving = std::move(cels[std::size_t(from)]);
+    cels.erase(cels.begin() + from);
+    cels.insert(cels.begin() + to, std::move(moving));
+    if (layerId == currentLayerId())
+        emit frameMoved(from, to);
+    emit celsChanged(layerId);
 }
 
 void Document::setFrameHold(Id frameId, int hold)
 {
-    const int index = frameIndex(frameId);
-    if (index < 0)
+    const Id layerId = layerOfFrame(frameId);
+    if (layerId == kNoId)
         throw std::out_of_range("Document::setFrameHold: no such frame");
-    m_frames[std::size_t(index)].hold = std::clamp(hold, 1, kMaxHold);
+    findFrame(frameId)->hold = std::clamp(hold, 1, kMaxHold);
     emit frameChanged(frameId);
+    emit celsChanged(layerId);
 }
 
 void Document::insertGroup(Id frameId, int index, StrokeGroup group)
 {
-    const int f = frameIndex(frameId);
-    if (f < 0)
+    Frame *found = findFrame(frameId);
+    if (!found)
         throw std::out_of_range("Document::insertGroup: no such frame");
-    auto &groups = m_frames[std::size_t(f)].groups;
+    Frame &target = *found;
+    auto &groups = target.groups;
     index = std::clamp(index, 0, int(groups.size()));
     groups.insert(groups.begin() + index, std::move(group));
-    const std::vector<Id> joined = resolveJoins(m_frames[std::size_t(f)]);
+    const std::vector<Id> joined = resolveJoins(target);
     emit groupsChanged(frameId);
     emit frameChanged(frameId);
     joinsChanged(joined, kNoId);
@@ -164,11 +298,12 @@ StrokeGroup Document::takeGroup(Id groupId)
     const GroupLocation at = locateGroup(groupId);
     if (!at.isValid())
         throw std::out_of_range("Document::takeGroup: no such object");
-    auto &groups = m_frames[std::size_t(at.frame)].groups;
+    Frame &from = mutableFrame(at);
+    auto &groups = from.groups;
     StrokeGroup taken = std::move(groups[std::size_t(at.group)]);
     groups.erase(groups.begin() + at.group);
-    const std::vector<Id> joined = resolveJoins(m_frames[std::size_t(at.frame)]);
-    const Id frameId = m_frames[std::size_t(at.frame)].id;
+    const std::vector<Id> joined = resolveJoins(from);
+    const Id frameId = from.id;
     emit groupsChanged(frameId);
     emit frameChanged(frameId);
     joinsChanged(joined, kNoId);
@@ -180,14 +315,14 @@ void Document::moveGroup(Id groupId, int toIndex)
     const GroupLocation at = locateGroup(groupId);
     if (!at.isValid())
         throw std::out_of_range("Document::moveGroup: no such object");
-    auto &groups = m_frames[std::size_t(at.frame)].groups;
+    auto &groups = mutableFrame(at).groups;
     toIndex = std::clamp(toIndex, 0, int(groups.size()) - 1);
     if (toIndex == at.group)
         return;
     StrokeGroup moving = std::move(groups[std::size_t(at.group)]);
     groups.erase(groups.begin() + at.group);
     groups.insert(groups.begin() + toIndex, std::move(moving));
-    const Id frameId = m_frames[std::size_t(at.frame)].id;
+    const Id frameId = frameAt(at).id;
     emit groupsChanged(frameId);
     emit frameChanged(frameId);
 }
@@ -197,13 +332,12 @@ StrokeGroup &Document::mutableGroup(Id groupId)
     const GroupLocation at = locateGroup(groupId);
     if (!at.isValid())
         throw std::out_of_range("Document: no such object");
-    return m_frames[std::size_t(at.frame)].groups[std::size_t(at.group)];
+    return mutableFrame(at).groups[std::size_t(at.group)];
 }
 
 void Document::groupEdited(Id groupId, bool structural)
 {
-    const GroupLocation at = locateGroup(groupId);
-    const Id frameId = m_frames[std::size_t(at.frame)].id;
+    const Id frameId = frameAt(locateGroup(groupId)).id;
     if (structural)
         emit groupsChanged(frameId);
     emit frameChanged(frameId);
@@ -249,7 +383,7 @@ Stroke Document::takeStroke(Id strokeId)
     const StrokeLocation at = locateStroke(strokeId);
     if (!at.isValid())
         throw std::out_of_range("Document::takeStroke: no such stroke");
-    StrokeGroup &g = m_frames[std::size_t(at.frame)].groups[std::size_t(at.group)];
+    StrokeGroup &g = mutableFrame({at.frame, at.group, at.layer}).groups[std::size_t(at.group)];
     Stroke taken = std::move(g.strokes[std::size_t(at.stroke)]);
     g.strokes.erase(g.strokes.begin() + at.stroke);
     g.deformed.reset();
@@ -286,7 +420,7 @@ void Document::setRig(Id groupId, Rig rig)
     if (g.rig.empty())
         g.deformed.reset();
     // The parts hanging from this object follow its new pose (and this one its parent).
-    const std::vector<Id> joined = resolveJoins(m_frames[std::size_t(locateGroup(groupId).frame)]);
+    const std::vector<Id> joined = resolveJoins(mutableFrame(locateGroup(groupId)));
     emit constraintsChanged(groupId);
     groupEdited(groupId, false);
     joinsChanged(joined, groupId);

@@ -22,9 +22,12 @@ struct Where {
     int stroke = 0;
     int strokeData = 0; // table entries, outside any frame
     int pose = 0;
+    int layer = 0; // in the layer list
 
     QString describe() const
     {
+        if (layer > 0)
+            return FinbookFile::tr("layer %1").arg(layer);
         if (frame > 0) {
             QString s = FinbookFile::tr("frame %1").arg(frame);
             if (object > 0)

@@ -51,6 +51,13 @@
 //              without a camera is a plain format-3 file; a Finbook that does not know CAMR
 //              refuses a file with a camera as made by a newer Finbook (it would drop the
 //              camera on saving).
+//   "LAYR"  := u32 count { u64 id u32 cels u8 flags f64 opacity f64 depth u32 nameBytes
+//              utf8[nameBytes] }[count]   (format 4 on; types.h Layer): the layers, back to
+//              front. FRAM holds their cels one layer after the other: the first layer's `cels`
+//              frames, then the next layer's, and so on (the counts add up to FRAM's). flags:
+//              1 = hidden, 2 = locked, 4 = no onion skin. At most once, after FRAM; the writer
+//              always writes it. A file without it (any older format) is one layer holding
+//              all its frames.
 //
 // Ancillary sections (between FRAM and FEND):
 //   "lite"  := f64 azimuth f64 elevation   (degrees; DocumentSettings' light for shaded fills),
@@ -119,6 +126,11 @@ constexpr quint32 kTagReference = tag("refr");
 constexpr quint32 kTagReferenceSequence = tag("rseq");
 constexpr quint32 kTagSound = tag("SOND");
 constexpr quint32 kTagCamera = tag("CAMR");
+constexpr quint32 kTagLayers = tag("LAYR");
+constexpr quint8 kLayerFlagHidden = 1;
+constexpr quint8 kLayerFlagLocked = 2;
+constexpr quint8 kLayerFlagNoOnion = 4;
+constexpr std::size_t kLayerFixedBytes = 8 + 4 + 1 + 8 + 8 + 4;
 constexpr quint32 kTagShading = tag("shad");
 constexpr quint32 kTagLimbBases = tag("limb");
 constexpr quint32 kTagLight = tag("lite");

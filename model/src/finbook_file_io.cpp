@@ -208,9 +208,36 @@ std::optional<FileError> openFinbook(Document &document, const QString &path)
     return std::nullopt;
 }
 
+std::vector<Layer> takeLoadedLayers(LoadedDocument &loaded)
+{
+    std::vector<Layer> layers;
+    if (loaded.layers.empty()) {
+        Layer only;
+        only.id = std::max<Id>(loaded.nextId, 1);
+        loaded.nextId = only.id + 1;
+        only.cels = std::move(loaded.frames);
+        layers.push_back(std::move(only));
+        return layers;
+    }
+    // The reader made the counts add up to the frames.
+    auto next = loaded.frames.begin();
+    for (const LoadedLayer &l : loaded.layers) {
+        Layer layer;
+        layer.id = l.id;
+        layer.properties = l.properties;
+        const auto end = next + std::min<std::ptrdiff_t>(l.cels, loaded.frames.end() - next);
+        layer.cels.assign(std::make_move_iterator(next), std::make_move_iterator(end));
+        next = end;
+        layers.push_back(std::move(layer));
+    }
+    loaded.frames.clear();
+    return layers;
+}
+
 void adoptLoadedDocument(Document &document, LoadedDocument loaded)
 {
-    document.reset(std::move(loaded.frames), loaded.settings, loaded.nextId);
+    std::vector<Layer> layers = takeLoadedLayers(loaded);
+    document.reset(std::move(layers), loaded.settings, loaded.nextId);
     document.referenceLayer().setReference(std::move(loaded.reference));
     document.soundtrack().reset(std::move(loaded.sound));
     document.setCamera(std::move(loaded.camera));

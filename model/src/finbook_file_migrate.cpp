@@ -20,6 +20,9 @@ constexpr std::array<MigrationStep, kFinbookFormatVersion - kOldestVersion> kSte
     // 2 → 3 added fills and the close-gap setting: an older file has no fills and closes gaps
     // automatically, which are the defaults.
     [](LoadedDocument &document) { document.settings.closeGap = DocumentSettings().closeGap; },
+    // 3 → 4 added layers: an older file is one layer holding all its frames, which is what a
+    // document without a layer list becomes (takeLoadedLayers).
+    [](LoadedDocument &document) { document.layers.clear(); },
 };
 } // namespace
 

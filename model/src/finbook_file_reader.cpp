@@ -122,8 +122,9 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
     const auto *known = std::find(std::begin(kOrder), std::end(kOrder), t);
     const bool sound = t == kTagSound;
     const bool camera = t == kTagCamera;
+    const bool layers = t == kTagLayers;
     const bool expected =
-        t == kTagEnd || sound || camera ||
+        t == kTagEnd || sound || camera || layers ||
         (known != std::end(kOrder) && std::size_t(known - std::begin(kOrder)) >= next);
     const bool text = !tagName(t).startsWith(QLatin1String("0x"));
     if (recovering() && (!text || (!expected && !isAncillary(t)))) {
@@ -203,6 +204,17 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
             problem(c, FileErrorCode::BadValue,
                     FinbookFile::tr("a sound clip comes before the frames"));
         readSoundSection(body);
+        return !cut;
+    }
+    if (layers) {
+        if (next < std::size(kOrder))
+            problem(c, FileErrorCode::BadValue,
+                    FinbookFile::tr("the layers come before the frames"));
+        if (m_sawLayers)
+            problem(c, FileErrorCode::BadValue, FinbookFile::tr("the layers are repeated"));
+        else
+            readLayersSection(body);
+        m_sawLayers = true;
         return !cut;
     }
     if (camera) {
@@ -359,6 +371,9 @@ void Reader::finish(Cursor &c)
         }
     };
     if (recovering()) {
+        // Nothing in the file refers to a layer's id: fresh ones cannot clash.
+        for (LoadedLayer &l : m_doc.layers)
+            l.id = ++m_maxId;
         if (m_idsClash)
             renumberClashingIds();
         resolveAll();

@@ -109,6 +109,9 @@ private:
     // camera/camera_section.cpp: the "CAMR" section, the camera's keys.
     void readCameraSection(Cursor &body);
     bool m_sawCamera = false;
+    // scene/layer_section.cpp: the "LAYR" section, the layers.
+    void readLayersSection(Cursor &body);
+    bool m_sawLayers = false;
     // finbook_file_recover.cpp
     bool findNextSection(Cursor &c, std::size_t next);
     void renumberClashingIds();

@@ -46,13 +46,17 @@ struct Tables {
     Id maxId = kNoId;
     qsizetype expectedBytes = 256;
 
-    explicit Tables(const std::vector<Frame> &frames)
+    explicit Tables(const std::vector<Layer> &layers)
     {
-        for (const Frame &f : frames) {
-            noteId(f.id);
-            expectedBytes += 4 + qsizetype(kFrameFixedBytes);
-            for (const StrokeGroup &g : f.groups)
-                addGroup(g);
+        for (const Layer &l : layers) {
+            noteId(l.id);
+            expectedBytes += qsizetype(kLayerFixedBytes) + l.properties.name.size() * 3;
+            for (const Frame &f : l.cels) {
+                noteId(f.id);
+                expectedBytes += 4 + qsizetype(kFrameFixedBytes);
+                for (const StrokeGroup &g : f.groups)
+                    addGroup(g);
+            }
         }
     }
 
@@ -258,17 +262,40 @@ void writeObject(ByteWriter &w, const StrokeGroup &g, const Tables &tables)
     w.endLength32(length);
 }
 
-void writeFrames(ByteWriter &w, const std::vector<Frame> &frames, const Tables &tables)
+// Every layer's cels, one layer after the other ("LAYR" says how many each has).
+void writeFrames(ByteWriter &w, const std::vector<Layer> &layers, const Tables &tables)
 {
-    w.u32(quint32(frames.size()));
-    for (const Frame &f : frames) {
-        const qsizetype length = w.beginLength(4);
-        w.u64(f.id);
-        w.u32(quint32(f.hold));
-        w.u32(quint32(f.groups.size()));
-        for (const StrokeGroup &g : f.groups)
-            writeObject(w, g, tables);
-        w.endLength32(length);
+    std::size_t count = 0;
+    for (const Layer &l : layers)
+        count += l.cels.size();
+    w.u32(quint32(count));
+    for (const Layer &l : layers)
+        for (const Frame &f : l.cels) {
+            const qsizetype length = w.beginLength(4);
+            w.u64(f.id);
+            w.u32(quint32(f.hold));
+            w.u32(quint32(f.groups.size()));
+            for (const StrokeGroup &g : f.groups)
+                writeObject(w, g, tables);
+            w.endLength32(length);
+        }
+}
+
+// The "LAYR" section's payload (scene/layer_section.cpp reads it).
+void writeLayers(ByteWriter &w, const std::vector<Layer> &layers)
+{
+    w.u32(quint32(layers.size()));
+    for (const Layer &l : layers) {
+        const LayerProperties &p = l.properties;
+        w.u64(l.id);
+        w.u32(quint32(l.cels.size()));
+        w.u8(quint8((p.visible ? 0 : kLayerFlagHidden) | (p.locked ? kLayerFlagLocked : 0) |
+                    (p.onionSkin ? 0 : kLayerFlagNoOnion)));
+        w.f64(p.opacity);
+        w.f64(p.depth);
+        const QByteArray name = p.name.toUtf8();
+        w.u32(quint32(name.size()));
+        w.raw(name.constData(), std::size_t(name.size()));
     }
 }
 
@@ -322,7 +349,7 @@ QByteArray serializeFinbook(const Document &document)
     if (!document.referenceLayer().isEmpty())
         for (AncillarySection &section : referenceSections(document.referenceLayer().reference()))
             extra.push_back(std::move(section));
-    return serializeFinbook(document.frames(), document.settings(), extra,
+    return serializeFinbook(document.layers(), document.settings(), extra,
                             document.soundtrack().clips(), document.camera());
 }
 
@@ -330,7 +357,17 @@ QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSett
                             const std::vector<AncillarySection> &ancillary,
                             const std::vector<SoundClip> &sound, const CameraTrack &camera)
 {
-    const Tables tables(frames);
+    std::vector<Layer> one(1);
+    one.front().cels = frames;
+    one.front().id = Tables(one).maxId + 1;
+    return serializeFinbook(one, settings, ancillary, sound, camera);
+}
+
+QByteArray serializeFinbook(const std::vector<Layer> &layers, const DocumentSettings &settings,
+                            const std::vector<AncillarySection> &ancillary,
+                            const std::vector<SoundClip> &sound, const CameraTrack &camera)
+{
+    const Tables tables(layers);
     qsizetype extra = 0;
     for (const AncillarySection &a : ancillary)
         extra += qsizetype(kSectionHeaderBytes + kSectionCrcBytes) + a.payload.size();
@@ -349,7 +386,8 @@ QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSett
     writeSection(w, kTagDocument, [&] { writeDocumentSection(w, settings, maxId); });
     writeSection(w, kTagStrokes, [&] { writeStrokeTable(w, tables); });
     writeSection(w, kTagPoses, [&] { writePoseTable(w, tables); });
-    writeSection(w, kTagFrames, [&] { writeFrames(w, frames, tables); });
+    writeSection(w, kTagFrames, [&] { writeFrames(w, layers, tables); });
+    writeSection(w, kTagLayers, [&] { writeLayers(w, layers); });
     for (const SoundClip &clip : sound)
         writeSection(w, kTagSound, [&] { writeSoundClip(w, clip); });
     if (!camera.isEmpty())

@@ -24,12 +24,15 @@ FrameListModel::FrameListModel(Document *document, QObject *parent)
     , m_doc(document)
 {
     rebuild();
-    connect(m_doc, &Document::documentReset, this, [this] {
+    const auto reset = [this] {
         beginResetModel();
         m_revisions.clear();
         rebuild();
         endResetModel();
-    });
+    };
+    connect(m_doc, &Document::documentReset, this, reset);
+    // The frames are the current layer's: another layer, other rows.
+    connect(m_doc, &Document::currentLayerChanged, this, reset);
     connect(m_doc, &Document::framesInserted, this, &FrameListModel::onFramesInserted);
     connect(m_doc, &Document::framesRemoved, this, &FrameListModel::onFramesRemoved);
     connect(m_doc, &Document::frameMoved, this, &FrameListModel::onFrameMoved);

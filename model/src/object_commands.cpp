@@ -18,7 +18,7 @@ MergeObjectsCommand::MergeObjectsCommand(Document *doc, Id sourceId, Id targetId
     const GroupLocation source = doc->locateGroup(sourceId);
     const GroupLocation target = doc->locateGroup(targetId);
     if (!source.isValid() || !target.isValid() || source.frame != target.frame ||
-        sourceId == targetId)
+        source.layer != target.layer || sourceId == targetId)
         setObsolete(true);
 }
 
@@ -26,11 +26,12 @@ void MergeObjectsCommand::redo()
 {
     const GroupLocation source = m_doc->locateGroup(m_sourceId);
     const GroupLocation target = m_doc->locateGroup(m_targetId);
-    if (isObsolete() || !source.isValid() || !target.isValid() || source.frame != target.frame) {
+    if (isObsolete() || !source.isValid() || !target.isValid() || source.frame != target.frame ||
+        source.layer != target.layer) {
         setObsolete(true);
         return;
     }
-    m_frameId = m_doc->frameAt(source.frame).id;
+    m_frameId = m_doc->frameAt(source).id;
     m_sourceIndex = source.group;
     const StrokeGroup &targetGroup = *m_doc->group(m_targetId);
     m_targetStrokes = targetGroup.strokes;

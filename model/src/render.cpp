@@ -10,6 +10,7 @@
 
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/render.h>
+#include <finbook/model/scene/shot.h>
 
 #include <QPainterPath>
 #include <QVarLengthArray>
@@ -376,9 +377,56 @@ void paintFrameItems(QPainter &painter, const Frame &frame, const DocumentSettin
 }
 } // namespace
 
+namespace {
+// A composed shot (scene/shot.h): the page once, then each layer's plane at its opacity, seen
+// through its own camera when the picture is seen through one.
+void paintPlanes(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
+                 const RenderOptions &options)
+{
+    painter.save();
+    const QRectF page(QPointF(0, 0), QSizeF(settings.canvasSize));
+    if (options.paintBackground)
+        painter.fillRect(page, QColor::fromRgba(settings.background));
+    if (options.underlay) {
+        painter.save();
+        painter.setClipRect(page, Qt::IntersectClip);
+        options.underlay(painter);
+        painter.restore();
+    }
+    RenderOptions planeOptions = options;
+    planeOptions.paintBackground = false;
+    planeOptions.underlay = {};
+    const QTransform shotCamera =
+        options.camera ? cameraTransform(*options.camera, page.size()) : QTransform();
+    int begin = 0;
+    for (const FramePlane &plane : frame.planes) {
+        const int end = std::clamp(plane.groupEnd, begin, int(frame.groups.size()));
+        Frame layer;
+        layer.id = frame.id;
+        layer.groups.assign(frame.groups.begin() + begin, frame.groups.begin() + end);
+        begin = end;
+        planeOptions.opacity = options.opacity * std::clamp(plane.opacity, 0.0, 1.0);
+        if (layer.groups.empty() || planeOptions.opacity <= 0.0)
+            continue;
+        painter.save();
+        if (options.camera && plane.depth != 0.0) {
+            const CameraState seen = planeCamera(*options.camera, plane.depth, page.size());
+            painter.setTransform(cameraTransform(seen, page.size()) * shotCamera.inverted(), true);
+        }
+        paintFrame(painter, layer, settings, planeOptions);
+        painter.restore();
+    }
+    painter.restore();
+}
+} // namespace
+
 void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
                 const RenderOptions &options)
 {
+    if (!frame.planes.empty()) {
+        paintPlanes(painter, frame, settings, options);
+        return;
+    }
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     const QRectF page(QPointF(0, 0), QSizeF(settings.canvasSize));

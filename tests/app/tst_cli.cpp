@@ -9,6 +9,7 @@
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -180,10 +181,16 @@ void TestCli::infoMatchesTheFile()
     QCOMPARE(info[QStringLiteral("fps")].toInt(), loaded->settings.fps);
     QCOMPARE(info[QStringLiteral("canvas_width")].toInt(), loaded->settings.canvasSize.width());
     QCOMPARE(info[QStringLiteral("canvas_height")].toInt(), loaded->settings.canvasSize.height());
-    // The example as promised: a walk cycle of at least 12 frames with several objects each,
-    // its ground line shared by every frame.
+    // The example as promised: a scene of three layers, one a walk cycle of at least 12 frames
+    // with several objects each, its ground line shared by every frame.
+    const QJsonArray layers = info[QStringLiteral("layers")].toArray();
+    QCOMPARE(layers.size(), 3);
     QVERIFY(loaded->frames.size() >= 12);
-    QVERIFY(objects >= 7 * qint64(loaded->frames.size()));
+    qint64 mostCels = 0;
+    for (const QJsonValue &l : layers)
+        mostCels = std::max(mostCels, l.toObject()[QStringLiteral("cels")].toInteger());
+    QVERIFY(mostCels >= 12);
+    QVERIFY(objects >= 7 * mostCels);
     QVERIFY(qint64(distinct.size()) < strokes);
 }
 
@@ -211,9 +218,15 @@ void TestCli::exportWritesEveryFrame()
     QVERIFY2(run.err.isEmpty(), run.err.constData());
     const QStringList pngs =
         QDir(outDir).entryList({QStringLiteral("*.png")}, QDir::Files, QDir::Name);
-    QCOMPARE(pngs.size(), qsizetype(loaded->frames.size()));
+    // One picture per tick of the shot (the camera moves on every tick).
+    const qsizetype ticks =
+        qsizetype(QJsonDocument::fromJson(runFinbook({QStringLiteral("info"), kExample}).out)
+                      .object()[QStringLiteral("ticks")]
+                      .toInteger());
+    QCOMPARE(ticks, 12);
+    QCOMPARE(pngs.size(), ticks);
     QCOMPARE(pngs.first(), QStringLiteral("frame_0001.png"));
-    QCOMPARE(run.out.count('\n'), qsizetype(loaded->frames.size()));
+    QCOMPARE(run.out.count('\n'), ticks);
     const QRgb background = loaded->settings.background;
     for (const QString &name : pngs) {
         const QImage image(QDir(outDir).filePath(name));
@@ -236,7 +249,7 @@ void TestCli::cameraInInfoAndExport()
     model::Document doc;
     model::DocumentSettings settings;
     settings.canvasSize = QSize(200, 100);
-    doc.reset({}, settings, 1);
+    doc.reset(std::vector<model::Frame>{}, settings, 1);
     doc.undoStack()->push(new model::InsertFrameCommand(&doc, 0));
     auto dot = std::make_shared<model::StrokeData>();
     dot->width = 8.0f;

@@ -26,7 +26,7 @@ private slots:
         model::Document doc;
         model::DocumentSettings settings;
         settings.canvasSize = QSize(160, 120);
-        doc.reset({model::Frame{doc.allocateId(), 1, {}}}, settings, doc.nextId());
+        doc.reset({model::Frame{doc.allocateId(), 1, {}, {}}}, settings, doc.nextId());
         auto reference =
             model::importReferenceFile(writeTwoColourPng(dir.path()), QSizeF(160, 120));
         QVERIFY(reference);
@@ -60,7 +60,7 @@ private slots:
         model::DocumentSettings settings;
         settings.canvasSize = QSize(160, 120);
         const model::Id frame = doc.allocateId(); // before nextId() is read
-        doc.reset({model::Frame{frame, 1, {}}}, settings, doc.nextId());
+        doc.reset({model::Frame{frame, 1, {}, {}}}, settings, doc.nextId());
         const QString bare = dir.filePath(QStringLiteral("bare.finbook"));
         QVERIFY(!model::saveFinbook(doc, bare));
 

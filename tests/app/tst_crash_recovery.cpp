@@ -36,7 +36,7 @@ QByteArray documentIn(const QString &path)
     if (!loaded)
         return "unreadable: " + loaded.error().message.toUtf8();
     model::Document doc;
-    doc.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    model::adoptLoadedDocument(doc, std::move(*loaded));
     return model::serializeFinbook(doc);
 }
 
@@ -136,7 +136,7 @@ void TestCrashRecovery::killedFinbookIsRecovered()
     auto restored = model::readFinbook(r.dump);
     QVERIFY(restored);
     model::Document d;
-    d.reset(std::move(restored->frames), restored->settings, restored->nextId);
+    model::adoptLoadedDocument(d, std::move(*restored));
     QCOMPARE(model::serializeFinbook(d), autosaved);
     QCOMPARE(r.state.value(0), QByteArray("modified")); // restored as unsaved work
     QCOMPARE(QString::fromUtf8(r.state.value(1)), QFileInfo(file).absoluteFilePath());
@@ -171,7 +171,7 @@ void TestCrashRecovery::untitledDocumentIsRecovered()
     auto restored = model::readFinbook(r.dump);
     QVERIFY(restored);
     model::Document d;
-    d.reset(std::move(restored->frames), restored->settings, restored->nextId);
+    model::adoptLoadedDocument(d, std::move(*restored));
     QCOMPARE(model::serializeFinbook(d), autosaved);
     QCOMPARE(r.state.value(0), QByteArray("modified"));
     QVERIFY(r.state.value(1).isEmpty()); // still untitled

@@ -99,7 +99,7 @@ QByteArray mediaDocument(const std::vector<QByteArray> &clips, model::ReferenceK
     Document doc;
     model::DocumentSettings settings;
     settings.canvasSize = QSize(64, 48);
-    model::Frame frame{doc.allocateId(), 1, {}};
+    model::Frame frame{doc.allocateId(), 1, {}, {}};
     model::StrokeGroup group;
     group.id = doc.allocateId();
     auto data = std::make_shared<model::StrokeData>();
@@ -397,11 +397,11 @@ void TestLimits::startsQuicklyWhateverTheRecoveryFolderHolds()
     const QString folder = m_dir.filePath(QStringLiteral("recovery"));
     QVERIFY(QDir().mkpath(folder));
     model::Document doc;
-    doc.reset({model::Frame{1, 1, {}}}, model::DocumentSettings(), 2);
+    doc.reset({model::Frame{1, 1, {}, {}}}, model::DocumentSettings(), 2);
     model::RecoveryInfo info;
     info.title = QStringLiteral("real");
     info.savedAt = QDateTime::currentDateTimeUtc();
-    const QByteArray copy = model::recoveryCopyBytes(doc.frames(), doc.settings(), info);
+    const QByteArray copy = model::recoveryCopyBytes(doc.layers(), doc.settings(), info);
     QVERIFY(!writeFile(m_dir, QStringLiteral("recovery/11-a-1.finbook"), copy).isEmpty());
     const QString sparse = writeFile(m_dir, QStringLiteral("recovery/12-b-1.finbook"), copy);
     QVERIFY(QFile::resize(sparse, qint64(2) << 30));
@@ -438,7 +438,7 @@ QString TestLimits::holdsBomb()
     frames.u32(quint32(count));
     for (int i = 0; i < count; ++i) {
         fb::Bytes f;
-        f.u64(quint64(100 + i)).u32(quint32(model::kMaxHold)).u32(1);
+        f.u64(quint64(100 + i)).u32(1000).u32(1);
         f.record(fb::object(quint64(1000000 + i), {{quint64(2000000 + i), 0}}));
         frames.record(f);
     }

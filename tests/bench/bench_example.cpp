@@ -1,5 +1,8 @@
 // finbook-bench example OUTFILE: writes the bundled example animation,
-// resources/examples/walk.finbook — a 12-frame walk cycle at 12 fps on a 1280×720 canvas.
+// resources/examples/walk.finbook — a small scene at 12 fps on a 1280×720 canvas: a background
+// drawn once and exposed for the whole shot (at depth 1, so the camera's move shifts it half as
+// much), a 12-frame walk cycle on its own layer, a blink on a third layer, and a camera that
+// eases in on the walker.
 //
 // Drawn procedurally but meant to look hand-made: every stroke wobbles a little, its pressure
 // swells in the middle and tapers at the ends, and the seed is fixed so the file is the same
@@ -117,13 +120,20 @@ std::vector<StrokeDataPtr> drawLimb(Pen &pen, const Limb &l, double thickness, Q
             pen.draw(extremity, color, 3.6f)};
 }
 
-StrokeGroup object(Document &doc, const char *name, std::vector<StrokeDataPtr> strokes)
+// Ids from 1 in drawing order, the walk cycle first: its frames keep the ids they had when the
+// example was one layer (tests/data/walk_v1.finbook holds the same drawings).
+struct Ids {
+    Id next = 1;
+    Id operator()() { return next++; }
+};
+
+StrokeGroup object(Ids &ids, const char *name, std::vector<StrokeDataPtr> strokes)
 {
     StrokeGroup g;
-    g.id = doc.allocateId();
+    g.id = ids();
     g.name = QString::fromUtf8(name);
     for (auto &s : strokes)
-        g.strokes.push_back({doc.allocateId(), std::move(s)});
+        g.strokes.push_back({ids(), std::move(s)});
     return g;
 }
 
@@ -168,11 +178,11 @@ std::vector<StrokeDataPtr> drawArm(Pen &pen, const Limb &arm, QRgb color)
     return drawLimb(pen, arm, 18, color, arc(arm.end + QPointF(2, 6), 9, 9, 0, 340));
 }
 
-Frame drawFrame(Document &doc, Pen &pen, int f, const StrokeDataPtr &groundLine)
+Frame drawFrame(Ids &doc, Pen &pen, int f, const StrokeDataPtr &groundLine)
 {
     const Pose p = poseAt(f);
     Frame frame;
-    frame.id = doc.allocateId();
+    frame.id = doc();
     // Grass tufts slide left so the character seems to walk while staying centred.
     std::vector<StrokeDataPtr> ground{groundLine};
     for (int i = 0; i < 8; ++i) {
@@ -201,21 +211,96 @@ Frame drawFrame(Document &doc, Pen &pen, int f, const StrokeDataPtr &groundLine)
     return frame;
 }
 
+// The background: hills, a house and the sun, drawn once.
+Frame drawBackground(Ids &ids, Pen &pen)
+{
+    Frame frame;
+    frame.id = ids();
+    frame.hold = kFrames; // the whole shot
+    frame.groups.push_back(
+        object(ids, "hills",
+               {pen.draw({{0, 520}, {220, 470}, {420, 505}, {700, 455}, {980, 500}, {1280, 470}},
+                         kBackInk, 2.5f)}));
+    const QPointF base(930, 520);
+    frame.groups.push_back(object(
+        ids, "house",
+        {pen.draw(
+             {base, base + QPointF(0, -120), base + QPointF(170, -120), base + QPointF(170, 0)},
+             kInk, 3.0f),
+         pen.draw({base + QPointF(-20, -115), base + QPointF(85, -200), base + QPointF(190, -115)},
+                  kEarth, 3.5f),
+         pen.draw({base + QPointF(70, 0), base + QPointF(70, -60), base + QPointF(105, -60),
+                   base + QPointF(105, 0)},
+                  kEarth, 2.5f),
+         pen.draw({base + QPointF(20, -95), base + QPointF(50, -95), base + QPointF(50, -70),
+                   base + QPointF(20, -70), base + QPointF(20, -95)},
+                  kShirt, 2.0f)}));
+    frame.groups.push_back(
+        object(ids, "sun", {pen.draw(arc({200, 150}, 45, 45, 0, 360), 0xffe0a020, 4.0f)}));
+    return frame;
+}
+
+// A blink: eyelids over the eye on two frames, nothing before or after.
+std::vector<Frame> drawBlink(Ids &ids, Pen &pen)
+{
+    constexpr int kFirst = 7; // the frames the eyes are shut
+    std::vector<Frame> cels;
+    Frame before;
+    before.id = ids();
+    before.hold = kFirst;
+    cels.push_back(std::move(before));
+    for (int f = kFirst; f < kFirst + 2; ++f) {
+        const QPointF eye = poseAt(f).head + QPointF(18, -6);
+        Frame shut;
+        shut.id = ids();
+        shut.groups.push_back(
+            object(ids, "eyelid",
+                   {pen.draw({eye + QPointF(-4, -3), eye + QPointF(5, -3)}, 0xffffffff, 9.0f),
+                    pen.draw({eye + QPointF(-6, 0), eye + QPointF(0, 2), eye + QPointF(6, 0)}, kInk,
+                             2.5f)}));
+        cels.push_back(std::move(shut));
+    }
+    Frame after;
+    after.id = ids();
+    after.hold = kFrames - kFirst - 2;
+    cels.push_back(std::move(after));
+    return cels;
+}
+
 int benchExample(const QStringList &args)
 {
     if (args.size() != 1) {
         std::fprintf(stderr, "usage: finbook-bench example OUTFILE\n");
         return 2;
     }
-    Document doc;
+    Ids ids;
     Pen pen(20240611);
     const StrokeDataPtr groundLine = pen.draw({{40, 642}, {640, 645}, {1240, 641}}, kEarth, 3.0f);
     std::vector<Frame> frames;
     for (int f = 0; f < kFrames; ++f)
-        frames.push_back(drawFrame(doc, pen, f, groundLine));
+        frames.push_back(drawFrame(ids, pen, f, groundLine));
+    std::vector<Layer> layers(3);
+    layers[1].id = ids();
+    layers[1].properties.name = QStringLiteral("Walk");
+    layers[1].cels = std::move(frames);
+    layers[0].id = ids();
+    layers[0].properties.name = QStringLiteral("Background");
+    layers[0].properties.depth = 1.0;
+    layers[0].cels.push_back(drawBackground(ids, pen));
+    layers[2].id = ids();
+    layers[2].properties.name = QStringLiteral("Blink");
+    layers[2].cels = drawBlink(ids, pen);
     DocumentSettings settings; // 1280×720, white, 12 fps, looping
-    const Id next = doc.nextId();
-    doc.reset(std::move(frames), settings, next);
+    Document doc;
+    doc.reset(std::move(layers), settings, ids.next);
+    // The camera eases in on the walker over the cycle.
+    CameraKey from, to;
+    from.center = QPointF(640, 360);
+    from.easing = CameraEasing::EaseInOut;
+    to.tick = kFrames - 1;
+    to.center = QPointF(700, 400);
+    to.zoom = 1.25;
+    doc.setCamera(CameraTrack{{from, to}});
     // Not saveFinbook: regenerating the example must not leave a backup beside it.
     const QByteArray bytes = serializeFinbook(doc);
     if (auto check = readFinbook(bytes); !check) {
@@ -228,8 +313,8 @@ int benchExample(const QStringList &args)
                      qPrintable(file.errorString()));
         return 1;
     }
-    std::printf("{\"bench\":\"example\",\"frames\":%d,\"points\":%lld}\n", doc.frameCount(),
-                doc.pointCount());
+    std::printf("{\"bench\":\"example\",\"layers\":%d,\"frames\":%d,\"points\":%lld}\n",
+                doc.layerCount(), doc.frameCount(), doc.pointCount());
     return 0;
 }
 } // namespace

@@ -21,12 +21,19 @@ inline QString examplePath()
     return QStringLiteral(FINBOOK_SOURCE_DIR "/resources/examples/walk.finbook");
 }
 
+// The example's walk cycle: the layer with the most drawings (12), without the scene's other
+// layers and its camera.
 inline model::ExportSource loadExample()
 {
     auto loaded = model::loadFinbook(examplePath());
     if (!loaded)
         return {};
-    return model::ExportSource{std::move(loaded->frames), loaded->settings, {}};
+    std::vector<model::Layer> layers = model::takeLoadedLayers(*loaded);
+    auto walk = layers.begin();
+    for (auto l = layers.begin(); l != layers.end(); ++l)
+        if (l->cels.size() > walk->cels.size())
+            walk = l;
+    return model::ExportSource{std::move(walk->cels), loaded->settings, {}};
 }
 
 // The example with some drawings held: frame 3 for 3 ticks, frame 8 for 2, the last for 4.

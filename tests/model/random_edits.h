@@ -5,6 +5,7 @@
 #include <finbook/model/commands.h>
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/pins/pin_commands.h>
+#include <finbook/model/scene/layer_commands.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 #include <finbook/model/skeleton/skeleton_join_commands.h>
 
@@ -59,7 +60,7 @@ inline std::unique_ptr<QUndoCommand> randomSkeletonCommand(model::Document &doc,
     // Another object of the same frame, for joins.
     Id other = kNoId, frameId = kNoId;
     if (const GroupLocation at = doc.locateGroup(groupId); at.isValid()) {
-        const Frame &f = doc.frameAt(at.frame);
+        const Frame &f = doc.frameAt(at);
         other = f.groups[rng.bounded(quint32(f.groups.size()))].id;
         frameId = f.id;
     }
@@ -181,14 +182,59 @@ inline std::unique_ptr<QUndoCommand> randomCameraCommand(model::Document &doc,
     return std::make_unique<SetCameraCommand>(&doc, doc.camera(), QStringLiteral("Camera"));
 }
 
-// Builds one random command against the document's current state (never null).
+// A layer edit: add, duplicate, remove, reorder, new properties, time inserted or deleted.
+inline std::unique_ptr<QUndoCommand> randomLayerCommand(model::Document &doc, QRandomGenerator &rng)
+{
+    using namespace model;
+    const Id layer = doc.layerAt(int(rng.bounded(doc.layerCount()))).id;
+    const qint64 tick = rng.bounded(12);
+    switch (rng.bounded(7)) {
+    case 0:
+        return std::make_unique<AddLayerCommand>(&doc, int(rng.bounded(doc.layerCount() + 1)),
+                                                 QStringLiteral("L%1").arg(rng.bounded(100)));
+    case 1:
+        return std::make_unique<DuplicateLayerCommand>(&doc, layer);
+    case 2:
+        return std::make_unique<RemoveLayerCommand>(&doc, layer);
+    case 3:
+        return std::make_unique<MoveLayerCommand>(&doc, layer, int(rng.bounded(doc.layerCount())));
+    case 4: {
+        LayerProperties p = doc.layer(layer)->properties;
+        p.visible = rng.bounded(4) != 0;
+        p.locked = rng.bounded(4) == 0;
+        p.onionSkin = rng.bounded(2) == 0;
+        p.opacity = rng.bounded(1.0);
+        p.depth = rng.bounded(3.0) - 0.5;
+        p.name = QStringLiteral("n%1").arg(rng.bounded(100));
+        return std::make_unique<SetLayerPropertiesCommand>(&doc, layer, p, QStringLiteral("P"),
+                                                           int(rng.bounded(2)) - 1);
+    }
+    case 5:
+        if (auto c = insertTimeCommand(&doc, {layer}, tick, 1 + int(rng.bounded(3))))
+            return c;
+        break;
+    default:
+        if (auto c = deleteTimeCommand(&doc, {layer}, tick, 1 + int(rng.bounded(4))))
+            return c;
+        break;
+    }
+    return std::make_unique<AddLayerCommand>(&doc, 0, QStringLiteral("back"));
+}
+
+// Builds one random command against the document's current state (never null). Now and then
+// another layer becomes current first (editing state, not undone: undo must not depend on it).
 inline std::unique_ptr<QUndoCommand> randomCommand(model::Document &doc, QRandomGenerator &rng)
 {
     using namespace model;
+    if (rng.bounded(8) == 0)
+        doc.setCurrentLayer(doc.layerAt(int(rng.bounded(doc.layerCount()))).id);
     const Picks p = randomPicks(doc, rng);
     const int n = doc.frameCount();
     const QPointF somewhere(rng.bounded(1000.0), rng.bounded(700.0));
-    switch (rng.bounded(25)) {
+    switch (rng.bounded(27)) {
+    case 25:
+    case 26:
+        return randomLayerCommand(doc, rng);
     case 24:
         return randomCameraCommand(doc, rng);
     case 22:

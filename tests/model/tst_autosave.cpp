@@ -24,7 +24,7 @@ QByteArray documentIn(const QString &copy)
     if (!loaded)
         return QByteArray("unreadable: ") + loaded.error().message.toUtf8();
     Document d;
-    d.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    adoptLoadedDocument(d, std::move(*loaded));
     return serializeFinbook(d);
 }
 
@@ -179,7 +179,7 @@ void TestAutosave::killedProcessCopiesAreOrphans()
     buildSample(doc);
     hold(doc, 0, 3);
     const QByteArray bytes = recoveryCopyBytes(
-        doc.frames(), doc.settings(),
+        doc.layers(), doc.settings(),
         {QStringLiteral("killed.finbook"), QString(), QDateTime::currentDateTimeUtc(), 3});
     int fds[2];
     QVERIFY(::pipe(fds) == 0);
@@ -255,7 +255,7 @@ void TestAutosave::adoptedOrphanBelongsToTheDocument()
     Document restored;
     auto loaded = loadFinbook(orphans[0].path);
     QVERIFY(loaded);
-    restored.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    adoptLoadedDocument(restored, std::move(*loaded));
     Autosaver autosaver(&restored, &next);
     restored.undoStack()->resetClean();
     autosaver.adopt(orphans[0].path);

@@ -43,7 +43,7 @@ void dotDocument(Document &doc, QPointF at, int hold = 1)
 {
     DocumentSettings settings;
     settings.canvasSize = QSize(200, 100);
-    doc.reset({}, settings, 1);
+    doc.reset(std::vector<Frame>{}, settings, 1);
     doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
     const Frame &frame = doc.frameAt(0);
     doc.undoStack()->push(new SetFrameHoldCommand(&doc, frame.id, hold));

@@ -81,7 +81,7 @@ LoadedDocument openOnSmallStack(const deep_build::Params &p)
         auto loaded = readFinbook(bytes);
         if (loaded) {
             Document d; // and as a Document holding it resolves them again
-            d.reset(loaded->frames, loaded->settings, loaded->nextId);
+            adoptLoadedDocument(d, *loaded);
             doc = std::move(*loaded);
         }
     });

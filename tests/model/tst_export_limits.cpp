@@ -63,11 +63,11 @@ ExportSource sourceWith(std::vector<StrokeDataPtr> strokes, QSize size = QSize(1
     return source;
 }
 
-// `frames` drawings held kMaxHold ticks each.
+// `frames` drawings held 1000 ticks each.
 ExportSource heldFor(int frames)
 {
     ExportSource source = sourceWith({strokeOf({{10, 10, 1}, {90, 90, 1}})});
-    source.frames.front().hold = kMaxHold;
+    source.frames.front().hold = 1000;
     source.frames.resize(std::size_t(frames), source.frames.front());
     for (int i = 0; i < frames; ++i)
         source.frames[std::size_t(i)].id = Id(100 + i);

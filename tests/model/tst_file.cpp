@@ -12,19 +12,22 @@ using namespace finbook::model;
 using namespace file_test;
 
 // Largest id stored anywhere in a document's frames.
-static Id largestId(const std::vector<Frame> &frames)
+static Id largestId(const std::vector<Layer> &layers)
 {
     Id largest = 0;
-    for (const Frame &f : frames) {
-        largest = std::max(largest, f.id);
-        for (const StrokeGroup &g : f.groups) {
-            largest = std::max(largest, g.id);
-            for (const Stroke &s : g.strokes)
-                largest = std::max(largest, s.id);
-            for (const Pin &p : g.rig.pins)
-                largest = std::max(largest, p.id);
+    for (const Layer &l : layers)
+        largest = std::max(largest, l.id);
+    for (const Layer &l : layers)
+        for (const Frame &f : l.cels) {
+            largest = std::max(largest, f.id);
+            for (const StrokeGroup &g : f.groups) {
+                largest = std::max(largest, g.id);
+                for (const Stroke &s : g.strokes)
+                    largest = std::max(largest, s.id);
+                for (const Pin &p : g.rig.pins)
+                    largest = std::max(largest, p.id);
+            }
         }
-    }
     return largest;
 }
 
@@ -54,12 +57,12 @@ void TestFile::roundTripIsByteIdentical()
     QCOMPARE(loaded->formatVersion, kFinbookFormatVersion);
     // The stored next id is canonical (one past the largest id), not the allocation counter,
     // which depends on undo history.
-    QCOMPARE(loaded->nextId, largestId(doc.frames()) + 1);
+    QCOMPARE(loaded->nextId, largestId(doc.layers()) + 1);
     QCOMPARE(loaded->settings, doc.settings());
     compareFrames(loaded->frames, doc.frames());
 
     Document reopened;
-    reopened.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    adoptLoadedDocument(reopened, std::move(*loaded));
     QCOMPARE(serializeFinbook(reopened), first);
 }
 
@@ -110,7 +113,7 @@ void TestFile::offGridPressureIsQuantisedOnce()
     QCOMPARE(p[1].pressure, 1.0f);
     QCOMPARE(p[2].pressure, 0.0f);
     Document reopened;
-    reopened.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    adoptLoadedDocument(reopened, std::move(*loaded));
     QCOMPARE(serializeFinbook(reopened), first);
 }
 
@@ -158,7 +161,7 @@ void TestFile::saveKeepsBackup()
     QVERIFY(!openFinbook(opened, path));
     compareFrames(opened.frames(), doc.frames());
     QCOMPARE(opened.settings(), doc.settings());
-    QCOMPARE(opened.nextId(), largestId(doc.frames()) + 1);
+    QCOMPARE(opened.nextId(), largestId(doc.layers()) + 1);
 
     opened.setFrameHold(opened.frameAt(0).id, 7);
     QVERIFY(!saveFinbook(opened, path));

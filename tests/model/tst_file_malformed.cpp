@@ -334,7 +334,7 @@ void TestFileMalformed::fuzzedFilesNeverCrash()
         ++loaded;
         // Whatever loads is a valid document: it saves and loads again.
         Document doc;
-        doc.reset(std::move(result->frames), result->settings, result->nextId);
+        adoptLoadedDocument(doc, std::move(*result));
         QVERIFY(readFinbook(serializeFinbook(doc)));
     }
     qInfo("fuzz: %d of 2000 mutated files loaded, the rest were refused", loaded);

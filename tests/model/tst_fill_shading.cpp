@@ -506,7 +506,7 @@ void TestFillShading::fileKeepsShadingAndLight()
     QCOMPARE(loaded->settings.lightElevation, 20.0);
     QCOMPARE(loaded->frames.at(0).groups.at(0).fills, doc.group(g)->fills);
     Document reopened;
-    reopened.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    adoptLoadedDocument(reopened, std::move(*loaded));
     QCOMPARE(serializeFinbook(reopened), bytes);
 }
 

@@ -435,7 +435,7 @@ void TestFills::saveLoadRoundTrip()
     QCOMPARE(loaded->settings.closeGap, 12.0);
     QCOMPARE(loaded->frames.at(0).groups.at(0).fills, doc.group(g)->fills);
     Document reopened;
-    reopened.reset(std::move(loaded->frames), loaded->settings, loaded->nextId);
+    adoptLoadedDocument(reopened, std::move(*loaded));
     QCOMPARE(serializeFinbook(reopened), bytes);
 }
 
@@ -491,7 +491,7 @@ void TestFills::fillIdNoStrokeCanHaveIsRefusedAndRecovered()
     QCOMPARE(recovered->frames.at(0).groups.at(0).fills.at(0).strokes, kept);
     QVERIFY(recovered->nextId <= kMaxId + 1);
     Document again;
-    again.reset(std::move(recovered->frames), recovered->settings, recovered->nextId);
+    adoptLoadedDocument(again, std::move(*recovered));
     auto reread = readFinbook(serializeFinbook(again));
     QVERIFY2(reread, reread ? "" : qPrintable(reread.error().message));
 

@@ -299,7 +299,7 @@ std::vector<std::pair<QString, QByteArray>> seeds()
         {QStringLiteral("reference_sequence.finbook"), serializeFinbook(sequence)},
         {QStringLiteral("sound.finbook"), serializeFinbook(sound)},
         {QStringLiteral("recovery_copy.finbook"),
-         recoveryCopyBytes(rigs.frames(), rigs.settings(),
+         recoveryCopyBytes(rigs.layers(), rigs.settings(),
                            {QStringLiteral("rigs.finbook"), QStringLiteral("/tmp/rigs.finbook"),
                             QDateTime(QDate(2024, 11, 23), QTime(10, 0), Qt::UTC), 2})},
         {QStringLiteral("format_v1.finbook"),

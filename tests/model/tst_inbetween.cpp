@@ -319,7 +319,7 @@ void TestInbetween::commandRejectsBadInput()
     QVERIFY(!InsertInbetweensCommand(&doc, a.id, b.id, 60, {}).isObsolete());
     // A key deleted before redo: the command gives up instead of inserting anywhere.
     InsertInbetweensCommand late(&doc, a.id, b.id, 2, {});
-    doc.takeFrame(0);
+    doc.takeFrame(doc.currentLayerId(), 0);
     late.redo();
     QVERIFY(late.isObsolete());
     QCOMPARE(doc.frameCount(), 1);

@@ -44,7 +44,7 @@ QByteArray copyBytes(const QString &title)
     info.title = title;
     info.savedAt = QDateTime::currentDateTimeUtc();
     info.frames = doc.frameCount();
-    return recoveryCopyBytes(doc.frames(), doc.settings(), info);
+    return recoveryCopyBytes(doc.layers(), doc.settings(), info);
 }
 
 bool write(const QString &path, const QByteArray &bytes)

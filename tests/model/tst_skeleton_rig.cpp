@@ -442,7 +442,7 @@ void TestSkeletonRig::fileRoundTripKeepsSkeletonAndPose()
     const StrokeGroup &back = loaded->frames[0].groups[0];
     QCOMPARE(back.rig, doc.group(g)->rig);
     Document reopened;
-    reopened.reset(loaded->frames, loaded->settings, loaded->nextId);
+    adoptLoadedDocument(reopened, *loaded);
     QCOMPARE(serializeFinbook(reopened), bytes);
     // Re-solving the reopened pose gives the saved strokes.
     DeformController again(&reopened);
@@ -889,7 +889,7 @@ void TestSkeletonRig::cutOutLayersComeBackWithTheFile()
     Document reopened;
     DeformController again(&reopened);
     QSignalSpy built(again.service(), &PrecomputeService::setupReady);
-    reopened.reset(loaded->frames, loaded->settings, loaded->nextId);
+    adoptLoadedDocument(reopened, *loaded);
     const auto allRestored = [&] {
         for (int f = 0; f < reopened.frameCount(); ++f)
             if (lacksCutOutLayers(reopened.frameAt(f).groups.at(0)))
@@ -1252,7 +1252,7 @@ void TestSkeletonRig::jointLocksAreOneStepAndSaved()
     QCOMPARE(loaded->frames[0].groups[0].rig.skeleton.locked,
              (std::vector<bool>{false, true, false, false, false}));
     Document reopened;
-    reopened.reset(loaded->frames, loaded->settings, loaded->nextId);
+    adoptLoadedDocument(reopened, *loaded);
     QCOMPARE(serializeFinbook(reopened), locked);
     // Unlocking the last lock gives back the lock-free layout, byte for byte.
     stack->push(new SetJointLockCommand(&doc, g, 1, false));
@@ -1291,7 +1291,7 @@ void TestSkeletonRig::filesBeforeLocksOpenWithoutLocks()
     // Saved again (in today's format, whose header and settings grew), the skeleton chunks
     // keep their layout: no lock tail.
     Document doc;
-    doc.reset(loaded->frames, loaded->settings, loaded->nextId);
+    adoptLoadedDocument(doc, *loaded);
     const QByteArray again = serializeFinbook(doc);
     const qsizetype before = bytes.indexOf("SKEL"), after = again.indexOf("SKEL");
     QVERIFY(before > 0 && after > 0);

@@ -100,7 +100,7 @@ void TestSound::editsOfAGoneClipDoNothing()
     QVERIFY(again.isObsolete());
     // A new document (reset) has no sound.
     importClip(doc, sineWav(0.1), QStringLiteral("b.wav"));
-    doc.reset({}, DocumentSettings(), 1);
+    doc.reset(std::vector<Frame>{}, DocumentSettings(), 1);
     QVERIFY(doc.soundtrack().isEmpty());
 }
 

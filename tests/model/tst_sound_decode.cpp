@@ -198,7 +198,7 @@ void TestSoundDecode::cacheDecodesOffTheGuiThread()
     cache.waitForIdle();
     QVERIFY(cache.sound(later));
     // A new document drops what the old one's clips needed.
-    doc.reset({}, DocumentSettings(), 1);
+    doc.reset(std::vector<Frame>{}, DocumentSettings(), 1);
     QVERIFY(!cache.sound(good) && !cache.sound(later));
 }
 

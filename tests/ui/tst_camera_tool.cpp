@@ -224,7 +224,7 @@ private slots:
         model::Document doc;
         model::DocumentSettings settings;
         settings.canvasSize = QSize(200, 100);
-        doc.reset({}, settings, 1);
+        doc.reset(std::vector<model::Frame>{}, settings, 1);
         doc.undoStack()->push(new model::InsertFrameCommand(&doc, 0));
         const model::Id frame = doc.frameAt(0).id;
         doc.undoStack()->push(new model::AddStrokeCommand(&doc, doc.frameAt(0).groups.at(0).id,

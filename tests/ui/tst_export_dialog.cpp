@@ -230,7 +230,7 @@ void TestExportDialog::replacingAsksFirst()
 void TestExportDialog::largeExportAsksFirst()
 {
     model::Document doc;
-    loadInto(doc, model::kMaxHold);
+    loadInto(doc, 1000);
     const QString page = m_dir.filePath(QStringLiteral("long.html"));
     ScriptedDialog dialog(doc, QString());
     dialog.setFormat(ExportFormat::Html);

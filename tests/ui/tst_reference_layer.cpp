@@ -30,7 +30,8 @@ private slots:
     void panelEditsAreUndoable()
     {
         model::Document doc;
-        doc.reset({model::Frame{doc.allocateId(), 1, {}}}, model::DocumentSettings(), doc.nextId());
+        doc.reset({model::Frame{doc.allocateId(), 1, {}, {}}}, model::DocumentSettings(),
+                  doc.nextId());
         ui::ReferencePanel panel(&doc);
         QVERIFY(!panel.opacitySlider()->isEnabled());
         QVERIFY(!ui::importReference(doc, writeTwoColourPng(m_dir.path())));
@@ -56,7 +57,8 @@ private slots:
     void rateRowSaysWhatItCounts()
     {
         model::Document doc;
-        doc.reset({model::Frame{doc.allocateId(), 1, {}}}, model::DocumentSettings(), doc.nextId());
+        doc.reset({model::Frame{doc.allocateId(), 1, {}, {}}}, model::DocumentSettings(),
+                  doc.nextId());
         ui::ReferencePanel panel(&doc);
         QVERIFY(!ui::importReference(doc, writeTwoColourPng(m_dir.path())));
         QVERIFY(!panel.rateBox()->isEnabled());

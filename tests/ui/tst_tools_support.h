@@ -118,7 +118,7 @@ inline const model::Stroke *findStroke(const model::Document &doc, model::Id id)
     const model::StrokeLocation at = doc.locateStroke(id);
     if (!at.isValid())
         return nullptr;
-    return &doc.frameAt(at.frame).groups[std::size_t(at.group)].strokes[std::size_t(at.stroke)];
+    return &doc.frameAt(at).groups[std::size_t(at.group)].strokes[std::size_t(at.stroke)];
 }
 
 // Keeps QSettings of a test run away from the user's real settings.

@@ -133,7 +133,7 @@ std::vector<Id> pushStrokeCut(Document *doc, Id strokeId, const std::vector<Stro
     const StrokeLocation at = doc->locateStroke(strokeId);
     if (!at.isValid())
         return {};
-    const StrokeGroup &group = doc->frameAt(at.frame).groups[std::size_t(at.group)];
+    const StrokeGroup &group = doc->frameAt(at).groups[std::size_t(at.group)];
     const Id groupId = group.id;
     std::vector<Fill> fills = group.fills;
     QUndoStack *stack = doc->undoStack();

@@ -36,9 +36,20 @@ const FormatInfo &info(ExportFormat format)
 }
 } // namespace
 
-ExportSource exportSource(const Document &document)
+std::vector<Frame> shotFrames(const std::vector<Layer> &layers, const ShotFilter &filter)
 {
-    return ExportSource{document.frames(), document.settings(),
+    // One plain layer exports its cels as they are (the frames of files before layers); a
+    // scene exports its composed shot.
+    const LayerProperties plain;
+    const bool onePlainLayer = layers.size() == 1 && filter.admits(layers.front()) &&
+                               layers.front().properties.opacity == plain.opacity &&
+                               layers.front().properties.depth == plain.depth;
+    return onePlainLayer ? layers.front().cels : composeShots(layers, filter);
+}
+
+ExportSource exportSource(const Document &document, const ShotFilter &filter)
+{
+    return ExportSource{shotFrames(document.layers(), filter), document.settings(),
                         document.referenceLayer().reference(), document.soundtrack().clips(),
                         document.camera()};
 }

@@ -243,9 +243,11 @@ QImage renderExportBand(const Frame &frame, const DocumentSettings &settings,
         painter.translate((plan.size.width() - canvas.width() * scale) / 2,
                           (plan.size.height() - canvas.height() * scale) / 2 - top);
         painter.scale(scale, scale);
-        if (camera)
-            painter.setTransform(cameraTransform(*camera, canvas), true);
         RenderOptions options;
+        if (camera) {
+            painter.setTransform(cameraTransform(*camera, canvas), true);
+            options.camera = *camera; // planes at a depth are seen through their own cameras
+        }
         options.paintBackground = false;
         if (reference)
             options.underlay = [&](QPainter &p) { paintReference(p, *reference, picture); };

@@ -44,6 +44,7 @@ InsertInbetweensCommand::InsertInbetweensCommand(Document *doc, Id firstKey, Id 
     }
     if (a > b)
         std::swap(a, b);
+    m_layer = doc->currentLayerId();
     m_firstKey = doc->frameAt(a).id;
     m_plan = planInbetweens(doc->frameAt(a), doc->frameAt(b),
                             inbetweenTimes(count, options.spacing), options.path);
@@ -61,13 +62,13 @@ std::vector<Id> InsertInbetweensCommand::frameIds() const
 
 void InsertInbetweensCommand::redo()
 {
-    const int key = m_doc->frameIndex(m_firstKey);
+    const int key = m_doc->celIndex(m_firstKey);
     if (isObsolete() || key < 0) {
         setObsolete(true);
         return;
     }
     for (std::size_t i = 0; i < m_plan.frames.size(); ++i)
-        m_doc->insertFrame(key + 1 + int(i), m_plan.frames[i]);
+        m_doc->insertFrame(m_layer, key + 1 + int(i), m_plan.frames[i]);
 }
 
 void InsertInbetweensCommand::undo()
@@ -76,9 +77,9 @@ void InsertInbetweensCommand::undo()
         return;
     // Taken back with whatever poses were solved meanwhile, so a redo shows them at once.
     for (auto it = m_plan.frames.rbegin(); it != m_plan.frames.rend(); ++it) {
-        const int index = m_doc->frameIndex(it->id);
+        const int index = m_doc->celIndex(it->id);
         if (index >= 0)
-            *it = m_doc->takeFrame(index);
+            *it = m_doc->takeFrame(m_layer, index);
     }
 }
 

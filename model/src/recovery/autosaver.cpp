@@ -92,7 +92,7 @@ void Autosaver::autosaveNow()
     QElapsedTimer clock;
     clock.start();
     RecoveryWriter::Snapshot snapshot{
-        m_doc->frames(),
+        m_doc->layers(),
         m_doc->settings(),
         RecoveryInfo{m_title, m_originalPath, QDateTime::currentDateTimeUtc(), m_doc->frameCount()},
         copyPath(),

@@ -4,6 +4,7 @@
 #include <finbook/model/finbook_file.h>
 #include <finbook/model/recovery/recovery_store.h>
 #include <finbook/model/render.h>
+#include <finbook/model/scene/shot.h>
 
 #include <QBuffer>
 #include <QCoreApplication>
@@ -27,13 +28,14 @@ constexpr int kMaxCopiesLooked = 100;
 const QString kCopySuffix = QStringLiteral(".finbook");
 const QString kLockSuffix = QStringLiteral(".lock");
 
-QByteArray thumbnailPng(const std::vector<Frame> &frames, const DocumentSettings &settings)
+QByteArray thumbnailPng(const std::vector<Layer> &layers, const DocumentSettings &settings)
 {
-    if (frames.empty() || settings.canvasSize.isEmpty())
+    const Frame first = composeShot(layers, 0);
+    if (first.planes.empty() || settings.canvasSize.isEmpty())
         return {};
     const QSize size(kThumbnailWidth, std::max(1, kThumbnailWidth * settings.canvasSize.height() /
                                                       settings.canvasSize.width()));
-    const QImage image = renderFrame(frames.front(), settings, size.boundedTo(QSize(160, 480)));
+    const QImage image = renderFrame(first, settings, size.boundedTo(QSize(160, 480)));
     QByteArray png;
     QBuffer buffer(&png);
     buffer.open(QIODevice::WriteOnly);
@@ -61,7 +63,7 @@ std::unique_ptr<QLockFile> lockFor(const QString &path)
 }
 } // namespace
 
-QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
+QByteArray recoveryCopyBytes(const std::vector<Layer> &layers, const DocumentSettings &settings,
                              const RecoveryInfo &info, const Reference &reference,
                              const std::vector<SoundClip> &sound, const CameraTrack &camera)
 {
@@ -72,13 +74,13 @@ QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSet
         {QStringLiteral("frames"), info.frames}};
     std::vector<AncillarySection> extra{
         {"rcvy", QJsonDocument(description).toJson(QJsonDocument::Compact)}};
-    const QByteArray thumbnail = thumbnailPng(frames, settings);
+    const QByteArray thumbnail = thumbnailPng(layers, settings);
     if (!thumbnail.isEmpty())
         extra.push_back({"thmb", thumbnail});
     if (!reference.isEmpty())
         for (AncillarySection &section : file_format::referenceSections(reference))
             extra.push_back(std::move(section));
-    return serializeFinbook(frames, settings, extra, sound, camera);
+    return serializeFinbook(layers, settings, extra, sound, camera);
 }
 
 QString recoveryFolder()

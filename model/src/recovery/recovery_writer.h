@@ -19,7 +19,7 @@ class RecoveryWriter : public QObject {
     Q_OBJECT
 public:
     struct Snapshot {
-        std::vector<Frame> frames;
+        std::vector<Layer> layers;
         DocumentSettings settings;
         RecoveryInfo info;
         QString path;
@@ -33,7 +33,7 @@ public:
         QString error;
         try {
             const QByteArray bytes =
-                recoveryCopyBytes(snapshot.frames, snapshot.settings, snapshot.info,
+                recoveryCopyBytes(snapshot.layers, snapshot.settings, snapshot.info,
                                   snapshot.reference, snapshot.sound, snapshot.camera);
             if (const auto failure = writeFileAtomically(snapshot.path, bytes))
                 error = describeWriteFailure(*failure, QFileInfo(snapshot.path).absolutePath());

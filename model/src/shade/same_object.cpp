@@ -20,17 +20,19 @@ std::vector<GroupLocation> namesakes(const Document &doc, const GroupLocation &a
 {
     if (!at.isValid())
         return {};
-    const Frame &own = doc.frameAt(at.frame);
+    const Frame &own = doc.frameAt(at);
     const QString &name = own.groups[std::size_t(at.group)].name;
     int rank = 0;
     for (int i = 0; i < at.group; ++i)
         if (own.groups[std::size_t(i)].name == name)
             ++rank;
+    // Its layer's cels: another layer's namesake is another character.
+    const std::vector<Frame> &cels = doc.layerAt(at.layer).cels;
     std::vector<GroupLocation> places;
-    for (int f = 0; f < doc.frameCount(); ++f) {
-        const int g = f == at.frame ? at.group : namesake(doc.frameAt(f), name, rank);
+    for (int f = 0; f < int(cels.size()); ++f) {
+        const int g = f == at.frame ? at.group : namesake(cels[std::size_t(f)], name, rank);
         if (g >= 0)
-            places.push_back({f, g});
+            places.push_back({f, g, at.layer});
     }
     return places;
 }
@@ -40,7 +42,7 @@ std::vector<Id> sameObjectInFrames(const Document &doc, Id groupId)
 {
     std::vector<Id> ids;
     for (const GroupLocation &place : namesakes(doc, doc.locateGroup(groupId)))
-        ids.push_back(doc.frameAt(place.frame).groups[std::size_t(place.group)].id);
+        ids.push_back(doc.frameAt(place).groups[std::size_t(place.group)].id);
     return ids;
 }
 
@@ -50,7 +52,7 @@ std::optional<FillShading> objectShading(const Document &doc, Id groupId)
     std::optional<FillShading> best;
     int bestDistance = 0;
     for (const GroupLocation &place : namesakes(doc, at)) {
-        const StrokeGroup &g = doc.frameAt(place.frame).groups[std::size_t(place.group)];
+        const StrokeGroup &g = doc.frameAt(place).groups[std::size_t(place.group)];
         if (g.fills.empty())
             continue;
         const int distance = std::abs(place.frame - at.frame);

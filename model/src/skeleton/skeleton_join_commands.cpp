@@ -96,7 +96,7 @@ int addRigChanges(QUndoCommand *macro, Document *doc, const Frame &before, const
 const Frame *frameOf(const Document *doc, Id groupId)
 {
     const GroupLocation at = doc->locateGroup(groupId);
-    return at.isValid() ? &doc->frameAt(at.frame) : nullptr;
+    return at.isValid() ? &doc->frameAt(at) : nullptr;
 }
 
 } // namespace

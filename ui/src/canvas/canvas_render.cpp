@@ -59,6 +59,16 @@ void CanvasWidget::connectDocument()
         m_suppressed.clear();
         fitToView();
     });
+    // Other layers: their cels at the playhead, under and over the current one.
+    const auto layers = [this, all] {
+        all();
+        invalidateOtherLayers();
+    };
+    connect(doc, &model::Document::celsChanged, this, &CanvasWidget::invalidateOtherLayers);
+    connect(doc, &model::Document::layersChanged, this, layers);
+    connect(doc, &model::Document::currentLayerChanged, this, layers);
+    connect(m_state, &EditorState::dimOtherLayersChanged, this,
+            &CanvasWidget::invalidateOtherLayers);
     connect(doc, &model::Document::framesInserted, this, all);
     connect(doc, &model::Document::framesRemoved, this, all);
     connect(doc, &model::Document::frameMoved, this, all);
@@ -81,7 +91,7 @@ void CanvasWidget::connectDocument()
     connect(doc, &model::Document::cameraChanged, this, qOverload<>(&QWidget::update));
     connect(m_state, &EditorState::cameraViewChanged, this, qOverload<>(&QWidget::update));
     connect(m_state, &EditorState::tickChanged, this, [this] {
-        if (!document()->camera().isEmpty())
+        if (!document()->camera().isEmpty() || document()->layerCount() > 1)
             update();
     });
 }
@@ -89,6 +99,10 @@ void CanvasWidget::connectDocument()
 void CanvasWidget::frameEdited(model::Id frameId)
 {
     const int index = document()->frameIndex(frameId);
+    if (index < 0) { // another layer's cel
+        invalidateOtherLayers();
+        return;
+    }
     const int current = m_state->currentFrameIndex();
     if (index == current)
         invalidateFrameLayer();
@@ -113,6 +127,7 @@ void CanvasWidget::invalidateCache()
 {
     m_frameLayerValid = false;
     m_onionLayerValid = false;
+    m_otherLayersValid = false;
 }
 
 void CanvasWidget::setSuppressedStrokes(std::vector<model::Id> strokeIds)
@@ -170,14 +185,16 @@ void CanvasWidget::paintShot(QPainter &painter, const QRect &dirty) const
         if (!picture.isNull())
             model::paintReference(painter, reference.reference(), picture);
     }
-    if (m_state->onionSkin().enabled && !m_state->isPlaying())
+    if (m_state->onionSkin().enabled && !m_state->isPlaying() &&
+        document()->currentLayer().properties.onionSkin)
         for (const auto &[index, options] : onionNeighbours())
             model::paintFrame(painter, document()->frameAt(index), document()->settings(), options);
-    if (const model::Frame *frame = shownFrame()) {
-        model::RenderOptions options;
-        options.paintBackground = false;
-        model::paintFrame(painter, *frame, document()->settings(), options);
-    }
+    // Every layer, each plane through its own camera (multiplane depth).
+    model::RenderOptions options;
+    options.paintBackground = false;
+    options.camera = model::cameraAt(document()->camera(), double(m_state->currentTick()),
+                                     QSizeF(document()->settings().canvasSize));
+    model::paintFrame(painter, shownShot(), document()->settings(), options);
     painter.restore();
 }
 
@@ -271,7 +288,10 @@ void CanvasWidget::ensureLayers()
         m_layerSize = layerSize;
         m_frameLayerValid = false;
         m_onionLayerValid = false;
+        m_otherLayersValid = false;
     }
+    if (document()->layerCount() > 1)
+        ensureOtherLayers();
     if (!m_frameLayerValid) {
         m_frameLayer = renderFrameLayer(std::move(m_frameLayer));
         m_frameLayerValid = true;
@@ -316,9 +336,19 @@ void CanvasWidget::paintEvent(QPaintEvent *event)
     }
     const qreal dpr = devicePixelRatioF();
     const QRectF source(QPointF(dirty.topLeft()) * dpr, QSizeF(dirty.size()) * dpr);
-    if (m_state->onionSkin().enabled && !m_state->isPlaying() && !m_onionLayer.isNull())
+    const bool others = document()->layerCount() > 1;
+    if (others && !m_underCels.empty())
+        painter.drawImage(QRectF(dirty), m_underLayer, source);
+    if (m_state->onionSkin().enabled && !m_state->isPlaying() && !m_onionLayer.isNull() &&
+        document()->currentLayer().properties.onionSkin)
         painter.drawImage(QRectF(dirty), m_onionLayer, source);
+    // The current layer at its opacity (hidden: not at all; its tools still work).
+    const model::LayerProperties &current = document()->currentLayer().properties;
+    painter.setOpacity(current.visible ? current.opacity : 0.0);
     painter.drawImage(QRectF(dirty), m_frameLayer, source);
+    painter.setOpacity(1.0);
+    if (others && !m_overCels.empty())
+        painter.drawImage(QRectF(dirty), m_overLayer, source);
     painter.setPen(QPen(kBorderColor, 1));
     painter.setBrush(Qt::NoBrush);
     painter.drawRect(pageRect().adjusted(-0.5, -0.5, 0.5, 0.5));

@@ -228,6 +228,22 @@ ToolEvent CanvasWidget::toolEvent(const QPointF &widgetPos, qreal pressure) cons
     return e;
 }
 
+bool CanvasWidget::refusedOnLockedLayer()
+{
+    const model::Layer &layer = document()->currentLayer();
+    if ((!layer.properties.locked && layer.properties.visible) || !m_tool || !m_tool->editsLayer())
+        return false;
+    emit messagePosted(
+        layer.properties.locked
+            ? tr("The layer \"%1\" is locked: unlock it (Layer > Lock Layer, or its padlock in "
+                 "the timeline) to draw on it.")
+                  .arg(layer.properties.name)
+            : tr("The layer \"%1\" is hidden: show it (Layer > Show Layer, or its eye in the "
+                 "timeline) to draw on it.")
+                  .arg(layer.properties.name));
+    return true;
+}
+
 void CanvasWidget::beginDrag(const ToolEvent &event, bool pan)
 {
     if (pan) {
@@ -236,7 +252,7 @@ void CanvasWidget::beginDrag(const ToolEvent &event, bool pan)
         setCursor(Qt::ClosedHandCursor);
         return;
     }
-    if (!m_tool)
+    if (!m_tool || refusedOnLockedLayer())
         return;
     m_drag = Drag::Tool;
     m_tool->press(event);
@@ -283,7 +299,7 @@ void CanvasWidget::mousePressEvent(QMouseEvent *event)
         beginDrag(e, true);
     else if (event->button() == Qt::LeftButton)
         beginDrag(e, false);
-    else if (event->button() == Qt::RightButton && m_tool)
+    else if (event->button() == Qt::RightButton && m_tool && !refusedOnLockedLayer())
         m_tool->secondaryClick(e);
 }
 

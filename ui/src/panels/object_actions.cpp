@@ -190,7 +190,7 @@ void ObjectActions::moveSelectionTo(model::Id targetGroupId)
     std::vector<model::Id> groups{targetGroupId};
     for (model::Id id : strokes)
         if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
-            groups.push_back(doc->frameAt(at.frame).groups[std::size_t(at.group)].id);
+            groups.push_back(doc->frameAt(at).groups[std::size_t(at.group)].id);
     std::sort(groups.begin(), groups.end());
     groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
     const QString text = tr("Move Strokes to Object");
@@ -223,7 +223,8 @@ void ObjectActions::refreshTargets()
     model::Id onlySource = model::kNoId;
     for (model::Id stroke : m_state->selectedStrokes()) {
         const model::StrokeLocation at = m_state->document()->locateStroke(stroke);
-        if (!at.isValid() || at.frame != m_state->currentFrameIndex())
+        if (!at.isValid() || at.layer != m_state->document()->currentLayerIndex() ||
+            at.frame != m_state->currentFrameIndex())
             continue;
         const model::Id group = frame->groups[std::size_t(at.group)].id;
         onlySource = onlySource == model::kNoId || onlySource == group ? group : model::Id(-1);

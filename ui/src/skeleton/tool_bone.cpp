@@ -178,7 +178,7 @@ void BoneTool::joinIfOverlapping(model::Id groupId)
     const model::GroupLocation at = doc->locateGroup(groupId);
     if (!at.isValid())
         return;
-    const auto join = model::proposeJoin(doc->frameAt(at.frame), groupId);
+    const auto join = model::proposeJoin(doc->frameAt(at), groupId);
     if (!join)
         return;
     doc->undoStack()->push(new model::JoinPartCommand(doc, groupId, *join));
@@ -200,7 +200,7 @@ bool BoneTool::startDrag(const Hit &clicked, QPointF at)
     if (hit.part == Part::Joint && g->rig.skeleton.hangs() &&
         g->rig.skeleton.parent[std::size_t(hit.joint)] < 0) {
         const model::GroupLocation where = doc->locateGroup(hit.groupId);
-        const model::Id top = model::characterRoot(doc->frameAt(where.frame), hit.groupId);
+        const model::Id top = model::characterRoot(doc->frameAt(where), hit.groupId);
         if (const model::StrokeGroup *r = doc->group(top);
             r && r != g && !r->rig.skeleton.empty() && editable(*r)) {
             hit = {top, Part::Joint, r->rig.skeleton.root};

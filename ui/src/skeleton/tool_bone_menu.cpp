@@ -35,7 +35,7 @@ BoneTool::Hit BoneTool::selection() const
     const model::Document *doc = state()->document();
     const model::StrokeGroup *g = doc->group(m_selected.groupId);
     if (!g || m_selected.joint < 0 || m_selected.joint >= g->rig.skeleton.jointCount() ||
-        doc->locateGroup(m_selected.groupId).frame != doc->frameIndex(state()->currentFrameId()))
+        doc->frameAt(doc->locateGroup(m_selected.groupId)).id != state()->currentFrameId())
         return {};
     return m_selected;
 }

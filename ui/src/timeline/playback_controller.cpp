@@ -1,4 +1,5 @@
 #include <finbook/model/commands.h>
+#include <finbook/model/scene/shot.h>
 #include <finbook/ui/timeline/playback_clock.h>
 #include <finbook/ui/timeline/playback_controller.h>
 #include <finbook/ui/window/editor_state.h>
@@ -10,40 +11,31 @@ namespace finbook::ui {
 namespace {
 constexpr qint64 kNsPerSecond = 1'000'000'000;
 constexpr qint64 kNsPerMs = 1'000'000;
-
-int holdOf(const model::Document &doc, int index)
-{
-    return std::max(1, doc.frameAt(index).hold);
-}
 } // namespace
+
+// The play range is the current layer's frames playFirst..playLast, in ticks; played to its end
+// ("-1"), it runs to the end of the longest layer, so a scene plays whole from any layer.
+qint64 firstTickOfRange(const model::Document &doc)
+{
+    return model::celStart(doc.frames(), doc.playFirst());
+}
 
 qint64 playRangeTicks(const model::Document &doc)
 {
     if (doc.frameCount() == 0)
         return 0;
-    qint64 total = 0;
-    for (int i = doc.playFirst(); i <= doc.playLast(); ++i)
-        total += holdOf(doc, i);
-    return total;
-}
-
-qint64 firstTickOfRange(const model::Document &doc)
-{
-    qint64 ticks = 0;
-    for (int i = 0; i < doc.playFirst() && i < doc.frameCount(); ++i)
-        ticks += holdOf(doc, i);
-    return ticks;
+    qint64 end = model::celStart(doc.frames(), doc.playLast() + 1);
+    if (doc.settings().playEnd < 0)
+        end = std::max(end, model::shotTicks(doc.layers()));
+    return std::max<qint64>(1, end - firstTickOfRange(doc));
 }
 
 qint64 tickOfFrame(const model::Document &doc, int frameIndex)
 {
     if (doc.frameCount() == 0)
         return 0;
-    const int last = std::clamp(frameIndex, doc.playFirst(), doc.playLast());
-    qint64 ticks = 0;
-    for (int i = doc.playFirst(); i < last; ++i)
-        ticks += holdOf(doc, i);
-    return ticks;
+    const int at = std::clamp(frameIndex, doc.playFirst(), doc.playLast());
+    return model::celStart(doc.frames(), at) - firstTickOfRange(doc);
 }
 
 int frameAtTick(const model::Document &doc, qint64 tick, bool loop)
@@ -57,13 +49,9 @@ int frameAtTick(const model::Document &doc, qint64 tick, bool loop)
             return doc.playLast();
         tick %= total;
     }
-    for (int i = doc.playFirst(); i <= doc.playLast(); ++i) {
-        const int hold = holdOf(doc, i);
-        if (tick < hold)
-            return i;
-        tick -= hold;
-    }
-    return doc.playLast();
+    const int index = model::celAt(doc.frames(), firstTickOfRange(doc) + tick);
+    // Past the current layer's end (a longer layer plays on), its last frame stays current.
+    return index < 0 ? doc.playLast() : std::clamp(index, doc.playFirst(), doc.playLast());
 }
 
 PlaybackController::PlaybackController(EditorState *state, QObject *parent)

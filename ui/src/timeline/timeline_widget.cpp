@@ -44,6 +44,13 @@ TimelineWidget::TimelineWidget(EditorState *state, FrameActions *frameActions,
     showCounter();
 }
 
+void TimelineWidget::addAboveFrames(QWidget *rows)
+{
+    rows->setParent(this);
+    auto *box = static_cast<QVBoxLayout *>(layout());
+    box->insertWidget(box->indexOf(m_view), rows);
+}
+
 void TimelineWidget::addBelowFrames(QWidget *row)
 {
     row->setParent(this);

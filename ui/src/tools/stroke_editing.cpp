@@ -203,7 +203,7 @@ bool StrokeEditing::deleteSelection(EditorState &state)
     std::vector<model::Id> groups;
     for (model::Id id : ids)
         if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
-            groups.push_back(doc->frameAt(at.frame).groups[std::size_t(at.group)].id);
+            groups.push_back(doc->frameAt(at).groups[std::size_t(at.group)].id);
     const std::vector<model::Id> following = skeletonsFollowing(state, groups);
     beginRestEdit(doc, tr("Delete Strokes"), groups);
     for (model::Id id : ids)

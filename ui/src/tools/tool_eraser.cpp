@@ -161,7 +161,7 @@ void EraserTool::openMacro(const std::vector<model::Id> &strokes)
     std::vector<model::Id> groups;
     for (model::Id id : strokes)
         if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
-            groups.push_back(doc->frameAt(at.frame).groups[std::size_t(at.group)].id);
+            groups.push_back(doc->frameAt(at).groups[std::size_t(at.group)].id);
     // Whether a skeleton follows is decided when the rub first reaches its object, before
     // its pose (if any) is applied.
     for (model::Id id : groups)
@@ -202,7 +202,7 @@ void EraserTool::cut(const std::vector<model::Id> &strokes, const QPointF &from,
         const model::StrokeLocation at = doc->locateStroke(id);
         if (!at.isValid())
             continue;
-        const model::StrokeGroup &g = doc->frameAt(at.frame).groups[std::size_t(at.group)];
+        const model::StrokeGroup &g = doc->frameAt(at).groups[std::size_t(at.group)];
         model::StrokeData shown = *g.strokes[std::size_t(at.stroke)].data;
         shown.points = model::displayedPoints(g, std::size_t(at.stroke));
         if (auto pieces = model::cutStroke(shown, rub, radius()))

@@ -253,7 +253,7 @@ void SelectTool::commitTransform()
         const model::StrokeLocation at = doc->locateStroke(id);
         if (!at.isValid())
             continue;
-        const model::StrokeGroup &g = doc->frameAt(at.frame).groups[std::size_t(at.group)];
+        const model::StrokeGroup &g = doc->frameAt(at).groups[std::size_t(at.group)];
         auto moved = std::make_shared<model::StrokeData>(*g.strokes[std::size_t(at.stroke)].data);
         moved->points = model::displayedPoints(g, std::size_t(at.stroke));
         for (model::StrokePoint &p : moved->points) {

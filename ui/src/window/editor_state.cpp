@@ -1,4 +1,4 @@
-#include <finbook/model/export/export_plan.h>
+#include <finbook/model/scene/shot.h>
 #include <finbook/ui/window/editor_state.h>
 
 #include <algorithm>
@@ -14,8 +14,10 @@ EditorState::EditorState(model::Document *document, QObject *parent)
     connect(m_doc, &model::Document::documentReset, this, [this] {
         m_groupId = model::kNoId;
         m_frameIndex = -1;
+        m_tick = 0;
         setCurrentFrameIndex(0);
     });
+    connect(m_doc, &model::Document::currentLayerChanged, this, &EditorState::followLayer);
     connect(m_doc, &model::Document::framesInserted, this, [this](int first, int count) {
         if (first <= m_frameIndex && m_frameIndex >= 0)
             m_frameIndex += count;
@@ -42,7 +44,7 @@ EditorState::EditorState(model::Document *document, QObject *parent)
         std::vector<model::Id> kept;
         for (model::Id id : m_selection) {
             const model::StrokeLocation at = m_doc->locateStroke(id);
-            if (at.isValid() && at.frame == m_frameIndex)
+            if (at.isValid() && at.layer == m_doc->currentLayerIndex() && at.frame == m_frameIndex)
                 kept.push_back(id);
         }
         if (kept != m_selection)
@@ -57,7 +59,9 @@ EditorState::EditorState(model::Document *document, QObject *parent)
             setSelectedFrames({});
     });
     connect(this, &EditorState::currentFrameChanged, this, [this] {
-        if (m_playbackTick < 0)
+        const qint64 before = m_tick;
+        keepTickInCel();
+        if (m_playbackTick < 0 && before != m_tick)
             emit tickChanged(currentTick());
     });
     connect(m_doc, &model::Document::framesRemoved, this, &EditorState::frameSelectionChanged);
@@ -69,7 +73,47 @@ qint64 EditorState::currentTick() const
 {
     if (m_playbackTick >= 0)
         return m_playbackTick;
-    return model::exposureTicks(m_doc->frames(), 0, m_frameIndex - 1);
+    return m_tick;
+}
+
+void EditorState::keepTickInCel()
+{
+    const std::vector<model::Frame> &cels = m_doc->frames();
+    if (m_frameIndex < 0 || m_frameIndex >= int(cels.size()))
+        return;
+    const int at = model::celAt(cels, m_tick);
+    // Past the layer's end the playhead may stay (other layers go on): the last cel is current.
+    if (at == m_frameIndex || (at < 0 && m_tick > 0 && m_frameIndex == int(cels.size()) - 1))
+        return;
+    m_tick = model::celStart(cels, m_frameIndex);
+}
+
+void EditorState::followLayer()
+{
+    m_selection.clear();
+    const std::vector<model::Frame> &cels = m_doc->frames();
+    int index = model::celAt(cels, m_tick);
+    if (index < 0)
+        index = int(cels.size()) - 1;
+    m_frameIndex = -1; // announce the frame even at the same index: it is another layer's
+    setCurrentFrameIndex(std::max(index, 0));
+    emit selectionChanged();
+}
+
+void EditorState::setCurrentTick(qint64 tick)
+{
+    tick = std::max<qint64>(tick, 0);
+    if (tick == m_tick)
+        return;
+    m_tick = tick;
+    const std::vector<model::Frame> &cels = m_doc->frames();
+    int index = model::celAt(cels, tick);
+    if (index < 0)
+        index = int(cels.size()) - 1;
+    if (index != m_frameIndex && index >= 0)
+        setCurrentFrameIndex(index); // keeps m_tick: it is in that cel (or past the last)
+    if (m_playbackTick < 0)
+        emit tickChanged(m_tick);
 }
 
 void EditorState::setPlaybackTick(qint64 tick)
@@ -79,6 +123,14 @@ void EditorState::setPlaybackTick(qint64 tick)
         return;
     m_playbackTick = tick;
     emit tickChanged(currentTick());
+}
+
+void EditorState::setDimOtherLayers(bool on)
+{
+    if (on == m_dimOthers)
+        return;
+    m_dimOthers = on;
+    emit dimOtherLayersChanged(on);
 }
 
 void EditorState::setCameraView(bool on)
@@ -163,9 +215,14 @@ void EditorState::setCurrentFrameIndex(int index)
 
 void EditorState::setCurrentGroupId(model::Id groupId)
 {
-    const model::GroupLocation at = m_doc->locateGroup(groupId);
+    model::GroupLocation at = m_doc->locateGroup(groupId);
     if (!at.isValid())
         return;
+    // An object of another layer makes its layer current.
+    if (at.layer != m_doc->currentLayerIndex()) {
+        m_doc->setCurrentLayer(m_doc->layerAt(at.layer).id);
+        at = m_doc->locateGroup(groupId);
+    }
     if (at.frame != m_frameIndex)
         setCurrentFrameIndex(at.frame);
     if (m_groupId == groupId)

@@ -10,6 +10,7 @@
 #include <finbook/ui/i18n/action_text.h>
 #include <finbook/ui/keys/canvas_focus.h>
 #include <finbook/ui/keys/shortcut_registry.h>
+#include <finbook/ui/layers/layer_sheet.h>
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/panels/objects_panel.h>
 #include <finbook/ui/reference/reference_panel.h>
@@ -34,6 +35,7 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenu>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -176,6 +178,15 @@ void MainWindow::createDocks()
     };
     auto *timeline = new TimelineWidget(m_state, m_frameActions, m_playback);
     timeline->addBelowFrames(new SoundRow(m_sound, timeline->view()));
+    // The dope sheet: a row per layer over the current layer's thumbnails.
+    auto *sheet = new QScrollArea;
+    sheet->setObjectName(QStringLiteral("layerSheetScroll"));
+    sheet->setWidget(new LayerSheet(m_state, m_layerActions));
+    sheet->setWidgetResizable(true);
+    sheet->setFrameShape(QFrame::NoFrame);
+    sheet->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    sheet->setMaximumHeight(4 * LayerSheet::kRowHeight + 20);
+    timeline->addAboveFrames(sheet);
     dock(timeline, QStringLiteral("timelineDock"), tr("Timeline"), Qt::BottomDockWidgetArea);
     dock(new ObjectsPanel(m_state, m_objectActions), QStringLiteral("objectsDock"), tr("Objects"),
          Qt::RightDockWidgetArea);

@@ -8,6 +8,7 @@
 #include <finbook/ui/export/export_done.h>
 #include <finbook/ui/i18n/action_text.h>
 #include <finbook/ui/keys/shortcut_registry.h>
+#include <finbook/ui/layers/layer_actions.h>
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/reference/reference_panel.h>
 #include <finbook/ui/sound/sound_controller.h>
@@ -43,6 +44,7 @@ QAction *MainWindow::makeAction(const QString &name, const QString &text)
 void MainWindow::createActions()
 {
     m_frameActions = new FrameActions(m_state, this);
+    m_layerActions = new LayerActions(m_state, this, this);
     m_objectActions = new ObjectActions(m_state, this);
     m_playback = new PlaybackController(m_state, this);
     m_sound = new SoundController(m_state, m_playback, this, this);
@@ -233,7 +235,13 @@ void MainWindow::createViewMenu()
     cameraView->setChecked(m_state->cameraView());
     connect(cameraView, &QAction::toggled, m_state, &EditorState::setCameraView);
     connect(m_state, &EditorState::cameraViewChanged, cameraView, &QAction::setChecked);
-    m_viewMenu->addActions({onion, onionSettings, mesh, cameraView});
+    // Layers other than the current one at half strength, so the one being drawn on stands out.
+    QAction *dim = makeAction(QStringLiteral("view.dimOtherLayers"), tr("&Dim Other Layers"));
+    dim->setCheckable(true);
+    dim->setChecked(m_state->dimOtherLayers());
+    connect(dim, &QAction::toggled, m_state, &EditorState::setDimOtherLayers);
+    connect(m_state, &EditorState::dimOtherLayersChanged, dim, &QAction::setChecked);
+    m_viewMenu->addActions({onion, onionSettings, mesh, cameraView, dim});
     m_viewMenu->addSeparator();
     m_docksMenu = m_viewMenu->addMenu(tr("&Panels"));
     m_docksMenu->addAction(m_fileBar->toggleViewAction());
@@ -253,6 +261,13 @@ void MainWindow::createFrameAndObjectMenus()
     for (QAction *a : {m_playback->toggleAction(), m_playback->loopAction()}) {
         frameMenu->addAction(a);
         m_shortcuts->registerAction(a);
+    }
+    QMenu *layerMenu = menuBar()->addMenu(tr("&Layer"));
+    layerMenu->setObjectName(QStringLiteral("layerMenu"));
+    for (QAction *a : m_layerActions->menuActions()) {
+        layerMenu->addAction(a);
+        if (!a->isSeparator())
+            m_shortcuts->registerAction(a);
     }
     QMenu *objectMenu = menuBar()->addMenu(tr("&Object"));
     objectMenu->setObjectName(QStringLiteral("objectMenu"));

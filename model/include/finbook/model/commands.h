@@ -22,6 +22,7 @@ enum class CommandId : int {
     EditReference,
     SetCloseGap,
     EditCamera,
+    EditLayer,
 };
 
 class DocumentCommand : public QUndoCommand {
@@ -175,7 +176,8 @@ private:
 
 // --- frames ------------------------------------------------------------------------------
 
-// Inserts an empty frame holding one empty object, so drawing can start at once.
+// Inserts an empty frame holding one empty object into the current layer, so drawing can
+// start at once.
 class InsertFrameCommand : public DocumentCommand {
 public:
     InsertFrameCommand(Document *doc, int index, QUndoCommand *parent = nullptr);
@@ -184,13 +186,14 @@ public:
     void undo() override;
 
 private:
+    Id m_layer;
     int m_index;
     Frame m_frame;
 };
 
-// Copies a frame with everything its objects carry (pins, pose, flags) under fresh ids;
-// strokes' points are shared, so the copy costs no point memory. Edits to either frame
-// afterwards never touch the other.
+// Copies a frame with everything its objects carry (pins, pose, flags) under fresh ids, into
+// the same layer at `index`; strokes' points are shared, so the copy costs no point memory.
+// Edits to either frame afterwards never touch the other.
 class DuplicateFrameCommand : public DocumentCommand {
 public:
     DuplicateFrameCommand(Document *doc, Id sourceFrameId, int index,
@@ -201,6 +204,7 @@ public:
 
 private:
     Id m_sourceId;
+    Id m_layer = kNoId;
     int m_index;
     Id m_copyId = kNoId;
     std::vector<Id> m_ids; // ids for the copy, allocated once so redo is repeatable
@@ -214,10 +218,12 @@ public:
 
 private:
     Id m_frameId;
+    Id m_layer = kNoId;
     int m_index = -1;
     std::optional<Frame> m_frame;
 };
 
+// Moves a cel of the current layer.
 class MoveFrameCommand : public DocumentCommand {
 public:
     MoveFrameCommand(Document *doc, int from, int to, QUndoCommand *parent = nullptr);
@@ -225,6 +231,7 @@ public:
     void undo() override;
 
 private:
+    Id m_layer;
     int m_from;
     int m_to;
 };

@@ -1,8 +1,17 @@
-// Document: frames → objects → strokes, canvas settings and the one undo stack.
+// Document: layers → cels (frames) → objects → strokes, canvas settings, the camera and the
+// one undo stack.
 //
 // The UI changes a document only by pushing commands (commands.h) onto undoStack(). The
 // low-level mutators below exist for those commands and for the file loader; each one emits a
 // past-tense signal so views, thumbnails and caches can follow.
+//
+// A document has at least one layer, and one of them is current: the one the timeline shows
+// and the tools draw on. frames(), frameAt(), frameCount() and frameIndex() read the current
+// layer's cels, so code about "the frames" means the current layer's; the frame signals
+// (framesInserted, framesRemoved, frameMoved) speak of the current layer only, and
+// celsChanged(layer) of any layer. Ids are unique across layers: frame(), group(),
+// locateGroup() and every mutator taking an id reach any layer. The current layer is editing
+// state, not undo state (like the current frame); it is not saved.
 #pragma once
 
 #include <finbook/model/camera/camera_track.h>
@@ -19,17 +28,20 @@ namespace finbook::model {
 class ReferenceLayer;
 class Soundtrack; // sound/soundtrack.h
 
+// Where an object is: its layer's index, its cel's index in that layer, its own index.
 struct GroupLocation {
     int frame = -1;
     int group = -1;
-    bool isValid() const { return frame >= 0 && group >= 0; }
+    int layer = -1;
+    bool isValid() const { return frame >= 0 && group >= 0 && layer >= 0; }
 };
 
 struct StrokeLocation {
     int frame = -1;
     int group = -1;
     int stroke = -1;
-    bool isValid() const { return frame >= 0 && group >= 0 && stroke >= 0; }
+    int layer = -1;
+    bool isValid() const { return frame >= 0 && group >= 0 && stroke >= 0 && layer >= 0; }
 };
 
 class Document : public QObject {
@@ -51,15 +63,33 @@ public:
     const DocumentSettings &settings() const { return m_settings; }
     // The camera's keys (camera/camera_track.h); reset() empties it, the loader fills it after.
     const CameraTrack &camera() const { return m_camera; }
-    const std::vector<Frame> &frames() const { return m_frames; }
-    int frameCount() const { return int(m_frames.size()); }
-    const Frame &frameAt(int index) const { return m_frames.at(std::size_t(index)); }
-    int frameIndex(Id frameId) const; // -1 if there is none
-    const Frame *frame(Id frameId) const;
+    // Back to front; never empty.
+    const std::vector<Layer> &layers() const { return m_layers; }
+    int layerCount() const { return int(m_layers.size()); }
+    const Layer &layerAt(int index) const { return m_layers.at(std::size_t(index)); }
+    int layerIndex(Id layerId) const; // -1 if there is none
+    const Layer *layer(Id layerId) const;
+    Id currentLayerId() const { return m_layers[std::size_t(m_current)].id; }
+    int currentLayerIndex() const { return m_current; }
+    const Layer &currentLayer() const { return m_layers[std::size_t(m_current)]; }
+    // The layer holding the frame, or kNoId.
+    Id layerOfFrame(Id frameId) const;
+
+    // The current layer's cels.
+    const std::vector<Frame> &frames() const { return currentLayer().cels; }
+    int frameCount() const { return int(currentLayer().cels.size()); }
+    const Frame &frameAt(int index) const { return currentLayer().cels.at(std::size_t(index)); }
+    // The cel an object or a stroke is in, whatever layer (the location must be valid).
+    const Frame &frameAt(const GroupLocation &at) const;
+    const Frame &frameAt(const StrokeLocation &at) const;
+    int frameIndex(Id frameId) const;     // in the current layer; -1 if it is not there
+    int celIndex(Id frameId) const;       // in its own layer; -1 if there is none
+    const Frame *frame(Id frameId) const; // any layer
     GroupLocation locateGroup(Id groupId) const;
     const StrokeGroup *group(Id groupId) const;
     StrokeLocation locateStroke(Id strokeId) const;
-    // First and last frame index that playback covers, clamped to the frames there are.
+    // First and last frame index (of the current layer) that playback covers, clamped to the
+    // frames there are.
     int playFirst() const;
     int playLast() const;
     // Total number of stroke points stored in rest strokes (deformed caches not counted).
@@ -70,11 +100,23 @@ public:
     Id nextId() const { return m_nextId; }
 
     // --- low-level mutators (commands and loader only)
+    // One layer holding `frames` (an older file, a new document): the layer takes the id
+    // `nextId` (or one above the frames' largest id, if that is more), the counter the next.
     void reset(std::vector<Frame> frames, const DocumentSettings &settings, Id nextId);
-    void insertFrame(int index, Frame frame);
-    Frame takeFrame(int index);
-    void moveFrame(int from, int to);
+    // `layers` must not be empty. The one with the most cels (the topmost of equals) becomes
+    // current.
+    void reset(std::vector<Layer> layers, const DocumentSettings &settings, Id nextId);
+    void insertFrame(Id layerId, int index, Frame frame);
+    Frame takeFrame(Id layerId, int index);
+    void moveFrame(Id layerId, int from, int to);
     void setFrameHold(Id frameId, int hold);
+
+    void insertLayer(int index, Layer layer);
+    Layer takeLayer(Id layerId); // not the last one
+    void moveLayer(Id layerId, int toIndex);
+    void setLayerProperties(Id layerId, const LayerProperties &properties);
+    // Editing state (not undone, not saved): which layer the timeline and the tools work on.
+    void setCurrentLayer(Id layerId);
 
     void insertGroup(Id frameId, int index, StrokeGroup group);
     StrokeGroup takeGroup(Id groupId);
@@ -107,9 +149,16 @@ public:
 
 signals:
     void documentReset();
+    // Cels of the current layer inserted, removed or moved.
     void framesInserted(int first, int count);
     void framesRemoved(int first, int count);
     void frameMoved(int from, int to);
+    // A layer's cels were inserted, removed, moved or held longer or shorter (any layer).
+    void celsChanged(Id layerId);
+    // Layers inserted, removed, reordered or with new properties.
+    void layersChanged();
+    // Another layer became current (its cels are now "the frames").
+    void currentLayerChanged();
     // Anything drawn in the frame changed (hold, objects, strokes, pins, pose).
     void frameChanged(Id frameId);
     // Objects of a frame were inserted, removed, reordered or had properties changed.
@@ -127,7 +176,12 @@ private:
     // too; `already` has been announced.
     void joinsChanged(const std::vector<Id> &groupIds, Id already);
 
-    std::vector<Frame> m_frames;
+    Layer &mutableLayer(Id layerId);
+    Frame &mutableFrame(const GroupLocation &at);
+    Frame *findFrame(Id frameId);
+
+    std::vector<Layer> m_layers;
+    int m_current = 0;
     DocumentSettings m_settings;
     CameraTrack m_camera;
     Id m_nextId = 1;

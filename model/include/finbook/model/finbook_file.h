@@ -26,7 +26,7 @@ namespace finbook::model {
 // 1: the first format. 2: a CRC-32C after every section. 3: fills (a FILL chunk per object)
 // and the document's "close gaps" setting. Older files keep opening; a Finbook that reads only
 // format 2 refuses format-3 files as made by a newer Finbook.
-constexpr quint32 kFinbookFormatVersion = 3;
+constexpr quint32 kFinbookFormatVersion = 4;
 
 // Opening a file of n bytes may allocate at most kLoadMemoryFactor × n + kLoadMemorySlack
 // bytes for the document (the file's own bytes not counted). A real drawing needs about 1.2 × n
@@ -59,8 +59,17 @@ struct FileError {
     QString message; // one translated sentence for the user: what happened, where, what to do
 };
 
+// A layer as the file lists it: its cels are the next `cels` frames of LoadedDocument::frames.
+struct LoadedLayer {
+    Id id = kNoId;
+    LayerProperties properties;
+    int cels = 0;
+};
+
 struct LoadedDocument {
-    std::vector<Frame> frames;
+    std::vector<Frame> frames; // every layer's cels, one layer after the other
+    // Back to front. Empty (a file from before layers): one layer holds all the frames.
+    std::vector<LoadedLayer> layers;
     DocumentSettings settings;
     Id nextId = 1;
     Reference reference; // the reference layer (empty when the file has none)
@@ -99,10 +108,18 @@ struct AncillarySection {
 // The same bytes serializeFinbook(document) gives for a document holding `frames`,
 // `settings`, the sound clips `sound` and the camera `camera` (a snapshot; safe on any
 // thread), plus `ancillary` sections before the end.
+QByteArray serializeFinbook(const std::vector<Layer> &layers, const DocumentSettings &settings,
+                            const std::vector<AncillarySection> &ancillary = {},
+                            const std::vector<SoundClip> &sound = {},
+                            const CameraTrack &camera = {});
+// One layer holding `frames` (its id one above the largest id in them).
 QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSettings &settings,
                             const std::vector<AncillarySection> &ancillary = {},
                             const std::vector<SoundClip> &sound = {},
                             const CameraTrack &camera = {});
+// The layers `loaded` describes, its frames moved into them (one layer with the id
+// loaded.nextId when it lists none: nextId then grows by one).
+std::vector<Layer> takeLoadedLayers(LoadedDocument &loaded);
 // The payload of the ancillary section `tag` of a file, if it has one with a correct checksum.
 std::optional<QByteArray> readAncillarySection(const QByteArray &bytes, const char (&tag)[5]);
 // Refuses to replace a file with bytes that would not open again (a document holding NaN or

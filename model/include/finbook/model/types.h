@@ -168,10 +168,47 @@ struct StrokeGroup {
     bool isDeformed() const { return !rig.empty() && deformed != nullptr; }
 };
 
+// A layer's share of a composed shot (scene/shot.h): its objects are the frame's groups up
+// to groupEnd (from the previous plane's end), painted at its opacity and seen through the
+// camera as a plane at its depth.
+struct FramePlane {
+    int groupEnd = 0;
+    double opacity = 1.0;
+    double depth = 0.0;
+    friend bool operator==(const FramePlane &, const FramePlane &) = default;
+};
+
+// A drawing: a layer's cel, shown for `hold` ticks.
 struct Frame {
     Id id = kNoId;
     int hold = 1; // exposure: how many playback ticks this drawing stays on screen (1..)
     std::vector<StrokeGroup> groups; // back to front
+    // Empty for a cel. A shot composed of several layers (scene/shot.h) says here which
+    // groups belong to which layer; renderers paint each plane at its opacity and depth.
+    std::vector<FramePlane> planes;
+};
+
+// Multiplane depth (scene/shot.h): 0 is the page's own plane; deeper planes drift less under
+// the camera, planes in front (negative) move more.
+constexpr double kMinLayerDepth = -0.9;
+constexpr double kMaxLayerDepth = 100.0;
+
+struct LayerProperties {
+    QString name;
+    bool visible = true;
+    bool locked = false;   // every tool leaves the layer alone
+    bool onionSkin = true; // its neighbouring cels show in the onion skin when it is current
+    double opacity = 1.0;  // [0, 1]
+    double depth = 0.0;    // [kMinLayerDepth, kMaxLayerDepth]
+    friend bool operator==(const LayerProperties &, const LayerProperties &) = default;
+};
+
+// A row of the dope sheet: drawings (cels) one after the other, each for its hold. A cel with
+// no objects is an empty stretch.
+struct Layer {
+    Id id = kNoId;
+    LayerProperties properties;
+    std::vector<Frame> cels;
 };
 
 struct DocumentSettings {
@@ -193,7 +230,9 @@ struct DocumentSettings {
 constexpr int kMinFps = 1;
 constexpr int kMaxFps = 60;
 constexpr int kMaxCanvasSide = 16384;
-constexpr int kMaxHold = 1000;
+// A background is exposed once for a whole shot: a hold may cover an hour at 60 fps.
+constexpr int kMaxHold = 216000;
+constexpr int kMaxLayers = 1000;
 // The widest stroke a file may hold: the largest canvas side. Wider says nothing more (it
 // covers any canvas), and QPen refuses widths of 32768 and more (it silently draws 1 pixel).
 constexpr float kMaxStrokeWidth = 16384.0f;

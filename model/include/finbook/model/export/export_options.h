@@ -6,6 +6,7 @@
 
 #include <finbook/model/camera/camera_track.h>
 #include <finbook/model/reference/reference.h>
+#include <finbook/model/scene/shot.h>
 #include <finbook/model/sound/sound_clip.h>
 #include <finbook/model/types.h>
 
@@ -76,7 +77,11 @@ struct ExportSource {
     std::vector<SoundClip> sound = {}; // the soundtrack: MP4 and WebM carry its mix
     CameraTrack camera = {};           // the camera's keys
 };
-ExportSource exportSource(const Document &document);
+// What an export shows of `layers`: one plain layer's cels as they are, else the composed
+// shot of the layers `filter` admits (scene/shot.h composeShots).
+std::vector<Frame> shotFrames(const std::vector<Layer> &layers, const ShotFilter &filter = {});
+// The document's shot (its visible layers, or those `filter` admits) for an export.
+ExportSource exportSource(const Document &document, const ShotFilter &filter = {});
 
 struct ExportResult {
     // What is at the target now, in order; a sequence lists its first kListedExportFiles

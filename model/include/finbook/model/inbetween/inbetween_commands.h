@@ -26,6 +26,7 @@ public:
 
 private:
     Id m_firstKey = kNoId;
+    Id m_layer = kNoId;   // the keys' layer (the current one when the command was made)
     InbetweenPlan m_plan; // frames carry their new ids; undo stores them back with their poses
 };
 

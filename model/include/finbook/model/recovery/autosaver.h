@@ -1,7 +1,7 @@
 // Autosave: a recovery copy of a document with unsaved changes, written every few minutes
 // and after a burst of edits, off the GUI thread.
 //
-// The GUI thread only takes a snapshot (the frames vector copied: stroke data is immutable and
+// The GUI thread only takes a snapshot (the layers copied: stroke data is immutable and
 // shared, so this costs pointers, not points) and posts it; a worker thread serializes it,
 // renders the thumbnail and writes the copy atomically (io/atomic_file.h), so a crash during
 // autosave leaves the previous copy whole. Every file operation (write, remove, adopt) runs on

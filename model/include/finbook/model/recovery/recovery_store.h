@@ -42,7 +42,7 @@ struct RecoveryCopy {
 // The bytes of a recovery copy: the document (a snapshot; any thread) with its description and
 // a thumbnail rendered here, the reference layer when there is one, the sound clips `sound`
 // and the camera `camera`.
-QByteArray recoveryCopyBytes(const std::vector<Frame> &frames, const DocumentSettings &settings,
+QByteArray recoveryCopyBytes(const std::vector<Layer> &layers, const DocumentSettings &settings,
                              const RecoveryInfo &info, const Reference &reference = {},
                              const std::vector<SoundClip> &sound = {},
                              const CameraTrack &camera = {});

@@ -26,6 +26,7 @@ public:
     {}
 
     QString id() const override { return QStringLiteral("tool.camera"); }
+    bool editsLayer() const override { return false; }
     QString name() const override { return tr("Camera"); }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_A); }

@@ -53,6 +53,9 @@ public:
     virtual QIcon icon() const { return {}; }
     virtual QKeySequence defaultShortcut() const { return {}; }
     virtual QCursor cursor() const { return Qt::CrossCursor; }
+    // Whether the tool edits the current layer's drawing: such tools do nothing on a locked
+    // layer (the canvas says so instead). The hand, the camera and the reference do not.
+    virtual bool editsLayer() const { return true; }
 
     // Called when the tool becomes current / stops being current. deactivate() must finish
     // or cancel a drag in progress, close any undo macro the tool opened and drop its overlay.

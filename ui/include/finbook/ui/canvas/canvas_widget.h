@@ -90,6 +90,9 @@ public:
     // The frame on show: the preview while there is one, else the current frame (null when
     // there is none). Overlays draw the handles of this frame, so a preview shows its own pins.
     const model::Frame *shownFrame() const;
+    // Every visible layer's cel at the playhead, the current layer's as shownFrame() shows it,
+    // composed into one frame with a plane per layer (scene/shot.h).
+    model::Frame shownShot() const;
     // Marks the cached frame and onion images stale (the repaint benchmark's cold case).
     void invalidateCache();
 
@@ -138,6 +141,9 @@ private:
     void setPanning(bool spaceHeld);
     void updateCursor();
     void beginDrag(const ToolEvent &event, bool pan);
+    // True (and a message posted) when the current layer is locked or hidden and the tool
+    // would edit it.
+    bool refusedOnLockedLayer();
     void continueDrag(const ToolEvent &event);
     void endDrag(const ToolEvent &event);
     ToolEvent toolEvent(const QPointF &widgetPos, qreal pressure) const;
@@ -164,6 +170,20 @@ private:
     QImage m_onionLayer; // tinted neighbours
     bool m_frameLayerValid = false;
     bool m_onionLayerValid = false;
+    // The other layers' cels at the playhead (canvas_layers.cpp): those under the current
+    // layer and those over it, each image holding every such cel at its layer's opacity.
+    struct OtherCel {
+        const model::Frame *frame = nullptr;
+        double opacity = 1.0;
+        bool operator==(const OtherCel &) const = default;
+    };
+    std::vector<OtherCel> otherCels(bool above) const;
+    QImage renderOtherLayers(QImage recycled, const std::vector<OtherCel> &cels) const;
+    void ensureOtherLayers();
+    void invalidateOtherLayers();
+    QImage m_underLayer, m_overLayer;
+    std::vector<OtherCel> m_underCels, m_overCels; // what they show
+    bool m_otherLayersValid = false;
     QTransform m_layerTransform; // the view the layers were rendered for
     QSize m_layerSize;
 };

@@ -17,6 +17,7 @@ public:
     {}
 
     QString id() const override { return QStringLiteral("tool.reference"); }
+    bool editsLayer() const override { return false; }
     QString name() const override { return tr("Move Reference"); }
     QIcon icon() const override;
     QCursor cursor() const override;

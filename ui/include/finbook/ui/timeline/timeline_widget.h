@@ -40,6 +40,8 @@ public:
     QSpinBox *onionAfter() const { return m_after; }
     // Adds a row under the frame strip (the sound row), reparented to this widget.
     void addBelowFrames(QWidget *row);
+    // Rows shown between the header and the frames (the dope sheet's layers).
+    void addAboveFrames(QWidget *rows);
 
     // The header, the frame strip at its least readable height and every row under it: the
     // dock asks for that much, so rows added under the frames never cover the thumbnails.

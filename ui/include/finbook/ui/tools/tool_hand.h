@@ -13,6 +13,7 @@ public:
     {}
 
     QString id() const override { return QStringLiteral("tool.hand"); }
+    bool editsLayer() const override { return false; }
     QString name() const override { return tr("Hand"); }
     QIcon icon() const override
     {

@@ -48,10 +48,14 @@ public:
     bool showSkeleton() const { return m_showSkeleton; }
     // The playback tick on screen (the animation's clock from its first frame, holds
     // included): while playing, the tick playback has reached (the camera moves during a
-    // hold); otherwise the first tick of the current frame.
+    // hold); otherwise the playhead, a tick within the current layer's current cel (its first
+    // unless the playhead was put later, or kept there when another layer became current).
+    // Every layer shows its cel at this tick.
     qint64 currentTick() const;
     // View → Camera View: the canvas shows the shot the camera frames at currentTick().
     bool cameraView() const { return m_cameraView; }
+    // View → Dim Other Layers: layers other than the current one at half strength.
+    bool dimOtherLayers() const { return m_dimOthers; }
 
 public slots:
     void setCurrentFrameIndex(int index);
@@ -65,6 +69,10 @@ public slots:
     // Playback reports the tick it shows; −1 when it stops (currentTick() follows the frame).
     void setPlaybackTick(qint64 tick);
     void setCameraView(bool on);
+    void setDimOtherLayers(bool on);
+    // Puts the playhead at `tick` (the dope sheet): the current layer's cel there becomes the
+    // current frame (its last cel past its end).
+    void setCurrentTick(qint64 tick);
     void nextFrame();
     void previousFrame();
 
@@ -79,9 +87,14 @@ signals:
     // currentTick() changed (a new frame, or playback moved on within a hold).
     void tickChanged(qint64 tick);
     void cameraViewChanged(bool on);
+    void dimOtherLayersChanged(bool on);
 
 private:
     void clampToDocument();
+    // The playhead into the current cel, if it is not there (the cel's first tick).
+    void keepTickInCel();
+    // The current layer changed: the current frame becomes its cel at the playhead.
+    void followLayer();
 
     model::Document *m_doc;
     int m_frameIndex = 0;
@@ -93,7 +106,9 @@ private:
     bool m_showMesh = false;
     bool m_showSkeleton = false;
     bool m_cameraView = false;
+    bool m_dimOthers = false;
     qint64 m_playbackTick = -1;
+    qint64 m_tick = 0; // the playhead when not playing
 };
 
 } // namespace finbook::ui

@@ -39,6 +39,7 @@ class DeformActions;
 class CageActions;
 class EditorState;
 class FrameActions;
+class LayerActions;
 class ObjectActions;
 class PenTool;
 class SoundController;
@@ -167,6 +168,7 @@ private:
     CanvasWidget *m_canvas = nullptr;
     PenTool *m_pen = nullptr;
     FrameActions *m_frameActions = nullptr;
+    LayerActions *m_layerActions = nullptr;
     ObjectActions *m_objectActions = nullptr;
     PlaybackController *m_playback = nullptr;
     SoundController *m_sound = nullptr;
