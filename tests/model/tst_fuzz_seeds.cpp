@@ -8,6 +8,7 @@
 #include <finbook/model/camera/camera_commands.h>
 #include <finbook/model/recovery/recovery_store.h>
 #include <finbook/model/reference/reference_layer.h>
+#include <finbook/model/scene/layer_commands.h>
 
 #include <QDir>
 
@@ -261,6 +262,22 @@ void withCamera(Document &doc)
     }
 }
 
+// Three layers (LAYR): the sample's frames on one, a duplicate at depth and half opacity,
+// hidden and locked, and a layer of one long cel; a camera over them.
+void withLayers(Document &doc)
+{
+    withCamera(doc);
+    doc.undoStack()->push(new DuplicateLayerCommand(&doc, doc.currentLayerId()));
+    LayerProperties p = doc.layerAt(1).properties;
+    p.opacity = 0.5;
+    p.depth = 2.0;
+    p.visible = false;
+    p.locked = true;
+    p.onionSkin = false;
+    doc.undoStack()->push(new SetLayerPropertiesCommand(&doc, doc.layerAt(1).id, p, "p"));
+    doc.undoStack()->push(new AddLayerCommand(&doc, 0, QStringLiteral("Background")));
+}
+
 // Every seed by name.
 std::vector<std::pair<QString, QByteArray>> seeds()
 {
@@ -288,10 +305,13 @@ std::vector<std::pair<QString, QByteArray>> seeds()
     withShadingAndMedia(shaded);
     Document camera;
     withCamera(camera);
+    Document layered;
+    withLayers(layered);
     std::vector<std::pair<QString, QByteArray>> all{
         {QStringLiteral("shading_and_media.finbook"), serializeFinbook(shaded)},
         {QStringLiteral("media.finbook"), serializeFinbook(media)},
         {QStringLiteral("camera.finbook"), serializeFinbook(camera)},
+        {QStringLiteral("layers.finbook"), serializeFinbook(layered)},
         {QStringLiteral("svg_reference.finbook"), serializeFinbook(svg)},
         {QStringLiteral("sample.finbook"), serializeFinbook(sample)},
         {QStringLiteral("cage_skeleton.finbook"), serializeFinbook(rigs)},
@@ -363,7 +383,7 @@ void TestFuzzSeeds::seedsCoverTheFormat()
         collectTags(bytes, tags);
     for (const char *tag :
          {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL", "JOIN",
-          "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR"})
+          "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR", "LAYR"})
         QVERIFY2(tags.count(tag), tag);
 }
 
