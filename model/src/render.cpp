@@ -378,12 +378,10 @@ void paintFrameItems(QPainter &painter, const Frame &frame, const DocumentSettin
 } // namespace
 
 namespace {
-// A composed shot (scene/shot.h): the page once, then each layer's plane at its opacity, seen
-// through its own camera when the picture is seen through one.
-void paintPlanes(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
-                 const RenderOptions &options)
+// The page's background and the underlay (options say which), under the drawing; the page's
+// rectangle in canvas coordinates.
+QRectF paintPage(QPainter &painter, const DocumentSettings &settings, const RenderOptions &options)
 {
-    painter.save();
     const QRectF page(QPointF(0, 0), QSizeF(settings.canvasSize));
     if (options.paintBackground)
         painter.fillRect(page, QColor::fromRgba(settings.background));
@@ -393,6 +391,16 @@ void paintPlanes(QPainter &painter, const Frame &frame, const DocumentSettings &
         options.underlay(painter);
         painter.restore();
     }
+    return page;
+}
+
+// A composed shot (scene/shot.h): the page once, then each layer's plane at its opacity, seen
+// through its own camera when the picture is seen through one.
+void paintPlanes(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
+                 const RenderOptions &options)
+{
+    painter.save();
+    const QRectF page = paintPage(painter, settings, options);
     RenderOptions planeOptions = options;
     planeOptions.paintBackground = false;
     planeOptions.underlay = {};
@@ -429,15 +437,7 @@ void paintFrame(QPainter &painter, const Frame &frame, const DocumentSettings &s
     }
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
-    const QRectF page(QPointF(0, 0), QSizeF(settings.canvasSize));
-    if (options.paintBackground)
-        painter.fillRect(page, QColor::fromRgba(settings.background));
-    if (options.underlay) {
-        painter.save();
-        painter.setClipRect(page, Qt::IntersectClip);
-        options.underlay(painter);
-        painter.restore();
-    }
+    paintPage(painter, settings, options);
     const qreal opacity = std::clamp(options.opacity, 0.0, 1.0);
     // A ghost (onion skin: a tint, or an opacity below 1) is painted whole into a layer of the
     // device first and laid on it once at its opacity: painted item by item at that opacity,

@@ -4,6 +4,8 @@
 
 #include <finbook/model/types.h>
 
+#include <QImage>
+
 #include <memory>
 
 namespace finbook::testing {
@@ -36,6 +38,21 @@ inline model::StrokeDataPtr squareOutline(QPointF corner, double side, int perSi
         }
     data->points.push_back(data->points.front());
     return data;
+}
+
+// The centre of the dark pixels of `image` (x < 0 when there are none): where a dot of ink
+// landed in a rendered picture.
+inline QPointF darkCentre(const QImage &image)
+{
+    double sx = 0, sy = 0, n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            if (qGray(image.pixel(x, y)) < 100) {
+                sx += x + 0.5;
+                sy += y + 0.5;
+                n += 1;
+            }
+    return n > 0 ? QPointF(sx / n, sy / n) : QPointF(-1, -1);
 }
 
 } // namespace finbook::testing

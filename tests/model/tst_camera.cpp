@@ -52,20 +52,6 @@ void dotDocument(Document &doc, QPointF at, int hold = 1)
         testing::lineStroke(at - QPointF(0.5, 0), at + QPointF(0.5, 0), 2, 8.0f)));
 }
 
-// The centre of the dark pixels of `image` (x < 0 when there are none).
-QPointF darkCentre(const QImage &image)
-{
-    double sx = 0, sy = 0, n = 0;
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
-            if (qGray(image.pixel(x, y)) < 100) {
-                sx += x + 0.5;
-                sy += y + 0.5;
-                n += 1;
-            }
-    return n > 0 ? QPointF(sx / n, sy / n) : QPointF(-1, -1);
-}
-
 } // namespace
 
 class TestCamera : public QObject {
@@ -329,7 +315,7 @@ void TestCamera::exportFramesTheShot()
     const QImage image(dir.filePath(QStringLiteral("shot/frame_0001.png")));
     QVERIFY(!image.isNull());
     // The dot is at the middle of the shot, twice as wide as on the page.
-    const QPointF centre = darkCentre(image);
+    const QPointF centre = testing::darkCentre(image);
     QVERIFY2(QLineF(centre, QPointF(100, 50)).length() < 0.75,
              qPrintable(QStringLiteral("%1, %2").arg(centre.x()).arg(centre.y())));
     int dark = 0;
@@ -358,7 +344,7 @@ void TestCamera::exportFollowsAPanDuringAHold()
         const QImage image(dir.filePath(
             QStringLiteral("pan/frame_%1.png").arg(tick + 1, 4, 10, QLatin1Char('0'))));
         // The camera pans right 10 px a tick, so the dot moves left 10 px a tick.
-        const QPointF centre = darkCentre(image);
+        const QPointF centre = testing::darkCentre(image);
         QVERIFY2(std::abs(centre.x() - (100.0 - 10.0 * tick)) < 0.75,
                  qPrintable(QStringLiteral("tick %1: x %2").arg(tick).arg(centre.x())));
     }
@@ -385,7 +371,7 @@ void TestCamera::exportWithoutCameraShowsThePage()
     QCOMPARE(noCamera->holds, plain->holds);
     const ExportSource source = exportSource(doc);
     const QImage page = renderExportFrame(source.frames.at(0), source.settings, *noCamera);
-    QVERIFY(QLineF(darkCentre(page), QPointF(150, 50)).length() < 0.75);
+    QVERIFY(QLineF(testing::darkCentre(page), QPointF(150, 50)).length() < 0.75);
 }
 
 void TestCamera::svgExportFramesTheShot()

@@ -66,19 +66,6 @@ void scene(Document &doc, QSize page = QSize(200, 100))
     doc.reset(std::move(layers), settings, next);
 }
 
-QPointF darkCentre(const QImage &image)
-{
-    double sx = 0, sy = 0, n = 0;
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
-            if (qGray(image.pixel(x, y)) < 100) {
-                sx += x + 0.5;
-                sy += y + 0.5;
-                n += 1;
-            }
-    return n > 0 ? QPointF(sx / n, sy / n) : QPointF(-1, -1);
-}
-
 std::vector<Id> celIds(const Layer &l)
 {
     std::vector<Id> ids;
@@ -378,11 +365,11 @@ void TestLayers::exportThroughTheCameraMovesDepthLayersLess()
         const QImage shot = renderExportFrame(source.frames[0], source.settings, *plan, nullptr, {},
                                               &plan->cameras.at(0));
         const QPointF expected(100 - 40 / (1 + depth), 50);
-        QVERIFY2(QLineF(darkCentre(shot), expected).length() < 0.75,
+        QVERIFY2(QLineF(testing::darkCentre(shot), expected).length() < 0.75,
                  qPrintable(QStringLiteral("depth %1: dot at %2,%3")
                                 .arg(depth)
-                                .arg(darkCentre(shot).x())
-                                .arg(darkCentre(shot).y())));
+                                .arg(testing::darkCentre(shot).x())
+                                .arg(testing::darkCentre(shot).y())));
     }
 }
 

@@ -1,35 +1,12 @@
 #include "../command_text.h"
+#include "../frame_renumber.h"
 
-#include <finbook/model/fill/fill_ids.h>
 #include <finbook/model/inbetween/inbetween_commands.h>
 #include <finbook/model/skeleton/skeleton_join.h>
 
 #include <algorithm>
 
 namespace finbook::model {
-
-namespace {
-
-// New ids for a planned frame and everything in it. Stroke data stays shared with the keys.
-void renumber(Frame &frame, Document *doc)
-{
-    frame.id = doc->allocateId();
-    std::unordered_map<Id, Id> groupIds;
-    for (StrokeGroup &g : frame.groups) {
-        const Id old = g.id;
-        g.id = doc->allocateId();
-        groupIds[old] = g.id;
-        std::unordered_map<Id, Id> strokeIds;
-        for (Stroke &s : g.strokes)
-            s.id = strokeIds[s.id] = doc->allocateId();
-        remapFillStrokeIds(g, strokeIds);
-        for (Pin &p : g.rig.pins)
-            p.id = doc->allocateId();
-    }
-    remapJoins(frame, groupIds);
-}
-
-} // namespace
 
 InsertInbetweensCommand::InsertInbetweensCommand(Document *doc, Id firstKey, Id secondKey,
                                                  int count, const InbetweenOptions &options,
@@ -49,7 +26,7 @@ InsertInbetweensCommand::InsertInbetweensCommand(Document *doc, Id firstKey, Id 
     m_plan = planInbetweens(doc->frameAt(a), doc->frameAt(b),
                             inbetweenTimes(count, options.spacing), options.path);
     for (Frame &f : m_plan.frames)
-        renumber(f, doc);
+        renumberFrame(f, doc);
 }
 
 std::vector<Id> InsertInbetweensCommand::frameIds() const

@@ -1,36 +1,13 @@
 // Layer commands (scene/layer_commands.h).
 #include "../command_text.h"
+#include "../frame_renumber.h"
 
-#include <finbook/model/fill/fill_ids.h>
 #include <finbook/model/scene/layer_commands.h>
 #include <finbook/model/scene/shot.h>
-#include <finbook/model/skeleton/skeleton_join.h>
 
 #include <algorithm>
-#include <unordered_map>
 
 namespace finbook::model {
-
-namespace {
-// Fresh ids for a cel and everything in it; stroke points stay shared.
-void renumber(Frame &frame, Document *doc)
-{
-    frame.id = doc->allocateId();
-    std::unordered_map<Id, Id> groupIds;
-    for (StrokeGroup &g : frame.groups) {
-        const Id old = g.id;
-        g.id = doc->allocateId();
-        groupIds[old] = g.id;
-        std::unordered_map<Id, Id> strokeIds;
-        for (Stroke &s : g.strokes)
-            s.id = strokeIds[s.id] = doc->allocateId();
-        remapFillStrokeIds(g, strokeIds);
-        for (Pin &p : g.rig.pins)
-            p.id = doc->allocateId();
-    }
-    remapJoins(frame, groupIds);
-}
-} // namespace
 
 AddLayerCommand::AddLayerCommand(Document *doc, int index, const QString &name,
                                  QUndoCommand *parent)
@@ -78,7 +55,7 @@ DuplicateLayerCommand::DuplicateLayerCommand(Document *doc, Id layerId, QUndoCom
     m_copy.id = doc->allocateId();
     m_copy.properties.name = Command::tr("%1 copy").arg(source->properties.name);
     for (Frame &cel : m_copy.cels)
-        renumber(cel, doc);
+        renumberFrame(cel, doc);
 }
 
 void DuplicateLayerCommand::redo()

@@ -96,7 +96,7 @@ void ExportDialog::buildForm()
     m_first = new QSpinBox(this);
     m_last = new QSpinBox(this);
     for (QSpinBox *box : {m_first, m_last})
-        box->setRange(1, std::max(1, m_doc.frameCount()));
+        box->setRange(1, std::max(1, shotFrameCount()));
     m_first->setValue(m_doc.playFirst() + 1);
     m_last->setValue(m_doc.playLast() + 1);
     m_scale = new QDoubleSpinBox(this);
@@ -202,9 +202,29 @@ void ExportDialog::setTarget(const QString &path)
     m_target->setText(QDir::toNativeSeparators(path));
 }
 
+int ExportDialog::shotFrameCount() const
+{
+    return m_doc.layerCount() == 1 ? m_doc.frameCount()
+                                   : int(model::shotFrames(m_doc.layers()).size());
+}
+
 void ExportDialog::setCurrentFrame(int index)
 {
-    m_currentFrame = std::clamp(index, 0, std::max(0, m_doc.frameCount() - 1));
+    index = std::clamp(index, 0, std::max(0, m_doc.frameCount() - 1));
+    if (m_doc.layerCount() > 1) {
+        // The export's pictures are the composed shot's: the one showing the frame's first tick.
+        const qint64 tick = model::celStart(m_doc.frames(), index);
+        const std::vector<model::Frame> shot = model::shotFrames(m_doc.layers());
+        qint64 start = 0;
+        int at = 0;
+        for (; at + 1 < int(shot.size()); ++at) {
+            start += shot[std::size_t(at)].hold;
+            if (tick < start)
+                break;
+        }
+        index = at;
+    }
+    m_currentFrame = index;
     updateFields();
 }
 
@@ -282,7 +302,7 @@ model::ExportOptions ExportDialog::options() const
     switch (Range(m_range->currentData().toInt())) {
     case Range::AllFrames:
         o.firstFrame = 0;
-        o.lastFrame = std::max(0, m_doc.frameCount() - 1);
+        o.lastFrame = std::max(0, shotFrameCount() - 1);
         break;
     case Range::Custom:
         o.firstFrame = m_first->value() - 1;

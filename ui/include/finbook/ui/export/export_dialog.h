@@ -49,7 +49,8 @@ public:
     model::ExportOptions options() const;
     void setFormat(model::ExportFormat format);
     void setTarget(const QString &path);
-    // The frame the editor shows (document index): what a 3D model export writes.
+    // The frame the editor shows (index in the current layer): a 3D model export writes the
+    // picture of the shot showing its first tick.
     void setCurrentFrame(int index);
     bool isExporting() const;
     QString summary() const { return m_summary; }
@@ -72,6 +73,8 @@ public:
     QPushButton *exportButton() const { return m_exportButton; }
     QPushButton *cancelButton() const { return m_cancelButton; }
     ExportJob *job() const { return m_job.get(); }
+    // The pictures the shot has (composed from every layer; one layer: its frames).
+    int shotFrameCount() const;
 
 public slots:
     void startExport();
