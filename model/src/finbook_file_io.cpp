@@ -219,7 +219,6 @@ std::vector<Layer> takeLoadedLayers(LoadedDocument &loaded)
         layers.push_back(std::move(only));
         return layers;
     }
-    // The reader made the counts add up to the frames.
     auto next = loaded.frames.begin();
     for (const LoadedLayer &l : loaded.layers) {
         Layer layer;
@@ -230,6 +229,10 @@ std::vector<Layer> takeLoadedLayers(LoadedDocument &loaded)
         next = end;
         layers.push_back(std::move(layer));
     }
+    // Frames no layer claims (a damaged list opened anyway) are not lost: the last layer
+    // takes them.
+    layers.back().cels.insert(layers.back().cels.end(), std::make_move_iterator(next),
+                              std::make_move_iterator(loaded.frames.end()));
     loaded.frames.clear();
     return layers;
 }

@@ -7,6 +7,9 @@
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/window/editor_state.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace finbook::ui {
 
 std::vector<CanvasWidget::OtherCel> CanvasWidget::otherCels(bool above) const
@@ -63,6 +66,49 @@ void CanvasWidget::ensureOtherLayers()
     m_underCels = std::move(under);
     m_overCels = std::move(over);
     m_otherLayersValid = true;
+}
+
+bool CanvasWidget::rasterizeShot(QPainter &painter, const QRect &dirty,
+                                 const model::CameraState &camera) const
+{
+    if (std::fmod(camera.rotation, 360.0) != 0.0)
+        return false;
+    const model::DocumentSettings &settings = document()->settings();
+    const QSizeF page(settings.canvasSize);
+    const model::Frame shot = shownShot();
+    m_shotLayer = newLayerImage(std::move(m_shotLayer));
+    const qreal dpr = m_shotLayer.devicePixelRatio();
+    const QRectF shown = pageRect();
+    const QRect clip(
+        QPoint(int(std::floor(shown.left() * dpr)), int(std::floor(shown.top() * dpr))),
+        QPoint(int(std::ceil(shown.right() * dpr)) - 1, int(std::ceil(shown.bottom() * dpr)) - 1));
+    int begin = 0;
+    for (const model::FramePlane &plane : shot.planes) {
+        const int end = std::clamp(plane.groupEnd, begin, int(shot.groups.size()));
+        model::Frame layer;
+        layer.id = shot.id;
+        layer.groups.assign(shot.groups.begin() + begin, shot.groups.begin() + end);
+        begin = end;
+        model::RenderOptions options;
+        options.paintBackground = false;
+        options.opacity = std::clamp(plane.opacity, 0.0, 1.0);
+        if (layer.groups.empty() || options.opacity <= 0.0)
+            continue;
+        // Page → widget for this plane: its own camera, then the view (unturned: scale + move).
+        const QTransform view =
+            model::cameraTransform(model::planeCamera(camera, plane.depth, page), page) *
+            screenTransform();
+        StrokeRaster::prepareFills(layer, options, settings);
+        StrokeRaster::drawParallel(
+            &m_shotLayer, clip, view.m11() * dpr, QPointF(view.dx(), view.dy()) * dpr,
+            [&](StrokeRaster &raster) { raster.drawFrame(layer, options, settings); });
+    }
+    painter.save();
+    painter.resetTransform();
+    const QRectF source(QPointF(dirty.topLeft()) * dpr, QSizeF(dirty.size()) * dpr);
+    painter.drawImage(QRectF(dirty), m_shotLayer, source);
+    painter.restore();
+    return true;
 }
 
 model::Frame CanvasWidget::shownShot() const

@@ -190,11 +190,15 @@ void CanvasWidget::paintShot(QPainter &painter, const QRect &dirty) const
         for (const auto &[index, options] : onionNeighbours())
             model::paintFrame(painter, document()->frameAt(index), document()->settings(), options);
     // Every layer, each plane through its own camera (multiplane depth).
-    model::RenderOptions options;
-    options.paintBackground = false;
-    options.camera = model::cameraAt(document()->camera(), double(m_state->currentTick()),
-                                     QSizeF(document()->settings().canvasSize));
-    model::paintFrame(painter, shownShot(), document()->settings(), options);
+    const model::CameraState camera =
+        model::cameraAt(document()->camera(), double(m_state->currentTick()),
+                        QSizeF(document()->settings().canvasSize));
+    if (!rasterizeShot(painter, dirty, camera)) {
+        model::RenderOptions options;
+        options.paintBackground = false;
+        options.camera = camera;
+        model::paintFrame(painter, shownShot(), document()->settings(), options);
+    }
     painter.restore();
 }
 

@@ -133,6 +133,11 @@ private:
     QTransform screenTransform() const; // the view's space (page or shot) to the widget
     QTransform cameraViewTransform() const; // page to shot in Camera View, else identity
     void paintShot(QPainter &painter, const QRect &dirty) const;
+    // The shot's layers for Camera View when the camera is not turned: each plane rasterized
+    // at its own scale and offset (canvas_layers.cpp), as fast as the page's cached layers.
+    // False (nothing painted) for a turned camera, which QPainter draws.
+    bool rasterizeShot(QPainter &painter, const QRect &dirty,
+                       const model::CameraState &camera) const;
     void paintOverlays(QPainter &painter);
     // The onion skin's frames, farthest first, with their tints and opacities.
     std::vector<std::pair<int, model::RenderOptions>> onionNeighbours() const;
@@ -182,6 +187,7 @@ private:
     void ensureOtherLayers();
     void invalidateOtherLayers();
     QImage m_underLayer, m_overLayer;
+    mutable QImage m_shotLayer;                    // Camera View's picture, its buffer reused
     std::vector<OtherCel> m_underCels, m_overCels; // what they show
     bool m_otherLayersValid = false;
     QTransform m_layerTransform; // the view the layers were rendered for
