@@ -18,7 +18,7 @@ namespace finbook::ui {
 
 namespace {
 constexpr int kEyeX = 6, kLockX = 24, kNameX = 44, kGlyph = 14;
-constexpr int kGrip = 4; // pixels either side of a cel's end that grab its exposure
+constexpr int kGrip = 3; // pixels either side of a cel's end that grab its exposure
 const QColor kCel(0xb8, 0xd0, 0xf0), kCurrentCel(0x70, 0xa0, 0xe8), kEmptyCel(0xe8, 0xe8, 0xe8);
 } // namespace
 

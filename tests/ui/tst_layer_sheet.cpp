@@ -1,0 +1,154 @@
+// Layers in the real window (issue 46): the dope sheet's rows make a layer current and move the
+// playhead, a cel's end dragged changes its exposure in one undo step, the eye and the padlock
+// show, hide, lock and unlock, a locked layer refuses the pen, the Layer menu's keys work after
+// the mouse has touched the timeline, and the canvas draws the other layers at the playhead.
+#include "tst_tools_support.h"
+#include "tst_window_support.h"
+
+#include <finbook/model/scene/layer_commands.h>
+#include <finbook/model/scene/shot.h>
+#include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/layers/layer_sheet.h>
+#include <finbook/ui/window/editor_state.h>
+
+#include <QTest>
+
+using namespace finbook;
+using namespace finbook::test;
+
+namespace {
+
+// Two layers: a background of one cel held 6 ticks with a stroke, and the window's own frames
+// (3 cels of one tick) in front.
+void twoLayers(ui::MainWindow &window)
+{
+    model::Document *doc = window.document();
+    resetDocument(*doc, 3);
+    auto *add = new model::AddLayerCommand(doc, 0, QStringLiteral("Background"));
+    doc->undoStack()->push(add);
+    const model::Layer &bg = doc->layerAt(0);
+    doc->undoStack()->push(new model::SetFrameHoldCommand(doc, bg.cels[0].id, 6));
+    addStroke(*doc, bg.cels[0].groups[0].id, line(QPointF(20, 20), QPointF(300, 300), 40));
+    doc->undoStack()->clear();
+}
+
+QPoint cellPoint(const ui::LayerSheet *sheet, int layerIndex, qint64 tick)
+{
+    const QRect row = sheet->rowRect(layerIndex);
+    return {sheet->xOfTick(tick) + 6, row.center().y()}; // the middle of the tick
+}
+
+} // namespace
+
+class TestLayerSheet : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { m_settings = std::make_unique<IsolatedSettings>(); }
+
+    void rowsPickTheLayerAndThePlayhead()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        twoLayers(window);
+        model::Document *doc = window.document();
+        auto *sheet = window.findChild<ui::LayerSheet *>(QStringLiteral("layerSheet"));
+        QVERIFY(sheet);
+        QCOMPARE(doc->currentLayerIndex(), 1);
+        // The background's row at tick 4: its layer current, the playhead there, its one cel.
+        QTest::mouseClick(sheet, Qt::LeftButton, {}, cellPoint(sheet, 0, 4));
+        QCOMPARE(doc->currentLayerIndex(), 0);
+        QCOMPARE(window.editorState()->currentTick(), qint64(4));
+        QCOMPARE(window.editorState()->currentFrameIndex(), 0);
+        // The front layer at tick 2: its third cel.
+        QTest::mouseClick(sheet, Qt::LeftButton, {}, cellPoint(sheet, 1, 2));
+        QCOMPARE(doc->currentLayerIndex(), 1);
+        QCOMPARE(window.editorState()->currentFrameIndex(), 2);
+        // Keys after the mouse touched the timeline: PgDown picks the layer below.
+        typeKey(Qt::Key_PageDown);
+        QCOMPARE(doc->currentLayerIndex(), 0);
+        typeKey(Qt::Key_PageUp);
+        QCOMPARE(doc->currentLayerIndex(), 1);
+        QCOMPARE(window.editorState()->currentTick(), qint64(2)); // the playhead stayed
+    }
+
+    void draggingACelsEndChangesItsExposure()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        twoLayers(window);
+        model::Document *doc = window.document();
+        auto *sheet = window.findChild<ui::LayerSheet *>(QStringLiteral("layerSheet"));
+        const int steps = doc->undoStack()->count();
+        // The front layer's first cel ends at tick 1: drag its end to tick 4 (held 4 ticks).
+        const int y = sheet->rowRect(1).center().y();
+        drag(sheet, {QPointF(sheet->xOfTick(1), y), QPointF(sheet->xOfTick(2), y),
+                     QPointF(sheet->xOfTick(4), y)});
+        QCOMPARE(doc->layerAt(1).cels[0].hold, 4);
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        QCOMPARE(model::celStart(doc->layerAt(1).cels, 1), qint64(4));
+        QCOMPARE(doc->layerAt(0).cels[0].hold, 6); // the other layer keeps its timing
+        doc->undoStack()->undo();
+        QCOMPARE(doc->layerAt(1).cels[0].hold, 1);
+    }
+
+    void lockedLayerRefusesThePen()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        twoLayers(window);
+        model::Document *doc = window.document();
+        auto *sheet = window.findChild<ui::LayerSheet *>(QStringLiteral("layerSheet"));
+        // The padlock of the front layer (the second glyph of its header).
+        QTest::mouseClick(sheet, Qt::LeftButton, {}, QPoint(27, sheet->rowRect(1).center().y()));
+        QVERIFY(doc->layerAt(1).properties.locked);
+        QCOMPARE(doc->undoStack()->text(doc->undoStack()->count() - 1),
+                 QStringLiteral("Lock Layer"));
+        ui::CanvasWidget *canvas = window.canvas();
+        canvas->setCurrentTool(QStringLiteral("tool.pen"));
+        const int steps = doc->undoStack()->count();
+        dragCanvas(canvas, QPointF(100, 100), QPointF(200, 150));
+        QCOMPARE(doc->undoStack()->count(), steps); // nothing drawn
+        // The eye hides the background; unlocking lets the pen draw again.
+        QTest::mouseClick(sheet, Qt::LeftButton, {}, QPoint(10, sheet->rowRect(0).center().y()));
+        QVERIFY(!doc->layerAt(0).properties.visible);
+        QVERIFY(window.action(QStringLiteral("layer.locked")));
+        window.action(QStringLiteral("layer.locked"))->trigger();
+        QVERIFY(!doc->layerAt(1).properties.locked);
+        dragCanvas(canvas, QPointF(100, 100), QPointF(200, 150));
+        QCOMPARE(doc->undoStack()->count(), steps + 3); // hide, unlock, then the stroke
+        QCOMPARE(doc->layerAt(1).cels[0].groups[0].strokes.size(), std::size_t(1));
+    }
+
+    void otherLayersDrawUnderTheCurrentOne()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        twoLayers(window);
+        ui::CanvasWidget *canvas = window.canvas();
+        // The background's stroke crosses the page's (160, 160): dark on the canvas, though
+        // the current layer has nothing there.
+        const QPoint at = canvas->mapFromCanvas(QPointF(160, 160)).toPoint();
+        const auto dark = [&] { return qGray(canvas->grab().toImage().pixel(at)) < 128; };
+        QVERIFY(dark());
+        window.action(QStringLiteral("layer.below"))->trigger();
+        window.action(QStringLiteral("layer.visible"))->trigger(); // hide the background
+        QCOMPARE(window.document()->currentLayerIndex(), 0);
+        QVERIFY(!window.document()->layerAt(0).properties.visible);
+        QVERIFY(!dark());
+        window.document()->undoStack()->undo();
+        QVERIFY(dark());
+        // Past the background's six ticks it shows nothing (seen from the front layer: the
+        // current layer's last drawing stays on show for editing past its end).
+        window.action(QStringLiteral("layer.above"))->trigger();
+        window.editorState()->setCurrentTick(5);
+        QVERIFY(dark());
+        window.editorState()->setCurrentTick(7);
+        QVERIFY(!dark());
+    }
+
+private:
+    std::unique_ptr<IsolatedSettings> m_settings;
+};
+
+QTEST_MAIN(TestLayerSheet)
+#include "tst_layer_sheet.moc"
