@@ -19,78 +19,78 @@
         <translation>Striche in Objekt verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="174"/>
+        <location filename="../model/src/commands.cpp" line="172"/>
         <source>New Object</source>
         <translation>Neues Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="202"/>
+        <location filename="../model/src/commands.cpp" line="200"/>
         <source>Delete Object</source>
         <translation>Objekt löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="231"/>
+        <location filename="../model/src/commands.cpp" line="229"/>
         <source>Rename Object</source>
         <translation>Objekt umbenennen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="256"/>
+        <location filename="../model/src/commands.cpp" line="254"/>
         <source>Reorder Object</source>
         <translation>Objekt umsortieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Show Object</source>
         <translation>Objekt einblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Hide Object</source>
         <translation>Objekt ausblenden</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="289"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Lock Object</source>
         <translation>Objekt sperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="289"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Unlock Object</source>
         <translation>Objekt entsperren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="323"/>
+        <location filename="../model/src/commands.cpp" line="321"/>
         <source>Insert Frame</source>
         <translation>Einzelbild einfügen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="327"/>
-        <location filename="../model/src/scene/layer_commands.cpp" line="48"/>
+        <location filename="../model/src/commands.cpp" line="325"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="25"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="348"/>
+        <location filename="../model/src/commands.cpp" line="346"/>
         <source>Duplicate Frame</source>
         <translation>Einzelbild duplizieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="399"/>
+        <location filename="../model/src/commands.cpp" line="397"/>
         <source>Delete Frame</source>
         <translation>Einzelbild löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="426"/>
+        <location filename="../model/src/commands.cpp" line="424"/>
         <source>Move Frame</source>
         <translation>Einzelbild verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="450"/>
+        <location filename="../model/src/commands.cpp" line="448"/>
         <source>Change Frame Exposure</source>
         <translation>Haltedauer des Einzelbilds ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="494"/>
+        <location filename="../model/src/commands.cpp" line="492"/>
         <source>Change Document Settings</source>
         <translation>Dokumenteinstellungen ändern</translation>
     </message>
@@ -140,7 +140,7 @@
         <translation>Rig entfernen</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="39"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="16"/>
         <source>Generate In-betweens</source>
         <translation>Zwischenbilder erzeugen</translation>
     </message>
@@ -321,39 +321,46 @@
         <translation>Kamera-Schlüsselbild verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="40"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="17"/>
         <source>New Layer</source>
         <translation>Neue Ebene</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="70"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="47"/>
         <source>Duplicate Layer</source>
         <translation>Ebene duplizieren</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="79"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="56"/>
         <source>%1 copy</source>
         <translation>%1 Kopie</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="100"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="77"/>
         <source>Delete Layer</source>
         <translation>Ebene löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="127"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="104"/>
         <source>Move Layer</source>
         <translation>Ebene verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="191"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="168"/>
         <source>Insert Time</source>
         <translation>Zeit einfügen</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="208"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="185"/>
         <source>Delete Time</source>
         <translation>Zeit löschen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/document.cpp" line="20"/>
+        <location filename="../model/src/document.cpp" line="204"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
+        <source>Layer 1</source>
+        <translation>Ebene 1</translation>
     </message>
 </context>
 <context>
@@ -1215,27 +1222,27 @@
         <translation>%1 hat am Ende %2 unerwartete Bytes</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="34"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="35"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist unvollständig (vielleicht wurde ein Kopier- oder Speichervorgang unterbrochen); falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="41"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Die Datei ist beschädigt; falls es eine Sicherungskopie mit demselben Namen und angehängtem ~ gibt, öffnen Sie stattdessen diese.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="45"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="46"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 Die Datei ist beschädigt; Finbook kann öffnen, was davon noch lesbar ist, oder Sie öffnen die Sicherungskopie mit demselben Namen und angehängtem ~, falls es eine gibt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="51"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="73"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="74"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; geben Sie Speicherplatz frei oder wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
@@ -1265,43 +1272,43 @@
         <translation>der Ordner „%1“ existiert nicht</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="80"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>„%1“ konnte nicht gespeichert werden: %2. Die bisherige Datei ist unverändert; wählen Sie einen anderen Ordner und speichern Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="90"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>„%1“ kann nicht geöffnet werden: %2. Prüfen Sie, ob die Datei existiert und ob Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
         <source>it is a folder</source>
         <translation>es ist ein Ordner</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="164"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>„%1“ kann nicht gelesen werden: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="144"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="175"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>„%1“ kann nicht geöffnet werden. %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="135"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>„%1“ kann nicht geöffnet werden: Es ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie eine .finbook-Datei.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="154"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>„%1“ kann nicht geöffnet werden: Für die %2 MB der Datei ist nicht genug Arbeitsspeicher vorhanden. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="258"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
@@ -3219,13 +3226,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="59"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="318"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="338"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="67"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="306"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="326"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
@@ -3394,47 +3401,47 @@
         <translation>Export abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="249"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 × %2 Pixel</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, mit einer .mtl-Datei daneben. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="257"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="277"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, alles in einer Datei. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="262"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="282"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Dieses Format benötigt das Programm ffmpeg, das nicht gefunden wurde; installieren Sie es zuerst (unter Debian: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="267"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="287"/>
         <source>The video carries the soundtrack, trimmed to the frames exported.</source>
         <translation>Das Video enthält die Tonspur, zugeschnitten auf die exportierten Bilder.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
         <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
         <translation>Die Seite enthält die Tonspur; sie läuft mit den Bildern, sobald der Betrachter auf Abspielen klickt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
         <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
         <translation>Dieses Format hat keinen Ton: die Tonspur wird weggelassen (MP4, WebM und HTML enthalten sie).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="315"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="335"/>
         <source>Export to Folder</source>
         <translation>In Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="319"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="339"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>
@@ -3779,7 +3786,7 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="193"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
         <source>Lock Layer</source>
         <translation>Ebene sperren</translation>
     </message>
@@ -3791,7 +3798,7 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="188"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
         <source>Show Layer</source>
         <translation>Ebene einblenden</translation>
     </message>

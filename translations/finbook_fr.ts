@@ -19,78 +19,78 @@
         <translation>Déplacer les traits vers un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="174"/>
+        <location filename="../model/src/commands.cpp" line="172"/>
         <source>New Object</source>
         <translation>Nouvel objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="202"/>
+        <location filename="../model/src/commands.cpp" line="200"/>
         <source>Delete Object</source>
         <translation>Supprimer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="231"/>
+        <location filename="../model/src/commands.cpp" line="229"/>
         <source>Rename Object</source>
         <translation>Renommer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="256"/>
+        <location filename="../model/src/commands.cpp" line="254"/>
         <source>Reorder Object</source>
         <translation>Réordonner l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Show Object</source>
         <translation>Afficher l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Hide Object</source>
         <translation>Masquer l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="289"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Lock Object</source>
         <translation>Verrouiller l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="289"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Unlock Object</source>
         <translation>Déverrouiller l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="323"/>
+        <location filename="../model/src/commands.cpp" line="321"/>
         <source>Insert Frame</source>
         <translation>Insérer une image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="327"/>
-        <location filename="../model/src/scene/layer_commands.cpp" line="48"/>
+        <location filename="../model/src/commands.cpp" line="325"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="25"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="348"/>
+        <location filename="../model/src/commands.cpp" line="346"/>
         <source>Duplicate Frame</source>
         <translation>Dupliquer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="399"/>
+        <location filename="../model/src/commands.cpp" line="397"/>
         <source>Delete Frame</source>
         <translation>Supprimer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="426"/>
+        <location filename="../model/src/commands.cpp" line="424"/>
         <source>Move Frame</source>
         <translation>Déplacer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="450"/>
+        <location filename="../model/src/commands.cpp" line="448"/>
         <source>Change Frame Exposure</source>
         <translation>Modifier l&apos;exposition de l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="494"/>
+        <location filename="../model/src/commands.cpp" line="492"/>
         <source>Change Document Settings</source>
         <translation>Modifier les paramètres du document</translation>
     </message>
@@ -140,7 +140,7 @@
         <translation>Retirer l&apos;armature</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="39"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="16"/>
         <source>Generate In-betweens</source>
         <translation>Générer des intervalles</translation>
     </message>
@@ -321,39 +321,46 @@
         <translation>Déplacer la clé de caméra</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="40"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="17"/>
         <source>New Layer</source>
         <translation>Nouveau calque</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="70"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="47"/>
         <source>Duplicate Layer</source>
         <translation>Dupliquer le calque</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="79"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="56"/>
         <source>%1 copy</source>
         <translation>%1 copie</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="100"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="77"/>
         <source>Delete Layer</source>
         <translation>Supprimer le calque</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="127"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="104"/>
         <source>Move Layer</source>
         <translation>Déplacer le calque</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="191"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="168"/>
         <source>Insert Time</source>
         <translation>Insérer du temps</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="208"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="185"/>
         <source>Delete Time</source>
         <translation>Supprimer du temps</translation>
+    </message>
+    <message>
+        <location filename="../model/src/document.cpp" line="20"/>
+        <location filename="../model/src/document.cpp" line="204"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
+        <source>Layer 1</source>
+        <translation>Calque 1</translation>
     </message>
 </context>
 <context>
@@ -1215,27 +1222,27 @@
         <translation>%1 se termine par %2 octets inattendus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="34"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="35"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Le fichier est incomplet (copie ou enregistrement interrompu&#xa0;?)&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="41"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 Le fichier est endommagé&#xa0;; s&apos;il existe une sauvegarde du même nom terminée par ~, ouvrez-la plutôt.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="45"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="46"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 Le fichier est endommagé&#xa0;; Finbook peut en ouvrir ce qui reste lisible, ou vous pouvez ouvrir la sauvegarde du même nom terminée par ~, s&apos;il en existe une.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="51"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="73"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="74"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; libérez de l&apos;espace disque ou choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
@@ -1265,43 +1272,43 @@
         <translation>le dossier «&#xa0;%1&#xa0;» n&apos;existe pas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="80"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: %2. Le fichier précédent n&apos;a pas été modifié&#xa0;; choisissez un autre dossier, puis enregistrez à nouveau.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="90"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: %2. Vérifiez que le fichier existe et que vous avez le droit de le lire.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
         <source>it is a folder</source>
         <translation>c&apos;est un dossier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="164"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>Impossible de lire «&#xa0;%1&#xa0;»&#xa0;: %2.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="144"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="175"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;». %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="135"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: c&apos;est un périphérique, un tube ou un socket, pas un fichier. Choisissez un fichier .finbook.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="154"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante pour ses %2&#xa0;Mo. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="258"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
@@ -3219,13 +3226,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="59"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="318"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="338"/>
         <source>Export Animation</source>
         <translation>Exporter l&apos;animation</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="67"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="306"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="326"/>
         <source>untitled</source>
         <translation>sans titre</translation>
     </message>
@@ -3394,47 +3401,47 @@
         <translation>Annuler l&apos;export</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="249"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 x %2 pixels</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, avec un fichier .mtl à côté. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="257"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="277"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, le tout dans un seul fichier. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="262"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="282"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Ce format nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le d&apos;abord (sous Debian&#xa0;: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="267"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="287"/>
         <source>The video carries the soundtrack, trimmed to the frames exported.</source>
         <translation>La vidéo porte la bande son, coupée aux images exportées.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
         <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
         <translation>La page porte la bande son ; elle joue avec les images dès que le spectateur appuie sur Lecture.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
         <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
         <translation>Ce format n&apos;a pas de son : la bande son est laissée de côté (MP4, WebM et HTML la portent).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="315"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="335"/>
         <source>Export to Folder</source>
         <translation>Exporter dans un dossier</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="319"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="339"/>
         <source>%1 files (*.%2)</source>
         <translation>Fichiers %1 (*.%2)</translation>
     </message>
@@ -3779,7 +3786,7 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="193"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
         <source>Lock Layer</source>
         <translation>Verrouiller le calque</translation>
     </message>
@@ -3791,7 +3798,7 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="188"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
         <source>Show Layer</source>
         <translation>Afficher le calque</translation>
     </message>

@@ -19,78 +19,78 @@
         <translation>ストロークをオブジェクトへ移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="174"/>
+        <location filename="../model/src/commands.cpp" line="172"/>
         <source>New Object</source>
         <translation>新規オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="202"/>
+        <location filename="../model/src/commands.cpp" line="200"/>
         <source>Delete Object</source>
         <translation>オブジェクトを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="231"/>
+        <location filename="../model/src/commands.cpp" line="229"/>
         <source>Rename Object</source>
         <translation>オブジェクト名を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="256"/>
+        <location filename="../model/src/commands.cpp" line="254"/>
         <source>Reorder Object</source>
         <translation>オブジェクトの順序を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Show Object</source>
         <translation>オブジェクトを表示</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="287"/>
+        <location filename="../model/src/commands.cpp" line="285"/>
         <source>Hide Object</source>
         <translation>オブジェクトを非表示</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="289"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Lock Object</source>
         <translation>オブジェクトをロック</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="289"/>
+        <location filename="../model/src/commands.cpp" line="287"/>
         <source>Unlock Object</source>
         <translation>オブジェクトのロックを解除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="323"/>
+        <location filename="../model/src/commands.cpp" line="321"/>
         <source>Insert Frame</source>
         <translation>フレームを挿入</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="327"/>
-        <location filename="../model/src/scene/layer_commands.cpp" line="48"/>
+        <location filename="../model/src/commands.cpp" line="325"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="25"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="348"/>
+        <location filename="../model/src/commands.cpp" line="346"/>
         <source>Duplicate Frame</source>
         <translation>フレームを複製</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="399"/>
+        <location filename="../model/src/commands.cpp" line="397"/>
         <source>Delete Frame</source>
         <translation>フレームを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="426"/>
+        <location filename="../model/src/commands.cpp" line="424"/>
         <source>Move Frame</source>
         <translation>フレームを移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="450"/>
+        <location filename="../model/src/commands.cpp" line="448"/>
         <source>Change Frame Exposure</source>
         <translation>フレームの表示時間を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="494"/>
+        <location filename="../model/src/commands.cpp" line="492"/>
         <source>Change Document Settings</source>
         <translation>ドキュメント設定を変更</translation>
     </message>
@@ -140,7 +140,7 @@
         <translation>リグを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="39"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="16"/>
         <source>Generate In-betweens</source>
         <translation>中割りを生成</translation>
     </message>
@@ -321,39 +321,46 @@
         <translation>カメラキーを移動</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="40"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="17"/>
         <source>New Layer</source>
         <translation>新しいレイヤー</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="70"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="47"/>
         <source>Duplicate Layer</source>
         <translation>レイヤーを複製</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="79"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="56"/>
         <source>%1 copy</source>
         <translation>%1 のコピー</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="100"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="77"/>
         <source>Delete Layer</source>
         <translation>レイヤーを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="127"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="104"/>
         <source>Move Layer</source>
         <translation>レイヤーを移動</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="191"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="168"/>
         <source>Insert Time</source>
         <translation>時間を挿入</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="208"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="185"/>
         <source>Delete Time</source>
         <translation>時間を削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/document.cpp" line="20"/>
+        <location filename="../model/src/document.cpp" line="204"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="218"/>
+        <source>Layer 1</source>
+        <translation>レイヤー 1</translation>
     </message>
 </context>
 <context>
@@ -1210,27 +1217,27 @@
         <translation>%1 の末尾に予期しない %2 バイトがあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="34"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="35"/>
         <source>%1 The file is incomplete (perhaps an interrupted copy or save); if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが不完全です（コピーや保存が中断された可能性があります）。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="40"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="41"/>
         <source>%1 The file is damaged; if there is a backup with the same name ending in ~, open that instead.</source>
         <translation>%1 ファイルが破損しています。同じ名前で末尾に ~ が付いたバックアップがあれば、代わりにそちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="45"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="46"/>
         <source>%1 The file is damaged; Finbook can open what is still readable of it, or open the backup with the same name ending in ~ if there is one.</source>
         <translation>%1 ファイルが破損しています。Finbook でまだ読み取れる部分を開くか、同じ名前で末尾に ~ が付いたバックアップがあれば、そちらを開いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="50"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="51"/>
         <source>%1 Close other programs or documents and try again.</source>
         <translation>%1 ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="73"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="74"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; free some disk space or choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。ディスクの空き容量を増やすか別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
@@ -1260,43 +1267,43 @@
         <translation>フォルダー「%1」が存在しません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="79"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="80"/>
         <source>Could not save &quot;%1&quot;: %2. The previous file is unchanged; choose another folder, then save again.</source>
         <translation>「%1」を保存できませんでした: %2。以前のファイルは変更されていません。別のフォルダーを選んでから、もう一度保存してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="90"/>
         <source>Cannot open &quot;%1&quot;: %2. Check that the file exists and that you may read it.</source>
         <translation>「%1」を開けません: %2。ファイルが存在し、読み取る権限があることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="131"/>
         <source>it is a folder</source>
         <translation>フォルダーです</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="164"/>
         <source>Cannot read &quot;%1&quot;: %2.</source>
         <translation>「%1」を読み込めません: %2。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="144"/>
-        <location filename="../model/src/finbook_file_io.cpp" line="174"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="145"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="175"/>
         <source>Cannot open &quot;%1&quot;. %2</source>
         <translation>「%1」を開けません。%2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="134"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="135"/>
         <source>Cannot open &quot;%1&quot;: it is a device, a pipe or a socket, not a file. Choose a .finbook file.</source>
         <translation>「%1」を開けません: ファイルではなく、デバイス、パイプ、またはソケットです。.finbook ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="153"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="154"/>
         <source>Cannot open &quot;%1&quot;: there is not enough memory for its %2 MB. Close other programs or documents and try again.</source>
         <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="253"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="258"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
@@ -3205,13 +3212,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="59"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="318"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="338"/>
         <source>Export Animation</source>
         <translation>アニメーションの書き出し</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="67"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="306"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="326"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
@@ -3380,47 +3387,47 @@
         <translation>書き出しをキャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="249"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
         <source>%1 x %2 pixels</source>
         <translation>%1×%2 ピクセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="252"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、隣に .mtl ファイルを置きます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="257"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="277"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、1 つのファイルにまとめます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="262"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="282"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>この形式には ffmpeg プログラムが必要ですが、見つかりませんでした。先にインストールしてください（Debian の場合: apt install ffmpeg）。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="267"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="287"/>
         <source>The video carries the soundtrack, trimmed to the frames exported.</source>
         <translation>動画には書き出すフレームに合わせて切り出したサウンドトラックが入ります。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
         <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
         <translation>ページにはサウンドトラックが入ります。閲覧者が再生を押すとフレームと一緒に再生されます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
         <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
         <translation>この形式には音声がありません。サウンドトラックは含まれません(MP4、WebM、HTML には入ります)。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="315"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="335"/>
         <source>Export to Folder</source>
         <translation>フォルダーに書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="319"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="339"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>
@@ -3762,7 +3769,7 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="193"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
         <source>Lock Layer</source>
         <translation>レイヤーをロック</translation>
     </message>
@@ -3774,7 +3781,7 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="188"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
         <source>Show Layer</source>
         <translation>レイヤーを表示</translation>
     </message>

@@ -1,3 +1,5 @@
+#include "command_text.h"
+
 #include <finbook/model/document.h>
 #include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/skeleton/skeleton_join.h>
@@ -15,6 +17,7 @@ Document::Document(QObject *parent)
 {
     Layer first;
     first.id = allocateId();
+    first.properties.name = Command::tr("Layer 1");
     m_layers.push_back(std::move(first));
 }
 
@@ -198,6 +201,7 @@ void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings
     // and the loader repair a low counter the same way).
     Layer only;
     only.id = std::max<Id>({nextId, 1, largestId(frames) + 1});
+    only.properties.name = Command::tr("Layer 1");
     only.cels = std::move(frames);
     std::vector<Layer> layers;
     layers.push_back(std::move(only));

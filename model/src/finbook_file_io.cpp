@@ -3,6 +3,7 @@
 // Saving never leaves a half-written file: the bytes go through writeFileAtomically (a
 // temporary file, written and synced with every error checked, then renamed over the
 // target), and the previous file is kept as "<path>~" just before the rename.
+#include "command_text.h"
 #include "finbook_file_cursor.h"
 
 #include <finbook/model/io/atomic_file.h>
@@ -214,6 +215,7 @@ std::vector<Layer> takeLoadedLayers(LoadedDocument &loaded)
     if (loaded.layers.empty()) {
         Layer only;
         only.id = std::max<Id>(loaded.nextId, 1);
+        only.properties.name = Command::tr("Layer 1"); // a file from before layers
         loaded.nextId = only.id + 1;
         only.cels = std::move(loaded.frames);
         layers.push_back(std::move(only));
