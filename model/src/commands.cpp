@@ -351,17 +351,39 @@ DuplicateFrameCommand::DuplicateFrameCommand(Document *doc, Id sourceFrameId, in
     }
     m_layer = doc->layerOfFrame(sourceFrameId);
     m_index = std::clamp(m_index, 0, int(doc->layer(m_layer)->cels.size()));
-    m_copyId = doc->allocateId();
-    for (const StrokeGroup &g : source->groups) {
-        m_ids.push_back(doc->allocateId());
+    allocateIds(*source);
+}
+
+DuplicateFrameCommand::DuplicateFrameCommand(Document *doc, Frame source, Id layerId, int index,
+                                             QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+    , m_sourceId(source.id)
+    , m_source(std::move(source))
+    , m_layer(layerId)
+    , m_index(index)
+{
+    setText(Command::tr("Paste Cels"));
+    const Layer *layer = doc->layer(layerId);
+    if (!layer) {
+        setObsolete(true);
+        return;
+    }
+    allocateIds(*m_source); // the index is clamped when the copy goes in
+}
+
+void DuplicateFrameCommand::allocateIds(const Frame &source)
+{
+    m_copyId = m_doc->allocateId();
+    for (const StrokeGroup &g : source.groups) {
+        m_ids.push_back(m_doc->allocateId());
         for (std::size_t i = 0; i < g.strokes.size() + g.rig.pins.size(); ++i)
-            m_ids.push_back(doc->allocateId());
+            m_ids.push_back(m_doc->allocateId());
     }
 }
 
 void DuplicateFrameCommand::redo()
 {
-    const Frame *source = m_doc->frame(m_sourceId);
+    const Frame *source = m_source ? &*m_source : m_doc->frame(m_sourceId);
     if (isObsolete() || !source) {
         setObsolete(true);
         return;
@@ -381,7 +403,8 @@ void DuplicateFrameCommand::redo()
             p.id = m_ids.at(next++);
     }
     remapJoins(copy, groupIds);
-    m_doc->insertFrame(m_layer, m_index, std::move(copy));
+    const int size = int(m_doc->layer(m_layer)->cels.size());
+    m_doc->insertFrame(m_layer, std::clamp(m_index, 0, size), std::move(copy));
 }
 
 void DuplicateFrameCommand::undo()

@@ -182,13 +182,37 @@ inline std::unique_ptr<QUndoCommand> randomCameraCommand(model::Document &doc,
     return std::make_unique<SetCameraCommand>(&doc, doc.camera(), QStringLiteral("Camera"));
 }
 
-// A layer edit: add, duplicate, remove, reorder, new properties, time inserted or deleted.
+// A layer edit: add, duplicate, remove, reorder, new properties, time inserted or deleted,
+// cels moved, copied, pasted or removed.
 inline std::unique_ptr<QUndoCommand> randomLayerCommand(model::Document &doc, QRandomGenerator &rng)
 {
     using namespace model;
     const Id layer = doc.layerAt(int(rng.bounded(doc.layerCount()))).id;
     const qint64 tick = rng.bounded(12);
-    switch (rng.bounded(7)) {
+    // A few cels of the layer (and now and then of the next one too), for dope sheet edits.
+    std::vector<Id> cels;
+    for (int l = doc.layerIndex(layer); l < doc.layerCount() && l <= doc.layerIndex(layer) + 1; ++l)
+        for (const Frame &f : doc.layerAt(l).cels)
+            if (rng.bounded(3) == 0 && (l == doc.layerIndex(layer) || rng.bounded(2) == 0))
+                cels.push_back(f.id);
+    switch (rng.bounded(10)) {
+    case 7:
+        if (auto c = rearrangeCelsCommand(&doc, cels, int(rng.bounded(3)) - 1,
+                                          qint64(rng.bounded(13)) - 6, rng.bounded(3) == 0))
+            return c;
+        break;
+    case 8: {
+        std::vector<std::vector<Frame>> rows(1 + rng.bounded(2));
+        for (Id id : cels)
+            rows[rng.bounded(int(rows.size()))].push_back(*doc.frame(id));
+        if (auto c = pasteCelsCommand(&doc, rows, layer, tick))
+            return c;
+        break;
+    }
+    case 9:
+        if (auto c = removeCelsCommand(&doc, cels))
+            return c;
+        break;
     case 0:
         return std::make_unique<AddLayerCommand>(&doc, int(rng.bounded(doc.layerCount() + 1)),
                                                  QStringLiteral("L%1").arg(rng.bounded(100)));

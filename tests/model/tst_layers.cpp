@@ -88,6 +88,12 @@ private slots:
     void exposureEditsMoveOnlyTheirLayer();
     void insertAndDeleteTimeOnChosenLayers();
     void editsOnAnotherLayerUndoExactly();
+    void celsMoveWithinALayer();
+    void celsMoveAcrossLayers();
+    void altDragCopiesCels();
+    void pastedCelsGoWhereTheyAreDropped();
+    void removedCelsPullWhatFollows();
+    void lockedLayersRefuseCelEdits();
     void parallaxFollowsTheFactor();
     void exportThroughTheCameraMovesDepthLayersLess();
     void opacityAndVisibilityReachTheExport();
@@ -294,6 +300,157 @@ void TestLayers::insertAndDeleteTimeOnChosenLayers()
     while (doc.undoStack()->canUndo())
         doc.undoStack()->undo();
     QCOMPARE(serializeFinbook(doc), before);
+}
+
+// Cel edits undo and redo to the same bytes.
+namespace {
+void pushAndCheckUndo(Document &doc, std::unique_ptr<QUndoCommand> command)
+{
+    const QByteArray before = serializeFinbook(doc);
+    QVERIFY(command);
+    doc.undoStack()->push(command.release());
+    const QByteArray after = serializeFinbook(doc);
+    QVERIFY(after != before);
+    doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(doc), before);
+    doc.undoStack()->redo();
+    QCOMPARE(serializeFinbook(doc), after);
+}
+} // namespace
+
+void TestLayers::celsMoveWithinALayer()
+{
+    Document doc;
+    scene(doc);
+    const std::vector<Id> walk = celIds(doc.layerAt(1)); // cels at ticks 0, 2, 4, 6
+    // Boundaries of 2-tick cels are at 0, 2, 4, 6, 8: the nearest to a tick.
+    QCOMPARE(celBoundaryNear(doc.layerAt(1).cels, 0), 0);
+    QCOMPARE(celBoundaryNear(doc.layerAt(1).cels, 3), 1); // a tie goes to the earlier
+    QCOMPARE(celBoundaryNear(doc.layerAt(1).cels, 5), 2);
+    QCOMPARE(celBoundaryNear(doc.layerAt(1).cels, 100), 4);
+    QCOMPARE(celBoundaryNear({}, 7), 0);
+    // The first cel dragged 6 ticks later lands at tick 6, the end once it is gone (the rest
+    // start at 0, 2, 4 and end at 6).
+    pushAndCheckUndo(doc, rearrangeCelsCommand(&doc, {walk[0]}, 0, 6, false));
+    QCOMPARE(celIds(doc.layerAt(1)), (std::vector<Id>{walk[1], walk[2], walk[3], walk[0]}));
+    // Two cels dragged to the start keep their order.
+    pushAndCheckUndo(doc, rearrangeCelsCommand(&doc, {walk[3], walk[2]}, 0, -10, false));
+    QCOMPARE(celIds(doc.layerAt(1)), (std::vector<Id>{walk[2], walk[3], walk[1], walk[0]}));
+    // A drag that lands where the cels are is no edit.
+    QVERIFY(!rearrangeCelsCommand(&doc, {walk[2]}, 0, 0, false));
+    QVERIFY(!rearrangeCelsCommand(&doc, {walk[2]}, 0, 1, false));
+    QCOMPARE(celTicks(doc.layerAt(1).cels), qint64(8)); // holds travel with their cels
+}
+
+void TestLayers::celsMoveAcrossLayers()
+{
+    Document doc;
+    scene(doc);
+    const QByteArray start = serializeFinbook(doc);
+    const std::vector<Id> walk = celIds(doc.layerAt(1)), blink = celIds(doc.layerAt(2));
+    // The walk's second cel (ticks 2..3) up one row onto the blink at tick 4: between the
+    // blink's "shut" cel (ends at 4) and its last.
+    pushAndCheckUndo(doc, rearrangeCelsCommand(&doc, {walk[1]}, +1, 2, false));
+    QCOMPARE(celIds(doc.layerAt(1)), (std::vector<Id>{walk[0], walk[2], walk[3]}));
+    QCOMPARE(celIds(doc.layerAt(2)), (std::vector<Id>{blink[0], blink[1], walk[1], blink[2]}));
+    QCOMPARE(doc.layerOfFrame(walk[1]), doc.layerAt(2).id);
+    QVERIFY(!doc.layerAt(2).cels[2].groups.empty()); // the drawing went with it
+    // Outside the layers, or onto a locked one: refused.
+    QVERIFY(!rearrangeCelsCommand(&doc, {walk[0]}, +2, 0, false));
+    QVERIFY(!rearrangeCelsCommand(&doc, {doc.layerAt(0).cels[0].id}, -1, 0, false));
+    // Every cel of the blink down one row: the blink keeps an empty tick.
+    pushAndCheckUndo(doc, rearrangeCelsCommand(&doc, celIds(doc.layerAt(2)), -1, 0, false));
+    QCOMPARE(doc.layerAt(2).cels.size(), std::size_t(1));
+    QVERIFY(doc.layerAt(2).cels[0].groups.empty());
+    QCOMPARE(doc.layerAt(2).cels[0].hold, 1);
+    QCOMPARE(doc.layerAt(1).cels.size(), std::size_t(7));
+    // Two rows at once: the background's cel and the walk's first up one row each.
+    pushAndCheckUndo(
+        doc, rearrangeCelsCommand(&doc, {doc.layerAt(0).cels[0].id, doc.layerAt(1).cels[0].id}, +1,
+                                  0, false));
+    while (doc.undoStack()->canUndo())
+        doc.undoStack()->undo();
+    QCOMPARE(serializeFinbook(doc), start);
+}
+
+void TestLayers::altDragCopiesCels()
+{
+    Document doc;
+    scene(doc);
+    const std::vector<Id> walk = celIds(doc.layerAt(1));
+    const Frame original = doc.layerAt(1).cels[0];
+    pushAndCheckUndo(doc, rearrangeCelsCommand(&doc, {walk[0]}, +1, 6, true));
+    QCOMPARE(celIds(doc.layerAt(1)), walk); // the original stays
+    const Layer &blink = doc.layerAt(2);
+    QCOMPARE(blink.cels.size(), std::size_t(4));
+    const Frame &copy = blink.cels[3]; // tick 6 is the blink's end
+    QVERIFY(copy.id != original.id);
+    QCOMPARE(copy.hold, original.hold);
+    QCOMPARE(copy.groups.size(), original.groups.size());
+    QVERIFY(copy.groups[0].id != original.groups[0].id);
+    QVERIFY(copy.groups[0].strokes[0].id != original.groups[0].strokes[0].id);
+    QCOMPARE(copy.groups[0].strokes[0].data->points, original.groups[0].strokes[0].data->points);
+    // Copies of two cels land in order.
+    pushAndCheckUndo(doc, rearrangeCelsCommand(&doc, {walk[0], walk[1]}, 0, 8, true));
+    QCOMPARE(doc.layerAt(1).cels.size(), std::size_t(6));
+    QCOMPARE(doc.layerAt(1).cels[4].groups[0].strokes[0].data->points,
+             doc.layerAt(1).cels[0].groups[0].strokes[0].data->points);
+    QCOMPARE(doc.layerAt(1).cels[5].groups[0].strokes[0].data->points,
+             doc.layerAt(1).cels[1].groups[0].strokes[0].data->points);
+}
+
+void TestLayers::pastedCelsGoWhereTheyAreDropped()
+{
+    Document doc;
+    scene(doc);
+    // Two rows copied (walk cel 0, blink cel 1), pasted into the background at tick 8: the
+    // walk's cel after the background's, the blink's onto the walk after its last.
+    std::vector<std::vector<Frame>> rows{{doc.layerAt(1).cels[0]}, {doc.layerAt(2).cels[1]}};
+    pushAndCheckUndo(doc, pasteCelsCommand(&doc, rows, doc.layerAt(0).id, 8));
+    QCOMPARE(doc.layerAt(0).cels.size(), std::size_t(2));
+    QCOMPARE(doc.layerAt(1).cels.size(), std::size_t(5));
+    QCOMPARE(doc.layerAt(1).cels[4].hold, 1);
+    QCOMPARE(doc.layerAt(2).cels.size(), std::size_t(3)); // no third row
+    // Pasted twice, the copies have ids of their own.
+    pushAndCheckUndo(doc, pasteCelsCommand(&doc, rows, doc.layerAt(0).id, 0));
+    std::vector<Id> all;
+    for (const Layer &l : doc.layers())
+        for (const Frame &f : l.cels)
+            all.push_back(f.id);
+    std::sort(all.begin(), all.end());
+    QVERIFY(std::adjacent_find(all.begin(), all.end()) == all.end());
+    QCOMPARE(doc.layerAt(0).cels.size(), std::size_t(3));
+    // Rows above the front layer go nowhere.
+    QVERIFY(!pasteCelsCommand(&doc, {{}, {doc.layerAt(2).cels[1]}}, doc.layerAt(2).id, 0));
+}
+
+void TestLayers::removedCelsPullWhatFollows()
+{
+    Document doc;
+    scene(doc);
+    const std::vector<Id> walk = celIds(doc.layerAt(1));
+    pushAndCheckUndo(doc, removeCelsCommand(&doc, {walk[1], doc.layerAt(0).cels[0].id}));
+    QCOMPARE(celIds(doc.layerAt(1)), (std::vector<Id>{walk[0], walk[2], walk[3]}));
+    QCOMPARE(celStart(doc.layerAt(1).cels, 1), qint64(2));
+    // The background's only cel went: it keeps an empty tick.
+    QCOMPARE(doc.layerAt(0).cels.size(), std::size_t(1));
+    QVERIFY(doc.layerAt(0).cels[0].groups.empty());
+    QVERIFY(!removeCelsCommand(&doc, {}));
+}
+
+void TestLayers::lockedLayersRefuseCelEdits()
+{
+    Document doc;
+    scene(doc);
+    LayerProperties p = doc.layerAt(1).properties;
+    p.locked = true;
+    doc.undoStack()->push(new SetLayerPropertiesCommand(&doc, doc.layerAt(1).id, p, {}));
+    const std::vector<Id> walk = celIds(doc.layerAt(1));
+    QVERIFY(!rearrangeCelsCommand(&doc, {walk[0]}, 0, 5, false));
+    QVERIFY(!rearrangeCelsCommand(&doc, {doc.layerAt(2).cels[0].id}, -1, 0, false));
+    QVERIFY(!removeCelsCommand(&doc, walk));
+    QVERIFY(!pasteCelsCommand(&doc, {{doc.layerAt(0).cels[0]}}, doc.layerAt(1).id, 0));
+    QCOMPARE(celIds(doc.layerAt(1)), walk);
 }
 
 void TestLayers::editsOnAnotherLayerUndoExactly()

@@ -198,12 +198,18 @@ class DuplicateFrameCommand : public DocumentCommand {
 public:
     DuplicateFrameCommand(Document *doc, Id sourceFrameId, int index,
                           QUndoCommand *parent = nullptr);
+    // A copy of `source` (a cel copied earlier, which need not be in the document any more)
+    // into layer `layerId` at `index`: pasted or Alt-dragged cels.
+    DuplicateFrameCommand(Document *doc, Frame source, Id layerId, int index,
+                          QUndoCommand *parent = nullptr);
     Id frameId() const { return m_copyId; }
     void redo() override;
     void undo() override;
 
 private:
+    void allocateIds(const Frame &source);
     Id m_sourceId;
+    std::optional<Frame> m_source; // the copied cel, when it was given
     Id m_layer = kNoId;
     int m_index;
     Id m_copyId = kNoId;

@@ -6,6 +6,7 @@
 #include <finbook/model/commands.h>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace finbook::model {
@@ -82,14 +83,71 @@ private:
     int m_mergeKey;
 };
 
+// --- cels, as the dope sheet edits them ------------------------------------------------
+
+// Moves a cel with everything on it to `toIndex` of layer `toLayerId` (its own layer or
+// another): what follows it there starts later, what followed it where it was starts earlier.
+// The index is where the cel is after the move. Obsolete for an unknown cel or layer.
+class MoveCelCommand : public DocumentCommand {
+public:
+    MoveCelCommand(Document *doc, Id celId, Id toLayerId, int toIndex,
+                   QUndoCommand *parent = nullptr);
+    void redo() override;
+    void undo() override;
+
+private:
+    Id m_cel;
+    Id m_fromLayer = kNoId, m_toLayer;
+    int m_fromIndex = -1, m_toIndex;
+};
+
+// An empty stretch of `hold` ticks at `index` of a layer (a layer whose cels all went keeps
+// one, so that it still has a cel).
+class InsertEmptyCelCommand : public DocumentCommand {
+public:
+    InsertEmptyCelCommand(Document *doc, Id layerId, int index, int hold,
+                          QUndoCommand *parent = nullptr);
+    void redo() override;
+    void undo() override;
+
+private:
+    Id m_layer;
+    int m_index;
+    Frame m_cel;
+};
+
+// Where cels dropped or pasted at `tick` go in a layer: the index of the boundary between cels
+// nearest to it (0 = before the first, size = after the last).
+int celBoundaryNear(const std::vector<Frame> &cels, qint64 tick);
+
+// A dope sheet's drag of the cels `celIds` (on any layers) by `layerDelta` rows (to the layer
+// that many above: +1 is the next one in front) and `tickDelta` ticks. The cels of each layer
+// keep their order and go, together, to the boundary nearest the tick where the first of them
+// lands, in the layer they land on; with `copy` they stay and copies (fresh ids) go there.
+// Cels on locked layers are left alone. Null when nothing would change or a row would land
+// outside the layers or on a locked one.
+std::unique_ptr<QUndoCommand> rearrangeCelsCommand(Document *doc, const std::vector<Id> &celIds,
+                                                   int layerDelta, qint64 tickDelta, bool copy);
+
+// Copies of `rows` of cels (copied earlier): the first row into layer `layerId`, each next row
+// into the layer above, at the boundary nearest `tick`. Rows above the front layer, or landing
+// on a locked layer, are left out. Null when nothing is pasted.
+std::unique_ptr<QUndoCommand> pasteCelsCommand(Document *doc,
+                                               const std::vector<std::vector<Frame>> &rows,
+                                               Id layerId, qint64 tick);
+
+// Removes cels; what follows each starts earlier. A layer left without a cel keeps an empty
+// stretch of one tick. Cels on locked layers stay. Null when nothing is removed.
+std::unique_ptr<QUndoCommand> removeCelsCommand(Document *doc, const std::vector<Id> &celIds);
+
 // `ticks` more ticks on each of `layerIds` at `tick`: the cel on screen there is held longer,
-// so everything after it on those layers starts later (other layers do not move). Null when
-// no listed layer has a cel at `tick`.
+// so everything after it on those layers starts later (other layers do not move). Locked
+// layers are left alone. Null when no listed layer has a cel at `tick`.
 std::unique_ptr<QUndoCommand> insertTimeCommand(Document *doc, const std::vector<Id> &layerIds,
                                                 qint64 tick, int ticks);
 // `ticks` fewer ticks on each of `layerIds` from `tick` on: the cels there are held shorter
 // (each keeps at least one tick) and a cel wholly inside the stretch is deleted, so
-// everything after moves earlier. Null when nothing would change.
+// everything after moves earlier. Locked layers are left alone. Null when nothing would change.
 std::unique_ptr<QUndoCommand> deleteTimeCommand(Document *doc, const std::vector<Id> &layerIds,
                                                 qint64 tick, int ticks);
 
