@@ -1,6 +1,7 @@
 // libFuzzer target, structure-aware: the input does not hold a file, it describes one. Its
 // first bytes choose a deep or wide structure (deep_structures.h: join chains and trees, long
-// bone chains, many parts on one skeleton, long holds, repeated strokes) and its size (up to
+// bone chains, many parts on one skeleton, long holds, repeated strokes, many layers of cels
+// with properties at and past their limits) and its size (up to
 // 131,072 objects, joints, frames or references: megabytes, far beyond libFuzzer's 64 KiB
 // inputs); the rest are byte edits applied to the generated file. Each result goes through
 // every reader and check of finbook-fuzz (fuzz_checks.h).
@@ -52,8 +53,10 @@ deep_build::Params paramsOf(const uint8_t *data)
     p.reversed = data[6] & 2;
     p.star = data[6] & 4;
     p.seed = qFromLittleEndian<quint32>(data + 7);
-    if (p.shape == deep_build::Shape::Holds)
-        p.n = std::min(p.n, 4096); // each frame is an object with a stroke: keep a run short
+    // Each frame (or cel) is an object with a stroke: keep a run short. 4,096 layers is
+    // still four times what a file may hold.
+    if (p.shape == deep_build::Shape::Holds || p.shape == deep_build::Shape::Layers)
+        p.n = std::min(p.n, 4096);
     return p;
 }
 constexpr std::size_t kMediaBytes = 16;

@@ -27,6 +27,9 @@ enum class Shape : std::uint8_t {
     JoinTree,   // n objects joined in a binary tree (object i hangs from object (i − 1) / 2)
     Holds,      // n frames each held for the longest hold
     Repeats,    // one stroke referenced n times by one object
+    Layers,     // n layers (past the 1,000 a file may hold when n says so), each of 1 to 8 cels
+                // with random holds (up to the longest when posed), and random properties
+                // (with `star`, depths and opacities past their limits)
     Count
 };
 
@@ -169,8 +172,45 @@ inline std::vector<Frame> frames(const Params &p, Id &nextId)
         out[0].groups.push_back(std::move(g));
         break;
     }
+    case Shape::Layers: // layers() builds them; the frames are one layer's worth
     case Shape::Count:
         break;
+    }
+    return out;
+}
+
+// Shape::Layers: the layers of the document; ids from nextId.
+inline std::vector<Layer> layers(const Params &p, Id &nextId)
+{
+    detail::Random random(p.seed);
+    auto data = std::make_shared<StrokeData>();
+    data->points = {{1, 1, 1}, {300, 150, 1}};
+    std::vector<Layer> out(std::size_t(std::max(1, p.n)));
+    for (Layer &layer : out) {
+        layer.id = nextId++;
+        layer.properties.name = QString(int(random.unit() * 40), QChar(u'L'));
+        layer.properties.visible = random.unit() < 0.8;
+        layer.properties.locked = random.unit() < 0.2;
+        layer.properties.onionSkin = random.unit() < 0.5;
+        // With `star`, a tenth of them outside the allowed ranges: a reader refuses them, or
+        // mends them when it opens the file anyway.
+        const bool wild = p.star && random.unit() < 0.1;
+        layer.properties.opacity = wild ? random.unit() * 4 - 2 : random.unit();
+        layer.properties.depth =
+            wild ? random.unit() * 400 - 200
+                 : kMinLayerDepth + random.unit() * (kMaxLayerDepth - kMinLayerDepth);
+        const int cels = 1 + int(random.unit() * 8);
+        for (int c = 0; c < cels; ++c) {
+            Frame cel;
+            cel.id = nextId++;
+            cel.hold = 1 + int(random.unit() * (p.posed ? kMaxHold - 1 : 24));
+            if (random.unit() < 0.7) { // else an empty stretch
+                StrokeGroup g = detail::part(nextId++);
+                g.strokes.push_back({nextId++, data});
+                cel.groups.push_back(std::move(g));
+            }
+            layer.cels.push_back(std::move(cel));
+        }
     }
     return out;
 }
@@ -179,9 +219,11 @@ inline std::vector<Frame> frames(const Params &p, Id &nextId)
 inline QByteArray file(const Params &p)
 {
     Id next = 1;
-    const std::vector<Frame> f = frames(p, next);
     DocumentSettings settings;
     settings.canvasSize = QSize(640, 360);
+    if (p.shape == Shape::Layers)
+        return serializeFinbook(layers(p, next), settings);
+    const std::vector<Frame> f = frames(p, next);
     return serializeFinbook(f, settings);
 }
 

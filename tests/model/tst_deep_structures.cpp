@@ -130,6 +130,7 @@ private slots:
     void manyPartsOnAHugeSkeletonCostNearlyLinear();
     void joinsTooCostlyToResolveAreRefused();
     void everyShapeGoesThroughTheFuzzChecks();
+    void layersOpenUpToTheLimit();
 };
 
 void TestDeepStructures::longJoinChainsOpen_data()
@@ -308,7 +309,8 @@ void TestDeepStructures::joinsTooCostlyToResolveAreRefused()
 void TestDeepStructures::everyShapeGoesThroughTheFuzzChecks()
 {
     for (int shape = 0; shape < int(Shape::Count); ++shape) {
-        deep_build::Params p{Shape(shape), 5000, 500, std::uint32_t(31 + shape), true, false};
+        const int n = Shape(shape) == Shape::Layers ? kMaxLayers : 5000;
+        deep_build::Params p{Shape(shape), n, 500, std::uint32_t(31 + shape), true, false};
         QByteArray bytes = deep_build::file(p);
         QVERIFY(readFinbook(bytes));
         fuzz_checks::readEveryWay(bytes);
@@ -318,6 +320,36 @@ void TestDeepStructures::everyShapeGoesThroughTheFuzzChecks()
         fuzz_checks::readEveryWay(bytes);
         fuzz_checks::readEveryWay(fuzz_checks::withChecksums(bytes));
     }
+}
+
+// A file may hold 1,000 layers; one more is refused, or put on one layer when opened anyway.
+// Properties past their limits are refused, or mended.
+void TestDeepStructures::layersOpenUpToTheLimit()
+{
+    deep_build::Params p{Shape::Layers, kMaxLayers, 0, 5, false, false};
+    const auto loaded = readFinbook(deep_build::file(p));
+    QVERIFY(loaded);
+    QCOMPARE(int(loaded->layers.size()), kMaxLayers);
+    p.n = kMaxLayers + 1;
+    const QByteArray tooMany = deep_build::file(p);
+    QVERIFY(!readFinbook(tooMany));
+    QStringList problems;
+    auto mended = recoverFinbook(tooMany, &problems);
+    QVERIFY(mended);
+    QVERIFY(mended->layers.empty()); // one layer: every frame on it
+    QVERIFY(!problems.isEmpty());
+    p = {Shape::Layers, 300, 0, 6, false, false, true}; // wild properties
+    const QByteArray wild = deep_build::file(p);
+    QVERIFY(!readFinbook(wild));
+    problems.clear();
+    mended = recoverFinbook(wild, &problems);
+    QVERIFY(mended);
+    QCOMPARE(int(mended->layers.size()), 300);
+    for (const LoadedLayer &l : mended->layers) {
+        QVERIFY(l.properties.opacity >= 0.0 && l.properties.opacity <= 1.0);
+        QVERIFY(l.properties.depth >= kMinLayerDepth && l.properties.depth <= kMaxLayerDepth);
+    }
+    QVERIFY(!problems.isEmpty());
 }
 
 QTEST_GUILESS_MAIN(TestDeepStructures)
