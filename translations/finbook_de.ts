@@ -2,6 +2,24 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>CelEditing</name>
+    <message>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="111"/>
+        <source>Cut Cels</source>
+        <translation>Zellen ausschneiden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="139"/>
+        <source>No cels have been copied.</source>
+        <translation>Es wurden keine Zellen kopiert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="147"/>
+        <source>The cels cannot go onto a locked layer.</source>
+        <translation>Die Zellen können nicht auf eine gesperrte Ebene.</translation>
+    </message>
+</context>
+<context>
     <name>Command</name>
     <message>
         <location filename="../model/src/commands.cpp" line="24"/>
@@ -75,22 +93,28 @@
         <translation>Einzelbild duplizieren</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="397"/>
+        <location filename="../model/src/commands.cpp" line="365"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="413"/>
+        <source>Paste Cels</source>
+        <translation>Zellen einfügen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="420"/>
         <source>Delete Frame</source>
         <translation>Einzelbild löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="424"/>
+        <location filename="../model/src/commands.cpp" line="447"/>
         <source>Move Frame</source>
         <translation>Einzelbild verschieben</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="448"/>
+        <location filename="../model/src/commands.cpp" line="471"/>
         <source>Change Frame Exposure</source>
         <translation>Haltedauer des Einzelbilds ändern</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="492"/>
+        <location filename="../model/src/commands.cpp" line="515"/>
         <source>Change Document Settings</source>
         <translation>Dokumenteinstellungen ändern</translation>
     </message>
@@ -354,6 +378,27 @@
         <location filename="../model/src/scene/layer_commands.cpp" line="185"/>
         <source>Delete Time</source>
         <translation>Zeit löschen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="222"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="345"/>
+        <source>Move Cels</source>
+        <translation>Zellen verschieben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="252"/>
+        <source>Insert Empty Cel</source>
+        <translation>Leere Zelle einfügen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="344"/>
+        <source>Copy Cels</source>
+        <translation>Zellen kopieren</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="430"/>
+        <source>Delete Cels</source>
+        <translation>Zellen löschen</translation>
     </message>
     <message>
         <location filename="../model/src/document.cpp" line="20"/>
@@ -3720,96 +3765,96 @@
 <context>
     <name>finbook::ui::LayerActions</name>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="14"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="15"/>
         <source>Layer %1</source>
         <translation>Ebene %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="31"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="32"/>
         <source>&amp;New Layer</source>
         <translation>&amp;Neue Ebene</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="38"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="39"/>
         <source>&amp;Duplicate Layer</source>
         <translation>Ebene &amp;duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="45"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="46"/>
         <source>De&amp;lete Layer</source>
         <translation>Ebene &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="56"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="57"/>
         <source>Move Layer &amp;Up</source>
         <translation>Ebene nach &amp;oben</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="58"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="59"/>
         <source>Move Layer D&amp;own</source>
         <translation>Ebene nach &amp;unten</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="65"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="66"/>
         <source>Layer &amp;Above</source>
         <translation>Ebene da&amp;rüber</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="67"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="68"/>
         <source>Layer &amp;Below</source>
         <translation>Ebene darun&amp;ter</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="70"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="71"/>
         <source>&amp;Show Layer</source>
         <translation>Ebene &amp;anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="73"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="74"/>
         <source>Loc&amp;k Layer</source>
         <translation>Ebene &amp;sperren</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="76"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="77"/>
         <source>Layer &amp;Properties...</source>
         <translation>Ebenen&amp;eigenschaften...</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="79"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="81"/>
         <source>&amp;Insert Time</source>
         <translation>Zeit e&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="85"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="83"/>
         <source>Delete &amp;Time</source>
         <translation>&amp;Zeit löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
         <source>Lock Layer</source>
         <translation>Ebene sperren</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
         <source>Unlock Layer</source>
         <translation>Ebene entsperren</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
         <source>Show Layer</source>
         <translation>Ebene einblenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
         <source>Hide Layer</source>
         <translation>Ebene ausblenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="140"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="134"/>
         <source>Change Layer Properties</source>
         <translation>Ebeneneigenschaften ändern</translation>
     </message>
@@ -3961,7 +4006,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
@@ -4006,237 +4051,237 @@
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="55"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="56"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="84"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="85"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
         <source>Import Re&amp;ference...</source>
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="131"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="166"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="234"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Camera View</source>
         <translation>Kamera&amp;ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Andere Ebenen ab&amp;dunkeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="292"/>
         <source>&amp;Layer</source>
         <translation>Ebe&amp;ne</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="297"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="344"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="341"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="368"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -4256,13 +4301,13 @@
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
@@ -4853,22 +4898,22 @@
         <translation>Auswahl</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="264"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="314"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>So weit lassen sich die Striche nicht umformen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="273"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="323"/>
         <source>Move Strokes</source>
         <translation>Striche verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="274"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="324"/>
         <source>Rotate Strokes</source>
         <translation>Striche drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="275"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="325"/>
         <source>Scale Strokes</source>
         <translation>Striche skalieren</translation>
     </message>

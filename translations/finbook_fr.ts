@@ -2,6 +2,24 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr_FR">
 <context>
+    <name>CelEditing</name>
+    <message>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="111"/>
+        <source>Cut Cels</source>
+        <translation>Couper les cellulos</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="139"/>
+        <source>No cels have been copied.</source>
+        <translation>Aucun cellulo n’a été copié.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="147"/>
+        <source>The cels cannot go onto a locked layer.</source>
+        <translation>Les cellulos ne peuvent pas aller sur un calque verrouillé.</translation>
+    </message>
+</context>
+<context>
     <name>Command</name>
     <message>
         <location filename="../model/src/commands.cpp" line="24"/>
@@ -75,22 +93,28 @@
         <translation>Dupliquer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="397"/>
+        <location filename="../model/src/commands.cpp" line="365"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="413"/>
+        <source>Paste Cels</source>
+        <translation>Coller les cellulos</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="420"/>
         <source>Delete Frame</source>
         <translation>Supprimer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="424"/>
+        <location filename="../model/src/commands.cpp" line="447"/>
         <source>Move Frame</source>
         <translation>Déplacer l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="448"/>
+        <location filename="../model/src/commands.cpp" line="471"/>
         <source>Change Frame Exposure</source>
         <translation>Modifier l&apos;exposition de l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="492"/>
+        <location filename="../model/src/commands.cpp" line="515"/>
         <source>Change Document Settings</source>
         <translation>Modifier les paramètres du document</translation>
     </message>
@@ -354,6 +378,27 @@
         <location filename="../model/src/scene/layer_commands.cpp" line="185"/>
         <source>Delete Time</source>
         <translation>Supprimer du temps</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="222"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="345"/>
+        <source>Move Cels</source>
+        <translation>Déplacer les cellulos</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="252"/>
+        <source>Insert Empty Cel</source>
+        <translation>Insérer un cellulo vide</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="344"/>
+        <source>Copy Cels</source>
+        <translation>Copier les cellulos</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="430"/>
+        <source>Delete Cels</source>
+        <translation>Supprimer les cellulos</translation>
     </message>
     <message>
         <location filename="../model/src/document.cpp" line="20"/>
@@ -3720,96 +3765,96 @@
 <context>
     <name>finbook::ui::LayerActions</name>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="14"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="15"/>
         <source>Layer %1</source>
         <translation>Calque %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="31"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="32"/>
         <source>&amp;New Layer</source>
         <translation>&amp;Nouveau calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="38"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="39"/>
         <source>&amp;Duplicate Layer</source>
         <translation>&amp;Dupliquer le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="45"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="46"/>
         <source>De&amp;lete Layer</source>
         <translation>&amp;Supprimer le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="56"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="57"/>
         <source>Move Layer &amp;Up</source>
         <translation>&amp;Monter le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="58"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="59"/>
         <source>Move Layer D&amp;own</source>
         <translation>D&amp;escendre le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="65"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="66"/>
         <source>Layer &amp;Above</source>
         <translation>Calque a&amp;u-dessus</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="67"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="68"/>
         <source>Layer &amp;Below</source>
         <translation>Calque en-dess&amp;ous</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="70"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="71"/>
         <source>&amp;Show Layer</source>
         <translation>&amp;Afficher le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="73"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="74"/>
         <source>Loc&amp;k Layer</source>
         <translation>&amp;Verrouiller le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="76"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="77"/>
         <source>Layer &amp;Properties...</source>
         <translation>&amp;Propriétés du calque...</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="79"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="81"/>
         <source>&amp;Insert Time</source>
         <translation>&amp;Insérer du temps</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="85"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="83"/>
         <source>Delete &amp;Time</source>
         <translation>Supprimer du &amp;temps</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
         <source>Lock Layer</source>
         <translation>Verrouiller le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
         <source>Unlock Layer</source>
         <translation>Déverrouiller le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
         <source>Show Layer</source>
         <translation>Afficher le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
         <source>Hide Layer</source>
         <translation>Masquer le calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="140"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="134"/>
         <source>Change Layer Properties</source>
         <translation>Modifier les propriétés du calque</translation>
     </message>
@@ -3976,7 +4021,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
@@ -4021,248 +4066,248 @@
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="55"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="56"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="84"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="85"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
         <source>Import Re&amp;ference...</source>
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="131"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="166"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="234"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Camera View</source>
         <translation>Vue &amp;caméra</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Atténuer les a&amp;utres calques</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="292"/>
         <source>&amp;Layer</source>
         <translation>&amp;Calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="297"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="344"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="341"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="368"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Rétablir</translation>
@@ -4853,22 +4898,22 @@
         <translation>Sélection</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="264"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="314"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>Les traits ne peuvent pas être transformés à ce point.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="273"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="323"/>
         <source>Move Strokes</source>
         <translation>Déplacer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="274"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="324"/>
         <source>Rotate Strokes</source>
         <translation>Faire pivoter les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="275"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="325"/>
         <source>Scale Strokes</source>
         <translation>Redimensionner les traits</translation>
     </message>

@@ -2,6 +2,24 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
 <context>
+    <name>CelEditing</name>
+    <message>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="111"/>
+        <source>Cut Cels</source>
+        <translation>セルを切り取り</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="139"/>
+        <source>No cels have been copied.</source>
+        <translation>コピーされたセルはありません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="147"/>
+        <source>The cels cannot go onto a locked layer.</source>
+        <translation>ロックされたレイヤーにはセルを置けません。</translation>
+    </message>
+</context>
+<context>
     <name>Command</name>
     <message>
         <location filename="../model/src/commands.cpp" line="24"/>
@@ -75,22 +93,28 @@
         <translation>フレームを複製</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="397"/>
+        <location filename="../model/src/commands.cpp" line="365"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="413"/>
+        <source>Paste Cels</source>
+        <translation>セルを貼り付け</translation>
+    </message>
+    <message>
+        <location filename="../model/src/commands.cpp" line="420"/>
         <source>Delete Frame</source>
         <translation>フレームを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="424"/>
+        <location filename="../model/src/commands.cpp" line="447"/>
         <source>Move Frame</source>
         <translation>フレームを移動</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="448"/>
+        <location filename="../model/src/commands.cpp" line="471"/>
         <source>Change Frame Exposure</source>
         <translation>フレームの表示時間を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/commands.cpp" line="492"/>
+        <location filename="../model/src/commands.cpp" line="515"/>
         <source>Change Document Settings</source>
         <translation>ドキュメント設定を変更</translation>
     </message>
@@ -354,6 +378,27 @@
         <location filename="../model/src/scene/layer_commands.cpp" line="185"/>
         <source>Delete Time</source>
         <translation>時間を削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="222"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="345"/>
+        <source>Move Cels</source>
+        <translation>セルを移動</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="252"/>
+        <source>Insert Empty Cel</source>
+        <translation>空のセルを挿入</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="344"/>
+        <source>Copy Cels</source>
+        <translation>セルをコピー</translation>
+    </message>
+    <message>
+        <location filename="../model/src/scene/layer_commands.cpp" line="430"/>
+        <source>Delete Cels</source>
+        <translation>セルを削除</translation>
     </message>
     <message>
         <location filename="../model/src/document.cpp" line="20"/>
@@ -3703,96 +3748,96 @@
 <context>
     <name>finbook::ui::LayerActions</name>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="14"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="15"/>
         <source>Layer %1</source>
         <translation>レイヤー %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="31"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="32"/>
         <source>&amp;New Layer</source>
         <translation>新しいレイヤー(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="38"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="39"/>
         <source>&amp;Duplicate Layer</source>
         <translation>レイヤーを複製(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="45"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="46"/>
         <source>De&amp;lete Layer</source>
         <translation>レイヤーを削除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="56"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="57"/>
         <source>Move Layer &amp;Up</source>
         <translation>レイヤーを上へ(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="58"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="59"/>
         <source>Move Layer D&amp;own</source>
         <translation>レイヤーを下へ(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="65"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="66"/>
         <source>Layer &amp;Above</source>
         <translation>上のレイヤー(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="67"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="68"/>
         <source>Layer &amp;Below</source>
         <translation>下のレイヤー(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="70"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="71"/>
         <source>&amp;Show Layer</source>
         <translation>レイヤーを表示(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="73"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="74"/>
         <source>Loc&amp;k Layer</source>
         <translation>レイヤーをロック(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="76"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="77"/>
         <source>Layer &amp;Properties...</source>
         <translation>レイヤーのプロパティ(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="79"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="81"/>
         <source>&amp;Insert Time</source>
         <translation>時間を挿入(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="85"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="83"/>
         <source>Delete &amp;Time</source>
         <translation>時間を削除(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
         <source>Lock Layer</source>
         <translation>レイヤーをロック</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="127"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="194"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
         <source>Unlock Layer</source>
         <translation>レイヤーのロックを解除</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
         <source>Show Layer</source>
         <translation>レイヤーを表示</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="128"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="189"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
         <source>Hide Layer</source>
         <translation>レイヤーを非表示</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/layer_actions.cpp" line="140"/>
+        <location filename="../ui/src/layers/layer_actions.cpp" line="134"/>
         <source>Change Layer Properties</source>
         <translation>レイヤーのプロパティを変更</translation>
     </message>
@@ -3958,7 +4003,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
@@ -4003,248 +4048,248 @@
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="55"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="56"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="67"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="78"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="80"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="84"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="85"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="100"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="105"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
         <source>Import Re&amp;ference...</source>
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="113"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="130"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="131"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="132"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="136"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="166"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="163"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="169"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="176"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="203"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="234"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="214"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>&amp;Camera View</source>
         <translation>カメラビュー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="239"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>&amp;Dim Other Layers</source>
         <translation>他のレイヤーを薄く表示(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="246"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="292"/>
         <source>&amp;Layer</source>
         <translation>レイヤー(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="286"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="294"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="295"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="297"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="344"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="341"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="368"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="342"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="134"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="138"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>やり直す</translation>
@@ -4833,22 +4878,22 @@
         <translation>選択</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="264"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="314"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>ストロークをそこまで変形することはできません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="273"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="323"/>
         <source>Move Strokes</source>
         <translation>ストロークを移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="274"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="324"/>
         <source>Rotate Strokes</source>
         <translation>ストロークを回転</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="275"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="325"/>
         <source>Scale Strokes</source>
         <translation>ストロークを拡大・縮小</translation>
     </message>

@@ -5,6 +5,7 @@
 #include "tst_tools_support.h"
 #include "tst_window_support.h"
 
+#include <finbook/model/finbook_file.h>
 #include <finbook/model/scene/layer_commands.h>
 #include <finbook/model/scene/shot.h>
 #include <finbook/ui/canvas/canvas_widget.h>
@@ -117,6 +118,134 @@ private slots:
         dragCanvas(canvas, QPointF(100, 100), QPointF(200, 150));
         QCOMPARE(doc->undoStack()->count(), steps + 3); // hide, unlock, then the stroke
         QCOMPARE(doc->layerAt(1).cels[0].groups[0].strokes.size(), std::size_t(1));
+    }
+
+    void draggedCelsMoveAndAltDragCopies()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        twoLayers(window);
+        model::Document *doc = window.document();
+        auto *sheet = window.findChild<ui::LayerSheet *>(QStringLiteral("layerSheet"));
+        const std::vector<model::Id> front{doc->layerAt(1).cels[0].id, doc->layerAt(1).cels[1].id,
+                                           doc->layerAt(1).cels[2].id};
+        const QByteArray before = model::serializeFinbook(*doc);
+        const int steps = doc->undoStack()->count();
+        // The front layer's first cel dragged three ticks on: after the other two.
+        drag(sheet, {cellPoint(sheet, 1, 0), cellPoint(sheet, 1, 1), cellPoint(sheet, 1, 3)});
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        QCOMPARE(doc->layerAt(1).cels[2].id, front[0]);
+        QCOMPARE(doc->layerAt(1).cels[0].id, front[1]);
+        QCOMPARE(window.editorState()->selectedCels(), std::vector<model::Id>{front[0]});
+        // Alt-dragged down a row onto the background's end: a copy there, the cel stays.
+        drag(sheet, {cellPoint(sheet, 1, 2), cellPoint(sheet, 1, 3), cellPoint(sheet, 0, 6)},
+             Qt::LeftButton, Qt::AltModifier);
+        QCOMPARE(doc->undoStack()->count(), steps + 2);
+        QCOMPARE(doc->layerAt(0).cels.size(), std::size_t(2));
+        QCOMPARE(doc->layerAt(1).cels.size(), std::size_t(3));
+        QVERIFY(doc->layerAt(0).cels[1].id != front[0]);
+        QCOMPARE(doc->layerAt(0).cels[1].groups.size(), doc->frame(front[0])->groups.size());
+        doc->undoStack()->undo();
+        doc->undoStack()->undo();
+        QCOMPARE(model::serializeFinbook(*doc), before);
+        // A locked layer's cels stay where they are.
+        window.action(QStringLiteral("layer.locked"))->trigger();
+        const int locked = doc->undoStack()->count();
+        drag(sheet, {cellPoint(sheet, 1, 0), cellPoint(sheet, 1, 1), cellPoint(sheet, 1, 3)});
+        QCOMPARE(doc->undoStack()->count(), locked);
+    }
+
+    void pickedCelsAreCutCopiedPastedAndDeleted()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        twoLayers(window);
+        model::Document *doc = window.document();
+        ui::EditorState *state = window.editorState();
+        auto *sheet = window.findChild<ui::LayerSheet *>(QStringLiteral("layerSheet"));
+        const QByteArray before = model::serializeFinbook(*doc);
+        // Ctrl-click picks the first and the third cel of the front layer.
+        QTest::mouseClick(sheet, Qt::LeftButton, {}, cellPoint(sheet, 1, 0));
+        QTest::mouseClick(sheet, Qt::LeftButton, Qt::ControlModifier, cellPoint(sheet, 1, 2));
+        QCOMPARE(state->selectedCels().size(), std::size_t(2));
+        QVERIFY(window.action(QStringLiteral("edit.copy"))->isEnabled());
+        // Copy, then paste at the end of the layer: five cels, the copies after the three.
+        typeKey(Qt::Key_C, Qt::ControlModifier);
+        QTest::mouseClick(sheet, Qt::LeftButton, {}, QPoint(sheet->xOfTick(3) + 2, 5)); // ruler
+        QCOMPARE(state->currentTick(), qint64(3));
+        typeKey(Qt::Key_V, Qt::ControlModifier);
+        QCOMPARE(doc->layerAt(1).cels.size(), std::size_t(5));
+        QCOMPARE(doc->layerAt(1).cels[3].groups[0].strokes.size(),
+                 doc->layerAt(1).cels[0].groups[0].strokes.size());
+        // The picked cels deleted with the Delete key (the keyboard is the canvas's).
+        typeKey(Qt::Key_Delete);
+        QCOMPARE(doc->layerAt(1).cels.size(), std::size_t(3));
+        QVERIFY(state->selectedCels().empty());
+        // Shift-click picks a block across rows: from the background's cel to the front's
+        // third, every cel in between (4).
+        QTest::mouseClick(sheet, Qt::LeftButton, {}, cellPoint(sheet, 0, 0));
+        QTest::mouseClick(sheet, Qt::LeftButton, Qt::ShiftModifier, cellPoint(sheet, 1, 1));
+        QCOMPARE(state->selectedCels().size(), std::size_t(4));
+        // Cut: the background keeps an empty tick, the front layer too.
+        typeKey(Qt::Key_X, Qt::ControlModifier);
+        QCOMPARE(doc->layerAt(0).cels.size(), std::size_t(1));
+        QVERIFY(doc->layerAt(0).cels[0].groups.empty());
+        QCOMPARE(doc->layerAt(1).cels.size(), std::size_t(1));
+        // Picking strokes afterwards drops the picked cels: Delete is the strokes' again.
+        QTest::mouseClick(sheet, Qt::LeftButton, {}, cellPoint(sheet, 1, 0));
+        QCOMPARE(state->selectedCels().size(), std::size_t(1));
+        state->setSelectedStrokes({doc->layerAt(1).cels[0].id}); // any id: it is the rule
+        QVERIFY(state->selectedCels().empty());
+        state->setSelectedStrokes({});
+        while (doc->undoStack()->canUndo())
+            doc->undoStack()->undo();
+        QCOMPARE(model::serializeFinbook(*doc), before);
+    }
+
+    void layersAreReorderedByDraggingTheirName()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        twoLayers(window);
+        model::Document *doc = window.document();
+        auto *sheet = window.findChild<ui::LayerSheet *>(QStringLiteral("layerSheet"));
+        const model::Id background = doc->layerAt(0).id;
+        const int x = 90;
+        drag(sheet, {QPointF(x, sheet->rowRect(0).center().y()),
+                     QPointF(x, sheet->rowRect(0).center().y() - 12),
+                     QPointF(x, sheet->rowRect(1).center().y())});
+        QCOMPARE(doc->layerAt(1).id, background);
+        QCOMPARE(doc->undoStack()->text(doc->undoStack()->count() - 1),
+                 QStringLiteral("Move Layer"));
+        doc->undoStack()->undo();
+        QCOMPARE(doc->layerAt(0).id, background);
+    }
+
+    void clickingAnotherLayersDrawingMakesItCurrent()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        twoLayers(window);
+        model::Document *doc = window.document();
+        ui::CanvasWidget *canvas = window.canvas();
+        canvas->setCurrentTool(QStringLiteral("tool.select"));
+        QCOMPARE(doc->currentLayerIndex(), 1);
+        const model::Id stroke = doc->layerAt(0).cels[0].groups[0].strokes[0].id;
+        // A click on the background's line (the front layer has nothing there).
+        const QPoint on = canvas->mapFromCanvas(QPointF(160, 160)).toPoint();
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, on);
+        QCOMPARE(doc->currentLayerIndex(), 0);
+        QCOMPARE(window.editorState()->selectedStrokes(), std::vector<model::Id>{stroke});
+        // A click on nothing picks nothing and leaves the layer current.
+        QTest::mouseClick(canvas, Qt::LeftButton, {},
+                          canvas->mapFromCanvas(QPointF(350, 40)).toPoint());
+        QCOMPARE(doc->currentLayerIndex(), 0);
+        QVERIFY(window.editorState()->selectedStrokes().empty());
+        // A locked layer's drawing is not picked that way.
+        window.action(QStringLiteral("layer.locked"))->trigger();
+        window.action(QStringLiteral("layer.above"))->trigger();
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, on);
+        QCOMPARE(doc->currentLayerIndex(), 1);
     }
 
     void otherLayersDrawUnderTheCurrentOne()

@@ -1,5 +1,6 @@
 #include <finbook/model/scene/layer_commands.h>
 #include <finbook/model/scene/shot.h>
+#include <finbook/ui/layers/cel_editing.h>
 #include <finbook/ui/layers/layer_actions.h>
 #include <finbook/ui/layers/layer_properties_dialog.h>
 #include <finbook/ui/window/editor_state.h>
@@ -76,18 +77,11 @@ LayerActions::LayerActions(EditorState *state, QWidget *dialogParent, QObject *p
     connect(makeAction(QStringLiteral("layer.properties"), tr("Layer &Properties...")),
             &QAction::triggered, this, &LayerActions::editProperties);
     addSeparator();
+    // On the picked cels' layers, as many ticks as they span; else one tick on this layer.
     connect(makeAction(QStringLiteral("layer.insertTime"), tr("&Insert Time")), &QAction::triggered,
-            this, [this, doc, push] {
-                if (auto c = model::insertTimeCommand(doc, {doc->currentLayerId()},
-                                                      m_state->currentTick(), 1))
-                    push(c.release());
-            });
+            this, [this] { CelEditing::insertTime(*m_state); });
     connect(makeAction(QStringLiteral("layer.deleteTime"), tr("Delete &Time")), &QAction::triggered,
-            this, [this, doc, push] {
-                if (auto c = model::deleteTimeCommand(doc, {doc->currentLayerId()},
-                                                      m_state->currentTick(), 1))
-                    push(c.release());
-            });
+            this, [this] { CelEditing::deleteTime(*m_state); });
     for (auto signal : {&model::Document::layersChanged, &model::Document::currentLayerChanged,
                         &model::Document::documentReset})
         connect(doc, signal, this, &LayerActions::updateEnabled);

@@ -3,8 +3,10 @@
 #include <finbook/model/scene/shot.h>
 #include <finbook/ui/layers/layer_actions.h>
 #include <finbook/ui/layers/layer_sheet.h>
+#include <finbook/ui/timeline/thumbnail_cache.h>
 #include <finbook/ui/window/editor_state.h>
 
+#include <QApplication>
 #include <QContextMenuEvent>
 #include <QMenu>
 #include <QMouseEvent>
@@ -18,18 +20,33 @@ namespace finbook::ui {
 
 namespace {
 constexpr int kEyeX = 6, kLockX = 24, kNameX = 44, kGlyph = 14;
-constexpr int kGrip = 3; // pixels either side of a cel's end that grab its exposure
+constexpr int kGrip = 3;  // pixels either side of a cel's end that grab its exposure
+constexpr int kInset = 2; // a cel's block inside its row
 const QColor kCel(0xb8, 0xd0, 0xf0), kCurrentCel(0x70, 0xa0, 0xe8), kEmptyCel(0xe8, 0xe8, 0xe8);
+const QColor kPicked(0xf0, 0x90, 0x30), kDrop(0xd0, 0x30, 0x30);
 } // namespace
 
 LayerSheet::LayerSheet(EditorState *state, LayerActions *actions, QWidget *parent)
     : QWidget(parent)
     , m_state(state)
     , m_actions(actions)
+    , m_thumbnails(new ThumbnailCache(state->document(), this))
 {
     setObjectName(QStringLiteral("layerSheet"));
     setMouseTracking(true);
     model::Document *doc = state->document();
+    // The blocks show each cel's drawing on the page, whatever the camera does.
+    m_thumbnails->setShowsShot(false);
+    const QSizeF page(doc->settings().canvasSize);
+    const int thumbHeight = kRowHeight - 2 * kInset - 2;
+    m_thumbnails->setThumbnailSize(
+        QSize(std::clamp(int(thumbHeight * page.width() / std::max(1.0, page.height())), 8, 64),
+              thumbHeight),
+        devicePixelRatioF());
+    m_thumbnails->setCapacity(512);
+    connect(m_thumbnails, &ThumbnailCache::thumbnailRendered, this, qOverload<>(&QWidget::update));
+    connect(m_thumbnails, &ThumbnailCache::thumbnailsInvalidated, this,
+            qOverload<>(&QWidget::update));
     const auto changed = [this] {
         relayout();
         update();
@@ -39,8 +56,16 @@ LayerSheet::LayerSheet(EditorState *state, LayerActions *actions, QWidget *paren
         connect(doc, signal, this, changed);
     connect(doc, &model::Document::celsChanged, this, changed);
     connect(doc, &model::Document::frameChanged, this, qOverload<>(&QWidget::update));
+    connect(doc, &model::Document::settingsChanged, this, [this, doc] {
+        const QSizeF size(doc->settings().canvasSize);
+        const int h = kRowHeight - 2 * kInset - 2;
+        m_thumbnails->setThumbnailSize(
+            QSize(std::clamp(int(h * size.width() / std::max(1.0, size.height())), 8, 64), h),
+            devicePixelRatioF());
+    });
     connect(state, &EditorState::tickChanged, this, qOverload<>(&QWidget::update));
     connect(state, &EditorState::currentFrameChanged, this, qOverload<>(&QWidget::update));
+    connect(state, &EditorState::celSelectionChanged, this, qOverload<>(&QWidget::update));
     relayout();
 }
 
@@ -48,7 +73,7 @@ QSize LayerSheet::sizeHint() const
 {
     const qint64 ticks = model::shotTicks(m_state->document()->layers()) + 8;
     return {kHeaderWidth + int(std::min<qint64>(ticks * m_tickWidth, 1 << 22)),
-            m_state->document()->layerCount() * kRowHeight + 1};
+            kRulerHeight + m_state->document()->layerCount() * kRowHeight + 1};
 }
 
 QSize LayerSheet::minimumSizeHint() const
@@ -69,14 +94,16 @@ int LayerSheet::rowOfLayer(int layerIndex) const
 
 QRect LayerSheet::rowRect(int layerIndex) const
 {
-    return {0, rowOfLayer(layerIndex) * kRowHeight, width(), kRowHeight};
+    return {0, kRulerHeight + rowOfLayer(layerIndex) * kRowHeight, width(), kRowHeight};
 }
 
 int LayerSheet::layerAtY(int y) const
 {
-    const int row = y / kRowHeight;
     const int count = m_state->document()->layerCount();
-    return y < 0 || row >= count ? -1 : count - 1 - row;
+    if (y < kRulerHeight)
+        return -1;
+    const int row = (y - kRulerHeight) / kRowHeight;
+    return row >= count ? -1 : count - 1 - row;
 }
 
 int LayerSheet::xOfTick(qint64 tick) const
@@ -99,6 +126,42 @@ int LayerSheet::celEndNear(int layerIndex, int x) const
             return int(i);
     }
     return -1;
+}
+
+int LayerSheet::celUnder(int layerIndex, int x) const
+{
+    if (x < kHeaderWidth)
+        return -1;
+    return model::celAt(m_state->document()->layerAt(layerIndex).cels, tickAtX(x));
+}
+
+bool LayerSheet::isPicked(model::Id cel) const
+{
+    const auto &picked = m_state->selectedCels();
+    return std::find(picked.begin(), picked.end(), cel) != picked.end();
+}
+
+void LayerSheet::paintRuler(QPainter &painter) const
+{
+    const QRect ruler(kHeaderWidth, 0, width() - kHeaderWidth, kRulerHeight);
+    painter.fillRect(QRect(0, 0, width(), kRulerHeight), palette().window());
+    painter.setPen(palette().windowText().color());
+    // A label every so many ticks that numbers do not touch; a short mark on every tick.
+    const int every = m_tickWidth >= 24 ? 1 : m_tickWidth >= 12 ? 2 : m_tickWidth >= 6 ? 5 : 10;
+    const qint64 last = tickAtX(width()) + 1;
+    QFont small = painter.font();
+    small.setPointSizeF(std::max(6.0, small.pointSizeF() * 0.8));
+    painter.setFont(small);
+    for (qint64 t = 0; t <= last; ++t) {
+        const int x = xOfTick(t);
+        const bool labelled = t % every == 0;
+        painter.drawLine(x, kRulerHeight - (labelled ? 6 : 3), x, kRulerHeight - 1);
+        if (labelled)
+            painter.drawText(QRect(x + 2, 0, every * m_tickWidth, kRulerHeight - 4),
+                             Qt::AlignLeft | Qt::AlignVCenter, QString::number(t + 1));
+    }
+    painter.setFont(font());
+    painter.drawLine(ruler.left(), kRulerHeight - 1, ruler.right(), kRulerHeight - 1);
 }
 
 void LayerSheet::paintRow(QPainter &painter, int layerIndex) const
@@ -130,29 +193,89 @@ void LayerSheet::paintRow(QPainter &painter, int layerIndex) const
     painter.drawText(
         name, Qt::AlignVCenter | Qt::AlignLeft,
         painter.fontMetrics().elidedText(layer.properties.name, Qt::ElideRight, name.width()));
-    // Cels.
+    // Cels: a block each, its drawing at its start and its number after it when there is room.
     const qint64 tick = m_state->currentTick();
+    const int visibleLeft = kHeaderWidth, visibleRight = width();
     qint64 start = 0;
     for (std::size_t i = 0; i < layer.cels.size(); ++i) {
         const model::Frame &cel = layer.cels[i];
         const qint64 end = start + std::clamp(cel.hold, 1, model::kMaxHold);
         const int hold = m_drag == Drag::Exposure && cel.id == m_dragFrame ? m_dragHold : cel.hold;
-        const QRect block(xOfTick(start), row.top() + 2, xOfTick(start + hold) - xOfTick(start) - 1,
-                          row.height() - 4);
-        const bool shown = tick >= start && tick < end;
-        painter.fillRect(block, cel.groups.empty()   ? kEmptyCel
-                                : (current && shown) ? kCurrentCel
-                                                     : kCel);
-        painter.setPen(QColor(0x50, 0x60, 0x70));
-        painter.drawRect(block);
-        if (!cel.groups.empty() && block.width() > 14)
-            painter.drawText(block.adjusted(3, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft,
-                             QString::number(i + 1));
+        const QRect block(xOfTick(start), row.top() + kInset,
+                          xOfTick(start + hold) - xOfTick(start) - 1, row.height() - 2 * kInset);
+        const bool atPlayhead = tick >= start && tick < end;
         start = end;
+        if (block.right() < visibleLeft || block.left() > visibleRight)
+            continue;
+        painter.fillRect(block, cel.groups.empty()        ? kEmptyCel
+                                : (current && atPlayhead) ? kCurrentCel
+                                                          : kCel);
+        int textLeft = block.left() + 3;
+        if (!cel.groups.empty()) {
+            const QPixmap thumb = m_thumbnails->thumbnail(cel.id);
+            const QSize size = m_thumbnails->thumbnailSize();
+            if (block.width() >= size.width() + 4) {
+                const QRect at(block.left() + 2, block.top() + 1, size.width(), size.height());
+                if (!thumb.isNull())
+                    painter.drawPixmap(at, thumb);
+                textLeft = at.right() + 3;
+            }
+        }
+        const bool picked = isPicked(cel.id);
+        painter.setPen(picked ? QPen(kPicked, 2) : QPen(QColor(0x50, 0x60, 0x70)));
+        painter.drawRect(picked ? block.adjusted(1, 1, 0, 0) : block);
+        painter.setPen(QColor(0x20, 0x28, 0x30));
+        if (!cel.groups.empty() && block.right() - textLeft > 10)
+            painter.drawText(QRect(textLeft, block.top(), block.right() - textLeft, block.height()),
+                             Qt::AlignVCenter | Qt::AlignLeft, QString::number(i + 1));
     }
     if (!layer.properties.visible || layer.properties.locked) // greyed
         painter.fillRect(QRect(kHeaderWidth, row.top(), width() - kHeaderWidth, row.height()),
                          QColor(128, 128, 128, layer.properties.visible ? 40 : 90));
+}
+
+void LayerSheet::paintCelDrop(QPainter &painter) const
+{
+    // Where the dragged cels go: a marker at the boundary in each row they land on, and their
+    // outlines dashed at the mouse.
+    const model::Document *doc = m_state->document();
+    const auto &picked = m_state->selectedCels();
+    painter.setPen(QPen(kDrop, 1, Qt::DashLine));
+    for (int l = 0; l < doc->layerCount(); ++l) {
+        const model::Layer &layer = doc->layerAt(l);
+        if (layer.properties.locked)
+            continue;
+        qint64 first = -1;
+        for (std::size_t i = 0; i < layer.cels.size(); ++i) {
+            if (!isPicked(layer.cels[i].id))
+                continue;
+            const qint64 start = model::celStart(layer.cels, int(i));
+            first = first < 0 ? start : first;
+            const int to = l + m_dropRows;
+            if (to < 0 || to >= doc->layerCount())
+                continue;
+            const QRect row = rowRect(to);
+            painter.drawRect(
+                QRect(xOfTick(start + m_dropTicks), row.top() + kInset,
+                      xOfTick(model::celStart(layer.cels, int(i) + 1)) - xOfTick(start) - 1,
+                      row.height() - 2 * kInset));
+        }
+        const int to = l + m_dropRows;
+        if (first < 0 || to < 0 || to >= doc->layerCount() || doc->layerAt(to).properties.locked)
+            continue;
+        // The boundary they land at, among the cels that stay there.
+        std::vector<model::Frame> staying;
+        for (const model::Frame &f : doc->layerAt(to).cels)
+            if (m_dropCopy || std::find(picked.begin(), picked.end(), f.id) == picked.end()) {
+                model::Frame stub;
+                stub.hold = f.hold;
+                staying.push_back(std::move(stub));
+            }
+        const int at = model::celBoundaryNear(staying, first + m_dropTicks);
+        const int x = xOfTick(model::celStart(staying, at));
+        const QRect row = rowRect(to);
+        painter.fillRect(QRect(x - 1, row.top(), 3, row.height()), kDrop);
+    }
 }
 
 void LayerSheet::paintEvent(QPaintEvent *)
@@ -160,25 +283,84 @@ void LayerSheet::paintEvent(QPaintEvent *)
     QPainter painter(this);
     painter.fillRect(rect(), palette().base());
     const model::Document *doc = m_state->document();
+    paintRuler(painter);
     for (int i = 0; i < doc->layerCount(); ++i)
         paintRow(painter, i);
     painter.setPen(palette().mid().color());
     for (int i = 0; i <= doc->layerCount(); ++i)
-        painter.drawLine(0, i * kRowHeight, width(), i * kRowHeight);
+        painter.drawLine(0, kRulerHeight + i * kRowHeight, width(), kRulerHeight + i * kRowHeight);
     painter.drawLine(kHeaderWidth, 0, kHeaderWidth, height());
-    // The playhead, over every row.
+    if (m_drag == Drag::Cels)
+        paintCelDrop(painter);
+    if (m_drag == Drag::Layer && m_layerDrop >= 0) {
+        const QRect row = rowRect(m_layerDrop);
+        painter.fillRect(QRect(0, row.top(), kHeaderWidth, row.height()),
+                         QColor(kDrop.red(), kDrop.green(), kDrop.blue(), 60));
+        painter.setPen(QPen(kDrop, 2));
+        painter.drawRect(QRect(0, row.top(), kHeaderWidth, row.height()).adjusted(1, 1, -1, -1));
+    }
+    // The playhead, over the ruler and every row.
     const int x = xOfTick(m_state->currentTick()) + m_tickWidth / 2;
     painter.setPen(QPen(QColor(0xd0, 0x30, 0x30), 2));
-    painter.drawLine(x, 0, x, doc->layerCount() * kRowHeight);
+    painter.drawLine(x, 0, x, kRulerHeight + doc->layerCount() * kRowHeight);
+}
+
+void LayerSheet::pressCel(int layerIndex, int cel, Qt::KeyboardModifiers modifiers)
+{
+    model::Document *doc = m_state->document();
+    const model::Layer &layer = doc->layerAt(layerIndex);
+    const model::Id id = layer.cels[std::size_t(cel)].id;
+    std::vector<model::Id> picked = m_state->selectedCels();
+    if (modifiers & Qt::ControlModifier) {
+        const auto at = std::find(picked.begin(), picked.end(), id);
+        if (at != picked.end())
+            picked.erase(at);
+        else
+            picked.push_back(id);
+        m_anchor = id;
+    } else if ((modifiers & Qt::ShiftModifier) && doc->frame(m_anchor)) {
+        // Every cel from the anchor's to this one's layer that overlaps the ticks between them.
+        const int anchorLayer = doc->layerIndex(doc->layerOfFrame(m_anchor));
+        const std::vector<model::Frame> &anchorCels = doc->layerAt(anchorLayer).cels;
+        const int anchorIndex = doc->celIndex(m_anchor);
+        const qint64 from =
+            std::min(model::celStart(anchorCels, anchorIndex), model::celStart(layer.cels, cel));
+        const qint64 to = std::max(model::celStart(anchorCels, anchorIndex + 1),
+                                   model::celStart(layer.cels, cel + 1));
+        picked.clear();
+        for (int l = std::min(anchorLayer, layerIndex); l <= std::max(anchorLayer, layerIndex);
+             ++l) {
+            const std::vector<model::Frame> &cels = doc->layerAt(l).cels;
+            for (int i = 0; i < int(cels.size()); ++i)
+                if (model::celStart(cels, i) < to && model::celStart(cels, i + 1) > from)
+                    picked.push_back(cels[std::size_t(i)].id);
+        }
+    } else {
+        if (!isPicked(id)) // a picked cel stays picked with the others, to be dragged
+            picked = {id};
+        m_anchor = id;
+    }
+    m_state->setSelectedCels(std::move(picked));
 }
 
 void LayerSheet::mousePressEvent(QMouseEvent *event)
 {
     model::Document *doc = m_state->document();
-    const int layerIndex = layerAtY(event->position().toPoint().y());
-    if (event->button() != Qt::LeftButton || layerIndex < 0)
+    const QPoint at = event->position().toPoint();
+    if (event->button() != Qt::LeftButton)
         return;
-    const int x = event->position().toPoint().x();
+    m_pressAt = at;
+    const int x = at.x();
+    if (at.y() < kRulerHeight) {
+        if (x >= kHeaderWidth) {
+            m_drag = Drag::Scrub;
+            m_state->setCurrentTick(tickAtX(x));
+        }
+        return;
+    }
+    const int layerIndex = layerAtY(at.y());
+    if (layerIndex < 0)
+        return;
     const model::Layer &layer = doc->layerAt(layerIndex);
     if (x < kHeaderWidth) {
         model::LayerProperties p = layer.properties;
@@ -194,6 +376,8 @@ void LayerSheet::mousePressEvent(QMouseEvent *event)
                 p.locked ? LayerActions::tr("Lock Layer") : LayerActions::tr("Unlock Layer")));
         } else {
             doc->setCurrentLayer(layer.id);
+            m_drag = Drag::LayerPending;
+            m_pressLayer = layerIndex;
         }
         return;
     }
@@ -205,22 +389,62 @@ void LayerSheet::mousePressEvent(QMouseEvent *event)
         m_dragHold = layer.cels[std::size_t(cel)].hold;
         return;
     }
-    m_drag = Drag::Scrub;
     m_state->setCurrentTick(tickAtX(x));
+    if (const int cel = celUnder(layerIndex, x); cel >= 0) {
+        pressCel(layerIndex, cel, event->modifiers());
+        m_dragFrame = layer.cels[std::size_t(cel)].id;
+        m_pressLayer = layerIndex;
+        m_pressTick = tickAtX(x);
+        m_drag = layer.properties.locked ? Drag::None : Drag::CelsPending;
+        return;
+    }
+    // Past the row's last cel: nothing picked, and a drag scrubs.
+    m_state->setSelectedCels({});
+    m_drag = Drag::Scrub;
 }
 
 void LayerSheet::mouseMoveEvent(QMouseEvent *event)
 {
     const QPoint p = event->position().toPoint();
-    if (m_drag == Drag::Scrub) {
+    const bool far = (p - m_pressAt).manhattanLength() >= QApplication::startDragDistance();
+    switch (m_drag) {
+    case Drag::Scrub:
         m_state->setCurrentTick(tickAtX(p.x()));
         return;
-    }
-    if (m_drag == Drag::Exposure) {
+    case Drag::Exposure: {
         const qint64 end = (p.x() - kHeaderWidth + m_tickWidth / 2) / m_tickWidth;
         m_dragHold = int(std::clamp<qint64>(end - m_dragStart, 1, model::kMaxHold));
         update();
         return;
+    }
+    case Drag::CelsPending:
+    case Drag::Cels: {
+        if (m_drag == Drag::CelsPending && !far)
+            return;
+        m_drag = Drag::Cels;
+        const int count = m_state->document()->layerCount();
+        const int row = std::clamp((p.y() - kRulerHeight) / kRowHeight, 0, count - 1);
+        m_dropRows = (count - 1 - row) - m_pressLayer;
+        m_dropTicks = (p.x() < kHeaderWidth ? 0 : tickAtX(p.x())) - m_pressTick;
+        m_dropCopy = event->modifiers() & Qt::AltModifier;
+        setCursor(m_dropCopy ? Qt::DragCopyCursor : Qt::DragMoveCursor);
+        update();
+        return;
+    }
+    case Drag::LayerPending:
+    case Drag::Layer: {
+        if (m_drag == Drag::LayerPending && !far)
+            return;
+        m_drag = Drag::Layer;
+        const int count = m_state->document()->layerCount();
+        const int row = std::clamp((p.y() - kRulerHeight) / kRowHeight, 0, count - 1);
+        m_layerDrop = count - 1 - row;
+        setCursor(Qt::SizeVerCursor);
+        update();
+        return;
+    }
+    case Drag::None:
+        break;
     }
     const int layerIndex = layerAtY(p.y());
     setCursor(layerIndex >= 0 && p.x() >= kHeaderWidth && celEndNear(layerIndex, p.x()) >= 0
@@ -228,14 +452,41 @@ void LayerSheet::mouseMoveEvent(QMouseEvent *event)
                   : Qt::ArrowCursor);
 }
 
-void LayerSheet::mouseReleaseEvent(QMouseEvent *)
+void LayerSheet::mouseReleaseEvent(QMouseEvent *event)
 {
     const Drag was = std::exchange(m_drag, Drag::None);
-    if (was != Drag::Exposure)
-        return;
     model::Document *doc = m_state->document();
-    if (const model::Frame *f = doc->frame(m_dragFrame); f && f->hold != m_dragHold)
-        doc->undoStack()->push(new model::SetFrameHoldCommand(doc, m_dragFrame, m_dragHold));
+    unsetCursor();
+    switch (was) {
+    case Drag::Exposure:
+        if (const model::Frame *f = doc->frame(m_dragFrame); f && f->hold != m_dragHold)
+            doc->undoStack()->push(new model::SetFrameHoldCommand(doc, m_dragFrame, m_dragHold));
+        break;
+    case Drag::CelsPending: // a click on a picked cel, no drag: that cel alone
+        if (!(event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier)) &&
+            doc->frame(m_dragFrame))
+            m_state->setSelectedCels({m_dragFrame});
+        break;
+    case Drag::Cels:
+        m_dropCopy = event->modifiers() & Qt::AltModifier;
+        if (auto command = model::rearrangeCelsCommand(doc, m_state->selectedCels(), m_dropRows,
+                                                       m_dropTicks, m_dropCopy)) {
+            doc->undoStack()->push(command.release());
+            // The moved cels' layer (the one the drag began on) stays current.
+            if (const model::Frame *f = doc->frame(m_dragFrame); f && !m_dropCopy)
+                doc->setCurrentLayer(doc->layerOfFrame(m_dragFrame));
+        }
+        break;
+    case Drag::Layer:
+        if (m_pressLayer >= 0 && m_pressLayer < doc->layerCount() && m_layerDrop >= 0 &&
+            m_layerDrop != m_pressLayer)
+            doc->undoStack()->push(
+                new model::MoveLayerCommand(doc, doc->layerAt(m_pressLayer).id, m_layerDrop));
+        break;
+    default:
+        break;
+    }
+    m_layerDrop = -1;
     update();
 }
 

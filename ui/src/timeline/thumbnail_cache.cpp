@@ -86,7 +86,7 @@ std::optional<model::CameraState> ThumbnailCache::shotOf(model::Id frameId) cons
 {
     const model::CameraTrack &camera = m_doc->camera();
     const QSizeF page(m_doc->settings().canvasSize);
-    if (camera.isEmpty() || !camera.isUsed(page))
+    if (!m_showsShot || camera.isEmpty() || !camera.isUsed(page))
         return std::nullopt;
     const qint64 tick = model::exposureTicks(m_doc->frames(), 0, m_doc->frameIndex(frameId) - 1);
     return model::cameraAt(camera, double(tick), page);
@@ -122,7 +122,7 @@ bool ThumbnailCache::renderOne(model::Id frameId)
     // thumbnail is drawn again with it when it comes (pictureDecoded).
     model::ReferenceLayer &reference = m_doc->referenceLayer();
     qint64 pending = -1;
-    const QImage picture = reference.isEmpty()
+    const QImage picture = reference.isEmpty() || !m_showsShot
                                ? QImage()
                                : reference.requestPicture(m_doc->frameIndex(frameId), &pending);
     if (pending >= 0) {

@@ -2,6 +2,7 @@
 
 #include <finbook/model/commands.h>
 #include <finbook/model/render.h>
+#include <finbook/model/scene/shot.h>
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/tools/stroke_editing.h>
 #include <finbook/ui/tools/tool_select.h>
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 
 namespace finbook::ui {
 
@@ -33,6 +35,43 @@ void forStrokes(const EditorState &state, const std::vector<model::Id> &ids,
             for (std::size_t i = 0; i < g.strokes.size(); ++i)
                 if (contains(ids, g.strokes[i].id))
                     fn(g, i);
+}
+
+// A stroke of another visible, unlocked layer shown at `pos` (the front layer first), as
+// (layer, stroke). In Camera View a layer at a depth is drawn through its own camera, so the
+// point is carried from the page the tools work on to that layer's page.
+std::optional<std::pair<model::Id, model::Id>> otherLayerStrokeAt(const EditorState &state,
+                                                                  const CanvasWidget &canvas,
+                                                                  QPointF pos, qreal tolerance)
+{
+    const model::Document &doc = *state.document();
+    const qint64 tick = state.currentTick();
+    const QSizeF page(doc.settings().canvasSize);
+    const model::CameraState camera = model::cameraAt(doc.camera(), double(tick), page);
+    const QTransform toShot = model::cameraTransform(camera, page);
+    for (int l = doc.layerCount() - 1; l >= 0; --l) {
+        const model::Layer &layer = doc.layerAt(l);
+        if (l == doc.currentLayerIndex() || !layer.properties.visible || layer.properties.locked ||
+            layer.properties.opacity <= 0.0)
+            continue;
+        const int cel = model::celAt(layer.cels, tick);
+        if (cel < 0)
+            continue;
+        QPointF at = pos;
+        if (canvas.looksThroughCamera() && layer.properties.depth != 0.0) {
+            bool invertible = false;
+            const QTransform back =
+                model::cameraTransform(model::planeCamera(camera, layer.properties.depth, page),
+                                       page)
+                    .inverted(&invertible);
+            if (invertible)
+                at = back.map(toShot.map(pos));
+        }
+        if (const model::Id hit = strokeAt(layer.cels[std::size_t(cel)], at, tolerance);
+            hit != model::kNoId)
+            return std::pair{layer.id, hit};
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -221,7 +260,18 @@ void SelectTool::finishLasso(const ToolEvent &event)
     }
     const QRectF extent = canvas()->canvasToWidget().mapRect(m_lasso.boundingRect());
     if (extent.width() < 3 && extent.height() < 3) {
-        const model::Id hit = strokeAt(*frame, event.pos, kClickTolerance / canvas()->zoom());
+        const qreal tolerance = kClickTolerance / canvas()->zoom();
+        const model::Id hit = strokeAt(*frame, event.pos, tolerance);
+        if (hit == model::kNoId && !add) {
+            // Nothing of the current layer there: a click on another layer's drawing makes
+            // that layer current (as in Krita and OpenToonz) and picks the stroke.
+            if (const auto other = otherLayerStrokeAt(*state(), *canvas(), event.pos, tolerance)) {
+                state()->document()->setCurrentLayer(other->first);
+                if (state()->document()->locateStroke(other->second).isValid())
+                    state()->setSelectedStrokes({other->second});
+                return;
+            }
+        }
         if (hit != model::kNoId && !contains(picked, hit))
             picked.push_back(hit);
         state()->setSelectedStrokes(std::move(picked));

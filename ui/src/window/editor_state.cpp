@@ -65,7 +65,10 @@ EditorState::EditorState(model::Document *document, QObject *parent)
             emit tickChanged(currentTick());
     });
     connect(m_doc, &model::Document::framesRemoved, this, &EditorState::frameSelectionChanged);
-    connect(m_doc, &model::Document::documentReset, this, [this] { setSelectedFrames({}); });
+    connect(m_doc, &model::Document::documentReset, this, [this] {
+        setSelectedFrames({});
+        setSelectedCels({});
+    });
     clampToDocument();
 }
 
@@ -236,7 +239,19 @@ void EditorState::setSelectedStrokes(std::vector<model::Id> strokeIds)
     if (strokeIds == m_selection)
         return;
     m_selection = std::move(strokeIds);
+    if (!m_selection.empty())
+        setSelectedCels({});
     emit selectionChanged();
+}
+
+void EditorState::setSelectedCels(std::vector<model::Id> celIds)
+{
+    if (celIds == m_celSelection)
+        return;
+    m_celSelection = std::move(celIds);
+    if (!m_celSelection.empty())
+        setSelectedStrokes({});
+    emit celSelectionChanged();
 }
 
 void EditorState::setOnionSkin(const OnionSkin &onion)

@@ -8,6 +8,7 @@
 #include <finbook/ui/export/export_done.h>
 #include <finbook/ui/i18n/action_text.h>
 #include <finbook/ui/keys/shortcut_registry.h>
+#include <finbook/ui/layers/cel_editing.h>
 #include <finbook/ui/layers/layer_actions.h>
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/reference/reference_panel.h>
@@ -145,21 +146,43 @@ void MainWindow::createEditMenu()
         if (!problem.isEmpty())
             reportError(tr("Paste"), problem);
     };
+    // Cut, Copy and Delete work on the cels picked in the dope sheet when there are some (picking
+    // cels drops the picked strokes), else on the picked strokes; Paste pastes what was copied
+    // last.
     QAction *cut = makeAction(QStringLiteral("edit.cut"), tr("Cu&t"));
-    connect(cut, &QAction::triggered, this, [this] { StrokeEditing::cutSelection(*m_state); });
+    connect(cut, &QAction::triggered, this, [this] {
+        if (!m_state->selectedCels().empty())
+            CelEditing::cut(*m_state);
+        else
+            StrokeEditing::cutSelection(*m_state);
+    });
     QAction *copy = makeAction(QStringLiteral("edit.copy"), tr("&Copy"));
-    connect(copy, &QAction::triggered, this, [this] { StrokeEditing::copySelection(*m_state); });
+    connect(copy, &QAction::triggered, this, [this] {
+        if (!m_state->selectedCels().empty())
+            CelEditing::copy(*m_state);
+        else
+            StrokeEditing::copySelection(*m_state);
+    });
     QAction *paste = makeAction(QStringLiteral("edit.paste"), tr("&Paste"));
     connect(paste, &QAction::triggered, this, [this, report] {
         QString problem;
+        if (CelEditing::clipboardHasCels()) {
+            CelEditing::paste(*m_state, &problem);
+            report(problem);
+            return;
+        }
         // At the mouse when it is over the canvas; selected, with the select tool's box shown.
         if (StrokeEditing::paste(*m_state, &problem, m_canvas->cursorPos()))
             m_canvas->setCurrentTool(QStringLiteral("tool.select"));
         report(problem);
     });
     QAction *remove = makeAction(QStringLiteral("edit.delete"), tr("&Delete"));
-    connect(remove, &QAction::triggered, this,
-            [this] { StrokeEditing::deleteSelection(*m_state); });
+    connect(remove, &QAction::triggered, this, [this] {
+        if (!m_state->selectedCels().empty())
+            CelEditing::remove(*m_state);
+        else
+            StrokeEditing::deleteSelection(*m_state);
+    });
     QAction *selectAll = makeAction(QStringLiteral("edit.selectAll"), tr("Select &All"));
     connect(selectAll, &QAction::triggered, this, [this] {
         StrokeEditing::selectAll(*m_state);
@@ -182,6 +205,7 @@ void MainWindow::createEditMenu()
     m_editMenu->addActions({docSettings, prefs});
 
     connect(m_state, &EditorState::selectionChanged, this, &MainWindow::updateEditActions);
+    connect(m_state, &EditorState::celSelectionChanged, this, &MainWindow::updateEditActions);
     connect(QApplication::clipboard(), &QClipboard::dataChanged, this,
             &MainWindow::updateEditActions);
     updateEditActions();
@@ -190,11 +214,14 @@ void MainWindow::createEditMenu()
 void MainWindow::updateEditActions()
 {
     const bool selected = !m_state->selectedStrokes().empty();
-    for (const char *name : {"edit.cut", "edit.copy", "edit.delete", "edit.deselect"})
+    const bool cels = !m_state->selectedCels().empty();
+    for (const char *name : {"edit.cut", "edit.copy", "edit.delete"})
         if (QAction *a = action(QString::fromLatin1(name)))
-            a->setEnabled(selected);
+            a->setEnabled(selected || cels);
+    if (QAction *a = action(QStringLiteral("edit.deselect")))
+        a->setEnabled(selected);
     if (QAction *a = action(QStringLiteral("edit.paste")))
-        a->setEnabled(StrokeEditing::clipboardHasStrokes());
+        a->setEnabled(StrokeEditing::clipboardHasStrokes() || CelEditing::clipboardHasCels());
 }
 
 void MainWindow::createViewMenu()

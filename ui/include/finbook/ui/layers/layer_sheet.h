@@ -1,10 +1,18 @@
 // The dope sheet: one row per layer (the front one on top), each cel a block as long as its
-// exposure, with the playhead across every row. A header column shows each layer's name, an eye
-// (click: show or hide) and a lock (click: lock or unlock).
+// exposure showing its drawing, under a ruler of ticks, with the playhead across every row. A
+// header column shows each layer's name, an eye (click: show or hide) and a lock (click: lock
+// or unlock).
 //
-// Click a row: its layer becomes current and the playhead goes to the tick clicked; drag to
-// scrub. Drag the right end of a cel: its exposure changes (one undo step when released).
-// Double-click a name: Layer Properties. Right-click: the Layer menu. Ctrl+wheel: zoom in time.
+// Mouse, as in Krita's timeline and OpenToonz's Xsheet:
+//  - the ruler, or a row past its last cel: the playhead goes there (drag to scrub);
+//  - a cel: picks it (Ctrl: adds or drops it, Shift: every cel from the last picked one to it,
+//    across rows), makes its layer current and puts the playhead there; dragging picked cels
+//    moves them to the boundary between cels nearest where they land, in the row they land on
+//    (a marker shows it), Alt-dragging copies them; one undo step;
+//  - the right end of a cel: drags its exposure (one undo step when released);
+//  - a layer's name: dragged up or down, reorders the layer; double-click: Layer Properties;
+//  - right-click: the Layer menu; Ctrl+wheel: zoom in time.
+// The Edit menu cuts, copies, pastes and deletes picked cels (cel_editing.h).
 #pragma once
 
 #include <finbook/model/types.h>
@@ -17,6 +25,7 @@ namespace finbook::ui {
 
 class EditorState;
 class LayerActions;
+class ThumbnailCache;
 
 class LayerSheet : public QWidget {
     Q_OBJECT
@@ -26,13 +35,14 @@ public:
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
 
-    // Geometry, for tests: the row of layer `index` (top to bottom: the last layer first) and
-    // the x of a tick.
+    // Geometry, for tests: the row of layer `index` (top to bottom under the ruler: the last
+    // layer first) and the x of a tick.
     int rowOfLayer(int layerIndex) const;
     QRect rowRect(int layerIndex) const;
     int xOfTick(qint64 tick) const;
     static constexpr int kHeaderWidth = 150;
-    static constexpr int kRowHeight = 22;
+    static constexpr int kRulerHeight = 18;
+    static constexpr int kRowHeight = 30;
 
 protected:
     void paintEvent(QPaintEvent *event) override;
@@ -48,17 +58,32 @@ private:
     qint64 tickAtX(int x) const;
     // The cel of layer `layerIndex` whose right end is within a few pixels of x, or −1.
     int celEndNear(int layerIndex, int x) const;
+    // The cel of layer `layerIndex` under x, or −1.
+    int celUnder(int layerIndex, int x) const;
+    void pressCel(int layerIndex, int cel, Qt::KeyboardModifiers modifiers);
+    bool isPicked(model::Id cel) const;
     void relayout();
+    void paintRuler(QPainter &painter) const;
     void paintRow(QPainter &painter, int layerIndex) const;
+    void paintCelDrop(QPainter &painter) const;
 
     EditorState *m_state;
     LayerActions *m_actions;
+    ThumbnailCache *m_thumbnails;
     int m_tickWidth = 12; // pixels per tick
-    enum class Drag { None, Scrub, Exposure };
+    enum class Drag { None, Scrub, Exposure, CelsPending, Cels, LayerPending, Layer };
     Drag m_drag = Drag::None;
-    model::Id m_dragFrame = model::kNoId; // the cel whose exposure is dragged
+    QPoint m_pressAt;
+    model::Id m_dragFrame = model::kNoId; // the cel whose exposure is dragged, or pressed
     qint64 m_dragStart = 0;               // its first tick
     int m_dragHold = 1;                   // the exposure shown while dragging
+    model::Id m_anchor = model::kNoId;    // the cel a Shift-click picks from
+    int m_pressLayer = -1;                // the row a drag of cels or of a layer started on
+    qint64 m_pressTick = 0;
+    int m_dropRows = 0;      // cels dragged this many rows up (negative: down)
+    qint64 m_dropTicks = 0;  // and this many ticks later
+    bool m_dropCopy = false; // Alt held: copies
+    int m_layerDrop = -1;    // a dragged layer goes to this index
 };
 
 } // namespace finbook::ui

@@ -35,6 +35,9 @@ public:
     // How many thumbnails are kept (default 256).
     void setCapacity(int count) { m_cache.setMaxCost(qsizetype(count)); }
     int capacity() const { return int(m_cache.maxCost()); }
+    // Off: a thumbnail is the cel's drawing alone, on the page (the dope sheet's blocks),
+    // without the camera or the reference. On by default.
+    void setShowsShot(bool on) { m_showsShot = on; }
     // Called before rendering a queued frame; a frame it rejects is dropped from the queue.
     void setVisibilityFilter(std::function<bool(model::Id)> isVisible);
 
@@ -82,6 +85,7 @@ private:
     QSize m_canvasSize;
     QRgb m_background = 0;
     double m_closeGap = -1.0; // fills' regions depend on it
+    bool m_showsShot = true;
 };
 
 } // namespace finbook::ui

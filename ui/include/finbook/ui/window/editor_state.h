@@ -41,6 +41,9 @@ public:
     // just the current frame when no other is picked. A current frame outside the picked
     // ones clears them.
     std::vector<int> selectedFrames() const;
+    // Cels picked in the dope sheet, on any layers. Picking cels drops the picked strokes and
+    // picking strokes drops the cels, so the Edit menu works on whichever was picked last.
+    const std::vector<model::Id> &selectedCels() const { return m_celSelection; }
     const OnionSkin &onionSkin() const { return m_onion; }
     bool isPlaying() const { return m_playing; }
     bool showMesh() const { return m_showMesh; }
@@ -62,6 +65,7 @@ public slots:
     void setCurrentGroupId(model::Id groupId);
     void setSelectedStrokes(std::vector<model::Id> strokeIds);
     void setSelectedFrames(std::vector<model::Id> frameIds);
+    void setSelectedCels(std::vector<model::Id> celIds);
     void setOnionSkin(const OnionSkin &onion);
     void setPlaying(bool playing);
     void setShowMesh(bool show);
@@ -81,6 +85,7 @@ signals:
     void currentGroupChanged(model::Id groupId);
     void selectionChanged();
     void frameSelectionChanged();
+    void celSelectionChanged();
     void onionSkinChanged();
     void playingChanged(bool playing);
     void showMeshChanged(bool show);
@@ -101,6 +106,7 @@ private:
     model::Id m_groupId = model::kNoId;
     std::vector<model::Id> m_selection;
     std::vector<model::Id> m_frameSelection;
+    std::vector<model::Id> m_celSelection;
     OnionSkin m_onion;
     bool m_playing = false;
     bool m_showMesh = false;
