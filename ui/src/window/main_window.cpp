@@ -36,6 +36,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -184,8 +185,15 @@ void MainWindow::createDocks()
     sheet->setWidget(new LayerSheet(m_state, m_layerActions));
     sheet->setWidgetResizable(true);
     sheet->setFrameShape(QFrame::NoFrame);
-    sheet->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    sheet->setMaximumHeight(4 * LayerSheet::kRowHeight + 20);
+    // As tall as its rows (up to five, then it scrolls), so every layer of a small scene shows.
+    const auto fitSheet = [this, sheet] {
+        const int rows = std::clamp(m_doc->layerCount(), 1, 5);
+        sheet->setFixedHeight(LayerSheet::kRulerHeight + rows * LayerSheet::kRowHeight + 2 +
+                              sheet->horizontalScrollBar()->sizeHint().height());
+    };
+    for (auto signal : {&model::Document::layersChanged, &model::Document::documentReset})
+        connect(m_doc, signal, sheet, fitSheet);
+    fitSheet();
     timeline->addAboveFrames(sheet);
     dock(timeline, QStringLiteral("timelineDock"), tr("Timeline"), Qt::BottomDockWidgetArea);
     dock(new ObjectsPanel(m_state, m_objectActions), QStringLiteral("objectsDock"), tr("Objects"),
