@@ -5,6 +5,7 @@
 // other formats' do (refused when in the way, nothing written on an error or a cancel).
 #include "solid_export_support.h"
 
+#include <finbook/model/camera/camera_commands.h>
 #include <finbook/model/export/frame_solids.h>
 
 #include <QTemporaryDir>
@@ -137,11 +138,63 @@ private slots:
     void nothingMeshableWritesNothing();
     void armOverTheBodyExportsAsTwoSolids();
     void existingFilesAreRefusedWithoutOverwrite();
+    void cameraFramesTheModel();
     void failedObjPutsTheOldMaterialsBack();
     void cancelLeavesNothing();
     void materialFileName_data();
     void materialFileName();
 };
+
+// Through the camera (issue 46), the model is the shot: a camera zoomed 2× on a circle puts
+// it at the shot's centre (y up), twice as wide, twice as thick; without it, on the page.
+void TestExportObj::cameraFramesTheModel()
+{
+    QTemporaryDir dir;
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    doc.undoStack()->push(new AddStrokeCommand(&doc, doc.frameAt(0).groups.at(0).id,
+                                               circleStroke(QPointF(300, 200), 60, kBlue)));
+    CameraKey k;
+    k.center = QPointF(300, 200);
+    k.zoom = 2.0;
+    doc.undoStack()->push(setCameraKeyCommand(&doc, k).release());
+    const QSizeF page(doc.settings().canvasSize);
+    const auto extent = [](const ParsedObj &obj) {
+        std::array<double, 6> box{1e9, -1e9, 1e9, -1e9, 1e9, -1e9};
+        for (const auto &v : obj.v)
+            for (int c = 0; c < 3; ++c) {
+                box[std::size_t(2 * c)] = std::min(box[std::size_t(2 * c)], v[std::size_t(c)]);
+                box[std::size_t(2 * c + 1)] =
+                    std::max(box[std::size_t(2 * c + 1)], v[std::size_t(c)]);
+            }
+        return box;
+    };
+    ExportOptions options = objOptions(dir.filePath(QStringLiteral("page.obj")));
+    options.camera = false;
+    QVERIFY(exportAnimation(exportSource(doc), options));
+    const auto onPage = extent(parseObj(readAll(options.target)));
+    options = objOptions(dir.filePath(QStringLiteral("shot.obj")));
+    const auto result = exportAnimation(exportSource(doc), options);
+    QVERIFY2(result, result ? "" : qPrintable(result.error().message));
+    const auto inShot = extent(parseObj(readAll(options.target)));
+    const auto mid = [](const std::array<double, 6> &b, int axis) {
+        return (b[std::size_t(2 * axis)] + b[std::size_t(2 * axis + 1)]) / 2;
+    };
+    const auto size = [](const std::array<double, 6> &b, int axis) {
+        return b[std::size_t(2 * axis + 1)] - b[std::size_t(2 * axis)];
+    };
+    QVERIFY2(std::abs(mid(onPage, 0) - 300) < 1 && std::abs(mid(onPage, 1) + 200) < 1,
+             qPrintable(QStringLiteral("%1 %2").arg(mid(onPage, 0)).arg(mid(onPage, 1))));
+    QVERIFY2(std::abs(mid(inShot, 0) - page.width() / 2) < 1.5 &&
+                 std::abs(mid(inShot, 1) + page.height() / 2) < 1.5,
+             qPrintable(QStringLiteral("%1 %2").arg(mid(inShot, 0)).arg(mid(inShot, 1))));
+    for (int axis = 0; axis < 3; ++axis)
+        QVERIFY2(std::abs(size(inShot, axis) / size(onPage, axis) - 2.0) < 0.02,
+                 qPrintable(QStringLiteral("axis %1: %2 vs %3")
+                                .arg(axis)
+                                .arg(size(inShot, axis))
+                                .arg(size(onPage, axis))));
+}
 
 void TestExportObj::generatedFrameRoundTrips()
 {

@@ -3,7 +3,53 @@
 #include "export_formats.h"
 #include "export_text.h"
 
+#include <finbook/model/scene/shot.h>
+
+#include <algorithm>
+#include <cmath>
+
 namespace finbook::model {
+
+namespace {
+// The solids as the camera sees them: each object's plane (its layer's depth) through its own
+// camera (planeCamera), so x and y are the shot's pixels (y up) and heights scale with the
+// zoom. The camera is a similarity (move, turn, zoom): shapes keep their proportions.
+void seeThroughCamera(FrameSolids &solids, const Frame &frame, const CameraState &camera,
+                      QSizeF page)
+{
+    for (ObjectSolid &object : solids.objects) {
+        double depth = 0.0;
+        int begin = 0;
+        const auto group =
+            std::find_if(frame.groups.begin(), frame.groups.end(),
+                         [&](const StrokeGroup &g) { return g.id == object.groupId; });
+        const int index = int(group - frame.groups.begin());
+        for (const FramePlane &plane : frame.planes) {
+            if (index >= begin && index < plane.groupEnd) {
+                depth = plane.depth;
+                break;
+            }
+            begin = plane.groupEnd;
+        }
+        const QTransform t = cameraTransform(planeCamera(camera, depth, page), page);
+        const double scale = std::sqrt(std::abs(t.determinant()));
+        if (!(scale > 0.0) || !std::isfinite(scale))
+            continue;
+        geometry::InflatedSolid &solid = object.solid;
+        for (Eigen::Index i = 0; i < solid.V.rows(); ++i) {
+            const QPointF p = t.map(QPointF(solid.V(i, 0), -solid.V(i, 1)));
+            solid.V.row(i) << p.x(), -p.y(), solid.V(i, 2) * scale;
+        }
+        // Normals turn with the camera (the y flips cancel); the zoom does not change them.
+        for (Eigen::Index i = 0; i < solid.N.rows(); ++i) {
+            const double x = solid.N(i, 0), y = -solid.N(i, 1);
+            const double nx = (t.m11() * x + t.m21() * y) / scale;
+            const double ny = (t.m12() * x + t.m22() * y) / scale;
+            solid.N.row(i) << nx, -ny, solid.N(i, 2);
+        }
+    }
+}
+} // namespace
 
 Expected<FrameSolids, ExportError> exportedSolids(const ExportContext &context)
 {
@@ -13,6 +59,9 @@ Expected<FrameSolids, ExportError> exportedSolids(const ExportContext &context)
                     [&context](int done, int total) { return !context.cancelled(done, total); });
     if (!solids)
         return unexpected(cancelledError());
+    if (const CameraState *camera = context.camera(0))
+        seeThroughCamera(*solids, context.frame(0), *camera,
+                         QSizeF(context.source.settings.canvasSize));
     if (solids->tooLarge)
         return unexpected(exportError(
             ExportErrorCode::TooLarge,

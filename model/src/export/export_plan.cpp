@@ -173,7 +173,8 @@ Expected<ExportPlan, ExportError> planExport(const ExportSource &source,
                               .arg(exportFormatName(options.format).toUpper()));
     // Video and GIF have no partial transparency outside the transparent mode: keep it opaque.
     plan.background = options.background.value_or(settings.background) | 0xff000000u;
-    if (options.camera && !exportsModel(options.format))
+    // A 3D model is seen through the camera at its frame's first tick (export_model.cpp).
+    if (options.camera)
         if (auto error = frameThroughCamera(source, options, first, plan))
             return unexpected(*error);
     return plan;
