@@ -53,40 +53,46 @@ inline QRgb byteMul(QRgb x, std::uint32_t a)
 // coverage() eight pixels at a time where the processor has AVX2 (asked once at run time): a
 // pen line's capsule is a few pixels wide, so most rows take one step instead of two or three.
 // Same arithmetic as the SSE path, only wider.
-__attribute__((target("avx2"))) int coverAvx2(std::uint8_t *row, int n, float px0, float pyf,
-                                              float dxf, float dyf, float invf, float arf,
-                                              float drf)
+__attribute__((target("avx2"))) void coverSpansAvx2(const CoverSpan *spans, std::size_t count,
+                                                    float dxf, float dyf, float invf, float arf,
+                                                    float drf)
 {
     const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
     const __m256 dx = _mm256_set1_ps(dxf), dy = _mm256_set1_ps(dyf), inv = _mm256_set1_ps(invf);
     const __m256 ar = _mm256_set1_ps(arf), dr = _mm256_set1_ps(drf);
     const __m256 minR = _mm256_set1_ps(kMinRadius), invMinR = _mm256_set1_ps(1.0f / kMinRadius);
     const __m256 half = _mm256_set1_ps(0.5f), scale = _mm256_set1_ps(255.0f);
-    const __m256 tiny = _mm256_set1_ps(1e-12f);
-    const __m256 py = _mm256_set1_ps(pyf), pyDy = _mm256_mul_ps(py, dy);
-    __m256 px = _mm256_add_ps(_mm256_set1_ps(px0), _mm256_set_ps(7, 6, 5, 4, 3, 2, 1, 0));
-    int i = 0;
-    for (; i + 8 <= n; i += 8, px = _mm256_add_ps(px, _mm256_set1_ps(8.0f))) {
-        __m256 t = _mm256_mul_ps(_mm256_add_ps(_mm256_mul_ps(px, dx), pyDy), inv);
-        t = _mm256_min_ps(_mm256_max_ps(t, zero), one);
-        const __m256 ex = _mm256_sub_ps(px, _mm256_mul_ps(t, dx));
-        const __m256 ey = _mm256_sub_ps(py, _mm256_mul_ps(t, dy));
-        const __m256 r = _mm256_add_ps(ar, _mm256_mul_ps(t, dr));
-        const __m256 d2 =
-            _mm256_max_ps(_mm256_add_ps(_mm256_mul_ps(ex, ex), _mm256_mul_ps(ey, ey)), tiny);
-        const __m256 d = _mm256_mul_ps(d2, _mm256_rsqrt_ps(d2));
-        __m256 c = _mm256_sub_ps(_mm256_add_ps(_mm256_max_ps(r, minR), half), d);
-        c = _mm256_min_ps(_mm256_max_ps(c, zero), one);
-        const __m256 fade = _mm256_min_ps(one, _mm256_mul_ps(r, invMinR));
-        const __m256i v =
-            _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(c, fade), scale), half));
-        const __m128i words =
-            _mm_packs_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
-        const __m128i bytes = _mm_packus_epi16(words, _mm_setzero_si128());
-        const __m128i old = _mm_loadl_epi64(reinterpret_cast<const __m128i *>(row + i));
-        _mm_storel_epi64(reinterpret_cast<__m128i *>(row + i), _mm_max_epu8(bytes, old));
+    const __m256 tiny = _mm256_set1_ps(1e-12f), eight = _mm256_set1_ps(8.0f);
+    const __m256 lanes = _mm256_set_ps(7, 6, 5, 4, 3, 2, 1, 0);
+    for (std::size_t s = 0; s < count; ++s) {
+        const CoverSpan &span = spans[s];
+        const __m256 py = _mm256_set1_ps(span.py), pyDy = _mm256_mul_ps(py, dy);
+        __m256 px = _mm256_add_ps(_mm256_set1_ps(span.px0), lanes);
+        int i = 0;
+        for (; i + 8 <= span.n; i += 8, px = _mm256_add_ps(px, eight)) {
+            __m256 t = _mm256_mul_ps(_mm256_add_ps(_mm256_mul_ps(px, dx), pyDy), inv);
+            t = _mm256_min_ps(_mm256_max_ps(t, zero), one);
+            const __m256 ex = _mm256_sub_ps(px, _mm256_mul_ps(t, dx));
+            const __m256 ey = _mm256_sub_ps(py, _mm256_mul_ps(t, dy));
+            const __m256 r = _mm256_add_ps(ar, _mm256_mul_ps(t, dr));
+            const __m256 d2 =
+                _mm256_max_ps(_mm256_add_ps(_mm256_mul_ps(ex, ex), _mm256_mul_ps(ey, ey)), tiny);
+            const __m256 d = _mm256_mul_ps(d2, _mm256_rsqrt_ps(d2));
+            __m256 c = _mm256_sub_ps(_mm256_add_ps(_mm256_max_ps(r, minR), half), d);
+            c = _mm256_min_ps(_mm256_max_ps(c, zero), one);
+            const __m256 fade = _mm256_min_ps(one, _mm256_mul_ps(r, invMinR));
+            const __m256i v = _mm256_cvttps_epi32(
+                _mm256_add_ps(_mm256_mul_ps(_mm256_mul_ps(c, fade), scale), half));
+            const __m128i words =
+                _mm_packs_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+            const __m128i bytes = _mm_packus_epi16(words, _mm_setzero_si128());
+            const __m128i old = _mm_loadl_epi64(reinterpret_cast<const __m128i *>(span.row + i));
+            _mm_storel_epi64(reinterpret_cast<__m128i *>(span.row + i), _mm_max_epu8(bytes, old));
+        }
+        for (; i < span.n; ++i) // at the clip's right edge only
+            span.row[i] = std::max(
+                span.row[i], coverage(span.px0 + float(i), span.py, dxf, dyf, invf, arf, drf));
     }
-    return i;
 }
 
 bool hasAvx2()
@@ -318,6 +324,10 @@ void StrokeRaster::drawStroke(const std::vector<model::StrokePoint> &points, QRg
         widest = std::max(widest, radius(p));
     const double reach = double(std::max(widest, kMinRadius)) + 2.0;
     const QRectF clip = QRectF(m_clip).adjusted(-reach, -reach, reach, reach);
+    const double left = clip.left(), right = clip.right(), top = clip.top(), bottom = clip.bottom();
+    const auto inside = [&](const QPointF &p) {
+        return p.x() >= left && p.x() <= right && p.y() >= top && p.y() <= bottom;
+    };
     const auto device = [&](const model::StrokePoint &p) {
         return QPointF(double(p.x * m_scale + m_ox), double(p.y * m_scale + m_oy));
     };
@@ -332,11 +342,9 @@ void StrokeRaster::drawStroke(const std::vector<model::StrokePoint> &points, QRg
         QPointF a = device(points[i - 1]), b = device(points[i]);
         double t0 = 0, t1 = 1;
         // Most segments lie wholly inside or wholly beside the band: no cut to make.
-        if (!(clip.contains(a) && clip.contains(b))) {
-            if ((a.y() < clip.top() && b.y() < clip.top()) ||
-                (a.y() > clip.bottom() && b.y() > clip.bottom()) ||
-                (a.x() < clip.left() && b.x() < clip.left()) ||
-                (a.x() > clip.right() && b.x() > clip.right()))
+        if (!(inside(a) && inside(b))) {
+            if ((a.y() < top && b.y() < top) || (a.y() > bottom && b.y() > bottom) ||
+                (a.x() < left && b.x() < left) || (a.x() > right && b.x() > right))
                 continue;
             if (!model::clipSegment(a, b, clip, &t0, &t1))
                 continue;
@@ -380,7 +388,9 @@ void StrokeRaster::capsule(float ax, float ay, float ar, float bx, float by, flo
     const CapsuleSse sse(dx, dy, inv, ar, dr);
 #endif
 #if defined(FINBOOK_RASTER_AVX2)
-    const bool avx2 = hasAvx2();
+    const bool wide = hasAvx2();
+#else
+    const bool wide = false;
 #endif
     const bool slanted = std::abs(dy) > 1e-6f;
     const float invDy = slanted ? 1.0f / dy : 0.0f;
@@ -415,29 +425,32 @@ void StrokeRaster::capsule(float ax, float ay, float ar, float bx, float by, flo
             touch(rx0 - m_clip.left(), y - m_clip.top(), rx1 - m_clip.left(), y - m_clip.top());
         // Whole groups of eight (or four) for the vector loops: pixels past rx1 lie beyond the
         // reach, so they get zero coverage and leave the mask (and the untouched tiles) as they
-        // were.
-        const float py = cy - ay;
-        std::uint8_t *row = m_mask.data() + std::size_t(y - m_clip.top()) * std::size_t(m_width) +
-                            std::size_t(rx0 - m_clip.left());
-        const float px0 = float(rx0) + 0.5f - ax;
-        int i = 0;
-        int n = (rx1 - rx0 + 4) & ~3;
-#if defined(FINBOOK_RASTER_AVX2)
-        if (avx2) {
-            n = (rx1 - rx0 + 8) & ~7;
-            if (rx0 + n - 1 > m_clip.right())
-                n = (rx1 - rx0 + 4) & ~3;
-            i = coverAvx2(row, n, px0, py, dx, dy, inv, ar, dr);
-        }
-#endif
+        // were; at the clip's right edge, just the pixels there are.
+        const int group = wide ? 8 : 4;
+        int n = (rx1 - rx0 + group) & ~(group - 1);
         if (rx0 + n - 1 > m_clip.right())
             n = rx1 - rx0 + 1;
-#if defined(__SSE2__)
-        i += sse.cover(row + i, n - i, px0 + float(i), py);
-#endif
-        for (; i < n; ++i)
-            row[i] = std::max(row[i], coverage(px0 + float(i), py, dx, dy, inv, ar, dr));
+        m_spans.push_back({m_mask.data() + std::size_t(y - m_clip.top()) * std::size_t(m_width) +
+                               std::size_t(rx0 - m_clip.left()),
+                           float(rx0) + 0.5f - ax, cy - ay, n});
     }
+#if defined(FINBOOK_RASTER_AVX2)
+    if (wide) {
+        coverSpansAvx2(m_spans.data(), m_spans.size(), dx, dy, inv, ar, dr);
+        m_spans.clear();
+        return;
+    }
+#endif
+    for (const CoverSpan &span : m_spans) {
+        int i = 0;
+#if defined(__SSE2__)
+        i = sse.cover(span.row, span.n, span.px0, span.py);
+#endif
+        for (; i < span.n; ++i)
+            span.row[i] =
+                std::max(span.row[i], coverage(span.px0 + float(i), span.py, dx, dy, inv, ar, dr));
+    }
+    m_spans.clear();
 }
 
 void StrokeRaster::composite(QRgb color, qreal opacity)

@@ -20,6 +20,14 @@
 
 namespace finbook::ui {
 
+// One row of a capsule's pixels to cover: `n` mask bytes from `row`, the first pixel's centre
+// at (px0, py) from the capsule's start.
+struct CoverSpan {
+    std::uint8_t *row;
+    float px0, py;
+    int n;
+};
+
 class StrokeRaster {
 public:
     // Draws into `image` (Format_ARGB32_Premultiplied), never outside `deviceClip`. A canvas
@@ -75,6 +83,7 @@ private:
     std::vector<std::uint8_t> m_mask;
     std::vector<std::uint8_t> m_touched; // per 8×8 tile: has coverage
     std::vector<int> m_tiles;            // touched tile indices
+    std::vector<CoverSpan> m_spans;      // the rows of the capsule being drawn
     // The layer a frame is drawn into first (drawFrame), premultiplied, clip-relative, all zero
     // between frames; m_ghostActive while a frame is drawn into it. m_ghostReplace: each item
     // replaces what lies under it (a tinted frame) rather than going over it.
