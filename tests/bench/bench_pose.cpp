@@ -1,10 +1,12 @@
 // finbook-bench pose: the app's own drag path on a meshed drawing — pin targets in, deformed
 // stroke points out (model::solvePose: ARAP solve, embedding applied, strokes rebuilt) — for
-// an object of about 2,000 mesh vertices carrying 5,000 stroke points.
+// an object of about 2,000 mesh vertices carrying 5,000 stroke points (--points: more, as more
+// strokes packed closer over the same area).
 #include "bench.h"
 
 #include <finbook/model/deform_setup.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,20 +17,24 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// 25 wavy strokes of 200 points crossing a 700×420 area: one connected, character-sized object.
-StrokeGroup drawing()
+// Wavy strokes of 200 points crossing a 700×420 area, across and down by turns (25 for 5,000
+// points): one connected, character-sized object.
+StrokeGroup drawing(int points)
 {
     StrokeGroup g;
     g.id = 1;
-    for (int s = 0; s < 25; ++s) {
+    const int strokes = std::max(2, points / 200);
+    const float step = 25.0f / float(strokes); // the 25 strokes' spacing, shared out
+    for (int s = 0; s < strokes; ++s) {
         auto data = std::make_shared<StrokeData>();
         data->width = 4.0f;
         const bool across = s % 2 == 0;
         for (int i = 0; i < 200; ++i) {
             const float t = float(i) / 199.0f;
             const float wave = 12.0f * std::sin(t * 12.0f + float(s));
-            data->points.push_back(across ? StrokePoint{300 + 700 * t, 150 + 17.0f * s + wave, 1}
-                                          : StrokePoint{300 + 28.0f * s + wave, 150 + 420 * t, 1});
+            data->points.push_back(
+                across ? StrokePoint{300 + 700 * t, 150 + 17.0f * step * float(s) + wave, 1}
+                       : StrokePoint{300 + 28.0f * step * float(s) + wave, 150 + 420 * t, 1});
         }
         g.strokes.push_back({Id(100 + s), std::move(data)});
     }
@@ -41,9 +47,12 @@ StrokeGroup drawing()
 
 int benchPose(const QStringList &args)
 {
-    StrokeGroup g = drawing();
-    g.meshDensity =
-        args.size() >= 2 && args[0] == QLatin1String("--density") ? args[1].toDouble() : 1.0;
+    const auto option = [&args](const char *name, double fallback) {
+        const int at = int(args.indexOf(QLatin1String(name)));
+        return at >= 0 && at + 1 < args.size() ? args[at + 1].toDouble() : fallback;
+    };
+    StrokeGroup g = drawing(int(option("--points", 5000)));
+    g.meshDensity = option("--density", 1.0);
     DeformJob job;
     job.key = MeshKey::of(g, -1.0);
     job.rig = g.rig.atRest();
@@ -95,4 +104,4 @@ int benchPose(const QStringList &args)
 
 } // namespace
 
-FINBOOK_BENCH("pose", "[--density D]", benchPose);
+FINBOOK_BENCH("pose", "[--density D] [--points 5000]", benchPose);
