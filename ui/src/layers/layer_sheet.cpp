@@ -24,6 +24,14 @@ constexpr int kGrip = 3;  // pixels either side of a cel's end that grab its exp
 constexpr int kInset = 2; // a cel's block inside its row
 const QColor kCel(0xb8, 0xd0, 0xf0), kCurrentCel(0x70, 0xa0, 0xe8), kEmptyCel(0xe8, 0xe8, 0xe8);
 const QColor kPicked(0xf0, 0x90, 0x30), kDrop(0xd0, 0x30, 0x30);
+
+// A cel that shows nothing: no object, or objects without a stroke yet (a new layer's cel, an
+// inserted frame not drawn on) — drawn as an empty stretch.
+bool showsNothing(const model::Frame &cel)
+{
+    return std::all_of(cel.groups.begin(), cel.groups.end(),
+                       [](const model::StrokeGroup &g) { return g.strokes.empty(); });
+}
 } // namespace
 
 LayerSheet::LayerSheet(EditorState *state, LayerActions *actions, QWidget *parent)
@@ -207,11 +215,10 @@ void LayerSheet::paintRow(QPainter &painter, int layerIndex) const
         start = end;
         if (block.right() < visibleLeft || block.left() > visibleRight)
             continue;
-        painter.fillRect(block, cel.groups.empty()        ? kEmptyCel
-                                : (current && atPlayhead) ? kCurrentCel
-                                                          : kCel);
+        const bool blank = showsNothing(cel);
+        painter.fillRect(block, blank ? kEmptyCel : (current && atPlayhead) ? kCurrentCel : kCel);
         int textLeft = block.left() + 3;
-        if (!cel.groups.empty()) {
+        if (!blank) {
             const QPixmap thumb = m_thumbnails->thumbnail(cel.id);
             const QSize size = m_thumbnails->thumbnailSize();
             if (block.width() >= size.width() + 4) {
@@ -225,7 +232,7 @@ void LayerSheet::paintRow(QPainter &painter, int layerIndex) const
         painter.setPen(picked ? QPen(kPicked, 2) : QPen(QColor(0x50, 0x60, 0x70)));
         painter.drawRect(picked ? block.adjusted(1, 1, 0, 0) : block);
         painter.setPen(QColor(0x20, 0x28, 0x30));
-        if (!cel.groups.empty() && block.right() - textLeft > 10)
+        if (!blank && block.right() - textLeft > 10)
             painter.drawText(QRect(textLeft, block.top(), block.right() - textLeft, block.height()),
                              Qt::AlignVCenter | Qt::AlignLeft, QString::number(i + 1));
     }
