@@ -202,6 +202,34 @@ private slots:
         QCOMPARE(model::serializeFinbook(*doc), before);
     }
 
+    void timeIsInsertedOnThePickedCelsLayers()
+    {
+        ui::MainWindow window;
+        QVERIFY(showActive(window));
+        twoLayers(window);
+        model::Document *doc = window.document();
+        auto *sheet = window.findChild<ui::LayerSheet *>(QStringLiteral("layerSheet"));
+        // The front layer's cels 1 and 2 (ticks 1-2) picked: two ticks go in at tick 1 on the
+        // front layer only; the background keeps its six.
+        QTest::mouseClick(sheet, Qt::LeftButton, {}, cellPoint(sheet, 1, 1));
+        QTest::mouseClick(sheet, Qt::LeftButton, Qt::ShiftModifier, cellPoint(sheet, 1, 2));
+        QCOMPARE(window.editorState()->selectedCels().size(), std::size_t(2));
+        window.action(QStringLiteral("layer.insertTime"))->trigger();
+        QCOMPARE(doc->layerAt(1).cels[1].hold, 3);
+        QCOMPARE(model::celTicks(doc->layerAt(1).cels), qint64(5));
+        QCOMPARE(model::celTicks(doc->layerAt(0).cels), qint64(6));
+        // Delete Time takes the stretch the picked cels now span (ticks 1-4): both go.
+        window.action(QStringLiteral("layer.deleteTime"))->trigger();
+        QCOMPARE(doc->layerAt(1).cels.size(), std::size_t(1));
+        QCOMPARE(model::celTicks(doc->layerAt(1).cels), qint64(1));
+        QCOMPARE(model::celTicks(doc->layerAt(0).cels), qint64(6));
+        // Nothing picked: one tick at the playhead, on the current layer.
+        QVERIFY(window.editorState()->selectedCels().empty());
+        window.editorState()->setCurrentTick(0);
+        window.action(QStringLiteral("layer.insertTime"))->trigger();
+        QCOMPARE(doc->layerAt(1).cels[0].hold, 2);
+    }
+
     void layersAreReorderedByDraggingTheirName()
     {
         ui::MainWindow window;

@@ -151,32 +151,35 @@ bool CelEditing::paste(EditorState &state, QString *problem)
     return true;
 }
 
-bool CelEditing::insertTime(EditorState &state)
+namespace {
+// Insert or Delete Time (`edit`): on the picked cels' layers over the ticks they span, else one
+// tick at the playhead on the current layer.
+using TimeEdit = std::unique_ptr<QUndoCommand> (*)(model::Document *,
+                                                   const std::vector<model::Id> &, qint64, int);
+bool editTime(EditorState &state, TimeEdit edit)
 {
     model::Document *doc = state.document();
     const std::optional<PickedSpan> span = pickedSpan(state);
-    auto command =
-        span ? model::insertTimeCommand(doc, span->layers, span->first,
-                                        int(std::min<qint64>(span->ticks, 1 << 20)))
-             : model::insertTimeCommand(doc, {doc->currentLayerId()}, state.currentTick(), 1);
+    auto command = span ? edit(doc, span->layers, span->first,
+                               int(std::min<qint64>(span->ticks, model::kMaxHold)))
+                        : edit(doc, {doc->currentLayerId()}, state.currentTick(), 1);
     if (!command)
         return false;
     push(doc, std::move(command));
     return true;
 }
+} // namespace
+
+bool CelEditing::insertTime(EditorState &state)
+{
+    return editTime(state, &model::insertTimeCommand);
+}
 
 bool CelEditing::deleteTime(EditorState &state)
 {
-    model::Document *doc = state.document();
-    const std::optional<PickedSpan> span = pickedSpan(state);
-    auto command =
-        span ? model::deleteTimeCommand(doc, span->layers, span->first,
-                                        int(std::min<qint64>(span->ticks, 1 << 20)))
-             : model::deleteTimeCommand(doc, {doc->currentLayerId()}, state.currentTick(), 1);
-    if (!command)
+    if (!editTime(state, &model::deleteTimeCommand))
         return false;
-    push(doc, std::move(command));
-    state.setSelectedCels({});
+    state.setSelectedCels({}); // cels wholly inside the stretch are gone
     return true;
 }
 
