@@ -356,12 +356,24 @@ void StrokeRaster::drawStroke(const std::vector<model::StrokePoint> &points, QRg
     };
     // Segments are cut to the clip plus the widest pen first: a point millions of pixels away
     // (or at 1e30, past what an int holds) costs no more than one on the canvas.
+    // The same pass finds the stroke's extent: a stroke wholly beside this band (half of them,
+    // for each of two bands) is left before its segments are looked at.
     float widest = 0.0f;
-    for (const model::StrokePoint &p : points)
+    float minX = points.front().x, maxX = minX, minY = points.front().y, maxY = minY;
+    for (const model::StrokePoint &p : points) {
         widest = std::max(widest, radius(p));
+        minX = std::min(minX, p.x);
+        maxX = std::max(maxX, p.x);
+        minY = std::min(minY, p.y);
+        maxY = std::max(maxY, p.y);
+    }
     const double reach = double(std::max(widest, kMinRadius)) + 2.0;
     const QRectF clip = QRectF(m_clip).adjusted(-reach, -reach, reach, reach);
     const double left = clip.left(), right = clip.right(), top = clip.top(), bottom = clip.bottom();
+    // (NaN extents compare false and fall through to the per-segment checks.)
+    if (double(maxY * m_scale + m_oy) < top || double(minY * m_scale + m_oy) > bottom ||
+        double(maxX * m_scale + m_ox) < left || double(minX * m_scale + m_ox) > right)
+        return;
     const auto inside = [&](const QPointF &p) {
         return p.x() >= left && p.x() <= right && p.y() >= top && p.y() <= bottom;
     };
@@ -436,6 +448,22 @@ void StrokeRaster::capsule(float ax, float ay, float ar, float bx, float by, flo
     const bool small = (x1 - x0) < 2 * kTile && (y1 - y0) < 2 * kTile;
     if (small)
         touch(x0 - m_clip.left(), y0 - m_clip.top(), x1 - m_clip.left(), y1 - m_clip.top());
+#if defined(FINBOOK_RASTER_AVX2)
+    // A capsule at most eight pixels wide (a pen line's segment) takes one vector step a row
+    // whatever part of the row it reaches: its box is covered row by row, with no narrowing.
+    if (wide && x1 - x0 < 8 && x0 + 7 <= m_clip.right()) {
+        if (!small)
+            touch(x0 - m_clip.left(), y0 - m_clip.top(), x1 - m_clip.left(), y1 - m_clip.top());
+        for (int y = y0; y <= y1; ++y)
+            m_spans.push_back({m_mask.data() +
+                                   std::size_t(y - m_clip.top()) * std::size_t(m_width) +
+                                   std::size_t(x0 - m_clip.left()),
+                               float(x0) + 0.5f - ax, float(y) + 0.5f - ay, 8});
+        coverSpansAvx2(m_spans.data(), m_spans.size(), dx, dy, inv, ar, dr);
+        m_spans.clear();
+        return;
+    }
+#endif
     for (int y = y0; y <= y1; ++y) {
         // Only the columns the capsule can reach in this row: the part of the segment within
         // `reach` of the row, widened by `reach`. A long diagonal then costs its length times
