@@ -148,6 +148,13 @@ private slots:
         doc->undoStack()->undo();
         doc->undoStack()->undo();
         QCOMPARE(model::serializeFinbook(*doc), before);
+        // Ctrl-drag copies too (window managers that move windows on Alt-drag leave Ctrl).
+        drag(sheet, {cellPoint(sheet, 1, 0), cellPoint(sheet, 1, 1), cellPoint(sheet, 1, 3)},
+             Qt::LeftButton, Qt::ControlModifier);
+        QCOMPARE(doc->layerAt(1).cels.size(), std::size_t(4));
+        QCOMPARE(doc->layerAt(1).cels[0].id, front[0]);
+        doc->undoStack()->undo();
+        QCOMPARE(model::serializeFinbook(*doc), before);
         // A locked layer's cels stay where they are.
         window.action(QStringLiteral("layer.locked"))->trigger();
         const int locked = doc->undoStack()->count();
@@ -166,6 +173,11 @@ private slots:
         const QByteArray before = model::serializeFinbook(*doc);
         // Ctrl-click picks the first and the third cel of the front layer.
         QTest::mouseClick(sheet, Qt::LeftButton, {}, cellPoint(sheet, 1, 0));
+        QTest::mouseClick(sheet, Qt::LeftButton, Qt::ControlModifier, cellPoint(sheet, 1, 2));
+        QCOMPARE(state->selectedCels().size(), std::size_t(2));
+        // Ctrl-click on a picked cel drops it; again, picks it.
+        QTest::mouseClick(sheet, Qt::LeftButton, Qt::ControlModifier, cellPoint(sheet, 1, 2));
+        QCOMPARE(state->selectedCels().size(), std::size_t(1));
         QTest::mouseClick(sheet, Qt::LeftButton, Qt::ControlModifier, cellPoint(sheet, 1, 2));
         QCOMPARE(state->selectedCels().size(), std::size_t(2));
         QVERIFY(window.action(QStringLiteral("edit.copy"))->isEnabled());

@@ -319,10 +319,11 @@ void LayerSheet::pressCel(int layerIndex, int cel, Qt::KeyboardModifiers modifie
     const model::Id id = layer.cels[std::size_t(cel)].id;
     std::vector<model::Id> picked = m_state->selectedCels();
     if (modifiers & Qt::ControlModifier) {
+        // Ctrl on a picked cel drops it when the button comes up without a drag (a Ctrl-drag
+        // copies the picked cels, this one with them).
         const auto at = std::find(picked.begin(), picked.end(), id);
-        if (at != picked.end())
-            picked.erase(at);
-        else
+        m_dropOnRelease = at != picked.end();
+        if (!m_dropOnRelease)
             picked.push_back(id);
         m_anchor = id;
     } else if ((modifiers & Qt::ShiftModifier) && doc->frame(m_anchor)) {
@@ -433,7 +434,7 @@ void LayerSheet::mouseMoveEvent(QMouseEvent *event)
         const int row = std::clamp((p.y() - kRulerHeight) / kRowHeight, 0, count - 1);
         m_dropRows = (count - 1 - row) - m_pressLayer;
         m_dropTicks = (p.x() < kHeaderWidth ? 0 : tickAtX(p.x())) - m_pressTick;
-        m_dropCopy = event->modifiers() & Qt::AltModifier;
+        m_dropCopy = event->modifiers() & (Qt::AltModifier | Qt::ControlModifier);
         setCursor(m_dropCopy ? Qt::DragCopyCursor : Qt::DragMoveCursor);
         update();
         return;
@@ -469,13 +470,18 @@ void LayerSheet::mouseReleaseEvent(QMouseEvent *event)
         if (const model::Frame *f = doc->frame(m_dragFrame); f && f->hold != m_dragHold)
             doc->undoStack()->push(new model::SetFrameHoldCommand(doc, m_dragFrame, m_dragHold));
         break;
-    case Drag::CelsPending: // a click on a picked cel, no drag: that cel alone
-        if (!(event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier)) &&
-            doc->frame(m_dragFrame))
+    case Drag::CelsPending: // a click, no drag: on a picked cel, that cel alone
+        if (m_dropOnRelease) {
+            std::vector<model::Id> picked = m_state->selectedCels();
+            picked.erase(std::remove(picked.begin(), picked.end(), m_dragFrame), picked.end());
+            m_state->setSelectedCels(std::move(picked));
+        } else if (!(event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier)) &&
+                   doc->frame(m_dragFrame)) {
             m_state->setSelectedCels({m_dragFrame});
+        }
         break;
     case Drag::Cels:
-        m_dropCopy = event->modifiers() & Qt::AltModifier;
+        m_dropCopy = event->modifiers() & (Qt::AltModifier | Qt::ControlModifier);
         if (auto command = model::rearrangeCelsCommand(doc, m_state->selectedCels(), m_dropRows,
                                                        m_dropTicks, m_dropCopy)) {
             doc->undoStack()->push(command.release());
@@ -494,6 +500,7 @@ void LayerSheet::mouseReleaseEvent(QMouseEvent *event)
         break;
     }
     m_layerDrop = -1;
+    m_dropOnRelease = false;
     update();
 }
 

@@ -8,7 +8,8 @@
 //  - a cel: picks it (Ctrl: adds or drops it, Shift: every cel from the last picked one to it,
 //    across rows), makes its layer current and puts the playhead there; dragging picked cels
 //    moves them to the boundary between cels nearest where they land, in the row they land on
-//    (a marker shows it), Alt-dragging copies them; one undo step;
+//    (a marker shows it), Alt- or Ctrl-dragging copies them (window managers that move windows
+//    on Alt-drag leave Ctrl); one undo step;
 //  - the right end of a cel: drags its exposure (one undo step when released);
 //  - a layer's name: dragged up or down, reorders the layer; double-click: Layer Properties;
 //  - right-click: the Layer menu; Ctrl+wheel: zoom in time.
@@ -80,10 +81,11 @@ private:
     model::Id m_anchor = model::kNoId;    // the cel a Shift-click picks from
     int m_pressLayer = -1;                // the row a drag of cels or of a layer started on
     qint64 m_pressTick = 0;
-    int m_dropRows = 0;      // cels dragged this many rows up (negative: down)
-    qint64 m_dropTicks = 0;  // and this many ticks later
-    bool m_dropCopy = false; // Alt held: copies
-    int m_layerDrop = -1;    // a dragged layer goes to this index
+    int m_dropRows = 0;           // cels dragged this many rows up (negative: down)
+    qint64 m_dropTicks = 0;       // and this many ticks later
+    bool m_dropCopy = false;      // Alt or Ctrl held: copies
+    bool m_dropOnRelease = false; // a Ctrl-click on a picked cel: dropped unless it drags
+    int m_layerDrop = -1;         // a dragged layer goes to this index
 };
 
 } // namespace finbook::ui
