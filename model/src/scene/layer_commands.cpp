@@ -387,10 +387,12 @@ std::unique_ptr<QUndoCommand> rearrangeCelsCommand(Document *doc, const std::vec
             new InsertEmptyCelCommand(doc, source.id, 0, 1, macro.get());
     }
     bool changed = false;
-    for (const auto &[layerId, order] : finalOrder)
+    for (const auto &target : finalOrder) {
+        const Id layerId = target.first;
+        const std::vector<Id> &order = target.second;
         for (std::size_t p = 0; p < order.size(); ++p) {
             auto into = std::find_if(now.begin(), now.end(),
-                                     [&](const auto &n) { return n.first == layerId; });
+                                     [layerId](const auto &n) { return n.first == layerId; });
             if (p < into->second.size() && into->second[p] == order[p])
                 continue;
             for (auto &[id, cels] : now) // simulate the move
@@ -400,6 +402,7 @@ std::unique_ptr<QUndoCommand> rearrangeCelsCommand(Document *doc, const std::vec
             new MoveCelCommand(doc, order[p], layerId, int(p), macro.get());
             changed = true;
         }
+    }
     return changed ? std::move(macro) : nullptr;
 }
 
