@@ -218,15 +218,13 @@ void LayerSheet::paintRow(QPainter &painter, int layerIndex) const
         const bool blank = showsNothing(cel);
         painter.fillRect(block, blank ? kEmptyCel : (current && atPlayhead) ? kCurrentCel : kCel);
         int textLeft = block.left() + 3;
-        if (!blank) {
-            const QPixmap thumb = m_thumbnails->thumbnail(cel.id);
-            const QSize size = m_thumbnails->thumbnailSize();
-            if (block.width() >= size.width() + 4) {
-                const QRect at(block.left() + 2, block.top() + 1, size.width(), size.height());
-                if (!thumb.isNull())
-                    painter.drawPixmap(at, thumb);
-                textLeft = at.right() + 3;
-            }
+        // Only a block the drawing fits in asks for it (a thumbnail is rendered when asked).
+        if (const QSize size = m_thumbnails->thumbnailSize();
+            !blank && block.width() >= size.width() + 4) {
+            const QRect at(block.left() + 2, block.top() + 1, size.width(), size.height());
+            if (const QPixmap thumb = m_thumbnails->thumbnail(cel.id); !thumb.isNull())
+                painter.drawPixmap(at, thumb);
+            textLeft = at.right() + 3;
         }
         const bool picked = isPicked(cel.id);
         painter.setPen(picked ? QPen(kPicked, 2) : QPen(QColor(0x50, 0x60, 0x70)));
