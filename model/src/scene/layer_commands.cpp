@@ -274,13 +274,23 @@ void InsertEmptyCelCommand::undo()
 
 int celBoundaryNear(const std::vector<Frame> &cels, qint64 tick)
 {
-    int best = 0;
+    return celBoundaryStaying(cels, {}, tick).index;
+}
+
+CelBoundary celBoundaryStaying(const std::vector<Frame> &cels, const std::vector<Id> &leaving,
+                               qint64 tick)
+{
+    CelBoundary best;
     qint64 start = 0, bestDistance = std::abs(tick);
-    for (std::size_t i = 0; i < cels.size(); ++i) {
-        start += std::clamp(cels[i].hold, 1, kMaxHold);
+    int staying = 0;
+    for (const Frame &f : cels) {
+        if (std::find(leaving.begin(), leaving.end(), f.id) != leaving.end())
+            continue;
+        start += std::clamp(f.hold, 1, kMaxHold);
+        ++staying;
         if (std::abs(tick - start) < bestDistance) {
             bestDistance = std::abs(tick - start);
-            best = int(i) + 1;
+            best = {staying, start};
         }
     }
     return best;
@@ -315,19 +325,6 @@ std::vector<RowOfCels> rowsOf(const Document &doc, const std::vector<Id> &celIds
     return rows;
 }
 
-// The boundary nearest `tick` in `cels` once the cels `leaving` are gone, as an index there.
-int boundaryWithout(const std::vector<Frame> &cels, const std::vector<Id> &leaving, qint64 tick)
-{
-    std::vector<Frame> staying;
-    for (const Frame &f : cels)
-        if (std::find(leaving.begin(), leaving.end(), f.id) == leaving.end()) {
-            Frame stub;
-            stub.id = f.id;
-            stub.hold = f.hold;
-            staying.push_back(std::move(stub));
-        }
-    return celBoundaryNear(staying, tick);
-}
 } // namespace
 
 std::unique_ptr<QUndoCommand> rearrangeCelsCommand(Document *doc, const std::vector<Id> &celIds,
@@ -369,7 +366,7 @@ std::unique_ptr<QUndoCommand> rearrangeCelsCommand(Document *doc, const std::vec
         now.emplace_back(l.id, idsOf(l));
     for (const RowOfCels &row : rows) {
         const Layer &target = doc->layerAt(row.layerIndex + layerDelta);
-        const int at = boundaryWithout(target.cels, moving, row.firstTick + tickDelta);
+        const int at = celBoundaryStaying(target.cels, moving, row.firstTick + tickDelta).index;
         std::vector<Id> order;
         for (const Frame &f : target.cels)
             if (std::find(moving.begin(), moving.end(), f.id) == moving.end())

@@ -201,6 +201,9 @@ StrokeRaster::StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale,
     , m_width(std::max(0, m_clip.width()))
     , m_height(std::max(0, m_clip.height()))
     , m_tilesX((m_width + kTile - 1) / kTile)
+#if defined(FINBOOK_RASTER_AVX2)
+    , m_wide(hasAvx2())
+#endif
 {
     const int tilesY = (m_height + kTile - 1) / kTile;
     m_mask = std::move(recycledMask);
@@ -433,78 +436,63 @@ void StrokeRaster::capsule(float ax, float ay, float ar, float bx, float by, flo
     const float dx = bx - ax, dy = by - ay, dr = br - ar;
     const float len2 = dx * dx + dy * dy;
     const float inv = len2 > 1e-12f ? 1.0f / len2 : 0.0f;
-#if defined(__SSE2__)
-    const CapsuleSse sse(dx, dy, inv, ar, dr);
-#endif
-#if defined(FINBOOK_RASTER_AVX2)
-    const bool wide = hasAvx2();
-#else
-    const bool wide = false;
-#endif
     const bool slanted = std::abs(dy) > 1e-6f;
     const float invDy = slanted ? 1.0f / dy : 0.0f;
-    // A small capsule (most of a pen line's: a few pixels) marks its box's tiles at once; a
-    // long one marks, row by row, only the tiles it reaches.
-    const bool small = (x1 - x0) < 2 * kTile && (y1 - y0) < 2 * kTile;
-    if (small)
-        touch(x0 - m_clip.left(), y0 - m_clip.top(), x1 - m_clip.left(), y1 - m_clip.top());
-#if defined(FINBOOK_RASTER_AVX2)
     // A capsule at most eight pixels wide (a pen line's segment) takes one vector step a row
     // whatever part of the row it reaches: its box is covered row by row, with no narrowing.
-    if (wide && x1 - x0 < 8 && x0 + 7 <= m_clip.right()) {
-        if (!small)
-            touch(x0 - m_clip.left(), y0 - m_clip.top(), x1 - m_clip.left(), y1 - m_clip.top());
-        for (int y = y0; y <= y1; ++y)
-            m_spans.push_back({m_mask.data() +
-                                   std::size_t(y - m_clip.top()) * std::size_t(m_width) +
-                                   std::size_t(x0 - m_clip.left()),
-                               float(x0) + 0.5f - ax, float(y) + 0.5f - ay, 8});
-        coverSpansAvx2(m_spans.data(), m_spans.size(), dx, dy, inv, ar, dr);
-        m_spans.clear();
-        return;
-    }
-#endif
+    const bool narrow = m_wide && x1 - x0 < 8 && x0 + 7 <= m_clip.right();
+    // A small or narrow capsule marks its box's tiles at once; a long one marks, row by row,
+    // only the tiles it reaches.
+    const bool box = narrow || ((x1 - x0) < 2 * kTile && (y1 - y0) < 2 * kTile);
+    if (box)
+        touch(x0 - m_clip.left(), y0 - m_clip.top(), x1 - m_clip.left(), y1 - m_clip.top());
     for (int y = y0; y <= y1; ++y) {
-        // Only the columns the capsule can reach in this row: the part of the segment within
-        // `reach` of the row, widened by `reach`. A long diagonal then costs its length times
-        // its width, not its bounding box (a zigzag across the canvas cost the canvas per
-        // segment).
         const float cy = float(y) + 0.5f;
-        float lo = std::min(ax, bx), hi = std::max(ax, bx);
-        if (slanted) {
-            float t0 = (cy - reach - ay) * invDy, t1 = (cy + reach - ay) * invDy;
-            if (t0 > t1)
-                std::swap(t0, t1);
-            t0 = std::max(t0, 0.0f);
-            t1 = std::min(t1, 1.0f);
-            if (t0 > t1)
+        int rx0 = x0, n = 8;
+        if (!narrow) {
+            // Only the columns the capsule can reach in this row: the part of the segment
+            // within `reach` of the row, widened by `reach`. A long diagonal then costs its
+            // length times its width, not its bounding box (a zigzag across the canvas cost the
+            // canvas per segment).
+            float lo = std::min(ax, bx), hi = std::max(ax, bx);
+            if (slanted) {
+                float t0 = (cy - reach - ay) * invDy, t1 = (cy + reach - ay) * invDy;
+                if (t0 > t1)
+                    std::swap(t0, t1);
+                t0 = std::max(t0, 0.0f);
+                t1 = std::min(t1, 1.0f);
+                if (t0 > t1)
+                    continue;
+                lo = std::min(ax + t0 * dx, ax + t1 * dx);
+                hi = std::max(ax + t0 * dx, ax + t1 * dx);
+            }
+            rx0 = std::max(x0, int(std::ceil(lo - reach - 0.5f)));
+            const int rx1 = std::min(x1, int(std::floor(hi + reach - 0.5f)));
+            if (rx0 > rx1)
                 continue;
-            lo = std::min(ax + t0 * dx, ax + t1 * dx);
-            hi = std::max(ax + t0 * dx, ax + t1 * dx);
+            if (!box)
+                touch(rx0 - m_clip.left(), y - m_clip.top(), rx1 - m_clip.left(), y - m_clip.top());
+            // Whole groups of eight (or four) for the vector loops: pixels past rx1 lie beyond
+            // the reach, so they get zero coverage and leave the mask (and the untouched tiles)
+            // as they were; at the clip's right edge, just the pixels there are.
+            const int group = m_wide ? 8 : 4;
+            n = (rx1 - rx0 + group) & ~(group - 1);
+            if (rx0 + n - 1 > m_clip.right())
+                n = rx1 - rx0 + 1;
         }
-        const int rx0 = std::max(x0, int(std::ceil(lo - reach - 0.5f)));
-        const int rx1 = std::min(x1, int(std::floor(hi + reach - 0.5f)));
-        if (rx0 > rx1)
-            continue;
-        if (!small)
-            touch(rx0 - m_clip.left(), y - m_clip.top(), rx1 - m_clip.left(), y - m_clip.top());
-        // Whole groups of eight (or four) for the vector loops: pixels past rx1 lie beyond the
-        // reach, so they get zero coverage and leave the mask (and the untouched tiles) as they
-        // were; at the clip's right edge, just the pixels there are.
-        const int group = wide ? 8 : 4;
-        int n = (rx1 - rx0 + group) & ~(group - 1);
-        if (rx0 + n - 1 > m_clip.right())
-            n = rx1 - rx0 + 1;
         m_spans.push_back({m_mask.data() + std::size_t(y - m_clip.top()) * std::size_t(m_width) +
                                std::size_t(rx0 - m_clip.left()),
                            float(rx0) + 0.5f - ax, cy - ay, n});
     }
 #if defined(FINBOOK_RASTER_AVX2)
-    if (wide) {
+    if (m_wide) {
         coverSpansAvx2(m_spans.data(), m_spans.size(), dx, dy, inv, ar, dr);
         m_spans.clear();
         return;
     }
+#endif
+#if defined(__SSE2__)
+    const CapsuleSse sse(dx, dy, inv, ar, dr);
 #endif
     for (const CoverSpan &span : m_spans) {
         int i = 0;
@@ -526,9 +514,7 @@ void StrokeRaster::composite(QRgb color, qreal opacity)
                              std::uint32_t(alpha));
     const bool ghost = m_ghostActive;
     const bool opaque = qAlpha(src) == 255;
-#if defined(FINBOOK_RASTER_AVX2)
-    const bool wide = hasAvx2();
-#endif
+
     for (int t : m_tiles) {
         m_touched[std::size_t(t)] = 0;
         const int tx = (t % m_tilesX) * kTile, ty = (t / m_tilesX) * kTile;
@@ -548,7 +534,7 @@ void StrokeRaster::composite(QRgb color, qreal opacity)
                       : reinterpret_cast<QRgb *>(m_bits + qsizetype(y + m_clip.top()) * m_stride) +
                             m_clip.left();
 #if defined(FINBOOK_RASTER_AVX2)
-            if (wide && xEnd - tx == kTile) {
+            if (m_wide && xEnd - tx == kTile) {
                 blendEightAvx2(dst + tx, mask + tx, src, ghost && m_ghostReplace);
                 continue;
             }

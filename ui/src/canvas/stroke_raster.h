@@ -78,6 +78,7 @@ private:
     int m_width;
     int m_height;
     int m_tilesX;
+    bool m_wide = false; // the processor has AVX2: eight pixels a step (stroke_raster.cpp)
     // Coverage of the stroke being drawn, 0..255, over the clip rect (mask and tiles are in
     // clip-relative coordinates).
     std::vector<std::uint8_t> m_mask;

@@ -50,16 +50,18 @@ std::optional<PickedSpan> pickedSpan(const EditorState &state)
     PickedSpan span;
     qint64 last = -1;
     span.first = std::numeric_limits<qint64>::max();
+    const auto &ids = state.selectedCels();
     for (const model::Layer &layer : doc->layers()) {
         bool picked = false;
-        for (std::size_t i = 0; i < layer.cels.size(); ++i) {
-            const auto &ids = state.selectedCels();
-            if (std::find(ids.begin(), ids.end(), layer.cels[i].id) == ids.end())
-                continue;
-            picked = true;
-            const qint64 start = model::celStart(layer.cels, int(i));
-            span.first = std::min(span.first, start);
-            last = std::max(last, model::celStart(layer.cels, int(i) + 1));
+        qint64 start = 0;
+        for (const model::Frame &cel : layer.cels) {
+            const qint64 end = start + std::clamp(cel.hold, 1, model::kMaxHold);
+            if (std::find(ids.begin(), ids.end(), cel.id) != ids.end()) {
+                picked = true;
+                span.first = std::min(span.first, start);
+                last = std::max(last, end);
+            }
+            start = end;
         }
         if (picked)
             span.layers.push_back(layer.id);

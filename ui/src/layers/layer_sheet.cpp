@@ -45,12 +45,7 @@ LayerSheet::LayerSheet(EditorState *state, LayerActions *actions, QWidget *paren
     model::Document *doc = state->document();
     // The blocks show each cel's drawing on the page, whatever the camera does.
     m_thumbnails->setShowsShot(false);
-    const QSizeF page(doc->settings().canvasSize);
-    const int thumbHeight = kRowHeight - 2 * kInset - 2;
-    m_thumbnails->setThumbnailSize(
-        QSize(std::clamp(int(thumbHeight * page.width() / std::max(1.0, page.height())), 8, 64),
-              thumbHeight),
-        devicePixelRatioF());
+    fitThumbnails();
     m_thumbnails->setCapacity(512);
     connect(m_thumbnails, &ThumbnailCache::thumbnailRendered, this, qOverload<>(&QWidget::update));
     connect(m_thumbnails, &ThumbnailCache::thumbnailsInvalidated, this,
@@ -64,17 +59,22 @@ LayerSheet::LayerSheet(EditorState *state, LayerActions *actions, QWidget *paren
         connect(doc, signal, this, changed);
     connect(doc, &model::Document::celsChanged, this, changed);
     connect(doc, &model::Document::frameChanged, this, qOverload<>(&QWidget::update));
-    connect(doc, &model::Document::settingsChanged, this, [this, doc] {
-        const QSizeF size(doc->settings().canvasSize);
-        const int h = kRowHeight - 2 * kInset - 2;
-        m_thumbnails->setThumbnailSize(
-            QSize(std::clamp(int(h * size.width() / std::max(1.0, size.height())), 8, 64), h),
-            devicePixelRatioF());
-    });
+    connect(doc, &model::Document::settingsChanged, this, &LayerSheet::fitThumbnails);
     connect(state, &EditorState::tickChanged, this, qOverload<>(&QWidget::update));
     connect(state, &EditorState::currentFrameChanged, this, qOverload<>(&QWidget::update));
     connect(state, &EditorState::celSelectionChanged, this, qOverload<>(&QWidget::update));
     relayout();
+}
+
+void LayerSheet::fitThumbnails()
+{
+    // As tall as a block allows, as wide as the page's proportions make it (the cache keeps
+    // its thumbnails when the size stays).
+    const QSizeF page(m_state->document()->settings().canvasSize);
+    const int height = kRowHeight - 2 * kInset - 2;
+    m_thumbnails->setThumbnailSize(
+        QSize(std::clamp(int(height * page.width() / std::max(1.0, page.height())), 8, 64), height),
+        devicePixelRatioF());
 }
 
 QSize LayerSheet::sizeHint() const
@@ -250,36 +250,31 @@ void LayerSheet::paintCelDrop(QPainter &painter) const
         const model::Layer &layer = doc->layerAt(l);
         if (layer.properties.locked)
             continue;
-        qint64 first = -1;
-        for (std::size_t i = 0; i < layer.cels.size(); ++i) {
-            if (!isPicked(layer.cels[i].id))
-                continue;
-            const qint64 start = model::celStart(layer.cels, int(i));
-            first = first < 0 ? start : first;
-            const int to = l + m_dropRows;
-            if (to < 0 || to >= doc->layerCount())
-                continue;
-            const QRect row = rowRect(to);
-            painter.drawRect(
-                QRect(xOfTick(start + m_dropTicks), row.top() + kInset,
-                      xOfTick(model::celStart(layer.cels, int(i) + 1)) - xOfTick(start) - 1,
-                      row.height() - 2 * kInset));
-        }
         const int to = l + m_dropRows;
-        if (first < 0 || to < 0 || to >= doc->layerCount() || doc->layerAt(to).properties.locked)
-            continue;
-        // The boundary they land at, among the cels that stay there.
-        std::vector<model::Frame> staying;
-        for (const model::Frame &f : doc->layerAt(to).cels)
-            if (m_dropCopy || std::find(picked.begin(), picked.end(), f.id) == picked.end()) {
-                model::Frame stub;
-                stub.hold = f.hold;
-                staying.push_back(std::move(stub));
+        const bool lands = to >= 0 && to < doc->layerCount();
+        qint64 first = -1, start = 0;
+        for (const model::Frame &cel : layer.cels) {
+            const qint64 end = start + std::clamp(cel.hold, 1, model::kMaxHold);
+            if (isPicked(cel.id)) {
+                first = first < 0 ? start : first;
+                if (lands) {
+                    const QRect row = rowRect(to);
+                    painter.drawRect(QRect(xOfTick(start + m_dropTicks), row.top() + kInset,
+                                           xOfTick(end) - xOfTick(start) - 1,
+                                           row.height() - 2 * kInset));
+                }
             }
-        const int at = model::celBoundaryNear(staying, first + m_dropTicks);
-        const int x = xOfTick(model::celStart(staying, at));
+            start = end;
+        }
+        if (first < 0 || !lands || doc->layerAt(to).properties.locked)
+            continue;
+        // The boundary they land at, among the cels that stay there (as the drop computes it).
+        const qint64 at = model::celBoundaryStaying(doc->layerAt(to).cels,
+                                                    m_dropCopy ? std::vector<model::Id>{} : picked,
+                                                    first + m_dropTicks)
+                              .tick;
         const QRect row = rowRect(to);
-        painter.fillRect(QRect(x - 1, row.top(), 3, row.height()), kDrop);
+        painter.fillRect(QRect(xOfTick(at) - 1, row.top(), 3, row.height()), kDrop);
     }
 }
 
@@ -336,10 +331,13 @@ void LayerSheet::pressCel(int layerIndex, int cel, Qt::KeyboardModifiers modifie
         picked.clear();
         for (int l = std::min(anchorLayer, layerIndex); l <= std::max(anchorLayer, layerIndex);
              ++l) {
-            const std::vector<model::Frame> &cels = doc->layerAt(l).cels;
-            for (int i = 0; i < int(cels.size()); ++i)
-                if (model::celStart(cels, i) < to && model::celStart(cels, i + 1) > from)
-                    picked.push_back(cels[std::size_t(i)].id);
+            qint64 start = 0;
+            for (const model::Frame &c : doc->layerAt(l).cels) {
+                const qint64 end = start + std::clamp(c.hold, 1, model::kMaxHold);
+                if (start < to && end > from)
+                    picked.push_back(c.id);
+                start = end;
+            }
         }
     } else {
         if (!isPicked(id)) // a picked cel stays picked with the others, to be dragged

@@ -119,6 +119,14 @@ private:
 // Where cels dropped or pasted at `tick` go in a layer: the index of the boundary between cels
 // nearest to it (0 = before the first, size = after the last).
 int celBoundaryNear(const std::vector<Frame> &cels, qint64 tick);
+// The same among the cels that stay once `leaving` (cels being moved away) are gone: the
+// boundary's index among those and the tick it is at (what a drag's marker shows).
+struct CelBoundary {
+    int index = 0;
+    qint64 tick = 0;
+};
+CelBoundary celBoundaryStaying(const std::vector<Frame> &cels, const std::vector<Id> &leaving,
+                               qint64 tick);
 
 // A dope sheet's drag of the cels `celIds` (on any layers) by `layerDelta` rows (to the layer
 // that many above: +1 is the next one in front) and `tickDelta` ticks. The cels of each layer

@@ -64,6 +64,7 @@ private:
     void pressCel(int layerIndex, int cel, Qt::KeyboardModifiers modifiers);
     bool isPicked(model::Id cel) const;
     void relayout();
+    void fitThumbnails(); // to the row height and the page's proportions
     void paintRuler(QPainter &painter) const;
     void paintRow(QPainter &painter, int layerIndex) const;
     void paintCelDrop(QPainter &painter) const;
