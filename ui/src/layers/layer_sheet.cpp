@@ -114,6 +114,12 @@ int LayerSheet::layerAtY(int y) const
     return row >= count ? -1 : count - 1 - row;
 }
 
+int LayerSheet::nearestLayerAtY(int y) const
+{
+    const int count = m_state->document()->layerCount();
+    return count - 1 - std::clamp((y - kRulerHeight) / kRowHeight, 0, count - 1);
+}
+
 int LayerSheet::xOfTick(qint64 tick) const
 {
     return kHeaderWidth + int(std::min<qint64>(tick * m_tickWidth, 1 << 24));
@@ -426,9 +432,7 @@ void LayerSheet::mouseMoveEvent(QMouseEvent *event)
         if (m_drag == Drag::CelsPending && !far)
             return;
         m_drag = Drag::Cels;
-        const int count = m_state->document()->layerCount();
-        const int row = std::clamp((p.y() - kRulerHeight) / kRowHeight, 0, count - 1);
-        m_dropRows = (count - 1 - row) - m_pressLayer;
+        m_dropRows = nearestLayerAtY(p.y()) - m_pressLayer;
         m_dropTicks = (p.x() < kHeaderWidth ? 0 : tickAtX(p.x())) - m_pressTick;
         m_dropCopy = event->modifiers() & (Qt::AltModifier | Qt::ControlModifier);
         setCursor(m_dropCopy ? Qt::DragCopyCursor : Qt::DragMoveCursor);
@@ -440,9 +444,7 @@ void LayerSheet::mouseMoveEvent(QMouseEvent *event)
         if (m_drag == Drag::LayerPending && !far)
             return;
         m_drag = Drag::Layer;
-        const int count = m_state->document()->layerCount();
-        const int row = std::clamp((p.y() - kRulerHeight) / kRowHeight, 0, count - 1);
-        m_layerDrop = count - 1 - row;
+        m_layerDrop = nearestLayerAtY(p.y());
         setCursor(Qt::SizeVerCursor);
         update();
         return;

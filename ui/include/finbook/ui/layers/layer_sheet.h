@@ -55,7 +55,8 @@ protected:
     void wheelEvent(QWheelEvent *event) override;
 
 private:
-    int layerAtY(int y) const; // layer index, −1 outside the rows
+    int layerAtY(int y) const;        // layer index, −1 outside the rows
+    int nearestLayerAtY(int y) const; // the row's layer, or the nearest one outside the rows
     qint64 tickAtX(int x) const;
     // The cel of layer `layerIndex` whose right end is within a few pixels of x, or −1.
     int celEndNear(int layerIndex, int x) const;
