@@ -92,6 +92,7 @@ private slots:
     void automaticGapClosesSmallOpening();
     void fingersSideBySideStayApart();
     void fingersInOneOutlineStayApart();
+    void tubeRubbedAcrossStaysOneFace();
     void spiralMakesNoFaceWhenTurnsAreFar();
     void tightSpiralStaysFinite();
     void figureEightMakesTwoFaces();
@@ -227,6 +228,26 @@ void TestRegions::fingersInOneOutlineStayApart()
     QCOMPARE(faceAt(r, 10, 20), hand); // the fingers belong to the hand
     QCOMPARE(faceAt(r, 33, 20), hand);
     QCOMPARE(faceAt(r, 21.5, 20), -1); // the slit between them stays open
+}
+
+void TestRegions::tubeRubbedAcrossStaysOneFace()
+{
+    // An arm drawn as one closed outline, 28 px wide, that the eraser rubbed across: two
+    // U-shaped pieces whose ends face each other head-on over 12 px gaps. Each piece's mouth
+    // (28 px, under the 30 px gap, but a turn of 90°) must not be closed before the two
+    // head-on closures, which lie 28 px apart: closer than a gap, yet not two fingers.
+    const Eigen::MatrixX2d upper = polyline({{94, 0}, {0, 0}, {0, 28}, {94, 28}});
+    const Eigen::MatrixX2d lower = polyline({{106, 0}, {200, 0}, {200, 28}, {106, 28}});
+    const Regions r = regionsOf({{upper, 3.0}, {lower, 3.0}}, 30.0);
+    checkRegions(r, 2);
+    QCOMPARE(int(r.faces.size()), 1);
+    QCOMPARE(int(r.closures.size()), 2);
+    const int arm = faceAt(r, 50, 14);
+    QVERIFY(arm >= 0);
+    QCOMPARE(faceAt(r, 100, 14), arm); // across the rub
+    QCOMPARE(faceAt(r, 150, 14), arm);
+    for (const GapClosure &g : r.closures)
+        QVERIFY(g.fromStroke != g.toStroke); // from piece to piece, not across a mouth
 }
 
 void TestRegions::spiralMakesNoFaceWhenTurnsAreFar()

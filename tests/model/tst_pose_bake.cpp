@@ -294,6 +294,8 @@ private slots:
     void hiddenLinesBoundNoRegion();
     void randomPosedEditsUndoAndRedoExactly();
     void fillAllLeavesFacesOfClosuresAlone();
+    void eraseAcrossAnElbowKeepsTheArmsFill_data();
+    void eraseAcrossAnElbowKeepsTheArmsFill();
     void cutOutClosersNeverLieAlongEachOther();
     void realDrawingsKeepTheirColours_data();
     void realDrawingsKeepTheirColours();
@@ -682,6 +684,96 @@ void TestPoseBake::fillAllLeavesFacesOfClosuresAlone()
     doc.undoStack()->push(
         new AddStrokeCommand(&doc, g, polylineStroke(squareCorners(QRectF(500, 250, 80, 80)))));
     QVERIFY(fillAllRegionsCommand(&doc, g, 0xffe03020));
+}
+
+void TestPoseBake::eraseAcrossAnElbowKeepsTheArmsFill_data()
+{
+    QTest::addColumn<int>("mode");
+    QTest::addColumn<double>("degrees");
+    for (double degrees : {0.0, 40.0, 100.0})
+        for (int mode :
+             {int(SkinningMode::Rigid), int(SkinningMode::LinearBlend), int(SkinningMode::CutOut)})
+            QTest::addRow("mode %d, %g deg", mode, degrees) << mode << degrees;
+}
+
+// Walkthrough of issue 45: a rub across a posed arm right at its elbow emptied the whole arm's
+// fill. The rub breaks both sides of the outline head-on, gaps shorter than Close gaps; gap
+// closing took each cut end's mouth (a closure within one line, across the arm) before the
+// two head-on closures between the pieces, which then made a slot too narrow for a pair. Now
+// every elbow, at rest and posed in each skinning, keeps the arm's fill outside the rub.
+void TestPoseBake::eraseAcrossAnElbowKeepsTheArmsFill()
+{
+    QFETCH(int, mode);
+    QFETCH(double, degrees);
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, g, polylineStroke(ellipse({400, 300}, 70, 110, 48))));
+    doc.undoStack()->push(new AddStrokeCommand(
+        &doc, g, polylineStroke(limb({360, 230}, std::numbers::pi * 0.85, 190, 28))));
+    doc.undoStack()->push(new AddStrokeCommand(
+        &doc, g, polylineStroke(limb({440, 230}, std::numbers::pi * 0.15, 190, 28))));
+    if (auto all = fillAllRegionsCommand(&doc, g, 0xff808080))
+        doc.undoStack()->push(all.release());
+    std::vector<Fill> fills = doc.group(g)->fills;
+    for (std::size_t i = 0; i < fills.size(); ++i)
+        fills[i].color = distinctColour(i);
+    doc.undoStack()->push(new SetFillsCommand(&doc, g, fills, QStringLiteral("Colours")));
+    const double closeGap = doc.settings().closeGap;
+    Rig rig = skeletonBend(*doc.group(g), closeGap, SkinningMode(mode), degrees);
+    QVERIFY(!rig.empty());
+    for (int j = 0; j < rig.skeleton.jointCount(); ++j) { // bend the elbows too
+        const int parent = rig.skeleton.parent[std::size_t(j)];
+        if (parent >= 0 && parent != rig.skeleton.root && !rig.skeleton.isLimbBase(parent))
+            rig.skeleton.angles[std::size_t(j)] = -degrees * 0.6 * std::numbers::pi / 180.0;
+    }
+    QCOMPARE(poseObject(doc, g, rig), QString());
+    const SkeletonRig &skeleton = doc.group(g)->rig.skeleton;
+    const std::vector<QPointF> joints = skeleton.posedJoints();
+    int rubs = 0;
+    for (int j = 0; j < skeleton.jointCount(); ++j) {
+        const int parent = skeleton.parent[std::size_t(j)];
+        if (parent < 0 || parent == skeleton.root || skeleton.isLimbBase(parent))
+            continue; // an elbow: a joint along a limb past its base, at the bone to `j`
+        const QPointF at = joints[std::size_t(parent)];
+        const auto unit = [](QPointF d) { return d / std::hypot(d.x(), d.y()); };
+        // Across the limb where it bends: square to the mean of its two bones.
+        const QPointF along =
+            unit(unit(at - joints[std::size_t(skeleton.parent[std::size_t(parent)])]) +
+                 unit(joints[std::size_t(j)] - at));
+        const QPointF across(-along.y() * 20, along.x() * 20);
+        const std::vector<QPointF> rub{at - across, at + across};
+        const Shown before = shown(doc, g);
+        doc.undoStack()->beginMacro(QStringLiteral("Erase"));
+        if (doc.group(g)->isDeformed())
+            doc.undoStack()->push(new ApplyPoseCommand(&doc, g));
+        std::vector<std::pair<Id, std::vector<StrokeDataPtr>>> cuts;
+        for (const Stroke &s : doc.group(g)->strokes)
+            if (auto pieces = cutStroke(*s.data, rub, 6.0))
+                cuts.emplace_back(s.id, std::move(*pieces));
+        for (const auto &[id, pieces] : cuts)
+            pushStrokeCut(&doc, id, pieces);
+        doc.undoStack()->endMacro();
+        auto rubbed = std::make_shared<StrokeData>();
+        for (const QPointF &p : rub)
+            rubbed->points.push_back({float(p.x()), float(p.y()), 1.0f});
+        rubbed->width = 12.0f;
+        const QImage ignore = strokeMask({rubbed}, before.view, 10.0);
+        const Shown after = shown(doc, g, &before.view);
+        const PictureAgreement agreement = comparePictures(before.picture, after.picture, &ignore);
+        ++rubs;
+        if (agreement.agreePct < kAgreePct)
+            sideBySide({before.picture, after.picture, agreement.difference})
+                .save(QStringLiteral("pose_erase_elbow_%1_%2_%3.png")
+                          .arg(mode)
+                          .arg(int(degrees))
+                          .arg(j));
+        QVERIFY2(agreement.agreePct >= kAgreePct,
+                 qPrintable(QStringLiteral("elbow %1: %2 %").arg(parent).arg(agreement.agreePct)));
+        doc.undoStack()->undo();
+    }
+    QVERIFY(rubs >= 2);
 }
 
 QTEST_MAIN(TestPoseBake)

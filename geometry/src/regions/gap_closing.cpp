@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <utility>
 
 namespace finbook::geometry::detail {
 namespace {
@@ -13,6 +14,9 @@ namespace {
 constexpr double kLoopArcFactor = 2.5;
 // Weight of direction in a closure's score: distance/gap + kTurnWeight·(1 − cos turn).
 constexpr double kTurnWeight = 0.35;
+// A closure carries a line on "head-on" when it turns at most ~35° from the way the line left
+// its end (1 − cos 35°).
+constexpr double kHeadOnTurn = 0.18;
 // Closures only start this far from the ends they join (numerical contact slack, px).
 constexpr double kContactSlack = 0.05;
 // Passes of accept-and-reconnect (each may connect parts that let further closures close;
@@ -245,6 +249,17 @@ double segmentDistance(const Eigen::Vector2d &p, const Eigen::Vector2d &q, const
                      (closestOnSegment(b, p, q) - b).norm()});
 }
 
+// A closure from a free end to a free end that carries on both lines within kHeadOnTurn of
+// the way each left its end: the two ends of one line broken apart.
+bool bridgesHeadOn(const Candidate &c, const std::vector<End> &ends)
+{
+    if (c.toEnd < 0)
+        return false;
+    const End &from = ends[std::size_t(c.from)], &to = ends[std::size_t(c.toEnd)];
+    return turnCost(from.direction, to.point - from.point) <= kHeadOnTurn &&
+           turnCost(to.direction, from.point - to.point) <= kHeadOnTurn;
+}
+
 bool acceptPairs(Closer &closer, const std::vector<Candidate> &deferred, UnionFind &parts,
                  const std::vector<End> &ends, double gap)
 {
@@ -263,10 +278,13 @@ bool acceptPairs(Closer &closer, const std::vector<Candidate> &deferred, UnionFi
                 const bool sharesEnd = a.from == b.from || a.from == b.toEnd ||
                                        (a.toEnd >= 0 && (a.toEnd == b.from || a.toEnd == b.toEnd));
                 // Two closures side by side across one narrow slot (two fingers) enclose
-                // nothing worth a face: the pair must be further apart than a gap.
+                // nothing worth a face: the pair must be further apart than a gap. Not so for
+                // two lines each broken head-on (a rub of the eraser across an arm): their
+                // ends face each other, and a finger's never do.
                 if (sharesEnd || !closer.usable(b) ||
-                    segmentDistance(ends[std::size_t(a.from)].point, a.to,
-                                    ends[std::size_t(b.from)].point, b.to) <= gap)
+                    (!(bridgesHeadOn(a, ends) && bridgesHeadOn(b, ends)) &&
+                     segmentDistance(ends[std::size_t(a.from)].point, a.to,
+                                     ends[std::size_t(b.from)].point, b.to) <= gap))
                     continue;
                 closer.accept(a);
                 closer.accept(b);
@@ -363,21 +381,31 @@ GapClosingResult closeGaps(const StrokeSoup &soup, double closeGap, PlanarMap &m
         return result;
     Closer closer(soup, ends, map, parts);
     const std::vector<Candidate> all = candidates(soup, ends, closeGap);
+    // An end that a better closure would carry on head-on into another part (a line the
+    // eraser broke) waits for the pairs and rings before a closure within its own part (across
+    // an arm's cut end) may take it; when they find nothing, the next pass lets it.
+    bool headOnFirst = true;
     for (int pass = 0; pass < kMaxPasses; ++pass) {
         std::vector<Candidate> deferred;
+        std::vector<bool> waiting(ends.size(), false);
         bool changed = false;
         for (const Candidate &c : all) {
             if (!closer.usable(c))
                 continue;
-            if (closer.connected(c)) {
+            if (!closer.connected(c)) {
+                deferred.push_back(c);
+                if (headOnFirst && bridgesHeadOn(c, ends))
+                    waiting[std::size_t(c.from)] = waiting[std::size_t(c.toEnd)] = true;
+            } else if (!waiting[std::size_t(c.from)] &&
+                       (c.toEnd < 0 || !waiting[std::size_t(c.toEnd)])) {
                 closer.accept(c);
                 changed = true;
-            } else {
-                deferred.push_back(c);
             }
         }
-        if (!changed && !acceptPairs(closer, deferred, parts, ends, closeGap) &&
-            !acceptRing(closer, deferred, parts, ends, strokeCount))
+        if (changed || acceptPairs(closer, deferred, parts, ends, closeGap) ||
+            acceptRing(closer, deferred, parts, ends, strokeCount))
+            headOnFirst = true;
+        else if (std::exchange(headOnFirst, false) == false)
             break;
     }
     result.closures = std::move(closer.closures);
