@@ -34,6 +34,65 @@ std::vector<FillItem> restFillsLitFor(const StrokeGroup &still, const DocumentSe
     return lit.size() == atRest.size() ? lit : atRest;
 }
 
+// How far (canvas px) a cut-out piece's tones reach past its outline, over the fill beneath
+// them. Cut where their fill is cut, a tone and its fill blend their anti-aliased edges twice
+// on one pixel (the fill's edge, then the tone's over it), and a line of the fill's flat colour
+// showed across the tone along every cut. A tone ends with its fill at the lines: only where a
+// cut crosses it does it reach on, that pixel, under or over the next piece's same tone.
+constexpr double kToneOverlap = 1.0;
+
+// `outline` (a piece's boundary loops as the cut mesh gives them: its inside on one side of
+// every loop, holes included) moved `by` px outward at each corner (mitred, capped at sharp
+// ones): no path boolean, so every repaint can afford it.
+QPainterPath grown(const QPainterPath &outline, double by)
+{
+    std::vector<std::vector<QPointF>> loops;
+    for (int i = 0; i < outline.elementCount(); ++i) {
+        const QPainterPath::Element e = outline.elementAt(i);
+        if (e.isMoveTo() || loops.empty())
+            loops.emplace_back();
+        loops.back().emplace_back(e.x, e.y);
+    }
+    // Which side is inside: the largest loop is an outer one (the others wind the same way
+    // round their pieces' inside, holes the other way round themselves).
+    double largest = 0.0;
+    for (std::vector<QPointF> &loop : loops) {
+        if (loop.size() > 1 && loop.front() == loop.back())
+            loop.pop_back();
+        double area = 0.0;
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const QPointF &a = loop[i], &b = loop[(i + 1) % loop.size()];
+            area += a.x() * b.y() - b.x() * a.y();
+        }
+        if (std::abs(area) > std::abs(largest))
+            largest = area;
+    }
+    const double side = largest >= 0.0 ? 1.0 : -1.0; // outward = side × (dy, −dx)
+    QPainterPath out;
+    out.setFillRule(Qt::WindingFill);
+    for (const std::vector<QPointF> &loop : loops) {
+        const std::size_t n = loop.size();
+        if (n < 3)
+            continue;
+        const auto normal = [&](std::size_t i) {
+            const QPointF d = loop[(i + 1) % n] - loop[i];
+            const double length = std::hypot(d.x(), d.y());
+            return length > 0.0 ? QPointF(d.y(), -d.x()) * (side / length) : QPointF();
+        };
+        for (std::size_t i = 0; i < n; ++i) {
+            const QPointF a = normal((i + n - 1) % n), b = normal(i);
+            QPointF m = a + b;
+            const double length = std::hypot(m.x(), m.y());
+            m = length > 1e-9 ? m / length : (b.isNull() ? a : b);
+            const double cosine = m.x() * b.x() + m.y() * b.y();
+            const QPointF p = loop[i] + m * (by / std::max(cosine, 0.5));
+            i == 0 ? out.moveTo(p) : out.lineTo(p);
+        }
+        out.closeSubpath();
+    }
+    return out;
+}
+
 // `fill`'s tones cut to `path`: what a socket or a seam's wedge painted in that fill shows.
 std::vector<ToneItem> tonesWithin(const FillItem *fill, const QPainterPath &path)
 {
@@ -166,15 +225,17 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
             }
         }
         const std::vector<FillItem> &source = moved ? whole[layer] : shown;
-        const auto place = [&](const QPainterPath &path) {
+        const QPainterPath clip = outline ? *outline : QPainterPath();
+        const QPainterPath toneClip = outline ? grown(*outline, kToneOverlap) : clip;
+        const auto place = [&](const QPainterPath &path, const QPainterPath &to) {
             QPainterPath placed = path;
             placed.setFillRule(Qt::WindingFill);
-            return outline ? placed.intersected(*outline) : placed;
+            return outline ? placed.intersected(to) : placed;
         };
         for (std::size_t i = 0; i < source.size(); ++i) {
             const FillItem &fill = source[i];
             FillItem clipped;
-            clipped.path = place(fill.path);
+            clipped.path = place(fill.path, clip);
             if (clipped.path.isEmpty())
                 continue;
             clipped.path.setFillRule(Qt::WindingFill);
@@ -182,7 +243,7 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
             clipped.fill = fill.fill;
             for (const ToneItem &tone : fill.tones) {
                 ToneItem part = tone;
-                part.path = place(tone.path);
+                part.path = place(tone.path, toneClip);
                 if (!part.path.isEmpty())
                     clipped.tones.push_back(std::move(part));
             }
