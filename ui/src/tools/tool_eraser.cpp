@@ -150,7 +150,7 @@ std::vector<model::Id> EraserTool::touchedStrokes(const QLineF &path) const
     return hits;
 }
 
-void EraserTool::openMacro(const std::vector<model::Id> &strokes)
+bool EraserTool::openMacro(const std::vector<model::Id> &strokes)
 {
     model::Document *doc = state()->document();
     // The macro opens at the first hit, so a rub that erases nothing leaves no undo step.
@@ -170,9 +170,9 @@ void EraserTool::openMacro(const std::vector<model::Id> &strokes)
             for (model::Id f : skeletonsFollowing(*state(), {id}))
                 m_following.push_back(f);
         }
-    // Erasing from a posed object makes its pose the drawing first (the baked strokes keep
-    // their ids), so what is left stays where it is shown.
-    StrokeEditing::applyPoses(doc, groups);
+    // Erasing from a posed object makes its pose the drawing first, so what is left stays
+    // where it is shown.
+    return StrokeEditing::applyPoses(doc, groups);
 }
 
 void EraserTool::eraseAlong(const QPointF &from, const QPointF &to)
@@ -182,8 +182,11 @@ void EraserTool::eraseAlong(const QPointF &from, const QPointF &to)
         return;
     model::Document *doc = state()->document();
     if (m_wholeStrokes) {
-        openMacro(hits);
-        for (model::Id id : hits)
+        // A baked cut-out pose splits a line into the parts its pieces showed (new ids beside
+        // the first's): what the rub touches is looked up again on the baked drawing.
+        const std::vector<model::Id> baked =
+            openMacro(hits) ? touchedStrokes(QLineF(from, to)) : hits;
+        for (model::Id id : baked)
             doc->undoStack()->push(new model::RemoveStrokeCommand(doc, id));
         return;
     }
@@ -197,23 +200,32 @@ void EraserTool::cut(const std::vector<model::Id> &strokes, const QPointF &from,
         from == to ? std::vector<QPointF>{from} : std::vector<QPointF>{from, to};
     // Cut what is shown (the posed points of a posed object): applying the pose first makes
     // exactly those points the rest strokes, so the pieces fit them.
-    std::vector<std::pair<model::Id, std::vector<model::StrokeDataPtr>>> cuts;
-    for (model::Id id : strokes) {
-        const model::StrokeLocation at = doc->locateStroke(id);
-        if (!at.isValid())
-            continue;
-        const model::StrokeGroup &g = doc->frameAt(at).groups[std::size_t(at.group)];
-        model::StrokeData shown = *g.strokes[std::size_t(at.stroke)].data;
-        shown.points = model::displayedPoints(g, std::size_t(at.stroke));
-        if (auto pieces = model::cutStroke(shown, rub, radius()))
-            cuts.emplace_back(id, std::move(*pieces));
-    }
+    const auto cutsOf = [&](const std::vector<model::Id> &ids) {
+        std::vector<std::pair<model::Id, std::vector<model::StrokeDataPtr>>> out;
+        for (model::Id id : ids) {
+            const model::StrokeLocation at = doc->locateStroke(id);
+            if (!at.isValid())
+                continue;
+            const model::StrokeGroup &g = doc->frameAt(at).groups[std::size_t(at.group)];
+            model::StrokeData shown = *g.strokes[std::size_t(at.stroke)].data;
+            shown.points = model::displayedPoints(g, std::size_t(at.stroke));
+            if (auto pieces = model::cutStroke(shown, rub, radius()))
+                out.emplace_back(id, std::move(*pieces));
+        }
+        return out;
+    };
+    auto cuts = cutsOf(strokes);
     if (cuts.empty())
         return;
     std::vector<model::Id> cutIds;
     for (const auto &c : cuts)
         cutIds.push_back(c.first);
-    openMacro(cutIds);
+    // A cut-out pose bakes a line into the parts its pieces showed, and the parts a piece hid
+    // as unseen lines: the first part keeps the line's id, the others are new. Cut as worked
+    // out on the posed line, the whole line came back beside its other parts (an arm's
+    // outline twice, its fill gone); the cuts are worked out again on the baked strokes.
+    if (openMacro(cutIds))
+        cuts = cutsOf(touchedStrokes(QLineF(from, to)));
     for (const auto &[id, pieces] : cuts)
         model::pushStrokeCut(doc, id, pieces); // nothing when the stroke has gone
 }

@@ -52,7 +52,9 @@ private:
     qreal radius() const;
     void eraseAlong(const QPointF &from, const QPointF &to);
     std::vector<model::Id> touchedStrokes(const QLineF &path) const;
-    void openMacro(const std::vector<model::Id> &strokes);
+    // Opens the rub's macro at its first hit and applies the poses of the objects it reaches;
+    // returns whether a pose was applied (the strokes are then the baked ones, new ids too).
+    bool openMacro(const std::vector<model::Id> &strokes);
     void cut(const std::vector<model::Id> &strokes, const QPointF &from, const QPointF &to);
     void finish();
     void moveCursor(const QPointF &pos);
