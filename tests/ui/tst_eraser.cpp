@@ -2,8 +2,7 @@
 // line under it and leaves pieces with the stroke's colour, width and pressure; one rub is one
 // undo step that undoes exactly; a posed object has its pose applied first, in the same step;
 // rigs stay valid.
-#include "../model/bake_support.h"
-#include "../model/fill_support.h"
+#include "cut_out_character.h"
 #include "tst_tools_support.h"
 
 #include <finbook/model/cage/cage_commands.h>
@@ -212,55 +211,9 @@ void TestEraser::cutsACutOutPoseOnItsBakedLines()
     using namespace finbook::testing;
     const model::Id g = group();
     QUndoStack *stack = m_doc->undoStack();
-    const auto ring = [](QPointF c, double rx, double ry) {
-        QPolygonF out;
-        for (int i = 0; i <= 48; ++i)
-            out << c + QPointF(rx * std::cos(i * M_PI / 24), ry * std::sin(i * M_PI / 24));
-        return out;
-    };
-    const auto arm = [](QPointF root, double angle) {
-        const QPointF d(std::cos(angle), std::sin(angle)), n(-d.y(), d.x());
-        const QPointF a = root + n * 14, b = root - n * 14;
-        return QPolygonF{a, a + d * 190, b + d * 190, b, a};
-    };
-    stack->push(new model::AddStrokeCommand(m_doc.get(), g,
-                                            polylineStroke(ring({300, 300}, 70, 110), 4.0, 3.0f)));
-    stack->push(new model::AddStrokeCommand(
-        m_doc.get(), g, polylineStroke(arm({260, 230}, M_PI * 0.85), 4.0, 3.0f)));
-    stack->push(new model::AddStrokeCommand(
-        m_doc.get(), g, polylineStroke(arm({340, 230}, M_PI * 0.15), 4.0, 3.0f)));
-    if (auto all = model::fillAllRegionsCommand(m_doc.get(), g, 0xff808080))
-        stack->push(all.release());
-    std::vector<model::Fill> fills = m_doc->group(g)->fills;
-    for (std::size_t i = 0; i < fills.size(); ++i)
-        fills[i].color = distinctColour(i);
-    stack->push(new model::SetFillsCommand(m_doc.get(), g, fills, QStringLiteral("Colours")));
-    model::Rig rig = skeletonBend(*m_doc->group(g), m_doc->settings().closeGap,
-                                  model::SkinningMode::CutOut, 40.0);
-    QVERIFY(!rig.empty());
-    for (int j = 0; j < rig.skeleton.jointCount(); ++j) { // bend the elbows
-        const int parent = rig.skeleton.parent[std::size_t(j)];
-        if (parent >= 0 && parent != rig.skeleton.root && !rig.skeleton.isLimbBase(parent))
-            rig.skeleton.angles[std::size_t(j)] = -0.4;
-    }
-    QCOMPARE(poseObject(*m_doc, g, rig), QString());
-    stack->clear();
-    // The left elbow as posed, and a rub across the arm there (square to its two bones).
-    const model::SkeletonRig &skeleton = m_doc->group(g)->rig.skeleton;
-    const std::vector<QPointF> joints = skeleton.posedJoints();
-    int elbow = -1, child = -1;
-    for (int j = 0; j < skeleton.jointCount(); ++j) {
-        const int parent = skeleton.parent[std::size_t(j)];
-        if (parent >= 0 && parent != skeleton.root && !skeleton.isLimbBase(parent) &&
-            (elbow < 0 || joints[std::size_t(parent)].x() < joints[std::size_t(elbow)].x()))
-            elbow = parent, child = j;
-    }
-    QVERIFY(elbow >= 0);
-    const QPointF at = joints[std::size_t(elbow)];
-    const auto unit = [](QPointF d) { return d / std::hypot(d.x(), d.y()); };
-    const QPointF along = unit(unit(at - joints[std::size_t(skeleton.parent[std::size_t(elbow)])]) +
-                               unit(joints[std::size_t(child)] - at));
-    const QPointF across(-along.y() * 30, along.x() * 30);
+    const auto arm = poseCutOutCharacter(*m_doc, g);
+    QVERIFY(arm);
+    const QPointF at = arm->elbow, across = arm->across.p2() - arm->elbow;
     const QTransform view =
         pictureView(shownBounds(*m_doc->group(g)).adjusted(-40, -40, 40, 40), 480);
     const QImage before = framePicture(*m_doc, 0, view, 480);
@@ -268,24 +221,7 @@ void TestEraser::cutsACutOutPoseOnItsBakedLines()
     dragCanvas(m_canvas.get(), at - across, at + across);
     QCOMPARE(stack->count(), 1);
     QVERIFY(!m_doc->group(g)->rig.isPosed());
-    // No inked line lies along another: every point of one is farther than a pen from the
-    // points of the others.
-    const std::vector<model::Stroke> &baked = strokes();
-    int doubled = 0;
-    for (std::size_t a = 0; a < baked.size(); ++a)
-        for (std::size_t b = a + 1; b < baked.size(); ++b) {
-            if (qAlpha(baked[a].data->color) == 0 || qAlpha(baked[b].data->color) == 0)
-                continue;
-            int near = 0;
-            for (const model::StrokePoint &p : baked[a].data->points)
-                for (const model::StrokePoint &q : baked[b].data->points)
-                    if (std::hypot(p.x - q.x, p.y - q.y) < 1.0) {
-                        ++near;
-                        break;
-                    }
-            doubled += near > 5;
-        }
-    QCOMPARE(doubled, 0);
+    QCOMPARE(doubledLines(*m_doc->group(g)), 0); // no line drawn twice
     // Outside the rub, the picture is the posed one: the arm keeps its colour.
     QImage rubbed(480, 480, QImage::Format_ARGB32_Premultiplied);
     rubbed.fill(Qt::transparent);

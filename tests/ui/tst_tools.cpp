@@ -1,4 +1,5 @@
 // Pen, eraser and select tools driven with real mouse events on a real canvas.
+#include "cut_out_character.h"
 #include "tst_tools_support.h"
 
 #include <finbook/ui/tools/stroke_editing.h>
@@ -39,6 +40,7 @@ private slots:
     void cornerHandleScalesSelection();
     void rotateHandleRotatesSelection();
     void deleteSelection();
+    void aCutOutPoseMovesAndDeletesWholeLines();
     void copyPasteIntoAnotherFrame();
     void selectAllSkipsLockedObjects();
     void clipboardRefusesMalformedData();
@@ -328,6 +330,61 @@ void TestTools::deleteSelection()
     m_doc->undoStack()->undo();
     QCOMPARE(strokeCount(0), 3);
     QVERIFY(!ui::StrokeEditing::deleteSelection(*m_state)); // nothing selected
+}
+
+// Issue 45 (an edit that applies a pose first): moving or deleting the strokes of a cut-out
+// pose bakes each line into the parts its pieces showed and hid, the first part keeping the
+// line's id. The move replaced that part with the whole line moved, and left the others where
+// they were: an arm drawn twice, its fill gone. The edit now takes every part of the line.
+void TestTools::aCutOutPoseMovesAndDeletesWholeLines()
+{
+    using namespace finbook::testing;
+    const model::Id g = group(0);
+    const auto arm = poseCutOutCharacter(*m_doc, g);
+    QVERIFY(arm);
+    // The left arm's line: the stroke nearest its elbow.
+    const model::StrokeGroup &posed = *m_doc->group(g);
+    model::Id armLine = model::kNoId;
+    double nearest = 1e9;
+    for (std::size_t i = 0; i < posed.strokes.size(); ++i)
+        for (const model::StrokePoint &p : model::displayedPoints(posed, i))
+            if (const double d = std::hypot(p.x - arm->elbow.x(), p.y - arm->elbow.y());
+                d < nearest)
+                nearest = d, armLine = posed.strokes[i].id;
+    QVERIFY(armLine != model::kNoId);
+    const QTransform view =
+        pictureView(shownBounds(*m_doc->group(g)).adjusted(-80, -80, 80, 80), 480);
+    const QImage before = framePicture(*m_doc, 0, view, 480);
+    const QByteArray start = model::serializeFinbook(*m_doc);
+    m_canvas->setCurrentTool(QStringLiteral("tool.select"));
+    m_state->setSelectedStrokes({armLine});
+    const QPointF grab = arm->elbow + (arm->across.p1() - arm->elbow) * (14.0 / 30.0);
+    dragCanvas(m_canvas.get(), grab, grab + QPointF(-20, -30), 5);
+    QCOMPARE(m_doc->undoStack()->count(), 1);
+    QVERIFY(m_doc->undoStack()->text(0).contains(QStringLiteral("pose applied")));
+    QCOMPARE(doubledLines(*m_doc->group(g)), 0);
+    QVERIFY(m_state->selectedStrokes().size() > 1); // every part of the arm's line
+    // The arm moved whole with its colour: as much of it shows as before.
+    const QImage moved = framePicture(*m_doc, 0, view, 480);
+    long long redBefore = 0, redAfter = 0;
+    const QRgb armColour = before.pixel(view.map(grab).toPoint());
+    for (int y = 0; y < before.height(); ++y)
+        for (int x = 0; x < before.width(); ++x) {
+            redBefore += sameColour(before.pixel(x, y), armColour);
+            redAfter += sameColour(moved.pixel(x, y), armColour);
+        }
+    QVERIFY2(std::abs(double(redAfter - redBefore)) <= 0.02 * double(redBefore),
+             qPrintable(QStringLiteral("%1 -> %2 px").arg(redBefore).arg(redAfter)));
+    m_doc->undoStack()->undo();
+    QCOMPARE(model::serializeFinbook(*m_doc), start);
+    // Delete: the whole line goes, no part of it left behind.
+    m_state->setSelectedStrokes({armLine});
+    QVERIFY(ui::StrokeEditing::deleteSelection(*m_state));
+    for (const model::Stroke &s : m_doc->group(g)->strokes)
+        for (const model::StrokePoint &p : s.data->points)
+            QVERIFY2(std::hypot(p.x - arm->elbow.x(), p.y - arm->elbow.y()) > 10.0 ||
+                         qAlpha(s.data->color) == 0,
+                     "a part of the deleted arm is left at its elbow");
 }
 
 void TestTools::copyPasteIntoAnotherFrame()

@@ -14,6 +14,7 @@
 #include <QDataStream>
 #include <QIODevice>
 
+#include <algorithm>
 #include <cmath>
 
 namespace finbook::ui {
@@ -188,6 +189,62 @@ void StrokeEditing::beginRestEdit(model::Document *doc, const QString &text,
     applyPoses(doc, groupIds);
 }
 
+std::vector<model::Id> StrokeEditing::beginRestEditOf(model::Document *doc, const QString &text,
+                                                      const std::vector<model::Id> &ids)
+{
+    std::vector<model::Id> groups, before;
+    for (model::Id id : ids) {
+        const model::StrokeLocation at = doc->locateStroke(id);
+        if (!at.isValid())
+            continue;
+        const model::StrokeGroup &g = doc->frameAt(at).groups[std::size_t(at.group)];
+        if (std::find(groups.begin(), groups.end(), g.id) != groups.end())
+            continue;
+        groups.push_back(g.id);
+        for (const model::Stroke &s : g.strokes)
+            before.push_back(s.id);
+    }
+    const bool posed =
+        std::any_of(groups.begin(), groups.end(), [doc](model::Id id) { return isPosed(doc, id); });
+    beginRestEdit(doc, text, groups);
+    if (!posed)
+        return ids;
+    // A line's parts follow one another in its object's strokes, each starting where the one
+    // before it ends; only the part that keeps the line's id was there before the bake.
+    std::sort(before.begin(), before.end());
+    const auto isNew = [&](const model::Stroke &s) {
+        return !std::binary_search(before.begin(), before.end(), s.id) && s.data &&
+               !s.data->points.empty();
+    };
+    const auto joined = [](const model::Stroke &a, const model::Stroke &b) { // a, then b
+        const model::StrokePoint &p = a.data->points.back(), &q = b.data->points.front();
+        return p.x == q.x && p.y == q.y;
+    };
+    std::vector<model::Id> out;
+    for (model::Id id : ids) {
+        const model::StrokeLocation at = doc->locateStroke(id);
+        if (!at.isValid())
+            continue;
+        const std::vector<model::Stroke> &strokes =
+            doc->frameAt(at).groups[std::size_t(at.group)].strokes;
+        const std::size_t i = std::size_t(at.stroke);
+        if (!strokes[i].data || strokes[i].data->points.empty()) {
+            out.push_back(id);
+            continue;
+        }
+        std::size_t first = i, last = i;
+        while (first > 0 && isNew(strokes[first - 1]) && joined(strokes[first - 1], strokes[first]))
+            --first;
+        while (last + 1 < strokes.size() && isNew(strokes[last + 1]) &&
+               joined(strokes[last], strokes[last + 1]))
+            ++last;
+        for (std::size_t k = first; k <= last; ++k)
+            if (std::find(out.begin(), out.end(), strokes[k].id) == out.end())
+                out.push_back(strokes[k].id);
+    }
+    return out;
+}
+
 void StrokeEditing::endRestEdit(EditorState &state, const std::vector<model::Id> &following)
 {
     followDrawing(state, following);
@@ -205,8 +262,7 @@ bool StrokeEditing::deleteSelection(EditorState &state)
         if (const model::StrokeLocation at = doc->locateStroke(id); at.isValid())
             groups.push_back(doc->frameAt(at).groups[std::size_t(at.group)].id);
     const std::vector<model::Id> following = skeletonsFollowing(state, groups);
-    beginRestEdit(doc, tr("Delete Strokes"), groups);
-    for (model::Id id : ids)
+    for (model::Id id : beginRestEditOf(doc, tr("Delete Strokes"), ids))
         doc->undoStack()->push(new model::RemoveStrokeCommand(doc, id));
     endRestEdit(state, following);
     state.setSelectedStrokes({});

@@ -323,9 +323,29 @@ void SelectTool::commitTransform()
     const QString text = m_mode == Mode::Move     ? tr("Move Strokes")
                          : m_mode == Mode::Rotate ? tr("Rotate Strokes")
                                                   : tr("Scale Strokes");
-    StrokeEditing::beginRestEdit(doc, text, groups);
-    doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, ids, data, text));
+    // A cut-out pose bakes a line into its parts (new ids beside the first's): once the pose
+    // is the drawing, the parts are moved, each from its own points (those shown).
+    const std::vector<model::Id> parts = StrokeEditing::beginRestEditOf(doc, text, ids);
+    if (parts != ids) {
+        data.clear();
+        for (model::Id id : parts) {
+            const model::StrokeLocation at = doc->locateStroke(id);
+            const model::StrokeGroup &g = doc->frameAt(at).groups[std::size_t(at.group)];
+            auto moved =
+                std::make_shared<model::StrokeData>(*g.strokes[std::size_t(at.stroke)].data);
+            for (model::StrokePoint &p : moved->points) {
+                const QPointF q = m_transform.map(QPointF(p.x, p.y));
+                p.x = float(q.x());
+                p.y = float(q.y());
+            }
+            moved->width = float(std::max(0.1, moved->width * widthScale));
+            data.push_back(std::move(moved));
+        }
+    }
+    doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, parts, data, text));
     StrokeEditing::endRestEdit(*state(), groups); // a shown skeleton follows the moved lines
+    if (parts != ids)
+        state()->setSelectedStrokes(parts);
 }
 
 void SelectTool::cancelDrag()

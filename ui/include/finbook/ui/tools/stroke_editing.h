@@ -66,6 +66,12 @@ public:
     // endMacro() when the edit leaves the drawing's outline as it is).
     static void beginRestEdit(model::Document *doc, const QString &text,
                               const std::vector<model::Id> &groupIds);
+    // beginRestEdit() for an edit of the strokes `ids` (their objects' poses applied first);
+    // returns the strokes the edit acts on. A cut-out pose bakes a line into the parts its
+    // pieces showed and the parts a piece hid, the first part keeping the line's id: each
+    // stroke comes back with its parts (the new strokes that continue it end to end).
+    static std::vector<model::Id> beginRestEditOf(model::Document *doc, const QString &text,
+                                                  const std::vector<model::Id> &ids);
     // Closes a rest edit's macro after letting the skeletons of `following` (from
     // skeletonsFollowing() before the edit, skeleton/skeleton_follow.h) follow the new
     // drawing, so the stroke edit and the skeleton are one undo step.
