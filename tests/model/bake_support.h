@@ -16,6 +16,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLineF>
 #include <QPainter>
 
 #include <algorithm>
@@ -250,6 +251,43 @@ inline model::Rig skeletonBend(const model::StrokeGroup &group, double closeGap,
         sign = -sign;
     }
     return rig;
+}
+
+// Each joint along a limb past its base (an elbow) turned by `radians` (rigs of skeletonBend).
+inline void bendElbows(model::Rig &rig, double radians)
+{
+    model::SkeletonRig &skeleton = rig.skeleton;
+    for (int j = 0; j < skeleton.jointCount(); ++j) {
+        const int parent = skeleton.parent[std::size_t(j)];
+        if (parent >= 0 && parent != skeleton.root && !skeleton.isLimbBase(parent))
+            skeleton.angles[std::size_t(j)] = radians;
+    }
+}
+
+// Every elbow as posed (a joint along a limb past its base, with the bone to one child), and a
+// line across the limb there: square to the mean of its two bones, `half` px each side.
+struct ElbowRub {
+    int elbow = -1;
+    QPointF at;
+    QLineF across;
+};
+inline std::vector<ElbowRub> elbowRubs(const model::SkeletonRig &skeleton, double half)
+{
+    std::vector<ElbowRub> out;
+    const std::vector<QPointF> joints = skeleton.posedJoints();
+    const auto unit = [](QPointF d) { return d / std::hypot(d.x(), d.y()); };
+    for (int j = 0; j < skeleton.jointCount(); ++j) {
+        const int parent = skeleton.parent[std::size_t(j)];
+        if (parent < 0 || parent == skeleton.root || skeleton.isLimbBase(parent))
+            continue;
+        const QPointF at = joints[std::size_t(parent)];
+        const QPointF along =
+            unit(unit(at - joints[std::size_t(skeleton.parent[std::size_t(parent)])]) +
+                 unit(joints[std::size_t(j)] - at));
+        const QPointF across(-along.y() * half, along.x() * half);
+        out.push_back({parent, at, QLineF(at - across, at + across)});
+    }
+    return out;
 }
 
 } // namespace finbook::testing

@@ -748,27 +748,11 @@ void TestPoseBake::eraseAcrossAnElbowKeepsTheArmsFill()
     const double closeGap = doc.settings().closeGap;
     Rig rig = skeletonBend(*doc.group(g), closeGap, SkinningMode(mode), degrees);
     QVERIFY(!rig.empty());
-    for (int j = 0; j < rig.skeleton.jointCount(); ++j) { // bend the elbows too
-        const int parent = rig.skeleton.parent[std::size_t(j)];
-        if (parent >= 0 && parent != rig.skeleton.root && !rig.skeleton.isLimbBase(parent))
-            rig.skeleton.angles[std::size_t(j)] = -degrees * 0.6 * std::numbers::pi / 180.0;
-    }
+    bendElbows(rig, -degrees * 0.6 * std::numbers::pi / 180.0);
     QCOMPARE(poseObject(doc, g, rig), QString());
-    const SkeletonRig &skeleton = doc.group(g)->rig.skeleton;
-    const std::vector<QPointF> joints = skeleton.posedJoints();
     int rubs = 0;
-    for (int j = 0; j < skeleton.jointCount(); ++j) {
-        const int parent = skeleton.parent[std::size_t(j)];
-        if (parent < 0 || parent == skeleton.root || skeleton.isLimbBase(parent))
-            continue; // an elbow: a joint along a limb past its base, at the bone to `j`
-        const QPointF at = joints[std::size_t(parent)];
-        const auto unit = [](QPointF d) { return d / std::hypot(d.x(), d.y()); };
-        // Across the limb where it bends: square to the mean of its two bones.
-        const QPointF along =
-            unit(unit(at - joints[std::size_t(skeleton.parent[std::size_t(parent)])]) +
-                 unit(joints[std::size_t(j)] - at));
-        const QPointF across(-along.y() * 20, along.x() * 20);
-        const std::vector<QPointF> rub{at - across, at + across};
+    for (const ElbowRub &elbow : elbowRubs(doc.group(g)->rig.skeleton, 20.0)) {
+        const std::vector<QPointF> rub{elbow.across.p1(), elbow.across.p2()};
         const Shown before = shown(doc, g);
         doc.undoStack()->beginMacro(QStringLiteral("Erase"));
         if (doc.group(g)->isDeformed())
@@ -793,9 +777,10 @@ void TestPoseBake::eraseAcrossAnElbowKeepsTheArmsFill()
                 .save(QStringLiteral("pose_erase_elbow_%1_%2_%3.png")
                           .arg(mode)
                           .arg(int(degrees))
-                          .arg(j));
-        QVERIFY2(agreement.agreePct >= kAgreePct,
-                 qPrintable(QStringLiteral("elbow %1: %2 %").arg(parent).arg(agreement.agreePct)));
+                          .arg(elbow.elbow));
+        QVERIFY2(
+            agreement.agreePct >= kAgreePct,
+            qPrintable(QStringLiteral("elbow %1: %2 %").arg(elbow.elbow).arg(agreement.agreePct)));
         doc.undoStack()->undo();
     }
     QVERIFY(rubs >= 2);

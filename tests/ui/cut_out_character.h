@@ -11,6 +11,7 @@
 
 #include <QLineF>
 
+#include <algorithm>
 #include <cmath>
 
 namespace finbook::test {
@@ -52,31 +53,18 @@ inline std::optional<CutOutArm> poseCutOutCharacter(model::Document &doc, model:
         skeletonBend(*doc.group(g), doc.settings().closeGap, model::SkinningMode::CutOut, 40.0);
     if (rig.empty())
         return std::nullopt;
-    for (int j = 0; j < rig.skeleton.jointCount(); ++j) { // bend the elbows
-        const int parent = rig.skeleton.parent[std::size_t(j)];
-        if (parent >= 0 && parent != rig.skeleton.root && !rig.skeleton.isLimbBase(parent))
-            rig.skeleton.angles[std::size_t(j)] = -0.4;
-    }
+    bendElbows(rig, -0.4);
     if (!poseObject(doc, g, rig).isEmpty())
         return std::nullopt;
     stack->clear();
-    const model::SkeletonRig &skeleton = doc.group(g)->rig.skeleton;
-    const std::vector<QPointF> joints = skeleton.posedJoints();
-    int elbow = -1, child = -1;
-    for (int j = 0; j < skeleton.jointCount(); ++j) {
-        const int parent = skeleton.parent[std::size_t(j)];
-        if (parent >= 0 && parent != skeleton.root && !skeleton.isLimbBase(parent) &&
-            (elbow < 0 || joints[std::size_t(parent)].x() < joints[std::size_t(elbow)].x()))
-            elbow = parent, child = j;
-    }
-    if (elbow < 0)
+    // The left elbow: the leftmost.
+    const std::vector<ElbowRub> elbows = elbowRubs(doc.group(g)->rig.skeleton, half);
+    const auto left =
+        std::min_element(elbows.begin(), elbows.end(),
+                         [](const ElbowRub &a, const ElbowRub &b) { return a.at.x() < b.at.x(); });
+    if (left == elbows.end())
         return std::nullopt;
-    const QPointF at = joints[std::size_t(elbow)];
-    const auto unit = [](QPointF d) { return d / std::hypot(d.x(), d.y()); };
-    const QPointF along = unit(unit(at - joints[std::size_t(skeleton.parent[std::size_t(elbow)])]) +
-                               unit(joints[std::size_t(child)] - at));
-    const QPointF across(-along.y() * half, along.x() * half);
-    return CutOutArm{at, QLineF(at - across, at + across)};
+    return CutOutArm{left->at, left->across};
 }
 
 // Inked strokes of object g that lie along another (more than five points within a pixel of

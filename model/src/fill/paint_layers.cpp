@@ -226,7 +226,9 @@ std::vector<PaintLayer> paintLayers(const StrokeGroup &group, const DocumentSett
         }
         const std::vector<FillItem> &source = moved ? whole[layer] : shown;
         const QPainterPath clip = outline ? *outline : QPainterPath();
-        const QPainterPath toneClip = outline ? grown(*outline, kToneOverlap) : clip;
+        const bool shaded = std::any_of(source.begin(), source.end(),
+                                        [](const FillItem &fill) { return !fill.tones.empty(); });
+        const QPainterPath toneClip = outline && shaded ? grown(*outline, kToneOverlap) : clip;
         const auto place = [&](const QPainterPath &path, const QPainterPath &to) {
             QPainterPath placed = path;
             placed.setFillRule(Qt::WindingFill);
