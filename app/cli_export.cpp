@@ -36,7 +36,9 @@ struct OptionSpec {
 // QT_TRANSLATE_NOOP: the help texts are translated when --help prints them.
 const OptionSpec kOptions[] = {
     {"format", "FORMAT",
-     QT_TRANSLATE_NOOP("CommandLine", "export: png, svg, gif, mp4, webm, apng, html, obj or glb.")},
+     QT_TRANSLATE_NOOP("CommandLine",
+                       "export: png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) or "
+                       "lottie (dotLottie).")},
     {"range", "A-B",
      QT_TRANSLATE_NOOP("CommandLine", "export: frames A to B (default: the play range).")},
     {"frame", "N",
@@ -159,7 +161,7 @@ std::optional<QString> parseFormat(const QCommandLineParser &p, Request &r)
         r.format = model::exportFormatFromName(p.value(QStringLiteral("format")));
         if (!r.format)
             return CommandLine::tr("Unknown export format \"%1\"; use png, svg, gif, mp4, webm, "
-                                   "apng, html, obj or glb.")
+                                   "apng, html, obj, glb, json (Lottie) or lottie (dotLottie).")
                 .arg(p.value(QStringLiteral("format")));
     }
     if (!r.outDir.isEmpty()) {
@@ -182,8 +184,8 @@ std::optional<QString> parseFormat(const QCommandLineParser &p, Request &r)
     }
     if (!r.format && !suffix.isEmpty() && (!named || model::exportsSequence(*named)))
         return CommandLine::tr("Cannot tell the format from \"%1\": end it in .gif, .mp4, .webm, "
-                               ".apng, .html, .obj or .glb, give a folder for PNG frames, or "
-                               "use --format.")
+                               ".apng, .html, .obj, .glb, .json (Lottie) or .lottie, give a "
+                               "folder for PNG frames, or use --format.")
             .arg(r.output);
     if (r.format && named && !model::exportsSequence(*r.format) && *named != *r.format)
         return CommandLine::tr("--format %1 does not match \"%2\".")
@@ -346,9 +348,9 @@ int exportOne(const Request &request, const QString &input, QTextStream &out, QT
         filter.onlyLayers.push_back(named->id);
         filter.hiddenToo = true;
     }
-    const model::ExportSource source{model::shotFrames(layers, filter), loaded->settings,
-                                     std::move(loaded->reference), std::move(loaded->sound),
-                                     std::move(loaded->camera)};
+    const model::ExportSource source{
+        model::shotFrames(layers, filter), loaded->settings,          std::move(loaded->reference),
+        std::move(loaded->sound),          std::move(loaded->camera), model::layerNamesOf(layers)};
     const auto result = model::exportAnimation(
         source, options, exportProgress(QFileInfo(native.shown(options.target)).fileName()));
     clearProgressLine();

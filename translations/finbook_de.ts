@@ -4,17 +4,17 @@
 <context>
     <name>CelEditing</name>
     <message>
-        <location filename="../ui/src/layers/cel_editing.cpp" line="111"/>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="113"/>
         <source>Cut Cels</source>
         <translation>Zellen ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/cel_editing.cpp" line="139"/>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="141"/>
         <source>No cels have been copied.</source>
         <translation>Es wurden keine Zellen kopiert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/cel_editing.cpp" line="147"/>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="149"/>
         <source>The cels cannot go onto a locked layer.</source>
         <translation>Die Zellen können nicht auf eine gesperrte Ebene.</translation>
     </message>
@@ -381,7 +381,7 @@
     </message>
     <message>
         <location filename="../model/src/scene/layer_commands.cpp" line="222"/>
-        <location filename="../model/src/scene/layer_commands.cpp" line="345"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="342"/>
         <source>Move Cels</source>
         <translation>Zellen verschieben</translation>
     </message>
@@ -391,7 +391,7 @@
         <translation>Leere Zelle einfügen</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="344"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="342"/>
         <source>Copy Cels</source>
         <translation>Zellen kopieren</translation>
     </message>
@@ -476,182 +476,182 @@
         <translation>Unbekannter Befehl „%1“; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="41"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: Einzelbilder A bis B (Standard: der Wiedergabebereich).</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="39"/>
-        <source>export: png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
-        <translation>export: png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
+        <source>export: png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) or lottie (dotLottie).</source>
+        <translation>export: png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) oder lottie (dotLottie).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="45"/>
         <source>export: frame N only; a 3D model (obj, glb) is one frame, by default the first of the play range.</source>
         <translation>export: nur Einzelbild N; ein 3D-Modell (obj, glb) ist ein Einzelbild, standardmäßig das erste des Abspielbereichs.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="46"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: die Leinwandgröße mit S multiplizieren.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: N Bilder pro Sekunde (Standard: die des Dokuments).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="52"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: diese Hintergrundfarbe (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="51"/>
+        <location filename="../app/cli_export.cpp" line="53"/>
         <source>export: no background.</source>
         <translation>export: kein Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="53"/>
+        <location filename="../app/cli_export.cpp" line="55"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: eine Datei pro Zeichnung plus ein Timing-Sheet.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="56"/>
+        <location filename="../app/cli_export.cpp" line="58"/>
         <source>export: paint the document&apos;s reference picture or video under the drawing.</source>
         <translation>export: das Referenzbild oder -video des Dokuments unter die Zeichnung malen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="60"/>
+        <location filename="../app/cli_export.cpp" line="62"/>
         <source>export: the whole page, not the shot the document&apos;s camera frames.</source>
         <translation>export: die ganze Seite statt des Ausschnitts, den die Kamera des Dokuments zeigt.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="63"/>
+        <location filename="../app/cli_export.cpp" line="65"/>
         <source>export: only the layers named A, B, ... (hidden ones too), not every visible layer.</source>
         <translation>export: nur die Ebenen namens A, B, ... (auch ausgeblendete) statt aller sichtbaren Ebenen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="67"/>
+        <location filename="../app/cli_export.cpp" line="69"/>
         <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
         <translation>export: abbrechen (Exit-Code 2, nichts geschrieben), wenn ein Soundclip oder die Referenz nicht verwendet werden kann, statt sie mit einer Warnung wegzulassen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="70"/>
+        <location filename="../app/cli_export.cpp" line="72"/>
         <source>export: replace existing files.</source>
         <translation>export: vorhandene Dateien ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="71"/>
+        <location filename="../app/cli_export.cpp" line="73"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: jede Datei (FILE) in DIR schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="73"/>
+        <location filename="../app/cli_export.cpp" line="75"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: bis zu N Einzelbilder erlauben (Standard: 100000 Dateien, 3 Stunden Video).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="105"/>
+        <location filename="../app/cli_export.cpp" line="107"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range erwartet A-B mit 1 &lt;= A &lt;= B, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="119"/>
+        <location filename="../app/cli_export.cpp" line="121"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame und --range können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="122"/>
+        <location filename="../app/cli_export.cpp" line="124"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame braucht eine Bildnummer ab 1, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="129"/>
+        <location filename="../app/cli_export.cpp" line="131"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale erwartet eine Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="135"/>
+        <location filename="../app/cli_export.cpp" line="137"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps erwartet eine ganze Zahl von %1 bis %2, nicht „%3“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="143"/>
+        <location filename="../app/cli_export.cpp" line="145"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames erwartet eine ganze Zahl größer als 0, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="149"/>
+        <location filename="../app/cli_export.cpp" line="151"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background erwartet eine Farbe wie #ffffff, nicht „%1“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="161"/>
-        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
-        <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html, obj oder glb.</translation>
+        <location filename="../app/cli_export.cpp" line="163"/>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) or lottie (dotLottie).</source>
+        <translation>Unbekanntes Exportformat „%1“; verwenden Sie png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) oder lottie (dotLottie).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="177"/>
+        <location filename="../app/cli_export.cpp" line="186"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj, .glb, .json (Lottie) or .lottie, give a folder for PNG frames, or use --format.</source>
+        <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html, .obj, .glb, .json (Lottie) oder .lottie enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="179"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>„%1“ ist ein Ordner, keine %2-Datei; geben Sie einen Dateinamen an oder --format png, um PNG-Einzelbilder in den Ordner zu schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="184"/>
-        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
-        <translation>Das Format lässt sich aus „%1“ nicht ermitteln: Lassen Sie den Namen auf .gif, .mp4, .webm, .apng, .html, .obj oder .glb enden, geben Sie einen Ordner für PNG-Einzelbilder an oder verwenden Sie --format.</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="189"/>
+        <location filename="../app/cli_export.cpp" line="191"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 passt nicht zu „%2“.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="205"/>
+        <location filename="../app/cli_export.cpp" line="207"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE OUT oder finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="209"/>
+        <location filename="../app/cli_export.cpp" line="211"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Aufruf: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="226"/>
+        <location filename="../app/cli_export.cpp" line="228"/>
         <source>--layers needs the names of layers, separated by commas.</source>
         <translation>--layers braucht die Namen von Ebenen, durch Kommas getrennt.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="229"/>
+        <location filename="../app/cli_export.cpp" line="231"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent und --background können nicht zusammen verwendet werden.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="231"/>
+        <location filename="../app/cli_export.cpp" line="233"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing gilt nur für png- und svg-Exporte.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="327"/>
+        <location filename="../app/cli_export.cpp" line="329"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>„%1“ konnte nicht geschrieben werden: %2. Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="342"/>
+        <location filename="../app/cli_export.cpp" line="344"/>
         <source>&quot;%1&quot; has no layer named &quot;%2&quot;; its layers are %3. Nothing was exported.</source>
         <translation>„%1“ hat keine Ebene namens „%2“; seine Ebenen sind %3. Es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="358"/>
+        <location filename="../app/cli_export.cpp" line="363"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Unterbrochen; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="366"/>
+        <location filename="../app/cli_export.cpp" line="371"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Verwenden Sie --overwrite, um sie zu ersetzen.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="368"/>
+        <location filename="../app/cli_export.cpp" line="373"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Mit --max-frames N werden N Einzelbilder erlaubt.</translation>
     </message>
@@ -910,17 +910,17 @@
         <translation>%1-Videos können nicht transparent sein; wählen Sie WebM, APNG, GIF oder PNG für einen transparenten Hintergrund.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="198"/>
+        <location filename="../model/src/export/export_plan.cpp" line="199"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Dieser Export würde %1 Einzelbilder schreiben, mehr als die erlaubten %2; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="205"/>
+        <location filename="../model/src/export/export_plan.cpp" line="206"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Dateien schreiben (%2 Wiedergabeschritte), mehr als %3 ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="213"/>
+        <location filename="../model/src/export/export_plan.cpp" line="214"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Dieser Export würde %1 Stunden Animation ergeben (%2 Einzelbilder), mehr als %3 Stunden ohne Ihre ausdrückliche Erlaubnis; es wurde nichts exportiert.</translation>
     </message>
@@ -1046,32 +1046,32 @@
         <translation>„%1“ ist ein Ordner, wo eine Datei hingehört</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="19"/>
+        <location filename="../model/src/export/export_model.cpp" line="68"/>
         <source>The 3D model of frame %1 would have more than %L2 vertices, the most a 3D export writes (about 25 MB of glTF). Nothing was exported; lower the mesh density of its objects (Deform → Mesh Density) or hide some of them.</source>
         <translation>Das 3D-Modell von Einzelbild %1 hätte mehr als %L2 Eckpunkte, mehr als ein 3D-Export schreibt (etwa 25 MB glTF). Es wurde nichts exportiert; verringern Sie die Netzdichte seiner Objekte (Verformen → Netzdichte) oder blenden Sie einige aus.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="30"/>
+        <location filename="../model/src/export/export_model.cpp" line="79"/>
         <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
         <translation>Einzelbild %1 zeigt keine Zeichnung, aus der sich ein 3D-Modell machen ließe; wählen Sie ein anderes Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="35"/>
+        <location filename="../model/src/export/export_model.cpp" line="84"/>
         <source>No object of frame %1 can be made 3D: their points lie more than %L2 pixels from the page, too far out to mesh. Nothing was exported; move the drawing back onto the page or choose another frame.</source>
         <translation>Kein Objekt von Einzelbild %1 lässt sich in 3D umwandeln: Seine Punkte liegen mehr als %L2 Pixel von der Seite entfernt, zu weit draußen für ein Netz. Es wurde nichts exportiert; verschieben Sie die Zeichnung zurück auf die Seite oder wählen Sie ein anderes Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="43"/>
+        <location filename="../model/src/export/export_model.cpp" line="92"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate, or lies too far from the page to mesh. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>Kein Objekt von Einzelbild %1 lässt sich in 3D umwandeln: Jedes ist ein Punkt oder eine gerade Linie ohne Fläche zum Aufblasen oder liegt zu weit von der Seite entfernt für ein Netz. Es wurde nichts exportiert; zeichnen Sie eine Form oder wählen Sie ein anderes Bild.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="50"/>
+        <location filename="../model/src/export/export_model.cpp" line="99"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>Kein Objekt von Einzelbild %1 lässt sich in 3D umwandeln: Jedes ist ein Punkt oder eine gerade Linie ohne Fläche zum Aufblasen. Es wurde nichts exportiert; zeichnen Sie eine Form oder wählen Sie ein anderes Bild.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_model.cpp" line="61"/>
+        <location filename="../model/src/export/export_model.cpp" line="110"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and were left out.</source>
         <translation>
             <numerusform>%n Objekt von Einzelbild %1 ließ sich nicht in 3D umwandeln (ein Punkt oder eine gerade Linie hat keine Fläche zum Aufblasen; eine Zeichnung weit außerhalb der Seite lässt sich nicht vernetzen) und wurde weggelassen.</numerusform>
@@ -1084,7 +1084,7 @@
         <translation>„%1“ würde von seiner eigenen Materialdatei überschrieben; geben Sie einen Dateinamen an, der auf .obj endet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_model.cpp" line="66"/>
+        <location filename="../model/src/export/export_model.cpp" line="115"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>%n Objekt von Einzelbild %1 ließ sich nicht in 3D umwandeln (ein Punkt oder eine gerade Linie hat keine Fläche zum Aufblasen) und wurde weggelassen.</numerusform>
@@ -1105,6 +1105,21 @@
         <location filename="../model/src/reference/reference_export.cpp" line="18"/>
         <source>The reference &quot;%1&quot; is left out: %2</source>
         <translation>Die Referenz „%1“ wird weggelassen: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_lottie.cpp" line="606"/>
+        <source>the zip container failed</source>
+        <translation>der ZIP-Container ließ sich nicht schreiben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_lottie.cpp" line="627"/>
+        <source>Lottie has no place for the reference picture; it is left out.</source>
+        <translation>Lottie kann das Referenzbild nicht aufnehmen; es wird weggelassen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
+        <source>Lottie carries no sound; the soundtrack is left out.</source>
+        <translation>Lottie enthält keinen Ton; die Tonspur wird weggelassen.</translation>
     </message>
 </context>
 <context>
@@ -2623,48 +2638,48 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="120"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="121"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Es gibt kein Einzelbild, auf dem gezeichnet werden kann. Fügen Sie zuerst ein Einzelbild ein.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="124"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist gesperrt. Entsperren Sie es im Bedienfeld Objekte, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="127"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>Das Objekt „%1“ ist ausgeblendet. Blenden Sie es im Bedienfeld Objekte ein, um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="148"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="149"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="187"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="188"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (Pose angewendet)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="208"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="265"/>
         <source>Delete Strokes</source>
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="272"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="328"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="348"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="404"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="358"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="359"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="414"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="415"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -3271,13 +3286,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="59"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="338"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="340"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="67"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="326"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="328"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
@@ -3308,21 +3323,31 @@
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <source>Lottie animation (JSON), for web pages and apps</source>
+        <translation>Lottie-Animation (JSON), für Webseiten und Apps</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <source>dotLottie animation (compressed Lottie)</source>
+        <translation>dotLottie-Animation (komprimiertes Lottie)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
         <source>PNG images (a folder)</source>
         <translation>PNG-Bilder (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="87"/>
         <source>SVG vector images (a folder)</source>
         <translation>SVG-Vektorbilder (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>3D-Modell (OBJ), das aktuelle Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="87"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
         <source>3D model (glTF binary), the current frame</source>
         <translation>Finbook, ein Daumenkino-Animationseditor.
 
@@ -3336,157 +3361,157 @@
   finbook thumbnail FILE OUT.png SIZE   das erste Einzelbild als PNG von höchstens SIZE px schreiben</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>&amp;Browse...</source>
         <translation>&amp;Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="95"/>
         <source>Play range</source>
         <translation>Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="96"/>
         <source>All frames</source>
         <translation>Alle Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="95"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="97"/>
         <source>Frames</source>
         <translation>Einzelbilder</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
         <source>Document background</source>
         <translation>Dokumenthintergrund</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="119"/>
         <source>Start again after the last frame</source>
         <translation>Nach dem letzten Einzelbild wieder von vorn beginnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="120"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Eine Datei pro Zeichnung, mit Timing-Sheet</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="119"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="121"/>
         <source>Include refere&amp;nce</source>
         <translation>Refere&amp;nz einschließen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="121"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="123"/>
         <source>Paint the reference picture or video under the drawing (not in SVG or 3D)</source>
         <translation>Das Referenzbild oder -video unter die Zeichnung malen (nicht bei SVG oder 3D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="141"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="143"/>
         <source>to</source>
         <translation>bis</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>&amp;Save to:</source>
         <translation>&amp;Speichern in:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>F&amp;rames:</source>
         <translation>Einzel&amp;bilder:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>Sc&amp;ale:</source>
         <translation>S&amp;kalierung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
         <source>&amp;Background:</source>
         <translation>&amp;Hintergrund:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="163"/>
         <source>Frame ra&amp;te:</source>
         <translation>Bild&amp;rate:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="164"/>
         <source>Loop:</source>
         <translation>Endlosschleife:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="167"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="169"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="168"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="170"/>
         <source>Cancel Export</source>
         <translation>Export abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 × %2 Pixel</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="274"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, mit einer .mtl-Datei daneben. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="277"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="279"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>Ein 3D-Modell enthält nur das aktuelle Einzelbild (%1): seine Objekte aufgeblasen, in ihren Füllfarben, alles in einer Datei. Bilder, Skalierung, Hintergrund und Bildrate gelten hier nicht.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="282"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="284"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Dieses Format benötigt das Programm ffmpeg, das nicht gefunden wurde; installieren Sie es zuerst (unter Debian: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="287"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
         <source>The video carries the soundtrack, trimmed to the frames exported.</source>
         <translation>Das Video enthält die Tonspur, zugeschnitten auf die exportierten Bilder.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
         <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
         <translation>Die Seite enthält die Tonspur; sie läuft mit den Bildern, sobald der Betrachter auf Abspielen klickt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
         <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
         <translation>Dieses Format hat keinen Ton: die Tonspur wird weggelassen (MP4, WebM und HTML enthalten sie).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="335"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="337"/>
         <source>Export to Folder</source>
         <translation>In Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="339"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="341"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>
@@ -3831,25 +3856,25 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
         <source>Lock Layer</source>
         <translation>Ebene sperren</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
         <source>Unlock Layer</source>
         <translation>Ebene entsperren</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
         <source>Show Layer</source>
         <translation>Ebene einblenden</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
         <source>Hide Layer</source>
         <translation>Ebene ausblenden</translation>
     </message>
@@ -3895,63 +3920,63 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window.cpp" line="157"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window.cpp" line="198"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window.cpp" line="199"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="194"/>
+        <location filename="../ui/src/window/main_window.cpp" line="202"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="214"/>
+        <location filename="../ui/src/window/main_window.cpp" line="222"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="215"/>
+        <location filename="../ui/src/window/main_window.cpp" line="223"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window.cpp" line="256"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>Die Referenz „%1“ kann nicht angezeigt werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window.cpp" line="265"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window.cpp" line="276"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window.cpp" line="277"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window.cpp" line="282"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window.cpp" line="283"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>

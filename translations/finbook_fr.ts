@@ -4,17 +4,17 @@
 <context>
     <name>CelEditing</name>
     <message>
-        <location filename="../ui/src/layers/cel_editing.cpp" line="111"/>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="113"/>
         <source>Cut Cels</source>
         <translation>Couper les cellulos</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/cel_editing.cpp" line="139"/>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="141"/>
         <source>No cels have been copied.</source>
         <translation>Aucun cellulo n’a été copié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/cel_editing.cpp" line="147"/>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="149"/>
         <source>The cels cannot go onto a locked layer.</source>
         <translation>Les cellulos ne peuvent pas aller sur un calque verrouillé.</translation>
     </message>
@@ -381,7 +381,7 @@
     </message>
     <message>
         <location filename="../model/src/scene/layer_commands.cpp" line="222"/>
-        <location filename="../model/src/scene/layer_commands.cpp" line="345"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="342"/>
         <source>Move Cels</source>
         <translation>Déplacer les cellulos</translation>
     </message>
@@ -391,7 +391,7 @@
         <translation>Insérer un cellulo vide</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="344"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="342"/>
         <source>Copy Cels</source>
         <translation>Copier les cellulos</translation>
     </message>
@@ -476,182 +476,182 @@
         <translation>Commande inconnue « %1 » ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="41"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export : images A à B (par défaut : la plage de lecture).</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="39"/>
-        <source>export: png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
-        <translation>export : png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
+        <source>export: png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) or lottie (dotLottie).</source>
+        <translation>export : png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) ou lottie (dotLottie).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="45"/>
         <source>export: frame N only; a 3D model (obj, glb) is one frame, by default the first of the play range.</source>
         <translation>export : l&apos;image N seulement ; un modèle 3D (obj, glb) est une seule image, par défaut la première de la plage de lecture.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="46"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export : multiplier la taille du canevas par S.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export : N images par seconde (par défaut : celle du document).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="52"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export : cette couleur d&apos;arrière-plan (#rrggbb).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="51"/>
+        <location filename="../app/cli_export.cpp" line="53"/>
         <source>export: no background.</source>
         <translation>export : pas d&apos;arrière-plan.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="53"/>
+        <location filename="../app/cli_export.cpp" line="55"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg : un fichier par dessin, plus une feuille d&apos;exposition.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="56"/>
+        <location filename="../app/cli_export.cpp" line="58"/>
         <source>export: paint the document&apos;s reference picture or video under the drawing.</source>
         <translation>export : peindre l’image ou la vidéo de référence du document sous le dessin.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="60"/>
+        <location filename="../app/cli_export.cpp" line="62"/>
         <source>export: the whole page, not the shot the document&apos;s camera frames.</source>
         <translation>export : la page entière, pas le plan que cadre la caméra du document.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="63"/>
+        <location filename="../app/cli_export.cpp" line="65"/>
         <source>export: only the layers named A, B, ... (hidden ones too), not every visible layer.</source>
         <translation>export : seulement les calques nommés A, B, ... (masqués compris), pas tous les calques visibles.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="67"/>
+        <location filename="../app/cli_export.cpp" line="69"/>
         <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
         <translation>export : échouer (code de sortie 2, rien n’est écrit) quand un clip sonore ou la référence ne peut pas être utilisé, au lieu de l’omettre avec un avertissement.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="70"/>
+        <location filename="../app/cli_export.cpp" line="72"/>
         <source>export: replace existing files.</source>
         <translation>export : remplacer les fichiers existants.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="71"/>
+        <location filename="../app/cli_export.cpp" line="73"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export : écrire chaque FILE dans DIR.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="73"/>
+        <location filename="../app/cli_export.cpp" line="75"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export : autoriser jusqu’à N images (par défaut : 100000 fichiers, 3 heures de vidéo).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="105"/>
+        <location filename="../app/cli_export.cpp" line="107"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range attend A-B avec 1 &lt;= A &lt;= B, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="119"/>
+        <location filename="../app/cli_export.cpp" line="121"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame et --range ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="122"/>
+        <location filename="../app/cli_export.cpp" line="124"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame attend un numéro d&apos;image à partir de 1, pas « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="129"/>
+        <location filename="../app/cli_export.cpp" line="131"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale attend un nombre supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="135"/>
+        <location filename="../app/cli_export.cpp" line="137"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps attend un nombre entier de %1 à %2, et non « %3 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="143"/>
+        <location filename="../app/cli_export.cpp" line="145"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames attend un nombre entier supérieur à 0, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="149"/>
+        <location filename="../app/cli_export.cpp" line="151"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background attend une couleur comme #ffffff, et non « %1 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="161"/>
-        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
-        <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj ou glb.</translation>
+        <location filename="../app/cli_export.cpp" line="163"/>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) or lottie (dotLottie).</source>
+        <translation>Format d'export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) ou lottie (dotLottie).</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="177"/>
+        <location filename="../app/cli_export.cpp" line="186"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj, .glb, .json (Lottie) or .lottie, give a folder for PNG frames, or use --format.</source>
+        <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html, .obj, .glb, .json (Lottie) ou .lottie, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="179"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>« %1 » est un dossier, pas un fichier %2 ; donnez un nom de fichier, ou --format png pour écrire des images PNG dans le dossier.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="184"/>
-        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
-        <translation>Impossible de déduire le format de « %1 » : terminez le nom par .gif, .mp4, .webm, .apng, .html, .obj ou .glb, indiquez un dossier pour des images PNG, ou utilisez --format.</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="189"/>
+        <location filename="../app/cli_export.cpp" line="191"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 ne correspond pas à « %2 ».</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="205"/>
+        <location filename="../app/cli_export.cpp" line="207"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE OUT, ou finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="209"/>
+        <location filename="../app/cli_export.cpp" line="211"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>Utilisation : finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="226"/>
+        <location filename="../app/cli_export.cpp" line="228"/>
         <source>--layers needs the names of layers, separated by commas.</source>
         <translation>--layers attend des noms de calques séparés par des virgules.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="229"/>
+        <location filename="../app/cli_export.cpp" line="231"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent et --background ne peuvent pas être utilisés ensemble.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="231"/>
+        <location filename="../app/cli_export.cpp" line="233"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing ne s&apos;applique qu&apos;aux exports png et svg.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="327"/>
+        <location filename="../app/cli_export.cpp" line="329"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>Impossible d&apos;écrire «&#xa0;%1&#xa0;»&#xa0;: %2. Rien n&apos;a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="342"/>
+        <location filename="../app/cli_export.cpp" line="344"/>
         <source>&quot;%1&quot; has no layer named &quot;%2&quot;; its layers are %3. Nothing was exported.</source>
         <translation>« %1 » n’a pas de calque nommé « %2 » ; ses calques sont %3. Rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="358"/>
+        <location filename="../app/cli_export.cpp" line="363"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="366"/>
+        <location filename="../app/cli_export.cpp" line="371"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="368"/>
+        <location filename="../app/cli_export.cpp" line="373"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -910,17 +910,17 @@
         <translation>Une vidéo %1 ne peut pas être transparente&#xa0;; choisissez WebM, APNG, GIF ou PNG pour un arrière-plan transparent.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="198"/>
+        <location filename="../model/src/export/export_plan.cpp" line="199"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>Cet export écrirait %1 images, plus que les %2 autorisées ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="205"/>
+        <location filename="../model/src/export/export_plan.cpp" line="206"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>Cet export écrirait %1 fichiers (%2 pas de lecture), plus de %3 sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="213"/>
+        <location filename="../model/src/export/export_plan.cpp" line="214"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>Cet export produirait %1 heures d’animation (%2 images), plus de %3 heures sans votre autorisation explicite ; rien n’a été exporté.</translation>
     </message>
@@ -1046,32 +1046,32 @@
         <translation>« %1 » est un dossier là où un fichier doit aller</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="19"/>
+        <location filename="../model/src/export/export_model.cpp" line="68"/>
         <source>The 3D model of frame %1 would have more than %L2 vertices, the most a 3D export writes (about 25 MB of glTF). Nothing was exported; lower the mesh density of its objects (Deform → Mesh Density) or hide some of them.</source>
         <translation>Le modèle 3D de l’image %1 aurait plus de %L2 sommets, le maximum qu’un export 3D écrit (environ 25 Mo de glTF). Rien n’a été exporté ; baissez la densité du maillage de ses objets (Déformer → Densité du maillage) ou masquez-en quelques-uns.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="30"/>
+        <location filename="../model/src/export/export_model.cpp" line="79"/>
         <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
         <translation>L&apos;image %1 ne montre aucun dessin dont faire un modèle 3D ; choisissez une autre image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="35"/>
+        <location filename="../model/src/export/export_model.cpp" line="84"/>
         <source>No object of frame %1 can be made 3D: their points lie more than %L2 pixels from the page, too far out to mesh. Nothing was exported; move the drawing back onto the page or choose another frame.</source>
         <translation>Aucun objet de l’image %1 ne peut être mis en 3D : leurs points sont à plus de %L2 pixels de la page, trop loin pour être maillés. Rien n’a été exporté ; ramenez le dessin sur la page ou choisissez une autre image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="43"/>
+        <location filename="../model/src/export/export_model.cpp" line="92"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate, or lies too far from the page to mesh. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>Aucun objet de l’image %1 ne peut être mis en 3D : chacun est un point ou une ligne droite, sans surface à gonfler, ou se trouve trop loin de la page pour être maillé. Rien n’a été exporté ; dessinez une forme ou choisissez une autre image.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="50"/>
+        <location filename="../model/src/export/export_model.cpp" line="99"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>Aucun objet de l&apos;image %1 ne peut être mis en 3D : chacun est un point ou une ligne droite, sans surface à gonfler. Rien n&apos;a été exporté ; dessinez une forme ou choisissez une autre image.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_model.cpp" line="61"/>
+        <location filename="../model/src/export/export_model.cpp" line="110"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and were left out.</source>
         <translation>
             <numerusform>%n objet de l’image %1 n’a pas pu être mis en 3D (un point ou une ligne droite n’a pas de surface à gonfler ; un dessin loin hors de la page ne peut pas être maillé) et a été laissé de côté.</numerusform>
@@ -1084,7 +1084,7 @@
         <translation>« %1 » serait écrasé par son propre fichier de matériaux ; donnez un nom de fichier terminé par .obj.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_model.cpp" line="66"/>
+        <location filename="../model/src/export/export_model.cpp" line="115"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>%n objet de l&apos;image %1 n&apos;a pas pu être mis en 3D (un point ou une ligne droite n&apos;a pas de surface à gonfler) et a été omis.</numerusform>
@@ -1105,6 +1105,21 @@
         <location filename="../model/src/reference/reference_export.cpp" line="18"/>
         <source>The reference &quot;%1&quot; is left out: %2</source>
         <translation>La référence « %1 » est omise : %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_lottie.cpp" line="606"/>
+        <source>the zip container failed</source>
+        <translation>le conteneur zip n'a pas pu être écrit</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_lottie.cpp" line="627"/>
+        <source>Lottie has no place for the reference picture; it is left out.</source>
+        <translation>Lottie ne peut pas contenir l'image de référence ; elle est laissée de côté.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
+        <source>Lottie carries no sound; the soundtrack is left out.</source>
+        <translation>Lottie ne contient pas de son ; la bande son est laissée de côté.</translation>
     </message>
 </context>
 <context>
@@ -2623,48 +2638,48 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="120"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="121"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>Il n&apos;y a aucune image sur laquelle dessiner. Insérez d&apos;abord une image.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="124"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est verrouillé. Déverrouillez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="127"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>L&apos;objet «&#xa0;%1&#xa0;» est masqué. Affichez-le dans le panneau Objets pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="148"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="149"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="187"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="188"/>
         <source>%1 (pose applied)</source>
         <translation>%1 (pose appliquée)</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="208"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="265"/>
         <source>Delete Strokes</source>
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="272"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="328"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="348"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="404"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="358"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="359"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="414"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="415"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -3271,13 +3286,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="59"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="338"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="340"/>
         <source>Export Animation</source>
         <translation>Exporter l&apos;animation</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="67"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="326"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="328"/>
         <source>untitled</source>
         <translation>sans titre</translation>
     </message>
@@ -3308,21 +3323,31 @@
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <source>Lottie animation (JSON), for web pages and apps</source>
+        <translation>Animation Lottie (JSON), pour pages web et applications</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <source>dotLottie animation (compressed Lottie)</source>
+        <translation>Animation dotLottie (Lottie compressé)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
         <source>PNG images (a folder)</source>
         <translation>Images PNG (un dossier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="87"/>
         <source>SVG vector images (a folder)</source>
         <translation>Images vectorielles SVG (un dossier)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>Modèle 3D (OBJ), l&apos;image courante</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="87"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
         <source>3D model (glTF binary), the current frame</source>
         <translation>Finbook, un éditeur d&apos;animation en folioscope.
 
@@ -3336,157 +3361,157 @@
   finbook thumbnail FILE OUT.png SIZE   écrire la première image en PNG d&apos;au plus SIZE px</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>&amp;Browse...</source>
         <translation>Parc&amp;ourir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="95"/>
         <source>Play range</source>
         <translation>Plage de lecture</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="96"/>
         <source>All frames</source>
         <translation>Toutes les images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="95"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="97"/>
         <source>Frames</source>
         <translation>Images</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
         <source>Document background</source>
         <translation>Arrière-plan du document</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
         <source>Transparent</source>
         <translation>Transparent</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source>Colour</source>
         <translation>Couleur</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
         <source> fps</source>
         <translation> i/s</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="119"/>
         <source>Start again after the last frame</source>
         <translation>Recommencer après la dernière image</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="120"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>Un fichier par dessin, avec une feuille d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="119"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="121"/>
         <source>Include refere&amp;nce</source>
         <translation>Inclure la référe&amp;nce</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="121"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="123"/>
         <source>Paint the reference picture or video under the drawing (not in SVG or 3D)</source>
         <translation>Peindre l’image ou la vidéo de référence sous le dessin (pas en SVG ni en 3D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="141"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="143"/>
         <source>to</source>
         <translation>à</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>&amp;Save to:</source>
         <translation>Enregistrer &amp;dans&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>F&amp;rames:</source>
         <translation>&amp;Images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>Sc&amp;ale:</source>
         <translation>É&amp;chelle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
         <source>&amp;Background:</source>
         <translation>Arrière-&amp;plan&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="163"/>
         <source>Frame ra&amp;te:</source>
         <translation>Fré&amp;quence d&apos;images&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="164"/>
         <source>Loop:</source>
         <translation>Boucle&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="167"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="169"/>
         <source>&amp;Export</source>
         <translation>&amp;Exporter</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="168"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="170"/>
         <source>Cancel Export</source>
         <translation>Annuler l&apos;export</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
         <source>%1 x %2 pixels</source>
         <translation>%1 x %2 pixels</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="274"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, avec un fichier .mtl à côté. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="277"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="279"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>Un modèle 3D ne contient que l&apos;image courante (%1) : ses objets gonflés, dans leurs couleurs de remplissage, le tout dans un seul fichier. Les images, l&apos;échelle, le fond et la cadence ne s&apos;appliquent pas.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="282"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="284"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>Ce format nécessite le programme ffmpeg, qui est introuvable&#xa0;; installez-le d&apos;abord (sous Debian&#xa0;: apt install ffmpeg).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="287"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
         <source>The video carries the soundtrack, trimmed to the frames exported.</source>
         <translation>La vidéo porte la bande son, coupée aux images exportées.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
         <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
         <translation>La page porte la bande son ; elle joue avec les images dès que le spectateur appuie sur Lecture.</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
         <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
         <translation>Ce format n&apos;a pas de son : la bande son est laissée de côté (MP4, WebM et HTML la portent).</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="335"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="337"/>
         <source>Export to Folder</source>
         <translation>Exporter dans un dossier</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="339"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="341"/>
         <source>%1 files (*.%2)</source>
         <translation>Fichiers %1 (*.%2)</translation>
     </message>
@@ -3831,25 +3856,25 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
         <source>Lock Layer</source>
         <translation>Verrouiller le calque</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
         <source>Unlock Layer</source>
         <translation>Déverrouiller le calque</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
         <source>Show Layer</source>
         <translation>Afficher le calque</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
         <source>Hide Layer</source>
         <translation>Masquer le calque</translation>
     </message>
@@ -3895,63 +3920,63 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window.cpp" line="157"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window.cpp" line="198"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window.cpp" line="199"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="194"/>
+        <location filename="../ui/src/window/main_window.cpp" line="202"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="214"/>
+        <location filename="../ui/src/window/main_window.cpp" line="222"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="215"/>
+        <location filename="../ui/src/window/main_window.cpp" line="223"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window.cpp" line="256"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>La référence « %1 » ne peut pas être affichée : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window.cpp" line="265"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window.cpp" line="276"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window.cpp" line="277"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window.cpp" line="282"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window.cpp" line="283"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>

@@ -4,17 +4,17 @@
 <context>
     <name>CelEditing</name>
     <message>
-        <location filename="../ui/src/layers/cel_editing.cpp" line="111"/>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="113"/>
         <source>Cut Cels</source>
         <translation>セルを切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/cel_editing.cpp" line="139"/>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="141"/>
         <source>No cels have been copied.</source>
         <translation>コピーされたセルはありません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/layers/cel_editing.cpp" line="147"/>
+        <location filename="../ui/src/layers/cel_editing.cpp" line="149"/>
         <source>The cels cannot go onto a locked layer.</source>
         <translation>ロックされたレイヤーにはセルを置けません。</translation>
     </message>
@@ -381,7 +381,7 @@
     </message>
     <message>
         <location filename="../model/src/scene/layer_commands.cpp" line="222"/>
-        <location filename="../model/src/scene/layer_commands.cpp" line="345"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="342"/>
         <source>Move Cels</source>
         <translation>セルを移動</translation>
     </message>
@@ -391,7 +391,7 @@
         <translation>空のセルを挿入</translation>
     </message>
     <message>
-        <location filename="../model/src/scene/layer_commands.cpp" line="344"/>
+        <location filename="../model/src/scene/layer_commands.cpp" line="342"/>
         <source>Copy Cels</source>
         <translation>セルをコピー</translation>
     </message>
@@ -476,182 +476,182 @@
         <translation>不明なコマンド「%1」です。%2。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="41"/>
+        <location filename="../app/cli_export.cpp" line="43"/>
         <source>export: frames A to B (default: the play range).</source>
         <translation>export: フレーム A～B（既定: 再生範囲）。</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="39"/>
-        <source>export: png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
-        <translation>export: png、svg、gif、mp4、webm、apng、html、obj、glb のいずれか。</translation>
+        <source>export: png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) or lottie (dotLottie).</source>
+        <translation>export: png、svg、gif、mp4、webm、apng、html、obj、glb、json (Lottie)、lottie (dotLottie) のいずれか。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="43"/>
+        <location filename="../app/cli_export.cpp" line="45"/>
         <source>export: frame N only; a 3D model (obj, glb) is one frame, by default the first of the play range.</source>
         <translation>export: フレーム N のみ。3D モデル (obj、glb) は 1 フレームで、既定では再生範囲の最初のフレーム。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="46"/>
+        <location filename="../app/cli_export.cpp" line="48"/>
         <source>export: multiply the canvas size by S.</source>
         <translation>export: キャンバスサイズを S 倍にする。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="48"/>
+        <location filename="../app/cli_export.cpp" line="50"/>
         <source>export: N frames per second (default: the document&apos;s).</source>
         <translation>export: 毎秒 N フレーム（既定: ドキュメントの設定）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="50"/>
+        <location filename="../app/cli_export.cpp" line="52"/>
         <source>export: this background colour (#rrggbb).</source>
         <translation>export: この背景色（#rrggbb）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="51"/>
+        <location filename="../app/cli_export.cpp" line="53"/>
         <source>export: no background.</source>
         <translation>export: 背景なし。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="53"/>
+        <location filename="../app/cli_export.cpp" line="55"/>
         <source>export png/svg: one file per drawing plus an exposure sheet.</source>
         <translation>export png/svg: 絵ごとに 1 ファイルとタイムシートを書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="56"/>
+        <location filename="../app/cli_export.cpp" line="58"/>
         <source>export: paint the document&apos;s reference picture or video under the drawing.</source>
         <translation>export: 文書の参照画像または参照動画を絵の下に描きます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="60"/>
+        <location filename="../app/cli_export.cpp" line="62"/>
         <source>export: the whole page, not the shot the document&apos;s camera frames.</source>
         <translation>export: 文書のカメラが写すショットではなく、ページ全体。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="63"/>
+        <location filename="../app/cli_export.cpp" line="65"/>
         <source>export: only the layers named A, B, ... (hidden ones too), not every visible layer.</source>
         <translation>export: すべての表示レイヤーではなく、A, B, ... という名前のレイヤーだけ（非表示のものも含む）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="67"/>
+        <location filename="../app/cli_export.cpp" line="69"/>
         <source>export: fail (exit code 2, nothing written) when a sound clip or the reference cannot be used, instead of leaving it out with a warning.</source>
         <translation>export: サウンドクリップまたは参照画像を使用できないとき、警告して省く代わりに失敗します（終了コード 2、何も書き出しません）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="70"/>
+        <location filename="../app/cli_export.cpp" line="72"/>
         <source>export: replace existing files.</source>
         <translation>export: 既存のファイルを置き換える。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="71"/>
+        <location filename="../app/cli_export.cpp" line="73"/>
         <source>export: write each FILE into DIR.</source>
         <translation>export: 各 FILE を DIR に書き出す。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="73"/>
+        <location filename="../app/cli_export.cpp" line="75"/>
         <source>export: allow up to N frames (default: 100000 files, 3 hours of video).</source>
         <translation>export: 最大 N フレームまで許可します（既定: 100000 ファイル、動画 3 時間）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="105"/>
+        <location filename="../app/cli_export.cpp" line="107"/>
         <source>--range needs A-B with 1 &lt;= A &lt;= B, not &quot;%1&quot;.</source>
         <translation>--range には「%1」ではなく、1 &lt;= A &lt;= B を満たす A-B を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="119"/>
+        <location filename="../app/cli_export.cpp" line="121"/>
         <source>--frame and --range cannot be used together.</source>
         <translation>--frame と --range は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="122"/>
+        <location filename="../app/cli_export.cpp" line="124"/>
         <source>--frame needs a frame number from 1, not &quot;%1&quot;.</source>
         <translation>--frame には 1 以上のフレーム番号を指定してください (「%1」ではなく)。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="129"/>
+        <location filename="../app/cli_export.cpp" line="131"/>
         <source>--scale needs a number above 0, not &quot;%1&quot;.</source>
         <translation>--scale には「%1」ではなく、0 より大きい数値を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="135"/>
+        <location filename="../app/cli_export.cpp" line="137"/>
         <source>--fps needs a whole number from %1 to %2, not &quot;%3&quot;.</source>
         <translation>--fps には「%3」ではなく、%1～%2 の整数を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="143"/>
+        <location filename="../app/cli_export.cpp" line="145"/>
         <source>--max-frames needs a whole number above 0, not &quot;%1&quot;.</source>
         <translation>--max-frames には 0 より大きい整数を指定してください（「%1」ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="149"/>
+        <location filename="../app/cli_export.cpp" line="151"/>
         <source>--background needs a colour such as #ffffff, not &quot;%1&quot;.</source>
         <translation>--background には「%1」ではなく、#ffffff のような色を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="161"/>
-        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj or glb.</source>
-        <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj、glb のいずれかを使ってください。</translation>
+        <location filename="../app/cli_export.cpp" line="163"/>
+        <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) or lottie (dotLottie).</source>
+        <translation>不明な書き出し形式「%1」です。png、svg、gif、mp4、webm、apng、html、obj、glb、json (Lottie)、lottie (dotLottie) のいずれかを使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="177"/>
+        <location filename="../app/cli_export.cpp" line="186"/>
+        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj, .glb, .json (Lottie) or .lottie, give a folder for PNG frames, or use --format.</source>
+        <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj、.glb、.json (Lottie)、.lottie にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../app/cli_export.cpp" line="179"/>
         <source>&quot;%1&quot; is a folder, not a %2 file; give a file name, or --format png to write PNG frames into the folder.</source>
         <translation>「%1」は %2 ファイルではなくフォルダーです。ファイル名を指定するか、フォルダーに PNG フレームを書き出すには --format png を指定してください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="184"/>
-        <source>Cannot tell the format from &quot;%1&quot;: end it in .gif, .mp4, .webm, .apng, .html, .obj or .glb, give a folder for PNG frames, or use --format.</source>
-        <translation>「%1」から形式を判断できません。末尾を .gif、.mp4、.webm、.apng、.html、.obj、.glb にするか、PNG フレーム用のフォルダーを指定するか、--format を使ってください。</translation>
-    </message>
-    <message>
-        <location filename="../app/cli_export.cpp" line="189"/>
+        <location filename="../app/cli_export.cpp" line="191"/>
         <source>--format %1 does not match &quot;%2&quot;.</source>
         <translation>--format %1 が「%2」と一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="205"/>
+        <location filename="../app/cli_export.cpp" line="207"/>
         <source>Usage: finbook export FILE OUT, or finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE OUT、または finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="209"/>
+        <location filename="../app/cli_export.cpp" line="211"/>
         <source>Usage: finbook export FILE... --out-dir DIR</source>
         <translation>使い方: finbook export FILE... --out-dir DIR</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="226"/>
+        <location filename="../app/cli_export.cpp" line="228"/>
         <source>--layers needs the names of layers, separated by commas.</source>
         <translation>--layers にはカンマで区切ったレイヤー名が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="229"/>
+        <location filename="../app/cli_export.cpp" line="231"/>
         <source>--transparent and --background cannot be used together.</source>
         <translation>--transparent と --background は同時に使えません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="231"/>
+        <location filename="../app/cli_export.cpp" line="233"/>
         <source>--one-per-drawing is for png and svg exports only.</source>
         <translation>--one-per-drawing は png と svg の書き出しでのみ使えます。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="327"/>
+        <location filename="../app/cli_export.cpp" line="329"/>
         <source>Could not write &quot;%1&quot;: %2. Nothing was exported.</source>
         <translation>「%1」を書き込めませんでした: %2。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="342"/>
+        <location filename="../app/cli_export.cpp" line="344"/>
         <source>&quot;%1&quot; has no layer named &quot;%2&quot;; its layers are %3. Nothing was exported.</source>
         <translation>「%1」には「%2」という名前のレイヤーがありません。レイヤーは %3 です。何も書き出されませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="358"/>
+        <location filename="../app/cli_export.cpp" line="363"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="366"/>
+        <location filename="../app/cli_export.cpp" line="371"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="368"/>
+        <location filename="../app/cli_export.cpp" line="373"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -909,17 +909,17 @@
         <translation>%1 動画は透明にできません。背景を透明にするには WebM、APNG、GIF、PNG のいずれかを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="198"/>
+        <location filename="../model/src/export/export_plan.cpp" line="199"/>
         <source>This export would write %1 frames, more than the %2 allowed; nothing was exported.</source>
         <translation>この書き出しは %1 フレームを書き込みます。許可された %2 を超えるため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="205"/>
+        <location filename="../model/src/export/export_plan.cpp" line="206"/>
         <source>This export would write %1 files (%2 playback ticks), more than %3 without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 個のファイル（再生ティック %2）を書き込みます。明示的な許可なしに %3 を超えることはできないため、何も書き出していません。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_plan.cpp" line="213"/>
+        <location filename="../model/src/export/export_plan.cpp" line="214"/>
         <source>This export would make %1 hours of animation (%2 frames), more than %3 hours without your explicit permission; nothing was exported.</source>
         <translation>この書き出しは %1 時間のアニメーション（%2 フレーム）になります。明示的な許可なしに %3 時間を超えることはできないため、何も書き出していません。</translation>
     </message>
@@ -1043,32 +1043,32 @@
         <translation>ファイルを置くべき場所に「%1」というフォルダーがあります</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="19"/>
+        <location filename="../model/src/export/export_model.cpp" line="68"/>
         <source>The 3D model of frame %1 would have more than %L2 vertices, the most a 3D export writes (about 25 MB of glTF). Nothing was exported; lower the mesh density of its objects (Deform → Mesh Density) or hide some of them.</source>
         <translation>フレーム %1 の 3D モデルは頂点が %L2 個を超えます。これは 3D 書き出しの上限です（glTF で約 25 MB）。何も書き出していません。オブジェクトのメッシュ密度を下げる（変形 → メッシュ密度）か、いくつか非表示にしてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="30"/>
+        <location filename="../model/src/export/export_model.cpp" line="79"/>
         <source>Frame %1 shows no drawing to make a 3D model of; choose another frame.</source>
         <translation>フレーム %1 には 3D モデルにできる絵がありません。別のフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="35"/>
+        <location filename="../model/src/export/export_model.cpp" line="84"/>
         <source>No object of frame %1 can be made 3D: their points lie more than %L2 pixels from the page, too far out to mesh. Nothing was exported; move the drawing back onto the page or choose another frame.</source>
         <translation>フレーム %1 のオブジェクトはどれも 3D にできません。点がページから %L2 ピクセル以上離れていて、メッシュにできません。何も書き出していません。絵をページに戻すか、別のフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="43"/>
+        <location filename="../model/src/export/export_model.cpp" line="92"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate, or lies too far from the page to mesh. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>フレーム %1 のオブジェクトはどれも 3D にできません。どれも点か直線で膨らませる面がないか、ページから遠すぎてメッシュにできません。何も書き出していません。形を描くか、別のフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_model.cpp" line="50"/>
+        <location filename="../model/src/export/export_model.cpp" line="99"/>
         <source>No object of frame %1 can be made 3D: each is a dot or a straight line, with no area to inflate. Nothing was exported; draw a shape or choose another frame.</source>
         <translation>フレーム %1 のオブジェクトはどれも 3D にできません。どれも点か直線で、膨らませる面がありません。何も書き出していません。形を描くか、別のフレームを選んでください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_model.cpp" line="61"/>
+        <location filename="../model/src/export/export_model.cpp" line="110"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and were left out.</source>
         <translation>
             <numerusform>フレーム %1 のオブジェクト %n 個は 3D にできず（点や直線には膨らませる面がなく、ページから遠く離れた絵はメッシュにできません）、省きました。</numerusform>
@@ -1080,7 +1080,7 @@
         <translation>「%1」は自身のマテリアルファイルで上書きされてしまいます。末尾が .obj のファイル名を指定してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/export_model.cpp" line="66"/>
+        <location filename="../model/src/export/export_model.cpp" line="115"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>フレーム %1 の %n 個のオブジェクトは 3D にできなかったため (点や直線には膨らませる面がありません)、省きました。</numerusform>
@@ -1100,6 +1100,21 @@
         <location filename="../model/src/reference/reference_export.cpp" line="18"/>
         <source>The reference &quot;%1&quot; is left out: %2</source>
         <translation>参照「%1」は省かれます: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_lottie.cpp" line="606"/>
+        <source>the zip container failed</source>
+        <translation>ZIP コンテナーを書き込めませんでした</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_lottie.cpp" line="627"/>
+        <source>Lottie has no place for the reference picture; it is left out.</source>
+        <translation>Lottie には参照画像を入れられないため、省きました。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
+        <source>Lottie carries no sound; the soundtrack is left out.</source>
+        <translation>Lottie は音声を持てないため、サウンドトラックは省きました。</translation>
     </message>
 </context>
 <context>
@@ -2612,48 +2627,48 @@
 <context>
     <name>StrokeEditing</name>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="120"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="121"/>
         <source>There is no frame to draw on. Insert a frame first.</source>
         <translation>描画するフレームがありません。先にフレームを挿入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="123"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="124"/>
         <source>The object &quot;%1&quot; is locked. Unlock it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」はロックされています。描画するには、オブジェクトパネルでロックを解除してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="126"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="127"/>
         <source>The object &quot;%1&quot; is hidden. Show it in the Objects panel to draw on it.</source>
         <translation>オブジェクト「%1」は非表示です。描画するには、オブジェクトパネルで表示してください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="148"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="149"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="187"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="188"/>
         <source>%1 (pose applied)</source>
         <translation>%1（ポーズ適用済み）</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="208"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="265"/>
         <source>Delete Strokes</source>
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="272"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="328"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="348"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="404"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="358"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="359"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="414"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="415"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -3257,13 +3272,13 @@
     <name>finbook::ui::ExportDialog</name>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="59"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="338"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="340"/>
         <source>Export Animation</source>
         <translation>アニメーションの書き出し</translation>
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="67"/>
-        <location filename="../ui/src/export/export_dialog.cpp" line="326"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="328"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
@@ -3294,21 +3309,31 @@
     </message>
     <message>
         <location filename="../ui/src/export/export_dialog.cpp" line="84"/>
+        <source>Lottie animation (JSON), for web pages and apps</source>
+        <translation>Lottie アニメーション (JSON)、ウェブページやアプリ向け</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <source>dotLottie animation (compressed Lottie)</source>
+        <translation>dotLottie アニメーション (圧縮した Lottie)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
         <source>PNG images (a folder)</source>
         <translation>PNG 画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="85"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="87"/>
         <source>SVG vector images (a folder)</source>
         <translation>SVG ベクター画像（フォルダー）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="86"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="88"/>
         <source>3D model (OBJ), the current frame</source>
         <translation>3D モデル (OBJ)、現在のフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="87"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="89"/>
         <source>3D model (glTF binary), the current frame</source>
         <translation>Finbook: パラパラ漫画のアニメーションエディター。
 
@@ -3322,157 +3347,157 @@
   finbook thumbnail FILE OUT.png SIZE   最初のフレームを最大 SIZE px の PNG に書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="91"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
         <source>&amp;Browse...</source>
         <translation>参照(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="93"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="95"/>
         <source>Play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="94"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="96"/>
         <source>All frames</source>
         <translation>すべてのフレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="95"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="97"/>
         <source>Frames</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="110"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
         <source>Document background</source>
         <translation>ドキュメントの背景</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="111"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="113"/>
         <source>Transparent</source>
         <translation>透明</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="112"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="114"/>
         <source>Colour</source>
         <translation>色</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="116"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
         <source> fps</source>
         <translation> fps</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="117"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="119"/>
         <source>Start again after the last frame</source>
         <translation>最後のフレームの後、最初から再生する</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="118"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="120"/>
         <source>One file per drawing, with an exposure sheet</source>
         <translation>絵ごとに 1 ファイル（タイムシート付き）</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="119"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="121"/>
         <source>Include refere&amp;nce</source>
         <translation>参照を含める(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="121"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="123"/>
         <source>Paint the reference picture or video under the drawing (not in SVG or 3D)</source>
         <translation>参照画像または参照動画を絵の下に描きます (SVG と 3D を除く)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="141"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="143"/>
         <source>to</source>
         <translation>～</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="156"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="157"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
         <source>&amp;Save to:</source>
         <translation>保存先(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="158"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
         <source>F&amp;rames:</source>
         <translation>フレーム(&amp;R):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="159"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
         <source>Sc&amp;ale:</source>
         <translation>倍率(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="160"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
         <source>&amp;Background:</source>
         <translation>背景(&amp;B):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="161"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="163"/>
         <source>Frame ra&amp;te:</source>
         <translation>フレームレート(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="162"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="164"/>
         <source>Loop:</source>
         <translation>ループ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="167"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="169"/>
         <source>&amp;Export</source>
         <translation>書き出し(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="168"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="170"/>
         <source>Cancel Export</source>
         <translation>書き出しをキャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="269"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="271"/>
         <source>%1 x %2 pixels</source>
         <translation>%1×%2 ピクセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="272"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="274"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, with a .mtl file beside it. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、隣に .mtl ファイルを置きます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="277"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="279"/>
         <source>A 3D model holds the current frame (%1) only: its objects inflated, in their fill colours, all in one file. The frames, scale, background and frame rate do not apply.</source>
         <translation>3D モデルに入るのは現在のフレーム (%1) だけです。オブジェクトを膨らませ、塗りの色を付け、1 つのファイルにまとめます。フレーム範囲、倍率、背景、フレームレートは使いません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="282"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="284"/>
         <source>This format needs the ffmpeg program, which was not found; install it (on Debian: apt install ffmpeg) first.</source>
         <translation>この形式には ffmpeg プログラムが必要ですが、見つかりませんでした。先にインストールしてください（Debian の場合: apt install ffmpeg）。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="287"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
         <source>The video carries the soundtrack, trimmed to the frames exported.</source>
         <translation>動画には書き出すフレームに合わせて切り出したサウンドトラックが入ります。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="289"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
         <source>The page carries the soundtrack; it plays with the frames once the viewer presses Play.</source>
         <translation>ページにはサウンドトラックが入ります。閲覧者が再生を押すとフレームと一緒に再生されます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="291"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="293"/>
         <source>This format has no sound: the soundtrack is left out (MP4, WebM and HTML carry it).</source>
         <translation>この形式には音声がありません。サウンドトラックは含まれません(MP4、WebM、HTML には入ります)。</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="335"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="337"/>
         <source>Export to Folder</source>
         <translation>フォルダーに書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/export/export_dialog.cpp" line="339"/>
+        <location filename="../ui/src/export/export_dialog.cpp" line="341"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>
@@ -3814,25 +3839,25 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
         <source>Lock Layer</source>
         <translation>レイヤーをロック</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="377"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
         <source>Unlock Layer</source>
         <translation>レイヤーのロックを解除</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
         <source>Show Layer</source>
         <translation>レイヤーを表示</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="372"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
         <source>Hide Layer</source>
         <translation>レイヤーを非表示</translation>
     </message>
@@ -3878,63 +3903,63 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window.cpp" line="157"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window.cpp" line="198"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="191"/>
+        <location filename="../ui/src/window/main_window.cpp" line="199"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="194"/>
+        <location filename="../ui/src/window/main_window.cpp" line="202"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="214"/>
+        <location filename="../ui/src/window/main_window.cpp" line="222"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="215"/>
+        <location filename="../ui/src/window/main_window.cpp" line="223"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="248"/>
+        <location filename="../ui/src/window/main_window.cpp" line="256"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>参照「%1」を表示できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="257"/>
+        <location filename="../ui/src/window/main_window.cpp" line="265"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window.cpp" line="276"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="269"/>
+        <location filename="../ui/src/window/main_window.cpp" line="277"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="274"/>
+        <location filename="../ui/src/window/main_window.cpp" line="282"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window.cpp" line="283"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>

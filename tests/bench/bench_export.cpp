@@ -70,7 +70,8 @@ int benchExport(const QStringList &args)
     QTemporaryDir dir;
     for (ExportFormat format :
          {ExportFormat::PngSequence, ExportFormat::SvgSequence, ExportFormat::Html,
-          ExportFormat::Gif, ExportFormat::Mp4, ExportFormat::WebM, ExportFormat::Apng}) {
+          ExportFormat::Gif, ExportFormat::Mp4, ExportFormat::WebM, ExportFormat::Apng,
+          ExportFormat::Lottie, ExportFormat::DotLottie}) {
         const QString name = model::exportFormatName(format);
         if (model::exportNeedsFfmpeg(format) && model::ffmpegProgram().isEmpty()) {
             std::printf("{\"bench\":\"export\",\"format\":\"%s\",\"skipped\":\"ffmpeg not "

@@ -382,8 +382,8 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
     for (const char *tag :
-         {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL", "JOIN",
-          "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR", "LAYR"})
+         {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL",
+          "JOIN", "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR", "LAYR"})
         QVERIFY2(tags.count(tag), tag);
 }
 

@@ -59,6 +59,9 @@ ExportOutcome exportEncoded(const ExportContext &context);
 ExportOutcome exportFlipbook(const ExportContext &context);
 ExportOutcome exportObj(const ExportContext &context);
 ExportOutcome exportGlb(const ExportContext &context);
+ExportOutcome exportLottie(const ExportContext &context); // Lottie JSON and dotLottie
+// The Lottie JSON of the plan (export_lottie.cpp); empty when the export was cancelled.
+QByteArray lottieJson(const ExportContext &context);
 
 // The 3D formats' shared part (export_model.cpp): the plan's frame as solids, or why not (the
 // export was cancelled, or the frame has nothing to inflate).

@@ -25,6 +25,8 @@ constexpr std::array kFormats{
     FormatInfo{ExportFormat::Html, "html", "html"},
     FormatInfo{ExportFormat::Obj, "obj", "obj"},
     FormatInfo{ExportFormat::Glb, "glb", "glb"},
+    FormatInfo{ExportFormat::Lottie, "json", "json"},
+    FormatInfo{ExportFormat::DotLottie, "lottie", "lottie"},
 };
 
 const FormatInfo &info(ExportFormat format)
@@ -47,11 +49,22 @@ std::vector<Frame> shotFrames(const std::vector<Layer> &layers, const ShotFilter
     return onePlainLayer ? layers.front().cels : composeShots(layers, filter);
 }
 
+std::vector<std::pair<Id, QString>> layerNamesOf(const std::vector<Layer> &layers)
+{
+    std::vector<std::pair<Id, QString>> names;
+    for (const Layer &layer : layers)
+        names.emplace_back(layer.id, layer.properties.name);
+    return names;
+}
+
 ExportSource exportSource(const Document &document, const ShotFilter &filter)
 {
-    return ExportSource{shotFrames(document.layers(), filter), document.settings(),
-                        document.referenceLayer().reference(), document.soundtrack().clips(),
-                        document.camera()};
+    return ExportSource{shotFrames(document.layers(), filter),
+                        document.settings(),
+                        document.referenceLayer().reference(),
+                        document.soundtrack().clips(),
+                        document.camera(),
+                        layerNamesOf(document.layers())};
 }
 
 std::optional<ExportFormat> exportFormatFromName(const QString &name)
@@ -119,7 +132,7 @@ bool exportSupportsTransparency(ExportFormat format)
 bool exportSupportsLoop(ExportFormat format)
 {
     return format == ExportFormat::Gif || format == ExportFormat::Apng ||
-           format == ExportFormat::Html;
+           format == ExportFormat::Html || format == ExportFormat::DotLottie;
 }
 
 } // namespace finbook::model

@@ -257,6 +257,8 @@ Expected<ExportResult, ExportError> exportAnimation(const ExportSource &source,
             return exportObj(context);
         if (options.format == ExportFormat::Glb)
             return exportGlb(context);
+        if (options.format == ExportFormat::Lottie || options.format == ExportFormat::DotLottie)
+            return exportLottie(context);
         return exportEncoded(context);
     }();
     if (result && !problems.isEmpty()) {

@@ -66,7 +66,7 @@ void addPlane(Frame &shot, const Layer &layer, const Frame &cel)
         shot.id = cel.id;
     shot.groups.insert(shot.groups.end(), cel.groups.begin(), cel.groups.end());
     shot.planes.push_back(
-        {int(shot.groups.size()), layer.properties.opacity, layer.properties.depth});
+        {int(shot.groups.size()), layer.properties.opacity, layer.properties.depth, layer.id});
 }
 } // namespace
 

@@ -81,6 +81,8 @@ void ExportDialog::buildForm()
         {ExportFormat::WebM, tr("WebM video (VP9)")},
         {ExportFormat::Apng, tr("Animated PNG (APNG)")},
         {ExportFormat::Html, tr("HTML flipbook (one file)")},
+        {ExportFormat::Lottie, tr("Lottie animation (JSON), for web pages and apps")},
+        {ExportFormat::DotLottie, tr("dotLottie animation (compressed Lottie)")},
         {ExportFormat::PngSequence, tr("PNG images (a folder)")},
         {ExportFormat::SvgSequence, tr("SVG vector images (a folder)")},
         {ExportFormat::Obj, tr("3D model (OBJ), the current frame")},

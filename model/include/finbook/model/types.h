@@ -175,6 +175,7 @@ struct FramePlane {
     int groupEnd = 0;
     double opacity = 1.0;
     double depth = 0.0;
+    Id layer = kNoId; // the layer whose cel this plane shows
     friend bool operator==(const FramePlane &, const FramePlane &) = default;
 };
 

@@ -31,6 +31,8 @@ enum class ExportFormat {
     Html,        // one self-contained page that plays the animation
     Obj,         // one frame's objects inflated to 3D: a Wavefront OBJ file and its .mtl
     Glb,         // the same 3D model as one glTF 2.0 binary file
+    Lottie,      // Lottie JSON (vector animation for web pages and apps): strokes as outlines
+    DotLottie,   // the same Lottie animation in a dotLottie container (.lottie, a zip)
 };
 
 struct ExportOptions {
@@ -76,10 +78,15 @@ struct ExportSource {
     Reference reference = {};          // the reference layer (its media bytes shared, not copied)
     std::vector<SoundClip> sound = {}; // the soundtrack: MP4 and WebM carry its mix
     CameraTrack camera = {};           // the camera's keys
+    // The layers' ids and names, back to front (Lottie names its layers after them; a composed
+    // frame's planes say which layer they show). Empty: one unnamed layer.
+    std::vector<std::pair<Id, QString>> layerNames = {};
 };
 // What an export shows of `layers`: one plain layer's cels as they are, else the composed
 // shot of the layers `filter` admits (scene/shot.h composeShots).
 std::vector<Frame> shotFrames(const std::vector<Layer> &layers, const ShotFilter &filter = {});
+// The layers' ids and names, back to front (ExportSource::layerNames).
+std::vector<std::pair<Id, QString>> layerNamesOf(const std::vector<Layer> &layers);
 // The document's shot (its visible layers, or those `filter` admits) for an export.
 ExportSource exportSource(const Document &document, const ShotFilter &filter = {});
 
@@ -121,8 +128,8 @@ constexpr qsizetype kListedExportFiles = 1000;
 
 using ExportProgress = std::function<bool(qint64 done, qint64 total)>;
 
-// "png", "svg", "gif", "mp4", "webm", "apng", "html" (also "htm"), "obj", "glb",
-// case-insensitive.
+// "png", "svg", "gif", "mp4", "webm", "apng", "html" (also "htm"), "obj", "glb", "json"
+// (Lottie), "lottie" (dotLottie), case-insensitive.
 std::optional<ExportFormat> exportFormatFromName(const QString &name);
 // The format a path's suffix names (".png" names the PNG sequence); empty for no or an
 // unknown suffix.
