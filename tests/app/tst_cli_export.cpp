@@ -168,6 +168,11 @@ void TestCliExport::exportsEveryFormat_data()
     QTest::newRow("mp4") << QStringList{} << "walk.mp4" << 1 << true;
     QTest::newRow("webm") << QStringList{} << "walk.webm" << 1 << true;
     QTest::newRow("apng") << QStringList{} << "walk.apng" << 1 << true;
+    QTest::newRow("lottie json") << QStringList{} << "walk.json" << 1 << false;
+    QTest::newRow("dotlottie") << QStringList{} << "walk.lottie" << 1 << false;
+    QTest::newRow("lottie by --format")
+        << QStringList{QStringLiteral("--format"), QStringLiteral("json")} << "shot.json" << 1
+        << false;
     QTest::newRow("gif by --format")
         << QStringList{QStringLiteral("--format=gif")} << "anim" << 1 << true;
 }
@@ -191,6 +196,14 @@ void TestCliExport::exportsEveryFormat()
         QVERIFY2(QFileInfo(file).size() > 0, qPrintable(file));
     if (files == 1)
         QCOMPARE(written.first(), out);
+    if (out.endsWith(QLatin1String(".json"))) { // a Lottie file of the whole shot
+        QFile file(out);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QJsonObject lottie = QJsonDocument::fromJson(file.readAll()).object();
+        QCOMPARE(lottie[QStringLiteral("op")].toInt(), 18);
+        QCOMPARE(lottie[QStringLiteral("w")].toInt(), 1280);
+        QVERIFY(!lottie[QStringLiteral("layers")].toArray().isEmpty());
+    }
     if (needsFfmpeg) {
         const QJsonObject stream = probe(out);
         const bool gif = stream[QStringLiteral("codec_name")].toString() == QLatin1String("gif");
@@ -328,6 +341,8 @@ void TestCliExport::fullDiskFailsCleanly_data()
     QTest::newRow("gif") << "walk.gif" << true;
     QTest::newRow("mp4") << "walk.mp4" << true;
     QTest::newRow("obj") << "walk.obj" << false;
+    QTest::newRow("lottie") << "walk.json" << false;
+    QTest::newRow("dotlottie") << "walk.lottie" << false;
 }
 
 // Files cannot grow past 8 KiB (ulimit -f; SIGXFSZ ignored so writes fail with EFBIG), as
