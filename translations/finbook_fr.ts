@@ -588,7 +588,7 @@
     <message>
         <location filename="../app/cli_export.cpp" line="163"/>
         <source>Unknown export format &quot;%1&quot;; use png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) or lottie (dotLottie).</source>
-        <translation>Format d'export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) ou lottie (dotLottie).</translation>
+        <translation>Format d&apos;export inconnu « %1 » ; utilisez png, svg, gif, mp4, webm, apng, html, obj, glb, json (Lottie) ou lottie (dotLottie).</translation>
     </message>
     <message>
         <location filename="../app/cli_export.cpp" line="186"/>
@@ -641,17 +641,17 @@
         <translation>« %1 » n’a pas de calque nommé « %2 » ; ses calques sont %3. Rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="363"/>
+        <location filename="../app/cli_export.cpp" line="360"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>Interrompu ; rien n’a été exporté.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="371"/>
+        <location filename="../app/cli_export.cpp" line="368"/>
         <source>Use --overwrite to replace it.</source>
         <translation>Utilisez --overwrite pour le remplacer.</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="373"/>
+        <location filename="../app/cli_export.cpp" line="370"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>Utilisez --max-frames N pour autoriser N images.</translation>
     </message>
@@ -1109,12 +1109,12 @@
     <message>
         <location filename="../model/src/export/export_lottie.cpp" line="606"/>
         <source>the zip container failed</source>
-        <translation>le conteneur zip n'a pas pu être écrit</translation>
+        <translation>le conteneur zip n&apos;a pas pu être écrit</translation>
     </message>
     <message>
         <location filename="../model/src/export/export_lottie.cpp" line="627"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
-        <translation>Lottie ne peut pas contenir l'image de référence ; elle est laissée de côté.</translation>
+        <translation>Lottie ne peut pas contenir l&apos;image de référence ; elle est laissée de côté.</translation>
     </message>
     <message>
         <location filename="../model/src/export/export_lottie.cpp" line="629"/>
@@ -2917,27 +2917,42 @@
         <translation>Pinceau</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="29"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="30"/>
         <source>Width:</source>
         <translation>Épaisseur&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="34"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="36"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="37"/>
         <source>Smoothing:</source>
         <translation>Lissage&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="39"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>Force du lissage appliqué au trait quand le stylet se lève</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="84"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
+        <source>Stabiliser:</source>
+        <translation>Stabilisateur :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
+        <source>Off</source>
+        <translation>Désactivé</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="46"/>
+        <source>Steadies the line while you draw: the ink follows the pen on a string this long (4 screen pixels a step), so a shaky hand draws a smooth line. Off: the ink is under the pen.</source>
+        <translation>Stabilise le trait pendant le dessin : l'encre suit le stylet au bout d'un fil de cette longueur (4 pixels d'écran par cran), si bien qu'une main tremblante trace une ligne lisse. Désactivé : l'encre est sous le stylet.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="98"/>
         <source>Pen colour %1</source>
         <translation>Couleur du stylo&#xa0;: %1</translation>
     </message>
@@ -4603,12 +4618,12 @@
 <context>
     <name>finbook::ui::PenTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="30"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="37"/>
         <source>Pen</source>
         <translation>Stylo</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_pen.cpp" line="88"/>
+        <location filename="../ui/src/tools/tool_pen.cpp" line="118"/>
         <source>Draw Stroke</source>
         <translation>Tracer un trait</translation>
     </message>

@@ -641,17 +641,17 @@
         <translation>「%1」には「%2」という名前のレイヤーがありません。レイヤーは %3 です。何も書き出されませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="363"/>
+        <location filename="../app/cli_export.cpp" line="360"/>
         <source>Interrupted; nothing was exported.</source>
         <translation>中断されました。何も書き出されていません。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="371"/>
+        <location filename="../app/cli_export.cpp" line="368"/>
         <source>Use --overwrite to replace it.</source>
         <translation>置き換えるには --overwrite を使ってください。</translation>
     </message>
     <message>
-        <location filename="../app/cli_export.cpp" line="373"/>
+        <location filename="../app/cli_export.cpp" line="370"/>
         <source>Use --max-frames N to allow N frames.</source>
         <translation>N フレームまで許可するには --max-frames N を使ってください。</translation>
     </message>
@@ -2904,27 +2904,42 @@
         <translation>ブラシ</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="29"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="30"/>
         <source>Width:</source>
         <translation>太さ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="34"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="36"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="37"/>
         <source>Smoothing:</source>
         <translation>スムージング:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="39"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>ペンを離したときにストロークをどれだけ滑らかにするか</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="84"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
+        <source>Stabiliser:</source>
+        <translation>手ぶれ補正:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
+        <source>Off</source>
+        <translation>オフ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="46"/>
+        <source>Steadies the line while you draw: the ink follows the pen on a string this long (4 screen pixels a step), so a shaky hand draws a smooth line. Off: the ink is under the pen.</source>
+        <translation>描いている間の線を安定させます。インクはこの長さ（1 段階につき画面の 4 ピクセル）の糸で筆先に引かれるので、手が震えても滑らかな線になります。オフ: インクは筆先の真下に出ます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="98"/>
         <source>Pen colour %1</source>
         <translation>ペンの色: %1</translation>
     </message>
@@ -4585,12 +4600,12 @@
 <context>
     <name>finbook::ui::PenTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="30"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="37"/>
         <source>Pen</source>
         <translation>ペン</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_pen.cpp" line="88"/>
+        <location filename="../ui/src/tools/tool_pen.cpp" line="118"/>
         <source>Draw Stroke</source>
         <translation>ストロークを描画</translation>
     </message>

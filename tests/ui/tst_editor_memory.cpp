@@ -1,6 +1,6 @@
 // Nothing set up by hand is lost when Finbook is started again: the pen's colour, width and
-// smoothing, the onion-skin counts and the last tool, set through the real controls, are
-// there in the next window. Settings live in a temporary folder (IsolatedSettings).
+// smoothing, the stabiliser, the onion-skin counts and the last tool, set through the real
+// controls, are there in the next window. Settings live in a temporary folder (IsolatedSettings).
 #include "tst_window_support.h"
 
 #include <finbook/ui/canvas/canvas_tool.h>
@@ -69,6 +69,9 @@ void TestEditorMemory::penOnionAndToolComeBack()
     typeKey(Qt::Key_Return);
     auto *smoothing = child<QSpinBox>(QStringLiteral("penSmoothing"));
     clickSpinArrow(smoothing, true);
+    auto *stabiliser = child<QSpinBox>(QStringLiteral("penStabiliser"));
+    clickSpinArrow(stabiliser, true);
+    clickSpinArrow(stabiliser, true);
     clickSpinArrow(child<QSpinBox>(QStringLiteral("timeline.onionBefore")), true);
     clickSpinArrow(child<QSpinBox>(QStringLiteral("timeline.onionBefore")), true);
     clickSpinArrow(child<QSpinBox>(QStringLiteral("timeline.onionAfter")), false);
@@ -79,6 +82,7 @@ void TestEditorMemory::penOnionAndToolComeBack()
     QCOMPARE(pen.color, QColor(0xd0, 0x30, 0x30));
     QCOMPARE(pen.width, 7.5);
     QCOMPARE(pen.smoothing, ui::PenSettings{}.smoothing + 1);
+    QCOMPARE(pen.stabiliser, 2);
     const ui::OnionSkin onion = m_window->editorState()->onionSkin();
     QCOMPARE(onion.before, 3);
     QCOMPARE(onion.after, 0);
@@ -91,6 +95,7 @@ void TestEditorMemory::penOnionAndToolComeBack()
     QVERIFY(m_window->action(QStringLiteral("tool.eraser"))->isChecked());
     // The controls show what came back.
     QCOMPARE(child<QDoubleSpinBox>(QStringLiteral("penWidth"))->value(), 7.5);
+    QCOMPARE(child<QSpinBox>(QStringLiteral("penStabiliser"))->value(), 2);
     QCOMPARE(child<QSpinBox>(QStringLiteral("timeline.onionBefore"))->value(), 3);
     QCOMPARE(child<QSpinBox>(QStringLiteral("timeline.onionAfter"))->value(), 0);
     QVERIFY(m_window->action(QStringLiteral("view.onionSkin"))->isChecked());
@@ -104,6 +109,7 @@ void TestEditorMemory::unusableValuesFallBack()
         settings.setValue(QStringLiteral("editor/pen/color"), QStringLiteral("not a colour"));
         settings.setValue(QStringLiteral("editor/pen/width"), QStringLiteral("nan"));
         settings.setValue(QStringLiteral("editor/pen/smoothing"), 999);
+        settings.setValue(QStringLiteral("editor/pen/stabiliser"), -5);
         settings.setValue(QStringLiteral("editor/tool"), QStringLiteral("tool.gone"));
         settings.setValue(QStringLiteral("preferences/onion/before"), -4);
     }
@@ -112,6 +118,7 @@ void TestEditorMemory::unusableValuesFallBack()
     QCOMPARE(pen.color, ui::PenSettings{}.color);
     QCOMPARE(pen.width, ui::PenSettings{}.width);
     QCOMPARE(pen.smoothing, ui::PenTool::kMaxSmoothing);
+    QCOMPARE(pen.stabiliser, 0);
     QCOMPARE(m_window->canvas()->currentTool()->id(), QStringLiteral("tool.pen"));
     QCOMPARE(m_window->editorState()->onionSkin().before, 0);
 }

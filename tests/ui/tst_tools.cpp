@@ -1,5 +1,6 @@
 // Pen, eraser and select tools driven with real mouse events on a real canvas.
 #include "cut_out_character.h"
+#include "stabiliser_support.h"
 #include "tst_tools_support.h"
 
 #include <finbook/ui/tools/stroke_editing.h>
@@ -31,6 +32,7 @@ private slots:
     void penRefusesLockedAndHiddenObjects();
     void penCreatesObjectInEmptyFrame();
     void penSmoothingKeepsEnds();
+    void penStabiliserSteadiesTheLine();
     void eraserErasesTouchedStrokeOnly();
     void eraserLeavesHiddenAndLockedAlone();
     void eraserDragWithoutHitsLeavesNoUndoStep();
@@ -178,6 +180,39 @@ void TestTools::penSmoothingKeepsEnds()
     QVERIFY(spread < 2.0f); // the zigzag has flattened
     for (const model::StrokePoint &p : smooth)
         QVERIFY(std::isfinite(p.x) && std::isfinite(p.y));
+}
+
+void TestTools::penStabiliserSteadiesTheLine()
+{
+    // The same shaky circle drawn with the mouse twice, without and with the stabiliser (no
+    // smoothing on release, so what is kept is what the stabiliser made).
+    m_canvas->setCurrentTool(QStringLiteral("tool.pen"));
+    auto *pen = static_cast<ui::PenTool *>(m_canvas->tool(QStringLiteral("tool.pen")));
+    QVERIFY(pen);
+    const auto hand = shakyCircle({300, 250}, 150, 600, 2.0);
+    std::vector<QPointF> path;
+    for (const model::StrokePoint &p : hand)
+        path.push_back(m_canvas->mapFromCanvas(QPointF(p.x, p.y)));
+    double wobble[2] = {};
+    for (int strength : {0, 5}) {
+        ui::PenSettings s = pen->settings();
+        s.smoothing = 0;
+        s.stabiliser = strength;
+        pen->setSettings(s);
+        drag(m_canvas.get(), path, Qt::LeftButton);
+        const auto &strokes = m_doc->frameAt(0).groups[0].strokes;
+        QCOMPARE(strokes.size(), std::size_t(strength == 0 ? 1 : 2));
+        const auto &points = strokes.back().data->points;
+        wobble[strength == 0 ? 0 : 1] = wobbleOf(points);
+        // It starts where the pen touched down and ends where it lifted.
+        const QPointF first = m_canvas->mapToCanvas(path.front());
+        const QPointF last = m_canvas->mapToCanvas(path.back());
+        QVERIFY(std::hypot(points.front().x - first.x(), points.front().y - first.y()) < 0.01);
+        QVERIFY(std::hypot(points.back().x - last.x(), points.back().y - last.y()) < 0.01);
+    }
+    qInfo("drawn wobble: %.1f rad off, %.1f rad at strength 5", wobble[0], wobble[1]);
+    QVERIFY(wobble[1] < wobble[0] / 4);
+    QCOMPARE(m_doc->undoStack()->count(), 2); // one step per stroke
 }
 
 void TestTools::eraserErasesTouchedStrokeOnly()

@@ -17,6 +17,7 @@ BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
     , m_color(new ColorButton(Qt::black, this))
     , m_width(new QDoubleSpinBox(this))
     , m_smoothing(new QSpinBox(this))
+    , m_stabiliser(new QSpinBox(this))
 {
     setObjectName(QStringLiteral("brushToolBar"));
     addWidget(createSwatches(
@@ -38,6 +39,14 @@ BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
     m_smoothing->setRange(0, PenTool::kMaxSmoothing);
     m_smoothing->setToolTip(tr("How much a stroke is smoothed when the pen lifts"));
     addWidget(m_smoothing);
+    addWidget(new QLabel(tr("Stabiliser:"), this));
+    m_stabiliser->setObjectName(QStringLiteral("penStabiliser"));
+    m_stabiliser->setRange(0, PenTool::kMaxStabiliser);
+    m_stabiliser->setSpecialValueText(tr("Off"));
+    m_stabiliser->setToolTip(tr("Steadies the line while you draw: the ink follows the pen on a "
+                                "string this long (4 screen pixels a step), so a shaky hand "
+                                "draws a smooth line. Off: the ink is under the pen."));
+    addWidget(m_stabiliser);
     showSettings();
 
     connect(m_color, &ColorButton::colorChanged, this, [this](const QColor &c) {
@@ -53,6 +62,11 @@ BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
     connect(m_smoothing, &QSpinBox::valueChanged, this, [this](int v) {
         PenSettings s = m_pen->settings();
         s.smoothing = v;
+        m_pen->setSettings(s);
+    });
+    connect(m_stabiliser, &QSpinBox::valueChanged, this, [this](int v) {
+        PenSettings s = m_pen->settings();
+        s.stabiliser = v;
         m_pen->setSettings(s);
     });
     connect(m_pen, &PenTool::settingsChanged, this, &BrushToolBar::showSettings);
@@ -92,7 +106,7 @@ QWidget *BrushToolBar::createSwatches(const QList<QColor> &colors)
 void BrushToolBar::showSettings()
 {
     const PenSettings &s = m_pen->settings();
-    const QSignalBlocker b1(m_color), b2(m_width), b3(m_smoothing);
+    const QSignalBlocker b1(m_color), b2(m_width), b3(m_smoothing), b4(m_stabiliser);
     m_color->setColor(s.color);
     // Only when different: setValue() rewrites the text, and while the user types "2.5" the
     // pen already follows "2" (keyboard tracking), so "2" would become "2.0 px" mid-typing.
@@ -100,6 +114,8 @@ void BrushToolBar::showSettings()
         m_width->setValue(s.width);
     if (m_smoothing->value() != s.smoothing)
         m_smoothing->setValue(s.smoothing);
+    if (m_stabiliser->value() != s.stabiliser)
+        m_stabiliser->setValue(s.stabiliser);
 }
 
 } // namespace finbook::ui

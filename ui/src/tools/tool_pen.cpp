@@ -6,6 +6,7 @@
 
 #include <QKeyEvent>
 #include <QPainter>
+#include <QPen>
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,7 @@ void PenTool::setSettings(const PenSettings &settings)
     PenSettings s = settings;
     s.width = std::isfinite(s.width) ? std::clamp(s.width, kMinWidth, kMaxWidth) : 3.0;
     s.smoothing = std::clamp(s.smoothing, 0, kMaxSmoothing);
+    s.stabiliser = std::clamp(s.stabiliser, 0, kMaxStabiliser);
     if (!s.color.isValid())
         s.color = Qt::black;
     if (s == m_settings)
@@ -52,9 +54,15 @@ void PenTool::press(const ToolEvent &event)
         canvas()->postMessage(problem);
         return;
     }
+    const auto first = sampleOf(event);
+    if (!first)
+        return;
     m_drawing = true;
     m_points.clear();
-    addPoint(event);
+    m_string = LazyString(stabiliserLength(m_settings.stabiliser, canvas()->zoom()));
+    m_string.start(*first);
+    m_cursor = *first;
+    m_points.push_back(*first);
     canvas()->updateCanvasRect(lastSegmentRect());
 }
 
@@ -62,17 +70,39 @@ void PenTool::move(const ToolEvent &event)
 {
     if (!m_drawing)
         return;
-    const std::size_t before = m_points.size();
-    addPoint(event);
-    if (m_points.size() != before)
-        canvas()->updateCanvasRect(lastSegmentRect());
+    const auto cursor = sampleOf(event);
+    if (!cursor)
+        return;
+    const QRectF before = stringRect();
+    m_cursor = *cursor;
+    const std::size_t count = m_points.size();
+    if (const auto ink = m_string.follow(*cursor))
+        append(*ink);
+    QRectF dirty = m_points.size() != count ? lastSegmentRect() : QRectF();
+    if (m_string.length() > 0) // the string from the ink to the pen moves too
+        dirty = dirty.united(before).united(stringRect());
+    if (!dirty.isEmpty())
+        canvas()->updateCanvasRect(dirty);
 }
 
 void PenTool::release(const ToolEvent &event)
 {
     if (!m_drawing)
         return;
-    addPoint(event);
+    if (const auto last = sampleOf(event)) {
+        if (m_string.length() > 0) {
+            // The ink catches up: the stroke ends exactly where the pen lifted.
+            const model::StrokePoint end = m_string.finish(*last);
+            const model::StrokePoint &tail = m_points.back();
+            if (m_points.size() > 1 && std::hypot(tail.x - end.x, tail.y - end.y) <
+                                           float(0.5 / std::max(canvas()->zoom(), 1e-6)))
+                m_points.back() = end;
+            else
+                m_points.push_back(end);
+        } else {
+            append(*last);
+        }
+    }
     m_drawing = false;
     std::vector<model::StrokePoint> points =
         finishedPoints(std::move(m_points), m_settings.smoothing);
@@ -113,22 +143,38 @@ void PenTool::cancel()
         canvas()->updateCanvasRect();
 }
 
-void PenTool::addPoint(const ToolEvent &event)
+std::optional<model::StrokePoint> PenTool::sampleOf(const ToolEvent &event) const
 {
     const float x = float(event.pos.x()), y = float(event.pos.y());
     // A mouse has no pressure: draw it at full width. Non-finite input is dropped here so it
     // never reaches the document.
     const float p = event.tablet ? float(event.pressure) : 1.0f;
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(p))
-        return;
+        return std::nullopt;
+    return model::StrokePoint{x, y, std::clamp(p, 0.0f, 1.0f)};
+}
+
+void PenTool::append(const model::StrokePoint &point)
+{
     // Samples closer than half a screen pixel add nothing visible but cost memory and time.
     const float minStep = float(0.5 / std::max(canvas()->zoom(), 1e-6));
     if (!m_points.empty()) {
         const model::StrokePoint &last = m_points.back();
-        if (std::hypot(last.x - x, last.y - y) < minStep)
+        if (std::hypot(last.x - point.x, last.y - point.y) < minStep)
             return;
     }
-    m_points.push_back({x, y, std::clamp(p, 0.0f, 1.0f)});
+    m_points.push_back(point);
+}
+
+QRectF PenTool::stringRect() const
+{
+    if (m_string.length() <= 0 || !m_drawing)
+        return {};
+    const model::StrokePoint &ink = m_string.ink();
+    const qreal pad = 8.0 / std::max(canvas()->zoom(), 1e-6);
+    return QRectF(QPointF(ink.x, ink.y), QPointF(m_cursor.x, m_cursor.y))
+        .normalized()
+        .adjusted(-pad, -pad, pad, pad);
 }
 
 QRectF PenTool::lastSegmentRect() const
@@ -172,6 +218,19 @@ void PenTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidget)
     painter.save();
     painter.setTransform(canvasToWidget, true);
     model::paintStroke(painter, m_points, m_settings.color.rgba(), float(m_settings.width));
+    painter.restore();
+    if (m_string.length() <= 0)
+        return;
+    // The stabiliser's string: a thin line from the ink to the pen, and a ring at the pen.
+    const QPointF ink = canvasToWidget.map(QPointF(m_string.ink().x, m_string.ink().y));
+    const QPointF pen = canvasToWidget.map(QPointF(m_cursor.x, m_cursor.y));
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setPen(QPen(QColor(120, 120, 120, 200), 1.0, Qt::DashLine));
+    painter.drawLine(ink, pen);
+    painter.setPen(QPen(QColor(120, 120, 120, 220), 1.0));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawEllipse(pen, 3.0, 3.0);
     painter.restore();
 }
 

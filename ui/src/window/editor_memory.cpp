@@ -25,6 +25,9 @@ EditorMemory EditorMemory::load(QSettings &settings)
     const int smoothing = settings.value(QStringLiteral("pen/smoothing")).toInt(&ok);
     if (ok)
         m.pen.smoothing = std::clamp(smoothing, 0, PenTool::kMaxSmoothing);
+    const int stabiliser = settings.value(QStringLiteral("pen/stabiliser")).toInt(&ok);
+    if (ok)
+        m.pen.stabiliser = std::clamp(stabiliser, 0, PenTool::kMaxStabiliser);
     m.tool = settings.value(QStringLiteral("tool")).toString();
     settings.endGroup();
     return m;
@@ -36,6 +39,7 @@ void EditorMemory::save(QSettings &settings) const
     settings.setValue(QStringLiteral("pen/color"), pen.color.name(QColor::HexArgb));
     settings.setValue(QStringLiteral("pen/width"), pen.width);
     settings.setValue(QStringLiteral("pen/smoothing"), pen.smoothing);
+    settings.setValue(QStringLiteral("pen/stabiliser"), pen.stabiliser);
     settings.setValue(QStringLiteral("tool"), tool);
     settings.endGroup();
 }

@@ -25,6 +25,7 @@ private:
     ColorButton *m_color;
     QDoubleSpinBox *m_width;
     QSpinBox *m_smoothing;
+    QSpinBox *m_stabiliser;
 };
 
 } // namespace finbook::ui

@@ -1,11 +1,14 @@
-// Pen (B): draws one stroke per drag into the current object.
+// Pen (B): draws one stroke per drag into the current object, through the stabiliser when it is
+// set (the ink trails the pen on a lazy string, tools/stabiliser.h).
 #pragma once
 
 #include <finbook/model/types.h>
 #include <finbook/ui/canvas/canvas_tool.h>
+#include <finbook/ui/tools/stabiliser.h>
 
 #include <QColor>
 
+#include <optional>
 #include <vector>
 
 namespace finbook::ui {
@@ -14,6 +17,9 @@ struct PenSettings {
     QColor color = Qt::black;
     double width = 3.0; // canvas pixels at full pressure
     int smoothing = 2;  // passes of a 1-2-1 filter applied on release, 0..10
+    // The stabiliser while drawing, 0 (off) ..10: a lazy string 4 screen pixels long per step
+    // (tools/stabiliser.h).
+    int stabiliser = 0;
     friend bool operator==(const PenSettings &, const PenSettings &) = default;
 };
 
@@ -23,6 +29,7 @@ public:
     static constexpr double kMinWidth = 0.5;
     static constexpr double kMaxWidth = 200.0;
     static constexpr int kMaxSmoothing = 10;
+    static constexpr int kMaxStabiliser = 10;
 
     explicit PenTool(QObject *parent = nullptr);
 
@@ -49,12 +56,18 @@ signals:
     void settingsChanged(const finbook::ui::PenSettings &settings);
 
 private:
-    void addPoint(const ToolEvent &event);
+    // The event as a stroke sample, or nothing for non-finite input.
+    std::optional<model::StrokePoint> sampleOf(const ToolEvent &event) const;
+    // Appends unless it is within half a screen pixel of the last sample.
+    void append(const model::StrokePoint &point);
     QRectF lastSegmentRect() const;
+    QRectF stringRect() const;
     void cancel();
 
     PenSettings m_settings;
     std::vector<model::StrokePoint> m_points;
+    LazyString m_string;           // the stabiliser of the stroke being drawn
+    model::StrokePoint m_cursor{}; // where the pen is (the ink trails it when stabilised)
     bool m_drawing = false;
 };
 
