@@ -3593,6 +3593,29 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::EyedropperTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_eyedropper.h" line="29"/>
+        <source>Eyedropper</source>
+        <translation>Pipette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="74"/>
+        <source>Nothing here to take a colour from: click a line or a fill.</source>
+        <translation>Hier gibt es keine Farbe aufzunehmen: Klicken Sie auf eine Linie oder eine Füllung.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="81"/>
+        <source>The pen takes the line&apos;s colour %1.</source>
+        <translation>Der Stift übernimmt die Farbe %1 der Linie.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="82"/>
+        <source>The pen takes the fill&apos;s colour %1.</source>
+        <translation>Der Stift übernimmt die Farbe %1 der Füllung.</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::FillTool</name>
     <message>
         <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="23"/>
@@ -3935,63 +3958,63 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="157"/>
+        <location filename="../ui/src/window/main_window.cpp" line="159"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window.cpp" line="200"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window.cpp" line="201"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window.cpp" line="204"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="222"/>
+        <location filename="../ui/src/window/main_window.cpp" line="224"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window.cpp" line="225"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window.cpp" line="258"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>Die Referenz „%1“ kann nicht angezeigt werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window.cpp" line="267"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="276"/>
+        <location filename="../ui/src/window/main_window.cpp" line="278"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="277"/>
+        <location filename="../ui/src/window/main_window.cpp" line="279"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window.cpp" line="284"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window.cpp" line="285"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>

@@ -2949,7 +2949,7 @@
     <message>
         <location filename="../ui/src/tools/brush_tool_bar.cpp" line="46"/>
         <source>Steadies the line while you draw: the ink follows the pen on a string this long (4 screen pixels a step), so a shaky hand draws a smooth line. Off: the ink is under the pen.</source>
-        <translation>Stabilise le trait pendant le dessin : l'encre suit le stylet au bout d'un fil de cette longueur (4 pixels d'écran par cran), si bien qu'une main tremblante trace une ligne lisse. Désactivé : l'encre est sous le stylet.</translation>
+        <translation>Stabilise le trait pendant le dessin : l&apos;encre suit le stylet au bout d&apos;un fil de cette longueur (4 pixels d&apos;écran par cran), si bien qu&apos;une main tremblante trace une ligne lisse. Désactivé : l&apos;encre est sous le stylet.</translation>
     </message>
     <message>
         <location filename="../ui/src/tools/brush_tool_bar.cpp" line="98"/>
@@ -3593,6 +3593,29 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::EyedropperTool</name>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_eyedropper.h" line="29"/>
+        <source>Eyedropper</source>
+        <translation>Pipette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="74"/>
+        <source>Nothing here to take a colour from: click a line or a fill.</source>
+        <translation>Aucune couleur à prélever ici : cliquez sur un trait ou un remplissage.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="81"/>
+        <source>The pen takes the line&apos;s colour %1.</source>
+        <translation>Le stylo prend la couleur %1 du trait.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="82"/>
+        <source>The pen takes the fill&apos;s colour %1.</source>
+        <translation>Le stylo prend la couleur %1 du remplissage.</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::FillTool</name>
     <message>
         <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="23"/>
@@ -3935,63 +3958,63 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="157"/>
+        <location filename="../ui/src/window/main_window.cpp" line="159"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="198"/>
+        <location filename="../ui/src/window/main_window.cpp" line="200"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window.cpp" line="201"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window.cpp" line="204"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="222"/>
+        <location filename="../ui/src/window/main_window.cpp" line="224"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="223"/>
+        <location filename="../ui/src/window/main_window.cpp" line="225"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="256"/>
+        <location filename="../ui/src/window/main_window.cpp" line="258"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>La référence « %1 » ne peut pas être affichée : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="265"/>
+        <location filename="../ui/src/window/main_window.cpp" line="267"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="276"/>
+        <location filename="../ui/src/window/main_window.cpp" line="278"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="277"/>
+        <location filename="../ui/src/window/main_window.cpp" line="279"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="282"/>
+        <location filename="../ui/src/window/main_window.cpp" line="284"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="283"/>
+        <location filename="../ui/src/window/main_window.cpp" line="285"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>

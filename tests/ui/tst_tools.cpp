@@ -3,8 +3,10 @@
 #include "stabiliser_support.h"
 #include "tst_tools_support.h"
 
+#include <finbook/model/fill/fill_commands.h>
 #include <finbook/ui/tools/stroke_editing.h>
 #include <finbook/ui/tools/tool_eraser.h>
+#include <finbook/ui/tools/tool_eyedropper.h>
 #include <finbook/ui/tools/tool_hand.h>
 #include <finbook/ui/tools/tool_pen.h>
 #include <finbook/ui/tools/tool_select.h>
@@ -33,6 +35,7 @@ private slots:
     void penCreatesObjectInEmptyFrame();
     void penSmoothingKeepsEnds();
     void penStabiliserSteadiesTheLine();
+    void eyedropperTakesALinesOrAFillsColour();
     void eraserErasesTouchedStrokeOnly();
     void eraserLeavesHiddenAndLockedAlone();
     void eraserDragWithoutHitsLeavesNoUndoStep();
@@ -77,6 +80,8 @@ void TestTools::init()
     static_cast<ui::EraserTool *>(m_canvas->addTool(std::make_unique<ui::EraserTool>()))
         ->setMode(ui::EraserMode::WholeStrokes);
     m_canvas->addTool(std::make_unique<ui::SelectTool>());
+    m_canvas->addTool(std::make_unique<ui::EyedropperTool>(
+        static_cast<ui::PenTool *>(m_canvas->tool(QStringLiteral("tool.pen")))));
     m_canvas->addTool(std::make_unique<ui::HandTool>());
     m_canvas->resize(600, 500);
     m_canvas->show();
@@ -213,6 +218,43 @@ void TestTools::penStabiliserSteadiesTheLine()
     qInfo("drawn wobble: %.1f rad off, %.1f rad at strength 5", wobble[0], wobble[1]);
     QVERIFY(wobble[1] < wobble[0] / 4);
     QCOMPARE(m_doc->undoStack()->count(), 2); // one step per stroke
+}
+
+void TestTools::eyedropperTakesALinesOrAFillsColour()
+{
+    // A blue square outline filled yellow, a red line across it; the pen is black.
+    const model::Id g = group(0);
+    auto square = std::make_shared<model::StrokeData>();
+    square->width = 4.0f;
+    square->color = 0xff2040c0;
+    for (QPointF p : {QPointF(100, 100), QPointF(300, 100), QPointF(300, 300), QPointF(100, 300),
+                      QPointF(100, 100)})
+        square->points.push_back({float(p.x()), float(p.y()), 1.0f});
+    m_doc->undoStack()->push(new model::AddStrokeCommand(m_doc.get(), g, square));
+    m_doc->undoStack()->push(new model::AddStrokeCommand(
+        m_doc.get(), g, line(QPointF(120, 200), QPointF(280, 200), 20, 0xffd02020)));
+    m_doc->undoStack()->push(
+        model::fillRegionCommand(m_doc.get(), g, QPointF(150, 150), 0xfff0d020).release());
+    const int steps = m_doc->undoStack()->count();
+    auto *pen = static_cast<ui::PenTool *>(m_canvas->tool(QStringLiteral("tool.pen")));
+    m_canvas->setCurrentTool(QStringLiteral("tool.eyedropper"));
+    QCOMPARE(m_canvas->currentTool()->id(), QStringLiteral("tool.eyedropper"));
+    QCOMPARE(pen->settings().color, QColor(Qt::black));
+    QSignalSpy messages(m_canvas.get(), &ui::CanvasWidget::messagePosted);
+    const auto clickAt = [&](QPointF canvasPos) {
+        drag(m_canvas.get(), {m_canvas->mapFromCanvas(canvasPos)});
+    };
+    clickAt({200, 201}); // on the red line, over the fill: the line is on top
+    QCOMPARE(pen->settings().color, QColor(0xd0, 0x20, 0x20));
+    clickAt({150, 150}); // inside the fill
+    QCOMPARE(pen->settings().color, QColor(0xf0, 0xd0, 0x20));
+    clickAt({101, 250}); // on the outline
+    QCOMPARE(pen->settings().color, QColor(0x20, 0x40, 0xc0));
+    messages.clear();
+    clickAt({500, 400}); // empty paper: the colour stays, and a message says why
+    QCOMPARE(pen->settings().color, QColor(0x20, 0x40, 0xc0));
+    QCOMPARE(messages.count(), 1);
+    QCOMPARE(m_doc->undoStack()->count(), steps); // the document did not change
 }
 
 void TestTools::eraserErasesTouchedStrokeOnly()

@@ -22,6 +22,7 @@
 #include <finbook/ui/tools/brush_tool_bar.h>
 #include <finbook/ui/tools/eraser_tool_bar.h>
 #include <finbook/ui/tools/tool_eraser.h>
+#include <finbook/ui/tools/tool_eyedropper.h>
 #include <finbook/ui/tools/tool_hand.h>
 #include <finbook/ui/tools/tool_pen.h>
 #include <finbook/ui/tools/tool_select.h>
@@ -112,6 +113,7 @@ void MainWindow::createCanvasAndTools()
     EraserTool *eraserTool = eraser.get();
     addTool(std::move(eraser));
     addTool(std::make_unique<SelectTool>());
+    addTool(std::make_unique<EyedropperTool>(m_pen));
     addTool(std::make_unique<HandTool>());
     addTool(std::make_unique<ReferenceTool>());
     addTool(std::make_unique<CameraTool>());
