@@ -1,6 +1,7 @@
 #include "stroke_hit.h"
 
 #include <finbook/model/fill/fill_render.h>
+#include <finbook/model/scene/shot.h>
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/tools/tool_eyedropper.h>
 #include <finbook/ui/tools/tool_pen.h>
@@ -65,11 +66,12 @@ std::optional<QColor> EyedropperTool::colourAt(const model::Frame &frame,
 
 void EyedropperTool::press(const ToolEvent &event)
 {
-    const model::Frame *frame = state()->currentFrame();
+    // What the page shows now: every visible layer's drawing at this tick, front ones on top.
+    const model::Frame shown =
+        model::composeShot(state()->document()->layers(), qint64(state()->currentTick()));
     bool line = false;
-    const auto colour = frame ? colourAt(*frame, state()->document()->settings(), event.pos,
-                                         2.0 / std::max(canvas()->zoom(), 1e-6), &line)
-                              : std::nullopt;
+    const auto colour = colourAt(shown, state()->document()->settings(), event.pos,
+                                 2.0 / std::max(canvas()->zoom(), 1e-6), &line);
     if (!colour) {
         canvas()->postMessage(tr("Nothing here to take a colour from: click a line or a fill."));
         return;

@@ -1,5 +1,5 @@
 // Eyedropper (I): click a line or a fill to take its colour for the pen. It picks what is on top
-// at that spot in the current drawing, as painted: a line over a fill gives the line's colour, a
+// at that spot on the page, in any visible layer, as painted: a line over a fill gives the line's colour, a
 // fill its own (its flat colour, not a shade of its tones); a click on empty paper leaves the
 // pen's colour as it was and says so. The document does not change (nothing to undo).
 #pragma once
