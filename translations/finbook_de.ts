@@ -2794,6 +2794,11 @@
         <translation>Knochen</translation>
     </message>
     <message>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="43"/>
+        <source>build a skeleton and pose the drawing by its bones</source>
+        <translation>ein Skelett bauen und die Zeichnung an seinen Knochen posieren</translation>
+    </message>
+    <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="168"/>
         <source>Build Skeleton</source>
@@ -3008,6 +3013,11 @@
         <translation>Käfig</translation>
     </message>
     <message>
+        <location filename="../ui/include/finbook/ui/cage/tool_cage.h" line="26"/>
+        <source>draw a cage around the drawing, then drag its corners to bend it</source>
+        <translation>einen Käfig um die Zeichnung ziehen und sie an seinen Ecken biegen</translation>
+    </message>
+    <message>
         <location filename="../ui/src/cage/tool_cage.cpp" line="132"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>Wählen Sie zuerst ein Objekt: Der Käfig wird darum gelegt.</translation>
@@ -3024,6 +3034,11 @@
         <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="30"/>
         <source>Camera</source>
         <translation>Kamera</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="33"/>
+        <source>frame the shot: move, zoom and turn the camera</source>
+        <translation>die Einstellung wählen: die Kamera bewegen, zoomen und drehen</translation>
     </message>
     <message>
         <location filename="../ui/src/camera/tool_camera.cpp" line="189"/>
@@ -3247,6 +3262,11 @@
         <location filename="../ui/include/finbook/ui/tools/tool_eraser.h" line="29"/>
         <source>Eraser</source>
         <translation>Radierer</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_eraser.h" line="30"/>
+        <source>rub out parts of lines, or whole strokes</source>
+        <translation>Teile von Linien oder ganze Striche wegradieren</translation>
     </message>
     <message>
         <location filename="../ui/src/tools/tool_eraser.cpp" line="158"/>
@@ -3600,17 +3620,22 @@
         <translation>Pipette</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="74"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_eyedropper.h" line="32"/>
+        <source>take a line&apos;s or a fill&apos;s colour for the pen</source>
+        <translation>die Farbe einer Linie oder Füllung für den Stift aufnehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="76"/>
         <source>Nothing here to take a colour from: click a line or a fill.</source>
         <translation>Hier gibt es keine Farbe aufzunehmen: Klicken Sie auf eine Linie oder eine Füllung.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="81"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="83"/>
         <source>The pen takes the line&apos;s colour %1.</source>
         <translation>Der Stift übernimmt die Farbe %1 der Linie.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="82"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="84"/>
         <source>The pen takes the fill&apos;s colour %1.</source>
         <translation>Der Stift übernimmt die Farbe %1 der Füllung.</translation>
     </message>
@@ -3621,6 +3646,11 @@
         <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="23"/>
         <source>Fill</source>
         <translation>Füllen</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="24"/>
+        <source>fill an enclosed region with colour</source>
+        <translation>einen geschlossenen Bereich mit Farbe füllen</translation>
     </message>
     <message>
         <location filename="../ui/src/fill/tool_fill.cpp" line="70"/>
@@ -3700,6 +3730,11 @@
         <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="17"/>
         <source>Hand</source>
         <translation>Hand</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="18"/>
+        <source>drag the view</source>
+        <translation>die Ansicht verschieben</translation>
     </message>
 </context>
 <context>
@@ -3958,63 +3993,68 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window.cpp" line="155"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window.cpp" line="158"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="208"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window.cpp" line="209"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window.cpp" line="212"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="224"/>
+        <location filename="../ui/src/window/main_window.cpp" line="232"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window.cpp" line="266"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>Die Referenz „%1“ kann nicht angezeigt werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window.cpp" line="275"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="278"/>
+        <location filename="../ui/src/window/main_window.cpp" line="286"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window.cpp" line="287"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="284"/>
+        <location filename="../ui/src/window/main_window.cpp" line="292"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="285"/>
+        <location filename="../ui/src/window/main_window.cpp" line="293"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -4646,6 +4686,11 @@
         <translation>Stift</translation>
     </message>
     <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="40"/>
+        <source>draw lines; the pen&apos;s pressure sets their width</source>
+        <translation>Linien zeichnen; der Stiftdruck bestimmt ihre Breite</translation>
+    </message>
+    <message>
         <location filename="../ui/src/tools/tool_pen.cpp" line="118"/>
         <source>Draw Stroke</source>
         <translation>Strich zeichnen</translation>
@@ -4657,6 +4702,11 @@
         <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="19"/>
         <source>Pin</source>
         <translation>Pin</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="22"/>
+        <source>pin points and drag them: the drawing bends as rigidly as it can</source>
+        <translation>Punkte anheften und ziehen: Die Zeichnung biegt sich so starr wie möglich</translation>
     </message>
     <message>
         <location filename="../ui/src/pins/tool_pin.cpp" line="162"/>
@@ -4952,6 +5002,11 @@
         <source>Move Reference</source>
         <translation>Referenz verschieben</translation>
     </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="24"/>
+        <source>move, scale and turn the reference picture</source>
+        <translation>das Referenzbild verschieben, skalieren und drehen</translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::SelectTool</name>
@@ -4959,6 +5014,11 @@
         <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="28"/>
         <source>Select</source>
         <translation>Auswahl</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="31"/>
+        <source>lasso lines, then move, turn or scale them</source>
+        <translation>Linien mit dem Lasso wählen, dann verschieben, drehen oder skalieren</translation>
     </message>
     <message>
         <location filename="../ui/src/tools/tool_select.cpp" line="314"/>

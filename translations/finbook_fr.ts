@@ -2794,6 +2794,11 @@
         <translation>Os</translation>
     </message>
     <message>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="43"/>
+        <source>build a skeleton and pose the drawing by its bones</source>
+        <translation>construire un squelette et poser le dessin par ses os</translation>
+    </message>
+    <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="168"/>
         <source>Build Skeleton</source>
@@ -3008,6 +3013,11 @@
         <translation>Cage</translation>
     </message>
     <message>
+        <location filename="../ui/include/finbook/ui/cage/tool_cage.h" line="26"/>
+        <source>draw a cage around the drawing, then drag its corners to bend it</source>
+        <translation>tracer une cage autour du dessin, puis tirer ses coins pour le plier</translation>
+    </message>
+    <message>
         <location filename="../ui/src/cage/tool_cage.cpp" line="132"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>Choisissez d&apos;abord un objet&#xa0;: la cage se place autour de lui.</translation>
@@ -3024,6 +3034,11 @@
         <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="30"/>
         <source>Camera</source>
         <translation>Caméra</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="33"/>
+        <source>frame the shot: move, zoom and turn the camera</source>
+        <translation>cadrer le plan : déplacer, zoomer et tourner la caméra</translation>
     </message>
     <message>
         <location filename="../ui/src/camera/tool_camera.cpp" line="189"/>
@@ -3247,6 +3262,11 @@
         <location filename="../ui/include/finbook/ui/tools/tool_eraser.h" line="29"/>
         <source>Eraser</source>
         <translation>Gomme</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_eraser.h" line="30"/>
+        <source>rub out parts of lines, or whole strokes</source>
+        <translation>gommer des parties de traits, ou des traits entiers</translation>
     </message>
     <message>
         <location filename="../ui/src/tools/tool_eraser.cpp" line="158"/>
@@ -3600,17 +3620,22 @@
         <translation>Pipette</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="74"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_eyedropper.h" line="32"/>
+        <source>take a line&apos;s or a fill&apos;s colour for the pen</source>
+        <translation>prendre la couleur d'un trait ou d'un remplissage pour le stylo</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="76"/>
         <source>Nothing here to take a colour from: click a line or a fill.</source>
         <translation>Aucune couleur à prélever ici : cliquez sur un trait ou un remplissage.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="81"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="83"/>
         <source>The pen takes the line&apos;s colour %1.</source>
         <translation>Le stylo prend la couleur %1 du trait.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="82"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="84"/>
         <source>The pen takes the fill&apos;s colour %1.</source>
         <translation>Le stylo prend la couleur %1 du remplissage.</translation>
     </message>
@@ -3621,6 +3646,11 @@
         <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="23"/>
         <source>Fill</source>
         <translation>Remplissage</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="24"/>
+        <source>fill an enclosed region with colour</source>
+        <translation>remplir de couleur une région fermée</translation>
     </message>
     <message>
         <location filename="../ui/src/fill/tool_fill.cpp" line="70"/>
@@ -3700,6 +3730,11 @@
         <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="17"/>
         <source>Hand</source>
         <translation>Main</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="18"/>
+        <source>drag the view</source>
+        <translation>faire glisser la vue</translation>
     </message>
 </context>
 <context>
@@ -3958,63 +3993,68 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window.cpp" line="155"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window.cpp" line="158"/>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="208"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window.cpp" line="209"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window.cpp" line="212"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="224"/>
+        <location filename="../ui/src/window/main_window.cpp" line="232"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window.cpp" line="266"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>La référence « %1 » ne peut pas être affichée : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window.cpp" line="275"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="278"/>
+        <location filename="../ui/src/window/main_window.cpp" line="286"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window.cpp" line="287"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="284"/>
+        <location filename="../ui/src/window/main_window.cpp" line="292"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="285"/>
+        <location filename="../ui/src/window/main_window.cpp" line="293"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -4646,6 +4686,11 @@
         <translation>Stylo</translation>
     </message>
     <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="40"/>
+        <source>draw lines; the pen&apos;s pressure sets their width</source>
+        <translation>tracer des traits ; la pression du stylet règle leur épaisseur</translation>
+    </message>
+    <message>
         <location filename="../ui/src/tools/tool_pen.cpp" line="118"/>
         <source>Draw Stroke</source>
         <translation>Tracer un trait</translation>
@@ -4657,6 +4702,11 @@
         <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="19"/>
         <source>Pin</source>
         <translation>Épingle</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="22"/>
+        <source>pin points and drag them: the drawing bends as rigidly as it can</source>
+        <translation>épingler des points et les tirer : le dessin plie aussi rigidement que possible</translation>
     </message>
     <message>
         <location filename="../ui/src/pins/tool_pin.cpp" line="162"/>
@@ -4952,6 +5002,11 @@
         <source>Move Reference</source>
         <translation>Déplacer la référence</translation>
     </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="24"/>
+        <source>move, scale and turn the reference picture</source>
+        <translation>déplacer, mettre à l'échelle et tourner l'image de référence</translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::SelectTool</name>
@@ -4959,6 +5014,11 @@
         <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="28"/>
         <source>Select</source>
         <translation>Sélection</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="31"/>
+        <source>lasso lines, then move, turn or scale them</source>
+        <translation>entourer des traits au lasso, puis les déplacer, les tourner ou les mettre à l'échelle</translation>
     </message>
     <message>
         <location filename="../ui/src/tools/tool_select.cpp" line="314"/>

@@ -2782,6 +2782,11 @@
         <translation>ボーン</translation>
     </message>
     <message>
+        <location filename="../ui/include/finbook/ui/skeleton/tool_bone.h" line="43"/>
+        <source>build a skeleton and pose the drawing by its bones</source>
+        <translation>骨格を作り、骨で絵にポーズをつける</translation>
+    </message>
+    <message>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="55"/>
         <location filename="../ui/src/skeleton/tool_bone.cpp" line="168"/>
         <source>Build Skeleton</source>
@@ -2995,6 +3000,11 @@
         <translation>ケージ</translation>
     </message>
     <message>
+        <location filename="../ui/include/finbook/ui/cage/tool_cage.h" line="26"/>
+        <source>draw a cage around the drawing, then drag its corners to bend it</source>
+        <translation>絵をケージで囲み、角をドラッグして曲げる</translation>
+    </message>
+    <message>
         <location filename="../ui/src/cage/tool_cage.cpp" line="132"/>
         <source>Choose an object first: the cage goes around it.</source>
         <translation>先にオブジェクトを選んでください。ケージはその周りに配置されます。</translation>
@@ -3011,6 +3021,11 @@
         <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="30"/>
         <source>Camera</source>
         <translation>カメラ</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/camera/tool_camera.h" line="33"/>
+        <source>frame the shot: move, zoom and turn the camera</source>
+        <translation>ショットを決める: カメラを動かし、ズームし、回す</translation>
     </message>
     <message>
         <location filename="../ui/src/camera/tool_camera.cpp" line="189"/>
@@ -3233,6 +3248,11 @@
         <location filename="../ui/include/finbook/ui/tools/tool_eraser.h" line="29"/>
         <source>Eraser</source>
         <translation>消しゴム</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_eraser.h" line="30"/>
+        <source>rub out parts of lines, or whole strokes</source>
+        <translation>線の一部、または線ごと消す</translation>
     </message>
     <message>
         <location filename="../ui/src/tools/tool_eraser.cpp" line="158"/>
@@ -3584,17 +3604,22 @@
         <translation>スポイト</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="74"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_eyedropper.h" line="32"/>
+        <source>take a line&apos;s or a fill&apos;s colour for the pen</source>
+        <translation>線や塗りの色をペンに取る</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="76"/>
         <source>Nothing here to take a colour from: click a line or a fill.</source>
         <translation>ここには色を取れるものがありません。線か塗りをクリックしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="81"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="83"/>
         <source>The pen takes the line&apos;s colour %1.</source>
         <translation>ペンは線の色 %1 になりました。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="82"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="84"/>
         <source>The pen takes the fill&apos;s colour %1.</source>
         <translation>ペンは塗りの色 %1 になりました。</translation>
     </message>
@@ -3605,6 +3630,11 @@
         <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="23"/>
         <source>Fill</source>
         <translation>塗りつぶし</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/fill/tool_fill.h" line="24"/>
+        <source>fill an enclosed region with colour</source>
+        <translation>囲まれた領域を色で塗る</translation>
     </message>
     <message>
         <location filename="../ui/src/fill/tool_fill.cpp" line="70"/>
@@ -3683,6 +3713,11 @@
         <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="17"/>
         <source>Hand</source>
         <translation>手のひら</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_hand.h" line="18"/>
+        <source>drag the view</source>
+        <translation>表示をドラッグで動かす</translation>
     </message>
 </context>
 <context>
@@ -3941,63 +3976,68 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window.cpp" line="155"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window.cpp" line="158"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="208"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="201"/>
+        <location filename="../ui/src/window/main_window.cpp" line="209"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="204"/>
+        <location filename="../ui/src/window/main_window.cpp" line="212"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="224"/>
+        <location filename="../ui/src/window/main_window.cpp" line="232"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="225"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window.cpp" line="266"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>参照「%1」を表示できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="267"/>
+        <location filename="../ui/src/window/main_window.cpp" line="275"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="278"/>
+        <location filename="../ui/src/window/main_window.cpp" line="286"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window.cpp" line="287"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="284"/>
+        <location filename="../ui/src/window/main_window.cpp" line="292"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="285"/>
+        <location filename="../ui/src/window/main_window.cpp" line="293"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -4628,6 +4668,11 @@
         <translation>ペン</translation>
     </message>
     <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="40"/>
+        <source>draw lines; the pen&apos;s pressure sets their width</source>
+        <translation>線を描く。筆圧で太さが変わる</translation>
+    </message>
+    <message>
         <location filename="../ui/src/tools/tool_pen.cpp" line="118"/>
         <source>Draw Stroke</source>
         <translation>ストロークを描画</translation>
@@ -4639,6 +4684,11 @@
         <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="19"/>
         <source>Pin</source>
         <translation>ピン</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/pins/tool_pin.h" line="22"/>
+        <source>pin points and drag them: the drawing bends as rigidly as it can</source>
+        <translation>点をピンで留めてドラッグすると、絵ができるだけ形を保って曲がる</translation>
     </message>
     <message>
         <location filename="../ui/src/pins/tool_pin.cpp" line="162"/>
@@ -4932,6 +4982,11 @@
         <source>Move Reference</source>
         <translation>参照を移動</translation>
     </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="24"/>
+        <source>move, scale and turn the reference picture</source>
+        <translation>参照画像を動かし、拡大縮小し、回す</translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::SelectTool</name>
@@ -4939,6 +4994,11 @@
         <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="28"/>
         <source>Select</source>
         <translation>選択</translation>
+    </message>
+    <message>
+        <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="31"/>
+        <source>lasso lines, then move, turn or scale them</source>
+        <translation>投げ縄で線を選び、動かす・回す・拡大縮小する</translation>
     </message>
     <message>
         <location filename="../ui/src/tools/tool_select.cpp" line="314"/>

@@ -49,6 +49,7 @@ private slots:
     void undoButtonKeepsItsPlace();
     void nothingOverflowsAt1280();
     void toolsStandOnTheLeft();
+    void toolTipsSayWhatAToolDoesAndItsKey();
 
 private:
     std::unique_ptr<IsolatedSettings> m_settings;
@@ -111,6 +112,30 @@ void TestToolbars::toolsStandOnTheLeft()
             QCOMPARE(m_window->toolBarArea(bar), Qt::TopToolBarArea);
             QCOMPARE(bar->y(), m_window->findChild<QToolBar *>(QStringLiteral("fileToolBar"))->y());
         }
+}
+
+void TestToolbars::toolTipsSayWhatAToolDoesAndItsKey()
+{
+    const QStringList ids{QStringLiteral("tool.pen"),      QStringLiteral("tool.eraser"),
+                          QStringLiteral("tool.select"),   QStringLiteral("tool.eyedropper"),
+                          QStringLiteral("tool.hand"),     QStringLiteral("tool.pin"),
+                          QStringLiteral("tool.cage"),     QStringLiteral("tool.bone"),
+                          QStringLiteral("tool.fill"),     QStringLiteral("tool.camera"),
+                          QStringLiteral("tool.reference")};
+    for (const QString &id : ids) {
+        const ui::CanvasTool *tool = m_window->canvas()->tool(id);
+        QAction *action = m_window->action(id);
+        QVERIFY2(tool && action, qPrintable(id));
+        QVERIFY2(!tool->description().isEmpty(), qPrintable(id));
+        const QString keys = action->shortcut().toString(QKeySequence::NativeText);
+        const QString expected =
+            keys.isEmpty()
+                ? tool->name() + QStringLiteral(": ") + tool->description()
+                : QStringLiteral("%1 (%2): %3").arg(tool->name(), keys, tool->description());
+        QCOMPARE(action->toolTip(), expected);
+    }
+    QCOMPARE(m_window->action(QStringLiteral("tool.bone"))->toolTip(),
+             QStringLiteral("Bone (K): build a skeleton and pose the drawing by its bones"));
 }
 
 QTEST_MAIN(TestToolbars)

@@ -147,17 +147,25 @@ void MainWindow::toolAdded(CanvasTool *tool)
     a->setObjectName(tool->id());
     a->setCheckable(true);
     a->setShortcut(tool->defaultShortcut());
-    a->setToolTip(tool->name());
+    // "Bone (K): build a skeleton and pose the drawing by its bones": what the tool does and
+    // its key, the key as the shortcut preferences have it now.
+    const auto tip = [a, tool] {
+        const QString keys = a->shortcut().toString(QKeySequence::NativeText);
+        const QString named =
+            keys.isEmpty() ? tool->name() : MainWindow::tr("%1 (%2)").arg(tool->name(), keys);
+        return tool->description().isEmpty()
+                   ? named
+                   : MainWindow::tr("%1: %2").arg(named, tool->description());
+    };
+    a->setToolTip(tip());
     m_toolGroup->addAction(a);
     m_toolsMenu->addAction(a);
     m_toolsBar->addAction(a);
     m_shortcuts->registerAction(a);
     const QString id = tool->id();
     connect(a, &QAction::triggered, m_canvas, [this, id] { m_canvas->setCurrentTool(id); });
-    connect(m_shortcuts, &ShortcutRegistry::shortcutsChanged, a, [a, tool] {
-        const QString keys = a->shortcut().toString(QKeySequence::NativeText);
-        a->setToolTip(keys.isEmpty() ? tool->name() : tr("%1 (%2)").arg(tool->name(), keys));
-    });
+    connect(m_shortcuts, &ShortcutRegistry::shortcutsChanged, a,
+            [a, tip] { a->setToolTip(tip()); });
     if (m_canvas->currentTool() == tool)
         a->setChecked(true);
 }

@@ -21,6 +21,10 @@ public:
 
     QString id() const override { return QStringLiteral("tool.cage"); }
     QString name() const override { return tr("Cage"); }
+    QString description() const override
+    {
+        return tr("draw a cage around the drawing, then drag its corners to bend it");
+    }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_C); }
 

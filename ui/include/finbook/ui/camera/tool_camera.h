@@ -28,6 +28,10 @@ public:
     QString id() const override { return QStringLiteral("tool.camera"); }
     bool editsLayer() const override { return false; }
     QString name() const override { return tr("Camera"); }
+    QString description() const override
+    {
+        return tr("frame the shot: move, zoom and turn the camera");
+    }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_A); }
     QCursor cursor() const override;

@@ -50,6 +50,9 @@ public:
     virtual QString id() const = 0;
     // Translated name for the menu, the toolbar tooltip and the status bar.
     virtual QString name() const = 0;
+    // What the tool does, in a few translated words for its tooltip ("build a skeleton and pose
+    // the drawing by its bones"): the tooltip reads "Bone (K): build a skeleton ...".
+    virtual QString description() const { return {}; }
     virtual QIcon icon() const { return {}; }
     virtual QKeySequence defaultShortcut() const { return {}; }
     virtual QCursor cursor() const { return Qt::CrossCursor; }

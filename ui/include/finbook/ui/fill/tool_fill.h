@@ -21,6 +21,7 @@ public:
 
     QString id() const override { return QStringLiteral("tool.fill"); }
     QString name() const override { return tr("Fill"); }
+    QString description() const override { return tr("fill an enclosed region with colour"); }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_F); }
     QCursor cursor() const override;

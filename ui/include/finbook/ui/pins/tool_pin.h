@@ -17,6 +17,10 @@ public:
 
     QString id() const override { return QStringLiteral("tool.pin"); }
     QString name() const override { return tr("Pin"); }
+    QString description() const override
+    {
+        return tr("pin points and drag them: the drawing bends as rigidly as it can");
+    }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_P); }
     QCursor cursor() const override { return Qt::CrossCursor; }

@@ -19,6 +19,10 @@ public:
     QString id() const override { return QStringLiteral("tool.reference"); }
     bool editsLayer() const override { return false; }
     QString name() const override { return tr("Move Reference"); }
+    QString description() const override
+    {
+        return tr("move, scale and turn the reference picture");
+    }
     QIcon icon() const override;
     QCursor cursor() const override;
 

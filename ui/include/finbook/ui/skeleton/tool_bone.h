@@ -38,6 +38,10 @@ public:
 
     QString id() const override { return QStringLiteral("tool.bone"); }
     QString name() const override { return tr("Bone"); }
+    QString description() const override
+    {
+        return tr("build a skeleton and pose the drawing by its bones");
+    }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_K); }
 

@@ -27,6 +27,7 @@ public:
 
     QString id() const override { return QStringLiteral("tool.eraser"); }
     QString name() const override { return tr("Eraser"); }
+    QString description() const override { return tr("rub out parts of lines, or whole strokes"); }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_E); }
 

@@ -1,7 +1,7 @@
 // Eyedropper (I): click a line or a fill to take its colour for the pen. It picks what is on top
-// at that spot on the page, in any visible layer, as painted: a line over a fill gives the line's colour, a
-// fill its own (its flat colour, not a shade of its tones); a click on empty paper leaves the
-// pen's colour as it was and says so. The document does not change (nothing to undo).
+// at that spot on the page, in any visible layer, as painted: a line over a fill gives the line's
+// colour, a fill its own (its flat colour, not a shade of its tones); a click on empty paper leaves
+// the pen's colour as it was and says so. The document does not change (nothing to undo).
 #pragma once
 
 #include <finbook/ui/canvas/canvas_tool.h>
@@ -27,6 +27,10 @@ public:
     QString id() const override { return QStringLiteral("tool.eyedropper"); }
     bool editsLayer() const override { return false; }
     QString name() const override { return tr("Eyedropper"); }
+    QString description() const override
+    {
+        return tr("take a line's or a fill's colour for the pen");
+    }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_I); }
     QCursor cursor() const override { return Qt::CrossCursor; }

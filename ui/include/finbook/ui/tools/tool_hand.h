@@ -15,6 +15,7 @@ public:
     QString id() const override { return QStringLiteral("tool.hand"); }
     bool editsLayer() const override { return false; }
     QString name() const override { return tr("Hand"); }
+    QString description() const override { return tr("drag the view"); }
     QIcon icon() const override
     {
         return QIcon::fromTheme(QStringLiteral("transform-browse"),

@@ -35,6 +35,10 @@ public:
 
     QString id() const override { return QStringLiteral("tool.pen"); }
     QString name() const override { return tr("Pen"); }
+    QString description() const override
+    {
+        return tr("draw lines; the pen's pressure sets their width");
+    }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_B); }
 

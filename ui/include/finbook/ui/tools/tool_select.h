@@ -26,6 +26,10 @@ public:
 
     QString id() const override { return QStringLiteral("tool.select"); }
     QString name() const override { return tr("Select"); }
+    QString description() const override
+    {
+        return tr("lasso lines, then move, turn or scale them");
+    }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_V); }
     QCursor cursor() const override { return Qt::ArrowCursor; }
