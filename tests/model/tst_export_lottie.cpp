@@ -110,6 +110,25 @@ Played playAndCompare(const model::ExportSource &source, model::ExportOptions o,
     return played;
 }
 
+// One drawing on the small page exported to `path` and played (playAndCompare).
+Played playDrawing(const model::Frame &drawing, const QString &path,
+                   const model::ExportOptions &options = {})
+{
+    model::ExportSource source;
+    source.settings = smallPage();
+    source.frames = {drawing};
+    return playAndCompare(source, options, path);
+}
+
+// The shape layers and nulls inside the first Finbook layer's precomposition.
+QJsonArray innerLayers(const QString &path)
+{
+    return readJson(path)[QStringLiteral("assets")]
+        .toArray()[0]
+        .toObject()[QStringLiteral("layers")]
+        .toArray();
+}
+
 int countLayers(const QJsonArray &layers, int type)
 {
     int n = 0;
@@ -168,13 +187,11 @@ void TestExportLottie::exampleMatchesEveryTick()
 void TestExportLottie::pressureStrokesMatch()
 {
     QTemporaryDir dir;
-    model::ExportSource source;
-    source.settings = smallPage();
-    source.frames = {pressureStrokes()};
     model::ExportOptions o;
     o.scale = 2.0; // the widths' detail at twice the size
     o.transparent = true;
-    const Played played = playAndCompare(source, o, dir.filePath(QStringLiteral("pen.json")));
+    const Played played =
+        playDrawing(pressureStrokes(), dir.filePath(QStringLiteral("pen.json")), o);
     qInfo("pressure strokes, transparent, 2x: agree %.2f %% (ink %.2f %%), ink ratio %.3f",
           100 * played.worst, 100 * played.worstInk, played.inkRatio);
     QVERIFY(played.worst >= 0.98);
@@ -185,18 +202,14 @@ void TestExportLottie::pressureStrokesMatch()
 void TestExportLottie::nestedFillsMatch()
 {
     QTemporaryDir dir;
-    model::ExportSource source;
-    source.settings = smallPage();
-    source.frames = {nestedFills()};
     const QString path = dir.filePath(QStringLiteral("fills.json"));
-    const Played played = playAndCompare(source, {}, path);
+    const Played played = playDrawing(nestedFills(), path);
     qInfo("nested fills: agree %.2f %% (ink %.2f %%)", 100 * played.worst, 100 * played.worstInk);
     QVERIFY(played.worst >= 0.98);
     QVERIFY(played.worstInk >= 0.97);
     // The hole shows its own colour, the ring its own: both fills made it.
-    const auto plan = model::planExport(source, {});
     Player player(readAll(path));
-    const QImage shown = player.render(0, plan->size);
+    const QImage shown = player.render(0, smallPage().canvasSize);
     const auto near = [](QRgb a, QRgb b) { // players round colours their own way
         return std::abs(qRed(a) - qRed(b)) <= 2 && std::abs(qGreen(a) - qGreen(b)) <= 2 &&
                std::abs(qBlue(a) - qBlue(b)) <= 2;
@@ -208,21 +221,14 @@ void TestExportLottie::nestedFillsMatch()
 void TestExportLottie::shadedFillsMatch()
 {
     QTemporaryDir dir;
-    model::ExportSource source;
-    source.settings = smallPage();
-    source.frames = {shadedBody()};
     const QString path = dir.filePath(QStringLiteral("shaded.json"));
-    const Played played = playAndCompare(source, {}, path);
+    const Played played = playDrawing(shadedBody(), path);
     qInfo("shaded fill: agree %.2f %% (ink %.2f %%)", 100 * played.worst, 100 * played.worstInk);
     QVERIFY(played.worst >= 0.98);
     QVERIFY(played.worstInk >= 0.97);
     // The tones are fills of their own over the base colour: more than one fill colour.
     QSet<QString> colours;
-    const QJsonArray inner = readJson(path)[QStringLiteral("assets")]
-                                 .toArray()[0]
-                                 .toObject()[QStringLiteral("layers")]
-                                 .toArray();
-    for (const QJsonValue &l : inner)
+    for (const QJsonValue &l : innerLayers(path))
         for (const QJsonValue &group : l.toObject()[QStringLiteral("shapes")].toArray())
             for (const QJsonValue &item : group.toObject()[QStringLiteral("it")].toArray())
                 if (item.toObject()[QStringLiteral("ty")].toString() == QLatin1String("fl"))
@@ -245,10 +251,8 @@ void TestExportLottie::holdsAreDurations()
     const QString path = dir.filePath(QStringLiteral("holds.json"));
     const Played played = playAndCompare(source, {}, path);
     QVERIFY(played.worst >= 0.98);
-    const QJsonObject json = readJson(path);
-    QCOMPARE(json[QStringLiteral("op")].toInt(), 8);
-    const QJsonArray inner =
-        json[QStringLiteral("assets")].toArray()[0].toObject()[QStringLiteral("layers")].toArray();
+    QCOMPARE(readJson(path)[QStringLiteral("op")].toInt(), 8);
+    const QJsonArray inner = innerLayers(path);
     // One shape layer per drawing, lasting its hold.
     std::vector<std::pair<int, int>> spans;
     for (const QJsonValue &l : inner)
@@ -290,9 +294,7 @@ void TestExportLottie::aPoseIsOneKeyedLayer()
     const Played played = playAndCompare(source, {}, path);
     qInfo("turning pose: agree %.2f %% (ink %.2f %%)", 100 * played.worst, 100 * played.worstInk);
     QVERIFY(played.worst >= 0.98);
-    const QJsonObject json = readJson(path);
-    const QJsonArray inner =
-        json[QStringLiteral("assets")].toArray()[0].toObject()[QStringLiteral("layers")].toArray();
+    const QJsonArray inner = innerLayers(path);
     QCOMPARE(countLayers(inner, 4), 1);
     // Its paths carry a key per drawing.
     int keyed = 0;

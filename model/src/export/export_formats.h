@@ -11,6 +11,7 @@
 #include <QImage>
 #include <QStringList>
 
+#include <functional>
 #include <initializer_list>
 
 namespace finbook::model {
@@ -109,6 +110,13 @@ class TargetLock;
 // `guard`) and every lock taken, the leftovers of killed exports to them removed.
 std::optional<ExportError> claimFileTarget(const QString &target, const FolderGuard &guard,
                                            std::initializer_list<TargetLock *> locks);
+
+// A single-file export from start to end: the target checked and claimed (its folder made, the
+// lock taken), `make` run for the file's bytes (or the error that stops the export), the bytes
+// written beside the target, synced, and renamed into place. Nothing is left on failure.
+std::optional<ExportError>
+writeSingleFile(const ExportOptions &options,
+                const std::function<Expected<QByteArray, ExportError>()> &make);
 
 class PendingFile;
 // Renames the finished file over the target: replacing it only with options.overwrite, so a

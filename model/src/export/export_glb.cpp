@@ -4,8 +4,6 @@
 // locked, written beside the target, synced and renamed into place only when complete.
 #include "export_formats.h"
 #include "export_text.h"
-#include "pending_output.h"
-#include "target_lock.h"
 
 #include <finbook/geometry/inflate/glb_writer.h>
 
@@ -34,36 +32,26 @@ QByteArray glbFile(const FrameSolids &solids)
 
 ExportOutcome exportGlb(const ExportContext &context)
 {
-    const ExportOptions &options = context.options;
-    const QString target = options.target;
-    if (auto error = checkFileTarget(options))
-        return unexpected(*error);
-    FolderGuard guard(QFileInfo(target).path());
-    TargetLock lock(target, false);
-    if (auto error = claimFileTarget(target, guard, {&lock}))
-        return unexpected(*error);
-
-    const auto solids = exportedSolids(context);
-    if (!solids)
-        return unexpected(solids.error());
-    const QByteArray bytes = glbFile(*solids);
-    if (bytes.isEmpty())
-        return unexpected(exportError(
-            ExportErrorCode::BadOptions,
-            Export::tr("Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); "
-                       "export it as OBJ instead.")
-                .arg(context.plan.frames.front() + 1)));
-
-    PendingFile pending(target);
-    QString reason;
-    if (!pending.open(&reason))
-        return unexpected(writeFailed(target, reason));
-    if (auto failed = writeSynced(pending.file(), bytes))
-        return unexpected(writeFailed(target, *failed));
-    if (auto error = commitFile(pending, options))
-        return unexpected(*error);
-    guard.keep();
-    return modelResult(context, {target}, *solids);
+    std::optional<FrameSolids> made;
+    const auto written =
+        writeSingleFile(context.options, [&]() -> Expected<QByteArray, ExportError> {
+            auto solids = exportedSolids(context);
+            if (!solids)
+                return unexpected(solids.error());
+            QByteArray bytes = glbFile(*solids);
+            if (bytes.isEmpty())
+                return unexpected(exportError(
+                    ExportErrorCode::BadOptions,
+                    Export::tr(
+                        "Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); "
+                        "export it as OBJ instead.")
+                        .arg(context.plan.frames.front() + 1)));
+            made = std::move(*solids);
+            return bytes;
+        });
+    if (written)
+        return unexpected(*written);
+    return modelResult(context, {context.options.target}, *made);
 }
 
 } // namespace finbook::model

@@ -22,8 +22,6 @@
 #include "export_formats.h"
 #include "export_text.h"
 #include "lottie_shapes.h"
-#include "pending_output.h"
-#include "target_lock.h"
 
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/render.h>
@@ -590,30 +588,19 @@ ExportOutcome exportLottie(const ExportContext &context)
 {
     const ExportOptions &options = context.options;
     const QString target = options.target;
-    if (auto error = checkFileTarget(options))
-        return unexpected(*error);
-    FolderGuard guard(QFileInfo(target).path());
-    TargetLock lock(target, false);
-    if (auto error = claimFileTarget(target, guard, {&lock}))
-        return unexpected(*error);
-
-    QByteArray bytes = lottieJson(context);
-    if (bytes.isEmpty())
-        return unexpected(cancelledError());
-    if (options.format == ExportFormat::DotLottie) {
-        bytes = dotLottie(bytes, animationId(target), context.plan.loop);
+    const auto written = writeSingleFile(options, [&]() -> Expected<QByteArray, ExportError> {
+        QByteArray bytes = lottieJson(context);
         if (bytes.isEmpty())
-            return unexpected(writeFailed(target, Export::tr("the zip container failed")));
-    }
-    PendingFile pending(target);
-    QString reason;
-    if (!pending.open(&reason))
-        return unexpected(writeFailed(target, reason));
-    if (auto failed = writeSynced(pending.file(), bytes))
-        return unexpected(writeFailed(target, *failed));
-    if (auto error = commitFile(pending, options))
-        return unexpected(*error);
-    guard.keep();
+            return unexpected(cancelledError());
+        if (options.format == ExportFormat::DotLottie) {
+            bytes = dotLottie(bytes, animationId(target), context.plan.loop);
+            if (bytes.isEmpty())
+                return unexpected(writeFailed(target, Export::tr("the zip container failed")));
+        }
+        return bytes;
+    });
+    if (written)
+        return unexpected(*written);
     context.cancelled(qint64(context.plan.frames.size()), qint64(context.plan.frames.size()));
 
     ExportResult result;

@@ -74,6 +74,32 @@ std::optional<ExportError> commitFile(PendingFile &pending, const ExportOptions 
     return std::nullopt;
 }
 
+std::optional<ExportError>
+writeSingleFile(const ExportOptions &options,
+                const std::function<Expected<QByteArray, ExportError>()> &make)
+{
+    const QString target = options.target;
+    if (auto error = checkFileTarget(options))
+        return error;
+    FolderGuard guard(QFileInfo(target).path());
+    TargetLock lock(target, false);
+    if (auto error = claimFileTarget(target, guard, {&lock}))
+        return error;
+    const auto bytes = make();
+    if (!bytes)
+        return bytes.error();
+    PendingFile pending(target);
+    QString reason;
+    if (!pending.open(&reason))
+        return writeFailed(target, reason);
+    if (auto failed = writeSynced(pending.file(), *bytes))
+        return writeFailed(target, *failed);
+    if (auto error = commitFile(pending, options))
+        return error;
+    guard.keep();
+    return std::nullopt;
+}
+
 std::optional<ExportError> checkFileTarget(const ExportOptions &options)
 {
     // By its bytes: the name as text may stand for another file (nativeName).
