@@ -225,6 +225,29 @@ inline QJsonObject readJson(const QString &path)
     return QJsonDocument::fromJson(f.readAll()).object();
 }
 
+// A cycle of four drawings (the pressure strokes, each a step further) played `times` times.
+inline model::ExportSource cycle(int times)
+{
+    model::ExportSource source;
+    source.settings = smallPage();
+    for (int t = 0; t < times; ++t)
+        for (int i = 0; i < 4; ++i) {
+            model::Frame f = pressureStrokes();
+            f.id = 80 + i;
+            for (model::Stroke &s : f.groups.front().strokes) {
+                auto moved = std::make_shared<model::StrokeData>(*s.data);
+                for (model::StrokePoint &p : moved->points)
+                    p.y += float(6 * i);
+                s.data = moved;
+            }
+            f.groups.front().strokes.pop_back(); // a stroke fewer: no pose, four drawings
+            if (i % 2)
+                f.groups.front().strokes.pop_back();
+            source.frames.push_back(f);
+        }
+    return source;
+}
+
 // A scene of two layers: a still background (a big filled square, at half opacity, deep so
 // it drifts) and a walking figure's four drawings; a camera that pushes in and turns.
 inline model::ExportSource layeredScene()

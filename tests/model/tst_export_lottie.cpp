@@ -148,6 +148,7 @@ private slots:
     void shadedFillsMatch();
     void holdsAreDurations();
     void aPoseIsOneKeyedLayer();
+    void aCycleIsWrittenOnce();
     void layersAndCameraMatch();
     void dotLottieHoldsTheSameAnimation();
     void cancelledLeavesNothing();
@@ -322,6 +323,27 @@ void TestExportLottie::aPoseIsOneKeyedLayer()
     const qint64 keyedBytes = QFileInfo(path).size(), apartBytes = QFileInfo(o.target).size();
     qInfo("keyed: %lld bytes; as six drawings: %lld bytes", keyedBytes, apartBytes);
     QVERIFY(keyedBytes < apartBytes);
+}
+
+void TestExportLottie::aCycleIsWrittenOnce()
+{
+    // Four drawings played three times: each drawing's shapes are written once, as an asset
+    // that each showing places.
+    QTemporaryDir dir;
+    const QString once = dir.filePath(QStringLiteral("once.json"));
+    const QString thrice = dir.filePath(QStringLiteral("thrice.json"));
+    QVERIFY(playAndCompare(cycle(1), {}, once).worst >= 0.98);
+    const Played played = playAndCompare(cycle(3), {}, thrice);
+    qInfo("a cycle played three times: worst tick %lld agrees %.2f %%; %lld bytes against %lld "
+          "for one cycle",
+          played.worstTick, 100 * played.worst, QFileInfo(thrice).size(), QFileInfo(once).size());
+    QVERIFY(played.worst >= 0.98);
+    int drawings = 0;
+    for (const QJsonValue &a : readJson(thrice)[QStringLiteral("assets")].toArray())
+        drawings +=
+            a.toObject()[QStringLiteral("id")].toString().startsWith(QLatin1String("drawing_"));
+    QCOMPARE(drawings, 4);
+    QVERIFY(QFileInfo(thrice).size() < QFileInfo(once).size() * 5 / 4);
 }
 
 void TestExportLottie::layersAndCameraMatch()

@@ -140,6 +140,7 @@ void TestExportLottieWeb::playsInLottieWeb_data()
     QTest::newRow("nested fills") << 2;
     QTest::newRow("two layers, moving camera") << 3;
     QTest::newRow("shaded fill") << 4;
+    QTest::newRow("a cycle played twice") << 5;
 }
 
 void TestExportLottieWeb::playsInLottieWeb()
@@ -160,6 +161,8 @@ void TestExportLottieWeb::playsInLottieWeb()
                                       : nestedFills()};
         if (which == 3)
             source = layeredScene();
+        if (which == 5)
+            source = cycle(2);
         o.transparent = which == 1;
     }
     o.format = model::ExportFormat::Lottie;
@@ -237,9 +240,10 @@ void TestExportLottieWeb::validatesAgainstTheSchema()
     save(pen, QStringLiteral("pen.json"), true);
     save(fills, QStringLiteral("fills.json"), false);
     save(layeredScene(), QStringLiteral("scene.json"), false);
-    QCOMPARE(files.size(), 4);
+    save(cycle(2), QStringLiteral("cycle.json"), false);
+    QCOMPARE(files.size(), 5);
     const QJsonArray results = validate(files, dir.filePath(QStringLiteral("validate.js")));
-    QCOMPARE(results.size(), 4);
+    QCOMPARE(results.size(), 5);
     for (const QJsonValue &v : results) {
         const QJsonObject r = v.toObject();
         const QJsonArray errors = r[QStringLiteral("errors")].toArray();

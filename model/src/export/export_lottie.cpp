@@ -29,6 +29,7 @@
 
 #include <QBuffer>
 #include <QFileInfo>
+#include <QHash>
 #include <QRegularExpression>
 #include <quazip/quazip.h>
 #include <quazip/quazipfile.h>
@@ -41,6 +42,8 @@
 namespace finbook::model {
 
 namespace {
+// Drawings whose shapes take at least this many bytes are written once however often they show.
+constexpr qsizetype kShareBytes = 2048;
 // Far beyond any canvas, yet a number every player reads exactly.
 constexpr double kLargest = 1e7;
 
@@ -487,6 +490,21 @@ QByteArray lottieJson(const ExportContext &context)
     const QSizeF compSize(canvas.width() + 2 * margin, canvas.height() + 2 * margin);
     QByteArray front;
     int layerNumber = 0;
+    // A drawing shown more than once (a cycle played again, a drawing repeated after others)
+    // is written once, as an asset of its own that each showing places (a precomposition,
+    // `margin` in as the layers are): a walk cycle played four times costs one cycle.
+    QHash<QByteArray, int> showings;
+    for (const LayerTrack &t : tracks)
+        for (const ShapeLayer &s : t.done)
+            if (s.shapes.size() >= kShareBytes)
+                ++showings[s.shapes];
+    QHash<QByteArray, QByteArray> shared; // the shapes, the asset holding them
+    const QByteArray compKeys =
+        ",\"w\":" + numberText(compSize.width(), 0) + ",\"h\":" + numberText(compSize.height(), 0);
+    Transform offset;
+    offset.position = pair(margin, margin);
+    Transform placedShared;
+    placedShared.anchor = pair(margin, margin);
     for (auto t = tracks.rbegin(); t != tracks.rend(); ++t) {
         if (t->done.empty())
             continue;
@@ -495,13 +513,29 @@ QByteArray lottieJson(const ExportContext &context)
             return a.segment != b.segment ? a.segment < b.segment : a.slot > b.slot;
         });
         QByteArray inner;
-        Transform offset;
-        offset.position = pair(margin, margin);
         inner += layerJson(1, 3, "\"Page\"", 0, offset, 0, ticks, {});
         int innerInd = 1;
-        for (const ShapeLayer &s : t->done)
-            inner += ',' + layerJson(++innerInd, 4, s.name, 1, Transform(), s.ip, s.op,
-                                     ",\"shapes\":" + s.shapes);
+        for (const ShapeLayer &s : t->done) {
+            if (showings.value(s.shapes) < 2) {
+                inner += ',' + layerJson(++innerInd, 4, s.name, 1, Transform(), s.ip, s.op,
+                                         ",\"shapes\":" + s.shapes);
+                continue;
+            }
+            auto asset = shared.find(s.shapes);
+            if (asset == shared.end()) {
+                const QByteArray id = "drawing_" + QByteArray::number(shared.size() + 1);
+                asset = shared.insert(s.shapes, id);
+                if (!assets.isEmpty())
+                    assets += ',';
+                assets +=
+                    "{\"id\":\"" + id + "\",\"nm\":" + s.name + ",\"layers\":[" +
+                    layerJson(1, 3, "\"Page\"", 0, offset, 0, ticks, {}) + ',' +
+                    layerJson(2, 4, s.name, 1, Transform(), 0, ticks, ",\"shapes\":" + s.shapes) +
+                    "]}";
+            }
+            inner += ',' + layerJson(++innerInd, 0, s.name, 1, placedShared, s.ip, s.op,
+                                     ",\"refId\":\"" + *asset + '"' + compKeys);
+        }
         if (!assets.isEmpty())
             assets += ',';
         assets +=
@@ -518,9 +552,7 @@ QByteArray lottieJson(const ExportContext &context)
         front += layerJson(
             ++ind, 0,
             string(t->name.isEmpty() ? QStringLiteral("Layer %1").arg(layerNumber) : t->name),
-            parent, placed, 0, ticks,
-            ",\"refId\":\"" + layerKey(t->id) + "\",\"w\":" + numberText(compSize.width(), 0) +
-                ",\"h\":" + numberText(compSize.height(), 0));
+            parent, placed, 0, ticks, ",\"refId\":\"" + layerKey(t->id) + '"' + compKeys);
     }
     layers = front;
     if (!layers.isEmpty())
