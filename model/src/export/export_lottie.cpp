@@ -397,6 +397,15 @@ QByteArray lottieJson(const ExportContext &context)
         const Frame &frame = context.frame(e);
         const qint64 start = tick, end = tick + plan.holds[e];
         tick = end;
+        // The same drawing again (a hold the camera moves through, split into ticks): what
+        // shows lasts longer, nothing is worked out again.
+        if (e > 0 && plan.frames[e] == plan.frames[e - 1]) {
+            for (LayerTrack &t : tracks)
+                for (Run &run : t.open)
+                    if (run.end == start)
+                        run.end = end;
+            continue;
+        }
         std::vector<FramePlane> planes = frame.planes;
         if (planes.empty()) // a plain layer's cel: one plane of everything
             planes.push_back({int(frame.groups.size()), 1.0, 0.0,
