@@ -19,6 +19,7 @@
 // Numbers are canvas pixels rounded to 1/100, colours to 1/10000 (players that
 // truncate still get the same 8-bit channel). No reference picture and no
 // sound: Lottie has neither (the result's note says so when the document has them).
+#include "decimal_text.h"
 #include "export_formats.h"
 #include "export_text.h"
 #include "lottie_shapes.h"
@@ -30,6 +31,8 @@
 #include <QBuffer>
 #include <QFileInfo>
 #include <QHash>
+#include <QJsonArray>
+#include <QJsonDocument>
 #include <QRegularExpression>
 #include <quazip/quazip.h>
 #include <quazip/quazipfile.h>
@@ -49,27 +52,7 @@ constexpr double kLargest = 1e7;
 
 void number(QByteArray &out, double value, int decimals = 2)
 {
-    if (!std::isfinite(value))
-        value = 0.0;
-    value = std::clamp(value, -kLargest, kLargest);
-    const double unit = std::pow(10.0, decimals);
-    const long long scaled = std::llround(value * unit);
-    if (scaled == 0) {
-        out += '0';
-        return;
-    }
-    if (scaled < 0)
-        out += '-';
-    const long long magnitude = std::llabs(scaled);
-    const long long whole = magnitude / (long long)unit;
-    long long fraction = magnitude % (long long)unit;
-    out += QByteArray::number(whole);
-    if (fraction == 0)
-        return;
-    QByteArray digits = QByteArray::number(fraction).rightJustified(decimals, '0');
-    while (digits.endsWith('0'))
-        digits.chop(1);
-    out += '.' + digits;
+    appendDecimal(out, value, decimals, kLargest);
 }
 
 QByteArray numberText(double value, int decimals = 2)
@@ -88,21 +71,11 @@ void point(QByteArray &out, QPointF p)
     out += ']';
 }
 
+// A JSON string, escaped as Qt's JSON writer escapes it.
 QByteArray string(const QString &text)
 {
-    QByteArray out = "\"";
-    for (const QChar c : text) {
-        const char16_t u = c.unicode();
-        if (u == '"' || u == '\\') {
-            out += '\\';
-            out += char(u);
-        } else if (u < 0x20) {
-            out += "\\u" + QByteArray::number(int(u), 16).rightJustified(4, '0');
-        } else {
-            out += QString(c).toUtf8();
-        }
-    }
-    return out + '"';
+    const QByteArray list = QJsonDocument(QJsonArray{text}).toJson(QJsonDocument::Compact);
+    return list.mid(1, list.size() - 2); // ["..."] without its brackets
 }
 
 QByteArray bezier(const BezierPath &path)
@@ -318,20 +291,21 @@ struct LayerTrack {
         std::vector<Id> key;
         for (const Look &look : looks)
             key.push_back(look.id);
-        if (key != segmentKey || open.empty()) {
+        if (key != segmentKey) { // other objects, or the layer showed nothing before
             closeAll();
             segmentKey = key;
             ++segment;
         }
+        // Within a stretch the drawings follow one another, so a run goes on unless its
+        // object's layout changed. A run not yet begun has no end.
         open.resize(looks.size());
         for (std::size_t slot = 0; slot < looks.size(); ++slot) {
             Run &run = open[slot];
-            const bool fresh = run.keys.empty() && run.layout.items.empty() && run.end == 0;
-            if (!fresh && (run.end != start || !sameLayout(run.layout, looks[slot]))) {
+            if (run.end != 0 && !sameLayout(run.layout, looks[slot])) {
                 done.push_back(shapeLayerOf(run, segment, int(slot)));
                 run = Run();
             }
-            if (run.end == 0 && run.keys.empty()) {
+            if (run.end == 0) {
                 run.start = start;
                 run.layout = looks[slot];
             }

@@ -2,6 +2,7 @@
 // stroke is written as a filled outline: the union (non-zero fill of one path) of a tapered
 // capsule per segment, the convex hull of the circles at its two samples. It scales without
 // pixels and renders like the canvas, which paints the same widths.
+#include "decimal_text.h"
 #include "export_formats.h"
 
 #include <finbook/model/fill/fill_render.h>
@@ -23,21 +24,7 @@ constexpr double kLargestNumber = 1e9;
 // Canvas units to 1/100 px, trailing zeros dropped: "12.5", "3", "-0.25".
 void appendNumber(QByteArray &out, double value)
 {
-    if (!std::isfinite(value))
-        value = 0.0;
-    value = std::clamp(value, -kLargestNumber, kLargestNumber);
-    const long long hundredths = std::llround(value * 100.0);
-    if (hundredths < 0)
-        out += '-';
-    const long long magnitude = std::llabs(hundredths);
-    out += QByteArray::number(magnitude / 100);
-    const int fraction = int(magnitude % 100);
-    if (fraction != 0) {
-        out += '.';
-        out += char('0' + fraction / 10);
-        if (fraction % 10 != 0)
-            out += char('0' + fraction % 10);
-    }
+    appendDecimal(out, value, 2, kLargestNumber);
 }
 
 void appendPoint(QByteArray &out, char command, QPointF p)

@@ -38,25 +38,12 @@ std::optional<QColor> EyedropperTool::colourAt(const model::Frame &frame,
                     picked = QColor::fromRgba(fill.color);
                     line = false;
                 }
-            for (const model::PaintItem &item : layer.strokes) {
-                if (!item.points || item.points->empty())
-                    continue;
-                const auto &points = *item.points;
-                for (std::size_t i = 0; i < points.size(); ++i) {
-                    const model::StrokePoint &b = points[i];
-                    const model::StrokePoint &a = i > 0 ? points[i - 1] : b;
-                    const double reach =
-                        std::max(0.25,
-                                 double(item.width) * std::clamp(double(b.pressure), 0.0, 1.0)) /
-                            2.0 +
-                        tolerance;
-                    if (distanceToSegment(pos, QPointF(a.x, a.y), QPointF(b.x, b.y)) <= reach) {
-                        picked = QColor::fromRgba(item.color);
-                        line = true;
-                        break;
-                    }
+            for (const model::PaintItem &item : layer.strokes)
+                if (item.points &&
+                    strokeTouched(*item.points, item.width, QLineF(pos, pos), tolerance)) {
+                    picked = QColor::fromRgba(item.color);
+                    line = true;
                 }
-            }
         }
     }
     if (fromLine)

@@ -94,8 +94,7 @@ void PenTool::release(const ToolEvent &event)
             // The ink catches up: the stroke ends exactly where the pen lifted.
             const model::StrokePoint end = m_string.finish(*last);
             const model::StrokePoint &tail = m_points.back();
-            if (m_points.size() > 1 && std::hypot(tail.x - end.x, tail.y - end.y) <
-                                           float(0.5 / std::max(canvas()->zoom(), 1e-6)))
+            if (m_points.size() > 1 && std::hypot(tail.x - end.x, tail.y - end.y) < minStep())
                 m_points.back() = end;
             else
                 m_points.push_back(end);
@@ -154,13 +153,17 @@ std::optional<model::StrokePoint> PenTool::sampleOf(const ToolEvent &event) cons
     return model::StrokePoint{x, y, std::clamp(p, 0.0f, 1.0f)};
 }
 
-void PenTool::append(const model::StrokePoint &point)
+float PenTool::minStep() const
 {
     // Samples closer than half a screen pixel add nothing visible but cost memory and time.
-    const float minStep = float(0.5 / std::max(canvas()->zoom(), 1e-6));
+    return float(0.5 / std::max(canvas()->zoom(), 1e-6));
+}
+
+void PenTool::append(const model::StrokePoint &point)
+{
     if (!m_points.empty()) {
         const model::StrokePoint &last = m_points.back();
-        if (std::hypot(last.x - point.x, last.y - point.y) < minStep)
+        if (std::hypot(last.x - point.x, last.y - point.y) < minStep())
             return;
     }
     m_points.push_back(point);

@@ -297,6 +297,22 @@ void SelectTool::commitTransform()
     std::vector<model::Id> ids;
     std::vector<model::Id> groups;
     std::vector<model::StrokeDataPtr> data;
+    // A stroke as the drag leaves it: `points` (those shown) mapped, its width scaled; null
+    // when a point would leave the finite numbers.
+    const auto transformed = [&](const model::StrokeData &stroke,
+                                 std::vector<model::StrokePoint> points) -> model::StrokeDataPtr {
+        auto moved = std::make_shared<model::StrokeData>(stroke);
+        moved->points = std::move(points);
+        for (model::StrokePoint &p : moved->points) {
+            const QPointF q = m_transform.map(QPointF(p.x, p.y));
+            p.x = float(q.x());
+            p.y = float(q.y());
+            if (!std::isfinite(p.x) || !std::isfinite(p.y))
+                return nullptr;
+        }
+        moved->width = float(std::max(0.1, moved->width * widthScale));
+        return moved;
+    };
     // The transform was made on the strokes as shown, so it applies to the shown points (the
     // pose of a posed object), and such an object's pose becomes its drawing first.
     for (model::Id id : m_dragged) {
@@ -304,18 +320,12 @@ void SelectTool::commitTransform()
         if (!at.isValid())
             continue;
         const model::StrokeGroup &g = doc->frameAt(at).groups[std::size_t(at.group)];
-        auto moved = std::make_shared<model::StrokeData>(*g.strokes[std::size_t(at.stroke)].data);
-        moved->points = model::displayedPoints(g, std::size_t(at.stroke));
-        for (model::StrokePoint &p : moved->points) {
-            const QPointF q = m_transform.map(QPointF(p.x, p.y));
-            p.x = float(q.x());
-            p.y = float(q.y());
-            if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-                canvas()->postMessage(tr("The strokes cannot be transformed that far."));
-                return;
-            }
+        model::StrokeDataPtr moved = transformed(*g.strokes[std::size_t(at.stroke)].data,
+                                                 model::displayedPoints(g, std::size_t(at.stroke)));
+        if (!moved) {
+            canvas()->postMessage(tr("The strokes cannot be transformed that far."));
+            return;
         }
-        moved->width = float(std::max(0.1, moved->width * widthScale));
         ids.push_back(id);
         groups.push_back(g.id);
         data.push_back(std::move(moved));
@@ -330,16 +340,12 @@ void SelectTool::commitTransform()
         data.clear();
         for (model::Id id : parts) {
             const model::StrokeLocation at = doc->locateStroke(id);
-            const model::StrokeGroup &g = doc->frameAt(at).groups[std::size_t(at.group)];
-            auto moved =
-                std::make_shared<model::StrokeData>(*g.strokes[std::size_t(at.stroke)].data);
-            for (model::StrokePoint &p : moved->points) {
-                const QPointF q = m_transform.map(QPointF(p.x, p.y));
-                p.x = float(q.x());
-                p.y = float(q.y());
-            }
-            moved->width = float(std::max(0.1, moved->width * widthScale));
-            data.push_back(std::move(moved));
+            const model::StrokeData &part = *doc->frameAt(at)
+                                                 .groups[std::size_t(at.group)]
+                                                 .strokes[std::size_t(at.stroke)]
+                                                 .data;
+            model::StrokeDataPtr moved = transformed(part, part.points);
+            data.push_back(moved ? std::move(moved) : std::make_shared<model::StrokeData>(part));
         }
     }
     doc->undoStack()->push(new model::ReplaceStrokeDataCommand(doc, parts, data, text));

@@ -62,8 +62,9 @@ signals:
 private:
     // The event as a stroke sample, or nothing for non-finite input.
     std::optional<model::StrokePoint> sampleOf(const ToolEvent &event) const;
-    // Appends unless it is within half a screen pixel of the last sample.
+    // Appends unless it is within minStep() of the last sample.
     void append(const model::StrokePoint &point);
+    float minStep() const; // half a screen pixel, in canvas pixels
     QRectF lastSegmentRect() const;
     QRectF stringRect() const;
     void cancel();
