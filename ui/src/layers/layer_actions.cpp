@@ -30,7 +30,7 @@ LayerActions::LayerActions(EditorState *state, QWidget *dialogParent, QObject *p
     model::Document *doc = state->document();
     const auto push = [doc](QUndoCommand *command) { doc->undoStack()->push(command); };
     connect(makeAction(QStringLiteral("layer.new"), tr("&New Layer")), &QAction::triggered, this,
-            [this, doc, push] {
+            [doc, push] {
                 auto *add = new model::AddLayerCommand(doc, doc->currentLayerIndex() + 1,
                                                        freshLayerName(*doc));
                 push(add);
