@@ -15,6 +15,7 @@ Document::Document(QObject *parent)
     , m_soundtrack(std::make_unique<Soundtrack>())
     , m_reference(new ReferenceLayer(this))
 {
+    m_palette = defaultPalette();
     Layer first;
     first.id = allocateId();
     first.properties.name = Command::tr("Layer 1");
@@ -209,6 +210,15 @@ void Document::reset(std::vector<Frame> frames, const DocumentSettings &settings
     reset(std::move(layers), settings, after);
 }
 
+void Document::setPalette(Palette palette)
+{
+    palette = sanitizedPalette(std::move(palette));
+    if (palette == m_palette)
+        return;
+    m_palette = std::move(palette);
+    emit paletteChanged();
+}
+
 void Document::reset(std::vector<Layer> layers, const DocumentSettings &settings, Id nextId)
 {
     if (layers.empty())
@@ -226,6 +236,7 @@ void Document::reset(std::vector<Layer> layers, const DocumentSettings &settings
             resolveJoins(f);
     m_settings = settings;
     m_camera = {};
+    m_palette = defaultPalette();
     m_nextId = std::max<Id>(nextId, 1);
     m_reference->setReference({});
     m_soundtrack->reset({});

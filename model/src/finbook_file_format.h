@@ -62,6 +62,9 @@
 // Ancillary sections (between FRAM and FEND):
 //   "lite"  := f64 azimuth f64 elevation   (degrees; DocumentSettings' light for shaded fills),
 //              written only when the light is not the default.
+//   "palt"  := u32 nameBytes utf8 u32 count (u32 color u32 nameBytes utf8)[count]
+//              (palette/palette.h): the document's palette, written only when it is not the
+//              default one. A Finbook that does not know it opens the file with the default.
 //
 // An object carries at most one rig chunk (PINS, CAGE or SKEL).
 //
@@ -134,6 +137,7 @@ constexpr std::size_t kLayerFixedBytes = 8 + 4 + 1 + 8 + 8 + 4;
 constexpr quint32 kTagShading = tag("shad");
 constexpr quint32 kTagLimbBases = tag("limb");
 constexpr quint32 kTagLight = tag("lite");
+constexpr quint32 kTagPalette = tag("palt");
 
 inline bool isAncillary(quint32 t)
 {

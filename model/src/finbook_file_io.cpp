@@ -246,6 +246,7 @@ void adoptLoadedDocument(Document &document, LoadedDocument loaded)
     document.referenceLayer().setReference(std::move(loaded.reference));
     document.soundtrack().reset(std::move(loaded.sound));
     document.setCamera(std::move(loaded.camera));
+    document.setPalette(std::move(loaded.palette));
 }
 
 std::optional<FileError> saveFinbook(const Document &document, const QString &path,

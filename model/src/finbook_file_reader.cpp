@@ -187,6 +187,18 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
         readReferenceSequenceSection(body);
         return !cut;
     }
+    if (t == kTagPalette && next == std::size(kOrder)) {
+        if (recovering()) {
+            try {
+                readPaletteSection(body);
+            } catch (const ReadFailure &failure) {
+                m_problems << failure.what;
+            }
+        } else {
+            readPaletteSection(body);
+        }
+        return !cut;
+    }
     if (t == kTagLight && next == std::size(kOrder)) {
         if (recovering()) {
             try {
@@ -249,6 +261,17 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
     next = index + 1;
     readSectionBody(body, index);
     return !cut;
+}
+
+void Reader::readPaletteSection(Cursor &c)
+{
+    const char *what = QT_TRANSLATE_NOOP("FinbookFile", "the palette");
+    const std::size_t size = c.remaining();
+    const QByteArray payload(c.take(size, what), qsizetype(size));
+    Expected<Palette, QString> palette = model::readPaletteSection(payload);
+    if (!palette)
+        c.fail(FileErrorCode::BadValue, palette.error());
+    m_doc.palette = std::move(*palette);
 }
 
 void Reader::readSectionBody(Cursor &body, std::size_t index)

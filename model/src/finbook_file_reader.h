@@ -95,6 +95,7 @@ private:
     void readFillsChunk(Cursor &c, StrokeGroup &g);   // fill/fill_chunk.cpp
     void readShadingChunk(Cursor &c, StrokeGroup &g); // shade/shade_chunk.cpp
     void readLightSection(Cursor &c);                 // shade/shade_chunk.cpp
+    void readPaletteSection(Cursor &c);               // finbook_file_reader.cpp
     void readReferenceSection(Cursor &c);             // reference/reference_section.cpp
     void readReferenceSequenceSection(Cursor &c);     // reference/reference_section.cpp
     std::vector<Pin> readPins(Cursor &c);

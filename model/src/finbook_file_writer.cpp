@@ -349,8 +349,15 @@ QByteArray serializeFinbook(const Document &document)
     if (!document.referenceLayer().isEmpty())
         for (AncillarySection &section : referenceSections(document.referenceLayer().reference()))
             extra.push_back(std::move(section));
+    if (document.palette() != defaultPalette())
+        extra.push_back(paletteSection(document.palette()));
     return serializeFinbook(document.layers(), document.settings(), extra,
                             document.soundtrack().clips(), document.camera());
+}
+
+AncillarySection paletteSection(const Palette &palette)
+{
+    return {"palt", paletteSectionPayload(palette)};
 }
 
 QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSettings &settings,

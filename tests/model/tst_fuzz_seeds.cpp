@@ -82,6 +82,11 @@ void cageAndSkeleton(Document &doc)
     settings.lightAzimuth = 200.0; // a "lite" section
     settings.lightElevation = 30.0;
     doc.reset(std::move(frames), settings, next + 2000);
+    // A palette of its own (a "palt" section).
+    Palette palette;
+    palette.name = QStringLiteral("Sample");
+    palette.swatches = {{0xffe0c040, QStringLiteral("Ochre")}, {0xff304050, QString()}};
+    doc.setPalette(palette);
 }
 
 // The sample with a reference layer (a "refr" section): a 4×3 PNG, placed, rotated and locked.
@@ -382,8 +387,8 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
     for (const char *tag :
-         {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL",
-          "JOIN", "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR", "LAYR"})
+         {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL", "JOIN",
+          "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR", "LAYR", "palt"})
         QVERIFY2(tags.count(tag), tag);
 }
 

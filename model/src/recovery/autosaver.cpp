@@ -98,7 +98,8 @@ void Autosaver::autosaveNow()
         copyPath(),
         m_doc->referenceLayer().reference(),
         m_doc->soundtrack().clips(),
-        m_doc->camera()};
+        m_doc->camera(),
+        m_doc->palette()};
     QMetaObject::invokeMethod(
         m_writer, [writer = m_writer, s = std::move(snapshot)] { writer->write(s); },
         Qt::QueuedConnection);

@@ -65,7 +65,8 @@ std::unique_ptr<QLockFile> lockFor(const QString &path)
 
 QByteArray recoveryCopyBytes(const std::vector<Layer> &layers, const DocumentSettings &settings,
                              const RecoveryInfo &info, const Reference &reference,
-                             const std::vector<SoundClip> &sound, const CameraTrack &camera)
+                             const std::vector<SoundClip> &sound, const CameraTrack &camera,
+                             const Palette &palette)
 {
     const QJsonObject description{
         {QStringLiteral("title"), info.title},
@@ -80,6 +81,8 @@ QByteArray recoveryCopyBytes(const std::vector<Layer> &layers, const DocumentSet
     if (!reference.isEmpty())
         for (AncillarySection &section : file_format::referenceSections(reference))
             extra.push_back(std::move(section));
+    if (palette != defaultPalette())
+        extra.push_back(paletteSection(palette));
     return serializeFinbook(layers, settings, extra, sound, camera);
 }
 

@@ -26,15 +26,16 @@ public:
         Reference reference; // the reference layer (its media bytes shared)
         std::vector<SoundClip> sound;
         CameraTrack camera;
+        Palette palette;
     };
 
     void write(const Snapshot &snapshot)
     {
         QString error;
         try {
-            const QByteArray bytes =
-                recoveryCopyBytes(snapshot.layers, snapshot.settings, snapshot.info,
-                                  snapshot.reference, snapshot.sound, snapshot.camera);
+            const QByteArray bytes = recoveryCopyBytes(
+                snapshot.layers, snapshot.settings, snapshot.info, snapshot.reference,
+                snapshot.sound, snapshot.camera, snapshot.palette);
             if (const auto failure = writeFileAtomically(snapshot.path, bytes))
                 error = describeWriteFailure(*failure, QFileInfo(snapshot.path).absolutePath());
         } catch (const std::bad_alloc &) {

@@ -14,16 +14,21 @@ namespace finbook::ui {
 BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
     : QToolBar(tr("Brush"), parent)
     , m_pen(pen)
+    , m_swatches(new QWidget(this))
     , m_color(new ColorButton(Qt::black, this))
     , m_width(new QDoubleSpinBox(this))
     , m_smoothing(new QSpinBox(this))
     , m_stabiliser(new QSpinBox(this))
 {
     setObjectName(QStringLiteral("brushToolBar"));
-    addWidget(createSwatches(
-        {QColor(Qt::black), QColor(0x80, 0x80, 0x80), QColor(Qt::white), QColor(0x90, 0x40, 0xb0),
-         QColor(0x30, 0x60, 0xd0), QColor(0xd0, 0x30, 0x30), QColor(0xf0, 0x90, 0x20),
-         QColor(0xe8, 0xd0, 0x20), QColor(0x30, 0xa0, 0x40), QColor(0x8a, 0x5a, 0x30)}));
+    // Two rows of small swatches: a one-row strip took a fifth of a 1280 px window, and the
+    // top row must leave room for the deformation tools.
+    m_swatches->setObjectName(QStringLiteral("penSwatches"));
+    auto *grid = new QGridLayout(m_swatches);
+    grid->setContentsMargins(2, 0, 2, 0);
+    grid->setSpacing(1);
+    setPalette(model::defaultPalette());
+    addWidget(m_swatches);
     m_color->setObjectName(QStringLiteral("penColor"));
     addWidget(m_color);
     addSeparator();
@@ -72,35 +77,36 @@ BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
     connect(m_pen, &PenTool::settingsChanged, this, &BrushToolBar::showSettings);
 }
 
-QWidget *BrushToolBar::createSwatches(const QList<QColor> &colors)
+void BrushToolBar::setPalette(const model::Palette &palette)
 {
-    // Two rows of small swatches: a one-row strip took a fifth of a 1280 px window, and the
-    // top row must leave room for the deformation tools.
     constexpr int kColumns = 5;
+    constexpr int kShown = 10;
     constexpr int kCell = 14;
-    auto *grid = new QWidget(this);
-    grid->setObjectName(QStringLiteral("penSwatches"));
-    auto *layout = new QGridLayout(grid);
-    layout->setContentsMargins(2, 0, 2, 0);
-    layout->setSpacing(1);
-    for (int i = 0; i < int(colors.size()); ++i) {
-        const QColor color = colors[i];
+    auto *grid = static_cast<QGridLayout *>(m_swatches->layout());
+    while (QLayoutItem *item = grid->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    const int n = std::min(kShown, int(palette.swatches.size()));
+    for (int i = 0; i < n; ++i) {
+        const model::Swatch &s = palette.swatches[std::size_t(i)];
+        const QColor color = QColor::fromRgb(s.color);
         QPixmap pixmap(kCell - 2, kCell - 2);
         pixmap.fill(color);
         QPainter(&pixmap).drawRect(pixmap.rect().adjusted(0, 0, -1, -1));
-        auto *swatch = new QToolButton(grid);
+        auto *swatch = new QToolButton(m_swatches);
         swatch->setObjectName(QStringLiteral("swatch") + color.name());
         swatch->setAutoRaise(true);
         swatch->setFocusPolicy(Qt::NoFocus);
         swatch->setIcon(QIcon(pixmap));
         swatch->setIconSize(pixmap.size());
         swatch->setFixedSize(kCell, kCell);
-        swatch->setToolTip(tr("Pen colour %1").arg(color.name()));
+        swatch->setToolTip(s.name.isEmpty() ? tr("Pen colour %1").arg(color.name())
+                                            : tr("Pen colour %1 (%2)").arg(s.name, color.name()));
         connect(swatch, &QToolButton::clicked, m_color,
                 [this, color] { m_color->setColor(color); });
-        layout->addWidget(swatch, i / kColumns, i % kColumns);
+        grid->addWidget(swatch, i / kColumns, i % kColumns);
     }
-    return grid;
 }
 
 void BrushToolBar::showSettings()

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <finbook/model/camera/camera_track.h>
+#include <finbook/model/palette/palette.h>
 #include <finbook/model/types.h>
 
 #include <QObject>
@@ -143,6 +144,10 @@ public:
     void setDeformed(Id groupId, DeformedStrokesPtr deformed);
 
     void setSettings(const DocumentSettings &settings);
+    // The swatches the animator picks colours from (palette/palette.h): a new document's is
+    // defaultPalette(); reset() restores that, the loader sets the file's.
+    const Palette &palette() const { return m_palette; }
+    void setPalette(Palette palette);
     // Replaces the camera's keys (camera/camera_commands.h); `camera` must be valid
     // (isValidCameraTrack).
     void setCamera(CameraTrack camera);
@@ -168,6 +173,7 @@ signals:
     void deformedChanged(Id groupId);
     void settingsChanged();
     void cameraChanged();
+    void paletteChanged();
 
 private:
     StrokeGroup &mutableGroup(Id groupId);
@@ -184,6 +190,7 @@ private:
     int m_current = 0;
     DocumentSettings m_settings;
     CameraTrack m_camera;
+    Palette m_palette;
     Id m_nextId = 1;
     std::unique_ptr<Soundtrack> m_soundtrack;
     QUndoStack m_undoStack;

@@ -74,8 +74,9 @@ struct LoadedDocument {
     Id nextId = 1;
     Reference reference; // the reference layer (empty when the file has none)
     quint32 formatVersion = kFinbookFormatVersion;
-    std::vector<SoundClip> sound; // the soundtrack's clips ("SOND" sections)
-    CameraTrack camera;           // the camera's keys ("CAMR" section)
+    std::vector<SoundClip> sound;       // the soundtrack's clips ("SOND" sections)
+    CameraTrack camera;                 // the camera's keys ("CAMR" section)
+    Palette palette = defaultPalette(); // the swatches ("palt" section)
 };
 
 // Puts what was loaded into `document` (Document::reset, then its soundtrack).
@@ -105,6 +106,9 @@ struct AncillarySection {
     char tag[5]; // four letters, the first lower case
     QByteArray payload;
 };
+// The "palt" section of a palette (a snapshot's; serializeFinbook(document) adds it itself
+// when the document's palette is not the default one).
+AncillarySection paletteSection(const Palette &palette);
 // The same bytes serializeFinbook(document) gives for a document holding `frames`,
 // `settings`, the sound clips `sound` and the camera `camera` (a snapshot; safe on any
 // thread), plus `ancillary` sections before the end.

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <finbook/model/camera/camera_track.h>
+#include <finbook/model/palette/palette.h>
 #include <finbook/model/reference/reference.h>
 #include <finbook/model/sound/sound_clip.h>
 #include <finbook/model/types.h>
@@ -40,12 +41,13 @@ struct RecoveryCopy {
 };
 
 // The bytes of a recovery copy: the document (a snapshot; any thread) with its description and
-// a thumbnail rendered here, the reference layer when there is one, the sound clips `sound`
-// and the camera `camera`.
+// a thumbnail rendered here, the reference layer when there is one, the sound clips `sound`,
+// the camera `camera` and the palette `palette`.
 QByteArray recoveryCopyBytes(const std::vector<Layer> &layers, const DocumentSettings &settings,
                              const RecoveryInfo &info, const Reference &reference = {},
                              const std::vector<SoundClip> &sound = {},
-                             const CameraTrack &camera = {});
+                             const CameraTrack &camera = {},
+                             const Palette &palette = defaultPalette());
 // Copies larger than this are not listed (nor read): a recovery copy is an autosave of a
 // drawing that had to fit in memory.
 constexpr qint64 kMaxRecoveryCopyBytes = qint64(4) << 30;

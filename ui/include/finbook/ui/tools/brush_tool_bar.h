@@ -1,6 +1,8 @@
-// The pen's toolbar: colour swatches (two rows, named "swatch#rrggbb"), a colour picker,
-// width and smoothing.
+// The pen's toolbar: colour swatches (two rows, named "swatch#rrggbb": the document palette's
+// first ten), a colour picker, width, smoothing and the stabiliser.
 #pragma once
+
+#include <finbook/model/palette/palette.h>
 
 #include <QToolBar>
 
@@ -17,11 +19,15 @@ class BrushToolBar : public QToolBar {
 public:
     explicit BrushToolBar(PenTool *pen, QWidget *parent = nullptr);
 
+    // The swatches show the first ten colours of `palette` (the document's: the Palette panel
+    // shows them all and edits them).
+    void setPalette(const model::Palette &palette);
+
 private:
-    QWidget *createSwatches(const QList<QColor> &colors);
     void showSettings();
 
     PenTool *m_pen;
+    QWidget *m_swatches;
     ColorButton *m_color;
     QDoubleSpinBox *m_width;
     QSpinBox *m_smoothing;
