@@ -8,6 +8,8 @@
 
 #include <QtTest>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 using namespace finbook;
@@ -30,9 +32,26 @@ private slots:
     void onionGhostIsEvenWhereItemsOverlap();
     void cacheFollowsUndo();
     void hiddenObjectsAreNotDrawn();
+    void rasterMatchesQPainter_data();
     void rasterMatchesQPainter();
+    void turningAndMirroringKeepTheDocument();
+    void aTurnedViewDrawsWhereThePenIs();
+    void shiftSpaceDragTurnsTheView();
+    void aTurnedPageShowsOnlyThePage();
 
 private:
+    // Every frame's strokes, point by point: what a view change must never alter.
+    QByteArray drawingBytes() const
+    {
+        QByteArray bytes;
+        for (const model::Frame &f : m_doc->frames())
+            for (const model::StrokeGroup &g : f.groups)
+                for (const model::Stroke &st : g.strokes)
+                    for (const model::StrokePoint &p : st.data->points)
+                        bytes.append(reinterpret_cast<const char *>(&p), sizeof p);
+        return bytes;
+    }
+
     QColor pixelAt(const QPointF &canvasPos)
     {
         const QImage image = m_canvas->grab().toImage();
@@ -247,9 +266,22 @@ void TestCanvas::hiddenObjectsAreNotDrawn()
     QCOMPARE(pixelAt({200, 150}), QColor(Qt::white));
 }
 
-// The canvas's own rasterizer must draw what model::paintFrame draws (thumbnails, export).
+void TestCanvas::rasterMatchesQPainter_data()
+{
+    QTest::addColumn<qreal>("rotation");
+    QTest::addColumn<bool>("mirrored");
+    QTest::newRow("upright") << 0.0 << false;
+    QTest::newRow("turned 30 degrees") << 30.0 << false;
+    QTest::newRow("mirrored") << 0.0 << true;
+    QTest::newRow("mirrored, turned -135 degrees") << -135.0 << true;
+}
+
+// The canvas's own rasterizer must draw what model::paintFrame draws (thumbnails, export), in
+// a turned and mirrored view too.
 void TestCanvas::rasterMatchesQPainter()
 {
+    QFETCH(qreal, rotation);
+    QFETCH(bool, mirrored);
     const model::Id g = m_doc->frameAt(0).groups[0].id;
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -270,6 +302,9 @@ void TestCanvas::rasterMatchesQPainter()
         addStroke(*m_doc, g, data);
     }
     m_canvas->actualSize();
+    m_canvas->setMirrored(mirrored);
+    m_canvas->setRotation(rotation);
+    QCOMPARE(m_canvas->rotation(), rotation);
     const QImage ours = m_canvas->grab().toImage().convertToFormat(QImage::Format_ARGB32);
     QImage ref(ours.size(), QImage::Format_ARGB32);
     ref.setDevicePixelRatio(ours.devicePixelRatio());
@@ -281,13 +316,14 @@ void TestCanvas::rasterMatchesQPainter()
         options.paintBackground = false;
         model::paintFrame(painter, m_doc->frameAt(0), m_doc->settings(), options);
     }
-    const QRect page = m_canvas->canvasToWidget()
-                           .mapRect(QRectF(0, 0, 400, 300))
-                           .toAlignedRect()
-                           .adjusted(2, 2, -2, -2);
+    // The page on screen, 2 px in from its edges (whose pixels the page's clip cuts).
+    const QPolygonF inner = m_canvas->canvasToWidget().map(QPolygonF(QRectF(3, 3, 394, 294)));
+    const QRect page = inner.boundingRect().toAlignedRect();
     qint64 ink = 0, inkRef = 0, far = 0, pixels = 0;
     for (int y = page.top(); y <= page.bottom(); ++y)
         for (int x = page.left(); x <= page.right(); ++x) {
+            if (!inner.containsPoint(QPointF(x + 0.5, y + 0.5), Qt::OddEvenFill))
+                continue;
             const QColor a = ours.pixelColor(x, y), b = ref.pixelColor(x, y);
             ink += 765 - a.red() - a.green() - a.blue();
             inkRef += 765 - b.red() - b.green() - b.blue();
@@ -306,6 +342,146 @@ void TestCanvas::rasterMatchesQPainter()
              qPrintable(QStringLiteral("ink %1 vs %2").arg(ink).arg(inkRef)));
     QVERIFY2(double(far) / double(pixels) < 0.03,
              qPrintable(QStringLiteral("%1 of %2 pixels differ").arg(far).arg(pixels)));
+}
+
+// View > Rotate and Mirror, and the status bar's field, change how the page is shown: never the
+// drawing, never the undo history. The point under the widget's centre stays put.
+void TestCanvas::turningAndMirroringKeepTheDocument()
+{
+    const model::Id g = m_doc->frameAt(0).groups[0].id;
+    addStroke(*m_doc, g, line({100, 150}, {300, 120}));
+    const QByteArray before = drawingBytes();
+    const int steps = m_doc->undoStack()->count();
+    QSignalSpy turned(m_canvas.get(), &ui::CanvasWidget::viewTurned);
+    const QPointF centre = QRectF(m_canvas->rect()).center();
+    const QPointF under = m_canvas->mapToCanvas(centre);
+    const auto same = [](QPointF a, QPointF b) { return QLineF(a, b).length() < 1e-6; };
+
+    m_canvas->setRotation(30);
+    QCOMPARE(m_canvas->rotation(), 30.0);
+    QVERIFY(same(m_canvas->mapToCanvas(centre), under));
+    // On screen the page's top edge now runs 30° clockwise (Qt's y points down).
+    const QPointF edge = m_canvas->mapFromCanvas({1, 0}) - m_canvas->mapFromCanvas({0, 0});
+    QCOMPARE(qRound(std::atan2(edge.y(), edge.x()) * 180 / M_PI), 30);
+    m_canvas->setMirrored(true);
+    QVERIFY(m_canvas->isMirrored());
+    QCOMPARE(m_canvas->rotation(), -30.0); // what was on screen, flipped left to right
+    QVERIFY(same(m_canvas->mapToCanvas(centre), under));
+    const QPointF flipped = m_canvas->mapFromCanvas({1, 0}) - m_canvas->mapFromCanvas({0, 0});
+    QVERIFY(std::abs(flipped.x() + edge.x()) < 1e-9 && std::abs(flipped.y() - edge.y()) < 1e-9);
+    // Round trips through the turned, mirrored view.
+    for (const QPointF p : {QPointF(0, 0), QPointF(123.25, 77.5), QPointF(400, 300)})
+        QVERIFY(same(m_canvas->mapToCanvas(m_canvas->mapFromCanvas(p)), p));
+    // Zooming keeps the point under the cursor in a turned view too.
+    const QPointF cursor(170, 130);
+    const QPointF at = m_canvas->mapToCanvas(cursor);
+    wheel(m_canvas.get(), cursor, 240);
+    QVERIFY(same(m_canvas->mapToCanvas(cursor), at));
+    // Steps add up exactly, and wrap into (−180°, 180°].
+    m_canvas->setMirrored(false);
+    m_canvas->resetRotation();
+    for (int i = 0; i < 12; ++i)
+        m_canvas->rotateBy(15);
+    QCOMPARE(m_canvas->rotation(), 180.0);
+    m_canvas->rotateBy(15);
+    QCOMPARE(m_canvas->rotation(), -165.0);
+    for (int i = 0; i < 11; ++i)
+        m_canvas->rotateBy(15);
+    QCOMPARE(m_canvas->rotation(), 0.0);
+    m_canvas->setRotation(std::numeric_limits<qreal>::quiet_NaN());
+    QCOMPARE(m_canvas->rotation(), 0.0);
+    // Fit to Window fits the turned page.
+    m_canvas->setRotation(45);
+    m_canvas->fitToView();
+    const QRectF shown = m_canvas->canvasToWidget().mapRect(QRectF(0, 0, 400, 300));
+    QVERIFY(QRectF(m_canvas->rect()).adjusted(-1, -1, 1, 1).contains(shown));
+    QVERIFY(shown.width() > 500 || shown.height() > 400);
+    QVERIFY(turned.count() >= 5);
+    QCOMPARE(drawingBytes(), before);
+    QCOMPARE(m_doc->undoStack()->count(), steps);
+}
+
+// The pen lays its line under the cursor whatever the view's turn and mirror.
+void TestCanvas::aTurnedViewDrawsWhereThePenIs()
+{
+    m_canvas->setMirrored(true);
+    m_canvas->setRotation(-60);
+    std::vector<QPointF> widget;
+    for (int i = 0; i <= 40; ++i)
+        widget.emplace_back(200 + 5 * i, 180 + 60 * std::sin(i * 0.15));
+    drag(m_canvas.get(), widget);
+    const model::StrokeGroup &g = m_doc->frameAt(0).groups[0];
+    QCOMPARE(int(g.strokes.size()), 1);
+    QPolygonF path;
+    for (const QPointF &w : widget)
+        path << m_canvas->mapToCanvas(w);
+    const std::vector<model::StrokePoint> &points = g.strokes[0].data->points;
+    QVERIFY(points.size() >= 2);
+    const auto distanceToPath = [&](QPointF p) {
+        qreal best = 1e9;
+        for (int i = 1; i < path.size(); ++i) {
+            const QPointF a = path[i - 1], d = path[i] - a;
+            const qreal len2 = QPointF::dotProduct(d, d);
+            const qreal t =
+                len2 > 0 ? std::clamp(QPointF::dotProduct(p - a, d) / len2, 0.0, 1.0) : 0.0;
+            best = std::min(best, QLineF(p, a + d * t).length());
+        }
+        return best;
+    };
+    for (const model::StrokePoint &p : points)
+        QVERIFY2(distanceToPath(QPointF(p.x, p.y)) < 2.0,
+                 qPrintable(QStringLiteral("(%1, %2)").arg(p.x).arg(p.y)));
+    QVERIFY(QLineF(QPointF(points.front().x, points.front().y), path.front()).length() < 2.0);
+    QVERIFY(QLineF(QPointF(points.back().x, points.back().y), path.back()).length() < 2.0);
+    // And the line is drawn where it was drawn: ink under the pen's path on screen.
+    const QImage image = m_canvas->grab().toImage();
+    const QPointF mid = widget[20] * image.devicePixelRatio();
+    QVERIFY(image.pixelColor(mid.toPoint()).lightness() < 128);
+}
+
+// Shift+Space-drag turns the view about the widget's centre as the pointer goes round it.
+void TestCanvas::shiftSpaceDragTurnsTheView()
+{
+    const QPointF c = QRectF(m_canvas->rect()).center();
+    const QPointF under = m_canvas->mapToCanvas(c);
+    m_canvas->setFocus();
+    QTest::keyPress(m_canvas.get(), Qt::Key_Space, Qt::ShiftModifier);
+    std::vector<QPointF> round;
+    for (int i = 0; i <= 9; ++i) // a quarter turn clockwise on screen, 100 px from the centre
+        round.push_back(c + 100 * QPointF(std::cos(i * M_PI / 18), std::sin(i * M_PI / 18)));
+    drag(m_canvas.get(), round, Qt::LeftButton, Qt::ShiftModifier);
+    QTest::keyRelease(m_canvas.get(), Qt::Key_Space, Qt::ShiftModifier);
+    QVERIFY2(std::abs(m_canvas->rotation() - 90.0) < 0.01,
+             qPrintable(QString::number(m_canvas->rotation())));
+    QVERIFY(QLineF(m_canvas->mapToCanvas(c), under).length() < 1e-6);
+    QCOMPARE(int(m_doc->frameAt(0).groups[0].strokes.size()), 0); // turning never draws
+    // Plain Space still pans.
+    const QPointF origin = m_canvas->mapFromCanvas({0, 0});
+    QTest::keyPress(m_canvas.get(), Qt::Key_Space);
+    drag(m_canvas.get(), {QPointF(100, 100), QPointF(80, 90)});
+    QTest::keyRelease(m_canvas.get(), Qt::Key_Space);
+    QVERIFY(QLineF(m_canvas->mapFromCanvas({0, 0}), origin + QPointF(-20, -10)).length() < 1e-9);
+    QCOMPARE(m_canvas->rotation(), 90.0);
+}
+
+// A turned page shows the drawing on the page only: a stroke that runs off the page is cut at
+// its edge, as it is upright, and the desk around the turned page stays the desk.
+void TestCanvas::aTurnedPageShowsOnlyThePage()
+{
+    const model::Id g = m_doc->frameAt(0).groups[0].id;
+    addStroke(*m_doc, g, line({-200, 150}, {600, 150}, 80));
+    m_canvas->setRotation(30);
+    m_canvas->fitToView();
+    const QImage image = m_canvas->grab().toImage();
+    const qreal dpr = image.devicePixelRatio();
+    const auto colourAt = [&](QPointF canvasPos) {
+        return image.pixelColor((m_canvas->mapFromCanvas(canvasPos) * dpr).toPoint());
+    };
+    QCOMPARE(colourAt({200, 150}), QColor(Qt::black)); // on the page
+    QCOMPARE(colourAt({20, 150}), QColor(Qt::black));
+    const QColor desk(0x70, 0x70, 0x70); // off the page, within its bounds on screen
+    QCOMPARE(colourAt({-60, 150}), desk);
+    QCOMPARE(colourAt({460, 150}), desk);
 }
 
 QTEST_MAIN(TestCanvas)

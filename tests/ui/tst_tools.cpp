@@ -42,6 +42,7 @@ private slots:
     void lassoSelectsMostlyInsideStrokes();
     void clickSelectsStrokeUnderCursor();
     void dragMovesSelectionAndUndoRestoresExactly();
+    void cornerHandleScalesSelection_data();
     void cornerHandleScalesSelection();
     void rotateHandleRotatesSelection();
     void deleteSelection();
@@ -351,8 +352,21 @@ void TestTools::dragMovesSelectionAndUndoRestoresExactly()
     QCOMPARE(*findStroke(*m_doc, a)->data, before);
 }
 
+void TestTools::cornerHandleScalesSelection_data()
+{
+    QTest::addColumn<qreal>("rotation");
+    QTest::addColumn<bool>("mirrored");
+    QTest::newRow("upright") << 0.0 << false;
+    // The handles sit on the box's corners as the turned, mirrored view shows them.
+    QTest::newRow("view turned 70 degrees, mirrored") << 70.0 << true;
+}
+
 void TestTools::cornerHandleScalesSelection()
 {
+    QFETCH(qreal, rotation);
+    QFETCH(bool, mirrored);
+    m_canvas->setMirrored(mirrored);
+    m_canvas->setRotation(rotation);
     const model::Id a = addStroke(*m_doc, group(0), line({100, 100}, {200, 150}));
     m_canvas->setCurrentTool(QStringLiteral("tool.select"));
     m_state->setSelectedStrokes({a});

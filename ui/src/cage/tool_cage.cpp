@@ -394,7 +394,9 @@ void CageTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidget)
         if (m_rubberBand) {
             painter.setPen(QPen(QColor(40, 120, 220), 1, Qt::DashLine));
             painter.setBrush(QColor(40, 120, 220, 30));
-            painter.drawRect(QRectF(canvasToWidget.map(m_pressPos), canvasToWidget.map(m_dragPos)));
+            // The rectangle in the drawing that picks corners (turned with a turned view).
+            painter.drawPolygon(
+                canvasToWidget.map(QPolygonF(QRectF(m_pressPos, m_dragPos).normalized())));
         }
     }
     painter.restore();

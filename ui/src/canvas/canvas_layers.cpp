@@ -68,11 +68,9 @@ void CanvasWidget::ensureOtherLayers()
     m_otherLayersValid = true;
 }
 
-bool CanvasWidget::rasterizeShot(QPainter &painter, const QRect &dirty,
+void CanvasWidget::rasterizeShot(QPainter &painter, const QRect &dirty,
                                  const model::CameraState &camera) const
 {
-    if (std::fmod(camera.rotation, 360.0) != 0.0)
-        return false;
     const model::DocumentSettings &settings = document()->settings();
     const QSizeF page(settings.canvasSize);
     const model::Frame shot = shownShot();
@@ -94,21 +92,20 @@ bool CanvasWidget::rasterizeShot(QPainter &painter, const QRect &dirty,
         options.opacity = std::clamp(plane.opacity, 0.0, 1.0);
         if (layer.groups.empty() || options.opacity <= 0.0)
             continue;
-        // Page → widget for this plane: its own camera, then the view (unturned: scale + move).
+        // Page → widget for this plane: its own camera, then the view (each a similarity).
         const QTransform view =
             model::cameraTransform(model::planeCamera(camera, plane.depth, page), page) *
-            screenTransform();
+            screenTransform() * QTransform::fromScale(dpr, dpr);
         StrokeRaster::prepareFills(layer, options, settings);
-        StrokeRaster::drawParallel(
-            &m_shotLayer, clip, view.m11() * dpr, QPointF(view.dx(), view.dy()) * dpr,
-            [&](StrokeRaster &raster) { raster.drawFrame(layer, options, settings); });
+        StrokeRaster::drawParallel(&m_shotLayer, clip, view, [&](StrokeRaster &raster) {
+            raster.drawFrame(layer, options, settings);
+        });
     }
     painter.save();
     painter.resetTransform();
     const QRectF source(QPointF(dirty.topLeft()) * dpr, QSizeF(dirty.size()) * dpr);
     painter.drawImage(QRectF(dirty), m_shotLayer, source);
     painter.restore();
-    return true;
 }
 
 model::Frame CanvasWidget::shownShot() const

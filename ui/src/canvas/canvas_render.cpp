@@ -169,14 +169,38 @@ QRectF CanvasWidget::pageRect() const
         QRectF(QPointF(0, 0), QSizeF(document()->settings().canvasSize)));
 }
 
-// Camera View: the shot, painted straight through the camera (turned, so the cached layers,
-// drawn axis-aligned, do not serve); the onion skin's neighbours through the same camera, so
-// that they show how the drawing moves within this shot.
+QPolygonF CanvasWidget::pagePolygon() const
+{
+    return screenTransform().map(
+        QPolygonF(QRectF(QPointF(0, 0), QSizeF(document()->settings().canvasSize))));
+}
+
+bool CanvasWidget::pageIsUpright() const
+{
+    return std::fmod(m_rotation, 90.0) == 0.0;
+}
+
+void CanvasWidget::clipToPage(QPainter &painter, const QRect &dirty) const
+{
+    if (pageIsUpright()) {
+        painter.setClipRect(pageRect() & QRectF(dirty));
+        return;
+    }
+    QPainterPath page;
+    page.addPolygon(pagePolygon());
+    page.closeSubpath();
+    QPainterPath shown;
+    shown.addRect(QRectF(dirty));
+    painter.setClipPath(page.intersected(shown));
+}
+
+// Camera View: the shot, drawn through the camera each time (the camera moves with the
+// playhead, so the page's cached layers do not serve); the onion skin's neighbours through the
+// same camera, so that they show how the drawing moves within this shot.
 void CanvasWidget::paintShot(QPainter &painter, const QRect &dirty) const
 {
-    const QRectF shot = pageRect();
     painter.save();
-    painter.setClipRect(shot & QRectF(dirty));
+    clipToPage(painter, dirty);
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setTransform(canvasToWidget());
     model::ReferenceLayer &reference = document()->referenceLayer();
@@ -193,12 +217,7 @@ void CanvasWidget::paintShot(QPainter &painter, const QRect &dirty) const
     const model::CameraState camera =
         model::cameraAt(document()->camera(), double(m_state->currentTick()),
                         QSizeF(document()->settings().canvasSize));
-    if (!rasterizeShot(painter, dirty, camera)) {
-        model::RenderOptions options;
-        options.paintBackground = false;
-        options.camera = camera;
-        model::paintFrame(painter, shownShot(), document()->settings(), options);
-    }
+    rasterizeShot(painter, dirty, camera);
     painter.restore();
 }
 
@@ -217,13 +236,15 @@ QImage CanvasWidget::newLayerImage(QImage recycled) const
 
 void CanvasWidget::rasterize(QImage &image, const std::function<void(StrokeRaster &)> &draw) const
 {
-    // The view is scale + translate only, so the rasterizer takes it as two numbers.
+    // The view is a similarity (zoom, turn, mirror, move), which the rasterizer takes whole; a
+    // turned page is clipped to its bounds here and to itself where the image is painted.
     const qreal dpr = image.devicePixelRatio();
     const QRectF page = pageRect();
     const QRect clip(
         QPoint(int(std::floor(page.left() * dpr)), int(std::floor(page.top() * dpr))),
         QPoint(int(std::ceil(page.right() * dpr)) - 1, int(std::ceil(page.bottom() * dpr)) - 1));
-    StrokeRaster::drawParallel(&image, clip, m_zoom * dpr, m_offset * dpr, draw);
+    StrokeRaster::drawParallel(&image, clip, screenTransform() * QTransform::fromScale(dpr, dpr),
+                               draw);
 }
 
 QImage CanvasWidget::renderFrameLayer(QImage recycled) const
@@ -309,9 +330,21 @@ void CanvasWidget::ensureLayers()
 
 void CanvasWidget::paintPage(QPainter &painter) const
 {
-    const QRectF page = pageRect();
-    painter.fillRect(page.translated(3, 3), QColor(0, 0, 0, 60));
-    painter.fillRect(page, QColor::fromRgba(document()->settings().background));
+    if (pageIsUpright()) {
+        const QRectF page = pageRect();
+        painter.fillRect(page.translated(3, 3), QColor(0, 0, 0, 60));
+        painter.fillRect(page, QColor::fromRgba(document()->settings().background));
+        return;
+    }
+    const QPolygonF page = pagePolygon();
+    painter.save();
+    painter.setPen(Qt::NoPen);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setBrush(QColor(0, 0, 0, 60));
+    painter.drawPolygon(page.translated(3, 3));
+    painter.setBrush(QColor::fromRgba(document()->settings().background));
+    painter.drawPolygon(page);
+    painter.restore();
 }
 
 void CanvasWidget::paintEvent(QPaintEvent *event)
@@ -332,7 +365,7 @@ void CanvasWidget::paintEvent(QPaintEvent *event)
         const QImage picture = reference.pictureWithoutWaiting(m_state->currentFrameIndex());
         if (!picture.isNull()) {
             painter.save();
-            painter.setClipRect(pageRect() & QRectF(dirty));
+            clipToPage(painter, dirty);
             painter.setTransform(canvasToWidget());
             model::paintReference(painter, reference.reference(), picture);
             painter.restore();
@@ -341,6 +374,12 @@ void CanvasWidget::paintEvent(QPaintEvent *event)
     const qreal dpr = devicePixelRatioF();
     const QRectF source(QPointF(dirty.topLeft()) * dpr, QSizeF(dirty.size()) * dpr);
     const bool others = document()->layerCount() > 1;
+    // The layers were drawn within the page's bounds; a turned page shows only the page.
+    const bool turned = !pageIsUpright();
+    if (turned) {
+        painter.save();
+        clipToPage(painter, dirty);
+    }
     if (others && !m_underCels.empty())
         painter.drawImage(QRectF(dirty), m_underLayer, source);
     if (m_state->onionSkin().enabled && !m_state->isPlaying() && !m_onionLayer.isNull() &&
@@ -353,9 +392,18 @@ void CanvasWidget::paintEvent(QPaintEvent *event)
     painter.setOpacity(1.0);
     if (others && !m_overCels.empty())
         painter.drawImage(QRectF(dirty), m_overLayer, source);
+    if (turned)
+        painter.restore();
     painter.setPen(QPen(kBorderColor, 1));
     painter.setBrush(Qt::NoBrush);
-    painter.drawRect(pageRect().adjusted(-0.5, -0.5, 0.5, 0.5));
+    if (turned) {
+        painter.save();
+        painter.setRenderHint(QPainter::Antialiasing, true);
+        painter.drawPolygon(pagePolygon());
+        painter.restore();
+    } else {
+        painter.drawRect(pageRect().adjusted(-0.5, -0.5, 0.5, 0.5));
+    }
     paintOverlays(painter);
 }
 

@@ -5,12 +5,14 @@
 #include <finbook/ui/window/editor_state.h>
 
 #include <QKeyEvent>
+#include <QLineF>
 #include <QMouseEvent>
 #include <QTabletEvent>
 #include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace finbook::ui {
 
@@ -93,9 +95,77 @@ void CanvasWidget::addOverlay(std::unique_ptr<CanvasOverlay> overlay)
 
 // --- view --------------------------------------------------------------------------------
 
+QTransform CanvasWidget::viewLinear() const
+{
+    QTransform t;
+    t.rotate(m_rotation);
+    t.scale(m_mirrored ? -m_zoom : m_zoom, m_zoom);
+    return t;
+}
+
 QTransform CanvasWidget::screenTransform() const
 {
-    return QTransform(m_zoom, 0, 0, m_zoom, m_offset.x(), m_offset.y());
+    if (m_rotation == 0.0 && !m_mirrored)
+        return QTransform(m_zoom, 0, 0, m_zoom, m_offset.x(), m_offset.y());
+    return viewLinear() * QTransform::fromTranslate(m_offset.x(), m_offset.y());
+}
+
+// Keeps the view-space point that was under `widgetAnchor` with the linear part `before` under
+// it with the linear part as it is now.
+void CanvasWidget::setViewLinear(const QTransform &before, const QPointF &widgetAnchor)
+{
+    bool invertible = false;
+    const QTransform back = before.inverted(&invertible);
+    if (!invertible)
+        return;
+    const QPointF anchor = back.map(widgetAnchor - m_offset);
+    m_offset = widgetAnchor - viewLinear().map(anchor);
+}
+
+void CanvasWidget::setRotation(qreal degrees)
+{
+    setRotation(degrees, QRectF(rect()).center());
+}
+
+void CanvasWidget::setRotation(qreal degrees, const QPointF &widgetAnchor)
+{
+    if (!std::isfinite(degrees) || !std::isfinite(widgetAnchor.x()) ||
+        !std::isfinite(widgetAnchor.y()))
+        return;
+    // (-180, 180], and whole multiples of a hundredth of a degree so that steps add up exactly.
+    degrees = std::remainder(degrees, 360.0);
+    if (degrees <= -180.0)
+        degrees += 360.0;
+    degrees = std::round(degrees * 100.0) / 100.0;
+    if (degrees == m_rotation)
+        return;
+    const QTransform before = viewLinear();
+    m_rotation = degrees;
+    setViewLinear(before, widgetAnchor);
+    m_fitted = false;
+    update();
+    emit viewTurned(m_rotation, m_mirrored);
+}
+
+void CanvasWidget::setMirrored(bool mirrored)
+{
+    if (mirrored == m_mirrored)
+        return;
+    // Flipping the screen left to right: F·R(θ)·S(±z, z) = R(−θ)·S(∓z, z).
+    // The move follows: the screen flipped about the centre c, M'(p) = c + F(M(p) − c).
+    m_mirrored = mirrored;
+    if (m_rotation != 180.0)
+        m_rotation = -m_rotation;
+    const QPointF c = QRectF(rect()).center();
+    m_offset = QPointF(2 * c.x() - m_offset.x(), m_offset.y());
+    update();
+    emit viewTurned(m_rotation, m_mirrored);
+}
+
+qreal CanvasWidget::angleFromCentre(const QPointF &widgetPos) const
+{
+    const QPointF d = widgetPos - QRectF(rect()).center();
+    return std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi;
 }
 
 QTransform CanvasWidget::cameraViewTransform() const
@@ -133,7 +203,7 @@ QTransform CanvasWidget::canvasToWidget() const
 
 QPointF CanvasWidget::mapToCanvas(const QPointF &widgetPos) const
 {
-    if (!looksThroughCamera())
+    if (!looksThroughCamera() && m_rotation == 0.0 && !m_mirrored)
         return (widgetPos - m_offset) / m_zoom;
     bool invertible = false;
     const QTransform back = canvasToWidget().inverted(&invertible);
@@ -142,7 +212,7 @@ QPointF CanvasWidget::mapToCanvas(const QPointF &widgetPos) const
 
 QPointF CanvasWidget::mapFromCanvas(const QPointF &canvasPos) const
 {
-    if (!looksThroughCamera())
+    if (!looksThroughCamera() && m_rotation == 0.0 && !m_mirrored)
         return canvasPos * m_zoom + m_offset;
     return canvasToWidget().map(canvasPos);
 }
@@ -153,9 +223,9 @@ void CanvasWidget::setZoom(qreal zoom, const QPointF &widgetAnchor)
         return;
     zoom = std::clamp(zoom, kMinZoom, kMaxZoom);
     // In the view's own space (the page, or the shot in Camera View).
-    const QPointF anchor = (widgetAnchor - m_offset) / m_zoom;
+    const QTransform before = viewLinear();
     m_zoom = zoom;
-    m_offset = widgetAnchor - anchor * m_zoom;
+    setViewLinear(before, widgetAnchor);
     m_fitted = false;
     update();
     emit zoomChanged(m_zoom);
@@ -177,8 +247,11 @@ void CanvasWidget::fitToView()
         return;
     const qreal w = std::max(1.0, width() - 2 * kFitMargin);
     const qreal h = std::max(1.0, height() - 2 * kFitMargin);
-    m_zoom = std::clamp(std::min(w / page.width(), h / page.height()), kMinZoom, kMaxZoom);
-    m_offset = QRectF(rect()).center() - QPointF(page.width(), page.height()) * m_zoom / 2;
+    // The page's bounds as the view turns it, at 100 %.
+    m_zoom = 1.0;
+    const QSizeF turned = viewLinear().mapRect(QRectF(QPointF(0, 0), page)).size();
+    m_zoom = std::clamp(std::min(w / turned.width(), h / turned.height()), kMinZoom, kMaxZoom);
+    m_offset = QRectF(rect()).center() - viewLinear().map(QPointF(page.width(), page.height()) / 2);
     m_fitted = true;
     update();
     emit zoomChanged(m_zoom);
@@ -188,7 +261,7 @@ void CanvasWidget::actualSize()
 {
     const QSizeF page(document()->settings().canvasSize);
     m_zoom = 1.0;
-    m_offset = QRectF(rect()).center() - QPointF(page.width(), page.height()) / 2;
+    m_offset = QRectF(rect()).center() - viewLinear().map(QPointF(page.width(), page.height()) / 2);
     m_fitted = false;
     update();
     emit zoomChanged(m_zoom);
@@ -244,8 +317,15 @@ bool CanvasWidget::refusedOnLockedLayer()
     return true;
 }
 
-void CanvasWidget::beginDrag(const ToolEvent &event, bool pan)
+void CanvasWidget::beginDrag(const ToolEvent &event, bool pan, bool rotate)
 {
+    if (rotate) {
+        m_drag = Drag::Rotate;
+        m_rotateFrom = m_rotation;
+        m_rotateGrab = angleFromCentre(event.widgetPos);
+        setCursor(Qt::SizeAllCursor);
+        return;
+    }
     if (pan) {
         m_drag = Drag::Pan;
         m_lastPanPos = event.widgetPos;
@@ -266,6 +346,12 @@ void CanvasWidget::continueDrag(const ToolEvent &event)
     case Drag::Pan:
         panBy(event.widgetPos - m_lastPanPos);
         m_lastPanPos = event.widgetPos;
+        break;
+    case Drag::Rotate:
+        // Turned as the pointer goes round the widget's centre (not too near it, where the
+        // angle jumps).
+        if (QLineF(QRectF(rect()).center(), event.widgetPos).length() > 4.0)
+            setRotation(m_rotateFrom + angleFromCentre(event.widgetPos) - m_rotateGrab);
         break;
     case Drag::Tool:
         m_tool->move(event);
@@ -295,7 +381,11 @@ void CanvasWidget::mousePressEvent(QMouseEvent *event)
     e.button = event->button();
     e.buttons = event->buttons();
     e.modifiers = event->modifiers();
-    if (event->button() == Qt::MiddleButton || (event->button() == Qt::LeftButton && m_spaceHeld))
+    if (event->button() == Qt::LeftButton && m_spaceHeld &&
+        (event->modifiers() & Qt::ShiftModifier))
+        beginDrag(e, false, true);
+    else if (event->button() == Qt::MiddleButton ||
+             (event->button() == Qt::LeftButton && m_spaceHeld))
         beginDrag(e, true);
     else if (event->button() == Qt::LeftButton)
         beginDrag(e, false);
@@ -318,7 +408,7 @@ void CanvasWidget::mouseReleaseEvent(QMouseEvent *event)
     if (m_tabletDown || m_drag == Drag::None)
         return;
     const bool panButton = event->button() == Qt::MiddleButton || event->button() == Qt::LeftButton;
-    if ((m_drag == Drag::Pan && !panButton) ||
+    if (((m_drag == Drag::Pan || m_drag == Drag::Rotate) && !panButton) ||
         (m_drag == Drag::Tool && event->button() != Qt::LeftButton))
         return;
     ToolEvent e = toolEvent(event->position(), 1.0);
@@ -347,7 +437,8 @@ void CanvasWidget::tabletEvent(QTabletEvent *event)
             return;
         m_tabletDown = true;
         setFocus(Qt::MouseFocusReason);
-        beginDrag(e, m_spaceHeld || event->button() == Qt::MiddleButton);
+        beginDrag(e, m_spaceHeld || event->button() == Qt::MiddleButton,
+                  m_spaceHeld && (event->modifiers() & Qt::ShiftModifier));
         break;
     case QEvent::TabletMove:
         continueDrag(e);
@@ -392,7 +483,9 @@ bool CanvasWidget::event(QEvent *event)
 
 void CanvasWidget::keyPressEvent(QKeyEvent *event)
 {
-    if (event->key() == Qt::Key_Space && event->modifiers() == Qt::NoModifier) {
+    // Space pans; Shift+Space turns the view (Krita's keys). Shift may come before or after.
+    if (event->key() == Qt::Key_Space &&
+        (event->modifiers() == Qt::NoModifier || event->modifiers() == Qt::ShiftModifier)) {
         if (!event->isAutoRepeat())
             setPanning(true);
         event->accept();
@@ -442,6 +535,8 @@ void CanvasWidget::updateCursor()
 {
     if (m_drag == Drag::Pan)
         setCursor(Qt::ClosedHandCursor);
+    else if (m_drag == Drag::Rotate)
+        setCursor(Qt::SizeAllCursor);
     else if (m_spaceHeld)
         setCursor(Qt::OpenHandCursor);
     else if (m_tool)

@@ -190,14 +190,19 @@ struct CapsuleSse {
 
 } // namespace
 
-StrokeRaster::StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale,
-                           const QPointF &offset, std::vector<std::uint8_t> recycledMask)
+StrokeRaster::StrokeRaster(QImage *image, const QRect &deviceClip, const QTransform &toDevice,
+                           std::vector<std::uint8_t> recycledMask)
     : m_bits(image->bits())
     , m_stride(image->bytesPerLine())
     , m_clip(deviceClip.intersected(image->rect()))
-    , m_scale(float(scale))
-    , m_ox(float(offset.x()))
-    , m_oy(float(offset.y()))
+    , m_toDevice(toDevice)
+    , m_xx(float(toDevice.m11()))
+    , m_xy(float(toDevice.m21()))
+    , m_yx(float(toDevice.m12()))
+    , m_yy(float(toDevice.m22()))
+    , m_scale(float(std::sqrt(std::abs(toDevice.determinant()))))
+    , m_ox(float(toDevice.dx()))
+    , m_oy(float(toDevice.dy()))
     , m_width(std::max(0, m_clip.width()))
     , m_height(std::max(0, m_clip.height()))
     , m_tilesX((m_width + kTile - 1) / kTile)
@@ -212,8 +217,7 @@ StrokeRaster::StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale,
     m_touched.assign(std::size_t(m_tilesX) * std::size_t(tilesY), 0);
 }
 
-void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal scale,
-                                const QPointF &offset,
+void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, const QTransform &toDevice,
                                 const std::function<void(StrokeRaster &)> &draw)
 {
     const QRect clip = deviceClip.intersected(image->rect());
@@ -232,8 +236,7 @@ void StrokeRaster::drawParallel(QImage *image, const QRect &deviceClip, qreal sc
         std::vector<std::uint8_t> mask;
         if (rasters.size() < pool.size())
             mask = std::move(pool[rasters.size()]);
-        rasters.push_back(
-            std::make_unique<StrokeRaster>(image, band, scale, offset, std::move(mask)));
+        rasters.push_back(std::make_unique<StrokeRaster>(image, band, toDevice, std::move(mask)));
     }
     std::vector<std::thread> workers;
     for (std::size_t b = 1; b < rasters.size(); ++b)
@@ -316,8 +319,7 @@ void StrokeRaster::drawFill(const QPainterPath &path, QRgb color, qreal opacity)
 {
     if (path.isEmpty() || m_clip.isEmpty() || opacity <= 0 || qAlpha(color) == 0)
         return;
-    const QTransform toDevice(m_scale, 0, 0, m_scale, m_ox, m_oy);
-    const QPainterPath device = toDevice.map(path);
+    const QPainterPath device = m_toDevice.map(path);
     const QRect box =
         device.boundingRect().toAlignedRect().adjusted(-1, -1, 1, 1).intersected(m_clip);
     if (box.isEmpty())
@@ -373,15 +375,24 @@ void StrokeRaster::drawStroke(const std::vector<model::StrokePoint> &points, QRg
     const double reach = double(std::max(widest, kMinRadius)) + 2.0;
     const QRectF clip = QRectF(m_clip).adjusted(-reach, -reach, reach, reach);
     const double left = clip.left(), right = clip.right(), top = clip.top(), bottom = clip.bottom();
-    // (NaN extents compare false and fall through to the per-segment checks.)
-    if (double(maxY * m_scale + m_oy) < top || double(minY * m_scale + m_oy) > bottom ||
-        double(maxX * m_scale + m_ox) < left || double(minX * m_scale + m_ox) > right)
+    // The extent's box on the device: each of its sides at the corner the transform takes
+    // farthest that way. (NaN extents compare false and fall through to the per-segment checks.)
+    const auto span = [](float m, float lo, float hi) {
+        return m >= 0 ? std::pair(m * lo, m * hi) : std::pair(m * hi, m * lo);
+    };
+    const auto [xFromX0, xFromX1] = span(m_xx, minX, maxX);
+    const auto [xFromY0, xFromY1] = span(m_xy, minY, maxY);
+    const auto [yFromX0, yFromX1] = span(m_yx, minX, maxX);
+    const auto [yFromY0, yFromY1] = span(m_yy, minY, maxY);
+    if (double(yFromX1 + yFromY1 + m_oy) < top || double(yFromX0 + yFromY0 + m_oy) > bottom ||
+        double(xFromX1 + xFromY1 + m_ox) < left || double(xFromX0 + xFromY0 + m_ox) > right)
         return;
     const auto inside = [&](const QPointF &p) {
         return p.x() >= left && p.x() <= right && p.y() >= top && p.y() <= bottom;
     };
     const auto device = [&](const model::StrokePoint &p) {
-        return QPointF(double(p.x * m_scale + m_ox), double(p.y * m_scale + m_oy));
+        return QPointF(double(m_xx * p.x + m_xy * p.y + m_ox),
+                       double(m_yx * p.x + m_yy * p.y + m_oy));
     };
     if (points.size() == 1) {
         const QPointF at = device(points.front());

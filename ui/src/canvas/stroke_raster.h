@@ -13,6 +13,7 @@
 
 #include <QImage>
 #include <QPainterPath>
+#include <QTransform>
 
 #include <cstdint>
 #include <functional>
@@ -31,9 +32,11 @@ struct CoverSpan {
 class StrokeRaster {
 public:
     // Draws into `image` (Format_ARGB32_Premultiplied), never outside `deviceClip`. A canvas
-    // point p lands at p * scale + offset in device pixels.
+    // point p lands at toDevice.map(p) in device pixels. `toDevice` is a similarity (a zoom, a
+    // turn, a mirror and a move: the view and the camera), which keeps a capsule a capsule;
+    // widths scale by its zoom.
     // `recycledMask` may hand over an all-zero mask from an earlier rasterizer to reuse.
-    StrokeRaster(QImage *image, const QRect &deviceClip, qreal scale, const QPointF &offset,
+    StrokeRaster(QImage *image, const QRect &deviceClip, const QTransform &toDevice,
                  std::vector<std::uint8_t> recycledMask = {});
 
     void drawStroke(const std::vector<model::StrokePoint> &points, QRgb color, float width,
@@ -59,8 +62,7 @@ public:
     // its own rasterizer: bands share no pixel, so the result equals one rasterizer's. Blocks
     // until done; `draw` must only read what does not change meanwhile. GUI thread only (it
     // keeps its masks for the next call).
-    static void drawParallel(QImage *image, const QRect &deviceClip, qreal scale,
-                             const QPointF &offset,
+    static void drawParallel(QImage *image, const QRect &deviceClip, const QTransform &toDevice,
                              const std::function<void(StrokeRaster &)> &draw);
 
 private:
@@ -72,6 +74,10 @@ private:
     uchar *m_bits;
     qsizetype m_stride;
     QRect m_clip;
+    QTransform m_toDevice;
+    // m_toDevice as numbers: device x = m_xx * x + m_xy * y + m_ox, device y = m_yx * x +
+    // m_yy * y + m_oy; m_scale is its zoom (device pixels per canvas pixel).
+    float m_xx, m_xy, m_yx, m_yy;
     float m_scale;
     float m_ox;
     float m_oy;

@@ -96,26 +96,40 @@ QRectF SelectTool::selectionBounds() const
     return bounds;
 }
 
+SelectTool::BoxHandles SelectTool::boxHandles() const
+{
+    const QRectF bounds = selectionBounds();
+    if (bounds.isNull())
+        return {};
+    BoxHandles h;
+    h.corners = canvas()->canvasToWidget().map(QPolygonF(bounds));
+    h.corners.resize(4); // QPolygonF(QRectF) repeats its first corner
+    const QPointF topMiddle = (h.corners[0] + h.corners[1]) / 2;
+    const QPointF centre = (h.corners[0] + h.corners[2]) / 2;
+    QPointF out = topMiddle - centre;
+    const qreal length = std::hypot(out.x(), out.y());
+    out = length > 1e-9 ? out / length : QPointF(0, -1);
+    h.rotate = topMiddle + out * kRotateOffset;
+    return h;
+}
+
 SelectTool::Handle SelectTool::handleAt(const QPointF &widgetPos) const
 {
-    const QRectF box = canvas()->canvasToWidget().mapRect(selectionBounds());
-    if (box.isNull())
+    const BoxHandles box = boxHandles();
+    if (box.corners.isEmpty())
         return Handle::None;
     const auto near = [&](const QPointF &p) {
         return std::abs(p.x() - widgetPos.x()) <= kHandleSize &&
                std::abs(p.y() - widgetPos.y()) <= kHandleSize;
     };
-    if (near(QPointF(box.center().x(), box.top() - kRotateOffset)))
+    if (near(box.rotate))
         return Handle::Rotate;
-    if (near(box.topLeft()))
-        return Handle::TopLeft;
-    if (near(box.topRight()))
-        return Handle::TopRight;
-    if (near(box.bottomRight()))
-        return Handle::BottomRight;
-    if (near(box.bottomLeft()))
-        return Handle::BottomLeft;
-    return box.contains(widgetPos) ? Handle::Inside : Handle::None;
+    for (const auto &[corner, handle] :
+         {std::pair(0, Handle::TopLeft), std::pair(1, Handle::TopRight),
+          std::pair(2, Handle::BottomRight), std::pair(3, Handle::BottomLeft)})
+        if (near(box.corners[corner]))
+            return handle;
+    return box.corners.containsPoint(widgetPos, Qt::OddEvenFill) ? Handle::Inside : Handle::None;
 }
 
 QCursor SelectTool::cursorFor(Handle handle) const
@@ -415,13 +429,14 @@ void SelectTool::paintOverlay(QPainter &painter, const QTransform &canvasToWidge
     outline(box, true);
     if (transforming)
         return;
-    const QRectF r = box.boundingRect();
-    const QPointF rotate(r.center().x(), r.top() - kRotateOffset);
+    const BoxHandles handles = boxHandles();
+    if (handles.corners.isEmpty())
+        return;
     painter.setPen(QPen(QColor(20, 20, 20), 1));
-    painter.drawLine(QPointF(r.center().x(), r.top()), rotate);
+    painter.drawLine((handles.corners[0] + handles.corners[1]) / 2, handles.rotate);
     painter.setBrush(Qt::white);
-    painter.drawEllipse(rotate, kHandleSize / 2, kHandleSize / 2);
-    for (const QPointF &corner : {r.topLeft(), r.topRight(), r.bottomRight(), r.bottomLeft()})
+    painter.drawEllipse(handles.rotate, kHandleSize / 2, kHandleSize / 2);
+    for (const QPointF &corner : handles.corners)
         painter.drawRect(QRectF(corner - QPointF(kHandleSize, kHandleSize) / 2,
                                 QSizeF(kHandleSize, kHandleSize)));
 }

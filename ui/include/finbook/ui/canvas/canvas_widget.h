@@ -9,12 +9,17 @@
 // stroke shape at a fraction of its cost, so a cold repaint stays fast too.
 //
 // View: the wheel zooms about the cursor (Krita's convention); the middle button, Space-drag
-// and the hand tool pan. Until the user zooms or pans, the page is kept fitted to the widget.
+// and the hand tool pan; Shift+Space-drag turns the view about the widget's centre, and the
+// view can be mirrored left to right. Turning and mirroring change the view only, never the
+// document: every tool takes its positions through mapToCanvas(). Until the user zooms or pans,
+// the page is kept fitted to the widget.
 #pragma once
 
 #include <finbook/model/types.h>
 
 #include <QImage>
+#include <QPolygonF>
+#include <QTransform>
 #include <QWidget>
 
 #include <functional>
@@ -74,6 +79,17 @@ public:
     void fitToView();  // whole page visible, centred; kept fitted on resize
     void actualSize(); // 100 %, centred
     void panBy(const QPointF &widgetDelta);
+    // The view's turn in degrees, (-180, 180], clockwise on screen as QPainter turns, about
+    // the widget's centre (or the anchor), and whether it is mirrored left to right (applied
+    // before the turn: a mirrored view turned by 30° shows the mirrored page turned by 30°).
+    qreal rotation() const { return m_rotation; }
+    bool isMirrored() const { return m_mirrored; }
+    void setRotation(qreal degrees);
+    void setRotation(qreal degrees, const QPointF &widgetAnchor);
+    void rotateBy(qreal degrees) { setRotation(m_rotation + degrees); }
+    void resetRotation() { setRotation(0); }
+    // Flips what is on screen left to right about the widget's centre.
+    void setMirrored(bool mirrored);
     // The canvas point under the mouse while the mouse is over the canvas (paste lands there).
     std::optional<QPointF> cursorPos() const;
 
@@ -100,6 +116,7 @@ signals:
     void toolAdded(finbook::ui::CanvasTool *tool);
     void currentToolChanged(finbook::ui::CanvasTool *tool);
     void zoomChanged(qreal zoom);
+    void viewTurned(qreal rotation, bool mirrored);
     void cursorMoved(const QPointF &canvasPos);
     void messagePosted(const QString &message);
 
@@ -118,7 +135,7 @@ protected:
     void leaveEvent(QEvent *event) override;
 
 private:
-    enum class Drag { None, Tool, Pan };
+    enum class Drag { None, Tool, Pan, Rotate };
 
     void connectDocument();
     void frameEdited(model::Id frameId);
@@ -129,14 +146,22 @@ private:
     QImage renderOnionLayer(QImage recycled) const;
     QImage newLayerImage(QImage recycled) const;
     void rasterize(QImage &image, const std::function<void(StrokeRaster &)> &draw) const;
-    QRectF pageRect() const;            // the page (in Camera View the shot) in widget coordinates
-    QTransform screenTransform() const; // the view's space (page or shot) to the widget
+    QRectF pageRect() const; // the page's (in Camera View the shot's) bounds in widget coordinates
+    // The page (or shot) on screen, turned with the view; pageRect() is its bounds.
+    QPolygonF pagePolygon() const;
+    // Whether the page's edges on screen are the widget's axes (the view unturned or turned by
+    // a multiple of 90°): then clipping to pageRect() is clipping to the page.
+    bool pageIsUpright() const;
+    // Clips `painter` to the page on screen within `dirty`.
+    void clipToPage(QPainter &painter, const QRect &dirty) const;
+    QTransform viewLinear() const; // the view's zoom, mirror and turn, without its move
+    void setViewLinear(const QTransform &before, const QPointF &widgetAnchor);
+    QTransform screenTransform() const;     // the view's space (page or shot) to the widget
     QTransform cameraViewTransform() const; // page to shot in Camera View, else identity
     void paintShot(QPainter &painter, const QRect &dirty) const;
-    // The shot's layers for Camera View when the camera is not turned: each plane rasterized
-    // at its own scale and offset (canvas_layers.cpp), as fast as the page's cached layers.
-    // False (nothing painted) for a turned camera, which QPainter draws.
-    bool rasterizeShot(QPainter &painter, const QRect &dirty,
+    // The shot's layers for Camera View: each plane rasterized through its own camera and the
+    // view (canvas_layers.cpp), as fast as the page's cached layers.
+    void rasterizeShot(QPainter &painter, const QRect &dirty,
                        const model::CameraState &camera) const;
     void paintOverlays(QPainter &painter);
     // The onion skin's frames, farthest first, with their tints and opacities.
@@ -145,7 +170,8 @@ private:
     void clampPan();
     void setPanning(bool spaceHeld);
     void updateCursor();
-    void beginDrag(const ToolEvent &event, bool pan);
+    void beginDrag(const ToolEvent &event, bool pan, bool rotate = false);
+    qreal angleFromCentre(const QPointF &widgetPos) const;
     // True (and a message posted) when the current layer is locked or hidden and the tool
     // would edit it.
     bool refusedOnLockedLayer();
@@ -160,7 +186,11 @@ private:
     std::vector<std::unique_ptr<CanvasOverlay>> m_overlays;
 
     qreal m_zoom = 1.0;
-    QPointF m_offset; // widget position of the canvas origin
+    qreal m_rotation = 0.0; // degrees, (-180, 180]
+    bool m_mirrored = false;
+    QPointF m_offset;         // widget position of the canvas origin
+    qreal m_rotateFrom = 0.0; // a Rotate drag: the view's turn and the pointer's angle at its start
+    qreal m_rotateGrab = 0.0;
     bool m_fitted = true;
 
     Drag m_drag = Drag::None;

@@ -50,6 +50,14 @@ private:
     enum class Handle { None, Inside, Rotate, TopLeft, TopRight, BottomRight, BottomLeft };
 
     Handle handleAt(const QPointF &widgetPos) const;
+    // The selection's box on screen: its corners (top left, top right, bottom right, bottom
+    // left of the box in the drawing, turned and mirrored with the view) and the rotate
+    // handle, beyond the middle of its top side. Empty without a selection.
+    struct BoxHandles {
+        QPolygonF corners;
+        QPointF rotate;
+    };
+    BoxHandles boxHandles() const;
     QTransform dragTransform(const ToolEvent &event) const;
     void finishLasso(const ToolEvent &event);
     void commitTransform();
