@@ -5,7 +5,9 @@
 
 #include <finbook/ui/canvas/canvas_tool.h>
 #include <finbook/ui/window/editor_state.h>
+#include <finbook/ui/window/tool_options_bar.h>
 
+#include <QLabel>
 #include <QToolBar>
 #include <QToolButton>
 #include <QtTest>
@@ -50,6 +52,7 @@ private slots:
     void nothingOverflowsAt1280();
     void toolsStandOnTheLeft();
     void toolTipsSayWhatAToolDoesAndItsKey();
+    void optionsFollowTheToolInHand();
 
 private:
     std::unique_ptr<IsolatedSettings> m_settings;
@@ -85,12 +88,16 @@ void TestToolbars::undoButtonKeepsItsPlace()
 
 void TestToolbars::nothingOverflowsAt1280()
 {
-    auto *deform = m_window->findChild<QToolBar *>(QStringLiteral("deformToolBar"));
-    QVERIFY(deform);
     QVERIFY(showActive(*m_window, QSize(1280, 800)));
     QCOMPARE(m_window->width(), 1280);
-    const QStringList hidden = hiddenInOverflow(*m_window);
-    QVERIFY2(hidden.isEmpty(), qPrintable(hidden.join(QStringLiteral(", "))));
+    // With each tool in hand: its options page is the widest thing in the top row.
+    for (ui::CanvasTool *tool : m_window->canvas()->tools()) {
+        m_window->canvas()->setCurrentTool(tool->id());
+        QCoreApplication::processEvents();
+        const QStringList hidden = hiddenInOverflow(*m_window);
+        QVERIFY2(hidden.isEmpty(),
+                 qPrintable(tool->id() + QStringLiteral(": ") + hidden.join(QStringLiteral(", "))));
+    }
     // The deformer tools answer their keys like the others.
     m_window->canvas()->setFocus();
     typeKey(Qt::Key_K);
@@ -106,8 +113,9 @@ void TestToolbars::toolsStandOnTheLeft()
     QVERIFY(tools);
     QCOMPARE(m_window->toolBarArea(tools), Qt::LeftToolBarArea);
     QCOMPARE(tools->orientation(), Qt::Vertical);
-    // Every other toolbar shares one row at the top: the canvas keeps its height.
-    for (QToolBar *bar : m_window->findChildren<QToolBar *>())
+    // Every other toolbar shares one row at the top: the canvas keeps its height. (The tools'
+    // option pages are toolbars inside the options bar.)
+    for (QToolBar *bar : m_window->findChildren<QToolBar *>(Qt::FindDirectChildrenOnly))
         if (bar != tools && bar->isVisible()) {
             QCOMPARE(m_window->toolBarArea(bar), Qt::TopToolBarArea);
             QCOMPARE(bar->y(), m_window->findChild<QToolBar *>(QStringLiteral("fileToolBar"))->y());
@@ -136,6 +144,59 @@ void TestToolbars::toolTipsSayWhatAToolDoesAndItsKey()
     }
     QCOMPARE(m_window->action(QStringLiteral("tool.bone"))->toolTip(),
              QStringLiteral("Bone (K): build a skeleton and pose the drawing by its bones"));
+}
+
+// One options bar: with each tool in hand it shows that tool's options and nothing of another
+// tool's, and it keeps its height (the canvas does not jump when the tool changes).
+void TestToolbars::optionsFollowTheToolInHand()
+{
+    QVERIFY(showActive(*m_window, QSize(1280, 800)));
+    auto *bar = m_window->findChild<ui::ToolOptionsBar *>(QStringLiteral("toolOptionsBar"));
+    QVERIFY(bar && bar->isVisible());
+    const struct {
+        const char *tool;
+        const char *page;
+        std::vector<const char *> shows;
+    } expected[] = {
+        {"tool.pen", "penOptions", {"penColor", "penWidth", "penSmoothing", "penStabiliser"}},
+        {"tool.eyedropper", "penOptions", {"penColor"}},
+        {"tool.eraser", "eraserOptions", {}},
+        {"tool.pin", "pinOptions", {"deform.meshDensity"}},
+        {"tool.cage", "cageOptions", {}},
+        {"tool.bone", "boneOptions", {"skeleton.complexity.bar", "skeleton.prune.bar"}},
+        {"tool.fill", "fillOptions", {"fillColor"}},
+        {"tool.select", nullptr, {}},
+        {"tool.hand", nullptr, {}},
+    };
+    const QStringList pages{QStringLiteral("penOptions"),  QStringLiteral("eraserOptions"),
+                            QStringLiteral("pinOptions"),  QStringLiteral("cageOptions"),
+                            QStringLiteral("boneOptions"), QStringLiteral("fillOptions")};
+    const int height = bar->height();
+    const int canvasTop = m_window->canvas()->mapTo(m_window.get(), QPoint()).y();
+    for (const auto &e : expected) {
+        const QString id = QString::fromLatin1(e.tool);
+        m_window->canvas()->setCurrentTool(id);
+        QCoreApplication::processEvents();
+        for (const QString &page : pages) {
+            auto *w = bar->findChild<QWidget *>(page);
+            QVERIFY2(w, qPrintable(page));
+            QCOMPARE(w->isVisible(), e.page && page == QLatin1String(e.page));
+        }
+        for (const char *name : e.shows) {
+            auto *w = m_window->findChild<QWidget *>(QString::fromLatin1(name));
+            QVERIFY2(w && w->isVisible(), qPrintable(id + QStringLiteral(": ") + name));
+        }
+        if (!e.page) { // a tool without options says what it does
+            auto *about = bar->findChild<QLabel *>(QStringLiteral("toolOptionsAbout"));
+            QVERIFY(about->isVisible());
+            QVERIFY(about->text().contains(m_window->canvas()->tool(id)->description()));
+        }
+        QCOMPARE(bar->height(), height);
+        QCOMPARE(m_window->canvas()->mapTo(m_window.get(), QPoint()).y(), canvasTop);
+    }
+    // The cage's corners and Fit Cage, the pins' density: only with their tools.
+    m_window->canvas()->setCurrentTool(QStringLiteral("tool.pen"));
+    QVERIFY(!m_window->findChild<QWidget *>(QStringLiteral("deform.meshDensity"))->isVisible());
 }
 
 QTEST_MAIN(TestToolbars)

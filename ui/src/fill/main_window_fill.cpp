@@ -9,8 +9,10 @@
 #include <finbook/ui/fill/tool_fill.h>
 #include <finbook/ui/keys/shortcut_registry.h>
 #include <finbook/ui/tools/tool_pen.h>
+#include <finbook/ui/widgets/color_button.h>
 #include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/window/main_window.h>
+#include <finbook/ui/window/tool_options_bar.h>
 
 #include <QElapsedTimer>
 #include <QMenu>
@@ -99,20 +101,24 @@ void MainWindow::createFill()
         objectMenu->addAction(fillAll);
     }
 
-    // The tool's options: shown while the Fill tool is current, so the one row of toolbars
-    // keeps its room for the pen and the deformers the rest of the time.
-    auto *bar = new QToolBar(tr("Fill"), this);
-    bar->setObjectName(QStringLiteral("fillToolBar"));
-    bar->addWidget(createCloseGapSpinBox(m_state, bar));
-    addToolBar(Qt::TopToolBarArea, bar);
-    const auto showOptions = [bar](CanvasTool *current) {
-        bar->setVisible(current && current->id() == QStringLiteral("tool.fill"));
-    };
-    connect(m_canvas, &CanvasWidget::currentToolChanged, bar, showOptions);
-    showOptions(m_canvas->currentTool());
-    // Again once the window has restored its saved state (which may show the bar) and tool.
-    QMetaObject::invokeMethod(
-        bar, [this, showOptions] { showOptions(m_canvas->currentTool()); }, Qt::QueuedConnection);
+    // The Fill tool's options: the pen's colour (which it fills with) and the gap size.
+    QToolBar *page =
+        m_options->newPage(QStringLiteral("fillOptions"), {QStringLiteral("tool.fill")});
+    auto *colour = new ColorButton(m_pen->settings().color, page);
+    colour->setObjectName(QStringLiteral("fillColor"));
+    colour->setToolTip(tr("The colour the Fill tool fills with (the pen's)"));
+    connect(colour, &ColorButton::colorChanged, m_pen, [this](const QColor &c) {
+        PenSettings s = m_pen->settings();
+        s.color = c;
+        m_pen->setSettings(s);
+    });
+    connect(m_pen, &PenTool::settingsChanged, colour, [this, colour] {
+        const QSignalBlocker quiet(colour);
+        colour->setColor(m_pen->settings().color);
+    });
+    page->addWidget(colour);
+    page->addSeparator();
+    page->addWidget(createCloseGapSpinBox(m_state, page));
 }
 
 } // namespace finbook::ui

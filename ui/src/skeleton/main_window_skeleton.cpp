@@ -10,11 +10,13 @@
 #include <finbook/ui/skeleton/tool_bone.h>
 #include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/window/main_window.h>
+#include <finbook/ui/window/tool_options_bar.h>
 
 #include <QActionGroup>
 #include <QDockWidget>
 #include <QMenu>
 #include <QStatusBar>
+#include <QToolBar>
 
 namespace finbook::ui {
 
@@ -97,13 +99,31 @@ void MainWindow::createSkeleton(QMenu *deformMenu)
         const model::StrokeGroup *g = m_state->currentGroup();
         const bool has = g && !g->rig.skeleton.empty();
         skinning->setEnabled(has);
-        for (const auto &[a, mode] : choices)
+        for (const auto &[a, mode] : choices) {
             a->setChecked(has && g->rig.skeleton.mode == mode);
+            a->setEnabled(has);
+        }
     };
     connect(m_state, &EditorState::currentGroupChanged, skinning, sync);
     connect(m_state, &EditorState::currentFrameChanged, skinning, sync);
     connect(m_doc, &model::Document::constraintsChanged, skinning, sync);
     sync();
+
+    // The Bone tool's options: the skinning, the refinement sliders and the actions on a rig.
+    QToolBar *page =
+        m_options->newPage(QStringLiteral("boneOptions"), {QStringLiteral("tool.bone")});
+    const QString shortNames[] = {tr("Rigid"), tr("Blend"), tr("Cut-out")};
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+        choices[i].first->setIconText(shortNames[i]);
+        page->addAction(choices[i].first);
+    }
+    page->addSeparator();
+    auto *sliders = new SkeletonPanel(m_state, page, true);
+    connect(sliders, &SkeletonPanel::messagePosted, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 6000); });
+    page->addWidget(sliders);
+    page->addSeparator();
+    page->addActions(m_deform->actions());
 }
 
 } // namespace finbook::ui

@@ -4,6 +4,7 @@
 
 #include <QEvent>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QSlider>
 
@@ -13,13 +14,17 @@ namespace {
 constexpr int kSteps = 100;
 }
 
-SkeletonPanel::SkeletonPanel(EditorState *state, QWidget *parent)
+SkeletonPanel::SkeletonPanel(EditorState *state, QWidget *parent, bool compact)
     : QWidget(parent)
     , m_state(state)
 {
-    auto *form = new QFormLayout(this);
+    QFormLayout *form = compact ? nullptr : new QFormLayout(this);
+    QHBoxLayout *row = compact ? new QHBoxLayout(this) : nullptr;
+    if (row)
+        row->setContentsMargins(4, 0, 4, 0);
     const QString names[] = {tr("Bone complexity"), tr("Merge junctions"), tr("Prune branches"),
                              tr("Collapse short bones")};
+    const QString shortNames[] = {tr("Bones"), tr("Merge"), tr("Prune"), tr("Collapse")};
     const QString tips[] = {
         tr("More bones follow the shape more closely"),
         tr("Junctions closer than this become one"),
@@ -30,10 +35,17 @@ SkeletonPanel::SkeletonPanel(EditorState *state, QWidget *parent)
                          "skeleton.collapse"};
     for (std::size_t i = 0; i < m_sliders.size(); ++i) {
         auto *s = new QSlider(Qt::Horizontal, this);
-        s->setObjectName(QString::fromLatin1(ids[i]));
+        s->setObjectName(QString::fromLatin1(ids[i]) +
+                         (compact ? QStringLiteral(".bar") : QString()));
         s->setRange(0, kSteps);
-        s->setToolTip(tips[i]);
-        form->addRow(names[i], s);
+        s->setToolTip(tr("%1: %2").arg(names[i], tips[i]));
+        if (form) {
+            form->addRow(names[i], s);
+        } else {
+            s->setFixedWidth(64);
+            row->addWidget(new QLabel(shortNames[i], this));
+            row->addWidget(s);
+        }
         connect(s, &QSlider::valueChanged, this, &SkeletonPanel::changed);
         // A drag is one step: the next drag, or a key press, starts another.
         connect(s, &QSlider::sliderReleased, this, [this] { ++m_serial; });
@@ -41,9 +53,14 @@ SkeletonPanel::SkeletonPanel(EditorState *state, QWidget *parent)
     }
     m_hint =
         new QLabel(tr("Pick the Bone tool (K) and click an object to give it a skeleton."), this);
-    m_hint->setWordWrap(true);
-    m_hint->installEventFilter(this);
-    form->addRow(m_hint);
+    if (form) {
+        m_hint->setWordWrap(true);
+        m_hint->installEventFilter(this);
+        form->addRow(m_hint);
+    } else {
+        m_hint->hide(); // the sliders' tooltips and the greyed sliders say it in the bar
+        m_compact = true;
+    }
     connect(state, &EditorState::currentGroupChanged, this, &SkeletonPanel::sync);
     connect(state, &EditorState::currentFrameChanged, this, &SkeletonPanel::sync);
     connect(state->document(), &model::Document::constraintsChanged, this, &SkeletonPanel::sync);
@@ -76,7 +93,7 @@ void SkeletonPanel::sync()
         if (!m_sliders[i]->isSliderDown())
             m_sliders[i]->setValue(int(std::lround(values[i] * kSteps)));
     }
-    m_hint->setVisible(!has);
+    m_hint->setVisible(!has && !m_compact);
 }
 
 void SkeletonPanel::changed()

@@ -44,6 +44,12 @@ void TimelineDelegate::paint(QPainter *painter, const QStyleOptionViewItem &opti
     if (!index.data(FrameListModel::InPlayRangeRole).toBool())
         painter->fillRect(area, QColor(0, 0, 0, 90)); // outside the play range
     paintHold(painter, area, index.data(FrameListModel::HoldRole).toInt());
+    // A grip at the picture's top left: the picture is what a drag moves (the numbers scrub).
+    painter->setPen(Qt::NoPen);
+    painter->setBrush(QColor(0, 0, 0, 110));
+    for (int row = 0; row < 3; ++row)
+        for (int column = 0; column < 2; ++column)
+            painter->drawRect(QRect(area.left() + 3 + 4 * column, area.top() + 3 + 4 * row, 2, 2));
     if (selected) {
         QPen pen(palette.color(QPalette::Highlight), current ? 2 : 1);
         pen.setJoinStyle(Qt::MiterJoin);

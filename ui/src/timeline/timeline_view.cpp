@@ -5,10 +5,12 @@
 #include <finbook/ui/window/editor_state.h>
 
 #include <QApplication>
+#include <QHelpEvent>
 #include <QMenu>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QScrollBar>
+#include <QToolTip>
 
 #include <algorithm>
 #include <cmath>
@@ -36,6 +38,8 @@ TimelineView::TimelineView(EditorState *state, model::FrameListModel *model,
     setFocusPolicy(Qt::StrongFocus);
     setItemDelegate(new TimelineDelegate(this));
     setModel(model);
+    // The pointer says what a drag does where it is: scrub on the numbers, reorder on a picture.
+    setMouseTracking(true);
     // Rows added under the frames (the sound row) and a short dock never squeeze the
     // thumbnails below a readable size: the dock grows instead.
     setMinimumHeight(kMinimumCellHeight + 2 * spacing() + 2 * frameWidth() +
@@ -193,7 +197,7 @@ void TimelineView::mousePressEvent(QMouseEvent *event)
         return;
     }
     m_state->setSelectedFrames({});
-    if (!at.isValid() || pos.y() < visualRect(at).top() + kBandHeight) {
+    if (onNumberBand(pos)) {
         m_mode = Mode::Scrub;
         m_state->setCurrentFrameIndex(rowAtX(pos.x()));
     } else {
@@ -246,10 +250,38 @@ void TimelineView::mouseDoubleClickEvent(QMouseEvent *event)
     mousePressEvent(event);
 }
 
+bool TimelineView::onNumberBand(const QPoint &pos) const
+{
+    const QModelIndex at = indexAt(pos);
+    return !at.isValid() || pos.y() < visualRect(at).top() + kBandHeight;
+}
+
+bool TimelineView::viewportEvent(QEvent *event)
+{
+    if (event->type() == QEvent::ToolTip) {
+        const QPoint pos = static_cast<QHelpEvent *>(event)->pos();
+        if (indexAt(pos).isValid()) {
+            QToolTip::showText(static_cast<QHelpEvent *>(event)->globalPos(),
+                               onNumberBand(pos)
+                                   ? tr("Drag along the frame numbers to scrub through the "
+                                        "animation")
+                                   : tr("Click to show this frame; drag the picture to move the "
+                                        "frame elsewhere; Ctrl- or Shift-click to pick several"),
+                               viewport());
+            return true;
+        }
+    }
+    return QListView::viewportEvent(event);
+}
+
 void TimelineView::mouseMoveEvent(QMouseEvent *event)
 {
     const QPoint pos = event->position().toPoint();
     if (!(event->buttons() & Qt::LeftButton) || m_mode == Mode::None) {
+        if (!(event->buttons() & Qt::LeftButton))
+            viewport()->setCursor(!indexAt(pos).isValid() ? Qt::ArrowCursor
+                                  : onNumberBand(pos)     ? Qt::SizeHorCursor
+                                                          : Qt::OpenHandCursor);
         event->ignore();
         return;
     }

@@ -9,6 +9,7 @@
 #include <finbook/ui/rig/deform_actions.h>
 #include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/window/main_window.h>
+#include <finbook/ui/window/tool_options_bar.h>
 
 #include <QDoubleSpinBox>
 #include <QMenu>
@@ -47,15 +48,17 @@ void MainWindow::createDeformation()
     menu->addMenu(m_deform->createRigidityMenu(menu));
     createSkeleton(menu);
 
-    auto *bar = new QToolBar(tr("Deform"), this);
-    bar->setObjectName(QStringLiteral("deformToolBar"));
-    bar->addWidget(m_deform->createDensitySpinBox(bar));
-    bar->addActions(m_deform->actions());
-    bar->addSeparator();
-    bar->addWidget(m_cage->createCornersSpinBox(bar));
-    bar->addActions(m_cage->actions());
-    addToolBar(Qt::TopToolBarArea, bar);
-    m_docksMenu->addAction(bar->toggleViewAction());
+    // The pins' and the cage's options, each with the actions on a rig (apply, remove, reset).
+    QToolBar *pins = m_options->newPage(QStringLiteral("pinOptions"), {QStringLiteral("tool.pin")});
+    pins->addWidget(m_deform->createDensitySpinBox(pins));
+    pins->addSeparator();
+    pins->addActions(m_deform->actions());
+    QToolBar *cagePage =
+        m_options->newPage(QStringLiteral("cageOptions"), {QStringLiteral("tool.cage")});
+    cagePage->addWidget(m_cage->createCornersSpinBox(cagePage));
+    cagePage->addActions(m_cage->actions());
+    cagePage->addSeparator();
+    cagePage->addActions(m_deform->actions());
 
     // Busy: an indeterminate bar while the worker prepares meshes and factorizations. The
     // window stays usable; pins can be dragged and the drawing catches up when it is ready.

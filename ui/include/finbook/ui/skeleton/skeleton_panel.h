@@ -19,7 +19,9 @@ class EditorState;
 class SkeletonPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit SkeletonPanel(EditorState *state, QWidget *parent = nullptr);
+    // `compact`: the sliders in one row under short names (the Bone tool's options bar),
+    // rather than a form with the hint (the Skeleton panel).
+    explicit SkeletonPanel(EditorState *state, QWidget *parent = nullptr, bool compact = false);
     // complexity, merge, prune, collapse
     QSlider *slider(int index) const { return m_sliders[std::size_t(index)]; }
 
@@ -37,6 +39,7 @@ private:
     std::array<QSlider *, 4> m_sliders{};
     QLabel *m_hint = nullptr;
     int m_serial = 0;
+    bool m_compact = false;
 };
 
 } // namespace finbook::ui

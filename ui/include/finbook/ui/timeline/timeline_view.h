@@ -44,6 +44,9 @@ public:
     QRect thumbnailRect(int row) const;
     // Rows whose cells intersect the viewport now.
     std::vector<int> visibleRows() const;
+    // Whether a press at `pos` (viewport) scrubs: on a frame's number band or beside the
+    // frames; on a thumbnail it picks the frame and a drag reorders.
+    bool onNumberBand(const QPoint &pos) const;
     // While reordering: the insertion slot (0..rowCount) the marker shows; -1 otherwise.
     int dropSlot() const { return m_mode == Mode::Reorder ? m_dropSlot : -1; }
     // Actions shown by the right-click menu (the frame actions, typically).
@@ -52,6 +55,7 @@ public:
 protected:
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
+    bool viewportEvent(QEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
     void mouseDoubleClickEvent(QMouseEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
