@@ -8,6 +8,7 @@
 
 #include <finbook/model/io/printable_text.h>
 #include <finbook/ui/window/main_window.h>
+#include <finbook/ui/window/welcome_dialog.h>
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -207,11 +208,17 @@ int main(int argc, char **argv)
     QObject::connect(&instance, &finbook::app::InstanceServer::openRequested, &windows,
                      &finbook::app::WindowList::open);
     // Once the window is up: what crashed Finbooks left is offered (or the test hooks run).
-    QTimer::singleShot(0, window.get(), [w = window.get(), scripted] {
-        if (scripted)
+    // The first start (with no file to open) shows the welcome page.
+    const bool welcome = !scripted && options.positional.isEmpty() &&
+                         finbook::ui::WelcomeDialog::shouldShowAtStart();
+    QTimer::singleShot(0, window.get(), [w = window.get(), scripted, welcome] {
+        if (scripted) {
             static_cast<finbook::app::ScriptedMainWindow *>(w)->runHooks();
-        else
-            w->offerRecovery();
+            return;
+        }
+        w->offerRecovery();
+        if (welcome && w->document()->undoStack()->count() == 0 && w->filePath().isEmpty())
+            w->showWelcome();
     });
     return app.exec();
 }

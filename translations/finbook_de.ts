@@ -401,8 +401,8 @@
         <translation>Zellen löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/document.cpp" line="20"/>
-        <location filename="../model/src/document.cpp" line="204"/>
+        <location filename="../model/src/document.cpp" line="21"/>
+        <location filename="../model/src/document.cpp" line="205"/>
         <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Layer 1</source>
         <translation>Ebene 1</translation>
@@ -426,7 +426,7 @@
         <translation>Unbekannter Befehl „%1“; siehe finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="39"/>
+        <location filename="../app/main.cpp" line="40"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -449,29 +449,29 @@
   finbook thumbnail FILE OUT.png SIZE   das erste Einzelbild als PNG von höchstens SIZE px schreiben</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="55"/>
+        <location filename="../app/main.cpp" line="56"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>LANGUAGE (z. B. de, en, fr, ja) statt der Systemsprache verwenden.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="61"/>
+        <location filename="../app/main.cpp" line="62"/>
         <source>FILE, or a command.</source>
         <translation>FILE oder ein Befehl.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="73"/>
+        <location filename="../app/main.cpp" line="74"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>siehe finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="80"/>
+        <location filename="../app/main.cpp" line="81"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="116"/>
+        <location filename="../app/main.cpp" line="117"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Unbekannter Befehl „%1“; %2.</translation>
     </message>
@@ -965,17 +965,17 @@
         <translation>Ein anderer Export schreibt gerade nach „%1“; warten Sie, bis er fertig ist, oder wählen Sie ein anderes Ziel.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="87"/>
+        <location filename="../model/src/export/exporter.cpp" line="113"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>„%1“ ist ein Ordner; geben Sie einen Dateinamen an, der auf .%2 endet.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="228"/>
+        <location filename="../model/src/export/exporter.cpp" line="254"/>
         <source>Choose where to export the animation to.</source>
         <translation>Wählen Sie, wohin die Animation exportiert werden soll.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/exporter.cpp" line="242"/>
+        <location filename="../model/src/export/exporter.cpp" line="268"/>
         <source>%n more sound clip(s) are left out too.</source>
         <translation>
             <numerusform>%n weiterer Soundclip wird ebenfalls weggelassen.</numerusform>
@@ -983,7 +983,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="249"/>
+        <location filename="../model/src/export/exporter.cpp" line="275"/>
         <source>Nothing was exported.</source>
         <translation>Es wurde nichts exportiert.</translation>
     </message>
@@ -1092,7 +1092,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_glb.cpp" line="53"/>
+        <location filename="../model/src/export/export_glb.cpp" line="45"/>
         <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
         <translation>Einzelbild %1 ergibt ein 3D-Modell, das größer ist, als eine glTF-Datei fassen kann (4 GiB); exportieren Sie es stattdessen als OBJ.</translation>
     </message>
@@ -1107,17 +1107,17 @@
         <translation>Die Referenz „%1“ wird weggelassen: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="606"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="613"/>
         <source>the zip container failed</source>
         <translation>der ZIP-Container ließ sich nicht schreiben</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="627"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
         <translation>Lottie kann das Referenzbild nicht aufnehmen; es wird weggelassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="631"/>
         <source>Lottie carries no sound; the soundtrack is left out.</source>
         <translation>Lottie enthält keinen Ton; die Tonspur wird weggelassen.</translation>
     </message>
@@ -1368,7 +1368,7 @@
         <translation>„%1“ kann nicht geöffnet werden: Für die %2 MB der Datei ist nicht genug Arbeitsspeicher vorhanden. Schließen Sie andere Programme oder Dokumente und versuchen Sie es erneut.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="258"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="259"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
@@ -1490,7 +1490,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
@@ -1505,130 +1505,135 @@
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
         <source>a sound clip comes before the frames</source>
         <translation>ein Tonclip steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
         <source>the layers come before the frames</source>
         <translation>die Ebenen stehen vor den Einzelbildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="226"/>
         <source>the layers are repeated</source>
         <translation>die Ebenen kommen doppelt vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>the camera comes before the frames</source>
         <translation>die Kamera steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
         <source>the camera is repeated</source>
         <translation>die Kamera kommt mehrfach vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <source>the palette</source>
+        <translation>die Palette</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="296"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="310"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="298"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="326"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="314"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="328"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="351"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="365"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="388"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1914,22 +1919,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="393"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="411"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="434"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="439"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="425"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="448"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -2071,12 +2076,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="160"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="161"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>Die automatische Sicherung konnte keine Wiederherstellungskopie schreiben: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="41"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="42"/>
         <source>there is not enough memory</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden</translation>
     </message>
@@ -2342,14 +2347,102 @@
     </message>
 </context>
 <context>
+    <name>Palette</name>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="47"/>
+        <source>Finbook</source>
+        <translation>Finbook</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="48"/>
+        <source>Black</source>
+        <translation>Schwarz</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="48"/>
+        <source>Grey</source>
+        <translation>Grau</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="49"/>
+        <source>White</source>
+        <translation>Weiß</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="49"/>
+        <source>Purple</source>
+        <translation>Violett</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="50"/>
+        <source>Blue</source>
+        <translation>Blau</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="50"/>
+        <source>Red</source>
+        <translation>Rot</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="51"/>
+        <source>Orange</source>
+        <translation>Orange</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="51"/>
+        <source>Yellow</source>
+        <translation>Gelb</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="52"/>
+        <source>Green</source>
+        <translation>Grün</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="52"/>
+        <source>Brown</source>
+        <translation>Braun</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="75"/>
+        <source>it is not a GIMP palette (its first line is not &quot;GIMP Palette&quot;)</source>
+        <translation>es ist keine GIMP-Palette (die erste Zeile lautet nicht &quot;GIMP Palette&quot;)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="97"/>
+        <source>line %1: channels &quot;%2&quot; are not RGB or RGBA</source>
+        <translation>Zeile %1: die Kanäle &quot;%2&quot; sind weder RGB noch RGBA</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="117"/>
+        <source>line %1 is not a colour (%2 numbers from 0 to 255, then a name)</source>
+        <translation>Zeile %1 ist keine Farbe (%2 Zahlen von 0 bis 255, dann ein Name)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="124"/>
+        <source>it holds more than %1 colours</source>
+        <translation>sie enthält mehr als %1 Farben</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="176"/>
+        <source>the palette is damaged</source>
+        <translation>die Palette ist beschädigt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="182"/>
+        <source>the palette claims %1 colours</source>
+        <translation>die Palette gibt %1 Farben an</translation>
+    </message>
+</context>
+<context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="25"/>
+        <location filename="../app/main.cpp" line="26"/>
         <source>Displays help on commandline options.</source>
         <translation>Zeigt Hilfe zu den Kommandozeilenoptionen an.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="26"/>
+        <location filename="../app/main.cpp" line="27"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Zeigt Hilfe einschließlich Qt-spezifischer Optionen an.</translation>
     </message>
@@ -2922,44 +3015,49 @@
         <translation>Pinsel</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="30"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
         <source>Width:</source>
         <translation>Breite:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="37"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
         <source>Smoothing:</source>
         <translation>Glättung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>Wie stark ein Strich beim Absetzen des Stifts geglättet wird</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="47"/>
         <source>Stabiliser:</source>
         <translation>Stabilisator:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="50"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="46"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="51"/>
         <source>Steadies the line while you draw: the ink follows the pen on a string this long (4 screen pixels a step), so a shaky hand draws a smooth line. Off: the ink is under the pen.</source>
         <translation>Beruhigt die Linie beim Zeichnen: Die Tinte folgt dem Stift an einer Schnur dieser Länge (4 Bildschirmpixel je Stufe), sodass eine zittrige Hand eine glatte Linie zeichnet. Aus: Die Tinte liegt unter dem Stift.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="98"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="104"/>
         <source>Pen colour %1</source>
         <translation>Stiftfarbe %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="105"/>
+        <source>Pen colour %1 (%2)</source>
+        <translation>Stiftfarbe %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -3089,12 +3187,12 @@
 <context>
     <name>finbook::ui::CanvasWidget</name>
     <message>
-        <location filename="../ui/src/canvas/canvas_widget.cpp" line="238"/>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="311"/>
         <source>The layer &quot;%1&quot; is locked: unlock it (Layer &gt; Lock Layer, or its padlock in the timeline) to draw on it.</source>
         <translation>Die Ebene „%1“ ist gesperrt: Entsperren Sie sie (Ebene &gt; Ebene sperren oder ihr Schloss in der Zeitleiste), um darauf zu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/canvas/canvas_widget.cpp" line="241"/>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="314"/>
         <source>The layer &quot;%1&quot; is hidden: show it (Layer &gt; Show Layer, or its eye in the timeline) to draw on it.</source>
         <translation>Die Ebene „%1“ ist ausgeblendet: Blenden Sie sie ein (Ebene &gt; Ebene anzeigen oder ihr Auge in der Zeitleiste), um darauf zu zeichnen.</translation>
     </message>
@@ -3625,17 +3723,17 @@
         <translation>die Farbe einer Linie oder Füllung für den Stift aufnehmen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="76"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="63"/>
         <source>Nothing here to take a colour from: click a line or a fill.</source>
         <translation>Hier gibt es keine Farbe aufzunehmen: Klicken Sie auf eine Linie oder eine Füllung.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="83"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="70"/>
         <source>The pen takes the line&apos;s colour %1.</source>
         <translation>Der Stift übernimmt die Farbe %1 der Linie.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="84"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="71"/>
         <source>The pen takes the fill&apos;s colour %1.</source>
         <translation>Der Stift übernimmt die Farbe %1 der Füllung.</translation>
     </message>
@@ -3993,99 +4091,114 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window.cpp" line="156"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window.cpp" line="159"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="208"/>
+        <location filename="../ui/src/window/main_window.cpp" line="209"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="210"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="212"/>
+        <location filename="../ui/src/window/main_window.cpp" line="213"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="235"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <source>Palette</source>
+        <translation>Palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="268"/>
+        <source>Rotation </source>
+        <translation>Drehung </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="272"/>
+        <source>The view&apos;s rotation: the drawing is not changed. Shift+Space-drag on the canvas turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it.</source>
+        <translation>Die Drehung der Ansicht: die Zeichnung bleibt unverändert. Umschalt+Leertaste-Ziehen auf der Leinwand dreht sie frei; 4 und 6 drehen um 15°, 5 setzt zurück, Umschalt+M spiegelt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="298"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>Die Referenz „%1“ kann nicht angezeigt werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window.cpp" line="307"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="286"/>
+        <location filename="../ui/src/window/main_window.cpp" line="318"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="287"/>
+        <location filename="../ui/src/window/main_window.cpp" line="319"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="292"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="278"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window.cpp" line="325"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="27"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="29"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook-Animationen (*.finbook);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="38"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="40"/>
         <source>Object</source>
         <translation>Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="73"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
         <source>Cannot Open File</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="165"/>
         <source>Cannot Save File</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="131"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="171"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="137"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Lesbare Teile von %1 geöffnet (%n Problem behoben); speichern Sie die Animation unter einem neuen Namen.</numerusform>
@@ -4093,324 +4206,365 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="181"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="98"/>
+        <source>Cannot Open the Example</source>
+        <translation>Das Beispiel lässt sich nicht öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="103"/>
+        <source>The example walk cycle: change it and save it as your own.</source>
+        <translation>Der Beispiel-Laufzyklus: ändere ihn und speichere ihn als deinen eigenen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="221"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>Cannot Import Mesh</source>
         <translation>Netz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="266"/>
         <source>Damaged File</source>
         <translation>Beschädigte Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="267"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>„Trotzdem öffnen“ zeigt den noch lesbaren Inhalt als neue, ungespeicherte Animation an; die beschädigte Datei wird nicht verändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="270"/>
         <source>Open Anyway</source>
         <translation>Trotzdem öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="280"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="281"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>„%1“ hat ungespeicherte Änderungen. Vorher speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="287"/>
         <source>Open Animation</source>
         <translation>Animation öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="293"/>
         <source>Save Animation</source>
         <translation>Animation speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
         <source>untitled.finbook</source>
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="56"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <source>Open Exa&amp;mple</source>
+        <translation>Beis&amp;piel öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <source>&amp;Welcome...</source>
+        <translation>&amp;Willkommen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="83"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="85"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>Import Re&amp;ference...</source>
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="131"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="166"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="187"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="237"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="234"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="250"/>
+        <source>Rotate View &amp;Left</source>
+        <translation>Ansicht nach &amp;links drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <source>Rotate View &amp;Right</source>
+        <translation>Ansicht nach &amp;rechts drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <source>R&amp;eset View Rotation</source>
+        <translation>Dre&amp;hung der Ansicht zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
+        <source>Mirror Vie&amp;w</source>
+        <translation>Ansicht sp&amp;iegeln</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="285"/>
         <source>&amp;Camera View</source>
         <translation>Kamera&amp;ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Andere Ebenen ab&amp;dunkeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="292"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
         <source>&amp;Layer</source>
         <translation>Ebe&amp;ne</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="335"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="338"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="346"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="348"/>
+        <source>Finbook &amp;Manual</source>
+        <translation>Finbook-&amp;Handbuch</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="353"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="355"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="344"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="368"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="409"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="410"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="35"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="36"/>
         <source>&amp;Deform</source>
         <translation>&amp;Verformen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="50"/>
-        <source>Deform</source>
-        <translation>Verformen</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="66"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="69"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
@@ -4436,54 +4590,69 @@
         <translation>Form</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="28"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="30"/>
         <source>Reset &amp;Bone Pose</source>
         <translation>K&amp;nochenpose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="29"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="31"/>
         <source>Turn the bone selected with the Bone tool back to rest; the bones below it keep their bends</source>
         <translation>Den mit dem Knochenwerkzeug gewählten Knochen in die Ruhelage zurückdrehen; die Knochen darunter behalten ihre Beugung</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="35"/>
         <source>&amp;Edit Joints</source>
         <translation>&amp;Gelenke bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="35"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="37"/>
         <source>With the Bone tool, move, insert and delete the joints of an unposed skeleton instead of posing it</source>
         <translation>Mit dem Knochenwerkzeug die Gelenke eines unverformten Skeletts verschieben, einfügen und löschen, statt es zu posieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="56"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="58"/>
         <source>Show S&amp;keleton</source>
         <translation>&amp;Skelett anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="62"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="64"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="70"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="72"/>
         <source>S&amp;kinning</source>
         <translation>S&amp;kinning</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="77"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="79"/>
         <source>&amp;Rigid (Bones Pin the Mesh)</source>
         <translation>&amp;Starr (Knochen fixieren das Netz)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="79"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="81"/>
         <source>&amp;Linear Blend</source>
         <translation>&amp;Lineare Überblendung</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="81"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="83"/>
         <source>&amp;Cut-out (Limbs Turn over the Body)</source>
         <translation>&amp;Ausschneidefigur (Glieder drehen sich über dem Körper)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="115"/>
+        <source>Rigid</source>
+        <translation>Starr</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="115"/>
+        <source>Blend</source>
+        <translation>Mischen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="115"/>
+        <source>Cut-out</source>
+        <translation>Ausschnitt</translation>
     </message>
     <message>
         <location filename="../ui/src/recovery/main_window_recovery.cpp" line="63"/>
@@ -4507,44 +4676,148 @@
         <translation>Lücken schließen: automatisch (%1 px)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="41"/>
         <source>Close gaps up to </source>
         <translation>Lücken schließen bis </translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="42"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="41"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="43"/>
         <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
         <translation>Öffnungen im Umriss bis zu dieser Breite ergeben noch einen Bereich, den das Füllwerkzeug füllen kann (0 = nur geschlossene Umrisse)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="88"/>
         <source>Fill All Enclosed Re&amp;gions</source>
         <translation>Alle geschlossenen Bereiche &amp;füllen</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="88"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="90"/>
         <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
         <translation>Jeden geschlossenen Bereich des aktuellen Objekts ohne Füllung in der Stiftfarbe füllen</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="97"/>
         <source>The current object has no unfilled closed region</source>
         <translation>Das aktuelle Objekt hat keinen ungefüllten geschlossenen Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="104"/>
-        <source>Fill</source>
-        <translation>Füllen</translation>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="109"/>
+        <source>The colour the Fill tool fills with (the pen&apos;s)</source>
+        <translation>Die Farbe, mit der das Füllwerkzeug füllt (die des Stifts)</translation>
     </message>
     <message>
         <location filename="../ui/src/shade/main_window_shade.cpp" line="33"/>
         <source>Shading</source>
         <translation>Schattierung</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ManualBrowser</name>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="30"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
+        <source>Contents</source>
+        <translation>Inhalt</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="31"/>
+        <source>Getting Started: Draw, Bend, Play</source>
+        <translation>Erste Schritte: zeichnen, biegen, abspielen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="32"/>
+        <source>Drawing and the View</source>
+        <translation>Zeichnen und die Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="33"/>
+        <source>Fills and Shading</source>
+        <translation>Füllungen und Schattierung</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="34"/>
+        <source>Pins</source>
+        <translation>Pins</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="35"/>
+        <source>Cages</source>
+        <translation>Käfige</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="36"/>
+        <source>Bones and Skeletons</source>
+        <translation>Knochen und Skelette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="37"/>
+        <source>In-betweens</source>
+        <translation>Zwischenbilder</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="38"/>
+        <source>Timeline, Layers and Sound</source>
+        <translation>Zeitleiste, Ebenen und Ton</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="39"/>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="40"/>
+        <source>Reference Pictures and Video</source>
+        <translation>Referenzbilder und -videos</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
+        <source>Exporting</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
+        <source>Saving, Autosave and Recovery</source>
+        <translation>Speichern, automatisches Speichern und Wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
+        <source>The Command Line</source>
+        <translation>Die Befehlszeile</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
+        <source>Installing</source>
+        <translation>Installieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="82"/>
+        <source>Finbook Manual</source>
+        <translation>Finbook-Handbuch</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="95"/>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
+        <source>Forward</source>
+        <translation>Vor</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="102"/>
+        <source>Search the manual</source>
+        <translation>Im Handbuch suchen</translation>
     </message>
 </context>
 <context>
@@ -4679,6 +4952,212 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::PalettePanel</name>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="43"/>
+        <source>&quot;%1&quot; is not a palette Finbook can read: %2.</source>
+        <translation>&quot;%1&quot; ist keine Palette, die Finbook lesen kann: %2.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="71"/>
+        <source>Swatch name</source>
+        <translation>Name des Farbfelds</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="72"/>
+        <source>The chosen swatch&apos;s name: type and press Return to rename it</source>
+        <translation>Der Name des gewählten Farbfelds: eingeben und Eingabe drücken, um es umzubenennen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="87"/>
+        <source>Add the pen&apos;s colour to the palette</source>
+        <translation>Die Stiftfarbe zur Palette hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="88"/>
+        <source>Set</source>
+        <translation>Setzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="89"/>
+        <source>Give the chosen swatch the pen&apos;s colour</source>
+        <translation>Dem gewählten Farbfeld die Stiftfarbe geben</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="91"/>
+        <source>Move the chosen swatch one place earlier</source>
+        <translation>Das gewählte Farbfeld eine Stelle nach vorn</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="93"/>
+        <source>Move the chosen swatch one place later</source>
+        <translation>Das gewählte Farbfeld eine Stelle nach hinten</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="95"/>
+        <source>Delete the chosen swatch from the palette</source>
+        <translation>Das gewählte Farbfeld aus der Palette löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="97"/>
+        <source>Import, export, save and load palettes</source>
+        <translation>Paletten importieren, exportieren, speichern und laden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="100"/>
+        <source>&amp;Import GIMP Palette...</source>
+        <translation>GIMP-Palette &amp;importieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="101"/>
+        <source>&amp;Export GIMP Palette...</source>
+        <translation>GIMP-Palette &amp;exportieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="103"/>
+        <source>&amp;Save as User Palette...</source>
+        <translation>Als Benutzerpalette &amp;speichern...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="104"/>
+        <source>&amp;Load User Palette</source>
+        <translation>Benutzerpalette &amp;laden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="107"/>
+        <source>&amp;Reset to Finbook&apos;s Colours</source>
+        <translation>Auf Finbooks Farben &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="108"/>
+        <source>Reset Palette</source>
+        <translation>Palette zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="168"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="190"/>
+        <source>A palette holds at most %1 colours.</source>
+        <translation>Eine Palette fasst höchstens %1 Farben.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="195"/>
+        <source>Add Swatch</source>
+        <translation>Farbfeld hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="206"/>
+        <source>Recolour Swatch</source>
+        <translation>Farbfeld umfärben</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="216"/>
+        <source>Delete Swatch</source>
+        <translation>Farbfeld löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="227"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="264"/>
+        <source>Move Swatch</source>
+        <translation>Farbfeld verschieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="238"/>
+        <source>Rename Swatch</source>
+        <translation>Farbfeld umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="314"/>
+        <source>it is far larger than a palette</source>
+        <translation>sie ist weit größer als eine Palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="323"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
+        <source>Import Palette</source>
+        <translation>Palette importieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="330"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
+        <source>The palette could not be saved as &quot;%1&quot;: %2</source>
+        <translation>Die Palette konnte nicht als &quot;%1&quot; gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="344"/>
+        <source>A user palette needs a name.</source>
+        <translation>Eine Benutzerpalette braucht einen Namen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="346"/>
+        <source>The folder for user palettes (%1) could not be made.</source>
+        <translation>Der Ordner für Benutzerpaletten (%1) konnte nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="367"/>
+        <source>(no user palettes yet)</source>
+        <translation>(noch keine Benutzerpaletten)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="374"/>
+        <source>Load Palette</source>
+        <translation>Palette laden</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
+        <source>Import GIMP Palette</source>
+        <translation>GIMP-Palette importieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="381"/>
+        <source>GIMP palettes (*.gpl);;All files (*)</source>
+        <translation>GIMP-Paletten (*.gpl);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="391"/>
+        <source>Export GIMP Palette</source>
+        <translation>GIMP-Palette exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="393"/>
+        <source>GIMP palettes (*.gpl)</source>
+        <translation>GIMP-Paletten (*.gpl)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="400"/>
+        <source>Export Palette</source>
+        <translation>Palette exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="402"/>
+        <source>Palette saved as &quot;%1&quot;.</source>
+        <translation>Palette als &quot;%1&quot; gespeichert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <source>Save as User Palette</source>
+        <translation>Als Benutzerpalette speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <source>Name of the palette:</source>
+        <translation>Name der Palette:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <source>Save Palette</source>
+        <translation>Palette speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="417"/>
+        <source>Saved as the user palette &quot;%1&quot;; Palette &gt; Load User Palette brings it into any drawing.</source>
+        <translation>Als Benutzerpalette &quot;%1&quot; gespeichert; Palette &gt; Benutzerpalette laden bringt sie in jede Zeichnung.</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::PenTool</name>
     <message>
         <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="37"/>
@@ -4691,7 +5170,7 @@
         <translation>Linien zeichnen; der Stiftdruck bestimmt ihre Breite</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_pen.cpp" line="118"/>
+        <location filename="../ui/src/tools/tool_pen.cpp" line="117"/>
         <source>Draw Stroke</source>
         <translation>Strich zeichnen</translation>
     </message>
@@ -5021,22 +5500,22 @@
         <translation>Linien mit dem Lasso wählen, dann verschieben, drehen oder skalieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="314"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="340"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>So weit lassen sich die Striche nicht umformen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="323"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="347"/>
         <source>Move Strokes</source>
         <translation>Striche verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="324"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="348"/>
         <source>Rotate Strokes</source>
         <translation>Striche drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="325"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="349"/>
         <source>Scale Strokes</source>
         <translation>Striche skalieren</translation>
     </message>
@@ -5188,47 +5667,72 @@
 <context>
     <name>finbook::ui::SkeletonPanel</name>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Bone complexity</source>
         <translation>Knochenanzahl</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Merge junctions</source>
         <translation>Verzweigungen zusammenführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Prune branches</source>
         <translation>Äste beschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="22"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
         <source>Collapse short bones</source>
         <translation>Kurze Knochen zusammenfassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Bones</source>
+        <translation>Knochen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Merge</source>
+        <translation>Vereinen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Prune</source>
+        <translation>Stutzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Collapse</source>
+        <translation>Zusammenfassen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="29"/>
         <source>More bones follow the shape more closely</source>
         <translation>Mehr Knochen folgen der Form genauer</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="30"/>
         <source>Junctions closer than this become one</source>
         <translation>Verzweigungen, die näher beieinander liegen, werden zu einer</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="31"/>
         <source>Remove side branches shorter than this</source>
         <translation>Seitenäste entfernen, die kürzer sind</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="32"/>
         <source>Collapse inner bones shorter than this into one joint</source>
         <translation>Innere Knochen, die kürzer sind, zu einem Gelenk zusammenfassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="43"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="41"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="55"/>
         <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
         <translation>Wählen Sie das Werkzeug Knochen (K) und klicken Sie auf ein Objekt, um ihm ein Skelett zu geben.</translation>
     </message>
@@ -5378,6 +5882,19 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::TimelineView</name>
+    <message>
+        <location filename="../ui/src/timeline/timeline_view.cpp" line="266"/>
+        <source>Drag along the frame numbers to scrub through the animation</source>
+        <translation>Entlang der Bildnummern ziehen, um durch die Animation zu fahren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline/timeline_view.cpp" line="268"/>
+        <source>Click to show this frame; drag the picture to move the frame elsewhere; Ctrl- or Shift-click to pick several</source>
+        <translation>Klicken zeigt dieses Bild; das Bild ziehen verschiebt es an eine andere Stelle; Ctrl- oder Umschalt-Klick wählt mehrere</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
         <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
@@ -5413,6 +5930,87 @@
         <location filename="../ui/src/timeline/timeline_widget.cpp" line="142"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Einzelbild %1 von %2 · %3 fps</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ToolOptionsBar</name>
+    <message>
+        <location filename="../ui/src/window/tool_options_bar.cpp" line="11"/>
+        <source>Tool Options</source>
+        <translation>Werkzeugoptionen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/tool_options_bar.cpp" line="61"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::WelcomeDialog</name>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="37"/>
+        <source>Show this page whenever Finbook starts</source>
+        <translation>Diese Seite bei jedem Start von Finbook zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="40"/>
+        <source>Welcome to Finbook</source>
+        <translation>Willkommen bei Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="50"/>
+        <source>&amp;New Animation</source>
+        <translation>&amp;Neue Animation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="50"/>
+        <source>Start an empty animation</source>
+        <translation>Eine leere Animation beginnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="51"/>
+        <source>&amp;Open...</source>
+        <translation>Ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="51"/>
+        <source>Open a .finbook file</source>
+        <translation>Eine .finbook-Datei öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="52"/>
+        <source>Open the &amp;Example</source>
+        <translation>Das &amp;Beispiel öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="53"/>
+        <source>A short walk cycle drawn with Finbook, to look at and change</source>
+        <translation>Ein kurzer Laufzyklus, mit Finbook gezeichnet, zum Anschauen und Ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="54"/>
+        <source>Read the &amp;Manual</source>
+        <translation>Das &amp;Handbuch lesen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="55"/>
+        <source>The Finbook Manual (F1 opens it at the tool in hand)</source>
+        <translation>Das Finbook-Handbuch (F1 öffnet es beim Werkzeug in der Hand)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="63"/>
+        <source>(no recent files yet)</source>
+        <translation>(noch keine zuletzt geöffneten Dateien)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="70"/>
+        <source>&lt;h2&gt;Draw — bend — play&lt;/h2&gt;&lt;p&gt;&lt;b&gt;1. Draw.&lt;/b&gt; Take the pen (&lt;b&gt;B&lt;/b&gt;) and draw a character; a tablet&apos;s pressure shapes the line. Close its outline loosely: small gaps close by themselves. Pick a colour in the Palette and click inside with the fill (&lt;b&gt;F&lt;/b&gt;).&lt;/p&gt;&lt;p&gt;&lt;b&gt;2. Bend.&lt;/b&gt; Instead of drawing the next frame again, duplicate the frame (&lt;b&gt;Ctrl+D&lt;/b&gt;) and bend the copy: click the drawing with the bone tool (&lt;b&gt;K&lt;/b&gt;) and drag a bone, or put pins on it (&lt;b&gt;P&lt;/b&gt;) and drag one; the rest follows as if drawn on rubber. The bent drawing is lines again: keep drawing on it.&lt;/p&gt;&lt;p&gt;&lt;b&gt;3. Play.&lt;/b&gt; Press &lt;b&gt;Return&lt;/b&gt; to play; Frame → In-betweens fills the frames between two poses. Onion skin (&lt;b&gt;O&lt;/b&gt;) shows the neighbours faintly. Save with &lt;b&gt;Ctrl+S&lt;/b&gt;, export a GIF, a video or a Lottie animation with File → Export.&lt;/p&gt;&lt;p&gt;&lt;a href=&quot;getting-started.md&quot;&gt;Read “Getting Started” in the manual&lt;/a&gt;, or press &lt;b&gt;F1&lt;/b&gt; at any time for the page of the tool in hand.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;Zeichnen — biegen — abspielen&lt;/h2&gt;&lt;p&gt;&lt;b&gt;1. Zeichnen.&lt;/b&gt; Nimm den Stift (&lt;b&gt;B&lt;/b&gt;) und zeichne eine Figur; der Druck eines Grafiktabletts formt die Linie. Schließe den Umriss ruhig locker: kleine Lücken schließen sich von selbst. Wähle eine Farbe in der Palette und klicke mit der Füllung (&lt;b&gt;F&lt;/b&gt;) hinein.&lt;/p&gt;&lt;p&gt;&lt;b&gt;2. Biegen.&lt;/b&gt; Statt das nächste Bild neu zu zeichnen, dupliziere das Bild (&lt;b&gt;Ctrl+D&lt;/b&gt;) und biege die Kopie: klicke die Zeichnung mit dem Knochenwerkzeug (&lt;b&gt;K&lt;/b&gt;) an und ziehe einen Knochen, oder setze Pins (&lt;b&gt;P&lt;/b&gt;) und ziehe einen; der Rest folgt wie auf Gummi gezeichnet. Die gebogene Zeichnung besteht wieder aus Linien: zeichne einfach weiter.&lt;/p&gt;&lt;p&gt;&lt;b&gt;3. Abspielen.&lt;/b&gt; &lt;b&gt;Return&lt;/b&gt; spielt ab; Bild → Zwischenbilder füllt die Bilder zwischen zwei Posen. Die Zwiebelhaut (&lt;b&gt;O&lt;/b&gt;) zeigt die Nachbarn blass. Speichere mit &lt;b&gt;Ctrl+S&lt;/b&gt;, exportiere ein GIF, ein Video oder eine Lottie-Animation mit Datei → Exportieren.&lt;/p&gt;&lt;p&gt;&lt;a href=&quot;getting-started.md&quot;&gt;„Getting Started“ im Handbuch lesen&lt;/a&gt;, oder jederzeit &lt;b&gt;F1&lt;/b&gt; für die Seite zum Werkzeug in der Hand.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="91"/>
+        <source>Recent files:</source>
+        <translation>Zuletzt geöffnet:</translation>
     </message>
 </context>
 </TS>

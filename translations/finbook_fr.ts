@@ -401,8 +401,8 @@
         <translation>Supprimer les cellulos</translation>
     </message>
     <message>
-        <location filename="../model/src/document.cpp" line="20"/>
-        <location filename="../model/src/document.cpp" line="204"/>
+        <location filename="../model/src/document.cpp" line="21"/>
+        <location filename="../model/src/document.cpp" line="205"/>
         <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Layer 1</source>
         <translation>Calque 1</translation>
@@ -426,7 +426,7 @@
         <translation>Commande inconnue « %1 » ; voir finbook --help.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="39"/>
+        <location filename="../app/main.cpp" line="40"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -449,29 +449,29 @@
   finbook thumbnail FILE OUT.png SIZE   écrire la première image en PNG d&apos;au plus SIZE px</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="55"/>
+        <location filename="../app/main.cpp" line="56"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>Utiliser la langue LANGUAGE (par ex. de, en, fr, ja) au lieu de celle du système.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="61"/>
+        <location filename="../app/main.cpp" line="62"/>
         <source>FILE, or a command.</source>
         <translation>FILE, ou une commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="73"/>
+        <location filename="../app/main.cpp" line="74"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>voir finbook --help</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="80"/>
+        <location filename="../app/main.cpp" line="81"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1 ; %2.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="116"/>
+        <location filename="../app/main.cpp" line="117"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>Commande inconnue « %1 » ; %2.</translation>
     </message>
@@ -965,17 +965,17 @@
         <translation>Un autre export écrit dans « %1 » ; attendez qu’il soit terminé, ou choisissez une autre destination.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="87"/>
+        <location filename="../model/src/export/exporter.cpp" line="113"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>«&#xa0;%1&#xa0;» est un dossier&#xa0;; indiquez un nom de fichier se terminant par .%2.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="228"/>
+        <location filename="../model/src/export/exporter.cpp" line="254"/>
         <source>Choose where to export the animation to.</source>
         <translation>Choisissez où exporter l&apos;animation.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/exporter.cpp" line="242"/>
+        <location filename="../model/src/export/exporter.cpp" line="268"/>
         <source>%n more sound clip(s) are left out too.</source>
         <translation>
             <numerusform>%n autre clip sonore est aussi omis.</numerusform>
@@ -983,7 +983,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="249"/>
+        <location filename="../model/src/export/exporter.cpp" line="275"/>
         <source>Nothing was exported.</source>
         <translation>Rien n’a été exporté.</translation>
     </message>
@@ -1092,7 +1092,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_glb.cpp" line="53"/>
+        <location filename="../model/src/export/export_glb.cpp" line="45"/>
         <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
         <translation>L&apos;image %1 donne un modèle 3D plus grand que ce qu&apos;un fichier glTF peut contenir (4 Gio) ; exportez-la plutôt en OBJ.</translation>
     </message>
@@ -1107,17 +1107,17 @@
         <translation>La référence « %1 » est omise : %2</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="606"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="613"/>
         <source>the zip container failed</source>
         <translation>le conteneur zip n&apos;a pas pu être écrit</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="627"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
         <translation>Lottie ne peut pas contenir l&apos;image de référence ; elle est laissée de côté.</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="631"/>
         <source>Lottie carries no sound; the soundtrack is left out.</source>
         <translation>Lottie ne contient pas de son ; la bande son est laissée de côté.</translation>
     </message>
@@ -1368,7 +1368,7 @@
         <translation>Impossible d&apos;ouvrir «&#xa0;%1&#xa0;»&#xa0;: la mémoire est insuffisante pour ses %2&#xa0;Mo. Fermez d&apos;autres programmes ou documents et réessayez.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="258"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="259"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
@@ -1490,7 +1490,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
@@ -1505,130 +1505,135 @@
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
         <source>a sound clip comes before the frames</source>
         <translation>un extrait sonore précède les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
         <source>the layers come before the frames</source>
         <translation>les calques viennent avant les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="226"/>
         <source>the layers are repeated</source>
         <translation>les calques sont répétés</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>the camera comes before the frames</source>
         <translation>la caméra vient avant les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
         <source>the camera is repeated</source>
         <translation>la caméra est répétée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <source>the palette</source>
+        <translation>la palette</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="296"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="310"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="298"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="326"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="314"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="328"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="351"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="365"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="388"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1914,22 +1919,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="393"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="411"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="434"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="439"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="425"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="448"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -2071,12 +2076,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="160"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="161"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>L&apos;enregistrement automatique n&apos;a pas pu écrire de copie de récupération&#xa0;: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="41"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="42"/>
         <source>there is not enough memory</source>
         <translation>la mémoire est insuffisante</translation>
     </message>
@@ -2342,14 +2347,102 @@
     </message>
 </context>
 <context>
+    <name>Palette</name>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="47"/>
+        <source>Finbook</source>
+        <translation>Finbook</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="48"/>
+        <source>Black</source>
+        <translation>Noir</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="48"/>
+        <source>Grey</source>
+        <translation>Gris</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="49"/>
+        <source>White</source>
+        <translation>Blanc</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="49"/>
+        <source>Purple</source>
+        <translation>Violet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="50"/>
+        <source>Blue</source>
+        <translation>Bleu</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="50"/>
+        <source>Red</source>
+        <translation>Rouge</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="51"/>
+        <source>Orange</source>
+        <translation>Orange</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="51"/>
+        <source>Yellow</source>
+        <translation>Jaune</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="52"/>
+        <source>Green</source>
+        <translation>Vert</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="52"/>
+        <source>Brown</source>
+        <translation>Marron</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="75"/>
+        <source>it is not a GIMP palette (its first line is not &quot;GIMP Palette&quot;)</source>
+        <translation>ce n&apos;est pas une palette GIMP (sa première ligne n&apos;est pas « GIMP Palette »)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="97"/>
+        <source>line %1: channels &quot;%2&quot; are not RGB or RGBA</source>
+        <translation>ligne %1 : les canaux « %2 » ne sont ni RGB ni RGBA</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="117"/>
+        <source>line %1 is not a colour (%2 numbers from 0 to 255, then a name)</source>
+        <translation>la ligne %1 n&apos;est pas une couleur (%2 nombres de 0 à 255, puis un nom)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="124"/>
+        <source>it holds more than %1 colours</source>
+        <translation>elle contient plus de %1 couleurs</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="176"/>
+        <source>the palette is damaged</source>
+        <translation>la palette est endommagée</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="182"/>
+        <source>the palette claims %1 colours</source>
+        <translation>la palette annonce %1 couleurs</translation>
+    </message>
+</context>
+<context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="25"/>
+        <location filename="../app/main.cpp" line="26"/>
         <source>Displays help on commandline options.</source>
         <translation>Afficher l&apos;aide sur les options de la ligne de commande.</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="26"/>
+        <location filename="../app/main.cpp" line="27"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Afficher l&apos;aide, y compris les options propres à Qt.</translation>
     </message>
@@ -2922,44 +3015,49 @@
         <translation>Pinceau</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="30"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
         <source>Width:</source>
         <translation>Épaisseur&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="37"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
         <source>Smoothing:</source>
         <translation>Lissage&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>Force du lissage appliqué au trait quand le stylet se lève</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="47"/>
         <source>Stabiliser:</source>
         <translation>Stabilisateur :</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="50"/>
         <source>Off</source>
         <translation>Désactivé</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="46"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="51"/>
         <source>Steadies the line while you draw: the ink follows the pen on a string this long (4 screen pixels a step), so a shaky hand draws a smooth line. Off: the ink is under the pen.</source>
         <translation>Stabilise le trait pendant le dessin : l&apos;encre suit le stylet au bout d&apos;un fil de cette longueur (4 pixels d&apos;écran par cran), si bien qu&apos;une main tremblante trace une ligne lisse. Désactivé : l&apos;encre est sous le stylet.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="98"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="104"/>
         <source>Pen colour %1</source>
         <translation>Couleur du stylo&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="105"/>
+        <source>Pen colour %1 (%2)</source>
+        <translation>Couleur du stylo %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -3089,12 +3187,12 @@
 <context>
     <name>finbook::ui::CanvasWidget</name>
     <message>
-        <location filename="../ui/src/canvas/canvas_widget.cpp" line="238"/>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="311"/>
         <source>The layer &quot;%1&quot; is locked: unlock it (Layer &gt; Lock Layer, or its padlock in the timeline) to draw on it.</source>
         <translation>Le calque « %1 » est verrouillé : déverrouillez-le (Calque &gt; Verrouiller le calque, ou son cadenas dans la timeline) pour dessiner dessus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/canvas/canvas_widget.cpp" line="241"/>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="314"/>
         <source>The layer &quot;%1&quot; is hidden: show it (Layer &gt; Show Layer, or its eye in the timeline) to draw on it.</source>
         <translation>Le calque « %1 » est masqué : affichez-le (Calque &gt; Afficher le calque, ou son œil dans la timeline) pour dessiner dessus.</translation>
     </message>
@@ -3622,20 +3720,20 @@
     <message>
         <location filename="../ui/include/finbook/ui/tools/tool_eyedropper.h" line="32"/>
         <source>take a line&apos;s or a fill&apos;s colour for the pen</source>
-        <translation>prendre la couleur d'un trait ou d'un remplissage pour le stylo</translation>
+        <translation>prendre la couleur d&apos;un trait ou d&apos;un remplissage pour le stylo</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="76"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="63"/>
         <source>Nothing here to take a colour from: click a line or a fill.</source>
         <translation>Aucune couleur à prélever ici : cliquez sur un trait ou un remplissage.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="83"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="70"/>
         <source>The pen takes the line&apos;s colour %1.</source>
         <translation>Le stylo prend la couleur %1 du trait.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="84"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="71"/>
         <source>The pen takes the fill&apos;s colour %1.</source>
         <translation>Le stylo prend la couleur %1 du remplissage.</translation>
     </message>
@@ -3993,114 +4091,124 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window.cpp" line="156"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window.cpp" line="159"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="208"/>
+        <location filename="../ui/src/window/main_window.cpp" line="209"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="210"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="212"/>
+        <location filename="../ui/src/window/main_window.cpp" line="213"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="235"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <source>Palette</source>
+        <translation>Palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="268"/>
+        <source>Rotation </source>
+        <translation>Rotation </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="272"/>
+        <source>The view&apos;s rotation: the drawing is not changed. Shift+Space-drag on the canvas turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it.</source>
+        <translation>La rotation de la vue : le dessin ne change pas. Maj+Espace et glisser sur la toile la tourne librement ; 4 et 6 la tournent de 15°, 5 la remet droite, Maj+M la retourne.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="298"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>La référence « %1 » ne peut pas être affichée : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window.cpp" line="307"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="286"/>
+        <location filename="../ui/src/window/main_window.cpp" line="318"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="287"/>
+        <location filename="../ui/src/window/main_window.cpp" line="319"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="292"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="278"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window.cpp" line="325"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="35"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="36"/>
         <source>&amp;Deform</source>
         <translation>Défor&amp;mer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="50"/>
-        <source>Deform</source>
-        <translation>Déformation</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="66"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="69"/>
         <source>Preparing the deformation…</source>
         <translation>Préparation de la déformation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="27"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="29"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Animations Finbook (*.finbook);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="38"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="40"/>
         <source>Object</source>
         <translation>Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="73"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
         <source>Cannot Open File</source>
         <translation>Impossible d&apos;ouvrir le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="165"/>
         <source>Cannot Save File</source>
         <translation>Impossible d&apos;enregistrer le fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="131"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="171"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="137"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Ce qui était lisible de %1 a été ouvert (%n problème réparé)&#xa0;; enregistrez l&apos;animation sous un nouveau nom.</numerusform>
@@ -4108,309 +4216,355 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="181"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="98"/>
+        <source>Cannot Open the Example</source>
+        <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="103"/>
+        <source>The example walk cycle: change it and save it as your own.</source>
+        <translation>L&apos;exemple de cycle de marche : modifiez-le et enregistrez-le comme le vôtre.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="221"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
         <source>No recent files</source>
         <translation>Aucun fichier récent</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>Cannot Import Mesh</source>
         <translation>Impossible d&apos;importer le maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="266"/>
         <source>Damaged File</source>
         <translation>Fichier endommagé</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="267"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>«&#xa0;Ouvrir quand même&#xa0;» affiche ce qui reste lisible dans une nouvelle animation non enregistrée&#xa0;; le fichier endommagé n&apos;est pas modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="270"/>
         <source>Open Anyway</source>
         <translation>Ouvrir quand même</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="280"/>
         <source>Unsaved Changes</source>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="281"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>«&#xa0;%1&#xa0;» contient des modifications non enregistrées. Les enregistrer avant de continuer&#xa0;?</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="287"/>
         <source>Open Animation</source>
         <translation>Ouvrir une animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="293"/>
         <source>Save Animation</source>
         <translation>Enregistrer l&apos;animation</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
         <source>untitled.finbook</source>
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="56"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <source>Open Exa&amp;mple</source>
+        <translation>Ouvrir l&apos;e&amp;xemple</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <source>&amp;Welcome...</source>
+        <translation>&amp;Bienvenue...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="83"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="85"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>Import Re&amp;ference...</source>
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="131"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="166"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="187"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="237"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="234"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="250"/>
+        <source>Rotate View &amp;Left</source>
+        <translation>Tourner la vue à &amp;gauche</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <source>Rotate View &amp;Right</source>
+        <translation>Tourner la vue à &amp;droite</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <source>R&amp;eset View Rotation</source>
+        <translation>Ré&amp;initialiser la rotation de la vue</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
+        <source>Mirror Vie&amp;w</source>
+        <translation>Vue en mir&amp;oir</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="285"/>
         <source>&amp;Camera View</source>
         <translation>Vue &amp;caméra</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Atténuer les a&amp;utres calques</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="292"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
         <source>&amp;Layer</source>
         <translation>&amp;Calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="335"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="338"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="346"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="348"/>
+        <source>Finbook &amp;Manual</source>
+        <translation>&amp;Manuel de Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="353"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="355"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="344"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="368"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="409"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="410"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Rétablir</translation>
@@ -4436,54 +4590,69 @@
         <translation>Forme</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="28"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="30"/>
         <source>Reset &amp;Bone Pose</source>
         <translation>Réinitialiser la pose de l’&amp;os</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="29"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="31"/>
         <source>Turn the bone selected with the Bone tool back to rest; the bones below it keep their bends</source>
         <translation>Ramener au repos l’os choisi avec l’outil Os ; les os en dessous gardent leur flexion</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="35"/>
         <source>&amp;Edit Joints</source>
         <translation>&amp;Modifier les articulations</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="35"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="37"/>
         <source>With the Bone tool, move, insert and delete the joints of an unposed skeleton instead of posing it</source>
         <translation>Avec l’outil Os, déplacer, insérer et supprimer les articulations d’un squelette sans pose au lieu de le poser</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="56"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="58"/>
         <source>Show S&amp;keleton</source>
         <translation>Afficher le &amp;squelette</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="62"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="64"/>
         <source>Skeleton</source>
         <translation>Squelette</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="70"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="72"/>
         <source>S&amp;kinning</source>
         <translation>&amp;Habillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="77"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="79"/>
         <source>&amp;Rigid (Bones Pin the Mesh)</source>
         <translation>&amp;Rigide (les os épinglent le maillage)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="79"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="81"/>
         <source>&amp;Linear Blend</source>
         <translation>Mélange &amp;linéaire</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="81"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="83"/>
         <source>&amp;Cut-out (Limbs Turn over the Body)</source>
         <translation>&amp;Découpage (les membres tournent par-dessus le corps)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="115"/>
+        <source>Rigid</source>
+        <translation>Rigide</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="115"/>
+        <source>Blend</source>
+        <translation>Mélange</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="115"/>
+        <source>Cut-out</source>
+        <translation>Découpe</translation>
     </message>
     <message>
         <location filename="../ui/src/recovery/main_window_recovery.cpp" line="63"/>
@@ -4507,44 +4676,148 @@
         <translation>Fermer les trous : automatique (%1 px)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="41"/>
         <source>Close gaps up to </source>
         <translation>Fermer les trous jusqu&apos;à </translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="42"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="41"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="43"/>
         <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
         <translation>Les ouvertures d&apos;un contour jusqu&apos;à cette largeur forment encore une zone que l&apos;outil Remplissage peut remplir (0 = contours fermés seulement)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="88"/>
         <source>Fill All Enclosed Re&amp;gions</source>
         <translation>Remplir toutes les &amp;zones fermées</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="88"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="90"/>
         <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
         <translation>Remplir de la couleur du stylo chaque zone fermée de l&apos;objet courant qui n&apos;a pas de remplissage</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="97"/>
         <source>The current object has no unfilled closed region</source>
         <translation>L&apos;objet courant n&apos;a aucune zone fermée sans remplissage</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="104"/>
-        <source>Fill</source>
-        <translation>Remplissage</translation>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="109"/>
+        <source>The colour the Fill tool fills with (the pen&apos;s)</source>
+        <translation>La couleur dont l&apos;outil Remplissage remplit (celle du stylo)</translation>
     </message>
     <message>
         <location filename="../ui/src/shade/main_window_shade.cpp" line="33"/>
         <source>Shading</source>
         <translation>Ombrage</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ManualBrowser</name>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="30"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
+        <source>Contents</source>
+        <translation>Sommaire</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="31"/>
+        <source>Getting Started: Draw, Bend, Play</source>
+        <translation>Premiers pas : dessiner, plier, jouer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="32"/>
+        <source>Drawing and the View</source>
+        <translation>Dessiner et la vue</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="33"/>
+        <source>Fills and Shading</source>
+        <translation>Remplissages et ombrage</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="34"/>
+        <source>Pins</source>
+        <translation>Épingles</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="35"/>
+        <source>Cages</source>
+        <translation>Cages</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="36"/>
+        <source>Bones and Skeletons</source>
+        <translation>Os et squelettes</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="37"/>
+        <source>In-betweens</source>
+        <translation>Intervalles</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="38"/>
+        <source>Timeline, Layers and Sound</source>
+        <translation>Timeline, calques et son</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="39"/>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="40"/>
+        <source>Reference Pictures and Video</source>
+        <translation>Images et vidéos de référence</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
+        <source>Exporting</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
+        <source>Saving, Autosave and Recovery</source>
+        <translation>Enregistrement, sauvegarde automatique et récupération</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
+        <source>The Command Line</source>
+        <translation>La ligne de commande</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>Raccourcis clavier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
+        <source>Installing</source>
+        <translation>Installation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="82"/>
+        <source>Finbook Manual</source>
+        <translation>Manuel de Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="95"/>
+        <source>Back</source>
+        <translation>Précédent</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
+        <source>Forward</source>
+        <translation>Suivant</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="102"/>
+        <source>Search the manual</source>
+        <translation>Chercher dans le manuel</translation>
     </message>
 </context>
 <context>
@@ -4679,6 +4952,212 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::PalettePanel</name>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="43"/>
+        <source>&quot;%1&quot; is not a palette Finbook can read: %2.</source>
+        <translation>« %1 » n&apos;est pas une palette que Finbook sait lire : %2.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="71"/>
+        <source>Swatch name</source>
+        <translation>Nom de la nuance</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="72"/>
+        <source>The chosen swatch&apos;s name: type and press Return to rename it</source>
+        <translation>Le nom de la nuance choisie : tapez puis Entrée pour la renommer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="87"/>
+        <source>Add the pen&apos;s colour to the palette</source>
+        <translation>Ajouter la couleur du stylo à la palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="88"/>
+        <source>Set</source>
+        <translation>Appliquer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="89"/>
+        <source>Give the chosen swatch the pen&apos;s colour</source>
+        <translation>Donner la couleur du stylo à la nuance choisie</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="91"/>
+        <source>Move the chosen swatch one place earlier</source>
+        <translation>Avancer la nuance choisie d&apos;une place</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="93"/>
+        <source>Move the chosen swatch one place later</source>
+        <translation>Reculer la nuance choisie d&apos;une place</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="95"/>
+        <source>Delete the chosen swatch from the palette</source>
+        <translation>Supprimer la nuance choisie de la palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="97"/>
+        <source>Import, export, save and load palettes</source>
+        <translation>Importer, exporter, enregistrer et charger des palettes</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="100"/>
+        <source>&amp;Import GIMP Palette...</source>
+        <translation>&amp;Importer une palette GIMP...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="101"/>
+        <source>&amp;Export GIMP Palette...</source>
+        <translation>&amp;Exporter une palette GIMP...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="103"/>
+        <source>&amp;Save as User Palette...</source>
+        <translation>&amp;Enregistrer comme palette personnelle...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="104"/>
+        <source>&amp;Load User Palette</source>
+        <translation>&amp;Charger une palette personnelle</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="107"/>
+        <source>&amp;Reset to Finbook&apos;s Colours</source>
+        <translation>&amp;Revenir aux couleurs de Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="108"/>
+        <source>Reset Palette</source>
+        <translation>Réinitialiser la palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="168"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="190"/>
+        <source>A palette holds at most %1 colours.</source>
+        <translation>Une palette contient au plus %1 couleurs.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="195"/>
+        <source>Add Swatch</source>
+        <translation>Ajouter une nuance</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="206"/>
+        <source>Recolour Swatch</source>
+        <translation>Recolorer la nuance</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="216"/>
+        <source>Delete Swatch</source>
+        <translation>Supprimer la nuance</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="227"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="264"/>
+        <source>Move Swatch</source>
+        <translation>Déplacer la nuance</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="238"/>
+        <source>Rename Swatch</source>
+        <translation>Renommer la nuance</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="314"/>
+        <source>it is far larger than a palette</source>
+        <translation>il est bien plus gros qu&apos;une palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="323"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
+        <source>Import Palette</source>
+        <translation>Importer la palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="330"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
+        <source>The palette could not be saved as &quot;%1&quot;: %2</source>
+        <translation>La palette n&apos;a pas pu être enregistrée sous « %1 » : %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="344"/>
+        <source>A user palette needs a name.</source>
+        <translation>Une palette personnelle a besoin d&apos;un nom.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="346"/>
+        <source>The folder for user palettes (%1) could not be made.</source>
+        <translation>Le dossier des palettes personnelles (%1) n&apos;a pas pu être créé.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="367"/>
+        <source>(no user palettes yet)</source>
+        <translation>(pas encore de palette personnelle)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="374"/>
+        <source>Load Palette</source>
+        <translation>Charger la palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
+        <source>Import GIMP Palette</source>
+        <translation>Importer une palette GIMP</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="381"/>
+        <source>GIMP palettes (*.gpl);;All files (*)</source>
+        <translation>Palettes GIMP (*.gpl);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="391"/>
+        <source>Export GIMP Palette</source>
+        <translation>Exporter une palette GIMP</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="393"/>
+        <source>GIMP palettes (*.gpl)</source>
+        <translation>Palettes GIMP (*.gpl)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="400"/>
+        <source>Export Palette</source>
+        <translation>Exporter la palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="402"/>
+        <source>Palette saved as &quot;%1&quot;.</source>
+        <translation>Palette enregistrée sous « %1 ».</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <source>Save as User Palette</source>
+        <translation>Enregistrer comme palette personnelle</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <source>Name of the palette:</source>
+        <translation>Nom de la palette :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <source>Save Palette</source>
+        <translation>Enregistrer la palette</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="417"/>
+        <source>Saved as the user palette &quot;%1&quot;; Palette &gt; Load User Palette brings it into any drawing.</source>
+        <translation>Enregistrée comme palette personnelle « %1 » ; Palette &gt; Charger une palette personnelle l&apos;amène dans tout dessin.</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::PenTool</name>
     <message>
         <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="37"/>
@@ -4691,7 +5170,7 @@
         <translation>tracer des traits ; la pression du stylet règle leur épaisseur</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_pen.cpp" line="118"/>
+        <location filename="../ui/src/tools/tool_pen.cpp" line="117"/>
         <source>Draw Stroke</source>
         <translation>Tracer un trait</translation>
     </message>
@@ -5005,7 +5484,7 @@
     <message>
         <location filename="../ui/include/finbook/ui/reference/tool_reference.h" line="24"/>
         <source>move, scale and turn the reference picture</source>
-        <translation>déplacer, mettre à l'échelle et tourner l'image de référence</translation>
+        <translation>déplacer, mettre à l&apos;échelle et tourner l&apos;image de référence</translation>
     </message>
 </context>
 <context>
@@ -5018,25 +5497,25 @@
     <message>
         <location filename="../ui/include/finbook/ui/tools/tool_select.h" line="31"/>
         <source>lasso lines, then move, turn or scale them</source>
-        <translation>entourer des traits au lasso, puis les déplacer, les tourner ou les mettre à l'échelle</translation>
+        <translation>entourer des traits au lasso, puis les déplacer, les tourner ou les mettre à l&apos;échelle</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="314"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="340"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>Les traits ne peuvent pas être transformés à ce point.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="323"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="347"/>
         <source>Move Strokes</source>
         <translation>Déplacer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="324"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="348"/>
         <source>Rotate Strokes</source>
         <translation>Faire pivoter les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="325"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="349"/>
         <source>Scale Strokes</source>
         <translation>Redimensionner les traits</translation>
     </message>
@@ -5188,47 +5667,72 @@
 <context>
     <name>finbook::ui::SkeletonPanel</name>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Bone complexity</source>
         <translation>Complexité des os</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Merge junctions</source>
         <translation>Fusionner les jonctions</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Prune branches</source>
         <translation>Élaguer les branches</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="22"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
         <source>Collapse short bones</source>
         <translation>Réduire les os courts</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Bones</source>
+        <translation>Os</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Merge</source>
+        <translation>Fusion</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Prune</source>
+        <translation>Élaguer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Collapse</source>
+        <translation>Réduire</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="29"/>
         <source>More bones follow the shape more closely</source>
         <translation>Plus il y a d&apos;os, plus ils suivent fidèlement la forme</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="30"/>
         <source>Junctions closer than this become one</source>
         <translation>Les jonctions plus proches que cette distance n&apos;en forment plus qu&apos;une</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="31"/>
         <source>Remove side branches shorter than this</source>
         <translation>Supprimer les branches latérales plus courtes que cette longueur</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="32"/>
         <source>Collapse inner bones shorter than this into one joint</source>
         <translation>Réduire en une seule articulation les os internes plus courts que cette longueur</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="43"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="41"/>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="55"/>
         <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
         <translation>Choisissez l&apos;outil Os (K) et cliquez sur un objet pour lui donner un squelette.</translation>
     </message>
@@ -5378,6 +5882,19 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::TimelineView</name>
+    <message>
+        <location filename="../ui/src/timeline/timeline_view.cpp" line="266"/>
+        <source>Drag along the frame numbers to scrub through the animation</source>
+        <translation>Glissez le long des numéros d&apos;image pour parcourir l&apos;animation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline/timeline_view.cpp" line="268"/>
+        <source>Click to show this frame; drag the picture to move the frame elsewhere; Ctrl- or Shift-click to pick several</source>
+        <translation>Cliquez pour afficher cette image ; faites glisser l&apos;image pour la déplacer ailleurs ; Ctrl- ou Maj-clic pour en choisir plusieurs</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
         <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
@@ -5413,6 +5930,87 @@
         <location filename="../ui/src/timeline/timeline_widget.cpp" line="142"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>Image %1 sur %2 · %3 i/s</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ToolOptionsBar</name>
+    <message>
+        <location filename="../ui/src/window/tool_options_bar.cpp" line="11"/>
+        <source>Tool Options</source>
+        <translation>Options de l&apos;outil</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/tool_options_bar.cpp" line="61"/>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::WelcomeDialog</name>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="37"/>
+        <source>Show this page whenever Finbook starts</source>
+        <translation>Afficher cette page à chaque démarrage de Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="40"/>
+        <source>Welcome to Finbook</source>
+        <translation>Bienvenue dans Finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="50"/>
+        <source>&amp;New Animation</source>
+        <translation>&amp;Nouvelle animation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="50"/>
+        <source>Start an empty animation</source>
+        <translation>Commencer une animation vide</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="51"/>
+        <source>&amp;Open...</source>
+        <translation>&amp;Ouvrir...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="51"/>
+        <source>Open a .finbook file</source>
+        <translation>Ouvrir un fichier .finbook</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="52"/>
+        <source>Open the &amp;Example</source>
+        <translation>Ouvrir l&apos;&amp;exemple</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="53"/>
+        <source>A short walk cycle drawn with Finbook, to look at and change</source>
+        <translation>Un court cycle de marche dessiné avec Finbook, à regarder et à modifier</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="54"/>
+        <source>Read the &amp;Manual</source>
+        <translation>Lire le &amp;manuel</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="55"/>
+        <source>The Finbook Manual (F1 opens it at the tool in hand)</source>
+        <translation>Le manuel de Finbook (F1 l&apos;ouvre à l&apos;outil en main)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="63"/>
+        <source>(no recent files yet)</source>
+        <translation>(pas encore de fichier récent)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="70"/>
+        <source>&lt;h2&gt;Draw — bend — play&lt;/h2&gt;&lt;p&gt;&lt;b&gt;1. Draw.&lt;/b&gt; Take the pen (&lt;b&gt;B&lt;/b&gt;) and draw a character; a tablet&apos;s pressure shapes the line. Close its outline loosely: small gaps close by themselves. Pick a colour in the Palette and click inside with the fill (&lt;b&gt;F&lt;/b&gt;).&lt;/p&gt;&lt;p&gt;&lt;b&gt;2. Bend.&lt;/b&gt; Instead of drawing the next frame again, duplicate the frame (&lt;b&gt;Ctrl+D&lt;/b&gt;) and bend the copy: click the drawing with the bone tool (&lt;b&gt;K&lt;/b&gt;) and drag a bone, or put pins on it (&lt;b&gt;P&lt;/b&gt;) and drag one; the rest follows as if drawn on rubber. The bent drawing is lines again: keep drawing on it.&lt;/p&gt;&lt;p&gt;&lt;b&gt;3. Play.&lt;/b&gt; Press &lt;b&gt;Return&lt;/b&gt; to play; Frame → In-betweens fills the frames between two poses. Onion skin (&lt;b&gt;O&lt;/b&gt;) shows the neighbours faintly. Save with &lt;b&gt;Ctrl+S&lt;/b&gt;, export a GIF, a video or a Lottie animation with File → Export.&lt;/p&gt;&lt;p&gt;&lt;a href=&quot;getting-started.md&quot;&gt;Read “Getting Started” in the manual&lt;/a&gt;, or press &lt;b&gt;F1&lt;/b&gt; at any time for the page of the tool in hand.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;Dessiner — plier — jouer&lt;/h2&gt;&lt;p&gt;&lt;b&gt;1. Dessiner.&lt;/b&gt; Prenez le stylo (&lt;b&gt;B&lt;/b&gt;) et dessinez un personnage ; la pression d&apos;une tablette forme le trait. Fermez son contour sans soin : les petits écarts se ferment seuls. Choisissez une couleur dans la Palette et cliquez dedans avec le remplissage (&lt;b&gt;F&lt;/b&gt;).&lt;/p&gt;&lt;p&gt;&lt;b&gt;2. Plier.&lt;/b&gt; Au lieu de redessiner l&apos;image suivante, dupliquez l&apos;image (&lt;b&gt;Ctrl+D&lt;/b&gt;) et pliez la copie : cliquez le dessin avec l&apos;outil os (&lt;b&gt;K&lt;/b&gt;) et tirez un os, ou posez des épingles (&lt;b&gt;P&lt;/b&gt;) et tirez-en une ; le reste suit comme dessiné sur du caoutchouc. Le dessin plié redevient des traits : continuez à dessiner dessus.&lt;/p&gt;&lt;p&gt;&lt;b&gt;3. Jouer.&lt;/b&gt; &lt;b&gt;Entrée&lt;/b&gt; joue l&apos;animation ; Image → Intervalles remplit les images entre deux poses. La pelure d&apos;oignon (&lt;b&gt;O&lt;/b&gt;) montre les voisines en pâle. Enregistrez avec &lt;b&gt;Ctrl+S&lt;/b&gt;, exportez un GIF, une vidéo ou une animation Lottie avec Fichier → Exporter.&lt;/p&gt;&lt;p&gt;&lt;a href=&quot;getting-started.md&quot;&gt;Lire « Getting Started » dans le manuel&lt;/a&gt;, ou appuyez sur &lt;b&gt;F1&lt;/b&gt; à tout moment pour la page de l&apos;outil en main.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="91"/>
+        <source>Recent files:</source>
+        <translation>Fichiers récents :</translation>
     </message>
 </context>
 </TS>

@@ -401,8 +401,8 @@
         <translation>セルを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/document.cpp" line="20"/>
-        <location filename="../model/src/document.cpp" line="204"/>
+        <location filename="../model/src/document.cpp" line="21"/>
+        <location filename="../model/src/document.cpp" line="205"/>
         <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Layer 1</source>
         <translation>レイヤー 1</translation>
@@ -426,7 +426,7 @@
         <translation>不明なコマンド「%1」です。finbook --help を参照してください。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="39"/>
+        <location filename="../app/main.cpp" line="40"/>
         <source>Finbook, a flipbook animation editor.
 
   finbook [FILE]               open FILE in the editor
@@ -449,29 +449,29 @@
   finbook thumbnail FILE OUT.png SIZE   最初のフレームを最大 SIZE px の PNG に書き出す</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="55"/>
+        <location filename="../app/main.cpp" line="56"/>
         <source>Use LANGUAGE (e.g. de, en, fr, ja) instead of the system&apos;s.</source>
         <translation>システムの言語の代わりに LANGUAGE（例: de, en, fr, ja）を使う。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="61"/>
+        <location filename="../app/main.cpp" line="62"/>
         <source>FILE, or a command.</source>
         <translation>FILE、またはコマンド。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="73"/>
+        <location filename="../app/main.cpp" line="74"/>
         <source>see finbook --help</source>
         <comment>after an error</comment>
         <translation>finbook --help を参照してください</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="80"/>
+        <location filename="../app/main.cpp" line="81"/>
         <source>%1; %2.</source>
         <comment>an argument error from Qt, then &quot;see finbook --help&quot;</comment>
         <translation>%1。%2。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="116"/>
+        <location filename="../app/main.cpp" line="117"/>
         <source>Unknown command &quot;%1&quot;; %2.</source>
         <translation>不明なコマンド「%1」です。%2。</translation>
     </message>
@@ -964,24 +964,24 @@
         <translation>別の書き出しが「%1」に書き込み中です。終わるまで待つか、別の書き出し先を選んでください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="87"/>
+        <location filename="../model/src/export/exporter.cpp" line="113"/>
         <source>&quot;%1&quot; is a folder; give a file name ending in .%2.</source>
         <translation>「%1」はフォルダーです。末尾が .%2 のファイル名を指定してください。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="228"/>
+        <location filename="../model/src/export/exporter.cpp" line="254"/>
         <source>Choose where to export the animation to.</source>
         <translation>アニメーションの書き出し先を選んでください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/export/exporter.cpp" line="242"/>
+        <location filename="../model/src/export/exporter.cpp" line="268"/>
         <source>%n more sound clip(s) are left out too.</source>
         <translation>
             <numerusform>ほかに %n 個のサウンドクリップも省かれます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/exporter.cpp" line="249"/>
+        <location filename="../model/src/export/exporter.cpp" line="275"/>
         <source>Nothing was exported.</source>
         <translation>何も書き出されませんでした。</translation>
     </message>
@@ -1087,7 +1087,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_glb.cpp" line="53"/>
+        <location filename="../model/src/export/export_glb.cpp" line="45"/>
         <source>Frame %1 makes a 3D model larger than a glTF file can hold (4 GiB); export it as OBJ instead.</source>
         <translation>フレーム %1 の 3D モデルは glTF ファイルに収まる大きさ (4 GiB) を超えます。代わりに OBJ で書き出してください。</translation>
     </message>
@@ -1102,17 +1102,17 @@
         <translation>参照「%1」は省かれます: %2</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="606"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="613"/>
         <source>the zip container failed</source>
         <translation>ZIP コンテナーを書き込めませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="627"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
         <source>Lottie has no place for the reference picture; it is left out.</source>
         <translation>Lottie には参照画像を入れられないため、省きました。</translation>
     </message>
     <message>
-        <location filename="../model/src/export/export_lottie.cpp" line="629"/>
+        <location filename="../model/src/export/export_lottie.cpp" line="631"/>
         <source>Lottie carries no sound; the soundtrack is left out.</source>
         <translation>Lottie は音声を持てないため、サウンドトラックは省きました。</translation>
     </message>
@@ -1363,7 +1363,7 @@
         <translation>「%1」を開けません: %2 MB を読み込むのに十分なメモリがありません。ほかのプログラムやドキュメントを閉じてから、もう一度お試しください。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_io.cpp" line="258"/>
+        <location filename="../model/src/finbook_file_io.cpp" line="259"/>
         <source>Could not save &quot;%1&quot;: the drawing holds invalid data (%2). The previous file is unchanged.</source>
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
@@ -1485,7 +1485,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
@@ -1500,130 +1500,135 @@
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="205"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
         <source>a sound clip comes before the frames</source>
         <translation>サウンドクリップがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="212"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
         <source>the layers come before the frames</source>
         <translation>レイヤーがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="226"/>
         <source>the layers are repeated</source>
         <translation>レイヤーが繰り返されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
         <source>the camera comes before the frames</source>
         <translation>カメラがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
         <source>the camera is repeated</source>
         <translation>カメラが重複しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="233"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="273"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <source>the palette</source>
+        <translation>パレット</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="296"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="274"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="284"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="287"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="288"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="310"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="292"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="298"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="299"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="303"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="326"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="309"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="314"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="328"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="351"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="365"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="388"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1907,22 +1912,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="393"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="411"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="434"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="439"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="425"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="448"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -2062,12 +2067,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="160"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="161"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>自動保存で復元用のコピーを書き込めませんでした: %1。</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="41"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="42"/>
         <source>there is not enough memory</source>
         <translation>メモリが足りません</translation>
     </message>
@@ -2332,14 +2337,102 @@
     </message>
 </context>
 <context>
+    <name>Palette</name>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="47"/>
+        <source>Finbook</source>
+        <translation>Finbook</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="48"/>
+        <source>Black</source>
+        <translation>黒</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="48"/>
+        <source>Grey</source>
+        <translation>灰色</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="49"/>
+        <source>White</source>
+        <translation>白</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="49"/>
+        <source>Purple</source>
+        <translation>紫</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="50"/>
+        <source>Blue</source>
+        <translation>青</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="50"/>
+        <source>Red</source>
+        <translation>赤</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="51"/>
+        <source>Orange</source>
+        <translation>オレンジ</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="51"/>
+        <source>Yellow</source>
+        <translation>黄</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="52"/>
+        <source>Green</source>
+        <translation>緑</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="52"/>
+        <source>Brown</source>
+        <translation>茶</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="75"/>
+        <source>it is not a GIMP palette (its first line is not &quot;GIMP Palette&quot;)</source>
+        <translation>GIMP パレットではありません（1 行目が &quot;GIMP Palette&quot; ではありません）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="97"/>
+        <source>line %1: channels &quot;%2&quot; are not RGB or RGBA</source>
+        <translation>%1 行目: チャンネル &quot;%2&quot; は RGB でも RGBA でもありません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="117"/>
+        <source>line %1 is not a colour (%2 numbers from 0 to 255, then a name)</source>
+        <translation>%1 行目は色ではありません（0〜255 の数が %2 個、その後に名前）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="124"/>
+        <source>it holds more than %1 colours</source>
+        <translation>%1 色より多くの色を含んでいます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="176"/>
+        <source>the palette is damaged</source>
+        <translation>パレットが壊れています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/palette/palette.cpp" line="182"/>
+        <source>the palette claims %1 colours</source>
+        <translation>パレットが %1 色あると主張しています</translation>
+    </message>
+</context>
+<context>
     <name>QCommandLineParser</name>
     <message>
-        <location filename="../app/main.cpp" line="25"/>
+        <location filename="../app/main.cpp" line="26"/>
         <source>Displays help on commandline options.</source>
         <translation>コマンドラインオプションのヘルプを表示する。</translation>
     </message>
     <message>
-        <location filename="../app/main.cpp" line="26"/>
+        <location filename="../app/main.cpp" line="27"/>
         <source>Displays help including Qt specific options.</source>
         <translation>Qt 固有のオプションを含むヘルプを表示する。</translation>
     </message>
@@ -2909,44 +3002,49 @@
         <translation>ブラシ</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="30"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
         <source>Width:</source>
         <translation>太さ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="37"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
         <source>Smoothing:</source>
         <translation>スムージング:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>ペンを離したときにストロークをどれだけ滑らかにするか</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="47"/>
         <source>Stabiliser:</source>
         <translation>手ぶれ補正:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="50"/>
         <source>Off</source>
         <translation>オフ</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="46"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="51"/>
         <source>Steadies the line while you draw: the ink follows the pen on a string this long (4 screen pixels a step), so a shaky hand draws a smooth line. Off: the ink is under the pen.</source>
         <translation>描いている間の線を安定させます。インクはこの長さ（1 段階につき画面の 4 ピクセル）の糸で筆先に引かれるので、手が震えても滑らかな線になります。オフ: インクは筆先の真下に出ます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="98"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="104"/>
         <source>Pen colour %1</source>
         <translation>ペンの色: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="105"/>
+        <source>Pen colour %1 (%2)</source>
+        <translation>ペンの色 %1（%2）</translation>
     </message>
 </context>
 <context>
@@ -3076,12 +3174,12 @@
 <context>
     <name>finbook::ui::CanvasWidget</name>
     <message>
-        <location filename="../ui/src/canvas/canvas_widget.cpp" line="238"/>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="311"/>
         <source>The layer &quot;%1&quot; is locked: unlock it (Layer &gt; Lock Layer, or its padlock in the timeline) to draw on it.</source>
         <translation>レイヤー「%1」はロックされています。描くには、ロックを解除してください（レイヤー &gt; レイヤーをロック、またはタイムラインの錠前）。</translation>
     </message>
     <message>
-        <location filename="../ui/src/canvas/canvas_widget.cpp" line="241"/>
+        <location filename="../ui/src/canvas/canvas_widget.cpp" line="314"/>
         <source>The layer &quot;%1&quot; is hidden: show it (Layer &gt; Show Layer, or its eye in the timeline) to draw on it.</source>
         <translation>レイヤー「%1」は非表示です。描くには、表示してください（レイヤー &gt; レイヤーを表示、またはタイムラインの目のアイコン）。</translation>
     </message>
@@ -3609,17 +3707,17 @@
         <translation>線や塗りの色をペンに取る</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="76"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="63"/>
         <source>Nothing here to take a colour from: click a line or a fill.</source>
         <translation>ここには色を取れるものがありません。線か塗りをクリックしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="83"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="70"/>
         <source>The pen takes the line&apos;s colour %1.</source>
         <translation>ペンは線の色 %1 になりました。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="84"/>
+        <location filename="../ui/src/tools/tool_eyedropper.cpp" line="71"/>
         <source>The pen takes the fill&apos;s colour %1.</source>
         <translation>ペンは塗りの色 %1 になりました。</translation>
     </message>
@@ -3976,423 +4074,479 @@
 <context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window.cpp" line="156"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="158"/>
+        <location filename="../ui/src/window/main_window.cpp" line="159"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="208"/>
+        <location filename="../ui/src/window/main_window.cpp" line="209"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="210"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="212"/>
+        <location filename="../ui/src/window/main_window.cpp" line="213"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window.cpp" line="233"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="235"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <source>Palette</source>
+        <translation>パレット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="268"/>
+        <source>Rotation </source>
+        <translation>回転 </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="272"/>
+        <source>The view&apos;s rotation: the drawing is not changed. Shift+Space-drag on the canvas turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it.</source>
+        <translation>表示の回転です。絵は変わりません。キャンバス上で Shift+Space ドラッグで自由に回転、4 と 6 で 15° ずつ回転、5 で元に戻し、Shift+M で左右反転します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="298"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>参照「%1」を表示できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="275"/>
+        <location filename="../ui/src/window/main_window.cpp" line="307"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="286"/>
+        <location filename="../ui/src/window/main_window.cpp" line="318"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="287"/>
+        <location filename="../ui/src/window/main_window.cpp" line="319"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="292"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="278"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="293"/>
+        <location filename="../ui/src/window/main_window.cpp" line="325"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="35"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="36"/>
         <source>&amp;Deform</source>
         <translation>変形(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="50"/>
-        <source>Deform</source>
-        <translation>変形</translation>
-    </message>
-    <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="66"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="69"/>
         <source>Preparing the deformation…</source>
         <translation>変形を準備しています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="27"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="29"/>
         <source>Finbook animations (*.finbook);;All files (*)</source>
         <translation>Finbook アニメーション (*.finbook);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="38"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="40"/>
         <source>Object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="73"/>
-        <location filename="../ui/src/window/main_window_files.cpp" line="90"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="130"/>
         <source>Cannot Open File</source>
         <translation>ファイルを開けません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="125"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="165"/>
         <source>Cannot Save File</source>
         <translation>ファイルを保存できません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="131"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="171"/>
         <source>Saved %1</source>
         <translation>%1 を保存しました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/window/main_window_files.cpp" line="97"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="137"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>%1 の読み取れた部分を開きました（%n 件の問題を修復）。新しい名前で保存してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="181"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="98"/>
+        <source>Cannot Open the Example</source>
+        <translation>見本を開けません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="103"/>
+        <source>The example walk cycle: change it and save it as your own.</source>
+        <translation>見本の歩きサイクルです。変更して自分のものとして保存できます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_files.cpp" line="221"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="190"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
         <source>No recent files</source>
         <translation>最近使ったファイルはありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
         <source>Cannot Import Mesh</source>
         <translation>メッシュをインポートできません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="204"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="226"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="266"/>
         <source>Damaged File</source>
         <translation>破損したファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="227"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="267"/>
         <source>Open anyway shows what is still readable as a new, unsaved animation; the damaged file is not changed.</source>
         <translation>「このまま開く」を選ぶと、まだ読み取れる部分を未保存の新しいアニメーションとして表示します。破損したファイルは変更されません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="270"/>
         <source>Open Anyway</source>
         <translation>このまま開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="280"/>
         <source>Unsaved Changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="281"/>
         <source>&quot;%1&quot; has changes that are not saved. Save them before going on?</source>
         <translation>「%1」には保存されていない変更があります。続ける前に保存しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="247"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="287"/>
         <source>Open Animation</source>
         <translation>アニメーションを開く</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="253"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="293"/>
         <source>Save Animation</source>
         <translation>アニメーションを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_files.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_files.cpp" line="294"/>
         <source>untitled.finbook</source>
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="56"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="68"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="71"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <source>Open Exa&amp;mple</source>
+        <translation>見本を開く(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <source>&amp;Welcome...</source>
+        <translation>ようこそ(&amp;W)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="83"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="85"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="101"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>Import Re&amp;ference...</source>
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="112"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="131"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="133"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="137"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="166"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="187"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="186"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="202"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="229"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="237"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="230"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="232"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="234"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="236"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="241"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="250"/>
+        <source>Rotate View &amp;Left</source>
+        <translation>表示を左に回転(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <source>Rotate View &amp;Right</source>
+        <translation>表示を右に回転(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <source>R&amp;eset View Rotation</source>
+        <translation>表示の回転をリセット(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
+        <source>Mirror Vie&amp;w</source>
+        <translation>表示を左右反転(&amp;W)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="254"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="285"/>
         <source>&amp;Camera View</source>
         <translation>カメラビュー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
         <source>&amp;Dim Other Layers</source>
         <translation>他のレイヤーを薄く表示(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="273"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="292"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
         <source>&amp;Layer</source>
         <translation>レイヤー(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="299"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="310"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="335"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="313"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="338"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="321"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="346"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="348"/>
+        <source>Finbook &amp;Manual</source>
+        <translation>Finbook マニュアル(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="353"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="355"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="344"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="368"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="409"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="369"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="410"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="135"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>やり直す</translation>
@@ -4418,54 +4572,69 @@
         <translation>形状</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="28"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="30"/>
         <source>Reset &amp;Bone Pose</source>
         <translation>ボーンのポーズをリセット(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="29"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="31"/>
         <source>Turn the bone selected with the Bone tool back to rest; the bones below it keep their bends</source>
         <translation>ボーンツールで選んだボーンを静止状態に戻します。その下のボーンは曲がりを保ちます</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="33"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="35"/>
         <source>&amp;Edit Joints</source>
         <translation>関節を編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="35"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="37"/>
         <source>With the Bone tool, move, insert and delete the joints of an unposed skeleton instead of posing it</source>
         <translation>ボーンツールで、ポーズを付ける代わりに、ポーズのないスケルトンの関節を移動・挿入・削除します</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="56"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="58"/>
         <source>Show S&amp;keleton</source>
         <translation>スケルトンを表示(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="62"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="64"/>
         <source>Skeleton</source>
         <translation>スケルトン</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="70"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="72"/>
         <source>S&amp;kinning</source>
         <translation>スキニング(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="77"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="79"/>
         <source>&amp;Rigid (Bones Pin the Mesh)</source>
         <translation>剛体（ボーンがメッシュを固定）(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="79"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="81"/>
         <source>&amp;Linear Blend</source>
         <translation>線形ブレンド(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="81"/>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="83"/>
         <source>&amp;Cut-out (Limbs Turn over the Body)</source>
         <translation>切り絵（手足が胴体の上で回る）(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="115"/>
+        <source>Rigid</source>
+        <translation>リジッド</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="115"/>
+        <source>Blend</source>
+        <translation>ブレンド</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/main_window_skeleton.cpp" line="115"/>
+        <source>Cut-out</source>
+        <translation>切り絵</translation>
     </message>
     <message>
         <location filename="../ui/src/recovery/main_window_recovery.cpp" line="63"/>
@@ -4489,44 +4658,148 @@
         <translation>隙間を閉じる: 自動 (%1 px)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="39"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="41"/>
         <source>Close gaps up to </source>
         <translation>隙間を閉じる: 最大 </translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="40"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="42"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="41"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="43"/>
         <source>Openings in an outline up to this wide still make a region the Fill tool can fill (0 = only closed outlines)</source>
         <translation>この幅までの輪郭の切れ目は、塗りつぶしツールで塗れる領域として扱います（0 = 閉じた輪郭のみ）</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="86"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="88"/>
         <source>Fill All Enclosed Re&amp;gions</source>
         <translation>閉じた領域をすべて塗る(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="88"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="90"/>
         <source>Fill every closed region of the current object that has no fill, in the pen colour</source>
         <translation>現在のオブジェクトの塗られていない閉じた領域をすべてペンの色で塗ります</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="95"/>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="97"/>
         <source>The current object has no unfilled closed region</source>
         <translation>現在のオブジェクトに塗られていない閉じた領域はありません</translation>
     </message>
     <message>
-        <location filename="../ui/src/fill/main_window_fill.cpp" line="104"/>
-        <source>Fill</source>
-        <translation>塗りつぶし</translation>
+        <location filename="../ui/src/fill/main_window_fill.cpp" line="109"/>
+        <source>The colour the Fill tool fills with (the pen&apos;s)</source>
+        <translation>塗りツールが塗る色（ペンの色）</translation>
     </message>
     <message>
         <location filename="../ui/src/shade/main_window_shade.cpp" line="33"/>
         <source>Shading</source>
         <translation>陰影</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ManualBrowser</name>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="30"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
+        <source>Contents</source>
+        <translation>目次</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="31"/>
+        <source>Getting Started: Draw, Bend, Play</source>
+        <translation>はじめに: 描く、曲げる、再生する</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="32"/>
+        <source>Drawing and the View</source>
+        <translation>描画と表示</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="33"/>
+        <source>Fills and Shading</source>
+        <translation>塗りと陰影</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="34"/>
+        <source>Pins</source>
+        <translation>ピン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="35"/>
+        <source>Cages</source>
+        <translation>ケージ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="36"/>
+        <source>Bones and Skeletons</source>
+        <translation>ボーンとスケルトン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="37"/>
+        <source>In-betweens</source>
+        <translation>中割り</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="38"/>
+        <source>Timeline, Layers and Sound</source>
+        <translation>タイムライン、レイヤー、サウンド</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="39"/>
+        <source>Camera</source>
+        <translation>カメラ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="40"/>
+        <source>Reference Pictures and Video</source>
+        <translation>参照画像と動画</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
+        <source>Exporting</source>
+        <translation>書き出し</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
+        <source>Saving, Autosave and Recovery</source>
+        <translation>保存、自動保存、復元</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
+        <source>The Command Line</source>
+        <translation>コマンドライン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>キーボードショートカット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
+        <source>Installing</source>
+        <translation>インストール</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="82"/>
+        <source>Finbook Manual</source>
+        <translation>Finbook マニュアル</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="95"/>
+        <source>Back</source>
+        <translation>戻る</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
+        <source>Forward</source>
+        <translation>進む</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="102"/>
+        <source>Search the manual</source>
+        <translation>マニュアルを検索</translation>
     </message>
 </context>
 <context>
@@ -4661,6 +4934,212 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::PalettePanel</name>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="43"/>
+        <source>&quot;%1&quot; is not a palette Finbook can read: %2.</source>
+        <translation>&quot;%1&quot; は Finbook が読めるパレットではありません: %2。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="71"/>
+        <source>Swatch name</source>
+        <translation>色見本の名前</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="72"/>
+        <source>The chosen swatch&apos;s name: type and press Return to rename it</source>
+        <translation>選んだ色見本の名前: 入力して Return で名前を変えます</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="87"/>
+        <source>Add the pen&apos;s colour to the palette</source>
+        <translation>ペンの色をパレットに追加</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="88"/>
+        <source>Set</source>
+        <translation>設定</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="89"/>
+        <source>Give the chosen swatch the pen&apos;s colour</source>
+        <translation>選んだ色見本をペンの色にする</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="91"/>
+        <source>Move the chosen swatch one place earlier</source>
+        <translation>選んだ色見本を 1 つ前へ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="93"/>
+        <source>Move the chosen swatch one place later</source>
+        <translation>選んだ色見本を 1 つ後へ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="95"/>
+        <source>Delete the chosen swatch from the palette</source>
+        <translation>選んだ色見本をパレットから削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="97"/>
+        <source>Import, export, save and load palettes</source>
+        <translation>パレットの読み込み、書き出し、保存、呼び出し</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="100"/>
+        <source>&amp;Import GIMP Palette...</source>
+        <translation>GIMP パレットを読み込む(&amp;I)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="101"/>
+        <source>&amp;Export GIMP Palette...</source>
+        <translation>GIMP パレットを書き出す(&amp;E)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="103"/>
+        <source>&amp;Save as User Palette...</source>
+        <translation>ユーザーパレットとして保存(&amp;S)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="104"/>
+        <source>&amp;Load User Palette</source>
+        <translation>ユーザーパレットを読み込む(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="107"/>
+        <source>&amp;Reset to Finbook&apos;s Colours</source>
+        <translation>Finbook の色に戻す(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="108"/>
+        <source>Reset Palette</source>
+        <translation>パレットをリセット</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="168"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="190"/>
+        <source>A palette holds at most %1 colours.</source>
+        <translation>パレットに入る色は最大 %1 色です。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="195"/>
+        <source>Add Swatch</source>
+        <translation>色見本を追加</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="206"/>
+        <source>Recolour Swatch</source>
+        <translation>色見本の色を変更</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="216"/>
+        <source>Delete Swatch</source>
+        <translation>色見本を削除</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="227"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="264"/>
+        <source>Move Swatch</source>
+        <translation>色見本を移動</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="238"/>
+        <source>Rename Swatch</source>
+        <translation>色見本の名前を変更</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="314"/>
+        <source>it is far larger than a palette</source>
+        <translation>パレットにしては大きすぎます</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="323"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
+        <source>Import Palette</source>
+        <translation>パレットを読み込む</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="330"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
+        <source>The palette could not be saved as &quot;%1&quot;: %2</source>
+        <translation>パレットを &quot;%1&quot; として保存できませんでした: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="344"/>
+        <source>A user palette needs a name.</source>
+        <translation>ユーザーパレットには名前が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="346"/>
+        <source>The folder for user palettes (%1) could not be made.</source>
+        <translation>ユーザーパレットのフォルダ（%1）を作れませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="367"/>
+        <source>(no user palettes yet)</source>
+        <translation>（ユーザーパレットはまだありません）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="374"/>
+        <source>Load Palette</source>
+        <translation>パレットを読み込む</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
+        <source>Import GIMP Palette</source>
+        <translation>GIMP パレットを読み込む</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="381"/>
+        <source>GIMP palettes (*.gpl);;All files (*)</source>
+        <translation>GIMP パレット (*.gpl);;すべてのファイル (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="391"/>
+        <source>Export GIMP Palette</source>
+        <translation>GIMP パレットを書き出す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="393"/>
+        <source>GIMP palettes (*.gpl)</source>
+        <translation>GIMP パレット (*.gpl)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="400"/>
+        <source>Export Palette</source>
+        <translation>パレットを書き出す</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="402"/>
+        <source>Palette saved as &quot;%1&quot;.</source>
+        <translation>パレットを &quot;%1&quot; として保存しました。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <source>Save as User Palette</source>
+        <translation>ユーザーパレットとして保存</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <source>Name of the palette:</source>
+        <translation>パレットの名前:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <source>Save Palette</source>
+        <translation>パレットを保存</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="417"/>
+        <source>Saved as the user palette &quot;%1&quot;; Palette &gt; Load User Palette brings it into any drawing.</source>
+        <translation>ユーザーパレット &quot;%1&quot; として保存しました。パレット &gt; ユーザーパレットを読み込む で、どの絵にも使えます。</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::PenTool</name>
     <message>
         <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="37"/>
@@ -4673,7 +5152,7 @@
         <translation>線を描く。筆圧で太さが変わる</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_pen.cpp" line="118"/>
+        <location filename="../ui/src/tools/tool_pen.cpp" line="117"/>
         <source>Draw Stroke</source>
         <translation>ストロークを描画</translation>
     </message>
@@ -5001,22 +5480,22 @@
         <translation>投げ縄で線を選び、動かす・回す・拡大縮小する</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="314"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="340"/>
         <source>The strokes cannot be transformed that far.</source>
         <translation>ストロークをそこまで変形することはできません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="323"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="347"/>
         <source>Move Strokes</source>
         <translation>ストロークを移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="324"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="348"/>
         <source>Rotate Strokes</source>
         <translation>ストロークを回転</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/tool_select.cpp" line="325"/>
+        <location filename="../ui/src/tools/tool_select.cpp" line="349"/>
         <source>Scale Strokes</source>
         <translation>ストロークを拡大・縮小</translation>
     </message>
@@ -5168,47 +5647,72 @@
 <context>
     <name>finbook::ui::SkeletonPanel</name>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Bone complexity</source>
         <translation>ボーンの細かさ</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Merge junctions</source>
         <translation>分岐点の統合</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="21"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
         <source>Prune branches</source>
         <translation>枝の刈り込み</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="22"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
         <source>Collapse short bones</source>
         <translation>短いボーンをまとめる</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="24"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Bones</source>
+        <translation>ボーン</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Merge</source>
+        <translation>結合</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Prune</source>
+        <translation>刈り込み</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <source>Collapse</source>
+        <translation>まとめる</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="29"/>
         <source>More bones follow the shape more closely</source>
         <translation>ボーンが多いほど形状に忠実になります</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="25"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="30"/>
         <source>Junctions closer than this become one</source>
         <translation>これより近い分岐点は 1 つにまとめます</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="26"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="31"/>
         <source>Remove side branches shorter than this</source>
         <translation>これより短い側枝を削除します</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="27"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="32"/>
         <source>Collapse inner bones shorter than this into one joint</source>
         <translation>これより短い内側のボーンを 1 つのジョイントにまとめます</translation>
     </message>
     <message>
-        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="43"/>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="41"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/skeleton/skeleton_panel.cpp" line="55"/>
         <source>Pick the Bone tool (K) and click an object to give it a skeleton.</source>
         <translation>ボーンツール（K）を選んでオブジェクトをクリックすると、スケルトンを作成できます。</translation>
     </message>
@@ -5357,6 +5861,19 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::TimelineView</name>
+    <message>
+        <location filename="../ui/src/timeline/timeline_view.cpp" line="266"/>
+        <source>Drag along the frame numbers to scrub through the animation</source>
+        <translation>フレーム番号に沿ってドラッグするとアニメーションをスクラブします</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/timeline/timeline_view.cpp" line="268"/>
+        <source>Click to show this frame; drag the picture to move the frame elsewhere; Ctrl- or Shift-click to pick several</source>
+        <translation>クリックでこのフレームを表示、絵をドラッグでフレームを移動、Ctrl または Shift クリックで複数選択</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineWidget</name>
     <message>
         <location filename="../ui/src/timeline/timeline_widget.cpp" line="91"/>
@@ -5392,6 +5909,87 @@
         <location filename="../ui/src/timeline/timeline_widget.cpp" line="142"/>
         <source>Frame %1 of %2 · %3 fps</source>
         <translation>フレーム %1 / %2 · %3 fps</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::ToolOptionsBar</name>
+    <message>
+        <location filename="../ui/src/window/tool_options_bar.cpp" line="11"/>
+        <source>Tool Options</source>
+        <translation>ツールオプション</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/tool_options_bar.cpp" line="61"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::WelcomeDialog</name>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="37"/>
+        <source>Show this page whenever Finbook starts</source>
+        <translation>Finbook の起動時に毎回このページを表示</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="40"/>
+        <source>Welcome to Finbook</source>
+        <translation>Finbook へようこそ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="50"/>
+        <source>&amp;New Animation</source>
+        <translation>新しいアニメーション(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="50"/>
+        <source>Start an empty animation</source>
+        <translation>空のアニメーションを始める</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="51"/>
+        <source>&amp;Open...</source>
+        <translation>開く(&amp;O)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="51"/>
+        <source>Open a .finbook file</source>
+        <translation>.finbook ファイルを開く</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="52"/>
+        <source>Open the &amp;Example</source>
+        <translation>見本を開く(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="53"/>
+        <source>A short walk cycle drawn with Finbook, to look at and change</source>
+        <translation>Finbook で描いた短い歩きサイクル。見たり変えたりできます</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="54"/>
+        <source>Read the &amp;Manual</source>
+        <translation>マニュアルを読む(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="55"/>
+        <source>The Finbook Manual (F1 opens it at the tool in hand)</source>
+        <translation>Finbook マニュアル（F1 で手に持っているツールのページを開きます）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="63"/>
+        <source>(no recent files yet)</source>
+        <translation>（最近のファイルはまだありません）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="70"/>
+        <source>&lt;h2&gt;Draw — bend — play&lt;/h2&gt;&lt;p&gt;&lt;b&gt;1. Draw.&lt;/b&gt; Take the pen (&lt;b&gt;B&lt;/b&gt;) and draw a character; a tablet&apos;s pressure shapes the line. Close its outline loosely: small gaps close by themselves. Pick a colour in the Palette and click inside with the fill (&lt;b&gt;F&lt;/b&gt;).&lt;/p&gt;&lt;p&gt;&lt;b&gt;2. Bend.&lt;/b&gt; Instead of drawing the next frame again, duplicate the frame (&lt;b&gt;Ctrl+D&lt;/b&gt;) and bend the copy: click the drawing with the bone tool (&lt;b&gt;K&lt;/b&gt;) and drag a bone, or put pins on it (&lt;b&gt;P&lt;/b&gt;) and drag one; the rest follows as if drawn on rubber. The bent drawing is lines again: keep drawing on it.&lt;/p&gt;&lt;p&gt;&lt;b&gt;3. Play.&lt;/b&gt; Press &lt;b&gt;Return&lt;/b&gt; to play; Frame → In-betweens fills the frames between two poses. Onion skin (&lt;b&gt;O&lt;/b&gt;) shows the neighbours faintly. Save with &lt;b&gt;Ctrl+S&lt;/b&gt;, export a GIF, a video or a Lottie animation with File → Export.&lt;/p&gt;&lt;p&gt;&lt;a href=&quot;getting-started.md&quot;&gt;Read “Getting Started” in the manual&lt;/a&gt;, or press &lt;b&gt;F1&lt;/b&gt; at any time for the page of the tool in hand.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;描く — 曲げる — 再生する&lt;/h2&gt;&lt;p&gt;&lt;b&gt;1. 描く。&lt;/b&gt;ペン（&lt;b&gt;B&lt;/b&gt;）でキャラクターを描きます。タブレットの筆圧が線の太さになります。輪郭はゆるく閉じれば十分で、小さな隙間は自動で閉じます。パレットで色を選び、塗り（&lt;b&gt;F&lt;/b&gt;）で内側をクリックします。&lt;/p&gt;&lt;p&gt;&lt;b&gt;2. 曲げる。&lt;/b&gt;次のフレームを描き直す代わりに、フレームを複製（&lt;b&gt;Ctrl+D&lt;/b&gt;）してコピーを曲げます。ボーンツール（&lt;b&gt;K&lt;/b&gt;）で絵をクリックしてボーンをドラッグするか、ピン（&lt;b&gt;P&lt;/b&gt;）を打って 1 本をドラッグすると、残りはゴムに描いたようについてきます。曲げた絵はまた線なので、そのまま描き足せます。&lt;/p&gt;&lt;p&gt;&lt;b&gt;3. 再生する。&lt;/b&gt;&lt;b&gt;Return&lt;/b&gt; で再生します。フレーム → 中割りで 2 つのポーズの間のフレームを作ります。オニオンスキン（&lt;b&gt;O&lt;/b&gt;）は前後のフレームを薄く表示します。&lt;b&gt;Ctrl+S&lt;/b&gt; で保存し、ファイル → 書き出しで GIF、動画、Lottie アニメーションを書き出します。&lt;/p&gt;&lt;p&gt;&lt;a href=&quot;getting-started.md&quot;&gt;マニュアルの「Getting Started」を読む&lt;/a&gt;。いつでも &lt;b&gt;F1&lt;/b&gt; で手に持っているツールのページを開けます。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/welcome_dialog.cpp" line="91"/>
+        <source>Recent files:</source>
+        <translation>最近のファイル:</translation>
     </message>
 </context>
 </TS>

@@ -38,6 +38,7 @@ private slots:
     void toolKeysWorkAfterTouchingControls();
     void typingStaysInTheFieldUntilConfirmed();
     void aToolInAGestureGetsItsKeysFirst();
+    void viewTurnsByKeysAndByTheRotationField();
 
 private:
     QString tool() const { return m_window->canvas()->currentTool()->id(); }
@@ -98,6 +99,9 @@ void TestKeysFocus::returnConfirmsFieldsAndNeverPlays()
     QFETCH(int, key);
     auto *spin = m_window->findChild<QAbstractSpinBox *>(field);
     QVERIFY(spin);
+    if (field == QLatin1String("deform.meshDensity")) // among the pins' options
+        m_window->canvas()->setCurrentTool(QStringLiteral("tool.pin"));
+    QVERIFY(spin->isVisible());
     clickIntoText(spin);
     QCOMPARE(QApplication::focusWidget(), spin);
     typeText(typed);
@@ -193,8 +197,8 @@ void TestKeysFocus::toolKeysWorkAfterTouchingControls()
     clickSpinArrow(child<QSpinBox>("timeline.onionBefore"));
     QCOMPARE(m_window->editorState()->onionSkin().before, onionBefore + 1);
     QVERIFY(canvasHasFocus());
-    typeKey(Qt::Key_V);
-    QCOMPARE(tool(), QStringLiteral("tool.select"));
+    typeKey(Qt::Key_P); // the mesh density is among the pins' options
+    QCOMPARE(tool(), QStringLiteral("tool.pin"));
     clickSpinArrow(child<QDoubleSpinBox>("deform.meshDensity"));
     QVERIFY(canvasHasFocus());
     typeKey(Qt::Key_H);
@@ -306,6 +310,41 @@ void TestKeysFocus::aToolInAGestureGetsItsKeysFirst()
     QVERIFY(!playing());
     typeKey(Qt::Key_Return);
     QVERIFY(playing());
+}
+
+// 4 and 6 turn the view by 15°, 5 resets it, Shift+M mirrors it, from the canvas and after a
+// click on a panel; the status bar's Rotation field shows the turn and takes a typed one.
+void TestKeysFocus::viewTurnsByKeysAndByTheRotationField()
+{
+    ui::CanvasWidget *canvas = m_window->canvas();
+    auto *field = child<QDoubleSpinBox>("viewRotation");
+    QVERIFY(field);
+    typeKey(Qt::Key_6);
+    typeKey(Qt::Key_6);
+    QCOMPARE(canvas->rotation(), 30.0);
+    QCOMPARE(field->value(), 30.0);
+    typeKey(Qt::Key_4);
+    QCOMPARE(canvas->rotation(), 15.0);
+    typeKey(Qt::Key_M, Qt::ShiftModifier);
+    QVERIFY(canvas->isMirrored());
+    QCOMPARE(canvas->rotation(), -15.0);
+    QCOMPARE(field->value(), -15.0);
+    // After the mouse has touched a panel, the keys still reach the canvas's view.
+    clickSpinArrow(child<QSpinBox>("timeline.onionBefore"));
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_5);
+    QCOMPARE(canvas->rotation(), 0.0);
+    typeKey(Qt::Key_M, Qt::ShiftModifier);
+    QVERIFY(!canvas->isMirrored());
+    // A typed turn; Return hands the keyboard back to the canvas.
+    clickIntoText(field);
+    typeText(QStringLiteral("-100"));
+    typeKey(Qt::Key_Return);
+    QCOMPARE(canvas->rotation(), -100.0);
+    QVERIFY(canvasHasFocus());
+    typeKey(Qt::Key_4);
+    QCOMPARE(canvas->rotation(), -115.0);
+    QCOMPARE(undoCount(), 0); // the view is not the document
 }
 
 QTEST_MAIN(TestKeysFocus)

@@ -55,6 +55,11 @@ const QHash<QString, KeyList> &ShortcutRegistry::defaultMap()
         {QStringLiteral("view.onionSkin"), portable({"O"})},
         {QStringLiteral("view.showMesh"), portable({"M"})},
         {QStringLiteral("view.cameraView"), portable({"Shift+V"})},
+        // Krita's keys for turning the view; its M (mirror) shows the mesh here.
+        {QStringLiteral("view.rotateLeft"), portable({"4"})},
+        {QStringLiteral("view.rotateRight"), portable({"6"})},
+        {QStringLiteral("view.resetRotation"), portable({"5"})},
+        {QStringLiteral("view.mirror"), portable({"Shift+M"})},
         {QStringLiteral("tool.pen"), portable({"B"})},
         {QStringLiteral("tool.eraser"), portable({"E"})},
         {QStringLiteral("tool.select"), portable({"V"})},
@@ -82,6 +87,7 @@ const QHash<QString, KeyList> &ShortcutRegistry::defaultMap()
         {QStringLiteral("object.raise"), portable({"Ctrl+]"})},
         {QStringLiteral("object.lower"), portable({"Ctrl+["})},
         {QStringLiteral("deform.apply"), portable({"Ctrl+Shift+P"})},
+        {QStringLiteral("help.manual"), portable({"F1"})},
         {QStringLiteral("help.shortcuts"), portable({"Ctrl+/"})},
     };
     return map;

@@ -11,6 +11,7 @@
 #include <finbook/ui/keys/canvas_focus.h>
 #include <finbook/ui/keys/shortcut_registry.h>
 #include <finbook/ui/layers/layer_sheet.h>
+#include <finbook/ui/palette/palette_panel.h>
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/panels/objects_panel.h>
 #include <finbook/ui/reference/reference_panel.h>
@@ -29,10 +30,12 @@
 #include <finbook/ui/window/editor_memory.h>
 #include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/window/main_window.h>
+#include <finbook/ui/window/tool_options_bar.h>
 
 #include <QActionGroup>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenu>
@@ -73,13 +76,6 @@ MainWindow::MainWindow(QWidget *parent)
     arrangeToolBars();
     readSettings();
     rememberEditor();
-    // The saved window state may show either bar; the eraser's shows only with the eraser.
-    const bool erasing =
-        m_canvas->currentTool() && m_canvas->currentTool()->id() == QLatin1String("tool.eraser");
-    if (auto *eraserBar = findChild<EraserToolBar *>())
-        eraserBar->setVisible(erasing);
-    if (auto *brush = findChild<BrushToolBar *>())
-        brush->setVisible(!erasing);
     connect(m_doc->undoStack(), &QUndoStack::cleanChanged, this,
             [this](bool clean) { setWindowModified(!clean); });
     createRecovery();
@@ -118,20 +114,25 @@ void MainWindow::createCanvasAndTools()
     addTool(std::make_unique<ReferenceTool>());
     addTool(std::make_unique<CameraTool>());
     m_canvas->addOverlay(std::make_unique<CameraFrameOverlay>(m_canvas));
+    // One options bar follows the tool in hand; each tool adds its page (here the pen's, which
+    // the eyedropper shares, and the eraser's; the deformers and the fill add theirs).
+    m_options = new ToolOptionsBar(m_canvas, this);
+    addToolBar(Qt::TopToolBarArea, m_options);
+    m_docksMenu->addAction(m_options->toggleViewAction());
     auto *brush = new BrushToolBar(m_pen, this);
-    addToolBar(Qt::TopToolBarArea, brush);
-    // The eraser's mode and size take the brush's place while the eraser is in hand: both at
-    // once would push the cage controls into the top row's overflow menu at 1280 px.
+    brush->setObjectName(QStringLiteral("penOptions"));
+    brush->setMovable(false);
+    m_options->addPage(brush, {QStringLiteral("tool.pen"), QStringLiteral("tool.eyedropper")});
+    // Its swatches are the document palette's first colours.
+    const auto showPalette = [this, brush] { brush->setPalette(m_doc->palette()); };
+    connect(m_doc, &model::Document::paletteChanged, brush, showPalette);
+    connect(m_doc, &model::Document::documentReset, brush, showPalette);
+    showPalette();
     auto *eraserBar = new EraserToolBar(eraserTool, this);
-    insertToolBar(brush, eraserBar);
-    eraserBar->setVisible(false);
-    connect(m_canvas, &CanvasWidget::currentToolChanged, eraserBar,
-            [eraserBar, brush, eraserTool](CanvasTool *tool) {
-                eraserBar->setVisible(tool == eraserTool);
-                brush->setVisible(tool != eraserTool);
-            });
+    eraserBar->setObjectName(QStringLiteral("eraserOptions"));
+    eraserBar->setMovable(false);
+    m_options->addPage(eraserBar, {QStringLiteral("tool.eraser")});
     m_docksMenu->addAction(m_toolsBar->toggleViewAction());
-    m_docksMenu->addAction(brush->toggleViewAction());
 }
 
 QAction *MainWindow::addTool(std::unique_ptr<CanvasTool> tool)
@@ -230,7 +231,17 @@ void MainWindow::createDocks()
             });
     auto *history = new QUndoView(m_doc->undoStack());
     history->setEmptyLabel(tr("<opened document>"));
-    dock(history, QStringLiteral("historyDock"), tr("Undo History"), Qt::RightDockWidgetArea);
+    QDockWidget *historyDock =
+        dock(history, QStringLiteral("historyDock"), tr("Undo History"), Qt::RightDockWidgetArea);
+    // The palette shares the history's place as a tab, in front: it is what a drawing day
+    // reaches for more often.
+    auto *palette = new PalettePanel(m_doc, m_pen);
+    connect(palette, &PalettePanel::messagePosted, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 8000); });
+    QDockWidget *paletteDock =
+        dock(palette, QStringLiteral("paletteDock"), tr("Palette"), Qt::RightDockWidgetArea);
+    tabifyDockWidget(historyDock, paletteDock);
+    paletteDock->raise();
 }
 
 void MainWindow::createStatusBar()
@@ -246,6 +257,27 @@ void MainWindow::createStatusBar()
         statusBar()->addPermanentWidget(label);
     }
     m_zoomLabel->setMinimumWidth(60);
+    // The view's turn: shown as it changes, and typed to turn it (wrapping past ±180°).
+    m_rotationBox = new QDoubleSpinBox(this);
+    m_rotationBox->setObjectName(QStringLiteral("viewRotation"));
+    m_rotationBox->setRange(-180.0, 180.0);
+    m_rotationBox->setDecimals(1);
+    m_rotationBox->setSingleStep(15.0);
+    m_rotationBox->setWrapping(true);
+    m_rotationBox->setSuffix(QStringLiteral("°"));
+    m_rotationBox->setPrefix(tr("Rotation "));
+    m_rotationBox->setFrame(false);
+    m_rotationBox->setKeyboardTracking(false);
+    m_rotationBox->setToolTip(
+        tr("The view's rotation: the drawing is not changed. Shift+Space-drag on the canvas "
+           "turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it."));
+    statusBar()->insertPermanentWidget(3, m_rotationBox); // after the zoom
+    connect(m_rotationBox, &QDoubleSpinBox::valueChanged, m_canvas,
+            qOverload<qreal>(&CanvasWidget::setRotation));
+    connect(m_canvas, &CanvasWidget::viewTurned, m_rotationBox, [this](qreal rotation, bool) {
+        const QSignalBlocker quiet(m_rotationBox);
+        m_rotationBox->setValue(rotation);
+    });
     connectStatus();
     updateStatus();
 }

@@ -7,8 +7,10 @@
 #include <finbook/ui/dialogs/file_messages.h>
 #include <finbook/ui/window/editor_state.h>
 #include <finbook/ui/window/main_window.h>
+#include <finbook/ui/window/welcome_dialog.h>
 
 #include <QDir>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGuiApplication>
@@ -78,6 +80,44 @@ bool MainWindow::openFile(const QString &path)
     setFilePath(QFileInfo(path).absoluteFilePath());
     addRecentFile(m_path);
     return true;
+}
+
+bool MainWindow::openExample()
+{
+    if (!maybeSave())
+        return false;
+    // The example is inside the executable: it opens as a new, untitled animation, so saving
+    // asks where (an installed example is read-only anyway).
+    QFile file(QStringLiteral(":/examples/walk.finbook"));
+    if (!file.open(QIODevice::ReadOnly)) {
+        reportError(tr("Cannot Open the Example"), file.errorString());
+        return false;
+    }
+    auto loaded = model::readFinbook(file.readAll());
+    if (!loaded) {
+        reportError(tr("Cannot Open the Example"), loaded.error().message);
+        return false;
+    }
+    model::adoptLoadedDocument(*m_doc, std::move(*loaded));
+    setFilePath(QString());
+    statusBar()->showMessage(tr("The example walk cycle: change it and save it as your own."),
+                             8000);
+    return true;
+}
+
+void MainWindow::showWelcome()
+{
+    auto *welcome = new WelcomeDialog(recentFiles(), this);
+    welcome->setAttribute(Qt::WA_DeleteOnClose);
+    connect(welcome, &WelcomeDialog::newRequested, this, &MainWindow::newFile);
+    connect(welcome, &WelcomeDialog::openRequested, this, &MainWindow::open);
+    connect(welcome, &WelcomeDialog::exampleRequested, this, &MainWindow::openExample);
+    connect(welcome, &WelcomeDialog::recentRequested, this, [this](const QString &path) {
+        if (maybeSave())
+            openFile(path);
+    });
+    connect(welcome, &WelcomeDialog::manualRequested, this, &MainWindow::showManual);
+    welcome->show();
 }
 
 // "Open anyway": what is readable of a damaged file, as a new unsaved document, so saving it

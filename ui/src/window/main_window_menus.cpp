@@ -6,6 +6,7 @@
 #include <finbook/ui/dialogs/shortcuts_dialog.h>
 #include <finbook/ui/export/export_dialog.h>
 #include <finbook/ui/export/export_done.h>
+#include <finbook/ui/help/manual_browser.h>
 #include <finbook/ui/i18n/action_text.h>
 #include <finbook/ui/keys/shortcut_registry.h>
 #include <finbook/ui/layers/cel_editing.h>
@@ -70,8 +71,15 @@ void MainWindow::createFileMenu()
     connect(newAction, &QAction::triggered, this, &MainWindow::newFile);
     QAction *openAction = makeAction(QStringLiteral("file.open"), tr("&Open..."));
     connect(openAction, &QAction::triggered, this, &MainWindow::open);
+    QAction *example = makeAction(QStringLiteral("file.openExample"), tr("Open Exa&mple"));
+    connect(example, &QAction::triggered, this, &MainWindow::openExample);
+    QAction *welcome = makeAction(QStringLiteral("file.welcome"), tr("&Welcome..."));
+    connect(welcome, &QAction::triggered, this, &MainWindow::showWelcome);
+    m_fileMenu->addAction(welcome);
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(newAction);
     m_fileMenu->addAction(openAction);
+    m_fileMenu->addAction(example);
     m_recentMenu = m_fileMenu->addMenu(tr("Open &Recent"));
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
@@ -237,6 +245,23 @@ void MainWindow::createViewMenu()
     connect(actual, &QAction::triggered, m_canvas, &CanvasWidget::actualSize);
     m_viewMenu->addActions({zoomIn, zoomOut, fit, actual});
     m_viewMenu->addSeparator();
+    // Turning the view (not the drawing), as a sheet of paper is turned to draw a natural curve;
+    // Shift+Space-drag turns it freely, and the status bar's Rotation field takes a number.
+    QAction *rotateLeft = makeAction(QStringLiteral("view.rotateLeft"), tr("Rotate View &Left"));
+    connect(rotateLeft, &QAction::triggered, m_canvas, [this] { m_canvas->rotateBy(-15); });
+    QAction *rotateRight = makeAction(QStringLiteral("view.rotateRight"), tr("Rotate View &Right"));
+    connect(rotateRight, &QAction::triggered, m_canvas, [this] { m_canvas->rotateBy(15); });
+    QAction *resetRotation =
+        makeAction(QStringLiteral("view.resetRotation"), tr("R&eset View Rotation"));
+    connect(resetRotation, &QAction::triggered, m_canvas, &CanvasWidget::resetRotation);
+    // Flipping the view shows the drawing's proportions with fresh eyes; the document is kept.
+    QAction *mirror = makeAction(QStringLiteral("view.mirror"), tr("Mirror Vie&w"));
+    mirror->setCheckable(true);
+    connect(mirror, &QAction::toggled, m_canvas, &CanvasWidget::setMirrored);
+    connect(m_canvas, &CanvasWidget::viewTurned, mirror,
+            [mirror](qreal, bool mirrored) { mirror->setChecked(mirrored); });
+    m_viewMenu->addActions({rotateLeft, rotateRight, resetRotation, mirror});
+    m_viewMenu->addSeparator();
 
     QAction *onion = makeAction(QStringLiteral("view.onionSkin"), tr("O&nion Skin"));
     onion->setCheckable(true);
@@ -319,12 +344,28 @@ void MainWindow::createToolsMenu()
 void MainWindow::createHelpMenu()
 {
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    // F1 opens the page about the tool in hand.
+    QAction *manual = makeAction(QStringLiteral("help.manual"), tr("Finbook &Manual"));
+    connect(manual, &QAction::triggered, this, [this] {
+        const CanvasTool *tool = m_canvas->currentTool();
+        showManual(ManualBrowser::pageForTool(tool ? tool->id() : QString()));
+    });
     QAction *keys = makeAction(QStringLiteral("help.shortcuts"), tr("&Keyboard Shortcuts"));
     connect(keys, &QAction::triggered, this, &MainWindow::showShortcuts);
     QAction *about = makeAction(QStringLiteral("help.about"), tr("&About Finbook"));
     about->setMenuRole(QAction::AboutRole);
     connect(about, &QAction::triggered, this, &MainWindow::showAbout);
-    help->addActions({keys, about});
+    help->addActions({manual, keys, about});
+}
+
+void MainWindow::showManual(const QString &page)
+{
+    if (!m_manual)
+        m_manual = new ManualBrowser(this);
+    m_manual->openPage(page);
+    m_manual->show();
+    m_manual->raise();
+    m_manual->activateWindow();
 }
 
 void MainWindow::showPreferences()

@@ -22,6 +22,7 @@
 
 class QActionGroup;
 class QDockWidget;
+class QDoubleSpinBox;
 class QLabel;
 class QToolBar;
 
@@ -35,6 +36,8 @@ namespace finbook::ui {
 
 class CanvasTool;
 class CanvasWidget;
+class ManualBrowser;
+class ToolOptionsBar;
 class DeformActions;
 class CageActions;
 class EditorState;
@@ -81,6 +84,14 @@ public:
 
     // Asks to save unsaved changes; true when it is fine to go on (saved or discarded).
     bool maybeSave();
+
+    // The bundled example animation as a new, untitled document (after asking to save).
+    bool openExample();
+    // The welcome page (WelcomeDialog), not modal; File > Welcome, and at the first start.
+    void showWelcome();
+    // Shows the Finbook Manual at `page` (ManualBrowser::pages(); F1 opens the current tool's).
+    void showManual(const QString &page);
+    ManualBrowser *manual() const { return m_manual; }
 
     // Offers the recovery copies that Finbooks which did not close normally left (at start).
     void offerRecovery();
@@ -193,6 +204,9 @@ private:
     QLabel *m_toolLabel = nullptr;
     QLabel *m_frameLabel = nullptr;
     QLabel *m_zoomLabel = nullptr;
+    QDoubleSpinBox *m_rotationBox = nullptr; // the view's turn, typed or shown
+    ManualBrowser *m_manual = nullptr;       // made when first opened
+    ToolOptionsBar *m_options = nullptr;     // the options of the tool in hand
     QLabel *m_cursorLabel = nullptr;
 };
 
