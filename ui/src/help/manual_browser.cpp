@@ -160,6 +160,7 @@ void ManualBrowser::openPage(const QString &file)
         std::any_of(all.cbegin(), all.cend(), [&](const Page &p) { return p.file == file; });
     const QString shown = known ? file : QStringLiteral("index.md");
     m_text->setSource(QUrl(kRoot + shown), QTextDocument::MarkdownResource);
+    showCurrentInContents();
     // The words searched for, highlighted where they first appear on the page.
     if (!m_words.isEmpty()) {
         QList<QTextEdit::ExtraSelection> marks;
@@ -223,7 +224,7 @@ void ManualBrowser::showCurrentInContents()
     for (int row = 0; row < m_contents->count(); ++row)
         if (m_contents->item(row)->data(kFileRole).toString() == file) {
             const QSignalBlocker quiet(m_contents);
-            m_contents->setCurrentRow(row);
+            m_contents->setCurrentRow(row, QItemSelectionModel::ClearAndSelect);
         }
 }
 
