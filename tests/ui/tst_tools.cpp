@@ -256,6 +256,19 @@ void TestTools::eyedropperTakesALinesOrAFillsColour()
     QCOMPARE(pen->settings().color, QColor(0x20, 0x40, 0xc0));
     QCOMPARE(messages.count(), 1);
     QCOMPARE(m_doc->undoStack()->count(), steps); // the document did not change
+    // With the pen in hand, Ctrl+click takes a colour the same way, and draws nothing (also in
+    // a turned view).
+    m_canvas->setCurrentTool(QStringLiteral("tool.pen"));
+    m_canvas->setRotation(-40);
+    drag(m_canvas.get(), {m_canvas->mapFromCanvas({200, 201})}, Qt::LeftButton,
+         Qt::ControlModifier);
+    QCOMPARE(pen->settings().color, QColor(0xd0, 0x20, 0x20));
+    QCOMPARE(m_canvas->currentTool()->id(), QStringLiteral("tool.pen"));
+    QCOMPARE(m_doc->undoStack()->count(), steps);
+    // Without Ctrl the pen draws.
+    drag(m_canvas.get(),
+         {m_canvas->mapFromCanvas({350, 350}), m_canvas->mapFromCanvas({380, 360})});
+    QCOMPARE(m_doc->undoStack()->count(), steps + 1);
 }
 
 void TestTools::eraserErasesTouchedStrokeOnly()

@@ -332,7 +332,15 @@ void CanvasWidget::beginDrag(const ToolEvent &event, bool pan, bool rotate)
         setCursor(Qt::ClosedHandCursor);
         return;
     }
-    if (!m_tool || refusedOnLockedLayer())
+    if (!m_tool)
+        return;
+    // Ctrl+click with a painting tool: the eyedropper's click, and no drag.
+    if ((event.modifiers & Qt::ControlModifier) && m_tool->picksColourOnCtrlClick())
+        if (CanvasTool *picker = tool(QStringLiteral("tool.eyedropper"))) {
+            picker->press(event);
+            return;
+        }
+    if (refusedOnLockedLayer())
         return;
     m_drag = Drag::Tool;
     m_tool->press(event);

@@ -59,6 +59,10 @@ public:
     // Whether the tool edits the current layer's drawing: such tools do nothing on a locked
     // layer (the canvas says so instead). The hand, the camera and the reference do not.
     virtual bool editsLayer() const { return true; }
+    // Whether Ctrl+click with this tool takes a colour from the drawing (the eyedropper's
+    // click) instead of using the tool: the tools that paint with the pen's colour. Ctrl, as
+    // in Krita: Alt+click moves the window on many Linux desktops.
+    virtual bool picksColourOnCtrlClick() const { return false; }
 
     // Called when the tool becomes current / stops being current. deactivate() must finish
     // or cancel a drag in progress, close any undo macro the tool opened and drop its overlay.

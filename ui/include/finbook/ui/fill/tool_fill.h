@@ -24,6 +24,7 @@ public:
     QString description() const override { return tr("fill an enclosed region with colour"); }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_F); }
+    bool picksColourOnCtrlClick() const override { return true; }
     QCursor cursor() const override;
 
     void activate() override;

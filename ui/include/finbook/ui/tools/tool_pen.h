@@ -41,6 +41,7 @@ public:
     }
     QIcon icon() const override;
     QKeySequence defaultShortcut() const override { return QKeySequence(Qt::Key_B); }
+    bool picksColourOnCtrlClick() const override { return true; }
 
     const PenSettings &settings() const { return m_settings; }
     void setSettings(const PenSettings &settings);
