@@ -187,28 +187,25 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
         readReferenceSequenceSection(body);
         return !cut;
     }
-    if (t == kTagPalette && next == std::size(kOrder)) {
-        if (recovering()) {
-            try {
-                readPaletteSection(body);
-            } catch (const ReadFailure &failure) {
-                m_problems << failure.what;
-            }
-        } else {
-            readPaletteSection(body);
+    // The light and the palette: when recovering, a damaged one is left out (the default
+    // kept) and said; otherwise it fails the file.
+    const auto settingSection = [&](void (Reader::*section)(Cursor &)) {
+        if (!recovering()) {
+            (this->*section)(body);
+            return;
         }
+        try {
+            (this->*section)(body);
+        } catch (const ReadFailure &failure) {
+            m_problems << failure.what;
+        }
+    };
+    if (t == kTagPalette && next == std::size(kOrder)) {
+        settingSection(&Reader::readPaletteSection);
         return !cut;
     }
     if (t == kTagLight && next == std::size(kOrder)) {
-        if (recovering()) {
-            try {
-                readLightSection(body);
-            } catch (const ReadFailure &failure) {
-                m_problems << failure.what;
-            }
-        } else {
-            readLightSection(body);
-        }
+        settingSection(&Reader::readLightSection);
         return !cut;
     }
     if (sound) {
