@@ -29,6 +29,12 @@ int intArgument(const QStringList &args, const QString &name, int fallback)
     return at >= 0 && at + 1 < args.size() ? args[at + 1].toInt() : fallback;
 }
 
+double doubleArgument(const QStringList &args, const QString &name, double fallback)
+{
+    const int at = int(args.indexOf(name));
+    return at >= 0 && at + 1 < args.size() ? args[at + 1].toDouble() : fallback;
+}
+
 // One frame of wandering pen strokes, 200 points each, with smoothly varying pressure as a
 // tablet gives (so the renderer's width runs break up as they do on real drawings).
 model::Frame makeFrame(int points, QSize canvas)
@@ -85,6 +91,10 @@ int benchRepaint(const QStringList &args)
     canvas.resize(1280, 800);
     canvas.show();
     QApplication::processEvents();
+    // --rotation DEG: the view turned (and fitted again); --mirror: mirrored too.
+    const double rotation = doubleArgument(args, QStringLiteral("--rotation"), 0.0);
+    canvas.setMirrored(args.contains(QStringLiteral("--mirror")));
+    canvas.setRotation(rotation);
     canvas.fitToView();
     canvas.repaint(); // first paint allocates the backing store
 
@@ -109,16 +119,18 @@ int benchRepaint(const QStringList &args)
         double avg[1] = {0};
         return getloadavg(avg, 1) == 1 ? avg[0] : -1.0;
     }();
-    std::printf("{\"bench\":\"repaint\",\"points\":%lld,\"runs\":%d,\"widget\":\"%dx%d\","
+    std::printf("{\"bench\":\"repaint\",\"rotation\":%.1f,\"mirrored\":%s,"
+                "\"points\":%lld,\"runs\":%d,\"widget\":\"%dx%d\","
                 "\"zoom\":%.3f,\"median_ms_cold\":%.3f,\"p99_ms_cold\":%.3f,"
                 "\"median_ms_warm\":%.3f,\"p99_ms_warm\":%.3f,\"cpu_ms_cold\":%.3f,"
                 "\"cpu_ms_warm\":%.3f,\"cores\":%d,\"load_avg\":%.2f}\n",
-                doc.pointCount(), runs, canvas.width(), canvas.height(), canvas.zoom(),
-                bench::median(cold), bench::percentile(cold, 0.99), bench::median(warm),
-                bench::percentile(warm, 0.99), cpuCold, cpuWarm, QThread::idealThreadCount(), load);
+                canvas.rotation(), canvas.isMirrored() ? "true" : "false", doc.pointCount(), runs,
+                canvas.width(), canvas.height(), canvas.zoom(), bench::median(cold),
+                bench::percentile(cold, 0.99), bench::median(warm), bench::percentile(warm, 0.99),
+                cpuCold, cpuWarm, QThread::idealThreadCount(), load);
     return 0;
 }
 
 } // namespace
 
-FINBOOK_BENCH("repaint", "[--points 50000] [--runs 200]", benchRepaint);
+FINBOOK_BENCH("repaint", "[--points 50000] [--runs 200] [--rotation DEG] [--mirror]", benchRepaint);
