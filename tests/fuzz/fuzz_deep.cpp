@@ -21,7 +21,7 @@
 // the seed over the whole allowed range (zooms from a twentieth to fifty, turns of a hundred
 // revolutions, Bézier handles that overshoot).
 //
-// Run: build/asan/bin/finbook-fuzz-deep -rss_limit_mb=4096 -timeout=300 -max_len=256 CORPUS
+// Run: build/fuzz/bin/finbook-fuzz-deep -rss_limit_mb=4096 -timeout=300 -max_len=256 CORPUS
 #include "../model/deep_structures.h"
 #include "fuzz_checks.h"
 

@@ -113,8 +113,13 @@ Character drawCharacter(Document &doc, std::mt19937 &rng)
         const QPointF root = centre + QPointF(side * rx * 0.6, arm ? -ry * 0.45 : ry * 0.7);
         const double angle =
             side < 0 ? std::numbers::pi - uniform(rng, 0.1, 0.6) : uniform(rng, 0.1, 0.6);
-        add(limb(root, arm ? angle : std::numbers::pi / 2 - side * uniform(rng, 0.05, 0.3),
-                 uniform(rng, 90, 130), uniform(rng, 22, 32)));
+        // One draw after another, in the order the characters were first drawn with: as
+        // arguments of one call they came in an order the compiler chose (GCC the last
+        // first, clang the first first), so each compiler tested other characters.
+        const double width = uniform(rng, 22, 32);
+        const double length = uniform(rng, 90, 130);
+        const double heading = arm ? angle : std::numbers::pi / 2 - side * uniform(rng, 0.05, 0.3);
+        add(limb(root, heading, length, width));
     }
     if (auto all = fillAllRegionsCommand(&doc, c.group, 0xff808080))
         doc.undoStack()->push(all.release());
@@ -160,8 +165,9 @@ Rig randomRig(const Document &doc, Id g, RigKind kind, SkinningMode mode, std::m
         for (int k = 0; k < 2; ++k) {
             const std::size_t at =
                 std::uniform_int_distribution<std::size_t>(0, corners->size() - 1)(rng);
-            rig.cage.posed[at] += QPointF(uniform(rng, -0.2, 0.2) * box.width(),
-                                          uniform(rng, -0.2, 0.2) * box.height());
+            const double dy = uniform(rng, -0.2, 0.2); // (in that order: as above)
+            const double dx = uniform(rng, -0.2, 0.2);
+            rig.cage.posed[at] += QPointF(dx * box.width(), dy * box.height());
         }
     } else {
         const auto built = buildSkeletonRig(group, {}, std::nullopt, doc.settings().closeGap);
