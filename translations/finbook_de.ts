@@ -1490,7 +1490,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
@@ -1505,135 +1505,135 @@
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
         <source>a sound clip comes before the frames</source>
         <translation>ein Tonclip steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>the layers come before the frames</source>
         <translation>die Ebenen stehen vor den Einzelbildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the layers are repeated</source>
         <translation>die Ebenen kommen doppelt vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="232"/>
         <source>the camera comes before the frames</source>
         <translation>die Kamera steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
         <source>the camera is repeated</source>
         <translation>die Kamera kommt mehrfach vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="251"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
         <source>the palette</source>
         <translation>die Palette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="296"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="294"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="310"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="308"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="326"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="339"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="343"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="351"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="357"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="388"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1919,22 +1919,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="413"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="434"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="431"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="439"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="448"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="445"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -3010,52 +3010,62 @@
 <context>
     <name>finbook::ui::BrushToolBar</name>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="15"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="16"/>
         <source>Brush</source>
         <translation>Pinsel</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="23"/>
+        <source>Pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="37"/>
         <source>Width:</source>
         <translation>Breite:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="44"/>
         <source>Smoothing:</source>
         <translation>Glättung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="47"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>Wie stark ein Strich beim Absetzen des Stifts geglättet wird</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="47"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="49"/>
         <source>Stabiliser:</source>
         <translation>Stabilisator:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="50"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="52"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="51"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="53"/>
         <source>Steadies the line while you draw: the ink follows the pen on a string this long (4 screen pixels a step), so a shaky hand draws a smooth line. Off: the ink is under the pen.</source>
         <translation>Beruhigt die Linie beim Zeichnen: Die Tinte folgt dem Stift an einer Schnur dieser Länge (4 Bildschirmpixel je Stufe), sodass eine zittrige Hand eine glatte Linie zeichnet. Aus: Die Tinte liegt unter dem Stift.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="104"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="58"/>
+        <source>A tablet&apos;s pressure sets the line&apos;s width; off, every line has the full width</source>
+        <translation>Der Druck des Grafiktabletts bestimmt die Linienbreite; aus, hat jede Linie die volle Breite</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="116"/>
         <source>Pen colour %1</source>
         <translation>Stiftfarbe %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="105"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="117"/>
         <source>Pen colour %1 (%2)</source>
         <translation>Stiftfarbe %1 (%2)</translation>
     </message>
@@ -4954,205 +4964,205 @@
 <context>
     <name>finbook::ui::PalettePanel</name>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="43"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="44"/>
         <source>&quot;%1&quot; is not a palette Finbook can read: %2.</source>
         <translation>&quot;%1&quot; ist keine Palette, die Finbook lesen kann: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="71"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="72"/>
         <source>Swatch name</source>
         <translation>Name des Farbfelds</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="72"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="73"/>
         <source>The chosen swatch&apos;s name: type and press Return to rename it</source>
         <translation>Der Name des gewählten Farbfelds: eingeben und Eingabe drücken, um es umzubenennen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="87"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="89"/>
         <source>Add the pen&apos;s colour to the palette</source>
         <translation>Die Stiftfarbe zur Palette hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="88"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="90"/>
         <source>Set</source>
         <translation>Setzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="89"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="91"/>
         <source>Give the chosen swatch the pen&apos;s colour</source>
         <translation>Dem gewählten Farbfeld die Stiftfarbe geben</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="91"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="93"/>
         <source>Move the chosen swatch one place earlier</source>
         <translation>Das gewählte Farbfeld eine Stelle nach vorn</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="93"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="95"/>
         <source>Move the chosen swatch one place later</source>
         <translation>Das gewählte Farbfeld eine Stelle nach hinten</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="95"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="97"/>
         <source>Delete the chosen swatch from the palette</source>
         <translation>Das gewählte Farbfeld aus der Palette löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="97"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="99"/>
         <source>Import, export, save and load palettes</source>
         <translation>Paletten importieren, exportieren, speichern und laden</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="100"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="102"/>
         <source>&amp;Import GIMP Palette...</source>
         <translation>GIMP-Palette &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="101"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="103"/>
         <source>&amp;Export GIMP Palette...</source>
         <translation>GIMP-Palette &amp;exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="103"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="105"/>
         <source>&amp;Save as User Palette...</source>
         <translation>Als Benutzerpalette &amp;speichern...</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="104"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="106"/>
         <source>&amp;Load User Palette</source>
         <translation>Benutzerpalette &amp;laden</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="107"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="109"/>
         <source>&amp;Reset to Finbook&apos;s Colours</source>
         <translation>Auf Finbooks Farben &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="108"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="110"/>
         <source>Reset Palette</source>
         <translation>Palette zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="168"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="174"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="190"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="196"/>
         <source>A palette holds at most %1 colours.</source>
         <translation>Eine Palette fasst höchstens %1 Farben.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="195"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="201"/>
         <source>Add Swatch</source>
         <translation>Farbfeld hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="206"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="212"/>
         <source>Recolour Swatch</source>
         <translation>Farbfeld umfärben</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="216"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="222"/>
         <source>Delete Swatch</source>
         <translation>Farbfeld löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="227"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="264"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="233"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="270"/>
         <source>Move Swatch</source>
         <translation>Farbfeld verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="238"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="244"/>
         <source>Rename Swatch</source>
         <translation>Farbfeld umbenennen</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="314"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="320"/>
         <source>it is far larger than a palette</source>
         <translation>sie ist weit größer als eine Palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="323"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="329"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="392"/>
         <source>Import Palette</source>
         <translation>Palette importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="330"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="336"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="358"/>
         <source>The palette could not be saved as &quot;%1&quot;: %2</source>
         <translation>Die Palette konnte nicht als &quot;%1&quot; gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="344"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="350"/>
         <source>A user palette needs a name.</source>
         <translation>Eine Benutzerpalette braucht einen Namen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="346"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
         <source>The folder for user palettes (%1) could not be made.</source>
         <translation>Der Ordner für Benutzerpaletten (%1) konnte nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="367"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="373"/>
         <source>(no user palettes yet)</source>
         <translation>(noch keine Benutzerpaletten)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="374"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
         <source>Load Palette</source>
         <translation>Palette laden</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
         <source>Import GIMP Palette</source>
         <translation>GIMP-Palette importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="381"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="387"/>
         <source>GIMP palettes (*.gpl);;All files (*)</source>
         <translation>GIMP-Paletten (*.gpl);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="391"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="397"/>
         <source>Export GIMP Palette</source>
         <translation>GIMP-Palette exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="393"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="399"/>
         <source>GIMP palettes (*.gpl)</source>
         <translation>GIMP-Paletten (*.gpl)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="400"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="406"/>
         <source>Export Palette</source>
         <translation>Palette exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="402"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="408"/>
         <source>Palette saved as &quot;%1&quot;.</source>
         <translation>Palette als &quot;%1&quot; gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
         <source>Save as User Palette</source>
         <translation>Als Benutzerpalette speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
         <source>Name of the palette:</source>
         <translation>Name der Palette:</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="421"/>
         <source>Save Palette</source>
         <translation>Palette speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="417"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="423"/>
         <source>Saved as the user palette &quot;%1&quot;; Palette &gt; Load User Palette brings it into any drawing.</source>
         <translation>Als Benutzerpalette &quot;%1&quot; gespeichert; Palette &gt; Benutzerpalette laden bringt sie in jede Zeichnung.</translation>
     </message>
@@ -5160,12 +5170,12 @@
 <context>
     <name>finbook::ui::PenTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="37"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="40"/>
         <source>Pen</source>
         <translation>Stift</translation>
     </message>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="40"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="43"/>
         <source>draw lines; the pen&apos;s pressure sets their width</source>
         <translation>Linien zeichnen; der Stiftdruck bestimmt ihre Breite</translation>
     </message>

@@ -1490,7 +1490,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
@@ -1505,135 +1505,135 @@
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
         <source>a sound clip comes before the frames</source>
         <translation>un extrait sonore précède les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>the layers come before the frames</source>
         <translation>les calques viennent avant les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the layers are repeated</source>
         <translation>les calques sont répétés</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="232"/>
         <source>the camera comes before the frames</source>
         <translation>la caméra vient avant les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
         <source>the camera is repeated</source>
         <translation>la caméra est répétée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="251"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
         <source>the palette</source>
         <translation>la palette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="296"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="294"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="310"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="308"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="326"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="339"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="343"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="351"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="357"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="388"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1919,22 +1919,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="413"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="434"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="431"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="439"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="448"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="445"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -3010,52 +3010,62 @@
 <context>
     <name>finbook::ui::BrushToolBar</name>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="15"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="16"/>
         <source>Brush</source>
         <translation>Pinceau</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="23"/>
+        <source>Pressure</source>
+        <translation>Pression</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="37"/>
         <source>Width:</source>
         <translation>Épaisseur&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="44"/>
         <source>Smoothing:</source>
         <translation>Lissage&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="47"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>Force du lissage appliqué au trait quand le stylet se lève</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="47"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="49"/>
         <source>Stabiliser:</source>
         <translation>Stabilisateur :</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="50"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="52"/>
         <source>Off</source>
         <translation>Désactivé</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="51"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="53"/>
         <source>Steadies the line while you draw: the ink follows the pen on a string this long (4 screen pixels a step), so a shaky hand draws a smooth line. Off: the ink is under the pen.</source>
         <translation>Stabilise le trait pendant le dessin : l&apos;encre suit le stylet au bout d&apos;un fil de cette longueur (4 pixels d&apos;écran par cran), si bien qu&apos;une main tremblante trace une ligne lisse. Désactivé : l&apos;encre est sous le stylet.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="104"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="58"/>
+        <source>A tablet&apos;s pressure sets the line&apos;s width; off, every line has the full width</source>
+        <translation>La pression de la tablette fixe la largeur du trait ; désactivée, chaque trait a toute sa largeur</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="116"/>
         <source>Pen colour %1</source>
         <translation>Couleur du stylo&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="105"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="117"/>
         <source>Pen colour %1 (%2)</source>
         <translation>Couleur du stylo %1 (%2)</translation>
     </message>
@@ -4954,205 +4964,205 @@
 <context>
     <name>finbook::ui::PalettePanel</name>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="43"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="44"/>
         <source>&quot;%1&quot; is not a palette Finbook can read: %2.</source>
         <translation>« %1 » n&apos;est pas une palette que Finbook sait lire : %2.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="71"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="72"/>
         <source>Swatch name</source>
         <translation>Nom de la nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="72"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="73"/>
         <source>The chosen swatch&apos;s name: type and press Return to rename it</source>
         <translation>Le nom de la nuance choisie : tapez puis Entrée pour la renommer</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="87"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="89"/>
         <source>Add the pen&apos;s colour to the palette</source>
         <translation>Ajouter la couleur du stylo à la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="88"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="90"/>
         <source>Set</source>
         <translation>Appliquer</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="89"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="91"/>
         <source>Give the chosen swatch the pen&apos;s colour</source>
         <translation>Donner la couleur du stylo à la nuance choisie</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="91"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="93"/>
         <source>Move the chosen swatch one place earlier</source>
         <translation>Avancer la nuance choisie d&apos;une place</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="93"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="95"/>
         <source>Move the chosen swatch one place later</source>
         <translation>Reculer la nuance choisie d&apos;une place</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="95"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="97"/>
         <source>Delete the chosen swatch from the palette</source>
         <translation>Supprimer la nuance choisie de la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="97"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="99"/>
         <source>Import, export, save and load palettes</source>
         <translation>Importer, exporter, enregistrer et charger des palettes</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="100"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="102"/>
         <source>&amp;Import GIMP Palette...</source>
         <translation>&amp;Importer une palette GIMP...</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="101"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="103"/>
         <source>&amp;Export GIMP Palette...</source>
         <translation>&amp;Exporter une palette GIMP...</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="103"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="105"/>
         <source>&amp;Save as User Palette...</source>
         <translation>&amp;Enregistrer comme palette personnelle...</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="104"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="106"/>
         <source>&amp;Load User Palette</source>
         <translation>&amp;Charger une palette personnelle</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="107"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="109"/>
         <source>&amp;Reset to Finbook&apos;s Colours</source>
         <translation>&amp;Revenir aux couleurs de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="108"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="110"/>
         <source>Reset Palette</source>
         <translation>Réinitialiser la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="168"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="174"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="190"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="196"/>
         <source>A palette holds at most %1 colours.</source>
         <translation>Une palette contient au plus %1 couleurs.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="195"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="201"/>
         <source>Add Swatch</source>
         <translation>Ajouter une nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="206"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="212"/>
         <source>Recolour Swatch</source>
         <translation>Recolorer la nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="216"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="222"/>
         <source>Delete Swatch</source>
         <translation>Supprimer la nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="227"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="264"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="233"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="270"/>
         <source>Move Swatch</source>
         <translation>Déplacer la nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="238"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="244"/>
         <source>Rename Swatch</source>
         <translation>Renommer la nuance</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="314"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="320"/>
         <source>it is far larger than a palette</source>
         <translation>il est bien plus gros qu&apos;une palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="323"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="329"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="392"/>
         <source>Import Palette</source>
         <translation>Importer la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="330"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="336"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="358"/>
         <source>The palette could not be saved as &quot;%1&quot;: %2</source>
         <translation>La palette n&apos;a pas pu être enregistrée sous « %1 » : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="344"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="350"/>
         <source>A user palette needs a name.</source>
         <translation>Une palette personnelle a besoin d&apos;un nom.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="346"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
         <source>The folder for user palettes (%1) could not be made.</source>
         <translation>Le dossier des palettes personnelles (%1) n&apos;a pas pu être créé.</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="367"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="373"/>
         <source>(no user palettes yet)</source>
         <translation>(pas encore de palette personnelle)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="374"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
         <source>Load Palette</source>
         <translation>Charger la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
         <source>Import GIMP Palette</source>
         <translation>Importer une palette GIMP</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="381"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="387"/>
         <source>GIMP palettes (*.gpl);;All files (*)</source>
         <translation>Palettes GIMP (*.gpl);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="391"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="397"/>
         <source>Export GIMP Palette</source>
         <translation>Exporter une palette GIMP</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="393"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="399"/>
         <source>GIMP palettes (*.gpl)</source>
         <translation>Palettes GIMP (*.gpl)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="400"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="406"/>
         <source>Export Palette</source>
         <translation>Exporter la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="402"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="408"/>
         <source>Palette saved as &quot;%1&quot;.</source>
         <translation>Palette enregistrée sous « %1 ».</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
         <source>Save as User Palette</source>
         <translation>Enregistrer comme palette personnelle</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
         <source>Name of the palette:</source>
         <translation>Nom de la palette :</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="421"/>
         <source>Save Palette</source>
         <translation>Enregistrer la palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="417"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="423"/>
         <source>Saved as the user palette &quot;%1&quot;; Palette &gt; Load User Palette brings it into any drawing.</source>
         <translation>Enregistrée comme palette personnelle « %1 » ; Palette &gt; Charger une palette personnelle l&apos;amène dans tout dessin.</translation>
     </message>
@@ -5160,12 +5170,12 @@
 <context>
     <name>finbook::ui::PenTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="37"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="40"/>
         <source>Pen</source>
         <translation>Stylo</translation>
     </message>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="40"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="43"/>
         <source>draw lines; the pen&apos;s pressure sets their width</source>
         <translation>tracer des traits ; la pression du stylet règle leur épaisseur</translation>
     </message>

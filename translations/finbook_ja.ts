@@ -1485,7 +1485,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="259"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
@@ -1500,135 +1500,135 @@
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="217"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
         <source>a sound clip comes before the frames</source>
         <translation>サウンドクリップがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="224"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
         <source>the layers come before the frames</source>
         <translation>レイヤーがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="226"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the layers are repeated</source>
         <translation>レイヤーが繰り返されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="235"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="232"/>
         <source>the camera comes before the frames</source>
         <translation>カメラがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="237"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
         <source>the camera is repeated</source>
         <translation>カメラが重複しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="254"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="251"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="268"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
         <source>the palette</source>
         <translation>パレット</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="296"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="294"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="369"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="310"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="311"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="308"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="315"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="322"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="326"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="337"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="338"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="339"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="346"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="343"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="351"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="360"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="357"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="388"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1912,22 +1912,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="416"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="413"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="434"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="431"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="439"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="448"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="445"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -2997,52 +2997,62 @@
 <context>
     <name>finbook::ui::BrushToolBar</name>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="15"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="16"/>
         <source>Brush</source>
         <translation>ブラシ</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="35"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="23"/>
+        <source>Pressure</source>
+        <translation>筆圧</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="37"/>
         <source>Width:</source>
         <translation>太さ:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="40"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
         <source> px</source>
         <translation> px</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="42"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="44"/>
         <source>Smoothing:</source>
         <translation>スムージング:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="45"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="47"/>
         <source>How much a stroke is smoothed when the pen lifts</source>
         <translation>ペンを離したときにストロークをどれだけ滑らかにするか</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="47"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="49"/>
         <source>Stabiliser:</source>
         <translation>手ぶれ補正:</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="50"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="52"/>
         <source>Off</source>
         <translation>オフ</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="51"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="53"/>
         <source>Steadies the line while you draw: the ink follows the pen on a string this long (4 screen pixels a step), so a shaky hand draws a smooth line. Off: the ink is under the pen.</source>
         <translation>描いている間の線を安定させます。インクはこの長さ（1 段階につき画面の 4 ピクセル）の糸で筆先に引かれるので、手が震えても滑らかな線になります。オフ: インクは筆先の真下に出ます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="104"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="58"/>
+        <source>A tablet&apos;s pressure sets the line&apos;s width; off, every line has the full width</source>
+        <translation>タブレットの筆圧で線の太さが決まります。オフにすると、どの線も最大の太さになります</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="116"/>
         <source>Pen colour %1</source>
         <translation>ペンの色: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="105"/>
+        <location filename="../ui/src/tools/brush_tool_bar.cpp" line="117"/>
         <source>Pen colour %1 (%2)</source>
         <translation>ペンの色 %1（%2）</translation>
     </message>
@@ -4936,205 +4946,205 @@
 <context>
     <name>finbook::ui::PalettePanel</name>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="43"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="44"/>
         <source>&quot;%1&quot; is not a palette Finbook can read: %2.</source>
         <translation>&quot;%1&quot; は Finbook が読めるパレットではありません: %2。</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="71"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="72"/>
         <source>Swatch name</source>
         <translation>色見本の名前</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="72"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="73"/>
         <source>The chosen swatch&apos;s name: type and press Return to rename it</source>
         <translation>選んだ色見本の名前: 入力して Return で名前を変えます</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="87"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="89"/>
         <source>Add the pen&apos;s colour to the palette</source>
         <translation>ペンの色をパレットに追加</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="88"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="90"/>
         <source>Set</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="89"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="91"/>
         <source>Give the chosen swatch the pen&apos;s colour</source>
         <translation>選んだ色見本をペンの色にする</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="91"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="93"/>
         <source>Move the chosen swatch one place earlier</source>
         <translation>選んだ色見本を 1 つ前へ</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="93"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="95"/>
         <source>Move the chosen swatch one place later</source>
         <translation>選んだ色見本を 1 つ後へ</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="95"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="97"/>
         <source>Delete the chosen swatch from the palette</source>
         <translation>選んだ色見本をパレットから削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="97"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="99"/>
         <source>Import, export, save and load palettes</source>
         <translation>パレットの読み込み、書き出し、保存、呼び出し</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="100"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="102"/>
         <source>&amp;Import GIMP Palette...</source>
         <translation>GIMP パレットを読み込む(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="101"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="103"/>
         <source>&amp;Export GIMP Palette...</source>
         <translation>GIMP パレットを書き出す(&amp;E)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="103"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="105"/>
         <source>&amp;Save as User Palette...</source>
         <translation>ユーザーパレットとして保存(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="104"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="106"/>
         <source>&amp;Load User Palette</source>
         <translation>ユーザーパレットを読み込む(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="107"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="109"/>
         <source>&amp;Reset to Finbook&apos;s Colours</source>
         <translation>Finbook の色に戻す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="108"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="110"/>
         <source>Reset Palette</source>
         <translation>パレットをリセット</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="168"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="174"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="190"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="196"/>
         <source>A palette holds at most %1 colours.</source>
         <translation>パレットに入る色は最大 %1 色です。</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="195"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="201"/>
         <source>Add Swatch</source>
         <translation>色見本を追加</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="206"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="212"/>
         <source>Recolour Swatch</source>
         <translation>色見本の色を変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="216"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="222"/>
         <source>Delete Swatch</source>
         <translation>色見本を削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="227"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="264"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="233"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="270"/>
         <source>Move Swatch</source>
         <translation>色見本を移動</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="238"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="244"/>
         <source>Rename Swatch</source>
         <translation>色見本の名前を変更</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="314"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="320"/>
         <source>it is far larger than a palette</source>
         <translation>パレットにしては大きすぎます</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="323"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="329"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="392"/>
         <source>Import Palette</source>
         <translation>パレットを読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="330"/>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="336"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="358"/>
         <source>The palette could not be saved as &quot;%1&quot;: %2</source>
         <translation>パレットを &quot;%1&quot; として保存できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="344"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="350"/>
         <source>A user palette needs a name.</source>
         <translation>ユーザーパレットには名前が必要です。</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="346"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="352"/>
         <source>The folder for user palettes (%1) could not be made.</source>
         <translation>ユーザーパレットのフォルダ（%1）を作れませんでした。</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="367"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="373"/>
         <source>(no user palettes yet)</source>
         <translation>（ユーザーパレットはまだありません）</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="374"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
         <source>Load Palette</source>
         <translation>パレットを読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="380"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="386"/>
         <source>Import GIMP Palette</source>
         <translation>GIMP パレットを読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="381"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="387"/>
         <source>GIMP palettes (*.gpl);;All files (*)</source>
         <translation>GIMP パレット (*.gpl);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="391"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="397"/>
         <source>Export GIMP Palette</source>
         <translation>GIMP パレットを書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="393"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="399"/>
         <source>GIMP palettes (*.gpl)</source>
         <translation>GIMP パレット (*.gpl)</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="400"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="406"/>
         <source>Export Palette</source>
         <translation>パレットを書き出す</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="402"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="408"/>
         <source>Palette saved as &quot;%1&quot;.</source>
         <translation>パレットを &quot;%1&quot; として保存しました。</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
         <source>Save as User Palette</source>
         <translation>ユーザーパレットとして保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="409"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
         <source>Name of the palette:</source>
         <translation>パレットの名前:</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="415"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="421"/>
         <source>Save Palette</source>
         <translation>パレットを保存</translation>
     </message>
     <message>
-        <location filename="../ui/src/palette/palette_panel.cpp" line="417"/>
+        <location filename="../ui/src/palette/palette_panel.cpp" line="423"/>
         <source>Saved as the user palette &quot;%1&quot;; Palette &gt; Load User Palette brings it into any drawing.</source>
         <translation>ユーザーパレット &quot;%1&quot; として保存しました。パレット &gt; ユーザーパレットを読み込む で、どの絵にも使えます。</translation>
     </message>
@@ -5142,12 +5152,12 @@
 <context>
     <name>finbook::ui::PenTool</name>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="37"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="40"/>
         <source>Pen</source>
         <translation>ペン</translation>
     </message>
     <message>
-        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="40"/>
+        <location filename="../ui/include/finbook/ui/tools/tool_pen.h" line="43"/>
         <source>draw lines; the pen&apos;s pressure sets their width</source>
         <translation>線を描く。筆圧で太さが変わる</translation>
     </message>

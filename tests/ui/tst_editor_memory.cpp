@@ -8,6 +8,7 @@
 #include <finbook/ui/window/editor_memory.h>
 #include <finbook/ui/window/editor_state.h>
 
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSpinBox>
@@ -72,6 +73,7 @@ void TestEditorMemory::penOnionAndToolComeBack()
     auto *stabiliser = child<QSpinBox>(QStringLiteral("penStabiliser"));
     clickSpinArrow(stabiliser, true);
     clickSpinArrow(stabiliser, true);
+    QTest::mouseClick(child<QCheckBox>(QStringLiteral("penPressure")), Qt::LeftButton);
     clickSpinArrow(child<QSpinBox>(QStringLiteral("timeline.onionBefore")), true);
     clickSpinArrow(child<QSpinBox>(QStringLiteral("timeline.onionBefore")), true);
     clickSpinArrow(child<QSpinBox>(QStringLiteral("timeline.onionAfter")), false);
@@ -83,6 +85,7 @@ void TestEditorMemory::penOnionAndToolComeBack()
     QCOMPARE(pen.width, 7.5);
     QCOMPARE(pen.smoothing, ui::PenSettings{}.smoothing + 1);
     QCOMPARE(pen.stabiliser, 2);
+    QVERIFY(!pen.pressure);
     const ui::OnionSkin onion = m_window->editorState()->onionSkin();
     QCOMPARE(onion.before, 3);
     QCOMPARE(onion.after, 0);
@@ -96,6 +99,7 @@ void TestEditorMemory::penOnionAndToolComeBack()
     // The controls show what came back.
     QCOMPARE(child<QDoubleSpinBox>(QStringLiteral("penWidth"))->value(), 7.5);
     QCOMPARE(child<QSpinBox>(QStringLiteral("penStabiliser"))->value(), 2);
+    QVERIFY(!child<QCheckBox>(QStringLiteral("penPressure"))->isChecked());
     QCOMPARE(child<QSpinBox>(QStringLiteral("timeline.onionBefore"))->value(), 3);
     QCOMPARE(child<QSpinBox>(QStringLiteral("timeline.onionAfter"))->value(), 0);
     QVERIFY(m_window->action(QStringLiteral("view.onionSkin"))->isChecked());

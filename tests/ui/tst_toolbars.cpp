@@ -158,7 +158,9 @@ void TestToolbars::optionsFollowTheToolInHand()
         const char *page;
         std::vector<const char *> shows;
     } expected[] = {
-        {"tool.pen", "penOptions", {"penColor", "penWidth", "penSmoothing", "penStabiliser"}},
+        {"tool.pen",
+         "penOptions",
+         {"penColor", "penWidth", "penSmoothing", "penStabiliser", "penPressure"}},
         {"tool.eyedropper", "penOptions", {"penColor"}},
         {"tool.eraser", "eraserOptions", {}},
         {"tool.pin", "pinOptions", {"deform.meshDensity"}},

@@ -134,6 +134,18 @@ void TestTools::penUsesPressureFromTablet()
     const auto &points = m_doc->frameAt(0).groups[0].strokes[0].data->points;
     QVERIFY(points.front().pressure < 0.3f);
     QVERIFY(points.back().pressure > 0.8f);
+    // Pressure off (the pen's options): the tablet draws every point at full width.
+    auto *pen = static_cast<ui::PenTool *>(m_canvas->tool(QStringLiteral("tool.pen")));
+    ui::PenSettings s = pen->settings();
+    s.pressure = false;
+    pen->setSettings(s);
+    tablet(QEvent::TabletPress, {20, 60}, 0.2, Qt::LeftButton);
+    for (int i = 1; i <= 10; ++i)
+        tablet(QEvent::TabletMove, {20.0 + 10 * i, 60}, 0.2 + 0.07 * i, Qt::LeftButton);
+    tablet(QEvent::TabletRelease, {120, 60}, 0.9, Qt::NoButton);
+    QCOMPARE(strokeCount(0), 2);
+    for (const model::StrokePoint &p : m_doc->frameAt(0).groups[0].strokes[1].data->points)
+        QCOMPARE(p.pressure, 1.0f);
 }
 
 void TestTools::penRefusesLockedAndHiddenObjects()

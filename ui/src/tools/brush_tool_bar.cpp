@@ -2,6 +2,7 @@
 #include <finbook/ui/tools/tool_pen.h>
 #include <finbook/ui/widgets/color_button.h>
 
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QLabel>
@@ -19,6 +20,7 @@ BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
     , m_width(new QDoubleSpinBox(this))
     , m_smoothing(new QSpinBox(this))
     , m_stabiliser(new QSpinBox(this))
+    , m_pressure(new QCheckBox(tr("Pressure"), this))
 {
     setObjectName(QStringLiteral("brushToolBar"));
     // Two rows of small swatches: a one-row strip took a fifth of a 1280 px window, and the
@@ -52,6 +54,11 @@ BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
                                 "string this long (4 screen pixels a step), so a shaky hand "
                                 "draws a smooth line. Off: the ink is under the pen."));
     addWidget(m_stabiliser);
+    m_pressure->setObjectName(QStringLiteral("penPressure"));
+    m_pressure->setToolTip(tr("A tablet's pressure sets the line's width; off, every line has "
+                              "the full width"));
+    m_pressure->setFocusPolicy(Qt::NoFocus);
+    addWidget(m_pressure);
     showSettings();
 
     connect(m_color, &ColorButton::colorChanged, this, [this](const QColor &c) {
@@ -72,6 +79,11 @@ BrushToolBar::BrushToolBar(PenTool *pen, QWidget *parent)
     connect(m_stabiliser, &QSpinBox::valueChanged, this, [this](int v) {
         PenSettings s = m_pen->settings();
         s.stabiliser = v;
+        m_pen->setSettings(s);
+    });
+    connect(m_pressure, &QCheckBox::toggled, this, [this](bool on) {
+        PenSettings s = m_pen->settings();
+        s.pressure = on;
         m_pen->setSettings(s);
     });
     connect(m_pen, &PenTool::settingsChanged, this, &BrushToolBar::showSettings);
@@ -112,7 +124,9 @@ void BrushToolBar::setPalette(const model::Palette &palette)
 void BrushToolBar::showSettings()
 {
     const PenSettings &s = m_pen->settings();
-    const QSignalBlocker b1(m_color), b2(m_width), b3(m_smoothing), b4(m_stabiliser);
+    const QSignalBlocker b1(m_color), b2(m_width), b3(m_smoothing), b4(m_stabiliser),
+        b5(m_pressure);
+    m_pressure->setChecked(s.pressure);
     m_color->setColor(s.color);
     // Only when different: setValue() rewrites the text, and while the user types "2.5" the
     // pen already follows "2" (keyboard tracking), so "2" would become "2.0 px" mid-typing.

@@ -147,7 +147,7 @@ std::optional<model::StrokePoint> PenTool::sampleOf(const ToolEvent &event) cons
     const float x = float(event.pos.x()), y = float(event.pos.y());
     // A mouse has no pressure: draw it at full width. Non-finite input is dropped here so it
     // never reaches the document.
-    const float p = event.tablet ? float(event.pressure) : 1.0f;
+    const float p = event.tablet && m_settings.pressure ? float(event.pressure) : 1.0f;
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(p))
         return std::nullopt;
     return model::StrokePoint{x, y, std::clamp(p, 0.0f, 1.0f)};

@@ -28,6 +28,7 @@ EditorMemory EditorMemory::load(QSettings &settings)
     const int stabiliser = settings.value(QStringLiteral("pen/stabiliser")).toInt(&ok);
     if (ok)
         m.pen.stabiliser = std::clamp(stabiliser, 0, PenTool::kMaxStabiliser);
+    m.pen.pressure = settings.value(QStringLiteral("pen/pressure"), true).toBool();
     m.tool = settings.value(QStringLiteral("tool")).toString();
     settings.endGroup();
     return m;
@@ -40,6 +41,7 @@ void EditorMemory::save(QSettings &settings) const
     settings.setValue(QStringLiteral("pen/width"), pen.width);
     settings.setValue(QStringLiteral("pen/smoothing"), pen.smoothing);
     settings.setValue(QStringLiteral("pen/stabiliser"), pen.stabiliser);
+    settings.setValue(QStringLiteral("pen/pressure"), pen.pressure);
     settings.setValue(QStringLiteral("tool"), tool);
     settings.endGroup();
 }

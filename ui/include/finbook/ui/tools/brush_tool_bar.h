@@ -6,6 +6,7 @@
 
 #include <QToolBar>
 
+class QCheckBox;
 class QDoubleSpinBox;
 class QSpinBox;
 
@@ -32,6 +33,7 @@ private:
     QDoubleSpinBox *m_width;
     QSpinBox *m_smoothing;
     QSpinBox *m_stabiliser;
+    QCheckBox *m_pressure;
 };
 
 } // namespace finbook::ui

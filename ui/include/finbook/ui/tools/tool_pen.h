@@ -20,6 +20,9 @@ struct PenSettings {
     // The stabiliser while drawing, 0 (off) ..10: a lazy string 4 screen pixels long per step
     // (tools/stabiliser.h).
     int stabiliser = 0;
+    // Whether a tablet's pressure sets the line's width; off, a tablet draws as a mouse does,
+    // at full width.
+    bool pressure = true;
     friend bool operator==(const PenSettings &, const PenSettings &) = default;
 };
 
