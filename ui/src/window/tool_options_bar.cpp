@@ -49,11 +49,6 @@ QWidget *ToolOptionsBar::pageFor(const QString &toolId) const
     return m_pages.value(toolId, nullptr);
 }
 
-QWidget *ToolOptionsBar::currentPage() const
-{
-    return m_stack->currentWidget() == m_about ? nullptr : m_stack->currentWidget();
-}
-
 void ToolOptionsBar::follow(CanvasTool *tool)
 {
     QWidget *page = tool ? pageFor(tool->id()) : nullptr;

@@ -26,7 +26,6 @@ public:
     // A new empty page for `toolIds`: a toolbar to add the tool's controls and actions to.
     QToolBar *newPage(const QString &objectName, const QStringList &toolIds);
     QWidget *pageFor(const QString &toolId) const; // null: the tool shows its description
-    QWidget *currentPage() const;
 
 private:
     void follow(CanvasTool *tool);
