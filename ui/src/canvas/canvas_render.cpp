@@ -237,7 +237,7 @@ QImage CanvasWidget::newLayerImage(QImage recycled) const
 void CanvasWidget::rasterize(QImage &image, const std::function<void(StrokeRaster &)> &draw) const
 {
     // The view is a similarity (zoom, turn, mirror, move), which the rasterizer takes whole; a
-    // turned page is clipped to its bounds here and to itself where the image is painted.
+    // turned page is clipped to its bounds here, then masked to itself below.
     const qreal dpr = image.devicePixelRatio();
     const QRectF page = pageRect();
     const QRect clip(
@@ -247,21 +247,23 @@ void CanvasWidget::rasterize(QImage &image, const std::function<void(StrokeRaste
                                draw);
     // A turned page: what lies beyond its edges within its bounds is cleared once here, so a
     // repaint blits the layer with no clip path (a clip path cost ~5 ms a repaint).
+    // The mask is made once per view and size, not once per layer.
     if (!pageIsUpright()) {
-        QPainter painter(&image);
-        painter.setRenderHint(QPainter::Antialiasing, true);
-        painter.setCompositionMode(QPainter::CompositionMode_DestinationIn);
-        QImage keep(image.size(), QImage::Format_Alpha8);
-        keep.setDevicePixelRatio(dpr);
-        keep.fill(0);
-        {
-            QPainter mask(&keep);
+        const QTransform view = screenTransform();
+        if (m_pageMask.size() != image.size() || m_pageMaskView != view) {
+            m_pageMask = QImage(image.size(), QImage::Format_Alpha8);
+            m_pageMask.setDevicePixelRatio(dpr);
+            m_pageMask.fill(0);
+            QPainter mask(&m_pageMask);
             mask.setRenderHint(QPainter::Antialiasing, true);
             mask.setPen(Qt::NoPen);
             mask.setBrush(Qt::black);
             mask.drawPolygon(pagePolygon());
+            m_pageMaskView = view;
         }
-        painter.drawImage(QPointF(0, 0), keep);
+        QPainter painter(&image);
+        painter.setCompositionMode(QPainter::CompositionMode_DestinationIn);
+        painter.drawImage(QPointF(0, 0), m_pageMask);
     }
 }
 

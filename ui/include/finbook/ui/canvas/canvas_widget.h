@@ -221,6 +221,9 @@ private:
     std::vector<OtherCel> m_underCels, m_overCels; // what they show
     bool m_otherLayersValid = false;
     QTransform m_layerTransform; // the view the layers were rendered for
+    // A turned page's shape on screen, which rasterize() keeps of each layer, and its view.
+    mutable QImage m_pageMask;
+    mutable QTransform m_pageMaskView;
     QSize m_layerSize;
 };
 
