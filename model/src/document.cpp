@@ -136,6 +136,24 @@ const StrokeGroup *Document::group(Id groupId) const
 
 StrokeLocation Document::locateStroke(Id strokeId) const
 {
+    // The frame being edited first: a drawing shown in several frames (a swap set's) has its
+    // stroke ids in each of them.
+    if (m_focusFrame != kNoId) {
+        for (int l = 0; l < layerCount(); ++l) {
+            const auto &cels = m_layers[std::size_t(l)].cels;
+            for (int f = 0; f < int(cels.size()); ++f) {
+                if (cels[std::size_t(f)].id != m_focusFrame)
+                    continue;
+                const auto &groups = cels[std::size_t(f)].groups;
+                for (int g = 0; g < int(groups.size()); ++g) {
+                    const auto &strokes = groups[std::size_t(g)].strokes;
+                    for (int s = 0; s < int(strokes.size()); ++s)
+                        if (strokes[std::size_t(s)].id == strokeId)
+                            return {f, g, s, l};
+                }
+            }
+        }
+    }
     for (int k = 0; k < layerCount(); ++k) {
         const int l = k == 0 ? m_current : (k <= m_current ? k - 1 : k);
         const auto &cels = m_layers[std::size_t(l)].cels;
@@ -219,7 +237,8 @@ void Document::setPalette(Palette palette)
     emit paletteChanged();
 }
 
-void Document::reset(std::vector<Layer> layers, const DocumentSettings &settings, Id nextId)
+void Document::reset(std::vector<Layer> layers, const DocumentSettings &settings, Id nextId,
+                     std::vector<SwapSet> swapSets)
 {
     if (layers.empty())
         throw std::invalid_argument("Document::reset: a document has at least one layer");
@@ -231,9 +250,13 @@ void Document::reset(std::vector<Layer> layers, const DocumentSettings &settings
     for (int i = 1; i < layerCount(); ++i)
         if (m_layers[std::size_t(i)].cels.size() >= m_layers[std::size_t(m_current)].cels.size())
             m_current = i;
+    m_swapSets = std::move(swapSets);
+    m_focusFrame = kNoId;
     for (Layer &l : m_layers)
-        for (Frame &f : l.cels)
+        for (Frame &f : l.cels) {
+            linkInserted(f);
             resolveJoins(f);
+        }
     m_settings = settings;
     m_camera = {};
     m_palette = defaultPalette();
@@ -247,6 +270,7 @@ void Document::insertFrame(Id layerId, int index, Frame frame)
 {
     std::vector<Frame> &cels = mutableLayer(layerId).cels;
     index = std::clamp(index, 0, int(cels.size()));
+    linkInserted(frame);
     resolveJoins(frame);
     cels.insert(cels.begin() + index, std::move(frame));
     if (layerId == currentLayerId())
@@ -301,6 +325,16 @@ void Document::insertGroup(Id frameId, int index, StrokeGroup group)
     Frame &target = *found;
     auto &groups = target.groups;
     index = std::clamp(index, 0, int(groups.size()));
+    if (group.swap.linked()) {
+        // It shows its drawing, unless the frame already shows that set (linkInserted).
+        Frame single;
+        for (const StrokeGroup &g : groups)
+            if (g.swap.set == group.swap.set)
+                group.swap = {};
+        single.groups.push_back(std::move(group));
+        linkInserted(single);
+        group = std::move(single.groups.front());
+    }
     groups.insert(groups.begin() + index, std::move(group));
     const std::vector<Id> joined = resolveJoins(target);
     emit groupsChanged(frameId);
@@ -381,6 +415,7 @@ void Document::setGroupMeshDensity(Id groupId, double density)
     mutableGroup(groupId).meshDensity = density;
     groupEdited(groupId, true);
     emit strokesChanged(groupId); // the mesh depends on it like on the strokes
+    shareDrawing(groupId);
 }
 
 void Document::insertStroke(Id groupId, int index, Stroke stroke)
@@ -391,6 +426,7 @@ void Document::insertStroke(Id groupId, int index, Stroke stroke)
     g.deformed.reset();
     emit strokesChanged(groupId);
     groupEdited(groupId, false);
+    shareDrawing(groupId);
 }
 
 Stroke Document::takeStroke(Id strokeId)
@@ -402,8 +438,10 @@ Stroke Document::takeStroke(Id strokeId)
     Stroke taken = std::move(g.strokes[std::size_t(at.stroke)]);
     g.strokes.erase(g.strokes.begin() + at.stroke);
     g.deformed.reset();
-    emit strokesChanged(g.id);
-    groupEdited(g.id, false);
+    const Id groupId = g.id;
+    emit strokesChanged(groupId);
+    groupEdited(groupId, false);
+    shareDrawing(groupId);
     return taken;
 }
 
@@ -414,12 +452,14 @@ void Document::setStrokes(Id groupId, std::vector<Stroke> strokes)
     g.deformed.reset();
     emit strokesChanged(groupId);
     groupEdited(groupId, false);
+    shareDrawing(groupId);
 }
 
 void Document::setFills(Id groupId, std::vector<Fill> fills)
 {
     mutableGroup(groupId).fills = std::move(fills);
     groupEdited(groupId, false);
+    shareDrawing(groupId);
 }
 
 void Document::setRig(Id groupId, Rig rig)

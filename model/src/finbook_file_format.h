@@ -59,6 +59,17 @@
 //              always writes it. A file without it (any older format) is one layer holding
 //              all its frames.
 //
+//   "SWAP"  := u32 sets { u64 id u32 nameBytes utf8[nameBytes] u32 drawings object[drawings] }
+//              [sets] u32 links (u64 objectId u64 setId u64 drawingId)[links]
+//              (types.h SwapSet): the drawings objects swap between frame by frame, each
+//              written as an object (its id, name, mesh density, strokes, fills and the rig a
+//              frame switching to it starts with), then which object of FRAM shows which
+//              drawing. A linked object is written in FRAM as it is shown, with its drawing's
+//              stroke ids: those ids are the only ones a file holds more than once. At most
+//              once, after FRAM; written only when the document has sets, so a Finbook that
+//              does not know SWAP refuses the file as made by a newer Finbook (it would lose
+//              every drawing not shown and the links on saving).
+//
 // Ancillary sections (between FRAM and FEND):
 //   "lite"  := f64 azimuth f64 elevation   (degrees; DocumentSettings' light for shaded fills),
 //              written only when the light is not the default.
@@ -130,6 +141,9 @@ constexpr quint32 kTagReferenceSequence = tag("rseq");
 constexpr quint32 kTagSound = tag("SOND");
 constexpr quint32 kTagCamera = tag("CAMR");
 constexpr quint32 kTagLayers = tag("LAYR");
+constexpr quint32 kTagSwap = tag("SWAP");
+constexpr std::size_t kSwapSetFixedBytes = 8 + 4 + 4;
+constexpr std::size_t kSwapLinkBytes = 8 + 8 + 8;
 constexpr quint8 kLayerFlagHidden = 1;
 constexpr quint8 kLayerFlagLocked = 2;
 constexpr quint8 kLayerFlagNoOnion = 4;

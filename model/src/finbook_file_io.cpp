@@ -242,7 +242,7 @@ std::vector<Layer> takeLoadedLayers(LoadedDocument &loaded)
 void adoptLoadedDocument(Document &document, LoadedDocument loaded)
 {
     std::vector<Layer> layers = takeLoadedLayers(loaded);
-    document.reset(std::move(layers), loaded.settings, loaded.nextId);
+    document.reset(std::move(layers), loaded.settings, loaded.nextId, std::move(loaded.swapSets));
     document.referenceLayer().setReference(std::move(loaded.reference));
     document.soundtrack().reset(std::move(loaded.sound));
     document.setCamera(std::move(loaded.camera));

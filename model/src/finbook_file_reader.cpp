@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <new>
 
 namespace finbook::model {
@@ -123,8 +124,9 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
     const bool sound = t == kTagSound;
     const bool camera = t == kTagCamera;
     const bool layers = t == kTagLayers;
+    const bool swap = t == kTagSwap;
     const bool expected =
-        t == kTagEnd || sound || camera || layers ||
+        t == kTagEnd || sound || camera || layers || swap ||
         (known != std::end(kOrder) && std::size_t(known - std::begin(kOrder)) >= next);
     const bool text = !tagName(t).startsWith(QLatin1String("0x"));
     if (recovering() && (!text || (!expected && !isAncillary(t)))) {
@@ -235,6 +237,17 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
         else
             readCameraSection(body);
         m_sawCamera = true;
+        return !cut;
+    }
+    if (swap) {
+        if (next < std::size(kOrder))
+            problem(c, FileErrorCode::BadValue,
+                    FinbookFile::tr("the swap sets come before the frames"));
+        if (m_sawSwap)
+            problem(c, FileErrorCode::BadValue, FinbookFile::tr("the swap sets are repeated"));
+        else
+            readSwapSection(body);
+        m_sawSwap = true;
         return !cut;
     }
     if (known == std::end(kOrder)) {
@@ -365,6 +378,16 @@ void Reader::finish(Cursor &c)
     m_where = Where();
     m_where.section = FinbookFile::tr("the document settings");
     std::sort(m_ids.begin(), m_ids.end());
+    if (!m_sharedIds.empty()) {
+        // A drawing shown in several frames has its stroke ids in each: one use each counts.
+        std::sort(m_sharedIds.begin(), m_sharedIds.end());
+        std::vector<Id> own;
+        own.reserve(m_ids.size());
+        std::set_difference(m_ids.begin(), m_ids.end(), m_sharedIds.begin(), m_sharedIds.end(),
+                            std::back_inserter(own));
+        m_ids.swap(own);
+        std::vector<Id>().swap(m_sharedIds);
+    }
     const auto twice = std::adjacent_find(m_ids.begin(), m_ids.end());
     if (twice != m_ids.end() && !recovering())
         throw DuplicateId{*twice};

@@ -113,6 +113,11 @@ private:
     // scene/layer_section.cpp: the "LAYR" section, the layers.
     void readLayersSection(Cursor &body);
     bool m_sawLayers = false;
+    // swap/swap_section.cpp: the "SWAP" section, the swap sets and their links.
+    void readSwapSection(Cursor &body);
+    bool m_sawSwap = false;
+    // Ids a linked object shares with its drawing, once per linked object (not clashes).
+    std::vector<Id> m_sharedIds;
     // finbook_file_recover.cpp
     bool findNextSection(Cursor &c, std::size_t next);
     void renumberClashingIds();

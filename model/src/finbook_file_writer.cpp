@@ -38,6 +38,19 @@ const StrokeData &emptyStrokeData()
 
 // Shared data is stored once: the tables list each distinct pointer in order of first
 // appearance (frames, objects, strokes), so the same document always gives the same indices.
+// A drawing of a swap set as the object record SWAP writes it (finbook_file_format.h).
+StrokeGroup swapDrawingObject(const SwapDrawing &d)
+{
+    StrokeGroup g;
+    g.id = d.id;
+    g.name = d.name;
+    g.strokes = d.strokes;
+    g.fills = d.fills;
+    g.meshDensity = d.meshDensity;
+    g.rig = d.rig;
+    return g;
+}
+
 struct Tables {
     std::vector<const StrokeData *> strokes;
     std::unordered_map<const StrokeData *, quint32> strokeIndex;
@@ -46,8 +59,14 @@ struct Tables {
     Id maxId = kNoId;
     qsizetype expectedBytes = 256;
 
-    explicit Tables(const std::vector<Layer> &layers)
+    explicit Tables(const std::vector<Layer> &layers, const std::vector<SwapSet> &swapSets = {})
     {
+        for (const SwapSet &set : swapSets) {
+            noteId(set.id);
+            expectedBytes += qsizetype(kSwapSetFixedBytes) + set.name.size() * 3;
+            for (const SwapDrawing &d : set.drawings)
+                addGroup(swapDrawingObject(d));
+        }
         for (const Layer &l : layers) {
             noteId(l.id);
             expectedBytes += qsizetype(kLayerFixedBytes) + l.properties.name.size() * 3;
@@ -331,6 +350,34 @@ void writeCamera(ByteWriter &w, const CameraTrack &camera)
     }
 }
 
+// The "SWAP" section's payload (swap/swap_section.cpp reads it).
+void writeSwapSets(ByteWriter &w, const std::vector<SwapSet> &sets,
+                   const std::vector<Layer> &layers, const Tables &tables)
+{
+    w.u32(quint32(sets.size()));
+    for (const SwapSet &set : sets) {
+        w.u64(set.id);
+        const QByteArray name = set.name.toUtf8();
+        w.u32(quint32(name.size()));
+        w.raw(name.constData(), std::size_t(name.size()));
+        w.u32(quint32(set.drawings.size()));
+        for (const SwapDrawing &d : set.drawings)
+            writeObject(w, swapDrawingObject(d), tables);
+    }
+    std::vector<std::pair<Id, SwapLink>> links;
+    for (const Layer &l : layers)
+        for (const Frame &f : l.cels)
+            for (const StrokeGroup &g : f.groups)
+                if (g.swap.linked())
+                    links.emplace_back(g.id, g.swap);
+    w.u32(quint32(links.size()));
+    for (const auto &[object, link] : links) {
+        w.u64(object);
+        w.u64(link.set);
+        w.u64(link.drawing);
+    }
+}
+
 // A section and, from format 2 on, the CRC-32C of its tag, length and payload.
 template <class WriteBody> void writeSection(ByteWriter &w, quint32 sectionTag, WriteBody body)
 {
@@ -352,7 +399,7 @@ QByteArray serializeFinbook(const Document &document)
     if (document.palette() != defaultPalette())
         extra.push_back(paletteSection(document.palette()));
     return serializeFinbook(document.layers(), document.settings(), extra,
-                            document.soundtrack().clips(), document.camera());
+                            document.soundtrack().clips(), document.camera(), document.swapSets());
 }
 
 AncillarySection paletteSection(const Palette &palette)
@@ -372,9 +419,10 @@ QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSett
 
 QByteArray serializeFinbook(const std::vector<Layer> &layers, const DocumentSettings &settings,
                             const std::vector<AncillarySection> &ancillary,
-                            const std::vector<SoundClip> &sound, const CameraTrack &camera)
+                            const std::vector<SoundClip> &sound, const CameraTrack &camera,
+                            const std::vector<SwapSet> &swapSets)
 {
-    const Tables tables(layers);
+    const Tables tables(layers, swapSets);
     qsizetype extra = 0;
     for (const AncillarySection &a : ancillary)
         extra += qsizetype(kSectionHeaderBytes + kSectionCrcBytes) + a.payload.size();
@@ -395,6 +443,8 @@ QByteArray serializeFinbook(const std::vector<Layer> &layers, const DocumentSett
     writeSection(w, kTagPoses, [&] { writePoseTable(w, tables); });
     writeSection(w, kTagFrames, [&] { writeFrames(w, layers, tables); });
     writeSection(w, kTagLayers, [&] { writeLayers(w, layers); });
+    if (!swapSets.empty())
+        writeSection(w, kTagSwap, [&] { writeSwapSets(w, swapSets, layers, tables); });
     for (const SoundClip &clip : sound)
         writeSection(w, kTagSound, [&] { writeSoundClip(w, clip); });
     if (!camera.isEmpty())

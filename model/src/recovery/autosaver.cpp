@@ -99,7 +99,8 @@ void Autosaver::autosaveNow()
         m_doc->referenceLayer().reference(),
         m_doc->soundtrack().clips(),
         m_doc->camera(),
-        m_doc->palette()};
+        m_doc->palette(),
+        m_doc->swapSets()};
     QMetaObject::invokeMethod(
         m_writer, [writer = m_writer, s = std::move(snapshot)] { writer->write(s); },
         Qt::QueuedConnection);

@@ -66,7 +66,7 @@ std::unique_ptr<QLockFile> lockFor(const QString &path)
 QByteArray recoveryCopyBytes(const std::vector<Layer> &layers, const DocumentSettings &settings,
                              const RecoveryInfo &info, const Reference &reference,
                              const std::vector<SoundClip> &sound, const CameraTrack &camera,
-                             const Palette &palette)
+                             const Palette &palette, const std::vector<SwapSet> &swapSets)
 {
     const QJsonObject description{
         {QStringLiteral("title"), info.title},
@@ -83,7 +83,7 @@ QByteArray recoveryCopyBytes(const std::vector<Layer> &layers, const DocumentSet
             extra.push_back(std::move(section));
     if (palette != defaultPalette())
         extra.push_back(paletteSection(palette));
-    return serializeFinbook(layers, settings, extra, sound, camera);
+    return serializeFinbook(layers, settings, extra, sound, camera, swapSets);
 }
 
 QString recoveryFolder()

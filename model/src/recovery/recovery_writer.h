@@ -27,6 +27,7 @@ public:
         std::vector<SoundClip> sound;
         CameraTrack camera;
         Palette palette;
+        std::vector<SwapSet> swapSets;
     };
 
     void write(const Snapshot &snapshot)
@@ -35,7 +36,7 @@ public:
         try {
             const QByteArray bytes = recoveryCopyBytes(
                 snapshot.layers, snapshot.settings, snapshot.info, snapshot.reference,
-                snapshot.sound, snapshot.camera, snapshot.palette);
+                snapshot.sound, snapshot.camera, snapshot.palette, snapshot.swapSets);
             if (const auto failure = writeFileAtomically(snapshot.path, bytes))
                 error = describeWriteFailure(*failure, QFileInfo(snapshot.path).absolutePath());
         } catch (const std::bad_alloc &) {

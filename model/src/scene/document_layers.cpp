@@ -14,8 +14,10 @@ void Document::insertLayer(int index, Layer layer)
         throw std::invalid_argument("Document::insertLayer: the layer needs a new id");
     const Id current = currentLayerId();
     index = std::clamp(index, 0, layerCount());
-    for (Frame &f : layer.cels)
+    for (Frame &f : layer.cels) {
+        linkInserted(f);
         resolveJoins(f);
+    }
     m_layers.insert(m_layers.begin() + index, std::move(layer));
     m_current = layerIndex(current);
     emit layersChanged();

@@ -93,6 +93,20 @@ public:
     // frames there are.
     int playFirst() const;
     int playLast() const;
+    // Swap sets (types.h SwapSet): the drawings objects swap between, frame by frame.
+    const std::vector<SwapSet> &swapSets() const { return m_swapSets; }
+    const SwapSet *swapSet(Id setId) const;
+    // The drawing a link names, or null.
+    const SwapDrawing *swapDrawing(const SwapLink &link) const;
+    // Every object showing drawing `link` (any frame, any layer), in document order.
+    std::vector<Id> objectsShowing(const SwapLink &link) const;
+    // Every object linked to set `setId`, whatever drawing it shows.
+    std::vector<Id> objectsOfSet(Id setId) const;
+    // Editing state (not undone, not saved): the frame the tools work in. Stroke lookups look
+    // there first, so a stroke of a drawing shown in several frames is found where it is
+    // being edited.
+    void setFocusFrame(Id frameId) { m_focusFrame = frameId; }
+
     // Total number of stroke points stored in rest strokes (deformed caches not counted).
     qint64 pointCount() const;
 
@@ -105,8 +119,9 @@ public:
     // `nextId` (or one above the frames' largest id, if that is more), the counter the next.
     void reset(std::vector<Frame> frames, const DocumentSettings &settings, Id nextId);
     // `layers` must not be empty. The one with the most cels (the topmost of equals) becomes
-    // current.
-    void reset(std::vector<Layer> layers, const DocumentSettings &settings, Id nextId);
+    // current. Objects linked to `swapSets` are made to show their drawings.
+    void reset(std::vector<Layer> layers, const DocumentSettings &settings, Id nextId,
+               std::vector<SwapSet> swapSets = {});
     void insertFrame(Id layerId, int index, Frame frame);
     Frame takeFrame(Id layerId, int index);
     void moveFrame(Id layerId, int from, int to);
@@ -143,6 +158,22 @@ public:
     // Stores a solved pose. Not undo state: a cache that any rest or pin edit invalidates.
     void setDeformed(Id groupId, DeformedStrokesPtr deformed);
 
+    // Swap sets. Inserting a set or drawing whose id is taken, or a drawing into a set that is
+    // not there, throws. Objects linked to a set or drawing that is taken away keep what they
+    // show and lose the link.
+    void insertSwapSet(int index, SwapSet set);
+    SwapSet takeSwapSet(Id setId);
+    void insertSwapDrawing(Id setId, int index, SwapDrawing drawing);
+    SwapDrawing takeSwapDrawing(Id setId, Id drawingId);
+    void setSwapDrawingName(Id setId, Id drawingId, const QString &name);
+    void setSwapSetName(Id setId, const QString &name);
+    void setSwapDrawingRig(Id setId, Id drawingId, Rig rig);
+    // Links an object to a drawing (its strokes, fills and mesh density become the drawing's;
+    // its rig and pose stay) or, with an empty link, unlinks it (it keeps what it shows as its
+    // own drawing). A link to a drawing that is not there, or to a set another object of the
+    // same frame shows, unlinks.
+    void setGroupSwap(Id groupId, SwapLink link);
+
     void setSettings(const DocumentSettings &settings);
     // The swatches the animator picks colours from (palette/palette.h): a new document's is
     // defaultPalette(); reset() restores that, the loader sets the file's.
@@ -174,6 +205,9 @@ signals:
     void settingsChanged();
     void cameraChanged();
     void paletteChanged();
+    // Swap sets or their drawings inserted, removed or renamed (not their content: an edit of a
+    // drawing's strokes is strokesChanged of every object showing it).
+    void swapSetsChanged();
 
 private:
     StrokeGroup &mutableGroup(Id groupId);
@@ -181,6 +215,13 @@ private:
     // Objects whose join anchor changed (skeleton/skeleton_join.h): their constraints changed
     // too; `already` has been announced.
     void joinsChanged(const std::vector<Id> &groupIds, Id already);
+
+    // After an edit of object `groupId`'s strokes, fills or mesh density: the same on its
+    // drawing and on every other object showing it.
+    void shareDrawing(Id groupId);
+    // An inserted frame's or object's links made to show their drawings (or dropped).
+    void linkInserted(Frame &frame);
+    SwapSet &mutableSwapSet(Id setId);
 
     Layer &mutableLayer(Id layerId);
     Frame &mutableFrame(const GroupLocation &at);
@@ -191,6 +232,8 @@ private:
     DocumentSettings m_settings;
     CameraTrack m_camera;
     Palette m_palette;
+    std::vector<SwapSet> m_swapSets;
+    Id m_focusFrame = kNoId;
     Id m_nextId = 1;
     std::unique_ptr<Soundtrack> m_soundtrack;
     QUndoStack m_undoStack;

@@ -77,6 +77,7 @@ struct LoadedDocument {
     std::vector<SoundClip> sound;       // the soundtrack's clips ("SOND" sections)
     CameraTrack camera;                 // the camera's keys ("CAMR" section)
     Palette palette = defaultPalette(); // the swatches ("palt" section)
+    std::vector<SwapSet> swapSets;      // "SWAP"; the frames' objects carry their links
 };
 
 // Puts what was loaded into `document` (Document::reset, then its soundtrack).
@@ -115,7 +116,8 @@ AncillarySection paletteSection(const Palette &palette);
 QByteArray serializeFinbook(const std::vector<Layer> &layers, const DocumentSettings &settings,
                             const std::vector<AncillarySection> &ancillary = {},
                             const std::vector<SoundClip> &sound = {},
-                            const CameraTrack &camera = {});
+                            const CameraTrack &camera = {},
+                            const std::vector<SwapSet> &swapSets = {});
 // One layer holding `frames` (its id one above the largest id in them).
 QByteArray serializeFinbook(const std::vector<Frame> &frames, const DocumentSettings &settings,
                             const std::vector<AncillarySection> &ancillary = {},

@@ -151,6 +151,16 @@ struct Fill {
 
 constexpr double kDefaultMeshDensity = 1.0; // 1 = default edge length; 2 = twice as fine
 
+// Drawing substitution (issue 49): an object that shows one of a set of named drawings, chosen
+// per frame (mouths, hands, blinks). `set` is a SwapSet of the document, `drawing` one of its
+// drawings; both kNoId for an ordinary object.
+struct SwapLink {
+    Id set = kNoId;
+    Id drawing = kNoId;
+    bool linked() const { return set != kNoId; }
+    friend bool operator==(const SwapLink &, const SwapLink &) = default;
+};
+
 struct StrokeGroup {
     Id id = kNoId;
     QString name;
@@ -164,6 +174,10 @@ struct StrokeGroup {
     // The pose the rig produced, as last solved. Saved with the file so a reopened document
     // shows (and exports) the deformed drawing without re-solving; cleared by any rest edit.
     DeformedStrokesPtr deformed;
+    // The drawing of a set this object shows (document.h, Swap sets). Its strokes, fills and
+    // mesh density are then that drawing's, the same (ids included) in every frame showing it;
+    // its rig and pose are its own, per frame.
+    SwapLink swap;
 
     bool isDeformed() const { return !rig.empty() && deformed != nullptr; }
 };
@@ -211,6 +225,36 @@ struct Layer {
     LayerProperties properties;
     std::vector<Frame> cels;
 };
+
+// One drawing of a swap set: what every object linked to it shows. Its stroke ids are shared
+// by those objects (the only ids a document holds more than once, always in different
+// frames), so an edit of any of them is an edit of the drawing.
+struct SwapDrawing {
+    Id id = kNoId;
+    QString name;
+    std::vector<Stroke> strokes;
+    std::vector<Fill> fills;
+    double meshDensity = kDefaultMeshDensity;
+    // The rig (at rest) a frame switching to this drawing starts with when no other frame
+    // shows it: the rig the last frame to leave it had (SetSwapDrawingCommand keeps it).
+    Rig rig;
+    friend bool operator==(const SwapDrawing &, const SwapDrawing &) = default;
+};
+
+// A set of drawings one object swaps between, frame by frame (a mouth chart, a hand's
+// positions, eyes open and closed).
+struct SwapSet {
+    Id id = kNoId;
+    QString name;
+    std::vector<SwapDrawing> drawings;
+    const SwapDrawing *drawing(Id drawingId) const;
+    int indexOf(Id drawingId) const; // -1 if it has none
+    friend bool operator==(const SwapSet &, const SwapSet &) = default;
+};
+
+// Drawings a set may hold, and sets a document may hold (a file claiming more is refused).
+constexpr int kMaxSwapDrawings = 1000;
+constexpr int kMaxSwapSets = 10000;
 
 struct DocumentSettings {
     QSize canvasSize{1280, 720};

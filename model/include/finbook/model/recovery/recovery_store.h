@@ -42,12 +42,13 @@ struct RecoveryCopy {
 
 // The bytes of a recovery copy: the document (a snapshot; any thread) with its description and
 // a thumbnail rendered here, the reference layer when there is one, the sound clips `sound`,
-// the camera `camera` and the palette `palette`.
+// the camera `camera`, the palette `palette` and the swap sets `swapSets`.
 QByteArray recoveryCopyBytes(const std::vector<Layer> &layers, const DocumentSettings &settings,
                              const RecoveryInfo &info, const Reference &reference = {},
                              const std::vector<SoundClip> &sound = {},
                              const CameraTrack &camera = {},
-                             const Palette &palette = defaultPalette());
+                             const Palette &palette = defaultPalette(),
+                             const std::vector<SwapSet> &swapSets = {});
 // Copies larger than this are not listed (nor read): a recovery copy is an autosave of a
 // drawing that had to fit in memory.
 constexpr qint64 kMaxRecoveryCopyBytes = qint64(4) << 30;
