@@ -13,6 +13,12 @@
 
 namespace finbook::ui {
 
+void ObjectsPanel::addFooter(QWidget *footer)
+{
+    footer->setParent(this);
+    static_cast<QVBoxLayout *>(layout())->addWidget(footer);
+}
+
 ObjectsPanel::ObjectsPanel(EditorState *state, ObjectActions *actions, QWidget *parent)
     : QWidget(parent)
     , m_state(state)

@@ -69,6 +69,12 @@ EditorState::EditorState(model::Document *document, QObject *parent)
         setSelectedFrames({});
         setSelectedCels({});
     });
+    // After the handlers above have settled the current frame.
+    const auto focus = [this] { m_doc->setFocusFrame(currentFrameId()); };
+    connect(m_doc, &model::Document::framesInserted, this, focus);
+    connect(m_doc, &model::Document::framesRemoved, this, focus);
+    connect(m_doc, &model::Document::currentLayerChanged, this, focus);
+    connect(m_doc, &model::Document::documentReset, this, focus);
     clampToDocument();
 }
 
@@ -209,6 +215,8 @@ void EditorState::setCurrentFrameIndex(int index)
             if (before->groups[std::size_t(i)].id == currentGroupId())
                 slot = i;
     m_frameIndex = index;
+    // Strokes of a drawing shown in several frames are looked up here first (document.h).
+    m_doc->setFocusFrame(currentFrameId());
     if (const model::Frame *after = currentFrame();
         after && slot >= 0 && slot < int(after->groups.size()))
         m_groupId = after->groups[std::size_t(slot)].id;

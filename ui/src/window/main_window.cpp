@@ -17,8 +17,11 @@
 #include <finbook/ui/reference/reference_panel.h>
 #include <finbook/ui/reference/tool_reference.h>
 #include <finbook/ui/sound/sound_row.h>
+#include <finbook/ui/swap/swap_actions.h>
+#include <finbook/ui/swap/swap_picker.h>
 #include <finbook/ui/timeline/frame_actions.h>
 #include <finbook/ui/timeline/playback_controller.h>
+#include <finbook/ui/timeline/timeline_view.h>
 #include <finbook/ui/timeline/timeline_widget.h>
 #include <finbook/ui/tools/brush_tool_bar.h>
 #include <finbook/ui/tools/eraser_tool_bar.h>
@@ -189,6 +192,16 @@ void MainWindow::createDocks()
         return d;
     };
     auto *timeline = new TimelineWidget(m_state, m_frameActions, m_playback);
+    {
+        // A frame's menu also swaps the drawing it shows (drawing substitution).
+        QList<QAction *> frameMenu = m_frameActions->menuActions();
+        auto *separator = new QAction(timeline);
+        separator->setSeparator(true);
+        frameMenu << separator << m_swapActions->drawingMenu()->menuAction()
+                  << m_swapActions->action(QStringLiteral("swap.previous"))
+                  << m_swapActions->action(QStringLiteral("swap.next"));
+        timeline->view()->setMenuActions(frameMenu);
+    }
     timeline->addBelowFrames(new SoundRow(m_sound, timeline->view()));
     // The dope sheet: a row per layer over the current layer's thumbnails.
     auto *sheet = new QScrollArea;
@@ -207,8 +220,11 @@ void MainWindow::createDocks()
     fitSheet();
     timeline->addAboveFrames(sheet);
     dock(timeline, QStringLiteral("timelineDock"), tr("Timeline"), Qt::BottomDockWidgetArea);
-    dock(new ObjectsPanel(m_state, m_objectActions), QStringLiteral("objectsDock"), tr("Objects"),
-         Qt::RightDockWidgetArea);
+    auto *objects = new ObjectsPanel(m_state, m_objectActions);
+    objects->addFooter(new SwapPicker(m_state, m_swapActions));
+    dock(objects, QStringLiteral("objectsDock"), tr("Objects"), Qt::RightDockWidgetArea);
+    m_swapActions->setChartCentre(
+        [this] { return m_canvas->mapToCanvas(QRectF(m_canvas->rect()).center()); });
     QDockWidget *reference = dock(new ReferencePanel(m_doc), QStringLiteral("referenceDock"),
                                   tr("Reference"), Qt::RightDockWidgetArea);
     // The panels shown only when wanted (Reference, Shading) share the Skeleton panel's place

@@ -1,5 +1,6 @@
 // MainWindow: actions, menus and toolbars.
 #include <finbook/model/document.h>
+#include <finbook/ui/canvas/canvas_tool.h>
 #include <finbook/ui/canvas/canvas_widget.h>
 #include <finbook/ui/dialogs/document_settings_dialog.h>
 #include <finbook/ui/dialogs/preferences_dialog.h>
@@ -14,6 +15,7 @@
 #include <finbook/ui/panels/object_actions.h>
 #include <finbook/ui/reference/reference_panel.h>
 #include <finbook/ui/sound/sound_controller.h>
+#include <finbook/ui/swap/swap_actions.h>
 #include <finbook/ui/timeline/frame_actions.h>
 #include <finbook/ui/timeline/onion_skin_editor.h>
 #include <finbook/ui/timeline/playback_controller.h>
@@ -48,6 +50,9 @@ void MainWindow::createActions()
     m_frameActions = new FrameActions(m_state, this);
     m_layerActions = new LayerActions(m_state, this, this);
     m_objectActions = new ObjectActions(m_state, this);
+    m_swapActions = new SwapActions(m_state, this, this);
+    connect(m_swapActions, &SwapActions::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 6000); });
     m_playback = new PlaybackController(m_state, this);
     m_sound = new SoundController(m_state, m_playback, this, this);
     m_shortcuts->registerAction(m_sound->importAction());
@@ -326,6 +331,13 @@ void MainWindow::createFrameAndObjectMenus()
     for (QAction *a : m_objectActions->menuActions()) {
         objectMenu->addAction(a);
         if (!a->isSeparator() && !a->objectName().isEmpty())
+            m_shortcuts->registerAction(a);
+    }
+    // Drawing substitution: the set's drawings, after the object's own commands.
+    objectMenu->addSeparator();
+    for (QAction *a : m_swapActions->menuActions()) {
+        objectMenu->addAction(a);
+        if (a->menu() == nullptr)
             m_shortcuts->registerAction(a);
     }
 }

@@ -37,6 +37,9 @@ public:
     QRect visibilityToggleRect(int row) const;
     QRect lockToggleRect(int row) const;
 
+    // A widget under the list (the swap picker).
+    void addFooter(QWidget *footer);
+
     QSize sizeHint() const override { return {280, 260}; }
 
 private:

@@ -44,6 +44,7 @@ class EditorState;
 class FrameActions;
 class LayerActions;
 class ObjectActions;
+class SwapActions;
 class PenTool;
 class SoundController;
 class PlaybackController;
@@ -181,6 +182,7 @@ private:
     FrameActions *m_frameActions = nullptr;
     LayerActions *m_layerActions = nullptr;
     ObjectActions *m_objectActions = nullptr;
+    SwapActions *m_swapActions = nullptr;
     PlaybackController *m_playback = nullptr;
     SoundController *m_sound = nullptr;
     DeformActions *m_deform = nullptr;
