@@ -6,9 +6,12 @@
 #include "tst_file_sample.h"
 
 #include <finbook/model/camera/camera_commands.h>
+#include <finbook/model/pins/pin_commands.h>
 #include <finbook/model/recovery/recovery_store.h>
 #include <finbook/model/reference/reference_layer.h>
 #include <finbook/model/scene/layer_commands.h>
+#include <finbook/model/swap/mouth_chart.h>
+#include <finbook/model/swap/swap_commands.h>
 
 #include <QDir>
 
@@ -283,6 +286,27 @@ void withLayers(Document &doc)
     doc.undoStack()->push(new AddLayerCommand(&doc, 0, QStringLiteral("Background")));
 }
 
+// Swap sets (SWAP): an object made swappable with a second drawing (a copy), shown by the
+// frame after it too; and a mouth chart on a new object, one of its drawings posed by a pin.
+void withSwaps(Document &doc)
+{
+    buildSample(doc);
+    const Frame &first = doc.frameAt(0);
+    const Id object = first.groups.front().id;
+    doc.undoStack()->push(
+        new NewSwapSetCommand(&doc, object, QStringLiteral("Hand"), QStringLiteral("open")));
+    doc.undoStack()->push(new AddSwapDrawingCommand(&doc, object, QStringLiteral("closed"),
+                                                    AddSwapDrawingCommand::Content::Copy));
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, first.id, 1));
+    doc.undoStack()->push(stepSwapDrawing(&doc, object, 1));
+    auto *mouth = new AddObjectCommand(&doc, doc.frameAt(0).id, -1, QStringLiteral("Mouth"));
+    doc.undoStack()->push(mouth);
+    doc.undoStack()->push(new NewSwapSetCommand(
+        &doc, mouth->groupId(), mouthChart(doc, QPointF(60, 40), 30, 0xff101010, 2.0f), 3));
+    doc.undoStack()->push(
+        new AddPinCommand(&doc, mouth->groupId(), QPointF(60, 40), QPointF(64, 42)));
+}
+
 // Every seed by name.
 std::vector<std::pair<QString, QByteArray>> seeds()
 {
@@ -312,11 +336,14 @@ std::vector<std::pair<QString, QByteArray>> seeds()
     withCamera(camera);
     Document layered;
     withLayers(layered);
+    Document swaps;
+    withSwaps(swaps);
     std::vector<std::pair<QString, QByteArray>> all{
         {QStringLiteral("shading_and_media.finbook"), serializeFinbook(shaded)},
         {QStringLiteral("media.finbook"), serializeFinbook(media)},
         {QStringLiteral("camera.finbook"), serializeFinbook(camera)},
         {QStringLiteral("layers.finbook"), serializeFinbook(layered)},
+        {QStringLiteral("swaps.finbook"), serializeFinbook(swaps)},
         {QStringLiteral("svg_reference.finbook"), serializeFinbook(svg)},
         {QStringLiteral("sample.finbook"), serializeFinbook(sample)},
         {QStringLiteral("cage_skeleton.finbook"), serializeFinbook(rigs)},
@@ -388,7 +415,7 @@ void TestFuzzSeeds::seedsCoverTheFormat()
         collectTags(bytes, tags);
     for (const char *tag :
          {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL", "JOIN",
-          "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR", "LAYR", "palt"})
+          "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR", "LAYR", "palt", "SWAP"})
         QVERIFY2(tags.count(tag), tag);
 }
 

@@ -396,6 +396,8 @@ void TestSwap::damagedSetsAreRefusedWithAReason_data()
         << QByteArray("link") << QByteArray() << QStringLiteral("do not hold");
     QTest::newRow("no drawings") << QByteArray("count") << QByteArray()
                                  << QStringLiteral("drawings");
+    QTest::newRow("one set twice in a frame")
+        << QByteArray("twice") << QByteArray() << QStringLiteral("two objects");
 }
 
 void TestSwap::damagedSetsAreRefusedWithAReason()
@@ -408,11 +410,19 @@ void TestSwap::damagedSetsAreRefusedWithAReason()
     // Rebuild the file with a damaged set: written from a document whose set is changed after
     // its objects were linked (the writer writes what it is given).
     std::vector<SwapSet> sets{set};
-    if (from == "link")
+    std::vector<Layer> layers = s.doc.layers();
+    if (from == "link") {
         sets.front().drawings.front().id += 1000; // the objects' link names the old id
-    else
+    } else if (from == "count") {
         sets.front().drawings.clear();
-    const QByteArray bytes = serializeFinbook(s.doc.layers(), s.doc.settings(), {}, {}, {}, sets);
+    } else { // a second object of frame 1 showing the set (its own stroke ids)
+        StrokeGroup second = s.object(0);
+        second.id = s.doc.allocateId();
+        for (Stroke &st : second.strokes)
+            st.id = s.doc.allocateId();
+        layers.front().cels.front().groups.push_back(second);
+    }
+    const QByteArray bytes = serializeFinbook(layers, s.doc.settings(), {}, {}, {}, sets);
     const auto loaded = readFinbook(bytes);
     QVERIFY(!loaded.hasValue());
     QVERIFY2(loaded.error().message.contains(reason), qPrintable(loaded.error().message));
@@ -424,11 +434,12 @@ void TestSwap::damagedSetsAreRefusedWithAReason()
     QVERIFY(recovered->swapSets.empty());
     Document doc;
     adoptLoadedDocument(doc, *recovered);
-    QCOMPARE(doc.frameAt(0).groups.back().strokes.size(), std::size_t(2));
     QCOMPARE(doc.frameAt(1).groups.back().strokes.size(), std::size_t(2));
-    // The copies' ids were made unique again.
+    // The copies' ids were made unique again: what is saved opens.
     QVERIFY(doc.frameAt(0).groups.back().strokes[0].id !=
             doc.frameAt(1).groups.back().strokes[0].id);
+    const auto again = readFinbook(serializeFinbook(doc));
+    QVERIFY2(again.hasValue(), qPrintable(again ? QString() : again.error().message));
 }
 
 void TestSwap::randomEditsUndoExactlyAndKeepDrawingsShared()

@@ -81,6 +81,21 @@ void Reader::readSwapSection(Cursor &body)
         if (objects.size() != linked.size())
             body.fail(FileErrorCode::BadValue,
                       FinbookFile::tr("the swap sets link objects the frames do not hold"));
+        // A frame shows a set on one object at most: two would hold the same strokes.
+        for (const Frame &f : m_doc.frames) {
+            std::vector<Id> setsHere;
+            for (const StrokeGroup &g : f.groups) {
+                const auto it =
+                    std::lower_bound(linked.begin(), linked.end(), g.id,
+                                     [](const auto &entry, Id id) { return entry.first < id; });
+                if (it == linked.end() || it->first != g.id)
+                    continue;
+                if (std::find(setsHere.begin(), setsHere.end(), it->second.set) != setsHere.end())
+                    body.fail(FileErrorCode::BadValue,
+                              FinbookFile::tr("a frame shows a swap set on two objects"));
+                setsHere.push_back(it->second.set);
+            }
+        }
         for (StrokeGroup *g : objects) {
             g->swap =
                 std::lower_bound(linked.begin(), linked.end(), g->id, [](const auto &entry, Id id) {
