@@ -76,6 +76,11 @@ void TestSwapUi::aMouthChartSwapsByKeys()
 {
     action("swap.mouthChart")->trigger();
     QCOMPARE(doc()->undoStack()->count(), 1); // one step
+    // On a layer of its own, made current, one cel for the whole shot.
+    QCOMPARE(doc()->layerCount(), 2);
+    QCOMPARE(doc()->currentLayer().properties.name, QStringLiteral("Mouth"));
+    QCOMPARE(doc()->frameCount(), 1);
+    QCOMPARE(doc()->frameAt(0).hold, 3);
     QVERIFY(mouth(0));
     QCOMPARE(mouth(0)->id, state()->currentGroupId());
     const model::SwapSet *set = doc()->swapSet(mouth(0)->swap.set);

@@ -36,6 +36,7 @@ QList<ManualBrowser::Page> ManualBrowser::pages()
         {QStringLiteral("bones.md"), tr("Bones and Skeletons")},
         {QStringLiteral("inbetweens.md"), tr("In-betweens")},
         {QStringLiteral("timeline.md"), tr("Timeline, Layers and Sound")},
+        {QStringLiteral("lip-sync.md"), tr("Swapping Drawings and Lip Sync")},
         {QStringLiteral("camera.md"), tr("Camera")},
         {QStringLiteral("reference.md"), tr("Reference Pictures and Video")},
         {QStringLiteral("exporting.md"), tr("Exporting")},

@@ -19,6 +19,18 @@
 namespace finbook::ui {
 
 namespace {
+// A cel's label: the drawing its swappable object shows (the name's first word: "A" of
+// "A (M B P)"), else its number.
+QString celLabel(const model::Document &doc, const model::Frame &cel, int index)
+{
+    for (auto it = cel.groups.rbegin(); it != cel.groups.rend(); ++it)
+        if (const model::SwapDrawing *d = doc.swapDrawing(it->swap); d && !d->name.isEmpty())
+            return d->name.section(QLatin1Char(' '), 0, 0, QString::SectionSkipEmpty);
+    return QString::number(index + 1);
+}
+} // namespace
+
+namespace {
 constexpr int kEyeX = 6, kLockX = 24, kNameX = 44, kGlyph = 14;
 constexpr int kGrip = 3;  // pixels either side of a cel's end that grab its exposure
 constexpr int kInset = 2; // a cel's block inside its row
@@ -238,7 +250,7 @@ void LayerSheet::paintRow(QPainter &painter, int layerIndex) const
         painter.setPen(QColor(0x20, 0x28, 0x30));
         if (!blank && block.right() - textLeft > 10)
             painter.drawText(QRect(textLeft, block.top(), block.right() - textLeft, block.height()),
-                             Qt::AlignVCenter | Qt::AlignLeft, QString::number(i + 1));
+                             Qt::AlignVCenter | Qt::AlignLeft, celLabel(*doc, cel, int(i)));
     }
     if (!layer.properties.visible || layer.properties.locked) // greyed
         painter.fillRect(QRect(kHeaderWidth, row.top(), width() - kHeaderWidth, row.height()),
@@ -518,6 +530,12 @@ void LayerSheet::contextMenuEvent(QContextMenuEvent *event)
     if (layerIndex >= 0)
         m_state->document()->setCurrentLayer(m_state->document()->layerAt(layerIndex).id);
     QMenu menu(this);
+    if (const int cel = layerIndex >= 0 ? celUnder(layerIndex, event->pos().x()) : -1;
+        cel >= 0 && m_celMenu) {
+        m_celMenu(&menu, m_state->document()->layerAt(layerIndex).cels[std::size_t(cel)].id);
+        if (!menu.isEmpty())
+            menu.addSeparator();
+    }
     menu.addActions(m_actions->menuActions());
     menu.exec(event->globalPos());
 }

@@ -1,4 +1,5 @@
 #include <finbook/model/commands.h>
+#include <finbook/model/scene/layer_commands.h>
 #include <finbook/model/swap/mouth_chart.h>
 #include <finbook/model/swap/swap_commands.h>
 #include <finbook/ui/swap/swap_actions.h>
@@ -166,26 +167,27 @@ void SwapActions::makeSwappable()
 void SwapActions::addMouthChart()
 {
     model::Document *doc = m_state->document();
-    const model::Frame *frame = m_state->currentFrame();
-    if (!frame)
+    if (!m_state->currentFrame())
         return;
     const QSize canvas = doc->settings().canvasSize;
     const QPointF centre =
         m_chartCentre ? m_chartCentre() : QPointF(canvas.width() / 2.0, canvas.height() / 2.0);
     const double width = std::clamp(canvas.width() / 24.0, 24.0, 200.0);
-    int above = -1;
-    for (int i = 0; i < int(frame->groups.size()); ++i)
-        if (frame->groups[std::size_t(i)].id == m_state->currentGroupId())
-            above = i + 1;
+    // Its own layer above the current one, exposed for the whole shot: the mouth's row, which
+    // lip sync cuts into the mouths as they are heard without touching the character's cels.
     doc->undoStack()->beginMacro(tr("New Mouth Chart"));
-    auto *add = new model::AddObjectCommand(doc, frame->id, above, tr("Mouth"));
-    doc->undoStack()->push(add);
+    auto *layer = new model::AddLayerCommand(doc, doc->currentLayerIndex() + 1, tr("Mouth"));
+    doc->undoStack()->push(layer);
+    const model::Layer *added = doc->layer(layer->layerId());
+    const model::Id mouth = added ? added->cels.front().groups.front().id : model::kNoId;
+    doc->undoStack()->push(new model::RenameObjectCommand(doc, mouth, tr("Mouth")));
     model::SwapSet chart =
         model::mouthChart(*doc, centre, width, 0xff202020, float(std::max(2.0, width / 40.0)));
-    doc->undoStack()->push(new model::NewSwapSetCommand(doc, add->groupId(), std::move(chart), 8));
+    doc->undoStack()->push(new model::NewSwapSetCommand(doc, mouth, std::move(chart), 8));
     doc->undoStack()->endMacro();
-    m_state->setCurrentGroupId(add->groupId());
-    emit message(tr("A mouth chart: nine mouth shapes to redraw in your style; [ and ] swap them"));
+    m_state->setCurrentGroupId(mouth); // its layer becomes current
+    emit message(tr("A mouth chart on its own layer: nine mouth shapes to redraw in your style; "
+                    "[ and ] swap them, Deform > Lip Sync keys them from the soundtrack"));
 }
 
 void SwapActions::addDrawing(bool copy)

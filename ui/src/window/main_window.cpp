@@ -206,7 +206,20 @@ void MainWindow::createDocks()
     // The dope sheet: a row per layer over the current layer's thumbnails.
     auto *sheet = new QScrollArea;
     sheet->setObjectName(QStringLiteral("layerSheetScroll"));
-    sheet->setWidget(new LayerSheet(m_state, m_layerActions));
+    auto *layerSheet = new LayerSheet(m_state, m_layerActions);
+    layerSheet->setCelMenu([this](QMenu *menu, model::Id cel) {
+        // A cel showing a swappable object: the drawings it may show.
+        const model::Frame *frame = m_doc->frame(cel);
+        if (!frame)
+            return;
+        for (auto it = frame->groups.rbegin(); it != frame->groups.rend(); ++it)
+            if (it->swap.linked()) {
+                QMenu *drawings = menu->addMenu(tr("Show &Drawing"));
+                m_swapActions->fillDrawingMenu(drawings, it->id);
+                return;
+            }
+    });
+    sheet->setWidget(layerSheet);
     sheet->setWidgetResizable(true);
     sheet->setFrameShape(QFrame::NoFrame);
     // As tall as its rows (up to five, then it scrolls), so every layer of a small scene shows.

@@ -12,7 +12,10 @@
 //    on Alt-drag leave Ctrl); one undo step;
 //  - the right end of a cel: drags its exposure (one undo step when released);
 //  - a layer's name: dragged up or down, reorders the layer; double-click: Layer Properties;
-//  - right-click: the Layer menu; Ctrl+wheel: zoom in time.
+//  - right-click: the Layer menu, and on a cel showing a swappable object (a mouth chart's)
+//    the drawings it may show; Ctrl+wheel: zoom in time.
+// A cel showing a swappable object is labelled with its drawing's name (as an exposure sheet
+// shows "A", "B", "X"), others with their number.
 // The Edit menu cuts, copies, pastes and deletes picked cels (cel_editing.h).
 #pragma once
 
@@ -20,7 +23,10 @@
 
 #include <QWidget>
 
+#include <functional>
 #include <optional>
+
+class QMenu;
 
 namespace finbook::ui {
 
@@ -35,6 +41,11 @@ public:
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    // Adds to the right-click menu of a cel (the cel's id) what the window offers for it.
+    void setCelMenu(std::function<void(QMenu *, model::Id cel)> addItems)
+    {
+        m_celMenu = std::move(addItems);
+    }
 
     // Geometry, for tests: the row of layer `index` (top to bottom under the ruler: the last
     // layer first) and the x of a tick.
@@ -88,6 +99,7 @@ private:
     bool m_dropCopy = false;      // Alt or Ctrl held: copies
     bool m_dropOnRelease = false; // a Ctrl-click on a picked cel: dropped unless it drags
     int m_layerDrop = -1;         // a dragged layer goes to this index
+    std::function<void(QMenu *, model::Id)> m_celMenu;
 };
 
 } // namespace finbook::ui

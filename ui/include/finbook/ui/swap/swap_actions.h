@@ -4,8 +4,9 @@
 // objectName             default shortcut   what it does
 // swap.makeSwappable     —                  the current object's drawing becomes the first of a
 //                                           new set (NewSwapSetCommand)
-// swap.mouthChart        —                  a new object "Mouth" showing a set of the nine mouth
-//                                           shapes, at the centre of the view
+// swap.mouthChart        —                  a new layer "Mouth" (one cel for the whole shot) whose
+//                                           object shows a set of the nine mouth shapes, at the
+//                                           centre of the view
 // swap.newDrawing        —                  an empty drawing in the current object's set, shown
 // swap.duplicateDrawing  —                  a copy of the drawing shown, added and shown
 // swap.renameDrawing     —                  renames the drawing shown
@@ -59,6 +60,9 @@ public:
     void step(int delta);
     void show(model::Id groupId, model::SwapLink drawing) const;
     void updateEnabled();
+    // What [ and ] swap and lip sync keys: the current object, or else the frame's topmost
+    // swappable one (kNoId when there is none).
+    model::Id stepTarget() const;
 
 signals:
     void message(const QString &text);
@@ -66,8 +70,6 @@ signals:
 private:
     QAction *makeAction(const QString &name, const QString &text, const QKeySequence &shortcut);
     const model::SwapSet *currentSet() const;
-    // What [ and ] swap: the current object, or else the frame's topmost swappable one.
-    model::Id stepTarget() const;
     QString freshDrawingName(const model::SwapSet &set) const;
 
     EditorState *m_state;
