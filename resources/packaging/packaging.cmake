@@ -22,8 +22,10 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # toolbar and tool icon (all SVG) comes with libqt6svg6.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6 (>= 6.4)")
 # The X11 platform plugin ships with libqt6gui6; these add Wayland, Qt's own translations and
-# the encoder that GIF/MP4/WebM/APNG export runs.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "ffmpeg, qt6-qpa-plugins, qt6-translations-l10n, qt6-wayland")
+# the encoder that GIF/MP4/WebM/APNG export runs, and the US English models lip sync recognises
+# speech with (without them it follows the loudness).
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
+    "ffmpeg, pocketsphinx-en-us, qt6-qpa-plugins, qt6-translations-l10n, qt6-wayland")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 # CPack puts the summary on the first line and this text below it.
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION "Finbook is a desktop flipbook animation editor. Draw a character once, then

@@ -47,6 +47,11 @@ void MainWindow::createDeformation()
     menu->addSeparator();
     menu->addMenu(m_deform->createRigidityMenu(menu));
     createSkeleton(menu);
+    menu->addSeparator();
+    QAction *lipSync = makeAction(QStringLiteral("deform.lipSync"), tr("&Lip Sync..."));
+    lipSync->setToolTip(tr("Key a mouth chart's drawings from the soundtrack"));
+    connect(lipSync, &QAction::triggered, this, &MainWindow::showLipSync);
+    menu->addAction(lipSync);
 
     // The pins' and the cage's options, each with the actions on a rig (apply, remove, reset).
     QToolBar *pins = m_options->newPage(QStringLiteral("pinOptions"), {QStringLiteral("tool.pin")});

@@ -92,6 +92,8 @@ public:
     void showWelcome();
     // Shows the Finbook Manual at `page` (ManualBrowser::pages(); F1 opens the current tool's).
     void showManual(const QString &page);
+    // Deform > Lip Sync…: keys the current (or the frame's) mouth chart from a sound clip.
+    void showLipSync();
     ManualBrowser *manual() const { return m_manual; }
 
     // Offers the recovery copies that Finbooks which did not close normally left (at start).
