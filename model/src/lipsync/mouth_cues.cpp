@@ -209,6 +209,8 @@ struct Segment {
     double end = 0.0;
     MouthShape shape = X;
     bool pause = false; // silence between phones: rule 4 decides its shape
+    // A closure: when its M, B or P is heard (the lips must be closed just before); -1 else.
+    double heard = -1.0;
     double length() const { return end - start; }
 };
 using Timeline = std::vector<Segment>;
@@ -218,6 +220,7 @@ void append(Timeline &timeline, const Segment &segment)
     if (!timeline.empty() && timeline.back().shape == segment.shape &&
         timeline.back().pause == segment.pause) {
         timeline.back().end = segment.end;
+        timeline.back().heard = std::max(timeline.back().heard, segment.heard);
         return;
     }
     timeline.push_back(segment);
@@ -266,7 +269,7 @@ void closeLipsBefore(Timeline &timeline, double soundStart)
     const double closureStart = before.end;
     if (before.length() <= kEpsilon)
         timeline.pop_back();
-    append(timeline, {closureStart, soundStart, A, false});
+    append(timeline, {closureStart, soundStart, A, false, soundStart});
 }
 
 // Rules 2 and 3.
@@ -340,7 +343,9 @@ Timeline mergedShapes(const Timeline &timeline)
     return merged;
 }
 
-// Rule 5. Shapes are lengthened to the left only: the mouth may lead the sound, never lag.
+// Rule 5. Shapes are lengthened to the left only: the mouth may lead the sound, never lag. A
+// shape too short takes the time from the shape before it: a closure keeps half the minimum,
+// any other shape the whole of it.
 Timeline withMinimumLengths(Timeline timeline, double minLength)
 {
     Timeline out;
@@ -349,6 +354,7 @@ Timeline withMinimumLengths(Timeline timeline, double minLength)
         Segment segment = timeline[i];
         if (!out.empty() && out.back().shape == segment.shape) {
             out.back().end = segment.end;
+            out.back().heard = std::max(out.back().heard, segment.heard);
             continue;
         }
         const double missing = minLength - segment.length();
@@ -357,7 +363,19 @@ Timeline withMinimumLengths(Timeline timeline, double minLength)
             continue;
         }
         const bool previousCanGive = !out.empty() && out.back().shape != A;
-        if (previousCanGive && out.back().length() - missing >= minLength - kEpsilon) {
+        // A closure before it gives time down to half the minimum (an A anywhere in a frame
+        // wins it, so it still shows), never the moment its sound is heard: in quick speech
+        // ("mom", "maybe") the vowel after an M is shorter than two frames, and dropping it
+        // kept the mouth shut.
+        const bool closureCanGive =
+            !out.empty() && out.back().shape == A &&
+            out.back().length() - missing >= minLength / 2 - kEpsilon &&
+            out.back().end - missing > std::max(out.back().heard, out.back().start) + kEpsilon;
+        if (closureCanGive) {
+            out.back().end -= missing;
+            segment.start -= missing;
+            out.push_back(segment);
+        } else if (previousCanGive && out.back().length() - missing >= minLength - kEpsilon) {
             out.back().end -= missing;
             segment.start -= missing;
             out.push_back(segment);

@@ -26,8 +26,10 @@
 //     (X when it cannot be); longer silences are X.
 //  5. Two frames at least. No shape but A lasts less than 2 frames at `fps`. A shape that is
 //     too short starts earlier, taking time from the previous shape if that keeps its own two
-//     frames; otherwise it is dropped and the previous shape holds through its time (after an A,
-//     the next shape starts early instead). A closure A may be shorter than a frame: see
+//     frames (a closure A keeps one: in quick speech the vowel between two closures, as in
+//     "Bob", is shorter than two frames, and must still open the mouth); otherwise it is
+//     dropped and the previous shape holds through its time (after an A, the next shape
+//     starts early instead). A closure A may be shorter than a frame: see
 //     mouthShapesPerFrame.
 //  6. Tweens for big jumps, as Rhubarb inserts them: D→A, D→G: C at the end of the D; D→B: C
 //     across the change; D→X: C at the start of the X; C→F, F→C, D→F: E across the change;
