@@ -83,6 +83,17 @@ void TestSwapUi::aMouthChartSwapsByKeys()
     QCOMPARE(doc()->frameAt(0).hold, 3);
     QVERIFY(mouth(0));
     QCOMPARE(mouth(0)->id, state()->currentGroupId());
+    // Made with the drawn object current, the mouth sits on it, two thirds down its box (the
+    // line from (50, 50) to (200, 120)).
+    QRectF box;
+    for (const model::Stroke &s : mouth(0)->strokes)
+        for (const model::StrokePoint &p : s.data->points)
+            box |= QRectF(double(p.x), double(p.y), 0.001, 0.001);
+    QVERIFY2(std::abs(box.center().x() - 125.0) < 2.0,
+             qPrintable(QString::number(box.center().x())));
+    QVERIFY2(std::abs(box.center().y() - (50.0 + 0.68 * 70.0)) < 6.0,
+             qPrintable(QString::number(box.center().y())));
+    QVERIFY(box.width() < 60.0);
     const model::SwapSet *set = doc()->swapSet(mouth(0)->swap.set);
     QVERIFY(set);
     QCOMPARE(set->drawings.size(), std::size_t(9));

@@ -170,9 +170,21 @@ void SwapActions::addMouthChart()
     if (!m_state->currentFrame())
         return;
     const QSize canvas = doc->settings().canvasSize;
-    const QPointF centre =
+    QPointF centre =
         m_chartCentre ? m_chartCentre() : QPointF(canvas.width() / 2.0, canvas.height() / 2.0);
-    const double width = std::clamp(canvas.width() / 24.0, 24.0, 200.0);
+    double width = std::clamp(canvas.width() / 24.0, 24.0, 200.0);
+    // Made with the head current, the mouth goes on its face: a third of its width, two thirds
+    // of the way down (each drawing of a set is moved on its own afterwards).
+    if (const model::StrokeGroup *face = m_state->currentGroup(); face && !face->swap.linked()) {
+        QRectF box;
+        for (const model::Stroke &stroke : face->strokes)
+            for (const model::StrokePoint &p : stroke.data->points)
+                box |= QRectF(double(p.x), double(p.y), 0.001, 0.001);
+        if (box.width() > 12 && box.height() > 12) {
+            centre = QPointF(box.center().x(), box.top() + box.height() * 0.68);
+            width = std::clamp(box.width() / 3.0, 12.0, 200.0);
+        }
+    }
     // Its own layer above the current one, exposed for the whole shot: the mouth's row, which
     // lip sync cuts into the mouths as they are heard without touching the character's cels.
     doc->undoStack()->beginMacro(tr("New Mouth Chart"));

@@ -5,8 +5,9 @@
 // swap.makeSwappable     —                  the current object's drawing becomes the first of a
 //                                           new set (NewSwapSetCommand)
 // swap.mouthChart        —                  a new layer "Mouth" (one cel for the whole shot) whose
-//                                           object shows a set of the nine mouth shapes, at the
-//                                           centre of the view
+//                                           object shows a set of the nine mouth shapes, on the
+//                                           current object's face (two thirds down its box) or
+//                                           at the centre of the view
 // swap.newDrawing        —                  an empty drawing in the current object's set, shown
 // swap.duplicateDrawing  —                  a copy of the drawing shown, added and shown
 // swap.renameDrawing     —                  renames the drawing shown
