@@ -402,10 +402,110 @@
     </message>
     <message>
         <location filename="../model/src/document.cpp" line="21"/>
-        <location filename="../model/src/document.cpp" line="205"/>
+        <location filename="../model/src/document.cpp" line="223"/>
         <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Layer 1</source>
         <translation>Ebene 1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_keys.cpp" line="83"/>
+        <source>The object is not swappable: make a mouth chart first (Object &gt; New Mouth Chart).</source>
+        <translation>Das Objekt ist nicht austauschbar: Legen Sie zuerst eine Mundtabelle an (Objekt &gt; Neue Mundtabelle).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_keys.cpp" line="89"/>
+        <source>The set &quot;%1&quot; has no drawings named A to F (the mouth shapes lip sync keys): make a mouth chart, or name its drawings by their shapes.</source>
+        <translation>Der Satz „%1“ hat keine Zeichnungen namens A bis F (die Mundformen der Lippensynchronisation): Legen Sie eine Mundtabelle an oder benennen Sie die Zeichnungen nach ihren Formen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_keys.cpp" line="96"/>
+        <source>There is nothing to key.</source>
+        <translation>Es gibt nichts zu setzen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="88"/>
+        <source>A (M B P)</source>
+        <translation>A (M B P)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="88"/>
+        <source>B (K S T)</source>
+        <translation>B (K S T)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="89"/>
+        <source>C (EH AE)</source>
+        <translation>C (EH AE)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="89"/>
+        <source>D (AA)</source>
+        <translation>D (AA)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="90"/>
+        <source>E (AO ER)</source>
+        <translation>E (AO ER)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="90"/>
+        <source>F (UW OW W)</source>
+        <translation>F (UW OW W)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="91"/>
+        <source>G (F V)</source>
+        <translation>G (F V)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="91"/>
+        <source>H (L)</source>
+        <translation>H (L)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="92"/>
+        <source>X (rest)</source>
+        <translation>X (Ruhe)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="116"/>
+        <source>Mouth</source>
+        <translation>Mund</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="63"/>
+        <source>Make Object Swappable</source>
+        <translation>Objekt austauschbar machen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="89"/>
+        <source>New Swap Set</source>
+        <translation>Neuer Austauschsatz</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="138"/>
+        <source>Show Drawing &quot;%1&quot;</source>
+        <translation>Zeichnung „%1“ zeigen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="217"/>
+        <source>New Drawing &quot;%1&quot;</source>
+        <translation>Neue Zeichnung „%1“</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="269"/>
+        <source>Rename Drawing</source>
+        <translation>Zeichnung umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="299"/>
+        <source>Delete Drawing &quot;%1&quot;</source>
+        <translation>Zeichnung „%1“ löschen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="333"/>
+        <source>Make Drawing Independent</source>
+        <translation>Zeichnung eigenständig machen</translation>
     </message>
 </context>
 <context>
@@ -1257,7 +1357,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="85"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="65"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1373,22 +1473,22 @@
         <translation>„%1“ konnte nicht gespeichert werden: Die Zeichnung enthält ungültige Daten (%2). Die bisherige Datei ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="44"/>
         <source>unknown %1 %2</source>
         <translation>unbekannter %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="46"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="47"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>die Datei enthält Daten („%1“), die diese Finbook-Version nicht kennt, und wurde daher wohl mit einer neueren Finbook-Version erstellt; bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="66"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="67"/>
         <source>more problems were found and repaired the same way</source>
         <translation>weitere Probleme wurden gefunden und auf dieselbe Weise behoben</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="75"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="76"/>
         <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
         <translation>die Datei beschreibt mehr, als eine Datei ihrer Größe enthalten kann (zum Öffnen wären mehr als %1 MB Arbeitsspeicher nötig)</translation>
     </message>
@@ -1428,212 +1528,222 @@
         <translation>die Datei wurde mit einer neueren Finbook-Version erstellt (Dateiformat %1; diese Version liest bis %2); bitte aktualisieren Sie Finbook, um sie zu öffnen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="112"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="113"/>
         <source>the file&apos;s section list</source>
         <translation>die Abschnittsliste der Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="116"/>
         <source>the file ends before its end</source>
         <translation>die Datei endet vorzeitig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="119"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="120"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
         <source>a section header</source>
         <translation>ein Abschnittskopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="122"/>
         <source>section %1</source>
         <translation>Abschnitt %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="138"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="140"/>
         <source>the file&apos;s end is damaged</source>
         <translation>das Ende der Datei ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="143"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>ihre Länge (%1 Bytes) reicht über das Dateiende hinaus (%2 Bytes übrig), obwohl die Datei mit ihrer Endmarke endet; die Längenangabe ist also beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>die Datei endet mitten in diesem Abschnitt (%1 Bytes angekündigt, %2 übrig)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>die Datei endet mitten in diesem Abschnitt; sein vorhandener Inhalt wird gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>a section</source>
         <translation>ein Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>die Datei endet vor der Prüfsumme dieses Abschnitts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
         <source>a section checksum</source>
         <translation>eine Abschnittsprüfsumme</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>seine Prüfsumme stimmt nicht, seine Bytes wurden also nach dem Speichern verändert</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>section %1 is missing</source>
         <translation>Abschnitt %1 fehlt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="179"/>
         <source>the end marker</source>
         <translation>die Endmarke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>the file</source>
         <translation>die Datei</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="216"/>
         <source>a sound clip comes before the frames</source>
         <translation>ein Tonclip steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the layers come before the frames</source>
         <translation>die Ebenen stehen vor den Einzelbildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <source>the layers are repeated</source>
         <translation>die Ebenen kommen doppelt vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="232"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
         <source>the camera comes before the frames</source>
         <translation>die Kamera steht vor den Bildern</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="236"/>
         <source>the camera is repeated</source>
         <translation>die Kamera kommt mehrfach vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <source>the swap sets come before the frames</source>
+        <translation>die Austauschsätze stehen vor den Bildern</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <source>the swap sets are repeated</source>
+        <translation>die Austauschsätze sind wiederholt</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
         <source>an unknown section is left out</source>
         <translation>ein unbekannter Abschnitt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
         <source>section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="251"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
         <source>the section is repeated or out of order</source>
         <translation>der Abschnitt ist doppelt vorhanden oder steht an der falschen Stelle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="278"/>
         <source>the palette</source>
         <translation>die Palette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
         <source>the end of the section could not be read</source>
         <translation>das Ende des Abschnitts konnte nicht gelesen werden</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="294"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
         <source>the section</source>
         <translation>der Abschnitt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="317"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="379"/>
         <source>the document settings</source>
         <translation>die Dokumenteinstellungen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="308"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
         <source>the canvas size</source>
         <translation>die Leinwandgröße</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>die Leinwandgröße %1×%2 liegt nicht zwischen 1 und %3 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="331"/>
         <source>the background colour</source>
         <translation>die Hintergrundfarbe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
         <source>the frame rate</source>
         <translation>die Bildrate</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="336"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>die Bildrate %1 liegt nicht zwischen %2 und %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
         <source>the loop flag</source>
         <translation>die Endlosschleifen-Angabe</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>die Endlosschleifen-Angabe %1 ist weder 0 noch 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the play range</source>
         <translation>der Wiedergabebereich</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="339"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="352"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>der Wiedergabebereich %1 bis %2 ist ungültig</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="343"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="356"/>
         <source>the next id</source>
         <translation>die nächste ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="358"/>
         <source>the close-gap setting</source>
         <translation>die Einstellung zum Lückenschließen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="361"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>die Einstellung zum Lückenschließen %1 liegt nicht zwischen 0 und %2 Pixeln</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="357"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>die nächste freie ID %1 ist größer als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="408"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
@@ -1919,22 +2029,22 @@
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="413"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>die nächste freie ID %1 ist nicht größer als die größte ID %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="431"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="454"/>
         <source>the id %1 is used twice</source>
         <translation>die ID %1 wird doppelt verwendet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="459"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>kein einziges Einzelbild konnte gelesen werden; es gibt nichts wiederherzustellen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="445"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="468"/>
         <source>there is not enough memory to open this file</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden, um diese Datei zu öffnen</translation>
     </message>
@@ -2076,12 +2186,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="161"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="162"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>Die automatische Sicherung konnte keine Wiederherstellungskopie schreiben: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="42"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="43"/>
         <source>there is not enough memory</source>
         <translation>es ist nicht genug Arbeitsspeicher vorhanden</translation>
     </message>
@@ -2320,6 +2430,53 @@
         <location filename="../model/src/scene/layer_section.cpp" line="76"/>
         <source>%1; every frame is put on one layer</source>
         <translation>%1; alle Einzelbilder kommen auf eine Ebene</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="14"/>
+        <location filename="../model/src/swap/swap_section.cpp" line="16"/>
+        <location filename="../model/src/swap/swap_section.cpp" line="52"/>
+        <source>the swap sets</source>
+        <translation>die Austauschsätze</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="21"/>
+        <source>the file has %1 swap sets (at most %2)</source>
+        <translation>die Datei hat %1 Austauschsätze (höchstens %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="28"/>
+        <source>swap set %1</source>
+        <translation>Austauschsatz %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="33"/>
+        <source>swap set %1 has %2 drawings (1 to %3)</source>
+        <translation>Austauschsatz %1 hat %2 Zeichnungen (1 bis %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="44"/>
+        <source>a drawing of swap set %1 carries a pose</source>
+        <translation>eine Zeichnung von Austauschsatz %1 trägt eine Pose</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="65"/>
+        <source>object %1 shows a drawing the swap sets do not hold</source>
+        <translation>Objekt %1 zeigt eine Zeichnung, die in keinem Austauschsatz steht</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="83"/>
+        <source>the swap sets link objects the frames do not hold</source>
+        <translation>die Austauschsätze verweisen auf Objekte, die in keinem Bild stehen</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="95"/>
+        <source>a frame shows a swap set on two objects</source>
+        <translation>ein Bild zeigt einen Austauschsatz auf zwei Objekten</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="113"/>
+        <source>%1; the swap sets are left out</source>
+        <translation>%1; die Austauschsätze werden weggelassen</translation>
     </message>
 </context>
 <context>
@@ -2844,6 +3001,229 @@
         <location filename="../model/src/frame_list_model.cpp" line="152"/>
         <source>Frame %1</source>
         <translation>Einzelbild %1</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::model::lipsync</name>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="31"/>
+        <source>The file holds no mouth shapes.</source>
+        <translation>Die Datei enthält keine Mundformen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="44"/>
+        <source>The file is larger than %1 MiB, too large for lip sync timings.</source>
+        <translation>Die Datei ist größer als %1 MiB, zu groß für Lippensynchron-Zeiten.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="55"/>
+        <source>The file is empty.</source>
+        <translation>Die Datei ist leer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="149"/>
+        <source>Line %1: &quot;%2&quot; is not a time from 0 to %3 seconds.</source>
+        <translation>Zeile %1: „%2“ ist keine Zeit von 0 bis %3 Sekunden.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="158"/>
+        <source>Line %1: the time goes backwards.</source>
+        <translation>Zeile %1: die Zeit läuft rückwärts.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="165"/>
+        <source>Line %1: the mouth cue ends before it starts.</source>
+        <translation>Zeile %1: die Mundform endet, bevor sie beginnt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="172"/>
+        <source>The file holds more than %1 mouth cues.</source>
+        <translation>Die Datei enthält mehr als %1 Mundformen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="179"/>
+        <source>Line %1: &quot;%2&quot; is not a mouth shape.</source>
+        <translation>Zeile %1: „%2“ ist keine Mundform.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="213"/>
+        <source>The frame rate %1 is not a number above 0 and up to %2.</source>
+        <translation>Die Bildrate %1 ist keine Zahl über 0 und bis %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="221"/>
+        <source>The file ends too early, after line %1.</source>
+        <translation>Die Datei endet zu früh, nach Zeile %1.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="228"/>
+        <source>Line %1: &quot;%2&quot; is not a whole number from %3 to %4.</source>
+        <translation>Zeile %1: „%2“ ist keine ganze Zahl von %3 bis %4.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="256"/>
+        <source>The Papagayo file holds no phonemes.</source>
+        <translation>Die Papagayo-Datei enthält keine Phoneme.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="299"/>
+        <source>Line 1: a Papagayo file starts with &quot;lipsync version 1&quot;.</source>
+        <translation>Zeile 1: Eine Papagayo-Datei beginnt mit „lipsync version 1“.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="309"/>
+        <source>Line %1: the frame rate &quot;%2&quot; is not a number above 0 and up to %3.</source>
+        <translation>Zeile %1: die Bildrate „%2“ ist keine Zahl über 0 und bis %3.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="354"/>
+        <source>Line %1 is not a word (&quot;text, start frame, end frame, phoneme count&quot;).</source>
+        <translation>Zeile %1 ist kein Wort („Text, Anfangsbild, Endbild, Anzahl Phoneme“).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="380"/>
+        <source>Line %1 is not a phoneme (&quot;frame name&quot;).</source>
+        <translation>Zeile %1 ist kein Phonem („Bild Name“).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="388"/>
+        <source>Line %1: the phoneme at frame %2 comes after its word&apos;s end, frame %3.</source>
+        <translation>Zeile %1: das Phonem in Bild %2 kommt nach dem Ende seines Worts, Bild %3.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="438"/>
+        <source>The XML is damaged at line %1: %2.</source>
+        <translation>Das XML ist in Zeile %1 beschädigt: %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="478"/>
+        <source>Mouth cue %1: its &quot;%2&quot; is not a time from 0 to %3 seconds.</source>
+        <translation>Mundform %1: ihr „%2“ ist keine Zeit von 0 bis %3 Sekunden.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="501"/>
+        <source>Mouth cue %1 ends before it starts.</source>
+        <translation>Mundform %1 endet, bevor sie beginnt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="508"/>
+        <source>Mouth cue %1: its &quot;value&quot; &quot;%2&quot; is not a mouth shape.</source>
+        <translation>Mundform %1: ihr „value“ „%2“ ist keine Mundform.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="514"/>
+        <source>Mouth cue %1: the time goes backwards.</source>
+        <translation>Mundform %1: die Zeit läuft rückwärts.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="537"/>
+        <source>The JSON is damaged at character %1: %2.</source>
+        <translation>Das JSON ist bei Zeichen %1 beschädigt: %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="543"/>
+        <source>The JSON has no &quot;mouthCues&quot; list: it is not a Rhubarb Lip Sync result.</source>
+        <translation>Das JSON hat keine Liste „mouthCues“: Es ist kein Ergebnis von Rhubarb Lip Sync.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="566"/>
+        <source>Line %1: the XML&apos;s root is &lt;%2&gt;, not &lt;rhubarbResult&gt;: it is not a Rhubarb Lip Sync result.</source>
+        <translation>Zeile %1: die Wurzel des XML ist &lt;%2&gt;, nicht &lt;rhubarbResult&gt;: Es ist kein Ergebnis von Rhubarb Lip Sync.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="601"/>
+        <source>Line %1 is not &quot;seconds, tab, shape letter&quot;.</source>
+        <translation>Zeile %1 ist nicht „Sekunden, Tabulator, Formbuchstabe“.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="629"/>
+        <source>Line %1: Moho switch data starts with &quot;MohoSwitch1&quot;.</source>
+        <translation>Zeile %1: Moho-Switch-Daten beginnen mit „MohoSwitch1“.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="644"/>
+        <source>Line %1 is not &quot;frame shape&quot;.</source>
+        <translation>Zeile %1 ist nicht „Bild Form“.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="649"/>
+        <source>Line %1: &quot;%2&quot; is not a frame number from 1 to %3.</source>
+        <translation>Zeile %1: „%2“ ist keine Bildnummer von 1 bis %3.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="671"/>
+        <source>Line %1: the letter &quot;%2&quot; is among Preston Blair&apos;s names; a file uses one naming or the other.</source>
+        <translation>Zeile %1: der Buchstabe „%2“ steht unter Preston Blairs Namen; eine Datei benutzt die eine Benennung oder die andere.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="724"/>
+        <source>&quot;%1&quot; could not be opened: %2.</source>
+        <translation>„%1“ konnte nicht geöffnet werden: %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="746"/>
+        <source>&quot;%1&quot; is not lip sync timings that Finbook reads: Papagayo (.pgo), Moho switch data (.dat) or Rhubarb Lip Sync (.tsv, .json, .xml).</source>
+        <translation>„%1“ sind keine Lippensynchron-Zeiten, die Finbook liest: Papagayo (.pgo), Moho-Switch-Daten (.dat) oder Rhubarb Lip Sync (.tsv, .json, .xml).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="756"/>
+        <source>Lip sync timings</source>
+        <translation>Lippensynchron-Zeiten</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="137"/>
+        <source>The sound&apos;s sample rate (%1 Hz) is not one speech can be recognised at.</source>
+        <translation>Die Abtastrate des Tons (%1 Hz) erlaubt keine Spracherkennung.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="142"/>
+        <source>The sound is too short to hold speech (less than a tenth of a second).</source>
+        <translation>Der Ton ist zu kurz für Sprache (weniger als eine Zehntelsekunde).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="146"/>
+        <source>The sound is damaged: some of its samples are not numbers.</source>
+        <translation>Der Ton ist beschädigt: Einige seiner Abtastwerte sind keine Zahlen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="151"/>
+        <source>The sound is silent: there is no speech to recognise. Check that the clip is the one with the dialogue and that it is not muted.</source>
+        <translation>Der Ton ist stumm: Es gibt keine Sprache zu erkennen. Prüfen Sie, ob der Clip der mit dem Dialog ist und nicht stummgeschaltet ist.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="173"/>
+        <source>The speech models are not installed (looked in %1; on Debian and Ubuntu install the package pocketsphinx-en-us). Mouth shapes follow the loudness only.</source>
+        <translation>Die Sprachmodelle sind nicht installiert (gesucht in %1; unter Debian und Ubuntu das Paket pocketsphinx-en-us installieren). Die Mundformen folgen nur der Lautstärke.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="520"/>
+        <source>The dialogue could not be prepared for recognition: %1</source>
+        <translation>Der Dialog konnte nicht für die Erkennung vorbereitet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="529"/>
+        <source>The speech models are damaged: %1</source>
+        <translation>Die Sprachmodelle sind beschädigt: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="593"/>
+        <source>Speech recognition failed: %1</source>
+        <translation>Die Spracherkennung ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="602"/>
+        <source>Lip sync was canceled.</source>
+        <translation>Die Lippensynchronisation wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="854"/>
+        <source>The speech models could not be loaded (%1). Mouth shapes follow the loudness only.</source>
+        <translation>Die Sprachmodelle konnten nicht geladen werden (%1). Die Mundformen folgen nur der Lautstärke.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="866"/>
+        <source>The dialogue does not match the sound: the mouth follows the phones heard, without the dialogue.</source>
+        <translation>Der Dialog passt nicht zum Ton: Der Mund folgt den gehörten Lauten, ohne den Dialog.</translation>
     </message>
 </context>
 <context>
@@ -4037,25 +4417,25 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="398"/>
         <source>Lock Layer</source>
         <translation>Ebene sperren</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="398"/>
         <source>Unlock Layer</source>
         <translation>Ebene entsperren</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="393"/>
         <source>Show Layer</source>
         <translation>Ebene einblenden</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="393"/>
         <source>Hide Layer</source>
         <translation>Ebene ausblenden</translation>
     </message>
@@ -4099,85 +4479,245 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::LipSyncDialog</name>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="67"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="68"/>
+        <source>&amp;Import Timings...</source>
+        <translation>Zeiten &amp;importieren…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="73"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="239"/>
+        <source>Lip Sync</source>
+        <translation>Lippensynchronisation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="76"/>
+        <source>Optional: the words spoken, for a closer fit</source>
+        <translation>Optional: die gesprochenen Worte, für eine genauere Anpassung</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="93"/>
+        <source>%1 (from frame %2)</source>
+        <translation>%1 (ab Bild %2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="97"/>
+        <source>Recognises English speech (PocketSphinx, US English). Other languages: import timings made elsewhere.</source>
+        <translation>Erkennt englische Sprache (PocketSphinx, US-Englisch). Andere Sprachen: anderswo erstellte Zeiten importieren.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="99"/>
+        <source>The speech models are not installed (Debian: pocketsphinx-en-us): the mouth follows the loudness only, closed, half open or open.</source>
+        <translation>Die Sprachmodelle sind nicht installiert (Debian: pocketsphinx-en-us): Der Mund folgt nur der Lautstärke, geschlossen, halb offen oder offen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="103"/>
+        <source>Mouth:</source>
+        <translation>Mund:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="104"/>
+        <source>%1 (%2 drawings)</source>
+        <translation>%1 (%2 Zeichnungen)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="105"/>
+        <source>(none)</source>
+        <translation>(keiner)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="107"/>
+        <source>&amp;Sound:</source>
+        <translation>&amp;Ton:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="108"/>
+        <source>&amp;Dialogue:</source>
+        <translation>&amp;Dialog:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="120"/>
+        <source>The animation has no sound: File &gt; Import Sound… first, or import timings made elsewhere.</source>
+        <translation>Die Animation hat keinen Ton: zuerst Datei &gt; Ton importieren…, oder anderswo erstellte Zeiten importieren.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="125"/>
+        <source>Import Lip Sync Timings</source>
+        <translation>Lippensynchron-Zeiten importieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="191"/>
+        <source>Listening…</source>
+        <translation>Hört zu…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="209"/>
+        <source>Cancelling…</source>
+        <translation>Wird abgebrochen…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="215"/>
+        <source>Cancelled: nothing was changed.</source>
+        <translation>Abgebrochen: Nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="219"/>
+        <source>Nothing was changed.</source>
+        <translation>Nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="222"/>
+        <source>from the loudness (the speech models are not installed)</source>
+        <translation>nach der Lautstärke (die Sprachmodelle sind nicht installiert)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="223"/>
+        <source>from the recognised speech</source>
+        <translation>nach der erkannten Sprache</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="224"/>
+        <source>from the speech and the dialogue</source>
+        <translation>nach Sprache und Dialog</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="226"/>
+        <source>spelt by rules, not found in the dictionary: %1</source>
+        <translation>nach Regeln buchstabiert, nicht im Wörterbuch: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="244"/>
+        <source>Keyed the mouth on %n frame(s), %1.</source>
+        <translation>
+            <numerusform>Mund auf %n Bild gesetzt, %1.</numerusform>
+            <numerusform>Mund auf %n Bildern gesetzt, %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
+        <source>%n frame(s) of the mouth&apos;s layer hold no mouth and were left as they were.</source>
+        <translation>
+            <numerusform>%n Bild der Mund-Ebene enthält keinen Mund und blieb, wie es war.</numerusform>
+            <numerusform>%n Bilder der Mund-Ebene enthalten keinen Mund und blieben, wie sie waren.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="260"/>
+        <source>%1 was not imported: %2</source>
+        <translation>%1 wurde nicht importiert: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="266"/>
+        <source>from %1</source>
+        <translation>aus %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="314"/>
+        <source>The clip holds no sound to follow.</source>
+        <translation>Der Clip enthält keinen Ton, dem man folgen könnte.</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window.cpp" line="159"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window.cpp" line="162"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="217"/>
+        <source>Show Dr&amp;awing</source>
+        <translation>Zeichnung anz&amp;eigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="235"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window.cpp" line="238"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="213"/>
+        <location filename="../ui/src/window/main_window.cpp" line="242"/>
         <source>Reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="262"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;geöffnetes Dokument&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window.cpp" line="264"/>
         <source>Undo History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window.cpp" line="271"/>
         <source>Palette</source>
         <translation>Palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window.cpp" line="297"/>
         <source>Rotation </source>
         <translation>Drehung </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window.cpp" line="301"/>
         <source>The view&apos;s rotation: the drawing is not changed. Shift+Space-drag on the canvas turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it.</source>
         <translation>Die Drehung der Ansicht: die Zeichnung bleibt unverändert. Umschalt+Leertaste-Ziehen auf der Leinwand dreht sie frei; 4 und 6 drehen um 15°, 5 setzt zurück, Umschalt+M spiegelt.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="298"/>
+        <location filename="../ui/src/window/main_window.cpp" line="327"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>Die Referenz „%1“ kann nicht angezeigt werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="307"/>
+        <location filename="../ui/src/window/main_window.cpp" line="336"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window.cpp" line="347"/>
         <source>Frame %1 / %2</source>
         <translation>Einzelbild %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window.cpp" line="348"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window.cpp" line="353"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="278"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="325"/>
+        <location filename="../ui/src/window/main_window.cpp" line="354"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -4243,7 +4783,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>Import Mesh</source>
         <translation>Netz importieren</translation>
     </message>
@@ -4288,272 +4828,272 @@
         <translation>unbenannt.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="62"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
         <source>Open Exa&amp;mple</source>
         <translation>Beis&amp;piel öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
         <source>&amp;Welcome...</source>
         <translation>&amp;Willkommen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="83"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="92"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>E&amp;xport...</source>
         <translation>E&amp;xportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Import Mesh...</source>
         <translation>Netz &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF-Netze (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="119"/>
         <source>Import Re&amp;ference...</source>
         <translation>&amp;Referenz importieren...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
         <source>Cannot Import Reference</source>
         <translation>Referenz kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>&amp;Paste</source>
         <translation>&amp;Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="187"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
         <source>Select &amp;All</source>
         <translation>Alles a&amp;uswählen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>Dese&amp;lect</source>
         <translation>Auswahl au&amp;fheben</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
         <source>D&amp;ocument Settings...</source>
         <translation>D&amp;okumenteinstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="215"/>
         <source>Pre&amp;ferences...</source>
         <translation>Ein&amp;stellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="245"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="247"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Originalgröße (100 %)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="250"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
         <source>Rotate View &amp;Left</source>
         <translation>Ansicht nach &amp;links drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
         <source>Rotate View &amp;Right</source>
         <translation>Ansicht nach &amp;rechts drehen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Dre&amp;hung der Ansicht zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Ansicht sp&amp;iegeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Zwiebelhaut-&amp;Einstellungen...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="284"/>
         <source>Show &amp;Mesh</source>
         <translation>&amp;Netz anzeigen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="285"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="290"/>
         <source>&amp;Camera View</source>
         <translation>Kamera&amp;ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Andere Ebenen ab&amp;dunkeln</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="303"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="309"/>
         <source>F&amp;rame</source>
         <translation>&amp;Einzelbild</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
         <source>&amp;Layer</source>
         <translation>Ebe&amp;ne</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
         <source>&amp;Object</source>
         <translation>&amp;Objekt</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="335"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="347"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="338"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="350"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="348"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="360"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook-&amp;Handbuch</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="353"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="365"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="355"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
         <source>&amp;About Finbook</source>
         <translation>Ü&amp;ber Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="397"/>
         <source>Onion Skin</source>
         <translation>Zwiebelhaut</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="409"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="421"/>
         <source>About Finbook</source>
         <translation>Über Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="410"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="422"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Ein Daumenkino-Animationseditor: Einzelbilder nacheinander zeichnen und Zeichnungen mit Pins verformen.&lt;/p&gt;</translation>
     </message>
@@ -4563,18 +5103,28 @@
         <translation>&amp;Verformen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="51"/>
+        <source>&amp;Lip Sync...</source>
+        <translation>&amp;Lippensynchronisation…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="52"/>
+        <source>Key a mouth chart&apos;s drawings from the soundtrack</source>
+        <translation>Die Zeichnungen einer Mundtabelle nach der Tonspur setzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="74"/>
         <source>Preparing the deformation…</source>
         <translation>Verformung wird vorbereitet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
@@ -4725,12 +5275,22 @@
         <source>Shading</source>
         <translation>Schattierung</translation>
     </message>
+    <message>
+        <location filename="../ui/src/lipsync/main_window_lipsync.cpp" line="15"/>
+        <source>Lip Sync</source>
+        <translation>Lippensynchronisation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/main_window_lipsync.cpp" line="16"/>
+        <source>Lip sync keys the drawings of a mouth chart. Make one with Object &gt; New Mouth Chart, redraw its mouths in your style, then come back here.</source>
+        <translation>Die Lippensynchronisation setzt die Zeichnungen einer Mundtabelle. Legen Sie eine mit Objekt &gt; Neue Mundtabelle an, zeichnen Sie die Münder in Ihrem Stil neu und kommen Sie dann hierher zurück.</translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::ManualBrowser</name>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="30"/>
-        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="98"/>
         <source>Contents</source>
         <translation>Inhalt</translation>
     </message>
@@ -4776,56 +5336,61 @@
     </message>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="39"/>
+        <source>Swapping Drawings and Lip Sync</source>
+        <translation>Zeichnungen austauschen und Lippensynchronisation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="40"/>
         <source>Camera</source>
         <translation>Kamera</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="40"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
         <source>Reference Pictures and Video</source>
         <translation>Referenzbilder und -videos</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
         <source>Exporting</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
         <source>Saving, Autosave and Recovery</source>
         <translation>Speichern, automatisches Speichern und Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
         <source>The Command Line</source>
         <translation>Die Befehlszeile</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
         <source>Keyboard Shortcuts</source>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="46"/>
         <source>Installing</source>
         <translation>Installieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="82"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="83"/>
         <source>Finbook Manual</source>
         <translation>Finbook-Handbuch</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="95"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
         <source>Back</source>
         <translation>Zurück</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
         <source>Forward</source>
         <translation>Vor</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="102"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="103"/>
         <source>Search the manual</source>
         <translation>Im Handbuch suchen</translation>
     </message>
@@ -5892,6 +6457,133 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::SwapActions</name>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="24"/>
+        <source>Make S&amp;wappable</source>
+        <translation>Aus&amp;tauschbar machen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="26"/>
+        <source>New Mout&amp;h Chart</source>
+        <translation>Neue &amp;Mundtabelle</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="29"/>
+        <source>&amp;Previous Drawing</source>
+        <translation>Vo&amp;rherige Zeichnung</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="32"/>
+        <source>Ne&amp;xt Drawing</source>
+        <translation>Nächste Zeichn&amp;ung</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="22"/>
+        <source>Show Dr&amp;awing</source>
+        <translation>Zeichnung anz&amp;eigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="35"/>
+        <source>New Drawing in S&amp;et</source>
+        <translation>Neue Zeichnung &amp;im Satz</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="38"/>
+        <source>D&amp;uplicate Drawing in Set</source>
+        <translation>Zeichnung im Satz &amp;duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="40"/>
+        <source>&amp;Rename Drawing...</source>
+        <translation>Zeichnung um&amp;benennen…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="42"/>
+        <source>Remove Drawing from Se&amp;t</source>
+        <translation>Zei&amp;chnung aus Satz entfernen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="44"/>
+        <source>Make Drawing &amp;Independent</source>
+        <translation>Zeichnung eigenst&amp;ändig machen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="47"/>
+        <source>Make the object&apos;s drawing the first of a set it swaps between, frame by frame (mouths, hands, blinks)</source>
+        <translation>Die Zeichnung des Objekts zur ersten eines Satzes machen, zwischen dem es Bild für Bild wechselt (Münder, Hände, Blinzeln)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="50"/>
+        <source>A new object showing the nine mouth shapes lip sync uses</source>
+        <translation>Ein neues Objekt mit den neun Mundformen der Lippensynchronisation</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="52"/>
+        <source>This frame keeps its drawing as its own: edits of it no longer reach the other frames</source>
+        <translation>Dieses Bild behält seine Zeichnung für sich: Änderungen daran erreichen die anderen Bilder nicht mehr</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="125"/>
+        <source>(not swappable)</source>
+        <translation>(nicht austauschbar)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="129"/>
+        <source>(unnamed)</source>
+        <translation>(ohne Namen)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="162"/>
+        <source>&quot;%1&quot; is swappable: add drawings with Object &gt; New Drawing in Set, and pick one per frame with [ and ]</source>
+        <translation>„%1“ ist austauschbar: Zeichnungen mit Objekt &gt; Neue Zeichnung im Satz hinzufügen und pro Bild mit [ und ] wählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="190"/>
+        <source>New Mouth Chart</source>
+        <translation>Neue Mundtabelle</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="191"/>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="195"/>
+        <source>Mouth</source>
+        <translation>Mund</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="201"/>
+        <source>A mouth chart on its own layer: nine mouth shapes to redraw in your style; [ and ] swap them, Deform &gt; Lip Sync keys them from the soundtrack</source>
+        <translation>Eine Mundtabelle auf eigener Ebene: neun Mundformen zum Neuzeichnen in Ihrem Stil; [ und ] wechseln sie, Verformen &gt; Lippensynchronisation setzt sie nach der Tonspur</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="226"/>
+        <source>Rename Drawing</source>
+        <translation>Zeichnung umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="226"/>
+        <source>Name of the drawing:</source>
+        <translation>Name der Zeichnung:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="273"/>
+        <source>Drawing &quot;%1&quot;</source>
+        <translation>Zeichnung „%1“</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SwapPicker</name>
+    <message>
+        <location filename="../ui/src/swap/swap_picker.cpp" line="15"/>
+        <source>Drawing:</source>
+        <translation>Zeichnung:</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_picker.cpp" line="20"/>
+        <source>The drawing this object shows in this frame ([ and ] step through them)</source>
+        <translation>Die Zeichnung, die dieses Objekt in diesem Bild zeigt ([ und ] blättern durch sie)</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineView</name>
     <message>
         <location filename="../ui/src/timeline/timeline_view.cpp" line="266"/>
@@ -5950,7 +6642,7 @@
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/tool_options_bar.cpp" line="61"/>
+        <location filename="../ui/src/window/tool_options_bar.cpp" line="56"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

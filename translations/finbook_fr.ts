@@ -402,10 +402,110 @@
     </message>
     <message>
         <location filename="../model/src/document.cpp" line="21"/>
-        <location filename="../model/src/document.cpp" line="205"/>
+        <location filename="../model/src/document.cpp" line="223"/>
         <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Layer 1</source>
         <translation>Calque 1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_keys.cpp" line="83"/>
+        <source>The object is not swappable: make a mouth chart first (Object &gt; New Mouth Chart).</source>
+        <translation>L&apos;objet n&apos;est pas interchangeable : créez d&apos;abord une planche de bouches (Objet &gt; Nouvelle planche de bouches).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_keys.cpp" line="89"/>
+        <source>The set &quot;%1&quot; has no drawings named A to F (the mouth shapes lip sync keys): make a mouth chart, or name its drawings by their shapes.</source>
+        <translation>Le jeu « %1 » n&apos;a pas de dessins nommés A à F (les formes de bouche de la synchro labiale) : créez une planche de bouches, ou nommez ses dessins d&apos;après leurs formes.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_keys.cpp" line="96"/>
+        <source>There is nothing to key.</source>
+        <translation>Il n&apos;y a rien à poser.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="88"/>
+        <source>A (M B P)</source>
+        <translation>A (M B P)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="88"/>
+        <source>B (K S T)</source>
+        <translation>B (K S T)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="89"/>
+        <source>C (EH AE)</source>
+        <translation>C (EH AE)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="89"/>
+        <source>D (AA)</source>
+        <translation>D (AA)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="90"/>
+        <source>E (AO ER)</source>
+        <translation>E (AO ER)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="90"/>
+        <source>F (UW OW W)</source>
+        <translation>F (UW OW W)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="91"/>
+        <source>G (F V)</source>
+        <translation>G (F V)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="91"/>
+        <source>H (L)</source>
+        <translation>H (L)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="92"/>
+        <source>X (rest)</source>
+        <translation>X (repos)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="116"/>
+        <source>Mouth</source>
+        <translation>Bouche</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="63"/>
+        <source>Make Object Swappable</source>
+        <translation>Rendre l&apos;objet interchangeable</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="89"/>
+        <source>New Swap Set</source>
+        <translation>Nouveau jeu de dessins</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="138"/>
+        <source>Show Drawing &quot;%1&quot;</source>
+        <translation>Afficher le dessin « %1 »</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="217"/>
+        <source>New Drawing &quot;%1&quot;</source>
+        <translation>Nouveau dessin « %1 »</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="269"/>
+        <source>Rename Drawing</source>
+        <translation>Renommer le dessin</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="299"/>
+        <source>Delete Drawing &quot;%1&quot;</source>
+        <translation>Supprimer le dessin « %1 »</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="333"/>
+        <source>Make Drawing Independent</source>
+        <translation>Garder le dessin pour cette image</translation>
     </message>
 </context>
 <context>
@@ -1257,7 +1357,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="85"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="65"/>
         <source>%1: %2</source>
         <translation>%1&#xa0;: %2</translation>
     </message>
@@ -1373,22 +1473,22 @@
         <translation>Impossible d&apos;enregistrer «&#xa0;%1&#xa0;»&#xa0;: le dessin contient des données invalides (%2). Le fichier précédent n&apos;a pas été modifié.</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="44"/>
         <source>unknown %1 %2</source>
         <translation>%1 %2 de type inconnu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="46"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="47"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>il contient des données («&#xa0;%1&#xa0;») que cette version de Finbook ne connaît pas&#xa0;; il a sans doute été créé par une version plus récente. Mettez Finbook à jour pour l&apos;ouvrir</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="66"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="67"/>
         <source>more problems were found and repaired the same way</source>
         <translation>d&apos;autres problèmes ont été trouvés et réparés de la même façon</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="75"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="76"/>
         <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
         <translation>il décrit plus de données qu&apos;un fichier de cette taille ne peut en contenir (l&apos;ouvrir demanderait plus de %1&#xa0;Mo de mémoire)</translation>
     </message>
@@ -1428,212 +1528,222 @@
         <translation>il a été créé par une version plus récente de Finbook (format de fichier %1&#xa0;; cette version lit jusqu&apos;au format %2). Mettez Finbook à jour pour l&apos;ouvrir</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="112"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="113"/>
         <source>the file&apos;s section list</source>
         <translation>la liste des sections du fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="116"/>
         <source>the file ends before its end</source>
         <translation>le fichier s&apos;arrête avant sa fin prévue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="119"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="120"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
         <source>a section header</source>
         <translation>un en-tête de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="122"/>
         <source>section %1</source>
         <translation>section %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="138"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="140"/>
         <source>the file&apos;s end is damaged</source>
         <translation>la fin du fichier est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="143"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>sa longueur (%1 octets) dépasse la fin du fichier (%2 octets restants), alors que le fichier se termine par sa marque de fin&#xa0;: la longueur est donc endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>le fichier s&apos;arrête au milieu de cette section (%1 octets annoncés, %2 restants)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>le fichier s&apos;arrête au milieu de cette section&#xa0;; ce qu&apos;elle contient est lu</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>a section</source>
         <translation>une section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>le fichier s&apos;arrête avant la somme de contrôle de cette section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
         <source>a section checksum</source>
         <translation>une somme de contrôle de section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>sa somme de contrôle ne correspond pas, ses octets ont donc changé après l&apos;enregistrement</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>section %1 is missing</source>
         <translation>la section %1 est absente</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="179"/>
         <source>the end marker</source>
         <translation>le marqueur de fin</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>the file</source>
         <translation>le fichier</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="216"/>
         <source>a sound clip comes before the frames</source>
         <translation>un extrait sonore précède les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the layers come before the frames</source>
         <translation>les calques viennent avant les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <source>the layers are repeated</source>
         <translation>les calques sont répétés</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="232"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
         <source>the camera comes before the frames</source>
         <translation>la caméra vient avant les images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="236"/>
         <source>the camera is repeated</source>
         <translation>la caméra est répétée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <source>the swap sets come before the frames</source>
+        <translation>les jeux de dessins précèdent les images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <source>the swap sets are repeated</source>
+        <translation>les jeux de dessins sont répétés</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
         <source>an unknown section is left out</source>
         <translation>une section inconnue est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
         <source>section</source>
         <translation>section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="251"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
         <source>the section is repeated or out of order</source>
         <translation>la section est répétée ou mal placée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="278"/>
         <source>the palette</source>
         <translation>la palette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
         <source>the end of the section could not be read</source>
         <translation>la fin de la section n&apos;a pas pu être lue</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="294"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
         <source>the section</source>
         <translation>la section</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="317"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="379"/>
         <source>the document settings</source>
         <translation>les paramètres du document</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="308"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
         <source>the canvas size</source>
         <translation>la taille du canevas</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>la taille du canevas %1×%2 n&apos;est pas comprise entre 1 et %3 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="331"/>
         <source>the background colour</source>
         <translation>la couleur d&apos;arrière-plan</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
         <source>the frame rate</source>
         <translation>la fréquence d&apos;images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="336"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>la fréquence d&apos;images %1 n&apos;est pas comprise entre %2 et %3</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
         <source>the loop flag</source>
         <translation>l&apos;indicateur de boucle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>l&apos;indicateur de boucle %1 ne vaut ni 0 ni 1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the play range</source>
         <translation>la plage de lecture</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="339"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="352"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>la plage de lecture de %1 à %2 est invalide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="343"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="356"/>
         <source>the next id</source>
         <translation>le prochain identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="358"/>
         <source>the close-gap setting</source>
         <translation>le réglage de fermeture des trous</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="361"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>le réglage de fermeture des trous %1 n&apos;est pas entre 0 et %2 pixels</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="357"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>le prochain identifiant libre %1 dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="408"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
@@ -1919,22 +2029,22 @@
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="413"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>le prochain identifiant libre %1 n&apos;est pas supérieur au plus grand identifiant %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="431"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="454"/>
         <source>the id %1 is used twice</source>
         <translation>l&apos;identifiant %1 est utilisé deux fois</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="459"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>aucune de ses images n&apos;a pu être lue&#xa0;; il n&apos;y a rien à récupérer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="445"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="468"/>
         <source>there is not enough memory to open this file</source>
         <translation>la mémoire est insuffisante pour ouvrir ce fichier</translation>
     </message>
@@ -2076,12 +2186,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="161"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="162"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>L&apos;enregistrement automatique n&apos;a pas pu écrire de copie de récupération&#xa0;: %1.</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="42"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="43"/>
         <source>there is not enough memory</source>
         <translation>la mémoire est insuffisante</translation>
     </message>
@@ -2320,6 +2430,53 @@
         <location filename="../model/src/scene/layer_section.cpp" line="76"/>
         <source>%1; every frame is put on one layer</source>
         <translation>%1 ; toutes les images sont mises sur un seul calque</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="14"/>
+        <location filename="../model/src/swap/swap_section.cpp" line="16"/>
+        <location filename="../model/src/swap/swap_section.cpp" line="52"/>
+        <source>the swap sets</source>
+        <translation>les jeux de dessins</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="21"/>
+        <source>the file has %1 swap sets (at most %2)</source>
+        <translation>le fichier a %1 jeux de dessins (au plus %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="28"/>
+        <source>swap set %1</source>
+        <translation>jeu de dessins %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="33"/>
+        <source>swap set %1 has %2 drawings (1 to %3)</source>
+        <translation>le jeu de dessins %1 a %2 dessins (de 1 à %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="44"/>
+        <source>a drawing of swap set %1 carries a pose</source>
+        <translation>un dessin du jeu %1 porte une pose</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="65"/>
+        <source>object %1 shows a drawing the swap sets do not hold</source>
+        <translation>l&apos;objet %1 montre un dessin absent des jeux de dessins</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="83"/>
+        <source>the swap sets link objects the frames do not hold</source>
+        <translation>les jeux de dessins lient des objets absents des images</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="95"/>
+        <source>a frame shows a swap set on two objects</source>
+        <translation>une image montre un jeu de dessins sur deux objets</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="113"/>
+        <source>%1; the swap sets are left out</source>
+        <translation>%1 ; les jeux de dessins sont laissés de côté</translation>
     </message>
 </context>
 <context>
@@ -2844,6 +3001,229 @@
         <location filename="../model/src/frame_list_model.cpp" line="152"/>
         <source>Frame %1</source>
         <translation>Image %1</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::model::lipsync</name>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="31"/>
+        <source>The file holds no mouth shapes.</source>
+        <translation>Le fichier ne contient aucune forme de bouche.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="44"/>
+        <source>The file is larger than %1 MiB, too large for lip sync timings.</source>
+        <translation>Le fichier dépasse %1 Mio, trop pour des temps de synchro labiale.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="55"/>
+        <source>The file is empty.</source>
+        <translation>Le fichier est vide.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="149"/>
+        <source>Line %1: &quot;%2&quot; is not a time from 0 to %3 seconds.</source>
+        <translation>Ligne %1 : « %2 » n&apos;est pas un temps de 0 à %3 secondes.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="158"/>
+        <source>Line %1: the time goes backwards.</source>
+        <translation>Ligne %1 : le temps recule.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="165"/>
+        <source>Line %1: the mouth cue ends before it starts.</source>
+        <translation>Ligne %1 : la forme de bouche finit avant de commencer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="172"/>
+        <source>The file holds more than %1 mouth cues.</source>
+        <translation>Le fichier contient plus de %1 formes de bouche.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="179"/>
+        <source>Line %1: &quot;%2&quot; is not a mouth shape.</source>
+        <translation>Ligne %1 : « %2 » n&apos;est pas une forme de bouche.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="213"/>
+        <source>The frame rate %1 is not a number above 0 and up to %2.</source>
+        <translation>La cadence %1 n&apos;est pas un nombre supérieur à 0 et au plus %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="221"/>
+        <source>The file ends too early, after line %1.</source>
+        <translation>Le fichier s&apos;arrête trop tôt, après la ligne %1.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="228"/>
+        <source>Line %1: &quot;%2&quot; is not a whole number from %3 to %4.</source>
+        <translation>Ligne %1 : « %2 » n&apos;est pas un entier de %3 à %4.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="256"/>
+        <source>The Papagayo file holds no phonemes.</source>
+        <translation>Le fichier Papagayo ne contient aucun phonème.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="299"/>
+        <source>Line 1: a Papagayo file starts with &quot;lipsync version 1&quot;.</source>
+        <translation>Ligne 1 : un fichier Papagayo commence par « lipsync version 1 ».</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="309"/>
+        <source>Line %1: the frame rate &quot;%2&quot; is not a number above 0 and up to %3.</source>
+        <translation>Ligne %1 : la cadence « %2 » n&apos;est pas un nombre supérieur à 0 et au plus %3.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="354"/>
+        <source>Line %1 is not a word (&quot;text, start frame, end frame, phoneme count&quot;).</source>
+        <translation>La ligne %1 n&apos;est pas un mot (« texte, image de début, image de fin, nombre de phonèmes »).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="380"/>
+        <source>Line %1 is not a phoneme (&quot;frame name&quot;).</source>
+        <translation>La ligne %1 n&apos;est pas un phonème (« image nom »).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="388"/>
+        <source>Line %1: the phoneme at frame %2 comes after its word&apos;s end, frame %3.</source>
+        <translation>Ligne %1 : le phonème de l&apos;image %2 vient après la fin de son mot, image %3.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="438"/>
+        <source>The XML is damaged at line %1: %2.</source>
+        <translation>Le XML est endommagé à la ligne %1 : %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="478"/>
+        <source>Mouth cue %1: its &quot;%2&quot; is not a time from 0 to %3 seconds.</source>
+        <translation>Forme de bouche %1 : son « %2 » n&apos;est pas un temps de 0 à %3 secondes.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="501"/>
+        <source>Mouth cue %1 ends before it starts.</source>
+        <translation>La forme de bouche %1 finit avant de commencer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="508"/>
+        <source>Mouth cue %1: its &quot;value&quot; &quot;%2&quot; is not a mouth shape.</source>
+        <translation>Forme de bouche %1 : sa « value » « %2 » n&apos;est pas une forme de bouche.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="514"/>
+        <source>Mouth cue %1: the time goes backwards.</source>
+        <translation>Forme de bouche %1 : le temps recule.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="537"/>
+        <source>The JSON is damaged at character %1: %2.</source>
+        <translation>Le JSON est endommagé au caractère %1 : %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="543"/>
+        <source>The JSON has no &quot;mouthCues&quot; list: it is not a Rhubarb Lip Sync result.</source>
+        <translation>Le JSON n&apos;a pas de liste « mouthCues » : ce n&apos;est pas un résultat de Rhubarb Lip Sync.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="566"/>
+        <source>Line %1: the XML&apos;s root is &lt;%2&gt;, not &lt;rhubarbResult&gt;: it is not a Rhubarb Lip Sync result.</source>
+        <translation>Ligne %1 : la racine du XML est &lt;%2&gt;, pas &lt;rhubarbResult&gt; : ce n&apos;est pas un résultat de Rhubarb Lip Sync.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="601"/>
+        <source>Line %1 is not &quot;seconds, tab, shape letter&quot;.</source>
+        <translation>La ligne %1 n&apos;est pas « secondes, tabulation, lettre de forme ».</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="629"/>
+        <source>Line %1: Moho switch data starts with &quot;MohoSwitch1&quot;.</source>
+        <translation>Ligne %1 : les données switch de Moho commencent par « MohoSwitch1 ».</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="644"/>
+        <source>Line %1 is not &quot;frame shape&quot;.</source>
+        <translation>La ligne %1 n&apos;est pas « image forme ».</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="649"/>
+        <source>Line %1: &quot;%2&quot; is not a frame number from 1 to %3.</source>
+        <translation>Ligne %1 : « %2 » n&apos;est pas un numéro d&apos;image de 1 à %3.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="671"/>
+        <source>Line %1: the letter &quot;%2&quot; is among Preston Blair&apos;s names; a file uses one naming or the other.</source>
+        <translation>Ligne %1 : la lettre « %2 » est parmi les noms de Preston Blair ; un fichier emploie l&apos;une ou l&apos;autre façon de nommer.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="724"/>
+        <source>&quot;%1&quot; could not be opened: %2.</source>
+        <translation>« %1 » n&apos;a pas pu être ouvert : %2.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="746"/>
+        <source>&quot;%1&quot; is not lip sync timings that Finbook reads: Papagayo (.pgo), Moho switch data (.dat) or Rhubarb Lip Sync (.tsv, .json, .xml).</source>
+        <translation>« %1 » n&apos;est pas un fichier de synchro labiale que Finbook lit : Papagayo (.pgo), données switch de Moho (.dat) ou Rhubarb Lip Sync (.tsv, .json, .xml).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="756"/>
+        <source>Lip sync timings</source>
+        <translation>Temps de synchro labiale</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="137"/>
+        <source>The sound&apos;s sample rate (%1 Hz) is not one speech can be recognised at.</source>
+        <translation>La fréquence d&apos;échantillonnage du son (%1 Hz) ne permet pas de reconnaître la parole.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="142"/>
+        <source>The sound is too short to hold speech (less than a tenth of a second).</source>
+        <translation>Le son est trop court pour contenir de la parole (moins d&apos;un dixième de seconde).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="146"/>
+        <source>The sound is damaged: some of its samples are not numbers.</source>
+        <translation>Le son est endommagé : certains de ses échantillons ne sont pas des nombres.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="151"/>
+        <source>The sound is silent: there is no speech to recognise. Check that the clip is the one with the dialogue and that it is not muted.</source>
+        <translation>Le son est muet : il n&apos;y a pas de parole à reconnaître. Vérifiez que le clip est bien celui du dialogue et qu&apos;il n&apos;est pas coupé.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="173"/>
+        <source>The speech models are not installed (looked in %1; on Debian and Ubuntu install the package pocketsphinx-en-us). Mouth shapes follow the loudness only.</source>
+        <translation>Les modèles de parole ne sont pas installés (cherchés dans %1 ; sous Debian et Ubuntu, installez le paquet pocketsphinx-en-us). Les formes de bouche ne suivent que le volume.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="520"/>
+        <source>The dialogue could not be prepared for recognition: %1</source>
+        <translation>Le dialogue n&apos;a pas pu être préparé pour la reconnaissance : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="529"/>
+        <source>The speech models are damaged: %1</source>
+        <translation>Les modèles de parole sont endommagés : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="593"/>
+        <source>Speech recognition failed: %1</source>
+        <translation>La reconnaissance de la parole a échoué : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="602"/>
+        <source>Lip sync was canceled.</source>
+        <translation>La synchro labiale a été annulée.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="854"/>
+        <source>The speech models could not be loaded (%1). Mouth shapes follow the loudness only.</source>
+        <translation>Les modèles de parole n&apos;ont pas pu être chargés (%1). Les formes de bouche ne suivent que le volume.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="866"/>
+        <source>The dialogue does not match the sound: the mouth follows the phones heard, without the dialogue.</source>
+        <translation>Le dialogue ne correspond pas au son : la bouche suit les sons entendus, sans le dialogue.</translation>
     </message>
 </context>
 <context>
@@ -4037,25 +4417,25 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="398"/>
         <source>Lock Layer</source>
         <translation>Verrouiller le calque</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="398"/>
         <source>Unlock Layer</source>
         <translation>Déverrouiller le calque</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="393"/>
         <source>Show Layer</source>
         <translation>Afficher le calque</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="393"/>
         <source>Hide Layer</source>
         <translation>Masquer le calque</translation>
     </message>
@@ -4099,85 +4479,245 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::LipSyncDialog</name>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="67"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Lancer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="68"/>
+        <source>&amp;Import Timings...</source>
+        <translation>&amp;Importer des temps…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="73"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="239"/>
+        <source>Lip Sync</source>
+        <translation>Synchro labiale</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="76"/>
+        <source>Optional: the words spoken, for a closer fit</source>
+        <translation>Facultatif : les mots prononcés, pour un calage plus juste</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="93"/>
+        <source>%1 (from frame %2)</source>
+        <translation>%1 (dès l&apos;image %2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="97"/>
+        <source>Recognises English speech (PocketSphinx, US English). Other languages: import timings made elsewhere.</source>
+        <translation>Reconnaît la parole anglaise (PocketSphinx, anglais américain). Autres langues : importez des temps faits ailleurs.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="99"/>
+        <source>The speech models are not installed (Debian: pocketsphinx-en-us): the mouth follows the loudness only, closed, half open or open.</source>
+        <translation>Les modèles de parole ne sont pas installés (Debian : pocketsphinx-en-us) : la bouche ne suit que le volume, fermée, entrouverte ou ouverte.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="103"/>
+        <source>Mouth:</source>
+        <translation>Bouche :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="104"/>
+        <source>%1 (%2 drawings)</source>
+        <translation>%1 (%2 dessins)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="105"/>
+        <source>(none)</source>
+        <translation>(aucune)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="107"/>
+        <source>&amp;Sound:</source>
+        <translation>&amp;Son :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="108"/>
+        <source>&amp;Dialogue:</source>
+        <translation>&amp;Dialogue :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="120"/>
+        <source>The animation has no sound: File &gt; Import Sound… first, or import timings made elsewhere.</source>
+        <translation>L&apos;animation n&apos;a pas de son : d&apos;abord Fichier &gt; Importer un son…, ou importez des temps faits ailleurs.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="125"/>
+        <source>Import Lip Sync Timings</source>
+        <translation>Importer des temps de synchro labiale</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <source>Close</source>
+        <translation>Fermer</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="191"/>
+        <source>Listening…</source>
+        <translation>Écoute…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="209"/>
+        <source>Cancelling…</source>
+        <translation>Annulation…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="215"/>
+        <source>Cancelled: nothing was changed.</source>
+        <translation>Annulé : rien n&apos;a été modifié.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="219"/>
+        <source>Nothing was changed.</source>
+        <translation>Rien n&apos;a été modifié.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="222"/>
+        <source>from the loudness (the speech models are not installed)</source>
+        <translation>d&apos;après le volume (les modèles de parole ne sont pas installés)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="223"/>
+        <source>from the recognised speech</source>
+        <translation>d&apos;après la parole reconnue</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="224"/>
+        <source>from the speech and the dialogue</source>
+        <translation>d&apos;après la parole et le dialogue</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="226"/>
+        <source>spelt by rules, not found in the dictionary: %1</source>
+        <translation>épelés par règles, absents du dictionnaire : %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="244"/>
+        <source>Keyed the mouth on %n frame(s), %1.</source>
+        <translation>
+            <numerusform>Bouche posée sur %n image, %1.</numerusform>
+            <numerusform>Bouche posée sur %n images, %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
+        <source>%n frame(s) of the mouth&apos;s layer hold no mouth and were left as they were.</source>
+        <translation>
+            <numerusform>%n image du calque de la bouche n&apos;a pas de bouche et est restée telle quelle.</numerusform>
+            <numerusform>%n images du calque de la bouche n&apos;ont pas de bouche et sont restées telles quelles.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="260"/>
+        <source>%1 was not imported: %2</source>
+        <translation>%1 n&apos;a pas été importé : %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="266"/>
+        <source>from %1</source>
+        <translation>d&apos;après %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="314"/>
+        <source>The clip holds no sound to follow.</source>
+        <translation>Le clip ne contient aucun son à suivre.</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window.cpp" line="159"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window.cpp" line="162"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="217"/>
+        <source>Show Dr&amp;awing</source>
+        <translation>&amp;Afficher le dessin</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="235"/>
         <source>Timeline</source>
         <translation>Chronologie</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window.cpp" line="238"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="213"/>
+        <location filename="../ui/src/window/main_window.cpp" line="242"/>
         <source>Reference</source>
         <translation>Référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="262"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;document ouvert&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window.cpp" line="264"/>
         <source>Undo History</source>
         <translation>Historique</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window.cpp" line="271"/>
         <source>Palette</source>
         <translation>Palette</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window.cpp" line="297"/>
         <source>Rotation </source>
         <translation>Rotation </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window.cpp" line="301"/>
         <source>The view&apos;s rotation: the drawing is not changed. Shift+Space-drag on the canvas turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it.</source>
         <translation>La rotation de la vue : le dessin ne change pas. Maj+Espace et glisser sur la toile la tourne librement ; 4 et 6 la tournent de 15°, 5 la remet droite, Maj+M la retourne.</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="298"/>
+        <location filename="../ui/src/window/main_window.cpp" line="327"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>La référence « %1 » ne peut pas être affichée : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="307"/>
+        <location filename="../ui/src/window/main_window.cpp" line="336"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window.cpp" line="347"/>
         <source>Frame %1 / %2</source>
         <translation>Image %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window.cpp" line="348"/>
         <source>%1 %</source>
         <translation>%1&#xa0;%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window.cpp" line="353"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="278"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="325"/>
+        <location filename="../ui/src/window/main_window.cpp" line="354"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] – Finbook</translation>
     </message>
@@ -4187,7 +4727,17 @@
         <translation>Défor&amp;mer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="51"/>
+        <source>&amp;Lip Sync...</source>
+        <translation>Synchro &amp;labiale…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="52"/>
+        <source>Key a mouth chart&apos;s drawings from the soundtrack</source>
+        <translation>Poser les dessins d&apos;une planche de bouches d&apos;après la bande son</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="74"/>
         <source>Preparing the deformation…</source>
         <translation>Préparation de la déformation…</translation>
     </message>
@@ -4253,7 +4803,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>Import Mesh</source>
         <translation>Importer un maillage</translation>
     </message>
@@ -4298,283 +4848,283 @@
         <translation>sans-titre.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="62"/>
         <source>File</source>
         <translation>Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>&amp;New</source>
         <translation>&amp;Nouveau</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
         <source>Open Exa&amp;mple</source>
         <translation>Ouvrir l&apos;e&amp;xemple</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
         <source>&amp;Welcome...</source>
         <translation>&amp;Bienvenue...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="83"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="92"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
         <source>Save &amp;As...</source>
         <translation>Enregistrer &amp;sous...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>E&amp;xport...</source>
         <translation>Ex&amp;porter...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Import Mesh...</source>
         <translation>&amp;Importer un maillage...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>OFF meshes (*.off)</source>
         <translation>Maillages OFF (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="119"/>
         <source>Import Re&amp;ference...</source>
         <translation>Importer une ré&amp;férence...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
         <source>Cannot Import Reference</source>
         <translation>Impossible d’importer la référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
         <source>Cu&amp;t</source>
         <translation>Co&amp;uper</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>&amp;Paste</source>
         <translation>C&amp;oller</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="187"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
         <source>Select &amp;All</source>
         <translation>&amp;Tout sélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>Dese&amp;lect</source>
         <translation>&amp;Désélectionner</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
         <source>D&amp;ocument Settings...</source>
         <translation>Paramètres du docu&amp;ment...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="215"/>
         <source>Pre&amp;ferences...</source>
         <translation>&amp;Préférences...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="245"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="247"/>
         <source>&amp;Fit to Window</source>
         <translation>Adapter à la &amp;fenêtre</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>&amp;Taille réelle (100&#xa0;%)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="250"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
         <source>Rotate View &amp;Left</source>
         <translation>Tourner la vue à &amp;gauche</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
         <source>Rotate View &amp;Right</source>
         <translation>Tourner la vue à &amp;droite</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>R&amp;eset View Rotation</source>
         <translation>Ré&amp;initialiser la rotation de la vue</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
         <source>Mirror Vie&amp;w</source>
         <translation>Vue en mir&amp;oir</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>O&amp;nion Skin</source>
         <translation>&amp;Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>Réglages de la pe&amp;lure d&apos;oignon...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="284"/>
         <source>Show &amp;Mesh</source>
         <translation>Afficher le &amp;maillage</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="285"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="290"/>
         <source>&amp;Camera View</source>
         <translation>Vue &amp;caméra</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
         <source>&amp;Dim Other Layers</source>
         <translation>Atténuer les a&amp;utres calques</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="303"/>
         <source>&amp;Panels</source>
         <translation>Pa&amp;nneaux</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="309"/>
         <source>F&amp;rame</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
         <source>&amp;Layer</source>
         <translation>&amp;Calque</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
         <source>&amp;Object</source>
         <translation>&amp;Objet</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="335"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="347"/>
         <source>&amp;Tools</source>
         <translation>Ou&amp;tils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="338"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="350"/>
         <source>Tools</source>
         <translation>Outils</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="348"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="360"/>
         <source>Finbook &amp;Manual</source>
         <translation>&amp;Manuel de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="353"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="365"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="355"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
         <source>&amp;About Finbook</source>
         <translation>À &amp;propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="397"/>
         <source>Onion Skin</source>
         <translation>Pelure d&apos;oignon</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="409"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="421"/>
         <source>About Finbook</source>
         <translation>À propos de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="410"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="422"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;Un éditeur d&apos;animation façon folioscope&#xa0;: dessinez image par image et déformez vos dessins avec des épingles.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>Rétablir</translation>
@@ -4725,12 +5275,22 @@
         <source>Shading</source>
         <translation>Ombrage</translation>
     </message>
+    <message>
+        <location filename="../ui/src/lipsync/main_window_lipsync.cpp" line="15"/>
+        <source>Lip Sync</source>
+        <translation>Synchro labiale</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/main_window_lipsync.cpp" line="16"/>
+        <source>Lip sync keys the drawings of a mouth chart. Make one with Object &gt; New Mouth Chart, redraw its mouths in your style, then come back here.</source>
+        <translation>La synchro labiale pose les dessins d&apos;une planche de bouches. Créez-en une avec Objet &gt; Nouvelle planche de bouches, redessinez ses bouches à votre façon, puis revenez ici.</translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::ManualBrowser</name>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="30"/>
-        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="98"/>
         <source>Contents</source>
         <translation>Sommaire</translation>
     </message>
@@ -4776,56 +5336,61 @@
     </message>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="39"/>
+        <source>Swapping Drawings and Lip Sync</source>
+        <translation>Dessins interchangeables et synchro labiale</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="40"/>
         <source>Camera</source>
         <translation>Caméra</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="40"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
         <source>Reference Pictures and Video</source>
         <translation>Images et vidéos de référence</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
         <source>Exporting</source>
         <translation>Exporter</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
         <source>Saving, Autosave and Recovery</source>
         <translation>Enregistrement, sauvegarde automatique et récupération</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
         <source>The Command Line</source>
         <translation>La ligne de commande</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
         <source>Keyboard Shortcuts</source>
         <translation>Raccourcis clavier</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="46"/>
         <source>Installing</source>
         <translation>Installation</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="82"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="83"/>
         <source>Finbook Manual</source>
         <translation>Manuel de Finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="95"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
         <source>Back</source>
         <translation>Précédent</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
         <source>Forward</source>
         <translation>Suivant</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="102"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="103"/>
         <source>Search the manual</source>
         <translation>Chercher dans le manuel</translation>
     </message>
@@ -5892,6 +6457,133 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::SwapActions</name>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="24"/>
+        <source>Make S&amp;wappable</source>
+        <translation>Rendre &amp;interchangeable</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="26"/>
+        <source>New Mout&amp;h Chart</source>
+        <translation>Nouvelle &amp;planche de bouches</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="29"/>
+        <source>&amp;Previous Drawing</source>
+        <translation>Dessin pré&amp;cédent</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="32"/>
+        <source>Ne&amp;xt Drawing</source>
+        <translation>Dessin s&amp;uivant</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="22"/>
+        <source>Show Dr&amp;awing</source>
+        <translation>&amp;Afficher le dessin</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="35"/>
+        <source>New Drawing in S&amp;et</source>
+        <translation>Nouveau dessin dans &amp;le jeu</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="38"/>
+        <source>D&amp;uplicate Drawing in Set</source>
+        <translation>Dupli&amp;quer le dessin dans le jeu</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="40"/>
+        <source>&amp;Rename Drawing...</source>
+        <translation>Ren&amp;ommer le dessin…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="42"/>
+        <source>Remove Drawing from Se&amp;t</source>
+        <translation>Re&amp;tirer le dessin du jeu</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="44"/>
+        <source>Make Drawing &amp;Independent</source>
+        <translation>&amp;Garder le dessin pour cette image</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="47"/>
+        <source>Make the object&apos;s drawing the first of a set it swaps between, frame by frame (mouths, hands, blinks)</source>
+        <translation>Faire du dessin de l&apos;objet le premier d&apos;un jeu entre lesquels il change, image par image (bouches, mains, clignements)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="50"/>
+        <source>A new object showing the nine mouth shapes lip sync uses</source>
+        <translation>Un nouvel objet montrant les neuf formes de bouche de la synchro labiale</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="52"/>
+        <source>This frame keeps its drawing as its own: edits of it no longer reach the other frames</source>
+        <translation>Cette image garde son dessin pour elle : ses modifications n&apos;atteignent plus les autres images</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="125"/>
+        <source>(not swappable)</source>
+        <translation>(pas interchangeable)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="129"/>
+        <source>(unnamed)</source>
+        <translation>(sans nom)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="162"/>
+        <source>&quot;%1&quot; is swappable: add drawings with Object &gt; New Drawing in Set, and pick one per frame with [ and ]</source>
+        <translation>« %1 » est interchangeable : ajoutez des dessins avec Objet &gt; Nouveau dessin dans le jeu, et choisissez-en un par image avec [ et ]</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="190"/>
+        <source>New Mouth Chart</source>
+        <translation>Nouvelle planche de bouches</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="191"/>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="195"/>
+        <source>Mouth</source>
+        <translation>Bouche</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="201"/>
+        <source>A mouth chart on its own layer: nine mouth shapes to redraw in your style; [ and ] swap them, Deform &gt; Lip Sync keys them from the soundtrack</source>
+        <translation>Une planche de bouches sur son propre calque : neuf formes à redessiner à votre façon ; [ et ] les échangent, Déformer &gt; Synchro labiale les pose d&apos;après la bande son</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="226"/>
+        <source>Rename Drawing</source>
+        <translation>Renommer le dessin</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="226"/>
+        <source>Name of the drawing:</source>
+        <translation>Nom du dessin :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="273"/>
+        <source>Drawing &quot;%1&quot;</source>
+        <translation>Dessin « %1 »</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SwapPicker</name>
+    <message>
+        <location filename="../ui/src/swap/swap_picker.cpp" line="15"/>
+        <source>Drawing:</source>
+        <translation>Dessin :</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_picker.cpp" line="20"/>
+        <source>The drawing this object shows in this frame ([ and ] step through them)</source>
+        <translation>Le dessin que cet objet montre dans cette image ([ et ] les parcourent)</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineView</name>
     <message>
         <location filename="../ui/src/timeline/timeline_view.cpp" line="266"/>
@@ -5950,7 +6642,7 @@
         <translation>Options de l&apos;outil</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/tool_options_bar.cpp" line="61"/>
+        <location filename="../ui/src/window/tool_options_bar.cpp" line="56"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>

@@ -402,10 +402,110 @@
     </message>
     <message>
         <location filename="../model/src/document.cpp" line="21"/>
-        <location filename="../model/src/document.cpp" line="205"/>
+        <location filename="../model/src/document.cpp" line="223"/>
         <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Layer 1</source>
         <translation>レイヤー 1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_keys.cpp" line="83"/>
+        <source>The object is not swappable: make a mouth chart first (Object &gt; New Mouth Chart).</source>
+        <translation>このオブジェクトは差し替えできません。先に口形チャートを作ってください（オブジェクト &gt; 新規口形チャート）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_keys.cpp" line="89"/>
+        <source>The set &quot;%1&quot; has no drawings named A to F (the mouth shapes lip sync keys): make a mouth chart, or name its drawings by their shapes.</source>
+        <translation>セット「%1」には A〜F という名前の絵（リップシンクが使う口の形）がありません。口形チャートを作るか、絵に形の名前を付けてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_keys.cpp" line="96"/>
+        <source>There is nothing to key.</source>
+        <translation>キーを打つものがありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="88"/>
+        <source>A (M B P)</source>
+        <translation>A (M B P)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="88"/>
+        <source>B (K S T)</source>
+        <translation>B (K S T)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="89"/>
+        <source>C (EH AE)</source>
+        <translation>C (EH AE)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="89"/>
+        <source>D (AA)</source>
+        <translation>D (AA)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="90"/>
+        <source>E (AO ER)</source>
+        <translation>E (AO ER)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="90"/>
+        <source>F (UW OW W)</source>
+        <translation>F (UW OW W)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="91"/>
+        <source>G (F V)</source>
+        <translation>G (F V)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="91"/>
+        <source>H (L)</source>
+        <translation>H (L)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="92"/>
+        <source>X (rest)</source>
+        <translation>X (休み)</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/mouth_chart.cpp" line="116"/>
+        <source>Mouth</source>
+        <translation>口</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="63"/>
+        <source>Make Object Swappable</source>
+        <translation>オブジェクトを差し替え可能にする</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="89"/>
+        <source>New Swap Set</source>
+        <translation>新しい差し替えセット</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="138"/>
+        <source>Show Drawing &quot;%1&quot;</source>
+        <translation>絵「%1」を表示</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="217"/>
+        <source>New Drawing &quot;%1&quot;</source>
+        <translation>新しい絵「%1」</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="269"/>
+        <source>Rename Drawing</source>
+        <translation>絵の名前を変更</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="299"/>
+        <source>Delete Drawing &quot;%1&quot;</source>
+        <translation>絵「%1」を削除</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_commands.cpp" line="333"/>
+        <source>Make Drawing Independent</source>
+        <translation>絵を独立させる</translation>
     </message>
 </context>
 <context>
@@ -1252,7 +1352,7 @@
     </message>
     <message>
         <location filename="../model/src/finbook_file_cursor.h" line="85"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="64"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="65"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1368,22 +1468,22 @@
         <translation>「%1」を保存できませんでした: 絵に無効なデータが含まれています（%2）。以前のファイルは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="43"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="44"/>
         <source>unknown %1 %2</source>
         <translation>不明な%1 %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="46"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="47"/>
         <source>it holds data (&quot;%1&quot;) that this version of Finbook does not know, so it was probably made by a newer Finbook; please update Finbook to open it</source>
         <translation>このバージョンの Finbook が知らないデータ（「%1」）が含まれているため、より新しい Finbook で作成されたと思われます。開くには Finbook を更新してください</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="66"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="67"/>
         <source>more problems were found and repaired the same way</source>
         <translation>ほかにも問題が見つかり、同じ方法で修復しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="75"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="76"/>
         <source>it describes more than a file of its size can hold (opening it would take more than %1 MB of memory)</source>
         <translation>このサイズのファイルに収まる量を超える内容が記述されています（開くには %1 MB を超えるメモリが必要です）</translation>
     </message>
@@ -1423,212 +1523,222 @@
         <translation>より新しいバージョンの Finbook で作成されています（ファイル形式 %1。このバージョンが読めるのは %2 までです）。開くには Finbook を更新してください</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="112"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="113"/>
         <source>the file&apos;s section list</source>
         <translation>ファイルのセクション一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="115"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="116"/>
         <source>the file ends before its end</source>
         <translation>本来の終端より前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="119"/>
         <location filename="../model/src/finbook_file_reader.cpp" line="120"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
         <source>a section header</source>
         <translation>セクションヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="121"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="122"/>
         <source>section %1</source>
         <translation>セクション %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="138"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="140"/>
         <source>the file&apos;s end is damaged</source>
         <translation>ファイルの終端が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="143"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="145"/>
         <source>its length (%1 bytes) runs past the end of the file (%2 bytes left), yet the file ends with its end marker, so the length is damaged</source>
         <translation>長さ（%1 バイト）がファイルの終わりを超えています（残り %2 バイト）が、ファイルは終端マーカーで終わっています。長さの値が破損しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="151"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="153"/>
         <source>the file ends inside this section (%1 bytes announced, %2 left)</source>
         <translation>このセクションの途中でファイルが終わっています（%1 バイトのはずですが、残りは %2 バイトです）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="155"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="157"/>
         <source>the file ends inside this section; what it holds is read</source>
         <translation>このセクションの途中でファイルが終わっています。含まれている分は読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="161"/>
         <source>a section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="163"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
         <source>the file ends before this section&apos;s checksum</source>
         <translation>このセクションのチェックサムの前でファイルが終わっています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="165"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="167"/>
         <source>a section checksum</source>
         <translation>セクションのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="168"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="170"/>
         <source>its checksum does not match, so its bytes changed after it was saved</source>
         <translation>チェックサムが一致しないため、保存後に内容が変更されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="175"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="256"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="269"/>
         <source>section %1 is missing</source>
         <translation>セクション %1 がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="177"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="179"/>
         <source>the end marker</source>
         <translation>終端マーカー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="178"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="180"/>
         <source>the file</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="214"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="216"/>
         <source>a sound clip comes before the frames</source>
         <translation>サウンドクリップがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="221"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
         <source>the layers come before the frames</source>
         <translation>レイヤーがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="223"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="225"/>
         <source>the layers are repeated</source>
         <translation>レイヤーが繰り返されています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="232"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
         <source>the camera comes before the frames</source>
         <translation>カメラがフレームより前にあります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="236"/>
         <source>the camera is repeated</source>
         <translation>カメラが重複しています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="242"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="245"/>
+        <source>the swap sets come before the frames</source>
+        <translation>差し替えセットがフレームより前にあります</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="247"/>
+        <source>the swap sets are repeated</source>
+        <translation>差し替えセットが重複しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/finbook_file_reader.cpp" line="255"/>
         <source>an unknown section is left out</source>
         <translation>不明なセクションを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="244"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="257"/>
         <source>section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="251"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="264"/>
         <source>the section is repeated or out of order</source>
         <translation>セクションが重複しているか、順序が正しくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="265"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="278"/>
         <source>the palette</source>
         <translation>パレット</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="293"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="306"/>
         <source>the end of the section could not be read</source>
         <translation>セクションの終わりを読み取れませんでした</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="294"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
         <source>the section</source>
         <translation>セクション</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="304"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="366"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="317"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="379"/>
         <source>the document settings</source>
         <translation>ドキュメント設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="307"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="308"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="321"/>
         <source>the canvas size</source>
         <translation>キャンバスサイズ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="312"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="325"/>
         <source>the canvas size %1×%2 is outside 1 to %3 pixels</source>
         <translation>キャンバスサイズ %1×%2 が 1～%3 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="318"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="331"/>
         <source>the background colour</source>
         <translation>背景色</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="319"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
         <source>the frame rate</source>
         <translation>フレームレート</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="323"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="336"/>
         <source>the frame rate %1 is outside %2 to %3</source>
         <translation>フレームレート %1 が %2～%3 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="342"/>
         <source>the loop flag</source>
         <translation>ループの設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="332"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
         <source>the loop flag %1 is neither 0 nor 1</source>
         <translation>ループの設定 %1 が 0 でも 1 でもありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="334"/>
-        <location filename="../model/src/finbook_file_reader.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="347"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
         <source>the play range</source>
         <translation>再生範囲</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="339"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="352"/>
         <source>the play range %1 to %2 is invalid</source>
         <translation>再生範囲 %1～%2 が無効です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="343"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="356"/>
         <source>the next id</source>
         <translation>次の ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="345"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="358"/>
         <source>the close-gap setting</source>
         <translation>隙間を閉じる設定</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="348"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="361"/>
         <source>the close-gap setting %1 is outside 0 to %2 pixels</source>
         <translation>隙間を閉じる設定 %1 が 0〜%2 ピクセルの範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="357"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="370"/>
         <source>the next free id %1 is larger than any id can be</source>
         <translation>次の空き ID %1 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="385"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="408"/>
         <source>its parts are joined in a way too costly to work out</source>
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
@@ -1912,22 +2022,22 @@
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="413"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
         <source>the next free id %1 is not above the largest id %2</source>
         <translation>次の空き ID %1 が最大の ID %2 より大きくありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="431"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="454"/>
         <source>the id %1 is used twice</source>
         <translation>ID %1 が 2 回使われています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="436"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="459"/>
         <source>no frame of it could be read; there is nothing to recover</source>
         <translation>フレームを 1 つも読み取れなかったため、復元できるものがありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader.cpp" line="445"/>
+        <location filename="../model/src/finbook_file_reader.cpp" line="468"/>
         <source>there is not enough memory to open this file</source>
         <translation>このファイルを開くのに十分なメモリがありません</translation>
     </message>
@@ -2067,12 +2177,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/autosaver.cpp" line="161"/>
+        <location filename="../model/src/recovery/autosaver.cpp" line="162"/>
         <source>Autosave could not write a recovery copy: %1.</source>
         <translation>自動保存で復元用のコピーを書き込めませんでした: %1。</translation>
     </message>
     <message>
-        <location filename="../model/src/recovery/recovery_writer.h" line="42"/>
+        <location filename="../model/src/recovery/recovery_writer.h" line="43"/>
         <source>there is not enough memory</source>
         <translation>メモリが足りません</translation>
     </message>
@@ -2311,6 +2421,53 @@
         <location filename="../model/src/scene/layer_section.cpp" line="76"/>
         <source>%1; every frame is put on one layer</source>
         <translation>%1。すべてのフレームを1つのレイヤーに入れます</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="14"/>
+        <location filename="../model/src/swap/swap_section.cpp" line="16"/>
+        <location filename="../model/src/swap/swap_section.cpp" line="52"/>
+        <source>the swap sets</source>
+        <translation>差し替えセット</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="21"/>
+        <source>the file has %1 swap sets (at most %2)</source>
+        <translation>ファイルに差し替えセットが %1 個あります（最大 %2）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="28"/>
+        <source>swap set %1</source>
+        <translation>差し替えセット %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="33"/>
+        <source>swap set %1 has %2 drawings (1 to %3)</source>
+        <translation>差し替えセット %1 に絵が %2 枚あります（1〜%3）</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="44"/>
+        <source>a drawing of swap set %1 carries a pose</source>
+        <translation>差し替えセット %1 の絵にポーズが付いています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="65"/>
+        <source>object %1 shows a drawing the swap sets do not hold</source>
+        <translation>オブジェクト %1 が差し替えセットにない絵を表示しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="83"/>
+        <source>the swap sets link objects the frames do not hold</source>
+        <translation>差し替えセットがフレームにないオブジェクトを参照しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="95"/>
+        <source>a frame shows a swap set on two objects</source>
+        <translation>1 つのフレームで 2 つのオブジェクトが同じ差し替えセットを表示しています</translation>
+    </message>
+    <message>
+        <location filename="../model/src/swap/swap_section.cpp" line="113"/>
+        <source>%1; the swap sets are left out</source>
+        <translation>%1。差し替えセットは読み込みません</translation>
     </message>
 </context>
 <context>
@@ -2832,6 +2989,229 @@
         <location filename="../model/src/frame_list_model.cpp" line="152"/>
         <source>Frame %1</source>
         <translation>フレーム %1</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::model::lipsync</name>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="31"/>
+        <source>The file holds no mouth shapes.</source>
+        <translation>このファイルには口の形がありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="44"/>
+        <source>The file is larger than %1 MiB, too large for lip sync timings.</source>
+        <translation>ファイルが %1 MiB を超えています。リップシンクのタイミングとしては大きすぎます。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="55"/>
+        <source>The file is empty.</source>
+        <translation>ファイルが空です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="149"/>
+        <source>Line %1: &quot;%2&quot; is not a time from 0 to %3 seconds.</source>
+        <translation>%1 行目：「%2」は 0〜%3 秒の時間ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="158"/>
+        <source>Line %1: the time goes backwards.</source>
+        <translation>%1 行目：時間が逆戻りしています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="165"/>
+        <source>Line %1: the mouth cue ends before it starts.</source>
+        <translation>%1 行目：口の形が始まる前に終わっています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="172"/>
+        <source>The file holds more than %1 mouth cues.</source>
+        <translation>ファイルに口の形が %1 個を超えてあります。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="179"/>
+        <source>Line %1: &quot;%2&quot; is not a mouth shape.</source>
+        <translation>%1 行目：「%2」は口の形ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="213"/>
+        <source>The frame rate %1 is not a number above 0 and up to %2.</source>
+        <translation>フレームレート %1 は 0 より大きく %2 以下の数ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="221"/>
+        <source>The file ends too early, after line %1.</source>
+        <translation>ファイルが %1 行目のあとで途切れています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="228"/>
+        <source>Line %1: &quot;%2&quot; is not a whole number from %3 to %4.</source>
+        <translation>%1 行目：「%2」は %3〜%4 の整数ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="256"/>
+        <source>The Papagayo file holds no phonemes.</source>
+        <translation>Papagayo ファイルに音素がありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="299"/>
+        <source>Line 1: a Papagayo file starts with &quot;lipsync version 1&quot;.</source>
+        <translation>1 行目：Papagayo ファイルは「lipsync version 1」で始まります。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="309"/>
+        <source>Line %1: the frame rate &quot;%2&quot; is not a number above 0 and up to %3.</source>
+        <translation>%1 行目：フレームレート「%2」は 0 より大きく %3 以下の数ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="354"/>
+        <source>Line %1 is not a word (&quot;text, start frame, end frame, phoneme count&quot;).</source>
+        <translation>%1 行目は単語（「テキスト、開始フレーム、終了フレーム、音素数」）ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="380"/>
+        <source>Line %1 is not a phoneme (&quot;frame name&quot;).</source>
+        <translation>%1 行目は音素（「フレーム 名前」）ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="388"/>
+        <source>Line %1: the phoneme at frame %2 comes after its word&apos;s end, frame %3.</source>
+        <translation>%1 行目：フレーム %2 の音素が単語の終わり（フレーム %3）より後にあります。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="438"/>
+        <source>The XML is damaged at line %1: %2.</source>
+        <translation>XML の %1 行目が壊れています：%2。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="478"/>
+        <source>Mouth cue %1: its &quot;%2&quot; is not a time from 0 to %3 seconds.</source>
+        <translation>口の形 %1：「%2」が 0〜%3 秒の時間ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="501"/>
+        <source>Mouth cue %1 ends before it starts.</source>
+        <translation>口の形 %1 が始まる前に終わっています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="508"/>
+        <source>Mouth cue %1: its &quot;value&quot; &quot;%2&quot; is not a mouth shape.</source>
+        <translation>口の形 %1：「value」の「%2」は口の形ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="514"/>
+        <source>Mouth cue %1: the time goes backwards.</source>
+        <translation>口の形 %1：時間が逆戻りしています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="537"/>
+        <source>The JSON is damaged at character %1: %2.</source>
+        <translation>JSON の %1 文字目が壊れています：%2。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="543"/>
+        <source>The JSON has no &quot;mouthCues&quot; list: it is not a Rhubarb Lip Sync result.</source>
+        <translation>JSON に「mouthCues」のリストがありません。Rhubarb Lip Sync の結果ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="566"/>
+        <source>Line %1: the XML&apos;s root is &lt;%2&gt;, not &lt;rhubarbResult&gt;: it is not a Rhubarb Lip Sync result.</source>
+        <translation>%1 行目：XML のルートが &lt;rhubarbResult&gt; ではなく &lt;%2&gt; です。Rhubarb Lip Sync の結果ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="601"/>
+        <source>Line %1 is not &quot;seconds, tab, shape letter&quot;.</source>
+        <translation>%1 行目が「秒、タブ、形の文字」ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="629"/>
+        <source>Line %1: Moho switch data starts with &quot;MohoSwitch1&quot;.</source>
+        <translation>%1 行目：Moho スイッチデータは「MohoSwitch1」で始まります。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="644"/>
+        <source>Line %1 is not &quot;frame shape&quot;.</source>
+        <translation>%1 行目が「フレーム 形」ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="649"/>
+        <source>Line %1: &quot;%2&quot; is not a frame number from 1 to %3.</source>
+        <translation>%1 行目：「%2」は 1〜%3 のフレーム番号ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="671"/>
+        <source>Line %1: the letter &quot;%2&quot; is among Preston Blair&apos;s names; a file uses one naming or the other.</source>
+        <translation>%1 行目：文字「%2」が Preston Blair 式の名前と混在しています。ファイルではどちらか一方の名前を使います。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="724"/>
+        <source>&quot;%1&quot; could not be opened: %2.</source>
+        <translation>「%1」を開けませんでした：%2。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="746"/>
+        <source>&quot;%1&quot; is not lip sync timings that Finbook reads: Papagayo (.pgo), Moho switch data (.dat) or Rhubarb Lip Sync (.tsv, .json, .xml).</source>
+        <translation>「%1」は Finbook が読めるリップシンクのタイミングではありません：Papagayo（.pgo）、Moho スイッチデータ（.dat）、Rhubarb Lip Sync（.tsv、.json、.xml）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/lipsync_import.cpp" line="756"/>
+        <source>Lip sync timings</source>
+        <translation>リップシンクのタイミング</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="137"/>
+        <source>The sound&apos;s sample rate (%1 Hz) is not one speech can be recognised at.</source>
+        <translation>音声のサンプリングレート（%1 Hz）では音声認識ができません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="142"/>
+        <source>The sound is too short to hold speech (less than a tenth of a second).</source>
+        <translation>音声が短すぎて発話を含められません（0.1 秒未満）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="146"/>
+        <source>The sound is damaged: some of its samples are not numbers.</source>
+        <translation>音声が壊れています：一部のサンプルが数値ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="151"/>
+        <source>The sound is silent: there is no speech to recognise. Check that the clip is the one with the dialogue and that it is not muted.</source>
+        <translation>音声が無音で、認識する発話がありません。台詞のクリップか、ミュートされていないかを確かめてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="173"/>
+        <source>The speech models are not installed (looked in %1; on Debian and Ubuntu install the package pocketsphinx-en-us). Mouth shapes follow the loudness only.</source>
+        <translation>音声モデルがインストールされていません（%1 を探しました。Debian と Ubuntu ではパッケージ pocketsphinx-en-us をインストールしてください）。口の形は音量だけに従います。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="520"/>
+        <source>The dialogue could not be prepared for recognition: %1</source>
+        <translation>台詞を認識用に準備できませんでした：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="529"/>
+        <source>The speech models are damaged: %1</source>
+        <translation>音声モデルが壊れています：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="593"/>
+        <source>Speech recognition failed: %1</source>
+        <translation>音声認識に失敗しました：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="602"/>
+        <source>Lip sync was canceled.</source>
+        <translation>リップシンクを取り消しました。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="854"/>
+        <source>The speech models could not be loaded (%1). Mouth shapes follow the loudness only.</source>
+        <translation>音声モデルを読み込めませんでした（%1）。口の形は音量だけに従います。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/lipsync/speech_recognizer.cpp" line="866"/>
+        <source>The dialogue does not match the sound: the mouth follows the phones heard, without the dialogue.</source>
+        <translation>台詞が音声と合いません。口は台詞なしで、聞き取った音に従います。</translation>
     </message>
 </context>
 <context>
@@ -4020,25 +4400,25 @@
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="398"/>
         <source>Lock Layer</source>
         <translation>レイヤーをロック</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="121"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="386"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="398"/>
         <source>Unlock Layer</source>
         <translation>レイヤーのロックを解除</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="393"/>
         <source>Show Layer</source>
         <translation>レイヤーを表示</translation>
     </message>
     <message>
         <location filename="../ui/src/layers/layer_actions.cpp" line="122"/>
-        <location filename="../ui/src/layers/layer_sheet.cpp" line="381"/>
+        <location filename="../ui/src/layers/layer_sheet.cpp" line="393"/>
         <source>Hide Layer</source>
         <translation>レイヤーを非表示</translation>
     </message>
@@ -4082,85 +4462,243 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::LipSyncDialog</name>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="67"/>
+        <source>&amp;Run</source>
+        <translation>実行(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="68"/>
+        <source>&amp;Import Timings...</source>
+        <translation>タイミングを読み込む(&amp;I)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="73"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="239"/>
+        <source>Lip Sync</source>
+        <translation>リップシンク</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="76"/>
+        <source>Optional: the words spoken, for a closer fit</source>
+        <translation>任意：話している言葉（より正確に合わせるため）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="93"/>
+        <source>%1 (from frame %2)</source>
+        <translation>%1（フレーム %2 から）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="97"/>
+        <source>Recognises English speech (PocketSphinx, US English). Other languages: import timings made elsewhere.</source>
+        <translation>英語の発話を認識します（PocketSphinx、米国英語）。ほかの言語は、別のツールで作ったタイミングを読み込んでください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="99"/>
+        <source>The speech models are not installed (Debian: pocketsphinx-en-us): the mouth follows the loudness only, closed, half open or open.</source>
+        <translation>音声モデルがインストールされていません（Debian: pocketsphinx-en-us）。口は音量だけに従い、閉じる・半開き・開くのいずれかになります。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="103"/>
+        <source>Mouth:</source>
+        <translation>口：</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="104"/>
+        <source>%1 (%2 drawings)</source>
+        <translation>%1（絵 %2 枚）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="105"/>
+        <source>(none)</source>
+        <translation>（なし）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="107"/>
+        <source>&amp;Sound:</source>
+        <translation>音声(&amp;S)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="108"/>
+        <source>&amp;Dialogue:</source>
+        <translation>台詞(&amp;D)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="120"/>
+        <source>The animation has no sound: File &gt; Import Sound… first, or import timings made elsewhere.</source>
+        <translation>アニメーションに音声がありません。先にファイル &gt; 音声を読み込む… を使うか、別のツールで作ったタイミングを読み込んでください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="125"/>
+        <source>Import Lip Sync Timings</source>
+        <translation>リップシンクのタイミングを読み込む</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <source>Close</source>
+        <translation>閉じる</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="191"/>
+        <source>Listening…</source>
+        <translation>聞き取り中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="209"/>
+        <source>Cancelling…</source>
+        <translation>取り消し中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="215"/>
+        <source>Cancelled: nothing was changed.</source>
+        <translation>取り消しました。何も変更していません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="219"/>
+        <source>Nothing was changed.</source>
+        <translation>何も変更していません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="222"/>
+        <source>from the loudness (the speech models are not installed)</source>
+        <translation>音量から（音声モデルがインストールされていません）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="223"/>
+        <source>from the recognised speech</source>
+        <translation>認識した発話から</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="224"/>
+        <source>from the speech and the dialogue</source>
+        <translation>発話と台詞から</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="226"/>
+        <source>spelt by rules, not found in the dictionary: %1</source>
+        <translation>辞書になく規則で綴った語：%1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="244"/>
+        <source>Keyed the mouth on %n frame(s), %1.</source>
+        <translation>
+            <numerusform>%n フレームに口のキーを打ちました（%1）。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
+        <source>%n frame(s) of the mouth&apos;s layer hold no mouth and were left as they were.</source>
+        <translation>
+            <numerusform>口のレイヤーの %n フレームには口がないため、そのままにしました。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="260"/>
+        <source>%1 was not imported: %2</source>
+        <translation>%1 は読み込みませんでした：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="266"/>
+        <source>from %1</source>
+        <translation>%1 から</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="314"/>
+        <source>The clip holds no sound to follow.</source>
+        <translation>クリップに従うべき音がありません。</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::MainWindow</name>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="156"/>
+        <location filename="../ui/src/window/main_window.cpp" line="159"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="159"/>
+        <location filename="../ui/src/window/main_window.cpp" line="162"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="209"/>
+        <location filename="../ui/src/window/main_window.cpp" line="217"/>
+        <source>Show Dr&amp;awing</source>
+        <translation>表示する絵(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window.cpp" line="235"/>
         <source>Timeline</source>
         <translation>タイムライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window.cpp" line="238"/>
         <source>Objects</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="213"/>
+        <location filename="../ui/src/window/main_window.cpp" line="242"/>
         <source>Reference</source>
         <translation>参照</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="233"/>
+        <location filename="../ui/src/window/main_window.cpp" line="262"/>
         <source>&lt;opened document&gt;</source>
         <translation>&lt;開いたドキュメント&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="235"/>
+        <location filename="../ui/src/window/main_window.cpp" line="264"/>
         <source>Undo History</source>
         <translation>操作履歴</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window.cpp" line="271"/>
         <source>Palette</source>
         <translation>パレット</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="268"/>
+        <location filename="../ui/src/window/main_window.cpp" line="297"/>
         <source>Rotation </source>
         <translation>回転 </translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="272"/>
+        <location filename="../ui/src/window/main_window.cpp" line="301"/>
         <source>The view&apos;s rotation: the drawing is not changed. Shift+Space-drag on the canvas turns it freely; 4 and 6 turn it by 15°, 5 resets it, Shift+M mirrors it.</source>
         <translation>表示の回転です。絵は変わりません。キャンバス上で Shift+Space ドラッグで自由に回転、4 と 6 で 15° ずつ回転、5 で元に戻し、Shift+M で左右反転します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="298"/>
+        <location filename="../ui/src/window/main_window.cpp" line="327"/>
         <source>The reference &quot;%1&quot; cannot be shown: %2</source>
         <translation>参照「%1」を表示できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="307"/>
+        <location filename="../ui/src/window/main_window.cpp" line="336"/>
         <source>%1, %2 px</source>
         <translation>%1, %2 px</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="318"/>
+        <location filename="../ui/src/window/main_window.cpp" line="347"/>
         <source>Frame %1 / %2</source>
         <translation>フレーム %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="319"/>
+        <location filename="../ui/src/window/main_window.cpp" line="348"/>
         <source>%1 %</source>
         <translation>%1%</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window.cpp" line="353"/>
         <location filename="../ui/src/window/main_window_files.cpp" line="278"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window.cpp" line="325"/>
+        <location filename="../ui/src/window/main_window.cpp" line="354"/>
         <source>%1[*] - Finbook</source>
         <translation>%1[*] - Finbook</translation>
     </message>
@@ -4170,7 +4708,17 @@
         <translation>変形(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_deform.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="51"/>
+        <source>&amp;Lip Sync...</source>
+        <translation>リップシンク(&amp;L)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="52"/>
+        <source>Key a mouth chart&apos;s drawings from the soundtrack</source>
+        <translation>サウンドトラックから口形チャートの絵にキーを打つ</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/window/main_window_deform.cpp" line="74"/>
         <source>Preparing the deformation…</source>
         <translation>変形を準備しています…</translation>
     </message>
@@ -4235,7 +4783,7 @@
     </message>
     <message>
         <location filename="../ui/src/window/main_window_files.cpp" line="244"/>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>Import Mesh</source>
         <translation>メッシュのインポート</translation>
     </message>
@@ -4280,283 +4828,283 @@
         <translation>無題.finbook</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="57"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="62"/>
         <source>File</source>
         <translation>ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="69"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="70"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="75"/>
         <source>&amp;New</source>
         <translation>新規(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="72"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="77"/>
         <source>&amp;Open...</source>
         <translation>開く(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="74"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="79"/>
         <source>Open Exa&amp;mple</source>
         <translation>見本を開く(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="76"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="81"/>
         <source>&amp;Welcome...</source>
         <translation>ようこそ(&amp;W)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="83"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="88"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="87"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="92"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="89"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="94"/>
         <source>Save &amp;As...</source>
         <translation>名前を付けて保存(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="93"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="98"/>
         <source>E&amp;xport...</source>
         <translation>書き出し(&amp;X)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="106"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="111"/>
         <source>&amp;Import Mesh...</source>
         <translation>メッシュをインポート(&amp;I)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="109"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
         <source>OFF meshes (*.off)</source>
         <translation>OFF メッシュ (*.off)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="114"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="119"/>
         <source>Import Re&amp;ference...</source>
         <translation>参照を読み込む(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="120"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="125"/>
         <source>Cannot Import Reference</source>
         <translation>参照を読み込めません</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="122"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="127"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="139"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="144"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="141"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="146"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="145"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="150"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="155"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="160"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="165"/>
         <source>Cu&amp;t</source>
         <translation>切り取り(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="167"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="172"/>
         <source>&amp;Copy</source>
         <translation>コピー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="174"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="179"/>
         <source>&amp;Paste</source>
         <translation>貼り付け(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="187"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="192"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="194"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="199"/>
         <source>Select &amp;All</source>
         <translation>すべて選択(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="200"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="205"/>
         <source>Dese&amp;lect</source>
         <translation>選択を解除(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="207"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="212"/>
         <source>D&amp;ocument Settings...</source>
         <translation>ドキュメント設定(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="210"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="215"/>
         <source>Pre&amp;ferences...</source>
         <translation>環境設定(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="237"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="238"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="243"/>
         <source>Zoom &amp;In</source>
         <translation>ズームイン(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="240"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="245"/>
         <source>Zoom &amp;Out</source>
         <translation>ズームアウト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="242"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="247"/>
         <source>&amp;Fit to Window</source>
         <translation>ウィンドウに合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="244"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="249"/>
         <source>&amp;Actual Size (100 %)</source>
         <translation>実際のサイズ (100%)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="250"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
         <source>Rotate View &amp;Left</source>
         <translation>表示を左に回転(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="252"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="257"/>
         <source>Rotate View &amp;Right</source>
         <translation>表示を右に回転(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="255"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="260"/>
         <source>R&amp;eset View Rotation</source>
         <translation>表示の回転をリセット(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="258"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="263"/>
         <source>Mirror Vie&amp;w</source>
         <translation>表示を左右反転(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="266"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="271"/>
         <source>O&amp;nion Skin</source>
         <translation>オニオンスキン(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="277"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="282"/>
         <source>Onion Skin &amp;Settings...</source>
         <translation>オニオンスキンの設定(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="279"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="284"/>
         <source>Show &amp;Mesh</source>
         <translation>メッシュを表示(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="285"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="290"/>
         <source>&amp;Camera View</source>
         <translation>カメラビュー(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="291"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="296"/>
         <source>&amp;Dim Other Layers</source>
         <translation>他のレイヤーを薄く表示(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="298"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="303"/>
         <source>&amp;Panels</source>
         <translation>パネル(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="304"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="309"/>
         <source>F&amp;rame</source>
         <translation>フレーム(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="317"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="322"/>
         <source>&amp;Layer</source>
         <translation>レイヤー(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="324"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="329"/>
         <source>&amp;Object</source>
         <translation>オブジェクト(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="335"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="347"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="338"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="350"/>
         <source>Tools</source>
         <translation>ツール</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="346"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="358"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="348"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="360"/>
         <source>Finbook &amp;Manual</source>
         <translation>Finbook マニュアル(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="353"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="365"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="355"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="367"/>
         <source>&amp;About Finbook</source>
         <translation>Finbook について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="385"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="397"/>
         <source>Onion Skin</source>
         <translation>オニオンスキン</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="409"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="421"/>
         <source>About Finbook</source>
         <translation>Finbook について</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="410"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="422"/>
         <source>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;A flipbook animation editor: draw frame by frame, and bend drawings with pins.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Finbook %1&lt;/h3&gt;&lt;p&gt;パラパラ漫画のアニメーションエディターです。1 フレームずつ描いて、ピンで絵を曲げられます。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="143"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="148"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="39"/>
         <source>Undo</source>
         <translation>元に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/main_window_menus.cpp" line="147"/>
+        <location filename="../ui/src/window/main_window_menus.cpp" line="152"/>
         <location filename="../ui/src/window/main_window_toolbars.cpp" line="41"/>
         <source>Redo</source>
         <translation>やり直す</translation>
@@ -4707,12 +5255,22 @@
         <source>Shading</source>
         <translation>陰影</translation>
     </message>
+    <message>
+        <location filename="../ui/src/lipsync/main_window_lipsync.cpp" line="15"/>
+        <source>Lip Sync</source>
+        <translation>リップシンク</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/lipsync/main_window_lipsync.cpp" line="16"/>
+        <source>Lip sync keys the drawings of a mouth chart. Make one with Object &gt; New Mouth Chart, redraw its mouths in your style, then come back here.</source>
+        <translation>リップシンクは口形チャートの絵にキーを打ちます。オブジェクト &gt; 新規口形チャート で作り、口を自分の絵柄で描き直してから、ここに戻ってください。</translation>
+    </message>
 </context>
 <context>
     <name>finbook::ui::ManualBrowser</name>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="30"/>
-        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="98"/>
         <source>Contents</source>
         <translation>目次</translation>
     </message>
@@ -4758,56 +5316,61 @@
     </message>
     <message>
         <location filename="../ui/src/help/manual_browser.cpp" line="39"/>
+        <source>Swapping Drawings and Lip Sync</source>
+        <translation>絵の差し替えとリップシンク</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/help/manual_browser.cpp" line="40"/>
         <source>Camera</source>
         <translation>カメラ</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="40"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
         <source>Reference Pictures and Video</source>
         <translation>参照画像と動画</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="41"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
         <source>Exporting</source>
         <translation>書き出し</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="42"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
         <source>Saving, Autosave and Recovery</source>
         <translation>保存、自動保存、復元</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="43"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
         <source>The Command Line</source>
         <translation>コマンドライン</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="44"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
         <source>Keyboard Shortcuts</source>
         <translation>キーボードショートカット</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="45"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="46"/>
         <source>Installing</source>
         <translation>インストール</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="82"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="83"/>
         <source>Finbook Manual</source>
         <translation>Finbook マニュアル</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="95"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
         <source>Back</source>
         <translation>戻る</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="96"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="97"/>
         <source>Forward</source>
         <translation>進む</translation>
     </message>
     <message>
-        <location filename="../ui/src/help/manual_browser.cpp" line="102"/>
+        <location filename="../ui/src/help/manual_browser.cpp" line="103"/>
         <source>Search the manual</source>
         <translation>マニュアルを検索</translation>
     </message>
@@ -5871,6 +6434,133 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::SwapActions</name>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="24"/>
+        <source>Make S&amp;wappable</source>
+        <translation>差し替え可能にする(&amp;W)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="26"/>
+        <source>New Mout&amp;h Chart</source>
+        <translation>新規口形チャート(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="29"/>
+        <source>&amp;Previous Drawing</source>
+        <translation>前の絵(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="32"/>
+        <source>Ne&amp;xt Drawing</source>
+        <translation>次の絵(&amp;X)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="22"/>
+        <source>Show Dr&amp;awing</source>
+        <translation>表示する絵(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="35"/>
+        <source>New Drawing in S&amp;et</source>
+        <translation>セットに新しい絵(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="38"/>
+        <source>D&amp;uplicate Drawing in Set</source>
+        <translation>絵をセット内で複製(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="40"/>
+        <source>&amp;Rename Drawing...</source>
+        <translation>絵の名前を変更(&amp;R)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="42"/>
+        <source>Remove Drawing from Se&amp;t</source>
+        <translation>絵をセットから削除(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="44"/>
+        <source>Make Drawing &amp;Independent</source>
+        <translation>絵を独立させる(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="47"/>
+        <source>Make the object&apos;s drawing the first of a set it swaps between, frame by frame (mouths, hands, blinks)</source>
+        <translation>オブジェクトの絵を、フレームごとに差し替えるセットの最初の絵にする（口、手、まばたき）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="50"/>
+        <source>A new object showing the nine mouth shapes lip sync uses</source>
+        <translation>リップシンクが使う 9 つの口の形を持つ新しいオブジェクト</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="52"/>
+        <source>This frame keeps its drawing as its own: edits of it no longer reach the other frames</source>
+        <translation>このフレームの絵を独自のものにします。以後の編集はほかのフレームに届きません</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="125"/>
+        <source>(not swappable)</source>
+        <translation>（差し替えできません）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="129"/>
+        <source>(unnamed)</source>
+        <translation>（名前なし）</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="162"/>
+        <source>&quot;%1&quot; is swappable: add drawings with Object &gt; New Drawing in Set, and pick one per frame with [ and ]</source>
+        <translation>「%1」は差し替え可能です。オブジェクト &gt; セットに新しい絵 で絵を加え、フレームごとに [ と ] で選んでください</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="190"/>
+        <source>New Mouth Chart</source>
+        <translation>新規口形チャート</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="191"/>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="195"/>
+        <source>Mouth</source>
+        <translation>口</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="201"/>
+        <source>A mouth chart on its own layer: nine mouth shapes to redraw in your style; [ and ] swap them, Deform &gt; Lip Sync keys them from the soundtrack</source>
+        <translation>専用レイヤーに口形チャートを作りました。9 つの口を自分の絵柄で描き直してください。[ と ] で差し替え、変形 &gt; リップシンク でサウンドトラックからキーを打てます</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="226"/>
+        <source>Rename Drawing</source>
+        <translation>絵の名前を変更</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="226"/>
+        <source>Name of the drawing:</source>
+        <translation>絵の名前：</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_actions.cpp" line="273"/>
+        <source>Drawing &quot;%1&quot;</source>
+        <translation>絵「%1」</translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::SwapPicker</name>
+    <message>
+        <location filename="../ui/src/swap/swap_picker.cpp" line="15"/>
+        <source>Drawing:</source>
+        <translation>絵：</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/swap/swap_picker.cpp" line="20"/>
+        <source>The drawing this object shows in this frame ([ and ] step through them)</source>
+        <translation>このフレームでこのオブジェクトが表示する絵（[ と ] で順に切り替え）</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::TimelineView</name>
     <message>
         <location filename="../ui/src/timeline/timeline_view.cpp" line="266"/>
@@ -5929,7 +6619,7 @@
         <translation>ツールオプション</translation>
     </message>
     <message>
-        <location filename="../ui/src/window/tool_options_bar.cpp" line="61"/>
+        <location filename="../ui/src/window/tool_options_bar.cpp" line="56"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

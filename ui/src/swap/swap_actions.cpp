@@ -19,7 +19,7 @@ SwapActions::SwapActions(EditorState *state, QWidget *dialogParent, QObject *par
     , m_dialogParent(dialogParent)
     , m_drawings(new QMenu)
 {
-    m_drawings->setTitle(tr("Show &Drawing"));
+    m_drawings->setTitle(tr("Show Dr&awing"));
     m_drawings->menuAction()->setObjectName(QStringLiteral("swap.showDrawing"));
     connect(makeAction(QStringLiteral("swap.makeSwappable"), tr("Make S&wappable"), {}),
             &QAction::triggered, this, &SwapActions::makeSwappable);
@@ -32,12 +32,12 @@ SwapActions::SwapActions(EditorState *state, QWidget *dialogParent, QObject *par
     connect(makeAction(QStringLiteral("swap.next"), tr("Ne&xt Drawing"),
                        QKeySequence(Qt::Key_BracketRight)),
             &QAction::triggered, this, [this] { step(+1); });
-    connect(makeAction(QStringLiteral("swap.newDrawing"), tr("New Drawin&g in Set"), {}),
+    connect(makeAction(QStringLiteral("swap.newDrawing"), tr("New Drawing in S&et"), {}),
             &QAction::triggered, this, [this] { addDrawing(false); });
     connect(
-        makeAction(QStringLiteral("swap.duplicateDrawing"), tr("Du&plicate Drawing in Set"), {}),
+        makeAction(QStringLiteral("swap.duplicateDrawing"), tr("D&uplicate Drawing in Set"), {}),
         &QAction::triggered, this, [this] { addDrawing(true); });
-    connect(makeAction(QStringLiteral("swap.renameDrawing"), tr("Rena&me Drawing..."), {}),
+    connect(makeAction(QStringLiteral("swap.renameDrawing"), tr("&Rename Drawing..."), {}),
             &QAction::triggered, this, &SwapActions::renameDrawing);
     connect(makeAction(QStringLiteral("swap.deleteDrawing"), tr("Remove Drawing from Se&t"), {}),
             &QAction::triggered, this, &SwapActions::deleteDrawing);

@@ -214,7 +214,7 @@ void MainWindow::createDocks()
             return;
         for (auto it = frame->groups.rbegin(); it != frame->groups.rend(); ++it)
             if (it->swap.linked()) {
-                QMenu *drawings = menu->addMenu(tr("Show &Drawing"));
+                QMenu *drawings = menu->addMenu(tr("Show Dr&awing"));
                 m_swapActions->fillDrawingMenu(drawings, it->id);
                 return;
             }
