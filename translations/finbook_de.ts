@@ -6506,7 +6506,7 @@
     <message>
         <location filename="../ui/src/swap/swap_actions.cpp" line="44"/>
         <source>Make Drawing &amp;Independent</source>
-        <translation>Zeichnung eigenst&amp;ändig machen</translation>
+        <translation>Zeichnung l&amp;oslösen</translation>
     </message>
     <message>
         <location filename="../ui/src/swap/swap_actions.cpp" line="47"/>

@@ -268,20 +268,22 @@ Layout readLayout(FileReader &file, qint64 wholeSectionBytes)
                     throw Broken{FileErrorCode::BadValue};
                 break;
             }
-        } else if ((t == kTagCamera || t == kTagLayers) && next == std::size(order) &&
-                   length <= quint64(wholeSectionBytes)) {
-            // The camera or the layer list (after the frames, as the reader wants them): a
-            // thumbnail shows the first drawing on its page (the back layer's first cel), so
-            // they are only checked, as opening checks them.
+        } else if ((t == kTagCamera || t == kTagLayers || t == kTagSwap) &&
+                   next == std::size(order) && length <= quint64(wholeSectionBytes)) {
+            // The camera, the layer list or the swap sets (after the frames, as the reader
+            // wants them): a thumbnail shows the first drawing on its page (the back layer's
+            // first cel, whose swappable objects are saved showing their drawings), so they
+            // are only checked, as opening checks them.
             const QByteArray bytes = file.read(payload, end - payload);
             if (hasCrc &&
                 u32At(bytes, qint64(length)) !=
                     model::io::crc32c(model::io::crc32c(0, header.constData(), header.size()),
                                       bytes.constData(), std::size_t(length)))
                 throw Broken{FileErrorCode::Damaged};
-        } else if ((t == kTagSound || t == kTagCamera || t == kTagLayers) &&
+        } else if ((t == kTagSound || t == kTagCamera || t == kTagLayers || t == kTagSwap) &&
                    next == std::size(order)) {
-            // A sound clip (or a huge camera or layer list): its bytes are skipped unread.
+            // A sound clip (or a huge camera, layer list or set of swap drawings): its bytes
+            // are skipped unread.
         } else if (t == kTagLight && next == std::size(order) && length <= 64) {
             // The light of shaded fills: the thumbnail is lit as the opened file is. Read
             // whole (16 bytes) and checked as the model's reader checks it; the last one

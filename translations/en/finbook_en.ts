@@ -15,7 +15,7 @@
 <context>
     <name>Export</name>
     <message numerus="yes">
-        <location filename="../../model/src/export/ffmpeg_encoder.cpp" line="222"/>
+        <location filename="../../model/src/export/ffmpeg_encoder.cpp" line="283"/>
         <source>ffmpeg made no progress for %n second(s) and was stopped; nothing was written. Check that ffmpeg works, then export again.</source>
         <translation>
             <numerusform>ffmpeg made no progress for %n second and was stopped; nothing was written. Check that ffmpeg works, then export again.</numerusform>
@@ -23,7 +23,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/export/export_model.cpp" line="61"/>
+        <location filename="../../model/src/export/export_model.cpp" line="110"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and were left out.</source>
         <translation>
             <numerusform>%n object of frame %1 could not be made 3D (a dot or a straight line has no area to inflate; a drawing far off the page cannot be meshed) and was left out.</numerusform>
@@ -31,7 +31,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/export/export_model.cpp" line="35"/>
+        <location filename="../../model/src/export/export_model.cpp" line="115"/>
         <source>%n object(s) of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and were left out.</source>
         <translation>
             <numerusform>%n object of frame %1 could not be made 3D (a dot or a straight line has no area to inflate) and was left out.</numerusform>
@@ -39,7 +39,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/export/exporter.cpp" line="229"/>
+        <location filename="../../model/src/export/exporter.cpp" line="268"/>
         <source>%n more sound clip(s) are left out too.</source>
         <translation>
             <numerusform>%n more sound clip is left out too.</numerusform>
@@ -50,7 +50,7 @@
 <context>
     <name>FinbookFile</name>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="334"/>
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="339"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>its pose has %n stroke but the object has %1</numerusform>
@@ -58,7 +58,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="341"/>
+        <location filename="../../model/src/finbook_file_reader_frames.cpp" line="346"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>stroke %1 has %n point but its pose has %2</numerusform>
@@ -85,7 +85,7 @@
 <context>
     <name>ObjectListModel</name>
     <message numerus="yes">
-        <location filename="../../model/src/object_list_model.cpp" line="160"/>
+        <location filename="../../model/src/object_list_model.cpp" line="170"/>
         <source>%1: %n stroke(s)</source>
         <translation>
             <numerusform>%1: %n stroke</numerusform>
@@ -108,7 +108,7 @@
 <context>
     <name>finbook::model::FrameListModel</name>
     <message numerus="yes">
-        <location filename="../../model/src/frame_list_model.cpp" line="132"/>
+        <location filename="../../model/src/frame_list_model.cpp" line="151"/>
         <source>Frame %1, held for %n frame(s)</source>
         <translation>
             <numerusform>Frame %1, held for %n frame</numerusform>
@@ -130,7 +130,7 @@
 <context>
     <name>finbook::ui::DeformActions</name>
     <message numerus="yes">
-        <location filename="../../ui/src/rig/deform_actions.cpp" line="56"/>
+        <location filename="../../ui/src/rig/deform_actions.cpp" line="57"/>
         <source>The pins fold the drawing: %n triangle(s) of its mesh turned over where the pins leave no room (View → Show Mesh shows them red)</source>
         <translation>
             <numerusform>The pins fold the drawing: %n triangle of its mesh turned over where the pins leave no room (View → Show Mesh shows it red)</numerusform>
@@ -158,9 +158,39 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::FrameActions</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/timeline/frame_actions.cpp" line="126"/>
+        <source>Delete %n Frame(s)</source>
+        <translation>
+            <numerusform>Delete %n Frame</numerusform>
+            <numerusform>Delete %n Frames</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>finbook::ui::LipSyncDialog</name>
+    <message numerus="yes">
+        <location filename="../../ui/src/lipsync/lip_sync_dialog.cpp" line="244"/>
+        <source>Keyed the mouth on %n frame(s), %1.</source>
+        <translation>
+            <numerusform>Keyed the mouth on %n frame, %1.</numerusform>
+            <numerusform>Keyed the mouth on %n frames, %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
+        <source>%n frame(s) of the mouth&apos;s layer hold no mouth and were left as they were.</source>
+        <translation>
+            <numerusform>%n frame of the mouth&apos;s layer holds no mouth and was left as it was.</numerusform>
+            <numerusform>%n frames of the mouth&apos;s layer hold no mouth and were left as they were.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../ui/src/window/main_window_files.cpp" line="97"/>
+        <location filename="../../ui/src/window/main_window_files.cpp" line="137"/>
         <source>Opened what was readable of %1 (%n problem(s) repaired); save it under a new name.</source>
         <translation>
             <numerusform>Opened what was readable of %1 (%n problem repaired); save it under a new name.</numerusform>
@@ -198,17 +228,6 @@
         <translation>
             <numerusform>%n sound cannot be played; &quot;%1&quot;: %2</numerusform>
             <numerusform>%n sounds cannot be played; &quot;%1&quot;: %2</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>finbook::ui::FrameActions</name>
-    <message numerus="yes">
-        <location filename="../../ui/src/timeline/frame_actions.cpp" line="126"/>
-        <source>Delete %n Frame(s)</source>
-        <translation>
-            <numerusform>Delete %n Frame</numerusform>
-            <numerusform>Delete %n Frames</numerusform>
         </translation>
     </message>
 </context>
