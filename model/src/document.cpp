@@ -134,38 +134,41 @@ const StrokeGroup *Document::group(Id groupId) const
     return &frameAt(at).groups[std::size_t(at.group)];
 }
 
+namespace {
+// Where stroke `strokeId` is in cel `f` of layer `l` (invalid when it is not there).
+StrokeLocation strokeInCel(const Frame &cel, int f, int l, Id strokeId)
+{
+    const auto &groups = cel.groups;
+    for (int g = 0; g < int(groups.size()); ++g) {
+        const auto &strokes = groups[std::size_t(g)].strokes;
+        for (int s = 0; s < int(strokes.size()); ++s)
+            if (strokes[std::size_t(s)].id == strokeId)
+                return {f, g, s, l};
+    }
+    return {};
+}
+} // namespace
+
 StrokeLocation Document::locateStroke(Id strokeId) const
 {
     // The frame being edited first: a drawing shown in several frames (a swap set's) has its
-    // stroke ids in each of them.
-    if (m_focusFrame != kNoId) {
+    // stroke ids in each of them. Then the current layer's, where nearly every edit is.
+    if (m_focusFrame != kNoId)
         for (int l = 0; l < layerCount(); ++l) {
             const auto &cels = m_layers[std::size_t(l)].cels;
-            for (int f = 0; f < int(cels.size()); ++f) {
-                if (cels[std::size_t(f)].id != m_focusFrame)
-                    continue;
-                const auto &groups = cels[std::size_t(f)].groups;
-                for (int g = 0; g < int(groups.size()); ++g) {
-                    const auto &strokes = groups[std::size_t(g)].strokes;
-                    for (int s = 0; s < int(strokes.size()); ++s)
-                        if (strokes[std::size_t(s)].id == strokeId)
-                            return {f, g, s, l};
-                }
-            }
+            for (int f = 0; f < int(cels.size()); ++f)
+                if (cels[std::size_t(f)].id == m_focusFrame)
+                    if (const StrokeLocation at = strokeInCel(cels[std::size_t(f)], f, l, strokeId);
+                        at.isValid())
+                        return at;
         }
-    }
     for (int k = 0; k < layerCount(); ++k) {
         const int l = k == 0 ? m_current : (k <= m_current ? k - 1 : k);
         const auto &cels = m_layers[std::size_t(l)].cels;
-        for (int f = 0; f < int(cels.size()); ++f) {
-            const auto &groups = cels[std::size_t(f)].groups;
-            for (int g = 0; g < int(groups.size()); ++g) {
-                const auto &strokes = groups[std::size_t(g)].strokes;
-                for (int s = 0; s < int(strokes.size()); ++s)
-                    if (strokes[std::size_t(s)].id == strokeId)
-                        return {f, g, s, l};
-            }
-        }
+        for (int f = 0; f < int(cels.size()); ++f)
+            if (const StrokeLocation at = strokeInCel(cels[std::size_t(f)], f, l, strokeId);
+                at.isValid())
+                return at;
     }
     return {};
 }
