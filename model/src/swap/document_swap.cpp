@@ -103,6 +103,8 @@ void Document::linkInserted(Frame &frame)
 
 void Document::shareDrawing(Id groupId)
 {
+    if (m_swapSets.empty()) // no object is linked: not even a lookup per edit
+        return;
     const StrokeGroup *edited = group(groupId);
     if (!edited || !edited->swap.linked())
         return;
