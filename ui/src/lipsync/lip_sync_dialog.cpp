@@ -149,13 +149,19 @@ LipSyncDialog::~LipSyncDialog()
     }
 }
 
-qint64 LipSyncDialog::clipStart() const
+const model::SoundClip *LipSyncDialog::currentClip() const
 {
     const model::Id id = model::Id(m_clips->currentData().toULongLong());
     for (const model::SoundClip &clip : m_state->document()->soundtrack().clips())
         if (clip.id == id)
-            return clip.start;
-    return 0;
+            return &clip;
+    return nullptr;
+}
+
+qint64 LipSyncDialog::clipStart() const
+{
+    const model::SoundClip *clip = currentClip();
+    return clip ? clip->start : 0;
 }
 
 void LipSyncDialog::setBusy(bool busy)
@@ -177,11 +183,7 @@ void LipSyncDialog::run()
 {
     if (m_worker)
         return;
-    const model::Id id = model::Id(m_clips->currentData().toULongLong());
-    const model::SoundClip *clip = nullptr;
-    for (const model::SoundClip &c : m_state->document()->soundtrack().clips())
-        if (c.id == id)
-            clip = &c;
+    const model::SoundClip *clip = currentClip();
     if (!clip)
         return;
     m_job = std::make_shared<Job>();

@@ -44,13 +44,20 @@ void SwapPicker::refresh()
     setVisible(set != nullptr);
     if (!set)
         return;
-    m_refreshing = true;
-    m_combo->clear();
-    for (const model::SwapDrawing &d : set->drawings) {
-        m_combo->addItem(d.name, QVariant::fromValue(quint64(d.id)));
-        if (d.id == g->swap.drawing)
-            m_combo->setCurrentIndex(m_combo->count() - 1);
+    // Every edit of the frame comes here (each step of a pin drag too): the list is rebuilt
+    // only when the set's drawings changed, the choice only moved otherwise.
+    bool same = m_combo->count() == int(set->drawings.size());
+    for (int i = 0; same && i < m_combo->count(); ++i) {
+        const model::SwapDrawing &d = set->drawings[std::size_t(i)];
+        same = m_combo->itemData(i).toULongLong() == d.id && m_combo->itemText(i) == d.name;
     }
+    m_refreshing = true;
+    if (!same) {
+        m_combo->clear();
+        for (const model::SwapDrawing &d : set->drawings)
+            m_combo->addItem(d.name, QVariant::fromValue(quint64(d.id)));
+    }
+    m_combo->setCurrentIndex(set->indexOf(g->swap.drawing));
     m_combo->setEnabled(!g->locked);
     m_refreshing = false;
 }

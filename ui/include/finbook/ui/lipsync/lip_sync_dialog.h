@@ -23,6 +23,10 @@ class QPushButton;
 class QThread;
 class QTimer;
 
+namespace finbook::model {
+struct SoundClip;
+}
+
 namespace finbook::ui {
 
 class EditorState;
@@ -60,6 +64,8 @@ private:
     void finished(const std::shared_ptr<Job> &job);
     bool key(const std::vector<model::lipsync::MouthCue> &cues, double seconds, qint64 start,
              const QString &how);
+    // The clip picked in the Sound box (null when there is none), and its first tick.
+    const model::SoundClip *currentClip() const;
     qint64 clipStart() const;
     void setBusy(bool busy);
 
