@@ -34,6 +34,10 @@
 //   "shad"  := u32 count (u8 ramp u8 rim)[count]   (ancillary; types.h FillShading): how each
 //              fill of the object is shaded, one entry per fill of its FILL chunk, after it.
 //              Written only when a fill is shaded; a reader that skips it shows flat fills.
+//   "FPLC"  := u32 count (u32 places (f64 seedX f64 seedY u32 n u64 strokeId[n])[places])[count]
+//              (types.h Fill::more): each fill's further regions, one entry per fill of its
+//              FILL chunk, after it. Written only when a fill has more than one region (Apply
+//              Pose makes them); critical, as a Finbook that skipped it would lose colours.
 //   "JOIN"  := u64 parentObjectId f64 childAtX f64 childAtY f64 parentAtX f64 parentAtY
 //              (skeleton/skeleton_rig.h SkeletonJoin): the object's skeleton hangs from
 //              another object's skeleton in the same frame. Only after SKEL.
@@ -148,6 +152,7 @@ constexpr quint8 kLayerFlagHidden = 1;
 constexpr quint8 kLayerFlagLocked = 2;
 constexpr quint8 kLayerFlagNoOnion = 4;
 constexpr std::size_t kLayerFixedBytes = 8 + 4 + 1 + 8 + 8 + 4;
+constexpr quint32 kTagFillPlaces = tag("FPLC");
 constexpr quint32 kTagShading = tag("shad");
 constexpr quint32 kTagLimbBases = tag("limb");
 constexpr quint32 kTagLight = tag("lite");

@@ -92,7 +92,10 @@ private:
     void readSkeletonChunk(Cursor &c, StrokeGroup &g);
     void readJoinChunk(Cursor &c, StrokeGroup &g);
     void readPoseChunk(Cursor &c, StrokeGroup &g);
-    void readFillsChunk(Cursor &c, StrokeGroup &g);   // fill/fill_chunk.cpp
+    void readFillsChunk(Cursor &c, StrokeGroup &g);      // fill/fill_chunk.cpp
+    void readFillPlacesChunk(Cursor &c, StrokeGroup &g); // fill/fill_chunk.cpp
+    // A fill region's stroke ids (fill/fill_chunk.cpp): sorted, unique, ids a stroke can have.
+    void readFillStrokeIds(Cursor &c, std::vector<Id> &ids, const char *what);
     void readShadingChunk(Cursor &c, StrokeGroup &g); // shade/shade_chunk.cpp
     void readLightSection(Cursor &c);                 // shade/shade_chunk.cpp
     void readPaletteSection(Cursor &c);               // finbook_file_reader.cpp

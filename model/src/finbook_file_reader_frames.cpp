@@ -31,6 +31,7 @@ const Reader::ObjectChunk Reader::kObjectChunks[] = {
     {kTagJoin, false, &Reader::readJoinChunk},
     {kTagDeformed, false, &Reader::readPoseChunk},
     {kTagFills, false, &Reader::readFillsChunk},
+    {kTagFillPlaces, false, &Reader::readFillPlacesChunk},
     {kTagShading, false, &Reader::readShadingChunk},
     {kTagLimbBases, false, &Reader::readLimbBasesChunk},
 };

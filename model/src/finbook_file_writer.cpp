@@ -90,6 +90,11 @@ struct Tables {
             expectedBytes += qsizetype(kFillFixedBytes + 2 + 8 * f.strokes.size()); // + "shad"
             for (Id id : f.strokes)
                 noteId(id);
+            for (const FillPlace &p : f.more) {
+                expectedBytes += qsizetype(kFillFixedBytes + 8 * p.strokes.size());
+                for (Id id : p.strokes)
+                    noteId(id);
+            }
         }
         expectedBytes += 4 + qsizetype(kObjectFixedBytes) + 3 * qsizetype(kChunkHeaderBytes) +
                          g.name.size() * 3 + qsizetype(g.rig.pins.size() * kPinBytes + 4) +
@@ -236,6 +241,24 @@ const ObjectChunkWriter kObjectChunkWriters[] = {
              w.u32(quint32(f.strokes.size()));
              for (Id id : f.strokes)
                  w.u64(id);
+         }
+     }},
+    {kTagFillPlaces,
+     [](const StrokeGroup &g) {
+         return std::any_of(g.fills.begin(), g.fills.end(),
+                            [](const Fill &f) { return !f.more.empty(); });
+     },
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &) {
+         w.u32(quint32(g.fills.size()));
+         for (const Fill &f : g.fills) {
+             w.u32(quint32(f.more.size()));
+             for (const FillPlace &p : f.more) {
+                 w.f64(p.seed.x());
+                 w.f64(p.seed.y());
+                 w.u32(quint32(p.strokes.size()));
+                 for (Id id : p.strokes)
+                     w.u64(id);
+             }
          }
      }},
     {kTagShading,

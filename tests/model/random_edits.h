@@ -145,7 +145,7 @@ inline std::unique_ptr<QUndoCommand> randomFillCommand(model::Document &doc, mod
     if (!fills.empty() && rng.bounded(3) == 0) {
         fills.erase(fills.begin() + rng.bounded(quint32(fills.size())));
     } else {
-        Fill f{color, QPointF(rng.bounded(1000.0), rng.bounded(700.0)), {}, {}};
+        Fill f{color, QPointF(rng.bounded(1000.0), rng.bounded(700.0)), {}, {}, {}};
         if (g)
             for (const Stroke &s : g->strokes)
                 if (rng.bounded(2))

@@ -4,6 +4,7 @@
 #include "fill_support.h"
 
 #include <finbook/model/deform_setup.h>
+#include <finbook/model/erase/stroke_cut.h>
 #include <finbook/model/fill/fill_commands.h>
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
@@ -149,6 +150,7 @@ private slots:
     void olderFilesOpenWithoutFills();
     void damagedFillChunkIsRefused();
     void fillIdNoStrokeCanHaveIsRefusedAndRecovered();
+    void aFillOfSeveralRegionsIsOneFill();
 };
 
 void TestFills::fillRecolourRemoveEachOneUndoStep()
@@ -505,6 +507,80 @@ void TestFills::fillIdNoStrokeCanHaveIsRefusedAndRecovered()
     auto loaded = readFinbook(serializeFinbook(valid.frames(), valid.settings()));
     QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
     QVERIFY(loaded->nextId > (Id(1) << 40));
+}
+
+// A fill of two regions (Fill::more, as Apply Pose makes where crossing lines cut one region
+// in parts): both show its colour; the Fill tool recolours both with one click and empties
+// only the region clicked; a cut stroke, Duplicate Frame and the file keep both regions.
+void TestFills::aFillOfSeveralRegionsIsOneFill()
+{
+    Document doc;
+    const Id g = squareDocument(doc);
+    doc.undoStack()->push(
+        new AddStrokeCommand(&doc, g, polylineStroke(squareCorners(QRectF(300, 100, 100, 100)))));
+    push(doc, fillRegionCommand(&doc, g, QPointF(150, 150), kRed));
+    const Id left = doc.group(g)->strokes[0].id, right = doc.group(g)->strokes[1].id;
+    std::vector<Fill> fills = doc.group(g)->fills;
+    QCOMPARE(fills.size(), std::size_t(1));
+    fills[0].more.push_back({QPointF(350, 150), {right}});
+    doc.setFills(g, fills);
+    doc.undoStack()->clear();
+    QCOMPARE(filledFaces(doc, g), 2);
+    QVERIFY(near(shownRect(doc, g), QRectF(100, 100, 300, 100), 2.0));
+
+    push(doc, fillRegionCommand(&doc, g, QPointF(360, 170), kBlue)); // one click: both
+    QCOMPARE(doc.group(g)->fills.size(), std::size_t(1));
+    QCOMPARE(doc.group(g)->fills[0].color, kBlue);
+    QCOMPARE(doc.group(g)->fills[0].more.size(), std::size_t(1));
+    QCOMPARE(filledFaces(doc, g), 2);
+
+    push(doc, removeFillCommand(&doc, g, QPointF(360, 170))); // only the region clicked
+    QCOMPARE(doc.group(g)->fills.size(), std::size_t(1));
+    QVERIFY(doc.group(g)->fills[0].more.empty());
+    QCOMPARE(filledFaces(doc, g), 1);
+    QVERIFY(near(shownRect(doc, g), QRectF(100, 100, 100, 100), 2.0));
+    doc.undoStack()->undo();
+    QCOMPARE(filledFaces(doc, g), 2);
+    push(doc, removeFillCommand(&doc, g, QPointF(150, 150))); // its first: the other stays
+    QCOMPARE(doc.group(g)->fills.size(), std::size_t(1));
+    QCOMPARE(doc.group(g)->fills[0].strokes, std::vector<Id>{right});
+    QVERIFY(near(shownRect(doc, g), QRectF(300, 100, 100, 100), 2.0));
+    doc.undoStack()->undo();
+    QCOMPARE(doc.group(g)->fills[0].strokes, std::vector<Id>{left});
+
+    // Cutting the right square's outline: the region's strokes follow the pieces.
+    const auto pieces = cutStroke(*doc.group(g)->strokes[1].data, {QPointF(350, 100)}, 2.0);
+    QVERIFY(pieces && pieces->size() == 2);
+    std::vector<Id> ids = pushStrokeCut(&doc, right, *pieces);
+    std::sort(ids.begin(), ids.end());
+    QCOMPARE(doc.group(g)->fills[0].more.at(0).strokes, ids);
+    QCOMPARE(filledFaces(doc, g), 2); // the gap is narrower than Close gaps
+
+    // Duplicate Frame: the copy's regions name the copy's strokes, and both show.
+    doc.undoStack()->push(new DuplicateFrameCommand(&doc, doc.frameAt(0).id, 1));
+    const StrokeGroup &copy = doc.frameAt(1).groups.at(0);
+    QCOMPARE(copy.fills.at(0).strokes, std::vector<Id>{copy.strokes[0].id});
+    QCOMPARE(copy.fills.at(0).more.at(0).strokes,
+             (std::vector<Id>{copy.strokes[1].id, copy.strokes[2].id}));
+    QCOMPARE(filledFaces(doc, copy.id), 2);
+
+    // The file: both regions come back, and the bytes are the same when saved again.
+    const QByteArray bytes = serializeFinbook(doc);
+    QVERIFY(bytes.contains("FPLC"));
+    auto loaded = readFinbook(bytes);
+    QVERIFY2(loaded, loaded ? "" : qPrintable(loaded.error().message));
+    QCOMPARE(loaded->frames.at(0).groups.at(0).fills, doc.group(g)->fills);
+    Document reopened;
+    adoptLoadedDocument(reopened, std::move(*loaded));
+    QCOMPARE(serializeFinbook(reopened), bytes);
+    // A further region whose seed is not a number is refused, as a first one is.
+    fills = doc.group(g)->fills;
+    fills[0].more[0].seed = QPointF(0, std::nan(""));
+    doc.setFills(g, fills);
+    const auto damaged = readFinbook(serializeFinbook(doc.frames(), doc.settings()));
+    QVERIFY(!damaged);
+    QVERIFY2(damaged.error().message.contains(QStringLiteral("fill")),
+             qPrintable(damaged.error().message));
 }
 
 QTEST_MAIN(TestFills)

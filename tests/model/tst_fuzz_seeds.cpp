@@ -71,12 +71,13 @@ void cageAndSkeleton(Document &doc)
         h.join = {boned.id, QPointF(142, 82), QPointF(139, 79)};
         hand.deformed = shiftedPose(hand, 1.0f);
         // Fills (a FILL chunk): one naming both strokes, one naming a stroke erased since;
-        // the first shaded (a "shad" chunk).
+        // the first shaded (a "shad" chunk) and of two regions (an "FPLC" chunk).
         caged.fills = {{0xffe0c040,
                         QPointF(30, 45),
                         {caged.strokes[0].id, caged.strokes[1].id},
-                        {ShadeRamp::ThreeTones, true}},
-                       {0x80304050, QPointF(12, 70), {caged.strokes[1].id, next + 1000}, {}}};
+                        {ShadeRamp::ThreeTones, true},
+                        {{QPointF(60, 50), {caged.strokes[1].id}}}},
+                       {0x80304050, QPointF(12, 70), {caged.strokes[1].id, next + 1000}, {}, {}}};
         f.groups = {caged, boned, hand};
     }
     DocumentSettings settings;
@@ -371,7 +372,7 @@ void collectTags(const QByteArray &bytes, std::set<QByteArray> &tags)
     }
     // Object chunks: look for their tags followed by a plausible length (good enough for
     // files this small, whose points never spell these letters).
-    for (const char *chunk : {"PINS", "CAGE", "SKEL", "JOIN", "DEFM", "FILL", "shad"})
+    for (const char *chunk : {"PINS", "CAGE", "SKEL", "JOIN", "DEFM", "FILL", "FPLC", "shad"})
         if (bytes.contains(chunk))
             tags.insert(chunk);
 }
@@ -413,9 +414,9 @@ void TestFuzzSeeds::seedsCoverTheFormat()
     std::set<QByteArray> tags;
     for (const auto &[name, bytes] : seeds())
         collectTags(bytes, tags);
-    for (const char *tag :
-         {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS", "CAGE", "SKEL", "JOIN",
-          "DEFM", "FILL", "refr", "rseq", "SOND", "shad", "lite", "CAMR", "LAYR", "palt", "SWAP"})
+    for (const char *tag : {"DOCU", "STRK", "POSE", "FRAM", "FEND", "rcvy", "thmb", "PINS",
+                            "CAGE", "SKEL", "JOIN", "DEFM", "FILL", "FPLC", "refr", "rseq",
+                            "SOND", "shad", "lite", "CAMR", "LAYR", "palt", "SWAP"})
         QVERIFY2(tags.count(tag), tag);
 }
 

@@ -38,7 +38,7 @@ Id filledSquare(Document &doc)
     StrokeGroup g;
     g.id = doc.allocateId();
     g.strokes.push_back({doc.allocateId(), data});
-    g.fills.push_back({kFill, QPointF(300, 250), {g.strokes[0].id}, {}});
+    g.fills.push_back({kFill, QPointF(300, 250), {g.strokes[0].id}, {}, {}});
     f.groups.push_back(g);
     DocumentSettings s;
     s.canvasSize = QSize(800, 600);

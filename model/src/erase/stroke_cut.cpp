@@ -146,17 +146,17 @@ std::vector<Id> pushStrokeCut(Document *doc, Id strokeId, const std::vector<Stro
         stack->push(add);
     }
     bool named = false;
-    for (Fill &fill : fills) {
-        const auto it = std::lower_bound(fill.strokes.begin(), fill.strokes.end(), strokeId);
-        if (it == fill.strokes.end() || *it != strokeId)
-            continue;
-        named = true;
-        fill.strokes.erase(it);
-        fill.strokes.insert(fill.strokes.end(), ids.begin(), ids.end());
-        std::sort(fill.strokes.begin(), fill.strokes.end());
-        fill.strokes.erase(std::unique(fill.strokes.begin(), fill.strokes.end()),
-                           fill.strokes.end());
-    }
+    for (Fill &fill : fills)
+        forEachFillStrokes(fill, [&](std::vector<Id> &strokes) {
+            const auto it = std::lower_bound(strokes.begin(), strokes.end(), strokeId);
+            if (it == strokes.end() || *it != strokeId)
+                return;
+            named = true;
+            strokes.erase(it);
+            strokes.insert(strokes.end(), ids.begin(), ids.end());
+            std::sort(strokes.begin(), strokes.end());
+            strokes.erase(std::unique(strokes.begin(), strokes.end()), strokes.end());
+        });
     if (named)
         stack->push(new SetFillsCommand(doc, groupId, std::move(fills),
                                         Command::tr("Keep Fills Along a Cut")));

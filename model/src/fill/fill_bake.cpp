@@ -8,9 +8,10 @@
 // fill). Each fill is then tied to exactly its faces: a fill's seed and bounding strokes are
 // those of one face (fillOfFace), so faceFills resolves it to that face alone (no split rule
 // reaches past it), and a fill the pose showed on several faces of the baked drawing (a limb
-// crossing the body cuts the body in two) gets one more fill per further face, in its colour
-// and shading. Resolving by seed points alone let a seed fall into a neighbouring region and
-// a fill spread over faces the pose showed empty (slivers between a limb and the body).
+// crossing the body cuts the body in two) keeps them all as its further regions (Fill::more),
+// each tied the same way: still one fill, recoloured with one click. Resolving by seed points alone
+// let a seed fall into a neighbouring region and a fill spread over faces the pose showed empty
+// (slivers between a limb and the body).
 #include "../skeleton/nearest_bone.h"
 
 #include <finbook/model/fill/fill_render.h>
@@ -299,13 +300,19 @@ std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Str
         return fill;
     };
     std::vector<Fill> out;
+    std::vector<int> at(group.fills.size(), -1); // each fill's place in `out`
     for (std::size_t i = 0; i < group.fills.size(); ++i)
-        if (largest[i] >= 0)
+        if (largest[i] >= 0) {
+            at[i] = int(out.size());
             out.push_back(tied(largest[i], group.fills[i]));
+        }
     for (int f = 0; f < regions->faceCount(); ++f) {
         const int i = owner[std::size_t(f)];
-        if (i >= 0 && largest[std::size_t(i)] != f)
-            out.push_back(tied(f, group.fills[std::size_t(i)]));
+        if (i >= 0 && largest[std::size_t(i)] != f) {
+            const Fill further = fillOfFace(*regions, f, 0);
+            out[std::size_t(at[std::size_t(i)])].more.push_back(
+                FillPlace{further.seed, further.strokes});
+        }
     }
     return out;
 }

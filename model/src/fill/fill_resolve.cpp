@@ -28,7 +28,21 @@ bool contains(const std::vector<Id> &sorted, Id id)
     return std::binary_search(sorted.begin(), sorted.end(), id);
 }
 
-int primaryFace(const ObjectRegions &regions, const Fill &fill)
+// One region of a fill: its seed and its strokes (the fill's own, or one of Fill::more).
+struct Place {
+    const QPointF &seed;
+    const std::vector<Id> &strokes;
+};
+
+Place placeOf(const Fill &fill, int k)
+{
+    if (k < 0)
+        return {fill.seed, fill.strokes};
+    const FillPlace &p = fill.more[std::size_t(k)];
+    return {p.seed, p.strokes};
+}
+
+int primaryFace(const ObjectRegions &regions, const Place &fill)
 {
     const int atSeed = regions.faceAt(fill.seed);
     if (atSeed >= 0 &&
@@ -51,7 +65,7 @@ int primaryFace(const ObjectRegions &regions, const Fill &fill)
 }
 
 // The faces a split of `primary` made: see the header.
-std::vector<int> splitFaces(const ObjectRegions &regions, const Fill &fill, int primary)
+std::vector<int> splitFaces(const ObjectRegions &regions, const Place &fill, int primary)
 {
     std::vector<Id> cutting; // strokes bounding the fill's faces that it did not know
     const auto addCutting = [&](int face) {
@@ -84,49 +98,71 @@ std::vector<int> splitFaces(const ObjectRegions &regions, const Fill &fill, int 
     }
     return faces;
 }
+
+// Which fill, and which of its regions (−1 its first, k its Fill::more[k]), each face shows.
+struct Owner {
+    int fill = -1;
+    int place = -1;
+};
+
+std::vector<Owner> faceOwners(const ObjectRegions &regions, const std::vector<Fill> &fills)
+{
+    // Each face goes to the fill region that claims it as its own and is tied best to the
+    // strokes around it (the share of strokes the two have in common; a later one wins a
+    // tie): a fill whose region has gone, and whose seed now lies in a neighbour's region,
+    // never takes that region from the neighbour's own fill (and never spreads from there).
+    const auto n = std::size_t(regions.faceCount());
+    std::vector<Owner> out(n);
+    std::vector<double> claim(n, -1.0);
+    struct Claim {
+        Owner owner;
+        int face;
+    };
+    std::vector<Claim> claims;
+    for (std::size_t i = 0; i < fills.size(); ++i)
+        for (int k = -1; k < int(fills[i].more.size()); ++k) {
+            const Place place = placeOf(fills[i], k);
+            const int f = primaryFace(regions, place);
+            if (f < 0)
+                continue;
+            claims.push_back({{int(i), k}, f});
+            const auto &ids = regions.faceStrokeIds(f);
+            const std::size_t common = shared(ids, place.strokes);
+            const std::size_t either = ids.size() + place.strokes.size() - common;
+            const double tie = either > 0 ? double(common) / double(either) : 1.0;
+            if (tie >= claim[std::size_t(f)]) {
+                claim[std::size_t(f)] = tie;
+                out[std::size_t(f)] = {int(i), k};
+            }
+        }
+    // The halves of a region cut in two by new strokes keep its fill, unless another fill
+    // claims them as its own.
+    std::vector<Owner> spread = out;
+    for (const Claim &c : claims) {
+        const Owner &o = out[std::size_t(c.face)];
+        if (o.fill != c.owner.fill || o.place != c.owner.place)
+            continue;
+        for (int half : splitFaces(regions, placeOf(fills[std::size_t(o.fill)], o.place), c.face))
+            if (out[std::size_t(half)].fill < 0)
+                spread[std::size_t(half)] = c.owner;
+    }
+    return spread;
+}
 } // namespace
 
 std::vector<int> faceFills(const ObjectRegions &regions, const std::vector<Fill> &fills)
 {
-    // Each face goes to the fill that claims it as its own region and is tied best to the
-    // strokes around it (the share of strokes the two have in common; a later fill wins a
-    // tie): a fill whose region has gone, and whose seed now lies in a neighbour's region,
-    // never takes that region from the neighbour's own fill (and never spreads from there).
-    const auto n = std::size_t(regions.faceCount());
-    std::vector<int> out(n, -1), primary(fills.size(), -1);
-    std::vector<double> claim(n, -1.0);
-    for (std::size_t i = 0; i < fills.size(); ++i) {
-        const int f = primaryFace(regions, fills[i]);
-        if (f < 0)
-            continue;
-        primary[i] = f;
-        const auto &ids = regions.faceStrokeIds(f);
-        const std::size_t common = shared(ids, fills[i].strokes);
-        const std::size_t either = ids.size() + fills[i].strokes.size() - common;
-        const double tie = either > 0 ? double(common) / double(either) : 1.0;
-        if (tie >= claim[std::size_t(f)]) {
-            claim[std::size_t(f)] = tie;
-            out[std::size_t(f)] = int(i);
-        }
-    }
-    // The halves of a region cut in two by new strokes keep its fill, unless another fill
-    // claims them as its own.
-    std::vector<int> spread = out;
-    for (std::size_t i = 0; i < fills.size(); ++i) {
-        const int f = primary[i];
-        if (f < 0 || out[std::size_t(f)] != int(i))
-            continue;
-        for (int half : splitFaces(regions, fills[i], f))
-            if (out[std::size_t(half)] < 0)
-                spread[std::size_t(half)] = int(i);
-    }
-    return spread;
+    const std::vector<Owner> owners = faceOwners(regions, fills);
+    std::vector<int> out(owners.size());
+    for (std::size_t f = 0; f < owners.size(); ++f)
+        out[f] = owners[f].fill;
+    return out;
 }
 
 Fill fillOfFace(const ObjectRegions &regions, int face, QRgb color)
 {
     const auto &seed = regions.regions().faces[std::size_t(face)].seed;
-    return Fill{color, QPointF(seed.x(), seed.y()), regions.faceStrokeIds(face), {}};
+    return Fill{color, QPointF(seed.x(), seed.y()), regions.faceStrokeIds(face), {}, {}};
 }
 
 std::optional<std::vector<Fill>> fillsWithFace(const ObjectRegions &regions,
@@ -155,16 +191,25 @@ std::optional<std::vector<Fill>> fillsWithoutFace(const ObjectRegions &regions,
 {
     if (face < 0 || face >= regions.faceCount())
         return std::nullopt;
-    const std::vector<int> shown = faceFills(regions, fills);
-    if (shown[std::size_t(face)] < 0)
+    if (faceOwners(regions, fills)[std::size_t(face)].fill < 0)
         return std::nullopt;
-    // Every fill that would show here once the one on top is gone goes too.
+    // Every fill region that would show here once the one on top is gone goes too. A fill of
+    // several regions (Fill::more) loses only this one: the others stay coloured.
     std::vector<Fill> out = fills;
     for (;;) {
-        const int top = faceFills(regions, out)[std::size_t(face)];
-        if (top < 0)
+        const Owner top = faceOwners(regions, out)[std::size_t(face)];
+        if (top.fill < 0)
             break;
-        out.erase(out.begin() + top);
+        Fill &fill = out[std::size_t(top.fill)];
+        if (fill.more.empty()) {
+            out.erase(out.begin() + top.fill);
+        } else if (top.place >= 0) {
+            fill.more.erase(fill.more.begin() + top.place);
+        } else { // its first region goes: the next one takes its place
+            fill.seed = fill.more.front().seed;
+            fill.strokes = std::move(fill.more.front().strokes);
+            fill.more.erase(fill.more.begin());
+        }
     }
     return out;
 }

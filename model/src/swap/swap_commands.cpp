@@ -14,12 +14,13 @@ void reIdentify(std::vector<Stroke> &strokes, std::vector<Fill> &fills,
     std::map<Id, Id> renamed;
     for (Stroke &s : strokes)
         s.id = renamed[s.id] = newId();
-    for (Fill &f : fills) {
-        for (Id &id : f.strokes)
-            if (const auto it = renamed.find(id); it != renamed.end())
-                id = it->second;
-        std::sort(f.strokes.begin(), f.strokes.end());
-    }
+    for (Fill &f : fills)
+        forEachFillStrokes(f, [&](std::vector<Id> &ids) {
+            for (Id &id : ids)
+                if (const auto it = renamed.find(id); it != renamed.end())
+                    id = it->second;
+            std::sort(ids.begin(), ids.end());
+        });
 }
 
 namespace {

@@ -300,12 +300,19 @@ std::vector<ClipboardFill> StrokeEditing::selectedFills(const EditorState &state
     const auto isSelected = [&selected](model::Id id) {
         return std::find(selected.begin(), selected.end(), id) != selected.end();
     };
+    // Each region of a fill (Fill::more too) whose strokes are all selected; the paste fills
+    // each as a click of the Fill tool would.
+    const auto take = [&](QRgb color, QPointF seed, const std::vector<model::Id> &strokes) {
+        if (!strokes.empty() && std::all_of(strokes.begin(), strokes.end(), isSelected))
+            fills.push_back({color, seed});
+    };
     if (const model::Frame *f = state.currentFrame())
         for (const model::StrokeGroup &g : f->groups)
-            for (const model::Fill &fill : g.fills)
-                if (!fill.strokes.empty() &&
-                    std::all_of(fill.strokes.begin(), fill.strokes.end(), isSelected))
-                    fills.push_back({fill.color, fill.seed});
+            for (const model::Fill &fill : g.fills) {
+                take(fill.color, fill.seed, fill.strokes);
+                for (const model::FillPlace &place : fill.more)
+                    take(fill.color, place.seed, place.strokes);
+            }
     return fills;
 }
 

@@ -141,13 +141,34 @@ struct FillShading {
 // point inside it on the rest drawing and the ids of the strokes that bounded it when it was
 // made, not by pixels: when the strokes change, the region that still holds the seed (or, when
 // the seed fell out, the one bounded by most of the same strokes) keeps the colour.
+//
+// One further region of a fill (Fill::more): a point inside it and the strokes bounding it.
+struct FillPlace {
+    QPointF seed;            // rest canvas pixels
+    std::vector<Id> strokes; // sorted, unique
+    friend bool operator==(const FillPlace &, const FillPlace &) = default;
+};
+
 struct Fill {
     QRgb color = 0xff000000; // ARGB
     QPointF seed;            // rest canvas pixels
     std::vector<Id> strokes; // sorted, unique
     FillShading shading;
+    // Further regions that are the same fill, each tied as the first is (fill_resolve.h): Apply
+    // Pose makes them where lines that the pose made cross cut one shown region into several
+    // (a fork's tines turned through each other), so the animator still has one fill to
+    // recolour, not ten. Empty for a fill of one region.
+    std::vector<FillPlace> more;
     friend bool operator==(const Fill &, const Fill &) = default;
 };
+// Calls f(strokes) on the stroke id list of each region of `fill` (its first, then Fill::more),
+// for code that renumbers or replaces stroke ids.
+template <class F> void forEachFillStrokes(Fill &fill, F &&f)
+{
+    f(fill.strokes);
+    for (FillPlace &place : fill.more)
+        f(place.strokes);
+}
 
 constexpr double kDefaultMeshDensity = 1.0; // 1 = default edge length; 2 = twice as fine
 

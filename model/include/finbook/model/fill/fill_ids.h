@@ -13,14 +13,15 @@ namespace finbook::model {
 // know (a stroke erased since the fill was made) is dropped: no stroke of the copy has it.
 inline void remapFillStrokeIds(StrokeGroup &group, const std::unordered_map<Id, Id> &ids)
 {
-    for (Fill &fill : group.fills) {
-        std::vector<Id> mapped;
-        for (Id id : fill.strokes)
-            if (auto it = ids.find(id); it != ids.end())
-                mapped.push_back(it->second);
-        std::sort(mapped.begin(), mapped.end());
-        fill.strokes = std::move(mapped);
-    }
+    for (Fill &fill : group.fills)
+        forEachFillStrokes(fill, [&](std::vector<Id> &strokes) {
+            std::vector<Id> mapped;
+            for (Id id : strokes)
+                if (auto it = ids.find(id); it != ids.end())
+                    mapped.push_back(it->second);
+            std::sort(mapped.begin(), mapped.end());
+            strokes = std::move(mapped);
+        });
 }
 
 } // namespace finbook::model

@@ -10,7 +10,8 @@
 // fills hold their seeds in one face, the one tied best to its strokes (the larger share of
 // strokes in common) has it, a later fill winning a tie; the other shows nowhere and does
 // not spread (a region that vanished under a moved head must not colour the body it left its
-// seed in).
+// seed in). A fill of several regions (Fill::more) resolves each region so, as if each were
+// a fill of its own that comes right after the fill's first.
 #pragma once
 
 #include <finbook/model/fill/fill_regions.h>
@@ -27,9 +28,9 @@ std::vector<int> faceFills(const ObjectRegions &regions, const std::vector<Fill>
 Fill fillOfFace(const ObjectRegions &regions, int face, QRgb color);
 
 // The object's fills after the edits the Fill tool makes on `face`; nullopt when nothing would
-// change. Filling a face that shows a fill recolours that fill (and ties it to the face as it is
-// now); removing drops every fill that shows on the face. New fills are shaded as the object's
-// last fill is.
+// change. Filling a face that shows a fill recolours that fill (all its regions); removing
+// drops every fill that shows on the face (of a fill of several regions, only the region that
+// shows there). New fills are shaded as the object's last fill is.
 std::optional<std::vector<Fill>>
 fillsWithFace(const ObjectRegions &regions, const std::vector<Fill> &fills, int face, QRgb color);
 std::optional<std::vector<Fill>> fillsWithoutFace(const ObjectRegions &regions,
@@ -47,8 +48,9 @@ std::optional<std::vector<Fill>> fillsWithAllFaces(const ObjectRegions &regions,
 // of it showed none. Each fill is tied to one face (fillOfFace: that face's seed and bounding
 // strokes, so no split rule spreads it), keeping its colour, shading and place in the list on
 // its largest face; a fill shown on several faces (a limb passing over the body cuts it in
-// two) gets one more fill per further face after the others. A fill the pose showed nowhere
-// is left out (undo brings it back).
+// two) keeps the others as its further regions (Fill::more), each tied to its face the same
+// way, so the drawing still has the fills it had. A fill the pose showed nowhere is left out
+// (undo brings it back).
 std::vector<Fill> fillsAfterBake(const StrokeGroup &group, const std::vector<Stroke> &baked,
                                  double closeGap);
 
