@@ -151,6 +151,7 @@ private slots:
     void damagedFillChunkIsRefused();
     void fillIdNoStrokeCanHaveIsRefusedAndRecovered();
     void aFillOfSeveralRegionsIsOneFill();
+    void aFillWhoseOutlineLeftTheFaceYieldsIt();
 };
 
 void TestFills::fillRecolourRemoveEachOneUndoStep()
@@ -581,6 +582,47 @@ void TestFills::aFillOfSeveralRegionsIsOneFill()
     QVERIFY(!damaged);
     QVERIFY2(damaged.error().message.contains(QStringLiteral("fill")),
              qPrintable(damaged.error().message));
+}
+
+// Two fills whose seeds lie in one face (a head moved over the seed of the region where it
+// overlapped the body, in the random characters of tst_pose_bake): the face goes to the fill
+// all of whose strokes still bound it, not to the one a stroke of which now bounds another
+// face only, even when that one shares more strokes with the face (a moved head that touches
+// an arm gains the arm's line; the overlap's fill had it too).
+void TestFills::aFillWhoseOutlineLeftTheFaceYieldsIt()
+{
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id g = doc.frameAt(0).groups.at(0).id;
+    // A square of four lines that cross at its corners (a top, b right, d bottom, e left),
+    // and a small square c apart.
+    const QPolygonF lines[] = {{QPointF(90, 100), QPointF(210, 100)},
+                               {QPointF(200, 90), QPointF(200, 210)},
+                               {QPointF(210, 200), QPointF(90, 200)},
+                               {QPointF(100, 210), QPointF(100, 90)},
+                               squareCorners(QRectF(300, 100, 50, 50))};
+    for (const QPolygonF &line : lines)
+        doc.undoStack()->push(new AddStrokeCommand(&doc, g, polylineStroke(line)));
+    const auto &s = doc.group(g)->strokes;
+    const Id a = s[0].id, b = s[1].id, d = s[2].id, c = s[4].id;
+    const auto regions = objectRegions(*doc.group(g), doc.settings().closeGap);
+    const int face = regions->faceAt(QPointF(150, 150));
+    QVERIFY(face >= 0);
+    QCOMPARE(regions->faceStrokeIds(face).size(), std::size_t(4));
+    const auto sorted = [](std::vector<Id> ids) {
+        std::sort(ids.begin(), ids.end());
+        return ids;
+    };
+    const Fill kept{kRed, QPointF(140, 140), sorted({a, b}), {}, {}};
+    const Fill moved{kBlue, QPointF(160, 160), sorted({a, b, d, c}), {}, {}};
+    // The share of strokes in common alone would give the face to `moved` (3 of 5 against 2 of
+    // 4), and so would its place later in the list.
+    QCOMPARE(faceFills(*regions, {kept, moved})[std::size_t(face)], 0);
+    QCOMPARE(faceFills(*regions, {moved, kept})[std::size_t(face)], 1);
+    // Without c, `moved` ties best and, later, wins.
+    Fill alsoHere = moved;
+    alsoHere.strokes = sorted({a, b, d});
+    QCOMPARE(faceFills(*regions, {kept, alsoHere})[std::size_t(face)], 1);
 }
 
 QTEST_MAIN(TestFills)

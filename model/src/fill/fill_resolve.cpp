@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <limits>
 #include <optional>
 
 namespace finbook::model {
@@ -108,12 +109,21 @@ struct Owner {
 std::vector<Owner> faceOwners(const ObjectRegions &regions, const std::vector<Fill> &fills)
 {
     // Each face goes to the fill region that claims it as its own and is tied best to the
-    // strokes around it (the share of strokes the two have in common; a later one wins a
-    // tie): a fill whose region has gone, and whose seed now lies in a neighbour's region,
+    // strokes around it: first the one none of whose strokes now bounds another face instead
+    // (fewest such strokes: a region whose outline moved away is not the face its seed is
+    // left in, while new strokes meeting a face, a moved head touching an arm, do not make
+    // it another face), then the larger share of strokes in common, a later one winning a
+    // tie. So a fill whose region has gone, and whose seed now lies in a neighbour's region,
     // never takes that region from the neighbour's own fill (and never spreads from there).
     const auto n = std::size_t(regions.faceCount());
     std::vector<Owner> out(n);
-    std::vector<double> claim(n, -1.0);
+    std::vector<double> claim(n, -std::numeric_limits<double>::infinity());
+    std::vector<Id> bounding; // every stroke that bounds some face
+    for (int f = 0; f < regions.faceCount(); ++f)
+        bounding.insert(bounding.end(), regions.faceStrokeIds(f).begin(),
+                        regions.faceStrokeIds(f).end());
+    std::sort(bounding.begin(), bounding.end());
+    bounding.erase(std::unique(bounding.begin(), bounding.end()), bounding.end());
     struct Claim {
         Owner owner;
         int face;
@@ -129,7 +139,12 @@ std::vector<Owner> faceOwners(const ObjectRegions &regions, const std::vector<Fi
             const auto &ids = regions.faceStrokeIds(f);
             const std::size_t common = shared(ids, place.strokes);
             const std::size_t either = ids.size() + place.strokes.size() - common;
-            const double tie = either > 0 ? double(common) / double(either) : 1.0;
+            std::size_t elsewhere = 0; // the place's strokes that bound other faces only
+            for (Id id : place.strokes)
+                elsewhere += contains(bounding, id) && !contains(ids, id);
+            // Lexicographic: the share (0-1) decides only between equal counts.
+            const double tie =
+                (either > 0 ? double(common) / double(either) : 1.0) - 2.0 * double(elsewhere);
             if (tie >= claim[std::size_t(f)]) {
                 claim[std::size_t(f)] = tie;
                 out[std::size_t(f)] = {int(i), k};

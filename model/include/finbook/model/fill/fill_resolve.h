@@ -7,8 +7,9 @@
 // that share one of the cutting strokes with the fill's face and are otherwise bounded only by
 // the fill's strokes and the cutting ones inherit it. A region that has gone shows no colour;
 // the fill stays in the object, so undoing the edit brings the colour back exactly. Where two
-// fills hold their seeds in one face, the one tied best to its strokes (the larger share of
-// strokes in common) has it, a later fill winning a tie; the other shows nowhere and does
+// fills hold their seeds in one face, the one tied best to its strokes has it: first the one
+// with fewest strokes that now bound other faces instead (its region's outline moved away),
+// then the larger share of strokes in common, a later fill winning a tie; the other shows nowhere and does
 // not spread (a region that vanished under a moved head must not colour the body it left its
 // seed in). A fill of several regions (Fill::more) resolves each region so, as if each were
 // a fill of its own that comes right after the fill's first.
