@@ -1,0 +1,258 @@
+// drawTexturedMesh: exact fixed-point coverage (top-left rule) row span by row span, uv stepped
+// in 16.16 fixed point along a span, bilinear premultiplied samples composited source-over.
+#include <finbook/model/picture/textured_mesh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace finbook::model {
+
+namespace {
+
+constexpr int kSubpixelBits = 8; // vertex positions are snapped to 1/256 px
+constexpr std::int64_t kSubpixel = std::int64_t(1) << kSubpixelBits;
+constexpr std::int64_t kHalfPixel = kSubpixel / 2;
+// 2^21 px × 256 = 2^29: edge function products stay below 2^61, sums below 2^63.
+constexpr double kMaxTargetCoordinate = double(1 << 21);
+
+struct MeshPoint {
+    std::int64_t x = 0, y = 0; // target position in 1/256 px
+    double fx = 0.0, fy = 0.0; // target position in px
+    bool valid = false;
+};
+
+// Per channel (x·a + y·b) / 256 for a + b = 256, two channels per multiply.
+inline std::uint32_t lerpPixel(std::uint32_t x, std::uint32_t a, std::uint32_t y, std::uint32_t b)
+{
+    std::uint32_t t = (x & 0xff00ffu) * a + (y & 0xff00ffu) * b;
+    t = (t >> 8) & 0xff00ffu;
+    x = ((x >> 8) & 0xff00ffu) * a + ((y >> 8) & 0xff00ffu) * b;
+    return (x & 0xff00ff00u) | t;
+}
+
+// Per channel x · a / 255, rounded (a in 0..255).
+inline std::uint32_t scalePixel(std::uint32_t x, std::uint32_t a)
+{
+    std::uint32_t t = (x & 0xff00ffu) * a;
+    t = ((t + ((t >> 8) & 0xff00ffu) + 0x800080u) >> 8) & 0xff00ffu;
+    x = ((x >> 8) & 0xff00ffu) * a;
+    x = (x + ((x >> 8) & 0xff00ffu) + 0x800080u) & 0xff00ff00u;
+    return x | t;
+}
+
+std::int64_t floorDiv(std::int64_t a, std::int64_t b) // b > 0
+{
+    const std::int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+// One edge P → Q of a triangle wound so that inside is E > 0, with the top-left rule folded
+// into an integer bias: a pixel centre is covered when E + bias ≥ 0... with bias −1 for edges
+// that are neither top nor left (E must be > 0 there), 0 for those that are.
+struct Edge {
+    std::int64_t dx, dy, px, py, bias;
+    Edge(const MeshPoint &p, const MeshPoint &q)
+        : dx(q.x - p.x)
+        , dy(q.y - p.y)
+        , px(p.x)
+        , py(p.y)
+        , bias((dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1)
+    {}
+    // Narrows [lo, hi] to the pixels of row `sampleY` (a centre, 1/256 px) this edge admits.
+    void clip(std::int64_t sampleY, std::int64_t &lo, std::int64_t &hi) const
+    {
+        // E(px) = dx·(y − py) − dy·(px·256 + 128 − px0) = e0 + px·step
+        const std::int64_t e0 = dx * (sampleY - py) - dy * (kHalfPixel - px) + bias;
+        const std::int64_t step = -dy * kSubpixel;
+        if (step > 0)
+            lo = std::max(lo, -floorDiv(e0, step)); // px ≥ ceil(−e0 / step)
+        else if (step < 0)
+            hi = std::min(hi, floorDiv(e0, -step));
+        else if (e0 < 0)
+            hi = lo - 1;
+    }
+};
+
+// The target and texture as plain memory, and the triangle's affine uv on the target.
+struct Raster {
+    std::uint32_t *target;
+    qsizetype targetStride; // in pixels
+    int width, height;
+    const std::uint32_t *texture;
+    qsizetype textureStride;
+    int texWidth, texHeight;
+    std::uint32_t alpha; // opacity, 0..255
+};
+
+struct UvPlane {
+    double u0, dudx, dudy, v0, dvdx, dvdy; // u(x, y) = u0 + x·dudx + y·dudy (target px)
+};
+
+inline std::uint32_t sampleTexture(const Raster &r, std::int64_t su, std::int64_t sv)
+{
+    // su, sv: 16.16 texel coordinates relative to texel centres (u − ½, v − ½).
+    const std::int64_t fx = su >> 16, fy = sv >> 16;
+    const auto wx = std::uint32_t((su >> 8) & 0xff), wy = std::uint32_t((sv >> 8) & 0xff);
+    const int x0 = int(std::clamp<std::int64_t>(fx, 0, r.texWidth - 1));
+    const int x1 = int(std::clamp<std::int64_t>(fx + 1, 0, r.texWidth - 1));
+    const int y0 = int(std::clamp<std::int64_t>(fy, 0, r.texHeight - 1));
+    const int y1 = int(std::clamp<std::int64_t>(fy + 1, 0, r.texHeight - 1));
+    const std::uint32_t *row0 = r.texture + qsizetype(y0) * r.textureStride;
+    const std::uint32_t *row1 = r.texture + qsizetype(y1) * r.textureStride;
+    const std::uint32_t top = lerpPixel(row0[x0], 256 - wx, row0[x1], wx);
+    const std::uint32_t bottom = lerpPixel(row1[x0], 256 - wx, row1[x1], wx);
+    return lerpPixel(top, 256 - wy, bottom, wy);
+}
+
+void drawSpan(const Raster &r, const UvPlane &p, int y, int x0, int x1)
+{
+    constexpr double kFixed = 65536.0;
+    const double cx = x0 + 0.5, cy = y + 0.5;
+    const double u = p.u0 + cx * p.dudx + cy * p.dudy, v = p.v0 + cx * p.dvdx + cy * p.dvdy;
+    const double uEnd = u + (x1 - x0) * p.dudx, vEnd = v + (x1 - x0) * p.dvdx;
+    // A span whose uv runs this far out belongs to a degenerate triangle (a texture is at most
+    // 2^16 px): skipped, so that 16.16 fixed point cannot overflow.
+    const double limit = double(std::int64_t(1) << 30);
+    if (!(std::abs(u) < limit && std::abs(uEnd) < limit && std::abs(v) < limit &&
+          std::abs(vEnd) < limit))
+        return;
+    std::int64_t su = std::llround((u - 0.5) * kFixed), sv = std::llround((v - 0.5) * kFixed);
+    const std::int64_t du = std::llround(p.dudx * kFixed), dv = std::llround(p.dvdx * kFixed);
+    // u ∈ [0, w] ⇔ su ∈ [−½, w − ½] in 16.16.
+    const std::int64_t minS = -32768, maxU = std::int64_t(r.texWidth) * 65536 - 32768,
+                       maxV = std::int64_t(r.texHeight) * 65536 - 32768;
+    std::uint32_t *out = r.target + qsizetype(y) * r.targetStride;
+    for (int x = x0; x <= x1; ++x, su += du, sv += dv) {
+        if (su < minS || sv < minS || su > maxU || sv > maxV)
+            continue;
+        std::uint32_t s = sampleTexture(r, su, sv);
+        if (r.alpha != 255)
+            s = scalePixel(s, r.alpha);
+        const std::uint32_t a = s >> 24;
+        if (a == 255)
+            out[x] = s;
+        else if (s != 0)
+            out[x] = s + scalePixel(out[x], 255 - a);
+    }
+}
+
+// The affine map from target px to texture px over triangle abc; false when it has no area.
+bool uvPlane(const MeshPoint &a, const MeshPoint &b, const MeshPoint &c, const double *ua,
+             const double *ub, const double *uc, UvPlane &p)
+{
+    const double bx = b.fx - a.fx, by = b.fy - a.fy, cx = c.fx - a.fx, cy = c.fy - a.fy;
+    const double det = bx * cy - by * cx;
+    if (det == 0.0 || !std::isfinite(det))
+        return false;
+    const double du1 = ub[0] - ua[0], du2 = uc[0] - ua[0];
+    const double dv1 = ub[1] - ua[1], dv2 = uc[1] - ua[1];
+    p.dudx = (du1 * cy - du2 * by) / det;
+    p.dudy = (du2 * bx - du1 * cx) / det;
+    p.dvdx = (dv1 * cy - dv2 * by) / det;
+    p.dvdy = (dv2 * bx - dv1 * cx) / det;
+    p.u0 = ua[0] - a.fx * p.dudx - a.fy * p.dudy;
+    p.v0 = ua[1] - a.fx * p.dvdx - a.fy * p.dvdy;
+    return std::isfinite(p.dudx) && std::isfinite(p.dudy) && std::isfinite(p.dvdx) &&
+           std::isfinite(p.dvdy) && std::isfinite(p.u0) && std::isfinite(p.v0);
+}
+
+void drawTriangle(const Raster &r, MeshPoint a, MeshPoint b, MeshPoint c, const double *ua,
+                  const double *ub, const double *uc)
+{
+    const std::int64_t area2 = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    if (area2 == 0)
+        return;
+    if (area2 < 0) { // drawn whichever way it winds
+        std::swap(b, c);
+        std::swap(ub, uc);
+    }
+    // Pixels whose centre (px·256 + 128) can lie inside: the box, clipped to the target.
+    const std::int64_t minX = std::min({a.x, b.x, c.x}), maxX = std::max({a.x, b.x, c.x});
+    const std::int64_t minY = std::min({a.y, b.y, c.y}), maxY = std::max({a.y, b.y, c.y});
+    const std::int64_t x0 = std::max<std::int64_t>(0, -floorDiv(kHalfPixel - minX, kSubpixel));
+    const std::int64_t x1 =
+        std::min<std::int64_t>(r.width - 1, floorDiv(maxX - kHalfPixel, kSubpixel));
+    const std::int64_t y0 = std::max<std::int64_t>(0, -floorDiv(kHalfPixel - minY, kSubpixel));
+    const std::int64_t y1 =
+        std::min<std::int64_t>(r.height - 1, floorDiv(maxY - kHalfPixel, kSubpixel));
+    if (x0 > x1 || y0 > y1)
+        return;
+    UvPlane plane;
+    if (!uvPlane(a, b, c, ua, ub, uc, plane))
+        return;
+    const Edge edges[3] = {Edge(a, b), Edge(b, c), Edge(c, a)};
+    for (std::int64_t y = y0; y <= y1; ++y) {
+        const std::int64_t sampleY = y * kSubpixel + kHalfPixel;
+        std::int64_t lo = x0, hi = x1;
+        for (const Edge &e : edges)
+            e.clip(sampleY, lo, hi);
+        if (lo <= hi)
+            drawSpan(r, plane, int(y), int(lo), int(hi));
+    }
+}
+
+std::vector<MeshPoint> mapVertices(const QTransform &view, const Eigen::MatrixX2d &V,
+                                   const Eigen::MatrixX2d &uv)
+{
+    std::vector<MeshPoint> points(std::size_t(V.rows()));
+    for (Eigen::Index i = 0; i < V.rows(); ++i) {
+        if (!std::isfinite(uv(i, 0)) || !std::isfinite(uv(i, 1)))
+            continue;
+        const QPointF p = view.map(QPointF(V(i, 0), V(i, 1)));
+        if (!(std::abs(p.x()) < kMaxTargetCoordinate) || !(std::abs(p.y()) < kMaxTargetCoordinate))
+            continue; // NaN fails these too
+        MeshPoint &m = points[std::size_t(i)];
+        m.fx = p.x();
+        m.fy = p.y();
+        m.x = std::llround(p.x() * double(kSubpixel));
+        m.y = std::llround(p.y() * double(kSubpixel));
+        m.valid = true;
+    }
+    return points;
+}
+
+} // namespace
+
+void drawTexturedMesh(QImage &target, const QTransform &view, const QImage &texture,
+                      const Eigen::MatrixX2d &uv, const Eigen::MatrixX2d &V,
+                      const Eigen::MatrixX3i &F, double opacity)
+{
+    if (target.isNull() || texture.isNull() || uv.rows() != V.rows() || !(opacity > 0.0))
+        return;
+    if (target.format() != QImage::Format_ARGB32_Premultiplied)
+        target.convertTo(QImage::Format_ARGB32_Premultiplied);
+    const QImage tex = texture.format() == QImage::Format_ARGB32_Premultiplied
+                           ? texture
+                           : texture.convertToFormat(QImage::Format_ARGB32_Premultiplied);
+    Raster r;
+    r.target = reinterpret_cast<std::uint32_t *>(target.bits()); // detaches once, here
+    r.targetStride = target.bytesPerLine() / 4;
+    r.width = target.width();
+    r.height = target.height();
+    r.texture = reinterpret_cast<const std::uint32_t *>(tex.constBits());
+    r.textureStride = tex.bytesPerLine() / 4;
+    r.texWidth = tex.width();
+    r.texHeight = tex.height();
+    r.alpha = std::uint32_t(std::lround(std::min(opacity, 1.0) * 255.0));
+    if (r.alpha == 0)
+        return;
+    const std::vector<MeshPoint> points = mapVertices(view, V, uv);
+    const auto n = Eigen::Index(points.size());
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+        const int i = F(f, 0), j = F(f, 1), k = F(f, 2);
+        if (i < 0 || j < 0 || k < 0 || i >= n || j >= n || k >= n)
+            continue;
+        const MeshPoint &a = points[std::size_t(i)], &b = points[std::size_t(j)],
+                        &c = points[std::size_t(k)];
+        if (!a.valid || !b.valid || !c.valid)
+            continue;
+        const double ua[2] = {uv(i, 0), uv(i, 1)}, ub[2] = {uv(j, 0), uv(j, 1)},
+                     uc[2] = {uv(k, 0), uv(k, 1)};
+        drawTriangle(r, a, b, c, ua, ub, uc);
+    }
+}
+
+} // namespace finbook::model
