@@ -226,6 +226,12 @@ void TestTexturedMesh::restReproducesPicture()
         QVERIFY(psnr(shifted.copy(20, 10, 160, 120), picture) >= 40.0);
         QCOMPARE(qAlpha(shifted.pixel(5, 5)), 0);
     }
+    // Large enough to be drawn in two bands of rows by two threads: still the picture.
+    const QImage large = paintedPicture(300, 280);
+    const Grid g = grid(300, 280, 12.0);
+    QImage target = transparentTarget(300, 280);
+    drawTexturedMesh(target, QTransform(), large, g.V, g.V, g.F);
+    QCOMPARE(target, large);
 }
 
 void TestTexturedMesh::posedCoversOutlineOnce()

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <system_error>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -17,6 +20,9 @@ constexpr std::int64_t kSubpixel = std::int64_t(1) << kSubpixelBits;
 constexpr std::int64_t kHalfPixel = kSubpixel / 2;
 // 2^21 px × 256 = 2^29: edge function products stay below 2^61, sums below 2^63.
 constexpr double kMaxTargetCoordinate = double(1 << 21);
+// Below these a second thread costs more than it saves.
+constexpr int kMinBandRows = 64;
+constexpr Eigen::Index kMinThreadedFaces = 64;
 
 struct MeshPoint {
     std::int64_t x = 0, y = 0; // target position in 1/256 px
@@ -84,16 +90,18 @@ struct Raster {
     const std::uint32_t *texture;
     qsizetype textureStride;
     int texWidth, texHeight;
-    std::uint32_t alpha; // opacity, 0..255
+    std::uint32_t alpha;     // opacity, 0..255
+    int bandTop, bandBottom; // the rows [bandTop, bandBottom) this pass may draw
 };
 
 struct UvPlane {
     double u0, dudx, dudy, v0, dvdx, dvdy; // u(x, y) = u0 + x·dudx + y·dudy (target px)
 };
 
-inline std::uint32_t sampleTexture(const Raster &r, std::int64_t su, std::int64_t sv)
+// Bilinear sample at su, sv (16.16 texel coordinates relative to texel centres, u − ½, v − ½)
+// with the neighbours clamped to the texture: for the half pixel along its border.
+std::uint32_t sampleClamped(const Raster &r, std::int64_t su, std::int64_t sv)
 {
-    // su, sv: 16.16 texel coordinates relative to texel centres (u − ½, v − ½).
     const std::int64_t fx = su >> 16, fy = sv >> 16;
     const auto wx = std::uint32_t((su >> 8) & 0xff), wy = std::uint32_t((sv >> 8) & 0xff);
     const int x0 = int(std::clamp<std::int64_t>(fx, 0, r.texWidth - 1));
@@ -107,7 +115,30 @@ inline std::uint32_t sampleTexture(const Raster &r, std::int64_t su, std::int64_
     return lerpPixel(top, 256 - wy, bottom, wy);
 }
 
-void drawSpan(const Raster &r, const UvPlane &p, int y, int x0, int x1)
+// A pixel's four channels spread to 16 bits each (0x00AA00GG00RR00BB order: A, G | R, B).
+inline std::uint64_t spread(std::uint32_t p)
+{
+    return std::uint64_t(p & 0xff00ffu) | (std::uint64_t(p & 0xff00ff00u) << 24);
+}
+
+// Bilinear sample between texel `p` and its right, lower and lower-right neighbours: one
+// weighted sum of the four spread texels (weights summing to 256, so 255 · 256 fits a lane).
+inline std::uint32_t sampleInterior(const std::uint32_t *p, qsizetype stride, std::uint32_t wx,
+                                    std::uint32_t wy)
+{
+    if ((wx | wy) == 0) // on a texel centre (the rest pose): the texel itself
+        return p[0];
+    const std::uint32_t w11 = (wx * wy + 128) >> 8, w10 = wx - w11, w01 = wy - w11;
+    const std::uint32_t w00 = 256 - wx - wy + w11;
+    const std::uint64_t sum = spread(p[0]) * w00 + spread(p[1]) * w10 + spread(p[stride]) * w01 +
+                              spread(p[stride + 1]) * w11;
+    const std::uint64_t lanes = (sum >> 8) & 0x00ff00ff00ff00ffull;
+    return std::uint32_t(lanes & 0xff00ffu) | (std::uint32_t(lanes >> 24) & 0xff00ff00u);
+}
+
+// `r` by value: its fields are locals the compiler may keep in registers (the target's pixels
+// are unsigned ints, which could otherwise alias the int fields of a Raster in memory).
+void drawSpan(const Raster r, const UvPlane &p, int y, int x0, int x1)
 {
     constexpr double kFixed = 65536.0;
     const double cx = x0 + 0.5, cy = y + 0.5;
@@ -121,14 +152,23 @@ void drawSpan(const Raster &r, const UvPlane &p, int y, int x0, int x1)
         return;
     std::int64_t su = std::llround((u - 0.5) * kFixed), sv = std::llround((v - 0.5) * kFixed);
     const std::int64_t du = std::llround(p.dudx * kFixed), dv = std::llround(p.dvdx * kFixed);
-    // u ∈ [0, w] ⇔ su ∈ [−½, w − ½] in 16.16.
+    // u ∈ [0, w] ⇔ su ∈ [−½, w − ½] in 16.16; inside [0, w − 1) all four texels exist.
     const std::int64_t minS = -32768, maxU = std::int64_t(r.texWidth) * 65536 - 32768,
                        maxV = std::int64_t(r.texHeight) * 65536 - 32768;
+    const auto innerU = std::uint64_t(r.texWidth - 1) << 16, innerV = std::uint64_t(r.texHeight - 1)
+                                                                      << 16;
     std::uint32_t *out = r.target + qsizetype(y) * r.targetStride;
     for (int x = x0; x <= x1; ++x, su += du, sv += dv) {
-        if (su < minS || sv < minS || su > maxU || sv > maxV)
-            continue;
-        std::uint32_t s = sampleTexture(r, su, sv);
+        std::uint32_t s;
+        if (std::uint64_t(su) < innerU && std::uint64_t(sv) < innerV) {
+            s = sampleInterior(r.texture + (sv >> 16) * r.textureStride + (su >> 16),
+                               r.textureStride, std::uint32_t(su >> 8) & 0xff,
+                               std::uint32_t(sv >> 8) & 0xff);
+        } else if (su < minS || sv < minS || su > maxU || sv > maxV) {
+            continue; // outside the texture's rectangle: transparent
+        } else {
+            s = sampleClamped(r, su, sv);
+        }
         if (r.alpha != 255)
             s = scalePixel(s, r.alpha);
         const std::uint32_t a = s >> 24;
@@ -175,9 +215,10 @@ void drawTriangle(const Raster &r, MeshPoint a, MeshPoint b, MeshPoint c, const 
     const std::int64_t x0 = std::max<std::int64_t>(0, -floorDiv(kHalfPixel - minX, kSubpixel));
     const std::int64_t x1 =
         std::min<std::int64_t>(r.width - 1, floorDiv(maxX - kHalfPixel, kSubpixel));
-    const std::int64_t y0 = std::max<std::int64_t>(0, -floorDiv(kHalfPixel - minY, kSubpixel));
+    const std::int64_t y0 =
+        std::max<std::int64_t>(r.bandTop, -floorDiv(kHalfPixel - minY, kSubpixel));
     const std::int64_t y1 =
-        std::min<std::int64_t>(r.height - 1, floorDiv(maxY - kHalfPixel, kSubpixel));
+        std::min<std::int64_t>(r.bandBottom - 1, floorDiv(maxY - kHalfPixel, kSubpixel));
     if (x0 > x1 || y0 > y1)
         return;
     UvPlane plane;
@@ -214,6 +255,41 @@ std::vector<MeshPoint> mapVertices(const QTransform &view, const Eigen::MatrixX2
     return points;
 }
 
+// The target rows the valid vertices span, [top, bottom), clipped to the target.
+std::pair<int, int> coveredRows(const std::vector<MeshPoint> &points, int height)
+{
+    std::int64_t minY = std::numeric_limits<std::int64_t>::max(), maxY = -minY;
+    for (const MeshPoint &p : points)
+        if (p.valid) {
+            minY = std::min(minY, p.y);
+            maxY = std::max(maxY, p.y);
+        }
+    if (minY > maxY)
+        return {0, 0};
+    const std::int64_t top = std::max<std::int64_t>(0, -floorDiv(kHalfPixel - minY, kSubpixel));
+    const std::int64_t bottom =
+        std::min<std::int64_t>(height, floorDiv(maxY - kHalfPixel, kSubpixel) + 1);
+    return {int(top), int(std::max(top, bottom))};
+}
+
+void drawFaces(const Raster &r, const std::vector<MeshPoint> &points, const Eigen::MatrixX2d &uv,
+               const Eigen::MatrixX3i &F)
+{
+    const auto n = Eigen::Index(points.size());
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+        const int i = F(f, 0), j = F(f, 1), k = F(f, 2);
+        if (i < 0 || j < 0 || k < 0 || i >= n || j >= n || k >= n)
+            continue;
+        const MeshPoint &a = points[std::size_t(i)], &b = points[std::size_t(j)],
+                        &c = points[std::size_t(k)];
+        if (!a.valid || !b.valid || !c.valid)
+            continue;
+        const double ua[2] = {uv(i, 0), uv(i, 1)}, ub[2] = {uv(j, 0), uv(j, 1)},
+                     uc[2] = {uv(k, 0), uv(k, 1)};
+        drawTriangle(r, a, b, c, ua, ub, uc);
+    }
+}
+
 } // namespace
 
 void drawTexturedMesh(QImage &target, const QTransform &view, const QImage &texture,
@@ -240,19 +316,26 @@ void drawTexturedMesh(QImage &target, const QTransform &view, const QImage &text
     if (r.alpha == 0)
         return;
     const std::vector<MeshPoint> points = mapVertices(view, V, uv);
-    const auto n = Eigen::Index(points.size());
-    for (Eigen::Index f = 0; f < F.rows(); ++f) {
-        const int i = F(f, 0), j = F(f, 1), k = F(f, 2);
-        if (i < 0 || j < 0 || k < 0 || i >= n || j >= n || k >= n)
-            continue;
-        const MeshPoint &a = points[std::size_t(i)], &b = points[std::size_t(j)],
-                        &c = points[std::size_t(k)];
-        if (!a.valid || !b.valid || !c.valid)
-            continue;
-        const double ua[2] = {uv(i, 0), uv(i, 1)}, ub[2] = {uv(j, 0), uv(j, 1)},
-                     uc[2] = {uv(k, 0), uv(k, 1)};
-        drawTriangle(r, a, b, c, ua, ub, uc);
+    const auto [top, bottom] = coveredRows(points, r.height);
+    // Two bands of rows drawn at once: every pixel still sees the same triangles in the same
+    // order, so the result is the same as drawn in one pass.
+    if (bottom - top >= 2 * kMinBandRows && F.rows() >= kMinThreadedFaces &&
+        std::thread::hardware_concurrency() >= 2) {
+        Raster upper = r, lower = r;
+        upper.bandTop = top;
+        upper.bandBottom = lower.bandTop = (top + bottom) / 2;
+        lower.bandBottom = bottom;
+        try {
+            std::thread helper([&] { drawFaces(lower, points, uv, F); });
+            drawFaces(upper, points, uv, F);
+            helper.join();
+            return;
+        } catch (const std::system_error &) { // no thread to be had: one pass, below
+        }
     }
+    r.bandTop = top;
+    r.bandBottom = bottom;
+    drawFaces(r, points, uv, F);
 }
 
 } // namespace finbook::model

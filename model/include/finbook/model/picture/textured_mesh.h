@@ -6,7 +6,9 @@
 // composited source-over. Coverage follows the top-left rule on exact fixed-point edge
 // functions (1/256 px), so a pixel centre on an edge shared by two triangles belongs to exactly
 // one of them: no cracks and no seam blended twice. Triangles are drawn whichever way they wind
-// (a folded pose shows both layers).
+// (a folded pose shows both layers), in the order of F. A large draw is split into two bands
+// of rows drawn by two threads at once (the calling thread and one more); each pixel still
+// sees its triangles in the same order, so the result does not depend on the split.
 //
 // The mesh's outer boundary is hard: pixels whose centre is outside every triangle are left
 // alone. The soft edge of a picture comes from its own alpha, so the mesh should cover all of
