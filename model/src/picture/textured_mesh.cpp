@@ -55,30 +55,56 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) // b > 0
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
 
-// One edge P → Q of a triangle wound so that inside is E > 0, with the top-left rule folded
-// into an integer bias: a pixel centre is covered when E + bias ≥ 0... with bias −1 for edges
-// that are neither top nor left (E must be > 0 there), 0 for those that are.
+// One edge P → Q of a triangle wound so that its inside has E > 0, where
+// E(s) = (Q − P) × (s − P). The top-left rule is an integer bias: a pixel centre s is covered
+// when E(s) + bias ≥ 0, bias 0 on top and left edges (E = 0 counts), −1 on the others (E must
+// be > 0). With y down and this winding, a top edge runs in +x and a left edge in −y.
 struct Edge {
-    std::int64_t dx, dy, px, py, bias;
-    Edge(const MeshPoint &p, const MeshPoint &q)
-        : dx(q.x - p.x)
-        , dy(q.y - p.y)
-        , px(p.x)
-        , py(p.y)
-        , bias((dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1)
-    {}
-    // Narrows [lo, hi] to the pixels of row `sampleY` (a centre, 1/256 px) this edge admits.
-    void clip(std::int64_t sampleY, std::int64_t &lo, std::int64_t &hi) const
+    // At pixel X's centre on the row whose centre is sampleY (both in 1/256 px):
+    // E + bias = dx·(sampleY − py) − dy·(X·256 + 128 − px) + bias = e0 + X·step. A row further
+    // down adds dx·256 to e0. The bound on X this gives, floor(e0 / |step|), is walked from row
+    // to row as a quotient and remainder (a division per edge, not per row), exactly.
+    enum class Bound { Lower, Upper, Flat } bound;
+    std::int64_t q = 0, r = 0;    // e0 = q·d + r, 0 ≤ r < d (Lower, Upper)
+    std::int64_t d = 1;           // |step|
+    std::int64_t qi = 0, ri = 0;  // dx·256 = qi·d + ri, 0 ≤ ri < d
+    std::int64_t e0 = 0, inc = 0; // Flat: e0 itself, and its change per row
+
+    Edge(const MeshPoint &from, const MeshPoint &to, std::int64_t sampleY)
     {
-        // E(px) = dx·(y − py) − dy·(px·256 + 128 − px0) = e0 + px·step
-        const std::int64_t e0 = dx * (sampleY - py) - dy * (kHalfPixel - px) + bias;
+        const std::int64_t dx = to.x - from.x, dy = to.y - from.y;
+        const std::int64_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
+        e0 = dx * (sampleY - from.y) - dy * (kHalfPixel - from.x) + bias;
+        inc = dx * kSubpixel;
         const std::int64_t step = -dy * kSubpixel;
-        if (step > 0)
-            lo = std::max(lo, -floorDiv(e0, step)); // px ≥ ceil(−e0 / step)
-        else if (step < 0)
-            hi = std::min(hi, floorDiv(e0, -step));
+        bound = step > 0 ? Bound::Lower : step < 0 ? Bound::Upper : Bound::Flat;
+        if (bound == Bound::Flat)
+            return;
+        d = step > 0 ? step : -step;
+        q = floorDiv(e0, d);
+        r = e0 - q * d;
+        qi = floorDiv(inc, d);
+        ri = inc - qi * d;
+    }
+    // Narrows [lo, hi] to the pixels of the current row this edge admits.
+    void clip(std::int64_t &lo, std::int64_t &hi) const
+    {
+        if (bound == Bound::Lower)
+            lo = std::max(lo, -q); // X ≥ ceil(−e0 / step) = −floor(e0 / step)
+        else if (bound == Bound::Upper)
+            hi = std::min(hi, q); // X ≤ floor(e0 / −step)
         else if (e0 < 0)
             hi = lo - 1;
+    }
+    void nextRow()
+    {
+        e0 += inc;
+        q += qi;
+        r += ri;
+        if (r >= d) {
+            r -= d;
+            ++q;
+        }
     }
 };
 
@@ -224,12 +250,14 @@ void drawTriangle(const Raster &r, MeshPoint a, MeshPoint b, MeshPoint c, const 
     UvPlane plane;
     if (!uvPlane(a, b, c, ua, ub, uc, plane))
         return;
-    const Edge edges[3] = {Edge(a, b), Edge(b, c), Edge(c, a)};
+    const std::int64_t sampleY = y0 * kSubpixel + kHalfPixel;
+    Edge edges[3] = {Edge(a, b, sampleY), Edge(b, c, sampleY), Edge(c, a, sampleY)};
     for (std::int64_t y = y0; y <= y1; ++y) {
-        const std::int64_t sampleY = y * kSubpixel + kHalfPixel;
         std::int64_t lo = x0, hi = x1;
-        for (const Edge &e : edges)
-            e.clip(sampleY, lo, hi);
+        for (Edge &e : edges) {
+            e.clip(lo, hi);
+            e.nextRow();
+        }
         if (lo <= hi)
             drawSpan(r, plane, int(y), int(lo), int(hi));
     }
