@@ -164,27 +164,27 @@ inline std::uint32_t sampleInterior(const std::uint32_t *p, qsizetype stride, st
 
 // `r` by value: its fields are locals the compiler may keep in registers (the target's pixels
 // are unsigned ints, which could otherwise alias the int fields of a Raster in memory).
-void drawSpan(const Raster r, const UvPlane &p, int y, int x0, int x1)
+// A triangle's uv in 32.32 fixed point relative to texel centres (u − ½, v − ½), as an
+// affine function of the pixel (x, y) measured from the triangle's box corner (x0, y0):
+// exact enough over any box (2^-32 texel per pixel of error), and a span starts with two
+// integer multiplies instead of floating point and rounding.
+struct FixedPlane {
+    std::int64_t u, dudx, dudy, v, dvdx, dvdy; // at pixel (x0, y0)'s centre; per pixel
+    std::int64_t x0, y0;
+};
+
+void drawSpan(const Raster r, const FixedPlane &p, int y, int x0, int x1)
 {
-    constexpr double kFixed = 65536.0;
-    const double cx = x0 + 0.5, cy = y + 0.5;
-    const double u = p.u0 + cx * p.dudx + cy * p.dudy, v = p.v0 + cx * p.dvdx + cy * p.dvdy;
-    const double uEnd = u + (x1 - x0) * p.dudx, vEnd = v + (x1 - x0) * p.dvdx;
-    // A span whose uv runs this far out belongs to a degenerate triangle (a texture is at most
-    // 2^16 px): skipped, so that 16.16 fixed point cannot overflow.
-    const double limit = double(std::int64_t(1) << 30);
-    if (!(std::abs(u) < limit && std::abs(uEnd) < limit && std::abs(v) < limit &&
-          std::abs(vEnd) < limit))
-        return;
-    std::int64_t su = std::llround((u - 0.5) * kFixed), sv = std::llround((v - 0.5) * kFixed);
-    const std::int64_t du = std::llround(p.dudx * kFixed), dv = std::llround(p.dvdx * kFixed);
-    // u ∈ [0, w] ⇔ su ∈ [−½, w − ½] in 16.16; inside [0, w − 1) all four texels exist.
+    const std::int64_t dx = x0 - p.x0, dy = y - p.y0;
+    std::int64_t u = p.u + dx * p.dudx + dy * p.dudy, v = p.v + dx * p.dvdx + dy * p.dvdy;
+    // In 16.16: u ∈ [0, w] ⇔ su ∈ [−½, w − ½]; inside [0, w − 1) all four texels exist.
     const std::int64_t minS = -32768, maxU = std::int64_t(r.texWidth) * 65536 - 32768,
                        maxV = std::int64_t(r.texHeight) * 65536 - 32768;
     const auto innerU = std::uint64_t(r.texWidth - 1) << 16, innerV = std::uint64_t(r.texHeight - 1)
                                                                       << 16;
     std::uint32_t *out = r.target + qsizetype(y) * r.targetStride;
-    for (int x = x0; x <= x1; ++x, su += du, sv += dv) {
+    for (int x = x0; x <= x1; ++x, u += p.dudx, v += p.dvdx) {
+        const std::int64_t su = u >> 16, sv = v >> 16;
         std::uint32_t s;
         if (std::uint64_t(su) < innerU && std::uint64_t(sv) < innerV) {
             s = sampleInterior(r.texture + (sv >> 16) * r.textureStride + (su >> 16),
@@ -203,6 +203,34 @@ void drawSpan(const Raster r, const UvPlane &p, int y, int x0, int x1)
         else if (s != 0)
             out[x] = s + scalePixel(out[x], 255 - a);
     }
+}
+
+// The plane in fixed point over the box [x0, x1] × [y0, y1]; false for a triangle whose uv
+// runs out of range over its box (|uv| ≥ 2^24 texels, or a slope past 2^14 texels per pixel:
+// more than a whole texture squeezed into a pixel, nothing to see), where the 32.32 products
+// above could overflow; within range they stay below 2^58.
+bool fixedPlane(const UvPlane &p, std::int64_t x0, std::int64_t y0, std::int64_t x1,
+                std::int64_t y1, FixedPlane &f)
+{
+    constexpr double kOne = 4294967296.0; // 2^32
+    constexpr double kMaxSlope = 16384.0, kMaxUv = double(1 << 24);
+    const double extent = double(x1 - x0 + y1 - y0 + 2);
+    for (const double slope : {p.dudx, p.dudy, p.dvdx, p.dvdy})
+        if (!(std::abs(slope) <= kMaxSlope) || !(std::abs(slope) * extent < kMaxUv))
+            return false;
+    const double cx = double(x0) + 0.5, cy = double(y0) + 0.5;
+    const double u = p.u0 + cx * p.dudx + cy * p.dudy, v = p.v0 + cx * p.dvdx + cy * p.dvdy;
+    if (!(std::abs(u) < kMaxUv) || !(std::abs(v) < kMaxUv))
+        return false;
+    f = {std::llround((u - 0.5) * kOne),
+         std::llround(p.dudx * kOne),
+         std::llround(p.dudy * kOne),
+         std::llround((v - 0.5) * kOne),
+         std::llround(p.dvdx * kOne),
+         std::llround(p.dvdy * kOne),
+         x0,
+         y0};
+    return true;
 }
 
 // The affine map from target px to texture px over triangle abc; false when it has no area.
@@ -248,7 +276,8 @@ void drawTriangle(const Raster &r, MeshPoint a, MeshPoint b, MeshPoint c, const 
     if (x0 > x1 || y0 > y1)
         return;
     UvPlane plane;
-    if (!uvPlane(a, b, c, ua, ub, uc, plane))
+    FixedPlane fixed;
+    if (!uvPlane(a, b, c, ua, ub, uc, plane) || !fixedPlane(plane, x0, y0, x1, y1, fixed))
         return;
     const std::int64_t sampleY = y0 * kSubpixel + kHalfPixel;
     Edge edges[3] = {Edge(a, b, sampleY), Edge(b, c, sampleY), Edge(c, a, sampleY)};
@@ -259,7 +288,7 @@ void drawTriangle(const Raster &r, MeshPoint a, MeshPoint b, MeshPoint c, const 
             e.nextRow();
         }
         if (lo <= hi)
-            drawSpan(r, plane, int(y), int(lo), int(hi));
+            drawSpan(r, fixed, int(y), int(lo), int(hi));
     }
 }
 
