@@ -1,13 +1,13 @@
 // finbook-bench picture [--silhouettes DIR [--render-to DIR]] [--redraws N] [--vertices N]
-// [FILE...]: pictures
-// as deformable objects (issue 51). Per layer of each PNG or OpenRaster file: read time, alpha
-// trace time and outline size, quality mesh time and size (the outline meshed as object shapes
-// are, about --vertices vertices), the rest pose drawn through the mesh against the original
-// pixels (PSNR), the redraw time of a posed picture into a 1920 × 1080 canvas (median and p99
-// over --redraws), and the memory a picture holds (texture + mesh). --silhouettes renders each
-// shape of shared/data/silhouettes as a 1024 × 1024 RGBA picture with a painted texture and an
-// anti-aliased edge (kept in --render-to's folder), and benches those too. One JSON object per
-// layer per line; never gates.
+// [FILE...]: pictures as deformable objects (issue 51). Per layer of each PNG or OpenRaster
+// file: read time, alpha trace time and outline size, quality mesh time and size (the outline
+// meshed as object shapes are, with MeshOptions::targetVertices = --vertices, 2000 by default;
+// the mesher lands at 1.2-3 times that), the rest pose drawn through the mesh against the
+// original pixels (PSNR), the redraw time of a posed picture into a 1920 × 1080 canvas (median
+// and p99 over --redraws), and the memory a picture holds (texture + mesh). --silhouettes
+// renders each shape of shared/data/silhouettes as a 1024 × 1024 RGBA picture with a painted
+// texture and an anti-aliased edge (kept in --render-to's folder), and benches those too. One
+// JSON object per layer per line; never gates.
 #include "bench.h"
 
 #include <finbook/geometry/object_mesh.h>
