@@ -445,6 +445,15 @@ void TestPictureImport::truncatedFilesRefused()
     QVERIFY2(cut.error().contains(QLatin1String("cut.png")), qPrintable(cut.error()));
     QVERIFY2(cut.error().contains(QLatin1String("cut short")), qPrintable(cut.error()));
 
+    // A JPEG cut short: Qt's reader would fill the missing rows with grey.
+    const QByteArray jpeg = encoded(noise.convertToFormat(QImage::Format_RGB32), "JPEG", 90);
+    QVERIFY(writeFile(path("cut.jpg"), jpeg.left(jpeg.size() / 2)));
+    const auto cutJpeg = readPictureLayers(path("cut.jpg"));
+    QVERIFY(!cutJpeg);
+    QVERIFY2(cutJpeg.error().contains(QLatin1String("cut short")), qPrintable(cutJpeg.error()));
+    QVERIFY(writeFile(path("whole.jpg"), jpeg));
+    QVERIFY(readPictureLayers(path("whole.jpg")).hasValue());
+
     QVERIFY(writeOra(path("whole.ora"), stackOf("<layer name=\"a\" src=\"a.png\"/>"),
                      {{"a.png", png}}));
     QFile whole(path("whole.ora"));

@@ -65,6 +65,11 @@ Expected<QImage, QString> readWithQtReader(const QByteArray &bytes, qint64 budge
     *handled = reader.canRead() && reader.format() != "svg" && reader.format() != "svgz";
     if (!*handled)
         return QImage();
+    // Qt's JPEG reader fills a cut-short picture's missing rows with grey and only warns; a
+    // JPEG ends with an EOI marker (an embedded thumbnail's own may hide a cut, never invent
+    // one).
+    if (reader.format() == "jpeg" && bytes.lastIndexOf(QByteArrayView("\xff\xd9", 2)) < 0)
+        return unexpected(pictureTr("Its picture is cut short (the file is incomplete)."));
     if (const QSize claimed = reader.size(); claimed.isValid()) {
         if (QString why = sizeRefusal(claimed, budget); !why.isEmpty())
             return unexpected(why);
