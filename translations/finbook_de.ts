@@ -402,7 +402,7 @@
     </message>
     <message>
         <location filename="../model/src/document.cpp" line="21"/>
-        <location filename="../model/src/document.cpp" line="223"/>
+        <location filename="../model/src/document.cpp" line="226"/>
         <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Layer 1</source>
         <translation>Ebene 1</translation>
@@ -473,37 +473,37 @@
         <translation>Mund</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="63"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="64"/>
         <source>Make Object Swappable</source>
         <translation>Objekt austauschbar machen</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="89"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="90"/>
         <source>New Swap Set</source>
         <translation>Neuer Austauschsatz</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="138"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="139"/>
         <source>Show Drawing &quot;%1&quot;</source>
         <translation>Zeichnung „%1“ zeigen</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="217"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="218"/>
         <source>New Drawing &quot;%1&quot;</source>
         <translation>Neue Zeichnung „%1“</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="269"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="270"/>
         <source>Rename Drawing</source>
         <translation>Zeichnung umbenennen</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="299"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="300"/>
         <source>Delete Drawing &quot;%1&quot;</source>
         <translation>Zeichnung „%1“ löschen</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="333"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="334"/>
         <source>Make Drawing Independent</source>
         <translation>Zeichnung eigenständig machen</translation>
     </message>
@@ -1748,152 +1748,152 @@
         <translation>ihre Teile sind so verbunden, dass das Auflösen der Verbindungen zu aufwendig wäre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="56"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="57"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
         <source>the frame list</source>
         <translation>die Einzelbildliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
         <source>a frame</source>
         <translation>ein Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="69"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>das Einzelbild ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="78"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
         <source>%1; the frame is left out</source>
         <translation>%1; das Einzelbild wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>a frame id</source>
         <translation>eine Einzelbild-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>the frame</source>
         <translation>das Einzelbild</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
         <source>a frame hold</source>
         <translation>eine Haltedauer</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>die Haltedauer %1 liegt nicht zwischen 1 und %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
         <source>the object list</source>
         <translation>die Objektliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="105"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>das Objekt ist abgeschnitten und wird samt allen folgenden ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
         <source>%1; the object is left out</source>
         <translation>%1; das Objekt wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
         <source>a chunk header</source>
         <translation>ein Blockkopf</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="230"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="231"/>
         <source>a chunk</source>
         <translation>ein Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
         <source>chunk</source>
         <translation>Block</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>an object id</source>
         <translation>eine Objekt-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>the object</source>
         <translation>das Objekt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the object flags</source>
         <translation>die Objektattribute</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>die Objektattribute 0x%1 sind unbekannt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="138"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
         <source>the mesh density</source>
         <translation>die Netzdichte</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="141"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="142"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>die Netzdichte %1 ist keine Zahl von 0 bis 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="158"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="165"/>
         <source>the object name</source>
         <translation>der Objektname</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>der Objektname ist %1 Bytes lang (höchstens %2)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="172"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="173"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>der Objektname ist kein gültiger UTF-8-Text</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
         <source>the stroke list</source>
         <translation>die Strichliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>a stroke id</source>
         <translation>eine Strich-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="197"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="198"/>
         <source>the stroke</source>
         <translation>der Strich</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="340"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>seine Pose hat %n Strich, das Objekt aber %1</numerusform>
@@ -1901,7 +1901,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="346"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>Strich %1 hat %n Punkt, seine Pose aber %2</numerusform>
@@ -1909,122 +1909,122 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
         <source>a stroke reference</source>
         <translation>ein Strichverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="47"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 gibt %2 Einträge an; die %3, die hineinpassen, werden gelesen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="190"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="191"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>er verweist auf Strichdaten %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
         <source>an unknown chunk is left out</source>
         <translation>ein unbekannter Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>Block %1 kommt doppelt oder mit einem anderen Rig vor</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="235"/>
         <source>%1; the chunk is left out</source>
         <translation>%1; der Block wird ausgelassen</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
         <source>the skeleton&apos;s join</source>
         <translation>die Verbindung des Skeletts</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="265"/>
         <source>a join comes without a skeleton</source>
         <translation>eine Verbindung steht ohne Skelett</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="273"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>die Verbindung des Skeletts ist beschädigt</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>the pin list</source>
         <translation>die Pin-Liste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
         <source>a pin id</source>
         <translation>eine Pin-ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
         <source>pin %1</source>
         <translation>Pin %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="294"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="295"/>
         <source>a pin position</source>
         <translation>eine Pin-Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
         <source>pin %1 has a non-finite position</source>
         <translation>Pin %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
         <source>the cage corner list</source>
         <translation>die Käfigeckenliste</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>der Käfig hat weniger als 3 Ecken</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="317"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
         <source>a cage corner</source>
         <translation>eine Käfigecke</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>Käfigecke %1 hat eine nicht endliche Position</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>a pose reference</source>
         <translation>ein Posenverweis</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="332"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>seine Pose verweist auf Pose %1 von %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
         <source>its pose: %1</source>
         <translation>seine Pose: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
         <source>%1 has no id</source>
         <translation>%1 hat keine ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="360"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 hat die ID %2, die größer ist als jede mögliche ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="367"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="368"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 hat die ID %2, die bereits vergeben ist</translation>
     </message>
@@ -2196,29 +2196,44 @@
         <translation>es ist nicht genug Arbeitsspeicher vorhanden</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="15"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="49"/>
         <source>the fill list</source>
         <translation>die Liste der Füllungen</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="18"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="52"/>
         <source>the object claims %1 fills, more than %2</source>
         <translation>das Objekt gibt %1 Füllungen an, mehr als %2</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="28"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="42"/>
         <source>a fill&apos;s seed is not a number</source>
         <translation>der Startpunkt einer Füllung ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="41"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="27"/>
         <source>a fill names the stroke id %1, which no stroke can have</source>
         <translation>eine Füllung nennt die Strich-ID %1, die kein Strich haben kann</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="33"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>die Strich-IDs einer Füllung sind nicht geordnet</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="69"/>
+        <source>the fill regions</source>
+        <translation>die Füllbereiche</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="72"/>
+        <source>the object gives regions of %1 fills but has %2</source>
+        <translation>das Objekt gibt Bereiche für %1 Füllungen an, hat aber %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="82"/>
+        <source>the object&apos;s fills claim more than %1 regions</source>
+        <translation>die Füllungen des Objekts beanspruchen mehr als %1 Bereiche</translation>
     </message>
     <message>
         <location filename="../model/src/reference/reference_section.cpp" line="48"/>
@@ -2592,6 +2607,70 @@
     </message>
 </context>
 <context>
+    <name>PictureImport</name>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="149"/>
+        <source>It has more than %1 layers.</source>
+        <translation>Sie hat mehr als %1 Ebenen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="156"/>
+        <source>Its stack.xml is malformed (line %1: %2).</source>
+        <translation>Ihre stack.xml ist fehlerhaft (Zeile %1: %2).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="173"/>
+        <source>The picture of its layer “%1” (%2) is missing.</source>
+        <translation>Das Bild ihrer Ebene „%1“ (%2) fehlt.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="178"/>
+        <source>The picture of its layer “%1” is larger than %2 MB.</source>
+        <translation>Das Bild ihrer Ebene „%1“ ist größer als %2 MB.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="183"/>
+        <source>The picture of its layer “%1” is damaged or cut short in the file.</source>
+        <translation>Das Bild ihrer Ebene „%1“ ist in der Datei beschädigt oder abgeschnitten.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="192"/>
+        <source>Its layer “%1”: %2</source>
+        <translation>Ihre Ebene „%1“: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="241"/>
+        <source>Its stack.xml is larger than %1 MB.</source>
+        <translation>Ihre stack.xml ist größer als %1 MB.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="23"/>
+        <source>“%1” cannot be imported: %2</source>
+        <translation>„%1“ kann nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="32"/>
+        <source>It claims to be %1 × %2 pixels; a picture may be at most %3 pixels wide and high.</source>
+        <translation>Sie gibt %1 × %2 Pixel an; ein Bild darf höchstens %3 Pixel breit und hoch sein.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="40"/>
+        <source>It claims to be %1 × %2 pixels; a picture may have at most %3 megapixels.</source>
+        <translation>Sie gibt %1 × %2 Pixel an; ein Bild darf höchstens %3 Megapixel haben.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="47"/>
+        <source>Its pictures together would take more than %1 MB of memory.</source>
+        <translation>Ihre Bilder würden zusammen mehr als %1 MB Speicher belegen.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_import.cpp" line="44"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="48"/>
+        <source>It is larger than %1 MB.</source>
+        <translation>Sie ist größer als %1 MB.</translation>
+    </message>
+</context>
+<context>
     <name>QCommandLineParser</name>
     <message>
         <location filename="../app/main.cpp" line="26"/>
@@ -2918,18 +2997,18 @@
         <translation>Striche löschen</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="328"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="335"/>
         <source>Cut</source>
         <translation>Ausschneiden</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="404"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="411"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Die Zwischenablage enthält Striche, die diese Finbook-Version nicht lesen kann.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="414"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="415"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="421"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="422"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
@@ -2942,22 +3021,22 @@
         <translation>es ist keine gewöhnliche Datei</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="359"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="361"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Für „%1“ kann keine Vorschau erstellt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="408"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>eine Prüfsumme stimmt nicht, die Datei ist also beschädigt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="412"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>sie enthält Daten, die diese Version von Finbook nicht kennt.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="413"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="415"/>
         <source>the file is damaged or incomplete.</source>
         <translation>die Datei ist beschädigt oder unvollständig.</translation>
     </message>
@@ -4492,7 +4571,7 @@
     </message>
     <message>
         <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="73"/>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="239"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="241"/>
         <source>Lip Sync</source>
         <translation>Lippensynchronisation</translation>
     </message>
@@ -4552,57 +4631,57 @@
         <translation>Lippensynchron-Zeiten importieren</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="175"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="175"/>
         <source>Close</source>
         <translation>Schließen</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="191"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="193"/>
         <source>Listening…</source>
         <translation>Hört zu…</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="209"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="211"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="215"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="217"/>
         <source>Cancelled: nothing was changed.</source>
         <translation>Abgebrochen: Nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="219"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="221"/>
         <source>Nothing was changed.</source>
         <translation>Nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="222"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="224"/>
         <source>from the loudness (the speech models are not installed)</source>
         <translation>nach der Lautstärke (die Sprachmodelle sind nicht installiert)</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="223"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="225"/>
         <source>from the recognised speech</source>
         <translation>nach der erkannten Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="224"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="226"/>
         <source>from the speech and the dialogue</source>
         <translation>nach Sprache und Dialog</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="226"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="228"/>
         <source>spelt by rules, not found in the dictionary: %1</source>
         <translation>nach Regeln buchstabiert, nicht im Wörterbuch: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="244"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
         <source>Keyed the mouth on %n frame(s), %1.</source>
         <translation>
             <numerusform>Mund auf %n Bild gesetzt, %1.</numerusform>
@@ -4610,7 +4689,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="248"/>
         <source>%n frame(s) of the mouth&apos;s layer hold no mouth and were left as they were.</source>
         <translation>
             <numerusform>%n Bild der Mund-Ebene enthält keinen Mund und blieb, wie es war.</numerusform>
@@ -4618,17 +4697,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="260"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="262"/>
         <source>%1 was not imported: %2</source>
         <translation>%1 wurde nicht importiert: %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="266"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="268"/>
         <source>from %1</source>
         <translation>aus %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="314"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="316"/>
         <source>The clip holds no sound to follow.</source>
         <translation>Der Clip enthält keinen Ton, dem man folgen könnte.</translation>
     </message>

@@ -402,7 +402,7 @@
     </message>
     <message>
         <location filename="../model/src/document.cpp" line="21"/>
-        <location filename="../model/src/document.cpp" line="223"/>
+        <location filename="../model/src/document.cpp" line="226"/>
         <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Layer 1</source>
         <translation>Calque 1</translation>
@@ -473,37 +473,37 @@
         <translation>Bouche</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="63"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="64"/>
         <source>Make Object Swappable</source>
         <translation>Rendre l&apos;objet interchangeable</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="89"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="90"/>
         <source>New Swap Set</source>
         <translation>Nouveau jeu de dessins</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="138"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="139"/>
         <source>Show Drawing &quot;%1&quot;</source>
         <translation>Afficher le dessin « %1 »</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="217"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="218"/>
         <source>New Drawing &quot;%1&quot;</source>
         <translation>Nouveau dessin « %1 »</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="269"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="270"/>
         <source>Rename Drawing</source>
         <translation>Renommer le dessin</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="299"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="300"/>
         <source>Delete Drawing &quot;%1&quot;</source>
         <translation>Supprimer le dessin « %1 »</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="333"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="334"/>
         <source>Make Drawing Independent</source>
         <translation>Garder le dessin pour cette image</translation>
     </message>
@@ -1748,152 +1748,152 @@
         <translation>ses parties sont jointes d&apos;une façon trop coûteuse à résoudre</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="56"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="57"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
         <source>the frame list</source>
         <translation>la liste des images</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
         <source>a frame</source>
         <translation>une image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="69"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>l&apos;image est tronquée et est ignorée, ainsi que toutes celles qui la suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="78"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
         <source>%1; the frame is left out</source>
         <translation>%1&#xa0;; l&apos;image est ignorée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>a frame id</source>
         <translation>un identifiant d&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>the frame</source>
         <translation>l&apos;image</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
         <source>a frame hold</source>
         <translation>une durée d&apos;exposition</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>la durée d&apos;exposition %1 n&apos;est pas comprise entre 1 et %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
         <source>the object list</source>
         <translation>la liste des objets</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
         <source>an object</source>
         <translation>un objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="105"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>l&apos;objet est tronqué et est ignoré, ainsi que tous ceux qui le suivent</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
         <source>%1; the object is left out</source>
         <translation>%1&#xa0;; l&apos;objet est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
         <source>a chunk header</source>
         <translation>un en-tête de bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="230"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="231"/>
         <source>a chunk</source>
         <translation>un bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
         <source>chunk</source>
         <translation>bloc</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>an object id</source>
         <translation>un identifiant d&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>the object</source>
         <translation>l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the object flags</source>
         <translation>les attributs de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>les attributs d&apos;objet 0x%1 sont inconnus</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="138"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
         <source>the mesh density</source>
         <translation>la densité du maillage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="141"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="142"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>la densité du maillage %1 n&apos;est pas un nombre compris entre 0 et 1000</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="158"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="165"/>
         <source>the object name</source>
         <translation>le nom de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>le nom de l&apos;objet fait %1 octets (%2 au maximum)</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="172"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="173"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>le nom de l&apos;objet n&apos;est pas un texte UTF-8 valide</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
         <source>the stroke list</source>
         <translation>la liste des traits</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>a stroke id</source>
         <translation>un identifiant de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="197"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="198"/>
         <source>the stroke</source>
         <translation>le trait</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="340"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>sa pose a %n trait, mais l&apos;objet en a %1</numerusform>
@@ -1901,7 +1901,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="346"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>le trait %1 a %n point, mais sa pose en a %2</numerusform>
@@ -1909,122 +1909,122 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
         <source>a stroke reference</source>
         <translation>une référence de trait</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="47"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 annonce %2 entrées&#xa0;; seules les %3 qui tiennent dans le fichier sont lues</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="190"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="191"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>il renvoie aux données de trait %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
         <source>an unknown chunk is left out</source>
         <translation>un bloc inconnu est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>le bloc %1 apparaît deux fois ou avec une autre armature</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="235"/>
         <source>%1; the chunk is left out</source>
         <translation>%1&#xa0;; le bloc est ignoré</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
         <source>the skeleton&apos;s join</source>
         <translation>la jonction du squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="265"/>
         <source>a join comes without a skeleton</source>
         <translation>une jonction est présente sans squelette</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="273"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>la jonction du squelette est endommagée</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>the pin list</source>
         <translation>la liste des épingles</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
         <source>a pin id</source>
         <translation>un identifiant d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
         <source>pin %1</source>
         <translation>l&apos;épingle %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="294"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="295"/>
         <source>a pin position</source>
         <translation>une position d&apos;épingle</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
         <source>pin %1 has a non-finite position</source>
         <translation>l&apos;épingle %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
         <source>the cage corner list</source>
         <translation>la liste des coins de la cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>la cage a moins de 3 coins</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="317"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
         <source>a cage corner</source>
         <translation>un coin de cage</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>le coin de cage %1 a une position non finie</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>a pose reference</source>
         <translation>une référence de pose</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="332"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>sa pose renvoie à la pose %1, mais il n&apos;y en a que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
         <source>its pose: %1</source>
         <translation>sa pose&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
         <source>%1 has no id</source>
         <translation>%1 n&apos;a pas d&apos;identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="360"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 a l&apos;identifiant %2, qui dépasse la valeur maximale d&apos;un identifiant</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="367"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="368"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 a l&apos;identifiant %2, qui est déjà utilisé</translation>
     </message>
@@ -2196,29 +2196,44 @@
         <translation>la mémoire est insuffisante</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="15"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="49"/>
         <source>the fill list</source>
         <translation>la liste des remplissages</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="18"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="52"/>
         <source>the object claims %1 fills, more than %2</source>
         <translation>l&apos;objet annonce %1 remplissages, plus que %2</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="28"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="42"/>
         <source>a fill&apos;s seed is not a number</source>
         <translation>le point de départ d&apos;un remplissage n&apos;est pas un nombre</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="41"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="27"/>
         <source>a fill names the stroke id %1, which no stroke can have</source>
         <translation>un remplissage désigne l’identifiant de trait %1, qu’aucun trait ne peut avoir</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="33"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>les identifiants de traits d&apos;un remplissage ne sont pas dans l&apos;ordre</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="69"/>
+        <source>the fill regions</source>
+        <translation>les régions des remplissages</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="72"/>
+        <source>the object gives regions of %1 fills but has %2</source>
+        <translation>l’objet donne les régions de %1 remplissages mais en a %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="82"/>
+        <source>the object&apos;s fills claim more than %1 regions</source>
+        <translation>les remplissages de l’objet revendiquent plus de %1 régions</translation>
     </message>
     <message>
         <location filename="../model/src/reference/reference_section.cpp" line="48"/>
@@ -2592,6 +2607,70 @@
     </message>
 </context>
 <context>
+    <name>PictureImport</name>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="149"/>
+        <source>It has more than %1 layers.</source>
+        <translation>Il a plus de %1 calques.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="156"/>
+        <source>Its stack.xml is malformed (line %1: %2).</source>
+        <translation>Son stack.xml est mal formé (ligne %1 : %2).</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="173"/>
+        <source>The picture of its layer “%1” (%2) is missing.</source>
+        <translation>L’image de son calque « %1 » (%2) manque.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="178"/>
+        <source>The picture of its layer “%1” is larger than %2 MB.</source>
+        <translation>L’image de son calque « %1 » dépasse %2 Mo.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="183"/>
+        <source>The picture of its layer “%1” is damaged or cut short in the file.</source>
+        <translation>L’image de son calque « %1 » est endommagée ou tronquée dans le fichier.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="192"/>
+        <source>Its layer “%1”: %2</source>
+        <translation>Son calque « %1 » : %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="241"/>
+        <source>Its stack.xml is larger than %1 MB.</source>
+        <translation>Son stack.xml dépasse %1 Mo.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="23"/>
+        <source>“%1” cannot be imported: %2</source>
+        <translation>« %1 » ne peut pas être importé : %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="32"/>
+        <source>It claims to be %1 × %2 pixels; a picture may be at most %3 pixels wide and high.</source>
+        <translation>Elle annonce %1 × %2 pixels ; une image peut mesurer au plus %3 pixels de large et de haut.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="40"/>
+        <source>It claims to be %1 × %2 pixels; a picture may have at most %3 megapixels.</source>
+        <translation>Elle annonce %1 × %2 pixels ; une image peut avoir au plus %3 mégapixels.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="47"/>
+        <source>Its pictures together would take more than %1 MB of memory.</source>
+        <translation>Ses images prendraient ensemble plus de %1 Mo de mémoire.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_import.cpp" line="44"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="48"/>
+        <source>It is larger than %1 MB.</source>
+        <translation>Il dépasse %1 Mo.</translation>
+    </message>
+</context>
+<context>
     <name>QCommandLineParser</name>
     <message>
         <location filename="../app/main.cpp" line="26"/>
@@ -2918,18 +2997,18 @@
         <translation>Supprimer les traits</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="328"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="335"/>
         <source>Cut</source>
         <translation>Couper</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="404"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="411"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>Le presse-papiers contient des traits que cette version de Finbook ne sait pas lire.</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="414"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="415"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="421"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="422"/>
         <source>Paste</source>
         <translation>Coller</translation>
     </message>
@@ -2942,22 +3021,22 @@
         <translation>ce n&apos;est pas un fichier ordinaire</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="359"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="361"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>Impossible de créer une vignette de «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="408"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>une somme de contrôle ne correspond pas, le fichier est donc endommagé.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="412"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>il contient des données que cette version de Finbook ne connaît pas.</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="413"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="415"/>
         <source>the file is damaged or incomplete.</source>
         <translation>le fichier est endommagé ou incomplet.</translation>
     </message>
@@ -4492,7 +4571,7 @@
     </message>
     <message>
         <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="73"/>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="239"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="241"/>
         <source>Lip Sync</source>
         <translation>Synchro labiale</translation>
     </message>
@@ -4552,57 +4631,57 @@
         <translation>Importer des temps de synchro labiale</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="175"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="175"/>
         <source>Close</source>
         <translation>Fermer</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="191"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="193"/>
         <source>Listening…</source>
         <translation>Écoute…</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="209"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="211"/>
         <source>Cancelling…</source>
         <translation>Annulation…</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="215"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="217"/>
         <source>Cancelled: nothing was changed.</source>
         <translation>Annulé : rien n&apos;a été modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="219"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="221"/>
         <source>Nothing was changed.</source>
         <translation>Rien n&apos;a été modifié.</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="222"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="224"/>
         <source>from the loudness (the speech models are not installed)</source>
         <translation>d&apos;après le volume (les modèles de parole ne sont pas installés)</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="223"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="225"/>
         <source>from the recognised speech</source>
         <translation>d&apos;après la parole reconnue</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="224"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="226"/>
         <source>from the speech and the dialogue</source>
         <translation>d&apos;après la parole et le dialogue</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="226"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="228"/>
         <source>spelt by rules, not found in the dictionary: %1</source>
         <translation>épelés par règles, absents du dictionnaire : %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="244"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
         <source>Keyed the mouth on %n frame(s), %1.</source>
         <translation>
             <numerusform>Bouche posée sur %n image, %1.</numerusform>
@@ -4610,7 +4689,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="248"/>
         <source>%n frame(s) of the mouth&apos;s layer hold no mouth and were left as they were.</source>
         <translation>
             <numerusform>%n image du calque de la bouche n&apos;a pas de bouche et est restée telle quelle.</numerusform>
@@ -4618,17 +4697,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="260"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="262"/>
         <source>%1 was not imported: %2</source>
         <translation>%1 n&apos;a pas été importé : %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="266"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="268"/>
         <source>from %1</source>
         <translation>d&apos;après %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="314"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="316"/>
         <source>The clip holds no sound to follow.</source>
         <translation>Le clip ne contient aucun son à suivre.</translation>
     </message>

@@ -402,7 +402,7 @@
     </message>
     <message>
         <location filename="../model/src/document.cpp" line="21"/>
-        <location filename="../model/src/document.cpp" line="223"/>
+        <location filename="../model/src/document.cpp" line="226"/>
         <location filename="../model/src/finbook_file_io.cpp" line="218"/>
         <source>Layer 1</source>
         <translation>レイヤー 1</translation>
@@ -473,37 +473,37 @@
         <translation>口</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="63"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="64"/>
         <source>Make Object Swappable</source>
         <translation>オブジェクトを差し替え可能にする</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="89"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="90"/>
         <source>New Swap Set</source>
         <translation>新しい差し替えセット</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="138"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="139"/>
         <source>Show Drawing &quot;%1&quot;</source>
         <translation>絵「%1」を表示</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="217"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="218"/>
         <source>New Drawing &quot;%1&quot;</source>
         <translation>新しい絵「%1」</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="269"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="270"/>
         <source>Rename Drawing</source>
         <translation>絵の名前を変更</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="299"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="300"/>
         <source>Delete Drawing &quot;%1&quot;</source>
         <translation>絵「%1」を削除</translation>
     </message>
     <message>
-        <location filename="../model/src/swap/swap_commands.cpp" line="333"/>
+        <location filename="../model/src/swap/swap_commands.cpp" line="334"/>
         <source>Make Drawing Independent</source>
         <translation>絵を独立させる</translation>
     </message>
@@ -1743,281 +1743,281 @@
         <translation>パーツの結合が複雑すぎて解決できません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="56"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="58"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="57"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="59"/>
         <source>the frame list</source>
         <translation>フレーム一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="66"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="72"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="67"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="73"/>
         <source>a frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="69"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="70"/>
         <source>the frame is cut off and is left out, with any after it</source>
         <translation>フレームが途中で切れているため、以降のフレームとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="78"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="79"/>
         <source>%1; the frame is left out</source>
         <translation>%1。このフレームは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="87"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
         <source>a frame id</source>
         <translation>フレーム ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
         <source>the frame</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="89"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="90"/>
         <source>a frame hold</source>
         <translation>フレームの表示時間</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="93"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="94"/>
         <source>the hold %1 is outside 1 to %2</source>
         <translation>表示時間 %1 が 1～%2 の範囲外です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="95"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="96"/>
         <source>the object list</source>
         <translation>オブジェクト一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="102"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="108"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="103"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="109"/>
         <source>an object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="105"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="106"/>
         <source>the object is cut off and is left out, with any after it</source>
         <translation>オブジェクトが途中で切れているため、以降のオブジェクトとともに除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="114"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="115"/>
         <source>%1; the object is left out</source>
         <translation>%1。このオブジェクトは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="119"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="120"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="210"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
         <location filename="../model/src/finbook_file_reader_frames.cpp" line="211"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
         <source>a chunk header</source>
         <translation>チャンクヘッダー</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="121"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="212"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="230"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="213"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="231"/>
         <source>a chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="122"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="220"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="123"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="221"/>
         <source>chunk</source>
         <translation>チャンク</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="130"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
         <source>an object id</source>
         <translation>オブジェクト ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="131"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
         <source>the object</source>
         <translation>オブジェクト</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="132"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="133"/>
         <source>the object flags</source>
         <translation>オブジェクトのフラグ</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="135"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="136"/>
         <source>the object flags 0x%1 are unknown</source>
         <translation>オブジェクトのフラグ 0x%1 は不明です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="138"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="139"/>
         <source>the mesh density</source>
         <translation>メッシュ密度</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="141"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="142"/>
         <source>the mesh density %1 is not a number from 0 to 1000</source>
         <translation>メッシュ密度 %1 が 0～1000 の数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="158"/>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="164"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="159"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="165"/>
         <source>the object name</source>
         <translation>オブジェクト名</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="161"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="162"/>
         <source>the object name is %1 bytes long (at most %2)</source>
         <translation>オブジェクト名が %1 バイトあります（最大 %2 バイト）</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="172"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="173"/>
         <source>the object name is not valid UTF-8 text</source>
         <translation>オブジェクト名が有効な UTF-8 テキストではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="179"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="180"/>
         <source>the stroke list</source>
         <translation>ストローク一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="186"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
         <source>a stroke id</source>
         <translation>ストローク ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="197"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="198"/>
         <source>the stroke</source>
         <translation>ストローク</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="339"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="340"/>
         <source>its pose has %n stroke(s) but the object has %1</source>
         <translation>
             <numerusform>ポーズのストローク数は %n ですが、オブジェクトのストローク数は %1 です</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="346"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="347"/>
         <source>stroke %1 has %n point(s) but its pose has %2</source>
         <translation>
             <numerusform>ストローク %1 の点の数は %n ですが、ポーズでは %2 です</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="187"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="188"/>
         <source>a stroke reference</source>
         <translation>ストロークの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="47"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="48"/>
         <source>%1 claims %2 entries; the %3 that fit are read</source>
         <translation>%1 には %2 個の項目があるはずですが、収まっている %3 個を読み込みました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="190"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="191"/>
         <source>it refers to stroke data %1 of %2</source>
         <translation>ストロークデータ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="218"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="219"/>
         <source>an unknown chunk is left out</source>
         <translation>不明なチャンクを除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="225"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="226"/>
         <source>chunk %1 appears twice or with another rig</source>
         <translation>チャンク %1 が 2 回、または別のリグと一緒に現れます</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="234"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="235"/>
         <source>%1; the chunk is left out</source>
         <translation>%1。このチャンクは除外しました</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="262"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="263"/>
         <source>the skeleton&apos;s join</source>
         <translation>スケルトンの接続</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="264"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="265"/>
         <source>a join comes without a skeleton</source>
         <translation>スケルトンのない接続があります</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="272"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="273"/>
         <source>the skeleton&apos;s join is damaged</source>
         <translation>スケルトンの接続が壊れています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="285"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="286"/>
         <source>the pin list</source>
         <translation>ピン一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="290"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
         <source>a pin id</source>
         <translation>ピン ID</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="291"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="292"/>
         <source>pin %1</source>
         <translation>ピン %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="294"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="295"/>
         <source>a pin position</source>
         <translation>ピンの位置</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="297"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="298"/>
         <source>pin %1 has a non-finite position</source>
         <translation>ピン %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="308"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="309"/>
         <source>the cage corner list</source>
         <translation>ケージの頂点一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="310"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="311"/>
         <source>the cage has fewer than 3 corners</source>
         <translation>ケージの頂点が 3 個未満です</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="317"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="318"/>
         <source>a cage corner</source>
         <translation>ケージの頂点</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="320"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="321"/>
         <source>cage corner %1 has a non-finite position</source>
         <translation>ケージの頂点 %1 の位置が有限の値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="329"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="330"/>
         <source>a pose reference</source>
         <translation>ポーズの参照</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="331"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="332"/>
         <source>its pose refers to pose %1 of %2</source>
         <translation>ポーズがポーズ %1 を参照していますが、%2 個しかありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="335"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="336"/>
         <source>its pose: %1</source>
         <translation>ポーズ: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="358"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
         <source>%1 has no id</source>
         <translation>%1 に ID がありません</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="359"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="360"/>
         <source>%1 has the id %2, larger than any id can be</source>
         <translation>%1 の ID %2 が ID の上限を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/finbook_file_reader_frames.cpp" line="367"/>
+        <location filename="../model/src/finbook_file_reader_frames.cpp" line="368"/>
         <source>%1 has the id %2, which is already used</source>
         <translation>%1 の ID %2 はすでに使われています</translation>
     </message>
@@ -2187,29 +2187,44 @@
         <translation>メモリが足りません</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="15"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="49"/>
         <source>the fill list</source>
         <translation>塗りの一覧</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="18"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="52"/>
         <source>the object claims %1 fills, more than %2</source>
         <translation>オブジェクトの塗りが %1 個あり、上限 %2 を超えています</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="28"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="42"/>
         <source>a fill&apos;s seed is not a number</source>
         <translation>塗りの基準点が数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="41"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="27"/>
         <source>a fill names the stroke id %1, which no stroke can have</source>
         <translation>塗りつぶしが、どのストロークにも付けられない ID %1 を参照しています</translation>
     </message>
     <message>
-        <location filename="../model/src/fill/fill_chunk.cpp" line="51"/>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="33"/>
         <source>a fill&apos;s stroke ids are not in order</source>
         <translation>塗りのストロークIDが順に並んでいません</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="69"/>
+        <source>the fill regions</source>
+        <translation>塗りの領域</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="72"/>
+        <source>the object gives regions of %1 fills but has %2</source>
+        <translation>オブジェクトは %1 個の塗りの領域を示していますが、塗りは %2 個です</translation>
+    </message>
+    <message>
+        <location filename="../model/src/fill/fill_chunk.cpp" line="82"/>
+        <source>the object&apos;s fills claim more than %1 regions</source>
+        <translation>オブジェクトの塗りが %1 を超える領域を示しています</translation>
     </message>
     <message>
         <location filename="../model/src/reference/reference_section.cpp" line="48"/>
@@ -2582,6 +2597,70 @@
     </message>
 </context>
 <context>
+    <name>PictureImport</name>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="149"/>
+        <source>It has more than %1 layers.</source>
+        <translation>レイヤーが %1 を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="156"/>
+        <source>Its stack.xml is malformed (line %1: %2).</source>
+        <translation>stack.xml の形式が正しくありません（%1 行目: %2）。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="173"/>
+        <source>The picture of its layer “%1” (%2) is missing.</source>
+        <translation>レイヤー「%1」の画像（%2）がありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="178"/>
+        <source>The picture of its layer “%1” is larger than %2 MB.</source>
+        <translation>レイヤー「%1」の画像が %2 MB を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="183"/>
+        <source>The picture of its layer “%1” is damaged or cut short in the file.</source>
+        <translation>レイヤー「%1」の画像がファイル内で壊れているか途中で切れています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="192"/>
+        <source>Its layer “%1”: %2</source>
+        <translation>レイヤー「%1」: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/openraster.cpp" line="241"/>
+        <source>Its stack.xml is larger than %1 MB.</source>
+        <translation>stack.xml が %1 MB を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="23"/>
+        <source>“%1” cannot be imported: %2</source>
+        <translation>「%1」は読み込めません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="32"/>
+        <source>It claims to be %1 × %2 pixels; a picture may be at most %3 pixels wide and high.</source>
+        <translation>%1 × %2 ピクセルとされていますが、画像の幅と高さは最大 %3 ピクセルです。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="40"/>
+        <source>It claims to be %1 × %2 pixels; a picture may have at most %3 megapixels.</source>
+        <translation>%1 × %2 ピクセルとされていますが、画像は最大 %3 メガピクセルです。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_decode.cpp" line="47"/>
+        <source>Its pictures together would take more than %1 MB of memory.</source>
+        <translation>画像を合わせると %1 MB を超えるメモリが必要です。</translation>
+    </message>
+    <message>
+        <location filename="../model/src/picture/picture_import.cpp" line="44"/>
+        <location filename="../model/src/picture/picture_import.cpp" line="48"/>
+        <source>It is larger than %1 MB.</source>
+        <translation>%1 MB を超えています。</translation>
+    </message>
+</context>
+<context>
     <name>QCommandLineParser</name>
     <message>
         <location filename="../app/main.cpp" line="26"/>
@@ -2907,18 +2986,18 @@
         <translation>ストロークを削除</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="328"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="335"/>
         <source>Cut</source>
         <translation>切り取り</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="404"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="411"/>
         <source>The clipboard holds strokes this version of Finbook cannot read.</source>
         <translation>クリップボードには、このバージョンの Finbook では読み込めないストロークが入っています。</translation>
     </message>
     <message>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="414"/>
-        <location filename="../ui/src/tools/stroke_editing.cpp" line="415"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="421"/>
+        <location filename="../ui/src/tools/stroke_editing.cpp" line="422"/>
         <source>Paste</source>
         <translation>貼り付け</translation>
     </message>
@@ -2931,22 +3010,22 @@
         <translation>通常のファイルではありません</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="359"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="361"/>
         <source>Cannot make a thumbnail of &quot;%1&quot;: %2</source>
         <translation>「%1」のサムネイルを作成できません: %2</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="408"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
         <source>a checksum does not match, so the file is damaged.</source>
         <translation>チェックサムが一致しないため、ファイルが破損しています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="410"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="412"/>
         <source>it holds data that this version of Finbook does not know.</source>
         <translation>このバージョンの Finbook が知らないデータが含まれています。</translation>
     </message>
     <message>
-        <location filename="../app/thumbnail/first_frame.cpp" line="413"/>
+        <location filename="../app/thumbnail/first_frame.cpp" line="415"/>
         <source>the file is damaged or incomplete.</source>
         <translation>ファイルが破損しているか不完全です。</translation>
     </message>
@@ -4475,7 +4554,7 @@
     </message>
     <message>
         <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="73"/>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="239"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="241"/>
         <source>Lip Sync</source>
         <translation>リップシンク</translation>
     </message>
@@ -4535,81 +4614,81 @@
         <translation>リップシンクのタイミングを読み込む</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="175"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="169"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="175"/>
         <source>Close</source>
         <translation>閉じる</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="191"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="193"/>
         <source>Listening…</source>
         <translation>聞き取り中…</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="209"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="211"/>
         <source>Cancelling…</source>
         <translation>取り消し中…</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="215"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="217"/>
         <source>Cancelled: nothing was changed.</source>
         <translation>取り消しました。何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="219"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="221"/>
         <source>Nothing was changed.</source>
         <translation>何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="222"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="224"/>
         <source>from the loudness (the speech models are not installed)</source>
         <translation>音量から（音声モデルがインストールされていません）</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="223"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="225"/>
         <source>from the recognised speech</source>
         <translation>認識した発話から</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="224"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="226"/>
         <source>from the speech and the dialogue</source>
         <translation>発話と台詞から</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="226"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="228"/>
         <source>spelt by rules, not found in the dictionary: %1</source>
         <translation>辞書になく規則で綴った語：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="244"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
         <source>Keyed the mouth on %n frame(s), %1.</source>
         <translation>
             <numerusform>%n フレームに口のキーを打ちました（%1）。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="246"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="248"/>
         <source>%n frame(s) of the mouth&apos;s layer hold no mouth and were left as they were.</source>
         <translation>
             <numerusform>口のレイヤーの %n フレームには口がないため、そのままにしました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="260"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="262"/>
         <source>%1 was not imported: %2</source>
         <translation>%1 は読み込みませんでした：%2</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="266"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="268"/>
         <source>from %1</source>
         <translation>%1 から</translation>
     </message>
     <message>
-        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="314"/>
+        <location filename="../ui/src/lipsync/lip_sync_dialog.cpp" line="316"/>
         <source>The clip holds no sound to follow.</source>
         <translation>クリップに従うべき音がありません。</translation>
     </message>
