@@ -145,7 +145,12 @@ std::vector<Owner> faceOwners(const ObjectRegions &regions, const std::vector<Fi
             // Lexicographic: the share (0-1) decides only between equal counts.
             const double tie =
                 (either > 0 ? double(common) / double(either) : 1.0) - 2.0 * double(elsewhere);
-            if (tie >= claim[std::size_t(f)]) {
+            // On a tie the later one wins, except that a fill's further region (made from a
+            // smaller face than its first, fillsAfterBake) never takes a face from another
+            // fill's first region.
+            const Owner &held = out[std::size_t(f)];
+            const bool yields = k >= 0 && held.fill >= 0 && held.place < 0;
+            if (tie > claim[std::size_t(f)] || (tie == claim[std::size_t(f)] && !yields)) {
                 claim[std::size_t(f)] = tie;
                 out[std::size_t(f)] = {int(i), k};
             }
