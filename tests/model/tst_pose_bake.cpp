@@ -35,12 +35,10 @@ constexpr double kAreaChangePct = 0.5;
 constexpr long long kSpeck = 12; // pixels: a fill shown on fewer is a speck
 
 // Poses of the 12 per rig kind that may still change the picture (the known misses in the
-// README): pins and cages none; a skeleton one; a cut-out skeleton two.
+// README): a cut-out skeleton two, every other rig none.
 int kAllowedMisses(int kind, int mode)
 {
-    if (RigKind(kind) != RigKind::Skeleton)
-        return 0;
-    return SkinningMode(mode) == SkinningMode::CutOut ? 2 : 1;
+    return RigKind(kind) == RigKind::Skeleton && SkinningMode(mode) == SkinningMode::CutOut ? 2 : 0;
 }
 
 double uniform(std::mt19937 &rng, double lo, double hi)
@@ -506,8 +504,8 @@ void TestPoseBake::editsOnAPosedObjectKeepTheRest()
             QVERIFY2(doc.group(c.group)->rig == rig, qPrintable(what));
         }
     }
-    // Of the 12 edits per rig kind, the known misses above (printed); a move of an outline
-    // that a skeleton pose folded over others changes the regions it crossed.
+    // Of the 12 edits per rig kind, the known misses above (printed): a head moved over the
+    // limbs of a cut-out pose changes the overlaps it crossed (98.5 % kept outside the edit).
     QVERIFY2(missed <= kAllowedMisses(kind, mode), qPrintable(QString::number(missed)));
 }
 
