@@ -85,6 +85,85 @@ void unwrapAngles(const Eigen::MatrixX3i &F, const Eigen::VectorXd &area, Eigen:
     }
 }
 
+// Per triangle: the polar decomposition of its map V0 → V1 (angle unwrapped, stretch), its
+// rest area and the gradients of its barycentric coordinates.
+void decomposeTriangles(const Eigen::MatrixX2d &V0, const Eigen::MatrixX2d &V1,
+                        const Eigen::MatrixX3i &F, ArapInterpolation &d)
+{
+    const Eigen::Index m = F.rows();
+    d.angle.resize(m);
+    d.stretch.resize(m, 3);
+    d.area.resize(m);
+    d.gradient.resize(m, 6);
+    for (Eigen::Index t = 0; t < m; ++t) {
+        Eigen::Matrix2d D0, D1;
+        D0 << (V0.row(F(t, 1)) - V0.row(F(t, 0))).transpose(),
+            (V0.row(F(t, 2)) - V0.row(F(t, 0))).transpose();
+        D1 << (V1.row(F(t, 1)) - V1.row(F(t, 0))).transpose(),
+            (V1.row(F(t, 2)) - V1.row(F(t, 0))).transpose();
+        const Eigen::Matrix2d inverse = D0.inverse();
+        const Eigen::Matrix2d J = D1 * inverse;
+        // The rotation of the polar decomposition in 2D: the angle of J's similarity part
+        // (J + cof(J)ᵀ)/2, which makes Rᵀ J symmetric.
+        const double c = J(0, 0) + J(1, 1), s = J(1, 0) - J(0, 1);
+        d.angle(t) = (c == 0.0 && s == 0.0) ? 0.0 : std::atan2(s, c);
+        const Eigen::Matrix2d S = Eigen::Rotation2Dd(-d.angle(t)).toRotationMatrix() * J;
+        d.stretch.row(t) << S(0, 0), 0.5 * (S(0, 1) + S(1, 0)), S(1, 1);
+        d.area(t) = 0.5 * std::abs(D0.determinant());
+        const Eigen::Vector2d g1 = inverse.row(0).transpose(), g2 = inverse.row(1).transpose();
+        const Eigen::Vector2d g0 = -g1 - g2;
+        d.gradient.row(t) << g0.x(), g0.y(), g1.x(), g1.y(), g2.x(), g2.y();
+        if (J.determinant() <= 0.0)
+            ++d.flippedTriangles;
+    }
+    unwrapAngles(F, d.area, d.angle);
+}
+
+// Connected parts (d.component, centroids); returns the vertices the solve holds: the first
+// of each part (its translation comes from the centroid afterwards) and those in no triangle.
+std::vector<bool> holdOneVertexPerPart(const Eigen::MatrixX3i &F, ArapInterpolation &d)
+{
+    const Eigen::Index m = F.rows(), n = d.V0.rows();
+    int parts = 0;
+    const Eigen::VectorXi labels = deform::detail::componentLabels(n, F, parts);
+    std::vector<int> triangles(std::size_t(n), 0);
+    for (Eigen::Index t = 0; t < m; ++t)
+        for (int c = 0; c < 3; ++c)
+            ++triangles[std::size_t(F(t, c))];
+    d.component = Eigen::VectorXi::Constant(n, -1);
+    std::vector<int> partOf(std::size_t(parts), -1);
+    std::vector<bool> held(std::size_t(n), false);
+    int solvedParts = 0;
+    for (Eigen::Index v = 0; v < n; ++v) {
+        if (triangles[std::size_t(v)] == 0) {
+            held[std::size_t(v)] = true;
+            continue;
+        }
+        int &part = partOf[std::size_t(labels(v))];
+        if (part < 0) {
+            part = solvedParts++;
+            held[std::size_t(v)] = true; // the part's first vertex fixes its translation
+        }
+        d.component(v) = part;
+    }
+    d.centroid0 = Eigen::MatrixX2d::Zero(solvedParts, 2);
+    d.centroid1 = Eigen::MatrixX2d::Zero(solvedParts, 2);
+    Eigen::VectorXd count = Eigen::VectorXd::Zero(solvedParts);
+    for (Eigen::Index v = 0; v < n; ++v) {
+        if (d.component(v) < 0)
+            continue;
+        d.centroid0.row(d.component(v)) += d.V0.row(v);
+        d.centroid1.row(d.component(v)) += d.V1.row(v);
+        count(d.component(v)) += 1.0;
+    }
+    for (int p = 0; p < solvedParts; ++p) {
+        d.centroid0.row(p) /= count(p);
+        d.centroid1.row(p) /= count(p);
+    }
+
+    return held;
+}
+
 } // namespace
 
 ArapInterpolationResult arapInterpolationPrecompute(const Eigen::MatrixX2d &V0,
@@ -106,71 +185,9 @@ ArapInterpolationResult arapInterpolationPrecompute(const Eigen::MatrixX2d &V0,
     d->V0 = V0;
     d->V1 = V1;
     d->F = F;
+    decomposeTriangles(V0, V1, F, *d);
+    const std::vector<bool> held = holdOneVertexPerPart(F, *d);
     const Eigen::Index m = F.rows(), n = V0.rows();
-    d->angle.resize(m);
-    d->stretch.resize(m, 3);
-    d->area.resize(m);
-    d->gradient.resize(m, 6);
-    for (Eigen::Index t = 0; t < m; ++t) {
-        Eigen::Matrix2d D0, D1;
-        D0 << (V0.row(F(t, 1)) - V0.row(F(t, 0))).transpose(),
-            (V0.row(F(t, 2)) - V0.row(F(t, 0))).transpose();
-        D1 << (V1.row(F(t, 1)) - V1.row(F(t, 0))).transpose(),
-            (V1.row(F(t, 2)) - V1.row(F(t, 0))).transpose();
-        const Eigen::Matrix2d inverse = D0.inverse();
-        const Eigen::Matrix2d J = D1 * inverse;
-        // The rotation of the polar decomposition in 2D: the angle of J's similarity part
-        // (J + cof(J)ᵀ)/2, which makes Rᵀ J symmetric.
-        const double c = J(0, 0) + J(1, 1), s = J(1, 0) - J(0, 1);
-        d->angle(t) = (c == 0.0 && s == 0.0) ? 0.0 : std::atan2(s, c);
-        const Eigen::Matrix2d S = Eigen::Rotation2Dd(-d->angle(t)).toRotationMatrix() * J;
-        d->stretch.row(t) << S(0, 0), 0.5 * (S(0, 1) + S(1, 0)), S(1, 1);
-        d->area(t) = 0.5 * std::abs(D0.determinant());
-        const Eigen::Vector2d g1 = inverse.row(0).transpose(), g2 = inverse.row(1).transpose();
-        const Eigen::Vector2d g0 = -g1 - g2;
-        d->gradient.row(t) << g0.x(), g0.y(), g1.x(), g1.y(), g2.x(), g2.y();
-        if (J.determinant() * D0.determinant() <= 0.0 || J.determinant() <= 0.0)
-            ++d->flippedTriangles;
-    }
-    unwrapAngles(F, d->area, d->angle);
-
-    int parts = 0;
-    const Eigen::VectorXi labels = deform::detail::componentLabels(n, F, parts);
-    std::vector<int> triangles(std::size_t(n), 0);
-    for (Eigen::Index t = 0; t < m; ++t)
-        for (int c = 0; c < 3; ++c)
-            ++triangles[std::size_t(F(t, c))];
-    d->component = Eigen::VectorXi::Constant(n, -1);
-    std::vector<int> partOf(std::size_t(parts), -1);
-    std::vector<bool> held(std::size_t(n), false);
-    int solvedParts = 0;
-    for (Eigen::Index v = 0; v < n; ++v) {
-        if (triangles[std::size_t(v)] == 0) {
-            held[std::size_t(v)] = true;
-            continue;
-        }
-        int &part = partOf[std::size_t(labels(v))];
-        if (part < 0) {
-            part = solvedParts++;
-            held[std::size_t(v)] = true; // the part's first vertex fixes its translation
-        }
-        d->component(v) = part;
-    }
-    d->centroid0 = Eigen::MatrixX2d::Zero(solvedParts, 2);
-    d->centroid1 = Eigen::MatrixX2d::Zero(solvedParts, 2);
-    Eigen::VectorXd count = Eigen::VectorXd::Zero(solvedParts);
-    for (Eigen::Index v = 0; v < n; ++v) {
-        if (d->component(v) < 0)
-            continue;
-        d->centroid0.row(d->component(v)) += V0.row(v);
-        d->centroid1.row(d->component(v)) += V1.row(v);
-        count(d->component(v)) += 1.0;
-    }
-    for (int p = 0; p < solvedParts; ++p) {
-        d->centroid0.row(p) /= count(p);
-        d->centroid1.row(p) /= count(p);
-    }
-
     auto system = std::make_shared<detail::MeshSystem>(int(n), F, held);
     for (Eigen::Index t = 0; t < m; ++t)
         for (int a = 0; a < 3; ++a)
