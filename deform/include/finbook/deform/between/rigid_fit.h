@@ -50,7 +50,7 @@ struct RigidFitOptions {
     // (E_ARAP = Σ_t area_t‖J_t − R_t‖², D the diagonal of A's points), so α = 0.01 means a
     // distortion ‖J − R‖ of 0.1 over all of A weighs as much as pairs 1 % of D apart.
     std::vector<double> stiffness = {3e-2, 1e-2, 3e-3, 1e-3, 3e-4};
-    int stageIterations = 12;
+    int stageIterations = 30;
     double pinWeight = 50.0; // a pin weighs this many pairs' worth
     // Converged: no vertex moved more than tolerance × B's bounding-box diagonal in one
     // iteration of the last stage.
