@@ -119,17 +119,20 @@ private slots:
 
 void TestBetweenFit::rigidMotionIsRecovered_data()
 {
+    QTest::addColumn<double>("degrees");
     QTest::addColumn<double>("scale");
-    QTest::newRow("rigid") << 1.0;
-    QTest::newRow("scaled 1.3") << 1.3;
+    QTest::newRow("rigid 35°") << 35.0 << 1.0;
+    QTest::newRow("rigid 160°") << 160.0 << 1.0; // beyond what ICP alone turns back
+    QTest::newRow("scaled 1.3, 35°") << 35.0 << 1.3;
 }
 
 void TestBetweenFit::rigidMotionIsRecovered()
 {
+    QFETCH(double, degrees);
     QFETCH(double, scale);
     const DrawingA a(40, 8, 300.0, 60.0, 5.0, true);
     QVERIFY(a.source);
-    const Eigen::Matrix2d linear = scale * test::rotationBy(35.0);
+    const Eigen::Matrix2d linear = scale * test::rotationBy(degrees);
     const Eigen::Vector2d shift(420.0, -130.0);
     const StrokePoints b = a.strokes.transformed(linear, shift);
     RigidFitOptions options;
@@ -142,6 +145,18 @@ void TestBetweenFit::rigidMotionIsRecovered()
     QVERIFY(fit.converged);
     QVERIFY(fit.medianResidual < 1e-3);
     QVERIFY(std::abs(fit.scale - scale) < 1e-6);
+    if (scale != 1.0) {
+        // The ARAP stage fits the scale too: started from a fit made at A's own size, a refit
+        // that allows scale finds it.
+        RigidFitOptions rigid;
+        rigid.allowScale = false;
+        const RigidFitResult unscaled = rigidFit(*a.source, *rigidFitTarget(b.P, b.N), {}, rigid);
+        options.refitIterations = 40;
+        const RigidFitResult refit =
+            rigidRefit(*a.source, *rigidFitTarget(b.P, b.N), {}, unscaled, options);
+        QVERIFY2(std::abs(refit.scale - scale) < 0.02 * scale,
+                 qPrintable(QString("%1 → %2").arg(unscaled.scale).arg(refit.scale)));
+    }
 }
 
 void TestBetweenFit::bentArmKeepsItsElbow()
@@ -275,6 +290,31 @@ void TestBetweenFit::unfittableDrawingsFail()
     QVERIFY(!fit.message.empty());
     QVERIFY(fit.distortion > 0.25 || fit.relativeMedian > 0.05 ||
             fit.coverageMedian > 0.05 * fit.targetDiagonal);
+
+    // B: A as it is, and beside it more again of something A has no part for. The fit
+    // stretches A towards both (distortion). Pinned in place and without B→A pairs, A fits
+    // its part exactly, and the uncovered part of B is what fails it.
+    StrokePoints more = a.strokes;
+    const int extra = int(a.strokes.P.rows()) * 3 / 2;
+    for (int i = 0; i < extra; ++i) {
+        const double angle = 2.0 * std::numbers::pi * i / double(extra);
+        const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+        more.add(Eigen::Vector2d(150.0, 300.0) + 120.0 * direction, direction);
+    }
+    const auto moreTarget = rigidFitTarget(more.P, more.N);
+    const RigidFitResult partial = rigidFit(*a.source, *moreTarget);
+    QCOMPARE(int(partial.status), int(FitStatus::ResidualTooLarge));
+    QVERIFY(partial.U.allFinite());
+    RigidFitOptions oneWay;
+    oneWay.symmetric = false;
+    const Eigen::VectorXi onA = (Eigen::VectorXi(2) << 0, int(a.strokes.P.rows()) / 2).finished();
+    const FitPins inPlace = pinsAtSamples(
+        a.samples, onA,
+        (Eigen::MatrixX2d(2, 2) << a.strokes.P.row(onA(0)), a.strokes.P.row(onA(1))).finished());
+    const RigidFitResult uncovered = rigidFit(*a.source, *moreTarget, inPlace, oneWay);
+    QCOMPARE(int(uncovered.status), int(FitStatus::ResidualTooLarge));
+    QVERIFY(uncovered.relativeMedian < 0.01 && uncovered.distortion < 0.01); // A itself fits
+    QVERIFY(uncovered.U.allFinite());
 
     const RigidFitResult empty =
         rigidFit(*a.source, *rigidFitTarget(Eigen::MatrixX2d(0, 2), Eigen::MatrixX2d(0, 2)));
