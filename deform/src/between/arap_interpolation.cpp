@@ -1,0 +1,259 @@
+#include "../arap_internal.h"
+#include "mesh_system.h"
+
+#include <finbook/deform/between/arap_interpolation.h>
+
+#include <queue>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <utility>
+
+namespace finbook::deform::between {
+namespace {
+
+constexpr double kTurn = 2.0 * std::numbers::pi;
+
+DeformError interpolationError(DeformErrorCode code, std::string message)
+{
+    return DeformError{code, std::move(message)};
+}
+
+// Triangles sharing an edge with each triangle (−1 where none), row t: neighbours across the
+// edges opposite corners 0, 1, 2.
+Eigen::MatrixX3i dualGraph(const Eigen::MatrixX3i &F)
+{
+    Eigen::MatrixX3i across = Eigen::MatrixX3i::Constant(F.rows(), 3, -1);
+    std::map<std::pair<int, int>, std::pair<int, int>> open; // edge → (triangle, corner)
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        for (int c = 0; c < 3; ++c) {
+            const int a = F(t, (c + 1) % 3), b = F(t, (c + 2) % 3);
+            const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+            const auto it = open.find(key);
+            if (it == open.end()) {
+                open.emplace(key, std::make_pair(int(t), c));
+            } else {
+                across(t, c) = it->second.first;
+                across(it->second.first, it->second.second) = int(t);
+                open.erase(it);
+            }
+        }
+    }
+    return across;
+}
+
+// Unwraps raw angles in (−π, π] breadth first over the dual graph (each triangle the branch
+// closest to the one it was reached from), then shifts each connected part by whole turns so
+// that its area-weighted mean lies in (−π, π].
+void unwrapAngles(const Eigen::MatrixX3i &F, const Eigen::VectorXd &area, Eigen::VectorXd &angle)
+{
+    const Eigen::MatrixX3i across = dualGraph(F);
+    std::vector<bool> seen(std::size_t(F.rows()), false);
+    for (Eigen::Index root = 0; root < F.rows(); ++root) {
+        if (seen[std::size_t(root)])
+            continue;
+        std::vector<int> part = {int(root)};
+        std::queue<int> queue;
+        queue.push(int(root));
+        seen[std::size_t(root)] = true;
+        while (!queue.empty()) {
+            const int t = queue.front();
+            queue.pop();
+            for (int c = 0; c < 3; ++c) {
+                const int u = across(t, c);
+                if (u < 0 || seen[std::size_t(u)])
+                    continue;
+                seen[std::size_t(u)] = true;
+                angle(u) += kTurn * std::round((angle(t) - angle(u)) / kTurn);
+                part.push_back(u);
+                queue.push(u);
+            }
+        }
+        double weighted = 0.0, total = 0.0;
+        for (const int t : part) {
+            weighted += area(t) * angle(t);
+            total += area(t);
+        }
+        const double mean = total > 0.0 ? weighted / total : 0.0;
+        const double shift = kTurn * std::ceil((mean - std::numbers::pi) / kTurn);
+        for (const int t : part)
+            angle(t) -= shift;
+    }
+}
+
+// Per triangle: the polar decomposition of its map V0 → V1 (angle unwrapped, stretch), its
+// rest area and the gradients of its barycentric coordinates.
+void decomposeTriangles(const Eigen::MatrixX2d &V0, const Eigen::MatrixX2d &V1,
+                        const Eigen::MatrixX3i &F, ArapInterpolation &d)
+{
+    const Eigen::Index m = F.rows();
+    d.angle.resize(m);
+    d.stretch.resize(m, 3);
+    d.area.resize(m);
+    d.gradient.resize(m, 6);
+    for (Eigen::Index t = 0; t < m; ++t) {
+        Eigen::Matrix2d D0, D1;
+        D0 << (V0.row(F(t, 1)) - V0.row(F(t, 0))).transpose(),
+            (V0.row(F(t, 2)) - V0.row(F(t, 0))).transpose();
+        D1 << (V1.row(F(t, 1)) - V1.row(F(t, 0))).transpose(),
+            (V1.row(F(t, 2)) - V1.row(F(t, 0))).transpose();
+        const Eigen::Matrix2d inverse = D0.inverse();
+        const Eigen::Matrix2d J = D1 * inverse;
+        // The rotation of the polar decomposition in 2D: the angle of J's similarity part
+        // (J + cof(J)ᵀ)/2, which makes Rᵀ J symmetric.
+        const double c = J(0, 0) + J(1, 1), s = J(1, 0) - J(0, 1);
+        d.angle(t) = (c == 0.0 && s == 0.0) ? 0.0 : std::atan2(s, c);
+        const Eigen::Matrix2d S = Eigen::Rotation2Dd(-d.angle(t)).toRotationMatrix() * J;
+        d.stretch.row(t) << S(0, 0), 0.5 * (S(0, 1) + S(1, 0)), S(1, 1);
+        d.area(t) = 0.5 * std::abs(D0.determinant());
+        const Eigen::Vector2d g1 = inverse.row(0).transpose(), g2 = inverse.row(1).transpose();
+        const Eigen::Vector2d g0 = -g1 - g2;
+        d.gradient.row(t) << g0.x(), g0.y(), g1.x(), g1.y(), g2.x(), g2.y();
+        if (J.determinant() <= 0.0)
+            ++d.flippedTriangles;
+    }
+    unwrapAngles(F, d.area, d.angle);
+}
+
+// Connected parts (d.component, centroids); returns the vertices the solve holds: the first
+// of each part (its translation comes from the centroid afterwards) and those in no triangle.
+std::vector<bool> holdOneVertexPerPart(const Eigen::MatrixX3i &F, ArapInterpolation &d)
+{
+    const Eigen::Index m = F.rows(), n = d.V0.rows();
+    int parts = 0;
+    const Eigen::VectorXi labels = deform::detail::componentLabels(n, F, parts);
+    std::vector<int> triangles(std::size_t(n), 0);
+    for (Eigen::Index t = 0; t < m; ++t)
+        for (int c = 0; c < 3; ++c)
+            ++triangles[std::size_t(F(t, c))];
+    d.component = Eigen::VectorXi::Constant(n, -1);
+    std::vector<int> partOf(std::size_t(parts), -1);
+    std::vector<bool> held(std::size_t(n), false);
+    int solvedParts = 0;
+    for (Eigen::Index v = 0; v < n; ++v) {
+        if (triangles[std::size_t(v)] == 0) {
+            held[std::size_t(v)] = true;
+            continue;
+        }
+        int &part = partOf[std::size_t(labels(v))];
+        if (part < 0) {
+            part = solvedParts++;
+            held[std::size_t(v)] = true; // the part's first vertex fixes its translation
+        }
+        d.component(v) = part;
+    }
+    d.centroid0 = Eigen::MatrixX2d::Zero(solvedParts, 2);
+    d.centroid1 = Eigen::MatrixX2d::Zero(solvedParts, 2);
+    Eigen::VectorXd count = Eigen::VectorXd::Zero(solvedParts);
+    for (Eigen::Index v = 0; v < n; ++v) {
+        if (d.component(v) < 0)
+            continue;
+        d.centroid0.row(d.component(v)) += d.V0.row(v);
+        d.centroid1.row(d.component(v)) += d.V1.row(v);
+        count(d.component(v)) += 1.0;
+    }
+    for (int p = 0; p < solvedParts; ++p) {
+        d.centroid0.row(p) /= count(p);
+        d.centroid1.row(p) /= count(p);
+    }
+
+    return held;
+}
+
+} // namespace
+
+ArapInterpolationResult arapInterpolationPrecompute(const Eigen::MatrixX2d &V0,
+                                                    const Eigen::MatrixX2d &V1,
+                                                    const Eigen::MatrixX3i &F)
+{
+    if (auto error = deform::detail::validateArapInput(V0, F, Eigen::VectorXi()))
+        return unexpected(*error);
+    if (V1.rows() != V0.rows())
+        return unexpected(interpolationError(DeformErrorCode::SizeMismatch,
+                                             "the two poses have different vertex counts"));
+    if (!V1.allFinite())
+        return unexpected(
+            interpolationError(DeformErrorCode::NonFiniteInput, "the target pose is not finite"));
+    if (V1.cwiseAbs().maxCoeff() > kMaxDeformCoordinate)
+        return unexpected(interpolationError(DeformErrorCode::CoordinateOutOfRange,
+                                             "the target pose is out of range"));
+    auto d = std::make_shared<ArapInterpolation>();
+    d->V0 = V0;
+    d->V1 = V1;
+    d->F = F;
+    decomposeTriangles(V0, V1, F, *d);
+    const std::vector<bool> held = holdOneVertexPerPart(F, *d);
+    const Eigen::Index m = F.rows(), n = V0.rows();
+    auto system = std::make_shared<detail::MeshSystem>(int(n), F, held);
+    for (Eigen::Index t = 0; t < m; ++t)
+        for (int a = 0; a < 3; ++a)
+            for (int b = a; b < 3; ++b)
+                system->addEntry(int(t), a, b,
+                                 d->area(t) *
+                                     (d->gradient(t, 2 * a) * d->gradient(t, 2 * b) +
+                                      d->gradient(t, 2 * a + 1) * d->gradient(t, 2 * b + 1)));
+    if (!system->factorize())
+        return unexpected(
+            interpolationError(DeformErrorCode::FactorizationFailed,
+                               "the interpolation's Laplacian could not be factored"));
+    d->system = std::move(system);
+    return std::shared_ptr<const ArapInterpolation>(std::move(d));
+}
+
+Expected<Eigen::MatrixX2d, DeformError> arapInterpolate(const ArapInterpolation &data, double t)
+{
+    if (!std::isfinite(t))
+        return unexpected(interpolationError(DeformErrorCode::NonFiniteInput, "t is not finite"));
+    const detail::MeshSystem &system = *data.system;
+    const Eigen::Index n = data.V0.rows();
+    // Right-hand side Σ_t area·A(t)·∇φ_a per unknown, x and y interleaved; held vertices sit
+    // at the origin, so they add nothing.
+    std::vector<double> rhs(std::size_t(system.size()) * 2, 0.0);
+    for (Eigen::Index f = 0; f < data.F.rows(); ++f) {
+        const Eigen::Matrix2d R = Eigen::Rotation2Dd(t * data.angle(f)).toRotationMatrix();
+        Eigen::Matrix2d S;
+        S << data.stretch(f, 0), data.stretch(f, 1), data.stretch(f, 1), data.stretch(f, 2);
+        const Eigen::Matrix2d A =
+            data.area(f) * R * ((1.0 - t) * Eigen::Matrix2d::Identity() + t * S);
+        for (int c = 0; c < 3; ++c) {
+            const int u = system.unknown(data.F(f, c));
+            if (u < 0)
+                continue;
+            const Eigen::Vector2d g(data.gradient(f, 2 * c), data.gradient(f, 2 * c + 1));
+            const Eigen::Vector2d contribution = A * g;
+            rhs[std::size_t(u) * 2] += contribution.x();
+            rhs[std::size_t(u) * 2 + 1] += contribution.y();
+        }
+    }
+    system.solveInPlace(rhs.data(), 2);
+    Eigen::MatrixX2d U(n, 2);
+    Eigen::MatrixX2d sum = Eigen::MatrixX2d::Zero(data.centroid0.rows(), 2);
+    Eigen::VectorXd count = Eigen::VectorXd::Zero(data.centroid0.rows());
+    for (Eigen::Index v = 0; v < n; ++v) {
+        const int u = system.unknown(int(v));
+        if (data.component(v) < 0) {
+            U.row(v) = (1.0 - t) * data.V0.row(v) + t * data.V1.row(v);
+            continue;
+        }
+        U.row(v) = u >= 0 ? Eigen::RowVector2d(rhs[std::size_t(u) * 2], rhs[std::size_t(u) * 2 + 1])
+                          : Eigen::RowVector2d::Zero();
+        sum.row(data.component(v)) += U.row(v);
+        count(data.component(v)) += 1.0;
+    }
+    for (Eigen::Index v = 0; v < n; ++v) {
+        const int p = data.component(v);
+        if (p >= 0)
+            U.row(v) += (1.0 - t) * data.centroid0.row(p) + t * data.centroid1.row(p) -
+                        sum.row(p) / count(p);
+    }
+    if (!U.allFinite())
+        return unexpected(interpolationError(DeformErrorCode::SolveFailed,
+                                             "the interpolation produced non-finite positions"));
+    return U;
+}
+
+} // namespace finbook::deform::between

@@ -1,0 +1,174 @@
+#include "mesh_system.h"
+
+#include <Eigen/OrderingMethods>
+
+#include <algorithm>
+#include <cmath>
+
+namespace finbook::deform::between::detail {
+namespace {
+
+// Index of entry (row, col) in a compressed row-major matrix with sorted columns.
+int slotOf(const Eigen::SparseMatrix<double, Eigen::RowMajor> &m, int row, int col)
+{
+    const int *begin = m.innerIndexPtr() + m.outerIndexPtr()[row];
+    const int *end = m.innerIndexPtr() + m.outerIndexPtr()[row + 1];
+    const int *it = std::lower_bound(begin, end, col);
+    return int(it - m.innerIndexPtr());
+}
+
+} // namespace
+
+MeshSystem::MeshSystem(int n, const Eigen::MatrixX3i &F, const std::vector<bool> &eliminated)
+{
+    m_unknown.assign(std::size_t(n), -1);
+    for (int v = 0; v < n; ++v)
+        if (eliminated.empty() || !eliminated[std::size_t(v)])
+            m_unknown[std::size_t(v)] = m_free++;
+
+    // Upper pattern in unknown numbering, AMD, then a postorder of the elimination tree (what
+    // analyzeSupernodal needs, and the fill AMD chose): the ARAP precompute's recipe.
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(std::size_t(m_free) + std::size_t(F.rows()) * 3);
+    for (int u = 0; u < m_free; ++u)
+        entries.emplace_back(u, u, 1.0);
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        for (int a = 0; a < 3; ++a) {
+            const int i = m_unknown[std::size_t(F(t, a))],
+                      j = m_unknown[std::size_t(F(t, (a + 1) % 3))];
+            if (i >= 0 && j >= 0 && i != j)
+                entries.emplace_back(std::min(i, j), std::max(i, j), 1.0);
+        }
+    }
+    Eigen::SparseMatrix<double> upper(m_free, m_free);
+    upper.setFromTriplets(entries.begin(), entries.end());
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+    Eigen::AMDOrdering<int>()(upper.selfadjointView<Eigen::Upper>(), inverse);
+    Eigen::SparseMatrix<double> permuted(m_free, m_free);
+    permuted = upper.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
+    permuted.makeCompressed();
+    const std::vector<int> post =
+        postorder(eliminationTree(m_free, permuted.outerIndexPtr(), permuted.innerIndexPtr()));
+    m_position.assign(std::size_t(m_free), 0);
+    std::vector<int> rank(static_cast<std::size_t>(m_free));
+    for (int k = 0; k < m_free; ++k)
+        rank[std::size_t(post[std::size_t(k)])] = k;
+    // inverse.indices()(k) is the unknown at AMD position k; post[k'] the AMD position at k'.
+    for (int k = 0; k < m_free; ++k)
+        m_position[std::size_t(inverse.indices()(k))] = rank[std::size_t(k)];
+
+    std::vector<Eigen::Triplet<double>> full;
+    full.reserve(entries.size() * 2);
+    for (const auto &e : entries) {
+        const int r = m_position[std::size_t(e.row())], c = m_position[std::size_t(e.col())];
+        full.emplace_back(r, c, 0.0);
+        if (r != c)
+            full.emplace_back(c, r, 0.0);
+    }
+    m_matrix.resize(m_free, m_free);
+    m_matrix.setFromTriplets(full.begin(), full.end());
+    m_matrix.makeCompressed();
+    m_symbolic = analyzeSupernodal(m_free, m_matrix.outerIndexPtr(), m_matrix.innerIndexPtr());
+
+    m_diagonal.resize(std::size_t(m_free));
+    for (int u = 0; u < m_free; ++u) {
+        const int p = m_position[std::size_t(u)];
+        m_diagonal[std::size_t(u)] = slotOf(m_matrix, p, p);
+    }
+    m_slots.assign(std::size_t(F.rows()) * 9, -1);
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+        for (int a = 0; a < 3; ++a) {
+            for (int b = 0; b < 3; ++b) {
+                const int i = m_unknown[std::size_t(F(t, a))], j = m_unknown[std::size_t(F(t, b))];
+                if (i >= 0 && j >= 0)
+                    m_slots[std::size_t(t) * 9 + std::size_t(a * 3 + b)] =
+                        slotOf(m_matrix, m_position[std::size_t(i)], m_position[std::size_t(j)]);
+            }
+        }
+    }
+}
+
+void MeshSystem::clear()
+{
+    std::fill(m_matrix.valuePtr(), m_matrix.valuePtr() + m_matrix.nonZeros(), 0.0);
+}
+
+void MeshSystem::addTriangleBlock(int t, const double beta[3], double w)
+{
+    const int *slot = m_slots.data() + std::size_t(t) * 9;
+    double *values = m_matrix.valuePtr();
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+            if (slot[a * 3 + b] >= 0)
+                values[slot[a * 3 + b]] += w * beta[a] * beta[b];
+}
+
+void MeshSystem::addEntry(int t, int a, int b, double w)
+{
+    const int *slot = m_slots.data() + std::size_t(t) * 9;
+    double *values = m_matrix.valuePtr();
+    if (slot[a * 3 + b] >= 0)
+        values[slot[a * 3 + b]] += w;
+    if (a != b && slot[b * 3 + a] >= 0)
+        values[slot[b * 3 + a]] += w;
+}
+
+void MeshSystem::addDiagonal(int v, double w)
+{
+    const int u = m_unknown[std::size_t(v)];
+    if (u >= 0)
+        m_matrix.valuePtr()[m_diagonal[std::size_t(u)]] += w;
+}
+
+bool MeshSystem::factorize()
+{
+    if (m_free == 0)
+        return true;
+    for (Eigen::Index k = 0; k < m_matrix.nonZeros(); ++k)
+        if (!std::isfinite(m_matrix.valuePtr()[k]))
+            return false;
+    return m_factor.factorize(m_symbolic, m_matrix);
+}
+
+template <class Scalar> void MeshSystem::solveInPlace(Scalar *x, int columns) const
+{
+    std::vector<Scalar> y(std::size_t(m_free) * std::size_t(columns));
+    for (int u = 0; u < m_free; ++u)
+        for (int c = 0; c < columns; ++c)
+            y[std::size_t(m_position[std::size_t(u)] * columns + c)] =
+                x[std::size_t(u * columns + c)];
+    if (m_free > 0)
+        m_factor.solveInPlace(y.data(), columns);
+    for (int u = 0; u < m_free; ++u)
+        for (int c = 0; c < columns; ++c)
+            x[std::size_t(u * columns + c)] =
+                y[std::size_t(m_position[std::size_t(u)] * columns + c)];
+}
+
+template void MeshSystem::solveInPlace(double *, int) const;
+template void MeshSystem::solveInPlace(std::complex<double> *, int) const;
+
+double MeshSystem::norm() const
+{
+    double best = 0.0;
+    for (int r = 0; r < m_free; ++r) {
+        double sum = 0.0;
+        for (int k = m_matrix.outerIndexPtr()[r]; k < m_matrix.outerIndexPtr()[r + 1]; ++k)
+            sum += std::abs(m_matrix.valuePtr()[k]);
+        best = std::max(best, sum);
+    }
+    return best;
+}
+
+Eigen::VectorXcd MeshSystem::multiply(const Eigen::VectorXcd &x) const
+{
+    Eigen::VectorXcd permuted(m_free), result(m_free);
+    for (int u = 0; u < m_free; ++u)
+        permuted(m_position[std::size_t(u)]) = x(u);
+    const Eigen::VectorXcd product = m_matrix.cast<std::complex<double>>() * permuted;
+    for (int u = 0; u < m_free; ++u)
+        result(u) = product(m_position[std::size_t(u)]);
+    return result;
+}
+
+} // namespace finbook::deform::between::detail

@@ -1,0 +1,236 @@
+// ARAP-regularised non-rigid ICP: the iterations after the coarse and rigid alignment.
+#include "rigid_fit_internal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace finbook::deform::between {
+namespace {
+
+using detail::Complex;
+
+// A tiny pull of every vertex towards where it is (relative to the data term's weight per
+// vertex): keeps the system positive definite where a part of A has no pair and no pin
+// (a stroke group's separate lobe far from B) and changes a converged fit by nothing.
+constexpr double kProximalWeight = 1e-4;
+
+// The state of the iterations: vertex positions x+iy, a rotation per triangle, one scale.
+struct FitState {
+    Eigen::VectorXcd u;
+    Eigen::VectorXcd rotation;
+    double scale = 1.0;
+};
+
+Eigen::MatrixX2d toMatrix(const Eigen::VectorXcd &u)
+{
+    Eigen::MatrixX2d U(u.size(), 2);
+    U.col(0) = u.real();
+    U.col(1) = u.imag();
+    return U;
+}
+
+// Local step: the best rotation of every triangle for the cotangent-weighted edge covariance
+// (a triangle squashed flat keeps its previous rotation), then the one global scale.
+void fitRotations(const RigidFitSource &source, bool allowScale, FitState &state)
+{
+    double covarianceSum = 0.0;
+    for (Eigen::Index t = 0; t < source.F.rows(); ++t) {
+        Complex covariance = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            const int i = source.F(t, (c + 1) % 3), j = source.F(t, (c + 2) % 3);
+            const Complex rest = source.corner(t, (c + 2) % 3) - source.corner(t, (c + 1) % 3);
+            covariance += source.edgeWeight(t, c) * std::conj(rest) * (state.u(j) - state.u(i));
+        }
+        const double magnitude = std::abs(covariance);
+        if (magnitude > 1e-300 && std::isfinite(magnitude))
+            state.rotation(t) = covariance / magnitude;
+        covarianceSum += magnitude;
+    }
+    if (allowScale && source.restSquaredNorm > 0.0 && covarianceSum > 0.0)
+        state.scale = covarianceSum / source.restSquaredNorm;
+}
+
+class ArapIcp {
+public:
+    ArapIcp(const RigidFitSource &source, const RigidFitTarget &target, const FitPins &pins,
+            const RigidFitOptions &options)
+        : m_source(source)
+        , m_target(target)
+        , m_pins(pins)
+        , m_options(options)
+        , m_system(source.system)
+    {}
+
+    // One iteration at stiffness alpha: rotations, pairs, assemble, factor, solve. Returns the
+    // largest vertex move, or −1 when the system could not be factored.
+    double iterate(double alpha, FitState &state)
+    {
+        const RigidFitSource &s = m_source;
+        const double n = double(s.vertexCount());
+        fitRotations(s, m_options.allowScale, state);
+        const Eigen::MatrixX2d X = detail::samplePositions(s, toMatrix(state.u));
+        Eigen::MatrixX2d M(s.sampleCount(), 2);
+        for (int k = 0; k < s.sampleCount(); ++k) {
+            const Complex r = state.rotation(s.I(k)) * Complex(s.N(k, 0), s.N(k, 1));
+            M.row(k) << r.real(), r.imag();
+        }
+        const detail::Pairs pairs = detail::findPairs(s, m_target, X, M, m_options);
+
+        m_system.clear();
+        Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(s.vertexCount());
+        for (Eigen::Index t = 0; t < s.F.rows(); ++t) {
+            for (int c = 0; c < 3; ++c) {
+                const int a = (c + 1) % 3, b = (c + 2) % 3;
+                const double w = alpha * s.stiffnessUnit * s.edgeWeight(t, c);
+                m_system.addEntry(int(t), a, a, w);
+                m_system.addEntry(int(t), b, b, w);
+                m_system.addEntry(int(t), a, b, -w);
+                const Complex d =
+                    w * state.scale * state.rotation(t) * (s.corner(t, b) - s.corner(t, a));
+                rhs(s.F(t, b)) += d;
+                rhs(s.F(t, a)) -= d;
+            }
+        }
+        const auto addPoint = [&](int t, const double beta[3], double w, const Complex &y) {
+            m_system.addTriangleBlock(t, beta, w);
+            for (int c = 0; c < 3; ++c)
+                rhs(s.F(t, c)) += w * beta[c] * y;
+        };
+        for (std::size_t p = 0; p < pairs.sample.size(); ++p) {
+            const int k = pairs.sample[p];
+            const double beta[3] = {s.B(k, 0), s.B(k, 1), s.B(k, 2)};
+            addPoint(s.I(k), beta, n * pairs.weight[p],
+                     Complex(pairs.target[p].x(), pairs.target[p].y()));
+        }
+        const double pinWeight = n * m_options.pinWeight / std::max(1, pairs.abCount);
+        for (Eigen::Index p = 0; p < m_pins.targets.rows(); ++p) {
+            const double beta[3] = {m_pins.where.B(p, 0), m_pins.where.B(p, 1),
+                                    m_pins.where.B(p, 2)};
+            addPoint(m_pins.where.I(p), beta, pinWeight,
+                     Complex(m_pins.targets(p, 0), m_pins.targets(p, 1)));
+        }
+        for (int v = 0; v < s.vertexCount(); ++v) {
+            m_system.addDiagonal(v, kProximalWeight);
+            rhs(v) += kProximalWeight * state.u(v);
+        }
+        if (!m_system.factorize())
+            return -1.0;
+        m_system.solveInPlace(rhs.data());
+        if (!rhs.allFinite())
+            return -1.0;
+        const double moved = std::sqrt((rhs - state.u).cwiseAbs2().maxCoeff());
+        state.u = rhs;
+        return moved;
+    }
+
+private:
+    const RigidFitSource &m_source;
+    const RigidFitTarget &m_target;
+    const FitPins &m_pins;
+    const RigidFitOptions &m_options;
+    detail::MeshSystem m_system;
+};
+
+FitState stateFrom(const Eigen::MatrixX2d &U, Eigen::Index triangles, const Complex &rotation,
+                   double scale)
+{
+    FitState state;
+    state.u.resize(U.rows());
+    state.u.real() = U.col(0);
+    state.u.imag() = U.col(1);
+    state.rotation = Eigen::VectorXcd::Constant(triangles, rotation);
+    state.scale = scale;
+    return state;
+}
+
+// Runs the stages on `state`; fills U, iterations, converged and status of r.
+void runStages(const RigidFitSource &source, const RigidFitTarget &target, const FitPins &pins,
+               const RigidFitOptions &options, const std::vector<double> &stages,
+               int iterationsPerStage, FitState &state, RigidFitResult &r)
+{
+    ArapIcp icp(source, target, pins, options);
+    const double tolerance = options.tolerance * std::max(target.diagonal, 1e-12);
+    r.status = FitStatus::Fitted;
+    for (std::size_t stage = 0; stage < stages.size(); ++stage) {
+        r.converged = false;
+        for (int i = 0; i < iterationsPerStage; ++i) {
+            FitState next = state;
+            const double moved = icp.iterate(stages[stage], next);
+            ++r.iterations;
+            if (moved < 0.0) {
+                r.status = FitStatus::SolveFailed;
+                r.message = "the fit's linear system could not be solved";
+                break;
+            }
+            state = std::move(next);
+            if (moved <= tolerance) {
+                r.converged = true;
+                break;
+            }
+        }
+        if (r.status != FitStatus::Fitted)
+            break;
+    }
+    r.U = toMatrix(state.u);
+    r.scale = state.scale;
+}
+
+RigidFitResult unfitted(const RigidFitSource &source, FitStatus status, std::string message)
+{
+    RigidFitResult r;
+    r.status = status;
+    r.U = source.V;
+    r.samples = source.rest;
+    r.residual = Eigen::VectorXd::Zero(source.sampleCount());
+    r.message = std::move(message);
+    return r;
+}
+
+} // namespace
+
+RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &target,
+                        const FitPins &pins, const RigidFitOptions &options)
+{
+    if (target.P.rows() == 0)
+        return unfitted(source, FitStatus::EmptyTarget, "drawing B has no points to fit A to");
+    if (!detail::pinsValid(source, pins))
+        return unfitted(source, FitStatus::InvalidPins, "a correspondence pin is not on A");
+    RigidFitResult r;
+    detail::Similarity start =
+        detail::coarseAlignment(source, target, pins, options, r.coarse.chamfer);
+    r.coarse.linear = start.linear;
+    r.coarse.translation = start.translation;
+    const detail::Similarity rigid = detail::rigidIcp(source, target, pins, options, start);
+    const double scale = std::sqrt(std::abs(rigid.linear.determinant()));
+    const Complex rotation = std::polar(1.0, std::atan2(rigid.linear(1, 0) - rigid.linear(0, 1),
+                                                        rigid.linear(0, 0) + rigid.linear(1, 1)));
+    FitState state = stateFrom(rigid.apply(source.V), source.F.rows(), rotation,
+                               options.allowScale ? scale : 1.0);
+    runStages(source, target, pins, options, options.stiffness, options.stageIterations, state, r);
+    detail::reportResidual(source, target, options, r);
+    return r;
+}
+
+RigidFitResult rigidRefit(const RigidFitSource &source, const RigidFitTarget &target,
+                          const FitPins &pins, const RigidFitResult &previous,
+                          const RigidFitOptions &options)
+{
+    if (previous.U.rows() != source.V.rows() || !previous.U.allFinite() ||
+        previous.status == FitStatus::EmptyTarget || previous.status == FitStatus::InvalidPins ||
+        previous.status == FitStatus::SolveFailed || options.stiffness.empty())
+        return rigidFit(source, target, pins, options);
+    if (target.P.rows() == 0)
+        return unfitted(source, FitStatus::EmptyTarget, "drawing B has no points to fit A to");
+    if (!detail::pinsValid(source, pins))
+        return unfitted(source, FitStatus::InvalidPins, "a correspondence pin is not on A");
+    RigidFitResult r;
+    r.coarse = previous.coarse;
+    FitState state = stateFrom(previous.U, source.F.rows(), Complex(1.0, 0.0), previous.scale);
+    fitRotations(source, options.allowScale, state);
+    runStages(source, target, pins, options, {options.stiffness.back()}, options.refitIterations,
+              state, r);
+    detail::reportResidual(source, target, options, r);
+    return r;
+}
+
+} // namespace finbook::deform::between

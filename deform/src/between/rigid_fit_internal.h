@@ -1,0 +1,104 @@
+// What the fit's translation units share: the precomputed source and target, and the steps
+// of the fit (coarse alignment, rigid ICP, ARAP ICP, the residual report).
+#pragma once
+
+#include "mesh_system.h"
+#include "point_grid.h"
+
+#include <finbook/deform/between/rigid_fit.h>
+
+#include <Eigen/Core>
+
+#include <complex>
+#include <vector>
+
+namespace finbook::deform::between {
+
+struct RigidFitSource {
+    Eigen::MatrixX2d V;    // n×2 rest
+    Eigen::MatrixX3i F;    // m×3
+    Eigen::VectorXi I;     // k: the samples' triangles
+    Eigen::MatrixX3d B;    // k×3: their barycentric weights
+    Eigen::MatrixX2d N;    // k×2 unit normals (rest)
+    Eigen::MatrixX2d rest; // k×2 rest sample positions
+    // Per triangle and corner k: ½ cot of the angle at k (the weight of the opposite edge,
+    // the standard ARAP energy's) and the rest corner as x+iy.
+    Eigen::MatrixX3d edgeWeight;
+    Eigen::MatrixX3cd corner;
+    double restSquaredNorm = 0.0; // Σ_t Σ_k w_k |rest edge opposite k|² (global scale fit)
+    double sampleDiagonal = 0.0;  // of the rest samples' bounding box
+    double area = 0.0;            // of the mesh (rest)
+    // What options' dimensionless stiffness is multiplied by in the system, whose data term
+    // has total weight n: D²·n / area (see RigidFitOptions::stiffness).
+    double stiffnessUnit = 1.0;
+    detail::MeshSystem system; // analysed, not factored: every fit copies it
+
+    int vertexCount() const { return int(V.rows()); }
+    int sampleCount() const { return int(I.size()); }
+};
+
+struct RigidFitTarget {
+    Eigen::MatrixX2d P; // k×2
+    Eigen::MatrixX2d N; // k×2 unit (or zero) normals
+    detail::PointGrid grid;
+    double diagonal = 0.0;
+};
+
+namespace detail {
+
+using Complex = std::complex<double>;
+
+// x ↦ linear·x + translation.
+struct Similarity {
+    Eigen::Matrix2d linear = Eigen::Matrix2d::Identity();
+    Eigen::Vector2d translation = Eigen::Vector2d::Zero();
+    Eigen::MatrixX2d apply(const Eigen::MatrixX2d &P) const
+    {
+        return (P * linear.transpose()).rowwise() + translation.transpose();
+    }
+};
+
+// Σ_k B(s,k)·X(F(I(s),k)) for every sample (k×2).
+Eigen::MatrixX2d samplePositions(const RigidFitSource &source, const Eigen::MatrixX2d &U);
+Eigen::MatrixX2d pinPositions(const RigidFitSource &source, const FitPins &pins,
+                              const Eigen::MatrixX2d &U);
+
+// Best rotation (and scale, when allowScale) with translation taking the rows of X onto
+// those of Y, weights w (Umeyama 1991; no reflection). Identity when degenerate.
+Similarity procrustes(const Eigen::MatrixX2d &X, const Eigen::MatrixX2d &Y,
+                      const Eigen::VectorXd &w, bool allowScale);
+
+// Mean nearest-point distance from A's points to B's plus from B's to A's.
+double symmetricChamfer(const Eigen::MatrixX2d &A, const RigidFitTarget &target);
+
+// Coarse alignment of the rest samples to B (moments, then pins), then rigid ICP.
+Similarity coarseAlignment(const RigidFitSource &source, const RigidFitTarget &target,
+                           const FitPins &pins, const RigidFitOptions &options, double &chamfer);
+Similarity rigidIcp(const RigidFitSource &source, const RigidFitTarget &target, const FitPins &pins,
+                    const RigidFitOptions &options, Similarity start);
+
+// Pins valid for this source: triangles in range, finite weights and targets.
+bool pinsValid(const RigidFitSource &source, const FitPins &pins);
+
+// Fills residual, percentiles, coverage, worst samples and status/message of r from r.U.
+void reportResidual(const RigidFitSource &source, const RigidFitTarget &target,
+                    const RigidFitOptions &options, RigidFitResult &r);
+
+// Nearest-agreeing pairs for the current sample positions X (k×2) and normals M (k×2):
+// A→B (sample s ↦ B point) and, when symmetric, B→A (B point ↦ sample), with far pairs
+// dropped. Each pair: sample, target position, weight (each direction's weights add up to 1,
+// or ½ each when symmetric). abCount: the A→B pairs, which come first.
+struct Pairs {
+    std::vector<int> sample;
+    std::vector<Eigen::Vector2d> target;
+    std::vector<double> weight;
+    int abCount = 0;
+};
+Pairs findPairs(const RigidFitSource &source, const RigidFitTarget &target,
+                const Eigen::MatrixX2d &X, const Eigen::MatrixX2d &M,
+                const RigidFitOptions &options);
+
+double percentileOf(std::vector<double> values, double p);
+
+} // namespace detail
+} // namespace finbook::deform::between
