@@ -148,27 +148,4 @@ template <class Scalar> void MeshSystem::solveInPlace(Scalar *x, int columns) co
 template void MeshSystem::solveInPlace(double *, int) const;
 template void MeshSystem::solveInPlace(std::complex<double> *, int) const;
 
-double MeshSystem::norm() const
-{
-    double best = 0.0;
-    for (int r = 0; r < m_free; ++r) {
-        double sum = 0.0;
-        for (int k = m_matrix.outerIndexPtr()[r]; k < m_matrix.outerIndexPtr()[r + 1]; ++k)
-            sum += std::abs(m_matrix.valuePtr()[k]);
-        best = std::max(best, sum);
-    }
-    return best;
-}
-
-Eigen::VectorXcd MeshSystem::multiply(const Eigen::VectorXcd &x) const
-{
-    Eigen::VectorXcd permuted(m_free), result(m_free);
-    for (int u = 0; u < m_free; ++u)
-        permuted(m_position[std::size_t(u)]) = x(u);
-    const Eigen::VectorXcd product = m_matrix.cast<std::complex<double>>() * permuted;
-    for (int u = 0; u < m_free; ++u)
-        result(u) = product(m_position[std::size_t(u)]);
-    return result;
-}
-
 } // namespace finbook::deform::between::detail

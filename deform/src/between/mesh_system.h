@@ -40,10 +40,6 @@ public:
     // (x[unknown·columns + c]); real or x+iy. Const and allocating its own scratch, so a
     // factored system may be shared between threads.
     template <class Scalar> void solveInPlace(Scalar *x, int columns = 1) const;
-    // ‖A‖∞ of the last assembled values (scales residual tests).
-    double norm() const;
-    // r = A x for the current values (x, r: size() entries).
-    Eigen::VectorXcd multiply(const Eigen::VectorXcd &x) const;
 
 private:
     int m_free = 0;
