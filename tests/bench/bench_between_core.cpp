@@ -1,5 +1,5 @@
-// finbook-bench-between: figures for the Between Drawings core (issue 50) on synthetic shapes,
-// one JSON object per line. Links only the deform and geometry layers; never gates on time.
+// finbook-bench between-core: figures for the Between Drawings core (issue 50) on synthetic
+// shapes, one JSON object per line; never gates on time.
 //
 // For each shape: meshed at ~2k vertices (geometry's quality triangulation of the outline);
 // key B = the outline bent by 40° at a joint (blended over the limb's width), redrawn (resampled
@@ -7,7 +7,8 @@
 // jittered by up to 1 px). Prints the correspondence error of A's samples against the known
 // bend (median and p95, % of the diagonal), the fit's time, the re-solve time per pin change,
 // and the interpolation's precompute time and time per t.
-#include "between_fixtures.h"
+#include "../deform/between_fixtures.h"
+#include "bench.h"
 
 #include <finbook/deform/between/arap_interpolation.h>
 #include <finbook/deform/between/rigid_fit.h>
@@ -232,9 +233,7 @@ void runShape(const Shape &shape, double spacing)
     std::fflush(stdout);
 }
 
-} // namespace
-
-int main()
+int benchBetweenCore(const QStringList &)
 {
     // A's stroke points every 4 px and every 2 px (B's at 1.37× that).
     for (const double spacing : {4.0, 2.0})
@@ -242,3 +241,8 @@ int main()
             runShape(shape, spacing);
     return 0;
 }
+
+} // namespace
+
+FINBOOK_BENCH("between-core", "  (Between Drawings: fit and interpolation on synthetic shapes)",
+              benchBetweenCore);
