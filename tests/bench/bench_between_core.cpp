@@ -28,23 +28,13 @@ using namespace finbook;
 using namespace finbook::deform::between;
 
 namespace {
+using finbook::bench::percentile;
 
 double nowMs()
 {
     return std::chrono::duration<double, std::milli>(
                std::chrono::steady_clock::now().time_since_epoch())
         .count();
-}
-
-double percentile(std::vector<double> v, double p)
-{
-    if (v.empty())
-        return 0.0;
-    std::sort(v.begin(), v.end());
-    const double rank = p * double(v.size() - 1);
-    const auto lo = std::size_t(rank);
-    const std::size_t hi = std::min(lo + 1, v.size() - 1);
-    return v[lo] + (rank - double(lo)) * (v[hi] - v[lo]);
 }
 
 struct Shape {
