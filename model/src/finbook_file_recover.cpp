@@ -60,7 +60,9 @@ bool Reader::findNextSection(Cursor &c, std::size_t next)
 }
 
 // Ids that were missing, too large or used twice: each one after the first gets a new id above
-// every good one, in file order, so the document is valid again.
+// every good one, in file order, so the document is valid again. The swap sets come first: an
+// object showing one of their drawings is linked to it by the set's and the drawing's ids and
+// holds the drawing's stroke ids, so those follow the drawing rather than count as a clash.
 void Reader::renumberClashingIds()
 {
     std::unordered_set<Id> seen;
@@ -72,12 +74,48 @@ void Reader::renumberClashingIds()
         seen.insert(id);
         ++renumbered;
     };
+    std::vector<StrokeGroup *> linked;
+    for (Frame &f : m_doc.frames)
+        for (StrokeGroup &g : f.groups)
+            if (g.swap.linked())
+                linked.push_back(&g);
+    // Each link was resolved, on reading, to the first set and drawing bearing its ids.
+    std::vector<bool> rewired(linked.size(), false);
+    for (SwapSet &set : m_doc.swapSets) {
+        const Id oldSet = set.id;
+        fix(set.id);
+        for (SwapDrawing &d : set.drawings) {
+            const Id oldDrawing = d.id;
+            fix(d.id);
+            for (Stroke &s : d.strokes)
+                fix(s.id);
+            for (Pin &p : d.rig.pins)
+                fix(p.id);
+            for (std::size_t k = 0; k < linked.size(); ++k) {
+                StrokeGroup &g = *linked[k];
+                if (rewired[k] || g.swap.set != oldSet || g.swap.drawing != oldDrawing)
+                    continue;
+                rewired[k] = true;
+                g.swap = SwapLink{set.id, d.id};
+                if (g.strokes.size() == d.strokes.size())
+                    for (std::size_t i = 0; i < d.strokes.size(); ++i)
+                        g.strokes[i].id = d.strokes[i].id;
+                else // not the drawing's strokes: ids of their own
+                    for (Stroke &s : g.strokes)
+                        fix(s.id);
+            }
+        }
+    }
+    for (std::size_t k = 0; k < linked.size(); ++k)
+        if (!rewired[k]) // a link no set answers (the reader refuses it): it stands alone
+            linked[k]->swap = SwapLink{};
     for (Frame &f : m_doc.frames) {
         fix(f.id);
         for (StrokeGroup &g : f.groups) {
             fix(g.id);
-            for (Stroke &s : g.strokes)
-                fix(s.id);
+            if (!g.swap.linked())
+                for (Stroke &s : g.strokes)
+                    fix(s.id);
             for (Pin &p : g.rig.pins)
                 fix(p.id);
         }

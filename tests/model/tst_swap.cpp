@@ -35,6 +35,8 @@ private slots:
     void autosavedWithTheSets();
     void damagedSetsAreRefusedWithAReason_data();
     void damagedSetsAreRefusedWithAReason();
+    void repeatedIdsAreRepairedKeepingDrawingsShared_data();
+    void repeatedIdsAreRepairedKeepingDrawingsShared();
     void randomEditsUndoExactlyAndKeepDrawingsShared();
 };
 
@@ -440,6 +442,99 @@ void TestSwap::damagedSetsAreRefusedWithAReason()
             doc.frameAt(1).groups.back().strokes[0].id);
     const auto again = readFinbook(serializeFinbook(doc));
     QVERIFY2(again.hasValue(), qPrintable(again ? QString() : again.error().message));
+}
+
+void TestSwap::repeatedIdsAreRepairedKeepingDrawingsShared_data()
+{
+    QTest::addColumn<QString>("clash");
+    QTest::newRow("a drawing has a frame's id") << QStringLiteral("drawing");
+    QTest::newRow("a set has an object's id") << QStringLiteral("set");
+    QTest::newRow("a drawing's stroke has another object's stroke id") << QStringLiteral("stroke");
+}
+
+// Found by the fuzzer: a recovered file whose ids clashed kept a drawing's id that a frame
+// also had, and the document it gave could not be saved and opened again.
+void TestSwap::repeatedIdsAreRepairedKeepingDrawingsShared()
+{
+    QFETCH(QString, clash);
+    Scene s;
+    const Id setId = s.swappableInTwoFrames();
+    // A plain object beside the mouth in frame 1, its stroke's id to be repeated.
+    auto *add = new AddObjectCommand(&s.doc, s.frame1, -1, QStringLiteral("Plain"));
+    s.doc.undoStack()->push(add);
+    s.doc.undoStack()->push(
+        new AddStrokeCommand(&s.doc, add->groupId(), lineStroke({10, 10}, {60, 10}, 5, 2.0f)));
+    std::vector<SwapSet> sets = s.doc.swapSets();
+    std::vector<Layer> layers = s.doc.layers();
+    QCOMPARE(sets.size(), std::size_t(1));
+    SwapSet &set = sets.front();
+    SwapDrawing &drawing = set.drawings.front();
+    std::vector<StrokeGroup *> showing;
+    StrokeGroup *plain = nullptr;
+    for (Frame &f : layers.front().cels)
+        for (StrokeGroup &g : f.groups) {
+            if (g.swap.set == setId)
+                showing.push_back(&g);
+            else if (g.name == QLatin1String("Plain"))
+                plain = &g;
+        }
+    QCOMPARE(showing.size(), std::size_t(2));
+    QVERIFY(plain);
+    // The file is written as damaged: the ids changed everywhere that names them.
+    if (clash == QLatin1String("drawing")) {
+        drawing.id = layers.front().cels.front().id;
+        for (StrokeGroup *g : showing)
+            g->swap.drawing = drawing.id;
+    } else if (clash == QLatin1String("set")) {
+        set.id = plain->id;
+        for (StrokeGroup *g : showing)
+            g->swap.set = set.id;
+    } else {
+        drawing.strokes.front().id = plain->strokes.front().id;
+        for (StrokeGroup *g : showing)
+            g->strokes.front().id = plain->strokes.front().id;
+    }
+    const QByteArray bytes = serializeFinbook(layers, s.doc.settings(), {}, {}, {}, sets);
+    const auto strict = readFinbook(bytes);
+    QVERIFY(!strict.hasValue());
+    QVERIFY2(strict.error().message.contains(QLatin1String("already used")),
+             qPrintable(strict.error().message));
+    QStringList problems;
+    const auto recovered = recoverFinbook(bytes, &problems);
+    QVERIFY(recovered.hasValue());
+    QVERIFY2(problems.join(' ').contains(QLatin1String("new ones")),
+             qPrintable(problems.join('|')));
+    // The set is kept, both frames still show its drawing, and they share its strokes.
+    QCOMPARE(recovered->swapSets.size(), std::size_t(1));
+    Document doc;
+    adoptLoadedDocument(doc, *recovered);
+    int linked = 0;
+    for (const Frame &f : doc.frames())
+        for (const StrokeGroup &g : f.groups)
+            linked += g.swap.linked() ? 1 : 0;
+    QCOMPARE(linked, 2);
+    QString why;
+    QVERIFY2(drawingsShared(doc, &why), qPrintable(why));
+    // What is saved opens strictly, the same again.
+    const QByteArray saved = serializeFinbook(doc);
+    const auto again = readFinbook(saved);
+    QVERIFY2(again.hasValue(), qPrintable(again ? QString() : again.error().message));
+    Document reopened;
+    adoptLoadedDocument(reopened, *again);
+    QCOMPARE(serializeFinbook(reopened), saved);
+    // An edit of the drawing still reaches both frames.
+    const auto mouth =
+        std::find_if(reopened.frameAt(0).groups.begin(), reopened.frameAt(0).groups.end(),
+                     [](const StrokeGroup &g) { return g.name == QLatin1String("Mouth"); });
+    QVERIFY(mouth != reopened.frameAt(0).groups.end() && mouth->swap.linked());
+    const std::size_t before = mouth->strokes.size();
+    reopened.undoStack()->push(
+        new AddStrokeCommand(&reopened, mouth->id, lineStroke({1, 1}, {2, 2}, 2, 1.0f)));
+    for (const Frame &f : reopened.frames())
+        for (const StrokeGroup &g : f.groups)
+            if (g.swap.linked())
+                QCOMPARE(g.strokes.size(), before + 1);
+    QVERIFY2(drawingsShared(reopened, &why), qPrintable(why));
 }
 
 void TestSwap::randomEditsUndoExactlyAndKeepDrawingsShared()
