@@ -107,6 +107,7 @@ private slots:
     void rigidMotionIsRecovered_data();
     void rigidMotionIsRecovered();
     void bentArmKeepsItsElbow();
+    void farTurnedArmIsFoundWithTheSkeleton();
     void reversedShuffledStrokesGiveTheSameFit();
     void pinDisambiguatesAMirror();
     void movedPinRefits();
@@ -200,6 +201,46 @@ void TestBetweenFit::bentArmKeepsItsElbow()
     const double nonRigid = maxRowDistance(rigid, moved);
     QVERIFY2(nonRigid < 0.01 * 300.0, qPrintable(QString::number(nonRigid)));
     QVERIFY(maxRowDistance(moved, rest) < 0.02 * 300.0);
+}
+
+// A forearm a third of the arm long, turned by 120°: from the whole-arm alignment (a
+// compromise between the two halves) the ICP settles with the forearm on the upper arm's
+// lines; with A's skeleton (shoulder, elbow, hand) the upper arm, the longest part, is placed
+// first and the forearm turned about the elbow, and the fit lands.
+void TestBetweenFit::farTurnedArmIsFoundWithTheSkeleton()
+{
+    const DrawingA a(60, 8, 300.0, 40.0, 4.0);
+    QVERIFY(a.source);
+    const test::ElbowBend bend{{200.0, 20.0}, 120.0};
+    const StrokePoints b = bentArm(bend, 300.0, 40.0);
+    const auto target = rigidFitTarget(b.P, b.N);
+    const auto farError = [&](const RigidFitResult &fit) {
+        double worst = 0.0;
+        for (Eigen::Index s = 0; s < a.strokes.P.rows(); ++s) {
+            const Eigen::Vector2d p = a.strokes.P.row(s).transpose();
+            if (std::abs(p.x() - bend.elbow.x()) > 60.0)
+                worst = std::max(worst, (fit.samples.row(s).transpose() - bend.apply(p)).norm());
+        }
+        return worst;
+    };
+    const RigidFitResult plain = rigidFit(*a.source, *target);
+    FitSkeleton skeleton;
+    skeleton.joints = {{0.0, 20.0}, {200.0, 20.0}, {300.0, 20.0}};
+    skeleton.parent = {-1, 0, 1};
+    const RigidFitResult jointed = rigidFit(*a.source, *target, {}, skeleton);
+    qInfo("far samples: %.1f px off without the skeleton, %.1f px with it", farError(plain),
+          farError(jointed));
+    QCOMPARE(int(jointed.status), int(FitStatus::Fitted));
+    QVERIFY2(farError(jointed) < 0.03 * 300.0, qPrintable(QString::number(farError(jointed))));
+    QVERIFY(farError(jointed) < farError(plain));
+    // A skeleton that is not one (a parent after its child, a NaN joint) is ignored.
+    FitSkeleton bad = skeleton;
+    bad.parent = {-1, 2, 1};
+    QVERIFY(rigidFit(*a.source, *target, {}, bad).U.allFinite());
+    bad = skeleton;
+    bad.joints[1].x() = std::numeric_limits<double>::quiet_NaN();
+    const RigidFitResult ignored = rigidFit(*a.source, *target, {}, bad);
+    QVERIFY(ignored.U.allFinite());
 }
 
 void TestBetweenFit::reversedShuffledStrokesGiveTheSameFit()

@@ -101,7 +101,8 @@ double symmetricChamfer(const Eigen::MatrixX2d &A, const RigidFitTarget &target)
 }
 
 Similarity coarseAlignment(const RigidFitSource &source, const RigidFitTarget &target,
-                           const FitPins &pins, const RigidFitOptions &options, double &chamfer)
+                           const FitPins &pins, const RigidFitOptions &options, double &chamfer,
+                           Similarity *unturned)
 {
     const Moments a = momentsOf(source.rest), b = momentsOf(target.P);
     const double scale = options.allowScale && a.spread > 0.0 && b.spread > 0.0
@@ -112,6 +113,8 @@ Similarity coarseAlignment(const RigidFitSource &source, const RigidFitTarget &t
         const Similarity s = procrustes(pinRest, pins.targets,
                                         Eigen::VectorXd::Ones(pinRest.rows()), options.allowScale);
         chamfer = symmetricChamfer(s.apply(source.rest), target);
+        if (unturned)
+            *unturned = s;
         return s;
     }
     // The un-rotated placement and the two proper rotations among the axes' four sign
@@ -132,6 +135,8 @@ Similarity coarseAlignment(const RigidFitSource &source, const RigidFitTarget &t
                             ? Eigen::Vector2d(pins.targets.row(0).transpose() -
                                               s.linear * pinRest.row(0).transpose())
                             : Eigen::Vector2d(b.centroid - s.linear * a.centroid);
+        if (unturned && std::abs(angleOf(R)) < 1e-12)
+            *unturned = s;
         const double c = symmetricChamfer(s.apply(source.rest), target);
         if (c < chamfer - tie) {
             chamfer = c;

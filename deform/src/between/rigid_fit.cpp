@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace finbook::deform::between {
 namespace {
@@ -191,24 +192,65 @@ RigidFitResult unfitted(const RigidFitSource &source, FitStatus status, std::str
 RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &target,
                         const FitPins &pins, const RigidFitOptions &options)
 {
+    return rigidFit(source, target, pins, FitSkeleton{}, options);
+}
+
+RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &target,
+                        const FitPins &pins, const FitSkeleton &skeleton,
+                        const RigidFitOptions &options)
+{
     if (target.P.rows() == 0)
         return unfitted(source, FitStatus::EmptyTarget, "drawing B has no points to fit A to");
     if (!detail::pinsValid(source, pins))
         return unfitted(source, FitStatus::InvalidPins, "a correspondence pin is not on A");
     RigidFitResult r;
-    detail::Similarity start =
-        detail::coarseAlignment(source, target, pins, options, r.coarse.chamfer);
+    detail::Similarity unturned;
+    const detail::Similarity start =
+        detail::coarseAlignment(source, target, pins, options, r.coarse.chamfer, &unturned);
     r.coarse.linear = start.linear;
     r.coarse.translation = start.translation;
+    // From a rigid placement (and, with a skeleton, A's parts turned from it), the stages.
+    const auto fitFrom = [&](const detail::Similarity &rigid, bool articulated) {
+        const double scale = std::sqrt(std::abs(rigid.linear.determinant()));
+        const Complex rotation =
+            std::polar(1.0, std::atan2(rigid.linear(1, 0) - rigid.linear(0, 1),
+                                       rigid.linear(0, 0) + rigid.linear(1, 1)));
+        const Eigen::MatrixX2d U0 =
+            articulated ? detail::articulatedStart(source, target, rigid, skeleton, options)
+                        : rigid.apply(source.V);
+        RigidFitResult fit = r;
+        FitState state = stateFrom(U0, source.F.rows(), rotation, options.allowScale ? scale : 1.0);
+        runStages(source, target, pins, options, options.stiffness, options.stageIterations, state,
+                  fit);
+        detail::reportResidual(source, target, options, fit);
+        return fit;
+    };
     const detail::Similarity rigid = detail::rigidIcp(source, target, pins, options, start);
-    const double scale = std::sqrt(std::abs(rigid.linear.determinant()));
-    const Complex rotation = std::polar(1.0, std::atan2(rigid.linear(1, 0) - rigid.linear(0, 1),
-                                                        rigid.linear(0, 0) + rigid.linear(1, 1)));
-    FitState state = stateFrom(rigid.apply(source.V), source.F.rows(), rotation,
-                               options.allowScale ? scale : 1.0);
-    runStages(source, target, pins, options, options.stiffness, options.stageIterations, state, r);
-    detail::reportResidual(source, target, options, r);
-    return r;
+    if (skeleton.empty())
+        return fitFrom(rigid, false);
+    // With A's parts the fit has more than one start, and keeps the fit whose lines lie
+    // closest to B's (both ways), the less stretched: the articulated start can turn a part
+    // onto the wrong limb of B, and a whole-drawing turn that the moments chose (B's limbs
+    // posed otherwise move its axes) can be worse than none.
+    const auto score = [](const RigidFitResult &f) {
+        if (f.status == FitStatus::SolveFailed)
+            return std::numeric_limits<double>::infinity();
+        return (f.medianResidual + f.coverageMedian) * (1.0 + f.distortion);
+    };
+    std::vector<RigidFitResult> fits;
+    fits.push_back(fitFrom(rigid, false));
+    fits.push_back(fitFrom(rigid, true));
+    if ((unturned.linear - start.linear).norm() > 1e-9 * std::max(1.0, start.linear.norm()))
+        fits.push_back(fitFrom(detail::rigidIcp(source, target, pins, options, unturned), true));
+    int iterations = 0;
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < fits.size(); ++i) {
+        iterations += fits[i].iterations;
+        if (score(fits[i]) < score(fits[best]))
+            best = i;
+    }
+    fits[best].iterations = iterations;
+    return std::move(fits[best]);
 }
 
 RigidFitResult rigidRefit(const RigidFitSource &source, const RigidFitTarget &target,

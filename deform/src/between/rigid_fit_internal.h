@@ -72,11 +72,20 @@ Similarity procrustes(const Eigen::MatrixX2d &X, const Eigen::MatrixX2d &Y,
 double symmetricChamfer(const Eigen::MatrixX2d &A, const RigidFitTarget &target);
 
 // Coarse alignment of the rest samples to B (moments, then pins), then rigid ICP.
+// `unturned` (optional) gets the candidate that does not turn A (the chosen one when pins
+// place A).
 Similarity coarseAlignment(const RigidFitSource &source, const RigidFitTarget &target,
-                           const FitPins &pins, const RigidFitOptions &options, double &chamfer);
+                           const FitPins &pins, const RigidFitOptions &options, double &chamfer,
+                           Similarity *unturned = nullptr);
 Similarity rigidIcp(const RigidFitSource &source, const RigidFitTarget &target, const FitPins &pins,
                     const RigidFitOptions &options, Similarity start);
 
+// The articulated coarse step (rigidFit with a FitSkeleton): the n×2 vertices to start the
+// ARAP stages from, `global` applied and then each bone's part turned about its base joint.
+// A skeleton without a bone gives global.apply(V).
+Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTarget &target,
+                                  const Similarity &global, const FitSkeleton &skeleton,
+                                  const RigidFitOptions &options);
 // Pins valid for this source: triangles in range, finite weights and targets.
 bool pinsValid(const RigidFitSource &source, const FitPins &pins);
 

@@ -148,6 +148,31 @@ struct RigidFitResult {
 RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &target,
                         const FitPins &pins = {}, const RigidFitOptions &options = {});
 
+// A's skeleton (its automatic one): joints in A's rest coordinates, parent[j] < j (−1 for a
+// root). Joints that are not finite, or parents out of range, make it ignored.
+struct FitSkeleton {
+    std::vector<Eigen::Vector2d> joints;
+    std::vector<int> parent;
+    bool empty() const { return joints.empty(); }
+};
+
+// The same with an articulated coarse step (as in articulated ICP, e.g. Pellegrini et al.
+// 2008). After the rigid alignment, the body — the bone with the most samples nearest it — is
+// placed by a rigid ICP of its own samples (the whole-drawing alignment is a compromise
+// between the body and every limb B shows turned); then, root to tips, each bone is turned
+// with everything below it about its base joint by the angle in ±120° that lays its own
+// samples best on B (the sum of distances to the nearest agreeing B point, each capped at 5 %
+// of B's diagonal; a bone with under 6 samples of its own is judged with everything below
+// it). The ARAP stages start from those turned parts (each vertex moved with the bone nearest
+// it). Such a start can also put a part on the wrong limb of B, so the stages run from three
+// starts — the rigid alignment, its articulated start, and the articulated start from the
+// unturned placement when the moments chose a turned one — and the fit whose samples and B's
+// points lie closest both ways (the sum of the two medians, times 1 + distortion) is kept.
+// With an empty skeleton this is rigidFit above.
+RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &target,
+                        const FitPins &pins, const FitSkeleton &skeleton,
+                        const RigidFitOptions &options = {});
+
 // After a pin was added, moved or removed: options.refitIterations ARAP ICP iterations at the
 // last stiffness, started from `previous` (a result of the same source; otherwise this is
 // rigidFit). Meant for live pin drags (≤ 100 ms at 2k vertices).
