@@ -10,7 +10,7 @@ namespace finbook::model {
 
 InsertInbetweensCommand::InsertInbetweensCommand(Document *doc, Id firstKey, Id secondKey,
                                                  int count, const InbetweenOptions &options,
-                                                 QUndoCommand *parent)
+                                                 const DrawingFits &fits, QUndoCommand *parent)
     : DocumentCommand(doc, parent)
 {
     setText(Command::tr("Generate In-betweens"));
@@ -24,7 +24,7 @@ InsertInbetweensCommand::InsertInbetweensCommand(Document *doc, Id firstKey, Id 
     m_layer = doc->currentLayerId();
     m_firstKey = doc->frameAt(a).id;
     m_plan = planInbetweens(doc->frameAt(a), doc->frameAt(b),
-                            inbetweenTimes(count, options.spacing), options.path);
+                            inbetweenTimes(count, options.spacing), options.path, fits);
     for (Frame &f : m_plan.frames)
         renumberFrame(f, doc);
 }

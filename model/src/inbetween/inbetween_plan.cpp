@@ -1,4 +1,5 @@
 #include <finbook/model/deform_setup.h>
+#include <finbook/model/inbetween/between_drawings.h>
 #include <finbook/model/inbetween/inbetween_plan.h>
 #include <finbook/model/skeleton/skeleton_join.h>
 
@@ -30,7 +31,18 @@ struct Matching {
     std::vector<InbetweenObjectReport> report;
 };
 
-Matching matchObjects(const Frame &first, const Frame &second)
+const DrawingFit *fitAt(const DrawingFits &fits, std::size_t i)
+{
+    return i < fits.size() ? fits[i].get() : nullptr;
+}
+
+// A fit made for these two objects (by id: the same keys).
+bool fitsPair(const DrawingFit *fit, const StrokeGroup &a, const StrokeGroup &b)
+{
+    return fit && fit->a.id == a.id && fit->b.id == b.id;
+}
+
+Matching matchObjects(const Frame &first, const Frame &second, const DrawingFits &fits)
 {
     Matching m;
     const std::size_t common = std::min(first.groups.size(), second.groups.size());
@@ -43,6 +55,11 @@ Matching matchObjects(const Frame &first, const Frame &second)
             m.pairs[i] = pairFate(a, second.groups[i]);
             r.secondIndex = int(i);
             r.fate = *m.pairs[i];
+        } else if (i < common && fitsPair(fitAt(fits, i), a, second.groups[i])) {
+            m.pairs[i] = ObjectFate::Fitted;
+            r.secondIndex = int(i);
+            r.fate = ObjectFate::Fitted;
+            r.rig = RigKind::None;
         }
         m.report.push_back(r);
     }
@@ -56,7 +73,7 @@ Matching matchObjects(const Frame &first, const Frame &second)
 }
 
 Frame inbetweenFrame(const Frame &first, const Frame &second, const Matching &m, double t,
-                     TargetPath path)
+                     TargetPath path, const DrawingFits &fits)
 {
     const bool early = t < kSwitchOver;
     Frame out;
@@ -67,6 +84,15 @@ Frame inbetweenFrame(const Frame &first, const Frame &second, const Matching &m,
     for (std::size_t i = 0; i < base.groups.size(); ++i) {
         if (i >= m.pairs.size() || !m.pairs[i]) {
             out.groups.push_back(base.groups[i]); // one key only: held as it is there
+            continue;
+        }
+        if (*m.pairs[i] == ObjectFate::Fitted) {
+            StrokeGroup g = betweenDrawing(*fitAt(fits, i), t);
+            g.id = first.groups[i].id;
+            g.name = first.groups[i].name;
+            g.visible = first.groups[i].visible;
+            g.locked = first.groups[i].locked;
+            out.groups.push_back(std::move(g));
             continue;
         }
         StrokeGroup g = first.groups[i]; // one object in both keys: the first key's
@@ -90,16 +116,35 @@ int InbetweenPlan::interpolatedCount() const
 }
 
 InbetweenPlan planInbetweens(const Frame &first, const Frame &second,
-                             const std::vector<double> &times, TargetPath path)
+                             const std::vector<double> &times, TargetPath path,
+                             const DrawingFits &fits)
 {
     InbetweenPlan plan;
-    const Matching m = matchObjects(first, second);
+    const Matching m = matchObjects(first, second, fits);
     plan.objects = m.report;
     plan.times = times;
     plan.frames.reserve(times.size());
     for (double t : times)
-        plan.frames.push_back(inbetweenFrame(first, second, m, std::isfinite(t) ? t : 0.0, path));
+        plan.frames.push_back(
+            inbetweenFrame(first, second, m, std::isfinite(t) ? t : 0.0, path, fits));
     return plan;
+}
+
+std::vector<int> differentDrawings(const Frame &first, const Frame &second)
+{
+    const auto inked = [](const StrokeGroup &g) {
+        return std::any_of(g.strokes.begin(), g.strokes.end(), [](const Stroke &s) {
+            return s.data && qAlpha(s.data->color) != 0 && s.data->points.size() >= 2;
+        });
+    };
+    std::vector<int> out;
+    const std::size_t common = std::min(first.groups.size(), second.groups.size());
+    for (std::size_t i = 0; i < common; ++i) {
+        const StrokeGroup &a = first.groups[i], &b = second.groups[i];
+        if (!sameDrawing(a, b) && inked(a) && inked(b))
+            out.push_back(int(i));
+    }
+    return out;
 }
 
 } // namespace finbook::model

@@ -16,8 +16,11 @@ class InsertInbetweensCommand : public DocumentCommand {
 public:
     static constexpr int kMaxInbetweens = 60;
 
+    // `fits`: Between Drawings' fits of the keys' objects drawn differently (fitKeyDrawings on
+    // the earlier key, then the later one); without them such objects switch over half way.
     InsertInbetweensCommand(Document *doc, Id firstKey, Id secondKey, int count,
-                            const InbetweenOptions &options, QUndoCommand *parent = nullptr);
+                            const InbetweenOptions &options, const DrawingFits &fits = {},
+                            QUndoCommand *parent = nullptr);
     const InbetweenPlan &plan() const { return m_plan; }
     // Ids of the inserted frames, in order.
     std::vector<Id> frameIds() const;

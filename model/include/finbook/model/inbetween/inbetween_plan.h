@@ -8,9 +8,16 @@
 
 #include <QString>
 
+#include <memory>
 #include <vector>
 
 namespace finbook::model {
+
+struct DrawingFit; // inbetween/between_drawings.h
+
+// Per position in the keys' object lists: the fit of the first key's object onto the second
+// key's (Between Drawings), where the two show different drawings; null elsewhere.
+using DrawingFits = std::vector<std::shared_ptr<const DrawingFit>>;
 
 struct InbetweenOptions {
     Spacing spacing;
@@ -24,6 +31,7 @@ enum class ObjectFate {
     HeldRigDiffers, // same drawing, rigs of another kind or rest definition: first key's held
     FirstKeyOnly,   // only in the first key (or drawn differently): shown while t < 0.5
     SecondKeyOnly,  // only in the second key (or drawn differently): shown while t >= 0.5
+    Fitted, // drawn differently in each key, the first fitted onto the second (Between Drawings)
 };
 
 struct InbetweenObjectReport {
@@ -48,7 +56,15 @@ struct InbetweenPlan {
 // list, from it on the second's, so such objects switch over half way like a drawn breakdown.
 // Interpolated objects have no pose yet (deformed == nullptr); held ones keep their key's pose.
 // Every frame gets the first key's hold. Non-finite t counts as 0.
+// With `fits` (DrawingFits), a pair drawn differently that has a fit is one object too
+// (ObjectFate::Fitted): each in-between shows betweenDrawing(fit, t), as editable strokes
+// with no rig, under the first key's object's id and name.
 InbetweenPlan planInbetweens(const Frame &first, const Frame &second,
-                             const std::vector<double> &times, TargetPath path = TargetPath::Arc);
+                             const std::vector<double> &times, TargetPath path = TargetPath::Arc,
+                             const DrawingFits &fits = {});
+
+// The pairs of objects the two keys show drawn differently at the same position (both with
+// inked lines, neither posed by a swap set): the positions that Between Drawings fits.
+std::vector<int> differentDrawings(const Frame &first, const Frame &second);
 
 } // namespace finbook::model

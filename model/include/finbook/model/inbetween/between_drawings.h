@@ -1,0 +1,101 @@
+// Between Drawings (issue 50): in-betweens of two different drawings of one object, key A and
+// key B, with different strokes, stroke counts, orders and directions.
+//
+// A's mesh (the one its deformers use) is fitted onto B's lines as rigidly as possible
+// (deform/between/rigid_fit.h: ARAP-regularised non-rigid ICP), then the fitted motion is
+// interpolated as rigidly as possible (deform/between/arap_interpolation.h: Alexa, Cohen-Or &
+// Levin 2000). An in-between at t is A's strokes carried by the motion at t; over the last part
+// of the range (BetweenOptions::crossFade) they fade out while B's own strokes fade in, carried
+// backwards by the same motion (each B point placed by affine coordinates in the fitted
+// triangle nearest it, so that at t = 1 it is exactly where B drew it): the sequence lands on
+// B's lines. A's fills follow (their seeds carried, their strokes A's own).
+#pragma once
+
+#include <finbook/deform/between/rigid_fit.h>
+#include <finbook/model/deform_setup.h>
+#include <finbook/model/inbetween/inbetween_plan.h>
+#include <finbook/model/types.h>
+
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+namespace finbook::deform::between {
+struct ArapInterpolation;
+}
+
+namespace finbook::model {
+
+// The fit's stiffness for drawings: stiff to relaxed, stopping short of the most relaxed
+// stages of rigid_fit.h's default (on ../shared/data they let limbs stretch by 5–40 % to
+// follow lines, and fail more fits for stretching; figures in tests/README.md).
+inline deform::between::RigidFitOptions drawingFitOptions()
+{
+    deform::between::RigidFitOptions o;
+    o.stiffness = {3e-2, 1e-2, 3e-3};
+    return o;
+}
+
+struct BetweenOptions {
+    // The share of the range at its end over which A's strokes fade out and B's fade in:
+    // 0.3 = from t = 0.7. 0 = no cross-fade (B's strokes never shown). Clamped to 0..1.
+    double crossFade = 0.3;
+    // Turn A's parts about their joints (its automatic skeleton) to B before the fit
+    // (rigid_fit.h, the articulated coarse step): limbs B shows turned far are found.
+    bool articulated = true;
+    deform::between::RigidFitOptions fit = drawingFitOptions();
+};
+
+// A correspondence pin: a point of A's drawing (canvas px, on or inside its shape) and where it
+// belongs on B.
+struct BetweenPin {
+    QPointF onA;
+    QPointF onB;
+};
+
+// The fit of A onto B and what the in-betweens need from it. Immutable.
+struct DrawingFit {
+    StrokeGroup a, b; // the keys as shown (a posed key as its pose would be applied)
+    std::shared_ptr<const MeshedObject> meshed; // A's mesh and every A stroke point in it
+    std::shared_ptr<const deform::between::RigidFitSource> source;
+    std::shared_ptr<const deform::between::RigidFitTarget> target;
+    deform::between::RigidFitResult fit;
+    std::shared_ptr<const deform::between::ArapInterpolation> motion; // rest → fitted
+    // Each B stroke point (stroke after stroke) in the fitted mesh: its triangle and affine
+    // coordinates there (they may lie outside it for a point beyond A's shape).
+    Eigen::VectorXi bTriangle;
+    Eigen::MatrixX3d bCoords;
+    // Each of A's fill seeds (first regions, then Fill::more, fill after fill) in A's mesh.
+    geometry::Embedding seeds;
+    double seconds = 0.0; // the time the fit took (mesh, precompute, fit, interpolation)
+};
+
+// Fits A onto B. Errors are sentences for the user; a fit that fails says where (the region of
+// A whose lines found nothing to match in B).
+Expected<std::shared_ptr<const DrawingFit>, QString>
+fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
+            const std::vector<BetweenPin> &pins = {}, const BetweenOptions &options = {});
+
+// The drawing of the in-between at t (0 < t < 1; clamped): a copy of A (its name and mesh
+// density; no rig, no pose) holding A's strokes carried to t and, inside the cross-fade, B's
+// strokes too, each stroke's ink faded. Strokes and fills keep the ids of the keys' (A's, then
+// B's): give them new ones before putting the drawing in a document.
+StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions &options = {});
+
+// The fits of the objects the two keys show drawn differently (differentDrawings), in
+// inbetween_plan.h's DrawingFits form, and for each pair that could not be fitted its position
+// and the reason.
+struct KeyFits {
+    DrawingFits fits;
+    std::vector<std::pair<int, QString>> failures;
+};
+KeyFits fitKeyDrawings(const Frame &first, const Frame &second, double closeGap,
+                       const BetweenOptions &options = {});
+
+// The drawing `group` shows, as editable strokes: itself at rest, or its pose applied (the
+// strokes and fills Apply Pose would make; new stroke ids from `newId`).
+StrokeGroup shownDrawing(const StrokeGroup &group, double closeGap,
+                         const std::function<Id()> &newId);
+
+} // namespace finbook::model

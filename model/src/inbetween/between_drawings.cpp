@@ -1,0 +1,374 @@
+#include <finbook/deform/between/arap_interpolation.h>
+#include <finbook/model/fill/fill_render.h>
+#include <finbook/model/fill/fill_resolve.h>
+#include <finbook/model/inbetween/between_drawings.h>
+#include <finbook/model/skeleton/skeleton_commands.h>
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+namespace finbook::model {
+
+namespace {
+
+namespace between = deform::between;
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("BetweenDrawings", text);
+}
+
+bool inked(const Stroke &s)
+{
+    return s.data && qAlpha(s.data->color) != 0 && !s.data->points.empty();
+}
+
+// The unit normal of a stroke at point k, from its neighbours two steps away; zero where the
+// stroke has no direction there (a dot).
+Eigen::Vector2d normalAt(const std::vector<StrokePoint> &points, std::size_t k)
+{
+    const std::size_t a = k >= 2 ? k - 2 : 0;
+    const std::size_t b = std::min(points.size() - 1, k + 2);
+    const Eigen::Vector2d d(points[b].x - points[a].x, points[b].y - points[a].y);
+    const double length = d.norm();
+    if (!(length > 1e-9))
+        return Eigen::Vector2d::Zero();
+    return Eigen::Vector2d(-d.y(), d.x()) / length;
+}
+
+// At most this many of A's stroke points pull on the fit (evenly along the strokes): beyond
+// it, more samples cost time and add nothing the mesh can follow.
+constexpr std::size_t kMaxSamples = 2000;
+constexpr std::size_t kMaxTargetPoints = 6000;
+
+Eigen::Vector2d at(const Eigen::MatrixX2d &U, const Eigen::MatrixX3i &F, int triangle,
+                   const Eigen::RowVector3d &coords)
+{
+    Eigen::Vector2d p = Eigen::Vector2d::Zero();
+    for (int j = 0; j < 3; ++j)
+        p += coords(j) * U.row(F(triangle, j)).transpose();
+    return p;
+}
+
+// Affine coordinates of p in triangle (a, b, c), unclamped; nullopt for a triangle of no area.
+std::optional<Eigen::RowVector3d> affineCoords(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
+                                               const Eigen::Vector2d &b, const Eigen::Vector2d &c)
+{
+    const Eigen::Vector2d u = b - a, v = c - a, w = p - a;
+    const double det = u.x() * v.y() - u.y() * v.x();
+    const double scale = std::max(u.squaredNorm(), v.squaredNorm());
+    if (!(std::abs(det) > 1e-9 * scale) || !std::isfinite(det))
+        return std::nullopt;
+    const double s = (w.x() * v.y() - w.y() * v.x()) / det;
+    const double r = (u.x() * w.y() - u.y() * w.x()) / det;
+    return Eigen::RowVector3d(1.0 - s - r, s, r);
+}
+
+Id largestId(const StrokeGroup &g)
+{
+    Id top = g.id;
+    for (const Stroke &s : g.strokes)
+        top = std::max(top, s.id);
+    return top;
+}
+
+} // namespace
+
+StrokeGroup shownDrawing(const StrokeGroup &group, double closeGap,
+                         const std::function<Id()> &newId)
+{
+    StrokeGroup out = group;
+    out.rig = Rig();
+    out.deformed = nullptr;
+    out.swap = SwapLink();
+    if (!group.isDeformed() || group.deformed->strokes.size() != group.strokes.size())
+        return out;
+    out.strokes = bakedStrokes(group, closeGap, newId, HiddenLines::KeepUnseen);
+    out.fills = fillsAfterBake(group, out.strokes, closeGap);
+    return out;
+}
+
+Expected<std::shared_ptr<const DrawingFit>, QString>
+fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
+            const std::vector<BetweenPin> &pins, const BetweenOptions &options)
+{
+    const auto started = std::chrono::steady_clock::now();
+    auto fit = std::make_shared<DrawingFit>();
+    Id next = std::max(largestId(a), largestId(b));
+    const auto newId = [&next] { return ++next; };
+    fit->a = shownDrawing(a, closeGap, newId);
+    fit->b = shownDrawing(b, closeGap, newId);
+    const StrokeGroup &A = fit->a;
+    const StrokeGroup &B = fit->b;
+    if (std::none_of(A.strokes.begin(), A.strokes.end(), inked))
+        return finbook::unexpected(tr("The first key has no lines to carry."));
+    if (std::none_of(B.strokes.begin(), B.strokes.end(), inked))
+        return finbook::unexpected(tr("The second key has no lines to fit to."));
+
+    const auto meshed = meshObject(MeshKey::of(A, closeGap));
+    if (!meshed)
+        return finbook::unexpected(tr("The first key could not be meshed: %1").arg(meshed.error()));
+    fit->meshed = *meshed;
+    const Eigen::MatrixX2d &V = fit->meshed->mesh.V;
+    const Eigen::MatrixX3i &F = fit->meshed->mesh.F;
+    const geometry::Embedding &all = fit->meshed->embedding;
+
+    // A's samples: its inked stroke points that lie in the mesh and have a direction.
+    std::size_t inkedPoints = 0;
+    for (const Stroke &s : A.strokes)
+        inkedPoints += inked(s) ? s.data->points.size() : 0;
+    const std::size_t stride =
+        std::max<std::size_t>(1, (inkedPoints + kMaxSamples - 1) / kMaxSamples);
+    std::vector<Eigen::Index> rows;
+    std::vector<Eigen::Vector2d> normals;
+    std::size_t counted = 0;
+    for (std::size_t s = 0; s < A.strokes.size(); ++s) {
+        if (!inked(A.strokes[s]))
+            continue;
+        const std::vector<StrokePoint> &points = A.strokes[s].data->points;
+        for (std::size_t k = 0; k < points.size(); ++k, ++counted) {
+            if (counted % stride != 0)
+                continue;
+            const Eigen::Index row = Eigen::Index(fit->meshed->strokeOffsets[s] + k);
+            const Eigen::Vector2d n = normalAt(points, k);
+            if (row >= all.I.size() || all.I(row) < 0 || n.isZero())
+                continue;
+            rows.push_back(row);
+            normals.push_back(n);
+        }
+    }
+    if (rows.empty())
+        return finbook::unexpected(tr("The first key's lines are dots: there is nothing to fit."));
+    geometry::Embedding samples;
+    samples.I.resize(Eigen::Index(rows.size()));
+    samples.B.resize(Eigen::Index(rows.size()), 3);
+    Eigen::MatrixX2d N(Eigen::Index(rows.size()), 2);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        samples.I(Eigen::Index(i)) = all.I(rows[i]);
+        samples.B.row(Eigen::Index(i)) = all.B.row(rows[i]);
+        N.row(Eigen::Index(i)) = normals[i].transpose();
+    }
+    const auto source = between::rigidFitPrecompute(V, F, samples, N);
+    if (!source)
+        return finbook::unexpected(tr("The first key's mesh cannot be fitted: %1")
+                                       .arg(QString::fromStdString(source.error().message)));
+    fit->source = *source;
+
+    // B's points: every inked stroke point (at most kMaxTargetPoints, evenly) with its normal.
+    std::size_t bPoints = 0;
+    for (const Stroke &s : B.strokes)
+        bPoints += inked(s) ? s.data->points.size() : 0;
+    const std::size_t bStride =
+        std::max<std::size_t>(1, (bPoints + kMaxTargetPoints - 1) / kMaxTargetPoints);
+    std::vector<Eigen::Vector2d> targetPoints, targetNormals;
+    counted = 0;
+    for (const Stroke &s : B.strokes) {
+        if (!inked(s))
+            continue;
+        const std::vector<StrokePoint> &points = s.data->points;
+        for (std::size_t k = 0; k < points.size(); ++k, ++counted) {
+            const Eigen::Vector2d n = normalAt(points, k);
+            if (counted % bStride != 0 || n.isZero())
+                continue;
+            targetPoints.emplace_back(points[k].x, points[k].y);
+            targetNormals.push_back(n);
+        }
+    }
+    Eigen::MatrixX2d P(Eigen::Index(targetPoints.size()), 2), NB(P.rows(), 2);
+    for (std::size_t i = 0; i < targetPoints.size(); ++i) {
+        P.row(Eigen::Index(i)) = targetPoints[i].transpose();
+        NB.row(Eigen::Index(i)) = targetNormals[i].transpose();
+    }
+    fit->target = between::rigidFitTarget(P, NB);
+
+    between::FitPins fitPins;
+    if (!pins.empty()) {
+        Eigen::MatrixX2d onA(Eigen::Index(pins.size()), 2);
+        fitPins.targets.resize(Eigen::Index(pins.size()), 2);
+        for (std::size_t i = 0; i < pins.size(); ++i) {
+            onA.row(Eigen::Index(i)) << pins[i].onA.x(), pins[i].onA.y();
+            fitPins.targets.row(Eigen::Index(i)) << pins[i].onB.x(), pins[i].onB.y();
+        }
+        fitPins.where = geometry::embed(V, F, onA);
+    }
+    between::FitSkeleton skeleton;
+    if (options.articulated)
+        if (const auto built = buildSkeletonRig(A, {}, std::nullopt, closeGap)) {
+            for (const QPointF &j : built->joints)
+                skeleton.joints.emplace_back(j.x(), j.y());
+            skeleton.parent = built->parent;
+        }
+    fit->fit = between::rigidFit(*fit->source, *fit->target, fitPins, skeleton, options.fit);
+    const between::RigidFitResult &r = fit->fit;
+    if (r.status != between::FitStatus::Fitted) {
+        const Eigen::AlignedBox2d &where = r.worstRegion;
+        QString at;
+        if (!where.isEmpty())
+            at = tr(" The lines of the first key around (%1, %2), %3 × %4 px, find nothing "
+                    "like them in the second key.")
+                     .arg(qRound(where.center().x()))
+                     .arg(qRound(where.center().y()))
+                     .arg(qRound(where.sizes().x()))
+                     .arg(qRound(where.sizes().y()));
+        switch (r.status) {
+        case between::FitStatus::ResidualTooLarge:
+            return finbook::unexpected(
+                tr("The two drawings are too different to fit one onto the other "
+                   "(%1 % of the drawing apart on the median, %2 % stretched).%3 Put a few "
+                   "correspondence pins, or draw the keys closer.")
+                    .arg(100.0 * std::max(r.relativeMedian,
+                                          r.targetDiagonal > 0 ? r.coverageMedian / r.targetDiagonal
+                                                               : 0.0),
+                         0, 'f', 1)
+                    .arg(100.0 * r.distortion, 0, 'f', 0)
+                    .arg(at));
+        case between::FitStatus::InvalidPins:
+            return finbook::unexpected(
+                tr("A correspondence pin is not on the first key's drawing."));
+        case between::FitStatus::EmptyTarget:
+            return finbook::unexpected(tr("The second key has no lines to fit to."));
+        default:
+            return finbook::unexpected(tr("The fit could not be solved."));
+        }
+    }
+    const auto motion = between::arapInterpolationPrecompute(V, r.U, F);
+    if (!motion)
+        return finbook::unexpected(tr("The fitted motion cannot be interpolated: %1")
+                                       .arg(QString::fromStdString(motion.error().message)));
+    fit->motion = *motion;
+
+    // B's points in the fitted mesh, to carry them backwards.
+    std::vector<Eigen::Vector2d> bAll;
+    for (const Stroke &s : B.strokes)
+        if (s.data)
+            for (const StrokePoint &p : s.data->points)
+                bAll.emplace_back(p.x, p.y);
+    Eigen::MatrixX2d BP(Eigen::Index(bAll.size()), 2);
+    for (std::size_t i = 0; i < bAll.size(); ++i)
+        BP.row(Eigen::Index(i)) = bAll[i].transpose();
+    const geometry::Embedding inFit = geometry::embed(r.U, F, BP);
+    fit->bTriangle = inFit.I;
+    fit->bCoords = inFit.B;
+    for (Eigen::Index i = 0; i < BP.rows(); ++i) {
+        const int t = inFit.I(i);
+        if (t < 0)
+            continue;
+        const auto c = affineCoords(BP.row(i).transpose(), r.U.row(F(t, 0)).transpose(),
+                                    r.U.row(F(t, 1)).transpose(), r.U.row(F(t, 2)).transpose());
+        if (c)
+            fit->bCoords.row(i) = *c;
+    }
+
+    std::vector<QPointF> seeds;
+    for (const Fill &f : A.fills) {
+        seeds.push_back(f.seed);
+        for (const FillPlace &place : f.more)
+            seeds.push_back(place.seed);
+    }
+    Eigen::MatrixX2d S(Eigen::Index(seeds.size()), 2);
+    for (std::size_t i = 0; i < seeds.size(); ++i)
+        S.row(Eigen::Index(i)) << seeds[i].x(), seeds[i].y();
+    fit->seeds = geometry::embed(V, F, S);
+    fit->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return std::shared_ptr<const DrawingFit>(std::move(fit));
+}
+
+KeyFits fitKeyDrawings(const Frame &first, const Frame &second, double closeGap,
+                       const BetweenOptions &options)
+{
+    KeyFits out;
+    for (const int i : differentDrawings(first, second)) {
+        const auto fit = fitDrawings(first.groups[std::size_t(i)], second.groups[std::size_t(i)],
+                                     closeGap, {}, options);
+        if (!fit) {
+            out.failures.emplace_back(i, fit.error());
+            continue;
+        }
+        out.fits.resize(std::max(out.fits.size(), std::size_t(i) + 1));
+        out.fits[std::size_t(i)] = *fit;
+    }
+    return out;
+}
+
+StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions &options)
+{
+    t = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
+    const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
+    const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
+    Eigen::MatrixX2d Ut;
+    if (const auto solved = between::arapInterpolate(*fit.motion, t); solved && solved->allFinite())
+        Ut = *solved;
+    else // never seen; the plain blend is finite at least
+        Ut = (1.0 - t) * V + t * fit.fit.U;
+
+    StrokeGroup out = fit.a;
+    const double fade =
+        std::clamp(std::isfinite(options.crossFade) ? options.crossFade : 0.0, 0.0, 1.0);
+    const double w = fade > 0.0 && t > 1.0 - fade ? (t - (1.0 - fade)) / fade : 0.0;
+    const auto faded = [](QRgb colour, double keep) {
+        if (qAlpha(colour) == 0)
+            return colour; // a line of no ink stays one
+        const int alpha = std::max(1, int(std::lround(qAlpha(colour) * keep)));
+        return qRgba(qRed(colour), qGreen(colour), qBlue(colour), alpha);
+    };
+    const geometry::Embedding &all = fit.meshed->embedding;
+    for (std::size_t s = 0; s < out.strokes.size(); ++s) {
+        Stroke &stroke = out.strokes[s];
+        if (!stroke.data)
+            continue;
+        auto data = std::make_shared<StrokeData>(*stroke.data);
+        for (std::size_t k = 0; k < data->points.size(); ++k) {
+            const Eigen::Index row = Eigen::Index(fit.meshed->strokeOffsets[s] + k);
+            if (row >= all.I.size() || all.I(row) < 0)
+                continue; // not in the mesh (never for a meshed stroke point): left in place
+            const Eigen::Vector2d p = at(Ut, F, all.I(row), all.B.row(row));
+            data->points[k].x = float(p.x());
+            data->points[k].y = float(p.y());
+        }
+        data->color = faded(data->color, 1.0 - w);
+        stroke.data = std::move(data);
+    }
+    if (w > 0.0) {
+        Eigen::Index row = 0;
+        for (const Stroke &source : fit.b.strokes) {
+            if (!source.data)
+                continue;
+            const Eigen::Index first = row;
+            row += Eigen::Index(source.data->points.size());
+            if (!inked(source))
+                continue;
+            auto data = std::make_shared<StrokeData>(*source.data);
+            for (std::size_t k = 0; k < data->points.size(); ++k) {
+                const Eigen::Index r = first + Eigen::Index(k);
+                if (r >= fit.bTriangle.size() || fit.bTriangle(r) < 0)
+                    continue;
+                const Eigen::Vector2d p = at(Ut, F, fit.bTriangle(r), fit.bCoords.row(r));
+                data->points[k].x = float(p.x());
+                data->points[k].y = float(p.y());
+            }
+            data->color = faded(data->color, w);
+            out.strokes.push_back(Stroke{source.id, std::move(data)});
+        }
+    }
+    Eigen::Index seed = 0;
+    const auto carried = [&](QPointF &p) {
+        const Eigen::Index i = seed++;
+        if (i >= fit.seeds.I.size() || fit.seeds.I(i) < 0)
+            return;
+        const Eigen::Vector2d q = at(Ut, F, fit.seeds.I(i), fit.seeds.B.row(i));
+        p = QPointF(q.x(), q.y());
+    };
+    for (Fill &f : out.fills) {
+        carried(f.seed);
+        for (FillPlace &place : f.more)
+            carried(place.seed);
+    }
+    return out;
+}
+
+} // namespace finbook::model

@@ -1,0 +1,406 @@
+// Between Drawings (issue 50): in-betweens of two different drawings of one object. A figure
+// (a body with an arm) drawn as key A, and key B drawn again from it — moved, or with the arm
+// turned — resampled, its lines split, reversed and shuffled. The fit finds where A went; the
+// in-betweens start on A's lines, land on B's, keep the arm's length, and go in as one undo step.
+#include "stroke_support.h"
+
+#include <finbook/deform/between/arap_interpolation.h>
+#include <finbook/model/commands.h>
+#include <finbook/model/document.h>
+#include <finbook/model/fill/fill_commands.h>
+#include <finbook/model/finbook_file.h>
+#include <finbook/model/inbetween/between_drawings.h>
+#include <finbook/model/inbetween/inbetween_commands.h>
+
+#include <QTest>
+#include <QtMath>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <random>
+#include <set>
+
+using namespace finbook;
+using namespace finbook::model;
+
+namespace {
+
+constexpr float kPen = 3.0f;
+const QPointF kShoulder(200.0, 135.0);
+
+// The figure's outline: a body 100 × 160 and an arm 180 long, 30 wide, to the right.
+std::vector<QPointF> figureCorners()
+{
+    return {{100, 100}, {200, 100}, {200, 120}, {380, 120},
+            {380, 150}, {200, 150}, {200, 260}, {100, 260}};
+}
+
+// Points every `spacing` round the closed polygon, the first repeated at the end.
+std::vector<QPointF> around(const std::vector<QPointF> &corners, double spacing)
+{
+    std::vector<QPointF> out;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        const QPointF a = corners[i], b = corners[(i + 1) % corners.size()];
+        const int steps = std::max(1, int(std::ceil(QLineF(a, b).length() / spacing)));
+        for (int k = 0; k < steps; ++k)
+            out.push_back(a + (b - a) * (double(k) / steps));
+    }
+    out.push_back(out.front());
+    return out;
+}
+
+StrokeDataPtr strokeThrough(const std::vector<QPointF> &points)
+{
+    auto data = std::make_shared<StrokeData>();
+    data->width = kPen;
+    for (const QPointF &p : points)
+        data->points.push_back({float(p.x()), float(p.y()), 1.0f});
+    return data;
+}
+
+// The arm turned by `degrees` about the shoulder, blended over 30 px (as a pose bends it).
+QPointF armTurned(QPointF p, double degrees)
+{
+    const double x = std::clamp((p.x() - kShoulder.x()) / 30.0 + 0.5, 0.0, 1.0);
+    const double a = qDegreesToRadians(degrees * x * x * (3.0 - 2.0 * x));
+    const QPointF d = p - kShoulder;
+    return kShoulder + QPointF(std::cos(a) * d.x() - std::sin(a) * d.y(),
+                               std::sin(a) * d.x() + std::cos(a) * d.y());
+}
+
+// Key A: the outline (4 px spacing) and an eye, ids from 1.
+StrokeGroup keyA()
+{
+    StrokeGroup g;
+    g.id = 1;
+    g.name = QStringLiteral("Figure");
+    g.strokes.push_back(Stroke{2, strokeThrough(around(figureCorners(), 4.0))});
+    g.strokes.push_back(Stroke{3, testing::lineStroke({140, 130}, {160, 130}, 6, kPen)});
+    return g;
+}
+
+// Key B: A's lines moved by `move`, resampled at 5.5 px, the outline split in two pieces, every
+// other line reversed, the lines shuffled unless `inOrder`, ids from 100.
+StrokeGroup keyB(const std::function<QPointF(QPointF)> &move, bool inOrder = false)
+{
+    std::vector<QPointF> outline;
+    for (const QPointF &p : around(figureCorners(), 5.5))
+        outline.push_back(move(p));
+    std::vector<std::vector<QPointF>> lines;
+    const std::size_t half = outline.size() / 2;
+    lines.emplace_back(outline.begin(), outline.begin() + std::ptrdiff_t(half) + 1);
+    lines.emplace_back(outline.begin() + std::ptrdiff_t(half), outline.end());
+    lines.push_back({move({140, 130}), move({150, 130}), move({160, 130})});
+    if (!inOrder) {
+        std::reverse(lines[1].begin(), lines[1].end());
+        std::mt19937 random(7);
+        std::shuffle(lines.begin(), lines.end(), random);
+    }
+    StrokeGroup g;
+    g.id = 100;
+    g.name = QStringLiteral("Figure");
+    Id next = 101;
+    for (const auto &line : lines)
+        g.strokes.push_back(Stroke{next++, strokeThrough(line)});
+    return g;
+}
+
+// Where the fit puts A's stroke point k of stroke s.
+QPointF fitted(const DrawingFit &fit, std::size_t s, std::size_t k)
+{
+    const auto &e = fit.meshed->embedding;
+    const Eigen::Index r = Eigen::Index(fit.meshed->strokeOffsets[s] + k);
+    const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
+    Eigen::Vector2d p = Eigen::Vector2d::Zero();
+    for (int j = 0; j < 3; ++j)
+        p += e.B(r, j) * fit.fit.U.row(F(e.I(r), j)).transpose();
+    return {p.x(), p.y()};
+}
+
+// Largest distance of A's outline points, fitted, from where `move` puts them.
+double worstError(const DrawingFit &fit, const StrokeGroup &a,
+                  const std::function<QPointF(QPointF)> &move)
+{
+    double worst = 0.0;
+    const auto &points = a.strokes[0].data->points;
+    for (std::size_t k = 0; k < points.size(); ++k)
+        worst =
+            std::max(worst, QLineF(fitted(fit, 0, k), move({points[k].x, points[k].y})).length());
+    return worst;
+}
+
+QPointF pointOf(const StrokePoint &p)
+{
+    return {p.x, p.y};
+}
+
+} // namespace
+
+class TestBetweenDrawings : public QObject {
+    Q_OBJECT
+
+private slots:
+    void aRigidMotionIsRecovered();
+    void aTurnedArmIsFittedWithItsElbowInPlace();
+    void reversedAndShuffledLinesGiveTheSameFit();
+    void correspondencePinsMoveTheFit();
+    void drawingsThatDoNotFitAreRefusedWithAReason();
+    void inbetweensStartOnAAndLandOnB();
+    void generatedInbetweensAreOneUndoStep();
+};
+
+void TestBetweenDrawings::aRigidMotionIsRecovered()
+{
+    const auto move = [](QPointF p) {
+        const double a = qDegreesToRadians(12.0);
+        const QPointF c(240, 180);
+        const QPointF d = p - c;
+        return c +
+               QPointF(std::cos(a) * d.x() - std::sin(a) * d.y(),
+                       std::sin(a) * d.x() + std::cos(a) * d.y()) +
+               QPointF(35, -20);
+    };
+    const StrokeGroup a = keyA();
+    const auto fit = fitDrawings(a, keyB(move), -1.0);
+    QVERIFY2(fit, fit ? "" : qPrintable(fit.error()));
+    // Every outline point within 2 px of its place (B's points are 5.5 px apart).
+    const double worst = worstError(**fit, a, move);
+    qInfo("rigid motion: worst %.2f px", worst);
+    QVERIFY2(worst < 2.0, qPrintable(QString::number(worst)));
+    QVERIFY((*fit)->fit.distortion < 0.02);
+}
+
+void TestBetweenDrawings::aTurnedArmIsFittedWithItsElbowInPlace()
+{
+    const auto move = [](QPointF p) { return armTurned(p, 40.0); };
+    const StrokeGroup a = keyA();
+    const auto fit = fitDrawings(a, keyB(move), -1.0);
+    QVERIFY2(fit, fit ? "" : qPrintable(fit.error()));
+    const DrawingFit &f = **fit;
+    // The hand (the arm's far end) and the shoulder land where B has them.
+    const auto &points = a.strokes[0].data->points;
+    double hand = 0.0, shoulder = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const QPointF p = pointOf(points[k]);
+        const double off = QLineF(fitted(f, 0, k), move(p)).length();
+        if (p.x() >= 370.0)
+            hand = std::max(hand, off);
+        if (std::abs(p.x() - 200.0) < 1.0 && p.y() < 160.0)
+            shoulder = std::max(shoulder, off);
+    }
+    qInfo("turned arm: hand %.2f px, shoulder %.2f px", hand, shoulder);
+    QVERIFY2(hand < 6.0, qPrintable(QString::number(hand)));
+    QVERIFY2(shoulder < 6.0, qPrintable(QString::number(shoulder)));
+    // The mid in-between turns the arm half way, keeping its length (a straight-line morph
+    // would shorten it by 1 − cos 20° ≈ 6 %).
+    const StrokeGroup mid = betweenDrawing(f, 0.5);
+    const auto &midPoints = mid.strokes[0].data->points;
+    QPointF tip;
+    for (std::size_t k = 0; k < points.size(); ++k)
+        if (points[k].x == 380.0f && points[k].y == 135.0f)
+            tip = pointOf(midPoints[k]);
+    if (tip.isNull()) { // the outline has no point at the arm's end middle: take the corners'
+        QPointF sum;
+        int n = 0;
+        for (std::size_t k = 0; k < points.size(); ++k)
+            if (points[k].x == 380.0f) {
+                sum += pointOf(midPoints[k]);
+                ++n;
+            }
+        tip = sum / n;
+    }
+    const double length = QLineF(kShoulder, tip).length();
+    qInfo("mid in-between: arm %.2f px long (180 at rest)", length);
+    QVERIFY2(std::abs(length - 180.0) / 180.0 < 0.03, qPrintable(QString::number(length)));
+    const double turned = QLineF(kShoulder, tip).angleTo(QLineF(kShoulder, {380, 135}));
+    const double degrees = turned > 180.0 ? 360.0 - turned : turned;
+    qInfo("mid in-between: arm turned %.2f° (20 half way)", degrees);
+    QVERIFY2(std::abs(degrees - 20.0) < 4.0, qPrintable(QString::number(degrees)));
+}
+
+void TestBetweenDrawings::reversedAndShuffledLinesGiveTheSameFit()
+{
+    const auto move = [](QPointF p) { return armTurned(p, 30.0) + QPointF(10, 5); };
+    const StrokeGroup a = keyA();
+    const auto inOrder = fitDrawings(a, keyB(move, true), -1.0);
+    const auto shuffled = fitDrawings(a, keyB(move, false), -1.0);
+    QVERIFY(inOrder && shuffled);
+    const auto &points = a.strokes[0].data->points;
+    double worst = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k)
+        worst = std::max(worst, QLineF(fitted(**inOrder, 0, k), fitted(**shuffled, 0, k)).length());
+    qInfo("in order against shuffled: %.3f px apart at most", worst);
+    QVERIFY2(worst < 1.0, qPrintable(QString::number(worst)));
+}
+
+void TestBetweenDrawings::correspondencePinsMoveTheFit()
+{
+    const auto move = [](QPointF p) { return armTurned(p, 30.0); };
+    const StrokeGroup a = keyA();
+    const auto free = fitDrawings(a, keyB(move), -1.0);
+    QVERIFY(free);
+    // The animator says the hand's top corner belongs 25 px further along B's arm.
+    const QPointF corner(380, 120);
+    const QPointF wanted = armTurned(QPointF(355, 120), 30.0);
+    const auto pinned = fitDrawings(a, keyB(move), -1.0, {BetweenPin{corner, wanted}});
+    QVERIFY2(pinned, pinned ? "" : qPrintable(pinned.error()));
+    const auto &points = a.strokes[0].data->points;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < points.size(); ++k)
+        if (QLineF(pointOf(points[k]), corner).length() <
+            QLineF(pointOf(points[at]), corner).length())
+            at = k;
+    const double before = QLineF(fitted(**free, 0, at), wanted).length();
+    const double after = QLineF(fitted(**pinned, 0, at), wanted).length();
+    qInfo("pinned corner: %.2f px from its pin's place, %.2f px without the pin", after, before);
+    QVERIFY2(after < 0.5 * before && after < 8.0,
+             qPrintable(QStringLiteral("%1 → %2").arg(before).arg(after)));
+}
+
+void TestBetweenDrawings::drawingsThatDoNotFitAreRefusedWithAReason()
+{
+    const StrokeGroup a = keyA();
+    // B: a long zigzag, nothing like the figure.
+    std::vector<QPointF> zigzag;
+    for (int i = 0; i <= 40; ++i)
+        zigzag.emplace_back(50.0 + 25.0 * i, i % 2 ? 100.0 : 400.0);
+    StrokeGroup b;
+    b.id = 100;
+    b.strokes.push_back(Stroke{101, strokeThrough(zigzag)});
+    const auto fit = fitDrawings(a, b, -1.0);
+    QVERIFY(!fit);
+    QVERIFY2(fit.error().contains(QLatin1String("too different")), qPrintable(fit.error()));
+    // An empty key is refused too, and nothing ever throws or returns NaN.
+    QVERIFY(!fitDrawings(a, StrokeGroup{}, -1.0));
+    QVERIFY(!fitDrawings(StrokeGroup{}, a, -1.0));
+
+    // In the document: such keys switch over half way, as before, and say why.
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 1));
+    const Id ga = doc.frameAt(0).groups.at(0).id, gb = doc.frameAt(1).groups.at(0).id;
+    doc.undoStack()->push(new AddStrokeCommand(&doc, ga, a.strokes[0].data));
+    doc.undoStack()->push(new AddStrokeCommand(&doc, gb, b.strokes[0].data));
+    const KeyFits fits = fitKeyDrawings(doc.frameAt(0), doc.frameAt(1), -1.0);
+    QCOMPARE(fits.failures.size(), std::size_t(1));
+    QCOMPARE(fits.failures.front().first, 0);
+    QVERIFY(std::none_of(fits.fits.begin(), fits.fits.end(), [](const auto &f) { return f; }));
+    const InbetweenPlan plan =
+        planInbetweens(doc.frameAt(0), doc.frameAt(1), {0.5}, TargetPath::Arc, fits.fits);
+    QVERIFY(std::none_of(plan.objects.begin(), plan.objects.end(),
+                         [](const auto &o) { return o.fate == ObjectFate::Fitted; }));
+}
+
+void TestBetweenDrawings::inbetweensStartOnAAndLandOnB()
+{
+    const auto move = [](QPointF p) { return armTurned(p, 40.0) + QPointF(20, 0); };
+    StrokeGroup a = keyA();
+    Fill fill;
+    fill.color = 0xff3060c0;
+    fill.seed = QPointF(150, 200); // in the body
+    fill.strokes = {2};
+    a.fills.push_back(fill);
+    const StrokeGroup b = keyB(move);
+    const auto fitted = fitDrawings(a, b, -1.0);
+    QVERIFY(fitted);
+    const DrawingFit &fit = **fitted;
+    // t = 0: A exactly, nothing of B.
+    const StrokeGroup start = betweenDrawing(fit, 0.0);
+    QCOMPARE(start.strokes.size(), a.strokes.size());
+    for (std::size_t s = 0; s < a.strokes.size(); ++s) {
+        QCOMPARE(start.strokes[s].id, a.strokes[s].id);
+        QCOMPARE(start.strokes[s].data->color, a.strokes[s].data->color);
+        for (std::size_t k = 0; k < a.strokes[s].data->points.size(); ++k)
+            QVERIFY(QLineF(pointOf(start.strokes[s].data->points[k]),
+                           pointOf(a.strokes[s].data->points[k]))
+                        .length() < 1e-3);
+    }
+    QVERIFY(QLineF(start.fills[0].seed, fill.seed).length() < 1e-6);
+    // Before the cross-fade only A's lines; in it A's fade out while B's come in, and near the
+    // end B's lines are where B drew them.
+    QCOMPARE(betweenDrawing(fit, 0.6).strokes.size(), a.strokes.size());
+    const StrokeGroup fading = betweenDrawing(fit, 0.85);
+    QCOMPARE(fading.strokes.size(), a.strokes.size() + b.strokes.size());
+    QVERIFY(qAlpha(fading.strokes[0].data->color) < 255 &&
+            qAlpha(fading.strokes[0].data->color) > 0);
+    QVERIFY(qAlpha(fading.strokes.back().data->color) < 255 &&
+            qAlpha(fading.strokes.back().data->color) > 0);
+    const StrokeGroup end = betweenDrawing(fit, 1.0);
+    for (std::size_t s = 0; s < b.strokes.size(); ++s) {
+        const Stroke &drawn = end.strokes[a.strokes.size() + s];
+        QCOMPARE(drawn.id, b.strokes[s].id);
+        QCOMPARE(qAlpha(drawn.data->color), 255);
+        for (std::size_t k = 0; k < drawn.data->points.size(); ++k)
+            QVERIFY2(QLineF(pointOf(drawn.data->points[k]), pointOf(b.strokes[s].data->points[k]))
+                             .length() < 0.05,
+                     qPrintable(QStringLiteral("stroke %1 point %2").arg(s).arg(k)));
+    }
+    // The fill's seed rides in the body; every point of every in-between is finite.
+    for (double t : {0.1, 0.3, 0.5, 0.7, 0.9, 0.99}) {
+        const StrokeGroup g = betweenDrawing(fit, t);
+        QVERIFY(std::isfinite(g.fills[0].seed.x()) && std::isfinite(g.fills[0].seed.y()));
+        QVERIFY(g.fills[0].seed.x() > 90 && g.fills[0].seed.x() < 230);
+        for (const Stroke &s : g.strokes)
+            for (const StrokePoint &p : s.data->points)
+                QVERIFY(std::isfinite(p.x) && std::isfinite(p.y));
+    }
+}
+
+void TestBetweenDrawings::generatedInbetweensAreOneUndoStep()
+{
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 1));
+    const Id ga = doc.frameAt(0).groups.at(0).id, gb = doc.frameAt(1).groups.at(0).id;
+    for (const Stroke &s : keyA().strokes)
+        doc.undoStack()->push(new AddStrokeCommand(&doc, ga, s.data));
+    for (const Stroke &s : keyB([](QPointF p) { return armTurned(p, 40.0); }).strokes)
+        doc.undoStack()->push(new AddStrokeCommand(&doc, gb, s.data));
+    if (auto all = fillAllRegionsCommand(&doc, ga, 0xff3060c0))
+        doc.undoStack()->push(all.release());
+    QCOMPARE(doc.group(ga)->fills.size(), std::size_t(1));
+    const QByteArray before = serializeFinbook(doc);
+    const KeyFits fits = fitKeyDrawings(doc.frameAt(0), doc.frameAt(1), doc.settings().closeGap);
+    QVERIFY2(fits.failures.empty(),
+             qPrintable(fits.failures.empty() ? QString() : fits.failures[0].second));
+    auto *command =
+        new InsertInbetweensCommand(&doc, doc.frameAt(0).id, doc.frameAt(1).id, 3, {}, fits.fits);
+    QCOMPARE(command->plan().objects.size(), std::size_t(1));
+    QCOMPARE(command->plan().objects[0].fate, ObjectFate::Fitted);
+    doc.undoStack()->push(command);
+    QCOMPARE(doc.frameCount(), 5);
+    // Editable strokes under fresh ids, the fill carried, the arm turning frame by frame.
+    std::set<Id> ids;
+    for (const Frame &f : doc.frames())
+        for (const StrokeGroup &g : f.groups)
+            for (const Stroke &s : g.strokes)
+                QVERIFY(ids.insert(s.id).second);
+    double previous = 0.0;
+    for (int i = 1; i <= 3; ++i) {
+        const StrokeGroup &g = doc.frameAt(i).groups.at(0);
+        QVERIFY(g.rig.empty() && !g.deformed);
+        QCOMPARE(g.fills.size(), std::size_t(1));
+        QVERIFY(std::binary_search(g.fills[0].strokes.begin(), g.fills[0].strokes.end(),
+                                   g.strokes[0].id));
+        // The hand's lowest point, turned further down frame by frame.
+        double lowest = 0.0;
+        for (const StrokePoint &p : g.strokes[0].data->points)
+            if (p.x > 300.0f)
+                lowest = std::max(lowest, double(p.y));
+        QVERIFY2(lowest > previous, qPrintable(QString::number(lowest)));
+        previous = lowest;
+    }
+    // The frames save and open again.
+    const auto reopened = readFinbook(serializeFinbook(doc));
+    QVERIFY2(reopened, reopened ? "" : qPrintable(reopened.error().message));
+    doc.undoStack()->undo();
+    QCOMPARE(doc.frameCount(), 2);
+    QCOMPARE(serializeFinbook(doc), before);
+    doc.undoStack()->redo();
+    QCOMPARE(doc.frameCount(), 5);
+}
+
+QTEST_MAIN(TestBetweenDrawings)
+#include "tst_between_drawings.moc"
