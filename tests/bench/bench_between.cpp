@@ -1,0 +1,385 @@
+// finbook-bench between [--png DIR] FILE...: Between Drawings (issue 50) on real drawings
+// (Quick, Draw! "strokes" or a shape's "contours", shared/data/README.md; pen 3 px).
+//
+// For each drawing, key A is the drawing as drawn (filled, as finbook-bench bake fills it) and
+// key B is A posed by its automatic skeleton, every limb turned ±40° where it leaves the body
+// (so the true place of each of A's points in B is known), then "redrawn": each line resampled
+// at 1.37× its point spacing, every point jittered by up to 1 px, every other line reversed, the
+// lines' order shuffled, and the longest line split in two. A is fitted onto B without pins
+// (model/inbetween/between_drawings.h, as the app does it). One JSON line per drawing:
+//   error_median_pct, error_p95_pct: A's stroke points, fitted, against their true places in B,
+//     % of the drawing's diagonal;
+//   limb_change_pct: the mid in-between (t = 0.5, as-rigid-as-possible interpolation) — each
+//     bone's length (its joints carried by the motion) against its true length (a turned limb
+//     keeps its length), % change, max over bones longer than 4 px; naive_limb_change_pct the
+//     same for a point-to-point morph (each vertex halfway along a straight line to its fitted
+//     place);
+//   fit_ms: the whole fit (mesh, precompute, fit, interpolation's precompute); vertices.
+// The last line sums up: medians and worst cases, and how many drawings meet the issue's
+// targets (median ≤ 2 % and p95 ≤ 6 %; mid in-between limbs within 3 %).
+// --png DIR: per drawing DIR/between_NAME.png: A, B, A's fitted lines (red) over B (grey),
+// and the in-betweens at t = 0.25, 0.5 and 0.85 (in the cross-fade), drawn as the app draws.
+#include "../model/bake_support.h"
+#include "bench.h"
+
+#include <finbook/deform/between/arap_interpolation.h>
+#include <finbook/geometry/embedding.h>
+#include <finbook/model/inbetween/between_drawings.h>
+
+#include <QDir>
+#include <QFileInfo>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+
+using namespace finbook;
+using namespace finbook::model;
+
+namespace {
+
+constexpr double kTurn = 40.0;          // degrees: each limb's turn at its base
+constexpr double kSpacingFactor = 1.37; // B's point spacing against A's
+constexpr double kShortBone = 4.0;      // px: bones shorter than this are not compared
+constexpr int kCell = 300;
+
+Eigen::Vector2d pointAt(const Eigen::MatrixX2d &U, const Eigen::MatrixX3i &F, int triangle,
+                        const Eigen::RowVector3d &b)
+{
+    return b(0) * U.row(F(triangle, 0)).transpose() + b(1) * U.row(F(triangle, 1)).transpose() +
+           b(2) * U.row(F(triangle, 2)).transpose();
+}
+
+// Points every `spacing` along a polyline, its ends kept.
+std::vector<QPointF> resampled(const std::vector<StrokePoint> &points, double spacing)
+{
+    std::vector<QPointF> out;
+    if (points.empty())
+        return out;
+    out.emplace_back(points.front().x, points.front().y);
+    double carry = 0.0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const QPointF a(points[i - 1].x, points[i - 1].y), b(points[i].x, points[i].y);
+        const double length = std::hypot(b.x() - a.x(), b.y() - a.y());
+        double at = spacing - carry;
+        for (; at < length; at += spacing)
+            out.push_back(a + (b - a) * (at / length));
+        carry = length - (at - spacing);
+    }
+    const QPointF last(points.back().x, points.back().y);
+    if (QLineF(out.back(), last).length() > 0.25 * spacing)
+        out.push_back(last);
+    return out;
+}
+
+double medianSpacing(const StrokeGroup &g)
+{
+    std::vector<double> d;
+    for (const Stroke &s : g.strokes)
+        for (std::size_t i = 1; i < s.data->points.size(); ++i)
+            d.push_back(std::hypot(s.data->points[i].x - s.data->points[i - 1].x,
+                                   s.data->points[i].y - s.data->points[i - 1].y));
+    return d.empty() ? 2.0 : std::max(0.5, bench::percentile(d, 0.5));
+}
+
+// B: the posed lines redrawn (see the top of the file). Deterministic per drawing.
+StrokeGroup redrawn(const StrokeGroup &posed, std::uint32_t seed)
+{
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> jitter(-1.0, 1.0);
+    const double spacing = kSpacingFactor * medianSpacing(posed);
+    std::vector<std::vector<QPointF>> lines;
+    for (std::size_t s = 0; s < posed.strokes.size(); ++s)
+        lines.push_back(resampled(displayedPoints(posed, s), spacing));
+    // The longest line split in two.
+    const auto longest =
+        std::max_element(lines.begin(), lines.end(),
+                         [](const auto &a, const auto &b) { return a.size() < b.size(); });
+    if (longest != lines.end() && longest->size() >= 8) {
+        const std::size_t half = longest->size() / 2;
+        std::vector<QPointF> second(longest->begin() + std::ptrdiff_t(half), longest->end());
+        longest->resize(half + 1);
+        lines.push_back(std::move(second));
+    }
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        if (i % 2 == 1)
+            std::reverse(lines[i].begin(), lines[i].end());
+    std::shuffle(lines.begin(), lines.end(), random);
+    StrokeGroup b;
+    b.id = 900000;
+    b.name = QStringLiteral("B");
+    Id next = 900001;
+    for (const std::vector<QPointF> &line : lines) {
+        if (line.size() < 2)
+            continue;
+        auto data = std::make_shared<StrokeData>();
+        data->width = testing::kDrawingPenWidth;
+        for (const QPointF &p : line)
+            data->points.push_back(
+                {float(p.x() + jitter(random)), float(p.y() + jitter(random)), 1.0f});
+        b.strokes.push_back(Stroke{next++, std::move(data)});
+    }
+    return b;
+}
+
+QImage cell(const StrokeGroup &g, const QTransform &t, const DocumentSettings &settings,
+            const StrokeGroup *under = nullptr)
+{
+    QImage image(kCell, kCell, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.setTransform(t);
+    painter.setRenderHint(QPainter::Antialiasing);
+    const auto paint = [&](const StrokeGroup &group) {
+        Frame f;
+        f.groups.push_back(group);
+        paintFrame(painter, f, settings);
+    };
+    if (under) {
+        StrokeGroup grey = *under;
+        grey.fills.clear();
+        for (Stroke &s : grey.strokes) {
+            auto data = std::make_shared<StrokeData>(*s.data);
+            data->color = 0xffb0b0b0;
+            data->width = 5.0f;
+            s.data = std::move(data);
+        }
+        paint(grey);
+        StrokeGroup red = g;
+        red.fills.clear();
+        for (Stroke &s : red.strokes) {
+            auto data = std::make_shared<StrokeData>(*s.data);
+            data->color = 0xffe02020;
+            data->width = 1.5f;
+            s.data = std::move(data);
+        }
+        paint(red);
+    } else {
+        paint(g);
+    }
+    return image;
+}
+
+struct Summary {
+    std::vector<double> median, p95, limb, naive, ms;
+    int meets = 0, limbsMeet = 0, failed = 0, drawings = 0;
+    QString worstFile;
+    double worstP95 = -1.0;
+};
+
+void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
+            const BetweenOptions &options, const QString &pngDir, Summary &summary)
+{
+    const QString name = QFileInfo(file).completeBaseName();
+    QJsonObject row{{QStringLiteral("bench"), QStringLiteral("between")},
+                    {QStringLiteral("file"), QFileInfo(file).fileName()}};
+    const auto print = [&row] {
+        std::printf("%s\n", QJsonDocument(row).toJson(QJsonDocument::Compact).constData());
+        std::fflush(stdout);
+    };
+    Document doc;
+    const Id g = testing::drawingDocument(doc, lines);
+    const double closeGap = doc.settings().closeGap;
+    StrokeGroup a = *doc.group(g);
+    const Rig rig = testing::skeletonBend(a, closeGap, SkinningMode::Rigid, kTurn);
+    if (rig.empty()) {
+        row.insert(QStringLiteral("skipped"), QStringLiteral("no skeleton with a limb"));
+        return print();
+    }
+    if (const QString error = testing::poseObject(doc, g, rig); !error.isEmpty()) {
+        row.insert(QStringLiteral("skipped"), error);
+        return print();
+    }
+    const StrokeGroup &posed = *doc.group(g);
+    const StrokeGroup b = redrawn(posed, std::uint32_t(qHash(name)));
+    ++summary.drawings;
+    const auto fitted = fitDrawings(a, b, closeGap, {}, options);
+    if (!fitted) {
+        ++summary.failed;
+        row.insert(QStringLiteral("error"), fitted.error());
+        return print();
+    }
+    const DrawingFit &fit = **fitted;
+    const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
+    const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
+    const geometry::Embedding &all = fit.meshed->embedding;
+    // Correspondence error over A's stroke points.
+    const QRectF box = testing::shownBounds(a);
+    const double diagonal = std::hypot(box.width(), box.height());
+    std::vector<double> error;
+    for (std::size_t s = 0; s < a.strokes.size(); ++s) {
+        const std::vector<StrokePoint> &truth = posed.deformed->strokes[s];
+        for (std::size_t k = 0; k < truth.size(); ++k) {
+            const Eigen::Index r = Eigen::Index(fit.meshed->strokeOffsets[s] + k);
+            if (all.I(r) < 0)
+                continue;
+            const Eigen::Vector2d p = pointAt(fit.fit.U, F, all.I(r), all.B.row(r));
+            error.push_back(100.0 * std::hypot(p.x() - truth[k].x, p.y() - truth[k].y) / diagonal);
+        }
+    }
+    // Bone lengths in the mid in-between, against rest (a turned limb keeps its length).
+    const SkeletonRig &skeleton = rig.skeleton;
+    Eigen::MatrixX2d joints(skeleton.jointCount(), 2);
+    for (int j = 0; j < skeleton.jointCount(); ++j)
+        joints.row(j) << skeleton.joints[std::size_t(j)].x(), skeleton.joints[std::size_t(j)].y();
+    const geometry::Embedding inA = geometry::embed(V, F, joints);
+    const auto mid = deform::between::arapInterpolate(*fit.motion, 0.5);
+    const Eigen::MatrixX2d naiveMid = 0.5 * (V + fit.fit.U);
+    // Limbs: each turned joint's parent (the limb's base) to every tip below it; the chord
+    // base–tip, which the true pose (a rigid turn) keeps and a straight-line morph shortens.
+    const int n = skeleton.jointCount();
+    std::vector<bool> hasChild(std::size_t(n), false);
+    for (int j = 0; j < n; ++j)
+        if (skeleton.parent[std::size_t(j)] >= 0)
+            hasChild[std::size_t(skeleton.parent[std::size_t(j)])] = true;
+    const auto below = [&](int tip, int joint) {
+        for (int k = tip; k >= 0; k = skeleton.parent[std::size_t(k)])
+            if (k == joint)
+                return true;
+        return false;
+    };
+    double limb = 0.0, naive = 0.0, fitLimb = 0.0;
+    int limbs = 0;
+    for (int j = 0; j < n; ++j) {
+        const int base = skeleton.parent[std::size_t(j)];
+        if (base < 0 || skeleton.angles[std::size_t(j)] == 0.0 || inA.I(base) < 0)
+            continue;
+        for (int tip = 0; tip < n; ++tip) {
+            if (hasChild[std::size_t(tip)] || !below(tip, j) || inA.I(tip) < 0)
+                continue;
+            const double rest = (joints.row(tip) - joints.row(base)).norm();
+            if (rest < kShortBone)
+                continue;
+            const auto chord = [&](const Eigen::MatrixX2d &U) {
+                return (pointAt(U, F, inA.I(tip), inA.B.row(tip)) -
+                        pointAt(U, F, inA.I(base), inA.B.row(base)))
+                    .norm();
+            };
+            ++limbs;
+            if (mid)
+                limb = std::max(limb, 100.0 * std::abs(chord(*mid) - rest) / rest);
+            fitLimb = std::max(fitLimb, 100.0 * std::abs(chord(fit.fit.U) - rest) / rest);
+            naive = std::max(naive, 100.0 * std::abs(chord(naiveMid) - rest) / rest);
+        }
+    }
+    if (qEnvironmentVariableIsSet("FINBOOK_BETWEEN_DEBUG"))
+        for (double u : {0.25, 0.5, 0.75, 1.0}) {
+            const auto Ut = deform::between::arapInterpolate(*fit.motion, u);
+            std::printf("t %.2f max move %.2f (fit %.2f) flipped %d\n", u,
+                        Ut ? (*Ut - V).rowwise().norm().maxCoeff() : -1.0,
+                        (fit.fit.U - V).rowwise().norm().maxCoeff(), fit.motion->flippedTriangles);
+        }
+    const double median = bench::percentile(error, 0.5), p95 = bench::percentile(error, 0.95);
+    const double ms = 1000.0 * fit.seconds;
+    row.insert(QStringLiteral("vertices"), int(V.rows()));
+    row.insert(QStringLiteral("limbs"), limbs);
+    row.insert(QStringLiteral("error_median_pct"), median);
+    row.insert(QStringLiteral("error_p95_pct"), p95);
+    row.insert(QStringLiteral("limb_change_pct"), limb);
+    row.insert(QStringLiteral("naive_limb_change_pct"), naive);
+    row.insert(QStringLiteral("fit_limb_change_pct"), fitLimb);
+    row.insert(QStringLiteral("fit_ms"), ms);
+    row.insert(QStringLiteral("distortion"), fit.fit.distortion);
+    print();
+    summary.median.push_back(median);
+    summary.p95.push_back(p95);
+    summary.limb.push_back(limb);
+    summary.naive.push_back(naive);
+    summary.ms.push_back(ms);
+    summary.meets += median <= 2.0 && p95 <= 6.0;
+    summary.limbsMeet += limb <= 3.0;
+    if (p95 > summary.worstP95) {
+        summary.worstP95 = p95;
+        summary.worstFile = QFileInfo(file).fileName();
+    }
+    if (pngDir.isEmpty())
+        return;
+    const QRectF view = box.united(testing::shownBounds(b)).adjusted(-8, -8, 8, 8);
+    const QTransform t = testing::pictureView(view, kCell);
+    std::vector<QImage> cells{cell(a, t, doc.settings()), cell(b, t, doc.settings())};
+    BetweenOptions noFade = options;
+    noFade.crossFade = 0.0;
+    StrokeGroup carried = betweenDrawing(fit, 1.0, noFade);
+    cells.push_back(cell(carried, t, doc.settings(), &b));
+    for (double u : {0.25, 0.5, 0.85})
+        cells.push_back(cell(betweenDrawing(fit, u, options), t, doc.settings()));
+    QImage sheet(kCell * int(cells.size()), kCell, QImage::Format_RGB32);
+    QPainter painter(&sheet);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        painter.drawImage(int(i) * kCell, 0, cells[i]);
+        painter.setPen(QColor(200, 200, 200));
+        painter.drawLine(int(i) * kCell, 0, int(i) * kCell, kCell);
+    }
+    painter.end();
+    sheet.save(QDir(pngDir).filePath(QStringLiteral("between_%1.png").arg(name)));
+}
+
+int benchBetween(const QStringList &args)
+{
+    QString pngDir;
+    QStringList files;
+    BetweenOptions options;
+    for (int i = 0; i < args.size(); ++i) {
+        if (args[i] == QLatin1String("--png") && i + 1 < args.size()) {
+            pngDir = args[++i];
+        } else if (args[i] == QLatin1String("--stiffness") && i + 1 < args.size()) {
+            options.fit.stiffness.clear();
+            for (const QString &v : args[++i].split(QLatin1Char(',')))
+                options.fit.stiffness.push_back(v.toDouble());
+        } else if (args[i] == QLatin1String("--no-articulated")) {
+            options.articulated = false;
+        } else if (args[i] == QLatin1String("--fail-distortion") && i + 1 < args.size()) {
+            options.fit.failDistortion = args[++i].toDouble();
+        } else {
+            files << args[i];
+        }
+    }
+    if (files.isEmpty()) {
+        std::fprintf(stderr, "usage: finbook-bench between [--png DIR] FILE...\n");
+        return 2;
+    }
+    if (!pngDir.isEmpty())
+        QDir().mkpath(pngDir);
+    Summary summary;
+    for (const QString &file : files) {
+        QString error;
+        const auto lines = testing::readDrawing(file, &error);
+        if (lines.empty()) {
+            std::printf("{\"bench\":\"between\",\"file\":\"%s\",\"error\":\"%s\"}\n",
+                        qPrintable(QFileInfo(file).fileName()), qPrintable(error));
+            continue;
+        }
+        runOne(file, lines, options, pngDir, summary);
+    }
+    const auto pct = [](const std::vector<double> &v, double p) {
+        return v.empty() ? 0.0 : bench::percentile(v, p);
+    };
+    const auto worst = [](const std::vector<double> &v) {
+        return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+    };
+    const int fitted = int(summary.median.size());
+    std::printf(
+        "{\"bench\":\"between\",\"summary\":true,\"drawings\":%d,\"fitted\":%d,"
+        "\"failed\":%d,\"error_median_pct_median\":%.3f,\"error_p95_pct_median\":%.3f,"
+        "\"error_p95_pct_max\":%.3f,\"worst\":\"%s\",\"meet_error_targets\":%d,"
+        "\"meet_error_targets_pct\":%.1f,\"limb_change_pct_median\":%.3f,"
+        "\"limb_change_pct_max\":%.3f,\"limbs_within_3pct\":%d,"
+        "\"naive_limb_change_pct_median\":%.3f,\"naive_limb_change_pct_max\":%.3f,"
+        "\"fit_ms_median\":%.1f,\"fit_ms_max\":%.1f}\n",
+        summary.drawings, fitted, summary.failed, pct(summary.median, 0.5), pct(summary.p95, 0.5),
+        worst(summary.p95), qPrintable(summary.worstFile), summary.meets,
+        summary.drawings > 0 ? 100.0 * summary.meets / summary.drawings : 0.0,
+        pct(summary.limb, 0.5), worst(summary.limb), summary.limbsMeet, pct(summary.naive, 0.5),
+        worst(summary.naive), pct(summary.ms, 0.5), worst(summary.ms));
+    return 0;
+}
+
+} // namespace
+
+FINBOOK_BENCH("between",
+              "[--png DIR] FILE...  (Between Drawings on real drawings: fit A onto a "
+              "posed, redrawn B)",
+              benchBetween);
