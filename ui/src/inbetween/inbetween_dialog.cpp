@@ -7,6 +7,7 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
 #include <QThread>
@@ -47,10 +48,45 @@ InbetweenDialog::InbetweenDialog(model::Document *document, model::Id firstKey, 
     m_status->setWordWrap(true);
     layout->addWidget(m_status);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    m_ok = buttons->button(QDialogButtonBox::Ok);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
+    startFitting();
     updatePlan();
+}
+
+// What the fitter fits: copies of the keys, so it never touches the document.
+void InbetweenDialog::startFitting()
+{
+    const model::Frame *first = m_doc->frame(m_first);
+    const model::Frame *second = m_doc->frame(m_second);
+    if (!first || !second || m_first == m_second ||
+        model::differentDrawings(*first, *second).empty()) {
+        m_between->setVisible(false);
+        return;
+    }
+    auto keys = std::make_shared<std::pair<model::Frame, model::Frame>>(*first, *second);
+    auto result = std::make_shared<model::KeyFits>();
+    const double closeGap = m_doc->settings().closeGap;
+    m_fitter = QThread::create([keys, result, closeGap] {
+        *result = model::fitKeyDrawings(keys->first, keys->second, closeGap);
+    });
+    m_fitter->setParent(this);
+    m_ok->setEnabled(false);
+    connect(m_fitter, &QThread::finished, this, [this, result] {
+        m_fitter->deleteLater();
+        m_fitter = nullptr;
+        m_fits = std::move(*result);
+        m_ok->setEnabled(true);
+        updatePlan();
+    });
+    m_fitter->start();
+}
+
+model::DrawingFits InbetweenDialog::fits() const
+{
+    return !m_between->isHidden() && m_between->isChecked() ? m_fits.fits : model::DrawingFits{};
 }
 
 // What the worker poses: copies only, so it never touches the dialog or the document.
@@ -67,6 +103,8 @@ InbetweenDialog::~InbetweenDialog()
 {
     if (m_worker)
         m_worker->wait(); // a QThread must not be destroyed while it runs (one pose at most)
+    if (m_fitter)
+        m_fitter->wait(); // one fit per object that differs: a second or so at most
 }
 
 QWidget *InbetweenDialog::buildControls()
@@ -100,6 +138,15 @@ QWidget *InbetweenDialog::buildControls()
     m_arcs->setToolTip(tr("A limb swung between the keys keeps its length. Unchecked, every "
                           "target moves in a straight line."));
     form->addRow(m_arcs);
+    m_between = new QCheckBox(tr("Carry &different drawings onto each other"), box);
+    m_between->setObjectName(QStringLiteral("inbetweenBetweenDrawings"));
+    m_between->setChecked(true);
+    m_between->setToolTip(
+        tr("Where the two keys are separate drawings of an object, the first is fitted onto "
+           "the second as rigidly as possible and carried there, fading into the second's "
+           "lines at the end. Unchecked, the drawing switches over half way."));
+    form->addRow(m_between);
+    connect(m_between, &QCheckBox::toggled, this, &InbetweenDialog::updatePlan);
     connect(m_count, &QSpinBox::valueChanged, this, &InbetweenDialog::updatePlan);
     connect(m_spacing, &QComboBox::currentIndexChanged, this, [this, form] {
         form->setRowVisible(m_favour, options().spacing.kind == model::SpacingKind::Favour);
@@ -140,6 +187,10 @@ QString InbetweenDialog::describe(const model::InbetweenObjectReport &object) co
         return tr("%1: only in the first key, held in the first half").arg(name);
     case model::ObjectFate::SecondKeyOnly:
         return tr("%1: only in the second key, held in the second half").arg(name);
+    case model::ObjectFate::Fitted:
+        return tr("%1: drawn differently in each key, carried from the first drawing onto the "
+                  "second")
+            .arg(name);
     }
     return name;
 }
@@ -155,11 +206,20 @@ void InbetweenDialog::updatePlan()
     const model::InbetweenOptions o = options();
     const std::vector<double> times = model::inbetweenTimes(count(), o.spacing);
     const double middle = times[(times.size() - 1) / 2];
-    model::InbetweenPlan plan = model::planInbetweens(*first, *second, {middle}, o.path);
+    model::InbetweenPlan plan = model::planInbetweens(*first, *second, {middle}, o.path, fits());
     m_objects->clear();
     for (const model::InbetweenObjectReport &object : plan.objects)
         m_objects->addItem(describe(object));
-    m_status->setText(tr("Posing the preview…"));
+    if (!m_between->isHidden() && m_between->isChecked())
+        for (const auto &[index, why] : m_fits.failures)
+            m_objects->addItem(tr("%1: could not be carried onto the second key's drawing, so it "
+                                  "switches over half way. %2")
+                                   .arg(first->groups[std::size_t(index)].name.isEmpty()
+                                            ? tr("(unnamed)")
+                                            : first->groups[std::size_t(index)].name,
+                                        why));
+    m_status->setText(m_fitter ? tr("Fitting the drawings that differ…")
+                               : tr("Posing the preview…"));
     if (m_worker) { // the running pose is out of date: pose again when it is done
         m_replan = true;
         return;
@@ -197,7 +257,8 @@ void InbetweenDialog::showPreview(PreviewJob &job)
                               .arg(job.solved ? job.solved->error() : QString()));
     } else {
         m_preview = std::move(job.frames.front());
-        m_status->setText(job.interpolated == 0
+        m_status->setText(m_fitter ? tr("Fitting the drawings that differ…")
+                          : job.interpolated == 0 && fits().empty()
                               ? tr("No object has matching pins or a matching cage in both "
                                    "keys: the in-betweens will only hold drawings.")
                               : tr("The canvas shows the middle in-between."));
@@ -210,6 +271,8 @@ void InbetweenDialog::done(int result)
 {
     if (m_worker) // a pose still running must not bring the preview back
         m_worker->disconnect(this);
+    if (m_fitter)
+        m_fitter->disconnect(this);
     if (m_sink)
         m_sink(std::nullopt); // the preview never outlives the dialog
     QDialog::done(result);

@@ -83,8 +83,9 @@ void MainWindow::generateInbetweens(model::Id firstKey, model::Id secondKey)
     settings.setValue(kPositionKey, dialog.pos());
     if (result != QDialog::Accepted)
         return;
-    auto *command = new model::InsertInbetweensCommand(m_doc, dialog.firstKey(), dialog.secondKey(),
-                                                       dialog.count(), dialog.options());
+    auto *command =
+        new model::InsertInbetweensCommand(m_doc, dialog.firstKey(), dialog.secondKey(),
+                                           dialog.count(), dialog.options(), dialog.fits());
     const bool obsolete = command->isObsolete();
     m_doc->undoStack()->push(command);
     if (!obsolete)

@@ -6,12 +6,18 @@
 // first pose of a 2.4k-vertex object took about 70 ms, which froze the controls when it ran
 // on the GUI thread) and handed to the preview sink (the canvas) when it is ready; a change
 // made meanwhile is posed after it, only the newest shown. The sink gets std::nullopt when
-// the dialog closes. The caller pushes InsertInbetweensCommand with count() and options() on
-// Accepted.
+// the dialog closes. The caller pushes InsertInbetweensCommand with count(), options() and
+// fits() on Accepted.
+//
+// Objects the two keys show drawn differently (two separate drawings, not one posed) are fitted
+// one onto the other on another worker thread when the dialog opens (Between Drawings,
+// model/inbetween/between_drawings.h); OK waits for it. Each is then carried from the first
+// key's lines to the second's, or, unchecked or unfitted, switches over half way.
 #pragma once
 
 #include <finbook/deform/arap.h>
 #include <finbook/model/document.h>
+#include <finbook/model/inbetween/between_drawings.h>
 #include <finbook/model/inbetween/inbetween_plan.h>
 #include <finbook/model/inbetween/inbetween_solve.h>
 
@@ -24,6 +30,7 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QListWidget;
+class QPushButton;
 class QSlider;
 class QSpinBox;
 class QThread;
@@ -45,6 +52,9 @@ public:
     model::Id secondKey() const { return m_second; }
     int count() const;
     model::InbetweenOptions options() const;
+    // The fits of the objects drawn differently, when they are to be used (empty otherwise).
+    model::DrawingFits fits() const;
+    bool fitting() const { return m_fitter != nullptr; }
     // The middle in-between as previewed now (nullopt if its pose could not be solved, and
     // before the first one is ready); posing() while a newer one is being solved.
     const std::optional<model::Frame> &previewFrame() const { return m_preview; }
@@ -58,6 +68,7 @@ private:
     QString describe(const model::InbetweenObjectReport &object) const;
     struct PreviewJob;
     void showPreview(PreviewJob &job);
+    void startFitting();
 
     model::Document *m_doc;
     model::Id m_first;
@@ -68,11 +79,15 @@ private:
     std::optional<model::Frame> m_preview;
     QThread *m_worker = nullptr; // posing the preview
     bool m_replan = false;       // the options changed while it did
+    QThread *m_fitter = nullptr; // fitting the drawings that differ
+    model::KeyFits m_fits;
 
     QSpinBox *m_count = nullptr;
     QComboBox *m_spacing = nullptr;
     QSlider *m_favour = nullptr;
     QCheckBox *m_arcs = nullptr;
+    QCheckBox *m_between = nullptr;
+    QPushButton *m_ok = nullptr;
     QListWidget *m_objects = nullptr;
     QLabel *m_status = nullptr;
 };
