@@ -2,6 +2,7 @@
 // the timeline, the dialog driven with QTest (count, spacing, preview in the canvas), OK
 // inserts the frames as one undo step; Cancel leaves the document and the canvas as they were.
 #include "../model/inbetween_support.h"
+#include "../model/stroke_support.h"
 #include "tst_tools_support.h"
 
 #include <finbook/model/finbook_file.h>
@@ -12,6 +13,7 @@
 #include <finbook/ui/window/main_window.h>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QLabel>
@@ -37,6 +39,7 @@ private slots:
     void ctrlClickPicksTwoKeys();
     void okInsertsOneUndoStep();
     void cancelLeavesNothing();
+    void differentDrawingsAreCarriedOntoEachOther();
     void dialogShowsThePreviewAndRemembersItsPlace();
 
 private:
@@ -183,6 +186,65 @@ void TestInbetweenDialog::cancelLeavesNothing()
     QVERIFY(!m_window->canvas()->hasPreviewFrame());
     QCOMPARE(doc->frameCount(), 2);
     QCOMPARE(doc->undoStack()->count(), 0);
+    QCOMPARE(model::serializeFinbook(*doc), before);
+}
+
+// Issue 50: the second key drawn anew (another outline, not a pose of the first): the dialog
+// fits the drawings as it opens, says so, and OK carries the first onto the second.
+void TestInbetweenDialog::differentDrawingsAreCarriedOntoEachOther()
+{
+    model::Document *doc = m_window->document();
+    model::Frame a, b;
+    a.id = 1;
+    b.id = 5;
+    model::StrokeGroup first, second;
+    first.id = 2;
+    first.name = QStringLiteral("Box");
+    first.strokes.push_back({3, testing::squareOutline({100, 100}, 120, 30, 3.0f)});
+    second.id = 6;
+    second.name = QStringLiteral("Box");
+    second.strokes.push_back({7, testing::squareOutline({160, 130}, 120, 22, 3.0f)});
+    a.groups.push_back(first);
+    b.groups.push_back(second);
+    doc->reset({a, b}, {}, 100);
+    QCoreApplication::processEvents();
+    pickKeys();
+    const QByteArray before = model::serializeFinbook(*doc);
+    const bool driven = runDialog([&](ui::InbetweenDialog *dialog) {
+        auto *ok = dialog->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok);
+        auto *carry = dialog->findChild<QCheckBox *>(QStringLiteral("inbetweenBetweenDrawings"));
+        QVERIFY(carry && !carry->isHidden() && carry->isChecked());
+        QVERIFY(!dialog->fitting() || !ok->isEnabled()); // OK waits for the fit
+        QTRY_VERIFY(!dialog->fitting());
+        QVERIFY(ok->isEnabled());
+        auto *objects = dialog->findChild<QListWidget *>(QStringLiteral("inbetweenObjects"));
+        QCOMPARE(objects->count(), 1);
+        QVERIFY2(objects->item(0)->text().contains(QStringLiteral("carried")),
+                 qPrintable(objects->item(0)->text()));
+        QCOMPARE(dialog->fits().size(), std::size_t(1));
+        // Unchecked, the drawing switches over half way as before.
+        carry->click();
+        QVERIFY(dialog->fits().empty());
+        QVERIFY(objects->item(0)->text().contains(QStringLiteral("only in the first key")));
+        carry->click();
+        QTRY_VERIFY(!dialog->posing());
+        QTest::mouseClick(ok, Qt::LeftButton);
+    });
+    QVERIFY(driven);
+    QCOMPARE(doc->frameCount(), 5);
+    QCOMPARE(doc->undoStack()->count(), 1);
+    // Each in-between is the box on its way: its outline's left edge between the keys', in order.
+    double previous = 100.0;
+    for (int row = 1; row <= 3; ++row) {
+        const model::StrokeGroup &g = doc->frameAt(row).groups.at(0);
+        QVERIFY(g.rig.empty());
+        double left = 1e9;
+        for (const model::StrokePoint &p : g.strokes.at(0).data->points)
+            left = std::min(left, double(p.x));
+        QVERIFY2(left > previous && left < 161.0, qPrintable(QString::number(left)));
+        previous = left;
+    }
+    doc->undoStack()->undo();
     QCOMPARE(model::serializeFinbook(*doc), before);
 }
 
