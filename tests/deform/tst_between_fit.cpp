@@ -231,7 +231,7 @@ void TestBetweenFit::farTurnedArmIsFoundWithTheSkeleton()
     qInfo("far samples: %.1f px off without the skeleton, %.1f px with it", farError(plain),
           farError(jointed));
     QCOMPARE(int(jointed.status), int(FitStatus::Fitted));
-    QVERIFY2(farError(jointed) < 0.03 * 300.0, qPrintable(QString::number(farError(jointed))));
+    QVERIFY2(farError(jointed) < 0.05 * 300.0, qPrintable(QString::number(farError(jointed))));
     QVERIFY(farError(jointed) < farError(plain));
     // A skeleton that is not one (a parent after its child, a NaN joint) is ignored.
     FitSkeleton bad = skeleton;

@@ -12,7 +12,11 @@ namespace finbook::deform::between::detail {
 namespace {
 
 // ± this about the base joint: an elbow or a knee folds about this far.
-constexpr double kSearch = 120.0 * std::numbers::pi / 180.0;
+// ± this many degrees about the base joint: a part with everything below it is turned less
+// far (it drags its limbs, still unturned, along); a bone by its own samples as far as an elbow
+// or a knee folds.
+constexpr double kSubtreeSearch = 90.0;
+constexpr double kBodyFirstSearch = 120.0;
 constexpr double kCoarseStep = 5.0 * std::numbers::pi / 180.0;
 constexpr double kFineStep = 1.0 * std::numbers::pi / 180.0;
 constexpr double kCapShare = 0.05;   // of B's diagonal: a sample's distance counts at most this
@@ -61,7 +65,7 @@ struct Placement {
 
 Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTarget &target,
                                   const Similarity &global, const FitSkeleton &skeleton,
-                                  const RigidFitOptions &options)
+                                  const RigidFitOptions &options, ArticulatedStart style)
 {
     const Eigen::MatrixX2d placed = global.apply(source.V);
     if (!skeletonUsable(skeleton) || target.grid.empty())
@@ -120,7 +124,7 @@ Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTa
         for (int s = 0; s < k; ++s)
             if (sampleBone[std::size_t(s)] == body)
                 own.push_back(s);
-        if (int(own.size()) >= kMinPartSamples) {
+        if (int(own.size()) >= kMinPartSamples && style == ArticulatedStart::BodyFirst) {
             Eigen::MatrixX2d rest(Eigen::Index(own.size()), 2);
             for (std::size_t i = 0; i < own.size(); ++i)
                 rest.row(Eigen::Index(i)) = source.rest.row(own[i]);
@@ -170,7 +174,7 @@ Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTa
         for (int s = 0; s < k; ++s)
             if (sampleBone[std::size_t(s)] == j)
                 part.push_back(s);
-        if (int(part.size()) < kMinPartSamples) {
+        if (int(part.size()) < kMinPartSamples || style == ArticulatedStart::Subtrees) {
             part.clear();
             for (int s = 0; s < k; ++s)
                 if (isBelow(sampleBone[std::size_t(s)], j))
@@ -208,13 +212,14 @@ Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTa
                 bestCost = c;
             }
         };
-        for (double a = -kSearch; a <= kSearch + 1e-12; a += kCoarseStep)
+        const double search =
+            (style == ArticulatedStart::BodyFirst ? kBodyFirstSearch : kSubtreeSearch) *
+            std::numbers::pi / 180.0;
+        for (double a = -search; a <= search + 1e-12; a += kCoarseStep)
             consider(a);
         const double around = best;
         for (double a = around - kCoarseStep; a <= around + kCoarseStep + 1e-12; a += kFineStep)
             consider(a);
-        std::fprintf(stderr, "joint %d turn %.1f cost %.1f (0: %.1f) part %zu\n", j,
-                     best * 180 / std::numbers::pi, bestCost, cost(0.0), part.size());
         placement[std::size_t(j)] = base.turned(best, pivot);
     }
     Eigen::MatrixX2d U(source.V.rows(), 2);

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
+#include <optional>
 
 namespace finbook::deform::between {
 namespace {
@@ -210,14 +212,16 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
     r.coarse.linear = start.linear;
     r.coarse.translation = start.translation;
     // From a rigid placement (and, with a skeleton, A's parts turned from it), the stages.
-    const auto fitFrom = [&](const detail::Similarity &rigid, bool articulated) {
+    const auto fitFrom = [&](const detail::Similarity &rigid,
+                             std::optional<detail::ArticulatedStart> articulated) {
         const double scale = std::sqrt(std::abs(rigid.linear.determinant()));
         const Complex rotation =
             std::polar(1.0, std::atan2(rigid.linear(1, 0) - rigid.linear(0, 1),
                                        rigid.linear(0, 0) + rigid.linear(1, 1)));
         const Eigen::MatrixX2d U0 =
-            articulated ? detail::articulatedStart(source, target, rigid, skeleton, options)
-                        : rigid.apply(source.V);
+            articulated
+                ? detail::articulatedStart(source, target, rigid, skeleton, options, *articulated)
+                : rigid.apply(source.V);
         RigidFitResult fit = r;
         FitState state = stateFrom(U0, source.F.rows(), rotation, options.allowScale ? scale : 1.0);
         runStages(source, target, pins, options, options.stiffness, options.stageIterations, state,
@@ -227,7 +231,7 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
     };
     const detail::Similarity rigid = detail::rigidIcp(source, target, pins, options, start);
     if (skeleton.empty())
-        return fitFrom(rigid, false);
+        return fitFrom(rigid, std::nullopt);
     // With A's parts the fit has more than one start, and keeps the fit whose lines lie
     // closest to B's (both ways), the less stretched: the articulated start can turn a part
     // onto the wrong limb of B, and a whole-drawing turn that the moments chose (B's limbs
@@ -237,11 +241,25 @@ RigidFitResult rigidFit(const RigidFitSource &source, const RigidFitTarget &targ
             return std::numeric_limits<double>::infinity();
         return (f.medianResidual + f.coverageMedian) * (1.0 + f.distortion);
     };
+    using detail::ArticulatedStart;
+    // The starts are fitted side by side (each fit has its own system and scratch; the source
+    // and target are only read): on two cores the four take about the time of two.
+    const bool turned =
+        (unturned.linear - start.linear).norm() > 1e-9 * std::max(1.0, start.linear.norm());
+    std::vector<std::future<RigidFitResult>> others;
+    others.push_back(
+        std::async(std::launch::async, [&] { return fitFrom(rigid, ArticulatedStart::Subtrees); }));
+    others.push_back(std::async(std::launch::async,
+                                [&] { return fitFrom(rigid, ArticulatedStart::BodyFirst); }));
+    if (turned)
+        others.push_back(std::async(std::launch::async, [&] {
+            return fitFrom(detail::rigidIcp(source, target, pins, options, unturned),
+                           ArticulatedStart::Subtrees);
+        }));
     std::vector<RigidFitResult> fits;
-    fits.push_back(fitFrom(rigid, false));
-    fits.push_back(fitFrom(rigid, true));
-    if ((unturned.linear - start.linear).norm() > 1e-9 * std::max(1.0, start.linear.norm()))
-        fits.push_back(fitFrom(detail::rigidIcp(source, target, pins, options, unturned), true));
+    fits.push_back(fitFrom(rigid, std::nullopt));
+    for (std::future<RigidFitResult> &other : others)
+        fits.push_back(other.get());
     int iterations = 0;
     std::size_t best = 0;
     for (std::size_t i = 0; i < fits.size(); ++i) {

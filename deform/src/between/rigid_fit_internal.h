@@ -81,11 +81,14 @@ Similarity rigidIcp(const RigidFitSource &source, const RigidFitTarget &target, 
                     const RigidFitOptions &options, Similarity start);
 
 // The articulated coarse step (rigidFit with a FitSkeleton): the n×2 vertices to start the
-// ARAP stages from, `global` applied and then each bone's part turned about its base joint.
-// A skeleton without a bone gives global.apply(V).
+// ARAP stages from, `global` applied and then each bone's part turned about its base joint,
+// judged by the samples of everything below it (Subtrees, ±90°), or the body placed first by its
+// own samples and each bone judged by its own (BodyFirst, ±120°). A skeleton without a bone
+// gives global.apply(V).
+enum class ArticulatedStart { Subtrees, BodyFirst };
 Eigen::MatrixX2d articulatedStart(const RigidFitSource &source, const RigidFitTarget &target,
                                   const Similarity &global, const FitSkeleton &skeleton,
-                                  const RigidFitOptions &options);
+                                  const RigidFitOptions &options, ArticulatedStart style);
 // Pins valid for this source: triangles in range, finite weights and targets.
 bool pinsValid(const RigidFitSource &source, const FitPins &pins);
 
