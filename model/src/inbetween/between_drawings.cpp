@@ -17,10 +17,10 @@ namespace {
 
 namespace between = deform::between;
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("BetweenDrawings", text);
-}
+// The sentences' translation context.
+struct BetweenDrawings {
+    Q_DECLARE_TR_FUNCTIONS(BetweenDrawings)
+};
 
 bool inked(const Stroke &s)
 {
@@ -105,13 +105,14 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
     const StrokeGroup &A = fit->a;
     const StrokeGroup &B = fit->b;
     if (std::none_of(A.strokes.begin(), A.strokes.end(), inked))
-        return finbook::unexpected(tr("The first key has no lines to carry."));
+        return finbook::unexpected(BetweenDrawings::tr("The first key has no lines to carry."));
     if (std::none_of(B.strokes.begin(), B.strokes.end(), inked))
-        return finbook::unexpected(tr("The second key has no lines to fit to."));
+        return finbook::unexpected(BetweenDrawings::tr("The second key has no lines to fit to."));
 
     const auto meshed = meshObject(MeshKey::of(A, closeGap));
     if (!meshed)
-        return finbook::unexpected(tr("The first key could not be meshed: %1").arg(meshed.error()));
+        return finbook::unexpected(
+            BetweenDrawings::tr("The first key could not be meshed: %1").arg(meshed.error()));
     fit->meshed = *meshed;
     const Eigen::MatrixX2d &V = fit->meshed->mesh.V;
     const Eigen::MatrixX3i &F = fit->meshed->mesh.F;
@@ -142,7 +143,8 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
         }
     }
     if (rows.empty())
-        return finbook::unexpected(tr("The first key's lines are dots: there is nothing to fit."));
+        return finbook::unexpected(
+            BetweenDrawings::tr("The first key's lines are dots: there is nothing to fit."));
     geometry::Embedding samples;
     samples.I.resize(Eigen::Index(rows.size()));
     samples.B.resize(Eigen::Index(rows.size()), 3);
@@ -154,7 +156,7 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
     }
     const auto source = between::rigidFitPrecompute(V, F, samples, N);
     if (!source)
-        return finbook::unexpected(tr("The first key's mesh cannot be fitted: %1")
+        return finbook::unexpected(BetweenDrawings::tr("The first key's mesh cannot be fitted: %1")
                                        .arg(QString::fromStdString(source.error().message)));
     fit->source = *source;
 
@@ -208,8 +210,9 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
         const Eigen::AlignedBox2d &where = r.worstRegion;
         QString at;
         if (!where.isEmpty())
-            at = tr(" The lines of the first key around (%1, %2), %3 × %4 px, find nothing "
-                    "like them in the second key.")
+            at = BetweenDrawings::tr(
+                     "The lines of the first key around (%1, %2), %3 × %4 px, find nothing "
+                     "like them in the second key.")
                      .arg(qRound(where.center().x()))
                      .arg(qRound(where.center().y()))
                      .arg(qRound(where.sizes().x()))
@@ -217,28 +220,31 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
         switch (r.status) {
         case between::FitStatus::ResidualTooLarge:
             return finbook::unexpected(
-                tr("The two drawings are too different to fit one onto the other "
-                   "(%1 % of the drawing apart on the median, %2 % stretched).%3 Put a few "
-                   "correspondence pins, or draw the keys closer.")
+                BetweenDrawings::tr(
+                    "The two drawings are too different to fit one onto the other "
+                    "(%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a "
+                    "key between them, or draw the second closer to the first.")
                     .arg(100.0 * std::max(r.relativeMedian,
                                           r.targetDiagonal > 0 ? r.coverageMedian / r.targetDiagonal
                                                                : 0.0),
                          0, 'f', 1)
                     .arg(100.0 * r.distortion, 0, 'f', 0)
-                    .arg(at));
+                    .arg(at.isEmpty() ? QString() : QLatin1Char(' ') + at));
         case between::FitStatus::InvalidPins:
             return finbook::unexpected(
-                tr("A correspondence pin is not on the first key's drawing."));
+                BetweenDrawings::tr("A correspondence pin is not on the first key's drawing."));
         case between::FitStatus::EmptyTarget:
-            return finbook::unexpected(tr("The second key has no lines to fit to."));
+            return finbook::unexpected(
+                BetweenDrawings::tr("The second key has no lines to fit to."));
         default:
-            return finbook::unexpected(tr("The fit could not be solved."));
+            return finbook::unexpected(BetweenDrawings::tr("The fit could not be solved."));
         }
     }
     const auto motion = between::arapInterpolationPrecompute(V, r.U, F);
     if (!motion)
-        return finbook::unexpected(tr("The fitted motion cannot be interpolated: %1")
-                                       .arg(QString::fromStdString(motion.error().message)));
+        return finbook::unexpected(
+            BetweenDrawings::tr("The fitted motion cannot be interpolated: %1")
+                .arg(QString::fromStdString(motion.error().message)));
     fit->motion = *motion;
 
     // B's points in the fitted mesh, to carry them backwards.
@@ -263,16 +269,7 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
             fit->bCoords.row(i) = *c;
     }
 
-    std::vector<QPointF> seeds;
-    for (const Fill &f : A.fills) {
-        seeds.push_back(f.seed);
-        for (const FillPlace &place : f.more)
-            seeds.push_back(place.seed);
-    }
-    Eigen::MatrixX2d S(Eigen::Index(seeds.size()), 2);
-    for (std::size_t i = 0; i < seeds.size(); ++i)
-        S.row(Eigen::Index(i)) << seeds[i].x(), seeds[i].y();
-    fit->seeds = geometry::embed(V, F, S);
+    fit->closeGap = closeGap;
     fit->seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return std::shared_ptr<const DrawingFit>(std::move(fit));
@@ -295,27 +292,46 @@ KeyFits fitKeyDrawings(const Frame &first, const Frame &second, double closeGap,
     return out;
 }
 
-StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions &options)
-{
-    t = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
-    const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
-    const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
-    Eigen::MatrixX2d Ut;
-    if (const auto solved = between::arapInterpolate(*fit.motion, t); solved && solved->allFinite())
-        Ut = *solved;
-    else // never seen; the plain blend is finite at least
-        Ut = (1.0 - t) * V + t * fit.fit.U;
+namespace {
 
-    StrokeGroup out = fit.a;
+// The fitted motion at t, n×2.
+Eigen::MatrixX2d motionAt(const DrawingFit &fit, double t)
+{
+    if (const auto solved = between::arapInterpolate(*fit.motion, t); solved && solved->allFinite())
+        return *solved;
+    return (1.0 - t) * fit.meshed->mesh.V + t * fit.fit.U; // never seen; finite at least
+}
+
+double clampedTime(double t)
+{
+    return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
+}
+
+// How far into the cross-fade t is: 0 before it, 1 at the second key.
+double fadeAt(double t, const BetweenOptions &options)
+{
     const double fade =
         std::clamp(std::isfinite(options.crossFade) ? options.crossFade : 0.0, 0.0, 1.0);
-    const double w = fade > 0.0 && t > 1.0 - fade ? (t - (1.0 - fade)) / fade : 0.0;
-    const auto faded = [](QRgb colour, double keep) {
-        if (qAlpha(colour) == 0)
-            return colour; // a line of no ink stays one
-        const int alpha = std::max(1, int(std::lround(qAlpha(colour) * keep)));
-        return qRgba(qRed(colour), qGreen(colour), qBlue(colour), alpha);
-    };
+    return fade > 0.0 && t > 1.0 - fade ? (t - (1.0 - fade)) / fade : 0.0;
+}
+
+QRgb faded(QRgb colour, double keep)
+{
+    if (qAlpha(colour) == 0)
+        return colour; // a line of no ink stays one
+    const int alpha = std::max(1, int(std::lround(qAlpha(colour) * keep)));
+    return qRgba(qRed(colour), qGreen(colour), qBlue(colour), alpha);
+}
+
+} // namespace
+
+StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions &options)
+{
+    t = clampedTime(t);
+    const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
+    const Eigen::MatrixX2d Ut = motionAt(fit, t);
+    const double w = fadeAt(t, options);
+    StrokeGroup out = fit.a;
     const geometry::Embedding &all = fit.meshed->embedding;
     for (std::size_t s = 0; s < out.strokes.size(); ++s) {
         Stroke &stroke = out.strokes[s];
@@ -333,40 +349,61 @@ StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions
         data->color = faded(data->color, 1.0 - w);
         stroke.data = std::move(data);
     }
-    if (w > 0.0) {
-        Eigen::Index row = 0;
-        for (const Stroke &source : fit.b.strokes) {
-            if (!source.data)
-                continue;
-            const Eigen::Index first = row;
-            row += Eigen::Index(source.data->points.size());
-            if (!inked(source))
-                continue;
-            auto data = std::make_shared<StrokeData>(*source.data);
-            for (std::size_t k = 0; k < data->points.size(); ++k) {
-                const Eigen::Index r = first + Eigen::Index(k);
-                if (r >= fit.bTriangle.size() || fit.bTriangle(r) < 0)
-                    continue;
-                const Eigen::Vector2d p = at(Ut, F, fit.bTriangle(r), fit.bCoords.row(r));
-                data->points[k].x = float(p.x());
-                data->points[k].y = float(p.y());
-            }
-            data->color = faded(data->color, w);
-            out.strokes.push_back(Stroke{source.id, std::move(data)});
-        }
+    // The fills as Apply Pose gives them (fill_resolve.h, fillsAfterBake): A posed by the
+    // carried points shows its rest regions carried whole, and each fill takes the faces of the
+    // carried lines that showed its colour, where lines that crossed on the way have cut a
+    // region in several (a leg passing another) or closed one (a gap narrowed).
+    if (!out.fills.empty()) {
+        StrokeGroup posed = fit.a;
+        auto carried = std::make_shared<DeformedStrokes>();
+        for (const Stroke &stroke : out.strokes)
+            carried->strokes.push_back(stroke.data ? stroke.data->points
+                                                   : std::vector<StrokePoint>{});
+        posed.deformed = std::move(carried);
+        posed.rig.pins = {Pin{kNoId, QPointF(), QPointF()}}; // posed: shown as deformed
+        out.fills = fillsAfterBake(posed, out.strokes, fit.closeGap);
     }
-    Eigen::Index seed = 0;
-    const auto carried = [&](QPointF &p) {
-        const Eigen::Index i = seed++;
-        if (i >= fit.seeds.I.size() || fit.seeds.I(i) < 0)
+    return out;
+}
+
+std::optional<StrokeGroup> fadingInDrawing(const DrawingFit &fit, double t,
+                                           const BetweenOptions &options)
+{
+    t = clampedTime(t);
+    const double w = fadeAt(t, options);
+    if (!(w > 0.0))
+        return std::nullopt;
+    const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
+    const Eigen::MatrixX2d Ut = motionAt(fit, t);
+    Eigen::Index row = 0;
+    const auto carried = [&](float &x, float &y) {
+        const Eigen::Index r = row++;
+        if (r >= fit.bTriangle.size() || fit.bTriangle(r) < 0)
             return;
-        const Eigen::Vector2d q = at(Ut, F, fit.seeds.I(i), fit.seeds.B.row(i));
-        p = QPointF(q.x(), q.y());
+        const Eigen::Vector2d p = at(Ut, F, fit.bTriangle(r), fit.bCoords.row(r));
+        x = float(p.x());
+        y = float(p.y());
     };
-    for (Fill &f : out.fills) {
-        carried(f.seed);
-        for (FillPlace &place : f.more)
-            carried(place.seed);
+    StrokeGroup out = fit.b;
+    for (Stroke &stroke : out.strokes) {
+        if (!stroke.data)
+            continue;
+        auto data = std::make_shared<StrokeData>(*stroke.data);
+        for (StrokePoint &p : data->points)
+            carried(p.x, p.y);
+        data->color = faded(data->color, w);
+        stroke.data = std::move(data);
+    }
+    if (!out.fills.empty()) { // as A's (betweenDrawing): B posed backwards, its pose applied
+        StrokeGroup posed = fit.b;
+        auto back = std::make_shared<DeformedStrokes>();
+        for (const Stroke &stroke : out.strokes)
+            back->strokes.push_back(stroke.data ? stroke.data->points : std::vector<StrokePoint>{});
+        posed.deformed = std::move(back);
+        posed.rig.pins = {Pin{kNoId, QPointF(), QPointF()}};
+        out.fills = fillsAfterBake(posed, out.strokes, fit.closeGap);
+        for (Fill &f : out.fills)
+            f.color = faded(f.color, w);
     }
     return out;
 }

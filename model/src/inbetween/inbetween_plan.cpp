@@ -87,12 +87,20 @@ Frame inbetweenFrame(const Frame &first, const Frame &second, const Matching &m,
             continue;
         }
         if (*m.pairs[i] == ObjectFate::Fitted) {
+            // The first key's drawing carried, and in the cross-fade the second's over it.
             StrokeGroup g = betweenDrawing(*fitAt(fits, i), t);
             g.id = first.groups[i].id;
             g.name = first.groups[i].name;
             g.visible = first.groups[i].visible;
             g.locked = first.groups[i].locked;
             out.groups.push_back(std::move(g));
+            if (std::optional<StrokeGroup> in = fadingInDrawing(*fitAt(fits, i), t)) {
+                in->id = second.groups[i].id;
+                in->name = second.groups[i].name;
+                in->visible = second.groups[i].visible;
+                in->locked = second.groups[i].locked;
+                out.groups.push_back(std::move(*in));
+            }
             continue;
         }
         StrokeGroup g = first.groups[i]; // one object in both keys: the first key's

@@ -5,10 +5,11 @@
 // (deform/between/rigid_fit.h: ARAP-regularised non-rigid ICP), then the fitted motion is
 // interpolated as rigidly as possible (deform/between/arap_interpolation.h: Alexa, Cohen-Or &
 // Levin 2000). An in-between at t is A's strokes carried by the motion at t; over the last part
-// of the range (BetweenOptions::crossFade) they fade out while B's own strokes fade in, carried
-// backwards by the same motion (each B point placed by affine coordinates in the fitted
-// triangle nearest it, so that at t = 1 it is exactly where B drew it): the sequence lands on
-// B's lines. A's fills follow (their seeds carried, their strokes A's own).
+// of the range (BetweenOptions::crossFade) they fade out while B's own drawing fades in over
+// them as an object of its own, carried backwards by the same motion (each B point placed by
+// affine coordinates in the fitted triangle nearest it, so that at t = 1 it is exactly where B
+// drew it): the sequence lands on B's lines and colours. Fills follow as Apply Pose makes them
+// follow a pose: each keeps the colour its carried region shows.
 #pragma once
 
 #include <finbook/deform/between/rigid_fit.h>
@@ -19,6 +20,7 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace finbook::deform::between {
@@ -66,9 +68,8 @@ struct DrawingFit {
     // coordinates there (they may lie outside it for a point beyond A's shape).
     Eigen::VectorXi bTriangle;
     Eigen::MatrixX3d bCoords;
-    // Each of A's fill seeds (first regions, then Fill::more, fill after fill) in A's mesh.
-    geometry::Embedding seeds;
-    double seconds = 0.0; // the time the fit took (mesh, precompute, fit, interpolation)
+    double closeGap = -1.0; // the document's Close gaps the fit was made for
+    double seconds = 0.0;   // the time the fit took (mesh, precompute, fit, interpolation)
 };
 
 // Fits A onto B. Errors are sentences for the user; a fit that fails says where (the region of
@@ -77,11 +78,20 @@ Expected<std::shared_ptr<const DrawingFit>, QString>
 fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
             const std::vector<BetweenPin> &pins = {}, const BetweenOptions &options = {});
 
-// The drawing of the in-between at t (0 < t < 1; clamped): a copy of A (its name and mesh
-// density; no rig, no pose) holding A's strokes carried to t and, inside the cross-fade, B's
-// strokes too, each stroke's ink faded. Strokes and fills keep the ids of the keys' (A's, then
-// B's): give them new ones before putting the drawing in a document.
+// The first key's drawing in the in-between at t (t clamped to 0..1): a copy of A (its name
+// and mesh density; no rig, no pose) with its strokes carried to t and its fills as Apply Pose
+// would give them (fillsAfterBake); inside the cross-fade its lines' ink fades (its fills
+// stay, under the second key's fading in). Ids are
+// A's: give them new ones before putting the drawing in a document.
 StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions &options = {});
+
+// Inside the cross-fade, the second key's drawing as it fades in over the first's: B's strokes
+// carried backwards to t (its fills following as A's do) (at t = 1 exactly where B drew them), its
+// lines' ink and its fills' colours at the fade's share of their alpha. A separate object, so that
+// its lines do not cut the first drawing's regions into slivers (nor A's cut B's); nullopt before
+// the cross-fade. Ids are B's.
+std::optional<StrokeGroup> fadingInDrawing(const DrawingFit &fit, double t,
+                                           const BetweenOptions &options = {});
 
 // The fits of the objects the two keys show drawn differently (differentDrawings), in
 // inbetween_plan.h's DrawingFits form, and for each pair that could not be fitted its position
