@@ -14,7 +14,9 @@
 //     keeps its length), % change, max over bones longer than 4 px; naive_limb_change_pct the
 //     same for a point-to-point morph (each vertex halfway along a straight line to its fitted
 //     place);
-//   fit_ms: the whole fit (mesh, precompute, fit, interpolation's precompute); vertices.
+//   fit_ms: the whole fit (mesh, skeleton, precompute, fit from its starts, interpolation's
+//     precompute); inbetween_ms: one in-between's drawing (t = 0.5: strokes carried, fills tied
+//     as Apply Pose ties them); fills_kept: it has as many fills as A; vertices.
 // The last line sums up: medians and worst cases, and how many drawings meet the issue's
 // targets (median ≤ 2 % and p95 ≤ 6 %; mid in-between limbs within 3 %).
 // --png DIR: per drawing DIR/between_NAME.png: A, B, A's fitted lines (red) over B (grey),
@@ -31,6 +33,7 @@
 #include <QPainter>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -125,7 +128,7 @@ StrokeGroup redrawn(const StrokeGroup &posed, std::uint32_t seed)
     return b;
 }
 
-QImage cell(const StrokeGroup &g, const QTransform &t, const DocumentSettings &settings,
+QImage cell(const Frame &frame, const QTransform &t, const DocumentSettings &settings,
             const StrokeGroup *under = nullptr)
 {
     QImage image(kCell, kCell, QImage::Format_ARGB32_Premultiplied);
@@ -133,39 +136,29 @@ QImage cell(const StrokeGroup &g, const QTransform &t, const DocumentSettings &s
     QPainter painter(&image);
     painter.setTransform(t);
     painter.setRenderHint(QPainter::Antialiasing);
-    const auto paint = [&](const StrokeGroup &group) {
-        Frame f;
-        f.groups.push_back(group);
-        paintFrame(painter, f, settings);
-    };
-    if (under) {
-        StrokeGroup grey = *under;
-        grey.fills.clear();
-        for (Stroke &s : grey.strokes) {
-            auto data = std::make_shared<StrokeData>(*s.data);
-            data->color = 0xffb0b0b0;
-            data->width = 5.0f;
-            s.data = std::move(data);
-        }
-        paint(grey);
-        StrokeGroup red = g;
-        red.fills.clear();
-        for (Stroke &s : red.strokes) {
-            auto data = std::make_shared<StrokeData>(*s.data);
-            data->color = 0xffe02020;
-            data->width = 1.5f;
-            s.data = std::move(data);
-        }
-        paint(red);
-    } else {
-        paint(g);
+    if (!under) {
+        paintFrame(painter, frame, settings);
+        return image;
     }
+    // B's lines, wide and grey, under A's fitted ones, thin and red.
+    const auto lines = [&](const StrokeGroup &g, const QPen &pen) {
+        painter.setPen(pen);
+        for (const Stroke &s : g.strokes) {
+            QPolygonF line;
+            for (const StrokePoint &p : s.data->points)
+                line << QPointF(p.x, p.y);
+            painter.drawPolyline(line);
+        }
+    };
+    lines(*under, QPen(QColor(150, 150, 150), 9.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    for (const StrokeGroup &g : frame.groups)
+        lines(g, QPen(QColor(224, 32, 32), 1.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
     return image;
 }
 
 struct Summary {
-    std::vector<double> median, p95, limb, naive, ms;
-    int meets = 0, limbsMeet = 0, failed = 0, drawings = 0;
+    std::vector<double> median, p95, limb, naive, ms, drawingMs;
+    int meets = 0, limbsMeet = 0, failed = 0, drawings = 0, fillsKept = 0;
     QString worstFile;
     double worstP95 = -1.0;
 };
@@ -272,6 +265,13 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
                         Ut ? (*Ut - V).rowwise().norm().maxCoeff() : -1.0,
                         (fit.fit.U - V).rowwise().norm().maxCoeff(), fit.motion->flippedTriangles);
         }
+    // One in-between's drawing (carried strokes, fills as Apply Pose ties them): what each
+    // generated frame costs.
+    const auto drawingStart = std::chrono::steady_clock::now();
+    const StrokeGroup midDrawing = betweenDrawing(fit, 0.5, options);
+    const double drawingMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawingStart)
+            .count();
     const double median = bench::percentile(error, 0.5), p95 = bench::percentile(error, 0.95);
     const double ms = 1000.0 * fit.seconds;
     row.insert(QStringLiteral("vertices"), int(V.rows()));
@@ -282,6 +282,8 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     row.insert(QStringLiteral("naive_limb_change_pct"), naive);
     row.insert(QStringLiteral("fit_limb_change_pct"), fitLimb);
     row.insert(QStringLiteral("fit_ms"), ms);
+    row.insert(QStringLiteral("inbetween_ms"), drawingMs);
+    row.insert(QStringLiteral("fills_kept"), int(midDrawing.fills.size()) == int(a.fills.size()));
     row.insert(QStringLiteral("distortion"), fit.fit.distortion);
     print();
     summary.median.push_back(median);
@@ -289,6 +291,8 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     summary.limb.push_back(limb);
     summary.naive.push_back(naive);
     summary.ms.push_back(ms);
+    summary.drawingMs.push_back(drawingMs);
+    summary.fillsKept += midDrawing.fills.size() == a.fills.size();
     summary.meets += median <= 2.0 && p95 <= 6.0;
     summary.limbsMeet += limb <= 3.0;
     if (p95 > summary.worstP95) {
@@ -299,13 +303,23 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
         return;
     const QRectF view = box.united(testing::shownBounds(b)).adjusted(-8, -8, 8, 8);
     const QTransform t = testing::pictureView(view, kCell);
-    std::vector<QImage> cells{cell(a, t, doc.settings()), cell(b, t, doc.settings())};
+    const auto alone = [](const StrokeGroup &group) {
+        Frame f;
+        f.groups.push_back(group);
+        return f;
+    };
+    std::vector<QImage> cells{cell(alone(a), t, doc.settings()), cell(alone(b), t, doc.settings())};
     BetweenOptions noFade = options;
     noFade.crossFade = 0.0;
     StrokeGroup carried = betweenDrawing(fit, 1.0, noFade);
-    cells.push_back(cell(carried, t, doc.settings(), &b));
-    for (double u : {0.25, 0.5, 0.85})
-        cells.push_back(cell(betweenDrawing(fit, u, options), t, doc.settings()));
+    cells.push_back(cell(alone(carried), t, doc.settings(), &b));
+    for (double u : {0.25, 0.5, 0.85}) {
+        Frame f;
+        f.groups.push_back(betweenDrawing(fit, u, options));
+        if (auto in = fadingInDrawing(fit, u, options))
+            f.groups.push_back(std::move(*in));
+        cells.push_back(cell(f, t, doc.settings()));
+    }
     QImage sheet(kCell * int(cells.size()), kCell, QImage::Format_RGB32);
     QPainter painter(&sheet);
     for (std::size_t i = 0; i < cells.size(); ++i) {
@@ -368,12 +382,14 @@ int benchBetween(const QStringList &args)
         "\"meet_error_targets_pct\":%.1f,\"limb_change_pct_median\":%.3f,"
         "\"limb_change_pct_max\":%.3f,\"limbs_within_3pct\":%d,"
         "\"naive_limb_change_pct_median\":%.3f,\"naive_limb_change_pct_max\":%.3f,"
-        "\"fit_ms_median\":%.1f,\"fit_ms_max\":%.1f}\n",
+        "\"fit_ms_median\":%.1f,\"fit_ms_max\":%.1f,\"inbetween_ms_median\":%.1f,"
+        "\"inbetween_ms_max\":%.1f,\"fills_kept\":%d}\n",
         summary.drawings, fitted, summary.failed, pct(summary.median, 0.5), pct(summary.p95, 0.5),
         worst(summary.p95), qPrintable(summary.worstFile), summary.meets,
         summary.drawings > 0 ? 100.0 * summary.meets / summary.drawings : 0.0,
         pct(summary.limb, 0.5), worst(summary.limb), summary.limbsMeet, pct(summary.naive, 0.5),
-        worst(summary.naive), pct(summary.ms, 0.5), worst(summary.ms));
+        worst(summary.naive), pct(summary.ms, 0.5), worst(summary.ms), pct(summary.drawingMs, 0.5),
+        worst(summary.drawingMs), summary.fillsKept);
     return 0;
 }
 

@@ -317,19 +317,27 @@ void TestBetweenDrawings::inbetweensStartOnAAndLandOnB()
                            pointOf(a.strokes[s].data->points[k]))
                         .length() < 1e-3);
     }
-    QVERIFY(QLineF(start.fills[0].seed, fill.seed).length() < 1e-6);
-    // Before the cross-fade only A's lines; in it A's fade out while B's come in, and near the
-    // end B's lines are where B drew them.
-    QCOMPARE(betweenDrawing(fit, 0.6).strokes.size(), a.strokes.size());
+    // The fill is the body's, as Apply Pose ties it (its seed in the body, its outline's id).
+    QCOMPARE(start.fills.size(), std::size_t(1));
+    QCOMPARE(start.fills[0].color, fill.color);
+    QVERIFY(std::binary_search(start.fills[0].strokes.begin(), start.fills[0].strokes.end(),
+                               Id(2)));
+    // Before the cross-fade only A's drawing; in it A's lines fade out while B's drawing comes
+    // in over it, and at the end B's lines are where B drew them.
+    QVERIFY(!fadingInDrawing(fit, 0.6));
     const StrokeGroup fading = betweenDrawing(fit, 0.85);
-    QCOMPARE(fading.strokes.size(), a.strokes.size() + b.strokes.size());
+    QCOMPARE(fading.strokes.size(), a.strokes.size());
     QVERIFY(qAlpha(fading.strokes[0].data->color) < 255 &&
             qAlpha(fading.strokes[0].data->color) > 0);
-    QVERIFY(qAlpha(fading.strokes.back().data->color) < 255 &&
-            qAlpha(fading.strokes.back().data->color) > 0);
-    const StrokeGroup end = betweenDrawing(fit, 1.0);
+    QCOMPARE(fading.fills[0].color, fill.color); // under B's, as a dissolve
+    const std::optional<StrokeGroup> in = fadingInDrawing(fit, 0.85);
+    QVERIFY(in);
+    QCOMPARE(in->strokes.size(), b.strokes.size());
+    QVERIFY(qAlpha(in->strokes[0].data->color) < 255 && qAlpha(in->strokes[0].data->color) > 0);
+    const std::optional<StrokeGroup> end = fadingInDrawing(fit, 1.0);
+    QVERIFY(end);
     for (std::size_t s = 0; s < b.strokes.size(); ++s) {
-        const Stroke &drawn = end.strokes[a.strokes.size() + s];
+        const Stroke &drawn = end->strokes[s];
         QCOMPARE(drawn.id, b.strokes[s].id);
         QCOMPARE(qAlpha(drawn.data->color), 255);
         for (std::size_t k = 0; k < drawn.data->points.size(); ++k)
@@ -392,6 +400,11 @@ void TestBetweenDrawings::generatedInbetweensAreOneUndoStep()
         QVERIFY2(lowest > previous, qPrintable(QString::number(lowest)));
         previous = lowest;
     }
+    // The last in-between (t = 0.75, in the cross-fade) shows the second key's drawing
+    // fading in as an object of its own; the others only the first's.
+    QCOMPARE(doc.frameAt(1).groups.size(), std::size_t(1));
+    QCOMPARE(doc.frameAt(3).groups.size(), std::size_t(2));
+    QVERIFY(qAlpha(doc.frameAt(3).groups[1].strokes[0].data->color) < 255);
     // The frames save and open again.
     const auto reopened = readFinbook(serializeFinbook(doc));
     QVERIFY2(reopened, reopened ? "" : qPrintable(reopened.error().message));
