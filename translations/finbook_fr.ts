@@ -2,6 +2,60 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr_FR">
 <context>
+    <name>BetweenDrawings</name>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="108"/>
+        <source>The first key has no lines to carry.</source>
+        <translation>La première clé n’a aucune ligne à transporter.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="238"/>
+        <source>The second key has no lines to fit to.</source>
+        <translation>La seconde clé n’a aucune ligne sur laquelle ajuster.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="115"/>
+        <source>The first key could not be meshed: %1</source>
+        <translation>La première clé n’a pas pu être maillée : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="147"/>
+        <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
+        <translation>Les lignes de la première clé sont des points : il n’y a rien à ajuster.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="159"/>
+        <source>The first key&apos;s mesh cannot be fitted: %1</source>
+        <translation>Le maillage de la première clé ne peut pas être ajusté : %1</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="213"/>
+        <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
+        <translation>Les lignes de la première clé autour de (%1, %2), %3 × %4 px, ne trouvent rien de semblable dans la seconde.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="223"/>
+        <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
+        <translation>Les deux dessins sont trop différents pour ajuster l’un sur l’autre (à %1 % du dessin en médiane, étiré de %2 %).%3 Dessinez une clé entre les deux, ou la seconde plus proche de la première.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="235"/>
+        <source>A correspondence pin is not on the first key&apos;s drawing.</source>
+        <translation>Une épingle de correspondance n’est pas sur le dessin de la première clé.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="240"/>
+        <source>The fit could not be solved.</source>
+        <translation>L’ajustement n’a pas pu être résolu.</translation>
+    </message>
+    <message>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="246"/>
+        <source>The fitted motion cannot be interpolated: %1</source>
+        <translation>Le mouvement ajusté ne peut pas être interpolé : %1</translation>
+    </message>
+</context>
+<context>
     <name>CelEditing</name>
     <message>
         <location filename="../ui/src/layers/cel_editing.cpp" line="113"/>
@@ -2178,7 +2232,7 @@
         <translation>les %1 derniers octets du fichier sont endommagés et n&apos;ont pas pu être lus</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/src/finbook_file_recover.cpp" line="88"/>
+        <location filename="../model/src/finbook_file_recover.cpp" line="126"/>
         <source>%n missing or repeated id(s) were replaced by new ones</source>
         <translation>
             <numerusform>%n identifiant manquant ou en double a été remplacé par un nouveau</numerusform>
@@ -4307,122 +4361,149 @@
 <context>
     <name>finbook::ui::InbetweenDialog</name>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="37"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="38"/>
         <source>Generate In-betweens</source>
         <translation>Générer des intervalles</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="43"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="44"/>
         <source>Objects:</source>
         <translation>Objets&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="81"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
         <source>&amp;Frames between the keys:</source>
         <translation>&amp;Images entre les clés&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="84"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="85"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="123"/>
         <source>Ease in (slow from the first key)</source>
         <translation>Démarrage progressif (lent depuis la première clé)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="86"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="124"/>
         <source>Ease out (slow into the second key)</source>
         <translation>Arrêt progressif (lent en arrivant à la seconde clé)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="87"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="125"/>
         <source>Ease in and out</source>
         <translation>Démarrage et arrêt progressifs</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="88"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="126"/>
         <source>Favour…</source>
         <translation>Favoriser…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="89"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
         <source>&amp;Spacing:</source>
         <translation>&amp;Espacement&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="93"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
         <source>Left favours the first key, right the second.</source>
         <translation>À gauche, la première clé est favorisée&#xa0;; à droite, la seconde.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="94"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
         <source>F&amp;avour:</source>
         <translation>Fa&amp;voriser&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="97"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Déplacer les épingles et les coins de cage en &amp;arcs</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="100"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Un membre qui pivote entre les clés garde sa longueur. Si la case est décochée, chaque cible se déplace en ligne droite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="129"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
+        <source>Carry &amp;different drawings onto each other</source>
+        <translation>Transporter les &amp;dessins différents l’un sur l’autre</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="145"/>
+        <source>Where the two keys are separate drawings of an object, the first is fitted onto the second as rigidly as possible and carried there, fading into the second&apos;s lines at the end. Unchecked, the drawing switches over half way.</source>
+        <translation>Là où les deux clés sont des dessins distincts d’un objet, le premier est ajusté sur le second aussi rigidement que possible et transporté jusqu’à lui, en se fondant à la fin dans ses lignes. Décoché, le dessin change à mi-chemin.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="176"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="216"/>
         <source>(unnamed)</source>
         <translation>(sans nom)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="179"/>
         <source>%1: interpolated</source>
         <translation>%1&#xa0;: interpolé</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="134"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="181"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ni épingles, ni cage, ni squelette)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="136"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="183"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ses épingles, sa cage ou son squelette diffèrent entre les clés)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="140"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="187"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1&#xa0;: seulement dans la première clé, maintenu pendant la première moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="142"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="189"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1&#xa0;: seulement dans la seconde clé, maintenu pendant la seconde moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="152"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
+        <source>%1: carried from the first key&apos;s drawing to the second&apos;s</source>
+        <translation>%1 : transporté du dessin de la première clé à celui de la seconde</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="201"/>
         <source>Select two different frames as keys.</source>
         <translation>Sélectionnez deux images différentes comme clés.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="162"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="213"/>
+        <source>%1: could not be carried onto the second key&apos;s drawing, so it switches over half way. %2</source>
+        <translation>%1 : n’a pas pu être transporté sur le dessin de la seconde clé, il change donc à mi-chemin. %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="219"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="258"/>
+        <source>Fitting the drawings that differ…</source>
+        <translation>Ajustement des dessins différents…</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="220"/>
         <source>Posing the preview…</source>
         <translation>Calcul de l’aperçu…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="196"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
         <source>The preview could not be posed: %1</source>
         <translation>Impossible de poser l&apos;aperçu&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="201"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="260"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Aucun objet n&apos;a d&apos;épingles ou de cage correspondantes dans les deux clés&#xa0;: les intervalles ne feront que maintenir les dessins.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="203"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="262"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Le canevas montre l&apos;intervalle du milieu.</translation>
     </message>

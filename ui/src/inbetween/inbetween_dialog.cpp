@@ -188,9 +188,7 @@ QString InbetweenDialog::describe(const model::InbetweenObjectReport &object) co
     case model::ObjectFate::SecondKeyOnly:
         return tr("%1: only in the second key, held in the second half").arg(name);
     case model::ObjectFate::Fitted:
-        return tr("%1: drawn differently in each key, carried from the first drawing onto the "
-                  "second")
-            .arg(name);
+        return tr("%1: carried from the first key's drawing to the second's").arg(name);
     }
     return name;
 }
