@@ -16,7 +16,10 @@
 //     place);
 //   fit_ms: the whole fit (mesh, skeleton, precompute, fit from its starts, interpolation's
 //     precompute); inbetween_ms: one in-between's drawing (t = 0.5: strokes carried, fills tied
-//     as Apply Pose ties them); fills_kept: it has as many fills as A; vertices.
+//     as Apply Pose ties them); fills_kept: it has as many fills as A; vertices;
+//   pin_ms: a correspondence pin put on A's worst-fitted point at its true place and dragged
+//     2 px at a time, the live refit's time (median of 5); worst_point_pct and
+//     worst_point_pinned_pct: that point's error before and with the pin.
 // The last line sums up: medians and worst cases, and how many drawings meet the issue's
 // targets (median ≤ 2 % and p95 ≤ 6 %; mid in-between limbs within 3 %).
 // --png DIR: per drawing DIR/between_NAME.png: A, B, A's fitted lines (red) over B (grey),
@@ -157,7 +160,7 @@ QImage cell(const Frame &frame, const QTransform &t, const DocumentSettings &set
 }
 
 struct Summary {
-    std::vector<double> median, p95, limb, naive, ms, drawingMs;
+    std::vector<double> median, p95, limb, naive, ms, drawingMs, pinMs;
     int meets = 0, limbsMeet = 0, failed = 0, drawings = 0, fillsKept = 0;
     QString worstFile;
     double worstP95 = -1.0;
@@ -265,6 +268,51 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
                         Ut ? (*Ut - V).rowwise().norm().maxCoeff() : -1.0,
                         (fit.fit.U - V).rowwise().norm().maxCoeff(), fit.motion->flippedTriangles);
         }
+    // A correspondence pin on A's worst point at its true place, then dragged 2 px at a time:
+    // the time of each live refit (refitDrawings), and how far that point is then.
+    std::vector<double> pinMs;
+    double pinnedError = -1.0;
+    {
+        std::size_t worstStroke = 0, worstPoint = 0;
+        double worstError = -1.0;
+        for (std::size_t s = 0; s < a.strokes.size(); ++s) {
+            const std::vector<StrokePoint> &truth = posed.deformed->strokes[s];
+            for (std::size_t k = 0; k < truth.size(); ++k) {
+                const Eigen::Index r = Eigen::Index(fit.meshed->strokeOffsets[s] + k);
+                if (all.I(r) < 0)
+                    continue;
+                const Eigen::Vector2d p = pointAt(fit.fit.U, F, all.I(r), all.B.row(r));
+                const double e = std::hypot(p.x() - truth[k].x, p.y() - truth[k].y);
+                if (e > worstError) {
+                    worstError = e;
+                    worstStroke = s;
+                    worstPoint = k;
+                }
+            }
+        }
+        const StrokePoint &rest = a.strokes[worstStroke].data->points[worstPoint];
+        const StrokePoint &goal = posed.deformed->strokes[worstStroke][worstPoint];
+        std::shared_ptr<const DrawingFit> live = *fitted;
+        for (int move = 0; move < 5 && live; ++move) {
+            const BetweenPin pin{QPointF(rest.x, rest.y), QPointF(goal.x, goal.y + 2.0 * move)};
+            const auto pinStart = std::chrono::steady_clock::now();
+            const auto refitted = refitDrawings(*live, {pin}, options);
+            pinMs.push_back(std::chrono::duration<double, std::milli>(
+                                std::chrono::steady_clock::now() - pinStart)
+                                .count());
+            if (!refitted)
+                break;
+            live = *refitted;
+            if (move == 0) {
+                const Eigen::Index r =
+                    Eigen::Index(live->meshed->strokeOffsets[worstStroke] + worstPoint);
+                const Eigen::Vector2d p = pointAt(live->fit.U, F, all.I(r), all.B.row(r));
+                pinnedError = 100.0 * std::hypot(p.x() - goal.x, p.y() - goal.y) / diagonal;
+            }
+        }
+        row.insert(QStringLiteral("worst_point_pct"), 100.0 * worstError / diagonal);
+        row.insert(QStringLiteral("worst_point_pinned_pct"), pinnedError);
+    }
     // One in-between's drawing (carried strokes, fills as Apply Pose ties them): what each
     // generated frame costs.
     const auto drawingStart = std::chrono::steady_clock::now();
@@ -283,6 +331,7 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     row.insert(QStringLiteral("fit_limb_change_pct"), fitLimb);
     row.insert(QStringLiteral("fit_ms"), ms);
     row.insert(QStringLiteral("inbetween_ms"), drawingMs);
+    row.insert(QStringLiteral("pin_ms"), pinMs.empty() ? -1.0 : bench::percentile(pinMs, 0.5));
     row.insert(QStringLiteral("fills_kept"), int(midDrawing.fills.size()) == int(a.fills.size()));
     row.insert(QStringLiteral("distortion"), fit.fit.distortion);
     print();
@@ -292,6 +341,7 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     summary.naive.push_back(naive);
     summary.ms.push_back(ms);
     summary.drawingMs.push_back(drawingMs);
+    summary.pinMs.insert(summary.pinMs.end(), pinMs.begin(), pinMs.end());
     summary.fillsKept += midDrawing.fills.size() == a.fills.size();
     summary.meets += median <= 2.0 && p95 <= 6.0;
     summary.limbsMeet += limb <= 3.0;
@@ -375,21 +425,23 @@ int benchBetween(const QStringList &args)
         return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
     };
     const int fitted = int(summary.median.size());
-    std::printf(
-        "{\"bench\":\"between\",\"summary\":true,\"drawings\":%d,\"fitted\":%d,"
-        "\"failed\":%d,\"error_median_pct_median\":%.3f,\"error_p95_pct_median\":%.3f,"
-        "\"error_p95_pct_max\":%.3f,\"worst\":\"%s\",\"meet_error_targets\":%d,"
-        "\"meet_error_targets_pct\":%.1f,\"limb_change_pct_median\":%.3f,"
-        "\"limb_change_pct_max\":%.3f,\"limbs_within_3pct\":%d,"
-        "\"naive_limb_change_pct_median\":%.3f,\"naive_limb_change_pct_max\":%.3f,"
-        "\"fit_ms_median\":%.1f,\"fit_ms_max\":%.1f,\"inbetween_ms_median\":%.1f,"
-        "\"inbetween_ms_max\":%.1f,\"fills_kept\":%d}\n",
-        summary.drawings, fitted, summary.failed, pct(summary.median, 0.5), pct(summary.p95, 0.5),
-        worst(summary.p95), qPrintable(summary.worstFile), summary.meets,
-        summary.drawings > 0 ? 100.0 * summary.meets / summary.drawings : 0.0,
-        pct(summary.limb, 0.5), worst(summary.limb), summary.limbsMeet, pct(summary.naive, 0.5),
-        worst(summary.naive), pct(summary.ms, 0.5), worst(summary.ms), pct(summary.drawingMs, 0.5),
-        worst(summary.drawingMs), summary.fillsKept);
+    std::printf("{\"bench\":\"between\",\"summary\":true,\"drawings\":%d,\"fitted\":%d,"
+                "\"failed\":%d,\"error_median_pct_median\":%.3f,\"error_p95_pct_median\":%.3f,"
+                "\"error_p95_pct_max\":%.3f,\"worst\":\"%s\",\"meet_error_targets\":%d,"
+                "\"meet_error_targets_pct\":%.1f,\"limb_change_pct_median\":%.3f,"
+                "\"limb_change_pct_max\":%.3f,\"limbs_within_3pct\":%d,"
+                "\"naive_limb_change_pct_median\":%.3f,\"naive_limb_change_pct_max\":%.3f,"
+                "\"fit_ms_median\":%.1f,\"fit_ms_max\":%.1f,\"inbetween_ms_median\":%.1f,"
+                "\"inbetween_ms_max\":%.1f,\"fills_kept\":%d,\"pin_ms_median\":%.1f,"
+                "\"pin_ms_p95\":%.1f}\n",
+                summary.drawings, fitted, summary.failed, pct(summary.median, 0.5),
+                pct(summary.p95, 0.5), worst(summary.p95), qPrintable(summary.worstFile),
+                summary.meets,
+                summary.drawings > 0 ? 100.0 * summary.meets / summary.drawings : 0.0,
+                pct(summary.limb, 0.5), worst(summary.limb), summary.limbsMeet,
+                pct(summary.naive, 0.5), worst(summary.naive), pct(summary.ms, 0.5),
+                worst(summary.ms), pct(summary.drawingMs, 0.5), worst(summary.drawingMs),
+                summary.fillsKept, pct(summary.pinMs, 0.5), pct(summary.pinMs, 0.95));
     return 0;
 }
 

@@ -257,6 +257,17 @@ void TestBetweenDrawings::correspondencePinsMoveTheFit()
     qInfo("pinned corner: %.2f px from its pin's place, %.2f px without the pin", after, before);
     QVERIFY2(after < 0.5 * before && after < 8.0,
              qPrintable(QStringLiteral("%1 → %2").arg(before).arg(after)));
+    // Dragged live: the fit refitted from where it settled takes the pin as well, and taking the
+    // pin away again gives back a fit like the free one.
+    const auto live = refitDrawings(**free, {BetweenPin{corner, wanted}});
+    QVERIFY2(live, live ? "" : qPrintable(live.error()));
+    const double refitted = QLineF(fitted(**live, 0, at), wanted).length();
+    qInfo("refitted with the pin: %.2f px from its place", refitted);
+    QVERIFY(refitted < 0.5 * before && refitted < 8.0);
+    QCOMPARE((*live)->pins.size(), std::size_t(1));
+    const auto unpinned = refitDrawings(**live, {});
+    QVERIFY(unpinned);
+    QVERIFY(QLineF(fitted(**unpinned, 0, at), fitted(**free, 0, at)).length() < 0.5 * before);
 }
 
 void TestBetweenDrawings::drawingsThatDoNotFitAreRefusedWithAReason()
@@ -320,8 +331,8 @@ void TestBetweenDrawings::inbetweensStartOnAAndLandOnB()
     // The fill is the body's, as Apply Pose ties it (its seed in the body, its outline's id).
     QCOMPARE(start.fills.size(), std::size_t(1));
     QCOMPARE(start.fills[0].color, fill.color);
-    QVERIFY(std::binary_search(start.fills[0].strokes.begin(), start.fills[0].strokes.end(),
-                               Id(2)));
+    QVERIFY(
+        std::binary_search(start.fills[0].strokes.begin(), start.fills[0].strokes.end(), Id(2)));
     // Before the cross-fade only A's drawing; in it A's lines fade out while B's drawing comes
     // in over it, and at the end B's lines are where B drew them.
     QVERIFY(!fadingInDrawing(fit, 0.6));

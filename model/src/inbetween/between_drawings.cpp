@@ -76,6 +76,99 @@ Id largestId(const StrokeGroup &g)
     return top;
 }
 
+// The sentence for a fit that failed; empty for one that did not.
+QString failure(const deform::between::RigidFitResult &r)
+{
+    namespace between = deform::between;
+    if (r.status == between::FitStatus::Fitted)
+        return {};
+    const Eigen::AlignedBox2d &where = r.worstRegion;
+    QString at;
+    if (!where.isEmpty())
+        at = BetweenDrawings::tr(
+                 "The lines of the first key around (%1, %2), %3 × %4 px, find nothing "
+                 "like them in the second key.")
+                 .arg(qRound(where.center().x()))
+                 .arg(qRound(where.center().y()))
+                 .arg(qRound(where.sizes().x()))
+                 .arg(qRound(where.sizes().y()));
+    switch (r.status) {
+    case between::FitStatus::ResidualTooLarge:
+        return BetweenDrawings::tr(
+                   "The two drawings are too different to fit one onto the other "
+                   "(%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a "
+                   "key between them, or draw the second closer to the first.")
+            .arg(100.0 * std::max(r.relativeMedian,
+                                  r.targetDiagonal > 0 ? r.coverageMedian / r.targetDiagonal : 0.0),
+                 0, 'f', 1)
+            .arg(100.0 * r.distortion, 0, 'f', 0)
+            .arg(at.isEmpty() ? QString() : QLatin1Char(' ') + at);
+    case between::FitStatus::InvalidPins:
+        return BetweenDrawings::tr("A correspondence pin is not on the first key's drawing.");
+    case between::FitStatus::EmptyTarget:
+        return BetweenDrawings::tr("The second key has no lines to fit to.");
+    default:
+        return BetweenDrawings::tr("The fit could not be solved.");
+    }
+}
+
+// The motion and B's points in the fitted mesh, once the fit is made. Empty, or what failed.
+QString finish(DrawingFit &fitted)
+{
+    namespace between = deform::between;
+    DrawingFit *const fit = &fitted;
+    const between::RigidFitResult &r = fit->fit;
+    const Eigen::MatrixX2d &V = fit->meshed->mesh.V;
+    const Eigen::MatrixX3i &F = fit->meshed->mesh.F;
+    const StrokeGroup &B = fit->b;
+    const auto motion = between::arapInterpolationPrecompute(V, r.U, F);
+    if (!motion)
+        return BetweenDrawings::tr("The fitted motion cannot be interpolated: %1")
+            .arg(QString::fromStdString(motion.error().message));
+    fit->motion = *motion;
+
+    // B's points in the fitted mesh, to carry them backwards.
+    std::vector<Eigen::Vector2d> bAll;
+    for (const Stroke &s : B.strokes)
+        if (s.data)
+            for (const StrokePoint &p : s.data->points)
+                bAll.emplace_back(p.x, p.y);
+    Eigen::MatrixX2d BP(Eigen::Index(bAll.size()), 2);
+    for (std::size_t i = 0; i < bAll.size(); ++i)
+        BP.row(Eigen::Index(i)) = bAll[i].transpose();
+    const geometry::Embedding inFit = geometry::embed(r.U, F, BP);
+    fit->bTriangle = inFit.I;
+    fit->bCoords = inFit.B;
+    for (Eigen::Index i = 0; i < BP.rows(); ++i) {
+        const int t = inFit.I(i);
+        if (t < 0)
+            continue;
+        const auto c = affineCoords(BP.row(i).transpose(), r.U.row(F(t, 0)).transpose(),
+                                    r.U.row(F(t, 1)).transpose(), r.U.row(F(t, 2)).transpose());
+        if (c)
+            fit->bCoords.row(i) = *c;
+    }
+
+    return {};
+}
+
+// Correspondence pins as the fit takes them: each A point in A's mesh.
+deform::between::FitPins fitPinsOf(const std::vector<BetweenPin> &pins, const Eigen::MatrixX2d &V,
+                                   const Eigen::MatrixX3i &F)
+{
+    deform::between::FitPins fitPins;
+    if (pins.empty())
+        return fitPins;
+    Eigen::MatrixX2d onA(Eigen::Index(pins.size()), 2);
+    fitPins.targets.resize(Eigen::Index(pins.size()), 2);
+    for (std::size_t i = 0; i < pins.size(); ++i) {
+        onA.row(Eigen::Index(i)) << pins[i].onA.x(), pins[i].onA.y();
+        fitPins.targets.row(Eigen::Index(i)) << pins[i].onB.x(), pins[i].onB.y();
+    }
+    fitPins.where = geometry::embed(V, F, onA);
+    return fitPins;
+}
+
 } // namespace
 
 StrokeGroup shownDrawing(const StrokeGroup &group, double closeGap,
@@ -187,17 +280,8 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
     }
     fit->target = between::rigidFitTarget(P, NB);
 
-    between::FitPins fitPins;
-    if (!pins.empty()) {
-        Eigen::MatrixX2d onA(Eigen::Index(pins.size()), 2);
-        fitPins.targets.resize(Eigen::Index(pins.size()), 2);
-        for (std::size_t i = 0; i < pins.size(); ++i) {
-            onA.row(Eigen::Index(i)) << pins[i].onA.x(), pins[i].onA.y();
-            fitPins.targets.row(Eigen::Index(i)) << pins[i].onB.x(), pins[i].onB.y();
-        }
-        fitPins.where = geometry::embed(V, F, onA);
-    }
-    between::FitSkeleton skeleton;
+    const between::FitPins fitPins = fitPinsOf(pins, V, F);
+    between::FitSkeleton &skeleton = fit->skeleton;
     if (options.articulated)
         if (const auto built = buildSkeletonRig(A, {}, std::nullopt, closeGap)) {
             for (const QPointF &j : built->joints)
@@ -205,71 +289,31 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
             skeleton.parent = built->parent;
         }
     fit->fit = between::rigidFit(*fit->source, *fit->target, fitPins, skeleton, options.fit);
-    const between::RigidFitResult &r = fit->fit;
-    if (r.status != between::FitStatus::Fitted) {
-        const Eigen::AlignedBox2d &where = r.worstRegion;
-        QString at;
-        if (!where.isEmpty())
-            at = BetweenDrawings::tr(
-                     "The lines of the first key around (%1, %2), %3 × %4 px, find nothing "
-                     "like them in the second key.")
-                     .arg(qRound(where.center().x()))
-                     .arg(qRound(where.center().y()))
-                     .arg(qRound(where.sizes().x()))
-                     .arg(qRound(where.sizes().y()));
-        switch (r.status) {
-        case between::FitStatus::ResidualTooLarge:
-            return finbook::unexpected(
-                BetweenDrawings::tr(
-                    "The two drawings are too different to fit one onto the other "
-                    "(%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a "
-                    "key between them, or draw the second closer to the first.")
-                    .arg(100.0 * std::max(r.relativeMedian,
-                                          r.targetDiagonal > 0 ? r.coverageMedian / r.targetDiagonal
-                                                               : 0.0),
-                         0, 'f', 1)
-                    .arg(100.0 * r.distortion, 0, 'f', 0)
-                    .arg(at.isEmpty() ? QString() : QLatin1Char(' ') + at));
-        case between::FitStatus::InvalidPins:
-            return finbook::unexpected(
-                BetweenDrawings::tr("A correspondence pin is not on the first key's drawing."));
-        case between::FitStatus::EmptyTarget:
-            return finbook::unexpected(
-                BetweenDrawings::tr("The second key has no lines to fit to."));
-        default:
-            return finbook::unexpected(BetweenDrawings::tr("The fit could not be solved."));
-        }
-    }
-    const auto motion = between::arapInterpolationPrecompute(V, r.U, F);
-    if (!motion)
-        return finbook::unexpected(
-            BetweenDrawings::tr("The fitted motion cannot be interpolated: %1")
-                .arg(QString::fromStdString(motion.error().message)));
-    fit->motion = *motion;
-
-    // B's points in the fitted mesh, to carry them backwards.
-    std::vector<Eigen::Vector2d> bAll;
-    for (const Stroke &s : B.strokes)
-        if (s.data)
-            for (const StrokePoint &p : s.data->points)
-                bAll.emplace_back(p.x, p.y);
-    Eigen::MatrixX2d BP(Eigen::Index(bAll.size()), 2);
-    for (std::size_t i = 0; i < bAll.size(); ++i)
-        BP.row(Eigen::Index(i)) = bAll[i].transpose();
-    const geometry::Embedding inFit = geometry::embed(r.U, F, BP);
-    fit->bTriangle = inFit.I;
-    fit->bCoords = inFit.B;
-    for (Eigen::Index i = 0; i < BP.rows(); ++i) {
-        const int t = inFit.I(i);
-        if (t < 0)
-            continue;
-        const auto c = affineCoords(BP.row(i).transpose(), r.U.row(F(t, 0)).transpose(),
-                                    r.U.row(F(t, 1)).transpose(), r.U.row(F(t, 2)).transpose());
-        if (c)
-            fit->bCoords.row(i) = *c;
-    }
-
     fit->closeGap = closeGap;
+    fit->pins = pins;
+    if (const QString failed = failure(fit->fit); !failed.isEmpty())
+        return finbook::unexpected(failed);
+    if (const QString unfinished = finish(*fit); !unfinished.isEmpty())
+        return finbook::unexpected(unfinished);
+    fit->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return std::shared_ptr<const DrawingFit>(std::move(fit));
+}
+
+Expected<std::shared_ptr<const DrawingFit>, QString>
+refitDrawings(const DrawingFit &previous, const std::vector<BetweenPin> &pins,
+              const BetweenOptions &options)
+{
+    const auto started = std::chrono::steady_clock::now();
+    auto fit = std::make_shared<DrawingFit>(previous);
+    fit->pins = pins;
+    fit->fit = deform::between::rigidRefit(
+        *fit->source, *fit->target, fitPinsOf(pins, fit->meshed->mesh.V, fit->meshed->mesh.F),
+        previous.fit, options.fit);
+    if (const QString failed = failure(fit->fit); !failed.isEmpty())
+        return finbook::unexpected(failed);
+    if (const QString unfinished = finish(*fit); !unfinished.isEmpty())
+        return finbook::unexpected(unfinished);
     fit->seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return std::shared_ptr<const DrawingFit>(std::move(fit));

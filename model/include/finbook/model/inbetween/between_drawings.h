@@ -68,8 +68,10 @@ struct DrawingFit {
     // coordinates there (they may lie outside it for a point beyond A's shape).
     Eigen::VectorXi bTriangle;
     Eigen::MatrixX3d bCoords;
-    double closeGap = -1.0; // the document's Close gaps the fit was made for
-    double seconds = 0.0;   // the time the fit took (mesh, precompute, fit, interpolation)
+    std::vector<BetweenPin> pins;          // the correspondence pins it was made with
+    deform::between::FitSkeleton skeleton; // A's automatic skeleton (its parts), if any
+    double closeGap = -1.0;                // the document's Close gaps the fit was made for
+    double seconds = 0.0; // the time the fit took (mesh, precompute, fit, interpolation)
 };
 
 // Fits A onto B. Errors are sentences for the user; a fit that fails says where (the region of
@@ -77,6 +79,12 @@ struct DrawingFit {
 Expected<std::shared_ptr<const DrawingFit>, QString>
 fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
             const std::vector<BetweenPin> &pins = {}, const BetweenOptions &options = {});
+
+// The fit again with `pins` instead of previous.pins, started from where `previous` settled
+// (rigid_fit.h rigidRefit: a few iterations at the last stiffness), for pins dragged live.
+Expected<std::shared_ptr<const DrawingFit>, QString>
+refitDrawings(const DrawingFit &previous, const std::vector<BetweenPin> &pins,
+              const BetweenOptions &options = {});
 
 // The first key's drawing in the in-between at t (t clamped to 0..1): a copy of A (its name
 // and mesh density; no rig, no pose) with its strokes carried to t and its fills as Apply Pose
