@@ -7,6 +7,7 @@
 
 #include <finbook/model/finbook_file.h>
 #include <finbook/ui/canvas/canvas_widget.h>
+#include <finbook/ui/inbetween/between_fit_view.h>
 #include <finbook/ui/inbetween/inbetween_dialog.h>
 #include <finbook/ui/timeline/timeline_view.h>
 #include <finbook/ui/window/editor_state.h>
@@ -222,6 +223,34 @@ void TestInbetweenDialog::differentDrawingsAreCarriedOntoEachOther()
         QVERIFY2(objects->item(0)->text().contains(QStringLiteral("carried")),
                  qPrintable(objects->item(0)->text()));
         QCOMPARE(dialog->fits().size(), std::size_t(1));
+        // The fit is shown; dragging from the first drawing's corner pins it 30 px lower on
+        // the second, refitted live; Ctrl+Z takes the pin away again, Ctrl+Shift+Z brings it
+        // back.
+        auto *view = dialog->findChild<ui::BetweenFitView *>(QStringLiteral("inbetweenFitView"));
+        QVERIFY(view && view->isVisible() && view->fit());
+        const QPointF corner = view->fittedPoint(0, 0);
+        const QPointF goal = corner + QPointF(0, 30);
+        QTest::mousePress(view, Qt::LeftButton, {}, view->toWidget(corner).toPoint());
+        QTest::mouseMove(view, view->toWidget(corner + QPointF(0, 15)).toPoint());
+        QTest::mouseMove(view, view->toWidget(goal).toPoint());
+        QTest::mouseRelease(view, Qt::LeftButton, {}, view->toWidget(goal).toPoint());
+        QTRY_VERIFY(!dialog->fitting());
+        QCOMPARE(dialog->fits().at(0)->pins.size(), std::size_t(1));
+        const double pinned =
+            QLineF(view->fittedPoint(0, 0), dialog->fits().at(0)->pins[0].onB).length();
+        QVERIFY2(pinned < QLineF(corner, goal).length() / 2, qPrintable(QString::number(pinned)));
+        // The keys go where the keyboard is after the drag (the count's field had it before).
+        QCOMPARE(QApplication::focusWidget(), view);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Z, Qt::ControlModifier);
+        QTRY_VERIFY(!dialog->fitting() && dialog->fits().at(0)->pins.empty());
+        QVERIFY(view->pins().empty());
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Z,
+                        Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_VERIFY(!dialog->fitting() && dialog->fits().at(0)->pins.size() == 1);
+        // Right-click takes it away (one more undo step).
+        QTest::mouseClick(view, Qt::RightButton, {},
+                          view->toWidget(dialog->fits().at(0)->pins[0].onB).toPoint());
+        QTRY_VERIFY(!dialog->fitting() && dialog->fits().at(0)->pins.empty());
         // Unchecked, the drawing switches over half way as before.
         carry->click();
         QVERIFY(dialog->fits().empty());

@@ -1,4 +1,5 @@
 #include <finbook/model/inbetween/inbetween_commands.h>
+#include <finbook/ui/inbetween/between_fit_view.h>
 #include <finbook/ui/inbetween/inbetween_dialog.h>
 
 #include <QCheckBox>
@@ -8,9 +9,12 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QShortcut>
 #include <QSlider>
 #include <QSpinBox>
 #include <QThread>
+#include <QUndoCommand>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -21,6 +25,27 @@ namespace finbook::ui {
 namespace {
 constexpr int kDefaultCount = 3;
 constexpr int kFavourSteps = 100; // the slider's -100..100 is favour -1..1
+
+// One change of one object's correspondence pins, undone inside the dialog.
+class PinsCommand : public QUndoCommand {
+public:
+    PinsCommand(InbetweenDialog *dialog, int index, std::vector<model::BetweenPin> before,
+                std::vector<model::BetweenPin> after)
+        : m_dialog(dialog)
+        , m_index(index)
+        , m_before(std::move(before))
+        , m_after(std::move(after))
+    {
+        setText(InbetweenDialog::tr("Move Correspondence Pins"));
+    }
+    void redo() override { m_dialog->applyPins(m_index, m_after); }
+    void undo() override { m_dialog->applyPins(m_index, m_before); }
+
+private:
+    InbetweenDialog *m_dialog;
+    int m_index;
+    std::vector<model::BetweenPin> m_before, m_after;
+};
 } // namespace
 
 InbetweenDialog::InbetweenDialog(model::Document *document, model::Id firstKey, model::Id secondKey,
@@ -43,6 +68,33 @@ InbetweenDialog::InbetweenDialog(model::Document *document, model::Id firstKey, 
     m_objects->setSelectionMode(QAbstractItemView::NoSelection);
     layout->addWidget(new QLabel(tr("Objects:"), this));
     layout->addWidget(m_objects);
+    // The fit of a drawing carried onto another, with its correspondence pins.
+    m_fitLabel = new QLabel(tr("Where the first drawing lands on the second (drag to pin):"), this);
+    m_fitLabel->setWordWrap(true);
+    layout->addWidget(m_fitLabel);
+    m_fitObject = new QComboBox(this);
+    m_fitObject->setObjectName(QStringLiteral("inbetweenFitObject"));
+    layout->addWidget(m_fitObject);
+    m_fitView = new BetweenFitView(this);
+    m_fitView->setObjectName(QStringLiteral("inbetweenFitView"));
+    layout->addWidget(m_fitView, 1);
+    m_fitLabel->hide();
+    m_fitObject->hide();
+    m_fitView->hide();
+    m_pinUndo = new QUndoStack(this);
+    connect(new QShortcut(QKeySequence::Undo, this), &QShortcut::activated, m_pinUndo,
+            &QUndoStack::undo);
+    connect(new QShortcut(QKeySequence::Redo, this), &QShortcut::activated, m_pinUndo,
+            &QUndoStack::redo);
+    connect(m_fitView, &BetweenFitView::pinsDragged, this,
+            [this](const std::vector<model::BetweenPin> &pins) { requestRefit(m_shownFit, pins); });
+    connect(m_fitView, &BetweenFitView::pinsChanged, this,
+            [this](const std::vector<model::BetweenPin> &before,
+                   const std::vector<model::BetweenPin> &after) {
+                m_pinUndo->push(new PinsCommand(this, m_shownFit, before, after));
+            });
+    connect(m_fitObject, &QComboBox::currentIndexChanged, this,
+            [this](int) { showFitOf(m_fitObject->currentData().toInt()); });
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("inbetweenStatus"));
     m_status->setWordWrap(true);
@@ -79,9 +131,74 @@ void InbetweenDialog::startFitting()
         m_fitter = nullptr;
         m_fits = std::move(*result);
         m_ok->setEnabled(true);
+        const model::Frame *key = m_doc->frame(m_first);
+        for (std::size_t i = 0; i < m_fits.fits.size(); ++i)
+            if (m_fits.fits[i] && key && i < key->groups.size())
+                m_fitObject->addItem(
+                    key->groups[i].name.isEmpty() ? tr("(unnamed)") : key->groups[i].name, int(i));
+        if (m_fitObject->count() > 0) {
+            m_fitLabel->show();
+            m_fitObject->setVisible(m_fitObject->count() > 1);
+            m_fitView->show();
+            showFitOf(m_fitObject->itemData(0).toInt());
+        }
         updatePlan();
     });
     m_fitter->start();
+}
+
+void InbetweenDialog::showFitOf(int index)
+{
+    if (index < 0 || std::size_t(index) >= m_fits.fits.size() || !m_fits.fits[std::size_t(index)])
+        return;
+    m_shownFit = index;
+    m_fitView->setFit(m_fits.fits[std::size_t(index)]);
+}
+
+void InbetweenDialog::applyPins(int index, const std::vector<model::BetweenPin> &pins)
+{
+    if (index == m_shownFit)
+        m_fitView->setPins(pins);
+    requestRefit(index, pins);
+}
+
+void InbetweenDialog::requestRefit(int index, std::vector<model::BetweenPin> pins)
+{
+    if (index < 0 || std::size_t(index) >= m_fits.fits.size() || !m_fits.fits[std::size_t(index)])
+        return;
+    if (m_refitter) { // the newest pins are fitted when this refit is done
+        m_pendingRefit = std::make_pair(index, std::move(pins));
+        return;
+    }
+    const std::shared_ptr<const model::DrawingFit> previous = m_fits.fits[std::size_t(index)];
+    auto result = std::make_shared<
+        std::optional<Expected<std::shared_ptr<const model::DrawingFit>, QString>>>();
+    m_refitter = QThread::create(
+        [previous, pins, result] { *result = model::refitDrawings(*previous, pins); });
+    m_refitter->setParent(this);
+    m_ok->setEnabled(false);
+    m_status->setText(tr("Fitting the drawings that differ…"));
+    connect(m_refitter, &QThread::finished, this, [this, index, result] {
+        m_refitter->deleteLater();
+        m_refitter = nullptr;
+        if (*result && **result) {
+            m_fits.fits[std::size_t(index)] = ***result;
+            if (index == m_shownFit)
+                m_fitView->setFit(***result);
+        }
+        if (m_pendingRefit) {
+            auto [next, newest] = std::move(*m_pendingRefit);
+            m_pendingRefit.reset();
+            requestRefit(next, std::move(newest));
+            return;
+        }
+        m_ok->setEnabled(true);
+        updatePlan();
+        if (*result && !**result)
+            m_status->setText(
+                tr("With these pins the drawings could not be fitted: %1").arg((*result)->error()));
+    });
+    m_refitter->start();
 }
 
 model::DrawingFits InbetweenDialog::fits() const
@@ -105,6 +222,8 @@ InbetweenDialog::~InbetweenDialog()
         m_worker->wait(); // a QThread must not be destroyed while it runs (one pose at most)
     if (m_fitter)
         m_fitter->wait(); // one fit per object that differs: a second or so at most
+    if (m_refitter)
+        m_refitter->wait(); // one refit: tens of milliseconds
 }
 
 QWidget *InbetweenDialog::buildControls()
@@ -216,8 +335,8 @@ void InbetweenDialog::updatePlan()
                                             ? tr("(unnamed)")
                                             : first->groups[std::size_t(index)].name,
                                         why));
-    m_status->setText(m_fitter ? tr("Fitting the drawings that differ…")
-                               : tr("Posing the preview…"));
+    m_status->setText(fitting() ? tr("Fitting the drawings that differ…")
+                                : tr("Posing the preview…"));
     if (m_worker) { // the running pose is out of date: pose again when it is done
         m_replan = true;
         return;
@@ -255,7 +374,7 @@ void InbetweenDialog::showPreview(PreviewJob &job)
                               .arg(job.solved ? job.solved->error() : QString()));
     } else {
         m_preview = std::move(job.frames.front());
-        m_status->setText(m_fitter ? tr("Fitting the drawings that differ…")
+        m_status->setText(fitting() ? tr("Fitting the drawings that differ…")
                           : job.interpolated == 0 && fits().empty()
                               ? tr("No object has matching pins or a matching cage in both "
                                    "keys: the in-betweens will only hold drawings.")
@@ -271,6 +390,8 @@ void InbetweenDialog::done(int result)
         m_worker->disconnect(this);
     if (m_fitter)
         m_fitter->disconnect(this);
+    if (m_refitter)
+        m_refitter->disconnect(this);
     if (m_sink)
         m_sink(std::nullopt); // the preview never outlives the dialog
     QDialog::done(result);

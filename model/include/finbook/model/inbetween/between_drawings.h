@@ -54,6 +54,7 @@ struct BetweenOptions {
 struct BetweenPin {
     QPointF onA;
     QPointF onB;
+    friend bool operator==(const BetweenPin &, const BetweenPin &) = default;
 };
 
 // The fit of A onto B and what the in-betweens need from it. Immutable.

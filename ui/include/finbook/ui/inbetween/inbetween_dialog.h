@@ -12,7 +12,9 @@
 // Objects the two keys show drawn differently (two separate drawings, not one posed) are fitted
 // one onto the other on another worker thread when the dialog opens (Between Drawings,
 // model/inbetween/between_drawings.h); OK waits for it. Each is then carried from the first
-// key's lines to the second's, or, unchecked or unfitted, switches over half way.
+// key's lines to the second's, or, unchecked or unfitted, switches over half way. The fit is
+// shown (BetweenFitView) and can be corrected with correspondence pins, refitted live on a
+// worker thread; Ctrl+Z and Ctrl+Shift+Z undo and redo pin changes inside the dialog.
 #pragma once
 
 #include <finbook/deform/arap.h>
@@ -34,8 +36,11 @@ class QPushButton;
 class QSlider;
 class QSpinBox;
 class QThread;
+class QUndoStack;
 
 namespace finbook::ui {
+
+class BetweenFitView;
 
 class InbetweenDialog : public QDialog {
     Q_OBJECT
@@ -54,7 +59,10 @@ public:
     model::InbetweenOptions options() const;
     // The fits of the objects drawn differently, when they are to be used (empty otherwise).
     model::DrawingFits fits() const;
-    bool fitting() const { return m_fitter != nullptr; }
+    bool fitting() const { return m_fitter != nullptr || m_refitter != nullptr; }
+    // Puts `pins` on the fit of the object at `index` of the keys and refits (the undo steps
+    // of the pins call it).
+    void applyPins(int index, const std::vector<model::BetweenPin> &pins);
     // The middle in-between as previewed now (nullopt if its pose could not be solved, and
     // before the first one is ready); posing() while a newer one is being solved.
     const std::optional<model::Frame> &previewFrame() const { return m_preview; }
@@ -69,6 +77,8 @@ private:
     struct PreviewJob;
     void showPreview(PreviewJob &job);
     void startFitting();
+    void requestRefit(int index, std::vector<model::BetweenPin> pins);
+    void showFitOf(int index);
 
     model::Document *m_doc;
     model::Id m_first;
@@ -81,12 +91,18 @@ private:
     bool m_replan = false;       // the options changed while it did
     QThread *m_fitter = nullptr; // fitting the drawings that differ
     model::KeyFits m_fits;
-
+    QThread *m_refitter = nullptr; // refitting with changed correspondence pins
+    std::optional<std::pair<int, std::vector<model::BetweenPin>>> m_pendingRefit;
+    QUndoStack *m_pinUndo = nullptr;
+    int m_shownFit = -1; // the object whose fit the view shows
     QSpinBox *m_count = nullptr;
     QComboBox *m_spacing = nullptr;
     QSlider *m_favour = nullptr;
     QCheckBox *m_arcs = nullptr;
     QCheckBox *m_between = nullptr;
+    BetweenFitView *m_fitView = nullptr;
+    QComboBox *m_fitObject = nullptr;
+    QLabel *m_fitLabel = nullptr;
     QPushButton *m_ok = nullptr;
     QListWidget *m_objects = nullptr;
     QLabel *m_status = nullptr;
