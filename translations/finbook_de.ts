@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="108"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="201"/>
         <source>The first key has no lines to carry.</source>
         <translation>Das erste Schlüsselbild hat keine Linien, die sich übertragen lassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="238"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="203"/>
         <source>The second key has no lines to fit to.</source>
         <translation>Das zweite Schlüsselbild hat keine Linien, an die sich anpassen ließe.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="115"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
         <source>The first key could not be meshed: %1</source>
         <translation>Das erste Schlüsselbild ließ sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="147"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="240"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>Die Linien des ersten Schlüsselbilds sind Punkte: Es gibt nichts anzupassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="159"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="252"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>Das Netz des ersten Schlüsselbilds lässt sich nicht anpassen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="213"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>Die Linien des ersten Schlüsselbilds um (%1, %2), %3 × %4 px, finden im zweiten nichts Ähnliches.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="223"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>Die beiden Zeichnungen sind zu verschieden, um eine auf die andere anzupassen (im Median %1 % der Zeichnung entfernt, %2 % gedehnt).%3 Zeichnen Sie ein Schlüsselbild dazwischen oder das zweite näher am ersten.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="235"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>Ein Zuordnungspin liegt nicht auf der Zeichnung des ersten Schlüsselbilds.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="240"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
         <source>The fit could not be solved.</source>
         <translation>Die Anpassung ließ sich nicht lösen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="246"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>Die angepasste Bewegung lässt sich nicht interpolieren: %1</translation>
     </message>
@@ -3360,6 +3360,19 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::BetweenFitView</name>
+    <message>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="37"/>
+        <source>Drag from a line of the first drawing to where it belongs on the second to pin it there; drag a pin to move it, right-click it to take it away.</source>
+        <translation>Ziehen Sie von einer Linie der ersten Zeichnung dorthin, wo sie auf der zweiten hingehört, um sie dort festzupinnen; ziehen Sie einen Pin, um ihn zu verschieben, Rechtsklick entfernt ihn.</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="141"/>
+        <source>No drawing to fit</source>
+        <translation>Keine Zeichnung anzupassen</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::BezierEditorDialog</name>
     <message>
         <location filename="../ui/src/camera/bezier_editor.cpp" line="117"/>
@@ -4361,149 +4374,166 @@
 <context>
     <name>finbook::ui::InbetweenDialog</name>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="38"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="63"/>
         <source>Generate In-betweens</source>
         <translation>Zwischenbilder erzeugen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="44"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="69"/>
         <source>Objects:</source>
         <translation>Objekte:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="72"/>
+        <source>Where the first drawing lands on the second (drag to pin):</source>
+        <translation>Wo die erste Zeichnung auf der zweiten landet (ziehen zum Anpinnen):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="199"/>
+        <source>With these pins the drawings could not be fitted: %1</source>
+        <translation>Mit diesen Pins ließen sich die Zeichnungen nicht anpassen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="238"/>
         <source>&amp;Frames between the keys:</source>
         <translation>&amp;Einzelbilder zwischen den Schlüsselbildern:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="241"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="123"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="242"/>
         <source>Ease in (slow from the first key)</source>
         <translation>Ease-in (langsam vom ersten Schlüsselbild weg)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="124"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="243"/>
         <source>Ease out (slow into the second key)</source>
         <translation>Ease-out (langsam ins zweite Schlüsselbild hinein)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="125"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="244"/>
         <source>Ease in and out</source>
         <translation>Ease-in und Ease-out</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="126"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="245"/>
         <source>Favour…</source>
         <translation>Gewichtet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="246"/>
         <source>&amp;Spacing:</source>
         <translation>&amp;Verteilung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="250"/>
         <source>Left favours the first key, right the second.</source>
         <translation>Links wird das erste Schlüsselbild bevorzugt, rechts das zweite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="251"/>
         <source>F&amp;avour:</source>
         <translation>&amp;Gewichtung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Pins und Käfigecken auf &amp;Bögen bewegen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="257"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Ein zwischen den Schlüsselbildern geschwungenes Glied behält seine Länge. Ohne diese Option bewegt sich jeder Zielpunkt geradlinig.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="260"/>
         <source>Carry &amp;different drawings onto each other</source>
         <translation>&amp;Verschiedene Zeichnungen ineinander überführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="145"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="264"/>
         <source>Where the two keys are separate drawings of an object, the first is fitted onto the second as rigidly as possible and carried there, fading into the second&apos;s lines at the end. Unchecked, the drawing switches over half way.</source>
         <translation>Wo die beiden Schlüsselbilder getrennte Zeichnungen eines Objekts sind, wird die erste so starr wie möglich an die zweite angepasst und dorthin getragen und geht am Ende in deren Linien über. Ohne Haken wechselt die Zeichnung auf halbem Weg.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="176"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="216"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="295"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="335"/>
         <source>(unnamed)</source>
         <translation>(unbenannt)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="179"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="39"/>
+        <source>Move Correspondence Pins</source>
+        <translation>Zuordnungspins verschieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="298"/>
         <source>%1: interpolated</source>
         <translation>%1: interpoliert</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="181"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="300"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (keine Pins, kein Käfig und kein Skelett)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="183"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="302"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (Pins, Käfig oder Skelett unterscheiden sich zwischen den Schlüsselbildern)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="187"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="306"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: nur im ersten Schlüsselbild, in der ersten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="189"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="308"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: nur im zweiten Schlüsselbild, in der zweiten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="310"/>
         <source>%1: carried from the first key&apos;s drawing to the second&apos;s</source>
         <translation>%1: von der Zeichnung des ersten Schlüsselbilds zu der des zweiten getragen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="201"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="320"/>
         <source>Select two different frames as keys.</source>
         <translation>Wählen Sie zwei verschiedene Einzelbilder als Schlüsselbilder aus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="213"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="332"/>
         <source>%1: could not be carried onto the second key&apos;s drawing, so it switches over half way. %2</source>
         <translation>%1: ließ sich nicht auf die Zeichnung des zweiten Schlüsselbilds tragen und wechselt daher auf halbem Weg. %2</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="219"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="258"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="180"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="338"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="377"/>
         <source>Fitting the drawings that differ…</source>
         <translation>Die verschiedenen Zeichnungen werden angepasst …</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="220"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="339"/>
         <source>Posing the preview…</source>
         <translation>Die Vorschau wird berechnet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="373"/>
         <source>The preview could not be posed: %1</source>
         <translation>Die Vorschau konnte nicht posiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="260"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="379"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Kein Objekt hat in beiden Schlüsselbildern passende Pins oder einen passenden Käfig: Die Zwischenbilder halten nur die Zeichnungen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="262"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="381"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Die Leinwand zeigt das mittlere Zwischenbild.</translation>
     </message>

@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="108"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="201"/>
         <source>The first key has no lines to carry.</source>
         <translation>最初のキーには運ぶ線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="238"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="203"/>
         <source>The second key has no lines to fit to.</source>
         <translation>二番目のキーには合わせる線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="115"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
         <source>The first key could not be meshed: %1</source>
         <translation>最初のキーをメッシュにできませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="147"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="240"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>最初のキーの線は点だけです。合わせるものがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="159"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="252"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>最初のキーのメッシュを合わせられません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="213"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>最初のキーの (%1, %2) 付近、%3 × %4 px の線に似たものが二番目のキーにありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="223"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>二つの絵が違いすぎて、一方を他方に合わせられません (中央値で絵の %1 % 離れ、%2 % 伸びています)。%3 間にキーを描くか、二番目を最初に近づけて描いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="235"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>対応ピンが最初のキーの絵の上にありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="240"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
         <source>The fit could not be solved.</source>
         <translation>合わせ込みを解けませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="246"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>合わせた動きを補間できません: %1</translation>
     </message>
@@ -3348,6 +3348,19 @@
     </message>
 </context>
 <context>
+    <name>finbook::ui::BetweenFitView</name>
+    <message>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="37"/>
+        <source>Drag from a line of the first drawing to where it belongs on the second to pin it there; drag a pin to move it, right-click it to take it away.</source>
+        <translation>最初の絵の線から二番目の絵の対応する場所へドラッグするとピンで留まります。ピンはドラッグで動かし、右クリックで外します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/between_fit_view.cpp" line="141"/>
+        <source>No drawing to fit</source>
+        <translation>合わせる絵がありません</translation>
+    </message>
+</context>
+<context>
     <name>finbook::ui::BezierEditorDialog</name>
     <message>
         <location filename="../ui/src/camera/bezier_editor.cpp" line="117"/>
@@ -4344,149 +4357,166 @@
 <context>
     <name>finbook::ui::InbetweenDialog</name>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="38"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="63"/>
         <source>Generate In-betweens</source>
         <translation>中割りを生成</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="44"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="69"/>
         <source>Objects:</source>
         <translation>オブジェクト:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="119"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="72"/>
+        <source>Where the first drawing lands on the second (drag to pin):</source>
+        <translation>最初の絵が二番目のどこに重なるか (ドラッグでピン留め):</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="199"/>
+        <source>With these pins the drawings could not be fitted: %1</source>
+        <translation>このピンでは絵を合わせられませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="238"/>
         <source>&amp;Frames between the keys:</source>
         <translation>キーの間のフレーム数(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="122"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="241"/>
         <source>Linear</source>
         <translation>等間隔</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="123"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="242"/>
         <source>Ease in (slow from the first key)</source>
         <translation>イーズイン（最初のキーからゆっくり）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="124"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="243"/>
         <source>Ease out (slow into the second key)</source>
         <translation>イーズアウト（2 番目のキーへゆっくり）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="125"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="244"/>
         <source>Ease in and out</source>
         <translation>イーズイン・アウト</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="126"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="245"/>
         <source>Favour…</source>
         <translation>詰め…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="127"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="246"/>
         <source>&amp;Spacing:</source>
         <translation>間隔(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="131"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="250"/>
         <source>Left favours the first key, right the second.</source>
         <translation>左にすると最初のキー側に、右にすると 2 番目のキー側に詰めます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="132"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="251"/>
         <source>F&amp;avour:</source>
         <translation>詰め(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="135"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>ピンとケージの頂点を弧に沿って移動(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="257"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>キーの間で振られた手足は長さを保ちます。オフにすると、すべての対象が直線的に移動します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="141"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="260"/>
         <source>Carry &amp;different drawings onto each other</source>
         <translation>異なる絵を互いに運ぶ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="145"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="264"/>
         <source>Where the two keys are separate drawings of an object, the first is fitted onto the second as rigidly as possible and carried there, fading into the second&apos;s lines at the end. Unchecked, the drawing switches over half way.</source>
         <translation>二つのキーが同じオブジェクトの別々の絵のとき、最初の絵をできるだけ剛体的に二番目に合わせて運び、最後に二番目の線へ溶け込ませます。オフにすると途中で絵が切り替わります。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="176"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="216"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="295"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="335"/>
         <source>(unnamed)</source>
         <translation>（名前なし）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="179"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="39"/>
+        <source>Move Correspondence Pins</source>
+        <translation>対応ピンを動かす</translation>
+    </message>
+    <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="298"/>
         <source>%1: interpolated</source>
         <translation>%1: 補間</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="181"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="300"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: 最初のキーを保持（ピン、ケージ、スケルトンがありません）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="183"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="302"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: 最初のキーを保持（キーの間でピン、ケージ、またはスケルトンが異なります）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="187"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="306"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: 最初のキーにのみ存在、前半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="189"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="308"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: 2 番目のキーにのみ存在、後半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="191"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="310"/>
         <source>%1: carried from the first key&apos;s drawing to the second&apos;s</source>
         <translation>%1: 最初のキーの絵から二番目の絵へ運ばれます</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="201"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="320"/>
         <source>Select two different frames as keys.</source>
         <translation>キーとして異なる 2 つのフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="213"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="332"/>
         <source>%1: could not be carried onto the second key&apos;s drawing, so it switches over half way. %2</source>
         <translation>%1: 二番目のキーの絵へ運べないため、途中で切り替わります。%2</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="219"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="258"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="180"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="338"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="377"/>
         <source>Fitting the drawings that differ…</source>
         <translation>異なる絵を合わせています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="220"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="339"/>
         <source>Posing the preview…</source>
         <translation>プレビューを計算中…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="373"/>
         <source>The preview could not be posed: %1</source>
         <translation>プレビューのポーズを計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="260"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="379"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>両方のキーで一致するピンまたはケージを持つオブジェクトがありません。中割りでは絵が保持されるだけです。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="262"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="381"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>キャンバスには中央の中割りが表示されています。</translation>
     </message>
