@@ -2,6 +2,7 @@
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/inbetween/between_drawings.h>
+#include <finbook/model/rig/rig_commands.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 
 #include <QCoreApplication>
@@ -359,6 +360,32 @@ double fadeAt(double t, const BetweenOptions &options)
     return fade > 0.0 && t > 1.0 - fade ? (t - (1.0 - fade)) / fade : 0.0;
 }
 
+// `carried` (rest's strokes moved, same order and ids) with Apply Pose's lines and fills:
+// `rest` posed by the carried points, its pose applied. Ids of the lines it adds follow the
+// largest of either.
+StrokeGroup appliedAsShown(const StrokeGroup &rest, StrokeGroup carried, double closeGap)
+{
+    StrokeGroup posed = rest;
+    auto points = std::make_shared<DeformedStrokes>();
+    for (const Stroke &stroke : carried.strokes)
+        points->strokes.push_back(stroke.data ? stroke.data->points : std::vector<StrokePoint>{});
+    posed.deformed = std::move(points);
+    posed.rig.pins = {Pin{kNoId, QPointF(), QPointF()}}; // posed: shown as deformed
+    Id next = std::max(largestId(rest), largestId(carried));
+    AppliedPose applied = applyPoseToDrawing(posed, closeGap, [&next] { return ++next; });
+    // Apply Pose's strokes are the posed points; the carried ones hold the faded ink.
+    for (Stroke &stroke : applied.strokes) {
+        const auto same = std::find_if(carried.strokes.begin(), carried.strokes.end(),
+                                       [&](const Stroke &c) { return c.id == stroke.id; });
+        if (same != carried.strokes.end() && same->data && stroke.data &&
+            same->data->points == stroke.data->points)
+            stroke.data = same->data;
+    }
+    carried.strokes = std::move(applied.strokes);
+    carried.fills = std::move(applied.fills);
+    return carried;
+}
+
 QRgb faded(QRgb colour, double keep)
 {
     if (qAlpha(colour) == 0)
@@ -393,20 +420,13 @@ StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions
         data->color = faded(data->color, 1.0 - w);
         stroke.data = std::move(data);
     }
-    // The fills as Apply Pose gives them (fill_resolve.h, fillsAfterBake): A posed by the
-    // carried points shows its rest regions carried whole, and each fill takes the faces of the
-    // carried lines that showed its colour, where lines that crossed on the way have cut a
-    // region in several (a leg passing another) or closed one (a gap narrowed).
-    if (!out.fills.empty()) {
-        StrokeGroup posed = fit.a;
-        auto carried = std::make_shared<DeformedStrokes>();
-        for (const Stroke &stroke : out.strokes)
-            carried->strokes.push_back(stroke.data ? stroke.data->points
-                                                   : std::vector<StrokePoint>{});
-        posed.deformed = std::move(carried);
-        posed.rig.pins = {Pin{kNoId, QPointF(), QPointF()}}; // posed: shown as deformed
-        out.fills = fillsAfterBake(posed, out.strokes, fit.closeGap);
-    }
+    // The drawing as Apply Pose makes a pose of it (rig_commands.h applyPoseToDrawing): A
+    // posed by the carried points shows its rest regions carried whole; the carried lines get
+    // lines of no ink where a gap the pose showed closed opened on the way or colours it showed
+    // apart joined, and each fill the faces that showed its colour (a leg passing another keeps
+    // its colour).
+    if (!out.fills.empty())
+        out = appliedAsShown(fit.a, std::move(out), fit.closeGap);
     return out;
 }
 
@@ -439,13 +459,7 @@ std::optional<StrokeGroup> fadingInDrawing(const DrawingFit &fit, double t,
         stroke.data = std::move(data);
     }
     if (!out.fills.empty()) { // as A's (betweenDrawing): B posed backwards, its pose applied
-        StrokeGroup posed = fit.b;
-        auto back = std::make_shared<DeformedStrokes>();
-        for (const Stroke &stroke : out.strokes)
-            back->strokes.push_back(stroke.data ? stroke.data->points : std::vector<StrokePoint>{});
-        posed.deformed = std::move(back);
-        posed.rig.pins = {Pin{kNoId, QPointF(), QPointF()}};
-        out.fills = fillsAfterBake(posed, out.strokes, fit.closeGap);
+        out = appliedAsShown(fit.b, std::move(out), fit.closeGap);
         for (Fill &f : out.fills)
             f.color = faded(f.color, w);
     }

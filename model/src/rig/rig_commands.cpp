@@ -108,6 +108,66 @@ void ResetPoseCommand::undo()
         m_doc->setRig(m_groupId, m_before);
 }
 
+AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
+                               const std::function<Id()> &newId)
+{
+    // The baked strokes keep their ids: they are the same strokes, redrawn (a line that a
+    // cut-out limb hid in the middle becomes its parts, shown, hidden and shown again, the
+    // first part shown with its id; the hidden parts stay as hidden lines).
+    std::vector<Stroke> strokes = bakedStrokes(group, closeGap, newId, HiddenLines::KeepUnseen);
+    // A gap the pose showed closed stays closed (by a line of no ink) where the baked lines
+    // alone would leave it open.
+    const auto withKeptGaps = [&](std::vector<Stroke> lines) {
+        for (Stroke &closer : keptGapClosers(group, lines, closeGap, newId))
+            lines.push_back(std::move(closer));
+        return lines;
+    };
+    // A cut-out piece's colour ends at its cut, where no line is: a line of no ink keeps the
+    // baked regions ending there too (added before the kept gaps: a region they close, a
+    // body, no longer lets gap closing close a gap inside it, an eye, that the pose showed
+    // closed). Those lines do not find every region of every drawing, so the bake keeps them
+    // only where they keep more of the colours the pose showed than the baked lines alone.
+    std::vector<Stroke> cut = cutOutClosers(group, strokes, closeGap, newId);
+    if (cut.empty()) {
+        strokes = withKeptGaps(std::move(strokes));
+    } else {
+        std::vector<Stroke> withCuts = strokes;
+        withCuts.insert(withCuts.end(), cut.begin(), cut.end());
+        withCuts = withKeptGaps(std::move(withCuts));
+        std::vector<Stroke> without = withKeptGaps(std::move(strokes));
+        strokes = shownFillAgreement(group, withCuts, closeGap) >
+                          shownFillAgreement(group, without, closeGap)
+                      ? std::move(withCuts)
+                      : std::move(without);
+    }
+    // Where the baked faces still join colours the pose showed apart, lines of no ink along
+    // the edge between them as painted: the seams, or the seams left off the ink, each with the
+    // gaps closed now kept closed or not, whichever keeps most of what was shown (and only if
+    // that is more than without them).
+    const ShownColourSeams seams = shownColourSeams(group, strokes, closeGap, newId);
+    double best = seams.bakedAgreement;
+    std::vector<Stroke> chosen;
+    for (const std::vector<Stroke> *set : {&seams.seams, &seams.seamsOffInk}) {
+        if (set->empty())
+            continue;
+        std::vector<Stroke> with = strokes;
+        with.insert(with.end(), set->begin(), set->end());
+        for (int keep = 0; keep < (seams.keptClosures.empty() ? 1 : 2); ++keep) {
+            if (keep)
+                with.insert(with.end(), seams.keptClosures.begin(), seams.keptClosures.end());
+            if (const double agreement = shownFillAgreement(group, with, closeGap);
+                agreement > best) {
+                best = agreement;
+                chosen = with;
+            }
+        }
+    }
+    if (!chosen.empty())
+        strokes = std::move(chosen);
+    std::vector<Fill> fills = fillsAfterBake(group, strokes, closeGap);
+    return {std::move(strokes), std::move(fills)};
+}
+
 ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *parent)
     : DocumentCommand(doc, parent)
     , m_groupId(groupId)
@@ -121,62 +181,11 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
     m_oldStrokes = g->strokes;
     m_oldRig = g->rig;
     m_oldDeformed = g->deformed;
-    // The baked strokes keep their ids: they are the same strokes, redrawn (a line that a
-    // cut-out limb hid in the middle becomes its parts, shown, hidden and shown again, the
-    // first part shown with its id; the hidden parts stay as hidden lines).
     const auto newId = [doc] { return doc->allocateId(); };
-    m_newStrokes = bakedStrokes(*g, doc->settings().closeGap, newId, HiddenLines::KeepUnseen);
-    const double closeGap = doc->settings().closeGap;
-    // A gap the pose showed closed stays closed (by a line of no ink) where the baked lines
-    // alone would leave it open.
-    const auto withKeptGaps = [&](std::vector<Stroke> strokes) {
-        for (Stroke &closer : keptGapClosers(*g, strokes, closeGap, newId))
-            strokes.push_back(std::move(closer));
-        return strokes;
-    };
-    // A cut-out piece's colour ends at its cut, where no line is: a line of no ink keeps the
-    // baked regions ending there too (added before the kept gaps: a region they close, a
-    // body, no longer lets gap closing close a gap inside it, an eye, that the pose showed
-    // closed). Those lines do not find every region of every drawing, so the bake keeps them
-    // only where they keep more of the colours the pose showed than the baked lines alone.
-    std::vector<Stroke> cut = cutOutClosers(*g, m_newStrokes, closeGap, newId);
-    if (cut.empty()) {
-        m_newStrokes = withKeptGaps(std::move(m_newStrokes));
-    } else {
-        std::vector<Stroke> withCuts = m_newStrokes;
-        withCuts.insert(withCuts.end(), cut.begin(), cut.end());
-        withCuts = withKeptGaps(std::move(withCuts));
-        std::vector<Stroke> without = withKeptGaps(std::move(m_newStrokes));
-        m_newStrokes =
-            shownFillAgreement(*g, withCuts, closeGap) > shownFillAgreement(*g, without, closeGap)
-                ? std::move(withCuts)
-                : std::move(without);
-    }
-    // Where the baked faces still join colours the pose showed apart, lines of no ink along
-    // the edge between them as painted: the seams, or the seams left off the ink, each with the
-    // gaps closed now kept closed or not, whichever keeps most of what was shown (and only if
-    // that is more than without them).
-    const ShownColourSeams seams = shownColourSeams(*g, m_newStrokes, closeGap, newId);
-    double best = seams.bakedAgreement;
-    std::vector<Stroke> chosen;
-    for (const std::vector<Stroke> *set : {&seams.seams, &seams.seamsOffInk}) {
-        if (set->empty())
-            continue;
-        std::vector<Stroke> with = m_newStrokes;
-        with.insert(with.end(), set->begin(), set->end());
-        for (int keep = 0; keep < (seams.keptClosures.empty() ? 1 : 2); ++keep) {
-            if (keep)
-                with.insert(with.end(), seams.keptClosures.begin(), seams.keptClosures.end());
-            if (const double agreement = shownFillAgreement(*g, with, closeGap); agreement > best) {
-                best = agreement;
-                chosen = with;
-            }
-        }
-    }
-    if (!chosen.empty())
-        m_newStrokes = std::move(chosen);
+    AppliedPose applied = applyPoseToDrawing(*g, doc->settings().closeGap, newId);
+    m_newStrokes = std::move(applied.strokes);
     m_oldFills = g->fills;
-    m_newFills = fillsAfterBake(*g, m_newStrokes, closeGap);
+    m_newFills = std::move(applied.fills);
 }
 
 void ApplyPoseCommand::redo()

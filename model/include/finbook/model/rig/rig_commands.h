@@ -5,6 +5,8 @@
 
 #include <finbook/model/commands.h>
 
+#include <functional>
+
 namespace finbook::model {
 
 // Replaces an object's rig (adding or removing a pin, placing, editing or removing a cage,
@@ -58,6 +60,17 @@ private:
 // Makes the object's pose its rest drawing: the strokes take the posed points and the rig is
 // rebased onto them (pins and corners stay where they are shown, now at rest), so the user
 // can go on dragging. Obsolete when there is no pose.
+// What Apply Pose makes of a posed object (group.isDeformed()): its strokes as posed (ids kept;
+// new ids from `newId` for the parts and lines of no ink it adds — gaps the pose showed closed,
+// cut-out cuts, seams between colours the pose showed apart) and its fills tied to the faces
+// of those strokes that showed their colours (fill_resolve.h fillsAfterBake).
+struct AppliedPose {
+    std::vector<Stroke> strokes;
+    std::vector<Fill> fills;
+};
+AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
+                               const std::function<Id()> &newId);
+
 class ApplyPoseCommand : public DocumentCommand {
 public:
     ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *parent = nullptr);
