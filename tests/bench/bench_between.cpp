@@ -202,10 +202,12 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     const Eigen::MatrixX2d &V = fit.meshed->mesh.V;
     const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
     const geometry::Embedding &all = fit.meshed->embedding;
-    // Correspondence error over A's stroke points.
+    // Correspondence error over A's stroke points (and the worst one, pinned below).
     const QRectF box = testing::shownBounds(a);
     const double diagonal = std::hypot(box.width(), box.height());
     std::vector<double> error;
+    std::size_t worstStroke = 0, worstPoint = 0;
+    double worstError = -1.0;
     for (std::size_t s = 0; s < a.strokes.size(); ++s) {
         const std::vector<StrokePoint> &truth = posed.deformed->strokes[s];
         for (std::size_t k = 0; k < truth.size(); ++k) {
@@ -213,7 +215,13 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
             if (all.I(r) < 0)
                 continue;
             const Eigen::Vector2d p = pointAt(fit.fit.U, F, all.I(r), all.B.row(r));
-            error.push_back(100.0 * std::hypot(p.x() - truth[k].x, p.y() - truth[k].y) / diagonal);
+            const double e = std::hypot(p.x() - truth[k].x, p.y() - truth[k].y);
+            error.push_back(100.0 * e / diagonal);
+            if (e > worstError) {
+                worstError = e;
+                worstStroke = s;
+                worstPoint = k;
+            }
         }
     }
     // Bone lengths in the mid in-between, against rest (a turned limb keeps its length).
@@ -273,23 +281,6 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     std::vector<double> pinMs;
     double pinnedError = -1.0;
     {
-        std::size_t worstStroke = 0, worstPoint = 0;
-        double worstError = -1.0;
-        for (std::size_t s = 0; s < a.strokes.size(); ++s) {
-            const std::vector<StrokePoint> &truth = posed.deformed->strokes[s];
-            for (std::size_t k = 0; k < truth.size(); ++k) {
-                const Eigen::Index r = Eigen::Index(fit.meshed->strokeOffsets[s] + k);
-                if (all.I(r) < 0)
-                    continue;
-                const Eigen::Vector2d p = pointAt(fit.fit.U, F, all.I(r), all.B.row(r));
-                const double e = std::hypot(p.x() - truth[k].x, p.y() - truth[k].y);
-                if (e > worstError) {
-                    worstError = e;
-                    worstStroke = s;
-                    worstPoint = k;
-                }
-            }
-        }
         const StrokePoint &rest = a.strokes[worstStroke].data->points[worstPoint];
         const StrokePoint &goal = posed.deformed->strokes[worstStroke][worstPoint];
         std::shared_ptr<const DrawingFit> live = *fitted;

@@ -153,6 +153,19 @@ QString finish(DrawingFit &fitted)
     return {};
 }
 
+// A fit made: refused with the reason, or finished (motion, B's embedding) and timed.
+Expected<std::shared_ptr<const DrawingFit>, QString>
+completed(std::shared_ptr<DrawingFit> fit, std::chrono::steady_clock::time_point started)
+{
+    if (const QString failed = failure(fit->fit); !failed.isEmpty())
+        return finbook::unexpected(failed);
+    if (const QString unfinished = finish(*fit); !unfinished.isEmpty())
+        return finbook::unexpected(unfinished);
+    fit->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return std::shared_ptr<const DrawingFit>(std::move(fit));
+}
+
 // Correspondence pins as the fit takes them: each A point in A's mesh.
 deform::between::FitPins fitPinsOf(const std::vector<BetweenPin> &pins, const Eigen::MatrixX2d &V,
                                    const Eigen::MatrixX3i &F)
@@ -292,13 +305,7 @@ fitDrawings(const StrokeGroup &a, const StrokeGroup &b, double closeGap,
     fit->fit = between::rigidFit(*fit->source, *fit->target, fitPins, skeleton, options.fit);
     fit->closeGap = closeGap;
     fit->pins = pins;
-    if (const QString failed = failure(fit->fit); !failed.isEmpty())
-        return finbook::unexpected(failed);
-    if (const QString unfinished = finish(*fit); !unfinished.isEmpty())
-        return finbook::unexpected(unfinished);
-    fit->seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    return std::shared_ptr<const DrawingFit>(std::move(fit));
+    return completed(std::move(fit), started);
 }
 
 Expected<std::shared_ptr<const DrawingFit>, QString>
@@ -311,13 +318,7 @@ refitDrawings(const DrawingFit &previous, const std::vector<BetweenPin> &pins,
     fit->fit = deform::between::rigidRefit(
         *fit->source, *fit->target, fitPinsOf(pins, fit->meshed->mesh.V, fit->meshed->mesh.F),
         previous.fit, options.fit);
-    if (const QString failed = failure(fit->fit); !failed.isEmpty())
-        return finbook::unexpected(failed);
-    if (const QString unfinished = finish(*fit); !unfinished.isEmpty())
-        return finbook::unexpected(unfinished);
-    fit->seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    return std::shared_ptr<const DrawingFit>(std::move(fit));
+    return completed(std::move(fit), started);
 }
 
 KeyFits fitKeyDrawings(const Frame &first, const Frame &second, double closeGap,
