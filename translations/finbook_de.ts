@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="201"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="215"/>
         <source>The first key has no lines to carry.</source>
         <translation>Das erste Schlüsselbild hat keine Linien, die sich übertragen lassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="203"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="217"/>
         <source>The second key has no lines to fit to.</source>
         <translation>Das zweite Schlüsselbild hat keine Linien, an die sich anpassen ließe.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="222"/>
         <source>The first key could not be meshed: %1</source>
         <translation>Das erste Schlüsselbild ließ sich nicht vernetzen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="240"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="254"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>Die Linien des ersten Schlüsselbilds sind Punkte: Es gibt nichts anzupassen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="252"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="266"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>Das Netz des ersten Schlüsselbilds lässt sich nicht anpassen: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="89"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>Die Linien des ersten Schlüsselbilds um (%1, %2), %3 × %4 px, finden im zweiten nichts Ähnliches.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="98"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>Die beiden Zeichnungen sind zu verschieden, um eine auf die andere anzupassen (im Median %1 % der Zeichnung entfernt, %2 % gedehnt).%3 Zeichnen Sie ein Schlüsselbild dazwischen oder das zweite näher am ersten.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="108"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>Ein Zuordnungspin liegt nicht auf der Zeichnung des ersten Schlüsselbilds.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="112"/>
         <source>The fit could not be solved.</source>
         <translation>Die Anpassung ließ sich nicht lösen.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="127"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>Die angepasste Bewegung lässt sich nicht interpolieren: %1</translation>
     </message>
@@ -218,7 +218,8 @@
         <translation>Rig entfernen</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="16"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="17"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="29"/>
         <source>Generate In-betweens</source>
         <translation>Zwischenbilder erzeugen</translation>
     </message>
@@ -228,7 +229,7 @@
         <translation>Pose zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="115"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="175"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Pose auf Zeichnung anwenden</translation>
@@ -4394,74 +4395,79 @@
         <translation>Mit diesen Pins ließen sich die Zeichnungen nicht anpassen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="238"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="246"/>
         <source>&amp;Frames between the keys:</source>
         <translation>&amp;Einzelbilder zwischen den Schlüsselbildern:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="241"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="249"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="242"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="250"/>
         <source>Ease in (slow from the first key)</source>
         <translation>Ease-in (langsam vom ersten Schlüsselbild weg)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="243"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="251"/>
         <source>Ease out (slow into the second key)</source>
         <translation>Ease-out (langsam ins zweite Schlüsselbild hinein)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="244"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="252"/>
         <source>Ease in and out</source>
         <translation>Ease-in und Ease-out</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="245"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="253"/>
         <source>Favour…</source>
         <translation>Gewichtet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="246"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
         <source>&amp;Spacing:</source>
         <translation>&amp;Verteilung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="250"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="258"/>
         <source>Left favours the first key, right the second.</source>
         <translation>Links wird das erste Schlüsselbild bevorzugt, rechts das zweite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="251"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="259"/>
         <source>F&amp;avour:</source>
         <translation>&amp;Gewichtung:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="262"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Pins und Käfigecken auf &amp;Bögen bewegen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="257"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="265"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Ein zwischen den Schlüsselbildern geschwungenes Glied behält seine Länge. Ohne diese Option bewegt sich jeder Zielpunkt geradlinig.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="260"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="268"/>
         <source>Carry &amp;different drawings onto each other</source>
         <translation>&amp;Verschiedene Zeichnungen ineinander überführen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="264"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="272"/>
         <source>Where the two keys are separate drawings of an object, the first is fitted onto the second as rigidly as possible and carried there, fading into the second&apos;s lines at the end. Unchecked, the drawing switches over half way.</source>
         <translation>Wo die beiden Schlüsselbilder getrennte Zeichnungen eines Objekts sind, wird die erste so starr wie möglich an die zweite angepasst und dorthin getragen und geht am Ende in deren Linien über. Ohne Haken wechselt die Zeichnung auf halbem Weg.</translation>
     </message>
     <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="424"/>
+        <source>Making the in-betweens…</source>
+        <translation>Die Zwischenbilder werden erstellt …</translation>
+    </message>
+    <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="295"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="335"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="303"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="344"/>
         <source>(unnamed)</source>
         <translation>(unbenannt)</translation>
     </message>
@@ -4471,69 +4477,69 @@
         <translation>Zuordnungspins verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="298"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="306"/>
         <source>%1: interpolated</source>
         <translation>%1: interpoliert</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="300"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="308"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (keine Pins, kein Käfig und kein Skelett)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="302"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="310"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: vom ersten Schlüsselbild gehalten (Pins, Käfig oder Skelett unterscheiden sich zwischen den Schlüsselbildern)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="306"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="314"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: nur im ersten Schlüsselbild, in der ersten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="308"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="316"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: nur im zweiten Schlüsselbild, in der zweiten Hälfte gehalten</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="310"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="318"/>
         <source>%1: carried from the first key&apos;s drawing to the second&apos;s</source>
         <translation>%1: von der Zeichnung des ersten Schlüsselbilds zu der des zweiten getragen</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="320"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="328"/>
         <source>Select two different frames as keys.</source>
         <translation>Wählen Sie zwei verschiedene Einzelbilder als Schlüsselbilder aus.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="332"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="341"/>
         <source>%1: could not be carried onto the second key&apos;s drawing, so it switches over half way. %2</source>
         <translation>%1: ließ sich nicht auf die Zeichnung des zweiten Schlüsselbilds tragen und wechselt daher auf halbem Weg. %2</translation>
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="180"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="338"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="377"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="347"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="393"/>
         <source>Fitting the drawings that differ…</source>
         <translation>Die verschiedenen Zeichnungen werden angepasst …</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="339"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="348"/>
         <source>Posing the preview…</source>
         <translation>Die Vorschau wird berechnet…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="373"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="389"/>
         <source>The preview could not be posed: %1</source>
         <translation>Die Vorschau konnte nicht posiert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="379"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="395"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Kein Objekt hat in beiden Schlüsselbildern passende Pins oder einen passenden Käfig: Die Zwischenbilder halten nur die Zeichnungen.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="381"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="397"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Die Leinwand zeigt das mittlere Zwischenbild.</translation>
     </message>

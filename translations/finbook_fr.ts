@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="201"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="215"/>
         <source>The first key has no lines to carry.</source>
         <translation>La première clé n’a aucune ligne à transporter.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="203"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="217"/>
         <source>The second key has no lines to fit to.</source>
         <translation>La seconde clé n’a aucune ligne sur laquelle ajuster.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="222"/>
         <source>The first key could not be meshed: %1</source>
         <translation>La première clé n’a pas pu être maillée : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="240"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="254"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>Les lignes de la première clé sont des points : il n’y a rien à ajuster.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="252"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="266"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>Le maillage de la première clé ne peut pas être ajusté : %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="89"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>Les lignes de la première clé autour de (%1, %2), %3 × %4 px, ne trouvent rien de semblable dans la seconde.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="98"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>Les deux dessins sont trop différents pour ajuster l’un sur l’autre (à %1 % du dessin en médiane, étiré de %2 %).%3 Dessinez une clé entre les deux, ou la seconde plus proche de la première.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="108"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>Une épingle de correspondance n’est pas sur le dessin de la première clé.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="112"/>
         <source>The fit could not be solved.</source>
         <translation>L’ajustement n’a pas pu être résolu.</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="127"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>Le mouvement ajusté ne peut pas être interpolé : %1</translation>
     </message>
@@ -218,7 +218,8 @@
         <translation>Retirer l&apos;armature</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="16"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="17"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="29"/>
         <source>Generate In-betweens</source>
         <translation>Générer des intervalles</translation>
     </message>
@@ -228,7 +229,7 @@
         <translation>Réinitialiser la pose</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="115"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="175"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>Appliquer la pose au dessin</translation>
@@ -4394,74 +4395,79 @@
         <translation>Avec ces épingles, les dessins n’ont pas pu être ajustés : %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="238"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="246"/>
         <source>&amp;Frames between the keys:</source>
         <translation>&amp;Images entre les clés&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="241"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="249"/>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="242"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="250"/>
         <source>Ease in (slow from the first key)</source>
         <translation>Démarrage progressif (lent depuis la première clé)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="243"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="251"/>
         <source>Ease out (slow into the second key)</source>
         <translation>Arrêt progressif (lent en arrivant à la seconde clé)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="244"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="252"/>
         <source>Ease in and out</source>
         <translation>Démarrage et arrêt progressifs</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="245"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="253"/>
         <source>Favour…</source>
         <translation>Favoriser…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="246"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
         <source>&amp;Spacing:</source>
         <translation>&amp;Espacement&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="250"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="258"/>
         <source>Left favours the first key, right the second.</source>
         <translation>À gauche, la première clé est favorisée&#xa0;; à droite, la seconde.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="251"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="259"/>
         <source>F&amp;avour:</source>
         <translation>Fa&amp;voriser&#xa0;:</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="262"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>Déplacer les épingles et les coins de cage en &amp;arcs</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="257"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="265"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>Un membre qui pivote entre les clés garde sa longueur. Si la case est décochée, chaque cible se déplace en ligne droite.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="260"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="268"/>
         <source>Carry &amp;different drawings onto each other</source>
         <translation>Transporter les &amp;dessins différents l’un sur l’autre</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="264"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="272"/>
         <source>Where the two keys are separate drawings of an object, the first is fitted onto the second as rigidly as possible and carried there, fading into the second&apos;s lines at the end. Unchecked, the drawing switches over half way.</source>
         <translation>Là où les deux clés sont des dessins distincts d’un objet, le premier est ajusté sur le second aussi rigidement que possible et transporté jusqu’à lui, en se fondant à la fin dans ses lignes. Décoché, le dessin change à mi-chemin.</translation>
     </message>
     <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="424"/>
+        <source>Making the in-betweens…</source>
+        <translation>Création des intervalles…</translation>
+    </message>
+    <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="295"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="335"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="303"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="344"/>
         <source>(unnamed)</source>
         <translation>(sans nom)</translation>
     </message>
@@ -4471,69 +4477,69 @@
         <translation>Déplacer les épingles de correspondance</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="298"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="306"/>
         <source>%1: interpolated</source>
         <translation>%1&#xa0;: interpolé</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="300"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="308"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ni épingles, ni cage, ni squelette)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="302"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="310"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1&#xa0;: maintenu depuis la première clé (ses épingles, sa cage ou son squelette diffèrent entre les clés)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="306"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="314"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1&#xa0;: seulement dans la première clé, maintenu pendant la première moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="308"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="316"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1&#xa0;: seulement dans la seconde clé, maintenu pendant la seconde moitié</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="310"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="318"/>
         <source>%1: carried from the first key&apos;s drawing to the second&apos;s</source>
         <translation>%1 : transporté du dessin de la première clé à celui de la seconde</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="320"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="328"/>
         <source>Select two different frames as keys.</source>
         <translation>Sélectionnez deux images différentes comme clés.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="332"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="341"/>
         <source>%1: could not be carried onto the second key&apos;s drawing, so it switches over half way. %2</source>
         <translation>%1 : n’a pas pu être transporté sur le dessin de la seconde clé, il change donc à mi-chemin. %2</translation>
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="180"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="338"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="377"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="347"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="393"/>
         <source>Fitting the drawings that differ…</source>
         <translation>Ajustement des dessins différents…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="339"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="348"/>
         <source>Posing the preview…</source>
         <translation>Calcul de l’aperçu…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="373"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="389"/>
         <source>The preview could not be posed: %1</source>
         <translation>Impossible de poser l&apos;aperçu&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="379"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="395"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>Aucun objet n&apos;a d&apos;épingles ou de cage correspondantes dans les deux clés&#xa0;: les intervalles ne feront que maintenir les dessins.</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="381"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="397"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>Le canevas montre l&apos;intervalle du milieu.</translation>
     </message>

@@ -4,53 +4,53 @@
 <context>
     <name>BetweenDrawings</name>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="201"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="215"/>
         <source>The first key has no lines to carry.</source>
         <translation>最初のキーには運ぶ線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="109"/>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="203"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="110"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="217"/>
         <source>The second key has no lines to fit to.</source>
         <translation>二番目のキーには合わせる線がありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="208"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="222"/>
         <source>The first key could not be meshed: %1</source>
         <translation>最初のキーをメッシュにできませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="240"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="254"/>
         <source>The first key&apos;s lines are dots: there is nothing to fit.</source>
         <translation>最初のキーの線は点だけです。合わせるものがありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="252"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="266"/>
         <source>The first key&apos;s mesh cannot be fitted: %1</source>
         <translation>最初のキーのメッシュを合わせられません: %1</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="88"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="89"/>
         <source>The lines of the first key around (%1, %2), %3 × %4 px, find nothing like them in the second key.</source>
         <translation>最初のキーの (%1, %2) 付近、%3 × %4 px の線に似たものが二番目のキーにありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="97"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="98"/>
         <source>The two drawings are too different to fit one onto the other (%1 % of the drawing apart on the median, %2 % stretched).%3 Draw a key between them, or draw the second closer to the first.</source>
         <translation>二つの絵が違いすぎて、一方を他方に合わせられません (中央値で絵の %1 % 離れ、%2 % 伸びています)。%3 間にキーを描くか、二番目を最初に近づけて描いてください。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="107"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="108"/>
         <source>A correspondence pin is not on the first key&apos;s drawing.</source>
         <translation>対応ピンが最初のキーの絵の上にありません。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="111"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="112"/>
         <source>The fit could not be solved.</source>
         <translation>合わせ込みを解けませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/between_drawings.cpp" line="126"/>
+        <location filename="../model/src/inbetween/between_drawings.cpp" line="127"/>
         <source>The fitted motion cannot be interpolated: %1</source>
         <translation>合わせた動きを補間できません: %1</translation>
     </message>
@@ -218,7 +218,8 @@
         <translation>リグを削除</translation>
     </message>
     <message>
-        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="16"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="17"/>
+        <location filename="../model/src/inbetween/inbetween_commands.cpp" line="29"/>
         <source>Generate In-betweens</source>
         <translation>中割りを生成</translation>
     </message>
@@ -228,7 +229,7 @@
         <translation>ポーズをリセット</translation>
     </message>
     <message>
-        <location filename="../model/src/rig/rig_commands.cpp" line="115"/>
+        <location filename="../model/src/rig/rig_commands.cpp" line="175"/>
         <location filename="../model/src/skeleton/skeleton_join_commands.cpp" line="199"/>
         <source>Apply Pose to Drawing</source>
         <translation>ポーズを絵に適用</translation>
@@ -4377,74 +4378,79 @@
         <translation>このピンでは絵を合わせられませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="238"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="246"/>
         <source>&amp;Frames between the keys:</source>
         <translation>キーの間のフレーム数(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="241"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="249"/>
         <source>Linear</source>
         <translation>等間隔</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="242"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="250"/>
         <source>Ease in (slow from the first key)</source>
         <translation>イーズイン（最初のキーからゆっくり）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="243"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="251"/>
         <source>Ease out (slow into the second key)</source>
         <translation>イーズアウト（2 番目のキーへゆっくり）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="244"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="252"/>
         <source>Ease in and out</source>
         <translation>イーズイン・アウト</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="245"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="253"/>
         <source>Favour…</source>
         <translation>詰め…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="246"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
         <source>&amp;Spacing:</source>
         <translation>間隔(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="250"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="258"/>
         <source>Left favours the first key, right the second.</source>
         <translation>左にすると最初のキー側に、右にすると 2 番目のキー側に詰めます。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="251"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="259"/>
         <source>F&amp;avour:</source>
         <translation>詰め(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="254"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="262"/>
         <source>Move pins and cage corners along &amp;arcs</source>
         <translation>ピンとケージの頂点を弧に沿って移動(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="257"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="265"/>
         <source>A limb swung between the keys keeps its length. Unchecked, every target moves in a straight line.</source>
         <translation>キーの間で振られた手足は長さを保ちます。オフにすると、すべての対象が直線的に移動します。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="260"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="268"/>
         <source>Carry &amp;different drawings onto each other</source>
         <translation>異なる絵を互いに運ぶ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="264"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="272"/>
         <source>Where the two keys are separate drawings of an object, the first is fitted onto the second as rigidly as possible and carried there, fading into the second&apos;s lines at the end. Unchecked, the drawing switches over half way.</source>
         <translation>二つのキーが同じオブジェクトの別々の絵のとき、最初の絵をできるだけ剛体的に二番目に合わせて運び、最後に二番目の線へ溶け込ませます。オフにすると途中で絵が切り替わります。</translation>
     </message>
     <message>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="424"/>
+        <source>Making the in-betweens…</source>
+        <translation>中割りを作っています…</translation>
+    </message>
+    <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="138"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="295"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="335"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="303"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="344"/>
         <source>(unnamed)</source>
         <translation>（名前なし）</translation>
     </message>
@@ -4454,69 +4460,69 @@
         <translation>対応ピンを動かす</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="298"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="306"/>
         <source>%1: interpolated</source>
         <translation>%1: 補間</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="300"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="308"/>
         <source>%1: held from the first key (no pins, cage or skeleton)</source>
         <translation>%1: 最初のキーを保持（ピン、ケージ、スケルトンがありません）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="302"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="310"/>
         <source>%1: held from the first key (its pins, cage or skeleton differ between the keys)</source>
         <translation>%1: 最初のキーを保持（キーの間でピン、ケージ、またはスケルトンが異なります）</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="306"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="314"/>
         <source>%1: only in the first key, held in the first half</source>
         <translation>%1: 最初のキーにのみ存在、前半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="308"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="316"/>
         <source>%1: only in the second key, held in the second half</source>
         <translation>%1: 2 番目のキーにのみ存在、後半で保持</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="310"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="318"/>
         <source>%1: carried from the first key&apos;s drawing to the second&apos;s</source>
         <translation>%1: 最初のキーの絵から二番目の絵へ運ばれます</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="320"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="328"/>
         <source>Select two different frames as keys.</source>
         <translation>キーとして異なる 2 つのフレームを選んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="332"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="341"/>
         <source>%1: could not be carried onto the second key&apos;s drawing, so it switches over half way. %2</source>
         <translation>%1: 二番目のキーの絵へ運べないため、途中で切り替わります。%2</translation>
     </message>
     <message>
         <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="180"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="338"/>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="377"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="347"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="393"/>
         <source>Fitting the drawings that differ…</source>
         <translation>異なる絵を合わせています…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="339"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="348"/>
         <source>Posing the preview…</source>
         <translation>プレビューを計算中…</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="373"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="389"/>
         <source>The preview could not be posed: %1</source>
         <translation>プレビューのポーズを計算できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="379"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="395"/>
         <source>No object has matching pins or a matching cage in both keys: the in-betweens will only hold drawings.</source>
         <translation>両方のキーで一致するピンまたはケージを持つオブジェクトがありません。中割りでは絵が保持されるだけです。</translation>
     </message>
     <message>
-        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="381"/>
+        <location filename="../ui/src/inbetween/inbetween_dialog.cpp" line="397"/>
         <source>The canvas shows the middle in-between.</source>
         <translation>キャンバスには中央の中割りが表示されています。</translation>
     </message>

@@ -5,6 +5,7 @@
 #include <finbook/model/skeleton/skeleton_join.h>
 
 #include <algorithm>
+#include <optional>
 
 namespace finbook::model {
 
@@ -14,19 +15,42 @@ InsertInbetweensCommand::InsertInbetweensCommand(Document *doc, Id firstKey, Id 
     : DocumentCommand(doc, parent)
 {
     setText(Command::tr("Generate In-betweens"));
-    int a = doc->frameIndex(firstKey), b = doc->frameIndex(secondKey);
+    const std::optional<std::pair<int, int>> keys = keyIndices(firstKey, secondKey, count);
+    if (!keys)
+        return;
+    take(planInbetweens(doc->frameAt(keys->first), doc->frameAt(keys->second),
+                        inbetweenTimes(count, options.spacing), options.path, fits));
+}
+
+InsertInbetweensCommand::InsertInbetweensCommand(Document *doc, Id firstKey, Id secondKey,
+                                                 InbetweenPlan plan, QUndoCommand *parent)
+    : DocumentCommand(doc, parent)
+{
+    setText(Command::tr("Generate In-betweens"));
+    if (keyIndices(firstKey, secondKey, int(plan.frames.size())))
+        take(std::move(plan));
+}
+
+std::optional<std::pair<int, int>> InsertInbetweensCommand::keyIndices(Id firstKey, Id secondKey,
+                                                                       int count)
+{
+    int a = m_doc->frameIndex(firstKey), b = m_doc->frameIndex(secondKey);
     if (a < 0 || b < 0 || a == b || count < 1 || count > kMaxInbetweens) {
         setObsolete(true);
-        return;
+        return std::nullopt;
     }
     if (a > b)
         std::swap(a, b);
-    m_layer = doc->currentLayerId();
-    m_firstKey = doc->frameAt(a).id;
-    m_plan = planInbetweens(doc->frameAt(a), doc->frameAt(b),
-                            inbetweenTimes(count, options.spacing), options.path, fits);
+    m_layer = m_doc->currentLayerId();
+    m_firstKey = m_doc->frameAt(a).id;
+    return std::make_pair(a, b);
+}
+
+void InsertInbetweensCommand::take(InbetweenPlan plan)
+{
+    m_plan = std::move(plan);
     for (Frame &f : m_plan.frames)
-        renumberFrame(f, doc);
+        renumberFrame(f, m_doc);
 }
 
 std::vector<Id> InsertInbetweensCommand::frameIds() const

@@ -208,6 +208,12 @@ model::DrawingFits InbetweenDialog::fits() const
 
 // What the worker poses: copies only, so it never touches the dialog or the document.
 struct InbetweenDialog::PreviewJob {
+    // The middle in-between is planned here too: a drawing carried onto another costs its
+    // Apply Pose (tens of milliseconds, up to half a second on a dense one).
+    model::Frame first, second;
+    double middle = 0.5;
+    model::TargetPath path = model::TargetPath::Arc;
+    model::DrawingFits fits;
     std::vector<model::Frame> frames;
     model::DeformSetupCache setups;
     deform::ArapOptions options;
@@ -224,6 +230,8 @@ InbetweenDialog::~InbetweenDialog()
         m_fitter->wait(); // one fit per object that differs: a second or so at most
     if (m_refitter)
         m_refitter->wait(); // one refit: tens of milliseconds
+    if (m_planner)
+        m_planner->wait(); // the in-betweens being made
 }
 
 QWidget *InbetweenDialog::buildControls()
@@ -323,7 +331,8 @@ void InbetweenDialog::updatePlan()
     const model::InbetweenOptions o = options();
     const std::vector<double> times = model::inbetweenTimes(count(), o.spacing);
     const double middle = times[(times.size() - 1) / 2];
-    model::InbetweenPlan plan = model::planInbetweens(*first, *second, {middle}, o.path, fits());
+    // What becomes of each object (no frame planned: cheap); the frame is planned by the worker.
+    const model::InbetweenPlan plan = model::planInbetweens(*first, *second, {}, o.path, fits());
     m_objects->clear();
     for (const model::InbetweenObjectReport &object : plan.objects)
         m_objects->addItem(describe(object));
@@ -343,11 +352,18 @@ void InbetweenDialog::updatePlan()
     }
     auto job = std::make_shared<PreviewJob>();
     job->interpolated = plan.interpolatedCount();
-    job->frames = std::move(plan.frames);
+    job->first = *first;
+    job->second = *second;
+    job->middle = middle;
+    job->path = o.path;
+    job->fits = fits();
     job->setups = m_setups;
     job->options = m_arap;
     job->closeGap = m_doc->settings().closeGap;
     m_worker = QThread::create([job] {
+        job->frames =
+            model::planInbetweens(job->first, job->second, {job->middle}, job->path, job->fits)
+                .frames;
         job->solved =
             model::solveInbetweenPoses(job->frames, job->options, &job->setups, job->closeGap);
     });
@@ -384,6 +400,37 @@ void InbetweenDialog::showPreview(PreviewJob &job)
         m_sink(m_preview);
 }
 
+void InbetweenDialog::accept()
+{
+    // Frames carried from one drawing onto another are made off the GUI thread, then OK
+    // closes the dialog with them.
+    const model::DrawingFits carried = fits();
+    const model::Frame *first = m_doc->frame(m_first);
+    const model::Frame *second = m_doc->frame(m_second);
+    if (m_planned || m_planner || carried.empty() || !first || !second) {
+        if (!m_planner)
+            QDialog::accept();
+        return;
+    }
+    const model::InbetweenOptions o = options();
+    auto keys = std::make_shared<std::pair<model::Frame, model::Frame>>(*first, *second);
+    auto plan = std::make_shared<model::InbetweenPlan>();
+    const std::vector<double> times = model::inbetweenTimes(count(), o.spacing);
+    m_planner = QThread::create([keys, plan, times, path = o.path, carried] {
+        *plan = model::planInbetweens(keys->first, keys->second, times, path, carried);
+    });
+    m_planner->setParent(this);
+    m_ok->setEnabled(false);
+    m_status->setText(tr("Making the in-betweens…"));
+    connect(m_planner, &QThread::finished, this, [this, plan] {
+        m_planner->deleteLater();
+        m_planner = nullptr;
+        m_planned = std::move(*plan);
+        QDialog::accept();
+    });
+    m_planner->start();
+}
+
 void InbetweenDialog::done(int result)
 {
     if (m_worker) // a pose still running must not bring the preview back
@@ -392,6 +439,8 @@ void InbetweenDialog::done(int result)
         m_fitter->disconnect(this);
     if (m_refitter)
         m_refitter->disconnect(this);
+    if (m_planner && result != QDialog::Accepted)
+        m_planner->disconnect(this);
     if (m_sink)
         m_sink(std::nullopt); // the preview never outlives the dialog
     QDialog::done(result);

@@ -83,9 +83,13 @@ void MainWindow::generateInbetweens(model::Id firstKey, model::Id secondKey)
     settings.setValue(kPositionKey, dialog.pos());
     if (result != QDialog::Accepted)
         return;
+    // Drawings carried onto others were made by the dialog off the GUI thread.
     auto *command =
-        new model::InsertInbetweensCommand(m_doc, dialog.firstKey(), dialog.secondKey(),
-                                           dialog.count(), dialog.options(), dialog.fits());
+        dialog.plannedFrames()
+            ? new model::InsertInbetweensCommand(m_doc, dialog.firstKey(), dialog.secondKey(),
+                                                 *dialog.plannedFrames())
+            : new model::InsertInbetweensCommand(m_doc, dialog.firstKey(), dialog.secondKey(),
+                                                 dialog.count(), dialog.options());
     const bool obsolete = command->isObsolete();
     m_doc->undoStack()->push(command);
     if (!obsolete)

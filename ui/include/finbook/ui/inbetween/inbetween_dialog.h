@@ -1,8 +1,8 @@
 // Frame → Generate In-betweens…: how many frames go between two keys and how they are spaced,
 // what will be interpolated and what held, with the middle in-between previewed live.
 //
-// The dialog never changes the document. Its preview is a planned frame posed on a worker
-// thread (solveInbetweenPoses, one factorization per object for the dialog's lifetime: the
+// The dialog never changes the document. Its preview is a planned frame (planned and) posed on a
+// worker thread (solveInbetweenPoses, one factorization per object for the dialog's lifetime: the
 // first pose of a 2.4k-vertex object took about 70 ms, which froze the controls when it ran
 // on the GUI thread) and handed to the preview sink (the canvas) when it is ready; a change
 // made meanwhile is posed after it, only the newest shown. The sink gets std::nullopt when
@@ -68,6 +68,11 @@ public:
     const std::optional<model::Frame> &previewFrame() const { return m_preview; }
     bool posing() const { return m_worker != nullptr; }
 
+    // The in-betweens made when OK was pressed with drawings carried onto others (made on a
+    // worker thread: OK waits for them); nullopt otherwise, and the caller plans them.
+    const std::optional<model::InbetweenPlan> &plannedFrames() const { return m_planned; }
+
+    void accept() override;
     void done(int result) override;
 
 private:
@@ -94,7 +99,9 @@ private:
     QThread *m_refitter = nullptr; // refitting with changed correspondence pins
     std::optional<std::pair<int, std::vector<model::BetweenPin>>> m_pendingRefit;
     QUndoStack *m_pinUndo = nullptr;
-    int m_shownFit = -1; // the object whose fit the view shows
+    int m_shownFit = -1;          // the object whose fit the view shows
+    QThread *m_planner = nullptr; // making the in-betweens after OK
+    std::optional<model::InbetweenPlan> m_planned;
     QSpinBox *m_count = nullptr;
     QComboBox *m_spacing = nullptr;
     QSlider *m_favour = nullptr;
