@@ -49,15 +49,8 @@ namespace {
 
 constexpr double kTurn = 40.0;          // degrees: each limb's turn at its base
 constexpr double kSpacingFactor = 1.37; // B's point spacing against A's
-constexpr double kShortBone = 4.0;      // px: bones shorter than this are not compared
+constexpr double kShortLimb = 4.0;      // px: limbs shorter than this are not compared
 constexpr int kCell = 300;
-
-Eigen::Vector2d pointAt(const Eigen::MatrixX2d &U, const Eigen::MatrixX3i &F, int triangle,
-                        const Eigen::RowVector3d &b)
-{
-    return b(0) * U.row(F(triangle, 0)).transpose() + b(1) * U.row(F(triangle, 1)).transpose() +
-           b(2) * U.row(F(triangle, 2)).transpose();
-}
 
 // Points every `spacing` along a polyline, its ends kept.
 std::vector<QPointF> resampled(const std::vector<StrokePoint> &points, double spacing)
@@ -208,13 +201,14 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
     std::vector<double> error;
     std::size_t worstStroke = 0, worstPoint = 0;
     double worstError = -1.0;
+    const Eigen::MatrixX2d fittedA = geometry::applyEmbedding(all, fit.fit.U, F);
     for (std::size_t s = 0; s < a.strokes.size(); ++s) {
         const std::vector<StrokePoint> &truth = posed.deformed->strokes[s];
         for (std::size_t k = 0; k < truth.size(); ++k) {
             const Eigen::Index r = Eigen::Index(fit.meshed->strokeOffsets[s] + k);
             if (all.I(r) < 0)
                 continue;
-            const Eigen::Vector2d p = pointAt(fit.fit.U, F, all.I(r), all.B.row(r));
+            const Eigen::Vector2d p = fittedA.row(r).transpose();
             const double e = std::hypot(p.x() - truth[k].x, p.y() - truth[k].y);
             error.push_back(100.0 * e / diagonal);
             if (e > worstError) {
@@ -245,6 +239,10 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
                 return true;
         return false;
     };
+    // The joints carried by the mid in-between, the fit and the straight-line morph.
+    const Eigen::MatrixX2d jointsMid = mid ? geometry::applyEmbedding(inA, *mid, F) : joints;
+    const Eigen::MatrixX2d jointsFit = geometry::applyEmbedding(inA, fit.fit.U, F);
+    const Eigen::MatrixX2d jointsNaive = geometry::applyEmbedding(inA, naiveMid, F);
     double limb = 0.0, naive = 0.0, fitLimb = 0.0;
     int limbs = 0;
     for (int j = 0; j < n; ++j) {
@@ -255,27 +253,18 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
             if (hasChild[std::size_t(tip)] || !below(tip, j) || inA.I(tip) < 0)
                 continue;
             const double rest = (joints.row(tip) - joints.row(base)).norm();
-            if (rest < kShortBone)
+            if (rest < kShortLimb)
                 continue;
-            const auto chord = [&](const Eigen::MatrixX2d &U) {
-                return (pointAt(U, F, inA.I(tip), inA.B.row(tip)) -
-                        pointAt(U, F, inA.I(base), inA.B.row(base)))
-                    .norm();
+            const auto chord = [&](const Eigen::MatrixX2d &at) {
+                return (at.row(tip) - at.row(base)).norm();
             };
             ++limbs;
             if (mid)
-                limb = std::max(limb, 100.0 * std::abs(chord(*mid) - rest) / rest);
-            fitLimb = std::max(fitLimb, 100.0 * std::abs(chord(fit.fit.U) - rest) / rest);
-            naive = std::max(naive, 100.0 * std::abs(chord(naiveMid) - rest) / rest);
+                limb = std::max(limb, 100.0 * std::abs(chord(jointsMid) - rest) / rest);
+            fitLimb = std::max(fitLimb, 100.0 * std::abs(chord(jointsFit) - rest) / rest);
+            naive = std::max(naive, 100.0 * std::abs(chord(jointsNaive) - rest) / rest);
         }
     }
-    if (qEnvironmentVariableIsSet("FINBOOK_BETWEEN_DEBUG"))
-        for (double u : {0.25, 0.5, 0.75, 1.0}) {
-            const auto Ut = deform::between::arapInterpolate(*fit.motion, u);
-            std::printf("t %.2f max move %.2f (fit %.2f) flipped %d\n", u,
-                        Ut ? (*Ut - V).rowwise().norm().maxCoeff() : -1.0,
-                        (fit.fit.U - V).rowwise().norm().maxCoeff(), fit.motion->flippedTriangles);
-        }
     // A correspondence pin on A's worst point at its true place, then dragged 2 px at a time:
     // the time of each live refit (refitDrawings), and how far that point is then.
     std::vector<double> pinMs;
@@ -297,7 +286,8 @@ void runOne(const QString &file, const std::vector<std::vector<QPointF>> &lines,
             if (move == 0) {
                 const Eigen::Index r =
                     Eigen::Index(live->meshed->strokeOffsets[worstStroke] + worstPoint);
-                const Eigen::Vector2d p = pointAt(live->fit.U, F, all.I(r), all.B.row(r));
+                const Eigen::Vector2d p =
+                    geometry::applyEmbedding(all, live->fit.U, F).row(r).transpose();
                 pinnedError = 100.0 * std::hypot(p.x() - goal.x, p.y() - goal.y) / diagonal;
             }
         }

@@ -1,6 +1,4 @@
 #include <finbook/deform/between/arap_interpolation.h>
-#include <finbook/model/fill/fill_render.h>
-#include <finbook/model/fill/fill_resolve.h>
 #include <finbook/model/inbetween/between_drawings.h>
 #include <finbook/model/rig/rig_commands.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
@@ -45,15 +43,6 @@ Eigen::Vector2d normalAt(const std::vector<StrokePoint> &points, std::size_t k)
 // it, more samples cost time and add nothing the mesh can follow.
 constexpr std::size_t kMaxSamples = 2000;
 constexpr std::size_t kMaxTargetPoints = 6000;
-
-Eigen::Vector2d at(const Eigen::MatrixX2d &U, const Eigen::MatrixX3i &F, int triangle,
-                   const Eigen::RowVector3d &coords)
-{
-    Eigen::Vector2d p = Eigen::Vector2d::Zero();
-    for (int j = 0; j < 3; ++j)
-        p += coords(j) * U.row(F(triangle, j)).transpose();
-    return p;
-}
 
 // Affine coordinates of p in triangle (a, b, c), unclamped; nullopt for a triangle of no area.
 std::optional<Eigen::RowVector3d> affineCoords(const Eigen::Vector2d &p, const Eigen::Vector2d &a,
@@ -137,9 +126,10 @@ QString finish(DrawingFit &fitted)
     Eigen::MatrixX2d BP(Eigen::Index(bAll.size()), 2);
     for (std::size_t i = 0; i < bAll.size(); ++i)
         BP.row(Eigen::Index(i)) = bAll[i].transpose();
-    const geometry::Embedding inFit = geometry::embed(r.U, F, BP);
-    fit->bTriangle = inFit.I;
-    fit->bCoords = inFit.B;
+    // embed snaps a point outside the mesh onto its nearest triangle; unclamped coordinates
+    // in that triangle put it back exactly where B drew it.
+    geometry::Embedding &inFit = fit->bInFit;
+    inFit = geometry::embed(r.U, F, BP);
     for (Eigen::Index i = 0; i < BP.rows(); ++i) {
         const int t = inFit.I(i);
         if (t < 0)
@@ -147,7 +137,7 @@ QString finish(DrawingFit &fitted)
         const auto c = affineCoords(BP.row(i).transpose(), r.U.row(F(t, 0)).transpose(),
                                     r.U.row(F(t, 1)).transpose(), r.U.row(F(t, 2)).transpose());
         if (c)
-            fit->bCoords.row(i) = *c;
+            inFit.B.row(i) = *c;
     }
 
     return {};
@@ -194,8 +184,9 @@ StrokeGroup shownDrawing(const StrokeGroup &group, double closeGap,
     out.swap = SwapLink();
     if (!group.isDeformed() || group.deformed->strokes.size() != group.strokes.size())
         return out;
-    out.strokes = bakedStrokes(group, closeGap, newId, HiddenLines::KeepUnseen);
-    out.fills = fillsAfterBake(group, out.strokes, closeGap);
+    AppliedPose applied = applyPoseToDrawing(group, closeGap, newId);
+    out.strokes = std::move(applied.strokes);
+    out.fills = std::move(applied.fills);
     return out;
 }
 
@@ -395,6 +386,27 @@ QRgb faded(QRgb colour, double keep)
     return qRgba(qRed(colour), qGreen(colour), qBlue(colour), alpha);
 }
 
+// Moves the points of `group`'s strokes, stroke after stroke, to the rows of `points` (as
+// many as the strokes have points) and keeps `keep` of their ink's alpha.
+void carryStrokes(StrokeGroup &group, const Eigen::MatrixX2d &points, double keep)
+{
+    Eigen::Index row = 0;
+    for (Stroke &stroke : group.strokes) {
+        if (!stroke.data)
+            continue;
+        auto data = std::make_shared<StrokeData>(*stroke.data);
+        for (StrokePoint &p : data->points) {
+            if (row < points.rows()) {
+                p.x = float(points(row, 0));
+                p.y = float(points(row, 1));
+            }
+            ++row;
+        }
+        data->color = faded(data->color, keep);
+        stroke.data = std::move(data);
+    }
+}
+
 } // namespace
 
 StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions &options)
@@ -404,23 +416,7 @@ StrokeGroup betweenDrawing(const DrawingFit &fit, double t, const BetweenOptions
     const Eigen::MatrixX2d Ut = motionAt(fit, t);
     const double w = fadeAt(t, options);
     StrokeGroup out = fit.a;
-    const geometry::Embedding &all = fit.meshed->embedding;
-    for (std::size_t s = 0; s < out.strokes.size(); ++s) {
-        Stroke &stroke = out.strokes[s];
-        if (!stroke.data)
-            continue;
-        auto data = std::make_shared<StrokeData>(*stroke.data);
-        for (std::size_t k = 0; k < data->points.size(); ++k) {
-            const Eigen::Index row = Eigen::Index(fit.meshed->strokeOffsets[s] + k);
-            if (row >= all.I.size() || all.I(row) < 0)
-                continue; // not in the mesh (never for a meshed stroke point): left in place
-            const Eigen::Vector2d p = at(Ut, F, all.I(row), all.B.row(row));
-            data->points[k].x = float(p.x());
-            data->points[k].y = float(p.y());
-        }
-        data->color = faded(data->color, 1.0 - w);
-        stroke.data = std::move(data);
-    }
+    carryStrokes(out, geometry::applyEmbedding(fit.meshed->embedding, Ut, F), 1.0 - w);
     // The drawing as Apply Pose makes a pose of it (rig_commands.h applyPoseToDrawing): A
     // posed by the carried points shows its rest regions carried whole; the carried lines get
     // lines of no ink where a gap the pose showed closed opened on the way or colours it showed
@@ -440,25 +436,8 @@ std::optional<StrokeGroup> fadingInDrawing(const DrawingFit &fit, double t,
         return std::nullopt;
     const Eigen::MatrixX3i &F = fit.meshed->mesh.F;
     const Eigen::MatrixX2d Ut = motionAt(fit, t);
-    Eigen::Index row = 0;
-    const auto carried = [&](float &x, float &y) {
-        const Eigen::Index r = row++;
-        if (r >= fit.bTriangle.size() || fit.bTriangle(r) < 0)
-            return;
-        const Eigen::Vector2d p = at(Ut, F, fit.bTriangle(r), fit.bCoords.row(r));
-        x = float(p.x());
-        y = float(p.y());
-    };
     StrokeGroup out = fit.b;
-    for (Stroke &stroke : out.strokes) {
-        if (!stroke.data)
-            continue;
-        auto data = std::make_shared<StrokeData>(*stroke.data);
-        for (StrokePoint &p : data->points)
-            carried(p.x, p.y);
-        data->color = faded(data->color, w);
-        stroke.data = std::move(data);
-    }
+    carryStrokes(out, geometry::applyEmbedding(fit.bInFit, Ut, F), w);
     if (!out.fills.empty()) { // as A's (betweenDrawing): B posed backwards, its pose applied
         out = appliedAsShown(fit.b, std::move(out), fit.closeGap);
         for (Fill &f : out.fills)

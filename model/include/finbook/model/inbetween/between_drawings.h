@@ -66,9 +66,9 @@ struct DrawingFit {
     deform::between::RigidFitResult fit;
     std::shared_ptr<const deform::between::ArapInterpolation> motion; // rest → fitted
     // Each B stroke point (stroke after stroke) in the fitted mesh: its triangle and affine
-    // coordinates there (they may lie outside it for a point beyond A's shape).
-    Eigen::VectorXi bTriangle;
-    Eigen::MatrixX3d bCoords;
+    // coordinates there (they may lie outside it for a point beyond A's shape), for
+    // geometry::applyEmbedding with the fitted mesh's vertices.
+    geometry::Embedding bInFit;
     std::vector<BetweenPin> pins;          // the correspondence pins it was made with
     deform::between::FitSkeleton skeleton; // A's automatic skeleton (its parts), if any
     double closeGap = -1.0;                // the document's Close gaps the fit was made for
