@@ -1,3 +1,4 @@
+#include <finbook/geometry/embedding.h>
 #include <finbook/ui/inbetween/between_fit_view.h>
 
 #include <QMouseEvent>
@@ -41,10 +42,28 @@ BetweenFitView::BetweenFitView(QWidget *parent)
 void BetweenFitView::setFit(std::shared_ptr<const model::DrawingFit> fit)
 {
     m_fit = std::move(fit);
-    m_part.clear();
-    if (m_fit) {
-        if (m_dragged < 0)
-            m_pins = m_fit->pins;
+    m_fitted.resize(0, 2);
+    m_bounds = QRectF();
+    if (!m_fit) {
+        m_part.clear();
+        m_partsOf.reset();
+        update();
+        return;
+    }
+    if (m_dragged < 0)
+        m_pins = m_fit->pins;
+    m_fitted =
+        geometry::applyEmbedding(m_fit->meshed->embedding, m_fit->fit.U, m_fit->meshed->mesh.F);
+    const auto add = [&](QPointF p) { m_bounds = m_bounds.united(QRectF(p, QSizeF(0.01, 0.01))); };
+    for (Eigen::Index r = 0; r < m_fitted.rows(); ++r)
+        add(QPointF(m_fitted(r, 0), m_fitted(r, 1)));
+    for (const model::Stroke &s : m_fit->b.strokes)
+        if (s.data)
+            for (const model::StrokePoint &p : s.data->points)
+                add(QPointF(p.x, p.y));
+    if (m_partsOf != m_fit->meshed) {
+        m_partsOf = m_fit->meshed;
+        m_part.clear();
         const auto &joints = m_fit->skeleton.joints;
         const auto &parent = m_fit->skeleton.parent;
         for (const model::Stroke &s : m_fit->a.strokes) {
@@ -82,36 +101,13 @@ QPointF BetweenFitView::fittedPoint(std::size_t s, std::size_t k) const
 {
     if (!m_fit || s + 1 >= m_fit->meshed->strokeOffsets.size())
         return {};
-    const geometry::Embedding &e = m_fit->meshed->embedding;
     const Eigen::Index r = Eigen::Index(m_fit->meshed->strokeOffsets[s] + k);
-    if (r >= e.I.size() || e.I(r) < 0) {
-        const model::StrokePoint &p = m_fit->a.strokes[s].data->points[k];
-        return {p.x, p.y};
-    }
-    const Eigen::MatrixX3i &F = m_fit->meshed->mesh.F;
-    const Eigen::MatrixX2d &U = m_fit->fit.U;
-    QPointF out;
-    for (int j = 0; j < 3; ++j)
-        out += e.B(r, j) * QPointF(U(F(e.I(r), j), 0), U(F(e.I(r), j), 1));
-    return out;
+    return r < m_fitted.rows() ? QPointF(m_fitted(r, 0), m_fitted(r, 1)) : QPointF();
 }
 
 QTransform BetweenFitView::view() const
 {
-    QRectF box;
-    const auto add = [&](QPointF p) { box = box.united(QRectF(p, QSizeF(0.01, 0.01))); };
-    if (m_fit) {
-        for (const model::Stroke &s : m_fit->b.strokes)
-            if (s.data)
-                for (const model::StrokePoint &p : s.data->points)
-                    add(QPointF(p.x, p.y));
-        for (std::size_t s = 0; s < m_fit->a.strokes.size(); ++s)
-            if (m_fit->a.strokes[s].data)
-                for (std::size_t k = 0; k < m_fit->a.strokes[s].data->points.size(); ++k)
-                    add(fittedPoint(s, k));
-    }
-    if (box.isEmpty())
-        box = QRectF(0, 0, 1, 1);
+    const QRectF box = m_bounds.isEmpty() ? QRectF(0, 0, 1, 1) : m_bounds;
     const double scale = std::min((width() - 2 * kMargin) / std::max(box.width(), 1e-6),
                                   (height() - 2 * kMargin) / std::max(box.height(), 1e-6));
     QTransform t;

@@ -58,7 +58,14 @@ private:
     std::vector<model::BetweenPin> m_pins;
     std::vector<model::BetweenPin> m_before; // at the start of a drag
     int m_dragged = -1;
-    std::vector<int> m_part; // per first-drawing stroke point: its part (nearest bone), −1 none
+    // Made once per fit, not per paint or mouse move: the first drawing's points as fitted
+    // (stroke after stroke, the rows of its mesh embedding), and the box of both drawings.
+    Eigen::MatrixX2d m_fitted;
+    QRectF m_bounds;
+    // Per first-drawing stroke point: its part (nearest bone), −1 none. A refit keeps the
+    // drawing and its skeleton: made again only for another drawing.
+    std::vector<int> m_part;
+    std::shared_ptr<const model::MeshedObject> m_partsOf;
 };
 
 } // namespace finbook::ui
