@@ -2,8 +2,6 @@
 
 #include <finbook/deform/arap.h>
 
-#include <Eigen/OrderingMethods>
-
 #include <future>
 #include <system_error>
 #include <vector>
@@ -106,25 +104,12 @@ std::vector<int> fillReducingOrder(const Eigen::MatrixX2d &V, const Eigen::Matri
     const Eigen::SparseMatrix<double> laplacian =
         freeLaplacian(V, F, c, freeLocal, d.options.method == ArapMethod::Refined);
     const auto nf = static_cast<int>(c.freeVertices.size());
-    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
-    Eigen::AMDOrdering<int>()(laplacian.selfadjointView<Eigen::Upper>(), inverse);
+    const std::vector<int> order = supernodalOrder(laplacian);
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse(nf);
+    for (int k = 0; k < nf; ++k)
+        inverse.indices()(k) = order[std::size_t(k)];
     Eigen::SparseMatrix<double> permuted(nf, nf);
     permuted = laplacian.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
-    permuted.makeCompressed();
-    // Then a postorder of the elimination tree: the same fill, with the chains of columns
-    // that become supernodes made contiguous.
-    const std::vector<int> post =
-        postorder(eliminationTree(nf, permuted.outerIndexPtr(), permuted.innerIndexPtr()));
-    bool identity = true;
-    for (int k = 0; k < nf; ++k)
-        identity = identity && post[std::size_t(k)] == k;
-    if (!identity) {
-        Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> composed(nf);
-        for (int k = 0; k < nf; ++k)
-            composed.indices()(k) = inverse.indices()(post[std::size_t(k)]);
-        inverse = composed;
-        permuted = laplacian.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
-    }
     std::vector<int> ordered(static_cast<std::size_t>(nf));
     for (int k = 0; k < nf; ++k)
         ordered[k] = c.freeVertices[inverse.indices()(k)];

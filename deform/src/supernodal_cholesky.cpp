@@ -2,6 +2,8 @@
 
 #include <finbook/deform/supernodal_cholesky.h>
 
+#include <Eigen/OrderingMethods>
+
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -85,6 +87,22 @@ std::vector<int> eliminationTree(int n, const int *outer, const int *inner)
         }
     }
     return parent;
+}
+
+std::vector<int> supernodalOrder(const Eigen::SparseMatrix<double> &upper)
+{
+    const int n = int(upper.rows());
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+    Eigen::AMDOrdering<int>()(upper.selfadjointView<Eigen::Upper>(), inverse);
+    Eigen::SparseMatrix<double> permuted(n, n);
+    permuted = upper.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
+    permuted.makeCompressed();
+    const std::vector<int> post =
+        postorder(eliminationTree(n, permuted.outerIndexPtr(), permuted.innerIndexPtr()));
+    std::vector<int> order(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) // inverse.indices()(k): the column at AMD position k
+        order[std::size_t(k)] = inverse.indices()(post[std::size_t(k)]);
+    return order;
 }
 
 std::vector<int> postorder(const std::vector<int> &parent)

@@ -1,7 +1,5 @@
 #include "mesh_system.h"
 
-#include <Eigen/OrderingMethods>
-
 #include <algorithm>
 #include <cmath>
 
@@ -26,8 +24,8 @@ MeshSystem::MeshSystem(int n, const Eigen::MatrixX3i &F, const std::vector<bool>
         if (eliminated.empty() || !eliminated[std::size_t(v)])
             m_unknown[std::size_t(v)] = m_free++;
 
-    // Upper pattern in unknown numbering, AMD, then a postorder of the elimination tree (what
-    // analyzeSupernodal needs, and the fill AMD chose): the ARAP precompute's recipe.
+    // Upper pattern in unknown numbering, then the order the supernodal factor wants (as the
+    // ARAP precompute's).
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(std::size_t(m_free) + std::size_t(F.rows()) * 3);
     for (int u = 0; u < m_free; ++u)
@@ -42,20 +40,10 @@ MeshSystem::MeshSystem(int n, const Eigen::MatrixX3i &F, const std::vector<bool>
     }
     Eigen::SparseMatrix<double> upper(m_free, m_free);
     upper.setFromTriplets(entries.begin(), entries.end());
-    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
-    Eigen::AMDOrdering<int>()(upper.selfadjointView<Eigen::Upper>(), inverse);
-    Eigen::SparseMatrix<double> permuted(m_free, m_free);
-    permuted = upper.selfadjointView<Eigen::Upper>().twistedBy(inverse.inverse());
-    permuted.makeCompressed();
-    const std::vector<int> post =
-        postorder(eliminationTree(m_free, permuted.outerIndexPtr(), permuted.innerIndexPtr()));
+    const std::vector<int> order = supernodalOrder(upper);
     m_position.assign(std::size_t(m_free), 0);
-    std::vector<int> rank(static_cast<std::size_t>(m_free));
     for (int k = 0; k < m_free; ++k)
-        rank[std::size_t(post[std::size_t(k)])] = k;
-    // inverse.indices()(k) is the unknown at AMD position k; post[k'] the AMD position at k'.
-    for (int k = 0; k < m_free; ++k)
-        m_position[std::size_t(inverse.indices()(k))] = rank[std::size_t(k)];
+        m_position[std::size_t(order[std::size_t(k)])] = k;
 
     std::vector<Eigen::Triplet<double>> full;
     full.reserve(entries.size() * 2);

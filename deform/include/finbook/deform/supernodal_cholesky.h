@@ -47,6 +47,12 @@ std::vector<int> eliminationTree(int n, const int *outer, const int *inner);
 // single children contiguous, which is what lets columns form supernodes.
 std::vector<int> postorder(const std::vector<int> &parent);
 
+// The elimination order for a symmetric pattern that analyzeSupernodal wants: AMD (the fill),
+// then a postorder of the elimination tree of the AMD-permuted pattern (the same fill, with
+// the chains of columns that become supernodes made contiguous). `upper`: the upper triangle
+// (values ignored). order[k] is the column eliminated k-th.
+std::vector<int> supernodalOrder(const Eigen::SparseMatrix<double> &upper);
+
 // Analyses the upper-triangular pattern of a matrix whose elimination tree is postordered:
 // compressed columns (outer[j + 1] ends column j, so an Eigen matrix must be compressed
 // first), column j holding rows i ≤ j; entries below the diagonal are ignored.
