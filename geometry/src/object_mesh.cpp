@@ -1,12 +1,14 @@
 #include "cdt_mesher.h"
 #include "mesh_cleanup.h"
 
+#include <finbook/geometry/mesh_boundary.h>
 #include <finbook/geometry/object_mesh.h>
 #include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/simplicity.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace finbook::geometry {
 namespace {
@@ -93,6 +95,55 @@ Expected<ObjectMesh, GeometryError> meshRegion(const Region &region, const MeshO
     if (!mesh)
         return unexpected(mesh.error());
     return ObjectMesh{std::move(*mesh), std::move(raw->V), std::move(raw->F), region};
+}
+
+Expected<ObjectMesh, GeometryError> objectMeshFrom(const Eigen::MatrixX2d &V,
+                                                   const Eigen::MatrixX3i &F)
+{
+    const auto degenerate = [](const char *what) {
+        return unexpected(GeometryError{GeometryErrorCode::DegenerateRegion, what});
+    };
+    if (F.rows() == 0 || V.rows() < 3)
+        return degenerate("The mesh has no triangles.");
+    if (!V.allFinite() || F.minCoeff() < 0 || F.maxCoeff() >= V.rows())
+        return degenerate("The mesh refers to vertices it does not have.");
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+        const Eigen::RowVector2d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+        const double area = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+        if (!(area > 0.0))
+            return degenerate("The mesh has a triangle without area or turned over.");
+    }
+    auto mesh = toTriMesh(V, F);
+    if (!mesh)
+        return unexpected(mesh.error());
+    // Outer loops (positive area) become polygons; each hole goes to the smallest outer loop
+    // that holds its first vertex.
+    std::vector<Eigen::MatrixX2d> holes;
+    Region region;
+    for (const Eigen::VectorXi &loop : boundaryLoops(F)) {
+        Eigen::MatrixX2d ring(loop.size(), 2);
+        for (Eigen::Index i = 0; i < loop.size(); ++i)
+            ring.row(i) = V.row(loop(i));
+        if (regionArea({Polygon{ring, {}}}) > 0.0)
+            region.push_back(Polygon{std::move(ring), {}});
+        else
+            holes.push_back(std::move(ring));
+    }
+    for (Eigen::MatrixX2d &hole : holes) {
+        Polygon *home = nullptr;
+        double homeArea = std::numeric_limits<double>::infinity();
+        for (Polygon &polygon : region) {
+            const double area = regionArea({Polygon{polygon.outer, {}}});
+            if (area < homeArea &&
+                regionContains({Polygon{polygon.outer, {}}}, hole(0, 0), hole(0, 1))) {
+                home = &polygon;
+                homeArea = area;
+            }
+        }
+        if (home)
+            home->holes.push_back(std::move(hole));
+    }
+    return ObjectMesh{std::move(*mesh), V, F, std::move(region)};
 }
 
 Expected<ObjectMesh, GeometryError> buildObjectMesh(const std::vector<StrokeInput> &strokes,

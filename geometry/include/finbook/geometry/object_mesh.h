@@ -62,6 +62,13 @@ Expected<ObjectMesh, GeometryError> buildObjectMesh(const Region &region,
 Expected<ObjectMesh, GeometryError> meshRegion(const Region &region,
                                                const MeshOptions &options = {});
 
+// An ObjectMesh from a triangle mesh made elsewhere (a picture object's texture mesh, saved with
+// it): `region` is the mesh's boundary, each outer loop a polygon holding the hole loops that lie
+// inside it. Errors: DegenerateRegion when F is empty, has an index outside V or a triangle of
+// zero or negative area; TriangulationFailed when OpenMesh cannot store it (non-manifold).
+Expected<ObjectMesh, GeometryError> objectMeshFrom(const Eigen::MatrixX2d &V,
+                                                   const Eigen::MatrixX3i &F);
+
 // The CGAL size bound (longest edge, px) meshRegion uses for this area and perimeter.
 double meshEdgeLength(double area, double perimeter, const MeshOptions &options);
 
