@@ -123,8 +123,8 @@ Expected<std::vector<OraLayerEntry>, QString> parseOraStack(const QByteArray &xm
         const QStringView name = reader.name();
         if (!inImage) {
             if (name != QLatin1String("image"))
-                return unexpected(
-                    pictureTr("Its stack.xml does not describe an OpenRaster image."));
+                return unexpected(pictureTr(QT_TRANSLATE_NOOP(
+                    "PictureImport", "Its stack.xml does not describe an OpenRaster image.")));
             inImage = true;
             continue;
         }
@@ -133,17 +133,20 @@ Expected<std::vector<OraLayerEntry>, QString> parseOraStack(const QByteArray &xm
         const OraLayerEntry outer = stacks.empty() ? OraLayerEntry() : stacks.back();
         auto entry = oraNested(outer, reader.attributes());
         if (!entry)
-            return unexpected(pictureTr("Its stack.xml gives a layer an invalid position or "
-                                        "opacity."));
+            return unexpected(pictureTr(QT_TRANSLATE_NOOP(
+                "PictureImport", "Its stack.xml gives a layer an invalid position or "
+                                 "opacity.")));
         if (name == QLatin1String("stack")) {
             if (int(stacks.size()) >= kMaxOpenRasterDepth)
-                return unexpected(pictureTr("Its layer groups are nested too deeply."));
+                return unexpected(pictureTr(
+                    QT_TRANSLATE_NOOP("PictureImport", "Its layer groups are nested too deeply.")));
             stacks.push_back(std::move(*entry));
             continue;
         }
         entry->src = reader.attributes().value(QLatin1String("src")).toString();
         if (entry->src.isEmpty())
-            return unexpected(pictureTr("Its stack.xml names a layer without a picture."));
+            return unexpected(pictureTr(QT_TRANSLATE_NOOP(
+                "PictureImport", "Its stack.xml names a layer without a picture.")));
         if (int(layers.size()) >= kMaxOpenRasterLayers)
             return unexpected(
                 QCoreApplication::translate("PictureImport", "It has more than %1 layers.")
@@ -158,9 +161,10 @@ Expected<std::vector<OraLayerEntry>, QString> parseOraStack(const QByteArray &xm
                               .arg(reader.lineNumber())
                               .arg(reader.errorString()));
     if (!inImage)
-        return unexpected(pictureTr("Its stack.xml is empty."));
+        return unexpected(pictureTr(QT_TRANSLATE_NOOP("PictureImport", "Its stack.xml is empty.")));
     if (layers.empty())
-        return unexpected(pictureTr("Its stack of layers is empty."));
+        return unexpected(
+            pictureTr(QT_TRANSLATE_NOOP("PictureImport", "Its stack of layers is empty.")));
     return layers;
 }
 
@@ -208,7 +212,8 @@ QString oraMimetypeProblem(QuaZip &zip)
     default:
         break;
     }
-    return pictureTr("It is a zip archive, but not an OpenRaster picture.");
+    return pictureTr(
+        QT_TRANSLATE_NOOP("PictureImport", "It is a zip archive, but not an OpenRaster picture."));
 }
 
 } // namespace
@@ -229,19 +234,22 @@ Expected<std::vector<PictureLayer>, QString> readOpenRaster(const QString &path)
 {
     QuaZip zip(path);
     if (!zip.open(QuaZip::mdUnzip))
-        return unexpected(pictureTr("It is not a zip archive, or it is damaged or cut short."));
+        return unexpected(pictureTr(QT_TRANSLATE_NOOP(
+            "PictureImport", "It is not a zip archive, or it is damaged or cut short.")));
     if (QString problem = oraMimetypeProblem(zip); !problem.isEmpty())
         return unexpected(problem);
     QByteArray xml;
     switch (readOraEntry(zip, QStringLiteral("stack.xml"), kMaxOpenRasterStackBytes, &xml)) {
     case OraEntryProblem::Missing:
-        return unexpected(pictureTr("It has no stack.xml: it is not an OpenRaster picture."));
+        return unexpected(pictureTr(QT_TRANSLATE_NOOP(
+            "PictureImport", "It has no stack.xml: it is not an OpenRaster picture.")));
     case OraEntryProblem::TooLarge:
         return unexpected(
             QCoreApplication::translate("PictureImport", "Its stack.xml is larger than %1 MB.")
                 .arg(kMaxOpenRasterStackBytes >> 20));
     case OraEntryProblem::Damaged:
-        return unexpected(pictureTr("Its stack.xml is damaged or cut short."));
+        return unexpected(pictureTr(
+            QT_TRANSLATE_NOOP("PictureImport", "Its stack.xml is damaged or cut short.")));
     case OraEntryProblem::None:
         break;
     }
@@ -260,7 +268,8 @@ Expected<std::vector<PictureLayer>, QString> readOpenRaster(const QString &path)
         layers.push_back(PictureLayer{it->name, std::move(*image), it->offset});
     }
     if (layers.empty())
-        return unexpected(pictureTr("It has no visible layer."));
+        return unexpected(
+            pictureTr(QT_TRANSLATE_NOOP("PictureImport", "It has no visible layer.")));
     return layers;
 }
 

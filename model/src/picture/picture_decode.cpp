@@ -27,7 +27,7 @@ QString importRefusal(const QString &path, const QString &why)
 QString sizeRefusal(QSize size, qint64 budget)
 {
     if (size.width() <= 0 || size.height() <= 0)
-        return pictureTr("Its picture has no size.");
+        return pictureTr(QT_TRANSLATE_NOOP("PictureImport", "Its picture has no size."));
     if (size.width() > kMaxPictureSide || size.height() > kMaxPictureSide)
         return QCoreApplication::translate("PictureImport",
                                            "It claims to be %1 × %2 pixels; a picture may be at "
@@ -69,7 +69,8 @@ Expected<QImage, QString> readWithQtReader(const QByteArray &bytes, qint64 budge
     // JPEG ends with an EOI marker (an embedded thumbnail's own may hide a cut, never invent
     // one).
     if (reader.format() == "jpeg" && bytes.lastIndexOf(QByteArrayView("\xff\xd9", 2)) < 0)
-        return unexpected(pictureTr("Its picture is cut short (the file is incomplete)."));
+        return unexpected(pictureTr(QT_TRANSLATE_NOOP(
+            "PictureImport", "Its picture is cut short (the file is incomplete).")));
     if (const QSize claimed = reader.size(); claimed.isValid()) {
         if (QString why = sizeRefusal(claimed, budget); !why.isEmpty())
             return unexpected(why);
@@ -79,9 +80,9 @@ Expected<QImage, QString> readWithQtReader(const QByteArray &bytes, qint64 budge
     reader.setAllocationLimit(int(std::max<qint64>(1, bound >> 20)));
     QImage image = reader.read();
     if (image.isNull())
-        return unexpected(
-            pictureTr("Its picture cannot be decoded: the file is damaged, cut short or too "
-                      "large."));
+        return unexpected(pictureTr(QT_TRANSLATE_NOOP(
+            "PictureImport", "Its picture cannot be decoded: the file is damaged, cut short or too "
+                             "large.")));
     return image;
 }
 
@@ -90,7 +91,7 @@ Expected<QImage, QString> readWithQtReader(const QByteArray &bytes, qint64 budge
 Expected<QImage, QString> decodePicture(const QByteArray &bytes, qint64 *budget, bool ffmpeg)
 {
     if (bytes.isEmpty())
-        return unexpected(pictureTr("It is empty."));
+        return unexpected(pictureTr(QT_TRANSLATE_NOOP("PictureImport", "It is empty.")));
     bool handled = false;
     auto read = readWithQtReader(bytes, *budget, &handled);
     if (!read)
@@ -98,20 +99,23 @@ Expected<QImage, QString> decodePicture(const QByteArray &bytes, qint64 *budget,
     QImage image = std::move(*read);
     if (!handled) {
         if (!ffmpeg)
-            return unexpected(pictureTr("It holds a picture of a kind Finbook cannot read."));
+            return unexpected(pictureTr(QT_TRANSLATE_NOOP(
+                "PictureImport", "It holds a picture of a kind Finbook cannot read.")));
         // FFmpeg checks the size its stream announces before decoding (video_decoder.cpp).
         const auto media = ReferenceMedia::open(ReferenceKind::Image, bytes);
         if (!media)
             return unexpected(media.error());
         image = (*media)->frame(0);
         if (image.isNull())
-            return unexpected(pictureTr("Its picture cannot be decoded."));
+            return unexpected(
+                pictureTr(QT_TRANSLATE_NOOP("PictureImport", "Its picture cannot be decoded.")));
     }
     if (QString why = sizeRefusal(image.size(), *budget); !why.isEmpty())
         return unexpected(why);
     image = image.convertToFormat(QImage::Format_ARGB32_Premultiplied);
     if (image.isNull())
-        return unexpected(pictureTr("There is not enough memory to read it."));
+        return unexpected(pictureTr(
+            QT_TRANSLATE_NOOP("PictureImport", "There is not enough memory to read it.")));
     *budget -= image.sizeInBytes();
     return image;
 }

@@ -30,9 +30,10 @@ Expected<std::vector<PictureLayer>, QString> readPictureLayers(const QString &pa
     };
     QFile file(path);
     if (!QFileInfo(path).isFile() || !file.open(QIODevice::ReadOnly))
-        return refuse(pictureTr("It cannot be read (is it there, and may Finbook read it?)."));
+        return refuse(pictureTr(QT_TRANSLATE_NOOP(
+            "PictureImport", "It cannot be read (is it there, and may Finbook read it?).")));
     if (file.size() == 0)
-        return refuse(pictureTr("It is empty."));
+        return refuse(pictureTr(QT_TRANSLATE_NOOP("PictureImport", "It is empty.")));
     if (isOpenRaster(path, file.peek(4))) {
         file.close();
         auto layers = readOpenRaster(path);
