@@ -195,7 +195,7 @@ void DeformController::refresh(Id groupId, bool wantMesh)
         solve(groupId, std::move(ready));
         return;
     }
-    if (g->strokes.empty())
+    if (!g->hasContent())
         return;
     State &state = m_states[groupId];
     const MeshKey key = MeshKey::of(*g, m_doc->settings().closeGap);

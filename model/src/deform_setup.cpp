@@ -4,6 +4,7 @@
 
 #include <finbook/model/cage/cage_setup.h>
 #include <finbook/model/deform_setup.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/pins/pin_setup.h>
 #include <finbook/model/rig/rig_commands.h>
 #include <finbook/model/skeleton/skeleton_setup.h>
@@ -30,11 +31,14 @@ Eigen::MatrixX2d restPoints(const MeshKey &key, std::vector<std::size_t> &offset
     offsets.assign(1, 0);
     for (const StrokeDataPtr &data : key.strokes)
         offsets.push_back(offsets.back() + data->points.size());
-    Eigen::MatrixX2d points(Eigen::Index(offsets.back()), 2);
+    const Eigen::MatrixX2d picture = key.picture ? key.picture->restVertices() : Eigen::MatrixX2d();
+    Eigen::MatrixX2d points(Eigen::Index(offsets.back()) + picture.rows(), 2);
     Eigen::Index row = 0;
     for (const StrokeDataPtr &data : key.strokes)
         for (const StrokePoint &p : data->points)
             points.row(row++) << p.x, p.y;
+    if (picture.rows() > 0)
+        points.bottomRows(picture.rows()) = picture;
     return points;
 }
 
@@ -46,6 +50,7 @@ MeshKey MeshKey::of(const StrokeGroup &group, double closeGap)
     key.strokes.reserve(group.strokes.size());
     for (const Stroke &s : group.strokes)
         key.strokes.push_back(s.data);
+    key.picture = group.picture;
     return key;
 }
 
@@ -70,14 +75,40 @@ bool DeformSetup::matches(const StrokeGroup &group, double closeGap) const
     return sameRestDefinition(rest, group.rig) && key == MeshKey::of(group, closeGap);
 }
 
+namespace {
+
+// A picture object's mesh: its texture mesh as it is at the usual density (the picture's
+// vertices then sit on the mesh's own), its outline meshed anew at another. Strokes drawn on a
+// picture object ride on the picture's mesh (embedded in the nearest triangle where they leave
+// it).
+Expected<geometry::ObjectMesh, geometry::GeometryError> pictureObjectMesh(const ObjectPicture &p,
+                                                                          double density)
+{
+    if (!pictureIsValid(p))
+        return unexpected(geometry::GeometryError{geometry::GeometryErrorCode::DegenerateRegion,
+                                                  "The picture has no mesh."});
+    auto mesh = geometry::objectMeshFrom(p.restVertices(), p.mesh->F);
+    if (!mesh || density == kDefaultMeshDensity)
+        return mesh;
+    geometry::MeshOptions options;
+    options.targetVertices = kPictureMeshVertices;
+    options.density = density;
+    options.repair.cornerRadius = 0.0;
+    options.repair.simplifyTolerance = 0.1;
+    return geometry::buildObjectMesh(mesh->region, options);
+}
+
+} // namespace
+
 Expected<std::shared_ptr<const MeshedObject>, QString> meshObject(const MeshKey &key)
 {
-    if (key.strokes.empty())
+    if (key.strokes.empty() && !key.picture)
         return unexpected(Deformation::tr("The object has no strokes to deform."));
     geometry::MeshOptions options;
     options.density = key.density;
     options.regions.closeGap = key.closeGap;
-    auto mesh = geometry::buildObjectMesh(strokeInputs(key), options);
+    auto mesh = key.picture ? pictureObjectMesh(*key.picture, key.density)
+                            : geometry::buildObjectMesh(strokeInputs(key), options);
     if (!mesh)
         return unexpected(Deformation::tr("This drawing cannot be meshed for deformation: %1")
                               .arg(QString::fromStdString(mesh.error().message)));
@@ -139,6 +170,12 @@ DeformedStrokesPtr strokesFromPoints(const StrokeGroup &group, const Eigen::Matr
         out.resize(rest.size());
         for (std::size_t i = 0; i < rest.size() && row < points.rows(); ++i, ++row)
             out[i] = {float(points(row, 0)), float(points(row, 1)), rest[i].pressure};
+    }
+    if (group.picture && group.picture->mesh &&
+        points.rows() - row == group.picture->mesh->uv.rows()) {
+        strokes->pictureVertices.reserve(std::size_t(points.rows() - row));
+        for (; row < points.rows(); ++row)
+            strokes->pictureVertices.emplace_back(points(row, 0), points(row, 1));
     }
     return strokes;
 }

@@ -458,6 +458,15 @@ void Document::setStrokes(Id groupId, std::vector<Stroke> strokes)
     shareDrawing(groupId);
 }
 
+void Document::setPicture(Id groupId, std::shared_ptr<const ObjectPicture> picture)
+{
+    StrokeGroup &g = mutableGroup(groupId);
+    g.picture = std::move(picture);
+    g.deformed.reset();
+    emit strokesChanged(groupId);
+    groupEdited(groupId, false);
+}
+
 void Document::setFills(Id groupId, std::vector<Fill> fills)
 {
     mutableGroup(groupId).fills = std::move(fills);

@@ -74,6 +74,9 @@
 //              does not know SWAP refuses the file as made by a newer Finbook (it would lose
 //              every drawing not shown and the links on saving).
 //
+//   "PICT", and the object chunk "PICO": picture objects (picture/picture_section.h). PICT
+//              comes at most once, after FRAM (the writer puts it after SWAP).
+//
 // Ancillary sections (between FRAM and FEND):
 //   "lite"  := f64 azimuth f64 elevation   (degrees; DocumentSettings' light for shaded fills),
 //              written only when the light is not the default.
@@ -146,6 +149,8 @@ constexpr quint32 kTagSound = tag("SOND");
 constexpr quint32 kTagCamera = tag("CAMR");
 constexpr quint32 kTagLayers = tag("LAYR");
 constexpr quint32 kTagSwap = tag("SWAP");
+constexpr quint32 kTagPictures = tag("PICT");      // picture/picture_section.h
+constexpr quint32 kTagPictureObject = tag("PICO"); // picture/picture_section.h
 constexpr std::size_t kSwapSetFixedBytes = 8 + 4 + 4;
 constexpr std::size_t kSwapLinkBytes = 8 + 8 + 8;
 constexpr quint8 kLayerFlagHidden = 1;

@@ -125,8 +125,9 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
     const bool camera = t == kTagCamera;
     const bool layers = t == kTagLayers;
     const bool swap = t == kTagSwap;
+    const bool pictures = t == kTagPictures;
     const bool expected =
-        t == kTagEnd || sound || camera || layers || swap ||
+        t == kTagEnd || sound || camera || layers || swap || pictures ||
         (known != std::end(kOrder) && std::size_t(known - std::begin(kOrder)) >= next);
     const bool text = !tagName(t).startsWith(QLatin1String("0x"));
     if (recovering() && (!text || (!expected && !isAncillary(t)))) {
@@ -226,6 +227,17 @@ bool Reader::readSection(Cursor &c, std::size_t &next)
         else
             readLayersSection(body);
         m_sawLayers = true;
+        return !cut;
+    }
+    if (pictures) {
+        if (next < std::size(kOrder))
+            problem(c, FileErrorCode::BadValue,
+                    FinbookFile::tr("the pictures come before the frames"));
+        if (m_sawPictures)
+            problem(c, FileErrorCode::BadValue, FinbookFile::tr("the pictures are repeated"));
+        else
+            readPictureSection(body);
+        m_sawPictures = true;
         return !cut;
     }
     if (camera) {
@@ -393,6 +405,7 @@ void Reader::finish(Cursor &c)
         throw DuplicateId{*twice};
     m_idsClash = m_idsClash || twice != m_ids.end();
     std::vector<Id>().swap(m_ids);
+    resolvePictures(c);
     // Joins are stored, anchors derived: every reader of the file sees them resolved, as a
     // Document holding these frames would have them.
     const auto resolveAll = [this, &c] {

@@ -6,6 +6,8 @@
 
 #include "finbook_file_cursor.h"
 
+#include <finbook/model/picture/picture_object.h>
+
 #include <vector>
 
 namespace finbook::model::file_format {
@@ -121,6 +123,24 @@ private:
     bool m_sawSwap = false;
     // Ids a linked object shares with its drawing, once per linked object (not clashes).
     std::vector<Id> m_sharedIds;
+    // picture/picture_section.cpp: the "PICT" section and the "PICO" object chunk, and putting
+    // the two together once both are read.
+    void readPictureSection(Cursor &c);
+    void readPictureChunk(Cursor &c, StrokeGroup &g);
+    void resolvePictures(Cursor &c);
+    struct PictureEntry {
+        PictureDataPtr data; // null: left out (recovering)
+        PictureMeshPtr mesh;
+    };
+    struct PendingPicture {
+        std::shared_ptr<ObjectPicture> picture; // the object's, filled in by resolvePictures
+        quint32 index = 0;
+        std::vector<QPointF> posed;
+    };
+    std::vector<PictureEntry> m_pictureTable;
+    std::vector<PendingPicture> m_pendingPictures;
+    bool m_sawPictures = false;
+
     // finbook_file_recover.cpp
     bool findNextSection(Cursor &c, std::size_t next);
     void renumberClashingIds();

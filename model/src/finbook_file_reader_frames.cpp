@@ -34,6 +34,7 @@ const Reader::ObjectChunk Reader::kObjectChunks[] = {
     {kTagFillPlaces, false, &Reader::readFillPlacesChunk},
     {kTagShading, false, &Reader::readShadingChunk},
     {kTagLimbBases, false, &Reader::readLimbBasesChunk},
+    {kTagPictureObject, false, &Reader::readPictureChunk}, // picture/picture_section.cpp
 };
 
 quint32 Reader::count(Cursor &c, std::size_t recordBytes, const char *what)

@@ -3,6 +3,7 @@
 // Speed matters here (10M points in well under a second): the output is sized up front and
 // filled through a raw pointer, points stroke by stroke in one tight loop.
 #include "finbook_file_byte_writer.h"
+#include "picture/picture_section.h"
 #include "reference/reference_section.h"
 
 #include <finbook/model/reference/reference_layer.h>
@@ -56,6 +57,7 @@ struct Tables {
     std::unordered_map<const StrokeData *, quint32> strokeIndex;
     std::vector<const DeformedStrokes *> poses;
     std::unordered_map<const DeformedStrokes *, quint32> poseIndex;
+    PictureTable pictures; // picture/picture_section.h
     Id maxId = kNoId;
     qsizetype expectedBytes = 256;
 
@@ -84,6 +86,7 @@ struct Tables {
     void addGroup(const StrokeGroup &g)
     {
         noteId(g.id);
+        pictures.add(g);
         for (const Pin &p : g.rig.pins)
             noteId(p.id);
         for (const Fill &f : g.fills) {
@@ -273,6 +276,10 @@ const ObjectChunkWriter kObjectChunkWriters[] = {
              w.u8(f.shading.rim ? 1 : 0);
          }
      }},
+    {kTagPictureObject, hasPictureChunk,
+     [](ByteWriter &w, const StrokeGroup &g, const Tables &tables) {
+         writePictureChunk(w, g, tables.pictures, poseMatches(g));
+     }},
     {kTagDeformed, poseMatches,
      [](ByteWriter &w, const StrokeGroup &g, const Tables &tables) {
          w.u32(tables.poseIndex.at(g.deformed.get()));
@@ -455,6 +462,9 @@ QByteArray serializeFinbook(const std::vector<Layer> &layers, const DocumentSett
     if (!camera.isEmpty())
         extra += qsizetype(kSectionHeaderBytes + kSectionCrcBytes + 4) +
                  qsizetype(camera.keys.size() * kCameraKeyBytes);
+    if (!tables.pictures.empty())
+        extra +=
+            qsizetype(kSectionHeaderBytes + kSectionCrcBytes) + tables.pictures.expectedBytes();
     ByteWriter w(tables.expectedBytes + extra);
     w.raw(kMagic, sizeof(kMagic));
     w.u32(kFinbookFormatVersion);
@@ -468,6 +478,8 @@ QByteArray serializeFinbook(const std::vector<Layer> &layers, const DocumentSett
     writeSection(w, kTagLayers, [&] { writeLayers(w, layers); });
     if (!swapSets.empty())
         writeSection(w, kTagSwap, [&] { writeSwapSets(w, swapSets, layers, tables); });
+    if (!tables.pictures.empty())
+        writeSection(w, kTagPictures, [&] { tables.pictures.write(w); });
     for (const SoundClip &clip : sound)
         writeSection(w, kTagSound, [&] { writeSoundClip(w, clip); });
     if (!camera.isEmpty())

@@ -9,6 +9,7 @@
 #include "render_wide_pen.h"
 
 #include <finbook/model/fill/fill_render.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
 #include <finbook/model/scene/shot.h>
 
@@ -358,12 +359,14 @@ namespace {
 void paintFrameItems(QPainter &painter, const Frame &frame, const DocumentSettings &settings,
                      const RenderOptions &options, bool replaceFills = false)
 {
-    if (!frameHasFills(frame, options)) {
+    if (!frameHasFills(frame, options) && !frameHasPictures(frame, options)) {
         for (const PaintItem &item : paintList(frame, options))
             paintStroke(painter, *item.points, item.color, item.width);
         return;
     }
     for (const StrokeGroup &group : frame.groups) {
+        if (group.picture && (group.visible || options.showHidden))
+            paintPicture(painter, group, options.tint);
         for (const PaintLayer &layer : paintLayers(group, settings, options)) {
             if (replaceFills)
                 painter.setCompositionMode(QPainter::CompositionMode_Source);

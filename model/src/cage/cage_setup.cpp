@@ -4,6 +4,7 @@
 #include <finbook/geometry/cage/fit_cage.h>
 #include <finbook/geometry/simplicity.h>
 #include <finbook/model/cage/cage_setup.h>
+#include <finbook/model/picture/picture_object.h>
 
 #include <cmath>
 
@@ -89,7 +90,10 @@ Expected<std::vector<QPointF>, QString> fitCage(const StrokeGroup &group, int co
     options.corners = corners;
     const MeshKey key = MeshKey::of(group, closeGap);
     options.regions.closeGap = key.closeGap;
-    auto cage = geometry::fitCage(strokeInputs(key), options);
+    std::vector<std::size_t> offsets;
+    auto cage = group.picture ? geometry::fitCage(pictureRegion(*group.picture),
+                                                  restPoints(key, offsets), options)
+                              : geometry::fitCage(strokeInputs(key), options);
     if (!cage)
         return unexpected(
             Deformation::tr("No cage fits this drawing: %1").arg(sentence(cage.error().message)));

@@ -33,7 +33,7 @@ Expected<int, QString> solveInbetweenPoses(std::vector<Frame> &frames,
     int solved = 0;
     for (Frame &f : frames)
         for (StrokeGroup &g : f.groups) {
-            if (g.rig.empty() || g.deformed || g.strokes.empty())
+            if (g.rig.empty() || g.deformed || !g.hasContent())
                 continue;
             auto setup = setupFromCache(g, options, setups, closeGap);
             if (!setup)

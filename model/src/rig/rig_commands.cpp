@@ -2,6 +2,7 @@
 
 #include <finbook/model/fill/fill_render.h>
 #include <finbook/model/fill/fill_resolve.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/render.h>
 #include <finbook/model/rig/rig_commands.h>
 
@@ -165,7 +166,14 @@ AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
     if (!chosen.empty())
         strokes = std::move(chosen);
     std::vector<Fill> fills = fillsAfterBake(group, strokes, closeGap);
-    return {std::move(strokes), std::move(fills)};
+    std::shared_ptr<const ObjectPicture> picture = group.picture;
+    if (picture) {
+        // A pose that cannot be kept as a picture (folded to nothing, too large) leaves it
+        // at rest rather than losing it.
+        if (auto baked = bakedPicture(group))
+            picture = std::move(*baked);
+    }
+    return {std::move(strokes), std::move(fills), std::move(picture)};
 }
 
 ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *parent)
@@ -186,6 +194,8 @@ ApplyPoseCommand::ApplyPoseCommand(Document *doc, Id groupId, QUndoCommand *pare
     m_newStrokes = std::move(applied.strokes);
     m_oldFills = g->fills;
     m_newFills = std::move(applied.fills);
+    m_oldPicture = g->picture;
+    m_newPicture = std::move(applied.picture);
 }
 
 void ApplyPoseCommand::redo()
@@ -193,6 +203,8 @@ void ApplyPoseCommand::redo()
     if (isObsolete())
         return;
     m_doc->setStrokes(m_groupId, m_newStrokes);
+    if (m_newPicture != m_oldPicture)
+        m_doc->setPicture(m_groupId, m_newPicture);
     if (m_newFills != m_oldFills)
         m_doc->setFills(m_groupId, m_newFills);
     m_doc->setRig(m_groupId, m_oldRig.rebased());
@@ -203,6 +215,8 @@ void ApplyPoseCommand::undo()
     if (isObsolete())
         return;
     m_doc->setStrokes(m_groupId, m_oldStrokes);
+    if (m_newPicture != m_oldPicture)
+        m_doc->setPicture(m_groupId, m_oldPicture);
     if (m_newFills != m_oldFills)
         m_doc->setFills(m_groupId, m_oldFills);
     m_doc->setRig(m_groupId, m_oldRig);

@@ -6,6 +6,7 @@
 #include <finbook/geometry/object_shape.h>
 #include <finbook/geometry/skeleton/skeleton_refine.h>
 #include <finbook/model/deform_setup.h>
+#include <finbook/model/picture/picture_object.h>
 #include <finbook/model/skeleton/skeleton_commands.h>
 
 #include <cmath>
@@ -50,9 +51,13 @@ Expected<SkeletonRig, QString> buildSkeletonRig(const StrokeGroup &group,
 {
     const MeshKey key = MeshKey::of(group, closeGap);
     const auto inputs = strokeInputs(key);
-    if (inputs.empty())
+    if (inputs.empty() && !group.picture)
         return unexpected(Deformation::tr("The object has no strokes to build a skeleton in."));
-    auto region = geometry::objectShape(inputs, {}, geometry::RegionsOptions{key.closeGap});
+    // A picture object's skeleton is its picture's shape's (strokes drawn on it ride along).
+    auto region =
+        group.picture
+            ? Expected<geometry::Region, geometry::GeometryError>(pictureRegion(*group.picture))
+            : geometry::objectShape(inputs, {}, geometry::RegionsOptions{key.closeGap});
     if (!region)
         return unexpected(sentence(region.error()));
     auto raw = geometry::rawSkeleton(*region);

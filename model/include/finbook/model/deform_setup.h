@@ -26,6 +26,9 @@ struct MeshKey {
     std::vector<StrokeDataPtr> strokes;
     double density = kDefaultMeshDensity;
     double closeGap = -1.0; // DocumentSettings::closeGap: < 0 automatic
+    // A picture object's picture (picture/picture_object.h): its texture mesh is the object's
+    // mesh, and its vertices are rest points after the strokes' (restPoints).
+    std::shared_ptr<const ObjectPicture> picture;
     friend bool operator==(const MeshKey &, const MeshKey &) = default;
     static MeshKey of(const StrokeGroup &group, double closeGap);
 };
@@ -106,14 +109,16 @@ Expected<Pose, QString> solvePose(const DeformSetup &setup, const StrokeGroup &g
                                   const Eigen::MatrixX2d *dragStart = nullptr);
 
 // Deformed strokes from one deformed position per rest point (rows in stroke order, as
-// MeshedObject::strokeOffsets counts them); pressures are the rest ones.
+// MeshedObject::strokeOffsets counts them, then the picture's vertices); pressures are the
+// rest ones.
 DeformedStrokesPtr strokesFromPoints(const StrokeGroup &group, const Eigen::MatrixX2d &points);
 
 // The rest strokes as the geometry layer takes them (points and widths).
 std::vector<geometry::StrokeInput> strokeInputs(const MeshKey &key);
 
-// All rest points of an object, stroke after stroke; offsets gets each stroke's first row
-// (size strokes + 1).
+// All rest points of an object, stroke after stroke, then a picture object's texture mesh
+// vertices (uv + origin); offsets gets each stroke's first row (size strokes + 1: its last
+// entry is where the picture's vertices begin).
 Eigen::MatrixX2d restPoints(const MeshKey &key, std::vector<std::size_t> &offsets);
 
 // Maps a point shown on a deformed object back to the rest drawing (for placing a pin on a

@@ -148,6 +148,9 @@ public:
     void setStrokes(Id groupId, std::vector<Stroke> strokes);
     // Replaces an object's fills (fill/fill_commands.h).
     void setFills(Id groupId, std::vector<Fill> fills);
+    // Replaces a picture object's picture (its rest: Apply Pose, a move). Drops the deformed
+    // cache, as a rest edit does.
+    void setPicture(Id groupId, std::shared_ptr<const ObjectPicture> picture);
 
     // Replaces an object's rig (pins or cage, rest definition and targets). A rig with more
     // than one kind keeps only its first (pins, then cage). An empty rig drops the pose.

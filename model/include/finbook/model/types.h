@@ -120,6 +120,9 @@ struct DeformedStrokes {
     // however far the pieces around it turned.
     QPainterPath body;
     std::vector<std::optional<QTransform>> motions;
+    // A picture object's texture mesh as posed (picture/picture_object.h: one position per
+    // vertex of its PictureMesh, canvas pixels). Empty for an object without a picture.
+    std::vector<QPointF> pictureVertices;
     friend bool operator==(const DeformedStrokes &, const DeformedStrokes &) = default;
 };
 using DeformedStrokesPtr = std::shared_ptr<const DeformedStrokes>;
@@ -182,6 +185,8 @@ struct SwapLink {
     friend bool operator==(const SwapLink &, const SwapLink &) = default;
 };
 
+struct ObjectPicture; // picture/picture_object.h
+
 struct StrokeGroup {
     Id id = kNoId;
     QString name;
@@ -199,8 +204,13 @@ struct StrokeGroup {
     // mesh density are then that drawing's, the same (ids included) in every frame showing it;
     // its rig and pose are its own, per frame.
     SwapLink swap;
+    // A picture object (issue 51): painted pixels carried by a mesh of their shape, under the
+    // object's fills and strokes. Immutable and shared; null for a drawing.
+    std::shared_ptr<const ObjectPicture> picture;
 
     bool isDeformed() const { return !rig.empty() && deformed != nullptr; }
+    // Whether there is anything to mesh, rig and deform: strokes or a picture.
+    bool hasContent() const { return !strokes.empty() || picture != nullptr; }
 };
 
 // A layer's share of a composed shot (scene/shot.h): its objects are the frame's groups up

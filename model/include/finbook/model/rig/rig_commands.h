@@ -64,9 +64,11 @@ private:
 // new ids from `newId` for the parts and lines of no ink it adds — gaps the pose showed closed,
 // cut-out cuts, seams between colours the pose showed apart) and its fills tied to the faces
 // of those strokes that showed their colours (fill_resolve.h fillsAfterBake).
+// A picture object's picture is resampled as posed (picture_object.h bakedPicture).
 struct AppliedPose {
     std::vector<Stroke> strokes;
     std::vector<Fill> fills;
+    std::shared_ptr<const ObjectPicture> picture;
 };
 AppliedPose applyPoseToDrawing(const StrokeGroup &group, double closeGap,
                                const std::function<Id()> &newId);
@@ -85,6 +87,8 @@ private:
     std::vector<Fill> m_newFills;
     Rig m_oldRig;
     DeformedStrokesPtr m_oldDeformed;
+    std::shared_ptr<const ObjectPicture> m_oldPicture;
+    std::shared_ptr<const ObjectPicture> m_newPicture;
 };
 
 // Whether `a` and `b` have the same rest definition (kind, pin rest positions in order, rest

@@ -1,0 +1,390 @@
+// Picture objects (issue 51): a picture drawn through its mesh is its own pixels at rest, is
+// carried by pins without cracks, comes back to its pixels when the pins go back, bakes into a
+// new rest picture with Apply Pose (undone exactly), saves once per document however many
+// frames show it and opens again byte for byte, and a damaged picture section is refused (or,
+// recovering, left out) with a sentence.
+#include <finbook/model/commands.h>
+#include <finbook/model/deform_setup.h>
+#include <finbook/model/document.h>
+#include <finbook/model/finbook_file.h>
+#include <finbook/model/picture/picture_commands.h>
+#include <finbook/model/picture/picture_object.h>
+#include <finbook/model/render.h>
+#include <finbook/model/rig/rig_commands.h>
+#include <finbook/model/skeleton/skeleton_join_commands.h>
+
+#include <QPainter>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace finbook;
+using namespace finbook::model;
+
+class TestPictureObject : public QObject {
+    Q_OBJECT
+private slots:
+    void restDrawsThePictureUnchanged();
+    void pinsCarryThePictureWithoutCracks();
+    void pinsBackAtRestGiveTheOriginal();
+    void applyPoseBakesThePictureAndUndoes();
+    void importIsOneUndoStep();
+    void saveOpenKeepsOnePictureForAllFrames();
+    void damagedPicturesAreRefusedOrLeftOut();
+};
+
+namespace {
+
+constexpr int kW = 160, kH = 120;
+const QPointF kAt(40, 30);
+
+// A painted cut-out: a soft-edged ellipse with a gradient and stripes, transparent around.
+QImage paintedPicture()
+{
+    QImage image(kW, kH, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QLinearGradient gradient(0, 0, kW, kH);
+    gradient.setColorAt(0, QColor(220, 40, 30));
+    gradient.setColorAt(1, QColor(30, 90, 220));
+    p.setBrush(gradient);
+    p.setPen(Qt::NoPen);
+    p.drawEllipse(QRectF(6, 8, kW - 12, kH - 16));
+    p.setPen(QPen(QColor(250, 240, 60), 3));
+    for (int x = 20; x < kW; x += 17)
+        p.drawLine(QPointF(x, 20), QPointF(x - 10, kH - 20));
+    return image;
+}
+
+StrokeGroup pictureGroup()
+{
+    auto g = makePictureObject(PictureLayer{QStringLiteral("blob"), paintedPicture(), {}}, kAt);
+    if (!g)
+        qFatal("%s", qPrintable(g.error()));
+    return *g;
+}
+
+QImage render(const Frame &frame, QSize size = QSize(240, 180))
+{
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    DocumentSettings settings;
+    settings.canvasSize = size;
+    RenderOptions options;
+    options.paintBackground = false;
+    paintFrame(p, frame, settings, options);
+    return image;
+}
+
+// The picture laid on the canvas as it is, by QPainter.
+QImage reference(QSize size = QSize(240, 180))
+{
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    p.drawImage(kAt, paintedPicture());
+    return image;
+}
+
+int largestDifference(const QImage &a, const QImage &b, int margin = 0,
+                      const QImage *mask = nullptr)
+{
+    int worst = 0;
+    for (int y = margin; y < a.height() - margin; ++y)
+        for (int x = margin; x < a.width() - margin; ++x) {
+            if (mask && qAlpha(mask->pixel(x, y)) != 255)
+                continue;
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            worst = std::max({worst, std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
+                              std::abs(qBlue(p) - qBlue(q)), std::abs(qAlpha(p) - qAlpha(q))});
+        }
+    return worst;
+}
+
+// Pixels well inside the picture: every neighbour within 2 px is opaque.
+QImage interior(const QImage &image)
+{
+    QImage out(image.size(), QImage::Format_ARGB32_Premultiplied);
+    out.fill(Qt::transparent);
+    for (int y = 2; y < image.height() - 2; ++y)
+        for (int x = 2; x < image.width() - 2; ++x) {
+            bool inside = true;
+            for (int dy = -2; dy <= 2 && inside; ++dy)
+                for (int dx = -2; dx <= 2 && inside; ++dx)
+                    inside = qAlpha(image.pixel(x + dx, y + dy)) == 255;
+            if (inside)
+                out.setPixel(x, y, 0xffffffff);
+        }
+    return out;
+}
+
+struct Posed {
+    Document doc;
+    Id frame = kNoId;
+    Id object = kNoId;
+};
+
+// A document whose one object is the picture, pinned at its left end and its right end
+// lifted by `lift` px.
+void pose(Posed &s, double lift)
+{
+    s.doc.undoStack()->push(new InsertFrameCommand(&s.doc, 0));
+    s.frame = s.doc.frameAt(0).id;
+    std::vector<StrokeGroup> objects;
+    objects.push_back(pictureGroup());
+    auto *import = new ImportPictureCommand(&s.doc, s.frame, -1, std::move(objects));
+    s.doc.undoStack()->push(import);
+    s.object = import->objectIds().front();
+    Rig rig;
+    const QPointF left = kAt + QPointF(20, kH / 2.0), right = kAt + QPointF(kW - 20, kH / 2.0);
+    rig.pins = {{s.doc.allocateId(), left, left},
+                {s.doc.allocateId(), right, right + QPointF(0, -lift)}};
+    s.doc.setRig(s.object, rig);
+    DeformJob job;
+    job.groupId = s.object;
+    job.key = MeshKey::of(*s.doc.group(s.object), -1.0);
+    job.rig = rig.atRest();
+    const auto setup = buildDeformSetup(job);
+    QVERIFY2(setup.hasValue(), qPrintable(setup ? QString() : setup.error()));
+    const auto solved = solvePose(**setup, *s.doc.group(s.object));
+    QVERIFY(solved.hasValue());
+    s.doc.setDeformed(s.object, solved->strokes);
+}
+
+} // namespace
+
+void TestPictureObject::restDrawsThePictureUnchanged()
+{
+    const StrokeGroup g = pictureGroup();
+    QVERIFY(g.picture && pictureIsValid(*g.picture));
+    QCOMPARE(g.name, QStringLiteral("blob"));
+    QVERIFY(g.hasContent() && g.strokes.empty());
+    QVERIFY(g.picture->mesh->uv.rows() >= 100); // a real mesh, not two triangles
+    Frame frame;
+    frame.groups.push_back(g);
+    QCOMPARE(largestDifference(render(frame), reference()), 0);
+    // Hidden, it is not drawn; a tint keeps its shape in one colour.
+    frame.groups[0].visible = false;
+    QCOMPARE(qAlpha(render(frame).pixel(int(kAt.x()) + kW / 2, int(kAt.y()) + kH / 2)), 0);
+    frame.groups[0].visible = true;
+    QImage ghost(240, 180, QImage::Format_ARGB32_Premultiplied);
+    ghost.fill(Qt::transparent);
+    {
+        QPainter p(&ghost);
+        DocumentSettings settings;
+        settings.canvasSize = ghost.size();
+        RenderOptions options;
+        options.paintBackground = false;
+        options.tint = QColor(0, 0, 255);
+        paintFrame(p, frame, settings, options);
+    }
+    const QRgb centre = ghost.pixel(int(kAt.x()) + kW / 2, int(kAt.y()) + kH / 2);
+    QCOMPARE(qRed(centre), 0);
+    QVERIFY(qBlue(centre) > 200);
+    // A click on the picture finds it; beside it, not.
+    QVERIFY(pictureShowsAt(g, kAt + QPointF(kW / 2.0, kH / 2.0)));
+    QVERIFY(!pictureShowsAt(g, kAt + QPointF(1, 1))); // the transparent corner
+    QVERIFY(!pictureShowsAt(g, kAt + QPointF(kW + 5, 0)));
+}
+
+void TestPictureObject::pinsCarryThePictureWithoutCracks()
+{
+    Posed s;
+    pose(s, 30.0);
+    const StrokeGroup &g = *s.doc.group(s.object);
+    QCOMPARE(g.deformed->pictureVertices.size(), std::size_t(g.picture->mesh->uv.rows()));
+    // The lifted end moved up, the pinned end stayed.
+    const QRectF shown = shownPictureBounds(g);
+    QVERIFY(shown.top() < kAt.y() - 10);
+    Frame frame;
+    frame.groups.push_back(g);
+    const QImage posed = render(frame);
+    QVERIFY(largestDifference(posed, reference()) > 50);
+    // No cracks: every pixel whose centre lies inside a posed triangle, away from the outline
+    // (2 px), shows the picture opaque wherever the rest picture was opaque there.
+    const Eigen::MatrixX2d V = shownPictureVertices(g);
+    const Eigen::MatrixX3i &F = g.picture->mesh->F;
+    const QImage texture = g.picture->data->image;
+    int checked = 0, holes = 0;
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+        const Eigen::Vector2d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+        const Eigen::Vector2d ua = g.picture->mesh->uv.row(F(f, 0)),
+                              ub = g.picture->mesh->uv.row(F(f, 1)),
+                              uc = g.picture->mesh->uv.row(F(f, 2));
+        const double area = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+        const int x0 = int(std::floor(std::min({a.x(), b.x(), c.x()})));
+        const int x1 = int(std::ceil(std::max({a.x(), b.x(), c.x()})));
+        const int y0 = int(std::floor(std::min({a.y(), b.y(), c.y()})));
+        const int y1 = int(std::ceil(std::max({a.y(), b.y(), c.y()})));
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const Eigen::Vector2d p(x + 0.5, y + 0.5);
+                const auto cross = [](Eigen::Vector2d u, Eigen::Vector2d v) {
+                    return u.x() * v.y() - u.y() * v.x();
+                };
+                const double wa = cross(b - p, c - p) / area, wb = cross(c - p, a - p) / area;
+                const double wc = 1.0 - wa - wb;
+                if (wa < 0 || wb < 0 || wc < 0)
+                    continue;
+                const Eigen::Vector2d uv = wa * ua + wb * ub + wc * uc;
+                const int tx = int(uv.x()), ty = int(uv.y());
+                bool solid = tx >= 2 && ty >= 2 && tx < kW - 2 && ty < kH - 2;
+                for (int dy = -2; dy <= 2 && solid; ++dy)
+                    for (int dx = -2; dx <= 2 && solid; ++dx)
+                        solid = qAlpha(texture.pixel(tx + dx, ty + dy)) == 255;
+                if (!solid)
+                    continue;
+                ++checked;
+                holes += qAlpha(posed.pixel(x, y)) != 255;
+            }
+    }
+    QVERIFY(checked > 5000);
+    QCOMPARE(holes, 0);
+}
+
+void TestPictureObject::pinsBackAtRestGiveTheOriginal()
+{
+    Posed s;
+    pose(s, 0.0); // pinned where they were put: the solve returns the rest pose
+    const StrokeGroup &g = *s.doc.group(s.object);
+    QVERIFY(g.isDeformed());
+    Frame frame;
+    frame.groups.push_back(g);
+    const QImage shown = render(frame);
+    const QImage inside = interior(reference());
+    QVERIFY(largestDifference(shown, reference(), 0, &inside) <= 1);
+}
+
+void TestPictureObject::applyPoseBakesThePictureAndUndoes()
+{
+    Posed s;
+    pose(s, 30.0);
+    const StrokeGroup before = *s.doc.group(s.object);
+    Frame posedFrame;
+    posedFrame.groups.push_back(before);
+    const QImage posed = render(posedFrame);
+    const QByteArray saved = serializeFinbook(s.doc);
+    s.doc.undoStack()->push(makeApplyPoseCommand(&s.doc, s.object));
+    const StrokeGroup &after = *s.doc.group(s.object);
+    QVERIFY(after.picture != before.picture);
+    QVERIFY(!after.rig.isPosed());
+    Frame bakedFrame;
+    bakedFrame.groups.push_back(after);
+    const QImage baked = render(bakedFrame);
+    // What was shown is kept: resampled once, within a few levels inside the picture.
+    const QImage inside = interior(posed);
+    QVERIFY(largestDifference(baked, posed, 0, &inside) <= 3);
+    s.doc.undoStack()->undo();
+    QVERIFY(s.doc.group(s.object)->picture == before.picture);
+    QCOMPARE(serializeFinbook(s.doc), saved);
+    s.doc.undoStack()->redo();
+    QVERIFY(s.doc.group(s.object)->picture == after.picture);
+}
+
+void TestPictureObject::importIsOneUndoStep()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("blob.png"));
+    QVERIFY(paintedPicture().save(path));
+    const auto objects = pictureObjectsFromFile(path, QSizeF(640, 480));
+    QVERIFY2(objects.hasValue(), qPrintable(objects ? QString() : objects.error()));
+    QCOMPARE(objects->size(), std::size_t(1));
+    // Centred on the page, on whole pixels.
+    QCOMPARE(objects->front().picture->origin, QPointF(320 - kW / 2, 240 - kH / 2));
+    QCOMPARE(objects->front().name, QStringLiteral("blob"));
+    Document doc;
+    doc.undoStack()->push(new InsertFrameCommand(&doc, 0));
+    const Id frame = doc.frameAt(0).id;
+    const std::size_t groupsBefore = doc.frameAt(0).groups.size();
+    auto *import = new ImportPictureCommand(&doc, frame, -1, *objects);
+    doc.undoStack()->push(import);
+    QCOMPARE(doc.frameAt(0).groups.size(), groupsBefore + 1);
+    QVERIFY(doc.frameAt(0).groups.back().picture == objects->front().picture);
+    doc.undoStack()->undo();
+    QCOMPARE(doc.frameAt(0).groups.size(), groupsBefore);
+    doc.undoStack()->redo();
+    QCOMPARE(doc.frameAt(0).groups.back().id, import->objectIds().front());
+    // A file that is no picture: a sentence naming it.
+    const QString text = dir.filePath(QStringLiteral("notes.png"));
+    QFile file(text);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("not a picture at all");
+    file.close();
+    const auto refused = pictureObjectsFromFile(text, QSizeF(640, 480));
+    QVERIFY(!refused.hasValue());
+    QVERIFY(refused.error().contains(QStringLiteral("notes.png")));
+}
+
+void TestPictureObject::saveOpenKeepsOnePictureForAllFrames()
+{
+    Posed s;
+    pose(s, 25.0);
+    s.doc.undoStack()->push(new DuplicateFrameCommand(&s.doc, s.frame, 1));
+    s.doc.undoStack()->push(new DuplicateFrameCommand(&s.doc, s.frame, 2));
+    const QByteArray bytes = serializeFinbook(s.doc);
+    // The picture's PNG is in the file once, whatever number of frames show it.
+    const QByteArray png = s.doc.group(s.object)->picture->data->png;
+    QCOMPARE(bytes.count(png.left(64)), qsizetype(1));
+    const auto loaded = readFinbook(bytes);
+    QVERIFY2(loaded.hasValue(), qPrintable(loaded ? QString() : loaded.error().message));
+    Document reopened;
+    adoptLoadedDocument(reopened, *loaded);
+    QCOMPARE(reopened.frameCount(), s.doc.frameCount());
+    const StrokeGroup &first = reopened.frameAt(0).groups.back();
+    QVERIFY(first.picture && pictureIsValid(*first.picture));
+    QCOMPARE(first.picture->origin, kAt);
+    QCOMPARE(first.picture->data->image, s.doc.group(s.object)->picture->data->image);
+    QCOMPARE(first.picture->mesh->uv, s.doc.group(s.object)->picture->mesh->uv);
+    QCOMPARE(first.picture->mesh->F, s.doc.group(s.object)->picture->mesh->F);
+    QCOMPARE(first.deformed->pictureVertices, s.doc.group(s.object)->deformed->pictureVertices);
+    for (int i = 1; i < reopened.frameCount(); ++i)
+        QVERIFY(reopened.frameAt(i).groups.back().picture->data == first.picture->data);
+    Frame a, b;
+    a.groups.push_back(*s.doc.group(s.object));
+    b.groups.push_back(first);
+    QCOMPARE(largestDifference(render(a), render(b)), 0);
+    QCOMPARE(serializeFinbook(reopened), bytes);
+    // A document without pictures has no picture section.
+    Document plain;
+    QVERIFY(!serializeFinbook(plain).contains("PICT"));
+}
+
+void TestPictureObject::damagedPicturesAreRefusedOrLeftOut()
+{
+    Posed s;
+    pose(s, 0.0);
+    const QByteArray bytes = serializeFinbook(s.doc);
+    const qsizetype section = bytes.indexOf("PICT");
+    QVERIFY(section > 0);
+    // The width: 50,000 px claimed.
+    QByteArray huge = bytes;
+    const quint32 width = 50000;
+    qToLittleEndian<quint32>(width, huge.data() + section + 12 + 4);
+    QVERIFY(!readFinbook(huge).hasValue()); // the checksum, first
+    QStringList problems;
+    const auto recovered = recoverFinbook(huge, &problems);
+    QVERIFY(recovered.hasValue());
+    QVERIFY2(problems.join(QLatin1Char('\n')).contains(QStringLiteral("50000")),
+             qPrintable(problems.join(QLatin1Char('\n'))));
+    for (const Frame &f : recovered->frames)
+        for (const StrokeGroup &g : f.groups)
+            QVERIFY(!g.picture);
+    // The PNG's bytes damaged: it does not decode, and nothing crashes.
+    QByteArray broken = bytes;
+    const qsizetype png = broken.indexOf("IDAT", section);
+    QVERIFY(png > 0);
+    for (qsizetype i = png + 8; i < png + 60 && i < broken.size(); ++i)
+        broken[i] = char(broken[i] ^ 0x5a);
+    QVERIFY(!readFinbook(broken).hasValue());
+    problems.clear();
+    QVERIFY(recoverFinbook(broken, &problems).hasValue());
+    QVERIFY(!problems.isEmpty());
+    // Cut inside the picture section.
+    QVERIFY(!readFinbook(bytes.left(section + 200)).hasValue());
+}
+
+QTEST_MAIN(TestPictureObject)
+#include "tst_picture_object.moc"
